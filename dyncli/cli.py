@@ -1,0 +1,188 @@
+"""The command line (thin): parses options and delegates to the layers below.
+
+Exit codes (contract §3): 0 solved, 1 a numerical step failed / check found a
+wrong answer, 2 invalid input or usage, 3 internal error.
+"""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from typing import List, Optional
+
+import typer
+
+from dyncli import __version__
+
+app = typer.Typer(
+    name="dyncli",
+    help="Solve engineering-dynamics problems written as YAML files (Rubin & Altus, Dynamics).",
+    add_completion=False,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+_state = {"debug": False}
+
+
+class Format(str, Enum):
+    table = "table"
+    json = "json"
+    yaml = "yaml"
+
+
+def _version(value: bool):
+    if value:
+        print(f"dyncli {__version__}")
+        raise typer.Exit(0)
+
+
+@app.callback()
+def _main(
+    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+    debug: bool = typer.Option(False, "--debug", help="Show tracebacks of internal errors."),
+):
+    _state["debug"] = debug
+
+
+def _err(msg: str) -> None:
+    print(msg, file=sys.stderr)
+
+
+@app.command()
+def solve(
+    files: List[str] = typer.Argument(..., help="Problem files (YAML); '-' reads stdin.", metavar="FILE..."),
+    format: Format = typer.Option(Format.table, "--format", "-f", help="Output format."),
+    symbolic: bool = typer.Option(False, "--symbolic", help="Print frame tables with formulas (types that support it)."),
+    digits: int = typer.Option(6, "--digits", min=1, max=17, help="Significant digits in tables."),
+):
+    """Solve problem files and print the results."""
+    from dyncli.loader import load_paths
+    from dyncli.result import SolveOptions
+    from dyncli.run import outcome_record, solve_one, worst
+
+    problems, diags = load_paths(files)
+    codes = [2 for _ in diags]
+    for d in diags:
+        _err(str(d))
+    options = SolveOptions(symbolic=symbolic)
+    outcomes = []
+    console = None
+    for lp in problems:
+        o = solve_one(lp, options)
+        outcomes.append(o)
+        codes.append(o.exit_code)
+        if o.message:
+            _err(o.message)
+            if o.trace and _state["debug"]:
+                _err(o.trace)
+        if format is Format.table and o.result is not None:
+            from dyncli.render.table import make_console, render
+
+            console = console or make_console()
+            render(console, lp, o.result, digits)
+            if lp.index == 0 and o.result.warnings:
+                pass
+    if format is Format.json:
+        from dyncli.render.jsonout import dumps
+
+        print(dumps([outcome_record(o) for o in outcomes]))
+    elif format is Format.yaml:
+        from dyncli.render.yamlout import dumps as ydumps
+
+        sys.stdout.write(ydumps([outcome_record(o) for o in outcomes]))
+    for o in outcomes:
+        if o.result is not None and format is not Format.table:
+            for w in o.result.warnings:
+                _err(f"{o.problem.file}: {o.problem.title}: warning: {w}")
+    raise typer.Exit(worst(codes))
+
+
+@app.command()
+def validate(files: List[str] = typer.Argument(..., help="Problem files (YAML); '-' reads stdin.", metavar="FILE...")):
+    """Check problem files (schema and expressions) without solving."""
+    from dyncli.loader import load_paths
+
+    problems, diags = load_paths(files)
+    bad = len(diags)
+    for d in diags:
+        _err(str(d))
+    for lp in problems:
+        if lp.error is not None:
+            _err(str(lp.error))
+            bad += 1
+        else:
+            print(f"{lp.file}: {lp.title} ({lp.type}): ok")
+    raise typer.Exit(2 if bad else 0)
+
+
+@app.command()
+def types():
+    """List the problem types with the notes' sections."""
+    from dyncli import registry
+
+    for name, info in registry.TYPES.items():
+        print(f"{name:<17} {info.section:<10} {info.summary}")
+
+
+@app.command()
+def schema(type_name: Optional[str] = typer.Argument(None, metavar="[TYPE]", help="One problem type (default: all).")):
+    """Print the JSON Schema of problem files (for editors' YAML support)."""
+    from dyncli.schema import json_schema
+
+    import json
+
+    try:
+        print(json.dumps(json_schema(type_name), indent=2))
+    except KeyError:
+        from dyncli import registry
+        from dyncli.expr import did_you_mean
+
+        _err(f"unknown problem type {type_name!r}{did_you_mean(type_name or '', registry.TYPES)}; run 'dyncli types'")
+        raise typer.Exit(2)
+
+
+@app.command()
+def new(type_name: str = typer.Argument(..., metavar="TYPE", help="Problem type.")):
+    """Print a commented template problem file for TYPE."""
+    from dyncli import registry
+    from dyncli.expr import did_you_mean
+    from dyncli.schema import template
+
+    if type_name not in registry.TYPES:
+        _err(f"unknown problem type {type_name!r}{did_you_mean(type_name, registry.TYPES)}; run 'dyncli types'")
+        raise typer.Exit(2)
+    sys.stdout.write(template(type_name))
+
+
+def main() -> None:
+    """Entry point: maps every failure to the contract's exit codes."""
+    try:
+        rc = app(standalone_mode=False)
+        sys.exit(rc if isinstance(rc, int) else 0)
+    except typer.Exit as exc:
+        sys.exit(exc.exit_code)
+    except SystemExit:
+        raise
+    except KeyboardInterrupt:
+        _err("interrupted")
+        sys.exit(130)
+    except Exception as exc:  # noqa: BLE001
+        import click
+
+        if isinstance(exc, click.exceptions.Abort):
+            _err("aborted")
+            sys.exit(2)
+        if isinstance(exc, click.ClickException):
+            exc.show()
+            sys.exit(2)
+        if isinstance(exc, BrokenPipeError):
+            sys.exit(0)
+        import traceback
+
+        _err(f"internal error in dyncli {__version__}: {type(exc).__name__}: {exc}. "
+             "This is a bug: please report it (run with --debug for the traceback).")
+        if "--debug" in sys.argv:
+            traceback.print_exc()
+        sys.exit(3)

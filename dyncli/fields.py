@@ -1,0 +1,307 @@
+"""Field types for problem models (pydantic v2), shared by every topic.
+
+Every numeric field takes a YAML number or a string holding a constant
+expression (``"pi/6"``, ``"sqrt(k/m)"``) evaluated with the problem's
+``params`` (passed as validation context ``{"params": {...}}``).
+
+Use the factories::
+
+    m: Num(gt=0, dim="mass")                     # float > 0
+    e: Num(ge=0, le=1)                           # 0 <= e <= 1
+    mB: Num(gt=0, allow_inf=True)                # .inf allowed
+    vA1: Vec3()                                  # list of 3 floats
+    R: Tensor3()                                 # 3x3 list of floats
+    a: ExprField(("t", "s", "v"))                # dyncli.expr.Expr
+    omega: ExprVec3(("t",))                      # tuple of 3 Expr
+    at: Times()                                  # list of floats (may be empty)
+
+``dim`` is the physical dimension (used by docs, schema and units support).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, ClassVar, Iterable
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo
+from pydantic.functional_validators import PlainValidator
+from pydantic.json_schema import WithJsonSchema
+from pydantic_core import PydanticCustomError
+
+from dyncli import expr as _expr
+from dyncli.errors import InputError
+
+NUMBER_SCHEMA = {
+    "anyOf": [
+        {"type": "number"},
+        {"type": "string", "description": "constant expression, e.g. \"pi/6\" or \"sqrt(k/m)\""},
+    ]
+}
+
+
+class StrictModel(BaseModel):
+    """Base for every input model: unknown fields are errors."""
+
+    model_config = ConfigDict(extra="forbid", frozen=False, arbitrary_types_allowed=True)
+
+
+def _params(info: ValidationInfo | None) -> dict[str, float]:
+    ctx = getattr(info, "context", None) or {}
+    return ctx.get("params", {})
+
+
+def _err(msg: str) -> PydanticCustomError:
+    return PydanticCustomError("dyncli", msg.replace("{", "{{").replace("}", "}}"))
+
+
+def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool = False) -> float:
+    """Number or constant expression -> float (raises PydanticCustomError)."""
+    if isinstance(value, bool):
+        raise _err(f"expected a number, got {value!r}")
+    if isinstance(value, (int, float)):
+        try:
+            v = float(value)
+        except OverflowError:
+            raise _err("number is too large") from None
+    elif isinstance(value, str):
+        unit_value = _maybe_units(value, info)
+        if unit_value is not None:
+            v = unit_value
+        else:
+            try:
+                v = _expr.constant(value, _params(info))
+            except InputError as exc:
+                raise _err(exc.message) from None
+            except ValueError:
+                raise _err(f"{value!r} is not a constant: it uses a variable") from None
+    else:
+        what = "a list" if isinstance(value, list) else "a mapping" if isinstance(value, dict) else "nothing (null)" if value is None else type(value).__name__
+        raise _err(f"expected a number, got {what}")
+    if math.isnan(v):
+        raise _err("not a number (NaN) is not allowed")
+    if math.isinf(v) and not allow_inf:
+        raise _err("must be finite (got infinity)")
+    return v
+
+
+def _maybe_units(value: str, info: ValidationInfo | None) -> float | None:
+    """Hook for unit strings ("200 N/m"); returns None when the string is a
+    plain expression.  The units layer (dyncli.units) replaces this when a
+    string looks like it carries units."""
+    return None
+
+
+def Num(
+    *,
+    gt: float | None = None,
+    ge: float | None = None,
+    lt: float | None = None,
+    le: float | None = None,
+    allow_inf: bool = False,
+    dim: str | None = None,
+    description: str | None = None,
+):
+    """A float field accepting numbers and constant expressions."""
+
+    def validate(value: Any, info: ValidationInfo) -> float:
+        v = to_float(value, info, allow_inf=allow_inf)
+        if gt is not None and not v > gt:
+            raise _err(f"must be > {_fmt(gt)}, got {_fmt(v)}")
+        if ge is not None and not v >= ge:
+            raise _err(f"must be >= {_fmt(ge)}, got {_fmt(v)}")
+        if lt is not None and not v < lt:
+            raise _err(f"must be < {_fmt(lt)}, got {_fmt(v)}")
+        if le is not None and not v <= le:
+            raise _err(f"must be <= {_fmt(le)}, got {_fmt(v)}")
+        return v
+
+    schema = dict(NUMBER_SCHEMA)
+    extra = {}
+    if dim:
+        extra["x-dimension"] = dim
+    if description:
+        schema["description"] = description
+    return Annotated[float, PlainValidator(validate), WithJsonSchema({**schema, **extra})]
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.6g}"
+
+
+def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, description: str | None = None):
+    """A vector: list of 3 numbers/expressions -> tuple of 3 floats."""
+
+    def validate(value: Any, info: ValidationInfo) -> tuple[float, float, float]:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            raise _err("expected a vector: a list of 3 numbers, e.g. [1, 0, 0]")
+        if not isinstance(value, (list, tuple)) or len(value) != 3:
+            n = len(value) if isinstance(value, (list, tuple)) else None
+            raise _err("expected a vector: a list of 3 numbers" + (f", got {n} entries" if n is not None else ""))
+        out = []
+        for i, x in enumerate(value):
+            try:
+                out.append(to_float(x, info))
+            except PydanticCustomError as exc:
+                raise _err(f"component {i + 1}: {exc.message()}") from None
+        if (nonzero or unit) and all(c == 0 for c in out):
+            raise _err("must be a non-zero vector")
+        return tuple(out)
+
+    schema = {"type": "array", "items": NUMBER_SCHEMA, "minItems": 3, "maxItems": 3}
+    if dim:
+        schema["x-dimension"] = dim
+    if description:
+        schema["description"] = description
+    return Annotated[tuple[float, float, float], PlainValidator(validate), WithJsonSchema(schema)]
+
+
+def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str | None = None):
+    """A 3x3 list of rows -> tuple of 3 tuples of floats."""
+
+    def validate(value: Any, info: ValidationInfo):
+        if not isinstance(value, (list, tuple)) or len(value) != 3 or not all(
+            isinstance(r, (list, tuple)) and len(r) == 3 for r in value
+        ):
+            raise _err("expected a 3x3 tensor: a list of 3 rows of 3 numbers")
+        rows = []
+        for i, r in enumerate(value):
+            row = []
+            for j, x in enumerate(r):
+                try:
+                    row.append(to_float(x, info))
+                except PydanticCustomError as exc:
+                    raise _err(f"entry ({i + 1},{j + 1}): {exc.message()}") from None
+            rows.append(tuple(row))
+        if symmetric:
+            scale = max(1e-300, max(abs(x) for r in rows for x in r))
+            for i in range(3):
+                for j in range(i + 1, 3):
+                    if abs(rows[i][j] - rows[j][i]) > 1e-9 * scale:
+                        raise _err(f"must be symmetric: entry ({i + 1},{j + 1}) != ({j + 1},{i + 1})")
+        return tuple(rows)
+
+    schema = {"type": "array", "items": {"type": "array", "items": NUMBER_SCHEMA, "minItems": 3, "maxItems": 3}, "minItems": 3, "maxItems": 3}
+    if dim:
+        schema["x-dimension"] = dim
+    if description:
+        schema["description"] = description
+    return Annotated[tuple, PlainValidator(validate), WithJsonSchema(schema)]
+
+
+def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo | None) -> _expr.Expr:
+    if isinstance(value, bool) or value is None or isinstance(value, (list, dict)):
+        what = {True: "a boolean", False: "a boolean"}.get(value, None) if isinstance(value, bool) else (
+            "nothing (null)" if value is None else "a list" if isinstance(value, list) else "a mapping")
+        raise _err(f"expected a number or an expression string, got {what}")
+    try:
+        return _expr.parse(value, tuple(variables), _params(info))
+    except InputError as exc:
+        raise _err(exc.message) from None
+
+
+def ExprField(variables: Iterable[str], *, dim: str | None = None, description: str | None = None):
+    """An expression in the given free variables -> :class:`dyncli.expr.Expr`."""
+    variables = tuple(variables)
+
+    def validate(value: Any, info: ValidationInfo) -> _expr.Expr:
+        if isinstance(value, _expr.Expr):
+            return value
+        return parse_expr_value(value, variables, info)
+
+    desc = description or (f"number or expression in {', '.join(variables)}" if variables else "number or constant expression")
+    schema = {"anyOf": [{"type": "number"}, {"type": "string"}], "description": desc}
+    if dim:
+        schema["x-dimension"] = dim
+    return Annotated[_expr.Expr, PlainValidator(validate), WithJsonSchema(schema)]
+
+
+def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: str | None = None):
+    """Three expressions (components of a vector) -> tuple of 3 Expr."""
+    variables = tuple(variables)
+
+    def validate(value: Any, info: ValidationInfo):
+        if not isinstance(value, (list, tuple)) or len(value) != 3:
+            raise _err("expected a list of 3 numbers or expressions (components on the basis)")
+        out = []
+        for i, x in enumerate(value):
+            if isinstance(x, _expr.Expr):
+                out.append(x)
+                continue
+            try:
+                out.append(parse_expr_value(x, variables, info))
+            except PydanticCustomError as exc:
+                raise _err(f"component {i + 1}: {exc.message()}") from None
+        return tuple(out)
+
+    desc = description or f"3 numbers or expressions in {', '.join(variables)}"
+    schema = {"type": "array", "items": {"anyOf": [{"type": "number"}, {"type": "string"}]}, "minItems": 3, "maxItems": 3, "description": desc}
+    if dim:
+        schema["x-dimension"] = dim
+    return Annotated[tuple, PlainValidator(validate), WithJsonSchema(schema)]
+
+
+MAX_TIMES = 100_000
+
+
+def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to report the state"):
+    """A list of time values (numbers or constant expressions); a single
+    number is accepted as a one-element list."""
+
+    def validate(value: Any, info: ValidationInfo) -> list[float]:
+        if value is None:
+            return []
+        if not isinstance(value, (list, tuple)):
+            value = [value]
+        if len(value) > max_len:
+            raise _err(f"too many times ({len(value)}, at most {max_len})")
+        out = []
+        for i, x in enumerate(value):
+            try:
+                out.append(to_float(x, info))
+            except PydanticCustomError as exc:
+                raise _err(f"entry {i}: {exc.message()}") from None
+        return out
+
+    schema = {"type": "array", "items": NUMBER_SCHEMA, "description": description}
+    return Annotated[list[float], PlainValidator(validate), WithJsonSchema(schema)]
+
+
+# ---------------------------------------------------------------------------
+# the fields every problem may have
+
+
+ACCURACY_METHODS_DEFAULT = ("auto",)
+
+
+class Accuracy(StrictModel):
+    """Accuracy controls for types with a numerical step (contract §1)."""
+
+    rtol: Num(gt=0, lt=1) = 1e-10  # type: ignore[valid-type]
+    atol: Num(gt=0) = 1e-12  # type: ignore[valid-type]
+    method: str = Field("auto", description="auto picks the cheapest exact route (closed form > quadrature > ODE)")
+    estimate: bool = Field(False, description="also solve at a tighter tolerance and report the difference as error_estimate")
+
+
+class ProblemBase(StrictModel):
+    """Fields every problem may have (contract §1).
+
+    Subclasses set ``type: Literal["name"]`` and may set the class variable
+    ``accuracy_methods`` (the accepted ``accuracy.method`` values)."""
+
+    title: str | None = None
+    params: dict[str, Any] = Field(default_factory=dict, description="name: number-or-expression, usable in every expression")
+    g: Num(ge=0, dim="acceleration") = 9.81  # type: ignore[valid-type]
+    accuracy: Accuracy = Field(default_factory=Accuracy)
+
+    accuracy_methods: ClassVar[tuple[str, ...]] = ACCURACY_METHODS_DEFAULT
+
+    def model_post_init(self, __context: Any) -> None:
+        methods = type(self).accuracy_methods
+        if self.accuracy.method not in methods:
+            from dyncli.expr import did_you_mean
+
+            raise InputError(
+                f"unknown method {self.accuracy.method!r}{did_you_mean(self.accuracy.method, methods)}; "
+                f"choose one of: {', '.join(methods)}",
+                "accuracy.method",
+            )

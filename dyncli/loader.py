@@ -1,0 +1,245 @@
+"""Loading problem files: safe YAML -> validated problem models.
+
+Knows nothing of any one topic: it reads ``type``, asks the registry for the
+model class, evaluates ``params`` and validates with pydantic (context
+``{"params": ...}``).  Every failure becomes a :class:`Diagnostic` printed as
+``file:line:col: field.path: what is wrong``.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from dyncli.errors import InputError
+from dyncli.expr import did_you_mean, resolve_params
+from dyncli.yamlsafe import Document, YamlError, load as yaml_load
+
+
+@dataclass
+class Diagnostic:
+    file: str
+    line: int | None
+    col: int | None
+    path: str | None
+    message: str
+    more: int = 0
+
+    def __str__(self) -> str:
+        loc = self.file
+        if self.line is not None:
+            loc += f":{self.line}:{self.col or 1}"
+        head = f"{loc}: " + (f"{self.path}: " if self.path else "")
+        tail = f" [+{self.more} more error{'s' if self.more > 1 else ''} in this problem]" if self.more else ""
+        return head + self.message + tail
+
+
+@dataclass
+class LoadedProblem:
+    file: str
+    index: int
+    type: str | None
+    title: str
+    raw: Any
+    doc: Document | None
+    prefix: tuple        # path of this problem inside the document
+    model: Any = None
+    error: Diagnostic | None = None
+    base_dir: Path | None = None
+
+    def diagnostic(self, path: str | tuple | None, message: str) -> Diagnostic:
+        """A diagnostic for a field path (dotted string or tuple) inside this problem."""
+        if isinstance(path, str):
+            parts: tuple = tuple(int(p) if p.isdigit() else p for p in path.split(".")) if path else ()
+        else:
+            parts = tuple(path or ())
+        line = col = None
+        if self.doc is not None:
+            pos = self.doc.locate(self.prefix + parts)
+            if pos:
+                line, col = pos
+        dotted = ".".join(str(p) for p in parts) or None
+        return Diagnostic(self.file, line, col, dotted, message)
+
+
+def read_source(name: str) -> tuple[str, bytes]:
+    """Read a file (``-`` = stdin).  Returns (display name, bytes)."""
+    from dyncli.yamlsafe import MAX_BYTES
+
+    if name == "-":
+        data = sys.stdin.buffer.read(MAX_BYTES + 1)
+        return "<stdin>", data
+    p = Path(name)
+    if not p.exists():
+        raise InputError(f"{name}: no such file")
+    if p.is_dir():
+        raise InputError(f"{name}: is a directory (give the YAML files, e.g. {name}/*.yaml)")
+    try:
+        with p.open("rb") as fh:
+            data = fh.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise InputError(f"{name}: cannot read ({exc.strerror})") from None
+    return name, data
+
+
+def split_problems(display: str, data: bytes | str, base_dir: Path | None = None) -> tuple[list[LoadedProblem], list[Diagnostic]]:
+    """Parse a file's text into problems (not yet validated)."""
+    try:
+        doc = yaml_load(data)
+    except YamlError as exc:
+        return [], [Diagnostic(display, exc.line, exc.col, None, exc.message)]
+    data = doc.data
+    default_title = Path(display).name if display != "<stdin>" else "stdin"
+    if isinstance(data, dict) and "problems" in data and "type" not in data:
+        extra = [k for k in data if k != "problems"]
+        if extra:
+            line, col = doc.locate((extra[0],)) or (None, None)
+            return [], [Diagnostic(display, line, col, str(extra[0]), "unknown top-level key: a file with 'problems:' holds only that list")]
+        items = data["problems"]
+        if not isinstance(items, list) or not items:
+            line, col = doc.locate(("problems",)) or (None, None)
+            return [], [Diagnostic(display, line, col, "problems", "expected a non-empty list of problems")]
+        prefixes = [("problems", i) for i in range(len(items))]
+    elif isinstance(data, dict):
+        items = [data]
+        prefixes = [()]
+    else:
+        line, col = doc.locate(()) or (1, 1)
+        return [], [Diagnostic(display, line, col, None, "expected a problem (a mapping with 'type') or 'problems: [...]'")]
+    out = []
+    for i, (item, prefix) in enumerate(zip(items, prefixes)):
+        t = item.get("type") if isinstance(item, dict) else None
+        title = item.get("title") if isinstance(item, dict) else None
+        if not isinstance(title, str) or not title:
+            title = default_title if len(items) == 1 else f"{default_title} #{i + 1}"
+        out.append(LoadedProblem(display, i, t if isinstance(t, str) else None, title, item, doc, prefix, base_dir=base_dir))
+    return out, []
+
+
+def validate(lp: LoadedProblem) -> None:
+    """Validate ``lp.raw`` into ``lp.model`` or set ``lp.error``."""
+    from dyncli import registry
+
+    raw = lp.raw
+    if not isinstance(raw, dict):
+        lp.error = lp.diagnostic((), "expected a problem: a mapping with 'type'")
+        return
+    if "type" not in raw:
+        lp.error = lp.diagnostic((), f"missing 'type'; one of: {', '.join(registry.TYPES)}")
+        return
+    t = raw["type"]
+    if not isinstance(t, str) or t not in registry.TYPES:
+        hint = did_you_mean(str(t), registry.TYPES)
+        lp.error = lp.diagnostic(("type",), f"unknown problem type {t!r}{hint}; run 'dyncli types' for the list")
+        lp.error.line, lp.error.col = (lp.doc.value_pos(lp.prefix + ("type",)) if lp.doc else None) or (lp.error.line, lp.error.col)
+        return
+    if not registry.available(t):
+        lp.error = lp.diagnostic(("type",), f"problem type '{t}' is not implemented in this version")
+        return
+    cls = registry.model_class(t)
+    try:
+        params = resolve_params(raw.get("params") or {})
+    except InputError as exc:
+        lp.error = lp.diagnostic(exc.path, exc.message)
+        return
+    lp.model, lp.error = validate_model(lp, cls, raw, params)
+
+
+def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
+    from pydantic import ValidationError
+
+    try:
+        return cls.model_validate(raw, context={"params": params, "base_dir": lp.base_dir}), None
+    except ValidationError as exc:
+        errors = exc.errors(include_url=False)
+        first = _pick(errors)
+        d = lp.diagnostic(first["loc"], _message(cls, first))
+        d.more = len(errors) - 1
+        return None, d
+    except InputError as exc:
+        return None, lp.diagnostic(exc.path, exc.message)
+
+
+def _pick(errors: list[dict]) -> dict:
+    """The most useful error first: a misspelled field beats the 'missing'
+    error it causes."""
+    for kind in ("extra_forbidden",):
+        for e in errors:
+            if e["type"] == kind:
+                return e
+    return errors[0]
+
+
+def _message(cls, err: dict) -> str:
+    t = err["type"]
+    loc = tuple(err["loc"])
+    if t == "extra_forbidden":
+        key = str(loc[-1]) if loc else "?"
+        fields = _fields_at(cls, loc[:-1])
+        hint = did_you_mean(key, fields) if fields else ""
+        known = f"; known fields: {', '.join(sorted(fields))}" if fields and not hint else ""
+        return f"unknown field '{key}'{hint}{known}"
+    if t == "missing":
+        return "required field is missing"
+    if t == "dyncli":
+        return err["msg"]
+    if t in ("literal_error",):
+        return err["msg"].replace("Input should be", "must be")
+    if t in ("union_tag_invalid", "union_tag_not_found"):
+        return err["msg"]
+    msg = err["msg"]
+    for pre in ("Value error, ", "Assertion failed, "):
+        if msg.startswith(pre):
+            msg = msg[len(pre):]
+    return msg.replace("Input should be", "must be")
+
+
+def _fields_at(cls, loc: tuple) -> list[str]:
+    """Best effort: the field names of the model found at ``loc``."""
+    import typing
+
+    from pydantic import BaseModel
+
+    def models_in(tp) -> list:
+        out = []
+        origin = typing.get_origin(tp)
+        if isinstance(tp, type) and issubclass(tp, BaseModel):
+            return [tp]
+        for a in typing.get_args(tp) or ():
+            out += models_in(a)
+        return out
+
+    current = [cls]
+    for part in loc:
+        nxt = []
+        for m in current:
+            if isinstance(part, str) and part in getattr(m, "model_fields", {}):
+                nxt += models_in(m.model_fields[part].annotation)
+            elif isinstance(part, int) or (isinstance(part, str) and part not in getattr(m, "model_fields", {})):
+                nxt.append(m)  # list index or union tag: stay
+        current = nxt or current
+    names: list[str] = []
+    for m in current:
+        names += list(getattr(m, "model_fields", {}))
+    return names
+
+
+def load_paths(names: list[str]) -> tuple[list[LoadedProblem], list[Diagnostic]]:
+    """Read and split every file, then validate every problem."""
+    problems: list[LoadedProblem] = []
+    diags: list[Diagnostic] = []
+    for name in names:
+        try:
+            display, data = read_source(name)
+        except InputError as exc:
+            diags.append(Diagnostic(name, None, None, None, exc.message.removeprefix(f"{name}: ")))
+            continue
+        base = Path(name).parent if name != "-" else Path.cwd()
+        ps, ds = split_problems(display, data, base)
+        diags += ds
+        for p in ps:
+            validate(p)
+        problems += ps
+    return problems, diags

@@ -1,0 +1,196 @@
+"""Rich table output.  Generic: scalars, vectors, tensors, lists over an index
+(``Result.series``), mappings (one row per name), lists of records, and the
+views (:class:`~dyncli.result.FrameTable`, :class:`~dyncli.result.Table`).
+
+Degrades cleanly when piped (no colour, plain box characters are kept ASCII
+when the terminal is not UTF-8) and honours ``NO_COLOR``.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from typing import Any
+
+from dyncli.result import FrameTable, Result, Table
+
+DEFAULT_DIGITS = 6
+
+
+def fmt_num(x: Any, digits: int = DEFAULT_DIGITS) -> str:
+    if x is None:
+        return "—"
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, str):
+        return x
+    try:
+        import numbers
+
+        if isinstance(x, numbers.Integral):
+            return str(int(x))
+        v = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if math.isnan(v):
+        return "nan"
+    if math.isinf(v):
+        return "∞" if v > 0 else "−∞"
+    if v == 0:
+        return "0"
+    s = f"{v:.{digits}g}"
+    if "e" in s:
+        mant, exp = s.split("e")
+        s = f"{mant}e{int(exp)}"
+    return s
+
+
+def is_vector(x: Any) -> bool:
+    return isinstance(x, (list, tuple)) and len(x) == 3 and all(_is_scalar_num(c) for c in x)
+
+
+def is_tensor(x: Any) -> bool:
+    return isinstance(x, (list, tuple)) and len(x) == 3 and all(is_vector(r) for r in x)
+
+
+def _is_scalar_num(x: Any) -> bool:
+    if isinstance(x, bool) or x is None:
+        return x is None
+    try:
+        float(x)
+        return not isinstance(x, (str, list, tuple, dict))
+    except (TypeError, ValueError):
+        return False
+
+
+def fmt_value(x: Any, digits: int = DEFAULT_DIGITS) -> str:
+    if hasattr(x, "tolist"):
+        x = x.tolist()
+    if is_tensor(x):
+        return "\n".join("[" + ", ".join(fmt_num(c, digits) for c in row) + "]" for row in x)
+    if is_vector(x):
+        return "[" + ", ".join(fmt_num(c, digits) for c in x) + "]"
+    if isinstance(x, dict):
+        return ", ".join(f"{k}: {fmt_value(v, digits)}" for k, v in x.items())
+    if isinstance(x, (list, tuple)):
+        if len(x) > 12:
+            return "[" + ", ".join(fmt_value(v, digits) for v in x[:5]) + f", … ({len(x)} values)]"
+        return "[" + ", ".join(fmt_value(v, digits) for v in x) + "]"
+    return fmt_num(x, digits)
+
+
+def make_console(file=None):
+    from rich.console import Console
+
+    no_color = bool(os.environ.get("NO_COLOR"))
+    return Console(file=file, no_color=no_color, highlight=False, soft_wrap=False)
+
+
+def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
+    from rich import box
+    from rich.table import Table as RTable
+    from rich.text import Text
+
+    from dyncli import registry
+
+    info = registry.TYPES.get(lp.type)
+    section = f" ({info.section})" if info else ""
+    head = Text()
+    head.append(lp.title, style="bold")
+    head.append(f"  ·  {lp.type}{section}", style="dim")
+    console.print(head)
+    meta = f"method: {result.method}"
+    if result.error_estimate is not None:
+        meta += f"   error estimate: {fmt_num(result.error_estimate, 3)}"
+    if result.equations:
+        meta += "   equations: " + ", ".join(f"({e})" for e in result.equations)
+    console.print(Text(meta, style="dim"))
+
+    in_series = {n for s in result.series for n in s.names}
+    scalars = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
+    scalars.add_column("result")
+    scalars.add_column("symbol", style="cyan")
+    scalars.add_column("value", justify="left")
+    scalars.add_column("unit", style="dim")
+    deferred: list[tuple[str, Any]] = []
+    n_rows = 0
+    for name, val in result.results.items():
+        if name in in_series:
+            continue
+        if hasattr(val, "tolist"):
+            val = val.tolist()
+        if isinstance(val, dict) and val and all(isinstance(v, (list, tuple, dict)) or _is_scalar_num(v) for v in val.values()) and len(val) > 1 and any(isinstance(v, (list, tuple, dict)) for v in val.values()):
+            deferred.append((name, val))
+            continue
+        if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
+            deferred.append((name, val))
+            continue
+        scalars.add_row(name, result.symbols.get(name, ""), fmt_value(val, digits), result.units.get(name, ""))
+        n_rows += 1
+    if n_rows:
+        console.print(scalars)
+
+    for s in result.series:
+        t = RTable(title=s.title, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+        t.add_column(s.index_name, justify="right")
+        for n in s.names:
+            sym = result.symbols.get(n, n)
+            unit = result.units.get(n)
+            t.add_column(sym + (f" [{unit}]" if unit else ""), justify="right")
+        for i, iv in enumerate(s.index):
+            row = [fmt_num(iv, digits)]
+            for n in s.names:
+                vals = result.results.get(n)
+                row.append(fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "")
+            t.add_row(*row)
+        console.print(t)
+
+    for name, val in deferred:
+        if isinstance(val, list):
+            keys: list[str] = []
+            for rec in val:
+                for k in rec:
+                    if k not in keys:
+                        keys.append(k)
+            t = RTable(title=result.symbols.get(name, name), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+            t.add_column("#", justify="right", style="dim")
+            for k in keys:
+                t.add_column(k, justify="right")
+            for i, rec in enumerate(val):
+                t.add_row(str(i), *[fmt_value(rec.get(k), digits) for k in keys])
+        else:
+            t = RTable(title=result.symbols.get(name, name), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+            t.add_column("name")
+            t.add_column("value")
+            for k, v in val.items():
+                t.add_row(str(k), fmt_value(v, digits))
+        console.print(t)
+
+    for view in result.views:
+        console.print(render_view(view, digits))
+
+    for w in result.warnings:
+        console.print(Text("warning: " + w, style="yellow"))
+    console.print()
+
+
+def render_view(view, digits: int = DEFAULT_DIGITS):
+    from rich import box
+    from rich.table import Table as RTable
+
+    if isinstance(view, FrameTable):
+        t = RTable(title=view.title, caption=view.note, box=box.SQUARE, header_style="bold", show_lines=True)
+        t.add_column("", style="cyan")
+        for b in view.basis:
+            t.add_column(b, justify="right")
+        for label, comps in view.rows:
+            t.add_row(label, *[fmt_num(c, digits) if not isinstance(c, str) else c for c in comps])
+        return t
+    if isinstance(view, Table):
+        t = RTable(title=view.title, caption=view.note, box=box.SIMPLE_HEAD, header_style="bold")
+        for c in view.columns:
+            t.add_column(c, justify="right")
+        for row in view.rows:
+            t.add_row(*[fmt_value(c, digits) for c in row])
+        return t
+    raise TypeError(view)  # pragma: no cover

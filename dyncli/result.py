@@ -1,0 +1,78 @@
+"""The result every solver returns, and generic views the renderers draw.
+
+A solver builds a :class:`Result`; the renderers (``dyncli.render``) know
+nothing of any topic and draw it from these generic pieces:
+
+* ``results``: the contract's result names -> number, vector (3 floats),
+  tensor (3x3), string, bool, None, list of these, or mapping of these;
+* ``method`` ("closed-form", "quadrature", "ode:DOP853", ...), ``equations``
+  (the notes' equation numbers), ``warnings``, ``error_estimate``;
+* ``symbols``: display symbols for result names (``"omega_n": "ωₙ"``);
+* ``units``: SI unit strings for result names (``"omega_n": "rad/s"``);
+* ``series``: groups of list-valued results that share an index, e.g.
+  ``Series("t", times, ["x", "v", "w"])`` -> one table with a row per time;
+* ``views``: extra tables (:class:`FrameTable`, :class:`Table`), e.g. the
+  δ/δt table of rotating-frame kinematics.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+
+@dataclass
+class Series:
+    index_name: str            # e.g. "t"
+    index: list                # e.g. the requested times
+    names: list[str]           # result names that are lists over ``index``
+    title: str | None = None
+
+
+@dataclass
+class FrameTable:
+    """Rows of vectors on a named basis (columns e'_1, e'_2, e'_3).
+
+    ``rows`` is a list of (label, [c1, c2, c3]) with numbers or strings
+    (formulas for ``--symbolic``)."""
+
+    title: str
+    rows: list[tuple[str, list[Any]]]
+    basis: tuple[str, str, str] = ("e'₁", "e'₂", "e'₃")
+    note: str | None = None
+
+
+@dataclass
+class Table:
+    """A plain table: ``columns`` headers and ``rows`` of cells."""
+
+    title: str
+    columns: list[str]
+    rows: list[list[Any]]
+    note: str | None = None
+
+
+@dataclass
+class Result:
+    results: dict[str, Any]
+    method: str = "closed-form"
+    equations: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    error_estimate: float | None = None
+    symbols: dict[str, str] = field(default_factory=dict)
+    units: dict[str, str] = field(default_factory=dict)
+    series: list[Series] = field(default_factory=list)
+    views: list[FrameTable | Table] = field(default_factory=list)
+    # free-form extra data for plots etc. (never rendered as results)
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def warn(self, message: str) -> None:
+        if message not in self.warnings:
+            self.warnings.append(message)
+
+
+@dataclass
+class SolveOptions:
+    """Options from the command line that a solver may use."""
+
+    symbolic: bool = False

@@ -1,0 +1,1 @@
+"""Rectilinear motion (notes §6): cases 1-4 and the general ODE."""

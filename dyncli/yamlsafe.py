@@ -1,0 +1,181 @@
+"""Safe YAML reading with source positions and hard caps.
+
+PyYAML's ``compose`` (SafeLoader) builds a node graph without constructing
+any Python object; we then construct plain data ourselves:
+
+* only the standard tags (str, int, float, bool, null, map, seq) are allowed
+  -- a ``!!python/...`` or any custom tag is invalid input;
+* the number of constructed nodes is capped, so alias expansion ("billion
+  laughs") fails fast instead of exhausting memory;
+* nesting depth and document size are capped;
+* duplicate mapping keys are an error;
+* every value's (line, col) is recorded under its path tuple.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from dyncli.errors import InputError
+
+MAX_BYTES = 2 * 1024 * 1024
+MAX_NODES = 200_000
+MAX_DEPTH = 40
+
+_STD = "tag:yaml.org,2002:"
+_ALLOWED_TAGS = {_STD + t for t in ("str", "int", "float", "bool", "null", "map", "seq")}
+
+
+class YamlError(InputError):
+    def __init__(self, message: str, line: int | None = None, col: int | None = None):
+        super().__init__(message)
+        self.line = line
+        self.col = col
+
+
+@dataclass
+class Document:
+    data: Any
+    # path tuple -> (line, col), 1-based.  ``key_pos`` points at the key of a
+    # mapping entry, ``pos`` at the value.
+    pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
+    key_pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
+
+    def locate(self, path: tuple) -> tuple[int, int] | None:
+        """Best position for ``path``: the key of the entry if known, else the
+        value, else the nearest ancestor."""
+        p = tuple(path)
+        while True:
+            if p in self.key_pos:
+                return self.key_pos[p]
+            if p in self.pos:
+                return self.pos[p]
+            if not p:
+                return None
+            p = p[:-1]
+
+    def value_pos(self, path: tuple) -> tuple[int, int] | None:
+        p = tuple(path)
+        while True:
+            if p in self.pos:
+                return self.pos[p]
+            if not p:
+                return None
+            p = p[:-1]
+
+
+def _mark(node) -> tuple[int, int]:
+    return node.start_mark.line + 1, node.start_mark.column + 1
+
+
+def load(text: str | bytes) -> Document:
+    """Parse one YAML document from ``text`` safely.  Raises YamlError."""
+    import yaml
+
+    if isinstance(text, bytes):
+        if len(text) > MAX_BYTES:
+            raise YamlError(f"file is too large ({len(text)} bytes, at most {MAX_BYTES})")
+        try:
+            text = text.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise YamlError(f"file is not UTF-8 text (byte {exc.start})") from None
+    if len(text) > MAX_BYTES:
+        raise YamlError(f"file is too large ({len(text)} characters, at most {MAX_BYTES})")
+    if "\x00" in text:
+        raise YamlError("file contains a NUL character (binary data?)")
+    try:
+        nodes = list(yaml.compose_all(text, Loader=yaml.SafeLoader))
+    except yaml.MarkedYAMLError as exc:
+        m = exc.problem_mark or exc.context_mark
+        msg = exc.problem or exc.context or "malformed YAML"
+        if m is not None:
+            raise YamlError(f"YAML syntax error: {msg}", m.line + 1, m.column + 1) from None
+        raise YamlError(f"YAML syntax error: {msg}") from None
+    except yaml.YAMLError as exc:
+        raise YamlError(f"YAML error: {exc}") from None
+    except RecursionError:
+        raise YamlError("YAML is nested too deeply") from None
+    nodes = [n for n in nodes if n is not None]
+    if not nodes:
+        raise YamlError("file is empty: expected a problem (a mapping with 'type')", 1, 1)
+    if len(nodes) > 1:
+        line, col = _mark(nodes[1])
+        raise YamlError("file holds several YAML documents ('---'); use one document with 'problems: [...]'", line, col)
+    doc = Document(None)
+    counter = [0]
+    doc.data = _construct(nodes[0], (), doc, counter, 0)
+    return doc
+
+
+def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int) -> Any:
+    import yaml
+
+    counter[0] += 1
+    if counter[0] > MAX_NODES:
+        line, col = _mark(node)
+        raise YamlError(
+            f"document expands to more than {MAX_NODES} values (alias bomb?)", line, col
+        )
+    if depth > MAX_DEPTH:
+        line, col = _mark(node)
+        raise YamlError(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
+    line, col = _mark(node)
+    doc.pos.setdefault(path, (line, col))
+    tag = node.tag
+    if tag not in _ALLOWED_TAGS:
+        raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
+    if isinstance(node, yaml.ScalarNode):
+        try:
+            return _scalar(node)
+        except (ValueError, OverflowError):
+            raise YamlError(f"cannot read value {node.value!r}", line, col) from None
+    if isinstance(node, yaml.SequenceNode):
+        return [_construct(n, path + (i,), doc, counter, depth + 1) for i, n in enumerate(node.value)]
+    if isinstance(node, yaml.MappingNode):
+        out: dict = {}
+        for knode, vnode in node.value:
+            if knode.tag == _STD + "merge" or (isinstance(knode, yaml.ScalarNode) and knode.value == "<<" and knode.tag != _STD + "str"):
+                kl, kc = _mark(knode)
+                raise YamlError("YAML merge keys ('<<') are not supported", kl, kc)
+            if not isinstance(knode, yaml.ScalarNode):
+                kl, kc = _mark(knode)
+                raise YamlError("mapping keys must be plain names", kl, kc)
+            key = _construct(knode, path + ("<key>",), doc, counter, depth + 1)
+            doc.pos.pop(path + ("<key>",), None)
+            if not isinstance(key, (str, int)) or isinstance(key, bool):
+                key = str(knode.value)
+            if key in out:
+                kl, kc = _mark(knode)
+                raise YamlError(f"duplicate key {key!r}", kl, kc)
+            doc.key_pos[path + (key,)] = _mark(knode)
+            out[key] = _construct(vnode, path + (key,), doc, counter, depth + 1)
+        return out
+    raise YamlError("unsupported YAML node", line, col)  # pragma: no cover
+
+
+def _scalar(node) -> Any:
+    """Construct a plain scalar the way SafeLoader would, for the std tags."""
+    import yaml
+
+    tag = node.tag
+    val = node.value
+    if tag == _STD + "str":
+        return val
+    if tag == _STD + "null":
+        return None
+    if tag == _STD + "bool":
+        return val.lower() in ("yes", "true", "on", "y")
+    if tag == _STD + "int":
+        return yaml.SafeLoader.construct_yaml_int(_DUMMY, node)
+    if tag == _STD + "float":
+        return yaml.SafeLoader.construct_yaml_float(_DUMMY, node)
+    return val  # pragma: no cover
+
+
+class _Dummy:
+    def construct_scalar(self, node):
+        return node.value
+
+
+_DUMMY = _Dummy()
