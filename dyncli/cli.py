@@ -157,32 +157,22 @@ def new(type_name: str = typer.Argument(..., metavar="TYPE", help="Problem type.
 
 
 def main() -> None:
-    """Entry point: maps every failure to the contract's exit codes."""
+    """Entry point: click/typer handle usage errors (exit 2) and typer.Exit;
+    anything unexpected is a bug and maps to exit 3 with one line."""
     try:
-        rc = app(standalone_mode=False)
-        sys.exit(rc if isinstance(rc, int) else 0)
-    except typer.Exit as exc:
-        sys.exit(exc.exit_code)
+        app()
     except SystemExit:
         raise
     except KeyboardInterrupt:
         _err("interrupted")
         sys.exit(130)
+    except BrokenPipeError:
+        sys.exit(0)
     except Exception as exc:  # noqa: BLE001
-        import click
-
-        if isinstance(exc, click.exceptions.Abort):
-            _err("aborted")
-            sys.exit(2)
-        if isinstance(exc, click.ClickException):
-            exc.show()
-            sys.exit(2)
-        if isinstance(exc, BrokenPipeError):
-            sys.exit(0)
         import traceback
 
         _err(f"internal error in dyncli {__version__}: {type(exc).__name__}: {exc}. "
              "This is a bug: please report it (run with --debug for the traceback).")
-        if "--debug" in sys.argv:
+        if _state["debug"] or "--debug" in sys.argv:
             traceback.print_exc()
         sys.exit(3)

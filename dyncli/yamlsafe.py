@@ -174,6 +174,9 @@ def _scalar(node) -> Any:
 
 
 class _Dummy:
+    inf_value = float("inf")
+    nan_value = float("nan")
+
     def construct_scalar(self, node):
         return node.value
 
