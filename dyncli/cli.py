@@ -56,6 +56,7 @@ def solve(
     format: Format = typer.Option(Format.table, "--format", "-f", help="Output format."),
     symbolic: bool = typer.Option(False, "--symbolic", help="Print frame tables with formulas (types that support it)."),
     digits: int = typer.Option(6, "--digits", min=1, max=17, help="Significant digits in tables."),
+    units: Optional[str] = typer.Option(None, "--units", help="Show table results in these units where compatible, e.g. 'deg,rpm,mm' (JSON stays SI)."),
 ):
     """Solve problem files and print the results."""
     from dyncli.loader import load_paths
@@ -81,9 +82,7 @@ def solve(
             from dyncli.render.table import make_console, render
 
             console = console or make_console()
-            render(console, lp, o.result, digits)
-            if lp.index == 0 and o.result.warnings:
-                pass
+            render(console, lp, o.result, digits, [u.strip() for u in units.split(",") if u.strip()] if units else None)
     if format is Format.json:
         from dyncli.render.jsonout import dumps
 

@@ -541,6 +541,14 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
         try:
             parsed[n] = parse(raw[n], variables=[m for m in names if m != n])
         except InputError as exc:
+            from dyncli import units
+
+            if isinstance(raw[n], str) and units.looks_like_quantity(raw[n]):
+                try:  # a parameter with a unit: converted to SI base units
+                    parsed[n] = Expr(raw[n], ("num", units.parse_quantity(raw[n])))
+                    continue
+                except units.UnitError as uexc:
+                    raise InputError(str(uexc), f"params.{n}") from None
             raise InputError(exc.message, f"params.{n}") from None
     values: dict[str, float] = {}
     visiting: list[str] = []
@@ -556,7 +564,7 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
         deps = {d: value_of(d) for d in e.variables}
         visiting.pop()
         try:
-            v = parse(e.text if not isinstance(raw[n], (int, float)) else raw[n], (), deps).value() if deps else e.value()
+            v = parse(e.text, (), deps).value() if deps else e.value()
         except InputError as exc:
             raise InputError(exc.message, f"params.{n}") from None
         if math.isnan(v):

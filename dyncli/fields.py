@@ -54,8 +54,9 @@ def _err(msg: str) -> PydanticCustomError:
     return PydanticCustomError("dyncli", msg.replace("{", "{{").replace("}", "}}"))
 
 
-def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool = False) -> float:
-    """Number or constant expression -> float (raises PydanticCustomError)."""
+def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool = False, dim: str | None = None) -> float:
+    """Number, constant expression or number-with-unit -> float in SI
+    (raises PydanticCustomError)."""
     if isinstance(value, bool):
         raise _err(f"expected a number, got {value!r}")
     if isinstance(value, (int, float)):
@@ -64,16 +65,19 @@ def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool 
         except OverflowError:
             raise _err("number is too large") from None
     elif isinstance(value, str):
-        unit_value = _maybe_units(value, info)
-        if unit_value is not None:
-            v = unit_value
-        else:
-            try:
-                v = _expr.constant(value, _params(info))
-            except InputError as exc:
+        try:
+            v = _expr.constant(value, _params(info))
+        except InputError as exc:
+            from dyncli import units
+
+            if not units.looks_like_quantity(value):
                 raise _err(exc.message) from None
-            except ValueError:
-                raise _err(f"{value!r} is not a constant: it uses a variable") from None
+            try:
+                v = units.parse_quantity(value, dim)
+            except units.UnitError as uexc:
+                raise _err(str(uexc)) from None
+        except ValueError:
+            raise _err(f"{value!r} is not a constant: it uses a variable") from None
     else:
         what = "a list" if isinstance(value, list) else "a mapping" if isinstance(value, dict) else "nothing (null)" if value is None else type(value).__name__
         raise _err(f"expected a number, got {what}")
@@ -82,13 +86,6 @@ def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool 
     if math.isinf(v) and not allow_inf:
         raise _err("must be finite (got infinity)")
     return v
-
-
-def _maybe_units(value: str, info: ValidationInfo | None) -> float | None:
-    """Hook for unit strings ("200 N/m"); returns None when the string is a
-    plain expression.  The units layer (dyncli.units) replaces this when a
-    string looks like it carries units."""
-    return None
 
 
 def Num(
@@ -104,7 +101,7 @@ def Num(
     """A float field accepting numbers and constant expressions."""
 
     def validate(value: Any, info: ValidationInfo) -> float:
-        v = to_float(value, info, allow_inf=allow_inf)
+        v = to_float(value, info, allow_inf=allow_inf, dim=dim)
         if gt is not None and not v > gt:
             raise _err(f"must be > {_fmt(gt)}, got {_fmt(v)}")
         if ge is not None and not v >= ge:
@@ -118,7 +115,10 @@ def Num(
     schema = dict(NUMBER_SCHEMA)
     extra = {}
     if dim:
+        from dyncli.units import si_unit
+
         extra["x-dimension"] = dim
+        extra["x-unit"] = si_unit(dim)
     if description:
         schema["description"] = description
     return Annotated[float, PlainValidator(validate), WithJsonSchema({**schema, **extra})]
@@ -140,7 +140,7 @@ def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, d
         out = []
         for i, x in enumerate(value):
             try:
-                out.append(to_float(x, info))
+                out.append(to_float(x, info, dim=dim))
             except PydanticCustomError as exc:
                 raise _err(f"component {i + 1}: {exc.message()}") from None
         if (nonzero or unit) and all(c == 0 for c in out):
@@ -168,7 +168,7 @@ def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str
             row = []
             for j, x in enumerate(r):
                 try:
-                    row.append(to_float(x, info))
+                    row.append(to_float(x, info, dim=dim))
                 except PydanticCustomError as exc:
                     raise _err(f"entry ({i + 1},{j + 1}): {exc.message()}") from None
             rows.append(tuple(row))
@@ -188,7 +188,7 @@ def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str
     return Annotated[tuple, PlainValidator(validate), WithJsonSchema(schema)]
 
 
-def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo | None) -> _expr.Expr:
+def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo | None, dim: str | None = None) -> _expr.Expr:
     if isinstance(value, bool) or value is None or isinstance(value, (list, dict)):
         what = {True: "a boolean", False: "a boolean"}.get(value, None) if isinstance(value, bool) else (
             "nothing (null)" if value is None else "a list" if isinstance(value, list) else "a mapping")
@@ -196,6 +196,13 @@ def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo 
     try:
         return _expr.parse(value, tuple(variables), _params(info))
     except InputError as exc:
+        from dyncli import units
+
+        if isinstance(value, str) and units.looks_like_quantity(value):
+            try:  # a constant with a unit, e.g. "-9.81 m/s^2"
+                return _expr.Expr(value, ("num", units.parse_quantity(value, dim)), tuple(variables))
+            except units.UnitError as uexc:
+                raise _err(str(uexc)) from None
         raise _err(exc.message) from None
 
 
@@ -206,7 +213,7 @@ def ExprField(variables: Iterable[str], *, dim: str | None = None, description: 
     def validate(value: Any, info: ValidationInfo) -> _expr.Expr:
         if isinstance(value, _expr.Expr):
             return value
-        return parse_expr_value(value, variables, info)
+        return parse_expr_value(value, variables, info, dim)
 
     desc = description or (f"number or expression in {', '.join(variables)}" if variables else "number or constant expression")
     schema = {"anyOf": [{"type": "number"}, {"type": "string"}], "description": desc}
@@ -228,7 +235,7 @@ def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: s
                 out.append(x)
                 continue
             try:
-                out.append(parse_expr_value(x, variables, info))
+                out.append(parse_expr_value(x, variables, info, dim))
             except PydanticCustomError as exc:
                 raise _err(f"component {i + 1}: {exc.message()}") from None
         return tuple(out)
@@ -257,7 +264,7 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
         out = []
         for i, x in enumerate(value):
             try:
-                out.append(to_float(x, info))
+                out.append(to_float(x, info, dim="time"))
             except PydanticCustomError as exc:
                 raise _err(f"entry {i}: {exc.message()}") from None
         return out

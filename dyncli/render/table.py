@@ -86,7 +86,38 @@ def make_console(file=None):
     return Console(file=file, no_color=no_color, highlight=False, soft_wrap=False)
 
 
-def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
+def _scale(x: Any, f: float) -> Any:
+    if x is None or isinstance(x, (bool, str)):
+        return x
+    if isinstance(x, dict):
+        return {k: _scale(v, f) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_scale(v, f) for v in x]
+    try:
+        return float(x) * f
+    except (TypeError, ValueError):
+        return x
+
+
+def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]:
+    """Apply ``--units`` preferences: returns (values, units) for display."""
+    values = dict(result.results)
+    units = dict(result.units)
+    if not wanted:
+        return values, units
+    from dyncli.units import display_factor
+
+    for name, si in result.units.items():
+        fac = display_factor(si, wanted)
+        if fac is None or name not in values:
+            continue
+        f, u = fac
+        values[name] = _scale(values[name], f)
+        units[name] = u
+    return values, units
+
+
+def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: list[str] | None = None) -> None:
     from rich import box
     from rich.table import Table as RTable
     from rich.text import Text
@@ -106,6 +137,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
         meta += "   equations: " + ", ".join(f"({e})" for e in result.equations)
     console.print(Text(meta, style="dim"))
 
+    values, unit_names = display_units(result, units)
     in_series = {n for s in result.series for n in s.names}
     scalars = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
     scalars.add_column("result")
@@ -114,7 +146,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
     scalars.add_column("unit", style="dim")
     deferred: list[tuple[str, Any]] = []
     n_rows = 0
-    for name, val in result.results.items():
+    for name, val in values.items():
         if name in in_series:
             continue
         if hasattr(val, "tolist"):
@@ -125,7 +157,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
         if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
             deferred.append((name, val))
             continue
-        scalars.add_row(name, result.symbols.get(name, ""), fmt_value(val, digits), result.units.get(name, ""))
+        scalars.add_row(name, result.symbols.get(name, ""), fmt_value(val, digits), unit_names.get(name, ""))
         n_rows += 1
     if n_rows:
         console.print(scalars)
@@ -135,12 +167,12 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS) -> None:
         t.add_column(s.index_name, justify="right")
         for n in s.names:
             sym = result.symbols.get(n, n)
-            unit = result.units.get(n)
+            unit = unit_names.get(n)
             t.add_column(sym + (f" [{unit}]" if unit else ""), justify="right")
         for i, iv in enumerate(s.index):
             row = [fmt_num(iv, digits)]
             for n in s.names:
-                vals = result.results.get(n)
+                vals = values.get(n)
                 row.append(fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "")
             t.add_row(*row)
         console.print(t)

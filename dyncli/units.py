@@ -1,0 +1,153 @@
+"""Units in problem files (contract §6).
+
+A numeric field may be written ``"200 N/m"``, ``"1500 rpm"``, ``"30 deg"``,
+``"3 kg*m^2"``, ``"10 lbf"``: a number, then a unit.  The value is checked
+against the field's declared dimension (``Num(dim="stiffness")``) and
+converted to SI.  pint is imported only when such a string is met: a string
+is first read as a constant expression (``"30*deg"``, ``"sqrt(k/m)"``), and
+only when that fails and it has the shape *number unit* is it read as a
+quantity.  Files without unit strings never import pint.
+
+``params`` may carry units too; they are converted to SI (base units) and
+then used as plain numbers in expressions (expressions themselves are
+dimensionless arithmetic on SI values).
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+# name -> (pint dimensionality, SI unit shown to users, noun for messages)
+DIMENSIONS: dict[str, tuple[str, str, str]] = {
+    "dimensionless": ("", "", "a dimensionless number"),
+    "mass": ("[mass]", "kg", "a mass"),
+    "length": ("[length]", "m", "a length"),
+    "time": ("[time]", "s", "a time"),
+    "velocity": ("[length]/[time]", "m/s", "a velocity"),
+    "acceleration": ("[length]/[time]**2", "m/s²", "an acceleration"),
+    "force": ("[mass]*[length]/[time]**2", "N", "a force"),
+    "stiffness": ("[mass]/[time]**2", "N/m", "a stiffness"),
+    "damping": ("[mass]/[time]", "N·s/m", "a damping coefficient"),
+    "angle": ("", "rad", "an angle"),
+    "angular_velocity": ("1/[time]", "rad/s", "an angular velocity"),
+    "frequency": ("1/[time]", "rad/s", "a frequency"),
+    "angular_acceleration": ("1/[time]**2", "rad/s²", "an angular acceleration"),
+    "inertia": ("[mass]*[length]**2", "kg·m²", "a moment of inertia"),
+    "energy": ("[mass]*[length]**2/[time]**2", "J", "an energy"),
+    "work": ("[mass]*[length]**2/[time]**2", "J", "a work"),
+    "power": ("[mass]*[length]**2/[time]**3", "W", "a power"),
+    "moment": ("[mass]*[length]**2/[time]**2", "N·m", "a moment"),
+    "torque": ("[mass]*[length]**2/[time]**2", "N·m", "a moment"),
+    "momentum": ("[mass]*[length]/[time]", "N·s", "a momentum"),
+    "impulse": ("[mass]*[length]/[time]", "N·s", "an impulse"),
+    "angular_momentum": ("[mass]*[length]**2/[time]", "kg·m²/s", "an angular momentum"),
+    "area": ("[length]**2", "m²", "an area"),
+    "volume": ("[length]**3", "m³", "a volume"),
+    "density": ("[mass]/[length]**3", "kg/m³", "a density"),
+    "pressure": ("[mass]/[length]/[time]**2", "Pa", "a pressure"),
+}
+
+_ALIASES = {"angular_rate": "angular_velocity", "rate": "angular_velocity", "spin": "angular_velocity",
+            "moment_of_inertia": "inertia", "rotational_inertia": "inertia", "distance": "length",
+            "position": "length", "speed": "velocity", "ratio": "dimensionless", "coefficient": "dimensionless"}
+
+_QUANTITY = re.compile(
+    r"^\s*(?P<num>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>[A-Za-z°µΩ][A-Za-z0-9_°µΩ\s*/^().·²³-]*)$"
+)
+MAX_UNIT_TEXT = 80
+
+
+def normalise_dim(dim: str | None) -> str | None:
+    if not dim:
+        return None
+    d = dim.strip().lower().replace(" ", "_").replace("-", "_")
+    return _ALIASES.get(d, d)
+
+
+def si_unit(dim: str | None) -> str:
+    d = normalise_dim(dim)
+    return DIMENSIONS[d][1] if d in DIMENSIONS else ""
+
+
+def looks_like_quantity(text: str) -> bool:
+    return bool(_QUANTITY.match(text)) and len(text) <= MAX_UNIT_TEXT + 40
+
+
+class UnitError(ValueError):
+    pass
+
+
+@lru_cache(maxsize=1)
+def registry():
+    import pint
+
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    return ureg
+
+
+def _clean(unit: str) -> str:
+    return (unit.replace("²", "**2").replace("³", "**3").replace("·", "*").replace("^", "**")
+            .replace("°", "degree ").strip())
+
+
+def parse_quantity(text: str, dim: str | None = None) -> float:
+    """``"200 N/m"`` -> 200.0 (SI), checked against ``dim``.  Raises UnitError."""
+    m = _QUANTITY.match(text)
+    if not m:
+        raise UnitError(f"{text!r} is neither an expression nor a number with a unit")
+    num = float(m.group("num"))
+    unit_text = m.group("unit").strip()
+    if len(unit_text) > MAX_UNIT_TEXT:
+        raise UnitError("unit is too long")
+    ureg = registry()
+    import pint
+
+    try:
+        unit = ureg.parse_units(_clean(unit_text))
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
+            TypeError, ValueError, SyntaxError, KeyError) as exc:
+        name = getattr(exc, "unit_names", None) or unit_text
+        if isinstance(name, (list, tuple)):
+            name = name[0] if name else unit_text
+        raise UnitError(f"unknown unit {name!r} in {text!r}") from None
+    except Exception:  # noqa: BLE001 - pint raises assorted errors on garbage
+        raise UnitError(f"cannot read the unit {unit_text!r} in {text!r}") from None
+    q = ureg.Quantity(num, unit)
+    d = normalise_dim(dim)
+    if d in DIMENSIONS:
+        want, si, noun = DIMENSIONS[d]
+        want_dim = ureg.get_dimensionality(want) if want else ureg.get_dimensionality("")
+        if q.dimensionality != want_dim:
+            shown = f"{m.group('num')} {unit_text}"
+            raise UnitError(f"expected {noun}" + (f" ({si})" if si else "") + f", got {shown}")
+    try:
+        base = q.to_base_units()
+    except Exception:  # noqa: BLE001
+        raise UnitError(f"cannot convert {text!r} to SI") from None
+    return float(base.magnitude)
+
+
+def display_factor(si_unit_text: str, wanted: list[str]) -> tuple[float, str] | None:
+    """For ``--units``: the first unit in ``wanted`` compatible with
+    ``si_unit_text``, as (factor SI -> wanted, wanted).  None if none fits."""
+    if not si_unit_text or not wanted:
+        return None
+    ureg = registry()
+    try:
+        src = ureg.Quantity(1.0, ureg.parse_units(_clean(si_unit_text)))
+    except Exception:  # noqa: BLE001
+        return None
+    for w in wanted:
+        try:
+            tgt = ureg.parse_units(_clean(w))
+        except Exception:  # noqa: BLE001
+            continue
+        if src.dimensionality == ureg.Quantity(1.0, tgt).dimensionality:
+            # angles: only convert quantities that are angles (rad), not plain numbers
+            if src.dimensionless and "rad" not in si_unit_text and "rev" not in w and "deg" not in w:
+                continue
+            if src.dimensionless and "rad" not in si_unit_text:
+                continue
+            return float(src.to(tgt).magnitude), w
+    return None
