@@ -57,6 +57,7 @@ def solve(
     symbolic: bool = typer.Option(False, "--symbolic", help="Print frame tables with formulas (types that support it)."),
     digits: int = typer.Option(6, "--digits", min=1, max=17, help="Significant digits in tables."),
     units: Optional[str] = typer.Option(None, "--units", help="Show table results in these units where compatible, e.g. 'deg,rpm,mm' (JSON stays SI)."),
+    plot: Optional[str] = typer.Option(None, "--plot", help="Save the plots of the solved problems to this .png/.svg/.pdf file."),
 ):
     """Solve problem files and print the results."""
     from dyncli.loader import load_paths
@@ -91,6 +92,21 @@ def solve(
         from dyncli.render.yamlout import dumps as ydumps
 
         sys.stdout.write(ydumps([outcome_record(o) for o in outcomes]))
+    if plot:
+        from dyncli.errors import InputError
+        from dyncli.render import plot as plotting
+
+        panels = [(o.problem.title, spec) for o in outcomes if o.result is not None for spec in o.result.plots]
+        try:
+            plotting.check_path(plot)
+            if panels:
+                plotting.save(panels, plot)
+                _err(f"wrote {len(panels)} plot panel(s) to {plot}")
+            else:
+                _err("--plot: none of these problem types draws a plot")
+        except InputError as exc:
+            _err(exc.message)
+            codes.append(2)
     for o in outcomes:
         if o.result is not None and format is not Format.table:
             for w in o.result.warnings:

@@ -53,6 +53,36 @@ class Table:
 
 
 @dataclass
+class Line:
+    """One curve of a :class:`Plot` (``z`` for 3-D plots)."""
+
+    x: list[float]
+    y: list[float]
+    label: str | None = None
+    style: str = "-"          # matplotlib line style: "-", "--", ":", "-."
+    z: list[float] | None = None
+    marker: str | None = None  # e.g. "o" for marked points only (no line: style "")
+
+
+@dataclass
+class Plot:
+    """A picture a topic wants drawn (``dyncli solve --plot FILE``).
+
+    The plot renderer (``dyncli.render.plot``) draws these generically."""
+
+    title: str
+    xlabel: str
+    ylabel: str
+    lines: list[Line] = field(default_factory=list)
+    zlabel: str | None = None         # set for 3-D plots
+    hlines: list[tuple[float, str]] = field(default_factory=list)   # (y, label)
+    vlines: list[tuple[float, str]] = field(default_factory=list)   # (x, label)
+    logx: bool = False
+    logy: bool = False
+    equal_aspect: bool = False
+
+
+@dataclass
 class Result:
     results: dict[str, Any]
     method: str = "closed-form"
@@ -63,6 +93,7 @@ class Result:
     units: dict[str, str] = field(default_factory=dict)
     series: list[Series] = field(default_factory=list)
     views: list[FrameTable | Table] = field(default_factory=list)
+    plots: list[Plot] = field(default_factory=list)
     # free-form extra data for plots etc. (never rendered as results)
     extra: dict[str, Any] = field(default_factory=dict)
 
