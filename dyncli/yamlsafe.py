@@ -174,6 +174,9 @@ def _scalar(node) -> Any:
 
 
 class _Dummy:
+    inf_value = float("inf")   # YAML .inf / -.inf (e.g. mB: .inf)
+    nan_value = float("nan")   # YAML .nan (rejected later by the numeric fields)
+
     def construct_scalar(self, node):
         return node.value
 
