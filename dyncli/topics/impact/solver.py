@@ -84,6 +84,11 @@ def _finite(x) -> bool:
     return math.isfinite(x)
 
 
+def _vec(v) -> list[float]:
+    """A plain list, with -0.0 shown as 0.0."""
+    return [c + 0.0 for c in v]
+
+
 def mass_factors(mA: float, mB: float):
     """(m*, wA, wB) with m* = mA mB/(mA+mB), wA = mA/(mA+mB), wB = mB/(mA+mB),
     computed from the ratio of the smaller to the larger mass (no overflow for
@@ -194,9 +199,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
     r = res.results
     r["impact"] = impact
-    r["vA2"] = list(vA2)
-    r["vB2"] = list(vB2)
-    r["impulse"] = list(impulse)
+    r["vA2"] = _vec(vA2)
+    r["vB2"] = _vec(vB2)
+    r["impulse"] = _vec(impulse)
     r["m_star"] = m_star
     r["approach_speed"] = a
     r["separation_speed"] = -dv2n
@@ -245,7 +250,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 def _general_results(res, p, impact, a, b, dv1_len, eta, phi, t, impulse, dv1, dv2n, n, loss):
     r = res.results
     r["phi"] = phi
-    r["t"] = list(t) if t is not None else None
+    r["t"] = _vec(t) if t is not None else None
     if impact:
         theta = math.atan2(b, a)                           # (28.40), in [0, pi/2)
         phi1, phi2 = admissible_bounds(theta, eta)

@@ -44,7 +44,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     r["I_bar"] = I_bar if math.isfinite(I_bar) else None
     # additional results: the velocity of the struck point, the kinetic energy
     x1 = (-s, -h, 0.0)
-    v_point = [v + w * h, -w * s, 0.0]          # v̄ + ω × x_1 with ω = w e'_3
+    v_point = [v + w * h, -w * s + 0.0, 0.0]          # v̄ + ω × x_1 with ω = w e'_3
     r["v_point"] = v_point
     T2 = 0.5 * m * v * v + 0.5 * m * (k * w) ** 2
     r["T2"] = T2 if math.isfinite(T2) else None
