@@ -35,13 +35,13 @@ class Impact(ProblemBase):
     def _check(self):
         if self.e is not None and self.eta is not None:
             raise InputError("give either e (smooth impact) or eta (general impact with phi), not both", "eta")
+        if self.phi is not None and self.eta is None:
+            raise InputError("phi (friction angle of the impulse) requires eta (general model, 28.26); "
+                             "a smooth impact with e has f = -n", "phi")
+        if self.t is not None and self.eta is None:
+            raise InputError("t is used only by the general model (eta, phi); a smooth impact needs no tangent", "t")
         if self.e is None and self.eta is None:
             raise InputError("give e (smooth impact, 0 <= e <= 1) or eta with phi (impact with friction)", "e")
-        if self.e is not None:
-            if self.phi is not None:
-                raise InputError("phi (friction angle) belongs to the general model: use eta instead of e", "phi")
-            if self.t is not None:
-                raise InputError("t is used only by the general model (eta, phi); a smooth impact needs no tangent", "t")
         if self.phi is not None and not (-math.pi / 2 <= self.phi <= math.pi / 2):
             raise InputError(f"the friction angle must lie in [-pi/2, pi/2] so that f·(-n) >= 0 (28.42c,d), got {self.phi:.6g}", "phi")
         if self.t is not None:
