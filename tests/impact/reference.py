@@ -80,11 +80,7 @@ def impact(mA, mB, vA1, vB1, n, e=None, eta=None, phi=0.0, t=None):
         dv2 = [x - y for x, y in zip(vA2, vB2)]
         loss = m_star * (1 - eta * eta) * dot(f, dv1) ** 2 / 2             # (28.32)
         theta = mp.atan2(dot(dv1, tt), a)                                  # (28.40)
-        rho = (1 - eta) / (1 + eta)
-        c2, s = mp.cos(theta) ** 2, mp.sin(theta)
-        root = mp.sqrt(1 - rho * rho * c2)
-        phi1 = -mp.acos(rho * c2 + root * s) / 2                           # (28.50a)
-        phi2 = mp.acos(rho * c2 - root * s) / 2                            # (28.50b)
+        phi1, phi2 = bounds_28_50(theta, eta)
         out.update(vA2=vA2, vB2=vB2, impulse=impulse, energy_loss=loss,
                    separation_speed=-dot(dv2, n), theta=theta, phi1=phi1, phi2=phi2, t=tt,
                    P1=dot(impulse, [-x for x in dv1]) > 0, P2=-dot(impulse, n) > 0,
@@ -94,3 +90,18 @@ def impact(mA, mB, vA1, vB1, n, e=None, eta=None, phi=0.0, t=None):
         out["T2"] = (mA * dot(out["vA2"], out["vA2"]) + mB * dot(out["vB2"], out["vB2"])) / 2
         out["G1"] = [mA * x + mB * y for x, y in zip(vA1, vB1)]
     return out
+
+
+def bounds_28_50(theta, eta):
+    """(28.50a,b) as printed.  The arccos argument approaches 1 (eta -> 0,
+    theta -> 0), where arccos loses half the digits, so evaluate at 120
+    digits (and clamp the argument to [-1, 1])."""
+    with mp.workdps(120):
+        theta, eta = mpf(theta), mpf(eta)
+        rho = (1 - eta) / (1 + eta)
+        c2, s = mp.cos(theta) ** 2, mp.sin(theta)
+        root = mp.sqrt(1 - rho * rho * c2)
+        clamp = lambda x: min(mpf(1), max(mpf(-1), x))  # noqa: E731
+        phi1 = -mp.acos(clamp(rho * c2 + root * s)) / 2                    # (28.50a)
+        phi2 = mp.acos(clamp(rho * c2 - root * s)) / 2                     # (28.50b)
+    return +phi1, +phi2

@@ -89,6 +89,22 @@ def _vec(v) -> list[float]:
     return [c + 0.0 for c in v]
 
 
+def approach_speed(vA1, vB1, n_raw) -> float:
+    """(vA1 - vB1)·n/|n| with the difference and the dot product exact
+    (rational arithmetic), rounded once: accurate to a few ulps even at
+    grazing incidence, where a float dot product would cancel."""
+    from fractions import Fraction
+
+    big = max(abs(c) for c in n_raw)
+    scale = 2.0 ** math.frexp(big)[1]                 # exact power of two
+    ns = [c / scale for c in n_raw]
+    exact = sum((Fraction(x) - Fraction(y)) * Fraction(c) for x, y, c in zip(vA1, vB1, ns))
+    try:
+        return float(exact) / _norm(ns)
+    except OverflowError:
+        raise InputError("the relative velocity vA1 - vB1 overflows: velocities too large", "vA1") from None
+
+
 def mass_factors(mA: float, mB: float):
     """(m*, wA, wB) with m* = mA mB/(mA+mB), wA = mA/(mA+mB), wB = mB/(mA+mB),
     computed from the ratio of the smaller to the larger mass (no overflow for
@@ -109,6 +125,7 @@ def admissible_bounds(theta: float, eta: float):
     α = atan2(√(4η + (1−η)² sin²θ), (1−η) cos θ)."""
     s, c = math.sin(theta), math.cos(theta)
     alpha = math.atan2(math.sqrt(4.0 * eta + ((1.0 - eta) * s) ** 2), (1.0 - eta) * c)
+    alpha = max(alpha, theta)        # alpha >= theta exactly (cos alpha = rho cos theta): keeps phi1 <= theta <= phi2 (28.52)
     return 0.5 * (theta - alpha), 0.5 * (theta + alpha)
 
 
@@ -121,7 +138,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     mA, mB = p.mA, p.mB
     fixed = math.isinf(mB)
     vA1, vB1 = tuple(p.vA1), tuple(p.vB1)
-    n = _unit(p.n)
+    n_raw = tuple(p.n)
+    n = _unit(n_raw)
     if not _finite(n):
         raise InputError("n is too large or too small to normalise", "n")
     dv1 = _sub(vA1, vB1)
@@ -129,7 +147,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         raise InputError("the relative velocity vA1 - vB1 overflows: velocities too large", "vA1")
 
     m_star, wA, wB = mass_factors(mA, mB)
-    a = _dot(dv1, n)                                  # approach speed (28.23)
+    a = approach_speed(vA1, vB1, n_raw)               # approach speed (28.23)
     w = _sub(dv1, _scale(n, a))                       # tangential part of Δv1
     dv1_len = _norm(dv1)
     b = _norm(w)
