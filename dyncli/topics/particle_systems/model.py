@@ -22,8 +22,16 @@ class Particles(ProblemBase):
     momentum and kinetic energy (24.12, 25.7, 27.8)."""
 
     type: Literal["particles"]
-    particles: list[Particle] = Field(..., min_length=1, description="the particles: list of {m, x, v}")
+    particles: list[Particle] = Field(..., description="the particles: list of {m, x, v} (at least one)",
+                                      json_schema_extra={"minItems": 1})
     about: Vec3(dim="length", description="the fixed point O for H_O [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+
+    @field_validator("particles")
+    @classmethod
+    def _not_empty(cls, v):
+        if not v:
+            raise ValueError("at least one particle {m, x, v} is needed")
+        return v
 
     @field_validator("about", mode="before")
     @classmethod
