@@ -1,4 +1,4 @@
-"""Impact of two particles (notes §28, §23) — numeric core (no pydantic).
+"""Impact of two particles (notes §28, §23) — numeric core.
 
 Everything is a closed form.  The computation is arranged so that it stays
 accurate for any mass ratio (1e-16 ... 1e16, masses up to ~1e300, mB = inf):

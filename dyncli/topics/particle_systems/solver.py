@@ -1,4 +1,4 @@
-"""Systems of particles (notes §24-§27) — numeric core (no pydantic).
+"""Systems of particles (notes §24-§27) — numeric core.
 
 m = Σ m_i, m x̄ = Σ m_i x_i (24.12); G = Σ m_i v_i = m v̄ (24.13);
 H_O = Σ (x_i − O) × m_i v_i (24.4a) = (x̄ − O) × m v̄ + H̄ (25.7 with B at the
