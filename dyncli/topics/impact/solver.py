@@ -89,20 +89,27 @@ def _vec(v) -> list[float]:
     return [c + 0.0 for c in v]
 
 
-def approach_speed(vA1, vB1, n_raw) -> float:
-    """(vA1 - vB1)·n/|n| with the difference and the dot product exact
-    (rational arithmetic), rounded once: accurate to a few ulps even at
-    grazing incidence, where a float dot product would cancel."""
+def contact_split(vA1, vB1, n_raw):
+    """(a, w): the approach speed a = Δv1·n (28.23) and the tangential part
+    w = Δv1 − a n of Δv1 = vA1 − vB1, computed exactly in rational arithmetic
+    from the input floats and rounded once.  This keeps full relative accuracy
+    at grazing incidence (a << |Δv1|) and near-normal incidence (|w| << |Δv1|),
+    where float dot products and differences would cancel."""
     from fractions import Fraction
 
     big = max(abs(c) for c in n_raw)
     scale = 2.0 ** math.frexp(big)[1]                 # exact power of two
-    ns = [c / scale for c in n_raw]
-    exact = sum((Fraction(x) - Fraction(y)) * Fraction(c) for x, y, c in zip(vA1, vB1, ns))
+    ns = [Fraction(c / scale) for c in n_raw]
+    nn = sum(c * c for c in ns)
+    d = [Fraction(x) - Fraction(y) for x, y in zip(vA1, vB1)]
+    dn = sum(x * c for x, c in zip(d, ns))            # a |n_s|
+    k = dn / nn
     try:
-        return float(exact) / _norm(ns)
+        w = tuple(float(x - k * c) for x, c in zip(d, ns))
+        a = float(dn) / _norm([float(c) for c in ns])
     except OverflowError:
         raise InputError("the relative velocity vA1 - vB1 overflows: velocities too large", "vA1") from None
+    return a, w
 
 
 def mass_factors(mA: float, mB: float):
@@ -147,8 +154,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         raise InputError("the relative velocity vA1 - vB1 overflows: velocities too large", "vA1")
 
     m_star, wA, wB = mass_factors(mA, mB)
-    a = approach_speed(vA1, vB1, n_raw)               # approach speed (28.23)
-    w = _sub(dv1, _scale(n, a))                       # tangential part of Δv1
+    a, w = contact_split(vA1, vB1, n_raw)             # Δv1·n (28.23), Δv1 − (Δv1·n) n
     dv1_len = _norm(dv1)
     b = _norm(w)
     parallel = b <= PARALLEL_TOL * dv1_len
