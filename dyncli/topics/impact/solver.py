@@ -200,7 +200,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         loss = 0.5 * m_star * (1.0 - coef) * (1.0 + coef) * a * a      # (28.16) / (28.32)
     else:
         # general model (28.26, 28.27, 28.41) in the (n, t) coordinates
-        bt = _dot(dv1, t) if parallel else b
+        bt = 0.0 if parallel else b                                    # Δv1·t (28.40)
         s = a * cphi + bt * sphi                                       # -f·Δv1
         k = (1.0 + coef) * s
         dv2n = a - k * cphi
