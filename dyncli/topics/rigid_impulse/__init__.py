@@ -1,0 +1,1 @@
+"""Impulse on a rigid body in planar motion and its center of percussion (notes §33)."""

@@ -1,0 +1,21 @@
+"""Input model of ``rigid-impulse`` problems (contract §4.10, notes §33)."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field
+
+from dyncli.fields import Num, ProblemBase
+
+
+class RigidImpulse(ProblemBase):
+    """A rigid body at rest in planar motion struck by an impulse R̂ e'_1 at
+    the point −s e'_1 − h e'_2 relative to its center of mass (33.3, 33.4)."""
+
+    type: Literal["rigid-impulse"]
+    m: Num(gt=0, dim="mass", description="mass of the body [kg]") = Field(...)  # type: ignore[valid-type]
+    k: Num(gt=0, dim="length", description="radius of gyration about the center of mass [m] (Ī = m k²)") = Field(...)  # type: ignore[valid-type]
+    R: Num(dim="impulse", description="impulse R̂ along e'_1 [N·s]") = Field(...)  # type: ignore[valid-type]
+    h: Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]") = Field(...)  # type: ignore[valid-type]
+    s: Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]") = 0.0  # type: ignore[valid-type]
