@@ -96,7 +96,10 @@ def solve(
         from dyncli.errors import InputError
         from dyncli.render import plot as plotting
 
-        panels = [(o.problem.title, spec) for o in outcomes if o.result is not None for spec in o.result.plots]
+        from dyncli import registry
+
+        panels = [(o.problem.title, spec) for o in outcomes if o.result is not None
+                  for spec in registry.plots_for(o.problem.type, o.problem.model, o.result)]
         try:
             plotting.check_path(plot)
             if panels:

@@ -89,6 +89,21 @@ def solver(name: str) -> Callable:
     return _load(TYPES[name].solver)
 
 
+def plots_for(name: str, problem, result) -> list:
+    """Plot specs for a solved problem: ``result.plots`` plus whatever the
+    topic's optional ``plots`` module draws (``dyncli.topics.<topic>.plots:
+    plots(problem, result) -> list[Plot]``), imported only for ``--plot``."""
+    out = list(result.plots)
+    mod = TYPES[name].topic + ".plots"
+    try:
+        m = importlib.import_module(mod)
+    except ModuleNotFoundError as exc:
+        if exc.name != mod:
+            raise
+        return out
+    return out + list(m.plots(problem, result))
+
+
 def problem_union():
     """The discriminated union (on ``type``) of every registered model."""
     from typing import Annotated, Union
