@@ -220,9 +220,16 @@ class _Walk:
         if not number_ok(g, true, self.tol):
             if true != 0 and g != 0:
                 self.ratios.append(g / true)
-            err = f"relative error {rel:.2g}" if rel is not None else f"absolute error {d:.2g}"
+            err = f"relative error {_rel_text(rel)}" if rel is not None else f"absolute error {d:.3g}"
             self.exceeded = True
             self.fail(where, err)
+
+
+def _rel_text(rel: float) -> str:
+    """``0.0123 -> "1.23%"``, ``999 -> "999 (99900%)"``."""
+    if rel < 10:
+        return f"{rel * 100:.3g}%"
+    return f"{rel:.3g}x"
 
 
 def _hints(ratios: list[float], tol: Tolerance) -> list[str]:

@@ -205,7 +205,7 @@ def _display(path: Path) -> str:
         rel = os.path.relpath(path, Path.cwd())
     except ValueError:  # pragma: no cover - other drive on Windows
         return str(path)
-    return str(path) if rel.startswith("..") and path.is_absolute() and rel.count("..") > 3 else rel
+    return str(path) if rel.startswith("..") else rel
 
 
 def _diag_from_message(msg: str) -> Diagnostic:
@@ -356,7 +356,8 @@ class Checker:
         key = _canonical(lp)
         if key is not None and key in self._solved:
             return self._solved[key]
-        self.solves += 1
+        if lp.error is None:
+            self.solves += 1
         outcome = solve_one(lp, self.options)
         if key is not None:
             self._solved[key] = outcome

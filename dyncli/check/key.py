@@ -51,6 +51,22 @@ def flatten_results(results: dict, series_names: set[str] = frozenset()) -> dict
     return out
 
 
+def _key_dumper():
+    """SafeDumper writing lists (vectors, tensors) in flow style and
+    mappings in block style, so every answer sits on its own line."""
+    import yaml
+
+    class KeyDumper(yaml.SafeDumper):
+        pass
+
+    def seq(dumper, data):
+        flow = not any(isinstance(x, dict) for x in data)
+        return dumper.represent_sequence("tag:yaml.org,2002:seq", data, flow_style=flow)
+
+    KeyDumper.add_representer(list, seq)
+    return KeyDumper
+
+
 def _rel(path: Path, base: Path) -> str:
     try:
         return Path(os.path.relpath(path.resolve(), base.resolve())).as_posix()
@@ -106,5 +122,5 @@ def write_key(names: list[str], key_dir: Path | None = None, options=None) -> tu
     head = ["# Answer key written by `dyncli check --write-key` (check it with `dyncli check` on this file).",
             "# Edit tolerances (rtol/atol or sigfigs) and per-answer points ({value: ..., points: 2}) as needed;",
             "# delete answers you do not want to grade."]
-    body = yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, default_flow_style=None, width=100)
+    body = yaml.dump(doc, Dumper=_key_dumper(), sort_keys=False, allow_unicode=True, default_flow_style=False, width=100)
     return "\n".join(head + comments) + "\n" + body, messages, worst(codes)
