@@ -256,10 +256,10 @@ def _read_answer(doc: Document, path: tuple, key: str, v: Any, tol: Tolerance) -
         return a
     if isinstance(v, dict) and "value" in v:
         try:
-            a.tol = _tol_from({k: x for k, x in v.items() if k not in ("value", "points")}, tol, path, TOL_KEYS)
             for k in v:
                 if k not in ANSWER_KEYS:
                     raise _Bad(path + (k,), f"unknown key '{k}'{did_you_mean(str(k), ANSWER_KEYS)}; known: {', '.join(ANSWER_KEYS)}")
+            a.tol = _tol_from({k: x for k, x in v.items() if k not in ("value", "points")}, tol, path, TOL_KEYS)
         except _Bad as exc:
             a.error = f"{exc.message}"
             pos = doc.locate(exc.path) if exc.key else doc.value_pos(exc.path)

@@ -226,10 +226,10 @@ class _Walk:
 
 
 def _rel_text(rel: float) -> str:
-    """``0.0123 -> "1.23%"``, ``999 -> "999 (99900%)"``."""
+    """``0.0123 -> "1.23%"``, ``999 -> "999"``."""
     if rel < 10:
         return f"{rel * 100:.3g}%"
-    return f"{rel:.3g}x"
+    return f"{rel:.3g}"
 
 
 def _hints(ratios: list[float], tol: Tolerance) -> list[str]:

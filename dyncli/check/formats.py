@@ -312,7 +312,7 @@ def step_summary_markdown(report: Report) -> str:
             rows.append(f"| {cell(fr.file)} | — | invalid file | 0 | {cell(str(d))} |")
         for cr in fr.checks:
             for a in cr.answers:
-                rows.append(f"| {cell(_where(fr.file, a.line, None))} | `{cell(a.key)}` | {STATUS_TEXT[a.status]} | "
+                rows.append(f"| {cell(fr.file + (f':{a.line}' if a.line else ''))} | `{cell(a.key)}` | {STATUS_TEXT[a.status]} | "
                             f"{fmt_points(a.score)}/{fmt_points(a.points)} | {cell(feedback(a, report.reveal))} |")
     return "\n".join(rows) + "\n"
 
