@@ -8,8 +8,7 @@ import math
 import re
 from typing import Any
 
-from dyncli.check.engine import AnswerResult, CheckResult, FileReport, Report
-from dyncli.loader import Diagnostic
+from dyncli.check.engine import AnswerResult, Report
 
 STATUS_TEXT = {
     "correct": "correct",
