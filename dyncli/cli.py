@@ -135,6 +135,29 @@ def validate(files: List[str] = typer.Argument(..., help="Problem files (YAML); 
     raise typer.Exit(2 if bad else 0)
 
 
+class CheckFormat(str, Enum):
+    table = "table"
+    json = "json"
+    junit = "junit"
+    github = "github"
+    gradescope = "gradescope"
+
+
+@app.command()
+def check(
+    files: List[str] = typer.Argument(..., help="Answer files (YAML); '-' reads stdin. With --write-key: problem files.",
+                                      metavar="ANSWERS..."),
+    format: CheckFormat = typer.Option(CheckFormat.table, "--format", "-f", help="Report format."),
+    reveal: bool = typer.Option(False, "--reveal", help="Show the expected values."),
+    output: Optional[str] = typer.Option(None, "--output", "-o", help="Write the report (or key) to this file."),
+    write_key: bool = typer.Option(False, "--write-key", help="Solve the given PROBLEM files and print an answer key."),
+):
+    """Grade answer files against the solved problems (exit 1 if any answer is wrong)."""
+    from dyncli.check.command import run_check
+
+    raise typer.Exit(run_check(files, format.value, reveal, output, write_key, _state["debug"]))
+
+
 @app.command()
 def types():
     """List the problem types with the notes' sections."""

@@ -1,0 +1,1 @@
+"""`dyncli check`: grade answer files against solved problems (contract §5)."""

@@ -1,0 +1,109 @@
+"""The body of ``dyncli check`` (the CLI only parses options and calls
+:func:`run_check`).  Diagnostics go to stderr; stdout (or ``--output``)
+holds only the chosen format."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+FORMATS = ("table", "json", "junit", "github", "gradescope")
+
+
+def _err(msg: str) -> None:
+    print(msg, file=sys.stderr)
+
+
+def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output: str | None = None,
+              write_key: bool = False, debug: bool = False) -> int:
+    if write_key:
+        return _write_key(files, output)
+    if sum(1 for f in files if f == "-") > 1:
+        _err("'-' (stdin) can be given only once")
+        return 2
+    from dyncli.check.engine import Checker
+    from dyncli.check import formats
+
+    checker = Checker(reveal=reveal)
+    report = checker.check_paths(files)
+
+    # diagnostics on stderr for every format
+    for fr in report.files:
+        for d in fr.diagnostics:
+            _err(str(d))
+        for cr in fr.checks:
+            if cr.error is not None:
+                _err(f"{fr.file}: check #{cr.index} ({cr.title}): problem not solved: {cr.error}")
+                if cr.trace and debug:
+                    _err(cr.trace)
+            for a in cr.answers:
+                if a.status == "invalid":
+                    _err(f"{fr.file}:{a.line}:{a.col}: answers.{a.key}: {a.message}")
+
+    if fmt == "table":
+        from dyncli.render.table import make_console
+
+        if output:
+            try:
+                with open(output, "w", encoding="utf-8") as fh:
+                    formats.render_table(report, make_console(fh))
+            except OSError as exc:
+                _err(f"{output}: cannot write ({exc.strerror})")
+                return 2
+        else:
+            formats.render_table(report, make_console())
+    else:
+        text = {
+            "json": formats.render_json,
+            "junit": formats.render_junit,
+            "github": formats.render_github,
+            "gradescope": formats.render_gradescope,
+        }[fmt](report)
+        try:
+            _emit(text, output)
+        except _OutputError as exc:
+            _err(str(exc))
+            return 2
+        if fmt == "github":
+            summary = os.environ.get("GITHUB_STEP_SUMMARY")
+            if summary:
+                try:
+                    with open(summary, "a", encoding="utf-8") as fh:
+                        fh.write(formats.step_summary_markdown(report))
+                except OSError as exc:
+                    _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
+        _err(formats.summary_line(report))
+    return report.exit_code
+
+
+def _emit(text: str, output: str | None) -> None:
+    if output:
+        try:
+            Path(output).parent.mkdir(parents=True, exist_ok=True)
+            with open(output, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        except OSError as exc:
+            raise _OutputError(f"{output}: cannot write ({exc.strerror})") from None
+    else:
+        sys.stdout.write(text)
+
+
+class _OutputError(Exception):
+    pass
+
+
+def _write_key(files: list[str], output: str | None) -> int:
+    from dyncli.check.key import write_key
+
+    key_dir = Path(output).parent if output else Path.cwd()
+    text, messages, code = write_key(files, key_dir)
+    for m in messages:
+        _err(m)
+    if text:
+        try:
+            _emit(text, output)
+        except _OutputError as exc:
+            _err(str(exc))
+            return 2
+    return code

@@ -1,0 +1,302 @@
+"""Comparison rules of ``dyncli check`` (contract §5).
+
+* numbers: correct when ``|given - true| <= atol + rtol*|true|`` (defaults
+  ``rtol = 1e-2``, ``atol = 1e-8``, PrairieLearn's numeric-input defaults), or
+  with ``sigfigs: n`` when ``|given - true| < 0.51*10**(floor(log10|true|) - n + 1)``
+  (PrairieLearn's significant-figure rule; a true value of 0 uses ``10**(1 - n)``);
+* vectors, tensors, lists and mappings: element by element, all-or-nothing;
+* booleans and strings: exactly (a boolean is never a number);
+* ``null`` (not defined) matches only ``null``;
+* a non-finite given value (``.inf``, ``.nan``) is never correct;
+* a given number may be a YAML number or a string holding a constant
+  expression (``"2*pi"``, ``"1.5e3"``, ``"30*deg"``; no params, no variables).
+
+Nothing here formats the expected value: callers decide whether to reveal it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+DEFAULT_RTOL = 1e-2
+DEFAULT_ATOL = 1e-8
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    rtol: float = DEFAULT_RTOL
+    atol: float = DEFAULT_ATOL
+    sigfigs: int | None = None
+
+    def describe(self) -> str:
+        if self.sigfigs is not None:
+            return f"{self.sigfigs} significant figure{'s' if self.sigfigs != 1 else ''}"
+        return f"rtol {_g(self.rtol)}, atol {_g(self.atol)}"
+
+    def as_dict(self) -> dict:
+        if self.sigfigs is not None:
+            return {"sigfigs": self.sigfigs}
+        return {"rtol": self.rtol, "atol": self.atol}
+
+
+def _g(x: float) -> str:
+    return f"{x:.3g}"
+
+
+class GivenError(ValueError):
+    """The given value cannot be read as an answer (invalid answer file)."""
+
+
+@dataclass
+class Verdict:
+    """Outcome of comparing one answer.
+
+    ``status``: ``correct``, ``wrong``, ``missing`` (null given for a defined
+    quantity) or ``invalid`` (the given value cannot be read).
+    ``message`` never contains the expected value."""
+
+    status: str
+    message: str = ""
+    rel_error: float | None = None    # worst element: |g - t| / |t| (None if t = 0)
+    abs_error: float | None = None    # worst element: |g - t|
+    wrong_elements: list[str] = field(default_factory=list)   # e.g. ["1", "2.0"]
+    hints: list[str] = field(default_factory=list)
+
+    @property
+    def correct(self) -> bool:
+        return self.status == "correct"
+
+
+# ---------------------------------------------------------------------------
+# scalar rules
+
+
+def sigfig_bound(true: float, n: int) -> float:
+    """Half-width of the acceptance interval of the significant-figure rule."""
+    a = abs(true)
+    if a == 0:
+        return 0.51 * 10.0 ** (1 - n)
+    e = math.floor(math.log10(a))
+    # guard log10 rounding just below/above a power of ten
+    if 10.0 ** e > a:
+        e -= 1
+    elif 10.0 ** (e + 1) <= a:
+        e += 1
+    return 0.51 * 10.0 ** (e - n + 1)
+
+
+def number_ok(given: float, true: float, tol: Tolerance) -> bool:
+    if not (math.isfinite(given) and math.isfinite(true)):
+        return False
+    d = abs(given - true)
+    if tol.sigfigs is not None:
+        return d < sigfig_bound(true, tol.sigfigs)
+    return d <= tol.atol + tol.rtol * abs(true)
+
+
+def to_number(given: Any) -> float | None:
+    """A given scalar as a float, or None when it is not numeric at all
+    (bool, list, mapping).  Strings are read as constant expressions;
+    unreadable strings raise :class:`GivenError`."""
+    if isinstance(given, bool) or given is None:
+        return None
+    if isinstance(given, (int, float)):
+        try:
+            return float(given)
+        except OverflowError:
+            return math.inf if given > 0 else -math.inf
+    if isinstance(given, str):
+        from dyncli.errors import InputError
+        from dyncli.expr import parse
+
+        try:
+            e = parse(given, (), {})
+            return float(e.value())
+        except InputError as exc:
+            raise GivenError(f"cannot read {given!r} as a number: {exc.message}") from None
+        except (ValueError, ArithmeticError) as exc:  # pragma: no cover - defensive
+            raise GivenError(f"cannot read {given!r} as a number: {exc}") from None
+    return None
+
+
+def _is_num(x: Any) -> bool:
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
+
+
+# ---------------------------------------------------------------------------
+# structural comparison
+
+
+class _Walk:
+    def __init__(self, tol: Tolerance):
+        self.tol = tol
+        self.wrong: list[str] = []
+        self.reasons: list[str] = []
+        self.worst_rel: float | None = None
+        self.worst_abs: float | None = None
+        self.ratios: list[float] = []      # given/true of wrong non-zero elements
+        self.n_numbers = 0
+        self.exceeded = False
+
+    def fail(self, where: str, reason: str) -> None:
+        self.wrong.append(where)
+        self.reasons.append(f"{where}: {reason}" if where else reason)
+
+    def walk(self, given: Any, true: Any, where: str) -> None:
+        if true is None:
+            if given is not None:
+                self.fail(where, "incorrect")
+            return
+        if given is None:
+            self.fail(where, "no value given (null)")
+            return
+        if isinstance(true, bool):
+            if not isinstance(given, bool):
+                self.fail(where, "expected true or false")
+            elif given is not true:
+                self.fail(where, "incorrect")
+            return
+        if isinstance(true, str):
+            if given != true:
+                self.fail(where, "incorrect")
+            return
+        if _is_num(true):
+            self.number(given, float(true), where)
+            return
+        if isinstance(true, list):
+            if not isinstance(given, list):
+                self.fail(where, f"expected a list of {len(true)} values")
+                return
+            if len(given) != len(true):
+                self.fail(where, f"expected {len(true)} values, got {len(given)}")
+                return
+            for i, (g, t) in enumerate(zip(given, true)):
+                self.walk(g, t, f"{where}.{i}" if where else str(i))
+            return
+        if isinstance(true, dict):
+            if not isinstance(given, dict):
+                self.fail(where, f"expected a mapping with entries {', '.join(map(str, true))}")
+                return
+            gk = {str(k): v for k, v in given.items()}
+            tk = {str(k): v for k, v in true.items()}
+            missing = [k for k in tk if k not in gk]
+            extra = [k for k in gk if k not in tk]
+            if missing or extra:
+                parts = []
+                if missing:
+                    parts.append("missing " + ", ".join(missing))
+                if extra:
+                    parts.append("unknown " + ", ".join(extra))
+                self.fail(where, "; ".join(parts))
+                return
+            for k, t in tk.items():
+                self.walk(gk[k], t, f"{where}.{k}" if where else k)
+            return
+        self.fail(where, "cannot compare")  # pragma: no cover - results are plain data
+
+    def number(self, given: Any, true: float, where: str) -> None:
+        self.n_numbers += 1
+        if isinstance(given, bool):
+            self.fail(where, "expected a number, not true/false")
+            return
+        if isinstance(given, (list, dict)):
+            self.fail(where, "expected a single number")
+            return
+        g = to_number(given)
+        if g is None:  # pragma: no cover - covered by the checks above
+            self.fail(where, "expected a number")
+            return
+        if not math.isfinite(g):
+            self.fail(where, "not a finite number (write null for a quantity that is not defined)")
+            return
+        d = abs(g - true)
+        rel = d / abs(true) if true != 0 else None
+        if self.worst_abs is None or d > self.worst_abs:
+            self.worst_abs = d
+        if rel is not None and (self.worst_rel is None or rel > self.worst_rel):
+            self.worst_rel = rel
+        if not number_ok(g, true, self.tol):
+            if true != 0 and g != 0:
+                self.ratios.append(g / true)
+            err = f"relative error {_rel_text(rel)}" if rel is not None else f"absolute error {d:.3g}"
+            self.exceeded = True
+            self.fail(where, err)
+
+
+def _rel_text(rel: float) -> str:
+    """``0.0123 -> "1.23%"``, ``999 -> "999"``."""
+    if rel < 10:
+        return f"{rel * 100:.3g}%"
+    return f"{rel:.3g}"
+
+
+def _hints(ratios: list[float], tol: Tolerance) -> list[str]:
+    """Name common slips (sign, powers of ten, 2π, degrees) when every wrong
+    element shows the same one."""
+    if not ratios:
+        return []
+    checks = [
+        (-1.0, "the sign looks wrong"),
+    ]
+    for k in (3, 6, 9, 2, 1):
+        checks.append((10.0 ** k, f"off by a factor of {10 ** k} (units? e.g. mm vs m, g vs kg)"))
+        checks.append((10.0 ** -k, f"off by a factor of 1/{10 ** k} (units? e.g. mm vs m, g vs kg)"))
+    checks += [
+        (2 * math.pi, "off by a factor of 2π (rad/s vs Hz or rev/s?)"),
+        (1 / (2 * math.pi), "off by a factor of 1/(2π) (rad/s vs Hz or rev/s?)"),
+        (180 / math.pi, "off by a factor of 180/π (degrees instead of radians?)"),
+        (math.pi / 180, "off by a factor of π/180 (radians instead of degrees?)"),
+        (2.0, "off by a factor of 2"),
+        (0.5, "off by a factor of 1/2"),
+    ]
+    rt = max(tol.rtol if tol.sigfigs is None else 0.51 * 10.0 ** (1 - tol.sigfigs), 1e-9)
+    out = []
+    for factor, text in checks:
+        for sign in (1.0, -1.0):
+            f = factor * sign
+            if f == 1.0:
+                continue
+            if all(abs(r - f) <= rt * abs(f) for r in ratios):
+                if sign < 0 and factor != -1.0:
+                    text = text + ", and the sign looks wrong"
+                out.append(text)
+                return out
+    return out
+
+
+def compare(given: Any, true: Any, tol: Tolerance) -> Verdict:
+    """Compare one answer with the solved value."""
+    if given is None and true is not None:
+        return Verdict("missing", "no value given (null)")
+    w = _Walk(tol)
+    try:
+        w.walk(given, true, "")
+    except GivenError as exc:
+        return Verdict("invalid", str(exc))
+    if not w.wrong:
+        return Verdict("correct", "", w.worst_rel, w.worst_abs)
+    hints = _hints(w.ratios, tol) if len(w.ratios) == len(w.wrong) else []
+    elems = [x for x in w.wrong if x]
+    if not elems:
+        msg = w.reasons[0]
+        if w.exceeded:
+            msg += f" exceeds the tolerance ({tol.describe()})"
+    else:
+        total = _count_leaves(true)
+        shown = "; ".join(w.reasons[:3]) + ("; ..." if len(w.reasons) > 3 else "")
+        msg = f"{len(elems)} of {total} elements wrong ({shown})"
+        if w.exceeded:
+            msg += f"; tolerance: {tol.describe()}"
+    if hints:
+        msg += "; hint: " + hints[0]
+    return Verdict("wrong", msg, w.worst_rel, w.worst_abs, elems, hints)
+
+
+def _count_leaves(x: Any) -> int:
+    if isinstance(x, list):
+        return sum(_count_leaves(v) for v in x) or 1
+    if isinstance(x, dict):
+        return sum(_count_leaves(v) for v in x.values()) or 1
+    return 1

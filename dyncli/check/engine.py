@@ -1,0 +1,373 @@
+"""Grading: resolve each check's problem (cached), solve it once, compare
+every answer, and collect a :class:`Report` that the formats render.
+
+Caching: problem files are read once per resolved path; solutions are cached
+by canonical content (the problem mapping after ``params`` overrides, plus
+its base directory), so many answer files that reference the same problems
+cost one solve per distinct problem.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from dyncli.check.answers import AnswerFile, CheckSpec, read_answer_source
+from dyncli.check.compare import Tolerance, compare
+from dyncli.loader import Diagnostic, LoadedProblem, read_source, split_problems, validate
+from dyncli.errors import InputError
+
+MAX_PATHS = 5000
+
+_DIAG_RE = re.compile(r"^(?P<file>.*?):(?P<line>\d+):(?P<col>\d+): (?P<msg>.*)$", re.S)
+
+
+@dataclass
+class AnswerResult:
+    key: str
+    status: str                  # correct | wrong | missing | unknown | invalid | error
+    points: float
+    score: float
+    given: Any
+    expected: Any                # shown only with --reveal
+    tolerance: Tolerance
+    line: int | None
+    col: int | None
+    message: str = ""
+    rel_error: float | None = None
+    abs_error: float | None = None
+
+    @property
+    def correct(self) -> bool:
+        return self.status == "correct"
+
+    @property
+    def exit_code(self) -> int:
+        if self.status == "correct":
+            return 0
+        if self.status == "invalid":
+            return 2
+        return 1
+
+
+@dataclass
+class CheckResult:
+    file: str
+    index: int
+    title: str
+    problem_file: str | None
+    type: str | None
+    answers: list[AnswerResult] = field(default_factory=list)
+    error: Diagnostic | None = None     # the problem could not be loaded/solved
+    error_code: int = 0
+    trace: str | None = None
+
+    @property
+    def score(self) -> float:
+        return sum(a.score for a in self.answers)
+
+    @property
+    def max_score(self) -> float:
+        return sum(a.points for a in self.answers)
+
+    @property
+    def exit_code(self) -> int:
+        return max([self.error_code] + [a.exit_code for a in self.answers])
+
+
+@dataclass
+class FileReport:
+    file: str
+    title: str | None = None
+    checks: list[CheckResult] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def score(self) -> float:
+        return sum(c.score for c in self.checks)
+
+    @property
+    def max_score(self) -> float:
+        return sum(c.max_score for c in self.checks)
+
+    @property
+    def exit_code(self) -> int:
+        return max([2 if self.diagnostics else 0] + [c.exit_code for c in self.checks])
+
+    def answers(self):
+        for c in self.checks:
+            for a in c.answers:
+                yield c, a
+
+
+@dataclass
+class Report:
+    files: list[FileReport] = field(default_factory=list)
+    solves: int = 0
+    reveal: bool = False
+
+    @property
+    def score(self) -> float:
+        return sum(f.score for f in self.files)
+
+    @property
+    def max_score(self) -> float:
+        return sum(f.max_score for f in self.files)
+
+    @property
+    def exit_code(self) -> int:
+        return max([0] + [f.exit_code for f in self.files])
+
+    def counts(self) -> dict[str, int]:
+        out: dict[str, int] = {}
+        for f in self.files:
+            for _, a in f.answers():
+                out[a.status] = out.get(a.status, 0) + 1
+        return out
+
+
+# ---------------------------------------------------------------------------
+# result paths
+
+
+def split_key(key: str) -> list[str]:
+    return [p for p in str(key).split(".")]
+
+
+def lookup(results: Any, key: str) -> tuple[bool, Any, str]:
+    """Follow a dotted key into ``results``.  Returns (found, value, message)."""
+    cur = results
+    done: list[str] = []
+    for part in split_key(key):
+        here = ".".join(done) or "results"
+        if isinstance(cur, dict):
+            if part in cur:
+                cur = cur[part]
+            else:
+                return False, None, ""
+        elif isinstance(cur, list):
+            if not re.fullmatch(r"\d+", part):
+                return False, None, (f"'{here}' is a list of {len(cur)} entries: use an index "
+                                     f"0-{len(cur) - 1} instead of '{part}'")
+            i = int(part)
+            if i >= len(cur):
+                return False, None, (f"'{here}' has {len(cur)} entr{'y' if len(cur) == 1 else 'ies'} "
+                                     f"(indices 0-{len(cur) - 1}); there is no index {i}")
+            cur = cur[i]
+        else:
+            return False, None, f"'{here}' is a single value: it has no entry '{part}'"
+        done.append(part)
+    return True, cur, ""
+
+
+def available_paths(results: Any, limit: int = MAX_PATHS) -> list[str]:
+    out: list[str] = []
+
+    def rec(x: Any, prefix: str) -> None:
+        if len(out) >= limit:
+            return
+        if prefix:
+            out.append(prefix)
+        if isinstance(x, dict):
+            for k, v in x.items():
+                rec(v, f"{prefix}.{k}" if prefix else str(k))
+        elif isinstance(x, list):
+            for i, v in enumerate(x):
+                rec(v, f"{prefix}.{i}" if prefix else str(i))
+
+    rec(results, "")
+    return out
+
+
+def unknown_key_message(results: Any, key: str) -> str:
+    from dyncli.expr import did_you_mean
+
+    found, _, msg = lookup(results, key)
+    if msg:
+        return f"unknown answer key '{key}': {msg}"
+    hint = did_you_mean(key, available_paths(results))
+    if hint:
+        return f"unknown answer key '{key}'{hint}"
+    top = ", ".join(str(k) for k in results) if isinstance(results, dict) else ""
+    return f"unknown answer key '{key}'; the results are: {top}"
+
+
+# ---------------------------------------------------------------------------
+# the checker
+
+
+def _display(path: Path) -> str:
+    try:
+        rel = os.path.relpath(path, Path.cwd())
+    except ValueError:  # pragma: no cover - other drive on Windows
+        return str(path)
+    return str(path) if rel.startswith("..") else rel
+
+
+def _diag_from_message(msg: str) -> Diagnostic:
+    m = _DIAG_RE.match(msg or "")
+    if m:
+        return Diagnostic(m["file"], int(m["line"]), int(m["col"]), None, m["msg"])
+    head, sep, rest = (msg or "").partition(": ")
+    if sep and not head.count(" "):
+        return Diagnostic(head, None, None, None, rest)
+    return Diagnostic("", None, None, None, msg or "unknown error")
+
+
+class Checker:
+    def __init__(self, reveal: bool = False, options=None):
+        self.reveal = reveal
+        self.options = options
+        self._files: dict[str, tuple[list[LoadedProblem], list[Diagnostic]]] = {}
+        self._solved: dict[str, Any] = {}
+        self.solves = 0
+
+    # -- public -----------------------------------------------------------
+    def check_paths(self, names: list[str]) -> Report:
+        report = Report(reveal=self.reveal)
+        for name in names:
+            report.files.append(self.check_file(read_answer_source(name)))
+        report.solves = self.solves
+        return report
+
+    def check_file(self, af: AnswerFile) -> FileReport:
+        fr = FileReport(af.file, af.title, diagnostics=list(af.diagnostics))
+        for spec in af.checks:
+            fr.checks.append(self.check_one(af, spec))
+        return fr
+
+    # -- one check ----------------------------------------------------------
+    def check_one(self, af: AnswerFile, spec: CheckSpec) -> CheckResult:
+        lp, err = self._problem(af, spec)
+        title = spec.title or (lp.title if lp is not None else f"check #{spec.index}")
+        cr = CheckResult(af.file, spec.index, title, lp.file if lp else None, lp.type if lp else None)
+        if err is not None:
+            cr.error, cr.error_code = err, 2
+            self._all_error(cr, spec, err)
+            return cr
+        outcome = self._solve(lp)
+        if outcome.exit_code != 0 or outcome.result is None:
+            cr.error = _diag_from_message(outcome.message or "")
+            cr.error_code = outcome.exit_code or 3
+            cr.trace = outcome.trace
+            self._all_error(cr, spec, cr.error)
+            return cr
+        from dyncli.render.jsonout import jsonable
+
+        results = getattr(outcome, "_plain", None)
+        if results is None:
+            results = jsonable(outcome.result.results)
+            outcome._plain = results
+        for a in spec.answers:
+            cr.answers.append(self._grade(a, results))
+        return cr
+
+    def _all_error(self, cr: CheckResult, spec: CheckSpec, err: Diagnostic) -> None:
+        for a in spec.answers:
+            cr.answers.append(AnswerResult(a.key, "error", a.points, 0.0, a.given, None, a.tol, a.line, a.col,
+                                           f"not graded: the problem could not be solved ({err.message})"))
+
+    def _grade(self, a, results) -> AnswerResult:
+        if a.error:
+            return AnswerResult(a.key, "invalid", a.points, 0.0, a.given, None, a.tol, a.line, a.col, a.error)
+        found, true, _ = lookup(results, a.key)
+        if not found:
+            return AnswerResult(a.key, "unknown", a.points, 0.0, a.given, None, a.tol, a.line, a.col,
+                                unknown_key_message(results, a.key))
+        v = compare(a.given, true, a.tol)
+        msg = v.message
+        return AnswerResult(a.key, v.status, a.points, a.points if v.correct else 0.0, a.given, true, a.tol,
+                            a.line, a.col, msg, v.rel_error, v.abs_error)
+
+    # -- problems -----------------------------------------------------------
+    def _problem(self, af: AnswerFile, spec: CheckSpec) -> tuple[LoadedProblem | None, Diagnostic | None]:
+        def here(path: tuple, message: str) -> Diagnostic:
+            pos = af.doc.locate(spec.prefix + path) if af.doc else None
+            line, col = pos if pos else (spec.line, spec.col)
+            return Diagnostic(af.file, line, col, ".".join(str(p) for p in spec.prefix + path) or None, message)
+
+        if spec.problem_inline is not None:
+            raw = spec.problem_inline
+            t = raw.get("type")
+            title = raw.get("title") if isinstance(raw.get("title"), str) else f"{af.file}: inline problem"
+            lp = LoadedProblem(af.file, spec.index, t if isinstance(t, str) else None, title, raw, af.doc,
+                               spec.prefix + ("problem",), base_dir=af.base_dir)
+            if spec.problem_index not in (None, 0):
+                return None, here(("index",), "an inline problem has only index 0")
+        else:
+            ref = spec.problem_ref or ""
+            path = Path(ref)
+            if not path.is_absolute():
+                path = af.base_dir / path
+            try:
+                resolved = path.resolve()
+            except (OSError, RuntimeError):
+                resolved = path
+            if not resolved.is_file():
+                what = "is a directory" if resolved.is_dir() else "not found"
+                return None, Diagnostic(af.file, spec.line, spec.col, ".".join(map(str, spec.prefix + ("problem",))),
+                                        f"problem file '{ref}' {what} (looked for {_display(resolved)}; "
+                                        "paths are relative to the answer file)")
+            key = str(resolved)
+            if key not in self._files:
+                try:
+                    display, data = read_source(_display(resolved))
+                except InputError as exc:
+                    return None, Diagnostic(af.file, spec.line, spec.col, "problem", exc.message)
+                ps, ds = split_problems(display, data, resolved.parent)
+                for p in ps:
+                    validate(p)
+                self._files[key] = (ps, ds)
+            ps, ds = self._files[key]
+            if ds:
+                return None, ds[0]
+            idx = spec.problem_index if spec.problem_index is not None else 0
+            if spec.problem_index is None and len(ps) > 1:
+                return None, Diagnostic(af.file, spec.line, spec.col, "problem",
+                                        f"'{ref}' holds {len(ps)} problems: add 'index: N' (0-{len(ps) - 1}) "
+                                        "to say which one these answers are for")
+            if idx >= len(ps):
+                return None, here(("index",), f"'{ref}' holds {len(ps)} problem{'s' if len(ps) > 1 else ''}: "
+                                              f"index must be 0-{len(ps) - 1}")
+            lp = ps[idx]
+            if spec.params is None:
+                return lp, None
+            raw = dict(lp.raw) if isinstance(lp.raw, dict) else lp.raw
+            lp = LoadedProblem(lp.file, lp.index, lp.type, lp.title, raw, lp.doc, lp.prefix, base_dir=lp.base_dir)
+        if spec.params is not None and isinstance(lp.raw, dict):
+            base = lp.raw.get("params") if isinstance(lp.raw.get("params"), dict) else {}
+            lp.raw = dict(lp.raw)
+            lp.raw["params"] = {**base, **spec.params}
+        validate(lp)
+        if lp.error is not None and spec.params and lp.error.path and lp.error.path.startswith("params."):
+            name = lp.error.path.split(".", 1)[1]
+            if name in spec.params:
+                d = here(("params", name), lp.error.message)
+                return None, d
+        return lp, None
+
+    def _solve(self, lp: LoadedProblem):
+        from dyncli.run import solve_one
+
+        key = _canonical(lp)
+        if key is not None and key in self._solved:
+            return self._solved[key]
+        if lp.error is None:
+            self.solves += 1
+        outcome = solve_one(lp, self.options)
+        if key is not None:
+            self._solved[key] = outcome
+        return outcome
+
+
+def _canonical(lp: LoadedProblem) -> str | None:
+    try:
+        body = json.dumps(lp.raw, sort_keys=True, default=str, allow_nan=True)
+    except (TypeError, ValueError):  # pragma: no cover - plain YAML data always dumps
+        return None
+    base = str(Path(lp.base_dir).resolve()) if lp.base_dir is not None else ""
+    return base + "\n" + body
