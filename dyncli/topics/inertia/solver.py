@@ -144,7 +144,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     any_hole = any(part.hole for part in p.parts)
     if any_hole:
         _check_remainder(I_com, scale, True, res, "the body")
-    B = np.zeros(3) if p.about is None else np.asarray(p.about, dtype=float)
+    B = com.copy() if p.about is None else np.asarray(p.about, dtype=float)  # no `about`: B is the center of mass
     pbar = com - B
     T = rot.transfer_term(m, pbar)
     I_B = I_com + T
