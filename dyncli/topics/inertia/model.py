@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Literal, Optional
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from dyncli.fields import Num, ProblemBase, StrictModel, Tensor3, Vec3
 from dyncli.topics.inertia import rotations
@@ -22,6 +22,15 @@ SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
     "tensor": ("inertia",),
 }
 GEOMETRY_FIELDS = ("length", "size", "radius", "height", "inertia")
+
+
+def check_psd(T) -> None:
+    """ValueError unless the symmetric tensor T is positive-semidefinite."""
+    lo, _tri, scale = rotations.inertia_defect(T)
+    if lo < -1e-12 * max(scale, 1e-300):
+        raise ValueError(
+            f"not positive-semidefinite (smallest principal moment {lo:.6g}): "
+            "it is not an inertia tensor (no mass distribution has it)")
 
 
 class Orientation(StrictModel):
@@ -67,14 +76,14 @@ class Part(StrictModel):
             raise ValueError(f"{', '.join(repr(f) for f in extra)} does not apply to shape '{self.shape}' ({takes})")
         if self.size is not None and any(c < 0 for c in self.size):
             raise ValueError(f"box size must have non-negative edge lengths, got {list(self.size)}")
-        if self.inertia is not None:
-            lo, tri, scale = rotations.inertia_defect(self.inertia)
-            if lo < -1e-12 * max(scale, 1e-300):
-                raise ValueError(
-                    f"inertia is not positive-semidefinite (smallest principal moment {lo:.6g}): "
-                    "no mass distribution has it"
-                )
         return self
+
+    @field_validator("inertia")
+    @classmethod
+    def _psd(cls, v):
+        if v is not None:
+            check_psd(v)
+        return v
 
 
 class Inertia(ProblemBase):

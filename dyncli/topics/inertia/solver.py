@@ -102,7 +102,7 @@ def composite(parts):
         holes = float(masses[signs < 0].sum())
         raise InputError(
             f"the holes remove {holes:.6g} kg from {solid:.6g} kg of solid parts: the remaining mass "
-            f"{m:.6g} kg is not positive", "parts")
+            f"{m:.6g} kg is not positive", _first_hole(parts))
     com = (signs * masses) @ xs / m
     I = np.zeros((3, 3))
     scale = 0.0
@@ -117,19 +117,27 @@ def composite(parts):
     return m, com, rot.sym(I), recs, scale
 
 
-def _check_remainder(I_com, scale, any_hole, res, where):
+def _first_hole(parts) -> str:
+    return next((f"parts.{k}" for k, p in enumerate(parts) if p.hole), "parts")
+
+
+def _check_remainder(I_com, scale, res, where):
+    """A remainder after holes must be a physical inertia tensor: positive-
+    semidefinite, and with I1 + I2 >= I3 (the second-moment tensor
+    ∫ρ p⊗p dV = ½tr(I)1 − I positive-semidefinite); otherwise exit 2."""
     lo, tri, s = rot.inertia_defect(I_com)
     tol = 1e-10 * max(scale, s, 1e-300)
     if lo < -tol:
         raise InputError(
             "the holes leave a remainder whose inertia tensor about its center of mass is not "
             f"positive-semidefinite (smallest principal moment {lo:.6g} kg·m²): they remove more "
-            "inertia than the solid parts have", "parts")
+            "inertia than the solid parts have", where)
     if tri > tol:
-        what = "the holes leave a remainder that" if any_hole else f"{where}"
-        res.warn(
-            f"{what} violates the triangle inequality of principal moments (I₁ + I₂ < I₃ by {tri:.6g} kg·m²): "
-            "no positive mass distribution has this inertia tensor")
+        raise InputError(
+            "the holes leave a remainder that no positive mass distribution can have: its principal moments "
+            f"violate the triangle inequality I₁ + I₂ ≥ I₃ (short by {tri:.6g} kg·m²; the second-moment "
+            "tensor ∫ρ p⊗p dV is not positive-semidefinite); a hole probably lies (partly) outside the solid parts",
+            where)
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
@@ -143,7 +151,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     m, com, I_com, recs, scale = composite(p.parts)
     any_hole = any(part.hole for part in p.parts)
     if any_hole:
-        _check_remainder(I_com, scale, True, res, "the body")
+        _check_remainder(I_com, scale, res, _first_hole(p.parts))
     B = com.copy() if p.about is None else np.asarray(p.about, dtype=float)  # no `about`: B is the center of mass
     pbar = com - B
     T = rot.transfer_term(m, pbar)

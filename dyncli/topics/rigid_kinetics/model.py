@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import model_validator
+from pydantic import field_validator
 
 from dyncli.fields import Num, ProblemBase, Tensor3, Vec3
-from dyncli.topics.inertia import rotations
+from dyncli.topics.inertia.model import check_psd
 
 
 class PlanarMoments(ProblemBase):
@@ -31,11 +31,8 @@ class RigidEnergy(ProblemBase):
     omega: Vec3(dim="angular velocity", description="angular velocity [rad/s], same basis as I")  # type: ignore[valid-type]
     I: Tensor3(symmetric=True, dim="moment of inertia", description="inertia tensor about the center of mass [kg m²], same basis as omega")  # type: ignore[valid-type]
 
-    @model_validator(mode="after")
-    def _physical(self):
-        lo, _tri, scale = rotations.inertia_defect(self.I)
-        if lo < -1e-12 * max(scale, 1e-300):
-            raise ValueError(
-                f"I is not positive-semidefinite (smallest principal moment {lo:.6g}): "
-                "it is not an inertia tensor (the rotational energy could be negative)")
-        return self
+    @field_validator("I")
+    @classmethod
+    def _psd(cls, v):
+        check_psd(v)
+        return v
