@@ -13,6 +13,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 
@@ -122,3 +124,14 @@ def _about(P, W):
     J = np.einsum("n,ni,nj->ij", W, P, P)
     I = np.trace(J) * np.eye(3) - J
     return m, (W @ P) / m, I
+
+
+def rotation(psi, theta, phi):
+    """Independent construction (Rodrigues for each elementary turn)."""
+    def rot(axis, a):
+        k = np.asarray(axis, float)
+        K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+        return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
+    R1 = rot([0, 0, 1], psi)
+    R2 = rot(R1[:, 0], theta) @ R1              # about the turned e1
+    return rot(R2[:, 2], phi) @ R2               # about the turned e3

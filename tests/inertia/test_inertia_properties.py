@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from dyncli.topics.inertia.model import Inertia
 from dyncli.topics.inertia.solver import solve
+from tests.inertia.oracles import rotation
 
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -49,19 +50,12 @@ def run(parts, about=None, basis=None):
     return solve(Inertia.model_validate(d, context={"params": {}}))
 
 
-def rotation(psi, theta, phi):
-    """Independent construction (Rodrigues for each elementary turn)."""
-    def rot(axis, a):
-        k = np.asarray(axis, float)
-        K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
-        return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
-    R1 = rot([0, 0, 1], psi)
-    R2 = rot(R1[:, 0], theta) @ R1              # about the turned e1
-    return rot(R2[:, 2], phi) @ R2               # about the turned e3
-
-
 def scale_of(res):
-    return max(1e-300, float(np.max(np.abs(res.results["I_about"]))))
+    """Magnitude of the inertia involved (for absolute tolerances): the
+    result itself and the transfer terms that built it."""
+    r = res.results
+    reach = float(np.dot(r["com"], r["com"]) + np.dot(r["p_bar"], r["p_bar"]))
+    return float(np.max(np.abs(r["I_about"]))) + float(np.max(np.abs(r["I_com"]))) + r["mass"] * (1e-6 + reach)
 
 
 @SETTINGS
