@@ -1,0 +1,95 @@
+"""Input model of ``inertia`` problems (contract §4.4)."""
+
+from __future__ import annotations
+
+from typing import Literal, Optional
+
+from pydantic import Field, field_validator, model_validator
+
+from dyncli.fields import Num, ProblemBase, StrictModel, Tensor3, Vec3
+from dyncli.topics.inertia import rotations
+
+#: the fields each shape needs (all others are rejected)
+SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
+    "point": (),
+    "rod": ("length",),
+    "box": ("size",),
+    "cylinder": ("radius", "height"),
+    "disk": ("radius",),
+    "ring": ("radius",),
+    "sphere": ("radius",),
+    "shell": ("radius",),
+    "tensor": ("inertia",),
+}
+GEOMETRY_FIELDS = ("length", "size", "radius", "height", "inertia")
+
+
+def check_psd(T) -> None:
+    """ValueError unless the symmetric tensor T is positive-semidefinite."""
+    lo, _tri, scale = rotations.inertia_defect(T)
+    if lo < -1e-12 * max(scale, 1e-300):
+        raise ValueError(
+            f"not positive-semidefinite (smallest principal moment {lo:.6g}): "
+            "it is not an inertia tensor (no mass distribution has it)")
+
+
+class Orientation(StrictModel):
+    """A rotation: exactly one of {axis, angle}, {euler313: [psi, theta, phi]}
+    (the notes' 3-1-3 sequence, §38) or {matrix: R} (columns = the rotated
+    axes in body components; must be orthonormal with det +1)."""
+
+    axis: Optional[Vec3(nonzero=True, description="rotation axis (body components; normalised)")] = None  # type: ignore[valid-type]
+    angle: Optional[Num(dim="angle", description="rotation angle [rad], right-handed about axis")] = None  # type: ignore[valid-type]
+    euler313: Optional[Vec3(dim="angle", description="[psi, theta, phi] [rad]: psi about e3, theta about e'''1, phi about e''3")] = None  # type: ignore[valid-type]
+    matrix: Optional[Tensor3(description="3x3 rotation; its columns are the rotated axes in body components")] = None  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _check(self):
+        rotations.from_fields(self.axis, self.angle, self.euler313, self.matrix)  # ValueError -> exit 2
+        return self
+
+
+class Part(StrictModel):
+    """One part of a composite body: a standard shape about its own center
+    of mass, placed at ``at`` and turned by ``orientation``."""
+
+    shape: Literal["point", "rod", "box", "cylinder", "disk", "ring", "sphere", "shell", "tensor"]
+    mass: Num(gt=0, dim="mass", description="mass of the part [kg] (positive, also for a hole)")  # type: ignore[valid-type]
+    at: Vec3(dim="length", description="position of the part's center of mass [m] (body components)") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    orientation: Optional[Orientation] = Field(None, description="orientation of the part's axes relative to the body axes")
+    hole: bool = Field(False, description="true: subtract this part (a hole or cut-out)")
+    length: Optional[Num(ge=0, dim="length", description="rod: length along the part's e3 [m]")] = None  # type: ignore[valid-type]
+    size: Optional[Vec3(dim="length", description="box: edge lengths [a, b, c] along the part's e1, e2, e3 [m]")] = None  # type: ignore[valid-type]
+    radius: Optional[Num(ge=0, dim="length", description="cylinder, disk, ring, sphere, shell: radius [m]")] = None  # type: ignore[valid-type]
+    height: Optional[Num(ge=0, dim="length", description="cylinder: height along the part's e3 [m]")] = None  # type: ignore[valid-type]
+    inertia: Optional[Tensor3(symmetric=True, dim="moment of inertia", description="tensor: 3x3 inertia about the part's center of mass, part axes [kg m²]")] = None  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _geometry(self):
+        need = SHAPE_FIELDS[self.shape]
+        missing = [f for f in need if getattr(self, f) is None]
+        if missing:
+            raise ValueError(f"shape '{self.shape}' needs {' and '.join(repr(f) for f in missing)}")
+        extra = [f for f in GEOMETRY_FIELDS if f not in need and getattr(self, f) is not None]
+        if extra:
+            takes = f"it takes {', '.join(repr(f) for f in need)}" if need else "it takes no dimensions"
+            raise ValueError(f"{', '.join(repr(f) for f in extra)} does not apply to shape '{self.shape}' ({takes})")
+        if self.size is not None and any(c < 0 for c in self.size):
+            raise ValueError(f"box size must have non-negative edge lengths, got {list(self.size)}")
+        return self
+
+    @field_validator("inertia")
+    @classmethod
+    def _psd(cls, v):
+        if v is not None:
+            check_psd(v)
+        return v
+
+
+class Inertia(ProblemBase):
+    """Inertia tensor of a composite body (notes §30, §31, §35)."""
+
+    type: Literal["inertia"]
+    parts: list[Part] = Field(..., min_length=1, description="the parts of the body")
+    about: Optional[Vec3(dim="length", description="point B [m] (body components) for I_about")] = None  # type: ignore[valid-type]
+    basis: Optional[Orientation] = Field(None, description="express every result on this basis (columns = new axes e''_i in body components)")

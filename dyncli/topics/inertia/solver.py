@@ -1,0 +1,270 @@
+"""Inertia tensors of composite bodies (notes §30, §31, §35) — numeric core.
+
+Every part contributes its standard inertia about its own center of mass
+(part axes), turned to the body axes (30.37: I' = R I_part Rᵀ, R's columns
+being the part axes) and moved to the composite center of mass by the
+transfer theorem (31.7); holes contribute with a negative sign (31.3).  The
+composite tensor is then moved to B (31.7), expressed on the requested basis
+(30.36) and diagonalised with a symmetric eigensolver (30.28-30.31).
+Closed forms only (numpy; no scipy).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError
+from dyncli.result import Result, SolveOptions, Table
+from dyncli.topics.inertia import rotations as rot
+
+SYMBOLS = {
+    "mass": "m",
+    "com": "x̄",
+    "I_com": "Ī",
+    "I_about": "I_B",
+    "principal_moments": "I₁ ≤ I₂ ≤ I₃",
+    "principal_axes": "[e₁* e₂* e₃*]",
+    "radii_of_gyration": "k",
+    "p_bar": "p̄",
+    "I_transfer": "m[(p̄·p̄)1 − p̄⊗p̄]",
+    "principal_gap": "min ΔI",
+}
+UNITS = {
+    "mass": "kg",
+    "com": "m",
+    "I_com": "kg·m²",
+    "I_about": "kg·m²",
+    "principal_moments": "kg·m²",
+    "radii_of_gyration": "m",
+    "p_bar": "m",
+    "I_transfer": "kg·m²",
+    "principal_gap": "kg·m²",
+}
+
+#: relative gap below which two principal moments are reported as repeated
+REPEAT_RTOL = 1e-10
+#: relative gap below which principal axes are flagged as ill-conditioned
+NEAR_RTOL = 1e-6
+
+
+def shape_inertia(part) -> np.ndarray:
+    """Standard inertia of a part about its own center of mass, on its own
+    axes (axis of symmetry e3), for mass ``part.mass`` (positive)."""
+    m, s = part.mass, part.shape
+    if s == "point":
+        d = (0.0, 0.0, 0.0)
+    elif s == "rod":
+        t = m * part.length**2 / 12.0
+        d = (t, t, 0.0)
+    elif s == "box":
+        a, b, c = part.size
+        d = (m * (b * b + c * c) / 12.0, m * (a * a + c * c) / 12.0, m * (a * a + b * b) / 12.0)
+    elif s == "cylinder":
+        r, h = part.radius, part.height
+        t = m * (3.0 * r * r + h * h) / 12.0
+        d = (t, t, m * r * r / 2.0)
+    elif s == "disk":
+        r2 = part.radius**2
+        d = (m * r2 / 4.0, m * r2 / 4.0, m * r2 / 2.0)
+    elif s == "ring":
+        r2 = part.radius**2
+        d = (m * r2 / 2.0, m * r2 / 2.0, m * r2)
+    elif s == "sphere":
+        t = 2.0 * m * part.radius**2 / 5.0
+        d = (t, t, t)
+    elif s == "shell":
+        t = 2.0 * m * part.radius**2 / 3.0
+        d = (t, t, t)
+    elif s == "tensor":
+        return rot.sym(part.inertia)
+    else:  # pragma: no cover - the model restricts shapes
+        raise ValueError(s)
+    return np.diag(d)
+
+
+def orientation_matrix(o) -> np.ndarray:
+    if o is None:
+        return np.eye(3)
+    return rot.from_fields(o.axis, o.angle, o.euler313, o.matrix)
+
+
+def composite(parts):
+    """(mass, com, I_com, per-part records, scale) in body components."""
+    signs = np.array([-1.0 if p.hole else 1.0 for p in parts])
+    masses = np.array([p.mass for p in parts])
+    xs = np.array([p.at for p in parts], dtype=float)
+    m = float(signs @ masses)
+    m_abs = float(masses.sum())
+    if not m > 1e-12 * m_abs:
+        solid = float(masses[signs > 0].sum())
+        holes = float(masses[signs < 0].sum())
+        raise InputError(
+            f"the holes remove {holes:.6g} kg from {solid:.6g} kg of solid parts: the remaining mass "
+            f"{m:.6g} kg is not positive", _first_hole(parts))
+    com = (signs * masses) @ xs / m
+    I = np.zeros((3, 3))
+    scale = 0.0
+    recs = []
+    for p, sgn, x in zip(parts, signs, xs):
+        R = orientation_matrix(p.orientation)
+        Ibar = R @ shape_inertia(p) @ R.T
+        Ipart = Ibar + rot.transfer_term(p.mass, x - com)
+        I += sgn * Ipart
+        scale += float(np.trace(Ipart))
+        recs.append((p, sgn, R, Ibar))
+    return m, com, rot.sym(I), recs, scale
+
+
+def _first_hole(parts) -> str:
+    return next((f"parts.{k}" for k, p in enumerate(parts) if p.hole), "parts")
+
+
+def _check_remainder(I_com, scale, res, where):
+    """A remainder after holes must be a physical inertia tensor: positive-
+    semidefinite, and with I1 + I2 >= I3 (the second-moment tensor
+    ∫ρ p⊗p dV = ½tr(I)1 − I positive-semidefinite); otherwise exit 2."""
+    lo, tri, s = rot.inertia_defect(I_com)
+    tol = 1e-10 * max(scale, s, 1e-300)
+    if lo < -tol:
+        raise InputError(
+            "the holes leave a remainder whose inertia tensor about its center of mass is not "
+            f"positive-semidefinite (smallest principal moment {lo:.6g} kg·m²): they remove more "
+            "inertia than the solid parts have", where)
+    if tri > tol:
+        raise InputError(
+            "the holes leave a remainder that no positive mass distribution can have: its principal moments "
+            f"violate the triangle inequality I₁ + I₂ ≥ I₃ (short by {tri:.6g} kg·m²; the second-moment "
+            "tensor ∫ρ p⊗p dV is not positive-semidefinite); a hole probably lies (partly) outside the solid parts",
+            where)
+
+
+def solve(p, options: SolveOptions | None = None) -> Result:
+    res = Result({}, method="closed-form", equations=["30.20", "31.3", "31.7"], symbols=SYMBOLS, units=UNITS)
+    for k, part in enumerate(p.parts):
+        if part.shape == "tensor":
+            lo, tri, s = rot.inertia_defect(part.inertia)
+            if tri > 1e-10 * max(s, 1e-300):
+                res.warn(f"parts.{k}.inertia violates the triangle inequality of principal moments "
+                         f"(I₁ + I₂ < I₃ by {tri:.6g} kg·m²): no positive mass distribution has it")
+    m, com, I_com, recs, scale = composite(p.parts)
+    any_hole = any(part.hole for part in p.parts)
+    if any_hole:
+        _check_remainder(I_com, scale, res, _first_hole(p.parts))
+    B = com.copy() if p.about is None else np.asarray(p.about, dtype=float)  # no `about`: B is the center of mass
+    pbar = com - B
+    T = rot.transfer_term(m, pbar)
+    I_B = I_com + T
+    tscale = max(scale + m * float(pbar @ pbar) * 2.0, 1e-300)
+
+    # change of basis (30.36): I'' = A I' Aᵀ with A = Rᵀ
+    if p.basis is not None:
+        Rb = orientation_matrix(p.basis)
+        res.equations.append("30.36")
+        lab = ("e''₁", "e''₂", "e''₃")
+    else:
+        Rb = np.eye(3)
+        lab = ("e'₁", "e'₂", "e'₃")
+    A = Rb.T
+    com_b, B_b, pbar_b = A @ com, A @ B, A @ pbar
+    Ic_b, T_b, IB_b = (rot.sym(A @ X @ A.T) for X in (I_com, T, I_B))
+
+    lam, axes, groups, lscale = rot.principal(IB_b, repeat_rtol=REPEAT_RTOL)
+    lam = np.maximum(lam, 0.0)  # tiny negatives are rounding (checked above)
+    res.equations += ["30.30", "30.31", "30.8"]
+    radii = [math.sqrt(x / m) if x > 0 else 0.0 for x in lam]
+    gaps = np.diff(lam)
+    gap = float(np.min(gaps))
+    unique = not groups
+    note = _axes_note(lam, groups, lscale)
+
+    L = max(float(np.max(np.abs(com_b))), float(np.max(np.abs(B_b))), 1e-300)
+    res.results.update({
+        "mass": m,
+        "com": rot.clean(com_b, L),
+        "I_com": rot.clean(Ic_b, tscale),
+        "I_about": rot.clean(IB_b, tscale),
+        "principal_moments": rot.clean(lam, tscale),
+        "principal_axes": rot.clean(axes, 1.0),
+        "radii_of_gyration": radii,
+        "p_bar": rot.clean(pbar_b, L),
+        "I_transfer": rot.clean(T_b, tscale),
+        "principal_gap": gap,
+        "principal_axes_unique": unique,
+        "principal_axes_note": note,
+    })
+    _warn_principal(res, lam, groups, lscale)
+    _views(res, p, recs, lab, A, m, Ic_b, T_b, IB_b, pbar_b, lam, axes, radii, tscale)
+    return res
+
+
+def _axes_note(lam, groups, scale) -> str:
+    if scale == 0.0:
+        return "all principal moments are zero (a point mass at B): every orthonormal basis is a principal basis"
+    if not groups:
+        return "distinct principal moments: the principal axes are unique up to sign"
+    parts = []
+    for g in groups:
+        ks = " = ".join(f"I{k + 1}" for k in g)
+        if len(g) == 3:
+            parts.append(f"{ks}: every direction is principal; any orthonormal basis is valid")
+        else:
+            parts.append(f"{ks}: any orthonormal basis of their eigenspace (the plane of axes "
+                         f"{' and '.join(str(k + 1) for k in g)}) is a valid choice of these principal axes")
+    return "; ".join(parts)
+
+
+def _warn_principal(res, lam, groups, scale):
+    if scale == 0.0:
+        res.warn("all principal moments are zero (a single point mass at B): the principal axes are arbitrary; "
+                 "the identity basis is reported")
+        return
+    for g in groups:
+        if len(g) == 2:
+            res.warn(f"principal moments {g[0] + 1} and {g[1] + 1} are equal ({lam[g[0]]:.6g} kg·m²): any orthonormal "
+                     "pair of axes in their eigenspace is principal; the reported pair is the canonical choice "
+                     "(projections of the basis vectors)")
+        elif len(g) == 3:
+            res.warn(f"all principal moments are equal ({lam[0]:.6g} kg·m²): every direction is principal; "
+                     "the basis vectors are reported")
+    for k in range(2):
+        d = lam[k + 1] - lam[k]
+        if REPEAT_RTOL * scale < d <= NEAR_RTOL * scale:
+            res.warn(f"principal moments {k + 1} and {k + 2} are nearly repeated (gap {d:.3g} kg·m², relative "
+                     f"{d / scale:.3g}): their principal axes are ill-conditioned (an error δ in the tensor turns "
+                     "them by about δ/gap rad)")
+    for k in range(3):
+        if lam[k] == 0.0:
+            res.warn(f"principal moment {k + 1} is zero: all the mass lies on the line through B along principal "
+                     f"axis {k + 1} (radius of gyration 0)")
+
+
+def _views(res, p, recs, lab, A, m, Ic, T, IB, pbar, lam, axes, radii, scale):
+    def c(x):
+        return rot.clean(x, scale)
+
+    rows = []
+    for k, (part, sgn, R, Ibar) in enumerate(recs):
+        mom = np.linalg.eigvalsh(Ibar)
+        rows.append([str(k), part.shape + (" (hole)" if part.hole else ""), sgn * part.mass,
+                     rot.clean(A @ np.asarray(part.at, float), max(1e-300, float(np.max(np.abs(part.at))))),
+                     c(mom)])
+    res.views.append(Table("parts", ["#", "shape", "mass [kg]", "center [m]", "own principal moments [kg·m²]"], rows,
+                           note="holes count with negative mass (31.3); center on the " + ("basis e''ᵢ" if p.basis is not None else "body axes e'ᵢ")))
+    Icc, Tc, IBc = c(Ic), c(T), c(IB)
+    if p.about is not None:
+        cols = [""] + [f"Ī ·{j}" for j in "123"] + [f"+Δ ·{j}" for j in "123"] + [f"=I_B ·{j}" for j in "123"]
+        trows = [[lab[i]] + Icc[i] + Tc[i] + IBc[i] for i in range(3)]
+        pb = ", ".join(f"{x:.6g}" for x in pbar)
+        res.views.append(Table("transfer theorem (31.7): I_B = Ī + m[(p̄·p̄)1 − p̄⊗p̄]", cols, trows,
+                               note=f"Δ = m[(p̄·p̄)1 − p̄⊗p̄], m = {m:.6g} kg, p̄ = [{pb}] m (center of mass from B); row i, column j on {' '.join(lab)} [kg·m²]"))
+    else:
+        cols = [""] + [f"Ī {b}" for b in lab]
+        res.views.append(Table("inertia about the center of mass Ī [kg·m²]", cols,
+                               [[lab[i]] + Icc[i] for i in range(3)]))
+    ax = rot.clean(axes, 1.0)
+    prow = [["moment [kg·m²]"] + c(lam), ["radius of gyration [m]"] + list(radii)]
+    prow += [[lab[i]] + ax[i] for i in range(3)]
+    res.views.append(Table("principal moments and directions (columns)", ["", "axis 1", "axis 2", "axis 3"], prow,
+                           note="each column is a unit principal direction on " + " ".join(lab) + "; right-handed"))

@@ -1,0 +1,1 @@
+"""Rigid-body kinetics: planar moments and kinetic energy (notes §32, §34)."""

@@ -1,0 +1,66 @@
+"""Rigid-body kinetics: planar moments (32.9-32.13) and kinetic energy
+(34.6-34.7) — numeric core, closed forms."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from dyncli.result import FrameTable, Result, SolveOptions
+from dyncli.topics.inertia import rotations as rot
+
+
+def solve_planar_moments(p, options: SolveOptions | None = None) -> Result:
+    I13, I23, I33, w, wd = p.I13, p.I23, p.I33, p.omega, p.omega_dot
+    H = [I13 * w, I23 * w, I33 * w]                              # (32.9)
+    M = [I13 * wd - I23 * w * w, I23 * wd + I13 * w * w, I33 * wd]  # (32.12), (32.13a-c)
+    purely = I13 == 0.0 and I23 == 0.0
+    res = Result(
+        {"M": M, "H": H, "purely_planar": purely},
+        method="closed-form",
+        equations=["32.9", "32.12", "32.13"] + (["32.15"] if purely else []),
+        symbols={"M": "M̄", "H": "H̄", "purely_planar": "Ī'13 = Ī'23 = 0"},
+        units={"M": "N·m", "H": "kg·m²/s"},
+    )
+    if not purely:
+        res.warn("e'3 is not a principal direction (Ī'13 or Ī'23 ≠ 0): moments M̄'1, M̄'2 are needed "
+                 "to keep the motion planar")
+    dH = [I13 * wd, I23 * wd, I33 * wd]
+    wxH = [-w * H[1], w * H[0], 0.0]
+    res.views.append(FrameTable(
+        "angular momentum balance about the center of mass (32.10-32.13)",
+        [("ω", [0.0, 0.0, w]), ("H̄", H), ("δH̄/δt", dH), ("ω×H̄", wxH), ("M̄ = dH̄/dt", M)],
+    ))
+    return res
+
+
+def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
+    m = p.m
+    v = np.asarray(p.v, dtype=float)
+    w = np.asarray(p.omega, dtype=float)
+    I = rot.sym(p.I)
+    H = I @ w                                # (30.12a)
+    T_trans = 0.5 * m * float(v @ v)         # (34.6)
+    T_rot = 0.5 * float(w @ H)               # (34.7)
+    T_rot = max(T_rot, 0.0)                  # I is positive-semidefinite: only rounding can make it negative
+    res = Result(
+        {"T": T_trans + T_rot, "T_trans": T_trans, "T_rot": T_rot, "H": H.tolist(), "G": (m * v).tolist()},
+        method="closed-form",
+        equations=["30.12", "34.6", "34.7"],
+        symbols={"T": "T", "T_trans": "½m v̄·v̄", "T_rot": "T̄ = ½ω·Īω", "H": "H̄ = Īω", "G": "G = m v̄"},
+        units={"T": "J", "T_trans": "J", "T_rot": "J", "H": "kg·m²/s", "G": "kg·m/s"},
+    )
+    lo, tri, scale = rot.inertia_defect(I)
+    if tri > 1e-10 * max(scale, 1e-300):
+        res.warn(f"I violates the triangle inequality of principal moments (I₁ + I₂ < I₃ by {tri:.6g} kg·m²): "
+                 "no positive mass distribution has this inertia tensor")
+    nw, nH = float(np.linalg.norm(w)), float(np.linalg.norm(H))
+    if nw > 0 and nH > 0:
+        c = float(np.clip(w @ H / (nw * nH), -1.0, 1.0))
+        res.results["angle_omega_H"] = float(np.arccos(c))
+        res.units["angle_omega_H"] = "rad"
+        res.symbols["angle_omega_H"] = "∠(ω, H̄)"
+    else:
+        res.results["angle_omega_H"] = None
+        res.warn("angle_omega_H is undefined: ω = 0 or H̄ = 0")
+    res.views.append(FrameTable("vectors on the basis of I", [("v̄", v.tolist()), ("ω", w.tolist()), ("H̄ = Īω", H.tolist()), ("G = m v̄", (m * v).tolist())]))
+    return res
