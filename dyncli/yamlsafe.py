@@ -174,6 +174,10 @@ def _scalar(node) -> Any:
 
 
 class _Dummy:
+    # SafeLoader.construct_yaml_float reads these for .inf / .nan
+    inf_value = float("inf")
+    nan_value = float("nan")
+
     def construct_scalar(self, node):
         return node.value
 
