@@ -46,10 +46,6 @@ def amplification(r, zeta):
         phi = mp.atan2(sphi, cphi)
         g = mp.sqrt((1 + 4 * z ** 2 * r ** 2) / ((1 - r ** 2) ** 2 + 4 * z ** 2 * r ** 2))
         Phi = mp.atan2(G * sphi, 1 + G * cphi)   # (17.33)
-        if phi == -mp.pi:
-            phi = mp.pi
-        if Phi == -mp.pi:
-            Phi = mp.pi
         return G, phi, g, Phi
 
 

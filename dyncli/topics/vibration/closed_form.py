@@ -234,21 +234,29 @@ def amplification(r, zeta: float):
     Φ = arg((1 + 2iζr) conj(D)) = atan2(-2ζr³, (1-r)(1+r) + (2ζr)²).
     Phases are in (-π, π]."""
     r = np.asarray(r, dtype=float)
-    re = (1.0 - r) * (1.0 + r)
-    im = 2.0 * zeta * r
+    # for r > 2 divide D by r² (no overflow for large r; no cancellation there)
+    big = r > 2.0
+    rb = np.where(big, r, 1.0)
+    inv = 1.0 / rb
+    re = np.where(big, (inv - 1.0) * (inv + 1.0), (1.0 - r) * (1.0 + r))
+    im = np.where(big, 2.0 * zeta * inv, 2.0 * zeta * r)
+    num_G = np.where(big, 1.0, r * r)                           # r² (/r²)
+    num_g = np.where(big, np.hypot(inv * inv, im), np.hypot(1.0, im))   # |1 + 2iζr| (/r²)
     mod = np.hypot(re, im)
     with np.errstate(divide="ignore", invalid="ignore"):
-        G = np.where(mod > 0, r * r / np.where(mod > 0, mod, 1.0), np.inf)
-        g = np.where(mod > 0, np.hypot(1.0, im) / np.where(mod > 0, mod, 1.0), np.inf)
-    phi = np.arctan2(-im, re)
-    Phi = np.arctan2(-im * r * r, re + im * im)
+        safe = np.where(mod > 0, mod, 1.0)
+        G = np.where(mod > 0, num_G / safe, np.inf)
+        g = np.where(mod > 0, num_g / safe, np.inf)
+    # "+ 0.0" turns -0.0 into +0.0, so the negative real axis gives +π:
+    # phases in (-π, π] without moving values just above -π
+    phi = np.arctan2(-im + 0.0, re)
+    # Φ = arg((1 + 2iζr) conj D) = atan2(-2ζr³, (1-r)(1+r) + (2ζr)²)  (both divided by r² when r > 2)
+    Phi = np.where(big, np.arctan2(-2.0 * zeta * rb + 0.0, re + 4.0 * zeta * zeta),
+                   np.arctan2(-im * r * r + 0.0, re + im * im))
     res = (mod == 0)
     # undamped resonance: phase of the secular term (limit ζ -> 0+)
     phi = np.where(res, -0.5 * np.pi, phi)
     Phi = np.where(res, -0.5 * np.pi, Phi)
-    phi = np.where(phi <= -np.pi, np.pi, phi)
-    Phi = np.where(Phi <= -np.pi, np.pi, Phi)
-    # atan2(-0.0, +x) = -0.0
     phi = phi + 0.0
     Phi = Phi + 0.0
     return G, phi, g, Phi

@@ -38,9 +38,10 @@ def _f(x) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def _angle(a: float) -> float:
-    """Normalise an angle from atan2 into (−π, π]."""
-    return math.pi if a <= -math.pi else a + 0.0
+def _angle(y: float, x: float) -> float:
+    """atan2 in (−π, π]: a −0.0 ordinate counts as +0.0 (the negative real
+    axis gives +π); values just above −π are kept."""
+    return math.atan2(y + 0.0, x) + 0.0
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
@@ -82,8 +83,6 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     else:
         s0, Om = p.base.amplitude, p.base.omega
         r = Om / omega_n
-        if not math.isfinite(r) or not math.isfinite(s0 * Om * Om):
-            raise InputError("base amplitude·ω² overflows", "base")
         eqs += ["17.26", "17.27", "17.30", "17.31", "17.33", "17.34"]
         G, phi, g, Phi = (float(a[0]) for a in cf.amplification(np.array([r]), zeta))
         R.update(r=r, G=_f(G), phi=phi, g=_f(g), Phi=Phi)
@@ -119,7 +118,7 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
         if A == 0.0:
             res.warn("phi is null: the mass starts at rest in equilibrium (A = 0), so the phase is undefined")
             return 0.0, None
-        return A, _angle(math.atan2(w0, q))
+        return A, _angle(w0, q)
     # overdamped: w = A e^{-ζωt} sinh(ω*t + φ) needs cosh φ = b/(Aω*) ≥ 1
     q = b / omega_d
     if math.isfinite(q) and abs(q) > abs(w0):
