@@ -128,7 +128,7 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
             return A, phi
         res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) needs "
                  "v0 + ζωₙw0 > ω*|w0| (here v0 + ζωₙw0 < −ω*|w0|); the motion is "
-                 f"w = −{A:.6g} e^(−ζωₙt) sinh(ω*t + {phi:.6g})")
+                 f"w = −{A:.6g} e^(−ζωₙt) sinh(ω*t {'−' if phi < 0 else '+'} {abs(phi):.6g})")
         return None, None
     res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) exists only when "
              "|v0 + ζωₙw0| > ω*|w0| (here it is not; the motion is "
