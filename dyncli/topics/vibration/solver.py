@@ -1,5 +1,5 @@
 """Vibrations of a spring–mass–damper, free and base-excited (notes §17) —
-numeric core (no pydantic, no scipy on the closed-form route).
+numeric core (plain numpy; scipy only on the DOP853 route).
 
 Notation of the notes: w = x − s − L (17.16b), ωₙ² = k/m (17.5b),
 c = 2mζωₙ (17.20), ω* the damped frequency (17.22b/17.24b), base motion
