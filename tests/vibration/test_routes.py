@@ -118,3 +118,18 @@ def test_c_gives_zeta_and_symbols_units_render(cli):
     assert rc == 0, err
     for s in ("ωₙ", "ζ", "ω*", "Φ", "rad/s", "N·s/m"):
         assert s in out
+
+
+def test_dop853_route_keeps_request_order_with_duplicates():
+    text = "type: vibration\nm: 1\nk: 1\nzeta: 0.1\nx0: 1\nat: [1, 0, 1, 0.5]\n"
+    ode = solve_one_text(text + "accuracy: {method: DOP853}\n")["results"]["x"]
+    exact = solve_one_text(text)["results"]["x"]
+    assert ode[0] == ode[2] and ode[1] == 1.0
+    assert ode == pytest.approx(exact, rel=1e-8)
+
+
+def test_unrepresentable_time_is_a_numerical_error():
+    from tests.conftest import solve_text
+
+    rec = solve_text("type: vibration\nm: 1\nk: 10000\nx0: 1\nat: [1e307]\n")[0]
+    assert rec["exit_code"] == 1 and "not representable" in rec["error"]

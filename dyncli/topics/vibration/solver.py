@@ -138,7 +138,8 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
 
 def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
     t = np.asarray(p.at, dtype=float)
-    x, v, w = cf.response(t, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om)
+    with np.errstate(all="ignore"):   # non-finite values are reported below
+        x, v, w = cf.response(t, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om)
     method = p.accuracy.method
     if method in ("ode", "DOP853"):
         xo, vo = _ode(t, omega_n, zeta, L, x0, v0, s0, Om, p.accuracy.rtol, p.accuracy.atol)
@@ -150,7 +151,8 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
         res.warn("accuracy.method = DOP853: x, v, w are integrated numerically; error_estimate is the "
                  "largest difference from the exact closed form (method: auto uses the closed form)")
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
-        raise NumericalError("the response overflowed (values beyond the floating-point range)")
+        raise NumericalError("the response is not representable at the requested times "
+                             "(ω·t beyond the floating-point range)")
     res.results.update(x=x.tolist(), v=v.tolist(), w=w.tolist())
     res.series.append(Series("t", list(p.at), ["x", "v", "w"], title="Response x = w + s + L (17.16b)"))
 
@@ -175,15 +177,12 @@ def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol):
         sd = s0 * Om * math.cos(Om * tt)
         return [y[1], -wn2 * (y[0] - s - L) - two_zw * (y[1] - sd)]
 
-    order = np.argsort(t, kind="stable")
-    ts = t[order]
+    ts, inverse = np.unique(t, return_inverse=True)
     sol = solve_ivp(rhs, (0.0, T), [x0, v0], method="DOP853", t_eval=ts, rtol=rtol, atol=atol)
     if not sol.success:
         raise NumericalError(f"DOP853 failed: {sol.message}")
-    x = np.empty_like(t)
-    v = np.empty_like(t)
-    x[order] = sol.y[0]
-    v[order] = sol.y[1]
+    x = sol.y[0][inverse]
+    v = sol.y[1][inverse]
     return x, v
 
 
