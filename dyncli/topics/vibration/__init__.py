@@ -1,0 +1,1 @@
+"""Vibrations of a spring-mass-damper, free and base-excited (notes §17)."""

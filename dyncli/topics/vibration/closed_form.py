@@ -1,0 +1,282 @@
+"""Closed-form response of the spring-mass-damper of notes §17 (numpy only).
+
+Everything here is uniform in the damping ratio ζ ≥ 0: one formulation is
+continuous through ζ = 1 and free of cancellation for large ζ, and the forced
+response is free of cancellation at and near resonance.
+
+Free response (homogeneous solution of (17.17) with w(0) = w0, ẇ(0) = ẇ0):
+
+* ζ < 1:  w = e^{-ζωt} [w0 cos(ω*t) + (ẇ0 + ζω w0) t sinc(ω*t)]
+* ζ ≥ 1:  w = e^{-λ₁t} [w0 + (ẇ0 + λ₁ w0) τ(t)],
+  λ₁ = ω / (ζ + √(ζ²-1)) (the slow root, computed without cancellation),
+  τ(t) = (1 - e^{-2ω*t}) / (2ω*) = t·φ₁(2ω*t), φ₁(z) = -expm1(-z)/z.
+
+  This equals e^{-ζωt}[w0 cosh(ω*t) + (ẇ0 + ζω w0) t sinhc(ω*t)] (the same
+  form as ζ < 1, with cosh/sinh) but never forms e^{-ζωt}·cosh(ω*t), which
+  under/overflows for large ζ; at ζ = 1 it is (17.23) exactly.
+
+  The velocity is the same form applied to (ẇ0, ẅ0) for ζ < 1 and
+  ẇ = e^{-λ₁t} [B e^{-2ω*t} - λ₁ (w0 + B τ)], B = ẇ0 + λ₁ w0, for ζ ≥ 1.
+
+Forced response (zero initial conditions) to ẅ + 2ζωẇ + ω²w = F sin(Ωt):
+with the characteristic roots s₁, s₂ of z² + 2ζωz + ω² and the second
+divided difference E(t) = e^{zt}[iΩ, s₁, s₂] of z ↦ e^{zt},
+
+    w_f(t) = F Im E(t),      ẇ_f(t) = F Ω Re E(t).
+
+The divided difference is evaluated with the two most distant nodes as the
+outer pair, first differences in the form e^{(a+b)t/2} t sinhc((a-b)t/2)
+when the nodes are close, and a power series when all three nodes are within
+1/t of each other, so it stays accurate at exact resonance (repeated node:
+the secular term) and near it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+_SERIES_TERMS = 24
+
+
+# ---------------------------------------------------------------------------
+# characteristic quantities
+
+
+def roots(omega_n: float, zeta: float):
+    """(omega_star, lam1, lam2) with the roots s = -lam (real, ζ ≥ 1) or
+    s = -ζω ± iω* (ζ < 1; lam1 = lam2 = ζω then)."""
+    if zeta < 1.0:
+        ws = omega_n * math.sqrt((1.0 - zeta) * (1.0 + zeta))
+        return ws, zeta * omega_n, zeta * omega_n
+    ws = omega_n * math.sqrt(zeta - 1.0) * math.sqrt(zeta + 1.0)
+    lam1 = omega_n / (zeta + math.sqrt(zeta - 1.0) * math.sqrt(zeta + 1.0))
+    lam2 = zeta * omega_n + ws
+    return ws, lam1, lam2
+
+
+def char_roots(omega_n: float, zeta: float) -> tuple[complex, complex]:
+    ws, lam1, lam2 = roots(omega_n, zeta)
+    if zeta < 1.0:
+        return complex(-zeta * omega_n, ws), complex(-zeta * omega_n, -ws)
+    return complex(-lam1, 0.0), complex(-lam2, 0.0)
+
+
+# ---------------------------------------------------------------------------
+# helpers
+
+
+def _sinc(y):
+    """sin(y)/y, 1 at 0 (y real array)."""
+    y = np.asarray(y, dtype=float)
+    out = np.ones_like(y)
+    nz = y != 0
+    out[nz] = np.sin(y[nz]) / y[nz]
+    return out
+
+
+def _phi1(z):
+    """(1 - e^{-z})/z = -expm1(-z)/z, 1 at 0 (z ≥ 0 real array)."""
+    z = np.asarray(z, dtype=float)
+    out = np.ones_like(z)
+    nz = z != 0
+    out[nz] = -np.expm1(-z[nz]) / z[nz]
+    return out
+
+
+def _sinhc(u):
+    """sinh(u)/u for complex u (1 at 0), accurate for small |u|."""
+    u = np.asarray(u, dtype=complex)
+    out = np.empty_like(u)
+    small = np.abs(u) < 1e-4
+    us = u[small]
+    u2 = us * us
+    out[small] = 1.0 + u2 / 6.0 * (1.0 + u2 / 20.0)
+    ub = u[~small]
+    out[~small] = np.sinh(ub) / ub
+    return out
+
+
+# ---------------------------------------------------------------------------
+# free response
+
+
+def free(t, w0: float, wd0: float, omega_n: float, zeta: float):
+    """Homogeneous solution of (17.17) with w(0) = w0, ẇ(0) = wd0.
+    Returns (w, ẇ) as float arrays over t ≥ 0."""
+    t = np.asarray(t, dtype=float)
+    wn = omega_n
+    ws, lam1, _ = roots(wn, zeta)
+    if zeta < 1.0:
+        y = ws * t
+        ex = np.exp(-zeta * wn * t)
+        c = np.cos(y)
+        ts = t * _sinc(y)
+        w = ex * (w0 * c + (wd0 + zeta * wn * w0) * ts)
+        # the velocity obeys the same equation with (ẇ0, ẅ0), ẅ0 = -2ζωẇ0 - ω²w0
+        v = ex * (wd0 * c - (wn * (wn * w0) + zeta * wn * wd0) * ts)
+        return w, v
+    y = ws * t
+    e1 = np.exp(-lam1 * t)
+    tau = t * _phi1(2.0 * y)
+    big_e = np.exp(-2.0 * y)
+    b = wd0 + lam1 * w0
+    inner = w0 + b * tau
+    w = e1 * inner
+    v = e1 * (b * big_e - lam1 * inner)
+    return w, v
+
+
+# ---------------------------------------------------------------------------
+# divided differences of z -> exp(z t)
+
+
+def dd1(a: complex, b: complex, t):
+    """e^{zt}[a, b] = (e^{at} - e^{bt})/(a - b) (t e^{at} when a == b), t ≥ 0 array.
+
+    Uses e^{(a+b)t/2} t sinhc((a-b)t/2) unless the real parts are so far
+    apart that the two exponentials differ by more than a factor e (then the
+    plain difference has no cancellation and the symmetric form could
+    overflow)."""
+    t = np.asarray(t, dtype=float)
+    d = a - b
+    out = np.empty(t.shape, dtype=complex)
+    direct = abs(d.real) * t > 1.0
+    if np.any(direct):
+        td = t[direct]
+        out[direct] = (np.exp(a * td) - np.exp(b * td)) / d
+    sym = ~direct
+    if np.any(sym):
+        ts = t[sym]
+        out[sym] = np.exp(0.5 * (a + b) * ts) * ts * _sinhc(0.5 * d * ts)
+    return out
+
+
+def dd2(a: complex, b: complex, c: complex, t):
+    """e^{zt}[a, b, c] (second divided difference), t ≥ 0 array."""
+    t = np.asarray(t, dtype=float)
+    nodes = [a, b, c]
+    # outer pair = the two most distant nodes
+    pairs = [(0, 2, 1), (0, 1, 2), (1, 2, 0)]
+    i, k, j = max(pairs, key=lambda p: abs(nodes[p[0]] - nodes[p[1]]))
+    a, c, b = nodes[i], nodes[k], nodes[j]
+    span = abs(a - c)
+    out = np.empty(t.shape, dtype=complex)
+    far = span * t > 1.0
+    if np.any(far):
+        tf = t[far]
+        out[far] = (dd1(a, b, tf) - dd1(b, c, tf)) / (a - c)
+    near = ~far
+    if np.any(near):
+        tn = t[near]
+        al = (a - b) * tn
+        ga = (c - b) * tn
+        # e^{u}[al, 0, ga] = sum_k h_k(al, ga) / (k+2)!,  h_k = al h_{k-1} + ga^k
+        h = np.ones_like(al)
+        gk = np.ones_like(ga)
+        total = h / 2.0
+        fact = 2.0
+        for kk in range(1, _SERIES_TERMS):
+            gk = gk * ga
+            h = al * h + gk
+            fact *= kk + 2
+            total = total + h / fact
+        out[near] = np.exp(b * tn) * tn * tn * total
+    return out
+
+
+def forced(t, force: float, Omega: float, omega_n: float, zeta: float):
+    """Zero-initial-condition response of ẅ + 2ζωẇ + ω²w = F sin(Ωt):
+    (w_f, ẇ_f) as float arrays."""
+    t = np.asarray(t, dtype=float)
+    if force == 0.0 or Omega == 0.0:
+        z = np.zeros_like(t)
+        return z, z.copy()
+    s1, s2 = char_roots(omega_n, zeta)
+    e = dd2(complex(0.0, Omega), s1, s2, t)
+    return force * e.imag, force * Omega * e.real
+
+
+def response(t, *, omega_n: float, zeta: float, L: float, x0: float, v0: float,
+             s0: float = 0.0, Omega: float = 0.0):
+    """Total response of (17.15a) with s(t) = s0 sin(Ωt), x(0) = x0, ẋ(0) = v0.
+    Returns (x, v, w) float arrays."""
+    t = np.asarray(t, dtype=float)
+    w0 = x0 - L                      # s(0) = 0
+    wd0 = v0 - s0 * Omega            # ẇ(0) = v0 - ṡ(0)
+    wh, vh = free(t, w0, wd0, omega_n, zeta)
+    wf, vf = forced(t, s0 * Omega * Omega, Omega, omega_n, zeta)
+    w = wh + wf
+    wdot = vh + vf
+    if s0 != 0.0 and Omega != 0.0:
+        th = Omega * t
+        s = s0 * np.sin(th)
+        sd = s0 * Omega * np.cos(th)
+    else:
+        s = np.zeros_like(t)
+        sd = np.zeros_like(t)
+    x = w + s + L
+    v = wdot + sd
+    return x, v, w
+
+
+# ---------------------------------------------------------------------------
+# steady-state amplification functions (17.30), (17.33), (17.34)
+
+
+def amplification(r, zeta: float):
+    """G, φ, g, Φ over ratios r = Ω/ωₙ ≥ 0 (arrays; G, g are inf at undamped
+    resonance).  Written with D = (1-r)(1+r) + 2iζr, the complex
+    denominator, so there is no cancellation near r = 1:
+
+    G = r²/|D|, φ = -arg D, g = |1 + 2iζr|/|D|,
+    Φ = arg((1 + 2iζr) conj(D)) = atan2(-2ζr³, (1-r)(1+r) + (2ζr)²).
+    Phases are in (-π, π]."""
+    r = np.asarray(r, dtype=float)
+    # for r > 2 divide D by r² (no overflow for large r; no cancellation there)
+    big = r > 2.0
+    rb = np.where(big, r, 1.0)
+    inv = 1.0 / rb
+    re = np.where(big, (inv - 1.0) * (inv + 1.0), (1.0 - r) * (1.0 + r))
+    im = np.where(big, 2.0 * zeta * inv, 2.0 * zeta * r)
+    num_G = np.where(big, 1.0, r * r)                           # r² (/r²)
+    num_g = np.where(big, np.hypot(inv * inv, im), np.hypot(1.0, im))   # |1 + 2iζr| (/r²)
+    mod = np.hypot(re, im)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        safe = np.where(mod > 0, mod, 1.0)
+        G = np.where(mod > 0, num_G / safe, np.inf)
+        g = np.where(mod > 0, num_g / safe, np.inf)
+    # "+ 0.0" turns -0.0 into +0.0, so the negative real axis gives +π:
+    # phases in (-π, π] without moving values just above -π
+    phi = np.arctan2(-im + 0.0, re)
+    # Φ = arg((1 + 2iζr) conj D) = atan2(-2ζr³, (1-r)(1+r) + (2ζr)²)  (both divided by r² when r > 2)
+    Phi = np.where(big, np.arctan2(-2.0 * zeta * rb + 0.0, re + 4.0 * zeta * zeta),
+                   np.arctan2(-im * r * r + 0.0, re + im * im))
+    res = (mod == 0)
+    # undamped resonance: phase of the secular term (limit ζ -> 0+)
+    phi = np.where(res, -0.5 * np.pi, phi)
+    Phi = np.where(res, -0.5 * np.pi, Phi)
+    phi = phi + 0.0
+    Phi = Phi + 0.0
+    return G, phi, g, Phi
+
+
+def peak_G(zeta: float):
+    """(r, G_max) of the maximum of G for 0 < ζ < 1/√2: r = 1/√(1-2ζ²),
+    G = 1/(2ζ√(1-ζ²)); None when G has no finite interior maximum."""
+    if not (0.0 < zeta) or 2.0 * zeta * zeta >= 1.0:
+        return None
+    r = 1.0 / math.sqrt((1.0 - math.sqrt(2.0) * zeta) * (1.0 + math.sqrt(2.0) * zeta))
+    gm = 1.0 / (2.0 * zeta * math.sqrt((1.0 - zeta) * (1.0 + zeta)))
+    return r, gm
+
+
+def peak_g(zeta: float):
+    """(r, g_max) of the maximum of g for ζ > 0:
+    r² = 2/(1 + √(1+8ζ²)); None when ζ = 0 (unbounded at r = 1)."""
+    if not zeta > 0.0:
+        return None
+    r = math.sqrt(2.0 / (1.0 + math.sqrt(1.0 + 8.0 * zeta * zeta)))
+    _, _, g, _ = amplification(np.array([r]), zeta)
+    return r, float(g[0])

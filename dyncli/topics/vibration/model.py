@@ -1,0 +1,91 @@
+"""Input model of ``vibration`` problems (contract §4.2, notes §17)."""
+
+from __future__ import annotations
+
+import math
+from typing import Literal, Optional
+
+from pydantic import Field, field_validator, model_validator
+
+from dyncli.errors import InputError
+from dyncli.fields import Num, ProblemBase, StrictModel, Times
+
+MAX_SWEEP_POINTS = 100_000
+MAX_RATIO = 1e100   # frequency ratios and ζ beyond this are not physical (and would overflow)
+
+
+class Base(StrictModel):
+    """Base motion s(t) = amplitude·sin(omega·t) (17.26)."""
+
+    amplitude: Num(dim="length", description="s0: base amplitude [m]") = Field(...)  # type: ignore[valid-type]
+    omega: Num(ge=0, dim="angular velocity", description="ω: base frequency [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
+
+
+class Sweep(StrictModel):
+    """Frequency sweep of the amplification functions over r = ω/ωₙ."""
+
+    ratio: tuple[Num(ge=0, le=MAX_RATIO), Num(ge=0, le=MAX_RATIO)] = Field(..., description="[r_min, r_max], 0 <= r_min < r_max")  # type: ignore[valid-type]
+    points: int = Field(50, ge=2, le=MAX_SWEEP_POINTS, description="number of ratios, endpoints included")
+    spacing: Literal["linear", "log"] = "linear"
+
+    @field_validator("ratio", mode="before")
+    @classmethod
+    def _pair(cls, v):
+        if not isinstance(v, (list, tuple)) or len(v) != 2:
+            raise ValueError("expected [r_min, r_max]: a list of 2 frequency ratios ω/ωₙ")
+        return v
+
+    @model_validator(mode="after")
+    def _check(self):
+        lo, hi = self.ratio
+        if not lo < hi:
+            raise InputError(f"must be [r_min, r_max] with r_min < r_max (got [{lo:g}, {hi:g}])", "sweep.ratio")
+        if self.spacing == "log" and lo <= 0:
+            raise InputError("log spacing needs r_min > 0", "sweep.ratio")
+        return self
+
+
+class Vibration(ProblemBase):
+    """Spring–mass–damper with optional base excitation (notes §17)."""
+
+    type: Literal["vibration"]
+    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
+    k: Num(gt=0, dim="stiffness", description="spring constant [N/m]") = Field(...)  # type: ignore[valid-type]
+    c: Optional[Num(ge=0, dim="damping", description="damping coefficient [N·s/m] (default 0; not with zeta)")] = None  # type: ignore[valid-type]
+    zeta: Optional[Num(ge=0, le=MAX_RATIO, description="damping ratio ζ = c/(2mωₙ) (not with c)")] = None  # type: ignore[valid-type]
+    L: Num(dim="length", description="free length of the spring [m]") = 0.0  # type: ignore[valid-type]
+    x0: Optional[Num(dim="length", description="initial position of the mass [m] (default L)")] = None  # type: ignore[valid-type]
+    v0: Num(dim="velocity", description="initial velocity of the mass [m/s]") = 0.0  # type: ignore[valid-type]
+    base: Optional[Base] = None
+    at: Times(description="times t >= 0 [s] at which to report x, v, w") = Field(default_factory=list)  # type: ignore[valid-type]
+    sweep: Optional[Sweep] = None
+
+    accuracy_methods = ("auto", "closed-form", "ode", "DOP853")
+
+    @field_validator("at")
+    @classmethod
+    def _times(cls, v):
+        for i, t in enumerate(v):
+            if t < 0:
+                raise ValueError(f"entry {i}: times must be >= 0 (the initial conditions hold at t = 0), got {t:g}")
+        return v
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.c is not None and self.zeta is not None:
+            raise InputError("give the damping as either c or zeta, not both", "zeta")
+        omega_n = math.sqrt(self.k / self.m) if self.k / self.m < math.inf else math.inf
+        if not (0.0 < omega_n < math.inf):
+            raise InputError(f"k/m = {self.k:g}/{self.m:g} gives a natural frequency that is not a finite positive number", "k")
+        if self.c is not None and not math.isfinite(self.c / (2.0 * math.sqrt(self.k) * math.sqrt(self.m))):
+            raise InputError("c/(2√(km)) overflows", "c")
+        if self.zeta is not None and not math.isfinite(2.0 * self.m * self.zeta * omega_n):
+            raise InputError("c = 2mζωₙ overflows", "zeta")
+        if self.c is not None and self.c / (2.0 * math.sqrt(self.k) * math.sqrt(self.m)) > MAX_RATIO:
+            raise InputError(f"ζ = c/(2√(km)) must be <= {MAX_RATIO:g}", "c")
+        if self.base is not None:
+            if self.base.omega / omega_n > MAX_RATIO:
+                raise InputError(f"ω/ωₙ must be <= {MAX_RATIO:g}", "base.omega")
+            if not math.isfinite(self.base.amplitude * self.base.omega * self.base.omega):
+                raise InputError("amplitude·ω² overflows", "base")
+        return self

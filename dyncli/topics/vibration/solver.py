@@ -1,0 +1,248 @@
+"""Vibrations of a spring–mass–damper, free and base-excited (notes §17) —
+numeric core (plain numpy; scipy only on the DOP853 route).
+
+Notation of the notes: w = x − s − L (17.16b), ωₙ² = k/m (17.5b),
+c = 2mζωₙ (17.20), ω* the damped frequency (17.22b/17.24b), base motion
+s = s0 sin(ωt) (17.26), r = ω/ωₙ.  The time response is the exact total
+response of (17.15a) from :mod:`closed_form`, uniform in ζ (continuous
+through ζ = 1, no cancellation for large ζ or near resonance).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError, NumericalError
+from dyncli.result import Result, Series, SolveOptions, Table
+from dyncli.topics.vibration import closed_form as cf
+
+SYMBOLS = {
+    "omega_n": "ωₙ", "zeta": "ζ", "c": "c", "regime": "", "omega_d": "ω*",
+    "A": "A", "phi": "φ", "r": "r", "G": "G", "g": "g", "Phi": "Φ",
+    "x": "x", "v": "ẋ", "w": "w",
+    "sweep_r": "r", "sweep_G": "G", "sweep_phi": "φ", "sweep_g": "g", "sweep_Phi": "Φ",
+    "peak_G_r": "r(G max)", "peak_G": "G max", "peak_g_r": "r(g max)", "peak_g": "g max",
+}
+UNITS = {
+    "omega_n": "rad/s", "c": "N·s/m", "omega_d": "rad/s", "A": "m", "phi": "rad", "Phi": "rad",
+    "x": "m", "v": "m/s", "w": "m", "sweep_phi": "rad", "sweep_Phi": "rad",
+}
+
+ODE_MAX_WORK = 2e7  # (fastest rate) × (time span) beyond which DOP853 is refused
+
+
+def _f(x) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _angle(y: float, x: float) -> float:
+    """atan2 in (−π, π]: a −0.0 ordinate counts as +0.0 (the negative real
+    axis gives +π); values just above −π are kept."""
+    return math.atan2(y + 0.0, x) + 0.0
+
+
+def solve(p, options: SolveOptions | None = None) -> Result:
+    m, k = p.m, p.k
+    omega_n = math.sqrt(k / m)
+    if p.zeta is not None:
+        zeta = p.zeta
+        c = 2.0 * m * zeta * omega_n
+    else:
+        c = p.c if p.c is not None else 0.0
+        zeta = c / (2.0 * math.sqrt(k) * math.sqrt(m))
+    if not (math.isfinite(zeta) and math.isfinite(c)):
+        raise InputError("the damping overflows", "c" if p.c is not None else "zeta")
+    L = p.L
+    x0 = L if p.x0 is None else p.x0
+    v0 = p.v0
+
+    if zeta == 0.0:
+        regime = "undamped"
+    elif zeta < 1.0:
+        regime = "underdamped"
+    elif zeta == 1.0:
+        regime = "critical"
+    else:
+        regime = "overdamped"
+    omega_d, _, _ = cf.roots(omega_n, zeta)
+
+    res = Result({}, method="closed-form", symbols=dict(SYMBOLS), units=dict(UNITS))
+    R = res.results
+    R.update(omega_n=omega_n, zeta=zeta, c=c, regime=regime, omega_d=omega_d)
+    eqs = ["17.5b", "17.16b", "17.20"]
+    eqs += {"undamped": ["17.10", "17.12"], "underdamped": ["17.22"], "critical": ["17.23"],
+            "overdamped": ["17.24"]}[regime]
+
+    s0 = Om = 0.0
+    if p.base is None:
+        A, phi = _free_amplitude_phase(x0 - L, v0, omega_n, zeta, omega_d, regime, res)
+        R.update(A=A, phi=phi)
+    else:
+        s0, Om = p.base.amplitude, p.base.omega
+        r = Om / omega_n
+        eqs += ["17.26", "17.27", "17.30", "17.31", "17.33", "17.34"]
+        G, phi, g, Phi = (float(a[0]) for a in cf.amplification(np.array([r]), zeta))
+        R.update(r=r, G=_f(G), phi=phi, g=_f(g), Phi=Phi)
+        if R["G"] is None:
+            res.warn("undamped resonance (ζ = 0, ω = ωₙ): G and g are unbounded (null); the response grows "
+                     "linearly in time, w_p = −(s0 ωₙ t/2) cos(ωₙ t); phi and Phi are the phase of that "
+                     "secular term (−π/2, the limit ζ → 0)")
+        elif zeta == 0.0:
+            res.warn("undamped (ζ = 0): the free vibration never decays, so the response is the steady "
+                     "state (G, g) plus a free oscillation at ωₙ for all time")
+    res.equations = eqs
+
+    if p.at:
+        _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om)
+    if p.sweep is not None:
+        _sweep(p.sweep, zeta, res)
+    return res
+
+
+# ---------------------------------------------------------------------------
+
+
+def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
+    """A, φ of (17.10)-(17.12), (17.22c-e), (17.24c-e); None where the form
+    does not exist (warned)."""
+    b = wd0 + zeta * omega_n * w0          # ξ'(0) of (17.21d)
+    if regime == "critical":
+        res.warn("A and phi are null: the critically damped motion (17.23) has no amplitude–phase form")
+        return None, None
+    if regime in ("undamped", "underdamped"):
+        q = b / omega_d
+        A = math.hypot(w0, q)
+        if A == 0.0:
+            res.warn("phi is null: the mass starts at rest in equilibrium (A = 0), so the phase is undefined")
+            return 0.0, None
+        return A, _angle(w0, q)
+    # overdamped: w = A e^{-ζωt} sinh(ω*t + φ) needs cosh φ = b/(Aω*) ≥ 1
+    q = b / omega_d
+    if math.isfinite(q) and abs(q) > abs(w0):
+        A = math.sqrt((abs(q) - abs(w0)) * (abs(q) + abs(w0)))
+        phi = math.atanh(w0 / q)
+        if q > 0:
+            return A, phi
+        res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) needs "
+                 "v0 + ζωₙw0 > ω*|w0| (here v0 + ζωₙw0 < −ω*|w0|); the motion is "
+                 f"w = −{A:.6g} e^(−ζωₙt) sinh(ω*t {'−' if phi < 0 else '+'} {abs(phi):.6g})")
+        return None, None
+    res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) exists only when "
+             "|v0 + ζωₙw0| > ω*|w0| (here it is not; the motion is "
+             "w0 e^(−ζωₙt)cosh(ω*t) + ... , computed exactly)")
+    return None, None
+
+
+def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
+    t = np.asarray(p.at, dtype=float)
+    with np.errstate(all="ignore"):   # non-finite values are reported below
+        x, v, w = cf.response(t, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om)
+    method = p.accuracy.method
+    if method in ("ode", "DOP853"):
+        xo, vo = _ode(t, omega_n, zeta, L, x0, v0, s0, Om, p.accuracy.rtol, p.accuracy.atol)
+        err = float(np.max(np.abs(np.concatenate([xo - x, vo - v])))) if t.size else 0.0
+        sd = s0 * np.sin(Om * t)
+        x, v, w = xo, vo, xo - sd - L
+        res.method = "ode:DOP853"
+        res.error_estimate = err
+        res.warn("accuracy.method = DOP853: x, v, w are integrated numerically; error_estimate is the "
+                 "largest difference from the exact closed form (method: auto uses the closed form)")
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+        raise NumericalError("the response is not representable at the requested times "
+                             "(ω·t beyond the floating-point range)")
+    res.results.update(x=x.tolist(), v=v.tolist(), w=w.tolist())
+    res.series.append(Series("t", list(p.at), ["x", "v", "w"], title="Response x = w + s + L (17.16b)"))
+
+
+def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol):
+    """(17.15a) integrated with scipy's DOP853 (the numerical route)."""
+    from scipy.integrate import solve_ivp
+
+    T = float(np.max(t)) if t.size else 0.0
+    _, _, lam2 = cf.roots(omega_n, zeta)
+    rate = max(omega_n, lam2 if zeta >= 1 else omega_n, Om)
+    if rate * T > ODE_MAX_WORK:
+        raise NumericalError(f"DOP853 would need more than ~{ODE_MAX_WORK:.0e} steps here "
+                             f"(fastest rate {rate:.3g}/s over {T:.3g} s); use accuracy.method: auto")
+    if T == 0.0:
+        return np.full(t.shape, x0), np.full(t.shape, v0)
+    wn2 = omega_n * omega_n
+    two_zw = 2.0 * zeta * omega_n
+
+    def rhs(tt, y):
+        s = s0 * math.sin(Om * tt)
+        sd = s0 * Om * math.cos(Om * tt)
+        return [y[1], -wn2 * (y[0] - s - L) - two_zw * (y[1] - sd)]
+
+    ts, inverse = np.unique(t, return_inverse=True)
+    sol = solve_ivp(rhs, (0.0, T), [x0, v0], method="DOP853", t_eval=ts, rtol=rtol, atol=atol)
+    if not sol.success:
+        raise NumericalError(f"DOP853 failed: {sol.message}")
+    x = sol.y[0][inverse]
+    v = sol.y[1][inverse]
+    return x, v
+
+
+def _sweep(sw, zeta, res):
+    lo, hi = sw.ratio
+    if sw.spacing == "log":
+        r = np.geomspace(lo, hi, sw.points)
+    else:
+        r = np.linspace(lo, hi, sw.points)
+    r[0], r[-1] = lo, hi
+    G, phi, g, Phi = cf.amplification(r, zeta)
+    R = res.results
+    R["sweep_r"] = r.tolist()
+    R["sweep_G"] = [_f(a) for a in G]
+    R["sweep_phi"] = phi.tolist()
+    R["sweep_g"] = [_f(a) for a in g]
+    R["sweep_Phi"] = Phi.tolist()
+    if any(a is None for a in R["sweep_G"]):
+        res.warn("sweep: G and g are null at r = 1 (undamped resonance: unbounded)")
+
+    pG = cf.peak_G(zeta)
+    pg = cf.peak_g(zeta)
+    R["peak_G_r"], R["peak_G"] = pG if pG else (None, None)
+    R["peak_g_r"], R["peak_g"] = pg if pg else (None, None)
+    if zeta == 0.0:
+        res.warn("peaks are null: undamped, G and g are unbounded at r = 1")
+    elif pG is None:
+        res.warn("peak_G_r, peak_G are null: for ζ ≥ 1/√2 G has no maximum; it rises monotonically "
+                 "towards 1 as r → ∞")
+
+    # display: mark the sweep points nearest to the exact peaks, and a peaks table
+    marks: dict[int, list[str]] = {}
+
+    def mark(rp, label):
+        if rp is not None and lo <= rp <= hi:
+            i = int(np.argmin(np.abs(r - rp)))
+            marks.setdefault(i, []).append(label)
+
+    mark(pG[0] if pG else None, "◀ G max")
+    mark(pg[0] if pg else None, "◀ g max")
+    if zeta == 0.0:
+        mark(1.0, "◀ resonance")
+    index = []
+    for i, ri in enumerate(r.tolist()):
+        if i in marks:
+            from dyncli.render.table import fmt_num
+
+            index.append(f"{fmt_num(ri)} {' '.join(marks[i])}")
+        else:
+            index.append(ri)
+    res.series.append(Series("r", index, ["sweep_G", "sweep_phi", "sweep_g", "sweep_Phi"],
+                             title="Frequency sweep: amplification functions G (17.30b), g (17.34b); "
+                                   "◀ marks the point nearest to a peak"))
+    rows = []
+    for name, pk, where in (("G (17.30b)", pG, "r = 1/√(1 − 2ζ²), G = 1/(2ζ√(1 − ζ²))"),
+                            ("g (17.34b)", pg, "r² = 2/(1 + √(1 + 8ζ²))")):
+        if pk:
+            inside = "yes" if lo <= pk[0] <= hi else "no"
+            rows.append([name, pk[0], pk[1], inside, where])
+        else:
+            why = "unbounded at r = 1 (ζ = 0)" if zeta == 0.0 else "none (ζ ≥ 1/√2): increases towards 1"
+            rows.append([name, None, None, "—", why])
+    res.views.append(Table("Resonance peaks (exact)", ["function", "r at peak", "peak value", "in sweep", "formula"], rows))
