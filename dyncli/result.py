@@ -27,6 +27,7 @@ class Series:
     index: list                # e.g. the requested times
     names: list[str]           # result names that are lists over ``index``
     title: str | None = None
+    index_result: str | None = None   # result name holding the index itself (not repeated in the scalar table)
 
 
 @dataclass

@@ -138,7 +138,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     console.print(Text(meta, style="dim"))
 
     values, unit_names = display_units(result, units)
-    in_series = {n for s in result.series for n in s.names}
+    in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
     scalars = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
     scalars.add_column("result")
     scalars.add_column("symbol", style="cyan")

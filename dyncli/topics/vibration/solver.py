@@ -235,7 +235,7 @@ def _sweep(sw, zeta, res):
             index.append(ri)
     res.series.append(Series("r", index, ["sweep_G", "sweep_phi", "sweep_g", "sweep_Phi"],
                              title="Frequency sweep: amplification functions G (17.30b), g (17.34b); "
-                                   "◀ marks the point nearest to a peak"))
+                                   "◀ marks the point nearest to a peak", index_result="sweep_r"))
     rows = []
     for name, pk, where in (("G (17.30b)", pG, "r = 1/√(1 − 2ζ²), G = 1/(2ζ√(1 − ζ²))"),
                             ("g (17.34b)", pg, "r² = 2/(1 + √(1 + 8ζ²))")):
