@@ -1,13 +1,15 @@
 """Safe YAML reading with source positions and hard caps.
 
-PyYAML's ``compose`` (SafeLoader) builds a node graph without constructing
+PyYAML's ``compose`` (the libyaml-based CSafeLoader when available, else
+SafeLoader) builds a node graph without constructing
 any Python object; we then construct plain data ourselves:
 
 * only the standard tags (str, int, float, bool, null, map, seq) are allowed
   -- a ``!!python/...`` or any custom tag is invalid input;
 * the number of constructed nodes is capped, so alias expansion ("billion
   laughs") fails fast instead of exhausting memory;
-* nesting depth and document size are capped;
+* nesting depth, node count and document size are capped (depth and node
+  count while parsing, before composing);
 * duplicate mapping keys are an error;
 * every value's (line, col) is recorded under its path tuple.
 """
@@ -84,8 +86,10 @@ def load(text: str | bytes) -> Document:
         raise YamlError(f"file is too large ({len(text)} characters, at most {MAX_BYTES})")
     if "\x00" in text:
         raise YamlError("file contains a NUL character (binary data?)")
+    loader = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
     try:
-        nodes = list(yaml.compose_all(text, Loader=yaml.SafeLoader))
+        _precheck(text, loader)
+        nodes = list(yaml.compose_all(text, Loader=loader))
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
         msg = exc.problem or exc.context or "malformed YAML"
@@ -106,6 +110,32 @@ def load(text: str | bytes) -> Document:
     counter = [0]
     doc.data = _construct(nodes[0], (), doc, counter, 0)
     return doc
+
+
+def _precheck(text: str, loader) -> None:
+    """Stream the parser's events once and stop at the first one beyond the
+    depth or node caps, before anything is composed.  Scanning deeply nested
+    flow collections costs time quadratic in the depth (in PyYAML and in
+    libyaml), so the caps must bite while parsing, not after composing."""
+    import yaml
+
+    depth = nodes = 0
+    starts = (yaml.SequenceStartEvent, yaml.MappingStartEvent)
+    ends = (yaml.SequenceEndEvent, yaml.MappingEndEvent)
+    for ev in yaml.parse(text, Loader=loader):
+        if isinstance(ev, starts):
+            depth += 1
+            nodes += 1
+            if depth > MAX_DEPTH:
+                line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
+                raise YamlError(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
+        elif isinstance(ev, ends):
+            depth -= 1
+        elif isinstance(ev, (yaml.ScalarEvent, yaml.AliasEvent)):
+            nodes += 1
+        if nodes > MAX_NODES:
+            line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
+            raise YamlError(f"document has more than {MAX_NODES} values", line, col)
 
 
 def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int) -> Any:
