@@ -96,8 +96,12 @@ def load(text: str | bytes) -> Document:
         if m is not None:
             raise YamlError(f"YAML syntax error: {msg}", m.line + 1, m.column + 1) from None
         raise YamlError(f"YAML syntax error: {msg}") from None
+    except yaml.reader.ReaderError as exc:
+        line = text.count("\n", 0, exc.position) + 1
+        col = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
+        raise YamlError(f"control character #x{exc.character:04x} is not allowed in YAML text", line, col) from None
     except yaml.YAMLError as exc:
-        raise YamlError(f"YAML error: {exc}") from None
+        raise YamlError(f"YAML error: {' '.join(str(exc).split())}") from None
     except RecursionError:
         raise YamlError("YAML is nested too deeply") from None
     nodes = [n for n in nodes if n is not None]
@@ -153,6 +157,8 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
     line, col = _mark(node)
     doc.pos.setdefault(path, (line, col))
     tag = node.tag
+    if tag == _STD + "timestamp" and isinstance(node, yaml.ScalarNode):
+        raise YamlError(f"{node.value!r} reads as a date; write a number (or quote it for text)", line, col)
     if tag not in _ALLOWED_TAGS:
         raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
     if isinstance(node, yaml.ScalarNode):
