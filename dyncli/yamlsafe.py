@@ -165,7 +165,8 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
         try:
             return _scalar(node)
         except (ValueError, OverflowError):
-            raise YamlError(f"cannot read value {node.value!r}", line, col) from None
+            shown = node.value if len(node.value) <= 40 else node.value[:37] + "..."
+            raise YamlError(f"cannot read value {shown!r} ({len(node.value)} characters)", line, col) from None
     if isinstance(node, yaml.SequenceNode):
         return [_construct(n, path + (i,), doc, counter, depth + 1) for i, n in enumerate(node.value)]
     if isinstance(node, yaml.MappingNode):
