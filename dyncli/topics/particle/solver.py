@@ -342,14 +342,14 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         a = np.zeros(3) if isinstance(ph, RestPhase) else ph.rhs(t, y)[3:6]
         T = 0.5 * m * float(v @ v)
         V = float(F.potential(x))
-        xs.append(x.tolist())
-        vs.append(v.tolist())
-        accs.append(np.asarray(a, float).tolist())
+        xs.append(_vec(x))
+        vs.append(_vec(v))
+        accs.append(_vec(a))
         Ts.append(T)
         Vs.append(V)
         Es.append(T + V)
         Ws.append(W)
-        Hs.append((m * np.cross(x, v)).tolist())
+        Hs.append(_vec(m * np.cross(x, v)))
 
     # energy residual (20.4) over every accepted step and the requested times
     resid = 0.0
@@ -380,17 +380,20 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     # friction: stops, sticking, slipping
     if F.muN:
         t_rest = None
+        slips = [t for kind, t, _ in traj.notes if kind == "slip"]
+        if slips:
+            when = f"at t = {slips[0]:.6g} s" if len(slips) == 1 else \
+                f"{len(slips)} times (first at t = {slips[0]:.6g} s, last at t = {slips[-1]:.6g} s)"
+            res.warn(f"friction: the particle stops momentarily {when} and slips on "
+                     f"(|other forces| > mu N = {F.muN:.6g} N there)")
         for kind, t, nFo in traj.notes:
             if kind == "stick":
                 t_rest = t
-                res.warn(f"friction: the particle is at rest at t = {t:.6g} s and sticks "
+                res.warn(f"friction: the particle comes to rest at t = {t:.6g} s and sticks "
                          f"(|other forces| = {nFo:.6g} N <= mu N = {F.muN:.6g} N)")
             elif kind == "release":
                 t_rest = None
                 res.warn(f"friction: the particle breaks free at t = {t:.6g} s "
-                         f"(|other forces| = {nFo:.6g} N > mu N = {F.muN:.6g} N)")
-            elif kind == "slip":
-                res.warn(f"friction: the particle stops momentarily at t = {t:.6g} s and slips on "
                          f"(|other forces| = {nFo:.6g} N > mu N = {F.muN:.6g} N)")
         res.results["t_rest"] = t_rest
         if t_rest is None:
@@ -429,6 +432,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     else:
         res.error_estimate = 0.0
     return res
+
+
+def _vec(a) -> list[float]:
+    return [float(c) + 0.0 for c in np.asarray(a, float)]
 
 
 def _equations(F: Forces) -> list[str]:
