@@ -243,7 +243,9 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory
             nFo = float(np.linalg.norm(Fo))
             if not np.isfinite(nFo):
                 raise NumericalError(f"the force is not finite at t = {t:g}, x = {y[0:3].tolist()}")
-            if nFo <= F.muN:
+            # static condition |F_other| <= mu N, decided within the tolerance
+            # (a marginal case would otherwise creep at roundoff level)
+            if nFo <= F.muN * (1.0 + 10.0 * rtol):
                 t_free = _release_time(F, t, t_end, y[0:3]) if F.time_dependent else None
                 t1 = t_end if t_free is None else t_free
                 phases.append(RestPhase(t, t1, y[0:3], y[6]))
@@ -279,7 +281,8 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory
             raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
         nfev += sol.nfev
         if sol.status == -1:
-            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}")
+            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
+                                 + _singularity_hint(F, sol.y[0:3, -1]))
         if not np.all(np.isfinite(sol.y)):
             bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
             raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
@@ -301,6 +304,18 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory
         raise NumericalError(f"friction: more than {MAX_PHASES} stick/slip phases before t_end; "
                              "the motion chatters at this tolerance")
     return Trajectory(phases, notes, nfev)
+
+
+def _singularity_hint(F: Forces, x) -> str:
+    for c, _, R0 in F.inv:
+        R = float(np.linalg.norm(x - c))
+        if R < 1e-3 * R0:
+            return f" (the particle falls into the centre of the inverse-square field: R = {R:.3g} m)"
+    for a, _, L in F.springs:
+        R = float(np.linalg.norm(x - a))
+        if L > 0 and R < 1e-3 * L:
+            return f" (the particle reaches the anchor of a spring with free length L > 0: R = {R:.3g} m)"
+    return ""
 
 
 def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
