@@ -212,7 +212,8 @@ def potential(fld: Field, res: Result):
     for i in range(3):
         if _simplify(S[i] + sp.diff(V, X[i])) != 0:
             if not _numeric_gradient_ok(fld, V, i):
-                res.warn("could not verify F = -grad V for the integrated potential; potential is null")
+                res.warn("sympy's antiderivative is not a potential everywhere (piecewise or singular), "
+                         "so no closed-form potential is given: potential is null")
                 return None
     return V
 
@@ -228,7 +229,35 @@ def _numeric_gradient_ok(fld: Field, V, i: int) -> bool:
     return bool(np.any(ok)) and bool(np.all(np.abs(a[ok]) < 1e-8 * (1 + np.abs(d.evaluate(x1=pts[0], x2=pts[1], x3=pts[2])[ok]))))
 
 
-def single_valued(fld: Field, Vexpr, box: float) -> tuple[bool, str | None]:
+def numeric_potential(V):
+    """A float-valued function of a point for the sympy potential V: dyncli's
+    own evaluator when V converts back to an expression, else sympy's evalf
+    of V with the coordinates substituted (e.g. for erf)."""
+    import numpy as np
+    import sympy as sp
+
+    try:
+        e = symbolic.expr_from_sympy(V, VARS)
+
+        def f(x1, x2, x3):
+            return float(e.evaluate(x1=float(x1), x2=float(x2), x3=float(x3)))
+
+        return f
+    except ValueError:
+        X = [symbolic.symbol(n) for n in VARS]
+
+        def g(x1, x2, x3):
+            val = V.subs({X[0]: sp.Float(float(x1)), X[1]: sp.Float(float(x2)), X[2]: sp.Float(float(x3))}).evalf()
+            try:
+                out = complex(val)
+            except TypeError:
+                return float("nan")
+            return out.real if abs(out.imag) <= 1e-12 * (1 + abs(out.real)) else float("nan")
+
+        return g
+
+
+def single_valued(fld: Field, Vnum, box: float) -> tuple[bool, str | None]:
     """Compare V(a) - V(b) with the work of F along random straight segments a -> b."""
     import warnings
 
@@ -239,8 +268,7 @@ def single_valued(fld: Field, Vexpr, box: float) -> tuple[bool, str | None]:
     checked = 0
     for k in range(N_SEGMENTS):
         a, b = pts[:, 2 * k], pts[:, 2 * k + 1]
-        Va = float(Vexpr.evaluate(x1=a[0], x2=a[1], x3=a[2]))
-        Vb = float(Vexpr.evaluate(x1=b[0], x2=b[1], x3=b[2]))
+        Va, Vb = Vnum(*a), Vnum(*b)
         if not (math.isfinite(Va) and math.isfinite(Vb)):
             continue
         d = b - a
@@ -311,8 +339,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     # curl at the points
     curls = []
     for i, pt in enumerate(p.points):
-        c = fld.curl_at(np.asarray(pt, float))
-        if np.all(np.isfinite(c)):
+        x = np.asarray(pt, float)
+        c = fld.curl_at(x)
+        if np.all(np.isfinite(c)) and np.all(np.isfinite(fld.F_at(x))):
             curls.append([float(v) + 0.0 for v in c])
         else:
             curls.append(None)
@@ -327,26 +356,20 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     cons, how, curl_simpl = conservative_verdict(fld, box, res)
     res.results["curl_formula"] = [_display(c, fld.decimals) for c in curl_simpl]
     V = None
-    Vexpr = None
+    Vnum = None
     if cons:
         V = potential(fld, res)
         if V is not None:
-            try:
-                Vexpr = symbolic.expr_from_sympy(V, VARS)
-            except ValueError:
-                Vexpr = None
-            if Vexpr is not None:
-                ok, why = single_valued(fld, Vexpr, box)
-                if not ok:
-                    cons = False
-                    how = "curl = 0 where F is defined, but the work is path dependent"
-                    res.warn("the curl vanishes wherever F is defined, but F is singular on a set that "
-                             f"closed paths can loop around, so no single-valued potential exists: {why}")
-                    V, Vexpr = None, None
-                elif why:
-                    res.warn(f"single-valuedness of V not checked: {why}")
-            else:
-                res.warn("the potential could not be converted for numeric evaluation; work_check is null")
+            Vnum = numeric_potential(V)
+            ok, why = single_valued(fld, Vnum, box)
+            if not ok:
+                cons = False
+                how = "curl = 0 where F is defined, but the work is path dependent"
+                res.warn("the curl vanishes wherever F is defined, but F is singular on a set that "
+                         f"closed paths can loop around, so no single-valued potential exists: {why}")
+                V, Vnum = None, None
+            elif why:
+                res.warn(f"single-valuedness of V not checked: {why}")
         res.equations += ["19.7", "19.8"]
     else:
         res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
@@ -367,9 +390,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         res.results["work_error"] = err
         res.results["x_start"] = [float(v) + 0.0 for v in xa]
         res.results["x_end"] = [float(v) + 0.0 for v in xb]
-        if Vexpr is not None:
-            Va = float(Vexpr.evaluate(x1=xa[0], x2=xa[1], x3=xa[2]))
-            Vb = float(Vexpr.evaluate(x1=xb[0], x2=xb[1], x3=xb[2]))
+        if Vnum is not None:
+            Va, Vb = Vnum(*xa), Vnum(*xb)
             if math.isfinite(Va) and math.isfinite(Vb):
                 res.results["work_from_potential"] = Va - Vb
                 res.results["work_check"] = U - (Va - Vb)
