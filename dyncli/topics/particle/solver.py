@@ -174,7 +174,13 @@ class Trajectory:
         self.nfev = nfev
 
     def phase_at(self, t):
-        for ph in self.phases:
+        """The first phase whose interval [t0, t1] contains t."""
+        import bisect
+
+        starts = self._starts if hasattr(self, "_starts") else [ph.t0 for ph in self.phases]
+        self._starts = starts
+        i = max(bisect.bisect_left(starts, t) - 1, 0)
+        for ph in self.phases[i:]:
             if ph.t0 <= t <= ph.t1:
                 return ph
         return self.phases[-1]
