@@ -139,7 +139,7 @@ def motion(coords: str, position: dict, t: np.ndarray) -> dict:
 
 
 def _vec_list(comps, i):
-    vals = [float(comps[k][i]) for k in range(3)]
+    vals = [float(comps[k][i]) + 0.0 for k in range(3)]  # + 0.0: no -0.0
     return vals if all(math.isfinite(c) for c in vals) else None
 
 
@@ -230,14 +230,14 @@ def _tangential_normal(v, a, Q) -> dict:
     c = np.cross(vv, aa)
     cn = float(np.linalg.norm(c))
     an_ = float(np.linalg.norm(aa))
-    out = {"speed": speed, "a_t": at, "e_t": (et @ Q).tolist()}
+    out = {"speed": speed, "a_t": at, "e_t": (et @ Q + 0.0).tolist()}
     if cn <= STRAIGHT_TOL * speed * an_:
         return {**out, "a_n": 0.0, "rho": None, "e_n": None, "state": "straight"}
     an = cn / speed
     rho = speed ** 3 / cn if math.isfinite(speed ** 3) else (speed / cn) * speed * speed
     en = np.cross(c, vv) / (cn * speed)
     en /= np.linalg.norm(en)
-    return {**out, "a_n": an, "rho": rho if math.isfinite(rho) else None, "e_n": (en @ Q).tolist(), "state": "curved"}
+    return {**out, "a_n": an, "rho": rho if math.isfinite(rho) else None, "e_n": (en @ Q + 0.0).tolist(), "state": "curved"}
 
 
 # ---------------------------------------------------------------------------
