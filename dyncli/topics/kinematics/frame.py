@@ -60,6 +60,26 @@ def _fmt_t(t: float) -> str:
 # symbolic (sympy imported lazily: only --symbolic reaches here)
 
 
+def exact_sym(e):
+    """The sympy object of an expression with params kept as symbols and
+    short decimals made exact (0.3 -> 3/10), so that simplification works on
+    exact arithmetic; :func:`formula` prints them as decimals again."""
+    from fractions import Fraction
+
+    import sympy as sp
+
+    from dyncli import symbolic
+
+    x = symbolic.sym(e, keep_params=True)
+    reps = {}
+    for f in x.atoms(sp.Float):
+        text = repr(float(f))
+        if "e" not in text and len(text.replace("-", "").replace(".", "").strip("0")) <= 10:
+            q = Fraction(text)
+            reps[f] = sp.Rational(q.numerator, q.denominator)
+    return x.xreplace(reps) if reps else x
+
+
 def simplify_entry(x):
     """A bounded, readable simplification of one table entry."""
     import sympy as sp
@@ -76,12 +96,24 @@ def simplify_entry(x):
     return cand
 
 
+def _decimals(x):
+    """Non-integer rational coefficients -> decimals (exponents kept exact)."""
+    import sympy as sp
+
+    if x.is_Rational and not x.is_Integer:
+        return sp.Float(x, 15)
+    if x.is_Pow:
+        return sp.Pow(_decimals(x.base), x.exp)
+    if x.args:
+        return x.func(*[_decimals(a) for a in x.args])
+    return x
+
+
 def formula(x) -> str:
     """Compact one-line text of a sympy expression for a table cell."""
     import sympy as sp
 
-    s = sp.sstr(x, full_prec=False)
-    return s
+    return sp.sstr(_decimals(sp.Integer(0) + x), full_prec=False)
 
 
 def symbolic_table(title: str, rows: list[tuple[str, Sequence]], basis, note: str | None = None) -> FrameTable:

@@ -114,7 +114,13 @@ def to_cartesian(comps, basis):
 
 
 def motion(coords: str, position: dict, t: np.ndarray) -> dict:
-    """Numeric rows of the frame table and the Cartesian x, v, a at times t."""
+    """Numeric rows of the frame table and the Cartesian x, v, a at times t
+    (non-finite entries where a derivative does not exist)."""
+    with np.errstate(all="ignore"):
+        return _motion(coords, position, t)
+
+
+def _motion(coords: str, position: dict, t: np.ndarray) -> dict:
     from dyncli.topics.kinematics.model import COORDINATES
 
     J = {}
@@ -234,8 +240,8 @@ def _tangential_normal(v, a, Q) -> dict:
     if cn <= STRAIGHT_TOL * speed * an_:
         return {**out, "a_n": 0.0, "rho": None, "e_n": None, "state": "straight"}
     an = cn / speed
-    rho = speed ** 3 / cn if math.isfinite(speed ** 3) else (speed / cn) * speed * speed
-    en = np.cross(c, vv) / (cn * speed)
+    rho = (speed / cn) * speed * speed    # |v|³/|v×a| without under/overflow of |v|³
+    en = np.cross(c / cn, et)             # ((v×a)×v)/(|v×a||v|), scaled first
     en /= np.linalg.norm(en)
     return {**out, "a_n": an, "rho": rho if math.isfinite(rho) else None, "e_n": (en @ Q + 0.0).tolist(), "state": "curved"}
 
@@ -335,7 +341,7 @@ def symbolic_view(coords, p, title, basis):
     J = {}
     for name in COORDINATES[coords]:
         e = p.position.get(name)
-        q = symbolic.sym(e, keep_params=True) if e is not None else sp.Integer(0)
+        q = frame.exact_sym(e) if e is not None else sp.Integer(0)
         J[name] = (q, sp.diff(q, tsym), sp.diff(q, tsym, 2))
     r = frame_rows(coords, J, sp)
     w, x, dx, dv = r["omega"], r["x"], r["dx"], r["dv"]

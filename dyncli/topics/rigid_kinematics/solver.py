@@ -1,5 +1,5 @@
 """Rigid-body kinematics (notes §13, §14, §15) — closed forms in plain
-Python (no numpy, scipy, sympy or pydantic)."""
+Python (no numpy, scipy or sympy; no input-model imports)."""
 
 from __future__ import annotations
 

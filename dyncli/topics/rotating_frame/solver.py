@@ -1,4 +1,4 @@
-"""Rotating frames (notes §10, §11) — numeric core (no pydantic).
+"""Rotating frames (notes §10, §11) — numeric core.
 
 p = p'_i e'_i with ė'_i = ω × e'_i.  The exact derivatives of the
 components (forward-mode AD, :mod:`dyncli.topics.kinematics.jet`) give
@@ -73,9 +73,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     P = vec_jet(p.p, t)
     VB = vec_jet(p.vB, t) if p.vB is not None else None
     AB = vec_jet(p.aB, t) if p.aB is not None else None
-    T = terms(tuple(W[0]), tuple(W[1]), tuple(P[0]), tuple(P[1]), tuple(P[2]),
-              tuple(VB[0]) if VB is not None else None, tuple(VB[1]) if VB is not None else None,
-              tuple(AB[0]) if AB is not None else None)
+    with np.errstate(all="ignore"):
+        T = terms(tuple(W[0]), tuple(W[1]), tuple(P[0]), tuple(P[1]), tuple(P[2]),
+                  tuple(VB[0]) if VB is not None else None, tuple(VB[1]) if VB is not None else None,
+                  tuple(AB[0]) if AB is not None else None)
     res = Result({}, method="closed-form", equations=["11.4", "11.5", "11.10", "11.11"],
                  symbols=dict(SYMBOLS), units=dict(UNITS))
     bad: set[float] = set()
@@ -130,7 +131,7 @@ def symbolic_table(p):
     ts = symbolic.symbol("t")
 
     def comps(exprs):
-        return tuple(symbolic.sym(e, keep_params=True) for e in exprs)
+        return tuple(frame.exact_sym(e) for e in exprs)
 
     def d(v, n=1):
         return tuple(sp.diff(c, ts, n) for c in v)
