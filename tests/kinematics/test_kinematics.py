@@ -359,3 +359,18 @@ def test_bad_mass_and_system():
 def test_distance_through_singularity_is_invalid():
     msg = error_of("type: kinematics\nposition: {x1: 'sqrt(t)'}\ndistance: [-1, 1]\n")
     assert "distance" in msg and "not finite" in msg
+
+
+def test_tangential_components_on_a_circle():
+    """Circle of radius 3 with θ = t²: ṡ = 6t, a_t = s̈ = 6, a_n = ṡ²/ρ = 12t², ρ = 3 (5.14b)."""
+    rec = solve_one_text("type: kinematics\ncoordinates: polar\nposition: {r: 3, theta: t**2}\nat: [0.5, 2]\nm: 2\n")
+    r = rec["results"]
+    for i, t in enumerate([0.5, 2.0]):
+        close(r["speed"][i], 6 * t)
+        close(r["a_t"][i], 6.0)
+        close(r["a_n"][i], 12 * t * t)
+        close(r["rho"][i], 3.0)
+        close(r["F_basis"][i], [2 * -12 * t * t, 2 * 6.0, 0])
+        th = t * t
+        close(r["e_t"][i], [-math.sin(th), math.cos(th), 0])
+        close(r["e_n"][i], [-math.cos(th), -math.sin(th), 0])
