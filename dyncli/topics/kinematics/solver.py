@@ -17,8 +17,6 @@ a_n = |v×a|/|v| = ṡ²/ρ, e_n = ((v×a)×v)/(|v×a||v|).  The distance (4.5) 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from dyncli.errors import InputError
@@ -144,11 +142,6 @@ def _motion(coords: str, position: dict, t: np.ndarray) -> dict:
     return rows
 
 
-def _vec_list(comps, i):
-    vals = [float(comps[k][i]) + 0.0 for k in range(3)]  # + 0.0: no -0.0
-    return vals if all(math.isfinite(c) for c in vals) else None
-
-
 def _times(ts) -> str:
     shown = ", ".join(f"{t:g}" for t in ts[:6])
     return shown + (f", … ({len(ts)} times)" if len(ts) > 6 else "")
@@ -161,26 +154,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     t = np.asarray(times, dtype=float)
     res = Result({}, method="closed-form", equations=list(EQUATIONS[coords]), symbols=dict(SYMBOLS), units=dict(UNITS))
     rows = motion(coords, p.position, t)
-    out: dict[str, list] = {k: [] for k in ("x", "v", "a", "speed", "v_basis", "a_basis", "a_t", "a_n", "rho", "e_t", "e_n")}
-    rest, straight, undefined = [], [], []
-    for i, ti in enumerate(times):
-        x, v, a = _vec_list(rows["x_cart"], i), _vec_list(rows["v_cart"], i), _vec_list(rows["a_cart"], i)
-        vb, ab = _vec_list(rows["v"], i), _vec_list(rows["a"], i)
-        if x is None or v is None or a is None or vb is None or ab is None:
-            undefined.append(ti)
-        out["x"].append(x)
-        out["v"].append(v)
-        out["a"].append(a)
-        out["v_basis"].append(vb)
-        out["a_basis"].append(ab)
-        Q = np.array([[float(rows["basis"][j][k][i]) for k in range(3)] for j in range(3)])
-        tn = _tangential_normal(vb, ab, Q)
-        if tn["state"] == "rest":
-            rest.append(ti)
-        elif tn["state"] == "straight":
-            straight.append(ti)
-        for k in ("speed", "a_t", "a_n", "rho", "e_t", "e_n"):
-            out[k].append(tn[k])
+    out, rest, straight, undefined = _per_time(rows, times)
     res.results.update(out)
     res.equations += ["5.3", "5.5", "5.14b"]
     if undefined:
@@ -219,31 +193,65 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     return res
 
 
-def _tangential_normal(v, a, Q) -> dict:
-    """§5 quantities from the components of v and a on an orthonormal basis
-    whose base vectors are the rows of ``Q`` (Cartesian components); e_t and
-    e_n are returned in Cartesian components."""
-    none = {"speed": None, "a_t": None, "a_n": None, "rho": None, "e_t": None, "e_n": None, "state": "undefined"}
-    if v is None or a is None or not np.all(np.isfinite(Q)):
-        return none
-    vv = np.array(v)
-    aa = np.array(a)
-    speed = float(np.linalg.norm(vv))
-    if speed == 0.0:
-        return {**none, "speed": 0.0, "state": "rest"}
-    et = vv / speed
-    at = float(aa @ et)
-    c = np.cross(vv, aa)
-    cn = float(np.linalg.norm(c))
-    an_ = float(np.linalg.norm(aa))
-    out = {"speed": speed, "a_t": at, "e_t": (et @ Q + 0.0).tolist()}
-    if cn <= STRAIGHT_TOL * speed * an_:
-        return {**out, "a_n": 0.0, "rho": None, "e_n": None, "state": "straight"}
-    an = cn / speed
-    rho = (speed / cn) * speed * speed    # |v|³/|v×a| without under/overflow of |v|³
-    en = np.cross(c / cn, et)             # ((v×a)×v)/(|v×a||v|), scaled first
-    en /= np.linalg.norm(en)
-    return {**out, "a_n": an, "rho": rho if math.isfinite(rho) else None, "e_n": (en @ Q + 0.0).tolist(), "state": "curved"}
+def _stack(comps, n):
+    return np.stack([np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in comps], axis=1) + 0.0
+
+
+def _rows_list(arr, ok):
+    vals = arr.tolist()
+    for i in np.flatnonzero(~ok):
+        vals[i] = None
+    return vals
+
+
+def _per_time(rows, times):
+    """Every per-time result, vectorised over the times.
+
+    §5 quantities are computed from the components on the orthonormal own
+    basis (rows of Q, Cartesian components), where the algebra is exact for
+    the book's examples; e_t and e_n are then returned in Cartesian
+    components."""
+    n = len(times)
+    if n == 0:
+        keys = ("x", "v", "a", "v_basis", "a_basis", "speed", "a_t", "a_n", "rho", "e_t", "e_n")
+        return {k: [] for k in keys}, [], [], []
+    X, V, A = (_stack(rows[k], n) for k in ("x_cart", "v_cart", "a_cart"))
+    VB, AB = _stack(rows["v"], n), _stack(rows["a"], n)
+    Q = np.stack([_stack(b, n) for b in rows["basis"]], axis=1)      # Q[i, j, :] = e'_j
+    fin = lambda M: np.all(np.isfinite(M.reshape(n, -1)), axis=1)    # noqa: E731
+    okx, okv, oka = fin(X), fin(V) & fin(VB), fin(A) & fin(AB)
+    okq = fin(Q)
+    with np.errstate(all="ignore"):
+        speed = np.linalg.norm(VB, axis=1)
+        et = VB / speed[:, None]
+        at = np.einsum("ij,ij->i", AB, et)
+        c = np.cross(VB, AB)
+        cn = np.linalg.norm(c, axis=1)
+        amag = np.linalg.norm(AB, axis=1)
+        an = cn / speed
+        rho = (speed / cn) * speed * speed         # |v|³/|v×a| without under/overflow of |v|³
+        en = np.cross(c / cn[:, None], et)         # ((v×a)×v)/(|v×a||v|), scaled first
+        en = en / np.linalg.norm(en, axis=1)[:, None]
+        et_c = np.einsum("ij,ijk->ik", et, Q) + 0.0
+        en_c = np.einsum("ij,ijk->ik", en, Q) + 0.0
+    okva = okv & oka & okq
+    moving = okva & (speed > 0)
+    is_straight = moving & (cn <= STRAIGHT_TOL * speed * amag)
+    curved = moving & ~is_straight
+    out = {
+        "x": _rows_list(X, okx), "v": _rows_list(V, okv), "a": _rows_list(A, oka),
+        "v_basis": _rows_list(VB, okv), "a_basis": _rows_list(AB, oka),
+        "speed": [float(s_) if ok else None for s_, ok in zip(speed, okv)],
+        "a_t": [float(x) if ok else None for x, ok in zip(at, moving)],
+        "a_n": [float(x) if c_ else (0.0 if s_ else None) for x, c_, s_ in zip(an, curved, is_straight)],
+        "rho": [float(x) if c_ and np.isfinite(x) else None for x, c_ in zip(rho, curved)],
+        "e_t": _rows_list(et_c, moving),
+        "e_n": _rows_list(en_c, curved & fin(en_c)),
+    }
+    undefined = [t for t, ok in zip(times, okx & okva) if not ok]
+    rest = [t for t, ok, s_ in zip(times, okva, speed) if ok and s_ == 0]
+    straight = [t for t, s_ in zip(times, is_straight) if s_]
+    return out, rest, straight, undefined
 
 
 # ---------------------------------------------------------------------------

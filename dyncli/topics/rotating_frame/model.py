@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Optional
-
-from typing import Literal
+from typing import Literal, Optional
 
 from pydantic import Field
 

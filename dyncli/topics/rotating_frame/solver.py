@@ -14,8 +14,6 @@ a_B = δv_B/δt + ω×v_B.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from dyncli.result import Result, Series, SolveOptions
@@ -83,15 +81,12 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     names = [n for _, n in TABLE_ROWS] + [n for _, n in EXTRA_ROWS if n in T]
     per_time: dict[str, list] = {}
     for name in names:
-        comps = T[name]
-        vals = []
-        for i, ti in enumerate(times):
-            v = [float(np.broadcast_to(comps[k], t.shape)[i]) + 0.0 for k in range(3)]  # + 0.0: no -0.0
-            if all(math.isfinite(c) for c in v):
-                vals.append(v)
-            else:
-                vals.append(None)
-                bad.add(ti)
+        arr = np.stack([np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in T[name]], axis=1) + 0.0
+        ok = np.all(np.isfinite(arr), axis=1)
+        vals = arr.tolist()
+        for i in np.flatnonzero(~ok):
+            vals[i] = None
+            bad.add(times[i])
         per_time[name] = vals
     for name in ["omega", "p", "dp_dt", "omega_x_p", "p_dot", "omega_dot", "d2p_dt2", "omega_dot_x_p",
                  "coriolis", "centripetal", "p_ddot", "vA", "aA"]:
