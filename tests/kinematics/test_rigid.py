@@ -255,3 +255,60 @@ def test_contact_invalid():
     assert msg.startswith("bad.yaml:4:") and "non-zero" in msg
     msg = error_of("type: contact\nbody1: {velocity: [0, 0, 0]}\nbody2: {}\nn: [0, 1, 0]\n")
     assert "unknown field 'velocity'" in msg
+
+
+# ---------------------------------------------------------------------------
+# extremes
+
+
+@settings(max_examples=60, deadline=None)
+@given(w=vec, vB=vec, xA=vec, xC=vec, k=st.integers(-8, 8), j=st.integers(-8, 8))
+def test_omega_scale_invariance(w, vB, xA, xC, k, j):
+    """Positions scaled by 10^k and velocities by 10^j: ω scales by 10^(j-k)
+    and the data stay rigid (no absolute tolerances hidden anywhere)."""
+    N = np.cross(xA, xC)
+    assume(np.linalg.norm(N) > 1e-2 * (1 + np.linalg.norm(xA) * np.linalg.norm(xC)))
+    assume(np.linalg.norm(w) > 1e-3)
+    L, V = 10.0 ** k, 10.0 ** j
+    vA, vC = vB + np.cross(w, xA), vB + np.cross(w, xC)
+    rec = solve_one_text("type: angular-velocity\npoints:\n"
+                         f"  B: {{x: [0, 0, 0], v: {y(V * vB)}}}\n"
+                         f"  A: {{x: {y(L * xA)}, v: {y(V * vA)}}}\n"
+                         f"  C: {{x: {y(L * xC)}, v: {y(V * vC)}}}\n")
+    scale = (1 + np.abs(np.concatenate([w, xA, xC, vB])).max()) ** 4 / np.linalg.norm(N)
+    assert np.allclose(np.array(rec["results"]["omega"]) * L / V, w, atol=1e-10 * scale)
+    assert rec["results"]["rigid"] is True
+
+
+def test_screw_overflow_is_null():
+    rec = solve_one_text("type: screw\nomega: [1e-200, 0, 0]\nvB: [0, 1e200, 0]\n")
+    r = rec["results"]
+    assert r["xD"] is None and r["instant_center"] is None
+    assert r["e_omega"] == [1.0, 0.0, 0.0] and r["advance_speed"] == 0.0
+    assert any("overflows" in w for w in rec["warnings"])
+
+
+def test_contact_tolerance_is_relative():
+    # ω r = v with large magnitudes and decimals: still rolling
+    rec = solve_one_text("type: contact\nbody1: {v: [-3e5, 0, 0], omega: [0, 0, '3e5/0.7'], r: [0, -0.7, 0]}\n"
+                         "body2: {}\nn: [0, -1, 0]\n")
+    assert rec["results"]["state"] == "rolling"
+    rec = solve_one_text("type: contact\nbody1: {v: [-3e-5, 0, 0], omega: [0, 0, 1e-5], r: [0, -0.7, 0]}\n"
+                         "body2: {}\nn: [0, -1, 0]\n")
+    assert rec["results"]["state"] == "slipping"
+
+
+def test_closed_forms_import_neither_sympy_nor_scipy():
+    import subprocess
+    import sys
+
+    from tests.conftest import ROOT
+
+    code = ("import sys; from tests.conftest import solve_path, PROBLEMS; "
+            "[solve_path(PROBLEMS / 'kinematics' / f) for f in ('three-point-omega.yaml', 'screw-axis.yaml', "
+            "'rolling-disk.yaml', 'rolling-wheel-points.yaml')]; "
+            "print('sympy' in sys.modules, 'scipy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                         env={"PYTHONPATH": str(ROOT), "PATH": ""})
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["False", "False"]
