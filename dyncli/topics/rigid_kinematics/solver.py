@@ -12,9 +12,12 @@ from dyncli.result import Result, SolveOptions
 Vec = tuple[float, float, float]
 
 #: angular-velocity: the data are rigid (13.7) when, for every pair of points,
-#: |v_P/Q · e_P/Q| <= RIGID_TOL · max |v_P/Q| (the rate of change of each
-#: distance, relative to the largest relative speed)
+#: |v_P/Q · e_P/Q| <= RIGID_TOL · max(max |v_P/Q|, NOISE_FLOOR · max |v_P|):
+#: the rate of change of each distance relative to the largest relative
+#: speed; relative speeds below NOISE_FLOOR of the absolute speeds are
+#: rounding noise of the subtraction v_P − v_Q and do not count as motion.
 RIGID_TOL = 1e-6
+NOISE_FLOOR = 1e-9
 #: three points are collinear when |x_A/B × x_C/B| <= COLLINEAR_TOL·|x_A/B||x_C/B|
 COLLINEAR_TOL = 1e-12
 #: screw: planar motion (instant center exists) when |v_B·e_ω| <= PLANAR_TOL·|v_B|
@@ -96,8 +99,8 @@ def solve_rigid_velocity(p, options: SolveOptions | None = None) -> Result:
 
 
 def rigid_residual(points: dict) -> tuple[float, str | None]:
-    """max over pairs of |v_P/Q · e_P/Q| / max |v_P/Q| (0 when nothing moves
-    relative to anything) and the worst pair."""
+    """max over pairs of |v_P/Q · e_P/Q| / max(max |v_P/Q|, NOISE_FLOOR·max |v_P|)
+    (0 when nothing moves relative to anything) and the worst pair."""
     names = list(points)
     rel = []
     vmax = 0.0
@@ -109,6 +112,7 @@ def rigid_residual(points: dict) -> tuple[float, str | None]:
             rel.append((names[i], names[j], x, v))
             vmax = max(vmax, norm(v))
     worst, pair = 0.0, None
+    vmax = max(vmax, NOISE_FLOOR * max(norm(P.v) for P in points.values()))
     if vmax == 0.0:
         return 0.0, None
     for a, b, x, v in rel:
