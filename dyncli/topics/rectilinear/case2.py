@@ -38,13 +38,16 @@ class _Case2:
         self.qa = atol * 1e-2
         self.rtol, self.atol = rtol, atol
         self.a = p.a
+        from dyncli.topics.rectilinear.solver import scalar_fn
+
+        self._fn = scalar_fn(p.a)
         self.warned_conv = False
 
     def A(self, x):
         return self.a.evaluate(t=np.asarray(x, dtype=float))
 
     def a1(self, x: float) -> float:
-        return float(self.a.evaluate(t=np.float64(x)))
+        return float(self._fn({'t': x}))
 
     def _check(self, conv) -> None:
         if not np.all(conv) and not self.warned_conv:

@@ -166,7 +166,8 @@ class Branch:
         self.u = grid
         self.tau = np.concatenate([[0.0], np.cumsum(dt)])
         self.ds = np.concatenate([[0.0], np.cumsum(ds)])
-        self.err = float(np.sum(et) + np.sum(es))
+        self.etau = np.concatenate([[0.0], np.cumsum(et)])
+        self.eds = np.concatenate([[0.0], np.cumsum(es)])
         # finite time to reach v*?  local exponent from dt/du near the end
         self.finite_time = False
         self.T_end = math.inf
@@ -183,22 +184,26 @@ class Branch:
             self.T_end = float(self.tau[-1])
 
     def at(self, u: float):
-        """(tau, s - s1, v, err) at parameter u."""
+        """(tau, s - s1, v, (err_tau, err_s)) at parameter u."""
         k = int(np.searchsorted(self.u, u, side="right")) - 1
         k = min(max(k, 0), len(self.u) - 1)
         tau, ds = float(self.tau[k]), float(self.ds[k])
-        err = 0.0
+        et_, es_ = float(self.etau[k]), float(self.eds[k])
         if u != self.u[k]:
             dt, dds, et, es = self.integ(float(self.u[k]), u)
             tau += float(dt[0])
             ds += float(dds[0])
-            err = float(et[0] + es[0])
-        return tau, ds, float(self.v_of(np.float64(u))), err
+            et_ += float(et[0])
+            es_ += float(es[0])
+        return tau, ds, float(self.v_of(np.float64(u))), (et_, es_)
 
 
 class _Case3:
     def __init__(self, p, ans, rtol, atol):
         self.p, self.ans = p, ans
+        from dyncli.topics.rectilinear.solver import scalar_fn
+
+        self._fn = scalar_fn(p.a)
         self.rtol, self.atol = rtol, atol
         self.qr = max(rtol * 1e-2, 1e-15)
         self.v1 = p.v1
@@ -214,7 +219,7 @@ class _Case3:
         return self.p.a.evaluate(v=np.asarray(v, dtype=float))
 
     def a1(self, v: float) -> float:
-        return float(self.p.a.evaluate(v=np.float64(v)))
+        return float(self._fn({'v': v}))
 
     def check(self, conv) -> None:
         if not np.all(conv) and not self._warned:
@@ -270,8 +275,10 @@ class _Case3:
             t0 = float(taus[k - 1])
             u = brentq(lambda u: t0 + float(b.integ(ulo, u)[0][0]) - tau if u != ulo else t0 - tau,
                        ulo, uhi, t0 - tau, float(taus[k]) - tau)
-            tt, ds, v, err = b.at(u)
-            ans.reached(i, T, p.s1 + ds, v, err=err + b.err * 1e-3)
+            tt, ds, v, (et, es) = b.at(u)
+            # an error et in t(u) moves the answer along the trajectory: v by |a| et;
+            # s and t(u) share their integrand, so s moves by about |v| et + es
+            ans.reached(i, T, p.s1 + ds, v, err=max(abs(self.a1(v)) * et, es + abs(v) * et))
             return
         when = "after" if tau > 0 else "before"
         if b.kind == "zero":
@@ -318,10 +325,10 @@ class _Case3:
             else:
                 ans.unreached(i, f"it lies beyond v = {_fmt(b.v_of(np.float64(b.u[-1])))} where the motion ends ({self._end_text(b)})")
             return
-        tau, ds, v, err = b.at(u)
+        tau, ds, v, (et, es) = b.at(u)
         t = p.t1 + tau
         if not ans.beyond_t_max(i, t):
-            ans.reached(i, t, p.s1 + ds, V, err=err)
+            ans.reached(i, t, p.s1 + ds, V, err=max(et, es))
 
     def s_query(self, i: int, S: float) -> None:
         p, ans = self.p, self.ans
@@ -346,10 +353,10 @@ class _Case3:
             else:
                 u = brentq(lambda u: s0 + float(b.integ(ulo, u)[1][0]) - target if u != ulo else s0 - target,
                            ulo, uhi, s0 - target, float(ds[k + 1]) - target)
-            tau, dss, v, err = b.at(u)
+            tau, dss, v, (et, es) = b.at(u)
             t = p.t1 + tau
             if not ans.beyond_t_max(i, t):
-                ans.reached(i, t, p.s1 + dss, v, err=err)
+                ans.reached(i, t, p.s1 + dss, v, err=max(et + (es / abs(v) if v else 0.0), es))
             return
         last_s = float(ds[-1])
         if b.kind == "zero" and b.v_end != 0 and (target - last_s) * b.v_end > 0:
