@@ -35,11 +35,11 @@ class NonFinite(Exception):
         self.task = int(task)
 
 
-def integrate(f, lo, width, rtol: float = 1e-12, atol: float = 0.0, max_rounds: int = 60):
+def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60):
     """Integrals of ``f`` over ``[lo_j, lo_j + width_j]``.
 
-    Returns ``(values, errors, converged)`` arrays.  ``atol`` is an absolute
-    tolerance per task; a subinterval is accepted when its error estimate is
+    Returns ``(values, errors, converged)`` arrays.  ``rtol`` and ``atol``
+    (absolute) may be scalars or one per task; a subinterval is accepted when its error estimate is
     below ``rtol`` times the integral of |f| over it, or below its share of
     ``atol``.  Raises :class:`NonFinite` when ``f`` is not finite somewhere."""
     lo = np.atleast_1d(np.asarray(lo, dtype=float))
@@ -51,6 +51,8 @@ def integrate(f, lo, width, rtol: float = 1e-12, atol: float = 0.0, max_rounds: 
     if m == 0:
         return vals, errs, conv
     W = np.where(width == 0, 1.0, np.abs(width))
+    atol = np.broadcast_to(np.asarray(atol, dtype=float), lo.shape)
+    rtol = np.broadcast_to(np.asarray(rtol, dtype=float), lo.shape)
     a = lo.copy()
     off = np.zeros(m)          # offset of the subinterval start from lo (exact-ish)
     h = width.copy()
@@ -74,13 +76,14 @@ def integrate(f, lo, width, rtol: float = 1e-12, atol: float = 0.0, max_rounds: 
         absint = np.abs(half) * (np.abs(fx[:, :20]) @ _W20)
         e = np.abs(g20 - g10)
         e = np.maximum(e, 50 * _EPS * absint)
-        share = atol * np.abs(h) / W[task]
-        ok = (e <= np.maximum(rtol * absint, share))
+        share = atol[task] * np.abs(h) / W[task]
+        rt = rtol[task]
+        ok = (e <= np.maximum(rt * absint, share))
         # cannot bisect further: accept (flag non-convergence if the error is large)
         tiny = np.abs(h) <= 64 * _EPS * np.maximum(np.abs(a + off), np.abs(a + off + h)) + 1e-300
         last = rnd == max_rounds or task.size > 20000
         acc = ok | tiny | last
-        loose = e <= 100 * np.maximum(rtol * absint, share)
+        loose = e <= 100 * np.maximum(rt * absint, share)
         if (~loose & acc).any():
             conv[task[~loose & acc]] = False
         np.add.at(vals, task[acc], g20[acc])

@@ -128,7 +128,13 @@ class Branch:
         uhi = np.atleast_1d(uhi)
         lo = np.repeat(ulo, 2)
         w = np.repeat(uhi - ulo, 2)
-        vals, errs, conv = integrate(self._f, lo, w, self.c3.qr, 0.0)
+        rtol = np.full(lo.shape, self.c3.qr)
+        if self.kind != "inf":
+            # relative rounding noise of a near v* is ~ eps |v*| / |v* - v|; integrating
+            # to that level moves the state by ~ eps |v*| only (see module docstring)
+            d = abs(self.D0) * np.exp(-np.maximum(lo, lo + w))
+            rtol = np.maximum(rtol, 64 * _EPS * max(abs(self.v_end), abs(self.D0)) / np.maximum(d, 1e-300))
+        vals, errs, conv = integrate(self._f, lo, w, np.minimum(rtol, 0.5), 0.0)
         self.c3.check(conv)
         return vals[0::2], vals[1::2], errs[0::2], errs[1::2]
 
@@ -340,6 +346,13 @@ class _Case3:
         target = S - p.s1
         ds = b.ds
         tol = self.rtol * max(abs(S), float(np.max(np.abs(ds))) + abs(p.s1)) + self.atol
+        if b.kind == "zero" and b.finite_time and b.v_end == 0 and abs(target - ds[-1]) <= tol:
+            # the body stops in finite time exactly at the target (s is monotone
+            # on the way: v keeps its sign until it reaches 0)
+            t = p.t1 + b.T_end
+            if not ans.beyond_t_max(i, t):
+                ans.reached(i, t, S, 0.0)
+            return
         for k in range(len(ds) - 1):
             lo, hi = min(ds[k], ds[k + 1]), max(ds[k], ds[k + 1])
             if not (lo - tol <= target <= hi + tol):

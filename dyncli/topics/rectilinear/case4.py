@@ -85,9 +85,20 @@ class Energy:
             idx = np.where(same & (np.abs(off) <= np.minimum(left, right) * (1 + 1e-9)), jb, idx)
         R = self.R[idx]
         width = np.where(R == base, off, (base - R) + off)
-        vals, errs, conv = integrate(lambda x, j: self.c4.A(x), R.ravel(), width.ravel(), self.c4.qr, 0.0)
+        # absolute floor: the rounding noise of a itself (eps |a|max per unit length)
+        w = width.ravel()
+        vals, errs, conv = integrate(lambda x, j: self.c4.A(x), R.ravel(), w, self.c4.qr,
+                                     64 * _EPS * self.c4.amax * np.abs(w))
         self.c4.check(conv)
         return self.V2[idx] + 2.0 * vals.reshape(s.shape)
+
+
+    # used only when a vectorised call met a non-finite a
+    def v2_safe(self, b: float, o: float) -> float:
+        try:
+            return float(self.v2(b, o))
+        except NonFinite:
+            return math.nan
 
 
 class Leg:
@@ -127,7 +138,7 @@ class Leg:
             u = self.X2 - x
             return self.B, -e * u * u, 2.0 * u
         if self.k2 == "lin":
-            return self.M, e * x, np.ones_like(x)
+            return self.B, -e * (self.X2 - x), np.ones_like(x)
         if self.k2 == "exp":
             L2 = abs(self.B - self.M)
             d = L2 * np.exp(-x)
@@ -137,13 +148,29 @@ class Leg:
 
     def _dtdx(self, part: int, x):
         base, off, dsdx = self._map(part, x)
-        v2 = self.c4.energy.v2(base, off)
+        try:
+            v2 = self.c4.energy.v2(base, off)
+        except NonFinite:
+            # report the failure at this level (x), not at the inner abscissa
+            v2 = np.array([self.c4.energy.v2_safe(b, o) for b, o in zip(np.ravel(base + 0 * off), np.ravel(off))])
         return dsdx / np.sqrt(np.maximum(v2, 0.0))
 
     def _integ(self, part: int, lo, hi):
         lo = np.atleast_1d(np.asarray(lo, dtype=float))
         hi = np.atleast_1d(np.asarray(hi, dtype=float))
-        vals, errs, conv = integrate(lambda x, j: self._dtdx(part, x), lo, hi - lo, self.c4.qr, 0.0)
+        vals = np.zeros(lo.shape)
+        errs = np.zeros(lo.shape)
+        # next to an asymptotic equilibrium v^2 ~ (s_E - s)^2 drowns in the rounding
+        # of a; there dt/dx is integrated loosely: an error in t there moves the
+        # state by |v| dt, which is ~ (s_E - s) — negligible
+        rtol = np.full(lo.shape, self.c4.qr)
+        if part == 2 and self.k2 == "exp":
+            # relative rounding noise of a at distance d from s_E is ~ eps |s_E| / d;
+            # integrating dt/dx only to that level moves the state by about
+            # |v| dt ~ eps |s_E| per cell — negligible
+            d = abs(self.B - self.M) * np.exp(-np.maximum(lo, hi))
+            rtol = np.maximum(rtol, 64 * _EPS * max(abs(self.B), abs(self.M)) / np.maximum(d, 1e-300))
+        vals, errs, conv = integrate(lambda x, j: self._dtdx(part, x), lo, hi - lo, np.minimum(rtol, 0.5), 0.0)
         self.c4.check(conv)
         return vals, errs
 
@@ -199,7 +226,7 @@ class Leg:
             if self.k2 == "sqrt":
                 x = self.X2 - math.sqrt(abs(self.B - s))
             elif self.k2 == "lin":
-                x = abs(s - self.M)
+                x = self.X2 - abs(self.B - s)
             elif self.k2 == "exp":
                 r = abs(self.B - s)
                 if r == 0:
@@ -268,6 +295,7 @@ class _Case4:
             cands.append(p.v1 * p.v1 / abs(self.a_s1))
         cands = [c for c in cands if math.isfinite(c) and c > 0]
         self.scale = max(cands) if cands else 1.0
+        self.amax = max(abs(self.a_s1), 1e-300)
         self.energy = Energy(self)
         self.scans: dict[int, dict] = {}
 
@@ -314,6 +342,9 @@ class _Case4:
                 ss, vals, end = self._cut_singular(ss, vals, k)
         v2 = v2start + 2.0 * np.concatenate([[0.0], np.cumsum(vals)])
         av = self.A(ss)
+        fin = np.isfinite(av)
+        if fin.any():
+            self.amax = max(self.amax, float(np.max(np.abs(av[fin][:len(av) // 2 + 1]))))
         scale2 = max(float(np.max(np.abs(v2))), v2start, 1e-300)
         tolsep = 1e-12 * scale2
         n = len(ss)
@@ -359,10 +390,12 @@ class _Case4:
             end = End("inf", e * math.inf)
         self.scans[e] = {"s": ss, "v2": v2, "a": av}
         # scan nodes where v^2 is well above its rounding error become references too
-        good = v2 >= 1e-3 * scale2
+        # (v^2 at a node carries the rounding of every cell before it)
+        cumabs = v2start + 2.0 * np.concatenate([[0.0], np.cumsum(np.abs(np.diff(v2) / 2.0))])
+        good = v2 >= 1e5 * _EPS * cumabs
         good[0] = False
-        if end.kind in ("turn", "asym") and good.size:
-            good[-1] = False
+        if end.kind != "inf" and good.size:
+            good[-1] = False        # turning point (added exactly below) or singular cut
         self.energy.add(ss[good], v2[good])
         if end.kind in ("turn", "asym"):
             self.energy.add(end.pos, 0.0)
@@ -428,21 +461,24 @@ class _Case4:
         return True
 
     def _walk(self, legs, tau: float):
-        """State at local time tau >= 0 along the legs: (s, v, None) or (None, None, reason)."""
+        """State at local time tau >= 0 along the legs: (s, v, None, None) or
+        (None, None, end, time from t1 at which the motion ends)."""
+        total = 0.0
         for leg, rev, sign in legs:
             d = leg.duration
             if tau <= d:
                 local = d - tau if rev else tau
                 if not rev and tau > leg.reach:
                     if leg.end.kind == "asym":
-                        return leg.B, 0.0, None
+                        return leg.B, 0.0, None, None
+                    total += leg.reach
                     break
                 s, av, err = leg.state_at(local)
                 self.last_err = err
-                return s, sign * av, None
+                return s, sign * av, None, None
             tau -= d
-        last = legs[-1][0]
-        return None, None, last.end
+            total += d
+        return None, None, legs[-1][0].end, total
 
     def state(self, T: float):
         self.last_err = 0.0
@@ -457,18 +493,21 @@ class _Case4:
             return self._walk(self.fwd, tau)
         return self._walk(self.bwd, -tau)
 
-    def _reason_end(self, end: End, when: str) -> str:
+    def _reason_end(self, end: End, t_end: float, forward: bool) -> str:
+        when = "after" if forward else "before"
+        at = f"at t ≈ {_fmt(t_end)}"
         if end.kind == "inf":
-            return f"|s| exceeds {_BIG:g} (escape to infinity in finite time) {when} that time"
+            return f"|s| exceeds {_BIG:g} (escape to infinity in finite time) {at}; nothing is defined {when} that"
         if end.kind == "sing":
-            return f"a is singular at s ≈ {_fmt(end.pos)}, reached {when} that time; the motion is not defined beyond"
+            return f"the body reaches s ≈ {_fmt(end.pos)}, where a is singular, {at}; the motion is not defined {when} that"
         return end.describe()
 
     # -- queries ------------------------------------------------------------------
     def t_query(self, i: int, T: float) -> None:
-        s, v, end = self.state(T)
+        s, v, end, t_end = self.state(T)
+        forward = T >= self.p.t1
         if s is None:
-            self.ans.unreached(i, self._reason_end(end, "before" if T >= self.p.t1 else "after"))
+            self.ans.unreached(i, self._reason_end(end, self.p.t1 + (t_end if forward else -t_end), forward))
             return
         err = self.last_err * max(abs(v), abs(self.a1(s)))
         self.ans.reached(i, T, s, v, err=err)
@@ -497,7 +536,7 @@ class _Case4:
                 t = p.t1 + self._time_on(k, S)
                 err = self.last_err
                 if not ans.beyond_t_max(i, t):
-                    s, v, _ = self.state(t)
+                    s, v, _, _ = self.state(t)
                     ans.reached(i, t, S, v if s is not None else 0.0, err=err)
                 return
         ends = [self.endF] + ([self.endB] if self.endF.kind == "turn" else [])
@@ -530,13 +569,14 @@ class _Case4:
                 if not ans.beyond_t_max(i, t):
                     ans.reached(i, t, hit, V, err=self.last_err)
                 return
-        vmax = max(float(np.max(np.abs(self.scans[1]["v2"]))) if 1 in self.scans else 0.0,
-                   float(np.max(np.abs(self.scans[-1]["v2"]))) if -1 in self.scans else 0.0)
+        v2s = np.concatenate([self.scans[leg.e]["v2"] for leg, _, _ in self.fwd])
+        lo, hi = math.sqrt(max(float(v2s.min()), 0.0)), math.sqrt(max(float(v2s.max()), 0.0))
         if V == 0:
             ans.unreached(i, "the body never stops: " + "; ".join(e.describe() for e in (self.endF, self.endB)))
         else:
-            ans.unreached(i, f"the speed never attains |v| = {_fmt(abs(V))} in the direction of V "
-                             f"(|v| ≤ {_fmt(math.sqrt(vmax))} on the scanned path)")
+            ans.unreached(i, f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]"
+                             + ("" if lo <= abs(V) <= hi else "") + " with the sign of V on no stretch reaching it"
+                             if lo <= abs(V) <= hi else f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]")
 
     def _first_on_cells(self, ss, v2, av, V2: float, rev: bool):
         """First position (in travel order) with v^2 = V2 on the scanned cells."""
