@@ -532,8 +532,11 @@ class _Case4:
             inside = lo <= S <= hi
             if leg.end.kind in ("asym", "inf") and S == leg.B:
                 inside = False
+            s_at = S
+            if leg.end.kind == "turn" and abs(S - leg.B) <= self.rtol * max(abs(S), abs(leg.B - leg.A)) + self.atol:
+                inside, s_at = True, leg.B       # the target is the turning point (grazing)
             if inside:
-                t = p.t1 + self._time_on(k, S)
+                t = p.t1 + self._time_on(k, s_at)
                 err = self.last_err
                 if not ans.beyond_t_max(i, t):
                     s, v, _, _ = self.state(t)
