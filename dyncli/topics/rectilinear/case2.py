@@ -170,9 +170,9 @@ class _Case2:
         vB = vc + np.concatenate([[0.0], np.cumsum(vals)])
         # v queries (interior breakpoints are extrema of v)
         for i, V in list(vq.items()):
-            tol = self.rtol * max(abs(V), float(np.max(np.abs(vB)))) + self.atol
             for k in range(len(Bv) - 1):
                 lo, hi = min(vB[k], vB[k + 1]), max(vB[k], vB[k + 1])
+                tol = self.rtol * max(abs(V), abs(lo), abs(hi)) + self.atol
                 tb, vb = float(Bv[k]), float(vB[k])
                 ext = k + 1 < len(Bv) - 1
                 if ext and abs(V - vB[k + 1]) <= tol:
@@ -212,9 +212,9 @@ class _Case2:
         sB = sc + np.concatenate([[0.0], np.cumsum(vs[:-1] * h + vals2)])
         # s queries (interior breakpoints are turning points)
         for i, S in list(sq.items()):
-            tol = self.rtol * max(abs(S), float(np.max(np.abs(sB)))) + self.atol
             for k in range(len(Bs) - 1):
                 lo, hi = min(sB[k], sB[k + 1]), max(sB[k], sB[k + 1])
+                tol = self.rtol * max(abs(S), abs(lo), abs(hi)) + self.atol
                 tb, sb_, vb = float(Bs[k]), float(sB[k]), float(vs[k])
                 ext = k + 1 < len(Bs) - 1
                 if ext and abs(S - sB[k + 1]) <= tol:

@@ -345,7 +345,8 @@ class _Case3:
         b = self.branch(d)
         target = S - p.s1
         ds = b.ds
-        tol = self.rtol * max(abs(S), float(np.max(np.abs(ds))) + abs(p.s1)) + self.atol
+        tol_of = lambda x: self.rtol * max(abs(S), abs(p.s1 + x)) + self.atol
+        tol = tol_of(float(ds[-1]))
         if b.kind == "zero" and b.finite_time and b.v_end == 0 and abs(target - ds[-1]) <= tol:
             # the body stops in finite time exactly at the target (s is monotone
             # on the way: v keeps its sign until it reaches 0)
@@ -355,6 +356,7 @@ class _Case3:
             return
         for k in range(len(ds) - 1):
             lo, hi = min(ds[k], ds[k + 1]), max(ds[k], ds[k + 1])
+            tol = max(tol_of(lo), tol_of(hi))
             if not (lo - tol <= target <= hi + tol):
                 continue
             ulo, uhi = float(b.u[k]), float(b.u[k + 1])

@@ -345,20 +345,22 @@ class _Case4:
         fin = np.isfinite(av)
         if fin.any():
             self.amax = max(self.amax, float(np.max(np.abs(av[fin][:len(av) // 2 + 1]))))
-        scale2 = max(float(np.max(np.abs(v2))), v2start, 1e-300)
-        tolsep = 1e-12 * scale2
+        # rounding carried by v^2 at each node: eps times the sum of |cell integrals| so far
+        cumabs = np.maximum(v2start + 2.0 * np.concatenate([[0.0], np.cumsum(np.abs(vals))]), 1e-300)
+        tolsep_k = 1e4 * _EPS * cumabs
         n = len(ss)
         # first cell where v^2 becomes <= 0, and cells where v^2 has a small interior minimum
         neg = np.nonzero(v2[1:] <= 0)[0]
         first_neg = int(neg[0]) if neg.size else n
         dips = np.nonzero((av[:-1] * e < 0) & (av[1:] * e > 0)
-                          & (np.minimum(v2[:-1], v2[1:]) < 1e-2 * scale2))[0]
+                          & (np.minimum(v2[:-1], v2[1:]) < 1e-2 * cumabs[1:]))[0]
         found = None
         for k in sorted(set([first_neg] + [int(d) for d in dips if d < first_neg])):
             if k >= n - 1:
                 break
             lo, hi = float(ss[k]), float(ss[k + 1])
             v2lo = float(v2[k])
+            tolsep = float(tolsep_k[k + 1])
 
             def E(s, lo=lo, v2lo=v2lo):
                 return v2lo + 2.0 * float(integrate(lambda x, j: self.A(x), [lo], [s - lo], self.qr, 0.0)[0][0])
@@ -391,7 +393,7 @@ class _Case4:
         self.scans[e] = {"s": ss, "v2": v2, "a": av}
         # scan nodes where v^2 is well above its rounding error become references too
         # (v^2 at a node carries the rounding of every cell before it)
-        cumabs = v2start + 2.0 * np.concatenate([[0.0], np.cumsum(np.abs(np.diff(v2) / 2.0))])
+        cumabs = cumabs[:len(v2)]
         good = v2 >= 1e5 * _EPS * cumabs
         good[0] = False
         if end.kind != "inf" and good.size:
@@ -584,7 +586,6 @@ class _Case4:
     def _first_on_cells(self, ss, v2, av, V2: float, rev: bool):
         """First position (in travel order) with v^2 = V2 on the scanned cells."""
         n = len(ss)
-        tol = self.rtol * max(V2, float(np.max(np.abs(v2)))) + self.atol * math.sqrt(max(V2, 1e-300))
         cells = range(n - 1)
         if rev:
             cells = reversed(range(n - 1))
@@ -592,6 +593,7 @@ class _Case4:
             a_, b_ = (k, k + 1) if not rev else (k + 1, k)
             s_a, s_b = float(ss[a_]), float(ss[b_])
             w_a, w_b = float(v2[a_]), float(v2[b_])
+            tol = self.rtol * max(V2, abs(w_a), abs(w_b)) + self.atol * math.sqrt(max(V2, 1e-300))
             pieces = [(s_a, w_a, s_b, w_b)]
             if av[k] * av[k + 1] < 0:   # an extremum of v^2 inside the cell
                 sm = brentq(self.a1, float(ss[k]), float(ss[k + 1]), float(av[k]), float(av[k + 1]))
