@@ -1,4 +1,4 @@
-"""Rectilinear motion (notes §6) — numeric core (no pydantic).
+"""Rectilinear motion (notes §6) — numeric core (pure functions, no input-model imports).
 
 The case follows from the variables the acceleration ``a`` uses:
 
@@ -27,7 +27,7 @@ from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 
 SYMBOLS = {"case": "case"}
-UNITS = {"t": "s", "s": "m", "v": "m/s", "a": "m/s²"}
+UNITS = {"t": "s", "s": "m", "v": "m/s", "a": "m/s²", "period": "s"}
 ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 EQUATIONS = {
     1: ["6.5a", "6.5b"],
