@@ -565,9 +565,6 @@ class _Case4:
                 continue
             sc = self.scans[leg.e]
             ss, v2, av = sc["s"], sc["v2"], sc["a"]
-            order = range(len(ss) - 1)
-            if rev:
-                order = reversed(order)
             hit = self._first_on_cells(ss, v2, av, V2, rev)
             if hit is not None:
                 t = p.t1 + self._time_on(k, hit)
@@ -579,9 +576,10 @@ class _Case4:
         if V == 0:
             ans.unreached(i, "the body never stops: " + "; ".join(e.describe() for e in (self.endF, self.endB)))
         else:
-            ans.unreached(i, f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]"
-                             + ("" if lo <= abs(V) <= hi else "") + " with the sign of V on no stretch reaching it"
-                             if lo <= abs(V) <= hi else f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]")
+            where = f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]"
+            if lo <= abs(V) <= hi:
+                where += ", but never with this sign"
+            ans.unreached(i, where)
 
     def _first_on_cells(self, ss, v2, av, V2: float, rev: bool):
         """First position (in travel order) with v^2 = V2 on the scanned cells."""
