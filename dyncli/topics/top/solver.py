@@ -256,11 +256,11 @@ class _Tracker:
                 return self._seg(tm, angm, psi_m, phi_m, tb, angb, dense, depth + 1)
         _, _, cb, ab, bb = angb
         if sb < S_TINY:
-            psi_b = psi_a              # ψ undefined at the pole: keep it, φ carries ψ + φ
+            psi_b = psi_a              # ψ undefined at the pole: keep it, φ carries ψ ± φ
             if ell > 0 and sa >= S_TINY:
                 self.ambiguous.append(tb)
         else:
-            if not (ell < 0.25 * smin):
+            if not (ell < 0.25 * smin) and sa >= S_TINY:
                 self.ambiguous.append(tb)
             psi_b = psi_a + _wrap(ab + bb - psi_a)
         pred = phi_a + self.W3 * (tb - ta) - (psi_b - psi_a) * 0.5 * (anga[2] + cb)
@@ -479,7 +479,7 @@ def solve(p, options=None) -> Result:
         th0, psi0, phi0, th_dot0 = -th0, psi0 + math.pi, phi0 + math.pi, -th_dot0
     if th0 != p.theta:
         res.warn(f"theta = {p.theta:.6g} rad is outside [0, π]: the same orientation is "
-                 f"(ψ, θ, φ) = ({psi0:.6g}, {th0:.6g}, {phi0:.6g}) rad (θ̇ = {th_dot0:.6g} rad/s), used from t = 0")
+                 f"(ψ, θ, φ) = ({psi0:.6g}, {th0:.6g}, {phi0:.6g}) rad (θ̇ = {th_dot0 + 0.0:.6g} rad/s), used from t = 0")
     y0 = np.concatenate([quat_from_euler(psi0, th0, phi0),
                          body_omega(th0, phi0, psd0, th_dot0, p.phi_dot)])
     W3 = float(y0[6])
@@ -551,10 +551,18 @@ def solve(p, options=None) -> Result:
         res.error_estimate = 0.0
 
     # --- warnings about the poles
-    if th_min < POLE_WARN or run.ambiguous and min(th_min, math.pi - th_max) < POLE_WARN:
-        if th_min < POLE_WARN:
-            res.warn(_pole_warning("θ = 0", th_min, "ψ + φ"))
-    if math.pi - th_max < POLE_WARN:
+    sleeping = th_max == 0.0 or th_min == math.pi
+    if sleeping:
+        up = th_max == 0.0
+        res.warn(f"a sleeping top (θ = {'0' if up else 'π'} throughout): ψ and φ are individually undefined; "
+                 f"ψ is held at its initial value and φ carries {'ψ + φ' if up else 'φ − ψ'}")
+        if up and top.mgL > 0 and (C * W3) ** 2 < 4.0 * A * top.mgL:
+            res.warn(f"this sleeping top is unstable: I33²ω3² = {(C * W3) ** 2:.6g} < 4 I11 mgL = "
+                     f"{4 * A * top.mgL:.6g} (kg·m²/s)²; the slightest disturbance makes it fall "
+                     "(the computed motion stays upright only because the input is exactly vertical)")
+    elif th_min < POLE_WARN:
+        res.warn(_pole_warning("θ = 0", th_min, "ψ + φ"))
+    if not sleeping and math.pi - th_max < POLE_WARN:
         res.warn(_pole_warning("θ = π", math.pi - th_max, "ψ − φ"))
     if run.ambiguous:
         res.warn(f"the axis passes through the vertical (sinθ < {S_TINY:g}) at t ≈ {run.ambiguous[0]:.6g} s"
@@ -581,6 +589,7 @@ def solve(p, options=None) -> Result:
 
 
 def _pole_warning(where, dist, combo):
-    return (f"the axis comes within {dist:.3g} rad of the vertical ({where}): near there ψ and φ are "
+    near = "reaches" if dist == 0 else f"comes within {dist:.3g} rad of"
+    return (f"the axis {near} the vertical ({where}): near there ψ and φ are "
             f"individually ill-conditioned (only {combo} is well defined; ψ swings by about π quickly) — "
             "they are reported continuously, with an absolute accuracy of roughly 1e-16/sinθ rad")
