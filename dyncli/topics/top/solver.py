@@ -133,35 +133,42 @@ class Top:
         """Move y onto E = E0, H·e3 = H0, ω3 = W3, |q| = 1 (minimum-norm
         Gauss-Newton in (√I11 w1, √I11 w2, S δ), δ a small body rotation)."""
         A, C, mgL = self.A, self.C, self.mgL
-        y = np.array(y, dtype=float)
-        y[:4] /= math.sqrt(float(y[:4] @ y[:4]))
-        y[6] = W3
+        q0, q1, q2, q3, w1, w2, w3 = (float(v) for v in y)
+        n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+        q0, q1, q2, q3 = q0 / n, q1 / n, q2 / n, q3 / n
+        w3 = W3
         rA = math.sqrt(A)
         for _ in range(2):
-            q = y[:4]
-            w1, w2, w3 = y[4:7]
-            g1, g2, g3 = gamma(q)
+            g1, g2, g3 = gamma((q0, q1, q2, q3))
             c1 = 0.5 * (A * (w1 * w1 + w2 * w2) + C * w3 * w3) + mgL * g3 - E0
             c2 = A * (w1 * g1 + w2 * g2) + C * w3 * g3 - H0
-            h = (A * w1, A * w2, C * w3)
-            hxg = (h[1] * g3 - h[2] * g2, h[2] * g1 - h[0] * g3, h[0] * g2 - h[1] * g1)
-            J = np.array([[A * w1 / rA, A * w2 / rA, -mgL * g2 / S, mgL * g1 / S, 0.0],
-                          [A * g1 / rA, A * g2 / rA, hxg[0] / S, hxg[1] / S, hxg[2] / S]])
-            dz = np.linalg.lstsq(J, -np.array([c1, c2]), rcond=1e-10)[0]
-            if not np.all(np.isfinite(dz)):
+            h0, h1, h2 = A * w1, A * w2, C * w3
+            # rows of the Jacobian in the scaled variables
+            J1 = (h0 / rA, h1 / rA, -mgL * g2 / S, mgL * g1 / S, 0.0)
+            J2 = (A * g1 / rA, A * g2 / rA, (h1 * g3 - h2 * g2) / S, (h2 * g1 - h0 * g3) / S, (h0 * g2 - h1 * g1) / S)
+            a = sum(x * x for x in J1)
+            b = sum(x * z for x, z in zip(J1, J2))
+            d = sum(x * x for x in J2)
+            det = a * d - b * b
+            if det > 1e-12 * a * d and det > 0:
+                l1 = (d * c1 - b * c2) / det
+                l2 = (a * c2 - b * c1) / det
+            elif a >= d and a > 0:      # (nearly) one constraint direction: use the larger row
+                l1, l2 = c1 / a, 0.0
+            elif d > 0:
+                l1, l2 = 0.0, c2 / d
+            else:
                 break
-            y[4] += dz[0] / rA
-            y[5] += dz[1] / rA
-            d = dz[2:] / S
+            dz = [-(l1 * x + l2 * z) for x, z in zip(J1, J2)]
+            w1 += dz[0] / rA
+            w2 += dz[1] / rA
+            d1, d2, d3 = 0.5 * dz[2] / S, 0.5 * dz[3] / S, 0.5 * dz[4] / S
             # q <- q ⊗ (1, δ/2), renormalised
-            q0, q1, q2, q3 = q
-            d1, d2, d3 = 0.5 * d
-            qn = np.array([q0 - q1 * d1 - q2 * d2 - q3 * d3,
-                           q1 + q0 * d1 + q2 * d3 - q3 * d2,
-                           q2 + q0 * d2 + q3 * d1 - q1 * d3,
-                           q3 + q0 * d3 + q1 * d2 - q2 * d1])
-            y[:4] = qn / math.sqrt(float(qn @ qn))
-        return y
+            q0, q1, q2, q3 = (q0 - q1 * d1 - q2 * d2 - q3 * d3, q1 + q0 * d1 + q2 * d3 - q3 * d2,
+                              q2 + q0 * d2 + q3 * d1 - q1 * d3, q3 + q0 * d3 + q1 * d2 - q2 * d1)
+            n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+            q0, q1, q2, q3 = q0 / n, q1 / n, q2 / n, q3 / n
+        return np.array([q0, q1, q2, q3, w1, w2, w3])
 
 
 # ---------------------------------------------------------------------------
