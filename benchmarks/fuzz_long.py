@@ -61,6 +61,7 @@ def main() -> int:
     ap.add_argument("--seconds", type=float, default=180.0, help="time budget (default 180)")
     ap.add_argument("--start", type=int, default=0, help="first seed")
     ap.add_argument("--replay", type=int, default=None, help="print and run the document of one seed")
+    ap.add_argument("--hang", type=float, default=20.0, help="wall seconds after which a document counts as hung")
     args = ap.parse_args()
     warnings.simplefilter("ignore")
     types = [t for t in available_types()]
@@ -79,10 +80,20 @@ def main() -> int:
     t_end = time.time() + args.seconds
     seed = args.start
     n = 0
+    import signal
+
+    def _alarm(signum, frame):
+        raise TimeoutError(f"document took more than {args.hang} s (wall)")
+
+    signal.signal(signal.SIGALRM, _alarm)
     while time.time() < t_end:
         t, mode, text = document(seed, types, seeds)
         try:
-            rep = run_document(text)
+            signal.setitimer(signal.ITIMER_REAL, args.hang)
+            try:
+                rep = run_document(text)
+            finally:
+                signal.setitimer(signal.ITIMER_REAL, 0)
             rep.check()
             for c in rep.codes:
                 counts[t][c] += 1
@@ -91,7 +102,9 @@ def main() -> int:
         except Exception as exc:  # noqa: BLE001 - every failure is reported
             counts[t]["FAIL"] += 1
             key = (type(exc).__name__, str(exc).splitlines()[0][:160] if str(exc) else "")
-            failures.setdefault(key, (seed, t, mode, traceback.format_exc(limit=-4)))
+            if key not in failures:
+                failures[key] = (seed, t, mode, traceback.format_exc(limit=-4))
+                print(f"failure at seed {seed} ({t}, {mode}): {key[0]}: {key[1]}", flush=True)
         seed += 1
         n += 1
     print(f"{n} documents (seeds {args.start}..{seed - 1}) in {args.seconds:.0f} s; slowest {slowest[0] * 1000:.0f} ms CPU "
