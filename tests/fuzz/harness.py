@@ -22,6 +22,27 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[2]
 CORPUS = Path(__file__).resolve().parent / "corpus"
 MAX_SECONDS = 2.0
+HANG_SECONDS = 10.0       # wall clock: a document still running then is reported as a hang
+
+
+# Types whose solvers still hang or exit 3 on fuzzed input (reproductions in
+# tests/extremes/test_fuzz_findings.py, routed to their owners).  Their
+# per-type fuzz tests are skipped — a hang costs the hang limit on every
+# hypothesis shrink step — until the owner fixes them and deletes the entry.
+KNOWN_BROKEN: dict[str, str] = {
+    "particle": "hangs on non-finite or stiff custom forces (t/0, B = 5e149) and on t_end = 3e8 "
+                "(no step budget); OverflowError for R0 = 6e156",
+    "rectilinear": "the general (ODE) route hangs on a query far back in time (find t: -1e8 with a = -4 s - 0.4 v "
+                   "+ sin t: no step budget)",
+    "top": "hangs when I33 >> I11 or for extreme inertia ratios (no step budget); LinAlgError for phi_dot = 5e301",
+}
+
+
+def skip_if_broken(type_name: str) -> None:
+    import pytest
+
+    if type_name in KNOWN_BROKEN:
+        pytest.skip(f"{type_name}: known fuzz failure, see tests/extremes/test_fuzz_findings.py: {KNOWN_BROKEN[type_name]}")
 
 
 # --------------------------------------------------------------------------
@@ -104,8 +125,32 @@ class Report:
         assert self.seconds <= MAX_SECONDS, f"took {self.seconds:.2f} s of CPU (limit {MAX_SECONDS}){where}"
 
 
-def run_document(data: bytes | str, name: str = "fuzz.yaml", render: bool = True) -> Report:
-    """Load, validate, solve and render ``data`` in-process as the CLI would."""
+class Hang(BaseException):
+    """Raised by the alarm (a BaseException, so solve_one does not map it to exit 3)."""
+
+
+def _alarm(signum, frame):
+    raise Hang("document still running after the hang limit")
+
+
+def run_document(data: bytes | str, name: str = "fuzz.yaml", render: bool = True,
+                 hang: float = HANG_SECONDS) -> Report:
+    """Load, validate, solve and render ``data`` in-process as the CLI would.
+    A document that runs longer than HANG_SECONDS (wall) raises AssertionError."""
+    import signal
+
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, hang)
+    try:
+        return _run_document(data, name, render)
+    except Hang as exc:
+        raise AssertionError(f"{exc} ({hang} s)\n--- document ---\n{data[:3000]!r}") from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _run_document(data: bytes | str, name: str, render: bool) -> Report:
     from dyncli.loader import split_problems, validate
     from dyncli.run import outcome_record, solve_one
 

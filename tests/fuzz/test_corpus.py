@@ -11,7 +11,7 @@ import random
 
 import pytest
 
-from tests.fuzz.harness import CORPUS, available_types, dump_yaml, run_document, seeds_by_type
+from tests.fuzz.harness import CORPUS, available_types, dump_yaml, run_document, seeds_by_type, skip_if_broken
 from tests.fuzz.test_expressions import hostile_expressions
 
 DOCS = sorted(p for p in CORPUS.iterdir() if p.suffix in (".yaml", ".bin"))
@@ -39,6 +39,7 @@ def test_hostile_expressions_in_every_type(type_name):
     """Each hostile expression replaces one leaf of the type's first example."""
     import copy
 
+    skip_if_broken(type_name)
     base = seeds_by_type()[type_name][0]
     leaves = list(_leaves(base))
     rnd = random.Random(type_name)
