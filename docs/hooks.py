@@ -203,6 +203,16 @@ def _rows(schema: dict, defs: dict, prefix: str, required: set, skip=(), depth=0
                 refs = [_ref(defs, a) for a in alts]
                 if all(refs):
                     sub = ("[]", None, [r[1] for r in refs])
+        elif p.get("type") == "object" and isinstance(p.get("additionalProperties"), dict):
+            ap = p["additionalProperties"]
+            r = _ref(defs, ap)
+            if r:
+                sub = (".NAME", r[1])
+            elif not desc.endswith(")") and ap.get("description"):
+                desc = f"{desc} ({ap['description']})" if desc else ap["description"]
+            unit = _unit(ap)
+            if unit and not _unit(p):
+                p = {**p, "x-unit": unit}
         elif "oneOf" in p or ("anyOf" in p and not _is_number(p)):
             alts = p.get("oneOf") or p.get("anyOf")
             refs = [_ref(defs, a) for a in alts]

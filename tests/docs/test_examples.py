@@ -60,6 +60,9 @@ def test_console_commands_are_dyncli():
     (["a", "...", "d"], ["a", "b", "c"], False),
     (["...", "b", "..."], ["a", "b", "c"], True),
     (["x", "..."], ["a", "b"], False),
+    (["error estimate: … equations"], ["error estimate: 3.1e-10 equations"], True),
+    (["error estimate: … equations"], ["error estimate: 3.1e-10 eqs"], False),
+    (["a…", "...", "c"], ["a1", "b", "c"], True),
 ])
 def test_matcher(expected, actual, ok):
     assert gen.matches(expected, actual) is ok
