@@ -3,8 +3,10 @@
 A command example is a ```console block: ``$ dyncli ...`` lines, each
 followed by its expected output (see ``docs/gen_examples.py``, which also
 regenerates the blocks: ``python docs/gen_examples.py``).  Each block is run
-here through ``tests.conftest.run_cli`` and compared after normalisation
-(trailing spaces, blank lines at the ends; ``...`` elides lines).
+here (in-process through typer's runner with the environment of
+``tests.conftest.run_cli``; the README's also as a real process) and compared
+after normalisation (trailing spaces, blank lines at the ends; ``...`` elides
+lines, ``…`` matches any text within a line).
 """
 
 from __future__ import annotations
@@ -31,6 +33,15 @@ def test_console_block_is_current(block):
     assert block.commands, f"{block.where}: a console block without a '$ dyncli' command"
     problems = gen.check_block(block)
     assert not problems, "\n\n".join(problems) + "\n\n(run `python docs/gen_examples.py` to regenerate)"
+
+
+def test_readme_example_in_a_real_process(monkeypatch):
+    """The blocks run in-process (fast); the README's also as a real process."""
+    monkeypatch.setenv("DYNCLI_DOCS_SUBPROCESS", "1")
+    readme = [b for b in BLOCKS if b.path.name == "README.md"]
+    assert readme
+    for b in readme:
+        assert not gen.check_block(b)
 
 
 def test_prompts_only_in_console_blocks():
