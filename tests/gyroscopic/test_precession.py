@@ -131,7 +131,9 @@ def test_inverse_zero_omega():
 @settings(max_examples=150, deadline=None)
 @given(
     I11=st.floats(1e-3, 10.0), ratio=st.floats(0.01, 1.99), theta=st.floats(0.01, 3.13),
-    logp=st.floats(-2, 8), sign=st.sampled_from([-1.0, 1.0]), L=st.floats(-1.0, 1.0), m=st.floats(0.01, 100.0),
+    logp=st.floats(-2, 8), sign=st.sampled_from([-1.0, 1.0]),
+    L=st.floats(-1.0, 1.0).filter(lambda x: x == 0 or abs(x) > 1e-250),  # no subnormal roots
+    m=st.floats(0.01, 100.0),
 )
 def test_roots_match_mpmath(I11, ratio, theta, logp, sign, L, m):
     from dyncli.topics.precession import solver

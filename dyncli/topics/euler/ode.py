@@ -69,9 +69,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
                 solver.y = yp
                 if hasattr(solver, "f"):
                     solver.f = fun(t_new, yp)
-            dense = solver.dense_output()
-            if project is not None:
-                dense = _Projected(dense, project, t_new, solver.y)
+            dense = _Lazy(solver, project, t_new)
             if on_step is not None:
                 on_step(t_old, t_new, dense, direction)
             while k < len(order) and (times[order[k]] - t_new) * direction <= 0:
@@ -83,6 +81,23 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
                     Y[i] = solver.y
                 break
     return Y, nsteps
+
+
+class _Lazy:
+    """The step's interpolant, built only when a point inside the step is asked for."""
+
+    def __init__(self, solver, project, t_end):
+        self.solver, self.project, self.t_end = solver, project, t_end
+        self.y_end = solver.y.copy()
+        self._d = None
+
+    def __call__(self, t):
+        if np.ndim(t) == 0 and t == self.t_end:
+            return self.y_end.copy()
+        if self._d is None:
+            d = self.solver.dense_output()
+            self._d = _Projected(d, self.project, self.t_end, self.y_end) if self.project is not None else d
+        return self._d(t)
 
 
 class _Projected:
