@@ -162,3 +162,70 @@ def test_coin_inertia_39_10():
     m, R, h = mp.mpf("0.01"), mp.mpf("0.012"), mp.mpf("0.002")
     I1 = m * R**2 / 2 * (mp.mpf(1) / 2 + h**2 / (6 * R**2))
     close(r["principal_moments"], sorted([I1, I1, m * R**2 / 2]))
+
+
+# --- §37 the gyroscope (37.12)-(37.17) ---------------------------------------
+def test_gyroscope_0_to_pi_37_17():
+    r = one("gyroscopic/gyroscope-0-to-pi.yaml")
+    I1, I2, p, q = mp.mpf("0.01"), mp.mpf("0.006"), mp.mpf(100), mp.mpf(1)
+    close([r["theta_min"], r["theta_max"]], [0, mp.pi], abs_=1e-12)     # (37.17)
+    # the first integral (37.15b) from rest at θ = 0:
+    #   I2 θ̇² = [(I1 − I2) q² sin θ + 2 I1 p q] sin θ
+    for th, thd in zip(r["theta"], r["theta_dot"]):
+        s = mp.sin(th)
+        assert thd**2 == pytest.approx(float(((I1 - I2) * q**2 * s + 2 * I1 * p * q) * s / I2), rel=1e-7, abs=1e-9)
+
+
+# --- §38 steady precession (38.22)-(38.27) -----------------------------------
+def _precession_reference(m, L, I11, I33, theta, p, g=mp.mpf("9.81")):
+    a, b, c = (I11 - I33) * mp.cos(theta), I33 * p, m * g * L         # a Ω² − b Ω + c = 0 (38.22)
+    roots = sorted(mp.polyroots([a, -b, c]), key=abs)
+    p_min = 2 * mp.sqrt(a * c) / I33                                   # (38.24)
+    R = []
+    for W in roots:                                                    # (38.20): R = m ā + m g e3, on e''
+        e3 = mp.matrix([0, mp.sin(theta), mp.cos(theta)])
+        Om, xb = W * e3, mp.matrix([0, 0, L])
+        abar = _cross(Om, _cross(Om, xb))
+        R.append([m * abar[i] + m * g * e3[i] for i in range(3)])
+    return roots, p_min, c / b, b / a, R
+
+
+def _cross(u, v):
+    return mp.matrix([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
+
+
+def test_precession_fast_top_38_23_27():
+    r = one("gyroscopic/precession-fast-top.yaml")
+    (slow, fast), p_min, approx_slow, approx_fast, (R_slow, R_fast) = _precession_reference(
+        mp.mpf("0.5"), mp.mpf("0.05"), mp.mpf("0.006"), mp.mpf("0.002"), mp.pi / 6, mp.mpf(200))
+    assert r["exists"] is True
+    close([r["Omega_slow"], r["Omega_fast"]], [slow, fast])
+    close(r["p_min"], p_min)
+    close([r["Omega_slow_approx"], r["Omega_fast_approx"]], [approx_slow, approx_fast])
+    close(r["R_slow"], R_slow, abs_=1e-12)
+    close(r["R_fast"], R_fast, abs_=1e-10)
+
+
+def test_precession_below_pmin_38_24():
+    r = one("gyroscopic/precession-below-pmin.yaml")
+    _, p_min, *_ = _precession_reference(mp.mpf("0.5"), mp.mpf("0.05"), mp.mpf("0.006"), mp.mpf("0.002"),
+                                         mp.pi / 6, mp.mpf(200))
+    assert 20 < p_min
+    assert r["exists"] is False
+    assert r["Omega_slow"] is None and r["Omega_fast"] is None
+
+
+# --- §39 the flipping coin (39.10)-(39.22) -----------------------------------
+def test_flipping_coin_39():
+    r = one("gyroscopic/euler-flipping-coin.yaml")
+    m, R, h = mp.mpf("0.005"), mp.mpf("0.012"), mp.mpf("0.002")
+    I1, I3 = m * R**2 / 4 + m * h**2 / 12, m * R**2 / 2               # (39.10)
+    w1, w2, w3 = mp.mpf(40), mp.mpf(0), mp.mpf(3)
+    lam = (I3 - I1) / I1 * w3                                          # (39.15)
+    close(r["lambda"], lam)
+    close(r["psi_dot"], mp.sqrt(w1**2 + w2**2 + (I3 / I1 * w3)**2))   # (39.20): |H̄|/I1
+    close(r["theta"], mp.atan2(mp.sqrt(w1**2 + w2**2), I3 / I1 * w3))  # (39.21)
+    # ω'1 + i ω'2 = (ω'01 + i ω'02) e^{iλt}, ω'3 constant (39.12)-(39.17)
+    for t, w in zip([0, mp.mpf("0.5"), 1], r["omega"]):
+        z = (w1 + 1j * w2) * mp.exp(1j * lam * t)
+        close(w, [mp.re(z), mp.im(z), w3], rel=1e-11, abs_=1e-11)
