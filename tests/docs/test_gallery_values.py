@@ -14,8 +14,15 @@ import pytest
 
 from tests.conftest import PROBLEMS, solve_path
 
-mp.mp.dps = 30
 REL = 1e-12
+
+
+@pytest.fixture(autouse=True)
+def _precision():
+    """30 digits for the references, restored afterwards (mpmath's precision is
+    global: other test modules in the same process set their own)."""
+    with mp.workdps(30):
+        yield
 
 
 def close(a, b, rel=REL, abs_=1e-13):
