@@ -12,6 +12,7 @@ from hypothesis import given, settings, strategies as st
 
 from tests.conftest import PROBLEMS, ROOT, error_of, solve_one_text, solve_path
 
+MPMATH_DPS = 50
 mp.mp.dps = 50
 
 

@@ -9,6 +9,7 @@ import math
 
 from hypothesis import assume, given, settings, strategies as st
 
+MPMATH_DPS = 50
 from tests.impact import reference as ref
 from tests.impact.util import EPS, assert_close, run_impact, vnorm
 
