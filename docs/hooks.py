@@ -1,65 +1,332 @@
-"""mkdocs hook: generate each problem type's field table from its pydantic
-model (so the docs never drift from the code), and the types index.
+"""mkdocs hooks: generate from the code what would otherwise drift.
 
-A page may contain the marker ``<!-- fields: TYPE -->``; it is replaced by a
-table of the type's fields (name, unit, default, description) built from the
-JSON Schema of the model.  ``<!-- types-index -->`` becomes the table of all
-registered types with their notes sections.
+* ``<!-- fields: TYPE -->`` in a page becomes the table of the type's input
+  fields (name, SI unit, default, description), walked from the JSON Schema
+  of its pydantic model, nested mappings and list items included.
+* ``<!-- types-index -->`` becomes the table of every registered type, with
+  its notes sections, grouped by chapter.
+* ``<!-- include: PATH -->`` (PATH relative to the repository root) becomes a
+  fenced YAML block holding that file, so an example shown in the docs is the
+  file the tests solve.
+* The "Problem types" entry of the nav is expanded into one section per
+  chapter listing every type that has a page ``docs/types/TYPE.md``.
+
+The command examples (```console blocks) are checked separately, by
+``docs/gen_examples.py`` and ``tests/docs/test_examples.py``.
 """
 
 from __future__ import annotations
 
+import json
 import re
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+
+# Chapters of the notes used to group types (nav, types index) and the gallery.
+CHAPTERS = [
+    ("Kinematics of a particle", 1, 12),
+    ("Kinematics of rigid bodies", 13, 15),
+    ("Kinetics of a particle", 16, 22),
+    ("Systems of particles and impact", 23, 28),
+    ("Rigid bodies", 29, 36),
+    ("Gyroscopes, tops and Euler's equations", 37, 39),
+]
+
+COMMON_FIELDS = ("type", "title", "params", "g", "accuracy")
 
 
 def _path() -> None:
     if str(ROOT) not in sys.path:
         sys.path.insert(0, str(ROOT))
 
-_FIELDS = re.compile(r"<!--\s*fields:\s*([\w-]+)\s*-->")
+
+def chapter_of(section: str) -> str:
+    """The chapter title for a registry section string such as "§28, §23"."""
+    nums = [int(n) for n in re.findall(r"§\s*(\d+)", section)]
+    first = min(nums) if nums else 0
+    for title, lo, hi in CHAPTERS:
+        if lo <= first <= hi:
+            return title
+    return "Other"
+
+
+def chapter_label(title: str) -> str:
+    for t, lo, hi in CHAPTERS:
+        if t == title:
+            return f"{t} (§{lo}–§{hi})"
+    return title
+
+
+def types_by_chapter() -> list[tuple[str, list[str]]]:
+    """[(chapter title, [type names in registry order])], chapters in order."""
+    _path()
+    from dyncli import registry
+
+    groups: dict[str, list[str]] = {t: [] for t, _, _ in CHAPTERS}
+    for name, info in registry.TYPES.items():
+        groups.setdefault(chapter_of(info.section), []).append(name)
+    return [(t, names) for t, names in groups.items() if names]
+
+
+def type_page(name: str) -> Path:
+    return DOCS / "types" / f"{name}.md"
+
+
+# --------------------------------------------------------------------------
+# field tables
+
+
+def _fmt_default(v) -> str:
+    if isinstance(v, bool):
+        return "`true`" if v else "`false`"
+    if isinstance(v, float):
+        return f"`{v:g}`"
+    if isinstance(v, (list, tuple)):
+        return "`" + json.dumps(_plain(v), ensure_ascii=False).replace('"', "") + "`"
+    if isinstance(v, dict):
+        return "`" + json.dumps(_plain(v), ensure_ascii=False) + "`" if v else "`{}`"
+    if isinstance(v, str):
+        return f"`{v}`"
+    return f"`{v!r}`"
+
+
+def _plain(v):
+    if isinstance(v, float) and v == int(v) and abs(v) < 1e15:
+        return int(v)
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    if isinstance(v, dict):
+        return {k: _plain(x) for k, x in v.items()}
+    return v
+
+
+def _is_number(s: dict) -> bool:
+    alts = s.get("anyOf")
+    if not alts:
+        return s.get("type") == "number"
+    types = {a.get("type") for a in alts}
+    return types <= {"number", "string"} and "number" in types
+
+
+def _unwrap(p: dict) -> tuple[dict, bool]:
+    """Strip an Optional wrapper: (merged schema, nullable)."""
+    alts = p.get("anyOf")
+    if alts and any(a.get("type") == "null" for a in alts):
+        rest = [a for a in alts if a.get("type") != "null"]
+        if len(rest) == 1:
+            merged = dict(rest[0])
+            for k in ("description", "default", "x-unit", "x-dimension"):
+                if k in p and k not in merged:
+                    merged[k] = p[k]
+            if "default" in p:
+                merged["default"] = p["default"]
+            return merged, True
+        return {**p, "anyOf": rest}, True
+    return p, False
+
+
+def _ref(defs: dict, s: dict) -> tuple[str, dict] | None:
+    r = s.get("$ref")
+    if r and r.startswith("#/$defs/"):
+        name = r.split("/")[-1]
+        return name, defs.get(name, {})
+    return None
+
+
+def _unit(s: dict) -> str:
+    u = s.get("x-unit")
+    if u:
+        return u
+    dim = s.get("x-dimension")
+    if dim:
+        _path()
+        from dyncli.units import si_unit
+
+        return si_unit(dim)
+    return ""
+
+
+def _kind(s: dict) -> str:
+    if _is_number(s):
+        return ""
+    t = s.get("type")
+    if t == "array":
+        items = s.get("items") or {}
+        if s.get("minItems") == 3 and s.get("maxItems") == 3:
+            if items.get("type") == "array":
+                return "3×3 tensor"
+            return "vector"
+        return "list"
+    if "enum" in s:
+        return "one of " + ", ".join(f"`{e}`" for e in s["enum"])
+    if "const" in s:
+        return f"`{s['const']}`"
+    if t == "boolean":
+        return "true/false"
+    if t == "integer":
+        return "integer"
+    return ""
+
+
+def _desc(text: str) -> str:
+    return " ".join(text.split()).replace("|", "\\|")
+
+
+def _rows(schema: dict, defs: dict, prefix: str, required: set, skip=(), depth=0) -> list[tuple]:
+    rows = []
+    for name, p0 in schema.get("properties", {}).items():
+        if name in skip:
+            continue
+        p, nullable = _unwrap(p0)
+        full = prefix + name
+        if name in required:
+            default = "required"
+        elif "default" in p and p["default"] is not None:
+            default = _fmt_default(p["default"])
+        else:
+            default = "—"
+        desc = p.get("description") or p0.get("description") or ""
+        kind = _kind(p)
+        sub = None
+        ref = _ref(defs, p)
+        if ref:
+            sub = ("", ref[1])
+        elif p.get("type") == "array" and isinstance(p.get("items"), dict):
+            r = _ref(defs, p["items"])
+            if r:
+                sub = ("[]", r[1])
+            elif "anyOf" in p["items"] or "oneOf" in p["items"]:
+                alts = p["items"].get("oneOf") or p["items"].get("anyOf")
+                refs = [_ref(defs, a) for a in alts]
+                if all(refs):
+                    sub = ("[]", None, [r[1] for r in refs])
+        elif p.get("type") == "object" and isinstance(p.get("additionalProperties"), dict):
+            ap = p["additionalProperties"]
+            r = _ref(defs, ap)
+            if r:
+                sub = (".NAME", r[1])
+            elif not desc.endswith(")") and ap.get("description"):
+                desc = f"{desc} ({ap['description']})" if desc else ap["description"]
+            unit = _unit(ap)
+            if unit and not _unit(p):
+                p = {**p, "x-unit": unit}
+        elif "oneOf" in p or ("anyOf" in p and not _is_number(p)):
+            alts = p.get("oneOf") or p.get("anyOf")
+            refs = [_ref(defs, a) for a in alts]
+            if refs and all(refs):
+                sub = ("", None, [r[1] for r in refs])
+        if sub and not desc:
+            target = sub[1] if sub[1] is not None else {}
+            desc = (target.get("description") or "").split("\n\n")[0]
+        if kind and kind not in ("list",) and not (kind == "true/false" and desc):
+            desc = f"{kind}: {desc}" if desc else kind
+        rows.append((full, _unit(p), default, _desc(desc)))
+        if sub and depth < 3:
+            if sub[1] is not None:
+                rows += _rows(sub[1], defs, f"{full}{sub[0]}.", set(sub[1].get("required", [])), depth=depth + 1)
+            else:
+                for variant in sub[2]:
+                    rows += _variant_rows(variant, defs, f"{full}{sub[0]}", depth + 1)
+    return rows
+
+
+def _variant_rows(variant: dict, defs: dict, prefix: str, depth: int) -> list[tuple]:
+    """Rows of one member of a tagged union: the tag value names it."""
+    props = variant.get("properties", {})
+    tag = next((k for k, v in props.items() if "const" in v or (len(v.get("enum", [])) == 1)), None)
+    label = ""
+    if tag:
+        v = props[tag]
+        label = f"{tag}={v.get('const', (v.get('enum') or [''])[0])}"
+    rows = [(f"{prefix} ({label})" if label else prefix, "", "", _desc((variant.get("description") or "").split("\n\n")[0]))]
+    rows += _rows(variant, defs, f"{prefix}.", set(variant.get("required", [])), skip=(tag,) if tag else (), depth=depth)
+    return rows
 
 
 def fields_table(type_name: str) -> str:
+    _path()
     from dyncli import registry
 
     cls = registry.model_class(type_name)
     sch = cls.model_json_schema()
-    props = sch.get("properties", {})
-    required = set(sch.get("required", []))
-    rows = ["| field | unit | default | description |", "|---|---|---|---|"]
-    for name, f in cls.model_fields.items():
-        if name in ("type",):
-            continue
-        p = props.get(name, {})
-        unit = p.get("x-unit", "")
-        if name in required:
-            default = "required"
-        else:
-            d = f.default
-            if d is None or callable(getattr(f, "default_factory", None)):
-                default = "—" if d is None and f.default_factory is None else "(see below)" if f.default_factory else "—"
-            else:
-                default = f"`{d!r}`" if not hasattr(d, "model_dump") else "(defaults)"
-        desc = (f.description or p.get("description") or "").replace("|", "\\|").replace("\n", " ")
-        rows.append(f"| `{name}` | {unit} | {default} | {desc} |")
-    return "\n".join(rows)
+    defs = sch.get("$defs", {})
+    rows = _rows(sch, defs, "", set(sch.get("required", [])), skip=COMMON_FIELDS)
+    # defaults given by factories do not appear in the schema: take them from the model
+    fields = cls.model_fields
+    out = ["| field | unit | default | description |", "|---|---|---|---|"]
+    for name, unit, default, desc in rows:
+        f = fields.get(name)
+        if f is not None and default == "—" and f.default_factory is not None:
+            try:
+                default = _fmt_default(f.default_factory())
+            except Exception:  # noqa: BLE001 - a factory that needs arguments
+                pass
+        out.append(f"| `{name}` | {unit} | {default} | {desc} |")
+    methods = getattr(cls, "accuracy_methods", ("auto",))
+    common = ("Every problem also takes `title`, `params`, `g` (gravity, default 9.81 m/s²) "
+              "and `accuracy` ([Problem files](../getting-started.md#problem-files))")
+    if tuple(methods) != ("auto",):
+        common += "; for this type `accuracy.method` is one of " + ", ".join(f"`{m}`" for m in methods)
+    return "\n".join(out) + "\n\n" + common + ".\n"
+
+
+# --------------------------------------------------------------------------
+# types index, includes, nav
 
 
 def types_index() -> str:
+    _path()
     from dyncli import registry
 
-    rows = ["| type | notes | what it solves |", "|---|---|---|"]
-    for name, info in registry.TYPES.items():
-        rows.append(f"| [`{name}`]({name}.md) | {info.section} | {info.summary} |")
-    return "\n".join(rows)
+    out = []
+    for chapter, names in types_by_chapter():
+        out += [f"### {chapter_label(chapter)}", "", "| type | notes | what it solves |", "|---|---|---|"]
+        for name in names:
+            info = registry.TYPES[name]
+            link = f"[`{name}`]({name}.md)" if type_page(name).exists() else f"`{name}` (page to come)"
+            out.append(f"| {link} | {info.section} | {info.summary} |")
+        out.append("")
+    return "\n".join(out)
+
+
+_FIELDS = re.compile(r"<!--\s*fields:\s*([\w-]+)\s*-->")
+_INCLUDE = re.compile(r"<!--\s*include:\s*(\S+)\s*-->")
+
+
+def include(path: str) -> str:
+    p = (ROOT / path).resolve()
+    if ROOT not in p.parents or not p.is_file():
+        raise FileNotFoundError(f"<!-- include: {path} -->: no such file in the repository")
+    lang = "yaml" if p.suffix in (".yaml", ".yml") else ""
+    text = p.read_text(encoding="utf-8").rstrip("\n")
+    return f"```{lang} title=\"{path}\"\n{text}\n```"
+
+
+def types_nav() -> list:
+    nav: list = [{"Overview": "types/index.md"}]
+    for chapter, names in types_by_chapter():
+        entries = [{name: f"types/{name}.md"} for name in names if type_page(name).exists()]
+        if entries:
+            nav.append({chapter: entries})
+    return nav
+
+
+def on_config(config, **kwargs):
+    nav = config.get("nav") or []
+    for item in nav:
+        if isinstance(item, dict):
+            for key, value in item.items():
+                if value == "types/index.md":
+                    item[key] = types_nav()
+    return config
 
 
 def on_page_markdown(markdown, page, config, files, **kwargs):
     _path()
     markdown = _FIELDS.sub(lambda m: fields_table(m.group(1)), markdown)
+    markdown = _INCLUDE.sub(lambda m: include(m.group(1)), markdown)
     markdown = markdown.replace("<!-- types-index -->", types_index())
     return markdown

@@ -163,8 +163,10 @@ def types():
     """List the problem types with the notes' sections."""
     from dyncli import registry
 
+    wn = max(len(n) for n in registry.TYPES)
+    ws = max(len(i.section) for i in registry.TYPES.values())
     for name, info in registry.TYPES.items():
-        print(f"{name:<17} {info.section:<10} {info.summary}")
+        print(f"{name:<{wn}}  {info.section:<{ws}}  {info.summary}")
 
 
 @app.command()

@@ -86,3 +86,27 @@ def error_of(text: str) -> str:
 @pytest.fixture
 def cli():
     return run_cli
+
+
+# Hypothesis: CI runs a fixed (derandomized) set of examples so a green or red
+# result is reproducible; local runs explore randomly.
+from hypothesis import settings as _hsettings  # noqa: E402
+
+_hsettings.register_profile("ci", derandomize=True, print_blob=True)
+if os.environ.get("CI"):
+    _hsettings.load_profile("ci")
+
+
+@pytest.fixture(autouse=True)
+def _mpmath_precision(request):
+    """Each test runs with the mpmath precision its module asks for
+    (``MPMATH_DPS = 50`` at module level; default 15), whatever other modules
+    imported in the same worker set globally."""
+    import mpmath
+
+    dps = getattr(request.module, "MPMATH_DPS", None)
+    if dps is None:
+        yield
+        return
+    with mpmath.workdps(dps):
+        yield

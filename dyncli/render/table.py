@@ -119,6 +119,7 @@ def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]
 
 def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: list[str] | None = None) -> None:
     from rich import box
+    from rich.markup import escape
     from rich.table import Table as RTable
     from rich.text import Text
 
@@ -157,7 +158,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
         if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
             deferred.append((name, val))
             continue
-        scalars.add_row(name, result.symbols.get(name, ""), fmt_value(val, digits), unit_names.get(name, ""))
+        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), escape(fmt_value(val, digits)), escape(unit_names.get(name, "")))
         n_rows += 1
     if n_rows:
         console.print(scalars)
@@ -174,18 +175,18 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
                 for k in rec:
                     if k not in keys:
                         keys.append(k)
-            t = RTable(title=result.symbols.get(name, name), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+            t = RTable(title=escape(result.symbols.get(name, name)), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
             t.add_column("#", justify="right", style="dim")
             for k in keys:
-                t.add_column(k, justify="right")
+                t.add_column(escape(str(k)), justify="right")
             for i, rec in enumerate(val):
-                t.add_row(str(i), *[fmt_value(rec.get(k), digits) for k in keys])
+                t.add_row(str(i), *[escape(fmt_value(rec.get(k), digits)) for k in keys])
         else:
-            t = RTable(title=result.symbols.get(name, name), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+            t = RTable(title=escape(result.symbols.get(name, name)), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
             t.add_column("name")
             t.add_column("value")
             for k, v in val.items():
-                t.add_row(str(k), fmt_value(v, digits))
+                t.add_row(escape(str(k)), escape(fmt_value(v, digits)))
         console.print(t)
 
     for view in result.views:
@@ -201,6 +202,7 @@ def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int,
     each table fits ``width`` (the index column repeats in each); cells never
     wrap in the middle of a number."""
     from rich import box
+    from rich.markup import escape
     from rich.table import Table as RTable
 
     idx_cells = [fmt_num(iv, digits) for iv in s.index]
@@ -209,7 +211,7 @@ def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int,
     for n in s.names:
         sym = symbols.get(n, n)
         unit = unit_names.get(n)
-        head = sym + (f" [{unit}]" if unit else "")
+        head = escape(sym + (f" [{unit}]" if unit else ""))
         vals = values.get(n)
         cells = [fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "" for i in range(len(s.index))]
         w = max([len(head)] + [len(c) for c in cells])
@@ -228,33 +230,37 @@ def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int,
     tables = []
     for gi, group in enumerate(groups):
         title = s.title if gi == 0 else (f"{s.title} (continued)" if s.title else None)
-        t = RTable(title=title, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
-        t.add_column(s.index_name, justify="right", no_wrap=True)
+        t = RTable(title=escape(title) if title else None, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+        t.add_column(escape(s.index_name), justify="right", no_wrap=True)
         for head, _, _ in group:
             t.add_column(head, justify="right", no_wrap=True)
         for i, ic in enumerate(idx_cells):
-            t.add_row(ic, *[cells[i] for _, cells, _ in group])
+            t.add_row(escape(ic), *[escape(cells[i]) for _, cells, _ in group])
         tables.append(t)
     return tables
 
 
 def render_view(view, digits: int = DEFAULT_DIGITS):
     from rich import box
+    from rich.markup import escape
     from rich.table import Table as RTable
 
+    def e(x):
+        return escape(x) if isinstance(x, str) else x
+
     if isinstance(view, FrameTable):
-        t = RTable(title=view.title, caption=view.note, box=box.SQUARE, header_style="bold", show_lines=True)
+        t = RTable(title=e(view.title), caption=e(view.note), box=box.SQUARE, header_style="bold", show_lines=True)
         t.add_column("", style="cyan")
         for b in view.basis:
-            t.add_column(b, justify="right")
+            t.add_column(e(b), justify="right")
         for label, comps in view.rows:
-            t.add_row(label, *[fmt_num(c, digits) if not isinstance(c, str) else c for c in comps])
+            t.add_row(e(label), *[e(fmt_num(c, digits) if not isinstance(c, str) else c) for c in comps])
         return t
     if isinstance(view, Table):
-        t = RTable(title=view.title, caption=view.note, box=box.SIMPLE_HEAD, header_style="bold")
+        t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")
         for c in view.columns:
-            t.add_column(c, justify="right")
+            t.add_column(e(c), justify="right")
         for row in view.rows:
-            t.add_row(*[fmt_value(c, digits) for c in row])
+            t.add_row(*[e(fmt_value(c, digits)) for c in row])
         return t
     raise TypeError(view)  # pragma: no cover

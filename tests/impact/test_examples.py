@@ -11,6 +11,7 @@ import pytest
 from mpmath import mp, mpf
 
 from tests.conftest import PROBLEMS, solve_path
+MPMATH_DPS = 50
 from tests.impact import reference as ref
 from tests.impact.util import assert_close
 

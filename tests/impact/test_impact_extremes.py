@@ -8,6 +8,7 @@ import math
 
 import pytest
 
+MPMATH_DPS = 50
 from tests.impact import reference as ref
 from tests.impact.util import EPS, assert_close, run_impact
 

@@ -9,10 +9,14 @@ import math
 
 from hypothesis import assume, given, settings, strategies as st
 
+MPMATH_DPS = 50
 from tests.impact import reference as ref
 from tests.impact.util import EPS, assert_close, run_impact, vnorm
 
-coord = st.floats(-10, 10, allow_nan=False, allow_infinity=False)
+# components below 1e-12 are snapped to 0: such values make the approach speed a
+# rounding-level number that a finite-precision reference cannot decide (grazing
+# incidence has its own tests in test_impact_extremes.py)
+coord = st.floats(-10, 10, allow_nan=False, allow_infinity=False).map(lambda x: 0.0 if abs(x) < 1e-12 else x)
 vec = st.tuples(coord, coord, coord)
 mass = st.floats(-8, 8).map(lambda x: 10.0 ** x)   # mass ratios up to 1e16
 unit01 = st.floats(0, 1)

@@ -9,6 +9,7 @@ import pytest
 
 from tests.conftest import PROBLEMS, solve_path
 
+MPMATH_DPS = 30
 mp.mp.dps = 30
 RTOL = 1e-10          # the default accuracy.rtol every answer must meet
 DIR = PROBLEMS / "rectilinear"

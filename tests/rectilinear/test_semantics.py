@@ -11,6 +11,7 @@ import pytest
 
 from tests.conftest import ROOT, solve_one_text
 
+MPMATH_DPS = 30
 mp.mp.dps = 30
 RTOL = 1e-10
 

@@ -1,0 +1,1 @@
+"""Euler's equations and the torque-free rigid body (notes §39)."""

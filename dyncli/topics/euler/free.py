@@ -1,0 +1,220 @@
+"""Exact motion of the torque-free rigid body (numpy only).
+
+* Axisymmetric body (two equal principal moments): (39.14)-(39.22).
+* Asymmetric body: Jacobi elliptic functions.  With the moments sorted so
+  that B is the intermediate one and the "polar" axis C the one about which
+  ω circulates (sign of H² − 2TB), Euler's equations are solved by
+
+      ω_A = a cn(u),  ω_B = b sn(u),  ω_C = σ c dn(u),   u = u₀ + λ t,
+
+  with a², b², c², λ², m = k² and m₁ = 1 − m formed from the differences
+  H² − 2T·I_i written as sums of the initial ω² (no cancellation), so the
+  solution stays accurate near the separatrix (spin about the intermediate
+  axis).  u₀ is never formed: sn, cn, dn at u₀ are the initial data, and the
+  addition theorems carry them to u₀ + λt.  sn, cn, dn of λt come from the
+  arithmetic-geometric mean in terms of m₁ directly (argument reduced modulo
+  4K); dn = √(m₁ + m cn²) avoids the 0/0 of the usual dn formula near u = K.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+EQUAL_TOL = 1e-13
+
+
+def agm_table(m: float, m1: float):
+    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N)."""
+    a = [1.0]
+    c = [math.sqrt(m)]
+    b = math.sqrt(m1)
+    for _ in range(60):
+        if abs(c[-1]) <= 1e-17 * a[-1]:
+            break
+        an = 0.5 * (a[-1] + b)
+        cn = 0.5 * (a[-1] - b)
+        b = math.sqrt(a[-1] * b)
+        a.append(an)
+        c.append(cn)
+    return a, c
+
+
+def ellipK(m: float, m1: float) -> float:
+    if m1 == 0.0:
+        return math.inf
+    a, _ = agm_table(m, m1)
+    return math.pi / (2.0 * a[-1])
+
+
+def ellipj(u, m: float, m1: float | None = None):
+    """sn, cn, dn of u (array) for parameter m, 0 <= m <= 1, given m1 = 1 − m exactly."""
+    u = np.asarray(u, dtype=float)
+    if m1 is None:
+        m1 = 1.0 - m
+    if m1 == 0.0:
+        sech = 1.0 / np.cosh(u)
+        return np.tanh(u), sech, sech
+    if m == 0.0:
+        return np.sin(u), np.cos(u), np.ones_like(u)
+    a, c = agm_table(m, m1)
+    N = len(a) - 1
+    K = math.pi / (2.0 * a[N])
+    four_k = 4.0 * K
+    u = u - four_k * np.round(u / four_k)
+    phi = (2.0**N) * a[N] * u
+    for i in range(N, 0, -1):
+        phi = 0.5 * (np.arcsin(np.clip(c[i] * np.sin(phi) / a[i], -1.0, 1.0)) + phi)
+    sn, cn = np.sin(phi), np.cos(phi)
+    dn = np.sqrt(m1 + m * cn * cn)
+    return sn, cn, dn
+
+
+def _parity(perm) -> int:
+    p = list(perm)
+    s = 1
+    for i in range(3):
+        for j in range(i + 1, 3):
+            if p[i] > p[j]:
+                s = -s
+    return s
+
+
+class Asymmetric:
+    """Exact ω(t) of a torque-free body with three distinct principal moments."""
+
+    def __init__(self, I, w0):
+        I = [float(x) for x in I]
+        w0 = [float(x) for x in w0]
+        self.I, self.w0 = I, w0
+        iA, iB, iC = sorted(range(3), key=lambda k: I[k])
+        A, B, C = I[iA], I[iB], I[iC]
+        wA, wC = w0[iA], w0[iC]
+        DB = A * (A - B) * wA * wA + C * (C - B) * wC * wC      # H² − 2TB
+        perm = (iA, iB, iC) if DB >= 0 else (iC, iB, iA)      # polar axis last
+        self.perm = perm
+        s = _parity(perm)
+        self.sign = s
+        A, B, C = (I[k] for k in perm)
+        wA, wB, wC = (s * w0[k] for k in perm)
+        DA = B * (B - A) * wB * wB + C * (C - A) * wC * wC      # H² − 2TA  (signed)
+        DC = A * (C - A) * wA * wA + B * (C - B) * wB * wB      # 2TC − H²  (signed)
+        DB = A * (A - B) * wA * wA + C * (C - B) * wC * wC      # H² − 2TB  (signed)
+        self.constant = (wA == 0.0 and wB == 0.0) or DC == 0.0 or DA == 0.0 or (DB == 0.0 and wA == 0.0 and wC == 0.0)
+        self.separatrix = DB == 0.0
+        if self.constant:
+            self.m = 0.0
+            self.m1 = 1.0
+            self.lam = 0.0
+            return
+        a = math.sqrt(DC / (A * (C - A)))
+        b = math.sqrt(DC / (B * (C - B)))
+        c = math.sqrt(DA / (C * (C - A)))
+        lam = math.sqrt((C - B) * DA / (A * B * C))
+        m = (B - A) * DC / ((C - B) * DA)
+        m1 = (C - A) * DB / ((C - B) * DA)
+        m, m1 = min(max(m, 0.0), 1.0), min(max(m1, 0.0), 1.0)
+        sigma = 1.0 if wC >= 0 else -1.0
+        self.lam = sigma * math.copysign(1.0, C - B) * lam
+        self.a, self.b, self.c, self.sigma = a, b, c, sigma
+        self.m, self.m1 = m, m1
+        s0 = min(max(wB / b, -1.0), 1.0)
+        c0 = min(max(wA / a, -1.0), 1.0)
+        d0 = min(max(sigma * wC / c, 0.0), 1.0)
+        self.s0, self.c0, self.d0 = s0, c0, d0
+
+    @property
+    def period(self) -> float | None:
+        """Period of ω(t) (4K/|λ|); None on the separatrix or for constant ω."""
+        if self.constant:
+            return None
+        if self.m1 == 0.0:
+            return None
+        return 4.0 * ellipK(self.m, self.m1) / abs(self.lam)
+
+    def omega(self, t) -> np.ndarray:
+        t = np.asarray(t, dtype=float)
+        out = np.empty(t.shape + (3,))
+        if self.constant:
+            out[...] = self.w0
+            return out
+        m = self.m
+        s0, c0, d0 = self.s0, self.c0, self.d0
+        if self.m1 == 0.0:
+            # on the separatrix: sn = tanh, cn = dn = sech; u0 from sinh u0 = s0/|c0|
+            # (cn >= 0 here, so a negative c0 uses the symmetry (ω_A, ω_C) -> (−ω_A, −ω_C), t -> t)
+            flip = -1.0 if c0 < 0 else 1.0
+            u0 = math.asinh(s0 / abs(c0)) if c0 != 0 else math.copysign(math.inf, s0)
+            u = u0 + flip * self.lam * t
+            with np.errstate(over="ignore"):
+                sn, cn = np.tanh(u), 1.0 / np.cosh(u)
+            cn, dn = flip * cn, cn
+        else:
+            sv, cv, dv = ellipj(self.lam * t, m, self.m1)
+            # addition theorems, scaled so that nothing underflows when c0, d0 and cv, dv are tiny
+            mu = max(abs(c0), abs(d0))
+            if mu == 0.0:
+                mu = 1.0
+            c0h, d0h = c0 / mu, d0 / mu
+            nu = np.maximum(np.abs(cv), np.abs(dv))
+            kappa = np.maximum(nu, mu)
+            nuh = np.where(nu > 0, nu, 1.0)
+            cvh, dvh = cv / nuh, dv / nuh
+            x, y = mu / kappa, nu / kappa
+            den = x * x * d0h * d0h + m * s0 * s0 * y * y * cvh * cvh      # = (1 − m s0² sv²)/κ²
+            sn = (y * y * s0 * cvh * dvh + x * x * sv * c0h * d0h) / den
+            cn = x * y * (c0h * cvh - s0 * sv * d0h * dvh) / den
+            dn = x * y * (d0h * dvh - m * s0 * sv * c0h * cvh) / den
+        wA, wB, wC = self.a * cn, self.b * sn, self.sigma * self.c * dn
+        s = self.sign
+        for comp, k in zip((wA, wB, wC), self.perm):
+            out[..., k] = s * comp
+        return out
+
+
+class Axisymmetric:
+    """(39.14)-(39.22): the symmetry axis is the body axis ``k`` (0-based)."""
+
+    def __init__(self, I, w0, k):
+        self.k = k
+        self.i1 = (k + 1) % 3
+        self.i2 = (k + 2) % 3
+        I1 = 0.5 * (I[self.i1] + I[self.i2])
+        I3 = I[k]
+        self.I1, self.I3 = I1, I3
+        w01, w02, w03 = w0[self.i1], w0[self.i2], w0[k]
+        self.w = (w01, w02, w03)
+        self.lam = (I3 - I1) / I1 * w03                     # (39.15)
+        lam_vec = (w01, w02, I3 / I1 * w03)                 # (39.18)
+        self.alpha = 1.0 if w03 >= 0 else -1.0              # (39.20); ω03 = 0 takes α = 1
+        norm = math.sqrt(sum(x * x for x in lam_vec))
+        self.psi_dot = self.alpha * norm                    # (39.20)
+        self.theta = math.atan2(math.hypot(w01, w02), abs(lam_vec[2]))   # (39.21)
+
+    def omega(self, t) -> np.ndarray:
+        t = np.asarray(t, dtype=float)
+        w01, w02, w03 = self.w
+        c, s = np.cos(self.lam * t), np.sin(self.lam * t)
+        out = np.empty(t.shape + (3,))
+        out[..., self.i1] = w01 * c - w02 * s               # (39.17a)
+        out[..., self.i2] = w01 * s + w02 * c               # (39.17b)
+        out[..., self.k] = w03                              # (39.12)
+        return out
+
+
+def symmetry_axis(I) -> int | None:
+    """Index of the symmetry axis of an axisymmetric body (2 for a sphere), else None."""
+    scale = max(I)
+    eq = [abs(I[(i + 1) % 3] - I[(i + 2) % 3]) <= EQUAL_TOL * scale for i in range(3)]
+    if all(eq):
+        return 2
+    for k in range(3):
+        if eq[k]:
+            return k
+    return None
+
+
+def exact(I, w0):
+    k = symmetry_axis(I)
+    return Axisymmetric(I, w0, k) if k is not None else Asymmetric(I, w0)

@@ -1,0 +1,58 @@
+"""Input model of ``euler`` problems (contract §4.11)."""
+
+from __future__ import annotations
+
+from typing import Literal, Optional
+
+from pydantic import Field, model_validator
+
+from dyncli.fields import ExprVec3, Num, ProblemBase, StrictModel, Times, Vec3
+
+
+class Coin(StrictModel):
+    """A homogeneous coin (disk) of radius R and thickness h: moments (39.10)."""
+
+    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
+    R: Num(gt=0, dim="length", description="radius [m]") = Field(...)  # type: ignore[valid-type]
+    h: Num(ge=0, dim="length", description="thickness [m]") = Field(...)  # type: ignore[valid-type]
+
+
+class Euler(ProblemBase):
+    """Euler's equations (39.5) on the principal body basis e'; torque-free
+    bodies are solved exactly (39.14-39.22 axisymmetric, Jacobi elliptic
+    functions otherwise)."""
+
+    type: Literal["euler"]
+    I: Optional[Vec3(dim="moment of inertia", description="principal moments of inertia [I1, I2, I3] about the center of mass [kg m²]")] = None  # type: ignore[valid-type]
+    coin: Optional[Coin] = Field(None, description="a coin {m, R, h}: I1 = I2 = mR²/4 + mh²/12, I3 = mR²/2 (39.10)")
+    omega0: Vec3(dim="angular velocity", description="initial angular velocity, body components ω'₀ᵢ [rad/s]") = Field(...)  # type: ignore[valid-type]
+    M: Optional[ExprVec3(("t",), dim="moment", description="applied moment about the center of mass, body components, expressions in t [N m]")] = None  # type: ignore[valid-type]
+    at: Times() = Field(default_factory=lambda: [0.0])  # type: ignore[valid-type]
+
+    accuracy_methods = ("auto", "closed-form", "DOP853", "RK45", "Radau", "LSODA", "projected")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if (self.I is None) == (self.coin is None):
+            raise ValueError("give exactly one of I (principal moments) or coin: {m, R, h}"
+                             + (" — both were given" if self.I is not None else ""))
+        if self.I is not None:
+            I = self.I
+            for i, v in enumerate(I):
+                if not v > 0:
+                    raise ValueError(f"I: principal moment I{i + 1} must be > 0, got {v:g}")
+            for i in range(3):
+                others = I[(i + 1) % 3] + I[(i + 2) % 3]
+                if I[i] > others * (1 + 1e-12):
+                    raise ValueError(f"I: I{i + 1} = {I[i]:g} exceeds the sum of the other two ({others:g}): "
+                                     "no rigid body has these principal moments (triangle inequality)")
+        if self.M is not None and self.accuracy.method == "projected":
+            raise ValueError("accuracy.method projected conserves |H| and T and needs a torque-free body (no M)")
+        return self
+
+    def moments(self) -> tuple[float, float, float]:
+        if self.I is not None:
+            return tuple(self.I)
+        c = self.coin
+        i1 = 0.5 * c.m * c.R**2 * (0.5 + c.h**2 / (6 * c.R**2))
+        return (i1, i1, 0.5 * c.m * c.R**2)

@@ -1,0 +1,194 @@
+"""Euler's equations (39.5) and the torque-free body (notes §39) — numeric core.
+
+* Torque-free (no ``M``), method auto/closed-form: the exact solution
+  (``free.py``): axisymmetric (39.14)-(39.22), asymmetric with Jacobi
+  elliptic functions.  No scipy.
+* With ``M(t)`` or an explicit ODE method: integration of (39.5) with DOP853
+  (or RK45, Radau, LSODA); method ``projected`` (torque-free only) projects ω
+  back onto the intersection of the energy ellipsoid and the momentum sphere
+  (|H| = H₀, T = T₀) after every step.
+* With ``M(t)`` the work ∫M·ω dt and ∫2H·M dt are integrated alongside ω so
+  that ``drift`` measures the error of the energy and momentum balances
+  (T − T₀ = ∫M·ω dt, |H|² − H₀² = ∫2H·M dt).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError
+from dyncli.result import FrameTable, Result, Series, SolveOptions
+from dyncli.topics.euler import free, ode
+
+SYMBOLS = {"omega": "ω' (body)", "H": "|H̄|", "T": "T", "lambda": "λ (39.15)", "psi_dot": "ψ̇ (39.20)",
+           "theta": "θ (39.21)", "drift": "drift", "period": "period of ω", "m": "m = k²",
+           "symmetry_axis": "symmetry axis", "H_t": "|H̄|(t)", "T_t": "T(t)", "I": "I (principal)"}
+UNITS = {"omega": "rad/s", "H": "kg·m²/s", "T": "J", "lambda": "rad/s", "psi_dot": "rad/s", "theta": "rad",
+         "period": "s", "H_t": "kg·m²/s", "T_t": "J", "I": "kg·m²"}
+BASIS1 = ("e'₁", "e'₂", "e'₃")
+
+
+def energy_momentum(I, w):
+    w = np.asarray(w, dtype=float)
+    H = np.sqrt(np.sum((I * w) ** 2, axis=-1))
+    T = 0.5 * np.sum(I * w * w, axis=-1)
+    return H, T
+
+
+def make_projector(I, H0, T0):
+    """Project ω onto {|Iω| = H0, ω·Iω = 2 T0} (two Newton steps, min-norm)."""
+    I = np.asarray(I, dtype=float)
+    I2 = I * I
+
+    def project(y):
+        w = np.array(y[:3], dtype=float)
+        for _ in range(3):
+            g1 = w @ (I2 * w) - H0 * H0
+            g2 = w @ (I * w) - 2.0 * T0
+            J = np.array([2.0 * I2 * w, 2.0 * I * w])
+            G = J @ J.T
+            det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+            if abs(det) > 1e-12 * G[0, 0] * G[1, 1]:
+                lam = np.linalg.solve(G, np.array([g1, g2]))
+                w = w - J.T @ lam
+            else:  # ω along a principal axis: both constraints fix |ω| only
+                w = w * math.sqrt(2.0 * T0 / (w @ (I * w)))
+                break
+        out = np.array(y, dtype=float)
+        out[:3] = w
+        return out
+
+    return project
+
+
+def solve(pb, options: SolveOptions | None = None) -> Result:
+    I = np.array(pb.moments(), dtype=float)
+    w0 = np.array(pb.omega0, dtype=float)
+    times = np.asarray(pb.at, dtype=float)
+    res = Result({}, equations=["39.5"], symbols=SYMBOLS, units=UNITS)
+    method = pb.accuracy.method
+    if pb.coin is not None:
+        res.equations.append("39.10")
+    H0, T0 = (float(x) for x in energy_momentum(I, w0))
+    torque_free = pb.M is None or all(e.is_constant and e.value() == 0.0 for e in pb.M)
+    exact = free.exact(I, w0) if torque_free else None
+    r = res.results
+    if pb.coin is not None:
+        r["I"] = I.tolist()
+    if torque_free and method in ("auto", "closed-form"):
+        W = exact.omega(times)
+        res.method = "closed-form"
+        Ht, Tt = energy_momentum(I, W)
+        drift_H = float(np.max(np.abs(Ht - H0)) / H0) if H0 > 0 and len(times) else 0.0
+        drift_T = float(np.max(np.abs(Tt - T0)) / T0) if T0 > 0 and len(times) else 0.0
+    elif method == "closed-form":
+        raise InputError("the closed form is for torque-free bodies; remove M or use auto/an ODE method", "accuracy.method")
+    else:
+        W, drift_H, drift_T = _integrate(pb, I, w0, times, res, exact, H0, T0)
+    r["omega"] = W.tolist()
+    r["H"] = H0
+    if torque_free:
+        r["T"] = T0
+    else:
+        r["T"] = T0
+        Ht, Tt = energy_momentum(I, W)
+        r["H_t"] = Ht.tolist()
+        r["T_t"] = Tt.tolist()
+        res.warn("with an applied moment H and T are the initial values; H_t and T_t give them at the requested times")
+    if torque_free:
+        if isinstance(exact, free.Axisymmetric):
+            res.equations += ["39.12", "39.15", "39.17", "39.18", "39.20", "39.21", "39.22"]
+            r["lambda"] = exact.lam
+            r["psi_dot"] = exact.psi_dot
+            r["theta"] = exact.theta
+            r["symmetry_axis"] = exact.k + 1
+            if exact.w[2] == 0.0:
+                res.warn("ω'₀₃ = 0: α in (39.20) is taken as +1 (θ = π/2, the body tumbles end over end)")
+        else:
+            r["m"] = exact.m
+            per = exact.period
+            r["period"] = per
+            if per is None:
+                res.warn("period is null: ω is constant or the motion lies on the separatrix (infinite period)")
+    r["drift"] = max(drift_H, drift_T)
+    r["drift_detail"] = {"H": drift_H, "T": drift_T}
+    if len(times):
+        res.series.append(Series("t", times.tolist(), ["omega"] + ([] if torque_free else ["H_t", "T_t"])))
+        res.views.append(_table_39_1(pb, I, W[0], float(times[0])))
+    return res
+
+
+def _moment(pb, t):
+    if pb.M is None:
+        return np.zeros(3)
+    return np.array([float(np.asarray(e(t=t), dtype=float)) for e in pb.M])
+
+
+def _table_39_1(pb, I, w, t):
+    w = np.asarray(w, dtype=float)
+    H = I * w
+    M = _moment(pb, t)
+    wxH = np.cross(w, H)
+    dH = M - wxH                                   # I ω̇ from (39.5)
+    rows = [("ω", w.tolist()), ("H̄", H.tolist()), ("δH̄/δt", dH.tolist()), ("ω×H̄", wxH.tolist()),
+            ("Ḣ = M̄", (dH + wxH).tolist())]
+    return FrameTable(f"Table 39.1 at t = {t:.6g} s", rows, basis=BASIS1)
+
+
+def _integrate(pb, I, w0, times, res, exact, H0, T0):
+    method = pb.accuracy.method
+    m = "DOP853" if method in ("auto", "projected") else method
+    rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
+    forced = pb.M is not None and exact is None
+    res.method = "ode:projected-DOP853" if method == "projected" else f"ode:{m}"
+    res.equations += ["39.4"]
+    invI = 1.0 / I
+    Mx = pb.M
+
+    if forced:
+        def fun(t, y):
+            w = y[:3]
+            Mt = np.array([float(np.asarray(e(t=t), dtype=float)) for e in Mx])
+            Hw = I * w
+            wd = (Mt - np.cross(w, Hw)) * invI
+            return np.concatenate([wd, [Mt @ w, 2.0 * (Hw @ Mt)]])
+        y0 = np.concatenate([w0, [0.0, 0.0]])
+    else:
+        def fun(t, y):
+            return -np.cross(y, I * y) * invI
+        y0 = w0.copy()
+    project = make_projector(I, H0, T0) if method == "projected" else None
+    worst = [0.0, 0.0]
+    Tscale = [T0]
+    Hscale = [H0]
+
+    def on_step(t_old, t_new, dense, direction):
+        if dense is None:
+            return
+        y = dense(t_new)
+        Hn, Tn = energy_momentum(I, y[:3])
+        Hn, Tn = float(Hn), float(Tn)
+        Tscale[0] = max(Tscale[0], Tn)
+        Hscale[0] = max(Hscale[0], Hn)
+        if forced:
+            worst[0] = max(worst[0], abs(Hn * Hn - H0 * H0 - y[4]) / (2 * Hscale[0] ** 2))
+            worst[1] = max(worst[1], abs(Tn - T0 - y[3]) / Tscale[0])
+        else:
+            worst[0] = max(worst[0], abs(Hn - H0) / Hscale[0])
+            worst[1] = max(worst[1], abs(Tn - T0) / Tscale[0])
+
+    Y, _ = ode.integrate(fun, y0, times, method=m, rtol=rtol, atol=atol, project=project, on_step=on_step)
+    W = Y[:, :3]
+    scale = max(float(np.max(np.linalg.norm(W, axis=1))) if len(W) else 0.0, float(np.linalg.norm(w0)), 1e-300)
+    if pb.accuracy.estimate:
+        r2, a2 = ode.tighter(rtol, atol)
+        Y2, _ = ode.integrate(fun, y0, times, method=m, rtol=r2, atol=a2, project=project)
+        res.error_estimate = float(np.max(np.abs(Y2[:, :3] - W)) / scale) if len(times) else 0.0
+    elif exact is not None:
+        res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0
+        res.warn("error_estimate is the actual error against the exact torque-free solution")
+    else:
+        res.error_estimate = max(rtol, worst[0], worst[1])
+    return W, worst[0], worst[1]

@@ -1,0 +1,188 @@
+"""The gyroscope of notes §37 — numeric core.
+
+Ω = q e₂ + θ̇ e''₃, ω = Ω + p e''₁ (37.5-37.6), H̄ (37.9), M̄ = Ḣ (37.10,
+Table 37.1) and the free rotation about e''₃ (37.11) giving (37.12):
+
+    Ī₂ θ̈ + (Ī₂ − Ī₁) q² sin θ cos θ − Ī₁ p q cos θ = 0,
+
+with the first integral (37.13)
+
+    ½ Ī₂ θ̇² + ½ (Ī₂ − Ī₁) q² sin² θ − Ī₁ p q sin θ = C.
+
+θ(t) is integrated (DOP853 by default; q = 0 has the closed form θ₀ + θ̇₀ t).
+θ_min, θ_max are the turning points of (37.13): zeros of C − V(θ) on either
+side of θ₀, found from the roots of a quadratic in sin θ — not from samples.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.result import FrameTable, Result, Series, SolveOptions
+from dyncli.topics.euler import ode
+
+SYMBOLS = {"theta": "θ", "theta_dot": "θ̇", "M": "M̄ (e'')", "theta_min": "θ_min", "theta_max": "θ_max",
+           "C": "C (37.13)", "drift": "drift"}
+UNITS = {"theta": "rad", "theta_dot": "rad/s", "M": "N·m", "theta_min": "rad", "theta_max": "rad", "C": "J"}
+BASIS2 = ("e''₁", "e''₂", "e''₃")
+
+
+def theta_ddot(I1, I2, p, q, th):
+    """(37.12) solved for θ̈."""
+    return ((I1 - I2) * q * q * np.sin(th) + I1 * p * q) * np.cos(th) / I2
+
+
+def first_integral(I1, I2, p, q, th, thd):
+    """C of (37.13)."""
+    s = np.sin(th)
+    return 0.5 * I2 * thd * thd + 0.5 * (I2 - I1) * q * q * s * s - I1 * p * q * s
+
+
+def table_rows(I1, I2, p, q, th, thd, thdd):
+    """Rows of Table 37.1 on e''."""
+    s, c = math.sin(th), math.cos(th)
+    Om = [q * s, q * c, thd]
+    H = [I1 * (q * s + p), I2 * q * c, I2 * thd]
+    dH = [I1 * q * thd * c, -I2 * q * thd * s, I2 * thdd]
+    OmH = [Om[1] * H[2] - Om[2] * H[1], Om[2] * H[0] - Om[0] * H[2], Om[0] * H[1] - Om[1] * H[0]]
+    Hd = [dH[i] + OmH[i] for i in range(3)]
+    return [("Ω", Om), ("ω", [Om[0] + p, Om[1], Om[2]]), ("H̄", H), ("δH̄/δt", dH), ("Ω×H̄", OmH), ("Ḣ = M̄", Hd)]
+
+
+def moment(I1, I2, p, q, th, thd, thdd):
+    """M̄ = Ḣ (Table 37.1), vectorised; the e''₃ component vanishes by (37.11)."""
+    s, c = np.sin(th), np.cos(th)
+    m1 = I1 * q * thd * c
+    m2 = -2.0 * I2 * q * thd * s + I1 * (q * s + p) * thd
+    m3 = I2 * thdd + (I2 - I1) * q * q * s * c - I1 * p * q * c
+    return np.stack([m1, m2, m3], axis=-1)
+
+
+def _quadratic_roots(A, B, Cc):
+    """Real roots of A s² + B s + Cc = 0 (stable)."""
+    if A == 0:
+        return [] if B == 0 else [-Cc / B]
+    d = B * B - 4 * A * Cc
+    if d < 0:
+        return []
+    sq = math.sqrt(d)
+    qq = -0.5 * (B + math.copysign(sq, B)) if B != 0 else -0.5 * sq
+    out = [qq / A]
+    if qq != 0:
+        out.append(Cc / qq)
+    else:
+        out.append(-qq / A)
+    return out
+
+
+def turning_points(I1, I2, p, q, th0, thd0):
+    """(θ_min, θ_max) of the motion starting at (θ₀, θ̇₀) from (37.13), or None
+    when θ circulates (no turning point)."""
+    C = float(first_integral(I1, I2, p, q, th0, thd0))
+    # zeros of G(θ) = C − V(θ):  ½(I2−I1)q² s² − I1 p q s − C = 0,  s = sin θ
+    A, B = 0.5 * (I2 - I1) * q * q, -I1 * p * q
+    scale = 0.5 * abs(I2 - I1) * q * q + abs(I1 * p * q)
+    at_rest = 0.5 * I2 * thd0 * thd0 <= 1e-12 * scale or thd0 == 0.0
+    if at_rest:
+        # sin θ₀ is an exact root: deflate (Vieta) instead of re-finding it
+        s0 = math.sin(th0)
+        roots = [] if A == 0 else [-B / A - s0]
+        base = [th0, math.pi - th0]
+    else:
+        roots = _quadratic_roots(A, B, -C)
+        base = []
+    svals = [min(1.0, max(-1.0, s)) for s in roots if -1.0 - 1e-12 <= s <= 1.0 + 1e-12]
+    for s in svals:
+        a = math.asin(s)
+        base += [a, math.pi - a]
+
+    def first_zero(direction):
+        best = None
+        for b in base:
+            # candidates b + 2πn at signed distance in (0, 2π] along direction
+            d = (b - th0) * direction
+            d = d - 2 * math.pi * math.floor(d / (2 * math.pi))
+            if d <= 0.0:
+                d += 2 * math.pi
+            if best is None or d < best:
+                best = d
+        return None if best is None else th0 + direction * best
+
+    if at_rest:
+        acc = float(theta_ddot(I1, I2, p, q, th0))
+        if acc == 0.0:
+            return th0, th0, C
+        other = first_zero(1.0 if acc > 0 else -1.0)
+        if other is None:  # pragma: no cover - th0 itself is a zero, so a zero recurs within 2π
+            return None, None, C
+        return min(th0, other), max(th0, other), C
+    up, down = first_zero(1.0), first_zero(-1.0)
+    if up is None or down is None:
+        return None, None, C
+    return down, up, C
+
+
+def solve(pb, options: SolveOptions | None = None) -> Result:
+    I1, I2, p, q = pb.I1, pb.I2, pb.p, pb.q
+    th0, thd0 = pb.theta0, pb.theta_dot0
+    times = np.asarray(pb.at, dtype=float)
+    res = Result({}, equations=["37.5", "37.6", "37.9", "37.12", "37.13", "Table 37.1"], symbols=SYMBOLS, units=UNITS)
+    method = pb.accuracy.method
+    if method in ("auto", "closed-form") and q == 0.0:
+        th = th0 + thd0 * times
+        thd = np.full_like(times, thd0)
+        res.method = "closed-form"
+        drift = 0.0
+    else:
+        if method == "closed-form":
+            from dyncli.errors import InputError
+
+            raise InputError("the closed form exists only for q = 0; use auto or an ODE method", "accuracy.method")
+        m = ode.check_method(method, ode.ODE_METHODS)
+        rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
+
+        def fun(t, y):
+            return np.array([y[1], theta_ddot(I1, I2, p, q, y[0])])
+
+        C0 = float(first_integral(I1, I2, p, q, th0, thd0))
+        scale = 0.5 * I2 * thd0 * thd0 + 0.5 * abs(I2 - I1) * q * q + abs(I1 * p * q)
+        Cmax = [0.0]
+
+        def on_step(t_old, t_new, dense, direction):
+            if dense is not None:
+                y = dense(t_new)
+                Cmax[0] = max(Cmax[0], abs(float(first_integral(I1, I2, p, q, y[0], y[1])) - C0))
+
+        Y, nsteps = ode.integrate(fun, [th0, thd0], times, method=m, rtol=rtol, atol=atol, on_step=on_step)
+        th, thd = Y[:, 0], Y[:, 1]
+        drift = Cmax[0] / max(scale, 1e-300)
+        res.method = f"ode:{m}"
+        if pb.accuracy.estimate:
+            r2, a2 = ode.tighter(rtol, atol)
+            Y2, _ = ode.integrate(fun, [th0, thd0], times, method=m, rtol=r2, atol=a2)
+            den = np.maximum(np.abs(Y2), 1.0)
+            res.error_estimate = float(np.max(np.abs(Y - Y2) / den)) if len(times) else 0.0
+        else:
+            res.error_estimate = max(drift, rtol)
+    thdd = theta_ddot(I1, I2, p, q, th)
+    M = moment(I1, I2, p, q, th, thd, thdd)
+    tmin, tmax, C = turning_points(I1, I2, p, q, th0, thd0)
+    r = res.results
+    r["theta"] = th.tolist()
+    r["theta_dot"] = thd.tolist()
+    r["M"] = M.tolist()
+    r["theta_min"] = tmin
+    r["theta_max"] = tmax
+    r["C"] = C
+    r["drift"] = float(drift)
+    if tmin is None:
+        res.warn("θ circulates: C exceeds the largest value of V(θ) in (37.13), so there is no turning point; "
+                 "theta_min and theta_max are null")
+    if len(times):
+        res.series.append(Series("t", times.tolist(), ["theta", "theta_dot", "M"]))
+        i = 0
+        res.views.append(FrameTable(f"Table 37.1 at t = {times[i]:.6g} s",
+                                    table_rows(I1, I2, p, q, float(th[i]), float(thd[i]), float(thdd[i])), basis=BASIS2))
+    return res
