@@ -61,6 +61,15 @@ CASES.update({
         "protects the general route (6.2c,e) budget: find t = -1e8 on a damped oscillator (growing backwards) "
         "must be reached: false / exit 1 at once, not a hang",
         "type: rectilinear\na: -4*s - 0.4*v + sin(t)\ns1: 0.25\nv1: 1\nt_max: 30\nfind: [{t: 3}, {t: -1.0e+8}]\n"),
+    "gyroscope-far-time-hang": (
+        "protects the gyroscope's θ(t) integration (37.x) budget: at: [1e150] must be refused or fail fast",
+        "type: gyroscope\nI1: 0.01\nI2: 0.006\np: 200.0\nq: 1\nat: [1.0e+150, 0.05]\n"),
+    "gyroscope-slow-t1000": (
+        "protects the 2 s budget: θ(t) of the gyroscope at t = 1000 s takes ~5 s of CPU",
+        "type: gyroscope\nI1: 0.01\nI2: 0.006\np: 100\nq: 1\nat: [0, 1000]\n"),
+    "euler-tiny-coin": (
+        "protects (39.x) the coin's moments I = m R²/4 + m h²/12...: R = 1.2e-302 must not divide by zero (exit 3)",
+        "type: euler\ncoin: {m: 0.005, R: 1.2e-302, h: 0.002}\nomega0: [40, 0.0, 1.5]\nat: [0, 0.5, 1]\n"),
     "top-oblate-hang": (
         "protects the top's integration budget: I33 = pi >> I11 = 0.002 must finish or fail fast",
         "type: top\nm: 0.5\nL: 0.05\nI11: 0.002\nI33: 3.14159\ntheta: 0.3\ntheta_dot: -2\npsi_dot: 16.918\n"
