@@ -161,7 +161,7 @@ def main() -> None:
             bt = berr = bn = None
             if case.scipy_baseline:
                 berr, bt, bn = baseline_timed(case, rtol, repeats)
-            ratio = (est / err) if (est is not None and err > 0) else None
+            ratio = (est / case.comparable(err)) if (est is not None and err > 0) else None
             print(f"{rtol:7.0e} {t * 1000:8.2f} {err:9.1e} {fmt(est):>9} {fmt(ratio, '.2g'):>7} {nfev:>6}{mark or ' '} | "
                   f"{fmt(bt * 1000 if bt is not None else None, '.2f'):>8} {fmt(berr):>9} {bn if bn is not None else '—':>6} "
                   f"{fmt(t / bt if bt else None, '.1f'):>7}")
@@ -187,7 +187,7 @@ def route_summary(rows):
     for n in names:
         rs = [r for r in rows if r[0].name == n and r[2] is not None]
         trs = [r[2] / r[7] for r in rs if r[7]]
-        ests = [r[4] / r[3] for r in rs if r[4] is not None and r[3] > 1e-13]
+        ests = [r[4] / r[0].comparable(r[3]) for r in rs if r[4] is not None and r[3] > 1e-13]
         out.append((n, statistics.median(trs) if trs else None, min(ests) if ests else None))
     return out
 
@@ -259,7 +259,8 @@ def write_md(rows, summary, path: Path, rtols) -> None:
         "includes every other result the type reports and the second solve behind `error_estimate`);",
         "*true error* is the largest absolute",
         "error of the reported numbers against the reference; *est/err* is the reported",
-        "`error_estimate` over the true error (≥ 1 means the estimate is conservative); *nfev* counts",
+        "`error_estimate` over the true error (≥ 1 means the estimate is conservative; euler reports its",
+        "estimate relative to |ω₀|, and it is compared so); *nfev* counts",
         "scipy right-hand-side/integrand evaluations, or (\\*) the points at which the problem's",
         "expressions were evaluated on routes with their own quadrature.  *scipy* is the same problem",
         "solved by a plain scipy script (`solve_ivp(method='DOP853')` or `quad`, same rtol/atol);",
@@ -278,7 +279,7 @@ def write_md(rows, summary, path: Path, rtols) -> None:
             if t is None:
                 lines.append(f"| {rtol:.0e} | failed | | | | | | | | |")
                 continue
-            ratio = est / err if est is not None and err > 0 else None
+            ratio = est / case.comparable(err) if est is not None and err > 0 else None
             lines.append(f"| {rtol:.0e} | {method} | {t * 1000:.2f} | {err:.1e} | {fmt(est)} | {fmt(ratio, '.2g')} | "
                          f"{nfev}{mark} | {fmt(bt * 1000 if bt is not None else None, '.2f')} | {fmt(berr)} | "
                          f"{bn if bn is not None else '—'} |")

@@ -25,6 +25,13 @@ class Case:
     error: Callable[[dict], float]                # record -> largest absolute error vs the reference
     atol_factor: float = 1e-3
     scipy_baseline: Callable[[float, float], tuple[float, int]] | None = None   # (rtol, atol) -> (error, nfev)
+    # the type reports error_estimate relative to this scale (euler: |ω0|);
+    # None: absolute, in the units of the results
+    estimate_scale: float | None = None
+
+    def comparable(self, true_error: float) -> float:
+        """The true error in the units of the type's error_estimate."""
+        return true_error / self.estimate_scale if self.estimate_scale else true_error
 
     def text(self, rtol: float, estimate: bool = False) -> str:
         return self.yaml(rtol, rtol * self.atol_factor, estimate)
@@ -373,3 +380,62 @@ def _ff_scipy(rtol, atol):
 
 for _c, _b in zip(CASES[3:], (_top_scipy, _vib_scipy, _kin_scipy, _ff_scipy)):
     _c.scipy_baseline = _b
+
+
+# --- euler: torque-free body integrated (DOP853) vs the exact solution ----------------------
+# a triaxial body: exact ω(t) from Jacobi elliptic functions (mpmath), the
+# classical solution of (39.5) with M = 0 for H² < 2 T I2 (rotation near axis 3)
+EI = [mp.mpf(1), mp.mpf(2), mp.mpf(3)]
+EW0 = [mp.mpf("0.1"), mp.mpf(0), mp.mpf(2)]
+ET = [1, 5, 20]
+
+
+def _euler_exact(t):
+    """ω(t) of the torque-free triaxial body I1 < I2 < I3 with ω2(0) = 0 and
+    H² > 2 T I2 (spin near axis 3): ω1 = a cn τ, ω2 = b sn τ, ω3 = c dn τ
+    (the classical Jacobi-elliptic solution of (39.5) with M = 0)."""
+    I1, I2, I3 = EI
+    w10, w20, w30 = EW0
+    H2 = (I1 * w10) ** 2 + (I2 * w20) ** 2 + (I3 * w30) ** 2
+    E2 = I1 * w10 ** 2 + I2 * w20 ** 2 + I3 * w30 ** 2       # 2T
+    a = mp.sqrt((E2 * I3 - H2) / (I1 * (I3 - I1)))
+    b = mp.sqrt((E2 * I3 - H2) / (I2 * (I3 - I2)))
+    c = mp.sqrt((H2 - E2 * I1) / (I3 * (I3 - I1)))
+    lam = mp.sqrt((I3 - I2) * (H2 - E2 * I1) / (I1 * I2 * I3))
+    m = (I2 - I1) * (E2 * I3 - H2) / ((I3 - I2) * (H2 - E2 * I1))
+    u = lam * t
+    # ω̇2(0) = (I3 − I1)/I2 ω3 ω1 > 0 for ω1, ω3 > 0: ω2 = +b sn
+    return [a * mp.ellipfun("cn", u, m=m), b * mp.ellipfun("sn", u, m=m), c * mp.ellipfun("dn", u, m=m)]
+
+
+def _euler_yaml(rtol, atol, est):
+    return ("type: euler\nI: [1, 2, 3]\nomega0: [0.1, 0, 2]\nat: [1, 5, 20]\n" + _acc(rtol, atol, est, "DOP853"))
+
+
+def _euler_error(rec):
+    r = rec["results"]
+    w = r.get("omega")
+    pairs = []
+    for i, t in enumerate(ET):
+        pairs += list(zip(w[i], _euler_exact(t)))
+    return _maxerr(pairs)
+
+
+def _euler_scipy(rtol, atol):
+    from scipy.integrate import solve_ivp
+
+    I1, I2, I3 = 1.0, 2.0, 3.0
+
+    def rhs(t, w):
+        return [(I2 - I3) / I1 * w[1] * w[2], (I3 - I1) / I2 * w[2] * w[0], (I1 - I2) / I3 * w[0] * w[1]]
+
+    sol = solve_ivp(rhs, (0, 20), [0.1, 0.0, 2.0], method="DOP853", rtol=rtol, atol=atol, t_eval=ET)
+    errs = []
+    for i, t in enumerate(ET):
+        ex = _euler_exact(t)
+        errs += [abs(sol.y[k][i] - float(ex[k])) for k in range(3)]
+    return max(errs), int(sol.nfev)
+
+
+CASES.append(Case("euler ODE (torque-free, DOP853)", "euler", _euler_yaml, _euler_error, scipy_baseline=_euler_scipy,
+                  estimate_scale=float(mp.sqrt(sum(w * w for w in EW0)))))
