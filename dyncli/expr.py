@@ -33,6 +33,7 @@ from dyncli.errors import InputError
 
 MAX_LENGTH = 2000
 MAX_DEPTH = 64
+MAX_CHAIN = 300   # terms of one + - or * / chain (a left spine in the AST)
 MAX_NODES = 2000
 MAX_PARAMS = 1000
 
@@ -253,7 +254,7 @@ class _Converter:
         col = getattr(node, "col_offset", 0) + 1
         return ExpressionError(f"not allowed ({what}): {self._seg(node)!r} at column {col} of {self.src!r}")
 
-    def convert(self, node: ast.AST, depth: int) -> tuple:
+    def convert(self, node: ast.AST, depth: int, chain: int = 0) -> tuple:
         self.count += 1
         if depth > MAX_DEPTH:
             raise ExpressionError(f"expression {self.src[:40]!r} is nested too deeply (more than {MAX_DEPTH} levels)")
@@ -304,7 +305,16 @@ class _Converter:
                 sym = {ast.Mod: "%", ast.FloorDiv: "//", ast.MatMult: "@", ast.LShift: "<<",
                        ast.RShift: ">>", ast.BitOr: "|", ast.BitAnd: "&"}.get(type(node.op), "?")
                 raise ExpressionError(f"operator '{sym}' not allowed in {self.src!r}; use + - * / **")
-            return (op, self.convert(node.left, d), self.convert(node.right, d))
+            # a + b + c + ... nests to the left: count chain length, not depth
+            family = "add" if op in ("add", "sub") else "mul" if op in ("mul", "div") else None
+            left = node.left
+            same = family is not None and isinstance(left, ast.BinOp) and _BINOPS.get(type(left.op)) in (
+                ("add", "sub") if family == "add" else ("mul", "div"))
+            if same:
+                if chain + 1 > MAX_CHAIN:
+                    raise ExpressionError(f"expression has too many terms in one sum or product (more than {MAX_CHAIN})")
+                return (op, self.convert(left, depth, chain + 1), self.convert(node.right, d))
+            return (op, self.convert(left, d), self.convert(node.right, d))
         if isinstance(node, ast.Call):
             if not isinstance(node.func, ast.Name):
                 raise self._fail(node.func, "attribute access" if isinstance(node.func, ast.Attribute) else "calling the result of an expression")

@@ -143,3 +143,20 @@ def test_symbolic_roundtrip_and_derivative():
     t = np.linspace(-1, 2, 9)
     np.testing.assert_allclose(d1(t=t), 6 * np.cos(2 * t) + 2 * t + np.exp(-t) * (-np.cos(t) - np.sin(t)), rtol=1e-13, atol=1e-14)
     np.testing.assert_allclose(d2(t=t), -12 * np.sin(2 * t) + 2 + 2 * np.exp(-t) * np.sin(t), rtol=1e-13, atol=1e-14)
+
+
+def test_long_sums_and_products_are_not_nesting():
+    import math as _m
+
+    terms = " + ".join(f"{k}*t**{k % 5}" for k in range(150))
+    e = expr.parse(terms, ["t"])
+    t = np.array([0.5, 1.5])
+    want = sum(k * t ** (k % 5) for k in range(150))
+    np.testing.assert_allclose(e(t=t), want, rtol=1e-13)
+    prod = "*".join(["1.001"] * 200)
+    assert expr.constant(prod) == pytest.approx(1.001 ** 200, rel=1e-13)
+    from dyncli import symbolic
+
+    assert symbolic.diff(e, "t")(t=np.array([1.0]))[0] == pytest.approx(sum(k * (k % 5) for k in range(150)))
+    with pytest.raises(InputError, match="too many terms"):
+        expr.parse(" + ".join(["t"] * 400), ["t"])
