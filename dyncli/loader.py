@@ -155,11 +155,33 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
     except ValidationError as exc:
         errors = exc.errors(include_url=False)
         first = _pick(errors)
-        d = lp.diagnostic(first["loc"], _message(cls, first))
+        d = lp.diagnostic(_strip_tags(raw, first["loc"]), _message(cls, first))
         d.more = len(errors) - 1
         return None, d
     except InputError as exc:
         return None, lp.diagnostic(exc.path, exc.message)
+
+
+def _strip_tags(raw: Any, loc) -> tuple:
+    """Drop the tags pydantic inserts into the location of an error inside a
+    discriminated union (``forces.0.spring.k`` -> ``forces.0.k``): a string
+    part that is not a key of the mapping reached so far but equals one of
+    its values (the discriminator) is a tag."""
+    out: list = []
+    node = raw
+    for part in loc:
+        if isinstance(node, dict) and isinstance(part, str) and part not in node and part in [
+            v for v in node.values() if isinstance(v, str)
+        ]:
+            continue
+        out.append(part)
+        if isinstance(node, dict):
+            node = node.get(part)
+        elif isinstance(node, list) and isinstance(part, int) and 0 <= part < len(node):
+            node = node[part]
+        else:
+            node = None
+    return tuple(out)
 
 
 def _pick(errors: list[dict]) -> dict:
@@ -211,6 +233,13 @@ def _fields_at(cls, loc: tuple) -> list[str]:
             out += models_in(a)
         return out
 
+    def tags(m) -> set:
+        out = set()
+        for f in getattr(m, "model_fields", {}).values():
+            if typing.get_origin(f.annotation) is typing.Literal:
+                out.update(str(a) for a in typing.get_args(f.annotation))
+        return out
+
     current = [cls]
     for part in loc:
         nxt = []
@@ -219,6 +248,9 @@ def _fields_at(cls, loc: tuple) -> list[str]:
                 nxt += models_in(m.model_fields[part].annotation)
             elif isinstance(part, int) or (isinstance(part, str) and part not in getattr(m, "model_fields", {})):
                 nxt.append(m)  # list index or union tag: stay
+        if isinstance(part, str) and len(nxt) > 1:
+            tagged = [m for m in nxt if part in tags(m)]
+            nxt = tagged or nxt  # union tag: keep the member it names
         current = nxt or current
     names: list[str] = []
     for m in current:

@@ -1,0 +1,39 @@
+"""Input model of ``force-field`` problems (contract §4.9, notes §19)."""
+
+from __future__ import annotations
+
+from typing import Literal, Optional
+
+from pydantic import Field, model_validator
+
+from dyncli.fields import ExprField, ExprVec3, ProblemBase, StrictModel, Times, Vec3
+
+FIELD_VARS = ("x1", "x2", "x3")
+
+
+class Path(StrictModel):
+    """A parametrised path x(t) = x1(t) e1 + x2(t) e2 + x3(t) e3, t from t1 to t2."""
+
+    x1: ExprField(("t",), dim="length", description="x1(t) [m]: number or expression in t")  # type: ignore[valid-type]
+    x2: ExprField(("t",), dim="length", description="x2(t) [m]: number or expression in t")  # type: ignore[valid-type]
+    x3: ExprField(("t",), dim="length", description="x3(t) [m]: number or expression in t")  # type: ignore[valid-type]
+    t_span: Times(max_len=2, description="[t1, t2]: the parameter runs from t1 to t2")  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _two(self):
+        if len(self.t_span) != 2:
+            raise ValueError(f"t_span must be [t1, t2] (2 numbers), got {len(self.t_span)}")
+        return self
+
+
+class ForceField(ProblemBase):
+    """A force field F(x) (notes §19): curl, conservative verdict, potential,
+    work along a path."""
+
+    type: Literal["force-field"]
+    F: ExprVec3(FIELD_VARS, dim="force", description="3 expressions in x1, x2, x3 [N]")  # type: ignore[valid-type]
+    points: list[Vec3(dim="length")] = Field(default_factory=list, description="points where the curl is evaluated [m]")  # type: ignore[valid-type]
+    path: Optional[Path] = Field(None, description="path for the work: {x1, x2, x3 (expressions in t), t_span: [t1, t2]}")
+
+    accuracy_methods = ("auto", "quadrature")
+

@@ -1,0 +1,1 @@
+"""Kinetics of a particle: equation of motion, work and energy (notes §16, §18-§22)."""

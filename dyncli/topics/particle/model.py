@@ -1,0 +1,144 @@
+"""Input model of ``particle`` problems (contract §4.9, notes §16, §18-§22).
+
+``forces`` is a list of force terms, a pydantic discriminated union on
+``kind``.  The solver (``solver.py``) builds the equation of motion
+m a = sum of the listed forces (16.7) and integrates it.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, Literal, Optional, Union
+
+from pydantic import BeforeValidator, Field, model_validator
+
+from dyncli.errors import InputError
+from dyncli.fields import ExprVec3, Num, ProblemBase, StrictModel, Times, Vec3
+
+CUSTOM_VARS = ("t", "x1", "x2", "x3", "v1", "v2", "v3")
+
+
+class Uniform(StrictModel):
+    """A constant force F (a constant force field, 19.14)."""
+
+    kind: Literal["uniform"]
+    F: Vec3(dim="force", description="the constant force [N]")  # type: ignore[valid-type]
+
+
+class Gravity(StrictModel):
+    """Gravity near the earth, -m g e3 (potential m g x3, 19.23)."""
+
+    kind: Literal["gravity"]
+
+
+class InverseSquare(StrictModel):
+    """Inverse-square gravity towards ``center``: F_R = -m g (R0/R)² (19.18),
+    potential -m g R0²/R (19.20b)."""
+
+    kind: Literal["inverse-square"]
+    center: Vec3(dim="length", description="the attracting centre [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    R0: Num(gt=0, dim="length", description="radius where the attraction is m g [m]")  # type: ignore[valid-type]
+    g: Optional[Num(gt=0, dim="acceleration", description="attraction per unit mass at R = R0 [m/s²]; default: the problem's g")] = None  # type: ignore[valid-type]
+
+
+class Spring(StrictModel):
+    """Linear spring from a fixed ``anchor``: F_R = -k (R - L) (19.26a)."""
+
+    kind: Literal["spring"]
+    anchor: Vec3(dim="length", description="fixed end of the spring [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    k: Num(gt=0, dim="stiffness", description="stiffness [N/m]")  # type: ignore[valid-type]
+    L: Num(ge=0, dim="length", description="free length [m]") = 0.0  # type: ignore[valid-type]
+
+
+class Damper(StrictModel):
+    """Linear viscous damper to the fixed frame: F = -c v."""
+
+    kind: Literal["damper"]
+    c: Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")  # type: ignore[valid-type]
+
+
+def _power(value: Any) -> Any:
+    if isinstance(value, bool) or value not in (1, 2, 1.0, 2.0):
+        raise ValueError(f"power must be 1 (linear drag) or 2 (quadratic drag), got {value!r}")
+    return int(value)
+
+
+class Drag(StrictModel):
+    """Fluid drag opposing the velocity: F = -c |v|^(power-1) v."""
+
+    kind: Literal["drag"]
+    c: Num(ge=0, description="drag coefficient [N·s/m] (power 1) or [N·s²/m²] (power 2)")  # type: ignore[valid-type]
+    power: Annotated[int, BeforeValidator(_power), Field(description="1 (linear) or 2 (quadratic)")] = 2
+
+
+class Friction(StrictModel):
+    """Coulomb (sliding) friction with a given normal force: F = -mu N v/|v| (19.27);
+    the particle sticks when it stops and |other forces| <= mu N."""
+
+    kind: Literal["friction"]
+    mu: Num(ge=0, description="friction coefficient (kinetic = static)")  # type: ignore[valid-type]
+    N: Num(ge=0, dim="force", description="magnitude of the normal force [N]")  # type: ignore[valid-type]
+
+
+class Custom(StrictModel):
+    """Any force given as 3 expressions in t, x1, x2, x3, v1, v2, v3."""
+
+    kind: Literal["custom"]
+    F: ExprVec3(CUSTOM_VARS, dim="force", description="3 expressions in t, x1, x2, x3, v1, v2, v3 [N]")  # type: ignore[valid-type]
+    name: Optional[str] = Field(None, description="label used in messages")
+
+
+FORCE_KINDS = ("uniform", "gravity", "inverse-square", "spring", "damper", "drag", "friction", "custom")
+
+
+def _check_kind(value: Any) -> Any:
+    if isinstance(value, dict):
+        kind = value.get("kind")
+        if kind is None:
+            raise ValueError(f"a force needs 'kind', one of: {', '.join(FORCE_KINDS)}")
+        if kind not in FORCE_KINDS:
+            from dyncli.expr import did_you_mean
+
+            raise ValueError(f"unknown force kind {kind!r}{did_you_mean(str(kind), FORCE_KINDS)}; "
+                             f"one of: {', '.join(FORCE_KINDS)}")
+    elif not hasattr(value, "kind"):
+        raise ValueError(f"a force is a mapping with 'kind' (one of: {', '.join(FORCE_KINDS)})")
+    return value
+
+
+Force = Annotated[
+    Annotated[Union[Uniform, Gravity, InverseSquare, Spring, Damper, Drag, Friction, Custom], Field(discriminator="kind")],
+    BeforeValidator(_check_kind),
+]
+
+
+class Particle(ProblemBase):
+    """A particle of mass m under the listed forces (problem II of §16)."""
+
+    type: Literal["particle"]
+    m: Num(gt=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
+    x0: Vec3(dim="length", description="initial position x(0) [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    v0: Vec3(dim="velocity", description="initial velocity v(0) [m/s]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    forces: list[Force] = Field(default_factory=list, description="force terms; none = a free particle")
+    t_end: Optional[Num(gt=0, dim="time", description="end of the integration [s]; default max(at)")] = None  # type: ignore[valid-type]
+    at: Times(description="times at which to report the state [s]; default [0, t_end]") = Field(default_factory=list)  # type: ignore[valid-type]
+
+    accuracy_methods = ("auto", "ode", "DOP853", "RK45", "Radau", "LSODA")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.t_end is None:
+            if not self.at:
+                raise InputError("give t_end or the times 'at' (t_end defaults to the largest time in 'at')", "t_end")
+            self.t_end = max(self.at)
+        for i, t in enumerate(self.at):
+            if t < 0 or t > self.t_end:
+                raise InputError(f"time {t:g} is outside [0, t_end = {self.t_end:g}]", f"at.{i}")
+        if not self.at:
+            self.at = [0.0, self.t_end]
+        for i, f in enumerate(self.forces):
+            if isinstance(f, InverseSquare) and math.dist(f.center, self.x0) == 0:
+                raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force)", f"forces.{i}.center")
+            if isinstance(f, Spring) and f.L > 0 and math.dist(f.anchor, self.x0) == 0:
+                raise InputError("x0 is at the spring's anchor while L > 0: the spring force has no direction", f"forces.{i}.anchor")
+        return self

@@ -1,0 +1,473 @@
+"""A particle under forces (notes §16, §18-§22) — numeric core (no pydantic).
+
+The equation of motion m a = F(t, x, v) (16.7) is built from the listed force
+terms and integrated with scipy's ``solve_ivp`` (DOP853 by default).  The
+state is augmented with the work of the non-conservative forces,
+
+    y = [x1, x2, x3, v1, v2, v3, W_nc],   dW_nc/dt = F_nc . v     (20.3)
+
+so that W_nc is integrated along the solution and the energy equation (20.4)
+E - E1 = W_nc becomes a built-in accuracy check (``energy_residual``).
+
+Conservative terms (their potential is in V, 20.5): gravity near the earth
+(V = m g x3, 19.23), inverse-square gravity (V = -m g R0²/R, 19.18, 19.20b),
+linear springs (V = k (R - L)²/2, 19.26).  Every other term (uniform, damper,
+drag, friction, custom) is part of F̄ of (20.2) and its work is W_nc.
+
+Coulomb friction F_f = -mu N v/|v| (19.27) is discontinuous at v = 0.  Each
+sliding phase uses a reference direction d (the velocity direction at the
+start of the phase) and the continuation F_f = -mu N sign(v.d) v/|v|, which is
+smooth through a stop along a line; a terminal event at v.d = 0 ends the
+phase.  There, if the speed is (numerically) zero the static condition
+|F_other| <= mu N decides between sticking (the particle stays at rest, as
+long as the condition holds) and slipping on in the direction of F_other;
+otherwise the velocity merely turned through 90° and a new phase starts with
+the new direction.  No chattering and no division by zero.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError, NumericalError
+from dyncli.result import Result, Series, SolveOptions
+
+SYMBOLS = {
+    "x": "x", "v": "v", "a": "a", "T": "T", "V": "V", "E": "E", "W_nc": "W̄",
+    "H_O": "H_O", "energy_residual": "max|E−E₁−W̄|", "t_rest": "t_rest",
+}
+UNITS = {
+    "x": "m", "v": "m/s", "a": "m/s²", "T": "J", "V": "J", "E": "J", "W_nc": "J",
+    "H_O": "kg·m²/s", "energy_residual": "J", "t_rest": "s",
+}
+ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+EPS = np.finfo(float).eps
+MAX_PHASES = 20000
+
+
+class Forces:
+    """The force terms of a problem compiled into numpy-friendly pieces.
+
+    Vectors are handled as arrays of shape (3,) or (3, n)."""
+
+    def __init__(self, p):
+        self.m = m = float(p.m)
+        self.uniform = np.zeros(3)
+        self.weight = 0.0            # m g for each gravity term
+        self.inv: list[tuple[np.ndarray, float, float]] = []      # (centre, m g R0², R0)
+        self.springs: list[tuple[np.ndarray, float, float]] = []  # (anchor, k, L)
+        self.c_lin = 0.0             # dampers + linear drag
+        self.c_quad = 0.0            # quadratic drag
+        self.muN = 0.0               # sum of mu N over friction terms
+        self.custom: list[tuple] = []
+        self.kinds: list[str] = []
+        for f in p.forces:
+            k = f.kind
+            self.kinds.append(k)
+            if k == "uniform":
+                self.uniform = self.uniform + np.asarray(f.F, float)
+            elif k == "gravity":
+                self.weight += m * p.g
+            elif k == "inverse-square":
+                g = p.g if f.g is None else f.g
+                self.inv.append((np.asarray(f.center, float), m * g * f.R0 ** 2, f.R0))
+            elif k == "spring":
+                self.springs.append((np.asarray(f.anchor, float), float(f.k), float(f.L)))
+            elif k == "damper":
+                self.c_lin += f.c
+            elif k == "drag":
+                if f.power == 1:
+                    self.c_lin += f.c
+                else:
+                    self.c_quad += f.c
+            elif k == "friction":
+                self.muN += f.mu * f.N
+            elif k == "custom":
+                self.custom.append(tuple(f.F))
+            else:  # pragma: no cover - the model's union forbids it
+                raise InputError(f"unknown force kind {k!r}", "forces")
+        self.time_dependent = any("t" in e.variables for F in self.custom for e in F)
+
+    # -- forces -------------------------------------------------------------
+    def conservative(self, x):
+        """Gravity + inverse-square + springs (position only)."""
+        F = np.zeros_like(x, dtype=float)
+        if self.weight:
+            F[2] = F[2] - self.weight
+        for c, mu, _ in self.inv:
+            r = x - _col(c, x)
+            R = np.sqrt(np.sum(r * r, axis=0))
+            F = F - mu * r / R ** 3
+        for a, k, L in self.springs:
+            r = x - _col(a, x)
+            if L == 0.0:
+                F = F - k * r
+            else:
+                R = np.sqrt(np.sum(r * r, axis=0))
+                F = F - k * (R - L) * r / R
+        return F
+
+    def nonconservative(self, t, x, v):
+        """Uniform, damper, drag and custom terms (everything except friction)."""
+        F = _col(self.uniform, x) * np.ones_like(x)
+        if self.c_lin:
+            F = F - self.c_lin * v
+        if self.c_quad:
+            F = F - self.c_quad * np.sqrt(np.sum(v * v, axis=0)) * v
+        if self.custom:
+            env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}
+            for comps in self.custom:
+                F = F + np.stack([e.evaluate(**env) for e in comps])
+        return F
+
+    def other(self, t, x):
+        """All forces except friction, at rest (v = 0): the static condition."""
+        v = np.zeros_like(x)
+        return self.conservative(x) + self.nonconservative(t, x, v)
+
+    def potential(self, x):
+        """V of the conservative terms (19.23, 19.20b, 19.26b)."""
+        V = np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
+        if self.weight:
+            V = V + self.weight * x[2]
+        for c, mu, _ in self.inv:
+            r = x - _col(c, x)
+            V = V - mu / np.sqrt(np.sum(r * r, axis=0))
+        for a, k, L in self.springs:
+            r = x - _col(a, x)
+            V = V + 0.5 * k * (np.sqrt(np.sum(r * r, axis=0)) - L) ** 2
+        return V
+
+
+def _col(c, x):
+    return c if np.ndim(x) == 1 else c[:, None]
+
+
+# ---------------------------------------------------------------------------
+# phases of the motion
+
+
+class OdePhase:
+    def __init__(self, t0, t1, sol, rhs, steps_t, steps_y):
+        self.t0, self.t1, self.sol, self.rhs = t0, t1, sol, rhs
+        self.steps_t, self.steps_y = steps_t, steps_y
+
+    def state(self, t):
+        y = self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
+        return y
+
+
+class RestPhase:
+    def __init__(self, t0, t1, x, W):
+        self.t0, self.t1, self.x, self.W = t0, t1, np.asarray(x, float), float(W)
+
+    def state(self, t):
+        return np.concatenate([self.x, np.zeros(3), [self.W]])
+
+
+class Trajectory:
+    def __init__(self, phases, notes, nfev):
+        self.phases = phases
+        self.notes = notes      # list of (kind, t, info) for stops/slips
+        self.nfev = nfev
+
+    def phase_at(self, t):
+        """The first phase whose interval [t0, t1] contains t."""
+        import bisect
+
+        starts = self._starts if hasattr(self, "_starts") else [ph.t0 for ph in self.phases]
+        self._starts = starts
+        i = max(bisect.bisect_left(starts, t) - 1, 0)
+        for ph in self.phases[i:]:
+            if ph.t0 <= t <= ph.t1:
+                return ph
+        return self.phases[-1]
+
+    def states(self, times):
+        out = []
+        for t in times:
+            ph = self.phase_at(t)
+            out.append((ph, ph.state(t)))
+        return out
+
+
+def _ode_method(p) -> str:
+    m = p.accuracy.method
+    return "DOP853" if m in ("auto", "ode") else m
+
+
+def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory:
+    from scipy.integrate import solve_ivp
+
+    rtol = max(rtol, 100 * EPS * 1.0001)
+    m = F.m
+    t_end = float(p.t_end)
+    t = 0.0
+    y = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
+    phases: list = []
+    notes: list = []
+    nfev = 0
+    vscale = float(np.linalg.norm(y[3:6]))
+
+    def make_rhs(d):
+        muN = F.muN
+
+        def rhs(t, y):
+            x, v = y[0:3], y[3:6]
+            Fnc = F.nonconservative(t, x, v)
+            if muN:
+                s = math.sqrt(float(v @ v))
+                if s > 0.0:
+                    sg = 1.0 if float(v @ d) >= 0.0 else -1.0
+                    Fnc = Fnc - (muN * sg / s) * v
+                else:
+                    Fnc = Fnc - muN * d
+            Ftot = F.conservative(x) + Fnc
+            dy = np.empty(7)
+            dy[0:3] = v
+            dy[3:6] = Ftot / m
+            dy[6] = float(Fnc @ v)
+            return dy
+
+        return rhs
+
+    if t_end == 0.0:
+        rhs = make_rhs(np.zeros(3))
+        phases.append(OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy()))
+        return Trajectory(phases, notes, 0)
+
+    for _ in range(MAX_PHASES):
+        d = None
+        speed = float(np.linalg.norm(y[3:6]))
+        vscale = max(vscale, speed)
+        v_tol = 10.0 * (atol + rtol * vscale)
+        if F.muN and speed <= v_tol:
+            y[3:6] = 0.0
+            Fo = F.other(t, y[0:3])
+            nFo = float(np.linalg.norm(Fo))
+            if not np.isfinite(nFo):
+                raise NumericalError(f"the force is not finite at t = {t:g}, x = {y[0:3].tolist()}")
+            # static condition |F_other| <= mu N, decided within the tolerance
+            # (a marginal case would otherwise creep at roundoff level)
+            if nFo <= F.muN * (1.0 + 10.0 * rtol):
+                t_free = _release_time(F, t, t_end, y[0:3]) if F.time_dependent else None
+                t1 = t_end if t_free is None else t_free
+                phases.append(RestPhase(t, t1, y[0:3], y[6]))
+                notes.append(("stick", t, nFo))
+                if t_free is None:
+                    break
+                t = t_free
+                Fo = F.other(t, y[0:3])
+                nFo = float(np.linalg.norm(Fo))
+                notes.append(("release", t, nFo))
+            elif phases:
+                notes.append(("slip", t, nFo))
+            d = Fo / nFo
+        elif F.muN:
+            d = y[3:6] / speed
+        else:
+            d = np.zeros(3)
+        rhs = make_rhs(d)
+        events = None
+        if F.muN:
+            dd = d.copy()
+
+            def ev(t, y, dd=dd):
+                return float(y[3:6] @ dd)
+
+            ev.terminal = True
+            ev.direction = -1
+            events = [ev]
+        try:
+            sol = solve_ivp(rhs, (t, t_end), y, method=method, rtol=rtol, atol=atol,
+                            dense_output=True, events=events)
+        except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
+            raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
+        nfev += sol.nfev
+        if sol.status == -1:
+            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
+                                 + _singularity_hint(F, sol.y[0:3, -1]))
+        if not np.all(np.isfinite(sol.y)):
+            bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
+            raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
+                                 "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
+        vscale = max(vscale, float(np.max(np.linalg.norm(sol.y[3:6], axis=0))))
+        if sol.status == 1 and sol.t_events[0].size:
+            te = float(sol.t_events[0][0])
+            ye = np.array(sol.y_events[0][0], float)
+            steps_t = np.append(sol.t, te) if sol.t[-1] < te else sol.t
+            steps_y = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
+            phases.append(OdePhase(t, te, sol.sol, rhs, steps_t, steps_y))
+            t, y = te, ye
+            if te >= t_end:
+                break
+            continue
+        phases.append(OdePhase(t, float(sol.t[-1]), sol.sol, rhs, sol.t, sol.y))
+        break
+    else:
+        raise NumericalError(f"friction: more than {MAX_PHASES} stick/slip phases before t_end; "
+                             "the motion chatters at this tolerance")
+    return Trajectory(phases, notes, nfev)
+
+
+def _singularity_hint(F: Forces, x) -> str:
+    for c, _, R0 in F.inv:
+        R = float(np.linalg.norm(x - c))
+        if R < 1e-3 * R0:
+            return f" (the particle falls into the centre of the inverse-square field: R = {R:.3g} m)"
+    for a, _, L in F.springs:
+        R = float(np.linalg.norm(x - a))
+        if L > 0 and R < 1e-3 * L:
+            return f" (the particle reaches the anchor of a spring with free length L > 0: R = {R:.3g} m)"
+    return ""
+
+
+def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
+    """First time after t0 at which |F_other(t, x)| exceeds mu N (the particle
+    breaks free); None if it stays stuck until t_end.  Samples the interval
+    and refines the first crossing with brentq."""
+    from scipy.optimize import brentq
+
+    def h(t):
+        return float(np.linalg.norm(F.other(t, x))) - F.muN
+
+    ts = np.linspace(t0, t_end, 4097)
+    prev = ts[0]
+    for tt in ts[1:]:
+        if h(tt) > 0.0:
+            if h(prev) > 0.0:
+                return float(prev)
+            return float(brentq(h, prev, tt, xtol=1e-14 * max(1.0, abs(tt)), rtol=4 * EPS))
+        prev = tt
+    return None
+
+
+# ---------------------------------------------------------------------------
+
+
+def solve(p, options: SolveOptions | None = None) -> Result:
+    F = Forces(p)
+    method = _ode_method(p)
+    rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
+    traj = integrate(p, F, rtol, atol, method)
+    times = [float(t) for t in p.at]
+    m = F.m
+
+    xs, vs, accs, Ts, Vs, Es, Ws, Hs = [], [], [], [], [], [], [], []
+    y0 = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
+    E1 = 0.5 * m * float(y0[3:6] @ y0[3:6]) + float(F.potential(y0[0:3]))
+    for t, (ph, y) in zip(times, traj.states(times)):
+        x, v, W = y[0:3], y[3:6], float(y[6])
+        a = np.zeros(3) if isinstance(ph, RestPhase) else ph.rhs(t, y)[3:6]
+        T = 0.5 * m * float(v @ v)
+        V = float(F.potential(x))
+        xs.append(_vec(x))
+        vs.append(_vec(v))
+        accs.append(_vec(a))
+        Ts.append(T)
+        Vs.append(V)
+        Es.append(T + V)
+        Ws.append(W)
+        Hs.append(_vec(m * np.cross(x, v)))
+
+    # energy residual (20.4) over every accepted step and the requested times
+    resid = 0.0
+    scale = abs(E1)
+    for ph in traj.phases:
+        if isinstance(ph, OdePhase):
+            Y = ph.steps_y
+            T = 0.5 * m * np.sum(Y[3:6] ** 2, axis=0)
+            V = F.potential(Y[0:3])
+            E = T + V
+            resid = max(resid, float(np.max(np.abs(E - E1 - Y[6]))))
+            scale = max(scale, float(np.max(np.abs(T))), float(np.max(np.abs(V))), float(np.max(np.abs(Y[6]))))
+    for E, W in zip(Es, Ws):
+        resid = max(resid, abs(E - E1 - W))
+
+    res = Result(
+        {"x": xs, "v": vs, "a": accs, "T": Ts, "V": Vs, "E": Es, "W_nc": Ws, "H_O": Hs,
+         "energy_residual": resid},
+        method=f"ode:{method}",
+        equations=_equations(F),
+        symbols=SYMBOLS,
+        units=UNITS,
+        series=[Series("t", times, ["x", "v", "a", "T", "V", "E", "W_nc", "H_O"])],
+    )
+    res.extra["nfev"] = traj.nfev
+    res.extra["energy_scale"] = scale
+
+    # friction: stops, sticking, slipping
+    if F.muN:
+        t_rest = None
+        slips = [t for kind, t, _ in traj.notes if kind == "slip"]
+        if slips:
+            when = f"at t = {slips[0]:.6g} s" if len(slips) == 1 else \
+                f"{len(slips)} times (first at t = {slips[0]:.6g} s, last at t = {slips[-1]:.6g} s)"
+            res.warn(f"friction: the particle stops momentarily {when} and slips on "
+                     f"(|other forces| > mu N = {F.muN:.6g} N there)")
+        for kind, t, nFo in traj.notes:
+            if kind == "stick":
+                t_rest = t
+                res.warn(f"friction: the particle comes to rest at t = {t:.6g} s and sticks "
+                         f"(|other forces| = {nFo:.6g} N <= mu N = {F.muN:.6g} N)")
+            elif kind == "release":
+                t_rest = None
+                res.warn(f"friction: the particle breaks free at t = {t:.6g} s "
+                         f"(|other forces| = {nFo:.6g} N > mu N = {F.muN:.6g} N)")
+        res.results["t_rest"] = t_rest
+        if t_rest is None:
+            res.warn("t_rest is null: the particle does not come to rest for good before t_end")
+
+    # inverse-square: below R0?
+    for c, _, R0 in F.inv:
+        Rmin = math.inf
+        for ph in traj.phases:
+            Y = ph.steps_y if isinstance(ph, OdePhase) else ph.x[:, None]
+            r = Y[0:3] - c[:, None]
+            Rmin = min(Rmin, float(np.min(np.sqrt(np.sum(r * r, axis=0)))))
+        if Rmin < R0 * (1 - 1e-9):
+            res.warn(f"the path passes inside R0 = {R0:g} m of the inverse-square centre "
+                     f"(R_min = {Rmin:.6g} m): below the surface of the attracting body")
+
+    if resid > 1e3 * (rtol * scale + atol) and resid > 1e-9 * scale:
+        res.warn(f"energy residual {resid:.3g} J is large for rtol = {rtol:g} (energy scale {scale:.3g} J): "
+                 "tighten accuracy.rtol")
+
+    # error estimate: a second solve, tighter (estimate: true) or looser (default)
+    if p.t_end > 0:
+        if p.accuracy.estimate:
+            r2, a2 = max(rtol / 1000.0, 100 * EPS * 1.0001), atol / 1000.0
+        else:
+            r2, a2 = min(rtol * 10.0, 1e-3), atol * 10.0
+        try:
+            traj2 = integrate(p, F, r2, a2, method)
+            err = 0.0
+            for (_, y1), (_, y2) in zip(traj.states(times), traj2.states(times)):
+                err = max(err, float(np.max(np.abs(y1[0:3] - y2[0:3]))))
+            res.error_estimate = err
+        except NumericalError:
+            res.error_estimate = None
+            res.warn("no error estimate: the comparison solve failed")
+    else:
+        res.error_estimate = 0.0
+    return res
+
+
+def _vec(a) -> list[float]:
+    return [float(c) + 0.0 for c in np.asarray(a, float)]
+
+
+def _equations(F: Forces) -> list[str]:
+    eq = ["16.7", "18.6"]
+    if F.weight:
+        eq.append("19.23")
+    if F.inv:
+        eq += ["19.18", "19.20b"]
+    if F.springs:
+        eq += ["19.26a", "19.26b"]
+    if F.muN:
+        eq.append("19.27")
+    eq += ["20.3", "20.4", "20.5", "21.3"]
+    return eq
