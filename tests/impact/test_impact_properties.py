@@ -98,6 +98,10 @@ def test_general(mA, mB, vA1, vB1, n, eta, phi):
         assert allP == r["admissible"], (r["phi1"], phi, r["phi2"], [r[k] for k in ("P1", "P2", "P3", "P4")])
         assert r["admissible"] == (phi >= float(R["phi1"]) and phi <= float(R["phi2"]))
         for k in ("P1", "P2", "P3"):
+            # P2 is the sign of -F.n = |F| cos(phi): at |phi| = pi/2 it is a
+            # round-off-sized number whose sign is not defined in floats
+            if k == "P2" and abs(abs(phi) - math.pi / 2) <= margin:
+                continue
             assert r[k] == R[k], k
         if r["admissible"]:
             assert r["separation_speed"] >= 0
