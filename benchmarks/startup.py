@@ -5,6 +5,7 @@ Prints the median wall time of N fresh interpreter runs for:
   * python -c "import numpy, pydantic, yaml, typer, rich"   (the bare-import floor)
   * python -m dyncli --version                      (target: no numpy/scipy)
   * python -m dyncli solve <case-1 file>            (target: <= 1.3x bare-import floor)
+  * python -m dyncli solve <case-1 file> --plot out.png   (the cost of matplotlib + drawing)
   * python -m dyncli solve <each example type>      (one per type, if present)
 and which heavy modules each dyncli run imported.
 
@@ -18,6 +19,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -74,6 +76,10 @@ def main() -> None:
     rows.append(("dyncli --version", timed([py, "-m", "dyncli", "--version"], n), imported(["--version"])))
     case1 = "problems/rectilinear/case1-constant-acceleration.yaml"
     rows.append(("dyncli solve case-1 (closed form)", timed([py, "-m", "dyncli", "solve", case1], n), imported(["solve", case1])))
+    with tempfile.TemporaryDirectory() as tmp:
+        out = str(Path(tmp) / "plot.png")
+        rows.append(("dyncli solve case-1 --plot out.png", timed([py, "-m", "dyncli", "solve", case1, "--plot", out], n),
+                     imported(["solve", case1, "--plot", out])))
     for t, f in examples_per_type().items():
         rel = str(f.relative_to(ROOT))
         if rel == case1:
