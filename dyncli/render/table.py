@@ -162,20 +162,10 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     if n_rows:
         console.print(scalars)
 
+    width = max(40, getattr(console, "width", 80) or 80)
     for s in result.series:
-        t = RTable(title=s.title, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
-        t.add_column(s.index_name, justify="right")
-        for n in s.names:
-            sym = result.symbols.get(n, n)
-            unit = unit_names.get(n)
-            t.add_column(sym + (f" [{unit}]" if unit else ""), justify="right")
-        for i, iv in enumerate(s.index):
-            row = [fmt_num(iv, digits)]
-            for n in s.names:
-                vals = values.get(n)
-                row.append(fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "")
-            t.add_row(*row)
-        console.print(t)
+        for t in series_tables(s, values, unit_names, result.symbols, digits, width):
+            console.print(t)
 
     for name, val in deferred:
         if isinstance(val, list):
@@ -204,6 +194,48 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     for w in result.warnings:
         console.print(Text("warning: " + w, style="yellow"))
     console.print()
+
+
+def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int, width: int) -> list:
+    """One or more rich tables for a Series: columns are packed greedily so
+    each table fits ``width`` (the index column repeats in each); cells never
+    wrap in the middle of a number."""
+    from rich import box
+    from rich.table import Table as RTable
+
+    idx_cells = [fmt_num(iv, digits) for iv in s.index]
+    idx_w = max([len(s.index_name)] + [len(c) for c in idx_cells])
+    cols = []
+    for n in s.names:
+        sym = symbols.get(n, n)
+        unit = unit_names.get(n)
+        head = sym + (f" [{unit}]" if unit else "")
+        vals = values.get(n)
+        cells = [fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "" for i in range(len(s.index))]
+        w = max([len(head)] + [len(c) for c in cells])
+        cols.append((head, cells, w))
+    groups: list[list] = []
+    cur: list = []
+    used = idx_w + 2
+    for c in cols:
+        if cur and used + c[2] + 3 > width:
+            groups.append(cur)
+            cur, used = [], idx_w + 2
+        cur.append(c)
+        used += c[2] + 3
+    if cur:
+        groups.append(cur)
+    tables = []
+    for gi, group in enumerate(groups):
+        title = s.title if gi == 0 else (f"{s.title} (continued)" if s.title else None)
+        t = RTable(title=title, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+        t.add_column(s.index_name, justify="right", no_wrap=True)
+        for head, _, _ in group:
+            t.add_column(head, justify="right", no_wrap=True)
+        for i, ic in enumerate(idx_cells):
+            t.add_row(ic, *[cells[i] for _, cells, _ in group])
+        tables.append(t)
+    return tables
 
 
 def render_view(view, digits: int = DEFAULT_DIGITS):
