@@ -4,8 +4,9 @@ v(t), with the answered queries marked.
 The curves come from the topic's own solver: the problem is solved again with
 a grid of ``{t: T}`` queries (one solve, whatever the case: closed form,
 quadrature or ODE), so nothing here re-derives the motion.  The time span
-runs from t1 to a little past the last answered query (10 s when there is
-none, never beyond t1 + t_max).
+runs from t1 (or an earlier {t: T} query) to a little past the last answered
+query (10 s, or t_max if shorter, when there is none).  The number of
+points adapts to the cost of the solver's route (a coarse pass measures it).
 """
 
 from __future__ import annotations
@@ -13,7 +14,9 @@ from __future__ import annotations
 from dyncli.errors import DyncliError
 from dyncli.result import Line, Plot
 
-POINTS = 301
+POINTS = 301       # at most, on a fine grid
+COARSE = 31       # first pass, to measure the cost of a point
+BUDGET = 2.0      # seconds for the fine pass
 DEFAULT_SPAN = 10.0
 
 
@@ -29,25 +32,47 @@ def _span(p, answered) -> tuple[float, float]:
     return lo, hi
 
 
-def _grid(p, lo, hi):
-    """[(t, s, v)] from the solver at POINTS times in [lo, hi] (the points it
-    cannot reach, e.g. after a blow-up, are left out)."""
+def _solve_at(p, ts):
+    """[find entries] of the solver for {t: T} queries at ``ts``; when the
+    whole grid fails (e.g. the motion blows up before the end), the longest
+    prefix of the grid that solves (found by bisection)."""
     from dyncli.topics.rectilinear.model import Query
     from dyncli.topics.rectilinear.solver import solve
 
-    ts = [lo + (hi - lo) * i / (POINTS - 1) for i in range(POINTS)]
+    def run(times):
+        return solve(p.model_copy(update={"find": [Query(t=t) for t in times]})).results["find"]
+
     try:
-        found = solve(p.model_copy(update={"find": [Query(t=t) for t in ts]})).results["find"]
+        return run(ts)
     except DyncliError:
-        # e.g. the motion blows up before hi: keep the part the solver reaches
-        found = []
-        for t in ts:
-            try:
-                q = solve(p.model_copy(update={"find": [Query(t=t)]})).results["find"][0]
-            except DyncliError:
-                break
-            found.append(q)
-    return [(q["t"], q["s"], q["v"]) for q in found if q.get("reached") and q["s"] is not None]
+        pass
+    good, lo, hi = [], 0, len(ts) - 1          # ts[:lo] known good, ts[:hi+1] known bad
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        try:
+            good = run(ts[:mid])
+            lo = mid
+        except DyncliError:
+            hi = mid - 1
+    return good
+
+
+def _grid(p, lo, hi):
+    """[(t, s, v)] from the solver on a grid of times in [lo, hi]: COARSE
+    points first, then up to POINTS as far as the measured cost per point
+    allows (BUDGET seconds), so a slow route still plots quickly."""
+    import time
+
+    def times(n):
+        return [lo + (hi - lo) * i / (n - 1) for i in range(n)]
+
+    t0 = time.perf_counter()
+    found = _solve_at(p, times(COARSE))
+    per_point = (time.perf_counter() - t0) / COARSE
+    n = int(min(POINTS, BUDGET / per_point)) if per_point > 0 else POINTS
+    if n > 2 * COARSE and len(found) == COARSE:
+        found = _solve_at(p, times(n))
+    return [(q["t"], q["s"], q["v"]) for q in found if q.get("reached") and q.get("s") is not None]
 
 
 def plots(problem, result) -> list[Plot]:
