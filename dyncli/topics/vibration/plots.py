@@ -50,8 +50,11 @@ def _time_span(p, R) -> float:
     wn, zeta = R["omega_n"], R["zeta"]
     period = 2 * math.pi / wn
     T = 5 * period
-    if zeta > 0:
-        T = max(T, min(4.0 / (zeta * wn), 40 * period))
+    _, slow, _ = cf.roots(wn, zeta)            # the slowest decay rate (ζωₙ, or λ₁ when ζ ≥ 1)
+    if zeta >= 1:
+        T = max(T, 4.0 / slow)                 # no oscillation: show the creep back to L
+    elif zeta > 0:
+        T = max(T, min(4.0 / slow, 40 * period))
     if p.base is not None and p.base.omega > 0:
         T = max(T, min(5 * 2 * math.pi / p.base.omega, 40 * period))
     return T
@@ -62,7 +65,7 @@ def _response(p, R) -> Plot:
     x0 = L if p.x0 is None else p.x0
     s0, Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
     T = _time_span(p, R)
-    fastest = max(wn, Om, R["omega_d"] or 0.0)
+    fastest = max(wn, Om)
     n = int(min(MAX_POINTS, max(MIN_POINTS, PER_PERIOD * fastest * T / (2 * math.pi))))
     t = np.linspace(0.0, T, n)
     with np.errstate(all="ignore"):
@@ -84,7 +87,9 @@ def _response(p, R) -> Plot:
         if Om > 0 and s0 != 0:
             lines.append(Line(ts, (L + s0 * np.sin(Om * t)).tolist(), "base L + s(t) (17.26)", style=":"))
         g = R.get("g")
-        if g is not None:
+        if Om == 0 or s0 == 0:
+            title += ": the base does not move (s0·sin(ωt) ≡ 0)"
+        elif g is not None:
             band = abs(s0) * g
             hlines += [(L + band, "steady state L ± s0·g (17.32)"), (L - band, None)]
             B = _transient_amplitude(p, R, x0)
