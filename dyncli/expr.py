@@ -81,7 +81,12 @@ class ExpressionError(InputError):
 
 def did_you_mean(word: str, candidates: Iterable[str]) -> str:
     """``" (did you mean 'x'?)"`` or ``""``."""
-    close = difflib.get_close_matches(word, sorted(set(candidates)), n=1, cutoff=0.6)
+    cands = sorted(set(candidates))
+    close = difflib.get_close_matches(word, cands, n=1, cutoff=0.6)
+    if not close:  # case slips: vb -> vB, Omega -> omega
+        lower = {c.lower(): c for c in cands}
+        hit = difflib.get_close_matches(word.lower(), sorted(lower), n=1, cutoff=0.6)
+        close = [lower[hit[0]]] if hit else []
     return f" (did you mean '{close[0]}'?)" if close else ""
 
 

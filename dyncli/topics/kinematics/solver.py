@@ -1,0 +1,363 @@
+"""Kinematics of a point (notes §4, §5, §7, §8, §12) — numeric core.
+
+The coordinates are expressions in t; their exact first and second
+derivatives come from forward-mode automatic differentiation
+(:mod:`dyncli.topics.kinematics.jet`, no sympy on this path).  Every
+coordinate system is treated as a rotating basis with the general operator
+(11.4): the basis (e_R, e_θ, e_φ) of §12, (e_r, e_θ, e_3) of §7-§8, or the
+fixed e_i, with
+
+    x = x'_i e'_i,   v = δx/δt + ω×x,   a = δv/δt + ω×v,
+
+which reproduces (7.14), (7.16c), the summary of §8 and the table of §12.
+Tangential-normal quantities follow §5: e_t = v/|v|, a_t = a·e_t,
+a_n = |v×a|/|v| = ṡ²/ρ, e_n = ((v×a)×v)/(|v×a||v|).  The distance (4.5) is
+∫|v| dt by adaptive Gauss–Kronrod quadrature (G7/K15, vectorised).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from dyncli.errors import InputError
+from dyncli.result import Result, Series, SolveOptions
+from dyncli.topics.kinematics import frame
+from dyncli.topics.kinematics.jet import jet
+
+#: a path is taken as straight at an instant (rho = null, e_n = null,
+#: a_n = 0) when |v×a| <= STRAIGHT_TOL·|v||a|, i.e. when the angle between v
+#: and a is below 1e-12 rad: a_n is then below 1e-12·|a|, under the rounding
+#: noise of the components (each carries ~1e-16 relative error of its
+#: largest term).
+STRAIGHT_TOL = 1e-12
+
+BASIS_LABELS = {
+    "cartesian": ("e₁", "e₂", "e₃"),
+    "polar": ("e_r", "e_θ", "e₃"),
+    "cylindrical": ("e_r", "e_θ", "e₃"),
+    "spherical": ("e_R", "e_θ", "e_φ"),
+}
+
+EQUATIONS = {
+    "cartesian": ["4.2", "4.3"],
+    "polar": ["7.3", "7.14", "7.16c"],
+    "cylindrical": ["8.1", "8.2", "7.14", "7.16c"],
+    "spherical": ["12.1", "12.2", "12.8", "11.4"],
+}
+
+SYMBOLS = {
+    "x": "x", "v": "v", "a": "a", "speed": "|v|", "v_basis": "v (own basis)", "a_basis": "a (own basis)",
+    "a_t": "a_t", "a_n": "a_n", "rho": "ρ", "e_t": "e_t", "e_n": "e_n", "distance": "D₂/₁",
+    "F": "F = m a", "F_basis": "F (own basis)",
+}
+UNITS = {
+    "x": "m", "v": "m/s", "a": "m/s²", "speed": "m/s", "v_basis": "m/s", "a_basis": "m/s²",
+    "a_t": "m/s²", "a_n": "m/s²", "rho": "m", "distance": "m", "F": "N", "F_basis": "N",
+}
+
+
+# ---------------------------------------------------------------------------
+# the coordinate systems as rotating bases (works on numpy arrays and on sympy)
+
+
+def frame_rows(coords: str, J: dict, m) -> dict:
+    """Basis and δ/δt rows for a coordinate system.
+
+    ``J`` maps each coordinate name to ``(q, q̇, q̈)``; ``m`` is a module with
+    ``sin``/``cos`` (numpy or sympy).  Returns a dict with ``basis`` (the
+    three base vectors in Cartesian components) and the components on that
+    basis of ``omega``, ``x``, ``dx`` (δx/δt), ``dv`` (δv/δt)."""
+    if coords == "cartesian":
+        (x1, d1, a1), (x2, d2, a2), (x3, d3, a3) = J["x1"], J["x2"], J["x3"]
+        z = 0 * x1
+        return {
+            "basis": ((1, 0, 0), (0, 1, 0), (0, 0, 1)),
+            "omega": (z, z, z), "x": (x1, x2, x3), "dx": (d1, d2, d3), "dv": (a1, a2, a3),
+        }
+    if coords in ("polar", "cylindrical"):
+        r, rd, rdd = J["r"]
+        th, thd, thdd = J["theta"]
+        x3, x3d, x3dd = J.get("x3", (0 * r, 0 * r, 0 * r))
+        c, s = m.cos(th), m.sin(th)
+        z = 0 * r
+        return {
+            # e_r, e_θ (7.4a, 7.5a), e_3
+            "basis": ((c, s, z), (-s, c, z), (z, z, z + 1)),
+            "omega": (z, z, thd),                          # (10.10)
+            "x": (r, z, x3),                               # (8.1)
+            "dx": (rd, z, x3d),
+            "dv": (rdd, rd * thd + r * thdd, x3dd),        # δ/δt of (ṙ, rθ̇, ẋ3)
+        }
+    if coords == "spherical":
+        R, Rd, Rdd = J["R"]
+        th, thd, thdd = J["theta"]
+        ph, phd, phdd = J["phi"]
+        ct, st, cp, sp = m.cos(th), m.sin(th), m.cos(ph), m.sin(ph)
+        z = 0 * R
+        return {
+            # e_R, e_θ, e_φ (12.2a-c) with e_r = cosθ e1 + sinθ e2
+            "basis": ((cp * ct, cp * st, sp), (-st, ct, z), (-sp * ct, -sp * st, cp)),
+            "omega": (thd * sp, -phd, thd * cp),           # (12.8)
+            "x": (R, z, z),                                # (12.1)
+            "dx": (Rd, z, z),
+            # δ/δt of v = (Ṙ, R θ̇ cosφ, R φ̇)
+            "dv": (Rdd, Rd * thd * cp + R * thdd * cp - R * thd * phd * sp, Rd * phd + R * phdd),
+        }
+    raise AssertionError(coords)  # pragma: no cover
+
+
+def to_cartesian(comps, basis):
+    """Σ comps_i e'_i with the base vectors in Cartesian components."""
+    return tuple(sum(comps[i] * basis[i][k] for i in range(3)) for k in range(3))
+
+
+def motion(coords: str, position: dict, t: np.ndarray) -> dict:
+    """Numeric rows of the frame table and the Cartesian x, v, a at times t
+    (non-finite entries where a derivative does not exist)."""
+    with np.errstate(all="ignore"):
+        return _motion(coords, position, t)
+
+
+def _motion(coords: str, position: dict, t: np.ndarray) -> dict:
+    from dyncli.topics.kinematics.model import COORDINATES
+
+    J = {}
+    for name in COORDINATES[coords]:
+        e = position.get(name)
+        J[name] = jet(e, t) if e is not None else (np.zeros_like(t), np.zeros_like(t), np.zeros_like(t))
+    rows = frame_rows(coords, J, np)
+    rows = {k: tuple(np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in v) if k != "basis" else
+            tuple(tuple(np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in b) for b in v)
+            for k, v in rows.items()}
+    w, x, dx, dv = rows["omega"], rows["x"], rows["dx"], rows["dv"]
+    wx = frame.cross(w, x)
+    v = frame.add(dx, wx)                     # (11.4)
+    wv = frame.cross(w, v)
+    a = frame.add(dv, wv)                     # (11.4) applied to v
+    rows.update({"wx": wx, "v": v, "wv": wv, "a": a})
+    B = rows["basis"]
+    rows["x_cart"] = to_cartesian(x, B)
+    rows["v_cart"] = to_cartesian(v, B)
+    rows["a_cart"] = to_cartesian(a, B)
+    return rows
+
+
+def _times(ts) -> str:
+    shown = ", ".join(f"{t:g}" for t in ts[:6])
+    return shown + (f", … ({len(ts)} times)" if len(ts) > 6 else "")
+
+
+def solve(p, options: SolveOptions | None = None) -> Result:
+    options = options or SolveOptions()
+    coords = p.coordinates
+    times = [float(t) for t in p.at]
+    t = np.asarray(times, dtype=float)
+    res = Result({}, method="closed-form", equations=list(EQUATIONS[coords]), symbols=dict(SYMBOLS), units=dict(UNITS))
+    rows = motion(coords, p.position, t)
+    out, rest, straight, undefined = _per_time(rows, times)
+    res.results.update(out)
+    res.equations += ["5.3", "5.5", "5.14b"]
+    if undefined:
+        res.warn(f"the position or its derivatives are not finite at t = {_times(undefined)} "
+                 "(e.g. sqrt or log at 0, or a division by zero): those entries are null")
+    if rest:
+        res.warn(f"the point is at rest at t = {_times(rest)}: the tangent e_t is undefined, so "
+                 "e_t, e_n, a_t, a_n and rho are null there")
+    if straight:
+        res.warn(f"zero curvature at t = {_times(straight)} (straight path or inflection point, "
+                 f"|v×a| <= {STRAIGHT_TOL:g}·|v||a|): rho and e_n are null and a_n = 0 there")
+    if p.m is not None:
+        m = p.m
+        res.results["F"] = [None if a is None else [m * c for c in a] for a in out["a"]]
+        res.results["F_basis"] = [None if a is None else [m * c for c in a] for a in out["a_basis"]]
+        res.equations.append("16.1")
+    if p.distance is not None:
+        t1, t2 = p.distance
+        D, err, ok = distance(coords, p.position, t1, t2, p.accuracy.rtol, p.accuracy.atol)
+        res.results["distance"] = D
+        res.method = "quadrature"
+        res.error_estimate = err
+        res.equations.append("4.5")
+        if not ok:
+            res.warn(f"distance: the adaptive quadrature did not reach the requested tolerance "
+                     f"(estimated error {err:.3g}); the path may have many kinks or a singularity")
+    names = [["x", "v", "a", "speed"], ["v_basis", "a_basis"], ["a_t", "a_n", "rho"], ["e_t", "e_n"]]
+    titles = ["Cartesian components", f"components on ({', '.join(BASIS_LABELS[coords])})", "tangential and normal (§5)", "tangent and principal normal (Cartesian)"]
+    if p.m is not None:
+        names.append(["F", "F_basis"])
+        titles.append("force F = m a (Cartesian / own basis)")
+    if times:
+        res.series = [Series("t", times, n, title) for n, title in zip(names, titles)]
+    if coords != "cartesian" and times:
+        res.views = _views(coords, p, times, rows, options)
+    return res
+
+
+def _stack(comps, n):
+    return np.stack([np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in comps], axis=1) + 0.0
+
+
+def _rows_list(arr, ok):
+    vals = arr.tolist()
+    for i in np.flatnonzero(~ok):
+        vals[i] = None
+    return vals
+
+
+def _per_time(rows, times):
+    """Every per-time result, vectorised over the times.
+
+    §5 quantities are computed from the components on the orthonormal own
+    basis (rows of Q, Cartesian components), where the algebra is exact for
+    the book's examples; e_t and e_n are then returned in Cartesian
+    components."""
+    n = len(times)
+    if n == 0:
+        keys = ("x", "v", "a", "v_basis", "a_basis", "speed", "a_t", "a_n", "rho", "e_t", "e_n")
+        return {k: [] for k in keys}, [], [], []
+    X, V, A = (_stack(rows[k], n) for k in ("x_cart", "v_cart", "a_cart"))
+    VB, AB = _stack(rows["v"], n), _stack(rows["a"], n)
+    Q = np.stack([_stack(b, n) for b in rows["basis"]], axis=1)      # Q[i, j, :] = e'_j
+    fin = lambda M: np.all(np.isfinite(M.reshape(n, -1)), axis=1)    # noqa: E731
+    okx, okv, oka = fin(X), fin(V) & fin(VB), fin(A) & fin(AB)
+    okq = fin(Q)
+    with np.errstate(all="ignore"):
+        speed = np.linalg.norm(VB, axis=1)
+        et = VB / speed[:, None]
+        at = np.einsum("ij,ij->i", AB, et)
+        c = np.cross(VB, AB)
+        cn = np.linalg.norm(c, axis=1)
+        amag = np.linalg.norm(AB, axis=1)
+        an = cn / speed
+        rho = (speed / cn) * speed * speed         # |v|³/|v×a| without under/overflow of |v|³
+        en = np.cross(c / cn[:, None], et)         # ((v×a)×v)/(|v×a||v|), scaled first
+        en = en / np.linalg.norm(en, axis=1)[:, None]
+        et_c = np.einsum("ij,ijk->ik", et, Q) + 0.0
+        en_c = np.einsum("ij,ijk->ik", en, Q) + 0.0
+    okva = okv & oka & okq
+    moving = okva & (speed > 0)
+    is_straight = moving & (cn <= STRAIGHT_TOL * speed * amag)
+    curved = moving & ~is_straight
+    out = {
+        "x": _rows_list(X, okx), "v": _rows_list(V, okv), "a": _rows_list(A, oka),
+        "v_basis": _rows_list(VB, okv), "a_basis": _rows_list(AB, oka),
+        "speed": [float(s_) if ok else None for s_, ok in zip(speed, okv)],
+        "a_t": [float(x) if ok else None for x, ok in zip(at, moving)],
+        "a_n": [float(x) if c_ else (0.0 if s_ else None) for x, c_, s_ in zip(an, curved, is_straight)],
+        "rho": [float(x) if c_ and np.isfinite(x) else None for x, c_ in zip(rho, curved)],
+        "e_t": _rows_list(et_c, moving),
+        "e_n": _rows_list(en_c, curved & fin(en_c)),
+    }
+    undefined = [t for t, ok in zip(times, okx & okva) if not ok]
+    rest = [t for t, ok, s_ in zip(times, okva, speed) if ok and s_ == 0]
+    straight = [t for t, s_ in zip(times, is_straight) if s_]
+    return out, rest, straight, undefined
+
+
+# ---------------------------------------------------------------------------
+# distance traveled (4.5): vectorised adaptive Gauss–Kronrod G7/K15
+
+_XGK = np.array([0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+                 0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                 0.207784955007898467600689403773245, 0.000000000000000000000000000000000])
+_WGK = np.array([0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+                 0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+                 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+                 0.204432940075298892414161999234649, 0.209482141084727828012999174891714])
+_WG = np.array([0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+                0.381830050505118944950369775488975, 0.417959183673469387755102040816327])
+_NODES = np.concatenate([-_XGK[:-1], _XGK[::-1]])               # 15 nodes on [-1, 1]
+_WK = np.concatenate([_WGK[:-1], _WGK[::-1]])
+_WG15 = np.zeros(15)
+_WG15[[1, 3, 5, 13, 11, 9]] = np.concatenate([_WG[:3], _WG[:3]])
+_WG15[7] = _WG[3]
+
+
+def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, max_intervals: int = 20000):
+    """∫_a^b f by globally adaptive G7/K15 (f evaluated on arrays).
+    Returns (integral, error estimate = Σ|K15 − G7|, converged)."""
+    if b == a:
+        return 0.0, 0.0, True
+    lo = np.array([a])
+    hi = np.array([b])
+    done_val = 0.0
+    done_err = 0.0
+    while True:
+        c = 0.5 * (lo + hi)
+        h = 0.5 * (hi - lo)
+        x = c[:, None] + h[:, None] * _NODES[None, :]
+        y = f(x.ravel()).reshape(x.shape)
+        if not np.all(np.isfinite(y)):
+            bad = x[~np.isfinite(y)][0]
+            raise InputError(f"the speed is not finite at t = {bad:.6g} inside the distance interval "
+                             "(the position or its derivative is undefined there)", "distance")
+        K = (y @ _WK) * h
+        G = (y @ _WG15) * h
+        err = np.abs(K - G)
+        total = done_val + float(K.sum())
+        total_err = done_err + float(err.sum())
+        tol = max(atol, rtol * abs(total))
+        if total_err <= tol:
+            return total, total_err, True
+        # split the intervals that carry more than their share of the error
+        share = tol * (2 * h) / (b - a)
+        split = err > share
+        if not np.any(split):
+            split = err >= err.max()
+        done_val += float(K[~split].sum())
+        done_err += float(err[~split].sum())
+        if (2 * split.sum() + (~split).sum() > max_intervals) or np.any(h[split] <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0)):
+            return done_val + float(K[split].sum()), done_err + float(err[split].sum()), False
+        lo, hi, c = lo[split], hi[split], c[split]
+        lo, hi = np.concatenate([lo, c]), np.concatenate([c, hi])
+
+
+def distance(coords: str, position: dict, t1: float, t2: float, rtol: float, atol: float):
+    def speed(tt):
+        r = motion(coords, position, tt)
+        v = r["v"]   # components on an orthonormal basis: same length
+        return np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
+
+    return gauss_kronrod(speed, t1, t2, rtol, atol)
+
+
+# ---------------------------------------------------------------------------
+# frame tables (§12 layout): numeric per time, symbolic with --symbolic
+
+ROW_LABELS = [("ω", "omega"), ("x", "x"), ("δx/δt", "dx"), ("ω×x", "wx"), ("v", "v"),
+              ("δv/δt", "dv"), ("ω×v", "wv"), ("a", "a")]
+
+
+def _views(coords, p, times, rows, options):
+    basis = BASIS_LABELS[coords]
+    title = f"{coords} basis"
+    views = []
+    if options.symbolic:
+        views.append(symbolic_view(coords, p, title, basis))
+    views += frame.numeric_tables(title, times, [(lab, rows[key]) for lab, key in ROW_LABELS], basis)
+    return views
+
+
+def symbolic_view(coords, p, title, basis):
+    import sympy as sp
+
+    from dyncli import symbolic
+    from dyncli.topics.kinematics.model import COORDINATES
+
+    tsym = symbolic.symbol("t")
+    J = {}
+    for name in COORDINATES[coords]:
+        e = p.position.get(name)
+        q = frame.exact_sym(e) if e is not None else sp.Integer(0)
+        J[name] = (q, sp.diff(q, tsym), sp.diff(q, tsym, 2))
+    r = frame_rows(coords, J, sp)
+    w, x, dx, dv = r["omega"], r["x"], r["dx"], r["dv"]
+    wx = frame.cross(w, x)
+    v = frame.add(dx, wx)
+    wv = frame.cross(w, v)
+    a = frame.add(dv, wv)
+    vals = {"omega": w, "x": x, "dx": dx, "wx": wx, "v": v, "dv": dv, "wv": wv, "a": a}
+    params = sorted({n for e in p.position.values() for n in e.params_used})
+    note = "formulas in t" + (f"; params: {', '.join(f'{n} = {p.params[n]}' for n in params)}" if params else "")
+    return frame.symbolic_table(title + ", formulas", [(lab, vals[key]) for lab, key in ROW_LABELS], basis, note)

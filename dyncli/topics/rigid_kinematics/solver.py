@@ -1,0 +1,250 @@
+"""Rigid-body kinematics (notes §13, §14, §15) — closed forms in plain
+Python (no numpy, scipy or sympy; no input-model imports)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence
+
+from dyncli.errors import InputError
+from dyncli.result import Result, SolveOptions
+
+Vec = tuple[float, float, float]
+
+#: angular-velocity: the data are rigid (13.7) when, for every pair of points,
+#: |v_P/Q · e_P/Q| <= RIGID_TOL · max(max |v_P/Q|, NOISE_FLOOR · max |v_P|):
+#: the rate of change of each distance relative to the largest relative
+#: speed; relative speeds below NOISE_FLOOR of the absolute speeds are
+#: rounding noise of the subtraction v_P − v_Q and do not count as motion.
+RIGID_TOL = 1e-6
+NOISE_FLOOR = 1e-9
+#: three points are collinear when |x_A/B × x_C/B| <= COLLINEAR_TOL·|x_A/B||x_C/B|
+COLLINEAR_TOL = 1e-12
+#: screw: planar motion (instant center exists) when |v_B·e_ω| <= PLANAR_TOL·|v_B|
+PLANAR_TOL = 1e-12
+#: contact: a velocity component counts as zero when below CONTACT_TOL times
+#: the velocity scale max(|v1|, |ω1||r1|, |v2|, |ω2||r2|)
+CONTACT_TOL = 1e-10
+
+
+# ---------------------------------------------------------------------------
+# small vector algebra
+
+
+def add(a: Sequence[float], b: Sequence[float]) -> Vec:
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def sub(a: Sequence[float], b: Sequence[float]) -> Vec:
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def mul(k: float, a: Sequence[float]) -> Vec:
+    return (k * a[0], k * a[1], k * a[2])
+
+
+def dot(a: Sequence[float], b: Sequence[float]) -> float:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a: Sequence[float], b: Sequence[float]) -> Vec:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def norm(a: Sequence[float]) -> float:
+    return math.hypot(a[0], a[1], a[2])
+
+
+def _finite(x: Any) -> bool:
+    if isinstance(x, float):
+        return math.isfinite(x)
+    if isinstance(x, (list, tuple)):
+        return all(_finite(c) for c in x)
+    if isinstance(x, dict):
+        return all(_finite(c) for c in x.values())
+    return True
+
+
+def _out(res: Result, name: str, value: Any) -> None:
+    """Store a result; a non-finite value (overflow) becomes null + warning."""
+    if isinstance(value, tuple):
+        value = [c + 0.0 for c in value]  # + 0.0: no -0.0
+    elif isinstance(value, float):
+        value += 0.0
+    if not _finite(value):
+        res.warn(f"{name} overflows (the input magnitudes are too large): reported as null")
+        value = None
+    res.results[name] = value
+
+
+# ---------------------------------------------------------------------------
+# rigid-velocity (13.8, 13.9)
+
+
+def solve_rigid_velocity(p, options: SolveOptions | None = None) -> Result:
+    res = Result({}, method="closed-form", equations=["13.8", "13.9"],
+                 symbols={"v": "v_P", "a": "a_P"}, units={"v": "m/s", "a": "m/s²"})
+    w, al = p.omega, p.alpha
+    v_out, a_out = {}, {}
+    for name, x in p.points.items():
+        v_out[name] = [c + 0.0 for c in add(p.vB, cross(w, x))]                                 # (13.8)
+        a_out[name] = [c + 0.0 for c in add(add(p.aB, cross(al, x)), cross(w, cross(w, x)))]   # (13.9)
+    _out(res, "v", v_out)
+    _out(res, "a", a_out)
+    return res
+
+
+# ---------------------------------------------------------------------------
+# angular-velocity (13.13, 13.17, 13.20, check 13.7)
+
+
+def rigid_residual(points: dict) -> tuple[float, str | None]:
+    """max over pairs of |v_P/Q · e_P/Q| / max(max |v_P/Q|, NOISE_FLOOR·max |v_P|)
+    (0 when nothing moves relative to anything) and the worst pair."""
+    names = list(points)
+    rel = []
+    vmax = 0.0
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            P, Q = points[names[i]], points[names[j]]
+            x = sub(P.x, Q.x)
+            v = sub(P.v, Q.v)
+            rel.append((names[i], names[j], x, v))
+            vmax = max(vmax, norm(v))
+    worst, pair = 0.0, None
+    vmax = max(vmax, NOISE_FLOOR * max(norm(P.v) for P in points.values()))
+    if vmax == 0.0:
+        return 0.0, None
+    for a, b, x, v in rel:
+        L = norm(x)
+        r = abs(dot(v, x)) / (L * vmax)
+        if r > worst:
+            worst, pair = r, f"{a}-{b}"
+    return worst, pair
+
+
+def solve_angular_velocity(p, options: SolveOptions | None = None) -> Result:
+    pts = p.points
+    names = list(pts)
+    res = Result({}, method="closed-form", symbols={"omega": "ω", "omega_n": "ωₙ"},
+                 units={"omega": "rad/s", "omega_n": "rad/s"})
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            if sub(pts[names[i]].x, pts[names[j]].x) == (0.0, 0.0, 0.0):
+                raise InputError(f"points {names[i]} and {names[j]} are at the same position: "
+                                 "their velocities give no information on ω", f"points.{names[j]}.x")
+    B = pts[names[0]]
+    if len(names) == 2:
+        A = pts[names[1]]
+        x = sub(A.x, B.x)
+        v = sub(A.v, B.v)
+        L2 = dot(x, x)
+        _out(res, "omega_n", mul(1.0 / L2, cross(x, v)))                               # (13.20)
+        res.equations = ["13.20", "13.7"]
+    else:
+        A, C = pts[names[1]], pts[names[2]]
+        xA, xC = sub(A.x, B.x), sub(C.x, B.x)
+        vA, vC = sub(A.v, B.v), sub(C.v, B.v)
+        N = cross(xA, xC)
+        nN = norm(N)
+        if nN <= COLLINEAR_TOL * norm(xA) * norm(xC):
+            raise InputError(
+                f"points {', '.join(names)} are collinear: the velocities of points on one line cannot "
+                "determine the component of ω along that line (13.14: x_A/B × x_C/B = 0); give a third "
+                "point off the line, or only two points for omega_n (13.20)", f"points.{names[2]}.x")
+        # ω on the basis (x_A/B, x_C/B, N): ω·N = v_A/B·x_C/B (13.14) and the
+        # in-plane part from the N-components of v_A/B, v_C/B (13.15-13.16)
+        D = dot(vA, xC)
+        n2 = nN * nN
+        omega = add(add(mul(dot(vC, N) / n2, xA), mul(-dot(vA, N) / n2, xC)), mul(D / n2, N))
+        in_plane = abs(D) <= 1e-9 * norm(vA) * norm(xC) or norm(vA) == 0.0
+        res.equations = (["13.17", "13.15", "13.16"] if in_plane else ["13.13", "13.14"]) + ["13.7"]
+        _out(res, "omega", omega)
+        res.results["omega_in_plane"] = in_plane
+    resid, pair = rigid_residual(pts)
+    rigid = resid <= RIGID_TOL
+    res.results["rigid"] = rigid
+    res.results["rigid_residual"] = resid
+    if not rigid:
+        res.warn(f"the data are not those of a rigid body: v_P/Q·x_P/Q ≠ 0 (13.7) for points {pair} "
+                 f"(relative residual {resid:.3g} > {RIGID_TOL:g}); the angular velocity is only a best guess")
+    return res
+
+
+# ---------------------------------------------------------------------------
+# screw (14.1-14.9)
+
+
+def solve_screw(p, options: SolveOptions | None = None) -> Result:
+    w, vB, xB = p.omega, p.vB, p.xB
+    res = Result({}, method="closed-form", equations=["14.1", "14.3", "14.4", "14.7"],
+                 symbols={"e_omega": "e_ω", "advance_speed": "v_B·e_ω", "xD": "x_D", "pitch": "pitch",
+                          "instant_center": "x_C"},
+                 units={"advance_speed": "m/s", "xD": "m", "pitch": "m/rad", "instant_center": "m"})
+    wn = norm(w)
+    if wn == 0.0:
+        speed = norm(vB)
+        res.results.update({"e_omega": None, "advance_speed": speed, "xD": None, "pitch": None,
+                            "instant_center": None, "pure_translation": True})
+        res.warn("ω = 0: pure translation (every point moves with v_B); the screw axis is undefined "
+                 "(e_omega, xD, instant_center are null) and the pitch is infinite (null); "
+                 "advance_speed is |v_B|")
+        return res
+    e = mul(1.0 / wn, w)
+    adv = dot(vB, e)                                                   # (14.3)
+    xDB = mul(1.0 / wn, cross(e, vB))                                  # (14.7c): ω×v_B/ω²
+    xD = add(xB, xDB)
+    _out(res, "e_omega", e)
+    _out(res, "advance_speed", adv)
+    _out(res, "xD", xD)
+    _out(res, "pitch", adv / wn)
+    res.results["pure_translation"] = False
+    if abs(adv) <= PLANAR_TOL * norm(vB):
+        res.equations.append("14.9")
+        _out(res, "instant_center", xD)                                # (14.9)
+    else:
+        res.results["instant_center"] = None
+        res.warn("instant_center is null: v_B has a component along ω (v_B·e_ω ≠ 0), so the motion is not "
+                 "planar and no point is at rest; the points of the screw axis move with advance_speed·e_ω (14.4)")
+    return res
+
+
+# ---------------------------------------------------------------------------
+# contact (15.8, 15.9)
+
+
+def solve_contact(p, options: SolveOptions | None = None) -> Result:
+    b1, b2 = p.body1, p.body2
+    n = mul(1.0 / norm(p.n), p.n)
+    vM1 = add(b1.v, cross(b1.omega, b1.r))
+    vM2 = add(b2.v, cross(b2.omega, b2.r))
+    vrel = sub(vM1, vM2)
+    approach = dot(vrel, n)                                            # (15.8)
+    slip = sub(vrel, mul(approach, n))
+    slip_speed = norm(slip)
+    scale = max(norm(b1.v), norm(b1.omega) * norm(b1.r), norm(b2.v), norm(b2.omega) * norm(b2.r))
+    tol = CONTACT_TOL * scale
+    if approach < -tol:
+        state = "separating"
+    elif approach > tol:
+        state = "approaching"
+    elif slip_speed <= tol:
+        state = "rolling"
+    else:
+        state = "slipping"
+    res = Result({}, method="closed-form", equations=["15.8", "15.9"],
+                 symbols={"vM1": "v_M'", "vM2": "v_M''", "v_rel": "v_M'/M''", "approach": "v_M'/M''·n",
+                          "slip": "slip velocity", "slip_speed": "|slip|"},
+                 units={"vM1": "m/s", "vM2": "m/s", "v_rel": "m/s", "approach": "m/s", "slip": "m/s", "slip_speed": "m/s"})
+    _out(res, "vM1", vM1)
+    _out(res, "vM2", vM2)
+    _out(res, "v_rel", vrel)
+    _out(res, "approach", approach)
+    _out(res, "slip", slip)
+    _out(res, "slip_speed", slip_speed)
+    res.results["rolling"] = state == "rolling"
+    res.results["state"] = state
+    if state == "approaching":
+        res.warn("the material points approach each other (v_rel·n > 0): bodies already in contact would "
+                 "interpenetrate, i.e. this is an impact; separated bodies are closing in")
+    return res

@@ -1,0 +1,22 @@
+"""Input model of ``rotating-frame`` problems (contract §4.6)."""
+
+from __future__ import annotations
+
+from typing import Literal, Optional
+
+from pydantic import Field
+
+from dyncli.fields import ExprVec3, ProblemBase, Times
+
+
+class RotatingFrame(ProblemBase):
+    """A vector p = x_{A/B} given by its components on a basis e'_i that
+    rotates with angular velocity ω (components on e'_i); all components are
+    expressions in t (notes §10, §11)."""
+
+    type: Literal["rotating-frame"]
+    omega: ExprVec3(("t",), dim="angular velocity", description="ω'_1, ω'_2, ω'_3: components of ω on e'_i, expressions in t [rad/s]") = Field(...)  # type: ignore[valid-type]
+    p: ExprVec3(("t",), dim="length", description="p'_1, p'_2, p'_3: components of p = x_A/B on e'_i, expressions in t [m]") = Field(...)  # type: ignore[valid-type]
+    vB: Optional[ExprVec3(("t",), dim="velocity", description="velocity of B, components on e'_i, expressions in t [m/s]")] = None  # type: ignore[valid-type]
+    aB: Optional[ExprVec3(("t",), dim="acceleration", description="acceleration of B, components on e'_i, expressions in t [m/s²]")] = None  # type: ignore[valid-type]
+    at: Times() = Field(default_factory=list)  # type: ignore[valid-type]

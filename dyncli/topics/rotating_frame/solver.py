@@ -1,0 +1,144 @@
+"""Rotating frames (notes §10, §11) — numeric core.
+
+p = p'_i e'_i with ė'_i = ω × e'_i.  The exact derivatives of the
+components (forward-mode AD, :mod:`dyncli.topics.kinematics.jet`) give
+
+    δp/δt = ṗ'_i e'_i (11.5),     ṗ = δp/δt + ω×p (11.4),
+    ω̇ = δω/δt (11.10),
+    p̈ = δ²p/δt² + ω̇×p + 2ω×δp/δt + ω×(ω×p) (11.11),
+
+and, with the motion of B, v_A = v_B + ṗ, a_A = a_B + p̈ (9.1).  When only
+``vB`` is given, a_B follows from it by the general operator,
+a_B = δv_B/δt + ω×v_B.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from dyncli.result import Result, Series, SolveOptions
+from dyncli.topics.kinematics import frame
+from dyncli.topics.kinematics.jet import vec_jet
+
+SYMBOLS = {
+    "omega": "ω", "p": "p", "dp_dt": "δp/δt", "omega_x_p": "ω×p", "p_dot": "ṗ", "omega_dot": "ω̇",
+    "d2p_dt2": "δ²p/δt²", "omega_dot_x_p": "ω̇×p", "coriolis": "2ω×δp/δt", "centripetal": "ω×(ω×p)",
+    "p_ddot": "p̈", "vA": "v_A", "aA": "a_A", "vB": "v_B", "aB": "a_B",
+}
+UNITS = {
+    "omega": "rad/s", "p": "m", "dp_dt": "m/s", "omega_x_p": "m/s", "p_dot": "m/s", "omega_dot": "rad/s²",
+    "d2p_dt2": "m/s²", "omega_dot_x_p": "m/s²", "coriolis": "m/s²", "centripetal": "m/s²", "p_ddot": "m/s²",
+    "vA": "m/s", "aA": "m/s²", "vB": "m/s", "aB": "m/s²",
+}
+
+#: the rows of the δ/δt table, in the notes' order (label, result name)
+TABLE_ROWS = [
+    ("ω", "omega"), ("p", "p"), ("δp/δt", "dp_dt"), ("ω×p", "omega_x_p"), ("ṗ", "p_dot"),
+    ("δ²p/δt²", "d2p_dt2"), ("ω̇×p", "omega_dot_x_p"), ("2ω×δp/δt", "coriolis"),
+    ("ω×(ω×p)", "centripetal"), ("p̈", "p_ddot"),
+]
+EXTRA_ROWS = [("ω̇ = δω/δt", "omega_dot"), ("v_B", "vB"), ("v_A", "vA"), ("a_B", "aB"), ("a_A", "aA")]
+BASIS = ("e'₁", "e'₂", "e'₃")
+
+
+def terms(w, dw, p, dp, d2p, vB=None, dvB=None, aB=None) -> dict:
+    """Every named term from the components (numpy arrays or sympy objects)."""
+    cross, add, scale = frame.cross, frame.add, frame.scale
+    wxp = cross(w, p)
+    pdot = add(dp, wxp)                                  # (11.4)
+    dwxp = cross(dw, p)
+    cor = scale(2, cross(w, dp))
+    cen = cross(w, wxp)
+    pdd = add(d2p, dwxp, cor, cen)                       # (11.11)
+    out = {"omega": w, "p": p, "dp_dt": dp, "omega_x_p": wxp, "p_dot": pdot, "omega_dot": dw,
+           "d2p_dt2": d2p, "omega_dot_x_p": dwxp, "coriolis": cor, "centripetal": cen, "p_ddot": pdd}
+    if vB is not None:
+        out["vB"] = vB
+        out["vA"] = add(vB, pdot)                        # (9.1d)
+        if aB is None:
+            aB = add(dvB, cross(w, vB))                  # (11.4) applied to v_B
+    if aB is not None:
+        out["aB"] = aB
+        out["aA"] = add(aB, pdd)                         # (9.1g)
+    return out
+
+
+def solve(p, options: SolveOptions | None = None) -> Result:
+    options = options or SolveOptions()
+    times = [float(t) for t in p.at]
+    t = np.asarray(times, dtype=float)
+    W = vec_jet(p.omega, t)
+    P = vec_jet(p.p, t)
+    VB = vec_jet(p.vB, t) if p.vB is not None else None
+    AB = vec_jet(p.aB, t) if p.aB is not None else None
+    with np.errstate(all="ignore"):
+        T = terms(tuple(W[0]), tuple(W[1]), tuple(P[0]), tuple(P[1]), tuple(P[2]),
+                  tuple(VB[0]) if VB is not None else None, tuple(VB[1]) if VB is not None else None,
+                  tuple(AB[0]) if AB is not None else None)
+    res = Result({}, method="closed-form", equations=["11.4", "11.5", "11.10", "11.11"],
+                 symbols=dict(SYMBOLS), units=dict(UNITS))
+    bad: set[float] = set()
+    names = [n for _, n in TABLE_ROWS] + [n for _, n in EXTRA_ROWS if n in T]
+    per_time: dict[str, list] = {}
+    for name in names:
+        arr = np.stack([np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in T[name]], axis=1) + 0.0
+        ok = np.all(np.isfinite(arr), axis=1)
+        vals = arr.tolist()
+        for i in np.flatnonzero(~ok):
+            vals[i] = None
+            bad.add(times[i])
+        per_time[name] = vals
+    for name in ["omega", "p", "dp_dt", "omega_x_p", "p_dot", "omega_dot", "d2p_dt2", "omega_dot_x_p",
+                 "coriolis", "centripetal", "p_ddot", "vA", "aA"]:
+        if name in per_time:
+            res.results[name] = per_time[name]
+    if p.vB is not None or p.aB is not None:
+        res.equations += ["9.1"]
+    if p.vB is not None and p.aB is None:
+        res.warn("aB not given: a_B is taken as the derivative of the given v_B, δv_B/δt + ω×v_B (11.4)")
+    if bad:
+        res.warn("the components or their derivatives are not finite at t = "
+                 + ", ".join(f"{x:g}" for x in sorted(bad)) + ": those entries are null")
+    if times:
+        res.series = [
+            Series("t", times, ["omega", "p", "dp_dt"], "ω, p and δp/δt (11.5), components on e'_i"),
+            Series("t", times, ["omega_x_p", "p_dot"], "ṗ = δp/δt + ω×p (11.4), components on e'_i"),
+            Series("t", times, ["omega_dot", "d2p_dt2", "omega_dot_x_p"], "ω̇ = δω/δt (11.10), δ²p/δt², ω̇×p"),
+            Series("t", times, ["coriolis", "centripetal", "p_ddot"], "p̈ (11.11), components on e'_i"),
+        ]
+        ab = [n for n in ("vA", "aA") if n in res.results]
+        if ab:
+            res.series.append(Series("t", times, ab, "point A (9.1), components on e'_i"))
+    rows = [(lab, per_time[n]) for lab, n in TABLE_ROWS] + [(lab, per_time[n]) for lab, n in EXTRA_ROWS if n in per_time]
+    if options.symbolic:
+        res.views.append(symbolic_table(p))
+    if times:
+        res.views += frame.numeric_tables("δ/δt table", times, rows, BASIS)
+    return res
+
+
+def symbolic_table(p):
+    """The δ/δt table with formulas in t (sympy, imported only here)."""
+    import sympy as sp
+
+    from dyncli import symbolic
+
+    ts = symbolic.symbol("t")
+
+    def comps(exprs):
+        return tuple(frame.exact_sym(e) for e in exprs)
+
+    def d(v, n=1):
+        return tuple(sp.diff(c, ts, n) for c in v)
+
+    w, pp = comps(p.omega), comps(p.p)
+    vB = comps(p.vB) if p.vB is not None else None
+    aB = comps(p.aB) if p.aB is not None else None
+    T = terms(w, d(w), pp, d(pp), d(pp, 2), vB, d(vB) if vB is not None else None, aB)
+    rows = [(lab, T[n]) for lab, n in TABLE_ROWS] + [(lab, T[n]) for lab, n in EXTRA_ROWS if n in T]
+    used = set()
+    for group in (p.omega, p.p, p.vB or (), p.aB or ()):
+        for e in group:
+            used |= set(e.params_used)
+    note = "formulas in t" + (f"; params: {', '.join(f'{n} = {p.params[n]}' for n in sorted(used))}" if used else "")
+    return frame.symbolic_table("δ/δt table, formulas", rows, BASIS, note)
