@@ -24,7 +24,7 @@ import numpy as np
 from dyncli.result import Line, Plot
 from dyncli.topics.vibration import closed_form as cf
 
-MIN_POINTS, MAX_POINTS, PER_PERIOD = 400, 8000, 40
+MIN_POINTS, MAX_POINTS, PER_PERIOD = 400, 4000, 40
 SWEEP_POINTS = 801
 
 
