@@ -144,7 +144,21 @@ def validate(lp: LoadedProblem) -> None:
     except InputError as exc:
         lp.error = lp.diagnostic(exc.path, exc.message)
         return
+    if "g" not in params:
+        # the problem's gravity is usable in expressions as `g`
+        params = {**params, "g": _gravity(raw.get("g", 9.81), params)}
     lp.model, lp.error = validate_model(lp, cls, raw, params)
+
+
+def _gravity(value, params: dict[str, float]) -> float:
+    """The value of the problem's ``g`` field for use in expressions (9.81
+    when it cannot be read here; the model's validation reports the error)."""
+    from dyncli.fields import to_float
+
+    try:
+        return to_float(value, None, dim="acceleration")
+    except Exception:  # noqa: BLE001 - reported by model validation
+        return 9.81
 
 
 def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):

@@ -83,3 +83,13 @@ def test_scientific_notation_numbers():
 def test_params_in_numeric_fields():
     rec = solve_text("type: rectilinear\nparams: {g0: 9.81, h: 'g0/2'}\na: '-g0'\nv1: 'h*2'\nfind:\n  - {v: 0}\n")[0]
     assert rec["results"]["find"][0]["t"] == pytest.approx(1.0)
+
+
+def test_g_usable_in_expressions():
+    rec = solve_text("type: rectilinear\ng: 10\na: '-g'\nv1: 20\nfind:\n  - {v: 0}\n")[0]
+    assert rec["results"]["find"][0]["t"] == pytest.approx(2.0)
+    rec = solve_text("type: rectilinear\na: '-g'\nv1: 9.81\nfind:\n  - {v: 0}\n")[0]
+    assert rec["results"]["find"][0]["t"] == pytest.approx(1.0)
+    # a params entry named g wins
+    rec = solve_text("type: rectilinear\nparams: {g: 5}\na: '-g'\nv1: 10\nfind:\n  - {v: 0}\n")[0]
+    assert rec["results"]["find"][0]["t"] == pytest.approx(2.0)

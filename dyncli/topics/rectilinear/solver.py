@@ -1,6 +1,22 @@
-"""Rectilinear motion (notes §6) — numeric core (no pydantic).
+"""Rectilinear motion (notes §6) — numeric core (pure functions, no input-model imports).
 
-Case 1 (a constant): closed form (6.5).  Cases 2-4 and general: TODO.
+The case follows from the variables the acceleration ``a`` uses:
+
+* case 1, ``a`` constant: closed form (6.5a,b) — no numpy, no scipy;
+* case 2, ``a(t)``: quadrature (6.6a,b), ``s`` as one integral with the
+  kernel (t - tau); v/s queries by root finding on the quadrature
+  (module :mod:`.case2`);
+* case 3, ``a(v)``: t(v) (6.8) and s(v) (6.10) by quadrature after the
+  substitution that removes the logarithmic singularity at a terminal
+  velocity; t-queries invert t(v) (module :mod:`.case3`);
+* case 4, ``a(s)``: energy (6.14, 6.15) and t(s) (6.12) by quadrature with
+  u^2 substitutions at the turning points; periodic motion through the time
+  along the swing (module :mod:`.case4`);
+* ``general`` (more than one variable): ODE (6.2c,e) with scipy's solve_ivp,
+  turning-point and extremum events (module :mod:`.general`).
+
+Every query is answered at the first time t >= t1 (``t`` queries may lie before
+t1); ``reached: false`` with a warning when the state is never attained.
 """
 
 from __future__ import annotations
@@ -11,6 +27,27 @@ from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 
 SYMBOLS = {"case": "case"}
+UNITS = {"t": "s", "s": "m", "v": "m/s", "a": "m/s²", "period": "s"}
+ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+EQUATIONS = {
+    1: ["6.5a", "6.5b"],
+    2: ["6.6a", "6.6b"],
+    3: ["6.8", "6.10", "6.12", "6.6b"],
+    4: ["6.14", "6.15", "6.12"],
+    "general": ["6.2c", "6.2e"],
+}
+_EPS = 2.220446049250313e-16
+
+
+def scalar_fn(expr):
+    """A fast scalar evaluator ``f(env_dict)`` for ``expr`` (the compiled
+    closure of :class:`dyncli.expr.Expr`, without the per-call ``np.errstate``
+    of ``Expr.__call__``; callers run inside one ``np.errstate``)."""
+    expr(t=0.0, s=0.0, v=0.0)  # compiles
+    fn = getattr(expr, "_fn", None)
+    if fn is None:  # pragma: no cover - foundation changed
+        return lambda env: expr(**env)
+    return fn
 
 
 def case_of(a) -> int | str:
@@ -22,44 +59,201 @@ def case_of(a) -> int | str:
     return {"t": 2, "v": 3, "s": 4}[used.pop()]
 
 
+def _fmt(x: float) -> str:
+    return f"{x:.10g}"
+
+
+class Answers:
+    """Collects the per-query answers, warnings and error estimates."""
+
+    def __init__(self, p, res: Result):
+        self.p = p
+        self.res = res
+        self.items: list[dict | None] = [None] * len(p.find)
+        self.err = 0.0
+
+    def acc(self, t: float, s: float, v: float) -> float:
+        val = self.p.a(t=t, s=s, v=v)
+        return float(val)
+
+    def reached(self, i: int, t: float, s: float, v: float, err: float = 0.0, a: float | None = None) -> None:
+        t, s, v = float(t), float(s), float(v)
+        a = self.acc(t, s, v) if a is None else float(a)
+        if not all(math.isfinite(x) for x in (t, s, v, a)):
+            self.unreached(i, f"the state is not finite there (t = {t!r}, s = {s!r}, v = {v!r})")
+            return
+        self.items[i] = {"t": t, "s": s, "v": v, "a": a, "reached": True}
+        self.err = max(self.err, float(err))
+
+    def unreached(self, i: int, reason: str) -> None:
+        q = self.p.find[i]
+        self.res.warn(f"find[{i}] ({q.kind} = {_fmt(q.target)}): not reached — {reason}")
+        self.items[i] = {"t": None, "s": None, "v": None, "a": None, "reached": False}
+
+    def beyond_t_max(self, i: int, t: float) -> bool:
+        """True (and the query marked unreached) when t lies beyond t1 + t_max."""
+        p = self.p
+        if t - p.t1 > p.t_max:
+            self.unreached(i, f"first attained at t = {_fmt(t)}, beyond the search horizon t1 + t_max = {_fmt(p.t1 + p.t_max)}")
+            return True
+        return False
+
+
+def _route(p, case) -> str:
+    """The route: 'closed-form', 'quadrature' or an ODE method name."""
+    m = p.accuracy.method
+    if m == "auto":
+        return "closed-form" if case == 1 else ("DOP853" if case == "general" else "quadrature")
+    if m == "closed-form":
+        if case != 1:
+            raise InputError(
+                f"closed-form applies only to case 1 (constant a); this a is case {case}: use auto, quadrature or an ODE method",
+                "accuracy.method")
+        return m
+    if m == "quadrature":
+        if case == "general":
+            raise InputError("no quadrature route when a uses more than one of t, s, v (general case): use auto or an ODE method",
+                             "accuracy.method")
+        return m
+    return "DOP853" if m == "ode" else m
+
+
+def _check_initial(p) -> None:
+    try:
+        a1 = p.a.value() if not p.a.variables else float(p.a(t=p.t1, s=p.s1, v=p.v1))
+    except (TypeError, ValueError):  # pragma: no cover - defensive
+        a1 = math.nan
+    if not math.isfinite(a1):
+        raise InputError(
+            f"a = {p.a.text} is not finite at the initial state (t1 = {_fmt(p.t1)}, s1 = {_fmt(p.s1)}, v1 = {_fmt(p.v1)}): "
+            f"it evaluates to {a1!r}", "a")
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
     case = case_of(p.a)
-    if case != 1:
-        raise InputError("only case 1 is implemented so far", "a")
-    a = p.a.value()
-    res = Result({"case": 1, "find": []}, method="closed-form", equations=["6.5a", "6.5b"], symbols=SYMBOLS)
-    for q in p.find:
-        res.results["find"].append(_case1(p, a, q, res))
+    route = _route(p, case)
+    _check_initial(p)
+    res = Result({"case": case, "find": []}, symbols=SYMBOLS, units=UNITS)
+    if route == "closed-form":
+        res.method = "closed-form"
+        res.equations = list(EQUATIONS[1])
+        ans = Answers(p, res)
+        a = p.a.value()
+        for i, q in enumerate(p.find):
+            _case1(p, a, i, q, ans)
+        res.results["find"] = ans.items
+        return res
+
+    if route == "quadrature":
+        def run(rtol, atol):
+            res_ = Result({"case": case, "find": []}, symbols=SYMBOLS, units=UNITS)
+            ans_ = Answers(p, res_)
+            if case in (1, 2):
+                from dyncli.topics.rectilinear import case2 as mod
+            elif case == 3:
+                from dyncli.topics.rectilinear import case3 as mod
+            else:
+                from dyncli.topics.rectilinear import case4 as mod
+            method = mod.solve(p, ans_, rtol, atol)
+            res_.method = method
+            res_.equations = list(EQUATIONS[2 if case == 1 else case])
+            return res_, ans_
+    else:
+        def run(rtol, atol):
+            res_ = Result({"case": case, "find": []}, symbols=SYMBOLS, units=UNITS)
+            ans_ = Answers(p, res_)
+            from dyncli.topics.rectilinear import general
+
+            res_.method = general.solve(p, ans_, route, rtol, atol)
+            res_.equations = list(EQUATIONS["general"])
+            return res_, ans_
+
+    import numpy as np
+
+    rtol, atol = p.accuracy.rtol, p.accuracy.atol
+    with np.errstate(all="ignore"):
+        res, ans = run(rtol, atol)
+    res.results["find"] = ans.items
+    res.error_estimate = ans.err
+    if p.accuracy.estimate or route != "quadrature":
+        # accuracy.estimate: solve again 100 times tighter and report the largest change;
+        # the ODE route always reports one — by default from a 10 times looser
+        # second solve (cheaper; a conservative bound for the tighter answer).
+        factor = 1e-2 if p.accuracy.estimate else 10.0
+        with np.errstate(all="ignore"):
+            res2, ans2 = run(min(rtol * factor, 0.1), atol * factor)
+        res.error_estimate = max(_difference(ans.items, ans2.items), ans.err)
     return res
 
 
-def _case1(p, a, q, res):
+def _difference(a: list, b: list) -> float:
+    d = 0.0
+    for x, y in zip(a, b):
+        if x is None or y is None or x["reached"] != y["reached"]:
+            continue
+        if not x["reached"]:
+            continue
+        for k in ("t", "s", "v", "a"):
+            d = max(d, abs(x[k] - y[k]))
+    return d
+
+
+# ---------------------------------------------------------------------------
+# case 1: constant acceleration (6.5a,b)
+
+
+def _case1(p, a: float, i: int, q, ans: Answers) -> None:
     t1, s1, v1 = p.t1, p.s1, p.v1
     if q.kind == "t":
-        t = q.t
+        tau = q.t - t1
     elif q.kind == "v":
-        if a == 0:
-            t = t1 if q.v == v1 else None
+        dv = q.v - v1
+        if dv == 0:
+            tau = 0.0
+        elif a == 0:
+            ans.unreached(i, f"a = 0: the velocity stays v1 = {_fmt(v1)}")
+            return
         else:
-            t = t1 + (q.v - v1) / a
-            if t < t1:
-                t = None
+            tau = dv / a
+            if tau < 0:
+                ans.unreached(i, f"the velocity moves away from it (v1 = {_fmt(v1)}, a = {_fmt(a)})")
+                return
     else:
-        # s1 + v1 tau + a/2 tau^2 = S  -> smallest tau >= 0
-        d = q.s - s1
-        if a == 0:
-            t = t1 + d / v1 if v1 != 0 and d / v1 >= 0 else (t1 if d == 0 else None)
-        else:
-            disc = v1 * v1 + 2 * a * d
-            if disc < 0:
-                t = None
-            else:
-                r = math.sqrt(disc)
-                q_ = -0.5 * (v1 + math.copysign(r, v1)) if v1 != 0 else -0.5 * r
-                roots = [x for x in ((q_ / (0.5 * a)) if a else math.inf, (d / q_) if q_ else math.inf) if x >= 0 and math.isfinite(x)]
-                t = t1 + min(roots) if roots else None
-    if t is None or (q.kind != "t" and t - t1 > p.t_max):
-        res.warn(f"query {q.kind} = {q.target:g} is never reached")
-        return {"t": None, "s": None, "v": None, "a": None, "reached": False}
-    tau = t - t1
-    return {"t": t, "s": s1 + v1 * tau + 0.5 * a * tau * tau, "v": v1 + a * tau, "a": a, "reached": True}
+        tau = _case1_position(s1, v1, a, q.s, i, ans)
+        if tau is None:
+            return
+    if q.kind != "t" and ans.beyond_t_max(i, t1 + tau):
+        return
+    ans.reached(i, t1 + tau, s1 + v1 * tau + 0.5 * a * tau * tau, v1 + a * tau, a=a)
+
+
+def _case1_position(s1: float, v1: float, a: float, S: float, i: int, ans: Answers):
+    """Smallest tau >= 0 with s1 + v1 tau + a tau^2 / 2 = S, or None."""
+    d = S - s1
+    if d == 0:
+        return 0.0
+    if a == 0:
+        if v1 == 0:
+            ans.unreached(i, f"the body stays at rest at s1 = {_fmt(s1)}")
+            return None
+        tau = d / v1
+        if tau < 0:
+            ans.unreached(i, f"the body moves away from it (v1 = {_fmt(v1)}, a = 0)")
+            return None
+        return tau
+    disc = v1 * v1 + 2 * a * d
+    if disc < 0 and disc >= -8 * _EPS * (v1 * v1 + abs(2 * a * d)):
+        disc = 0.0  # the target is the turning point, up to rounding
+    if disc < 0:
+        ans.unreached(i, f"it lies beyond the turning point s = {_fmt(s1 - v1 * v1 / (2 * a))}")
+        return None
+    r = math.sqrt(disc)
+    qq = -0.5 * (v1 + math.copysign(r, v1))  # a/2 tau^2 + v1 tau - d = 0, stable roots
+    roots = [qq / (0.5 * a)]
+    if qq != 0:
+        roots.append(-d / qq)
+    pos = [x for x in roots if x > 0 and math.isfinite(x)]
+    if not pos:
+        ans.unreached(i, f"the body moves away from it for t >= t1 (v1 = {_fmt(v1)}, a = {_fmt(a)})")
+        return None
+    return min(pos)

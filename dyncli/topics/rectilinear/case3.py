@@ -1,0 +1,414 @@
+"""Case 3, a = a(v): t(v) (6.8) and s(v) (6.10) by quadrature.
+
+    t(v) = t1 + ∫_{v1}^{v} dV / a(V)          (6.8)
+    s(v) = s1 + ∫_{v1}^{v} V dV / a(V)        (6.10)
+
+The velocity moves monotonically from v1 in the direction of a(v1), towards
+the first zero v* of a in that direction (terminal velocity) or to infinity;
+backward in time it moves the other way.  Near a simple zero the integrands
+have a logarithmic singularity (t -> infinity as v -> v*); the substitution
+
+    v = v* - (v* - v1) e^(-u),   dv = (v* - v) du
+
+makes them smooth and bounded on 0 <= u < infinity, so t-queries near the
+terminal velocity stay accurate.  Towards infinity, v = v1 ± c (e^u - 1).
+t-queries invert t(u) by a bracketed root search (v(t) from (6.8)); s(t) is
+then (6.10) at that velocity.  A zero of a reached in finite time (a ~ |v-v*|^p
+with p < 1, e.g. Coulomb friction a = -mu g sign(v)) is reached and the
+velocity stays there; a pole of a ends the motion.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+
+_EPS = float(np.finfo(float).eps)
+_BIG = 1e100
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.10g}"
+
+
+class Branch:
+    """v moving from v1 in direction e (+1/-1)."""
+
+    def __init__(self, c3, e: int, scale: float):
+        self.c3 = c3
+        self.e = e
+        self.v1 = c3.v1
+        self.c = scale
+        self._find_end()
+        self._build_grid()
+
+    # -- where does v go? -------------------------------------------------
+    def _find_end(self) -> None:
+        c3, e, v1, c = self.c3, self.e, self.v1, self.c
+        g = np.unique(np.concatenate([
+            np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:],
+            4.0 * np.logspace(0, 300, 3001)]))
+        g = g[np.abs(v1) + c * g <= _BIG]
+        vs = v1 + e * c * g
+        av = c3.A(vs)
+        s1 = np.sign(c3.a_v1)
+        bad = ~np.isfinite(av)
+        stop = (np.sign(av) != s1) | bad
+        self.kind = "inf"
+        self.v_end = e * math.inf
+        if stop.any():
+            k = int(np.argmax(stop))
+            lo = float(vs[k - 1]) if k > 0 else v1
+            alo = float(av[k - 1]) if k > 0 else c3.a_v1
+            hi = float(vs[k])
+            if bad[k]:
+                # bisect to the edge of the domain where a is finite
+                for _ in range(200):
+                    mid = 0.5 * (lo + hi)
+                    if mid in (lo, hi):
+                        break
+                    am = c3.a1(mid)
+                    if math.isfinite(am) and np.sign(am) == s1:
+                        lo = mid
+                    else:
+                        hi = mid
+                self.v_end = hi
+            elif av[k] == 0:
+                self.v_end = hi
+            else:
+                self.v_end = brentq(c3.a1, lo, hi, alo, float(av[k]))
+            a_end = c3.a1(self.v_end)
+            amax = float(np.max(np.abs(av[:k]))) if k > 0 else abs(c3.a_v1)
+            amax = max(amax, abs(c3.a_v1))
+            self.kind = "zero" if (math.isfinite(a_end) and abs(a_end) <= 1e-6 * amax) else "pole"
+            vs, av = vs[:k], av[:k]
+        # a double zero (a touches 0 without a sign change) before the end
+        aa = np.abs(av)
+        if aa.size >= 3:
+            cand = np.nonzero((aa[1:-1] <= aa[:-2]) & (aa[1:-1] <= aa[2:])
+                              & (aa[1:-1] < 1e-3 * np.maximum(aa[:-2], aa[2:])))[0] + 1
+            for k in cand:
+                from scipy.optimize import minimize_scalar
+
+                lo, hi = sorted((float(vs[k - 1]), float(vs[k + 1])))
+                r = minimize_scalar(lambda x: abs(c3.a1(x)), bounds=(lo, hi), method="bounded",
+                                    options={"xatol": 1e-14 * max(abs(lo), abs(hi), 1e-300)})
+                if abs(r.fun) <= 1e-12 * max(abs(c3.a_v1), float(aa.max())):
+                    self.v_end, self.kind = float(r.x), "zero"
+                    break
+
+    # -- parametrisation ---------------------------------------------------
+    def v_of(self, u):
+        if self.kind == "inf":
+            return self.v1 + self.e * self.c * np.expm1(u)
+        return self.v_end - self.D0 * np.exp(-u)
+
+    def dvdu(self, u):
+        if self.kind == "inf":
+            return self.e * self.c * np.exp(u)
+        return self.D0 * np.exp(-u)
+
+    def u_of(self, v: float) -> float:
+        if self.kind == "inf":
+            return math.log1p(self.e * (v - self.v1) / self.c)
+        return math.log(self.D0 / (self.v_end - v))
+
+    def _f(self, x, j):
+        """j even: dt/du, j odd: v dt/du."""
+        v = self.v_of(x)
+        w = self.dvdu(x) / self.c3.A(v)
+        return np.where(j % 2 == 0, w, v * w)
+
+    def integ(self, ulo, uhi):
+        """(dt, ds, err_t, err_s) arrays over the cells [ulo, uhi]."""
+        ulo = np.atleast_1d(ulo)
+        uhi = np.atleast_1d(uhi)
+        lo = np.repeat(ulo, 2)
+        w = np.repeat(uhi - ulo, 2)
+        rtol = np.full(lo.shape, self.c3.qr)
+        if self.kind != "inf":
+            # relative rounding noise of a near v* is ~ eps |v*| / |v* - v|; integrating
+            # to that level moves the state by ~ eps |v*| only (see module docstring)
+            d = abs(self.D0) * np.exp(-np.maximum(lo, lo + w))
+            rtol = np.maximum(rtol, 64 * _EPS * max(abs(self.v_end), abs(self.D0)) / np.maximum(d, 1e-300))
+        vals, errs, conv = integrate(self._f, lo, w, np.minimum(rtol, 0.5), 0.0)
+        self.c3.check(conv)
+        return vals[0::2], vals[1::2], errs[0::2], errs[1::2]
+
+    def _build_grid(self) -> None:
+        c3 = self.c3
+        if self.kind == "inf":
+            umax = math.log1p((_BIG - abs(self.v1)) / self.c)
+        else:
+            self.D0 = self.v_end - self.v1
+            dmin = max(8 * _EPS * abs(self.v_end), 1e-290)
+            umax = max(math.log(abs(self.D0) / dmin), 1e-3)
+        base = [0.0, 1 / 64, 1 / 16, 1 / 8, 1 / 4, 1 / 2]
+        grid = np.unique(np.concatenate([base, np.arange(1.0, umax, 1.0), [umax]]))
+        grid = grid[grid <= umax]
+        # the turning point of s (v = 0) on this branch is a grid node
+        e = self.e
+        if self.v1 != 0 and -self.v1 * e > 0 and (self.kind == "inf" or self.v_end * e > 0):
+            u0 = self.u_of(0.0)
+            if 0 < u0 < umax:
+                grid = np.unique(np.concatenate([grid, [u0]]))
+        while True:
+            try:
+                dt, ds, et, es = self.integ(grid[:-1], grid[1:])
+                break
+            except NonFinite as exc:
+                keep = grid[grid < exc.x]
+                if keep.size >= 2:
+                    grid = keep
+                elif exc.x > 1e-12:
+                    grid = np.array([0.0, 0.5 * exc.x])
+                else:
+                    grid = np.array([0.0])
+                    dt = ds = et = es = np.zeros(0)
+                    break
+        self.u = grid
+        self.tau = np.concatenate([[0.0], np.cumsum(dt)])
+        self.ds = np.concatenate([[0.0], np.cumsum(ds)])
+        self.etau = np.concatenate([[0.0], np.cumsum(et)])
+        self.eds = np.concatenate([[0.0], np.cumsum(es)])
+        # finite time to reach v*?  local exponent from dt/du near the end
+        self.finite_time = False
+        self.T_end = math.inf
+        if self.kind == "zero" and self.u[-1] > 4:
+            u2 = float(self.u[-1])
+            w2 = float(self._f(np.array([u2]), np.array([0]))[0])
+            w1 = float(self._f(np.array([u2 - 2.0]), np.array([0]))[0])
+            if w1 != 0 and w2 / w1 >= 0:
+                pm1 = math.log(max(w2 / w1, 1e-300)) / 2.0
+                if pm1 < -0.1:
+                    self.finite_time = True
+                    self.T_end = float(self.tau[-1]) + w2 / -pm1
+        elif self.kind in ("pole", "inf"):
+            self.T_end = float(self.tau[-1])
+
+    def at(self, u: float):
+        """(tau, s - s1, v, (err_tau, err_s)) at parameter u."""
+        k = int(np.searchsorted(self.u, u, side="right")) - 1
+        k = min(max(k, 0), len(self.u) - 1)
+        tau, ds = float(self.tau[k]), float(self.ds[k])
+        et_, es_ = float(self.etau[k]), float(self.eds[k])
+        if u != self.u[k]:
+            dt, dds, et, es = self.integ(float(self.u[k]), u)
+            tau += float(dt[0])
+            ds += float(dds[0])
+            et_ += float(et[0])
+            es_ += float(es[0])
+        return tau, ds, float(self.v_of(np.float64(u))), (et_, es_)
+
+
+class _Case3:
+    def __init__(self, p, ans, rtol, atol):
+        self.p, self.ans = p, ans
+        from dyncli.topics.rectilinear.solver import scalar_fn
+
+        self._fn = scalar_fn(p.a)
+        self.rtol, self.atol = rtol, atol
+        self.qr = max(rtol * 1e-2, 1e-15)
+        self.v1 = p.v1
+        self.a_v1 = float(p.a.evaluate(v=np.float64(p.v1)))
+        self._warned = False
+        vals = [abs(p.v1)] + [abs(q.v) for q in p.find if q.kind == "v"]
+        self.scale = max(max(vals), 1e-300)
+        if self.scale == 1e-300 or self.scale < 1e-3 * abs(self.a_v1):
+            self.scale = max(self.scale, 1.0)
+        self._branches: dict[int, Branch] = {}
+
+    def A(self, v):
+        return self.p.a.evaluate(v=np.asarray(v, dtype=float))
+
+    def a1(self, v: float) -> float:
+        return float(self._fn({'v': v}))
+
+    def check(self, conv) -> None:
+        if not np.all(conv) and not self._warned:
+            self._warned = True
+            self.ans.res.warn("quadrature did not reach the requested tolerance everywhere (non-smooth a?); see error_estimate")
+
+    def branch(self, e: int) -> Branch:
+        if e not in self._branches:
+            self._branches[e] = Branch(self, e, self.scale)
+        return self._branches[e]
+
+    def _end_text(self, b: Branch) -> str:
+        if b.kind == "zero":
+            return f"terminal velocity v* = {_fmt(b.v_end)} (a(v*) = 0)"
+        if b.kind == "pole":
+            return f"a is singular at v = {_fmt(b.v_end)}"
+        return "v grows without bound"
+
+    # -- queries ------------------------------------------------------------
+    def equilibrium(self) -> None:
+        p, ans = self.p, self.ans
+        for i, q in enumerate(p.find):
+            if q.kind == "t":
+                ans.reached(i, q.t, p.s1 + p.v1 * (q.t - p.t1), p.v1)
+            elif q.kind == "v":
+                if q.v == p.v1:
+                    ans.reached(i, p.t1, p.s1, p.v1)
+                else:
+                    ans.unreached(i, f"a(v1) = 0: the velocity stays v1 = {_fmt(p.v1)} (equilibrium)")
+            else:
+                d = q.s - p.s1
+                if d == 0:
+                    ans.reached(i, p.t1, p.s1, p.v1)
+                elif p.v1 == 0 or d / p.v1 < 0:
+                    ans.unreached(i, f"a(v1) = 0: the body moves uniformly with v1 = {_fmt(p.v1)} and never gets there")
+                elif not ans.beyond_t_max(i, p.t1 + d / p.v1):
+                    ans.reached(i, p.t1 + d / p.v1, q.s, p.v1)
+
+    def t_query(self, i: int, T: float) -> None:
+        p, ans = self.p, self.ans
+        tau = T - p.t1
+        if tau == 0:
+            ans.reached(i, T, p.s1, p.v1)
+            return
+        d = 1 if self.a_v1 > 0 else -1
+        b = self.branch(d if tau > 0 else -d)
+        taus = b.tau
+        last = float(taus[-1])
+        if abs(tau) <= abs(last):
+            k = int(np.searchsorted(np.abs(taus), abs(tau), side="left"))
+            k = min(max(k, 1), len(taus) - 1)
+            ulo, uhi = float(b.u[k - 1]), float(b.u[k])
+            t0 = float(taus[k - 1])
+            u = brentq(lambda u: t0 + float(b.integ(ulo, u)[0][0]) - tau if u != ulo else t0 - tau,
+                       ulo, uhi, t0 - tau, float(taus[k]) - tau)
+            tt, ds, v, (et, es) = b.at(u)
+            # an error et in t(u) moves the answer along the trajectory: v by |a| et;
+            # s and t(u) share their integrand, so s moves by about |v| et + es
+            ans.reached(i, T, p.s1 + ds, v, err=max(abs(self.a1(v)) * et, es + abs(v) * et))
+            return
+        when = "after" if tau > 0 else "before"
+        if b.kind == "zero":
+            # v is v* to machine precision (or reached it in finite time and stays)
+            s = p.s1 + float(b.ds[-1]) + b.v_end * (tau - last)
+            ans.reached(i, T, s, b.v_end)
+        elif b.kind == "pole":
+            ans.unreached(i, f"{self._end_text(b)}, which is attained at t ≈ {_fmt(p.t1 + last)}; the motion is not defined {when} that")
+        else:
+            ans.unreached(i, f"|v| exceeds {_BIG:g} (finite-time blow-up) at t ≈ {_fmt(p.t1 + last)}, {when} which nothing is defined")
+
+    def v_query(self, i: int, V: float) -> None:
+        p, ans = self.p, self.ans
+        if V == p.v1:
+            ans.reached(i, p.t1, p.s1, p.v1)
+            return
+        d = 1 if self.a_v1 > 0 else -1
+        if (V - p.v1) * d < 0:
+            ans.unreached(i, f"a(v1) = {_fmt(self.a_v1)} drives v away from it")
+            return
+        b = self.branch(d)
+        if b.kind != "inf" and (V - b.v_end) * d >= 0:
+            if V == b.v_end and b.kind == "zero" and b.finite_time:
+                t = p.t1 + b.T_end
+                if not ans.beyond_t_max(i, t):
+                    ans.reached(i, t, p.s1 + float(b.ds[-1]), b.v_end)
+                return
+            what = "beyond" if V != b.v_end else "at"
+            if b.kind == "zero":
+                extra = "; it is approached as t → ∞ but never reached" if V == b.v_end else ""
+                ans.unreached(i, f"the speed lies {what} the {self._end_text(b)}{extra}")
+            else:
+                ans.unreached(i, f"it lies {what} v = {_fmt(b.v_end)}: {self._end_text(b)}")
+            return
+        u = b.u_of(V)
+        if u > b.u[-1]:
+            if b.kind == "zero":
+                if b.finite_time:
+                    t = p.t1 + b.T_end
+                    if not ans.beyond_t_max(i, t):
+                        ans.reached(i, t, p.s1 + float(b.ds[-1]), V)
+                    return
+                ans.unreached(i, f"it is within rounding of the {self._end_text(b)}, which is approached as t → ∞")
+            else:
+                ans.unreached(i, f"it lies beyond v = {_fmt(b.v_of(np.float64(b.u[-1])))} where the motion ends ({self._end_text(b)})")
+            return
+        tau, ds, v, (et, es) = b.at(u)
+        t = p.t1 + tau
+        if not ans.beyond_t_max(i, t):
+            ans.reached(i, t, p.s1 + ds, V, err=max(et, es))
+
+    def s_query(self, i: int, S: float) -> None:
+        p, ans = self.p, self.ans
+        if S == p.s1:
+            ans.reached(i, p.t1, p.s1, p.v1)
+            return
+        d = 1 if self.a_v1 > 0 else -1
+        b = self.branch(d)
+        target = S - p.s1
+        ds = b.ds
+        tol_of = lambda x: self.rtol * max(abs(S), abs(p.s1 + x)) + self.atol
+        tol = tol_of(float(ds[-1]))
+        if b.kind == "zero" and b.finite_time and b.v_end == 0 and abs(target - ds[-1]) <= tol:
+            # the body stops in finite time exactly at the target (s is monotone
+            # on the way: v keeps its sign until it reaches 0)
+            t = p.t1 + b.T_end
+            if not ans.beyond_t_max(i, t):
+                ans.reached(i, t, S, 0.0)
+            return
+        for k in range(len(ds) - 1):
+            lo, hi = min(ds[k], ds[k + 1]), max(ds[k], ds[k + 1])
+            tol = max(tol_of(lo), tol_of(hi))
+            if not (lo - tol <= target <= hi + tol):
+                continue
+            ulo, uhi = float(b.u[k]), float(b.u[k + 1])
+            s0 = float(ds[k])
+            if abs(target - s0) <= tol and k > 0:
+                u = ulo
+            elif abs(target - ds[k + 1]) <= tol and not (lo <= target <= hi):
+                u = uhi
+            else:
+                u = brentq(lambda u: s0 + float(b.integ(ulo, u)[1][0]) - target if u != ulo else s0 - target,
+                           ulo, uhi, s0 - target, float(ds[k + 1]) - target)
+            tau, dss, v, (et, es) = b.at(u)
+            t = p.t1 + tau
+            if not ans.beyond_t_max(i, t):
+                ans.reached(i, t, p.s1 + dss, v, err=max(et + (es / abs(v) if v else 0.0), es))
+            return
+        last_s = float(ds[-1])
+        if b.kind == "zero" and b.v_end != 0 and (target - last_s) * b.v_end > 0:
+            tau = float(b.tau[-1]) + (target - last_s) / b.v_end
+            t = p.t1 + tau
+            if not ans.beyond_t_max(i, t):
+                ans.reached(i, t, S, b.v_end)
+            return
+        smin, smax = p.s1 + float(ds.min()), p.s1 + float(ds.max())
+        if b.kind == "zero" and b.v_end == 0:
+            if b.finite_time:
+                why = f"the body comes to rest at s = {_fmt(p.s1 + last_s)} (v reaches 0 at t = {_fmt(p.t1 + b.T_end)})"
+            else:
+                why = f"the body approaches s = {_fmt(p.s1 + last_s)} as t → ∞ (v → 0) and never passes it"
+        elif b.kind == "zero":
+            ext = smin if b.v_end > 0 else smax
+            why = (f"after its extreme position s = {_fmt(ext)} the body moves towards "
+                   f"{'+' if b.v_end > 0 else '-'}∞ (terminal velocity {_fmt(b.v_end)})")
+        else:
+            why = (f"the motion ends at t ≈ {_fmt(p.t1 + float(b.tau[-1]))} ({self._end_text(b)}) "
+                   f"with s within [{_fmt(smin)}, {_fmt(smax)}]")
+        ans.unreached(i, f"s never attains it: {why}")
+
+
+def solve(p, ans, rtol: float, atol: float) -> str:
+    c = _Case3(p, ans, rtol, atol)
+    if c.a_v1 == 0:
+        c.equilibrium()
+        return "quadrature"
+    roots = False
+    for i, q in enumerate(p.find):
+        if q.kind == "t":
+            c.t_query(i, q.t)
+            roots = True
+        elif q.kind == "v":
+            c.v_query(i, q.v)
+        else:
+            c.s_query(i, q.s)
+            roots = True
+    return "quadrature+root" if roots else "quadrature"

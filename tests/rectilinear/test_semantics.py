@@ -1,0 +1,222 @@
+"""Query semantics and edge cases of every route, against references derived here."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import ROOT, solve_one_text
+
+mp.mp.dps = 30
+RTOL = 1e-10
+
+
+def close(x, ref, scale=1.0, rtol=RTOL):
+    assert x is not None
+    assert abs(x - float(ref)) <= rtol * max(abs(float(ref)), scale), (x, float(ref))
+
+
+def problem(a, find, **kw):
+    lines = ["type: rectilinear", f'a: "{a}"'] + [f"{k}: {v}" for k, v in kw.items()]
+    lines.append("find:")
+    lines += [f"  - {{{k}: {v}}}" for q in find for k, v in q.items()]
+    return solve_one_text("\n".join(lines) + "\n")
+
+
+def entries(rec):
+    return rec["results"]["find"]
+
+
+def is_unreached(e):
+    return e == {"t": None, "s": None, "v": None, "a": None, "reached": False}
+
+
+# -- case 1 ---------------------------------------------------------------------
+
+
+def test_case1_semantics():
+    rec = problem("-4", [{"s": -10}, {"v": 30}, {"s": 20}, {"s": 0}, {"v": 20}, {"t": -3}, {"v": -60}],
+                  v1=20, t_max=11)
+    f = entries(rec)
+    close(f[0]["t"], (20 + math.sqrt(400 + 80)) / 4)     # passes s = 0 downwards later
+    assert is_unreached(f[1])                             # v moves away from 30
+    close(f[2]["t"], (20 - math.sqrt(400 - 160)) / 4)    # first of two crossings
+    assert f[3]["t"] == 0 and f[4]["t"] == 0              # initial state: answered at t1
+    close(f[5]["s"], 20 * -3 - 2 * 9); close(f[5]["v"], 32)
+    assert is_unreached(f[6])                             # t = 20 > t_max
+    assert any("find[6]" in w and "t_max" in w for w in rec["warnings"])
+
+
+def test_case1_turning_point_up_to_rounding():
+    # s_turn = v1^2 / (2|a|) = 0.45, with rounding in 0.3**2 and 0.2*0.45
+    f = entries(problem("-0.1", [{"s": 0.45}], v1=0.3))
+    close(f[0]["t"], 3.0); close(f[0]["v"], 0.0, scale=0.3)
+    f = entries(problem("-0.1", [{"s": 0.4500001}], v1=0.3))
+    assert is_unreached(f[0])
+
+
+def test_case1_does_not_import_scipy_or_numpy():
+    code = ("import sys; from tests.conftest import solve_path; "
+            "solve_path('problems/rectilinear/case1-constant-acceleration.yaml'); "
+            "print('scipy' in sys.modules, 'numpy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                         env={"PYTHONPATH": str(ROOT), "PATH": ""})
+    assert out.stdout.split() == ["False", "False"], out.stderr
+
+
+# -- routes agree ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("a,kw,find", [
+    ("3*sin(2*t)", dict(v1=-1, s1=0.5), [{"t": 2}, {"t": -1.5}, {"v": 0.5}, {"s": 1}]),
+    ("-9.81 - 0.01*v*abs(v)", dict(v1=20), [{"t": 1}, {"t": -1}, {"v": 0}, {"s": -10}]),
+    ("-4*s - 0.5*s**3", dict(v1=1, s1=0.5), [{"t": 1}, {"t": -2.5}, {"v": 0}, {"s": -0.6}]),
+])
+def test_quadrature_and_ode_routes_agree(a, kw, find):
+    q = problem(a, find, **kw)
+    o = problem(a, find, accuracy="{method: ode}", **kw)
+    assert q["method"].startswith("quadrature") and o["method"] == "ode:DOP853"
+    for x, y in zip(entries(q), entries(o)):
+        for k in "tsv":
+            close(x[k], y[k], scale=1.0, rtol=1e-9)
+
+
+def test_quadrature_for_case1_uses_the_case2_route():
+    rec = problem("-4", [{"t": 2}, {"s": 50}], v1=20, accuracy="{method: quadrature}")
+    assert rec["method"] == "quadrature+root"
+    f = entries(rec)
+    close(f[0]["s"], 32); close(f[1]["t"], 5, scale=5)
+
+
+def test_estimate_reports_a_second_solve():
+    rec = problem("-0.5*v", [{"t": 2}], v1=10, accuracy="{estimate: true}")
+    assert 0 <= rec["error_estimate"] < 1e-10
+
+
+# -- case 2 -------------------------------------------------------------------------
+
+
+def test_case2_grazing_turning_point():
+    # a = -2 (written with t): s rises to its maximum 4 at t = 2 and comes back
+    f = entries(problem("-2 + 0*t", [{"s": 4}, {"v": -4}, {"s": 4.0000001}], v1=4))
+    assert f[0]["t"] == pytest.approx(2, rel=1e-12) and f[0]["s"] == pytest.approx(4, rel=1e-12)
+    close(f[1]["t"], 4)
+    assert is_unreached(f[2])
+
+
+# -- case 3 -------------------------------------------------------------------------
+
+
+def test_case3_coulomb_friction_stops_in_finite_time():
+    f = entries(problem("-2*sign(v)", [{"t": 1}, {"t": 5}, {"v": 0}, {"s": 4}, {"s": 5}, {"t": -1}], v1=4))
+    close(f[0]["s"], 3); close(f[0]["v"], 2)
+    close(f[1]["s"], 4); close(f[1]["v"], 0, scale=1)     # at rest after t = 2
+    close(f[2]["t"], 2); close(f[3]["t"], 2)
+    assert is_unreached(f[4])
+    close(f[5]["s"], -5); close(f[5]["v"], 6)
+
+
+def test_case3_finite_time_blow_up():
+    # a = v^2, v1 = 1: v = 1/(1 - t), s = -ln(1 - t)
+    rec = problem("v**2", [{"t": 0.5}, {"t": 2}, {"t": -1}, {"v": 1e6}], v1=1)
+    f = entries(rec)
+    close(f[0]["v"], 2); close(f[0]["s"], math.log(2))
+    assert is_unreached(f[1]) and any("blow-up" in w for w in rec["warnings"])
+    close(f[2]["v"], 0.5); close(f[2]["s"], -math.log(2))
+    close(f[3]["t"], 1 - 1e-6); close(f[3]["s"], math.log(1e6))
+
+
+@pytest.mark.parametrize("T", [5, 20, 40, 200, 1e5])
+def test_case3_t_queries_near_terminal_velocity(T):
+    # a = 5 - v from rest: v = 5 (1 - e^-t), s = 5 t - 5 (1 - e^-t)
+    f = entries(problem("5 - v", [{"t": T}]))
+    T = mp.mpf(T)
+    close(f[0]["v"], 5 * (1 - mp.exp(-T)))
+    close(f[0]["s"], 5 * T - 5 * (1 - mp.exp(-T)))
+
+
+def test_case3_v_query_close_to_terminal_velocity():
+    f = entries(problem("5 - v", [{"v": 4.999999}, {"v": 5}, {"v": 5.1}]))
+    close(f[0]["t"], mp.log(5 / mp.mpf("0.000001")))
+    assert is_unreached(f[1]) and is_unreached(f[2])
+
+
+# -- case 4 -------------------------------------------------------------------------
+
+
+def test_case4_start_at_rest_is_symmetric_in_time():
+    f = entries(problem("-9*s", [{"t": 0.4}, {"t": -0.4}, {"v": 0}, {"s": -0.2}], s1=0.2))
+    close(f[0]["s"], 0.2 * math.cos(1.2)); close(f[1]["s"], 0.2 * math.cos(1.2))
+    close(f[0]["v"], -0.6 * math.sin(1.2)); close(f[1]["v"], 0.6 * math.sin(1.2))
+    assert f[2]["t"] == 0
+    close(f[3]["t"], math.pi / 3)
+
+
+def test_case4_equilibrium():
+    rec = problem("-s", [{"t": 3}, {"s": 1}, {"v": 0}])
+    f = entries(rec)
+    assert f[0]["s"] == 0 and f[0]["v"] == 0 and f[2]["t"] == 0
+    assert is_unreached(f[1]) and any("equilibrium" in w for w in rec["warnings"])
+
+
+def test_case4_pendulum_separatrix_is_approached_never_reached():
+    # s'' = -sin s with v1 = 2: s = 4 atan(e^t) - pi, v = 2 sech t
+    rec = problem("-sin(s)", [{"t": 3}, {"t": -3}, {"t": 50}, {"s": 3}, {"s": 3.2}, {"v": 0}], v1=2)
+    f = entries(rec)
+    for k, T in ((0, 3), (1, -3)):
+        close(f[k]["s"], 4 * mp.atan(mp.exp(T)) - mp.pi, scale=1)
+        close(f[k]["v"], 2 / mp.cosh(T), scale=1)
+    close(f[2]["s"], mp.pi)
+    close(f[3]["t"], mp.log(mp.tan((3 + mp.pi) / 4)), scale=1)
+    assert is_unreached(f[4]) and is_unreached(f[5])
+
+
+def test_case4_escape_and_fall_into_a_singularity():
+    # a = -1/s^2 (mu = 1) from s1 = 1 with v1 = 2 > sqrt(2): v^2 = 2 + 2/s, escapes
+    rec = problem("-1/s**2", [{"s": 10}, {"v": 1.5}, {"v": 1.4}, {"t": -0.3}, {"t": -0.5}], s1=1, v1=2)
+    f = entries(rec)
+    t10 = mp.quad(lambda s: 1 / mp.sqrt(2 + 2 / s), [1, 10])
+    close(f[0]["t"], t10)
+    s15 = 2 / (mp.mpf("2.25") - 2)
+    close(f[1]["t"], mp.quad(lambda s: 1 / mp.sqrt(2 + 2 / s), [1, s15]))
+    assert is_unreached(f[2])
+    s_back = mp.findroot(lambda x: mp.quad(lambda s: 1 / mp.sqrt(2 + 2 / s), [x, 1]) - mp.mpf("0.3"), 0.3)
+    close(f[3]["s"], s_back)
+    assert is_unreached(f[4]) and any("singular" in w for w in rec["warnings"])
+    # from rest: s = x, t = sqrt(1/2) (sqrt(x (1 - x)) + acos(sqrt(x))); falls in at pi / (2 sqrt 2)
+    rec = problem("-1/s**2", [{"t": 1}, {"s": 0.5}, {"t": 1.2}], s1=1)
+    f = entries(rec)
+    T = lambda x: mp.sqrt(mp.mpf(1) / 2) * (mp.sqrt(x * (1 - x)) + mp.acos(mp.sqrt(x)))
+    close(f[0]["s"], mp.findroot(lambda x: T(x) - 1, 0.35))
+    close(f[1]["t"], T(mp.mpf("0.5")))
+    assert is_unreached(f[2])
+    assert any(f"{float(mp.pi / (2 * mp.sqrt(2))):.9g}"[:9] in w for w in rec["warnings"])
+
+
+def test_case4_long_times_stay_on_the_orbit():
+    # 1000 periods of a stiff-ish spring: phase must survive the reduction mod the period
+    f = entries(problem("-100*s", [{"t": 628.3}], s1=0.1, v1=1))
+    close(f[0]["s"], 0.1 * mp.cos(6283) + 0.1 * mp.sin(6283), rtol=1e-9)
+
+
+# -- general ------------------------------------------------------------------------
+
+
+def test_general_grazing_turning_point_and_extremum_of_v():
+    # a = -4 s written with t: amplitude sqrt(0.5) — the target IS the turning point
+    # s = sin(2t + pi/4)/sqrt(2), v = sqrt(2) cos(2t + pi/4): v = -sqrt(2) is the extremum of v
+    f = entries(problem("-4*s + 0*t", [{"s": 0.7071067811865476}, {"v": -1.4142135623730951}], s1=0.5, v1=1))
+    close(f[0]["t"], mp.pi / 8, rtol=1e-9)
+    close(f[1]["t"], 3 * mp.pi / 8, rtol=1e-9)
+
+
+def test_general_blow_up_is_reported():
+    rec = problem("v**2 + 0*t", [{"t": 0.5}, {"t": 2}, {"t": -1}], v1=1)
+    f = entries(rec)
+    close(f[0]["v"], 2, rtol=1e-9); close(f[2]["v"], 0.5, rtol=1e-9)
+    assert is_unreached(f[1])
+    assert any("find[1]" in w and "blows up" in w for w in rec["warnings"])
