@@ -48,3 +48,31 @@ def test_no_queries_default_span():
         t = line(f.axes[0], "s(t)").get_xdata()
         assert t[0] == 0 and t[-1] == 10
         assert not [ln for ln in f.axes[0].get_lines() if ln.get_label().startswith("answered")]
+
+
+def test_case4_spring_follows_the_closed_form(tmp_path, monkeypatch):
+    """Case 4 (quadrature through the turning points): the plotted curves are
+    s = 0.1 cos 5t + 0.2 sin 5t, v = ṡ (independent closed form of s̈ = −25 s),
+    before t1 too (the {t: -0.7} query)."""
+    from dyncli.topics.rectilinear import plots
+
+    monkeypatch.setattr(plots, "BUDGET", 1.0)                # keep the test fast
+    pans = panels(solved_path("rectilinear/case4-spring.yaml"))
+    render_both(tmp_path, pans[:1])
+    with Fig(pans) as f:
+        t, s = (np.asarray(a, float) for a in line(f.axes[0], "s(t)").get_data())
+        _, v = (np.asarray(a, float) for a in line(f.axes[1], "v(t)").get_data())
+        assert t[0] == -0.7 and t[-1] > 50
+        assert len(t) >= 301
+        assert np.allclose(s, 0.1 * np.cos(5 * t) + 0.2 * np.sin(5 * t), atol=1e-7)
+        assert np.allclose(v, -0.5 * np.sin(5 * t) + np.cos(5 * t), atol=1e-6)
+        assert "case 4" in f.axes[0].get_title()
+        assert line(f.axes[0], "t₁").get_xdata()[0] == 0
+
+
+def test_general_ode_route_renders(tmp_path):
+    pans = panels(solved_path("rectilinear/general-forced-damped.yaml"))
+    render_both(tmp_path, pans[1:])
+    with Fig(pans) as f:
+        assert "general" in f.axes[0].get_title()
+        assert len(line(f.axes[0], "s(t)").get_xdata()) > 100

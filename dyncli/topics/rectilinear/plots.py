@@ -14,9 +14,11 @@ from __future__ import annotations
 from dyncli.errors import DyncliError
 from dyncli.result import Line, Plot
 
-POINTS = 301       # at most, on a fine grid
+POINTS = 301       # on a fine grid (more for a periodic motion, up to MAX_POINTS)
+MAX_POINTS = 3000
+PER_PERIOD = 40
 COARSE = 31       # first pass, to measure the cost of a point
-BUDGET = 2.0      # seconds for the fine pass
+BUDGET = 3.0      # seconds for the fine pass
 DEFAULT_SPAN = 10.0
 
 
@@ -57,20 +59,33 @@ def _solve_at(p, ts):
     return good
 
 
-def _grid(p, lo, hi):
-    """[(t, s, v)] from the solver on a grid of times in [lo, hi]: COARSE
-    points first, then up to POINTS as far as the measured cost per point
-    allows (BUDGET seconds), so a slow route still plots quickly."""
+def _grid(p, lo, hi, period, marks):
+    """[(t, s, v)] from the solver on a grid of times in [lo, hi] (plus the
+    answered query times ``marks``, so the markers sit on the curves).
+
+    The wanted number of points is POINTS, or PER_PERIOD per period of a
+    periodic motion (case 4), at most MAX_POINTS; it is cut to what the
+    measured cost of a point allows in BUDGET seconds (two small passes
+    measure the solver's fixed and per-point cost), so a slow route still
+    plots quickly."""
     import time
 
     def times(n):
-        return [lo + (hi - lo) * i / (n - 1) for i in range(n)]
+        grid = [lo + (hi - lo) * i / (n - 1) for i in range(n)]
+        return sorted(set(grid + [t for t in marks if lo <= t <= hi]))
 
+    wanted = POINTS
+    if period:
+        wanted = max(wanted, int(PER_PERIOD * (hi - lo) / period) + 1)
+    wanted = min(wanted, MAX_POINTS)
     t0 = time.perf_counter()
+    _solve_at(p, times(2))
+    t1 = time.perf_counter()
     found = _solve_at(p, times(COARSE))
-    per_point = (time.perf_counter() - t0) / COARSE
-    n = int(min(POINTS, BUDGET / per_point)) if per_point > 0 else POINTS
-    if n > 2 * COARSE and len(found) == COARSE:
+    t2 = time.perf_counter()
+    per_point = max((t2 - t1) - (t1 - t0), 0.0) / (COARSE - 2) or (t2 - t1) / COARSE
+    n = int(min(wanted, BUDGET / per_point)) if per_point > 0 else wanted
+    if n > 2 * COARSE and len(found) >= COARSE:
         found = _solve_at(p, times(n))
     return [(q["t"], q["s"], q["v"]) for q in found if q.get("reached") and q.get("s") is not None]
 
@@ -79,7 +94,7 @@ def plots(problem, result) -> list[Plot]:
     queries = result.results.get("find") or []
     answered = [q for q in queries if q.get("reached") and q.get("t") is not None]
     lo, hi = _span(problem, answered)
-    pts = _grid(problem, lo, hi)
+    pts = _grid(problem, lo, hi, result.results.get("period"), [q["t"] for q in answered])
     t = [x[0] for x in pts]
     case = result.results.get("case")
     where = f"case {case}" if isinstance(case, int) else str(case)
