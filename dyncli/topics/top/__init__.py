@@ -1,0 +1,1 @@
+"""The heavy symmetric top: nutation, precession and reactions (notes §38)."""

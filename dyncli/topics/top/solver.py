@@ -1,0 +1,602 @@
+"""The heavy symmetric top (notes §38): integration of (38.18), reaction
+(38.16), nutation bounds from the energy and momentum integrals.
+
+Numerical route (numpy; scipy imported lazily inside :func:`integrate`)
+-----------------------------------------------------------------------
+The 3-1-3 Euler angles are singular at θ = 0 and θ = π, so the motion is
+integrated in a non-singular representation: the unit quaternion q of the
+body basis e'_i (fixed ← body) and the body components w of ω, with Euler's
+equations for the symmetric top about O,
+
+    I11 ẇ1 = (I11 − I33) w2 w3 + mgL γ2,   I11 ẇ2 = (I33 − I11) w3 w1 − mgL γ1,
+    I33 ẇ3 = 0 (38.18c),                   q̇ = ½ q ⊗ (0, w),
+
+where γ = (sinθ sinφ, sinθ cosφ, cosθ) are the body components of e3 and
+the gravity moment is M_O = L e'_3 × (−mg e3) (38.17).  This is (38.18)
+written on the body basis.  With q = (cos(θ/2)cos(σ/2), sin(θ/2)cos(δ/2),
+sin(θ/2)sin(δ/2), cos(θ/2)sin(σ/2)), σ = ψ + φ, δ = ψ − φ, the angles are
+read back without loss of precision: θ = 2 atan2(|(q1,q2)|, |(q0,q3)|),
+ψ ≡ atan2(q3,q0) + atan2(q2,q1), φ ≡ atan2(q3,q0) − atan2(q2,q1) (mod 2π).
+
+Continuous (unwrapped) ψ and φ are tracked along the trajectory: between two
+points the horizontal projection of the axis e'_3 moves at most ℓ = Δt·W⊥
+(W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/4 at both ends
+the change of ψ is below 0.26 rad and is read as a principal value,
+otherwise the interval is bisected on the integrator's dense output.  The
+spin φ follows from ψ and σ (or δ near θ = π), its branch from
+Δφ ≈ ω3 Δt − cosθ̄ Δψ (error < 0.1 rad on such an interval).  Where the
+axis passes (numerically) through the vertical, ψ and φ are individually
+undefined; the tracker keeps them continuous and says so.
+
+Nutation bounds: with u = cosθ, the energy and the two momentum integrals
+(H·e3 and ω3 = ψ̇ cosθ + φ̇) give u̇² = f(u) = (α − βu)(1 − u²) − (b − cu)²,
+a cubic; θ_min, θ_max are its roots around u0 = cosθ0.  The cubic is formed
+about u0 (its constant term (θ̇0 sinθ0)² exact), solved with numpy.roots and
+polished in v = 1 − u or w = 1 + u near the poles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import NumericalError
+from dyncli.result import FrameTable, Result, Series
+
+TWO_PI = 2.0 * math.pi
+EPS = float(np.finfo(float).eps)
+#: largest number of integrator steps
+MAX_STEPS = 5_000_000
+#: deepest bisection of one step when tracking ψ near the poles
+MAX_DEPTH = 60
+#: sinθ below this: ψ and φ individually undefined (only ψ ± φ)
+S_TINY = 1e-12
+#: closest approach to a pole that gets a warning (rad)
+POLE_WARN = 1e-3
+BASIS = ("e''₁", "e''₂", "e''₃")
+
+
+def _wrap(x: float) -> float:
+    """x reduced to (−π, π]."""
+    r = math.remainder(x, TWO_PI)
+    return math.pi if r == -math.pi else r
+
+
+# ---------------------------------------------------------------------------
+# kinematics of the representation
+
+
+def quat_from_euler(psi: float, theta: float, phi: float) -> np.ndarray:
+    """Unit quaternion of Rz(ψ) Rx(θ) Rz(φ) (columns = body axes, 38.6-38.7)."""
+    ch, sh = math.cos(theta / 2), math.sin(theta / 2)
+    s2, d2 = (psi + phi) / 2, (psi - phi) / 2
+    return np.array([ch * math.cos(s2), sh * math.cos(d2), sh * math.sin(d2), ch * math.sin(s2)])
+
+
+def body_omega(theta, phi, psi_dot, theta_dot, phi_dot) -> np.ndarray:
+    """Body components of ω = θ̇ e''_1 + ψ̇ sinθ e''_2 + (ψ̇ cosθ + φ̇) e''_3 (38.11b)."""
+    o1, o2, o3 = theta_dot, psi_dot * math.sin(theta), psi_dot * math.cos(theta) + phi_dot
+    c, s = math.cos(phi), math.sin(phi)
+    return np.array([o1 * c + o2 * s, -o1 * s + o2 * c, o3])
+
+
+def gamma(q) -> tuple[float, float, float]:
+    """Body components of the fixed e3 (third row of the rotation)."""
+    q0, q1, q2, q3 = q
+    return 2.0 * (q1 * q3 - q0 * q2), 2.0 * (q2 * q3 + q0 * q1), q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3
+
+
+def half_angles(q):
+    """(θ, sinθ, cosθ, a, b) with ψ ≡ a + b, φ ≡ a − b (mod 2π)."""
+    q0, q1, q2, q3 = q
+    n03, n12 = math.hypot(q0, q3), math.hypot(q1, q2)
+    n2 = n03 * n03 + n12 * n12
+    return (2.0 * math.atan2(n12, n03), 2.0 * n03 * n12 / n2, (n03 - n12) * (n03 + n12) / n2,
+            math.atan2(q3, q0), math.atan2(q2, q1))
+
+
+class Top:
+    """Constants of one top and the right-hand side of the body equations."""
+
+    def __init__(self, m, L, A, C, g):
+        self.m, self.L, self.A, self.C, self.g = m, L, A, C, g
+        self.mgL = m * g * L
+        self.k1 = (A - C) / A
+        self.kg = self.mgL / A
+
+    def rhs(self, t, y):
+        q0, q1, q2, q3, w1, w2, w3 = y.tolist()
+        g1 = 2.0 * (q1 * q3 - q0 * q2)
+        g2 = 2.0 * (q2 * q3 + q0 * q1)
+        k1, kg = self.k1, self.kg
+        return np.array([
+            -0.5 * (q1 * w1 + q2 * w2 + q3 * w3),
+            0.5 * (q0 * w1 + q2 * w3 - q3 * w2),
+            0.5 * (q0 * w2 + q3 * w1 - q1 * w3),
+            0.5 * (q0 * w3 + q1 * w2 - q2 * w1),
+            k1 * w2 * w3 + kg * g2,
+            -k1 * w3 * w1 - kg * g1,
+            0.0,
+        ])
+
+    def invariants(self, q, w):
+        """E, H·e3, ω3 of a state (body components)."""
+        g1, g2, g3 = gamma(q)
+        w1, w2, w3 = w
+        A, C = self.A, self.C
+        E = 0.5 * (A * (w1 * w1 + w2 * w2) + C * w3 * w3) + self.mgL * g3
+        H = A * (w1 * g1 + w2 * g2) + C * w3 * g3
+        return E, H, w3
+
+    def project(self, y, E0, H0, W3, S):
+        """Move y onto E = E0, H·e3 = H0, ω3 = W3, |q| = 1 (minimum-norm
+        Gauss-Newton in (√I11 w1, √I11 w2, S δ), δ a small body rotation)."""
+        A, C, mgL = self.A, self.C, self.mgL
+        q0, q1, q2, q3, w1, w2, w3 = (float(v) for v in y)
+        n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+        q0, q1, q2, q3 = q0 / n, q1 / n, q2 / n, q3 / n
+        w3 = W3
+        rA = math.sqrt(A)
+        for _ in range(2):
+            g1, g2, g3 = gamma((q0, q1, q2, q3))
+            c1 = 0.5 * (A * (w1 * w1 + w2 * w2) + C * w3 * w3) + mgL * g3 - E0
+            c2 = A * (w1 * g1 + w2 * g2) + C * w3 * g3 - H0
+            h0, h1, h2 = A * w1, A * w2, C * w3
+            # rows of the Jacobian in the scaled variables
+            J1 = (h0 / rA, h1 / rA, -mgL * g2 / S, mgL * g1 / S, 0.0)
+            J2 = (A * g1 / rA, A * g2 / rA, (h1 * g3 - h2 * g2) / S, (h2 * g1 - h0 * g3) / S, (h0 * g2 - h1 * g1) / S)
+            a = sum(x * x for x in J1)
+            b = sum(x * z for x, z in zip(J1, J2))
+            d = sum(x * x for x in J2)
+            det = a * d - b * b
+            if det > 1e-12 * a * d and det > 0:
+                l1 = (d * c1 - b * c2) / det
+                l2 = (a * c2 - b * c1) / det
+            elif a >= d and a > 0:      # (nearly) one constraint direction: use the larger row
+                l1, l2 = c1 / a, 0.0
+            elif d > 0:
+                l1, l2 = 0.0, c2 / d
+            else:
+                break
+            dz = [-(l1 * x + l2 * z) for x, z in zip(J1, J2)]
+            w1 += dz[0] / rA
+            w2 += dz[1] / rA
+            d1, d2, d3 = 0.5 * dz[2] / S, 0.5 * dz[3] / S, 0.5 * dz[4] / S
+            # q <- q ⊗ (1, δ/2), renormalised
+            q0, q1, q2, q3 = (q0 - q1 * d1 - q2 * d2 - q3 * d3, q1 + q0 * d1 + q2 * d3 - q3 * d2,
+                              q2 + q0 * d2 + q3 * d1 - q1 * d3, q3 + q0 * d3 + q1 * d2 - q2 * d1)
+            n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+            q0, q1, q2, q3 = q0 / n, q1 / n, q2 / n, q3 / n
+        return np.array([q0, q1, q2, q3, w1, w2, w3])
+
+
+# ---------------------------------------------------------------------------
+# nutation bounds (semi-analytic)
+
+
+def _newton(coef, x, lo, hi):
+    """Polish a root of the polynomial ``coef`` (highest first) within [lo, hi]."""
+    p = np.poly1d(coef)
+    dp = p.deriv()
+    fx = abs(p(x))
+    for _ in range(8):
+        d = dp(x)
+        if d == 0 or not math.isfinite(d):
+            break
+        xn = min(max(x - p(x) / d, lo), hi)
+        fn = abs(p(xn))
+        if not fn < fx:
+            break
+        x, fx = xn, fn
+    return x
+
+
+def turning_points(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3):
+    """θ_min, θ_max of the nutation and the bound of |ω⊥|² over the motion.
+
+    f(u) = (α − βu)(1 − u²) − (b − cu)², u = cosθ, with α = (2E − I33 ω3²)/I11,
+    β = 2mgL/I11, b = H·e3/I11, c = I33 ω3/I11; the motion keeps f(u) = u̇² ≥ 0."""
+    s0, u0 = math.sin(theta0), math.cos(theta0)
+    v0 = 2.0 * math.sin(theta0 / 2) ** 2        # 1 − u0
+    w0 = 2.0 * math.cos(theta0 / 2) ** 2        # 1 + u0
+    K = theta_dot0 ** 2 + (psi_dot0 * s0) ** 2  # α − β u0 = |ω⊥|²
+    P = psi_dot0 * s0 * s0                      # b − c u0
+    beta = 2.0 * mgL / A
+    c = C * omega3 / A
+    # about u0: x = u − u0
+    F0 = (theta_dot0 * s0) ** 2
+    F1 = -beta * s0 * s0 - 2.0 * u0 * K + 2.0 * c * P
+    F2 = 2.0 * beta * u0 - K - c * c
+    coef = [beta, F2, F1, F0]
+    while coef and coef[0] == 0.0:
+        coef = coef[1:]
+    if len(coef) <= 1:
+        return theta0, theta0, K
+    r = np.roots(coef)
+    x = np.sort(r.real)
+    x1 = min(float(x[0]), 0.0)
+    x2 = max(float(x[1]), 0.0) if len(x) > 1 else 0.0
+    # upper root u2 = u0 + x2 (θ_min), in v = 1 − u
+    D, B = K - beta * v0, P - c * v0
+    v2 = min(max(v0 - x2, 0.0), v0)
+    if v2 < 0.5:
+        v2 = _newton([-beta, 2 * beta - D - c * c, 2 * D - 2 * B * c, -B * B], v2, 0.0, v0)
+        th_min = 2.0 * math.asin(math.sqrt(v2 / 2.0))
+    else:
+        th_min = math.acos(min(max(u0 + x2, -1.0), 1.0))
+    # lower root u1 = u0 + x1 (θ_max), in w = 1 + u
+    Dp, Bp = K + beta * w0, P + c * w0
+    w1 = min(max(w0 + x1, 0.0), w0)
+    if w1 < 0.5:
+        w1 = _newton([beta, -(Dp + 2 * beta + c * c), 2 * Dp + 2 * Bp * c, -Bp * Bp], w1, 0.0, w0)
+        th_max = math.pi - 2.0 * math.asin(math.sqrt(w1 / 2.0))
+    else:
+        th_max = math.acos(min(max(u0 + x1, -1.0), 1.0))
+    th_min, th_max = min(th_min, theta0), max(th_max, theta0)
+    wperp2 = K + beta * max(u0 - math.cos(th_max), 0.0)
+    return th_min, th_max, wperp2
+
+
+# ---------------------------------------------------------------------------
+# integration with continuous angles
+
+
+class _Tracker:
+    """Continuous ψ, φ along the trajectory (see the module docstring)."""
+
+    def __init__(self, psi, phi, q, W3, Wp):
+        self.psi, self.phi = psi, phi
+        self.ang = half_angles(q)
+        self.W3, self.Wp = W3, Wp
+        self.ambiguous: list[float] = []
+
+    def _seg(self, ta, anga, psi_a, phi_a, tb, angb, dense, depth):
+        sa, sb = anga[1], angb[1]
+        ell = (tb - ta) * self.Wp
+        smin = min(sa, sb)
+        if not (ell < 0.25 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
+            tm = 0.5 * (ta + tb)
+            if ta < tm < tb:
+                angm = half_angles(_unit(dense(tm)[:4]))
+                psi_m, phi_m = self._seg(ta, anga, psi_a, phi_a, tm, angm, dense, depth + 1)
+                return self._seg(tm, angm, psi_m, phi_m, tb, angb, dense, depth + 1)
+        _, _, cb, ab, bb = angb
+        if sb < S_TINY:
+            psi_b = psi_a              # ψ undefined at the pole: keep it, φ carries ψ ± φ
+            if ell > 0 and sa >= S_TINY:
+                self.ambiguous.append(tb)
+        else:
+            if not (ell < 0.25 * smin) and sa >= S_TINY:
+                self.ambiguous.append(tb)
+            psi_b = psi_a + _wrap(ab + bb - psi_a)
+        pred = phi_a + self.W3 * (tb - ta) - (psi_b - psi_a) * 0.5 * (anga[2] + cb)
+        phi_w = (2.0 * ab - psi_b) if cb >= 0 else (psi_b - 2.0 * bb)
+        return psi_b, pred + _wrap(phi_w - pred)
+
+    def advance(self, ta, tb, qb, dense):
+        angb = half_angles(qb)
+        self.psi, self.phi = self._seg(ta, self.ang, self.psi, self.phi, tb, angb, dense, 0)
+        self.ang = angb
+        return self.psi, self.phi, angb
+
+
+def _unit(q):
+    q = np.asarray(q, dtype=float)
+    return q / math.sqrt(float(q @ q))
+
+
+class Run:
+    """One integration: states at the requested (sorted) times."""
+
+    def __init__(self, n):
+        self.psi = np.zeros(n)
+        self.theta = np.zeros(n)
+        self.phi = np.zeros(n)
+        self.w = np.zeros((n, 3))
+        self.drift = (0.0, 0.0, 0.0)
+        self.ambiguous: list[float] = []
+        self.steps = 0
+        self.nfev = 0
+
+
+def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales):
+    """Integrate from y0 (quaternion + body ω) to the sorted ``times``."""
+    import scipy.integrate as si
+
+    n = len(times)
+    run = Run(n)
+    E0, H0, W3 = top.invariants(y0[:4], y0[4:])
+    Es, Hs, Ws = scales
+    projected = method == "projected"
+    cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA,
+           "projected": si.DOP853}[method]
+    S = math.sqrt(top.A) * Ws
+    rtol = max(rtol, 100 * EPS * 1.0001)
+    atol_v = np.array([atol] * 4 + [atol * Ws] * 3)
+    tr = _Tracker(psi0, phi0, y0[:4], W3, Wp * (1.0 + 1e-6) + 1e-300)
+    dE = dH = dW = 0.0
+
+    def record(k, t, y):
+        nonlocal dE, dH, dW
+        E, H, w3 = top.invariants(y[:4], y[4:])
+        dE, dH, dW = max(dE, abs(E - E0)), max(dH, abs(H - H0)), max(dW, abs(w3 - W3))
+        if k is not None:
+            run.psi[k], run.phi[k], run.theta[k] = tr.psi, tr.phi, tr.ang[0]
+            run.w[k] = y[4:]
+
+    k = 0
+    t_prev = 0.0
+    while k < n and times[k] == 0.0:
+        record(k, 0.0, y0)
+        run.psi[k], run.phi[k] = psi0, phi0
+        k += 1
+    T = times[-1] if n else 0.0
+    if k < n:
+        solver = cls(top.rhs, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
+        while k < n:
+            msg = solver.step()
+            if solver.status == "failed":
+                raise NumericalError(f"the integrator ({method}) failed at t = {solver.t:.6g} s: {msg}")
+            run.steps += 1
+            if run.steps > MAX_STEPS:
+                raise NumericalError(f"more than {MAX_STEPS} integrator steps before t = {T:g} s "
+                                     f"(reached t = {solver.t:.6g} s); loosen accuracy.rtol or shorten 'at'")
+            tb = solver.t
+            cache = []
+
+            def dense(t, _c=cache, _s=solver):
+                if not _c:
+                    _c.append(_s.dense_output())
+                return _c[0](t)
+
+            while k < n and times[k] <= tb:
+                tk = times[k]
+                if tk == tb:
+                    yk = np.array(solver.y, dtype=float)
+                else:
+                    yk = np.asarray(dense(tk), dtype=float)
+                yk = top.project(yk, E0, H0, W3, S) if projected else _normq(yk)
+                tr.advance(t_prev, tk, yk[:4], dense)
+                t_prev = tk
+                record(k, tk, yk)
+                k += 1
+            yb = top.project(solver.y, E0, H0, W3, S) if projected else _normq(solver.y)
+            if tb > t_prev:
+                tr.advance(t_prev, tb, yb[:4], dense)
+                t_prev = tb
+            if projected:
+                solver.y = yb
+                solver.f = solver.fun(solver.t, yb)
+            record(None, tb, yb)
+            if solver.status == "finished":
+                break
+        run.nfev = solver.nfev
+        if k < n:  # pragma: no cover - the solver ends exactly at T
+            raise NumericalError(f"the integrator stopped at t = {solver.t:.6g} s before t = {T:g} s")
+    run.drift = (dE / Es if Es > 0 else 0.0, dH / Hs if Hs > 0 else 0.0, dW / Ws if Ws > 0 else 0.0)
+    run.ambiguous = tr.ambiguous
+    return run
+
+
+def _normq(y):
+    y = np.array(y, dtype=float)
+    y[:4] /= math.sqrt(float(y[:4] @ y[:4]))
+    return y
+
+
+# ---------------------------------------------------------------------------
+# derived quantities
+
+
+def rates(top: Top, theta, phi, w):
+    """ψ̇, θ̇, φ̇ and S = ψ̇ sinθ from body ω (38.11b); ψ̇ = nan where sinθ = 0."""
+    c, s = np.cos(phi), np.sin(phi)
+    th_dot = w[:, 0] * c - w[:, 1] * s
+    S = w[:, 0] * s + w[:, 1] * c
+    sth = np.sin(theta)
+    with np.errstate(all="ignore"):
+        psi_dot = np.where(sth > 0, S / np.where(sth > 0, sth, 1.0), np.nan)
+    phi_dot = w[:, 2] - psi_dot * np.cos(theta)
+    return psi_dot, th_dot, phi_dot, S
+
+
+def reaction(top: Top, theta, phi, w):
+    """R = mg e3 + m ā (38.16a) on e'', with ā = ω̇ × x̄ + ω × (ω × x̄), x̄ = L e'_3."""
+    m, g, L = top.m, top.g, top.L
+    w1, w2, w3 = w[:, 0], w[:, 1], w[:, 2]
+    sth, cth = np.sin(theta), np.cos(theta)
+    sp, cp = np.sin(phi), np.cos(phi)
+    g1, g2 = sth * sp, sth * cp
+    wd1 = top.k1 * w2 * w3 + top.kg * g2
+    wd2 = -top.k1 * w3 * w1 - top.kg * g1
+    a1 = L * (wd2 + w1 * w3)
+    a2 = L * (-wd1 + w2 * w3)
+    a3 = -L * (w1 * w1 + w2 * w2)
+    R1b, R2b = m * (g * g1 + a1), m * (g * g2 + a2)
+    R3 = m * (g * cth + a3)
+    return np.column_stack([R1b * cp - R2b * sp, R1b * sp + R2b * cp, R3])
+
+
+def _cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def table_381(top: Top, theta, psi_dot, theta_dot, omega3, S):
+    """Rows of the notes' Table 38.1 on e'' (numbers; None where undefined)."""
+    A, C, L, mgL = top.A, top.C, top.L, top.mgL
+    sth, cth = math.sin(theta), math.cos(theta)
+    with np.errstate(all="ignore"):
+        Om3 = psi_dot * cth
+        th_dd = S * psi_dot * cth - C / A * S * omega3 + mgL / A * sth          # (38.18a)
+        psdd_s = -2.0 * psi_dot * theta_dot * cth + C / A * omega3 * theta_dot  # ψ̈ sinθ (38.18b)
+        Om = [theta_dot, S, Om3]
+        H = [A * theta_dot, A * S, C * omega3]
+        dH = [A * th_dd, A * (psdd_s + psi_dot * theta_dot * cth), 0.0]
+        OxH = _cross(Om, H)
+        Hdot = [dH[i] + OxH[i] for i in range(3)]
+        xb = [0.0, 0.0, L]
+        vb = [L * S, -L * theta_dot, 0.0]
+        ab = [L * psdd_s + 2 * L * psi_dot * theta_dot * cth,
+              -L * th_dd + L * S * psi_dot * cth,
+              -L * theta_dot ** 2 - L * S * S]
+
+    def clean(v):
+        return [float(x) + 0.0 if x is not None and math.isfinite(x) else None for x in v]
+
+    return [("Ω", clean(Om)), ("H_O", clean(H)), ("δH_O/δt", clean(dH)), ("Ω×H_O", clean(OxH)),
+            ("Ḣ_O", clean(Hdot)), ("x̄", clean(xb)), ("v̄", clean(vb)), ("ā", clean(ab))]
+
+
+TABLE_FORMULAS = [
+    ("Ω", ["θ̇", "ψ̇ sinθ", "ψ̇ cosθ"]),
+    ("H_O", ["I11 θ̇", "I11 ψ̇ sinθ", "I33 (ψ̇ cosθ + φ̇)"]),
+    ("δH_O/δt", ["I11 θ̈", "I11 (ψ̈ sinθ + ψ̇ θ̇ cosθ)", "I33 (ψ̈ cosθ − ψ̇ θ̇ sinθ + φ̈) = 0"]),
+    ("Ω×H_O", ["I33 (ψ̇ cosθ + φ̇) ψ̇ sinθ − I11 ψ̇² sinθ cosθ", "−I33 (ψ̇ cosθ + φ̇) θ̇ + I11 θ̇ ψ̇ cosθ", "0"]),
+    ("Ḣ_O", ["mgL sinθ", "0", "0"]),
+    ("x̄", ["0", "0", "L"]),
+    ("v̄", ["L ψ̇ sinθ", "−L θ̇", "0"]),
+    ("ā", ["L ψ̈ sinθ + 2L ψ̇ θ̇ cosθ", "−L θ̈ + L ψ̇² sinθ cosθ", "−L θ̇² − L ψ̇² sin²θ"]),
+]
+
+
+# ---------------------------------------------------------------------------
+
+
+def _listf(a):
+    return [float(x) + 0.0 for x in np.asarray(a, dtype=float)]
+
+
+def solve(p, options=None) -> Result:
+    A, C, m, L, g = p.I11, p.I33, p.m, p.L, p.g
+    top = Top(m, L, A, C, g)
+    res = Result(results={}, method="closed-form",
+                 equations=["38.6", "38.11b", "38.15b", "38.16", "38.17c", "38.18"])
+    if A < m * L * L * (1 - 1e-12):
+        res.warn(f"I11 = {A:.6g} kg·m² < mL² = {m * L * L:.6g} kg·m²: no rigid body has a transverse "
+                 "moment about O smaller than mL² (31.7); solved as given")
+    if C > 2.0 * (A - m * L * L) * (1 + 1e-12) and A >= m * L * L:
+        res.warn(f"I33 = {C:.6g} kg·m² > 2(I11 − mL²) = {2 * (A - m * L * L):.6g} kg·m²: the central moments "
+                 "violate the triangle inequality (no rigid body has them); solved as given")
+
+    # θ outside [0, π] is the same orientation as (ψ + π, −θ, φ + π) (with −θ̇): report θ in [0, π]
+    psi0, phi0, th_dot0, psd0 = p.psi, p.phi, p.theta_dot, p.psi_dot
+    th0 = math.remainder(p.theta, TWO_PI)
+    if th0 < 0:
+        th0, psi0, phi0, th_dot0 = -th0, psi0 + math.pi, phi0 + math.pi, -th_dot0
+    if th0 != p.theta:
+        res.warn(f"theta = {p.theta:.6g} rad is outside [0, π]: the same orientation is "
+                 f"(ψ, θ, φ) = ({psi0:.6g}, {th0:.6g}, {phi0:.6g}) rad (θ̇ = {th_dot0 + 0.0:.6g} rad/s), used from t = 0")
+    y0 = np.concatenate([quat_from_euler(psi0, th0, phi0),
+                         body_omega(th0, phi0, psd0, th_dot0, p.phi_dot)])
+    W3 = float(y0[6])
+    th_min, th_max, wperp2 = turning_points(A, C, top.mgL, th0, th_dot0, psd0, W3)
+    E0, H0, _ = top.invariants(y0[:4], y0[4:])
+    Wp = math.sqrt(max(wperp2, 0.0))
+    Wn = math.sqrt(float(y0[4:] @ y0[4:]))
+    Wg = math.sqrt(4.0 * top.mgL / A)
+    Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
+    Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
+    Ws = Wn + Wg
+    scales = (Es, Hs, Ws if Ws > 0 else 1.0)
+
+    res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)
+    res.results["invariants"] = {"E": float(E0) + 0.0, "H_e3": float(H0) + 0.0, "omega3": W3 + 0.0}
+
+    # --- integration
+    times = list(p.at)
+    order = np.argsort(np.asarray(times, dtype=float), kind="stable")
+    ts = [float(times[i]) for i in order]
+    method = "DOP853" if p.accuracy.method == "auto" else p.accuracy.method
+    T = ts[-1] if ts else 0.0
+    if T > 0:
+        work = T * (abs(W3) + Wp + Wg)
+        if work > 2e7:
+            raise NumericalError(f"the run to t = {T:g} s turns the top through ~{work:.3g} rad: "
+                                 "too long to integrate here (limit 2e7 rad); shorten 'at'")
+    run = integrate(top, y0, psi0, phi0, ts, rtol=p.accuracy.rtol, atol=p.accuracy.atol,
+                    method=method, Wp=Wp, scales=scales)
+    n = len(ts)
+    inv = np.empty(n, dtype=int)
+    inv[order] = np.arange(n)
+    psi, theta, phi, w = run.psi[inv], run.theta[inv], run.phi[inv], run.w[inv]
+    psi_dot, th_dot, phi_dot, S = rates(top, theta, phi, w)
+    R = reaction(top, theta, phi, w)
+    drift = max(run.drift)
+    if n:
+        res.method = "ode:DOP853+projection" if method == "projected" else f"ode:{method}"
+    res.results.update(
+        psi=_listf(psi), theta=_listf(theta), phi=_listf(phi),
+        psi_dot=[float(x) + 0.0 if math.isfinite(x) else None for x in psi_dot],
+        theta_dot=_listf(th_dot),
+        phi_dot=[float(x) + 0.0 if math.isfinite(x) else None for x in phi_dot],
+        R=[_listf(r) for r in R],
+        drift=float(drift),
+    )
+    if n and not np.all(np.isfinite(psi_dot)):
+        res.warn("psi_dot and phi_dot are null where sinθ = 0: at the vertical only ψ̇ + φ̇ (θ = 0) "
+                 "or ψ̇ − φ̇ (θ = π) is defined")
+    res.series.append(Series("t", list(p.at), ["psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot", "R"],
+                             title="Motion of the top (3-1-3 Euler angles, R on e'')"))
+    res.symbols.update(psi="ψ", theta="θ", phi="φ", psi_dot="ψ̇", theta_dot="θ̇", phi_dot="φ̇",
+                       theta_min="θ_min", theta_max="θ_max")
+    res.units.update(psi="rad", theta="rad", phi="rad", psi_dot="rad/s", theta_dot="rad/s", phi_dot="rad/s",
+                     R="N", theta_min="rad", theta_max="rad")
+
+    # --- error estimate
+    if n and T > 0:
+        if p.accuracy.estimate:
+            r2, a2, how = max(p.accuracy.rtol / 1000.0, 100 * EPS * 1.0001), p.accuracy.atol / 1000.0, "tighter (rtol/1000)"
+        else:
+            r2, a2, how = min(p.accuracy.rtol * 10.0, 1e-3), p.accuracy.atol * 10.0, "looser (10·rtol)"
+        run2 = integrate(top, y0, psi0, phi0, ts, rtol=r2, atol=a2, method=method, Wp=Wp, scales=scales)
+        err = max(float(np.max(np.abs(run2.psi - run.psi))), float(np.max(np.abs(run2.theta - run.theta))),
+                  float(np.max(np.abs(run2.phi - run.phi))))
+        res.error_estimate = err
+        res.extra["error_estimate_note"] = f"largest difference of ψ, θ, φ [rad] from a second run at {how} tolerance"
+    elif n:
+        res.error_estimate = 0.0
+
+    # --- warnings about the poles
+    sleeping = th_max == 0.0 or th_min == math.pi
+    if sleeping:
+        up = th_max == 0.0
+        res.warn(f"a sleeping top (θ = {'0' if up else 'π'} throughout): ψ and φ are individually undefined; "
+                 f"ψ is held at its initial value and φ carries {'ψ + φ' if up else 'φ − ψ'}")
+        if up and top.mgL > 0 and (C * W3) ** 2 < 4.0 * A * top.mgL:
+            res.warn(f"this sleeping top is unstable: I33²ω3² = {(C * W3) ** 2:.6g} < 4 I11 mgL = "
+                     f"{4 * A * top.mgL:.6g} (kg·m²/s)²; the slightest disturbance makes it fall "
+                     "(the computed motion stays upright only because the input is exactly vertical)")
+    elif th_min < POLE_WARN:
+        res.warn(_pole_warning("θ = 0", th_min, "ψ + φ"))
+    if not sleeping and math.pi - th_max < POLE_WARN:
+        res.warn(_pole_warning("θ = π", math.pi - th_max, "ψ − φ"))
+    if run.ambiguous:
+        res.warn(f"the axis passes through the vertical (sinθ < {S_TINY:g}) at t ≈ {run.ambiguous[0]:.6g} s"
+                 + (f" and {len(run.ambiguous) - 1} more time(s)" if len(run.ambiguous) > 1 else "")
+                 + ": there ψ and φ are individually undefined; they are kept continuous (ψ may jump "
+                 "by about ±π there, ψ ± φ does not)")
+    if not n:
+        res.warn("no times in 'at': only theta_min, theta_max (from the energy and momentum integrals) "
+                 "are reported")
+
+    # --- Table 38.1 at the first requested time (t = 0 without times)
+    if n:
+        i0 = 0
+        tab = table_381(top, float(theta[i0]), float(psi_dot[i0]), float(th_dot[i0]), W3, float(S[i0]))
+        t_tab = float(p.at[0])
+    else:
+        tab = table_381(top, th0, psd0, th_dot0, W3, psd0 * math.sin(th0))
+        t_tab = 0.0
+    res.views.append(FrameTable(f"Table 38.1 at t = {t_tab:g} s (components on e'')", tab, basis=BASIS,
+                                note="Ḣ_O = δH_O/δt + Ω×H_O = M_O = mgL sinθ e''₁ (38.17c)"))
+    if options is not None and getattr(options, "symbolic", False):
+        res.views.append(FrameTable("Table 38.1 (formulas)", TABLE_FORMULAS, basis=BASIS))
+    return res
+
+
+def _pole_warning(where, dist, combo):
+    near = "reaches" if dist == 0 else f"comes within {dist:.3g} rad of"
+    return (f"the axis {near} the vertical ({where}): near there ψ and φ are "
+            f"individually ill-conditioned (only {combo} is well defined; ψ swings by about π quickly) — "
+            "they are reported continuously, with an absolute accuracy of roughly 1e-16/sinθ rad")
