@@ -5,6 +5,7 @@ Prints the median wall time of N fresh interpreter runs for:
   * python -c "import numpy, pydantic, yaml, typer, rich"   (the bare-import floor)
   * python -m dyncli --version                      (target: no numpy/scipy)
   * python -m dyncli solve <case-1 file>            (target: <= 1.3x bare-import floor)
+  * python -m dyncli solve <case-1 file> --plot out.png   (the cost of matplotlib + drawing)
   * python -m dyncli solve <each example type>      (one per type, if present)
 and which heavy modules each dyncli run imported.
 
@@ -24,6 +25,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -104,6 +106,9 @@ def main() -> None:
         ("dyncli solve case-1 (closed form)", ["-m", "dyncli", "solve", case1], ["solve", case1]),
         ("dyncli solve -f json case-1", ["-m", "dyncli", "solve", "-f", "json", case1], ["solve", "-f", "json", case1]),
     ]
+    plot_out = str(Path(tempfile.mkdtemp(prefix="dyncli-startup-")) / "plot.png")
+    spec.append(("dyncli solve case-1 --plot out.png", ["-m", "dyncli", "solve", case1, "--plot", plot_out],
+                 ["solve", case1, "--plot", plot_out]))
     for t, f in examples_per_type().items():
         rel = str(f.relative_to(ROOT))
         if rel != case1:

@@ -1,0 +1,85 @@
+"""Plots of ``top`` problems (``dyncli solve --plot``).
+
+* θ(t), the nutation angle from the upward vertical, with the turning points
+  θ_min, θ_max (from the energy and momentum integrals) as horizontal lines
+  and the requested ``at`` times marked;
+* the trace of the symmetry axis seen from above, (sin θ cos ψ, sin θ sin ψ)
+  — the familiar nutation loops or waves — between the circles sin θ_min and
+  sin θ_max.
+
+The curves are the topic's own solver run again on a dense grid of times
+(``at``); nothing here re-derives the motion.  The span is 0 … max(at), or a
+few nutations (from the rates of the problem) when ``at`` ends at 0.
+"""
+
+from __future__ import annotations
+
+import math
+
+from dyncli.result import Line, Plot
+
+MIN_POINTS, MAX_POINTS, PER_CYCLE = 600, 4000, 40
+MIN_RANGE = 0.02      # rad: the smallest θ range shown
+CIRCLE = 181
+
+
+def _rate(p, omega3) -> float:
+    """A rough rate of the nutation (for the span and the sampling only):
+    the fast-top nutation rate I33 ω3/I11, the pendulum rate √(mgL/I11) and
+    the initial ψ̇, θ̇, whichever is largest."""
+    mgL = abs(p.m * p.g * p.L)
+    return max(abs(p.I33 * omega3 / p.I11), math.sqrt(mgL / p.I11), abs(p.psi_dot), abs(p.theta_dot))
+
+
+def _range_anchor(values, t0) -> list[Line]:
+    """An invisible curve (no line, no marker, no legend entry) that widens
+    the θ axis to at least MIN_RANGE rad: a steady θ that drifts by 1e-11
+    would otherwise fill the panel with rounding noise."""
+    lo, hi = min(values), max(values)
+    if hi - lo >= MIN_RANGE:
+        return []
+    mid = 0.5 * (lo + hi)
+    return [Line([t0, t0], [mid - MIN_RANGE / 2, mid + MIN_RANGE / 2], None, style="")]
+
+
+def plots(problem, result) -> list[Plot]:
+    from dyncli.topics.top.solver import solve
+
+    r = result.results
+    at = [float(t) for t in problem.at]
+    omega3 = (r.get("invariants") or {}).get("omega3")
+    if omega3 is None:
+        omega3 = problem.psi_dot * math.cos(problem.theta) + problem.phi_dot
+    rate = _rate(problem, omega3)
+    lo, hi = min([0.0] + at), max([0.0] + at)
+    if hi <= lo:
+        hi = lo + (3 * 2 * math.pi / rate if rate > 0 else 1.0)
+    n = int(min(MAX_POINTS, max(MIN_POINTS, PER_CYCLE * rate * (hi - lo) / (2 * math.pi))))
+    grid = sorted(set([lo + (hi - lo) * i / (n - 1) for i in range(n)] + at))
+    R = solve(problem.model_copy(update={"at": grid})).results
+    th, ps = R["theta"], R["psi"]
+    tmin, tmax = r.get("theta_min"), r.get("theta_max")
+
+    lines = [Line(grid, th, "θ(t), nutation angle (38.18)", style="-")]
+    if at:
+        lines.append(Line(at, r["theta"], "requested times (at)", style="", marker="o"))
+    hl = []
+    if tmin is not None:
+        hl = [(tmax, f"θ_max = {tmax:.6g} rad"), (tmin, f"θ_min = {tmin:.6g} rad")]
+    lines += _range_anchor(R["theta"] + [y for y, _ in hl], grid[0])
+    nut = Plot("θ(t) of the top between the nutation bounds θ_min, θ_max", "t [s]", "θ [rad]", lines, hlines=hl)
+
+    trace = [Line([math.sin(a) * math.cos(b) for a, b in zip(th, ps)],
+                  [math.sin(a) * math.sin(b) for a, b in zip(th, ps)],
+                  "axis e₃' seen from above: (sin θ cos ψ, sin θ sin ψ)", style="-")]
+    ang = [2 * math.pi * i / (CIRCLE - 1) for i in range(CIRCLE)]
+    if tmin is not None:
+        for val, name, style in ((tmax, "θ_max", "--"), (tmin, "θ_min", ":")):
+            s = math.sin(val)
+            trace.append(Line([s * math.cos(a) for a in ang], [s * math.sin(a) for a in ang],
+                              f"circle sin θ = sin {name}", style=style))
+    trace.append(Line([math.sin(th[0]) * math.cos(ps[0])], [math.sin(th[0]) * math.sin(ps[0])],
+                      "start", style="", marker="s"))
+    axis = Plot("trace of the symmetry axis (precession ψ and nutation θ)", "e₁ component [–]",
+                "e₂ component [–]", trace, equal_aspect=True)
+    return [nut, axis]
