@@ -12,7 +12,7 @@ import pytest
 from tests.check.helpers import FIX
 from tests.conftest import ROOT, run_cli
 
-COURSE = ROOT / "problems" / "course-example"
+COURSE = ROOT / "docs" / "course-example"
 
 
 def rel(p):
