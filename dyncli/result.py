@@ -60,7 +60,7 @@ class Line:
     x: list[float]
     y: list[float]
     label: str | None = None
-    style: str = "-"          # matplotlib line style: "-", "--", ":", "-."
+    style: str | None = None  # matplotlib line style "-", "--", ":", "-."; None cycles per panel, "" = markers only
     z: list[float] | None = None
     marker: str | None = None  # e.g. "o" for marked points only (no line: style "")
 
