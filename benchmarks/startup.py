@@ -8,6 +8,12 @@ Prints the median wall time of N fresh interpreter runs for:
   * python -m dyncli solve <each example type>      (one per type, if present)
 and which heavy modules each dyncli run imported.
 
+Each command runs once untimed first (so dyncli's own modules have their
+.pyc, as in an installed copy: PYTHONDONTWRITEBYTECODE is removed from the
+children's environment).  Wall time and CPU time (user + sys of the child,
+the robust number on a shared machine) are both reported, each as a ratio to
+``python -c pass`` and to the bare-import floor.
+
 Usage: python benchmarks/startup.py [--runs N]
 """
 
@@ -25,14 +31,35 @@ ROOT = Path(__file__).resolve().parents[1]
 HEAVY = ("numpy", "scipy", "sympy", "pydantic", "matplotlib", "pint")
 
 
-def timed(cmd: list[str], runs: int) -> float:
-    env = dict(os.environ, PYTHONPATH=str(ROOT), NO_COLOR="1")
-    ts = []
+def _env() -> dict:
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    env.update(PYTHONPATH=str(ROOT), NO_COLOR="1")
+    return env
+
+
+def _once(cmd: list[str], env: dict) -> tuple[float, float]:
+    import resource
+
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    subprocess.run(cmd, cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    wall = time.perf_counter() - t0
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime
+
+
+def timed_rounds(cmds: list[list[str]], runs: int) -> list[tuple[float, float]]:
+    """Median wall and CPU seconds of each command.  One warm-up run each,
+    then ``runs`` rounds that run every command once (interleaved, so a
+    change in the machine's load hits all of them alike)."""
+    env = _env()
+    for c in cmds:
+        _once(c, env)
+    samples: list[list[tuple[float, float]]] = [[] for _ in cmds]
     for _ in range(runs):
-        t0 = time.perf_counter()
-        subprocess.run(cmd, cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        ts.append(time.perf_counter() - t0)
-    return statistics.median(ts)
+        for i, c in enumerate(cmds):
+            samples[i].append(_once(c, env))
+    return [(statistics.median(w for w, _ in s), statistics.median(c for _, c in s)) for s in samples]
 
 
 def imported(args: list[str]) -> list[str]:
@@ -42,7 +69,7 @@ def imported(args: list[str]) -> list[str]:
         "try:\n    runpy.run_module('dyncli', run_name='__main__')\nexcept SystemExit:\n    pass\n"
         f"print('MODS:' + ','.join(m for m in {HEAVY!r} if m in sys.modules))\n"
     )
-    env = dict(os.environ, PYTHONPATH=str(ROOT), NO_COLOR="1")
+    env = _env()
     out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True).stdout
     line = [ln for ln in out.splitlines() if ln.startswith("MODS:")]
     return line[-1][5:].split(",") if line and line[-1][5:] else []
@@ -64,24 +91,31 @@ def examples_per_type() -> dict[str, Path]:
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--runs", type=int, default=7)
+    ap.add_argument("--runs", type=int, default=5)
     args = ap.parse_args()
     py = sys.executable
     n = args.runs
-    floor = timed([py, "-c", "pass"], n)
-    bare = timed([py, "-c", "import numpy, pydantic, yaml, typer, rich"], n)
-    rows = [("python -c pass", floor, []), ("bare import numpy,pydantic,yaml,typer,rich", bare, [])]
-    rows.append(("dyncli --version", timed([py, "-m", "dyncli", "--version"], n), imported(["--version"])))
     case1 = "problems/rectilinear/case1-constant-acceleration.yaml"
-    rows.append(("dyncli solve case-1 (closed form)", timed([py, "-m", "dyncli", "solve", case1], n), imported(["solve", case1])))
+    spec: list[tuple[str, list[str], list[str] | None]] = [
+        ("python -c pass", ["-c", "pass"], None),
+        ("bare import numpy,pydantic,yaml,typer,rich", ["-c", "import numpy, pydantic, yaml, typer, rich"], None),
+        ("dyncli --version", ["-m", "dyncli", "--version"], ["--version"]),
+        ("dyncli --help", ["-m", "dyncli", "--help"], ["--help"]),
+        ("dyncli solve case-1 (closed form)", ["-m", "dyncli", "solve", case1], ["solve", case1]),
+        ("dyncli solve -f json case-1", ["-m", "dyncli", "solve", "-f", "json", case1], ["solve", "-f", "json", case1]),
+    ]
     for t, f in examples_per_type().items():
         rel = str(f.relative_to(ROOT))
-        if rel == case1:
-            continue
-        rows.append((f"dyncli solve {t}", timed([py, "-m", "dyncli", "solve", rel], max(3, n // 2)), imported(["solve", rel])))
-    print(f"{'command':<48} {'median ms':>9} {'/pass':>7} {'/bare':>7}  heavy modules imported")
-    for name, t, mods in rows:
-        print(f"{name:<48} {t * 1000:9.1f} {t / floor:7.2f} {t / bare:7.2f}  {','.join(mods) or '-'}")
+        if rel != case1:
+            spec.append((f"dyncli solve {t}", ["-m", "dyncli", "solve", rel], ["solve", rel]))
+    times = timed_rounds([[py, *a] for _, a, _ in spec], n)
+    rows = [(name, t, imported(args) if args else []) for (name, _, args), t in zip(spec, times)]
+    floor, bare = times[0], times[1]
+    (fw, fc), (bw, bc) = floor, bare
+    print(f"{'command':<44} {'wall ms':>8} {'/pass':>6} {'/bare':>6} {'CPU ms':>7} {'/pass':>6} {'/bare':>6}  heavy modules")
+    for name, (w, c), mods in rows:
+        print(f"{name:<44} {w * 1000:8.1f} {w / fw:6.2f} {w / bw:6.2f} {c * 1000:7.1f} {c / fc:6.2f} {c / bc:6.2f}  "
+              f"{','.join(mods) or '-'}")
 
 
 if __name__ == "__main__":

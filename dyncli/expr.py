@@ -34,6 +34,7 @@ from dyncli.errors import InputError
 MAX_LENGTH = 2000
 MAX_DEPTH = 64
 MAX_NODES = 2000
+MAX_PARAMS = 1000
 
 CONSTANTS: dict[str, float] = {"pi": math.pi, "deg": math.pi / 180.0}
 
@@ -536,6 +537,8 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
     if not isinstance(raw, Mapping):
         raise InputError(f"params must be a mapping name: value, got {_kind(raw)}", "params")
     names = list(raw)
+    if len(names) > MAX_PARAMS:
+        raise InputError(f"too many params ({len(names)}, at most {MAX_PARAMS})", "params")
     for n in names:
         if not isinstance(n, str) or not n.isidentifier() or not n.isascii() or keyword.iskeyword(n):
             raise InputError(f"parameter name {n!r} is not a valid name (letters, digits, _)", f"params.{n}")
@@ -578,5 +581,8 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
         return v
 
     for n in names:
-        value_of(n)
+        try:
+            value_of(n)
+        except RecursionError:
+            raise InputError("params refer to each other too deeply (a chain of hundreds of names)", f"params.{n}") from None
     return values

@@ -1,13 +1,15 @@
 """Safe YAML reading with source positions and hard caps.
 
-PyYAML's ``compose`` (SafeLoader) builds a node graph without constructing
+PyYAML's ``compose`` (the libyaml-based CSafeLoader when available, else
+SafeLoader) builds a node graph without constructing
 any Python object; we then construct plain data ourselves:
 
 * only the standard tags (str, int, float, bool, null, map, seq) are allowed
   -- a ``!!python/...`` or any custom tag is invalid input;
 * the number of constructed nodes is capped, so alias expansion ("billion
   laughs") fails fast instead of exhausting memory;
-* nesting depth and document size are capped;
+* nesting depth, node count and document size are capped (depth and node
+  count while parsing, before composing);
 * duplicate mapping keys are an error;
 * every value's (line, col) is recorded under its path tuple.
 """
@@ -84,16 +86,22 @@ def load(text: str | bytes) -> Document:
         raise YamlError(f"file is too large ({len(text)} characters, at most {MAX_BYTES})")
     if "\x00" in text:
         raise YamlError("file contains a NUL character (binary data?)")
+    loader = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
     try:
-        nodes = list(yaml.compose_all(text, Loader=yaml.SafeLoader))
+        _precheck(text, loader)
+        nodes = list(yaml.compose_all(text, Loader=loader))
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
         msg = exc.problem or exc.context or "malformed YAML"
         if m is not None:
             raise YamlError(f"YAML syntax error: {msg}", m.line + 1, m.column + 1) from None
         raise YamlError(f"YAML syntax error: {msg}") from None
+    except yaml.reader.ReaderError as exc:
+        line = text.count("\n", 0, exc.position) + 1
+        col = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
+        raise YamlError(f"control character #x{exc.character:04x} is not allowed in YAML text", line, col) from None
     except yaml.YAMLError as exc:
-        raise YamlError(f"YAML error: {exc}") from None
+        raise YamlError(f"YAML error: {' '.join(str(exc).split())}") from None
     except RecursionError:
         raise YamlError("YAML is nested too deeply") from None
     nodes = [n for n in nodes if n is not None]
@@ -106,6 +114,32 @@ def load(text: str | bytes) -> Document:
     counter = [0]
     doc.data = _construct(nodes[0], (), doc, counter, 0)
     return doc
+
+
+def _precheck(text: str, loader) -> None:
+    """Stream the parser's events once and stop at the first one beyond the
+    depth or node caps, before anything is composed.  Scanning deeply nested
+    flow collections costs time quadratic in the depth (in PyYAML and in
+    libyaml), so the caps must bite while parsing, not after composing."""
+    import yaml
+
+    depth = nodes = 0
+    starts = (yaml.SequenceStartEvent, yaml.MappingStartEvent)
+    ends = (yaml.SequenceEndEvent, yaml.MappingEndEvent)
+    for ev in yaml.parse(text, Loader=loader):
+        if isinstance(ev, starts):
+            depth += 1
+            nodes += 1
+            if depth > MAX_DEPTH:
+                line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
+                raise YamlError(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
+        elif isinstance(ev, ends):
+            depth -= 1
+        elif isinstance(ev, (yaml.ScalarEvent, yaml.AliasEvent)):
+            nodes += 1
+        if nodes > MAX_NODES:
+            line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
+            raise YamlError(f"document has more than {MAX_NODES} values", line, col)
 
 
 def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int) -> Any:
@@ -123,13 +157,16 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
     line, col = _mark(node)
     doc.pos.setdefault(path, (line, col))
     tag = node.tag
+    if tag == _STD + "timestamp" and isinstance(node, yaml.ScalarNode):
+        raise YamlError(f"{node.value!r} reads as a date; write a number (or quote it for text)", line, col)
     if tag not in _ALLOWED_TAGS:
         raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
     if isinstance(node, yaml.ScalarNode):
         try:
             return _scalar(node)
         except (ValueError, OverflowError):
-            raise YamlError(f"cannot read value {node.value!r}", line, col) from None
+            shown = node.value if len(node.value) <= 40 else node.value[:37] + "..."
+            raise YamlError(f"cannot read value {shown!r} ({len(node.value)} characters)", line, col) from None
     if isinstance(node, yaml.SequenceNode):
         return [_construct(n, path + (i,), doc, counter, depth + 1) for i, n in enumerate(node.value)]
     if isinstance(node, yaml.MappingNode):

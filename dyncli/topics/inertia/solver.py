@@ -149,6 +149,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
                 res.warn(f"parts.{k}.inertia violates the triangle inequality of principal moments "
                          f"(I₁ + I₂ < I₃ by {tri:.6g} kg·m²): no positive mass distribution has it")
     m, com, I_com, recs, scale = composite(p.parts)
+    if not (math.isfinite(m) and np.isfinite(com).all() and np.isfinite(I_com).all()):
+        raise InputError("the mass, center of mass or inertia tensor overflows a double (values beyond ~1e308)", "parts")
     any_hole = any(part.hole for part in p.parts)
     if any_hole:
         _check_remainder(I_com, scale, res, _first_hole(p.parts))

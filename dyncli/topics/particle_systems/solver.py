@@ -27,9 +27,20 @@ def _cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
+def _fsum(xs) -> float:
+    """math.fsum, but a sum that overflows is inf (fsum raises OverflowError)."""
+    xs = list(xs)
+    try:
+        return math.fsum(xs)
+    except OverflowError:
+        return math.inf
+    except ValueError:  # inf + -inf
+        return math.nan
+
+
 def _sum3(vectors):
     vectors = list(vectors)
-    return [math.fsum(v[i] for v in vectors) for i in range(3)]
+    return [_fsum(v[i] for v in vectors) for i in range(3)]
 
 
 def _finite(x) -> bool:
@@ -43,7 +54,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     xs = [tuple(q.x) for q in p.particles]
     vs = [tuple(q.v) for q in p.particles]
     O = tuple(p.about)
-    M = math.fsum(ms)
+    M = _fsum(ms)
     if not math.isfinite(M):
         raise InputError("the total mass overflows a double", "particles")
     # mass fractions avoid overflowing m_i x_i for huge masses
@@ -56,9 +67,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     ps = [(x[0] - com[0], x[1] - com[1], x[2] - com[2]) for x in xs]
     pds = [(v[0] - v_com[0], v[1] - v_com[1], v[2] - v_com[2]) for v in vs]
     H_com = _sum3([_cross(pp, (m * pd[0], m * pd[1], m * pd[2])) for m, pp, pd in zip(ms, ps, pds)])
-    T = math.fsum(0.5 * m * math.fsum(c * c for c in v) for m, v in zip(ms, vs))
-    T_com = 0.5 * M * math.fsum(c * c for c in v_com)
-    T_rel = math.fsum(0.5 * m * math.fsum(c * c for c in pd) for m, pd in zip(ms, pds))
+    T = _fsum(0.5 * m * _fsum(c * c for c in v) for m, v in zip(ms, vs))
+    T_com = 0.5 * M * _fsum(c * c for c in v_com)
+    T_rel = _fsum(0.5 * m * _fsum(c * c for c in pd) for m, pd in zip(ms, pds))
 
     res = Result({}, method="closed-form", equations=["24.12", "24.13", "24.4a", "25.7", "25.8", "27.8"],
                  symbols=SYMBOLS, units=UNITS)

@@ -46,7 +46,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     x1 = (-s, -h, 0.0)
     v_point = [v + w * h, -w * s + 0.0, 0.0]          # v̄ + ω × x_1 with ω = w e'_3
     r["v_point"] = v_point
-    T2 = 0.5 * m * v * v + 0.5 * m * (k * w) ** 2
+    T2 = 0.5 * m * v * v + 0.5 * m * (k * w) * (k * w)
     r["T2"] = T2 if math.isfinite(T2) else None
     if r["I_bar"] is None or r["T2"] is None:
         res.warn("I_bar or T2 overflows a double: reported as null")

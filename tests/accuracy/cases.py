@@ -1,0 +1,287 @@
+"""Problems with exact (50-digit mpmath) references, one per numerical route.
+
+Shared by tests/accuracy/ (the error estimate is present and honest) and
+benchmarks/work_precision.py (time, error, nfev against rtol).  Each case
+builds its YAML for a given ``rtol`` (atol = rtol * ``atol_factor``) and
+``estimate`` flag, and measures the largest absolute error of the solved
+record against the reference.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import mpmath as mp
+
+mp.mp.dps = 50
+
+
+@dataclass
+class Case:
+    name: str             # e.g. "rectilinear quadrature + events"
+    type: str             # problem type
+    yaml: Callable[[float, float, bool], str]     # (rtol, atol, estimate) -> YAML text
+    error: Callable[[dict], float]                # record -> largest absolute error vs the reference
+    atol_factor: float = 1e-3
+    scipy_baseline: Callable[[float, float], tuple[float, int]] | None = None   # (rtol, atol) -> (error, nfev)
+
+    def text(self, rtol: float, estimate: bool = False) -> str:
+        return self.yaml(rtol, rtol * self.atol_factor, estimate)
+
+
+def _acc(rtol, atol, estimate, method="auto"):
+    return f"accuracy: {{rtol: {rtol!r}, atol: {atol!r}, method: {method}, estimate: {'true' if estimate else 'false'}}}\n"
+
+
+def _maxerr(pairs) -> float:
+    return max(float(abs(mp.mpf(got) - ref)) for got, ref in pairs)
+
+
+# --- rectilinear case 3 (a = -c v): quadrature of (6.8)/(6.10) and events ----------
+C3 = mp.mpf("0.5")
+V1 = mp.mpf(10)
+
+
+def _rect3_yaml(rtol, atol, est):
+    return ("type: rectilinear\na: '-0.5*v'\nv1: 10\n"
+            "find: [{t: 2}, {t: 7}, {v: 1}, {s: 19}]\n" + _acc(rtol, atol, est, "quadrature"))
+
+
+def _rect3_error(rec):
+    f = rec["results"]["find"]
+    v = lambda t: V1 * mp.exp(-C3 * t)              # noqa: E731
+    s = lambda t: V1 / C3 * (1 - mp.exp(-C3 * t))   # noqa: E731
+    t_v1 = mp.log(10) / C3
+    t_s19 = -mp.log(1 - mp.mpf(19) * C3 / V1) / C3
+    return _maxerr([(f[0]["s"], s(2)), (f[0]["v"], v(2)), (f[1]["s"], s(7)), (f[1]["v"], v(7)),
+                    (f[2]["t"], t_v1), (f[2]["s"], s(t_v1)), (f[3]["t"], t_s19), (f[3]["v"], v(t_s19))])
+
+
+def _rect3_scipy(rtol, atol):
+    """Plain scipy: t(v) = ∫ dv/a and s(v) = ∫ v dv/a with quad, the event by brentq."""
+    import math
+
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    nfev = 0
+
+    def a(v):
+        nonlocal nfev
+        nfev += 1
+        return -0.5 * v
+
+    def t_of(v):
+        return quad(lambda u: 1 / a(u), 10, v, epsrel=rtol, epsabs=atol)[0]
+
+    def s_of(v):
+        return quad(lambda u: u / a(u), 10, v, epsrel=rtol, epsabs=atol)[0]
+
+    errs = []
+    for T in (2.0, 7.0):
+        vv = brentq(lambda v: t_of(v) - T, 1e-12, 10, xtol=atol, rtol=max(rtol, 4.5e-16))
+        errs += [abs(vv - 10 * math.exp(-0.5 * T)), abs(s_of(vv) - 20 * (1 - math.exp(-0.5 * T)))]
+    errs.append(abs(t_of(1.0) - 2 * math.log(10)))
+    v19 = brentq(lambda v: s_of(v) - 19, 1e-9, 10, xtol=atol, rtol=max(rtol, 4.5e-16))
+    errs += [abs(t_of(v19) - 2 * math.log(20)), abs(v19 - 0.5)]
+    return max(errs), nfev
+
+
+# --- rectilinear general (ODE with events): a = -4 s - 0.4 v ------------------------
+AL, S1, VV1 = mp.mpf("0.2"), mp.mpf("0.5"), mp.mpf(1)
+WD = mp.sqrt(4 - AL ** 2)
+BB = (VV1 + AL * S1) / WD
+
+
+def _osc_s(t):
+    return mp.exp(-AL * t) * (S1 * mp.cos(WD * t) + BB * mp.sin(WD * t))
+
+
+def _osc_v(t):
+    return mp.diff(_osc_s, t)
+
+
+def _rectg_yaml(rtol, atol, est):
+    return ("type: rectilinear\na: '-4*s - 0.4*v'\ns1: 0.5\nv1: 1\nt_max: 30\n"
+            "find: [{t: 1}, {t: 3}, {t: 10}, {v: 0}, {s: -0.3}]\n" + _acc(rtol, atol, est, "DOP853"))
+
+
+_T_V0 = None
+_T_SM = None
+
+
+def _rectg_error(rec):
+    global _T_V0, _T_SM
+    if _T_V0 is None:
+        _T_V0 = mp.findroot(_osc_v, mp.mpf("0.39"))
+        _T_SM = mp.findroot(lambda t: _osc_s(t) + mp.mpf("0.3"), mp.mpf("1.5"))
+    f = rec["results"]["find"]
+    pairs = []
+    for q, t in zip(f[:3], (1, 3, 10)):
+        pairs += [(q["s"], _osc_s(t)), (q["v"], _osc_v(t))]
+    pairs += [(f[3]["t"], _T_V0), (f[3]["s"], _osc_s(_T_V0)), (f[4]["t"], _T_SM), (f[4]["v"], _osc_v(_T_SM))]
+    return _maxerr(pairs)
+
+
+def _rectg_scipy(rtol, atol):
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    def rhs(t, y):
+        return [y[1], -4 * y[0] - 0.4 * y[1]]
+
+    ev_v = lambda t, y: y[1]          # noqa: E731
+    ev_s = lambda t, y: y[0] + 0.3    # noqa: E731
+    sol = solve_ivp(rhs, (0, 10), [0.5, 1.0], method="DOP853", rtol=rtol, atol=atol, dense_output=True,
+                    events=[ev_v, ev_s])
+    errs = []
+    for t in (1, 3, 10):
+        y = sol.sol(t)
+        errs += [abs(y[0] - float(_osc_s(t))), abs(y[1] - float(_osc_v(t)))]
+    global _T_V0, _T_SM
+    if _T_V0 is None:
+        _rectg_error({"results": {"find": [{"s": 0, "v": 0}] * 3 + [{"t": 0, "s": 0}, {"t": 0, "v": 0}]}})
+    # plain sign-change event detection misses a crossing inside one long step
+    # (at loose rtol the steps span the whole dip below s = -0.3): error = inf
+    for ev, ref in ((sol.t_events[0], _T_V0), (sol.t_events[1], _T_SM)):
+        errs.append(abs(ev[0] - float(ref)) if len(ev) else float("inf"))
+    return max(errs), int(sol.nfev)
+
+
+# --- particle: gravity + linear drag (exact exponential solution) -------------------
+PK = mp.mpf("0.2")      # c/m
+G = mp.mpf("9.81")
+PV0 = [mp.mpf(20), mp.mpf(0), mp.mpf(20)]
+PT = [1, 2, 3]
+
+
+def _part_exact(t):
+    gv = [0, 0, -G]
+    e = mp.exp(-PK * t)
+    x = [gv[i] * t / PK + (PV0[i] - gv[i] / PK) * (1 - e) / PK for i in range(3)]
+    v = [gv[i] / PK + (PV0[i] - gv[i] / PK) * e for i in range(3)]
+    return x, v
+
+
+def _part_yaml(rtol, atol, est):
+    return ("type: particle\nm: 0.5\nx0: [0, 0, 0]\nv0: [20, 0, 20]\n"
+            "forces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\nt_end: 3\nat: [1, 2, 3]\n"
+            + _acc(rtol, atol, est))
+
+
+def _part_error(rec):
+    r = rec["results"]
+    pairs = []
+    for i, t in enumerate(PT):
+        x, v = _part_exact(t)
+        pairs += list(zip(r["x"][i], x)) + list(zip(r["v"][i], v))
+    return _maxerr(pairs)
+
+
+def _part_scipy(rtol, atol):
+    from scipy.integrate import solve_ivp
+
+    def rhs(t, y):
+        return [y[3], y[4], y[5], -0.2 * y[3], -0.2 * y[4], -9.81 - 0.2 * y[5]]
+
+    sol = solve_ivp(rhs, (0, 3), [0, 0, 0, 20, 0, 20], method="DOP853", rtol=rtol, atol=atol, t_eval=PT)
+    errs = []
+    for i, t in enumerate(PT):
+        x, v = _part_exact(t)
+        errs += [abs(sol.y[k][i] - float((x + v)[k])) for k in range(6)]
+    return max(errs), int(sol.nfev)
+
+
+# --- top: steady precession (slow root of 38.22): θ = θ0, ψ = Ω t, φ = p t -------------
+TM, TL, TA, TC, TP = mp.mpf("0.5"), mp.mpf("0.05"), mp.mpf("2e-3"), mp.mpf("1e-3"), mp.mpf(150)
+TTH = mp.pi / 6
+TG = mp.mpf("9.81")
+TT = [1, 2, 5]
+
+
+def _top_yaml(rtol, atol, est):
+    return ("type: top\nparams: {m: 0.5, L: 0.05, A: 2.0e-3, C: 1.0e-3, th: 'pi/6', p: 150, g: 9.81}\n"
+            "m: m\nL: L\nI11: A\nI33: C\ntheta: th\n"
+            "psi_dot: '2*m*g*L/(C*p + sqrt((C*p)**2 - 4*m*g*L*(A - C)*cos(th)))'\nphi_dot: p\nat: [1, 2, 5]\n"
+            + _acc(rtol, atol, est))
+
+
+def _top_error(rec):
+    # the ψ̇ actually used is the double-precision input value
+    om = float(2 * TM * TG * TL / (TC * TP + mp.sqrt((TC * TP) ** 2 - 4 * TM * TG * TL * (TA - TC) * mp.cos(TTH))))
+    om = mp.mpf(om)
+    r = rec["results"]
+    pairs = []
+    for i, t in enumerate(TT):
+        pairs += [(r["psi"][i], om * t), (r["theta"][i], mp.mpf(float(TTH))), (r["phi"][i], TP * t)]
+    return _maxerr(pairs)
+
+
+# --- vibration: DOP853 route against the exact underdamped response -------------------
+VZ, VW = mp.mpf("0.1"), mp.mpf(2)
+VWD = VW * mp.sqrt(1 - VZ ** 2)
+VT = [1, 5, 20]
+
+
+def _vib_x(t):
+    return mp.exp(-VZ * VW * t) * (mp.cos(VWD * t) + VZ * VW / VWD * mp.sin(VWD * t))
+
+
+def _vib_yaml(rtol, atol, est):
+    return ("type: vibration\nm: 1\nk: 4\nzeta: 0.1\nx0: 1\nv0: 0\nat: [1, 5, 20]\n" + _acc(rtol, atol, est, "DOP853"))
+
+
+def _vib_error(rec):
+    r = rec["results"]
+    return _maxerr([(r["x"][i], _vib_x(t)) for i, t in enumerate(VT)])
+
+
+# --- kinematics: arc length of a helix by quadrature -------------------------------------
+def _kin_yaml(rtol, atol, est):
+    return ("type: kinematics\ncoordinates: cylindrical\nparams: {a: 2, c: 0.5, w: 3}\n"
+            "position: {r: 'a*(1 + 0.3*sin(t))', theta: 'w*t', x3: 'c*w*t'}\nat: [0]\ndistance: [0, 2]\n"
+            + _acc(rtol, atol, est))
+
+
+def _kin_error(rec):
+    a, c, w = 2, mp.mpf("0.5"), 3
+
+    def speed(t):
+        r = a * (1 + mp.mpf("0.3") * mp.sin(t))
+        rd = a * mp.mpf("0.3") * mp.cos(t)
+        return mp.sqrt(rd ** 2 + (r * w) ** 2 + (c * w) ** 2)
+
+    return _maxerr([(rec["results"]["distance"], mp.quad(speed, [0, 1, 2]))])
+
+
+# --- force field: work of a non-conservative field around an ellipse ---------------------
+def _ff_yaml(rtol, atol, est):
+    return ("type: force-field\nF: ['-x2*x3 + x1**2', 'x1*x3', 'x1*x2']\npoints: [[1, 1, 0]]\n"
+            "path: {x1: '2*cos(t)', x2: 'sin(t)', x3: '0.1*t', t_span: [0, 5]}\n" + _acc(rtol, atol, est))
+
+
+def _ff_error(rec):
+    def integrand(t):
+        x1, x2, x3 = 2 * mp.cos(t), mp.sin(t), mp.mpf("0.1") * t
+        d1, d2, d3 = -2 * mp.sin(t), mp.cos(t), mp.mpf("0.1")
+        return (-x2 * x3 + x1 ** 2) * d1 + x1 * x3 * d2 + x1 * x2 * d3
+
+    return _maxerr([(rec["results"]["work"], mp.quad(integrand, [0, 1, 2, 3, 4, 5]))])
+
+
+CASES: list[Case] = [
+    Case("rectilinear quadrature + events (case 3)", "rectilinear", _rect3_yaml, _rect3_error, scipy_baseline=_rect3_scipy),
+    Case("rectilinear ODE + events (general)", "rectilinear", _rectg_yaml, _rectg_error, scipy_baseline=_rectg_scipy),
+    Case("particle ODE (gravity + linear drag)", "particle", _part_yaml, _part_error, scipy_baseline=_part_scipy),
+    Case("top ODE (steady precession)", "top", _top_yaml, _top_error),
+    Case("vibration ODE route (DOP853)", "vibration", _vib_yaml, _vib_error),
+    Case("kinematics quadrature (arc length)", "kinematics", _kin_yaml, _kin_error),
+    Case("force-field quadrature (work)", "force-field", _ff_yaml, _ff_error),
+]
+
+
+def available_cases() -> list[Case]:
+    from dyncli import registry
+
+    return [c for c in CASES if registry.available(c.type)]

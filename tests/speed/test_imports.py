@@ -1,0 +1,84 @@
+"""Start-up discipline, checked in fresh interpreters (sys.modules):
+
+* ``--version``, ``--help`` and ``solve --help`` import neither numpy nor scipy
+  (nor sympy);
+* every example problem in problems/ solved by a closed form imports neither
+  scipy nor sympy (sympy only where exact derivatives need it: list such a
+  type in SYMPY_NEEDED with the reason).
+
+Timings are never asserted here; benchmarks/startup.py and
+benchmarks/batch.py measure them.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+from tests.conftest import PROBLEMS, ROOT
+
+SYMPY_NEEDED: dict[str, str] = {
+    # "type": "why a closed form of this type needs exact derivatives",
+}
+
+
+def _run(code: str) -> str:
+    env = dict(os.environ, PYTHONPATH=str(ROOT), NO_COLOR="1")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, env=env, timeout=300)
+    assert p.returncode == 0, p.stderr[-3000:]
+    return p.stdout
+
+
+@pytest.mark.parametrize("args", [["--version"], ["--help"], ["solve", "--help"], ["check", "--help"], ["types"]])
+def test_cheap_commands_import_no_numerics(args):
+    code = (
+        "import sys, runpy\n"
+        f"sys.argv = ['dyncli'] + {args!r}\n"
+        "try:\n    runpy.run_module('dyncli', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+        "print('\\nMODS=' + ','.join(m for m in ('numpy', 'scipy', 'sympy', 'matplotlib', 'pint') if m in sys.modules))\n"
+    )
+    mods = [ln for ln in _run(code).splitlines() if ln.startswith("MODS=")][-1][5:]
+    assert mods == "", f"dyncli {' '.join(args)} imported {mods}"
+
+
+_SOLVE_EACH = """
+import json, sys
+from dyncli.loader import load_paths
+from dyncli.run import solve_one
+HEAVY = ("scipy", "sympy", "matplotlib")
+for f in sys.argv[1:]:
+    before = {m for m in HEAVY if m in sys.modules}
+    problems, _ = load_paths([f])
+    methods = []
+    for lp in problems:
+        o = solve_one(lp)
+        methods.append([lp.type, o.result.method if o.result is not None else None])
+    after = {m for m in HEAVY if m in sys.modules}
+    print("REC=" + json.dumps({"file": f, "methods": methods, "new": sorted(after - before), "had": sorted(before)}))
+"""
+
+
+def _solve_each(files: list[str]) -> list[dict]:
+    code = "import sys\nsys.argv = ['x'] + " + repr(files) + "\n" + _SOLVE_EACH
+    return [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
+
+
+def test_closed_forms_import_neither_scipy_nor_sympy():
+    files = [str(p.relative_to(ROOT)) for p in sorted(PROBLEMS.rglob("*.yaml")) if "course-example" not in p.parts]
+    recs = _solve_each(files)
+    closed = [r["file"] for r in recs
+              if r["methods"] and all(m == "closed-form" for _, m in r["methods"])]
+    assert closed, "no closed-form example found"
+    # second interpreter: only the closed-form files, so nothing else imported scipy first
+    bad = []
+    for r in _solve_each(closed):
+        types = {t for t, _ in r["methods"]}
+        for mod in r["new"]:
+            if mod == "sympy" and types <= set(SYMPY_NEEDED):
+                continue
+            bad.append(f"{r['file']} ({', '.join(sorted(types))}) imported {mod}")
+    assert not bad, "\n".join(bad)
