@@ -58,8 +58,20 @@ def _alarm(signum, frame):
     raise TimeoutError("more than 5 s")
 
 
-@pytest.mark.xfail(strict=True, reason="exit 3 or a hang inside the solver; see the test id and CASES")
-@pytest.mark.parametrize("case", list(CASES))
+#: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
+OPEN: set[str] = {
+    "motor-bodies-huge-L", "spin-change-huge-omega", "rectilinear-case4-far-position",
+    "rectilinear-case2-root-no-convergence", "top-huge-spin", "top-stiff-hang", "particle-long-horizon-hang",
+    "particle-huge-R0",
+}
+
+
+def _params():
+    mark = pytest.mark.xfail(strict=True, reason="exit 3 or a hang inside the solver; see the test id and CASES")
+    return [pytest.param(c, marks=[mark] if c in OPEN else [], id=c) for c in CASES]
+
+
+@pytest.mark.parametrize("case", _params())
 def test_fuzz_finding(case):
     _protects, text = CASES[case]
     old = signal.signal(signal.SIGALRM, _alarm)
