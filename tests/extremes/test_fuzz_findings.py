@@ -60,7 +60,7 @@ def _alarm(signum, frame):
 
 #: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
 OPEN: set[str] = {
-    "top-huge-spin", "top-stiff-hang", "particle-long-horizon-hang",
+    "particle-long-horizon-hang",
     "particle-huge-R0",
 }
 
