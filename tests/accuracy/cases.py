@@ -244,15 +244,24 @@ def _kin_yaml(rtol, atol, est):
             + _acc(rtol, atol, est))
 
 
+_REFS: dict = {}
+
+
+def _kin_ref():
+    if "kin" not in _REFS:
+        a, c, w = 2, mp.mpf("0.5"), 3
+
+        def speed(t):
+            r = a * (1 + mp.mpf("0.3") * mp.sin(t))
+            rd = a * mp.mpf("0.3") * mp.cos(t)
+            return mp.sqrt(rd ** 2 + (r * w) ** 2 + (c * w) ** 2)
+
+        _REFS["kin"] = mp.quad(speed, [0, 1, 2])
+    return _REFS["kin"]
+
+
 def _kin_error(rec):
-    a, c, w = 2, mp.mpf("0.5"), 3
-
-    def speed(t):
-        r = a * (1 + mp.mpf("0.3") * mp.sin(t))
-        rd = a * mp.mpf("0.3") * mp.cos(t)
-        return mp.sqrt(rd ** 2 + (r * w) ** 2 + (c * w) ** 2)
-
-    return _maxerr([(rec["results"]["distance"], mp.quad(speed, [0, 1, 2]))])
+    return _maxerr([(rec["results"]["distance"], _kin_ref())])
 
 
 # --- force field: work of a non-conservative field around an ellipse ---------------------
@@ -261,13 +270,19 @@ def _ff_yaml(rtol, atol, est):
             "path: {x1: '2*cos(t)', x2: 'sin(t)', x3: '0.1*t', t_span: [0, 5]}\n" + _acc(rtol, atol, est))
 
 
-def _ff_error(rec):
-    def integrand(t):
-        x1, x2, x3 = 2 * mp.cos(t), mp.sin(t), mp.mpf("0.1") * t
-        d1, d2, d3 = -2 * mp.sin(t), mp.cos(t), mp.mpf("0.1")
-        return (-x2 * x3 + x1 ** 2) * d1 + x1 * x3 * d2 + x1 * x2 * d3
+def _ff_ref():
+    if "ff" not in _REFS:
+        def integrand(t):
+            x1, x2, x3 = 2 * mp.cos(t), mp.sin(t), mp.mpf("0.1") * t
+            d1, d2, d3 = -2 * mp.sin(t), mp.cos(t), mp.mpf("0.1")
+            return (-x2 * x3 + x1 ** 2) * d1 + x1 * x3 * d2 + x1 * x2 * d3
 
-    return _maxerr([(rec["results"]["work"], mp.quad(integrand, [0, 1, 2, 3, 4, 5]))])
+        _REFS["ff"] = mp.quad(integrand, [0, 1, 2, 3, 4, 5])
+    return _REFS["ff"]
+
+
+def _ff_error(rec):
+    return _maxerr([(rec["results"]["work"], _ff_ref())])
 
 
 CASES: list[Case] = [
@@ -285,3 +300,76 @@ def available_cases() -> list[Case]:
     from dyncli import registry
 
     return [c for c in CASES if registry.available(c.type)]
+
+
+# --- plain-scipy baselines for the remaining routes ---------------------------------------
+def _vib_scipy(rtol, atol):
+    from scipy.integrate import solve_ivp
+
+    sol = solve_ivp(lambda t, y: [y[1], -4 * y[0] - 0.4 * y[1]], (0, 20), [1.0, 0.0], method="DOP853",
+                    rtol=rtol, atol=atol, t_eval=VT)
+    return max(abs(sol.y[0][i] - float(_vib_x(t))) for i, t in enumerate(VT)), int(sol.nfev)
+
+
+def _top_scipy(rtol, atol):
+    """The heavy symmetric top in Euler angles (Lagrange), ψ̇ and φ̇ from the
+    conserved p_ψ and ω3; state [θ, θ̇, ψ, φ]."""
+    import math
+
+    from scipy.integrate import solve_ivp
+
+    m, L, A, C, p, g, th0 = 0.5, 0.05, 2e-3, 1e-3, 150.0, 9.81, math.pi / 6
+    om = 2 * m * g * L / (C * p + math.sqrt((C * p) ** 2 - 4 * m * g * L * (A - C) * math.cos(th0)))
+    w3 = om * math.cos(th0) + p
+    p_psi = A * om * math.sin(th0) ** 2 + C * w3 * math.cos(th0)
+
+    def rhs(t, y):
+        th, thd = y[0], y[1]
+        s, c = math.sin(th), math.cos(th)
+        psid = (p_psi - C * w3 * c) / (A * s * s)
+        thdd = (A * psid * psid * s * c - C * w3 * psid * s + m * g * L * s) / A
+        return [thd, thdd, psid, w3 - psid * c]
+
+    sol = solve_ivp(rhs, (0, 5), [th0, 0.0, 0.0, 0.0], method="DOP853", rtol=rtol, atol=atol, t_eval=TT)
+    errs = []
+    for i, t in enumerate(TT):
+        errs += [abs(sol.y[2][i] - om * t), abs(sol.y[0][i] - th0), abs(sol.y[3][i] - p * t)]
+    return max(errs), int(sol.nfev)
+
+
+def _kin_scipy(rtol, atol):
+    import math
+
+    from scipy.integrate import quad
+
+    n = 0
+
+    def speed(t):
+        nonlocal n
+        n += 1
+        r, rd = 2 * (1 + 0.3 * math.sin(t)), 0.6 * math.cos(t)
+        return math.sqrt(rd * rd + (3 * r) ** 2 + 2.25)
+
+    val = quad(speed, 0, 2, epsrel=rtol, epsabs=atol)[0]
+    return abs(val - float(_kin_ref())), n
+
+
+def _ff_scipy(rtol, atol):
+    import math
+
+    from scipy.integrate import quad
+
+    n = 0
+
+    def f(t):
+        nonlocal n
+        n += 1
+        x1, x2, x3 = 2 * math.cos(t), math.sin(t), 0.1 * t
+        return (-x2 * x3 + x1 * x1) * (-2 * math.sin(t)) + x1 * x3 * math.cos(t) + x1 * x2 * 0.1
+
+    val = quad(f, 0, 5, epsrel=rtol, epsabs=atol, limit=200)[0]
+    return abs(val - float(_ff_ref())), n
+
+
+for _c, _b in zip(CASES[3:], (_top_scipy, _vib_scipy, _kin_scipy, _ff_scipy)):
+    _c.scipy_baseline = _b
