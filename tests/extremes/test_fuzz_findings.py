@@ -77,8 +77,26 @@ CASES.update({
 })
 
 
-@pytest.mark.xfail(strict=True, reason="exit 3 or a hang inside the solver; see the test id and CASES")
-@pytest.mark.parametrize("case", list(CASES))
+#: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
+OPEN: set[str] = {
+    "particle-long-horizon-hang",
+    "particle-huge-R0",
+    "particle-custom-force-inf",
+    "particle-stiff-magnetic",
+    "rectilinear-general-far-past-hang",
+    "gyroscope-far-time-hang",
+    "gyroscope-slow-t1000",
+    "euler-tiny-coin",
+    "top-oblate-hang",
+}
+
+
+def _params():
+    mark = pytest.mark.xfail(strict=True, reason="exit 3 or a hang inside the solver; see the test id and CASES")
+    return [pytest.param(c, marks=[mark] if c in OPEN else [], id=c) for c in CASES]
+
+
+@pytest.mark.parametrize("case", _params())
 def test_fuzz_finding(case):
     _protects, text = CASES[case]
     run_document(text, hang=3.0).check(text)

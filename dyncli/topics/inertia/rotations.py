@@ -90,7 +90,8 @@ def sym(T) -> np.ndarray:
 def transfer_term(m: float, p) -> np.ndarray:
     """m[(p·p)1 − p⊗p] (31.7)."""
     p = np.asarray(p, dtype=float)
-    return m * (float(p @ p) * np.eye(3) - np.outer(p, p))
+    with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, checked by the caller
+        return m * (float(p @ p) * np.eye(3) - np.outer(p, p))
 
 
 def inertia_defect(T) -> tuple[float, float, float]:

@@ -156,9 +156,14 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         _check_remainder(I_com, scale, res, _first_hole(p.parts))
     B = com.copy() if p.about is None else np.asarray(p.about, dtype=float)  # no `about`: B is the center of mass
     pbar = com - B
-    T = rot.transfer_term(m, pbar)
-    I_B = I_com + T
-    tscale = max(scale + m * float(pbar @ pbar) * 2.0, 1e-300)
+    with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, rejected just below
+        T = rot.transfer_term(m, pbar)
+        I_B = I_com + T
+        tscale = max(scale + m * float(pbar @ pbar) * 2.0, 1e-300)
+    if not (np.isfinite(T).all() and np.isfinite(I_B).all() and math.isfinite(tscale)):
+        raise InputError(
+            f"B is so far from the center of mass (|p̄| = {math.hypot(*pbar):.6g} m) that the transfer "
+            "term m[(p̄·p̄)1 − p̄⊗p̄] (31.7) overflows a double (values beyond ~1e308)", "about")
 
     # change of basis (30.36): I'' = A I' Aᵀ with A = Rᵀ
     if p.basis is not None:
@@ -170,7 +175,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         lab = ("e'₁", "e'₂", "e'₃")
     A = Rb.T
     com_b, B_b, pbar_b = A @ com, A @ B, A @ pbar
-    Ic_b, T_b, IB_b = (rot.sym(A @ X @ A.T) for X in (I_com, T, I_B))
+    with np.errstate(over="ignore", invalid="ignore"):
+        Ic_b, T_b, IB_b = (rot.sym(A @ X @ A.T) for X in (I_com, T, I_B))
+    if not all(np.isfinite(X).all() for X in (Ic_b, T_b, IB_b)):
+        raise InputError("the inertia tensor on the requested basis overflows a double (values beyond ~1e308)",
+                         "basis" if p.basis is not None else ("about" if p.about is not None else "parts"))
 
     lam, axes, groups, lscale = rot.principal(IB_b, repeat_rtol=REPEAT_RTOL)
     lam = np.maximum(lam, 0.0)  # tiny negatives are rounding (checked above)

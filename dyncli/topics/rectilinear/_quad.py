@@ -18,6 +18,8 @@ by bisection down to the resolution of the floating-point numbers.
 
 from __future__ import annotations
 
+import struct
+
 import numpy as np
 
 _X20, _W20 = np.polynomial.legendre.leggauss(20)
@@ -120,4 +122,48 @@ def brentq(g, x0: float, x1: float, g0: float | None = None, g1: float | None = 
     if (g0 > 0) == (g1 > 0):
         # the caller guarantees a bracket up to rounding: return the closer end
         return x0 if abs(g0) <= abs(g1) else x1
-    return float(_brentq(g, x0, x1, xtol=1e-300, rtol=4 * _EPS, maxiter=200))
+    try:
+        return float(_brentq(g, x0, x1, xtol=1e-300, rtol=4 * _EPS, maxiter=200))
+    except RuntimeError:
+        pass
+    # Brent's bisection steps halve the bracket arithmetically: a root many
+    # orders of magnitude smaller than the bracket (a root near 0 in [0, h])
+    # needs ~log2(h/root) of them and exhausts maxiter.  Bisect the bracket in
+    # the ordering of the doubles themselves (≤ 64 steps to adjacent doubles)
+    # until its ends are within a factor 4 of each other, then polish.
+    a, b, ga = float(x0), float(x1), g0
+    if a > b:
+        a, b, ga = b, a, g1
+    for _ in range(130):
+        if a > 0 and b <= 4 * a or b < 0 and a >= 4 * b:
+            break
+        m = _float_mid(a, b)
+        if m in (a, b):
+            return a if abs(ga) <= abs(g(b)) else b
+        gm = g(m)
+        if gm == 0:
+            return m
+        if (gm > 0) == (ga > 0):
+            a, ga = m, gm
+        else:
+            b = m
+    try:
+        return float(_brentq(g, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200))
+    except RuntimeError as exc:
+        from dyncli.errors import NumericalError
+
+        raise NumericalError(f"the root finder did not converge in the bracket [{a!r}, {b!r}] ({exc}); "
+                             "the function is probably too noisy there: loosen accuracy.rtol or move the target") from None
+
+
+def _float_key(x: float) -> int:
+    (b,) = struct.unpack("<q", struct.pack("<d", x))
+    return b if b >= 0 else -(b & 0x7FFFFFFFFFFFFFFF)
+
+
+def _float_mid(a: float, b: float) -> float:
+    """The double halfway between ``a`` and ``b`` in the ordering of all doubles
+    (the geometric mean for same-sign ends; about ±1e-154 across zero)."""
+    k = (_float_key(a) + _float_key(b)) // 2
+    bits = k if k >= 0 else (-k) | 0x8000000000000000
+    return struct.unpack("<d", struct.pack("<Q", bits))[0]

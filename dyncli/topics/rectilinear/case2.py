@@ -190,9 +190,21 @@ class _Case2:
                 break
         # extrema of s: zeros of v inside the monotone pieces of v
         Bs, vs = [ca], [vc]
-        for k in range(len(Bv) - 1):
+        last = len(Bv) - 1
+        for k in range(last):
             va, vb_ = vB[k], vB[k + 1]
             if va != 0 and vb_ != 0 and (va > 0) != (vb_ > 0):
+                # v grazing 0 at an extremum of v (a double zero, e.g. v = c(1 - cos ωt)): the
+                # sign change is quadrature noise within the tolerance; the zero is the extremum
+                # itself (a root search there converges only slowly on the noise)
+                tolz = self.rtol * max(abs(va), abs(vb_)) + self.atol
+                if 0 < k + 1 < last and abs(vb_) <= tolz:
+                    if Bs[-1] < float(Bv[k + 1]) < cb:
+                        Bs.append(float(Bv[k + 1]))
+                        vs.append(0.0)
+                    continue
+                if 0 < k and abs(va) <= tolz:
+                    continue
                 tb = float(Bv[k])
                 r = brentq(lambda t: va + self.dv(tb, t - tb), tb, float(Bv[k + 1]), float(va), float(vb_))
                 if Bs[-1] < r < cb:

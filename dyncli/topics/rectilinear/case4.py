@@ -121,7 +121,8 @@ class Leg:
         elif self.k2 == "lin":
             self.X2 = L2
         elif self.k2 == "exp":
-            self.X2 = max(math.log(L2 / max(8 * _EPS * abs(self.B), 1e-290)), 0.0) if L2 > 0 else 0.0
+            # (difference of logarithms: the ratio overflows for L2 > ~1e18)
+            self.X2 = max(math.log(L2) - math.log(max(8 * _EPS * abs(self.B), 1e-290)), 0.0) if L2 > 0 else 0.0
         else:
             self.X2 = math.log1p((_BIG - abs(self.M)) / c4.scale)
         self.degenerate = L1 == 0 and end.kind != "inf"
@@ -288,13 +289,23 @@ class _Case4:
         self.rtol, self.atol = rtol, atol
         self.qr = max(rtol * 1e-2, 1e-15)
         self.s1, self.v1 = p.s1, p.v1
+        if not abs(p.s1) <= 0.5 * _BIG:
+            from dyncli.errors import InputError
+
+            raise InputError(f"|s1| = {abs(p.s1):.6g} m is beyond the positions case 4 (a = a(s)) tracks: the energy "
+                             f"route (6.14) follows the body up to |s| = {_BIG:g} m; use |s1| <= {0.5 * _BIG:g} m "
+                             "(e.g. shift or rescale the coordinate)", "s1")
         self.a_s1 = self.a1(p.s1)
         self._warned = False
-        cands = [abs(p.s1)] + [abs(q.s - p.s1) for q in p.find if q.kind == "s"]
+        # positions beyond |s| = _BIG are never reached (escape): they must not set the scan scale,
+        # or the scan grid s1 + c g (|s| <= _BIG) would hold no cell at all
+        cands = [abs(p.s1)] + [abs(q.s - p.s1) for q in p.find if q.kind == "s" and abs(q.s) <= _BIG]
         if self.a_s1 != 0 and p.v1 != 0:
             cands.append(p.v1 * p.v1 / abs(self.a_s1))
         cands = [c for c in cands if math.isfinite(c) and c > 0]
-        self.scale = max(cands) if cands else 1.0
+        # (capped so that the scan s1 + c g, |s| <= _BIG, always has cells and the midpoint of an
+        # escaping leg lies inside |s| < _BIG)
+        self.scale = min(max(cands), 0.25 * _BIG) if cands else 1.0
         self.amax = max(abs(self.a_s1), 1e-300)
         self.energy = Energy(self)
         self.scans: dict[int, dict] = {}

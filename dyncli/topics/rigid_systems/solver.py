@@ -24,11 +24,16 @@ def axial_inertia(masses, attr: str, e: np.ndarray) -> tuple[float, list[float]]
     total, dists = 0.0, []
     for mm in masses:
         x = np.asarray(getattr(mm, attr), dtype=float)
-        perp = x - (x @ e) * e             # component normal to the axis
-        d2 = float(perp @ perp)
-        total += mm.m * d2
-        dists.append(math.sqrt(d2))
+        with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, checked by the caller
+            perp = x - (x @ e) * e             # component normal to the axis
+            d = float(np.linalg.norm(perp))    # scaled: no overflow of |perp|² before the square root
+        total += mm.m * d * d if math.isfinite(d) else math.inf
+        dists.append(d)
     return total, dists
+
+
+def _finite(x: float) -> float | None:
+    return x if math.isfinite(x) else None
 
 
 def solve_spin_change(p, options: SolveOptions | None = None) -> Result:
@@ -37,7 +42,14 @@ def solve_spin_change(p, options: SolveOptions | None = None) -> Result:
     Ib, db = axial_inertia(p.masses, "before", e)
     Ia, da = axial_inertia(p.masses, "after", e)
     I_before, I_after = p.I0 + Ib, p.I0 + Ia
+    for name, I in (("before", I_before), ("after", I_after)):
+        if not math.isfinite(I):
+            raise InputError(f"the moment of inertia about the axis {name} the change, I0 + Σ m d², overflows a "
+                             "double (values beyond ~1e308)", "masses")
     H = I_before * p.omega0
+    if not math.isfinite(H):
+        raise InputError(f"the angular momentum I ω0 = {I_before:.6g} kg·m² × {p.omega0:.6g} rad/s overflows a "
+                         "double (values beyond ~1e308)", "omega0")
     res = Result({}, method="closed-form", equations=["36.11", "36.20", "36.21", "36.22"],
                  symbols={"I_before": "I₁", "I_after": "I₂", "omega": "ω₂", "H": "H·e", "T_before": "T₁",
                           "T_after": "T₂", "work": "T₂ − T₁"},
@@ -52,14 +64,23 @@ def solve_spin_change(p, options: SolveOptions | None = None) -> Result:
         res.warn("omega is undefined: I_after = 0 and the angular momentum about the axis is 0")
     else:
         omega = p.omega0 * (I_before / I_after)
-    T1 = 0.5 * I_before * p.omega0**2
-    T2 = None if omega is None else 0.5 * I_after * omega**2
+        if not math.isfinite(omega):
+            raise InputError(f"the spin after the change ω = ω0 I_before/I_after = {p.omega0:.6g} × "
+                             f"{I_before:.6g}/{I_after:.6g} rad/s overflows a double (values beyond ~1e308)", "masses")
+    # T = ½ I ω² = ½ H ω (36.22): no overflow of ω² where T itself is representable
+    T1 = _finite(0.5 * H * p.omega0)
+    T2 = None if omega is None else _finite(0.5 * H * omega)
+    work = None if T1 is None or T2 is None else _finite(T2 - T1)
     res.results.update({
         "I_before": I_before, "I_after": I_after, "omega": omega, "H": H,
-        "T_before": T1, "T_after": T2, "work": None if T2 is None else T2 - T1,
+        "T_before": T1, "T_after": T2, "work": work,
     })
-    if T2 is None:
+    if omega is None:
         res.warn("T_after and work are undefined because omega is")
+    else:
+        for name, T in (("T_before", T1), ("T_after", T2), ("work", work)):
+            if T is None:
+                res.warn(f"{name} overflows a double (|value| beyond ~1e308): reported as null")
     rows = [[k, mm.m, db[k], da[k]] for k, mm in enumerate(p.masses)]
     res.views.append(Table("distance of each mass from the axis", ["#", "m [kg]", "before [m]", "after [m]"], rows,
                            note=f"axis e = [{', '.join(f'{c:.6g}' for c in e)}] through the origin; "
@@ -70,13 +91,17 @@ def solve_spin_change(p, options: SolveOptions | None = None) -> Result:
 def solve_motor_bodies(p, options: SolveOptions | None = None) -> Result:
     s, c = math.sin(p.alpha), math.cos(p.alpha)
     # moment of inertia of the whole system about the fixed axis e''2 with A locked
-    I_axis = p.IA1 * s * s + (p.mA * p.L**2 + p.IA2) * c * c + p.IB2
+    I_orbit = p.mA * p.L * p.L + p.IA2                        # mA L² + IA2 (finite or inf, never raises)
+    I_axis = p.IA1 * s * s + I_orbit * c * c + p.IB2
+    if not (math.isfinite(I_orbit) and math.isfinite(I_axis)):
+        raise InputError(f"the moment of inertia about the fixed axis, IA1 sin²α + (mA L² + IA2) cos²α + IB2, "
+                         f"overflows a double with L = {p.L:.6g} m (values beyond ~1e308)", "L")
     if not I_axis > 0:
         raise InputError("the system has no inertia about the fixed axis (IA1 sin²α + (mA L² + IA2) cos²α + IB2 = 0): "
                          "Ω is undefined", "IB2")
     Omega = -p.IA1 * p.p * s / I_axis                       # (36.40)
     omega_A = [Omega * s + p.p, Omega * c, 0.0]              # (36.25) on e'''_i
-    H_A = [p.IA1 * omega_A[0], (p.mA * p.L**2 + p.IA2) * omega_A[1], 0.0]   # (36.35c,d) on e'''_i
+    H_A = [p.IA1 * omega_A[0], I_orbit * omega_A[1], 0.0]   # (36.35c,d) on e'''_i
     res = Result(
         {"Omega": Omega, "I_axis": I_axis, "omega_A": omega_A},
         method="closed-form",

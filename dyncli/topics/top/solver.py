@@ -41,13 +41,13 @@ import math
 
 import numpy as np
 
-from dyncli.errors import NumericalError
+from dyncli.errors import InputError, NumericalError
 from dyncli.result import FrameTable, Result, Series
 
 TWO_PI = 2.0 * math.pi
 EPS = float(np.finfo(float).eps)
-#: largest number of integrator steps
-MAX_STEPS = 5_000_000
+#: largest number of integrator steps of one run (~80 µs each: about a minute and a half)
+MAX_STEPS = 1_000_000
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
 #: sinθ below this: ψ and φ individually undefined (only ψ ± φ)
@@ -490,13 +490,21 @@ def solve(p, options=None) -> Result:
     y0 = np.concatenate([quat_from_euler(psi0, th0, phi0),
                          body_omega(th0, phi0, psd0, th_dot0, p.phi_dot)])
     W3 = float(y0[6])
+    with np.errstate(over="ignore", invalid="ignore"):
+        E0, H0, _ = top.invariants(y0[:4], y0[4:])
+        Wn = math.hypot(*y0[4:])
+        Wg = math.sqrt(4.0 * top.mgL / A)
+        Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
+        Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
+        # fastest rates of the motion: spin ω3, nutation ≈ I33 ω3/I11, turning of ω⊥ on the body
+        # axes (I11 − I33) ω3/I11, and the pendulum rate √(4mgL/I11)
+        Wfast = abs(W3) + abs(C * W3 / A) + abs((A - C) * W3 / A) + Wg
+    if not all(math.isfinite(x) for x in (E0, H0, Wn, Wg, Es, Hs, Wfast)):
+        raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
     th_min, th_max, wperp2 = turning_points(A, C, top.mgL, th0, th_dot0, psd0, W3)
-    E0, H0, _ = top.invariants(y0[:4], y0[4:])
+    if not all(math.isfinite(x) for x in (th_min, th_max, wperp2)):
+        raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
     Wp = math.sqrt(max(wperp2, 0.0))
-    Wn = math.sqrt(float(y0[4:] @ y0[4:]))
-    Wg = math.sqrt(4.0 * top.mgL / A)
-    Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
-    Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
     Ws = Wn + Wg
     scales = (Es, Hs, Ws if Ws > 0 else 1.0)
 
@@ -510,10 +518,16 @@ def solve(p, options=None) -> Result:
     method = "DOP853" if p.accuracy.method == "auto" else p.accuracy.method
     T = ts[-1] if ts else 0.0
     if T > 0:
-        work = T * (abs(W3) + Wp + Wg)
-        if work > 2e7:
-            raise NumericalError(f"the run to t = {T:g} s turns the top through ~{work:.3g} rad: "
-                                 "too long to integrate here (limit 2e7 rad); shorten 'at'")
+        # work budget: DOP853 takes ~0.16 (rtol/1e-3)^(-1/8) steps per radian of the fastest rate
+        work = T * (Wfast + Wp)
+        rtol_eff = max(min(p.accuracy.rtol, 1e-3), 100 * EPS)
+        steps = 0.2 * work * (1e-3 / rtol_eff) ** 0.125
+        if not steps <= MAX_STEPS:
+            raise NumericalError(
+                f"the run to t = {T:g} s turns the top through ~{work:.3g} rad at its fastest rate (spin "
+                f"{abs(W3):.3g} rad/s, nutation ~I33 ω3/I11 = {abs(C * W3 / A):.3g} rad/s): about {steps:.3g} "
+                f"integrator steps, more than the budget of {MAX_STEPS:.3g}; shorten 'at', loosen accuracy.rtol "
+                "or use a closed form (precession/gyroscope types for a fast top)")
     run = integrate(top, y0, psi0, phi0, ts, rtol=p.accuracy.rtol, atol=p.accuracy.atol,
                     method=method, Wp=Wp, scales=scales)
     n = len(ts)
@@ -593,6 +607,17 @@ def solve(p, options=None) -> Result:
     if options is not None and getattr(options, "symbolic", False):
         res.views.append(FrameTable("Table 38.1 (formulas)", TABLE_FORMULAS, basis=BASIS))
     return res
+
+
+def _fastest_rate(th_dot, psi_dot, phi_dot) -> str:
+    rates_ = {"theta_dot": abs(th_dot), "psi_dot": abs(psi_dot), "phi_dot": abs(phi_dot)}
+    return max(rates_, key=rates_.get)
+
+
+def _overflow_message(A, C, W3, th_dot, psi_dot, phi_dot) -> str:
+    return (f"the energy, angular momentum or nutation equation of this top overflows a double (values beyond "
+            f"~1e308): θ̇ = {th_dot:.3g}, ψ̇ = {psi_dot:.3g}, φ̇ = {phi_dot:.3g} rad/s, ω3 = {W3:.3g} rad/s, "
+            f"I33/I11 = {C / A:.3g}")
 
 
 def _pole_warning(where, dist, combo):
