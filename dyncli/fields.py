@@ -21,7 +21,7 @@ Use the factories::
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, ClassVar, Iterable
+from typing import Annotated, Any, ClassVar, Iterable, Optional
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo
 from pydantic.functional_validators import PlainValidator
@@ -287,6 +287,7 @@ class Accuracy(StrictModel):
     atol: Num(gt=0) = 1e-12  # type: ignore[valid-type]
     method: str = Field("auto", description="auto picks the cheapest exact route (closed form > quadrature > ODE)")
     estimate: bool = Field(False, description="also solve at a tighter tolerance and report the difference as error_estimate")
+    max_steps: Optional[int] = Field(None, gt=0, description="cap on integrator steps (types that integrate; default set per type); a run that needs more fails fast with exit 1")
 
 
 class ProblemBase(StrictModel):

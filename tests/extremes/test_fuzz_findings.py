@@ -84,9 +84,6 @@ OPEN: set[str] = {
     "particle-custom-force-inf",
     "particle-stiff-magnetic",
     "rectilinear-general-far-past-hang",
-    "gyroscope-far-time-hang",
-    "gyroscope-slow-t1000",
-    "euler-tiny-coin",
     "top-oblate-hang",
 }
 

@@ -54,5 +54,6 @@ class Euler(ProblemBase):
         if self.I is not None:
             return tuple(self.I)
         c = self.coin
-        i1 = 0.5 * c.m * c.R**2 * (0.5 + c.h**2 / (6 * c.R**2))
-        return (i1, i1, 0.5 * c.m * c.R**2)
+        # (39.10): I1 = I2 = m R²/4 + m h²/12, I3 = m R²/2 (no division: R² may underflow)
+        i1 = c.m * (c.R * c.R / 4.0 + c.h * c.h / 12.0)
+        return (i1, i1, 0.5 * c.m * c.R * c.R)

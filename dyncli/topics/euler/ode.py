@@ -20,11 +20,12 @@ import numpy as np
 from dyncli.errors import NumericalError
 
 ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
-MAX_STEPS = 2_000_000
+MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
+PROBE_STEPS = 2_000      # after this many steps, project the run's total and refuse early
 
 
 def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0, project=None,
-              on_step=None, first_step=None):
+              on_step=None, first_step=None, max_steps=None):
     """Integrate y' = fun(t, y) from (t0, y0); return Y with one row per entry of ``times``.
 
     ``times`` may lie on both sides of t0 (two runs).  ``project(y) -> y`` is
@@ -33,7 +34,12 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     the step's interpolant (projected when ``project`` is given); it is also
     called once as ``on_step(t0, t0, None)`` at the start of each run.
     Returns (Y, nsteps).
+
+    The run is refused with a NumericalError as soon as it is clear that it
+    needs more than ``max_steps`` steps (default MAX_STEPS): after
+    PROBE_STEPS steps the total is extrapolated from the time covered.
     """
+    budget = int(max_steps or MAX_STEPS)
     from scipy import integrate as si
 
     cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
@@ -61,8 +67,14 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
             if solver.status == "failed":
                 raise NumericalError(f"the {method} integrator failed at t = {solver.t:.6g}: {msg}")
             nsteps += 1
-            if nsteps > MAX_STEPS:
-                raise NumericalError(f"more than {MAX_STEPS} steps: loosen accuracy.rtol or shorten the run")
+            covered = abs(solver.t - t0)
+            span = abs(t_end - t0)
+            if nsteps > budget or (nsteps == PROBE_STEPS and covered < span and
+                                   nsteps * span / max(covered, 1e-300) > budget):
+                need = nsteps * span / max(covered, 1e-300)
+                raise NumericalError(
+                    f"the run to t = {t_end:.6g} needs about {need:.3g} integrator steps, more than the budget of "
+                    f"{budget}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
             t_old, t_new = solver.t_old, solver.t
             if project is not None:
                 yp = project(solver.y)

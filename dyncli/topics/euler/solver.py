@@ -179,12 +179,14 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
             worst[0] = max(worst[0], abs(Hn - H0) / Hscale[0])
             worst[1] = max(worst[1], abs(Tn - T0) / Tscale[0])
 
-    Y, _ = ode.integrate(fun, y0, times, method=m, rtol=rtol, atol=atol, project=project, on_step=on_step)
+    Y, _ = ode.integrate(fun, y0, times, method=m, rtol=rtol, atol=atol, project=project, on_step=on_step,
+                          max_steps=pb.accuracy.max_steps)
     W = Y[:, :3]
     scale = max(float(np.max(np.linalg.norm(W, axis=1))) if len(W) else 0.0, float(np.linalg.norm(w0)), 1e-300)
     if pb.accuracy.estimate:
         r2, a2 = ode.tighter(rtol, atol)
-        Y2, _ = ode.integrate(fun, y0, times, method=m, rtol=r2, atol=a2, project=project)
+        Y2, _ = ode.integrate(fun, y0, times, method=m, rtol=r2, atol=a2, project=project,
+                               max_steps=pb.accuracy.max_steps)
         res.error_estimate = float(np.max(np.abs(Y2[:, :3] - W)) / scale) if len(times) else 0.0
     elif exact is not None:
         res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0

@@ -155,13 +155,14 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
                 y = dense(t_new)
                 Cmax[0] = max(Cmax[0], abs(float(first_integral(I1, I2, p, q, y[0], y[1])) - C0))
 
-        Y, nsteps = ode.integrate(fun, [th0, thd0], times, method=m, rtol=rtol, atol=atol, on_step=on_step)
+        Y, nsteps = ode.integrate(fun, [th0, thd0], times, method=m, rtol=rtol, atol=atol, on_step=on_step,
+                                     max_steps=pb.accuracy.max_steps)
         th, thd = Y[:, 0], Y[:, 1]
         drift = Cmax[0] / max(scale, 1e-300)
         res.method = f"ode:{m}"
         if pb.accuracy.estimate:
             r2, a2 = ode.tighter(rtol, atol)
-            Y2, _ = ode.integrate(fun, [th0, thd0], times, method=m, rtol=r2, atol=a2)
+            Y2, _ = ode.integrate(fun, [th0, thd0], times, method=m, rtol=r2, atol=a2, max_steps=pb.accuracy.max_steps)
             den = np.maximum(np.abs(Y2), 1.0)
             res.error_estimate = float(np.max(np.abs(Y - Y2) / den)) if len(times) else 0.0
         else:
