@@ -20,7 +20,8 @@ import numpy as np
 
 from dyncli.errors import InputError
 from dyncli.result import FrameTable, Result, Series, SolveOptions
-from dyncli.topics.euler import free, ode
+from dyncli import ode
+from dyncli.topics.euler import free
 
 SYMBOLS = {"omega": "ω' (body)", "H": "|H̄|", "T": "T", "lambda": "λ (39.15)", "psi_dot": "ψ̇ (39.20)",
            "theta": "θ (39.21)", "drift": "drift", "period": "period of ω", "m": "m = k²",

@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 from dyncli.result import FrameTable, Result, Series, SolveOptions
-from dyncli.topics.euler import ode
+from dyncli import ode
 
 SYMBOLS = {"theta": "θ", "theta_dot": "θ̇", "M": "M̄ (e'')", "theta_min": "θ_min", "theta_max": "θ_max",
            "C": "C (37.13)", "drift": "drift"}

@@ -1,4 +1,4 @@
-"""Step-by-step ODE integration shared by ``gyroscope``, ``top`` and ``euler``.
+"""Step-by-step ODE integration with a work budget, shared by the topics that integrate.
 
 A thin loop over scipy's ``OdeSolver`` classes (the same loop ``solve_ivp``
 runs), which lets the caller
