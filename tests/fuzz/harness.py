@@ -34,8 +34,6 @@ KNOWN_BROKEN: dict[str, str] = {
                 "(no step budget); OverflowError for R0 = 6e156",
     "rectilinear": "the general (ODE) route hangs on a query far back in time (find t: -1e8 with a = -4 s - 0.4 v "
                    "+ sin t: no step budget)",
-    "gyroscope": "hangs for times at 1e150 s; 'at: [1000]' takes ~5 s of CPU (no step budget)",
-    "euler": "ZeroDivisionError (exit 3) for a coin of radius 1.2e-302",
     "top": "hangs when I33 >> I11 or for extreme inertia ratios (no step budget); LinAlgError for phi_dot = 5e301",
 }
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 
+from dyncli.plotdata import n_points
 from dyncli.result import Line, Plot
 
 MIN_POINTS, MAX_POINTS, PER_CYCLE = 400, 4000, 60
@@ -32,7 +33,7 @@ def _period(r) -> float | None:
 def _dense(problem, lo, hi, rate):
     from dyncli.topics.euler.solver import solve
 
-    n = int(min(MAX_POINTS, max(MIN_POINTS, PER_CYCLE * rate * (hi - lo) / (2 * math.pi))))
+    n = n_points(rate, hi - lo, per_cycle=PER_CYCLE, lo=MIN_POINTS, hi=MAX_POINTS)
     grid = [lo + (hi - lo) * i / (n - 1) for i in range(n)]
     return grid, solve(problem.model_copy(update={"at": grid})).results["omega"]
 

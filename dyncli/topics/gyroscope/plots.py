@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 
+from dyncli.plotdata import n_points, range_anchor
 from dyncli.result import Line, Plot
 
 MIN_POINTS, MAX_POINTS, PER_CYCLE = 600, 4000, 40
@@ -23,17 +24,6 @@ def _rate(p) -> float:
     return math.sqrt((abs(I1 - I2) * q * q + abs(I1 * p.p * q)) / I2) + abs(p.theta_dot0) + abs(q)
 
 
-def _range_anchor(values, t0) -> list[Line]:
-    """An invisible curve (no line, no marker, no legend entry) that widens
-    the θ axis to at least MIN_RANGE rad: a steady θ that drifts by 1e-11
-    would otherwise fill the panel with rounding noise."""
-    lo, hi = min(values), max(values)
-    if hi - lo >= MIN_RANGE:
-        return []
-    mid = 0.5 * (lo + hi)
-    return [Line([t0, t0], [mid - MIN_RANGE / 2, mid + MIN_RANGE / 2], None, style="")]
-
-
 def plots(problem, result) -> list[Plot]:
     from dyncli.topics.gyroscope.solver import solve
 
@@ -42,7 +32,7 @@ def plots(problem, result) -> list[Plot]:
     lo, hi = min([0.0] + at), max([0.0] + at)
     if hi <= lo:
         hi = lo + (3 * 2 * math.pi / rate if rate > 0 else 1.0)
-    n = int(min(MAX_POINTS, max(MIN_POINTS, PER_CYCLE * rate * (hi - lo) / (2 * math.pi))))
+    n = n_points(rate, hi - lo, per_cycle=PER_CYCLE, lo=MIN_POINTS, hi=MAX_POINTS)
     grid = sorted(set([lo + (hi - lo) * i / (n - 1) for i in range(n)] + at))
     R = solve(problem.model_copy(update={"at": grid})).results
     lines = [Line(grid, R["theta"], "θ(t), tilt of the spin axis (37.12)", style="-")]
@@ -56,5 +46,5 @@ def plots(problem, result) -> list[Plot]:
         title = "θ(t) of the gyroscope between its turning points θ_min, θ_max"
     else:
         title = "θ(t) of the gyroscope: θ circulates (no turning points)"
-    lines += _range_anchor(R["theta"] + [y for y, _ in hl], grid[0])
+    lines += range_anchor(R["theta"] + [y for y, _ in hl], grid[0], MIN_RANGE)
     return [Plot(title, "t [s]", "θ [rad]", lines, hlines=hl)]
