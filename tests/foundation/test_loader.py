@@ -59,10 +59,11 @@ def test_billion_laughs_fails_fast():
     for name in "bcdefghij":
         lines.append(f"{name}: &{name} [" + ",".join([f"*{prev}"] * 9) + "]")
         prev = name
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     err = error_of("\n".join(lines) + "\n")
     assert "alias bomb" in err
-    assert time.perf_counter() - t0 < 2.0
+    # a hang guard, not a speed target: an unprotected loader would expand 9**10 nodes
+    assert time.process_time() - t0 < 10.0
 
 
 def test_deep_nesting_rejected():
