@@ -6,6 +6,7 @@ Prints the median wall time of N fresh interpreter runs for:
   * python -m dyncli --version                      (target: no numpy/scipy)
   * python -m dyncli solve <case-1 file>            (target: <= 1.3x bare-import floor)
   * python -m dyncli solve <case-1 file> --plot out.png   (the cost of matplotlib + drawing)
+  * python -m dyncli solve <case-1 file with unit strings>  (the cost of pint)
   * python -m dyncli solve <each example type>      (one per type, if present)
 and which heavy modules each dyncli run imported.
 
@@ -109,6 +110,10 @@ def main() -> None:
     plot_out = str(Path(tempfile.mkdtemp(prefix="dyncli-startup-")) / "plot.png")
     spec.append(("dyncli solve case-1 --plot out.png", ["-m", "dyncli", "solve", case1, "--plot", plot_out],
                  ["solve", case1, "--plot", plot_out]))
+    units_file = Path(plot_out).parent / "case1-units.yaml"
+    units_file.write_text("type: rectilinear\na: '-4 m/s^2'\nv1: '72 km/h'\nfind: [{t: '2 s'}, {v: 0}, {s: '50 m'}]\n")
+    spec.append(("dyncli solve case-1 with unit strings", ["-m", "dyncli", "solve", str(units_file)],
+                 ["solve", str(units_file)]))
     for t, f in examples_per_type().items():
         rel = str(f.relative_to(ROOT))
         if rel != case1:
