@@ -142,11 +142,7 @@ class Forces:
         d1, d2, d3 = (float(c) for c in d)
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
         springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
-        custom = []
-        for comps in self.custom:
-            for e in comps:
-                e(t=1.0, x1=1.0, x2=1.0, x3=1.0, v1=1.0, v2=1.0, v3=1.0)   # compiles e._fn
-            custom.append(tuple(e._fn for e in comps))
+        custom = [tuple(_scalar_fn(e) for e in comps) for comps in self.custom]
         sqrt, isfinite = math.sqrt, math.isfinite
 
         def rhs(t, y):
@@ -213,6 +209,18 @@ class Forces:
             r = x - _col(a, x)
             V = V + 0.5 * k * (np.sqrt(np.sum(r * r, axis=0)) - L) ** 2
         return V
+
+
+def _scalar_fn(e):
+    """A function env -> value of the expression e for scalar arguments: its
+    compiled function (no per-call errstate/broadcasting; the caller sets
+    errstate), or e itself if it cannot be had."""
+    try:
+        e(t=1.0, x1=1.0, x2=1.0, x3=1.0, v1=1.0, v2=1.0, v3=1.0)   # compiles e._fn
+    except Exception:  # noqa: BLE001 - evaluated again, and reported, in the integration
+        pass
+    fn = getattr(e, "_fn", None)
+    return fn if callable(fn) else (lambda env: e(**env))
 
 
 def _col(c, x):
@@ -360,19 +368,25 @@ def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
     return float(abs(big)), bool(big.real < 0 and abs(big.imag) <= abs(big.real))
 
 
-def _budget_message(t_end: float, need: float, budget: int, method: str, rhs=None, over=None) -> str:
+def _budget_message(t_end: float, need: float, budget: int, method: str, rhs=None,
+                    over: _OverBudget | None = None) -> tuple[str, bool]:
+    """ode.py's refusal message, with a hint on what limits the steps; and
+    whether the run is stiff for an explicit method (an implicit one would
+    take long steps)."""
     msg = (f"the run to t = {t_end:.6g} needs about {need:.3g} integrator steps, more than the budget of "
            f"{budget}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
+    stiff = False
     if rhs is not None and over is not None and method in ("DOP853", "RK45"):
-        rho, stiff = _stiffness(rhs, over.t, over.y)
-        if stiff and over.h * rho > 1.0:
+        rho, decaying = _stiffness(rhs, over.t, over.y)
+        if decaying and over.h * rho > 1.0:
+            stiff = True
             msg += (f" (the problem is stiff near t = {over.t:.3g} s: a decaying mode with rate {rho:.3g} 1/s "
                     f"limits the {method} steps to about {over.h:.3g} s; accuracy.method: LSODA or Radau "
                     "takes long steps there)")
         elif rho > 0 and over.h * rho > 0.05:
             msg += (f" (the motion has a time scale of about {1 / rho:.3g} s near t = {over.t:.3g} s, "
                     "which the steps must resolve)")
-    return msg
+    return msg, stiff
 
 
 def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
@@ -487,8 +501,9 @@ def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
         raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                              f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
     except _OverBudget as exc:
-        err = NumericalError(_budget_message(t_end, exc.need, budget_n, method, rhs, exc))
-        err.over = exc                   # for the automatic switch to LSODA
+        msg, stiff = _budget_message(t_end, exc.need, budget_n, method, rhs, exc)
+        err = NumericalError(msg)
+        err.stiff = stiff                # method auto switches to LSODA
         raise err from None
     return Trajectory(phases, notes, nfev, budget.n, budget.hmax)
 
@@ -538,7 +553,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         traj = integrate(p, F, rtol, atol, method, max_steps=max_steps)
     except NumericalError as exc:
         # method auto: a run that is stiff for DOP853 is handed to LSODA
-        if p.accuracy.method != "auto" or "is stiff" not in str(exc):
+        if p.accuracy.method != "auto" or not getattr(exc, "stiff", False):
             raise
         try:
             traj = integrate(p, F, rtol, atol, "LSODA", max_steps=max_steps)
