@@ -62,10 +62,6 @@ def test_table_shows_error_estimate_of_numerical_routes():
 
 KNOWN_DISHONEST = {
     # (case name prefix, rtol, estimate flag): why (an xfail until the owner fixes it)
-    ("particle", 1e-5, False): "particle: the default estimate (a second solve at 10x looser rtol) is exactly 0 "
-                               "while the true error is 3.6e-8 (both solves take the same steps)",
-    ("particle", 1e-3, False): "particle: default estimate 1.2e-10 for a true error of 3.6e-8 (ratio 0.003)",
-    ("particle", 1e-3, True): "particle: accuracy.estimate: true gives exactly 0 for a true error of 3.6e-8",
 }
 
 

@@ -79,10 +79,6 @@ CASES.update({
 
 #: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
 OPEN: set[str] = {
-    "particle-long-horizon-hang",
-    "particle-huge-R0",
-    "particle-custom-force-inf",
-    "particle-stiff-magnetic",
     "rectilinear-general-far-past-hang",
     "top-oblate-hang",
 }

@@ -30,8 +30,6 @@ HANG_SECONDS = 10.0       # wall clock: a document still running then is reporte
 # per-type fuzz tests are skipped — a hang costs the hang limit on every
 # hypothesis shrink step — until the owner fixes them and deletes the entry.
 KNOWN_BROKEN: dict[str, str] = {
-    "particle": "hangs on non-finite or stiff custom forces (t/0, B = 5e149) and on t_end = 3e8 "
-                "(no step budget); OverflowError for R0 = 6e156",
     "rectilinear": "the general (ODE) route hangs on a query far back in time (find t: -1e8 with a = -4 s - 0.4 v "
                    "+ sin t: no step budget)",
     "top": "hangs when I33 >> I11 or for extreme inertia ratios (no step budget); LinAlgError for phi_dot = 5e301",

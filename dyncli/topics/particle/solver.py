@@ -72,7 +72,12 @@ class Forces:
                 self.weight += m * p.g
             elif k == "inverse-square":
                 g = p.g if f.g is None else f.g
-                self.inv.append((np.asarray(f.center, float), m * g * f.R0 ** 2, f.R0))
+                R0 = float(f.R0)
+                mu = m * g * R0 * R0        # float products give inf, never OverflowError
+                if not math.isfinite(mu):
+                    raise InputError(f"the inverse-square field is too strong to compute: m g R0² = "
+                                     f"{m:g} kg · {g:g} m/s² · ({R0:g} m)² overflows", f"forces.{len(self.kinds) - 1}.R0")
+                self.inv.append((np.asarray(f.center, float), mu, R0))
             elif k == "spring":
                 self.springs.append((np.asarray(f.anchor, float), float(f.k), float(f.L)))
             elif k == "damper":
@@ -119,8 +124,73 @@ class Forces:
         if self.custom:
             env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}
             for comps in self.custom:
-                F = F + np.stack([e.evaluate(**env) for e in comps])
+                if np.ndim(x) == 1:     # one state (the integrator): the cheap scalar call
+                    F = F + np.array([float(e(**env)) for e in comps])
+                else:
+                    F = F + np.stack([e.evaluate(**env) for e in comps])
         return F
+
+    def make_rhs(self, d):
+        """The right-hand side y' = f(t, y) of one phase, y = [x, v, W_nc],
+        in plain float arithmetic (the integrator calls it for one state at a
+        time; the same forces as conservative() + nonconservative(), with
+        the friction continuation -mu N sign(v.d) v/|v| of the phase).
+        A non-finite force raises _NonFinite at once."""
+        m, muN, weight = self.m, self.muN, self.weight
+        u1, u2, u3 = (float(c) for c in self.uniform)
+        c_lin, c_quad = self.c_lin, self.c_quad
+        d1, d2, d3 = (float(c) for c in d)
+        inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
+        springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
+        custom = [tuple(_scalar_fn(e) for e in comps) for comps in self.custom]
+        sqrt, isfinite = math.sqrt, math.isfinite
+
+        def rhs(t, y):
+            x1, x2, x3, v1, v2, v3 = y[:6].tolist()
+            f1, f2, f3 = u1, u2, u3              # the non-conservative force
+            if c_lin:
+                f1, f2, f3 = f1 - c_lin * v1, f2 - c_lin * v2, f3 - c_lin * v3
+            if c_quad:
+                cs = c_quad * sqrt(v1 * v1 + v2 * v2 + v3 * v3)
+                f1, f2, f3 = f1 - cs * v1, f2 - cs * v2, f3 - cs * v3
+            if custom:
+                env = {"t": float(t), "x1": x1, "x2": x2, "x3": x3, "v1": v1, "v2": v2, "v3": v3}
+                with np.errstate(all="ignore"):
+                    for e1, e2, e3 in custom:
+                        f1, f2, f3 = f1 + float(e1(env)), f2 + float(e2(env)), f3 + float(e3(env))
+            if muN:
+                sp = sqrt(v1 * v1 + v2 * v2 + v3 * v3)
+                if sp > 0.0:
+                    k = muN / sp if v1 * d1 + v2 * d2 + v3 * d3 >= 0.0 else -muN / sp
+                    f1, f2, f3 = f1 - k * v1, f2 - k * v2, f3 - k * v3
+                else:
+                    f1, f2, f3 = f1 - muN * d1, f2 - muN * d2, f3 - muN * d3
+            g1, g2, g3 = 0.0, 0.0, -weight       # the conservative force
+            for c1, c2, c3, mu in inv:
+                r1, r2, r3 = x1 - c1, x2 - c2, x3 - c3
+                R2 = r1 * r1 + r2 * r2 + r3 * r3
+                den = R2 * sqrt(R2)
+                if den == 0.0:
+                    raise _NonFinite(t, (x1, x2, x3))
+                k = mu / den
+                g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
+            for a1, a2, a3, ks, L in springs:
+                r1, r2, r3 = x1 - a1, x2 - a2, x3 - a3
+                if L == 0.0:
+                    g1, g2, g3 = g1 - ks * r1, g2 - ks * r2, g3 - ks * r3
+                else:
+                    R = sqrt(r1 * r1 + r2 * r2 + r3 * r3)
+                    if R == 0.0:
+                        raise _NonFinite(t, (x1, x2, x3))
+                    k = ks * (R - L) / R
+                    g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
+            a1, a2, a3 = (f1 + g1) / m, (f2 + g2) / m, (f3 + g3) / m
+            w = f1 * v1 + f2 * v2 + f3 * v3
+            if not (isfinite(a1) and isfinite(a2) and isfinite(a3) and isfinite(w)):
+                raise _NonFinite(t, (x1, x2, x3))
+            return np.array([v1, v2, v3, a1, a2, a3, w])
+
+        return rhs
 
     def other(self, t, x):
         """All forces except friction, at rest (v = 0): the static condition."""
@@ -139,6 +209,18 @@ class Forces:
             r = x - _col(a, x)
             V = V + 0.5 * k * (np.sqrt(np.sum(r * r, axis=0)) - L) ** 2
         return V
+
+
+def _scalar_fn(e):
+    """A function env -> value of the expression e for scalar arguments: its
+    compiled function (no per-call errstate/broadcasting; the caller sets
+    errstate), or e itself if it cannot be had."""
+    try:
+        e(t=1.0, x1=1.0, x2=1.0, x3=1.0, v1=1.0, v2=1.0, v3=1.0)   # compiles e._fn
+    except Exception:  # noqa: BLE001 - evaluated again, and reported, in the integration
+        pass
+    fn = getattr(e, "_fn", None)
+    return fn if callable(fn) else (lambda env: e(**env))
 
 
 def _col(c, x):
@@ -168,10 +250,12 @@ class RestPhase:
 
 
 class Trajectory:
-    def __init__(self, phases, notes, nfev):
+    def __init__(self, phases, notes, nfev, nsteps=0, hmax=0.0):
         self.phases = phases
         self.notes = notes      # list of (kind, t, info) for stops/slips
         self.nfev = nfev
+        self.nsteps = nsteps    # accepted steps over all phases
+        self.hmax = hmax        # the longest accepted step
 
     def phase_at(self, t):
         """The first phase whose interval [t0, t1] contains t."""
@@ -198,10 +282,129 @@ def _ode_method(p) -> str:
     return "DOP853" if m in ("auto", "ode") else m
 
 
-def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory:
-    from scipy.integrate import solve_ivp
+# ---------------------------------------------------------------------------
+# the work budget (the semantics of dyncli/ode.py, for solve_ivp with events)
+
+MAX_STEPS = 5_000      # default accuracy.max_steps for particle (~1 s of solve_ivp stepping)
+PROBE_STEPS = 500      # every this many steps, project the run's total and refuse early
+
+
+class _OverBudget(Exception):
+    """Raised inside solve_ivp by a budgeted solver; turned into NumericalError."""
+
+    def __init__(self, need: float, t: float, y, h: float):
+        super().__init__(need)
+        self.need, self.t, self.y, self.h = need, t, np.array(y, float), h
+
+
+class _NonFinite(Exception):
+    """Raised by the right-hand side when the force is inf or NaN."""
+
+    def __init__(self, t: float, x):
+        super().__init__(t)
+        self.t, self.x = t, np.array(x, float)
+
+
+class _Budget:
+    """Counts accepted steps over all phases of one run (0 .. t_end).  After
+    every PROBE_STEPS steps it projects the total from the rate of the last
+    probe window and refuses as soon as the total exceeds the budget."""
+
+    def __init__(self, budget: int, t_end: float):
+        self.budget, self.t_end = int(budget), float(t_end)
+        self.n = 0
+        self.t_probe = 0.0
+        self.hmax = 0.0
+
+    def tick(self, solver) -> None:
+        self.n += 1
+        t = float(solver.t)
+        h = abs(t - float(solver.t_old)) if solver.t_old is not None else 0.0
+        self.hmax = max(self.hmax, h)
+        need = None
+        if self.n > self.budget:
+            need = self.n * self.t_end / max(t, 1e-300) if t < self.t_end else float(self.n)
+        elif self.n % PROBE_STEPS == 0 and t < self.t_end:
+            rate = PROBE_STEPS / max(t - self.t_probe, 1e-300)     # steps per second of motion, recently
+            need = self.n + (self.t_end - t) * rate
+            self.t_probe = t
+            if need <= self.budget:
+                need = None
+        if need is not None:
+            raise _OverBudget(need, t, solver.y, h)
+
+
+def _budgeted(cls, budget: _Budget):
+    class Budgeted(cls):
+        def step(self):
+            msg = super().step()
+            if self.status != "failed":
+                budget.tick(self)
+            return msg
+
+    Budgeted.__name__ = cls.__name__
+    return Budgeted
+
+
+def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
+    """The largest |eigenvalue| of the Jacobian of rhs at (t, y) (finite
+    differences) and whether it is stiff-like (a real, decaying mode) rather
+    than an oscillation.  (0, False) if it cannot be computed."""
+    try:
+        f0 = rhs(t, y)
+        J = np.empty((7, 7))
+        for j in range(7):
+            d = 1e-7 * max(abs(y[j]), 1e-3)
+            yj = y.copy()
+            yj[j] += d
+            J[:, j] = (rhs(t, yj) - f0) / d
+        if not np.all(np.isfinite(J)):
+            return 0.0, False
+        lam = np.linalg.eigvals(J)
+    except (_NonFinite, ArithmeticError, ValueError, np.linalg.LinAlgError):
+        return 0.0, False
+    k = int(np.argmax(np.abs(lam)))
+    big = lam[k]
+    return float(abs(big)), bool(big.real < 0 and abs(big.imag) <= abs(big.real))
+
+
+def _budget_message(t_end: float, need: float, budget: int, method: str, rhs=None,
+                    over: _OverBudget | None = None) -> tuple[str, bool]:
+    """ode.py's refusal message, with a hint on what limits the steps; and
+    whether the run is stiff for an explicit method (an implicit one would
+    take long steps)."""
+    msg = (f"the run to t = {t_end:.6g} needs about {need:.3g} integrator steps, more than the budget of "
+           f"{budget}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
+    stiff = False
+    if rhs is not None and over is not None and method in ("DOP853", "RK45"):
+        rho, decaying = _stiffness(rhs, over.t, over.y)
+        if decaying and over.h * rho > 1.0:
+            stiff = True
+            msg += (f" (the problem is stiff near t = {over.t:.3g} s: a decaying mode with rate {rho:.3g} 1/s "
+                    f"limits the {method} steps to about {over.h:.3g} s; accuracy.method: LSODA or Radau "
+                    "takes long steps there)")
+        elif rho > 0 and over.h * rho > 0.05:
+            msg += (f" (the motion has a time scale of about {1 / rho:.3g} s near t = {over.t:.3g} s, "
+                    "which the steps must resolve)")
+    return msg, stiff
+
+
+def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
+              max_step: float = math.inf) -> Trajectory:
+    """Integrate the motion from t = 0 to t_end (phases for friction).
+
+    The run is refused with a NumericalError as soon as it is clear that it
+    needs more than ``max_steps`` accepted steps (default MAX_STEPS); a
+    non-finite force is a NumericalError at once."""
+    with np.errstate(all="ignore"):     # overflow is detected and reported, not warned about
+        return _integrate(p, F, rtol, atol, method, max_steps, max_step)
+
+
+def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
+    from scipy import integrate as si
 
     rtol = max(rtol, 100 * EPS * 1.0001)
+    budget_n = int(max_steps or MAX_STEPS)
     m = F.m
     t_end = float(p.t_end)
     t = 0.0
@@ -210,106 +413,99 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str) -> Trajectory
     notes: list = []
     nfev = 0
     vscale = float(np.linalg.norm(y[3:6]))
+    budget = _Budget(budget_n, t_end)
+    solver_cls = _budgeted({"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau,
+                            "LSODA": si.LSODA}[method], budget)
 
-    def make_rhs(d):
-        muN = F.muN
-
-        def rhs(t, y):
-            x, v = y[0:3], y[3:6]
-            Fnc = F.nonconservative(t, x, v)
-            if muN:
-                s = math.sqrt(float(v @ v))
-                if s > 0.0:
-                    sg = 1.0 if float(v @ d) >= 0.0 else -1.0
-                    Fnc = Fnc - (muN * sg / s) * v
-                else:
-                    Fnc = Fnc - muN * d
-            Ftot = F.conservative(x) + Fnc
-            dy = np.empty(7)
-            dy[0:3] = v
-            dy[3:6] = Ftot / m
-            dy[6] = float(Fnc @ v)
-            return dy
-
-        return rhs
+    make_rhs = F.make_rhs
 
     if t_end == 0.0:
         rhs = make_rhs(np.zeros(3))
         phases.append(OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy()))
         return Trajectory(phases, notes, 0)
 
-    for _ in range(MAX_PHASES):
-        d = None
-        speed = float(np.linalg.norm(y[3:6]))
-        vscale = max(vscale, speed)
-        v_tol = 10.0 * (atol + rtol * vscale)
-        if F.muN and speed <= v_tol:
-            y[3:6] = 0.0
-            Fo = F.other(t, y[0:3])
-            nFo = float(np.linalg.norm(Fo))
-            if not np.isfinite(nFo):
-                raise NumericalError(f"the force is not finite at t = {t:g}, x = {y[0:3].tolist()}")
-            # static condition |F_other| <= mu N, decided within the tolerance
-            # (a marginal case would otherwise creep at roundoff level)
-            if nFo <= F.muN * (1.0 + 10.0 * rtol):
-                t_free = _release_time(F, t, t_end, y[0:3]) if F.time_dependent else None
-                t1 = t_end if t_free is None else t_free
-                phases.append(RestPhase(t, t1, y[0:3], y[6]))
-                notes.append(("stick", t, nFo))
-                if t_free is None:
-                    break
-                t = t_free
+    rhs = make_rhs(np.zeros(3))
+    try:
+        for _ in range(MAX_PHASES):
+            d = None
+            speed = float(np.linalg.norm(y[3:6]))
+            vscale = max(vscale, speed)
+            v_tol = 10.0 * (atol + rtol * vscale)
+            if F.muN and speed <= v_tol:
+                y[3:6] = 0.0
                 Fo = F.other(t, y[0:3])
                 nFo = float(np.linalg.norm(Fo))
-                notes.append(("release", t, nFo))
-            elif phases:
-                notes.append(("slip", t, nFo))
-            d = Fo / nFo
-        elif F.muN:
-            d = y[3:6] / speed
+                if not np.isfinite(nFo):
+                    raise _NonFinite(t, y[0:3])
+                # static condition |F_other| <= mu N, decided within the tolerance
+                # (a marginal case would otherwise creep at roundoff level)
+                if nFo <= F.muN * (1.0 + 10.0 * rtol):
+                    t_free = _release_time(F, t, t_end, y[0:3]) if F.time_dependent else None
+                    t1 = t_end if t_free is None else t_free
+                    phases.append(RestPhase(t, t1, y[0:3], y[6]))
+                    notes.append(("stick", t, nFo))
+                    if t_free is None:
+                        break
+                    t = t_free
+                    Fo = F.other(t, y[0:3])
+                    nFo = float(np.linalg.norm(Fo))
+                    notes.append(("release", t, nFo))
+                elif phases:
+                    notes.append(("slip", t, nFo))
+                d = Fo / nFo
+            elif F.muN:
+                d = y[3:6] / speed
+            else:
+                d = np.zeros(3)
+            rhs = make_rhs(d)
+            events = None
+            if F.muN:
+                dd = d.copy()
+
+                def ev(t, y, dd=dd):
+                    return float(y[3:6] @ dd)
+
+                ev.terminal = True
+                ev.direction = -1
+                events = [ev]
+            try:
+                sol = si.solve_ivp(rhs, (t, t_end), y, method=solver_cls, rtol=rtol, atol=atol,
+                                   dense_output=True, events=events, max_step=max_step)
+            except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
+                raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
+            nfev += sol.nfev
+            if sol.status == -1:
+                raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
+                                     + _singularity_hint(F, sol.y[0:3, -1]))
+            if not np.all(np.isfinite(sol.y)):
+                bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
+                raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
+                                     "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
+            vscale = max(vscale, float(np.max(np.linalg.norm(sol.y[3:6], axis=0))))
+            if sol.status == 1 and sol.t_events[0].size:
+                te = float(sol.t_events[0][0])
+                ye = np.array(sol.y_events[0][0], float)
+                steps_t = np.append(sol.t, te) if sol.t[-1] < te else sol.t
+                steps_y = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
+                phases.append(OdePhase(t, te, sol.sol, rhs, steps_t, steps_y))
+                t, y = te, ye
+                if te >= t_end:
+                    break
+                continue
+            phases.append(OdePhase(t, float(sol.t[-1]), sol.sol, rhs, sol.t, sol.y))
+            break
         else:
-            d = np.zeros(3)
-        rhs = make_rhs(d)
-        events = None
-        if F.muN:
-            dd = d.copy()
-
-            def ev(t, y, dd=dd):
-                return float(y[3:6] @ dd)
-
-            ev.terminal = True
-            ev.direction = -1
-            events = [ev]
-        try:
-            sol = solve_ivp(rhs, (t, t_end), y, method=method, rtol=rtol, atol=atol,
-                            dense_output=True, events=events)
-        except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
-            raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
-        nfev += sol.nfev
-        if sol.status == -1:
-            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
-                                 + _singularity_hint(F, sol.y[0:3, -1]))
-        if not np.all(np.isfinite(sol.y)):
-            bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
-            raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
-                                 "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
-        vscale = max(vscale, float(np.max(np.linalg.norm(sol.y[3:6], axis=0))))
-        if sol.status == 1 and sol.t_events[0].size:
-            te = float(sol.t_events[0][0])
-            ye = np.array(sol.y_events[0][0], float)
-            steps_t = np.append(sol.t, te) if sol.t[-1] < te else sol.t
-            steps_y = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
-            phases.append(OdePhase(t, te, sol.sol, rhs, steps_t, steps_y))
-            t, y = te, ye
-            if te >= t_end:
-                break
-            continue
-        phases.append(OdePhase(t, float(sol.t[-1]), sol.sol, rhs, sol.t, sol.y))
-        break
-    else:
-        raise NumericalError(f"friction: more than {MAX_PHASES} stick/slip phases before t_end; "
-                             "the motion chatters at this tolerance")
-    return Trajectory(phases, notes, nfev)
+            raise NumericalError(f"friction: more than {MAX_PHASES} stick/slip phases before t_end; "
+                                 "the motion chatters at this tolerance")
+    except _NonFinite as exc:
+        raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
+                             f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
+    except _OverBudget as exc:
+        msg, stiff = _budget_message(t_end, exc.need, budget_n, method, rhs, exc)
+        err = NumericalError(msg)
+        err.stiff = stiff                # method auto switches to LSODA
+        raise err from None
+    return Trajectory(phases, notes, nfev, budget.n, budget.hmax)
 
 
 def _singularity_hint(F: Forces, x) -> str:
@@ -351,7 +547,19 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     F = Forces(p)
     method = _ode_method(p)
     rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
-    traj = integrate(p, F, rtol, atol, method)
+    max_steps = p.accuracy.max_steps
+    switched = None
+    try:
+        traj = integrate(p, F, rtol, atol, method, max_steps=max_steps)
+    except NumericalError as exc:
+        # method auto: a run that is stiff for DOP853 is handed to LSODA
+        if p.accuracy.method != "auto" or not getattr(exc, "stiff", False):
+            raise
+        try:
+            traj = integrate(p, F, rtol, atol, "LSODA", max_steps=max_steps)
+        except NumericalError:
+            raise exc from None
+        switched, method = str(exc), "LSODA"
     times = [float(t) for t in p.at]
     m = F.m
 
@@ -360,7 +568,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     E1 = 0.5 * m * float(y0[3:6] @ y0[3:6]) + float(F.potential(y0[0:3]))
     for t, (ph, y) in zip(times, traj.states(times)):
         x, v, W = y[0:3], y[3:6], float(y[6])
-        a = np.zeros(3) if isinstance(ph, RestPhase) else ph.rhs(t, y)[3:6]
+        try:
+            a = np.zeros(3) if isinstance(ph, RestPhase) else ph.rhs(t, y)[3:6]
+        except _NonFinite as exc:
+            raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
+                                 f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m") from None
         T = 0.5 * m * float(v @ v)
         V = float(F.potential(x))
         xs.append(_vec(x))
@@ -396,6 +608,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         series=[Series("t", times, ["x", "v", "a", "T", "V", "E", "W_nc", "H_O"])],
     )
     res.extra["nfev"] = traj.nfev
+    res.extra["nsteps"] = traj.nsteps
+    if switched:
+        res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
+                 f"DOP853 reported: {switched}")
     res.extra["energy_scale"] = scale
 
     # friction: stops, sticking, slipping
@@ -435,24 +651,32 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         res.warn(f"energy residual {resid:.3g} J is large for rtol = {rtol:g} (energy scale {scale:.3g} J): "
                  "tighten accuracy.rtol")
 
-    # error estimate: a second solve, tighter (estimate: true) or looser (default)
+    # error estimate: a second solve at tolerances 100x tighter (and steps at
+    # most half the longest step of the first solve, so that it cannot take
+    # the very same steps); the largest difference of the positions at the
+    # requested times estimates the absolute error of x of the first solve
     if p.t_end > 0:
-        if p.accuracy.estimate:
-            r2, a2 = max(rtol / 1000.0, 100 * EPS * 1.0001), atol / 1000.0
-        else:
-            r2, a2 = min(rtol * 10.0, 1e-3), atol * 10.0
+        r2, a2 = _tighter(rtol, atol)
+        hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
         try:
-            traj2 = integrate(p, F, r2, a2, method)
+            traj2 = integrate(p, F, r2, a2, method, max_steps=max_steps, max_step=hmax)
             err = 0.0
             for (_, y1), (_, y2) in zip(traj.states(times), traj2.states(times)):
                 err = max(err, float(np.max(np.abs(y1[0:3] - y2[0:3]))))
-            res.error_estimate = err
-        except NumericalError:
+            res.error_estimate = err if math.isfinite(err) else None
+            if res.error_estimate is None:
+                res.warn("error_estimate is null: the comparison solve differs by a non-finite amount")
+        except NumericalError as exc:
             res.error_estimate = None
-            res.warn("no error estimate: the comparison solve failed")
+            res.warn(f"error_estimate is null: the comparison solve at tighter tolerances failed: {exc}")
     else:
         res.error_estimate = 0.0
     return res
+
+
+def _tighter(rtol: float, atol: float) -> tuple[float, float]:
+    """Tolerances of the comparison solve: 100x tighter, rtol at least ~100 eps."""
+    return max(rtol * 1e-2, 100 * EPS * 1.0001), max(atol * 1e-2, 1e-300)
 
 
 def _vec(a) -> list[float]:
