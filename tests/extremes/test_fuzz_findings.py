@@ -83,7 +83,6 @@ OPEN: set[str] = {
     "particle-huge-R0",
     "particle-custom-force-inf",
     "particle-stiff-magnetic",
-    "rectilinear-general-far-past-hang",
     "top-oblate-hang",
 }
 

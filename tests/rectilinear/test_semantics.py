@@ -221,3 +221,36 @@ def test_general_blow_up_is_reported():
     close(f[0]["v"], 2, rtol=1e-9); close(f[2]["v"], 0.5, rtol=1e-9)
     assert is_unreached(f[1])
     assert any("find[1]" in w and "blows up" in w for w in rec["warnings"])
+
+
+def test_general_blow_up_backwards_is_reported_where():
+    # v' = v², v(0) = -1: v = -1/(1 + t) blows up at t = -1 going backwards
+    rec = problem("v**2 + 0*t", [{"t": -0.5}, {"t": -2}], v1=-1)
+    f = entries(rec)
+    close(f[0]["v"], -2, rtol=1e-9)
+    assert is_unreached(f[1])
+    w = [w for w in rec["warnings"] if "find[1]" in w]
+    assert w and "stopped at t = -" in w[0] and "blows up" in w[0]
+
+
+def _general_error(text):
+    from tests.conftest import solve_text
+
+    (rec,) = solve_text(text)
+    return rec
+
+
+def test_general_budget_refuses_far_queries():
+    # damped oscillator, growing backwards: t = -1e8 needs ~1e9 steps — refused (exit 1), not a hang
+    rec = _general_error("type: rectilinear\na: -4*s - 0.4*v + sin(t)\ns1: 0.25\nv1: 1\n"
+                         "find: [{t: 3}, {t: -1.0e+8}]\n")
+    assert rec["exit_code"] == 1
+    assert "t = -1e+08 needs about" in rec["error"] and "budget of 50000" in rec["error"]
+    assert "accuracy.max_steps" in rec["error"]
+
+
+def test_general_budget_honours_max_steps():
+    text = "type: rectilinear\na: -4*s + 0*t\ns1: 1\nfind: [{t: 100}]\n"
+    assert _general_error(text).get("error") is None
+    rec = _general_error(text + "accuracy: {max_steps: 300}\n")
+    assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
