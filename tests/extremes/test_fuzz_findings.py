@@ -83,7 +83,6 @@ OPEN: set[str] = {
     "particle-huge-R0",
     "particle-custom-force-inf",
     "particle-stiff-magnetic",
-    "top-oblate-hang",
 }
 
 
