@@ -254,3 +254,30 @@ def test_general_budget_honours_max_steps():
     assert _general_error(text).get("error") is None
     rec = _general_error(text + "accuracy: {max_steps: 300}\n")
     assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-8, 1e-10])
+def test_general_error_estimate_is_honest(rtol):
+    # a = -4 s (written with t, so the general ODE route): s = 0.3 cos 2t + 0.5 sin 2t exactly
+    def s_(t):
+        return mp.mpf("0.3") * mp.cos(2 * t) + mp.mpf("0.5") * mp.sin(2 * t)
+
+    def v_(t):
+        return -mp.mpf("0.6") * mp.sin(2 * t) + mp.cos(2 * t)
+
+    t_v0 = mp.atan(mp.mpf(5) / 3) / 2                       # first v = 0
+    t_s = mp.findroot(lambda t: s_(t) + mp.mpf("0.4"), 1.2)  # first s = -0.4
+    assert 0 < t_v0 < t_s < mp.pi / 2 + t_v0
+    rec = problem("-4*s + 0*t", [{"t": 1}, {"t": 20}, {"t": -3}, {"v": 0}, {"s": -0.4}], s1=0.3, v1=1,
+                  accuracy=f"{{rtol: {rtol}}}")
+    assert rec["results"]["case"] == "general" and rec["method"].startswith("ode:")
+    f = entries(rec)
+    refs = [(1, None), (20, None), (-3, None), (t_v0, 0), (t_s, -0.4)]
+    err = 0
+    for e, (t, _) in zip(f, refs):
+        t = mp.mpf(t)
+        for x, ref in ((e["t"], t), (e["s"], s_(t)), (e["v"], v_(t)), (e["a"], -4 * s_(t))):
+            err = max(err, abs(x - ref))
+    err = float(err)
+    assert err > 1e-14
+    assert 0.1 <= rec["error_estimate"] / err <= 10, (rec["error_estimate"], err)
