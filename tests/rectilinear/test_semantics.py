@@ -281,3 +281,10 @@ def test_general_error_estimate_is_honest(rtol):
     err = float(err)
     assert err > 1e-14
     assert 0.1 <= rec["error_estimate"] / err <= 10, (rec["error_estimate"], err)
+
+
+def test_general_error_estimate_falls_back_to_a_looser_solve_over_budget():
+    # the solve (~1400 steps) fits max_steps: 1500, the check solve at rtol/10 does not
+    rec = problem("-4*s + 0*t", [{"t": 100}], s1=1, accuracy="{max_steps: 1500}")
+    assert entries(rec)[0]["reached"] and rec["error_estimate"] > 0
+    assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])

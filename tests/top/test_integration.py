@@ -97,9 +97,9 @@ def test_error_estimate_default_and_tight():
     tight = solve_one_text(txt + "accuracy: {rtol: 1.0e-7, estimate: true}\n")
     Y = ref.euler_angle_ode(M, L, A, C, G, [0.0, 0.5, 0.0, 0.0, 0.0, 100.0], [0, 0.5, 1])
     err = max(np.max(np.abs(np.array(default["results"][n]) - Y[:, c])) for n, c in (("psi", 0), ("theta", 1), ("phi", 2)))
-    # the tighter second run (rtol/100 by default, rtol/1000 with estimate: true) measures the error of the main run
+    # the tighter second run (rtol/10 by default, rtol/1000 with estimate: true) measures the error of the main run
     assert tight["error_estimate"] == pytest.approx(err, rel=0.2)
-    assert default["error_estimate"] == pytest.approx(err, rel=0.2)
+    assert default["error_estimate"] == pytest.approx(err, rel=0.25)
     none = solve_one_text(HEAD + "theta: 0.5\nphi_dot: 100\nat: [0]\n")
     assert none["error_estimate"] == 0.0
 
@@ -167,7 +167,7 @@ def test_error_estimate_is_honest_against_the_elliptic_solution(rtol):
 
 
 def test_error_estimate_falls_back_to_a_looser_run_over_budget():
-    # the main run (~450 steps) fits max_steps: 600, the check run at rtol/100 (~800) does not
-    rec = solve_one_text(HEAD + "theta: 0.5\nphi_dot: 100\nat: [0, 2]\naccuracy: {max_steps: 600}\n")
+    # the main run (~450 steps) fits max_steps: 500, the check run at rtol/10 (~540) does not
+    rec = solve_one_text(HEAD + "theta: 0.5\nphi_dot: 100\nat: [0, 2]\naccuracy: {max_steps: 500}\n")
     assert rec["error_estimate"] > 0
     assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])
