@@ -171,3 +171,13 @@ def test_error_estimate_falls_back_to_a_looser_run_over_budget():
     rec = solve_one_text(HEAD + "theta: 0.5\nphi_dot: 100\nat: [0, 2]\naccuracy: {max_steps: 500}\n")
     assert rec["error_estimate"] > 0
     assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])
+
+
+def test_bounds_with_a_subnormal_gravity_moment():
+    # mgL = 2.5e-318: the cubic's leading coefficient overflows numpy.roots' companion matrix; the
+    # root it belongs to is far outside u ∈ [-1, 1], so the bounds are those of the torque-free body
+    rec = solve_one_text("type: top\nm: 5.0e-17\nL: 5.0e-302\nI11: 0.002\nI33: 1.0e-153\ntheta: 0.3\n"
+                         "theta_dot: -2\npsi_dot: 16.918\nphi_dot: 5.0e-149\nat: [0, 0.1]\n")
+    lo, hi = ref.bounds_mp(5e-17, 5e-302, 0.002, 1e-153, 9.81, 0.3, -2, 16.918, 5e-149)
+    assert rec["results"]["theta_min"] == pytest.approx(lo, rel=1e-10)
+    assert rec["results"]["theta_max"] == pytest.approx(hi, rel=1e-10)

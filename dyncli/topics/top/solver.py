@@ -211,7 +211,11 @@ def turning_points(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3):
     F1 = -beta * s0 * s0 - 2.0 * u0 * K + 2.0 * c * P
     F2 = 2.0 * beta * u0 - K - c * c
     coef = [beta, F2, F1, F0]
-    while coef and coef[0] == 0.0:
+    if not all(math.isfinite(x) for x in coef):
+        return math.nan, math.nan, math.nan     # the caller reports the overflow
+    # a leading coefficient so small that the companion matrix overflows (β ~ 1e-315) belongs to a
+    # root |x| ≫ 2, outside the physical range u ∈ [-1, 1]: drop it
+    while coef and (coef[0] == 0.0 or not all(math.isfinite(x / coef[0]) for x in coef[1:])):
         coef = coef[1:]
     if len(coef) <= 1:
         return theta0, theta0, K
