@@ -221,3 +221,70 @@ def test_general_blow_up_is_reported():
     close(f[0]["v"], 2, rtol=1e-9); close(f[2]["v"], 0.5, rtol=1e-9)
     assert is_unreached(f[1])
     assert any("find[1]" in w and "blows up" in w for w in rec["warnings"])
+
+
+def test_general_blow_up_backwards_is_reported_where():
+    # v' = v², v(0) = -1: v = -1/(1 + t) blows up at t = -1 going backwards
+    rec = problem("v**2 + 0*t", [{"t": -0.5}, {"t": -2}], v1=-1)
+    f = entries(rec)
+    close(f[0]["v"], -2, rtol=1e-9)
+    assert is_unreached(f[1])
+    w = [w for w in rec["warnings"] if "find[1]" in w]
+    assert w and "stopped at t = -" in w[0] and "blows up" in w[0]
+
+
+def _general_error(text):
+    from tests.conftest import solve_text
+
+    (rec,) = solve_text(text)
+    return rec
+
+
+def test_general_budget_refuses_far_queries():
+    # damped oscillator, growing backwards: t = -1e8 needs ~1e9 steps — refused (exit 1), not a hang
+    rec = _general_error("type: rectilinear\na: -4*s - 0.4*v + sin(t)\ns1: 0.25\nv1: 1\n"
+                         "find: [{t: 3}, {t: -1.0e+8}]\n")
+    assert rec["exit_code"] == 1
+    assert "t = -1e+08 needs about" in rec["error"] and "budget of 50000" in rec["error"]
+    assert "accuracy.max_steps" in rec["error"]
+
+
+def test_general_budget_honours_max_steps():
+    text = "type: rectilinear\na: -4*s + 0*t\ns1: 1\nfind: [{t: 100}]\n"
+    assert _general_error(text).get("error") is None
+    rec = _general_error(text + "accuracy: {max_steps: 300}\n")
+    assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-8, 1e-10])
+def test_general_error_estimate_is_honest(rtol):
+    # a = -4 s (written with t, so the general ODE route): s = 0.3 cos 2t + 0.5 sin 2t exactly
+    def s_(t):
+        return mp.mpf("0.3") * mp.cos(2 * t) + mp.mpf("0.5") * mp.sin(2 * t)
+
+    def v_(t):
+        return -mp.mpf("0.6") * mp.sin(2 * t) + mp.cos(2 * t)
+
+    t_v0 = mp.atan(mp.mpf(5) / 3) / 2                       # first v = 0
+    t_s = mp.findroot(lambda t: s_(t) + mp.mpf("0.4"), 1.2)  # first s = -0.4
+    assert 0 < t_v0 < t_s < mp.pi / 2 + t_v0
+    rec = problem("-4*s + 0*t", [{"t": 1}, {"t": 20}, {"t": -3}, {"v": 0}, {"s": -0.4}], s1=0.3, v1=1,
+                  accuracy=f"{{rtol: {rtol}}}")
+    assert rec["results"]["case"] == "general" and rec["method"].startswith("ode:")
+    f = entries(rec)
+    refs = [(1, None), (20, None), (-3, None), (t_v0, 0), (t_s, -0.4)]
+    err = 0
+    for e, (t, _) in zip(f, refs):
+        t = mp.mpf(t)
+        for x, ref in ((e["t"], t), (e["s"], s_(t)), (e["v"], v_(t)), (e["a"], -4 * s_(t))):
+            err = max(err, abs(x - ref))
+    err = float(err)
+    assert err > 1e-14
+    assert 0.1 <= rec["error_estimate"] / err <= 10, (rec["error_estimate"], err)
+
+
+def test_general_error_estimate_falls_back_to_a_looser_solve_over_budget():
+    # the solve (~1400 steps) fits max_steps: 1500, the check solve at rtol/10 does not
+    rec = problem("-4*s + 0*t", [{"t": 100}], s1=1, accuracy="{max_steps: 1500}")
+    assert entries(rec)[0]["reached"] and rec["error_estimate"] > 0
+    assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])

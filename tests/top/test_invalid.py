@@ -49,3 +49,33 @@ def test_inconsistent_inertia_warns():
     assert any("smaller than mL²" in w for w in rec["warnings"])
     rec = solve_one_text("type: top\nm: 0.5\nL: 0.05\nI11: 2.0e-3\nI33: 3.0e-3\nphi_dot: 10\ntheta: 0.3\nat: [0.1]\n")
     assert any("triangle inequality" in w for w in rec["warnings"])
+
+
+def _record(text):
+    from tests.conftest import solve_text
+
+    (rec,) = solve_text(text)
+    return rec
+
+
+OBLATE = ("type: top\nm: 0.5\nL: 0.05\nI11: 0.002\nI33: 3.14159\ntheta: 0.3\ntheta_dot: -2\npsi_dot: 16.918\n"
+          "phi_dot: 50\n")
+
+
+def test_budget_refuses_a_run_that_needs_too_many_steps():
+    # strongly oblate: the body-frame nutation rate I33 ω3/I11 ~ 1e5 rad/s, ~1.5e5 steps to t = 0.5 s
+    rec = _record(OBLATE + "at: [0, 0.02, 0.1, 0.5]\n")
+    assert rec["exit_code"] == 1
+    assert "the run to t = 0.5 s needs about" in rec["error"] and "budget of 50000" in rec["error"]
+    assert "accuracy.max_steps" in rec["error"]
+    # a shorter span is within the budget (~600 steps)
+    assert _record(OBLATE + "at: [0, 0.002]\n").get("error") is None
+
+
+def test_budget_honours_max_steps():
+    text = "type: top\nm: 0.5\nL: 0.05\nI11: 2.0e-3\nI33: 1.0e-3\ntheta: 0.5\nphi_dot: 100\nat: [0, 2]\n"
+    assert _record(text).get("error") is None                       # ~450 steps
+    rec = _record(text + "accuracy: {max_steps: 300}\n")             # watched step by step
+    assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
+    rec = _record(text + "accuracy: {max_steps: 20}\n")              # clearly over: refused before integrating
+    assert rec["exit_code"] == 1 and "budget of 20" in rec["error"] and "fastest rate" in rec["error"]

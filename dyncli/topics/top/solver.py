@@ -41,13 +41,15 @@ import math
 
 import numpy as np
 
+from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import FrameTable, Result, Series
 
 TWO_PI = 2.0 * math.pi
 EPS = float(np.finfo(float).eps)
-#: largest number of integrator steps of one run (~80 µs each: about a minute and a half)
-MAX_STEPS = 1_000_000
+#: a run is refused at once when the a-priori step estimate exceeds the budget by this factor
+#: (the estimate is conservative: measured 1.0-2.5 times the steps taken)
+PREDICT_MARGIN = 4.0
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
 #: sinθ below this: ψ and φ individually undefined (only ψ ± φ)
@@ -209,7 +211,11 @@ def turning_points(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3):
     F1 = -beta * s0 * s0 - 2.0 * u0 * K + 2.0 * c * P
     F2 = 2.0 * beta * u0 - K - c * c
     coef = [beta, F2, F1, F0]
-    while coef and coef[0] == 0.0:
+    if not all(math.isfinite(x) for x in coef):
+        return math.nan, math.nan, math.nan     # the caller reports the overflow
+    # a leading coefficient so small that the companion matrix overflows (β ~ 1e-315) belongs to a
+    # root |x| ≫ 2, outside the physical range u ∈ [-1, 1]: drop it
+    while coef and (coef[0] == 0.0 or not all(math.isfinite(x / coef[0]) for x in coef[1:])):
         coef = coef[1:]
     if len(coef) <= 1:
         return theta0, theta0, K
@@ -300,9 +306,15 @@ class Run:
         self.nfev = 0
 
 
-def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales):
-    """Integrate from y0 (quaternion + body ω) to the sorted ``times``."""
+def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales, max_steps=None):
+    """Integrate from y0 (quaternion + body ω) to the sorted ``times``.
+
+    Step budget as :func:`dyncli.ode.integrate`: refused (NumericalError) when
+    the run needs more than ``max_steps`` steps (default ``ode.MAX_STEPS``),
+    after ``ode.PROBE_STEPS`` steps by extrapolation from the time covered."""
     import scipy.integrate as si
+
+    budget = int(max_steps or ode.MAX_STEPS)
 
     n = len(times)
     run = Run(n)
@@ -339,9 +351,12 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
             if solver.status == "failed":
                 raise NumericalError(f"the integrator ({method}) failed at t = {solver.t:.6g} s: {msg}")
             run.steps += 1
-            if run.steps > MAX_STEPS:
-                raise NumericalError(f"more than {MAX_STEPS} integrator steps before t = {T:g} s "
-                                     f"(reached t = {solver.t:.6g} s); loosen accuracy.rtol or shorten 'at'")
+            if run.steps > budget or (run.steps == ode.PROBE_STEPS and solver.t < T and
+                                      run.steps * T / max(solver.t, 1e-300) > budget):
+                raise NumericalError(
+                    f"the run to t = {T:g} s needs about {run.steps * T / max(solver.t, 1e-300):.3g} integrator "
+                    f"steps, more than the budget of {budget}: shorten 'at', loosen accuracy.rtol, or raise "
+                    "accuracy.max_steps")
             tb = solver.t
             cache = []
 
@@ -519,17 +534,21 @@ def solve(p, options=None) -> Result:
     T = ts[-1] if ts else 0.0
     if T > 0:
         # work budget: DOP853 takes ~0.16 (rtol/1e-3)^(-1/8) steps per radian of the fastest rate
+        # (the estimate below is 1.0-2.5 times the steps taken); a run clearly over budget is
+        # refused at once, the others are watched step by step in integrate()
+        budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
         work = T * (Wfast + Wp)
         rtol_eff = max(min(p.accuracy.rtol, 1e-3), 100 * EPS)
         steps = 0.2 * work * (1e-3 / rtol_eff) ** 0.125
-        if not steps <= MAX_STEPS:
+        if not steps <= PREDICT_MARGIN * budget:
             raise NumericalError(
-                f"the run to t = {T:g} s turns the top through ~{work:.3g} rad at its fastest rate (spin "
-                f"{abs(W3):.3g} rad/s, nutation ~I33 ω3/I11 = {abs(C * W3 / A):.3g} rad/s): about {steps:.3g} "
-                f"integrator steps, more than the budget of {MAX_STEPS:.3g}; shorten 'at', loosen accuracy.rtol "
-                "or use a closed form (precession/gyroscope types for a fast top)")
+                f"the run to t = {T:g} s needs about {steps:.3g} integrator steps (it turns the top through "
+                f"~{work:.3g} rad at its fastest rate: spin {abs(W3):.3g} rad/s, nutation ~I33 ω3/I11 = "
+                f"{abs(C * W3 / A):.3g} rad/s), more than the budget of {budget}: shorten 'at', loosen "
+                "accuracy.rtol, or raise accuracy.max_steps (or use a closed form: precession/gyroscope "
+                "types for a fast top)")
     run = integrate(top, y0, psi0, phi0, ts, rtol=p.accuracy.rtol, atol=p.accuracy.atol,
-                    method=method, Wp=Wp, scales=scales)
+                    method=method, Wp=Wp, scales=scales, max_steps=p.accuracy.max_steps)
     n = len(ts)
     inv = np.empty(n, dtype=int)
     inv[order] = np.arange(n)
@@ -559,11 +578,24 @@ def solve(p, options=None) -> Result:
 
     # --- error estimate
     if n and T > 0:
-        if p.accuracy.estimate:
-            r2, a2, how = max(p.accuracy.rtol / 1000.0, 100 * EPS * 1.0001), p.accuracy.atol / 1000.0, "tighter (rtol/1000)"
-        else:
-            r2, a2, how = min(p.accuracy.rtol * 10.0, 1e-3), p.accuracy.atol * 10.0, "looser (10·rtol)"
-        run2 = integrate(top, y0, psi0, phi0, ts, rtol=r2, atol=a2, method=method, Wp=Wp, scales=scales)
+        # a second run at a tighter tolerance (rtol/10; rtol/1000 with accuracy.estimate): the change
+        # estimates the error of the reported run (~0.9x it at rtol/10 when the error falls with the
+        # tolerance; a looser run would measure its own error, ~10x the reported one).  When the
+        # tighter run exceeds the step budget, a run at 10·rtol gives a conservative bound instead.
+        div = 1000.0 if p.accuracy.estimate else 10.0
+        r2, a2 = max(p.accuracy.rtol / div, 100 * EPS * 1.0001), p.accuracy.atol / div
+        how = f"tighter (rtol/{div:g})"
+        try:
+            run2 = integrate(top, y0, psi0, phi0, ts, rtol=r2, atol=a2, method=method, Wp=Wp, scales=scales,
+                             max_steps=p.accuracy.max_steps)
+        except NumericalError:
+            r2, a2 = min(p.accuracy.rtol * 10.0, 1e-3), p.accuracy.atol * 10.0
+            how = "looser (10·rtol: the tighter run exceeds the step budget)"
+            run2 = integrate(top, y0, psi0, phi0, ts, rtol=r2, atol=a2, method=method, Wp=Wp, scales=scales,
+                             max_steps=p.accuracy.max_steps)
+            res.warn(f"error_estimate: the check run at rtol/{div:g} exceeds the step budget (accuracy.max_steps); "
+                     "the estimate comes from a run at 10·rtol instead (a conservative bound, typically ~10x "
+                     "the actual error)")
         err = max(float(np.max(np.abs(run2.psi - run.psi))), float(np.max(np.abs(run2.theta - run.theta))),
                   float(np.max(np.abs(run2.phi - run.phi))))
         res.error_estimate = err
