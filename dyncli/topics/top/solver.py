@@ -18,6 +18,17 @@ sin(θ/2)sin(δ/2), cos(θ/2)sin(σ/2)), σ = ψ + φ, δ = ψ − φ, the angle
 read back without loss of precision: θ = 2 atan2(|(q1,q2)|, |(q0,q3)|),
 ψ ≡ atan2(q3,q0) + atan2(q2,q1), φ ≡ atan2(q3,q0) − atan2(q2,q1) (mod 2π).
 
+The spin is taken out exactly: ω3 is constant (38.18c), so q = p ⊗ r(ω3 t) with r the
+rotation by ω3 t about e'_3, and the spin-free frame p (same axis e'_3, no spin about it)
+obeys, with v = (v1, v2) the components of ω⊥ on p,
+
+    ṗ = ½ p ⊗ (0, v1, v2, 0),   I11 v̇1 = −I33 ω3 v2 + mgL γ2,   I11 v̇2 = I33 ω3 v1 − mgL γ1
+
+(γ now on p).  This is what is integrated (state (p, v1, v2, ω3)); ψ and θ of q are those of p
+and φ = φ_p + ω3 t, so the steps follow the nutation and precession, not the spin.  The
+energy and H·e3 have the same form on p, and ω⊥, φ_p give the same rates and reaction as the
+body components and φ (all are rotations about e'_3).
+
 Continuous (unwrapped) ψ and φ are tracked along the trajectory: between two
 points the horizontal projection of the axis e'_3 moves at most ℓ = Δt·W⊥
 (W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/4 at both ends
@@ -48,7 +59,7 @@ from dyncli.result import FrameTable, Result, Series
 TWO_PI = 2.0 * math.pi
 EPS = float(np.finfo(float).eps)
 #: a run is refused at once when the a-priori step estimate exceeds the budget by this factor
-#: (the estimate is conservative: measured 1.0-2.5 times the steps taken)
+#: (the estimate is conservative: measured 1.1-1.9 times the steps taken)
 PREDICT_MARGIN = 4.0
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
@@ -106,21 +117,24 @@ class Top:
         self.mgL = m * g * L
         self.k1 = (A - C) / A
         self.kg = self.mgL / A
+        self.kc = C / A
 
-    def rhs(self, t, y):
-        q0, q1, q2, q3, w1, w2, w3 = y.tolist()
-        g1 = 2.0 * (q1 * q3 - q0 * q2)
-        g2 = 2.0 * (q2 * q3 + q0 * q1)
-        k1, kg = self.k1, self.kg
-        return np.array([
-            -0.5 * (q1 * w1 + q2 * w2 + q3 * w3),
-            0.5 * (q0 * w1 + q2 * w3 - q3 * w2),
-            0.5 * (q0 * w2 + q3 * w1 - q1 * w3),
-            0.5 * (q0 * w3 + q1 * w2 - q2 * w1),
-            k1 * w2 * w3 + kg * g2,
-            -k1 * w3 * w1 - kg * g1,
+    def rhs_spinfree(self, t, y):
+        """Equations in the spin-free frame (q = p ⊗ r(ω3 t), module docstring): state
+        (p, v1, v2, ω3); p turns with (v1, v2, 0), v turns at I33 ω3/I11 plus gravity."""
+        p0, p1, p2, p3, v1, v2, w3 = y.tolist()
+        g1 = 2.0 * (p1 * p3 - p0 * p2)
+        g2 = 2.0 * (p2 * p3 + p0 * p1)
+        kc, kg = self.kc * w3, self.kg
+        return [
+            -0.5 * (p1 * v1 + p2 * v2),
+            0.5 * (p0 * v1 - p3 * v2),
+            0.5 * (p0 * v2 + p3 * v1),
+            0.5 * (p1 * v2 - p2 * v1),
+            -kc * v2 + kg * g2,
+            kc * v1 - kg * g1,
             0.0,
-        ])
+        ]
 
     def invariants(self, q, w):
         """E, H·e3, ω3 of a state (body components)."""
@@ -298,8 +312,9 @@ class Run:
     def __init__(self, n):
         self.psi = np.zeros(n)
         self.theta = np.zeros(n)
-        self.phi = np.zeros(n)
-        self.w = np.zeros((n, 3))
+        self.phi = np.zeros(n)      # φ = φ_p + ω3 t
+        self.phi_p = np.zeros(n)    # spin angle of the spin-free frame p
+        self.w = np.zeros((n, 3))   # components of ω on p: (v1, v2, ω3)
         self.drift = (0.0, 0.0, 0.0)
         self.ambiguous: list[float] = []
         self.steps = 0
@@ -307,7 +322,8 @@ class Run:
 
 
 def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales, max_steps=None):
-    """Integrate from y0 (quaternion + body ω) to the sorted ``times``.
+    """Integrate from y0 (quaternion + body ω at t = 0, where the spin-free frame p
+    coincides with the body) to the sorted ``times``.
 
     Step budget as :func:`dyncli.ode.integrate`: refused (NumericalError) when
     the run needs more than ``max_steps`` steps (default ``ode.MAX_STEPS``),
@@ -326,7 +342,8 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     S = math.sqrt(top.A) * Ws
     rtol = max(rtol, 100 * EPS * 1.0001)
     atol_v = np.array([atol] * 4 + [atol * Ws] * 3)
-    tr = _Tracker(psi0, phi0, y0[:4], W3, Wp * (1.0 + 1e-6) + 1e-300)
+    # p has no spin about its axis: the tracker follows ψ and φ_p, φ = φ_p + ω3 t
+    tr = _Tracker(psi0, phi0, y0[:4], 0.0, Wp * (1.0 + 1e-6) + 1e-300)
     dE = dH = dW = 0.0
 
     def record(k, t, y):
@@ -334,18 +351,19 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
         E, H, w3 = top.invariants(y[:4], y[4:])
         dE, dH, dW = max(dE, abs(E - E0)), max(dH, abs(H - H0)), max(dW, abs(w3 - W3))
         if k is not None:
-            run.psi[k], run.phi[k], run.theta[k] = tr.psi, tr.phi, tr.ang[0]
+            run.psi[k], run.phi_p[k], run.theta[k] = tr.psi, tr.phi, tr.ang[0]
+            run.phi[k] = tr.phi + W3 * t
             run.w[k] = y[4:]
 
     k = 0
     t_prev = 0.0
     while k < n and times[k] == 0.0:
         record(k, 0.0, y0)
-        run.psi[k], run.phi[k] = psi0, phi0
+        run.psi[k], run.phi[k], run.phi_p[k] = psi0, phi0, phi0
         k += 1
     T = times[-1] if n else 0.0
     if k < n:
-        solver = cls(top.rhs, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
+        solver = cls(top.rhs_spinfree, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
         while k < n:
             msg = solver.step()
             if solver.status == "failed":
@@ -511,9 +529,9 @@ def solve(p, options=None) -> Result:
         Wg = math.sqrt(4.0 * top.mgL / A)
         Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
         Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
-        # fastest rates of the motion: spin ω3, nutation ≈ I33 ω3/I11, turning of ω⊥ on the body
-        # axes (I11 − I33) ω3/I11, and the pendulum rate √(4mgL/I11)
-        Wfast = abs(W3) + abs(C * W3 / A) + abs((A - C) * W3 / A) + Wg
+        # fastest rates of the motion in the spin-free frame (the spin ω3 is taken out exactly):
+        # nutation ≈ I33 ω3/I11 (the turning of ω⊥ on p) and the pendulum rate √(4mgL/I11)
+        Wfast = abs(C * W3 / A) + Wg
     if not all(math.isfinite(x) for x in (E0, H0, Wn, Wg, Es, Hs, Wfast)):
         raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
     th_min, th_max, wperp2 = turning_points(A, C, top.mgL, th0, th_dot0, psd0, W3)
@@ -533,13 +551,13 @@ def solve(p, options=None) -> Result:
     method = "DOP853" if p.accuracy.method == "auto" else p.accuracy.method
     T = ts[-1] if ts else 0.0
     if T > 0:
-        # work budget: DOP853 takes ~0.16 (rtol/1e-3)^(-1/8) steps per radian of the fastest rate
-        # (the estimate below is 1.0-2.5 times the steps taken); a run clearly over budget is
+        # work budget: DOP853 takes ~0.16-0.28 (rtol/1e-3)^(-1/8) steps per radian of the fastest
+        # rate (the estimate below is 1.1-1.9 times the steps taken); a run clearly over budget is
         # refused at once, the others are watched step by step in integrate()
         budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
         work = T * (Wfast + Wp)
         rtol_eff = max(min(p.accuracy.rtol, 1e-3), 100 * EPS)
-        steps = 0.2 * work * (1e-3 / rtol_eff) ** 0.125
+        steps = 0.3 * work * (1e-3 / rtol_eff) ** 0.125
         if not steps <= PREDICT_MARGIN * budget:
             raise NumericalError(
                 f"the run to t = {T:g} s needs about {steps:.3g} integrator steps (it turns the top through "
@@ -553,8 +571,9 @@ def solve(p, options=None) -> Result:
     inv = np.empty(n, dtype=int)
     inv[order] = np.arange(n)
     psi, theta, phi, w = run.psi[inv], run.theta[inv], run.phi[inv], run.w[inv]
-    psi_dot, th_dot, phi_dot, S = rates(top, theta, phi, w)
-    R = reaction(top, theta, phi, w)
+    # ω on p and φ_p give the same rates and reaction as body ω and φ (rotation about e'_3)
+    psi_dot, th_dot, phi_dot, S = rates(top, theta, run.phi_p[inv], w)
+    R = reaction(top, theta, run.phi_p[inv], w)
     drift = max(run.drift)
     if n:
         res.method = "ode:DOP853+projection" if method == "projected" else f"ode:{method}"
