@@ -31,11 +31,12 @@ body components and φ (all are rotations about e'_3).
 
 Continuous (unwrapped) ψ and φ are tracked along the trajectory: between two
 points the horizontal projection of the axis e'_3 moves at most ℓ = Δt·W⊥
-(W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/4 at both ends
-the change of ψ is below 0.26 rad and is read as a principal value,
+(W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/2 at both ends
+the projection stays at a distance ≥ (sinθa + sinθb − ℓ)/2 ≥ 3/4 min sinθ from the
+vertical, so |Δψ| ≤ ℓ/(3/4 min sinθ) ≤ 2/3 rad, and it is read as a principal value,
 otherwise the interval is bisected on the integrator's dense output.  The
 spin φ follows from ψ and σ (or δ near θ = π), its branch from
-Δφ ≈ ω3 Δt − cosθ̄ Δψ (error < 0.1 rad on such an interval).  Where the
+Δφ ≈ ω3 Δt − cosθ̄ Δψ (error ≤ max|cosθ − cosθ̄| ∫|ψ̇|dt ≤ ℓ · 2/3 < 1/3 rad there).  Where the
 axis passes (numerically) through the vertical, ψ and φ are individually
 undefined; the tracker keeps them continuous and says so.
 
@@ -275,10 +276,10 @@ class _Tracker:
         sa, sb = anga[1], angb[1]
         ell = (tb - ta) * self.Wp
         smin = min(sa, sb)
-        if not (ell < 0.25 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
+        if not (ell < 0.5 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
             tm = 0.5 * (ta + tb)
             if ta < tm < tb:
-                angm = half_angles(_unit(dense(tm)[:4]))
+                angm = half_angles(dense(tm))
                 psi_m, phi_m = self._seg(ta, anga, psi_a, phi_a, tm, angm, dense, depth + 1)
                 return self._seg(tm, angm, psi_m, phi_m, tb, angb, dense, depth + 1)
         _, _, cb, ab, bb = angb
@@ -287,7 +288,7 @@ class _Tracker:
             if ell > 0 and sa >= S_TINY:
                 self.ambiguous.append(tb)
         else:
-            if not (ell < 0.25 * smin) and sa >= S_TINY:
+            if not (ell < 0.5 * smin) and sa >= S_TINY:
                 self.ambiguous.append(tb)
             psi_b = psi_a + _wrap(ab + bb - psi_a)
         pred = phi_a + self.W3 * (tb - ta) - (psi_b - psi_a) * 0.5 * (anga[2] + cb)
@@ -383,6 +384,29 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
                     _c.append(_s.dense_output())
                 return _c[0](t)
 
+            def dense_q(t, _c=cache, _s=solver):
+                """Unit quaternion part of the dense output (the tracker's bisection), DOP853's
+                interpolant evaluated on plain floats (the other methods through scipy)."""
+                if not _c:
+                    _c.append(_s.dense_output())
+                d = _c[0]
+                if len(_c) == 1:
+                    F = getattr(d, "F", None)
+                    _c.append((d.t_old, d.h, [list(r[:4]) for r in F.tolist()[::-1]], d.y_old[:4].tolist())
+                              if type(d).__name__ == "Dop853DenseOutput" and F is not None else None)
+                if _c[1] is None:
+                    return _unit(np.asarray(d(t), dtype=float)[:4])
+                t0, h, Fr, y0q = _c[1]
+                x = (t - t0) / h
+                x1 = 1.0 - x
+                a0 = a1 = a2 = a3 = 0.0
+                for i, f in enumerate(Fr):
+                    c = x if i % 2 == 0 else x1
+                    a0, a1, a2, a3 = (a0 + f[0]) * c, (a1 + f[1]) * c, (a2 + f[2]) * c, (a3 + f[3]) * c
+                a0, a1, a2, a3 = a0 + y0q[0], a1 + y0q[1], a2 + y0q[2], a3 + y0q[3]
+                n = math.sqrt(a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3)
+                return (a0 / n, a1 / n, a2 / n, a3 / n)
+
             while k < n and times[k] <= tb:
                 tk = times[k]
                 if tk == tb:
@@ -390,13 +414,13 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
                 else:
                     yk = np.asarray(dense(tk), dtype=float)
                 yk = top.project(yk, E0, H0, W3, S) if projected else _normq(yk)
-                tr.advance(t_prev, tk, yk[:4], dense)
+                tr.advance(t_prev, tk, yk[:4], dense_q)
                 t_prev = tk
                 record(k, tk, yk)
                 k += 1
             yb = top.project(solver.y, E0, H0, W3, S) if projected else _normq(solver.y)
             if tb > t_prev:
-                tr.advance(t_prev, tb, yb[:4], dense)
+                tr.advance(t_prev, tb, yb[:4], dense_q)
                 t_prev = tb
             if projected:
                 solver.y = yb
