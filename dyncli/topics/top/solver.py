@@ -36,7 +36,8 @@ the projection stays at a distance ≥ (sinθa + sinθb − ℓ)/2 ≥ 3/4 min s
 vertical, so |Δψ| ≤ ℓ/(3/4 min sinθ) ≤ 2/3 rad, and it is read as a principal value,
 otherwise the interval is bisected on the integrator's dense output.  The
 spin φ follows from ψ and σ (or δ near θ = π), its branch from
-Δφ ≈ ω3 Δt − cosθ̄ Δψ (error ≤ max|cosθ − cosθ̄| ∫|ψ̇|dt ≤ ℓ · 2/3 < 1/3 rad there).  Where the
+Δφ ≈ ω3 Δt − cosθ̄ Δψ (error ≤ max|cosθ − cosθ̄| ∫|ψ̇|dt ≤ ℓ · 2/3 < 1/3 rad there;
+the tracker follows φ_p of the spin-free frame, where ω3 = 0, and φ = φ_p + ω3 t).  Where the
 axis passes (numerically) through the vertical, ψ and φ are individually
 undefined; the tracker keeps them continuous and says so.
 
