@@ -10,6 +10,7 @@ reproduces it:
 
     python benchmarks/fuzz_long.py --seconds 300
     python benchmarks/fuzz_long.py --replay 12345        # one document, printed
+    python benchmarks/fuzz_long.py --type top --seconds 600   # one type only (replay with --type too)
 """
 
 from __future__ import annotations
@@ -62,11 +63,15 @@ def main() -> int:
     ap.add_argument("--start", type=int, default=0, help="first seed")
     ap.add_argument("--replay", type=int, default=None, help="print and run the document of one seed")
     ap.add_argument("--hang", type=float, default=20.0, help="wall seconds after which a document counts as hung")
+    ap.add_argument("--type", action="append", default=None,
+                    help="fuzz only this problem type (repeatable; give the same for --replay)")
     args = ap.parse_args()
     warnings.simplefilter("ignore")
     types = [t for t in available_types()]
     seeds = seeds_by_type()
-    types = [t for t in types if t in seeds]
+    types = [t for t in types if t in seeds and (not args.type or t in args.type)]
+    if not types:
+        ap.error(f"no fuzzable type among {args.type}")
     if args.replay is not None:
         t, mode, text = document(args.replay, types, seeds)
         print(f"# seed {args.replay}: {t} ({mode})\n{text}")

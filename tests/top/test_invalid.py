@@ -74,8 +74,8 @@ def test_budget_refuses_a_run_that_needs_too_many_steps():
 
 def test_budget_honours_max_steps():
     text = "type: top\nm: 0.5\nL: 0.05\nI11: 2.0e-3\nI33: 1.0e-3\ntheta: 0.5\nphi_dot: 100\nat: [0, 2]\n"
-    assert _record(text).get("error") is None                       # ~450 steps
-    rec = _record(text + "accuracy: {max_steps: 300}\n")             # watched step by step
-    assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
+    assert _record(text).get("error") is None                       # ~250 steps
+    rec = _record(text + "accuracy: {max_steps: 200}\n")             # watched step by step
+    assert rec["exit_code"] == 1 and "budget of 200" in rec["error"]
     rec = _record(text + "accuracy: {max_steps: 20}\n")              # clearly over: refused before integrating
     assert rec["exit_code"] == 1 and "budget of 20" in rec["error"] and "fastest rate" in rec["error"]

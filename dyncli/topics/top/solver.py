@@ -18,13 +18,26 @@ sin(θ/2)sin(δ/2), cos(θ/2)sin(σ/2)), σ = ψ + φ, δ = ψ − φ, the angle
 read back without loss of precision: θ = 2 atan2(|(q1,q2)|, |(q0,q3)|),
 ψ ≡ atan2(q3,q0) + atan2(q2,q1), φ ≡ atan2(q3,q0) − atan2(q2,q1) (mod 2π).
 
+The spin is taken out exactly: ω3 is constant (38.18c), so q = p ⊗ r(ω3 t) with r the
+rotation by ω3 t about e'_3, and the spin-free frame p (same axis e'_3, no spin about it)
+obeys, with v = (v1, v2) the components of ω⊥ on p,
+
+    ṗ = ½ p ⊗ (0, v1, v2, 0),   I11 v̇1 = −I33 ω3 v2 + mgL γ2,   I11 v̇2 = I33 ω3 v1 − mgL γ1
+
+(γ now on p).  This is what is integrated (state (p, v1, v2, ω3)); ψ and θ of q are those of p
+and φ = φ_p + ω3 t, so the steps follow the nutation and precession, not the spin.  The
+energy and H·e3 have the same form on p, and ω⊥, φ_p give the same rates and reaction as the
+body components and φ (all are rotations about e'_3).
+
 Continuous (unwrapped) ψ and φ are tracked along the trajectory: between two
 points the horizontal projection of the axis e'_3 moves at most ℓ = Δt·W⊥
-(W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/4 at both ends
-the change of ψ is below 0.26 rad and is read as a principal value,
+(W⊥ = bound of |ω⊥| from the energy integral); when ℓ < sinθ/2 at both ends
+the projection stays at a distance ≥ (sinθa + sinθb − ℓ)/2 ≥ 3/4 min sinθ from the
+vertical, so |Δψ| ≤ ℓ/(3/4 min sinθ) ≤ 2/3 rad, and it is read as a principal value,
 otherwise the interval is bisected on the integrator's dense output.  The
 spin φ follows from ψ and σ (or δ near θ = π), its branch from
-Δφ ≈ ω3 Δt − cosθ̄ Δψ (error < 0.1 rad on such an interval).  Where the
+Δφ ≈ ω3 Δt − cosθ̄ Δψ (error ≤ max|cosθ − cosθ̄| ∫|ψ̇|dt ≤ ℓ · 2/3 < 1/3 rad there;
+the tracker follows φ_p of the spin-free frame, where ω3 = 0, and φ = φ_p + ω3 t).  Where the
 axis passes (numerically) through the vertical, ψ and φ are individually
 undefined; the tracker keeps them continuous and says so.
 
@@ -48,7 +61,7 @@ from dyncli.result import FrameTable, Result, Series
 TWO_PI = 2.0 * math.pi
 EPS = float(np.finfo(float).eps)
 #: a run is refused at once when the a-priori step estimate exceeds the budget by this factor
-#: (the estimate is conservative: measured 1.0-2.5 times the steps taken)
+#: (the estimate is conservative: measured 1.1-1.9 times the steps taken)
 PREDICT_MARGIN = 4.0
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
@@ -106,21 +119,24 @@ class Top:
         self.mgL = m * g * L
         self.k1 = (A - C) / A
         self.kg = self.mgL / A
+        self.kc = C / A
 
-    def rhs(self, t, y):
-        q0, q1, q2, q3, w1, w2, w3 = y.tolist()
-        g1 = 2.0 * (q1 * q3 - q0 * q2)
-        g2 = 2.0 * (q2 * q3 + q0 * q1)
-        k1, kg = self.k1, self.kg
-        return np.array([
-            -0.5 * (q1 * w1 + q2 * w2 + q3 * w3),
-            0.5 * (q0 * w1 + q2 * w3 - q3 * w2),
-            0.5 * (q0 * w2 + q3 * w1 - q1 * w3),
-            0.5 * (q0 * w3 + q1 * w2 - q2 * w1),
-            k1 * w2 * w3 + kg * g2,
-            -k1 * w3 * w1 - kg * g1,
+    def rhs_spinfree(self, t, y):
+        """Equations in the spin-free frame (q = p ⊗ r(ω3 t), module docstring): state
+        (p, v1, v2, ω3); p turns with (v1, v2, 0), v turns at I33 ω3/I11 plus gravity."""
+        p0, p1, p2, p3, v1, v2, w3 = y.tolist()
+        g1 = 2.0 * (p1 * p3 - p0 * p2)
+        g2 = 2.0 * (p2 * p3 + p0 * p1)
+        kc, kg = self.kc * w3, self.kg
+        return [
+            -0.5 * (p1 * v1 + p2 * v2),
+            0.5 * (p0 * v1 - p3 * v2),
+            0.5 * (p0 * v2 + p3 * v1),
+            0.5 * (p1 * v2 - p2 * v1),
+            -kc * v2 + kg * g2,
+            kc * v1 - kg * g1,
             0.0,
-        ])
+        ]
 
     def invariants(self, q, w):
         """E, H·e3, ω3 of a state (body components)."""
@@ -261,10 +277,10 @@ class _Tracker:
         sa, sb = anga[1], angb[1]
         ell = (tb - ta) * self.Wp
         smin = min(sa, sb)
-        if not (ell < 0.25 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
+        if not (ell < 0.5 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
             tm = 0.5 * (ta + tb)
             if ta < tm < tb:
-                angm = half_angles(_unit(dense(tm)[:4]))
+                angm = half_angles(dense(tm))
                 psi_m, phi_m = self._seg(ta, anga, psi_a, phi_a, tm, angm, dense, depth + 1)
                 return self._seg(tm, angm, psi_m, phi_m, tb, angb, dense, depth + 1)
         _, _, cb, ab, bb = angb
@@ -273,7 +289,7 @@ class _Tracker:
             if ell > 0 and sa >= S_TINY:
                 self.ambiguous.append(tb)
         else:
-            if not (ell < 0.25 * smin) and sa >= S_TINY:
+            if not (ell < 0.5 * smin) and sa >= S_TINY:
                 self.ambiguous.append(tb)
             psi_b = psi_a + _wrap(ab + bb - psi_a)
         pred = phi_a + self.W3 * (tb - ta) - (psi_b - psi_a) * 0.5 * (anga[2] + cb)
@@ -298,8 +314,9 @@ class Run:
     def __init__(self, n):
         self.psi = np.zeros(n)
         self.theta = np.zeros(n)
-        self.phi = np.zeros(n)
-        self.w = np.zeros((n, 3))
+        self.phi = np.zeros(n)      # φ = φ_p + ω3 t
+        self.phi_p = np.zeros(n)    # spin angle of the spin-free frame p
+        self.w = np.zeros((n, 3))   # components of ω on p: (v1, v2, ω3)
         self.drift = (0.0, 0.0, 0.0)
         self.ambiguous: list[float] = []
         self.steps = 0
@@ -307,7 +324,8 @@ class Run:
 
 
 def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales, max_steps=None):
-    """Integrate from y0 (quaternion + body ω) to the sorted ``times``.
+    """Integrate from y0 (quaternion + body ω at t = 0, where the spin-free frame p
+    coincides with the body) to the sorted ``times``.
 
     Step budget as :func:`dyncli.ode.integrate`: refused (NumericalError) when
     the run needs more than ``max_steps`` steps (default ``ode.MAX_STEPS``),
@@ -326,7 +344,8 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     S = math.sqrt(top.A) * Ws
     rtol = max(rtol, 100 * EPS * 1.0001)
     atol_v = np.array([atol] * 4 + [atol * Ws] * 3)
-    tr = _Tracker(psi0, phi0, y0[:4], W3, Wp * (1.0 + 1e-6) + 1e-300)
+    # p has no spin about its axis: the tracker follows ψ and φ_p, φ = φ_p + ω3 t
+    tr = _Tracker(psi0, phi0, y0[:4], 0.0, Wp * (1.0 + 1e-6) + 1e-300)
     dE = dH = dW = 0.0
 
     def record(k, t, y):
@@ -334,18 +353,19 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
         E, H, w3 = top.invariants(y[:4], y[4:])
         dE, dH, dW = max(dE, abs(E - E0)), max(dH, abs(H - H0)), max(dW, abs(w3 - W3))
         if k is not None:
-            run.psi[k], run.phi[k], run.theta[k] = tr.psi, tr.phi, tr.ang[0]
+            run.psi[k], run.phi_p[k], run.theta[k] = tr.psi, tr.phi, tr.ang[0]
+            run.phi[k] = tr.phi + W3 * t
             run.w[k] = y[4:]
 
     k = 0
     t_prev = 0.0
     while k < n and times[k] == 0.0:
         record(k, 0.0, y0)
-        run.psi[k], run.phi[k] = psi0, phi0
+        run.psi[k], run.phi[k], run.phi_p[k] = psi0, phi0, phi0
         k += 1
     T = times[-1] if n else 0.0
     if k < n:
-        solver = cls(top.rhs, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
+        solver = cls(top.rhs_spinfree, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
         while k < n:
             msg = solver.step()
             if solver.status == "failed":
@@ -365,6 +385,29 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
                     _c.append(_s.dense_output())
                 return _c[0](t)
 
+            def dense_q(t, _c=cache, _s=solver):
+                """Unit quaternion part of the dense output (the tracker's bisection), DOP853's
+                interpolant evaluated on plain floats (the other methods through scipy)."""
+                if not _c:
+                    _c.append(_s.dense_output())
+                d = _c[0]
+                if len(_c) == 1:
+                    F = getattr(d, "F", None)
+                    _c.append((d.t_old, d.h, [list(r[:4]) for r in F.tolist()[::-1]], d.y_old[:4].tolist())
+                              if type(d).__name__ == "Dop853DenseOutput" and F is not None else None)
+                if _c[1] is None:
+                    return _unit(np.asarray(d(t), dtype=float)[:4])
+                t0, h, Fr, y0q = _c[1]
+                x = (t - t0) / h
+                x1 = 1.0 - x
+                a0 = a1 = a2 = a3 = 0.0
+                for i, f in enumerate(Fr):
+                    c = x if i % 2 == 0 else x1
+                    a0, a1, a2, a3 = (a0 + f[0]) * c, (a1 + f[1]) * c, (a2 + f[2]) * c, (a3 + f[3]) * c
+                a0, a1, a2, a3 = a0 + y0q[0], a1 + y0q[1], a2 + y0q[2], a3 + y0q[3]
+                n = math.sqrt(a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3)
+                return (a0 / n, a1 / n, a2 / n, a3 / n)
+
             while k < n and times[k] <= tb:
                 tk = times[k]
                 if tk == tb:
@@ -372,13 +415,13 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
                 else:
                     yk = np.asarray(dense(tk), dtype=float)
                 yk = top.project(yk, E0, H0, W3, S) if projected else _normq(yk)
-                tr.advance(t_prev, tk, yk[:4], dense)
+                tr.advance(t_prev, tk, yk[:4], dense_q)
                 t_prev = tk
                 record(k, tk, yk)
                 k += 1
             yb = top.project(solver.y, E0, H0, W3, S) if projected else _normq(solver.y)
             if tb > t_prev:
-                tr.advance(t_prev, tb, yb[:4], dense)
+                tr.advance(t_prev, tb, yb[:4], dense_q)
                 t_prev = tb
             if projected:
                 solver.y = yb
@@ -511,9 +554,9 @@ def solve(p, options=None) -> Result:
         Wg = math.sqrt(4.0 * top.mgL / A)
         Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
         Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
-        # fastest rates of the motion: spin ω3, nutation ≈ I33 ω3/I11, turning of ω⊥ on the body
-        # axes (I11 − I33) ω3/I11, and the pendulum rate √(4mgL/I11)
-        Wfast = abs(W3) + abs(C * W3 / A) + abs((A - C) * W3 / A) + Wg
+        # fastest rates of the motion in the spin-free frame (the spin ω3 is taken out exactly):
+        # nutation ≈ I33 ω3/I11 (the turning of ω⊥ on p) and the pendulum rate √(4mgL/I11)
+        Wfast = abs(C * W3 / A) + Wg
     if not all(math.isfinite(x) for x in (E0, H0, Wn, Wg, Es, Hs, Wfast)):
         raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
     th_min, th_max, wperp2 = turning_points(A, C, top.mgL, th0, th_dot0, psd0, W3)
@@ -533,13 +576,13 @@ def solve(p, options=None) -> Result:
     method = "DOP853" if p.accuracy.method == "auto" else p.accuracy.method
     T = ts[-1] if ts else 0.0
     if T > 0:
-        # work budget: DOP853 takes ~0.16 (rtol/1e-3)^(-1/8) steps per radian of the fastest rate
-        # (the estimate below is 1.0-2.5 times the steps taken); a run clearly over budget is
+        # work budget: DOP853 takes ~0.16-0.28 (rtol/1e-3)^(-1/8) steps per radian of the fastest
+        # rate (the estimate below is 1.1-1.9 times the steps taken); a run clearly over budget is
         # refused at once, the others are watched step by step in integrate()
         budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
         work = T * (Wfast + Wp)
         rtol_eff = max(min(p.accuracy.rtol, 1e-3), 100 * EPS)
-        steps = 0.2 * work * (1e-3 / rtol_eff) ** 0.125
+        steps = 0.3 * work * (1e-3 / rtol_eff) ** 0.125
         if not steps <= PREDICT_MARGIN * budget:
             raise NumericalError(
                 f"the run to t = {T:g} s needs about {steps:.3g} integrator steps (it turns the top through "
@@ -553,8 +596,9 @@ def solve(p, options=None) -> Result:
     inv = np.empty(n, dtype=int)
     inv[order] = np.arange(n)
     psi, theta, phi, w = run.psi[inv], run.theta[inv], run.phi[inv], run.w[inv]
-    psi_dot, th_dot, phi_dot, S = rates(top, theta, phi, w)
-    R = reaction(top, theta, phi, w)
+    # ω on p and φ_p give the same rates and reaction as body ω and φ (rotation about e'_3)
+    psi_dot, th_dot, phi_dot, S = rates(top, theta, run.phi_p[inv], w)
+    R = reaction(top, theta, run.phi_p[inv], w)
     drift = max(run.drift)
     if n:
         res.method = "ode:DOP853+projection" if method == "projected" else f"ode:{method}"
