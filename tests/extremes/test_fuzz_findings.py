@@ -85,6 +85,11 @@ CASES.update({
         "(with the product's 50,000 it is answered, in ~15 s of CPU: slow, not hung)",
         "{type: top, m: 0.5, L: 0.05, I11: 0.002, I33: '1', theta: 0.3, theta_dot: -2, psi_dot: 16.918, "
         "phi_dot: 50, at: [0, 0.02, 0.04, 0.06, 0.08, 0.1, 0.2, 0.5]}\n"),
+    "top-near-pole-bisection": (
+        "protects the angle tracker near the pole: released at θ = 5e-9 the per-step bisection of ψ built a tree "
+        "of ~ℓ/sinθ leaves (a hang); now bounded per step (MAX_SPLITS) with the ambiguity warned",
+        "{type: top, m: 0.5, L: 0.1, I11: 0.002, I33: 0.001, theta: 5.0e-09, phi_dot: 50.0, "
+        "at: [0, 0.05, 0.10000000000010001, 0.2, 0.5, 1, 2]}\n"),
 })
 
 

@@ -65,6 +65,7 @@ EPS = float(np.finfo(float).eps)
 PREDICT_MARGIN = 4.0
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
+MAX_SPLITS = 256        # interpolant evaluations per step for the angle tracker
 #: sinθ below this: ψ and φ individually undefined (only ψ ± φ)
 S_TINY = 1e-12
 #: closest approach to a pole that gets a warning (rad)
@@ -277,9 +278,11 @@ class _Tracker:
         sa, sb = anga[1], angb[1]
         ell = (tb - ta) * self.Wp
         smin = min(sa, sb)
-        if not (ell < 0.5 * smin) and smin >= S_TINY and depth < MAX_DEPTH and dense is not None and tb > ta:
+        if (not (ell < 0.5 * smin) and smin >= S_TINY and depth < MAX_DEPTH and self._splits > 0
+                and dense is not None and tb > ta):
             tm = 0.5 * (ta + tb)
             if ta < tm < tb:
+                self._splits -= 1
                 angm = half_angles(dense(tm))
                 psi_m, phi_m = self._seg(ta, anga, psi_a, phi_a, tm, angm, dense, depth + 1)
                 return self._seg(tm, angm, psi_m, phi_m, tb, angb, dense, depth + 1)
@@ -298,6 +301,10 @@ class _Tracker:
 
     def advance(self, ta, tb, qb, dense):
         angb = half_angles(qb)
+        # bisection is bounded per step: near the pole (sin θ/2 ~ 1e-9) the
+        # halving would otherwise build a tree of ~ℓ/sin θ leaves; past the
+        # bound the branch of ψ is marked ambiguous (a warning), not hunted
+        self._splits = MAX_SPLITS
         self.psi, self.phi = self._seg(ta, self.ang, self.psi, self.phi, tb, angb, dense, 0)
         self.ang = angb
         return self.psi, self.phi, angb
