@@ -30,8 +30,6 @@ HANG_SECONDS = 10.0       # wall clock: a document still running then is reporte
 # per-type fuzz tests are skipped — a hang costs the hang limit on every
 # hypothesis shrink step — until the owner fixes them and deletes the entry.
 KNOWN_BROKEN: dict[str, str] = {
-    "rectilinear": "case 2 (quadrature) takes ~4 s of CPU for a = sin(cos(tan(exp(log(sqrt(abs(t))))))) with "
-                   "find [{t: 2}, {v: 0}, {s: 50}] (the general route's far-past hang is fixed: step budget)",
     "top": "near the 2 s CPU limit on a loaded machine for ~2000-step runs (at: [..., 16]: ~1.5-2 s with the "
            "error-estimate run); the I33 >> I11 hang (step budget) and the LinAlgErrors are fixed",
 }

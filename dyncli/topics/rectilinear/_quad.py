@@ -242,3 +242,50 @@ def _float_mid(a: float, b: float) -> float:
     k = (_float_key(a) + _float_key(b)) // 2
     bits = k if k >= 0 else (-k) | 0x8000000000000000
     return struct.unpack("<d", struct.pack("<Q", bits))[0]
+
+
+def roots(F, a, b, fa, fb, maxit: int = 200):
+    """Roots of ``F`` in many brackets ``[a_j, b_j]`` at once (sign change
+    from ``fa`` to ``fb``): the Illinois variant of regula falsi with a
+    bisection every third step (at least linear convergence, superlinear for
+    simple roots), to adjacent doubles.  ``F(x, k)`` evaluates the brackets
+    ``k`` at the points ``x`` in one vectorised call; one call per iteration
+    for all brackets replaces one scalar root search per bracket."""
+    a = np.array(a, dtype=float)
+    b = np.array(b, dtype=float)
+    ga = np.array(fa, dtype=float)
+    gb = np.array(fb, dtype=float)
+    wa, wb = ga.copy(), gb.copy()          # Illinois weights
+    side = np.zeros(a.size, dtype=int)
+    root = np.where(np.abs(ga) <= np.abs(gb), a, b)
+    done = (ga == 0) | (gb == 0) | ((ga > 0) == (gb > 0))
+    root[ga == 0] = a[ga == 0]
+    root[(gb == 0) & (ga != 0)] = b[(gb == 0) & (ga != 0)]
+    for it in range(maxit):
+        mid = a + 0.5 * (b - a)
+        act = ~done & (mid != a) & (mid != b)
+        if not act.any():
+            break
+        k = np.nonzero(act)[0]
+        ak, bk = a[k], b[k]
+        with np.errstate(all="ignore"):
+            x = (ak * wb[k] - bk * wa[k]) / (wb[k] - wa[k])
+        lo, hi = np.minimum(ak, bk), np.maximum(ak, bk)
+        bis = (it % 3 == 2) | ~(x > lo) | ~(x < hi)
+        x = np.where(bis, mid[k], x)
+        fx = np.asarray(F(x, k), dtype=float)
+        fx = np.broadcast_to(fx, x.shape)
+        z = fx == 0
+        root[k[z]] = x[z]
+        done[k[z]] = True
+        same = ((fx > 0) == (ga[k] > 0)) & ~z
+        other = ~same & ~z
+        ks, ko = k[same], k[other]
+        # moved a: halve b's weight if a moved last time too (Illinois)
+        wb[ks] = np.where(side[ks] == 1, 0.5 * wb[ks], wb[ks])
+        a[ks], ga[ks], wa[ks], side[ks] = x[same], fx[same], fx[same], 1
+        wa[ko] = np.where(side[ko] == -1, 0.5 * wa[ko], wa[ko])
+        b[ko], gb[ko], wb[ko], side[ko] = x[other], fx[other], fx[other], -1
+    rest = ~done
+    root[rest] = np.where(np.abs(ga[rest]) <= np.abs(gb[rest]), a[rest], b[rest])
+    return root

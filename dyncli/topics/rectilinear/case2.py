@@ -16,9 +16,11 @@ Root searches integrate from the nearest point where the state is already
 known (a bracket end or an earlier iterate), so each step costs a quadrature
 over a shrinking interval only.
 
-Work budget: every evaluation of a is counted; one solve may evaluate a at most
-30 · ``accuracy.max_steps`` times (one step = one 30-point quadrature panel;
-default ``dyncli.ode.MAX_STEPS``), else NumericalError (exit 1).  One quadrature
+Work budget: every evaluation of a is counted, plus the Python overhead of each
+call (``_CALL``, ``_SCALAR``, ``_QUAD`` evaluations' worth); one solve may do
+at most ``_STEP`` · ``accuracy.max_steps`` evaluations' worth (one step = two
+30-point quadrature panels; default ``dyncli.ode.MAX_STEPS``), else
+NumericalError (exit 1): ~0.3-0.7 s of CPU.  One quadrature
 refines at most ``_MAX_PANELS`` panels: an integrand it cannot resolve (an
 oscillation without bound near a pole of tan inside a) is accepted with its
 error estimate and a warning, and a non-integrable pole (1/(t - c)) ends the
@@ -32,12 +34,15 @@ import math
 import numpy as np
 
 from dyncli.errors import NumericalError
-from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable, brentq, integrate
+from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable, brentq, integrate, roots
 
 _N0 = 2048
 _NMAX = 1 << 16
 _MAX_PANELS = 4000          # panels one quadrature may evaluate before it gives up refining
-_PANEL = 30                 # evaluations of a per panel (20 + 10 Gauss-Legendre points)
+_STEP = 60                  # evaluations of a per budget step (two 30-point quadrature panels)
+# the Python overhead of one call, in evaluations of a (vectorised evaluation ~0.1 µs a point;
+# a call of the expression ~20 µs, a scalar call ~5 µs, a quadrature call ~100 µs)
+_CALL, _SCALAR, _QUAD = 200, 50, 1000
 
 
 def _fmt(x: float) -> str:
@@ -59,7 +64,7 @@ class _Case2:
         from dyncli import ode
 
         self.steps = int(p.accuracy.max_steps or ode.MAX_STEPS)
-        self.budget = _PANEL * self.steps
+        self.budget = _STEP * self.steps
         self.evals = 0
         self.info: dict = {}
         self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
@@ -70,20 +75,21 @@ class _Case2:
         if self.evals > self.budget:
             where = f" (hardest near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
             raise NumericalError(
-                f"case 2: the quadratures of a need more than {self.budget} evaluations of a{where}, more than "
-                f"the budget of {self.steps} steps (30-point panels): shorten the time span (t_max), loosen "
-                "accuracy.rtol, or raise accuracy.max_steps")
+                f"case 2: the quadratures and root searches need more than {self.steps} steps{where} (one step: "
+                f"{_STEP} evaluations of a, or the same work in call overhead), more than the budget of "
+                f"{self.steps}: shorten the time span (t_max), loosen accuracy.rtol, or raise accuracy.max_steps")
 
     def A(self, x):
         x = np.asarray(x, dtype=float)
-        self._charge(x.size)
+        self._charge(x.size + _CALL)
         return self.a.evaluate(t=x)
 
     def a1(self, x: float) -> float:
-        self._charge(1)
+        self._charge(_SCALAR)
         return float(self._fn({'t': x}))
 
     def integrate(self, f, lo, width):
+        self._charge(_QUAD)
         return integrate(f, lo, width, self.qr, self.qa, max_panels=_MAX_PANELS, info=self.info)
 
     def _check(self, conv) -> None:
@@ -258,16 +264,12 @@ class _Case2:
             x, ax = x[:k], ax[:k]
             cb = float(x[-1])
         # extrema of v: sign changes of a
-        roots = []
         sb = np.signbit(ax)
-        for k in np.nonzero(sb[:-1] != sb[1:])[0]:
-            if ax[k] == 0:
-                roots.append(float(x[k]))
-            elif ax[k + 1] == 0:
-                continue
-            else:
-                roots.append(brentq(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
-        Bv = np.unique(np.array([ca] + [r for r in roots if ca < r < cb] + [cb]))
+        ks = np.nonzero(sb[:-1] != sb[1:])[0]
+        ks = ks[ax[ks + 1] != 0]              # a zero sample is itself the root (ax[k] == 0: root x[k])
+        rts = roots(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
+        rts = rts[(rts > ca) & (rts < cb)]
+        Bv = np.unique(np.concatenate([[ca], rts, [cb]]))
         vals, errs, conv = self.integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv))
         self._check(conv)
         vB = vc + np.concatenate([[0.0], np.cumsum(vals)])
@@ -304,6 +306,7 @@ class _Case2:
         # extrema of s: zeros of v inside the monotone pieces of v
         Bs, vs = [ca], [vc]
         last = len(Bv) - 1
+        pend = []                       # pieces with a sign change of v: one vectorised root search
         for k in range(last):
             va, vb_ = vB[k], vB[k + 1]
             if va != 0 and vb_ != 0 and (va > 0) != (vb_ > 0):
@@ -312,20 +315,26 @@ class _Case2:
                 # itself (a root search there converges only slowly on the noise)
                 tolz = self.rtol * max(abs(va), abs(vb_)) + self.atol
                 if 0 < k + 1 < last and abs(vb_) <= tolz:
-                    if Bs[-1] < float(Bv[k + 1]) < cb:
-                        Bs.append(float(Bv[k + 1]))
-                        vs.append(0.0)
+                    Bs.append(float(Bv[k + 1]))
                     continue
                 if 0 < k and abs(va) <= tolz:
                     continue
-                tb = float(Bv[k])
-                r = self.vroot(tb, float(va), float(Bv[k + 1]), float(vb_), 0.0)
-                if Bs[-1] < r < cb:
-                    Bs.append(r)
-                    vs.append(0.0)
+                pend.append(k)
             elif vb_ == 0 and 0 < k + 1 < len(Bv) - 1:
                 Bs.append(float(Bv[k + 1]))
-                vs.append(0.0)
+        if pend:
+            pk = np.array(pend)
+            t0, v0 = Bv[pk], vB[pk]
+
+            def fv(t, j):
+                vals, errs, conv = self.integrate(lambda x, i: self.A(x), t0[j], t - t0[j])
+                self._check(conv)
+                return v0[j] + vals
+
+            Bs.extend(float(r) for r in roots(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
+        Bs = sorted(set(b for b in Bs[1:] if ca < b < cb))
+        Bs = [ca] + Bs
+        vs = [vc] + [0.0] * (len(Bs) - 1)
         Bs.append(cb)
         vs.append(float(vB[-1]))
         Bs = np.array(Bs)
