@@ -67,8 +67,9 @@ class _Case2:
         self.budget = _STEP * self.steps
         self.evals = 0
         self.info: dict = {}
+        self._bad_xs: list[float] = []  # where quadratures failed to converge
+        self._nbad = 0
         self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
-        self.last_conv = True
 
     def _charge(self, n: int) -> None:
         self.evals += n
@@ -93,6 +94,10 @@ class _Case2:
         return integrate(f, lo, width, self.qr, self.qa, max_panels=_MAX_PANELS, info=self.info)
 
     def _check(self, conv) -> None:
+        if not np.all(conv) and "x_bad" in self.info:
+            self._nbad += 1
+            if len(self._bad_xs) < 64:
+                self._bad_xs.append(self.info["x_bad"])
         if not np.all(conv) and not self.warned_conv:
             self.warned_conv = True
             where = f" (near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
@@ -111,7 +116,6 @@ class _Case2:
 
         vals, errs, conv = self.integrate(f, [tb, tb], [h, h])
         self._check(conv)
-        self.last_conv = bool(np.all(conv))
         return sb + vb * h + vals[1], vb + vals[0], errs[1], errs[0]
 
     def state_split(self, T: float, tb: float, sb: float, vb: float):
@@ -147,33 +151,46 @@ class _Case2:
         return (sb + vb * h + float(np.sum(vals[n:])), vb + float(np.sum(vals[:n])),
                 float(np.sum(errs[n:])), float(np.sum(errs[:n])))
 
+    def _nearest(self, known, t):
+        """The known state to integrate from: not across a stretch where a
+        quadrature failed to converge if avoidable (an iterate beyond it
+        carries that error once, instead of redoing the stretch every step),
+        then a converged one, then the nearest."""
+        bad = self._bad_xs
+
+        def key(q):
+            lo, hi = min(q[0], t), max(q[0], t)
+            crosses = any(lo < x < hi for x in bad)
+            return (crosses, not q[-1], abs(q[0] - t))
+
+        return min(known, key=key)
+
     def root(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
         """First t in [t0, t1] with v (kind 'v') or s (kind 's') = target; the
         state is known at both ends.  Each evaluation integrates from the
         nearest known state (ends and earlier iterates)."""
-        known = [(t0, s0, v0)]      # the far end may carry a larger error: iterates only
+        known = [(t0, s0, v0, True)]    # the far end may carry a larger error: iterates only
         k = 1 if kind == "s" else 2
 
         def g(t):
-            tb, sb, vb = min(known, key=lambda q: abs(q[0] - t))
+            tb, sb, vb, _ = self._nearest(known, t)
+            n = self._nbad
             s, v, _, _ = self.state(t, tb, sb, vb)
-            if self.last_conv:
-                known.append((t, s, v))
+            known.append((t, s, v, self._nbad == n))
             return (s, v)[k - 1] - target
 
         return brentq(g, t0, t1, (s0, v0)[k - 1] - target, (s1, v1)[k - 1] - target)
 
     def vroot(self, t0: float, v0: float, t1: float, v1: float, target: float) -> float:
         """v = target in [t0, t1] (v only: one integral per step)."""
-        known = [(t0, v0)]          # the far end may carry a larger error: iterates only
+        known = [(t0, v0, True)]        # the far end may carry a larger error: iterates only
 
         def g(t):
-            tb, vb = min(known, key=lambda q: abs(q[0] - t))
+            tb, vb, _ = self._nearest(known, t)
             vals, errs, conv = self.integrate(lambda x, j: self.A(x), [tb], [t - tb])
             self._check(conv)
             v = vb + float(vals[0])
-            if np.all(conv):
-                known.append((t, v))
+            known.append((t, v, bool(np.all(conv))))
             return v - target
 
         return brentq(g, t0, t1, v0 - target, v1 - target)
