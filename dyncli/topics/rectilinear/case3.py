@@ -106,8 +106,15 @@ class Branch:
             return self.v1 + self.e * self.c * np.expm1(u)
         # v* - D0 e^-u near v* (u large); v1 - D0 expm1(-u) near v1, where the first form
         # cancels catastrophically when |v*| >> |v - v1| (v* = -3e76 for k = 1e-152)
+        u = np.asarray(u, dtype=float)
         em = np.exp(-u)
-        return np.where(em < 0.5, self.v_end - self.D0 * em, self.v1 - self.D0 * np.expm1(-u))
+        out = np.asarray(self.v_end - self.D0 * em, dtype=float)
+        near = em >= 0.5
+        if near.any():
+            if out.ndim == 0:
+                return np.float64(self.v1 - self.D0 * np.expm1(-u))
+            out[near] = self.v1 - self.D0 * np.expm1(-u[near])
+        return out
 
     def dvdu(self, u):
         if self.kind == "inf":
