@@ -48,12 +48,6 @@ class NotIntegrable(NonFinite):
         self.task = int(task)
 
 
-#: a piece at the resolution of the doubles whose error estimate exceeds this
-#: fraction of the integral of |f| means a non-integrable singularity there
-#: (a jump leaves ~1e-16 of it, an integrable 1/sqrt pole ~1e-8, 1/t ~1e-2)
-SINGULAR_FRACTION = 1e-6
-
-
 def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_panels: int | None = None,
               info: dict | None = None):
     """Integrals of ``f`` over ``[lo_j, lo_j + width_j]``.
@@ -65,9 +59,9 @@ def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_pane
 
     With ``max_panels``, one call evaluates at most about that many panels
     (30 points each): when the next round would exceed it, the remaining
-    pieces are accepted with their error estimates (not converged), and a
-    piece bisected to the resolution of the doubles that still holds more
-    than ``SINGULAR_FRACTION`` of the integral raises :class:`NotIntegrable`.
+    pieces are accepted with their error estimates (not converged), and the
+    worst unconverged piece is followed into its singularity (:func:`_zoom`):
+    a non-integrable one raises :class:`NotIntegrable`.
     ``info`` (a dict), when given, receives ``x_bad``: the middle of the
     unconverged piece with the largest error estimate."""
     lo = np.atleast_1d(np.asarray(lo, dtype=float))
@@ -88,7 +82,6 @@ def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_pane
     nz = h != 0
     a, off, h, task = a[nz], off[nz], h[nz], task[nz]
     panels = 0
-    absall = np.zeros(m)
     worst = (0.0, 0.0, -1, 0.0, 0.0)     # (error, x, task, start, width) of the worst unconverged piece
     for rnd in range(max_rounds + 1):
         if task.size == 0:
@@ -116,12 +109,11 @@ def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_pane
         last = rnd == max_rounds or task.size > 20000 or (max_panels is not None and panels + 2 * np.count_nonzero(~(ok | tiny)) > max_panels)
         acc = ok | tiny | last
         loose = e <= 100 * np.maximum(rt * absint, share)
-        np.add.at(absall, task[acc], absint[acc])
         bad = ~loose & acc
         if bad.any():
             conv[task[bad]] = False
             k = int(np.argmax(np.where(bad, e, -1.0)))
-            if e[k] > worst[0] or worst[2] < 0:
+            if (max_panels is not None or info is not None) and (e[k] > worst[0] or worst[2] < 0):
                 worst = (float(e[k]), float(a[k] + off[k] + half[k]), int(task[k]), float(a[k] + off[k]), float(h[k]))
         np.add.at(vals, task[acc], g20[acc])
         np.add.at(errs, task[acc], e[acc])
