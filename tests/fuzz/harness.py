@@ -36,8 +36,9 @@ FUZZ_MAX_STEPS = 4_000
 # per-type fuzz tests are skipped — a hang costs the hang limit on every
 # hypothesis shrink step — until the owner fixes them and deletes the entry.
 KNOWN_BROKEN: dict[str, str] = {
-    "rectilinear": "case 2 (quadrature) takes ~4 s of CPU for a = sin(cos(tan(exp(log(sqrt(abs(t))))))) with "
-                   "find [{t: 2}, {v: 0}, {s: 50}] (the general route's far-past hang is fixed: step budget)",
+    # empty: every type is fuzzed.  The one known slow document (rectilinear
+    # case 3, linear drag with v1 = 1e-299: ~2.6-3 s of CPU) is the strict
+    # xfail 'rectilinear-case3-tiny-v1-backward' in test_fuzz_findings.
 }
 
 

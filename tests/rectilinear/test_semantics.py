@@ -288,3 +288,94 @@ def test_general_error_estimate_falls_back_to_a_looser_solve_over_budget():
     rec = problem("-4*s + 0*t", [{"t": 100}], s1=1, accuracy="{max_steps: 1500}")
     assert entries(rec)[0]["reached"] and rec["error_estimate"] > 0
     assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])
+
+
+# -- case 2: singular and unresolvable a(t), work budget ---------------------------
+
+_TAN_NEST = "sin(cos(tan(exp(log(sqrt(abs(t)))))))"   # = sin(cos(tan(sqrt t))): poles of tan at t = (pi/2 + k pi)^2
+
+
+def test_case2_unresolvable_oscillation_warns_with_an_honest_error_estimate():
+    # near t = (pi/2)^2 the integrand oscillates without bound (bounded, so the integral exists):
+    # answered, with a warning that names the place and an error estimate far above rtol
+    rec = problem(_TAN_NEST, [{"t": 2}, {"v": 0}, {"s": 50}])
+    e = entries(rec)
+    assert all(x["reached"] for x in e)
+    # t = 2 lies before the first pole: full accuracy
+    ref = mp.quad(lambda x: mp.sin(mp.cos(mp.tan(mp.sqrt(x)))), [0, 2])
+    close(e[0]["v"], ref)
+    assert e[1]["t"] == 0
+    assert abs(e[2]["s"] - 50) < 1e-9
+    assert any("did not reach the requested tolerance" in w and "near t = 2.468" in w for w in rec["warnings"])
+    assert rec["error_estimate"] > 1e-6
+
+
+def test_case2_pole_with_sign_change_is_not_a_principal_value():
+    # 1/(t - 1) and tan t change sign through their poles; symmetric quadrature nodes would
+    # cancel them to a finite principal value: the integral does not exist, the motion ends there
+    rec = problem("1/(t-1)", [{"t": 2}, {"t": 0.5}, {"v": 3}])
+    e = entries(rec)
+    assert is_unreached(e[0]) and is_unreached(e[2])
+    close(e[1]["v"], math.log(0.5))
+    assert any("find[0]" in w and "t = 1" in w for w in rec["warnings"])
+    rec = problem("tan(t)", [{"t": 2}, {"v": 3}, {"s": 50}])
+    e = entries(rec)
+    assert is_unreached(e[0]) and is_unreached(e[2])
+    close(e[1]["t"], math.atan(math.sqrt(math.exp(6) - 1)))      # v = -ln cos t = 3
+    assert any("find[0]" in w and "not integrable near t = 1.570796327" in w for w in rec["warnings"])
+
+
+def test_case2_even_pole_ends_the_motion():
+    rec = problem("1/(t-1)**2", [{"t": 2}, {"v": 3}, {"s": 50}])
+    e = entries(rec)
+    assert is_unreached(e[0]) and is_unreached(e[2])
+    close(e[1]["t"], 0.75)                                     # v = t/(1 - t) = 3
+    assert any("find[2]" in w and "t = 1" in w for w in rec["warnings"])
+
+
+def test_case2_integrable_singularity_is_answered():
+    rec = problem("1/sqrt(abs(t-1))", [{"t": 2.3}, {"v": 3}])
+    e = entries(rec)
+    assert e[0]["reached"] and abs(e[0]["v"] - 2 - 2 * math.sqrt(1.3)) < 1e-5
+    assert abs(e[1]["t"] - 1.25) < 1e-5
+    assert rec["error_estimate"] >= abs(e[0]["v"] - 2 - 2 * math.sqrt(1.3))
+
+
+def test_case2_budget_refuses_unresolvable_sign_changes():
+    from tests.conftest import solve_text
+
+    (rec,) = solve_text("type: rectilinear\na: cos(1e300 * t)\ns1: 2.5\nv1: -1\nfind: [{s: 0}]\n")
+    assert rec["exit_code"] == 1
+    assert "budget of 50000" in rec["error"] and "accuracy.max_steps" in rec["error"]
+    (rec,) = solve_text("type: rectilinear\na: 3*sin(2*t)\nfind: [{s: 1e9}]\naccuracy: {max_steps: 300}\n")
+    assert rec["exit_code"] == 1 and "budget of 300" in rec["error"]
+
+
+def test_case2_long_scan_with_a_huge_s1():
+    # 3 sin 2t over t_max = 1000 s with an unreachable s target: ~640 zeros of v, found together
+    rec = problem("3*sin(2*t)", [{"v": 0.5}, {"s": 1}], s1="5.0e+149", v1="-1.0e-08")
+    e = entries(rec)
+    close(e[0]["t"], math.acos((-1e-8 + 1.5 - 0.5) / 1.5) / 2)
+    assert is_unreached(e[1])
+
+
+def test_case3_quadratic_drag_with_negligible_k():
+    # v* = -3e76: v = v* - D0 e^-u cancelled catastrophically near v1 (t = 1 gave s = 0, v = 0)
+    rec = problem("-9.81 - k*v*abs(v)", [{"t": 1}, {"v": 0}, {"s": -10}, {"t": -1}], params="{k: 1.0e-152}", v1=20)
+    e = entries(rec)
+    close(e[0]["s"], 20 - 4.905)
+    close(e[0]["v"], 20 - 9.81)
+    close(e[1]["t"], 20 / 9.81)
+    close(e[2]["t"], (20 + math.sqrt(400 + 2 * 9.81 * 10)) / 9.81)
+    close(e[3]["s"], -20 - 4.905)
+
+
+def test_case3_v1_beyond_the_blow_up_threshold():
+    rec = problem("-9.81 - k*v*abs(v)", [{"t": 1}, {"v": 0}], params="{k: 0.0}", v1="2.0e+301")
+    assert all(is_unreached(x) for x in entries(rec))
+
+
+def test_case1_subnormal_acceleration():
+    # a/2 underflows to 0 for a = 5e-324: the position root must not divide by it
+    rec = problem("5.0e-324", [{"s": 0.2}], s1=0.1, v1=1)
+    close(entries(rec)[0]["t"], 0.1)

@@ -12,6 +12,19 @@ is monotone between them; the extrema of s are the zeros of v, found inside the
 monotone pieces of v.  Scanning these pieces in time order gives the first
 crossing by a bracketed root search on the quadrature, and a target equal to
 an extremum (grazing, no sign change) is found at the extremum itself.
+Root searches integrate from the nearest point where the state is already
+known (a bracket end or an earlier iterate), so each step costs a quadrature
+over a shrinking interval only.
+
+Work budget: every evaluation of a is counted, plus the Python overhead of each
+call (``_CALL``, ``_SCALAR``, ``_QUAD`` evaluations' worth); one solve may do
+at most ``_STEP`` · ``accuracy.max_steps`` evaluations' worth (one step = two
+30-point quadrature panels; default ``dyncli.ode.MAX_STEPS``), else
+NumericalError (exit 1): ~0.3-0.7 s of CPU.  One quadrature
+refines at most ``_MAX_PANELS`` panels: an integrand it cannot resolve (an
+oscillation without bound near a pole of tan inside a) is accepted with its
+error estimate and a warning, and a non-integrable pole (1/(t - c)) ends the
+motion there like a non-finite a.
 """
 
 from __future__ import annotations
@@ -20,10 +33,16 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.errors import NumericalError
+from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable, brentq, integrate, roots
 
 _N0 = 2048
 _NMAX = 1 << 16
+_MAX_PANELS = 4000          # panels one quadrature may evaluate before it gives up refining
+_STEP = 60                  # evaluations of a per budget step (two 30-point quadrature panels)
+# the Python overhead of one call, in evaluations of a (vectorised evaluation ~0.1 µs a point;
+# a call of the expression ~20 µs, a scalar call ~5 µs, a quadrature call ~100 µs)
+_CALL, _SCALAR, _QUAD = 200, 50, 1000
 
 
 def _fmt(x: float) -> str:
@@ -42,17 +61,48 @@ class _Case2:
 
         self._fn = scalar_fn(p.a)
         self.warned_conv = False
+        from dyncli import ode
+
+        self.steps = int(p.accuracy.max_steps or ode.MAX_STEPS)
+        self.budget = _STEP * self.steps
+        self.evals = 0
+        self.info: dict = {}
+        self._bad_xs: list[float] = []  # where quadratures failed to converge
+        self._nbad = 0
+        self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
+
+    def _charge(self, n: int) -> None:
+        self.evals += n
+        if self.evals > self.budget:
+            where = f" (hardest near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
+            raise NumericalError(
+                f"case 2: the quadratures and root searches need more than {self.steps} steps{where} (one step: "
+                f"{_STEP} evaluations of a, or the same work in call overhead), more than the budget of "
+                f"{self.steps}: shorten the time span (t_max), loosen accuracy.rtol, or raise accuracy.max_steps")
 
     def A(self, x):
-        return self.a.evaluate(t=np.asarray(x, dtype=float))
+        x = np.asarray(x, dtype=float)
+        self._charge(x.size + _CALL)
+        return self.a.evaluate(t=x)
 
     def a1(self, x: float) -> float:
+        self._charge(_SCALAR)
         return float(self._fn({'t': x}))
 
+    def integrate(self, f, lo, width):
+        self._charge(_QUAD)
+        return integrate(f, lo, width, self.qr, self.qa, max_panels=_MAX_PANELS, info=self.info)
+
     def _check(self, conv) -> None:
+        if not np.all(conv) and "x_bad" in self.info:
+            self._nbad += 1
+            if len(self._bad_xs) < 64:
+                self._bad_xs.append(self.info["x_bad"])
         if not np.all(conv) and not self.warned_conv:
             self.warned_conv = True
-            self.ans.res.warn("quadrature did not reach the requested tolerance everywhere (non-smooth a?); see error_estimate")
+            where = f" (near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
+            self.ans.res.warn(f"quadrature did not reach the requested tolerance everywhere{where}: a is not smooth "
+                              "or oscillates faster than the quadrature resolves; see error_estimate")
 
     # state at T from a base state (tb, sb, vb): two integrals, one call
     def state(self, T: float, tb: float, sb: float, vb: float):
@@ -64,28 +114,94 @@ class _Case2:
             ax = self.A(x)
             return np.where(j == 0, ax, (T - x) * ax)
 
-        vals, errs, conv = integrate(f, [tb, tb], [h, h], self.qr, self.qa)
+        vals, errs, conv = self.integrate(f, [tb, tb], [h, h])
         self._check(conv)
         return sb + vb * h + vals[1], vb + vals[0], errs[1], errs[0]
 
-    def dv(self, tb: float, h: float) -> float:
-        vals, errs, conv = integrate(lambda x, j: self.A(x), [tb], [h], self.qr, self.qa)
-        self._check(conv)
-        return float(vals[0])
+    def state_split(self, T: float, tb: float, sb: float, vb: float):
+        """As :meth:`state`, with the integrals split at the sign changes of a
+        (sampled): a pole where a changes sign (1/(t - c), tan t) then lies at
+        the end of a piece, where the quadrature sees that the integral does
+        not exist, instead of cancelling symmetrically to a principal value."""
+        h = T - tb
+        if h == 0:
+            return sb, vb, 0.0, 0.0
+        x = np.linspace(tb, T, _N0 + 1)
+        ax = self.A(x)
+        bad = ~np.isfinite(ax)
+        if bad.any():
+            raise NonFinite(float(x[int(np.argmax(bad))]), 0)
+        sg = np.signbit(ax)
+        idx = np.nonzero(sg[:-1] != sg[1:])[0]
+        cuts = []
+        if 0 < idx.size <= 64:
+            for k in idx:
+                if ax[k] != 0 and ax[k + 1] != 0:
+                    cuts.append(brentq(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
+        B = np.array([tb] + sorted(cuts, reverse=h < 0) + [T])
+        lo, w = B[:-1], np.diff(B)
+        n = lo.size
 
-    def ds(self, tb: float, vb: float, h: float) -> float:
-        T = tb + h
-        vals, errs, conv = integrate(lambda x, j: (T - x) * self.A(x), [tb], [h], self.qr, self.qa)
+        def f(xx, j):
+            ax = self.A(xx)
+            return np.where(j < n, ax, (T - xx) * ax)
+
+        vals, errs, conv = self.integrate(f, np.concatenate([lo, lo]), np.concatenate([w, w]))
         self._check(conv)
-        return vb * h + float(vals[0])
+        return (sb + vb * h + float(np.sum(vals[n:])), vb + float(np.sum(vals[:n])),
+                float(np.sum(errs[n:])), float(np.sum(errs[:n])))
+
+    def _nearest(self, known, t):
+        """The known state to integrate from: not across a stretch where a
+        quadrature failed to converge if avoidable (an iterate beyond it
+        carries that error once, instead of redoing the stretch every step),
+        then a converged one, then the nearest."""
+        bad = self._bad_xs
+
+        def key(q):
+            lo, hi = min(q[0], t), max(q[0], t)
+            crosses = any(lo < x < hi for x in bad)
+            return (crosses, not q[-1], abs(q[0] - t))
+
+        return min(known, key=key)
+
+    def root(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
+        """First t in [t0, t1] with v (kind 'v') or s (kind 's') = target; the
+        state is known at both ends.  Each evaluation integrates from the
+        nearest known state (ends and earlier iterates)."""
+        known = [(t0, s0, v0, True)]    # the far end may carry a larger error: iterates only
+        k = 1 if kind == "s" else 2
+
+        def g(t):
+            tb, sb, vb, _ = self._nearest(known, t)
+            n = self._nbad
+            s, v, _, _ = self.state(t, tb, sb, vb)
+            known.append((t, s, v, self._nbad == n))
+            return (s, v)[k - 1] - target
+
+        return brentq(g, t0, t1, (s0, v0)[k - 1] - target, (s1, v1)[k - 1] - target)
+
+    def vroot(self, t0: float, v0: float, t1: float, v1: float, target: float) -> float:
+        """v = target in [t0, t1] (v only: one integral per step)."""
+        known = [(t0, v0, True)]        # the far end may carry a larger error: iterates only
+
+        def g(t):
+            tb, vb, _ = self._nearest(known, t)
+            vals, errs, conv = self.integrate(lambda x, j: self.A(x), [tb], [t - tb])
+            self._check(conv)
+            v = vb + float(vals[0])
+            known.append((t, v, bool(np.all(conv))))
+            return v - target
+
+        return brentq(g, t0, t1, v0 - target, v1 - target)
 
     # -- t queries ------------------------------------------------------
     def t_query(self, i: int, T: float) -> None:
         p = self.p
         try:
-            s, v, es, ev = self.state(T, p.t1, p.s1, p.v1)
+            s, v, es, ev = self.state_split(T, p.t1, p.s1, p.v1)
         except NonFinite as exc:
-            self.ans.unreached(i, f"a is not finite at t = {_fmt(exc.x)}, between t1 and t")
+            self.ans.unreached(i, f"{_what(exc)}, between t1 and t")
             return
         self.ans.reached(i, T, s, v, err=max(es, ev))
 
@@ -112,7 +228,20 @@ class _Case2:
         for ca, cb in zip(edges[:-1], edges[1:]):
             if not vq and not sq:
                 break
-            (tc, sc, vc, lo_v, hi_v, lo_s, hi_s, stop) = self._chunk(ca, cb, sc, vc, vq, sq)
+            try:
+                (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s, stop) = self._chunk(ca, cb, sc, vc, vq, sq)
+            except NonFinite as exc:
+                # a pole inside the chunk that the sampling missed (only the quadrature's nodes or
+                # the bisection met it): scan up to just before it, then stop
+                x = exc.x if ca < exc.x <= cb else cb
+                cut = ca + (x - ca) * (1 - 1e-9)
+                stop = _what(exc)
+                try:
+                    (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s, _) = self._chunk(ca, cut, sc, vc, vq, sq) \
+                        if cut > ca else (ca, sc, vc, vc, vc, sc, sc, None)
+                except NonFinite:
+                    (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s) = (ca, sc, vc, vc, vc, sc, sc)
+            tc, sc, vc = tc2, sc2, vc2
             vmin, vmax = min(vmin, lo_v), max(vmax, hi_v)
             smin, smax = min(smin, lo_s), max(smax, hi_s)
             if stop:
@@ -152,22 +281,16 @@ class _Case2:
             x, ax = x[:k], ax[:k]
             cb = float(x[-1])
         # extrema of v: sign changes of a
-        roots = []
         sb = np.signbit(ax)
-        for k in np.nonzero(sb[:-1] != sb[1:])[0]:
-            if ax[k] == 0:
-                roots.append(float(x[k]))
-            elif ax[k + 1] == 0:
-                continue
-            else:
-                roots.append(brentq(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
-        Bv = np.unique(np.array([ca] + [r for r in roots if ca < r < cb] + [cb]))
-        try:
-            vals, errs, conv = integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv), self.qr, self.qa)
-        except NonFinite as exc:
-            return ca, sc, vc, vc, vc, sc, sc, f"a is not finite at t = {_fmt(exc.x)}"
+        ks = np.nonzero(sb[:-1] != sb[1:])[0]
+        ks = ks[ax[ks + 1] != 0]              # a zero sample is itself the root (ax[k] == 0: root x[k])
+        rts = roots(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
+        rts = rts[(rts > ca) & (rts < cb)]
+        Bv = np.unique(np.concatenate([[ca], rts, [cb]]))
+        vals, errs, conv = self.integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv))
         self._check(conv)
         vB = vc + np.concatenate([[0.0], np.cumsum(vals)])
+        evB = self.ev_c + np.concatenate([[0.0], np.cumsum(errs)])
         # v queries (interior breakpoints are extrema of v)
         for i, V in list(vq.items()):
             for k in range(len(Bv) - 1):
@@ -178,19 +301,29 @@ class _Case2:
                 if ext and abs(V - vB[k + 1]) <= tol:
                     t, graze = float(Bv[k + 1]), True     # target = extremum (grazing)
                 elif lo <= V <= hi:
-                    t, graze = brentq(lambda t: vb + self.dv(tb, t - tb) - V, tb, float(Bv[k + 1]),
-                                      vb - V, float(vB[k + 1]) - V), False
+                    t, graze = self.vroot(tb, vb, float(Bv[k + 1]), float(vB[k + 1]), V), False
                 else:
                     continue
                 if not ans.beyond_t_max(i, t):
                     s, v, es, ev = self.state(t, ca, sc, vc)
+                    es += self.es_c + self.ev_c * abs(t - ca)
+                    ev += self.ev_c
                     at = abs(self.a1(t))
                     ans.reached(i, t, s, v, err=max(es, ev, ev / at if (at > 0 and not graze) else 0.0))
                 del vq[i]
                 break
+        if not sq:
+            # no position queries left: s only at the chunk end (for the next chunk and the range)
+            h = float(cb - ca)
+            s_end, _, es_end, _ = self.state(cb, ca, sc, vc) if h else (sc, vc, 0.0, 0.0)
+            self.es_c += es_end + self.ev_c * abs(h)
+            self.ev_c = float(evB[-1])
+            return (cb, float(s_end), float(vB[-1]), float(vB.min()), float(vB.max()),
+                    float(min(sc, s_end)), float(max(sc, s_end)), stop)
         # extrema of s: zeros of v inside the monotone pieces of v
         Bs, vs = [ca], [vc]
         last = len(Bv) - 1
+        pend = []                       # pieces with a sign change of v: one vectorised root search
         for k in range(last):
             va, vb_ = vB[k], vB[k + 1]
             if va != 0 and vb_ != 0 and (va > 0) != (vb_ > 0):
@@ -199,29 +332,36 @@ class _Case2:
                 # itself (a root search there converges only slowly on the noise)
                 tolz = self.rtol * max(abs(va), abs(vb_)) + self.atol
                 if 0 < k + 1 < last and abs(vb_) <= tolz:
-                    if Bs[-1] < float(Bv[k + 1]) < cb:
-                        Bs.append(float(Bv[k + 1]))
-                        vs.append(0.0)
+                    Bs.append(float(Bv[k + 1]))
                     continue
                 if 0 < k and abs(va) <= tolz:
                     continue
-                tb = float(Bv[k])
-                r = brentq(lambda t: va + self.dv(tb, t - tb), tb, float(Bv[k + 1]), float(va), float(vb_))
-                if Bs[-1] < r < cb:
-                    Bs.append(r)
-                    vs.append(0.0)
+                pend.append(k)
             elif vb_ == 0 and 0 < k + 1 < len(Bv) - 1:
                 Bs.append(float(Bv[k + 1]))
-                vs.append(0.0)
+        if pend:
+            pk = np.array(pend)
+            t0, v0 = Bv[pk], vB[pk]
+
+            def fv(t, j):
+                vals, errs, conv = self.integrate(lambda x, i: self.A(x), t0[j], t - t0[j])
+                self._check(conv)
+                return v0[j] + vals
+
+            Bs.extend(float(r) for r in roots(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
+        Bs = sorted(set(b for b in Bs[1:] if ca < b < cb))
+        Bs = [ca] + Bs
+        vs = [vc] + [0.0] * (len(Bs) - 1)
         Bs.append(cb)
         vs.append(float(vB[-1]))
         Bs = np.array(Bs)
         vs = np.array(vs)
         h = np.diff(Bs)
         ends = Bs[1:]
-        vals2, errs2, conv2 = integrate(lambda t, j: (ends[j] - t) * self.A(t), Bs[:-1], h, self.qr, self.qa)
+        vals2, errs2, conv2 = self.integrate(lambda t, j: (ends[j] - t) * self.A(t), Bs[:-1], h)
         self._check(conv2)
         sB = sc + np.concatenate([[0.0], np.cumsum(vs[:-1] * h + vals2)])
+        esB = self.es_c + self.ev_c * (Bs - ca) + np.concatenate([[0.0], np.cumsum(errs2 + float(evB.max()) * h)])
         # s queries (interior breakpoints are turning points)
         for i, S in list(sq.items()):
             for k in range(len(Bs) - 1):
@@ -232,17 +372,26 @@ class _Case2:
                 if ext and abs(S - sB[k + 1]) <= tol:
                     t, graze = float(Bs[k + 1]), True      # target = turning point
                 elif lo <= S <= hi:
-                    t, graze = brentq(lambda t: sb_ + self.ds(tb, vb, t - tb) - S, tb, float(Bs[k + 1]),
-                                      sb_ - S, float(sB[k + 1]) - S), False
+                    t, graze = self.root("s", S, tb, sb_, vb, float(Bs[k + 1]), float(sB[k + 1]), float(vs[k + 1])), False
                 else:
                     continue
                 if not ans.beyond_t_max(i, t):
-                    s, v, es, ev = self.state(t, ca, sc, vc)
+                    s, v, es, ev = self.state(t, tb, sb_, vb)
+                    es += float(esB[k]) + float(evB.max()) * abs(t - tb)
+                    ev += float(evB.max())
                     ans.reached(i, t, s, v, err=max(es, ev, es / abs(v) if (v != 0 and not graze) else 0.0))
                 del sq[i]
                 break
+        self.es_c = float(esB[-1])
+        self.ev_c = float(evB[-1])
         return (cb, float(sB[-1]), float(vB[-1]), float(vB.min()), float(vB.max()),
                 float(sB.min()), float(sB.max()), stop)
+
+
+def _what(exc: NonFinite) -> str:
+    if isinstance(exc, NotIntegrable):
+        return f"a is not integrable near t = {_fmt(exc.x)} (a pole: the velocity diverges there)"
+    return f"a is not finite at t = {_fmt(exc.x)}"
 
 
 def solve(p, ans, rtol: float, atol: float) -> str:

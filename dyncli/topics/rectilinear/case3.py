@@ -104,7 +104,17 @@ class Branch:
     def v_of(self, u):
         if self.kind == "inf":
             return self.v1 + self.e * self.c * np.expm1(u)
-        return self.v_end - self.D0 * np.exp(-u)
+        # v* - D0 e^-u near v* (u large); v1 - D0 expm1(-u) near v1, where the first form
+        # cancels catastrophically when |v*| >> |v - v1| (v* = -3e76 for k = 1e-152)
+        u = np.asarray(u, dtype=float)
+        em = np.exp(-u)
+        out = np.asarray(self.v_end - self.D0 * em, dtype=float)
+        near = em >= 0.5
+        if near.any():
+            if out.ndim == 0:
+                return np.float64(self.v1 - self.D0 * np.expm1(-u))
+            out[near] = self.v1 - self.D0 * np.expm1(-u[near])
+        return out
 
     def dvdu(self, u):
         if self.kind == "inf":
@@ -114,6 +124,9 @@ class Branch:
     def u_of(self, v: float) -> float:
         if self.kind == "inf":
             return math.log1p(self.e * (v - self.v1) / self.c)
+        r = (v - self.v1) / self.D0
+        if abs(r) < 0.5:
+            return -math.log1p(-r)          # near v1 (no cancellation in v* - v)
         return math.log(self.D0 / (self.v_end - v))
 
     def _f(self, x, j):
@@ -141,7 +154,8 @@ class Branch:
     def _build_grid(self) -> None:
         c3 = self.c3
         if self.kind == "inf":
-            umax = math.log1p((_BIG - abs(self.v1)) / self.c)
+            room = _BIG - abs(self.v1)      # |v1| beyond the blow-up threshold already: no room
+            umax = math.log1p(room / self.c) if room > 0 else 0.0
         else:
             self.D0 = self.v_end - self.v1
             dmin = max(8 * _EPS * abs(self.v_end), 1e-290)
@@ -361,9 +375,10 @@ class _Case3:
                 continue
             ulo, uhi = float(b.u[k]), float(b.u[k + 1])
             s0 = float(ds[k])
-            if abs(target - s0) <= tol and k > 0:
+            # an end matches within the tolerance of its own value (a cell may span 1e70 in s)
+            if abs(target - s0) <= tol_of(s0) and k > 0:
                 u = ulo
-            elif abs(target - ds[k + 1]) <= tol and not (lo <= target <= hi):
+            elif abs(target - ds[k + 1]) <= tol_of(float(ds[k + 1])) and not (lo <= target <= hi):
                 u = uhi
             else:
                 u = brentq(lambda u: s0 + float(b.integ(ulo, u)[1][0]) - target if u != ulo else s0 - target,

@@ -260,7 +260,7 @@ def _case1_position(s1: float, v1: float, a: float, S: float, i: int, ans: Answe
         return None
     r = math.sqrt(disc)
     qq = -0.5 * (v1 + math.copysign(r, v1))  # a/2 tau^2 + v1 tau - d = 0, stable roots
-    roots = [qq / (0.5 * a)]
+    roots = [2.0 * qq / a]              # not qq / (0.5 a): a/2 underflows to 0 for a = 5e-324
     if qq != 0:
         roots.append(-d / qq)
     pos = [x for x in roots if x > 0 and math.isfinite(x)]
