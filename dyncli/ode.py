@@ -21,7 +21,93 @@ from dyncli.errors import NumericalError
 
 ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
-PROBE_STEPS = 2_000      # after this many steps, project the run's total and refuse early
+PROBE_STEPS = 2_000      # every this many steps, project the run's total and refuse early
+
+
+# ---------------------------------------------------------------------------
+# the work budget, shared by every route that integrates
+
+def refusal(t_goal: float, need: float, limit: int) -> str:
+    """The one message of a run refused by its step budget."""
+    return (f"the run to t = {t_goal:.6g} s needs about {need:.3g} integrator steps, more than the budget of "
+            f"{limit}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
+
+
+class OverBudget(NumericalError):
+    """A run refused by its :class:`Budget`; ``t``, ``y``, ``h``: the state and
+    step size where it was refused (for hints such as stiffness)."""
+
+    def __init__(self, t_goal: float, need: float, limit: int, t: float, y=None, h: float = 0.0):
+        super().__init__(refusal(t_goal, need, limit))
+        self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
+        self.y = None if y is None else np.array(y, dtype=float)
+
+
+class Budget:
+    """Accepted integrator steps of one solve (over all its integrations)
+    against ``limit`` (``accuracy.max_steps``; None: ``default``, else
+    MAX_STEPS).
+
+    An integration announces where it heads with :meth:`leg` (t0 towards
+    t_goal, either direction; chunks of one leg share it).  Every ``probe``
+    steps the total is projected from the steps per unit time of the last
+    ``probe`` steps, and the run is refused (:class:`OverBudget`) as soon as
+    the projection — or the count itself — exceeds the limit."""
+
+    def __init__(self, limit: int | None = None, *, default: int | None = None, probe: int = PROBE_STEPS):
+        self.limit = int(limit or default or MAX_STEPS)
+        self.probe = int(probe)
+        self.n = 0
+        self.hmax = 0.0
+        self.leg(0.0, 0.0)
+
+    def leg(self, t0: float, t_goal: float) -> None:
+        self.t0, self.goal = float(t0), float(t_goal)
+        self._n_leg = self._n_win = 0
+        self._t_win = self.t0
+
+    def tick(self, t: float, t_old: float | None = None, y=None) -> None:
+        self.n += 1
+        self._n_leg += 1
+        self._n_win += 1
+        h = abs(t - t_old) if t_old is not None else 0.0
+        self.hmax = max(self.hmax, h)
+        left = abs(self.goal - t)
+        need = None
+        if self.n > self.limit:
+            need = self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300)
+        elif self._n_win >= self.probe:
+            if left > 0:
+                need = self.n + left * self._n_win / max(abs(t - self._t_win), 1e-300)
+                if need <= self.limit:
+                    need = None
+            self._n_win, self._t_win = 0, t
+        if need is not None:
+            raise OverBudget(self.goal, need, self.limit, t, y, h)
+
+
+def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False):
+    """scipy's solver class for ``method`` (for ``solve_ivp(method=...)``)
+    with every accepted step counted by ``budget``.  ``stop_nonfinite``: a
+    step that leaves the state inf/NaN ends the integration as failed (status
+    -1, with the reason) instead of being counted."""
+    from scipy import integrate as si
+
+    base = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
+
+    class Budgeted(base):
+        def step(self):
+            msg = super().step()
+            if self.status == "failed":
+                return msg
+            if stop_nonfinite and not np.all(np.isfinite(self.y)):
+                self.status = "failed"
+                return "the state overflows (is not finite) after this time"
+            budget.tick(float(self.t), None if self.t_old is None else float(self.t_old), self.y)
+            return msg
+
+    Budgeted.__name__ = base.__name__
+    return Budgeted
 
 
 def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0, project=None,
@@ -35,11 +121,11 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     called once as ``on_step(t0, t0, None)`` at the start of each run.
     Returns (Y, nsteps).
 
-    The run is refused with a NumericalError as soon as it is clear that it
-    needs more than ``max_steps`` steps (default MAX_STEPS): after
-    PROBE_STEPS steps the total is extrapolated from the time covered.
+    The run is refused (:class:`OverBudget`, a NumericalError) as soon as it
+    is clear that it needs more than ``max_steps`` steps (default MAX_STEPS):
+    see :class:`Budget`.
     """
-    budget = int(max_steps or MAX_STEPS)
+    budget = Budget(max_steps)
     from scipy import integrate as si
 
     cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
@@ -57,6 +143,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
             continue
         order = sel[np.argsort((times[sel] - t0) * direction)]
         t_end = float(times[order[-1]])
+        budget.leg(t0, t_end)
         kw = {"rtol": rtol, "atol": atol}
         if first_step is not None:
             kw["first_step"] = min(first_step, abs(t_end - t0))
@@ -67,14 +154,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
             if solver.status == "failed":
                 raise NumericalError(f"the {method} integrator failed at t = {solver.t:.6g}: {msg}")
             nsteps += 1
-            covered = abs(solver.t - t0)
-            span = abs(t_end - t0)
-            if nsteps > budget or (nsteps == PROBE_STEPS and covered < span and
-                                   nsteps * span / max(covered, 1e-300) > budget):
-                need = nsteps * span / max(covered, 1e-300)
-                raise NumericalError(
-                    f"the run to t = {t_end:.6g} needs about {need:.3g} integrator steps, more than the budget of "
-                    f"{budget}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
+            budget.tick(solver.t, solver.t_old)
             t_old, t_new = solver.t_old, solver.t
             if project is not None:
                 yp = project(solver.y)

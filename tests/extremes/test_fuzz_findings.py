@@ -137,12 +137,18 @@ CASES.update({
 
 
 #: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
-OPEN: set[str] = {"rectilinear-case3-tiny-v1-backward"}
+OPEN: set[str] = set()
+
+#: cases open only because they take more than the 2 s of CPU (right answers): their
+#: time is near the limit (2.6-3.3 s measured, less on a quiet machine), so the xfail
+#: is not strict — an occasional pass must not fail the suite
+SLOW: set[str] = {"rectilinear-case3-tiny-v1-backward"}
 
 
 def _params():
     mark = pytest.mark.xfail(strict=True, reason="exit 3 or a hang inside the solver; see the test id and CASES")
-    return [pytest.param(c, marks=[mark] if c in OPEN else [], id=c) for c in CASES]
+    slow = pytest.mark.xfail(strict=False, reason="right answer, but near or over 2 s of CPU; see CASES")
+    return [pytest.param(c, marks=[mark] if c in OPEN else [slow] if c in SLOW else [], id=c) for c in CASES]
 
 
 @pytest.mark.parametrize("case", _params())

@@ -245,7 +245,7 @@ def test_general_budget_refuses_far_queries():
     rec = _general_error("type: rectilinear\na: -4*s - 0.4*v + sin(t)\ns1: 0.25\nv1: 1\n"
                          "find: [{t: 3}, {t: -1.0e+8}]\n")
     assert rec["exit_code"] == 1
-    assert "t = -1e+08 needs about" in rec["error"] and "budget of 50000" in rec["error"]
+    assert "t = -1e+08 s needs about" in rec["error"] and "budget of 50000" in rec["error"]
     assert "accuracy.max_steps" in rec["error"]
 
 

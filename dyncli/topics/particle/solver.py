@@ -31,6 +31,7 @@ import math
 
 import numpy as np
 
+from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result, Series, SolveOptions
 
@@ -283,18 +284,10 @@ def _ode_method(p) -> str:
 
 
 # ---------------------------------------------------------------------------
-# the work budget (the semantics of dyncli/ode.py, for solve_ivp with events)
+# the work budget: dyncli.ode.Budget over all phases, with a hint on what limits the steps
 
 MAX_STEPS = 5_000      # default accuracy.max_steps for particle (~1 s of solve_ivp stepping)
-PROBE_STEPS = 500      # every this many steps, project the run's total and refuse early
-
-
-class _OverBudget(Exception):
-    """Raised inside solve_ivp by a budgeted solver; turned into NumericalError."""
-
-    def __init__(self, need: float, t: float, y, h: float):
-        super().__init__(need)
-        self.need, self.t, self.y, self.h = need, t, np.array(y, float), h
+PROBE_STEPS = 500      # every this many steps, project the run's total and refuse early (dyncli.ode.Budget)
 
 
 class _NonFinite(Exception):
@@ -303,47 +296,6 @@ class _NonFinite(Exception):
     def __init__(self, t: float, x):
         super().__init__(t)
         self.t, self.x = t, np.array(x, float)
-
-
-class _Budget:
-    """Counts accepted steps over all phases of one run (0 .. t_end).  After
-    every PROBE_STEPS steps it projects the total from the rate of the last
-    probe window and refuses as soon as the total exceeds the budget."""
-
-    def __init__(self, budget: int, t_end: float):
-        self.budget, self.t_end = int(budget), float(t_end)
-        self.n = 0
-        self.t_probe = 0.0
-        self.hmax = 0.0
-
-    def tick(self, solver) -> None:
-        self.n += 1
-        t = float(solver.t)
-        h = abs(t - float(solver.t_old)) if solver.t_old is not None else 0.0
-        self.hmax = max(self.hmax, h)
-        need = None
-        if self.n > self.budget:
-            need = self.n * self.t_end / max(t, 1e-300) if t < self.t_end else float(self.n)
-        elif self.n % PROBE_STEPS == 0 and t < self.t_end:
-            rate = PROBE_STEPS / max(t - self.t_probe, 1e-300)     # steps per second of motion, recently
-            need = self.n + (self.t_end - t) * rate
-            self.t_probe = t
-            if need <= self.budget:
-                need = None
-        if need is not None:
-            raise _OverBudget(need, t, solver.y, h)
-
-
-def _budgeted(cls, budget: _Budget):
-    class Budgeted(cls):
-        def step(self):
-            msg = super().step()
-            if self.status != "failed":
-                budget.tick(self)
-            return msg
-
-    Budgeted.__name__ = cls.__name__
-    return Budgeted
 
 
 def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
@@ -368,15 +320,13 @@ def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
     return float(abs(big)), bool(big.real < 0 and abs(big.imag) <= abs(big.real))
 
 
-def _budget_message(t_end: float, need: float, budget: int, method: str, rhs=None,
-                    over: _OverBudget | None = None) -> tuple[str, bool]:
-    """ode.py's refusal message, with a hint on what limits the steps; and
+def _budget_message(over: ode.OverBudget, method: str, rhs=None) -> tuple[str, bool]:
+    """The budget's refusal message with a hint on what limits the steps; and
     whether the run is stiff for an explicit method (an implicit one would
     take long steps)."""
-    msg = (f"the run to t = {t_end:.6g} needs about {need:.3g} integrator steps, more than the budget of "
-           f"{budget}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
+    msg = str(over)
     stiff = False
-    if rhs is not None and over is not None and method in ("DOP853", "RK45"):
+    if rhs is not None and over.y is not None and method in ("DOP853", "RK45"):
         rho, decaying = _stiffness(rhs, over.t, over.y)
         if decaying and over.h * rho > 1.0:
             stiff = True
@@ -404,7 +354,6 @@ def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
     from scipy import integrate as si
 
     rtol = max(rtol, 100 * EPS * 1.0001)
-    budget_n = int(max_steps or MAX_STEPS)
     m = F.m
     t_end = float(p.t_end)
     t = 0.0
@@ -413,9 +362,9 @@ def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
     notes: list = []
     nfev = 0
     vscale = float(np.linalg.norm(y[3:6]))
-    budget = _Budget(budget_n, t_end)
-    solver_cls = _budgeted({"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau,
-                            "LSODA": si.LSODA}[method], budget)
+    budget = ode.Budget(max_steps, default=MAX_STEPS, probe=PROBE_STEPS)
+    budget.leg(0.0, t_end)
+    solver_cls = ode.budgeted(method, budget)
 
     make_rhs = F.make_rhs
 
@@ -500,8 +449,8 @@ def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
     except _NonFinite as exc:
         raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                              f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
-    except _OverBudget as exc:
-        msg, stiff = _budget_message(t_end, exc.need, budget_n, method, rhs, exc)
+    except ode.OverBudget as exc:
+        msg, stiff = _budget_message(exc, method, rhs)
         err = NumericalError(msg)
         err.stiff = stiff                # method auto switches to LSODA
         raise err from None

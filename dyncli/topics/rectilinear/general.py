@@ -13,11 +13,10 @@ bracketed root search on the dense output.  A target equal to an extremum
 detected at the extremum event and reported there.  The integration proceeds in
 growing chunks and stops as soon as every v/s query is answered.
 
-Work budget (as :mod:`dyncli.ode`): every accepted step is counted; a solve
-that needs more than ``accuracy.max_steps`` steps (default
-``dyncli.ode.MAX_STEPS``) is refused with a NumericalError, early — after
-``PROBE_STEPS`` steps of one integration the steps it needs are extrapolated
-from the time covered.  A state that overflows (inf/NaN) ends the integration
+Work budget: :class:`dyncli.ode.Budget` counts every accepted step of the
+solve; one that needs more than ``accuracy.max_steps`` steps (default
+``dyncli.ode.MAX_STEPS``) is refused with a NumericalError as soon as the
+projection towards the furthest time asked for shows it.  A state that overflows (inf/NaN) ends the integration
 there: the queries beyond it are answered ``reached: false`` with a warning
 naming the time where it blew up.
 """
@@ -29,7 +28,6 @@ import math
 import numpy as np
 
 from dyncli import ode
-from dyncli.errors import NumericalError
 from dyncli.topics.rectilinear._quad import brentq
 
 
@@ -47,10 +45,8 @@ class _Run:
         from dyncli.topics.rectilinear.solver import scalar_fn
 
         self.fn = scalar_fn(p.a)
-        self.budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
-        self.steps = 0          # accepted steps of all integrations of this solve
-        self.origin = self.goal = p.t1   # the time the current direction runs to (for the messages)
-        self._classes: dict = {}
+        self.budget = ode.Budget(p.accuracy.max_steps)   # all integrations of this solve
+        self._solver = None
 
     def acc(self, t, s, v) -> float:
         return float(self.fn({"t": t, "s": s, "v": v}))
@@ -74,47 +70,15 @@ class _Run:
         if self.method in ("Radau", "LSODA"):
             kw["jac"] = None
         with np.errstate(all="ignore"):
-            sol = solve_ivp(self.rhs, (t0, t_end), list(y0), method=self._counted(), rtol=self.rtol,
+            sol = solve_ivp(self.rhs, (t0, t_end), list(y0), method=self._budgeted(), rtol=self.rtol,
                             atol=self.atol, dense_output=True, events=evs, **kw)
         return sol
 
-    def _counted(self):
-        """The scipy solver class of ``self.method`` with a step budget and an overflow stop."""
-        if self.method in self._classes:
-            return self._classes[self.method]
-        import scipy.integrate as si
-
-        base = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[self.method]
-        run = self
-
-        class Counted(base):
-            def __init__(self, fun, t0, y0, t_bound, **kw):
-                super().__init__(fun, t0, y0, t_bound, **kw)
-                self.t_start, self.steps_before = t0, run.steps
-
-            def step(self):
-                msg = super().step()
-                if self.status == "failed":
-                    return msg
-                if not np.all(np.isfinite(self.y)):
-                    # stop cleanly: solve_ivp ends on "failed" without recording this step
-                    self.status = "failed"
-                    return "the state overflows (is not finite) after this time"
-                run.steps += 1
-                here = run.steps - self.steps_before
-                covered, span = abs(self.t - self.t_start), abs(self.t_bound - self.t_start)
-                chunk = self.steps_before + here * span / max(covered, 1e-300)
-                if run.steps > run.budget or (here == ode.PROBE_STEPS and covered < span and chunk > run.budget):
-                    far = abs(run.goal - run.origin) / max(abs(self.t - run.origin), 1e-300)
-                    need = max(chunk, run.steps * far)
-                    raise NumericalError(
-                        f"the run to t = {run.goal:.6g} needs about {need:.3g} integrator steps, more than the "
-                        f"budget of {run.budget}: shorten the time span, loosen accuracy.rtol, or raise "
-                        "accuracy.max_steps")
-                return msg
-
-        self._classes[self.method] = Counted
-        return Counted
+    def _budgeted(self):
+        """The scipy solver class of ``self.method``, counted by the budget, stopping on overflow."""
+        if self._solver is None:
+            self._solver = ode.budgeted(self.method, self.budget, stop_nonfinite=True)
+        return self._solver
 
 
 def solve(p, ans, method: str, rtol: float, atol: float) -> str:
@@ -137,7 +101,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
     back = [(i, T) for i, T in tq if T < t1]
     if back:
         tmin = min(T for _, T in back)
-        r.goal = tmin
+        r.budget.leg(t1, tmin)
         sol = r.integrate(t1, [s1, v1], tmin, events=False)
         reach = float(sol.t[-1])
         for i, T in back:
@@ -156,7 +120,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
     edges = list(t1 + H * 2.0 ** -np.arange(12, -1, -1))
     if t_need > horizon:
         edges.append(t_need)
-    r.goal = max(t_need, horizon) if (vq or sq) else t_need
+    r.budget.leg(t1, max(t_need, horizon) if (vq or sq) else t_need)
     t0, y0 = t1, [s1, v1]
     vmin = vmax = v1
     smin = smax = s1

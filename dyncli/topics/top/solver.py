@@ -334,12 +334,12 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     """Integrate from y0 (quaternion + body ω at t = 0, where the spin-free frame p
     coincides with the body) to the sorted ``times``.
 
-    Step budget as :func:`dyncli.ode.integrate`: refused (NumericalError) when
-    the run needs more than ``max_steps`` steps (default ``ode.MAX_STEPS``),
-    after ``ode.PROBE_STEPS`` steps by extrapolation from the time covered."""
+    Step budget :class:`dyncli.ode.Budget`: refused (NumericalError) as soon
+    as it is clear that the run needs more than ``max_steps`` steps (default
+    ``ode.MAX_STEPS``)."""
     import scipy.integrate as si
 
-    budget = int(max_steps or ode.MAX_STEPS)
+    budget = ode.Budget(max_steps)
 
     n = len(times)
     run = Run(n)
@@ -372,18 +372,14 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
         k += 1
     T = times[-1] if n else 0.0
     if k < n:
+        budget.leg(0.0, T)
         solver = cls(top.rhs_spinfree, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
         while k < n:
             msg = solver.step()
             if solver.status == "failed":
                 raise NumericalError(f"the integrator ({method}) failed at t = {solver.t:.6g} s: {msg}")
             run.steps += 1
-            if run.steps > budget or (run.steps == ode.PROBE_STEPS and solver.t < T and
-                                      run.steps * T / max(solver.t, 1e-300) > budget):
-                raise NumericalError(
-                    f"the run to t = {T:g} s needs about {run.steps * T / max(solver.t, 1e-300):.3g} integrator "
-                    f"steps, more than the budget of {budget}: shorten 'at', loosen accuracy.rtol, or raise "
-                    "accuracy.max_steps")
+            budget.tick(solver.t, solver.t_old)
             tb = solver.t
             cache = []
 
