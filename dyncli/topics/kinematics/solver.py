@@ -292,9 +292,12 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, max_intervals
             bad = x[~np.isfinite(y)][0]
             raise InputError(f"the speed is not finite at t = {bad:.6g} inside the distance interval "
                              "(the position or its derivative is undefined there)", "distance")
-        K = (y @ _WK) * h
-        G = (y @ _WG15) * h
-        err = np.abs(K - G)
+        with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
+            K = (y @ _WK) * h
+            G = (y @ _WG15) * h
+            err = np.abs(K - G)
+        if not (np.all(np.isfinite(K)) and np.all(np.isfinite(err))):
+            raise InputError("the distance overflows a double (speed × time span beyond ~1.8e308 m)", "distance")
         total = done_val + float(K.sum())
         total_err = done_err + float(err.sum())
         tol = max(atol, rtol * abs(total))

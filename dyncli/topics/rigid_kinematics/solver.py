@@ -155,8 +155,12 @@ def solve_angular_velocity(p, options: SolveOptions | None = None) -> Result:
         # ω on the basis (x_A/B, x_C/B, N): ω·N = v_A/B·x_C/B (13.14) and the
         # in-plane part from the N-components of v_A/B, v_C/B (13.15-13.16)
         D = dot(vA, xC)
-        n2 = nN * nN
-        omega = add(add(mul(dot(vC, N) / n2, xA), mul(-dot(vA, N) / n2, xC)), mul(D / n2, N))
+        Nh = mul(1.0 / nN, N)              # unit normal: nN² may underflow (points 1e-300 apart)
+        omega = add(add(mul(dot(vC, Nh) / nN, xA), mul(-dot(vA, Nh) / nN, xC)), mul(D / nN, Nh))
+        if not all(math.isfinite(c) for c in omega):
+            raise InputError(f"ω overflows a double: points {', '.join(names)} are too close to each other or "
+                             "to collinear for these velocities (13.13-13.17 divide by |x_A/B × x_C/B|)",
+                             f"points.{names[2]}.x")
         in_plane = abs(D) <= 1e-9 * norm(vA) * norm(xC) or norm(vA) == 0.0
         res.equations = (["13.17", "13.15", "13.16"] if in_plane else ["13.13", "13.14"]) + ["13.7"]
         _out(res, "omega", omega)
