@@ -133,6 +133,16 @@ CASES.update({
         "(the t-query root search on the 'inf' branch: every quadrature runs to its round limit)",
         "type: rectilinear\nparams: {c: 0.5}\na: -c*v\nv1: 1.0e-299\n"
         "find: [{t: -2.0}, {t: -0.999999999999}, {v: 1.0e+150}, {s: 19}, {s: 25}, {v: 0}]\n"),
+    "angular-velocity-points-1e-300-apart": (
+        "protects (13.13-13.17): |x_A/B × x_C/B|² underflowed to 0 for a point 1e-300 from B "
+        "(ZeroDivisionError, exit 3); now the unit normal, and an overflowing ω is exit 2",
+        "{type: angular-velocity, points: {B: {x: [0, 0, 0], v: [0.0, 0, 0]}, A: {x: [1, 0, 0], v: [0, 0, -1]}, "
+        "C: {x: [0, 1.0e-300, 0], v: [0, 100000000.0, 2]}}}\n"),
+    "kinematics-distance-overflow": (
+        "protects the arc length (8.x) quadrature: speed 6e16 over a span of 2e300 overflowed to a NaN error sum "
+        "(ValueError, exit 3); now exit 2 on 'distance'",
+        "{type: kinematics, coordinates: cylindrical, params: {a: 2.0e+16, c: 0.5, w: 3}, "
+        "position: {r: a, theta: w*t, x3: c*w*t}, at: [1.0e-16, 1], distance: [0, 2.0e+300], m: 2}\n"),
 })
 
 
