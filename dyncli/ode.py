@@ -86,18 +86,52 @@ class Budget:
             raise OverBudget(self.goal, need, self.limit, t, y, h)
 
 
+class NonFiniteRate(NumericalError):
+    """The right-hand side returned inf or NaN (an overflow in the equations)."""
+
+    def __init__(self, t: float, y):
+        y = np.asarray(y, dtype=float)
+        super().__init__(f"the equations of motion give a non-finite rate (inf or NaN: an overflow) at "
+                         f"t = {t:.6g} s, state [{', '.join(f'{c:.6g}' for c in y.ravel()[:8])}]")
+        self.t, self.y = t, y
+
+
+def finite(fun):
+    """``fun`` that raises :class:`NonFiniteRate` instead of returning inf/NaN.
+    (scipy's explicit Runge-Kutta step never ends on a NaN rate: its step-size
+    control computes a NaN step and loops.)"""
+
+    def checked(t, y):
+        out = fun(t, y)
+        if not math.isfinite(sum(out)) and not np.all(np.isfinite(out)):
+            raise NonFiniteRate(t, y)
+        return out
+
+    return checked
+
+
 def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False):
     """scipy's solver class for ``method`` (for ``solve_ivp(method=...)``)
-    with every accepted step counted by ``budget``.  ``stop_nonfinite``: a
-    step that leaves the state inf/NaN ends the integration as failed (status
-    -1, with the reason) instead of being counted."""
+    with every accepted step counted by ``budget`` and a rate that is not
+    finite raised as :class:`NonFiniteRate`.  ``stop_nonfinite``: instead, a
+    non-finite rate or state ends the integration as failed (status -1, with
+    the reason) at the last good step."""
     from scipy import integrate as si
 
     base = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
 
     class Budgeted(base):
+        def __init__(self, fun, *args, **kw):
+            super().__init__(finite(fun), *args, **kw)
+
         def step(self):
-            msg = super().step()
+            try:
+                msg = super().step()
+            except NonFiniteRate:
+                if not stop_nonfinite:
+                    raise
+                self.status = "failed"
+                return "the state overflows (the rate is not finite) after this time"
             if self.status == "failed":
                 return msg
             if stop_nonfinite and not np.all(np.isfinite(self.y)):
@@ -147,7 +181,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
         kw = {"rtol": rtol, "atol": atol}
         if first_step is not None:
             kw["first_step"] = min(first_step, abs(t_end - t0))
-        solver = cls(fun, t0, y0.copy(), t_end, **kw)
+        solver = cls(finite(fun), t0, y0.copy(), t_end, **kw)
         k = 0
         while k < len(order):
             msg = solver.step()

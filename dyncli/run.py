@@ -4,6 +4,7 @@ validate, solve, and map failures to the contract's exit codes."""
 from __future__ import annotations
 
 import traceback
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -29,7 +30,12 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
         return Outcome(lp, None, 2, str(lp.error))
     try:
         fn = registry.solver(lp.type)
-        result = fn(lp.model, options)
+        with warnings.catch_warnings():
+            # floating-point RuntimeWarnings (overflow, invalid value) are not
+            # messages for the user: the solvers detect non-finite values and
+            # report them as results' warnings or exit codes
+            warnings.simplefilter("ignore", RuntimeWarning)
+            result = fn(lp.model, options)
     except InputError as exc:
         return Outcome(lp, None, 2, str(lp.diagnostic(exc.path, exc.message)))
     except NumericalError as exc:

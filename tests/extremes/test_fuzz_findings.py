@@ -143,6 +143,12 @@ CASES.update({
         "(ValueError, exit 3); now exit 2 on 'distance'",
         "{type: kinematics, coordinates: cylindrical, params: {a: 2.0e+16, c: 0.5, w: 3}, "
         "position: {r: a, theta: w*t, x3: c*w*t}, at: [1.0e-16, 1], distance: [0, 2.0e+300], m: 2}\n"),
+    "gyroscope-nan-rate-hang": (
+        "protects every step loop over scipy's Runge-Kutta classes: (I1 - I2) q² overflows, the rate is NaN at "
+        "t = 0, and scipy's step-size control loops forever on a NaN error norm; now dyncli.ode.finite raises "
+        "(exit 1)",
+        "{type: gyroscope, I1: 1.0e+298, I2: 6.0e+297, p: 1.0e+152, q: 1.0e+150, theta0: 0, "
+        "theta_dot0: 0.999999999999, at: [0, 0.05, 0.1, 0.2]}\n"),
 })
 
 

@@ -373,7 +373,7 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     T = times[-1] if n else 0.0
     if k < n:
         budget.leg(0.0, T)
-        solver = cls(top.rhs_spinfree, 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
+        solver = cls(ode.finite(top.rhs_spinfree), 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
         while k < n:
             msg = solver.step()
             if solver.status == "failed":
