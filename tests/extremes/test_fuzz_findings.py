@@ -149,6 +149,10 @@ CASES.update({
         "(exit 1)",
         "{type: gyroscope, I1: 1.0e+298, I2: 6.0e+297, p: 1.0e+152, q: 1.0e+150, theta0: 0, "
         "theta_dot0: 0.999999999999, at: [0, 0.05, 0.1, 0.2]}\n"),
+    "angular-velocity-two-points-1e-300-apart": (
+        "protects (13.20): |x_A/B|² underflowed to 0 for two points 1e-300 apart (ZeroDivisionError, exit 3)",
+        "{type: angular-velocity, points: {B: {x: [0, 0, 0], v: [0, 0, 1.0e-150]}, "
+        "A: {x: [1.0e-300, 0, 0], v: [0, 0, 1]}}}\n"),
 })
 
 

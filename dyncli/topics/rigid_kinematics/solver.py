@@ -138,8 +138,12 @@ def solve_angular_velocity(p, options: SolveOptions | None = None) -> Result:
         A = pts[names[1]]
         x = sub(A.x, B.x)
         v = sub(A.v, B.v)
-        L2 = dot(x, x)
-        _out(res, "omega_n", mul(1.0 / L2, cross(x, v)))                               # (13.20)
+        L = norm(x)                       # |x|² may underflow (points 1e-300 apart)
+        omega_n = mul(1.0 / L, cross(mul(1.0 / L, x), v))                               # (13.20)
+        if not all(math.isfinite(c) for c in omega_n):
+            raise InputError(f"ω overflows a double: points {names[0]} and {names[1]} are too close for these "
+                             "velocities (13.20 divides by |x_A/B|²)", f"points.{names[1]}.x")
+        _out(res, "omega_n", omega_n)
         res.equations = ["13.20", "13.7"]
     else:
         A, C = pts[names[1]], pts[names[2]]
