@@ -16,7 +16,12 @@ Accuracy measures:
 * at a turning point dt = ds/|v| has an inverse-square-root singularity; the
   substitution s = s_T - e u^2 makes the integrand 2u/|v| smooth;
 * at an asymptotic equilibrium s_E the log singularity is removed by
-  s = s_E - (s_E - s_M) e^(-x); towards infinity s = s_M + e c (e^x - 1);
+  s = s_E - (s_E - s_M) e^(-x); towards infinity s = s_M + e c (e^x - 1) with
+  c the smallest length of the problem, so that every scale from c to the cap
+  |s| = 1e100 gets unit cells in x (the scan is geometric down to c as well);
+  whether the body escapes in finite time (∫^∞ ds/|v| converges, a = s^3) or
+  only grows without bound (a = 25 s) is read off the decay of dt/dx there;
+  where v^2 overflows the doubles the leg is capped like |s| = 1e100;
 * each leg (s1 -> end) is split at its midpoint so both ends get their own
   substitution; t-queries invert the leg times by a bracketed root search and
   periodic motion is reduced modulo the period.
