@@ -29,6 +29,11 @@ CASES.update({
         "protects case 4 (6.14)-(6.15): a position beyond the turning point is 'reached: false', not a math domain error",
         "type: rectilinear\nparams: {k: 1.0e-06, m: 4}\na: -k/m*s\ns1: 0.1\nv1: 1.0e-16\n"
         "find: [{t: 1.0e-16}, {t: -1.4}, {t: 50}, {v: 0}, {s: 2.0e+299}, {s: -0.22360679774997896}, {v: -1}, {s: 0.3}]\n"),
+    "rectilinear-case4-exponential-growth": (
+        "protects case 4 (6.12)-(6.15): a = 25 s from s1 = 1e-151, v1 = 1e-8 took 18 s of CPU and reported a "
+        "finite-time escape at t ≈ 10.45 (the t-quadrature ran linearly over 1e-151 ... 1e100); s(50) ≈ 3.7e99",
+        "type: rectilinear\nparams: {k: -100.0, m: 4}\na: -k/m*s\ns1: 1.0000000000000001e-151\nv1: 1.0e-08\n"
+        "find: [{t: 1}, {t: -0.7}, {t: 50}, {v: 0}, {s: 0.2}, {s: -2.23606797749979e-301}, {v: -0.0}, {s: 0.3}]\n"),
     "rectilinear-case2-root-no-convergence": (
         "protects case 2 (6.6): the event root finder's non-convergence is exit 1 (NumericalError), not a RuntimeError",
         "type: rectilinear\na: 3*sin(2*t)\nt1: 0\ns1: 0.5\nv1: -1.0e-150\n"

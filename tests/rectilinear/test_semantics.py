@@ -204,6 +204,64 @@ def test_case4_long_times_stay_on_the_orbit():
     close(f[0]["s"], 0.1 * mp.cos(6283) + 0.1 * mp.sin(6283), rtol=1e-9)
 
 
+EXP_GROWTH = """\
+type: rectilinear
+params: {k: -100.0, m: 4}
+a: -k/m*s
+s1: 1.0000000000000001e-151
+v1: 1.0e-08
+find: [{t: 1}, {t: -0.7}, {t: 50}, {v: 0}, {s: 0.2}, {s: -2.23606797749979e-301}, {v: -0.0}, {s: 0.3}, {t: 51}, {t: -51}]
+"""
+
+
+def test_case4_exponential_growth_across_scales():
+    # a = 25 s from s1 = 1e-151, v1 = 1e-8 (fuzz seed 1096): s = s1 cosh 5t + (v1/5) sinh 5t crosses the scales
+    # 1e-151 ... 1e100; no finite-time escape — |s| = 1e100 only at t ≈ 50.196 (both ways)
+    rec = solve_one_text(EXP_GROWTH)
+    f = entries(rec)
+    with mp.workdps(50):
+        s1, v1 = mp.mpf(1.0000000000000001e-151), mp.mpf("1e-8")
+        S = lambda t: s1 * mp.cosh(5 * t) + v1 / 5 * mp.sinh(5 * t)
+        V = lambda t: 5 * s1 * mp.sinh(5 * t) + v1 * mp.cosh(5 * t)
+        # s = R sinh(5t + φ), R = sqrt((v1/5)^2 - s1^2), tanh φ = 5 s1 / v1
+        R, ph = mp.sqrt((v1 / 5) ** 2 - s1 ** 2), mp.atanh(5 * s1 / v1)
+        t_of = lambda x: (mp.asinh(x / R) - ph) / 5
+        for k, T in ((0, 1), (1, mp.mpf(-0.7)), (2, 50)):
+            assert f[k]["t"] == T
+            close(f[k]["s"], S(mp.mpf(T)), scale=0, rtol=1e-9)
+            close(f[k]["v"], V(mp.mpf(T)), scale=0, rtol=1e-9)
+        close(f[4]["t"], t_of(mp.mpf("0.2")))
+        close(f[7]["t"], t_of(mp.mpf("0.3")))
+        t_cap = t_of(mp.mpf(10) ** 100)
+    # v never vanishes (|v1| > 5 |s1|); s < s1 was passed before t1 only
+    assert is_unreached(f[3]) and is_unreached(f[5]) and is_unreached(f[6])
+    assert is_unreached(f[8]) and is_unreached(f[9])
+    w8 = next(w for w in rec["warnings"] if w.startswith("find[8]"))
+    w9 = next(w for w in rec["warnings"] if w.startswith("find[9]"))
+    assert f"t ≈ {float(t_cap):.10g}"[:13] in w8 and f"t ≈ {float(-t_cap):.10g}"[:14] in w9, (w8, w9)
+    assert all("finite time" not in w for w in rec["warnings"])
+    assert "grows without bound" in w8 and "quadrature" not in " ".join(rec["warnings"])
+
+
+def test_case4_finite_time_escape_of_a_cubic_force():
+    # a = s^3 from rest at s1 = 1: v^2 = (s^4 - 1)/2, t(∞) = ∫_1^∞ ds / |v| converges (v^2 overflows the
+    # doubles near s ~ 1e77: that is a cap like |s| = 1e100, not a singularity of a)
+    rec = problem("s**3", [{"t": 5}, {"s": 10}], s1=1)
+    f = entries(rec)
+    T = mp.quad(lambda u: 2 / mp.sqrt((4 + 6 * u**2 + 4 * u**4 + u**6) / 2), [0, 1, mp.inf])    # s = 1 + u^2
+    assert is_unreached(f[0])
+    w = rec["warnings"][-1]
+    assert "escape to infinity in finite time" in w and f"t ≈ {float(T):.10g}"[:12] in w and "singular" not in w, w
+    close(f[1]["t"], mp.quad(lambda u: 2 / mp.sqrt((4 + 6 * u**2 + 4 * u**4 + u**6) / 2), [0, 1, 3]))
+    # from rest far out: s1 = -4e49 (scaled: s = s1 x, t = x-integral / |s1|)
+    f = entries(problem("s**3", [{"s": -1e50}, {"t": 1e-100}], s1=-4e49))
+    close(f[0]["t"], mp.quad(lambda u: 2 / mp.sqrt((4 + 6 * u**2 + 4 * u**4 + u**6) / 2), [0, mp.sqrt(1.5)])
+          / mp.mpf("4e49"), scale=0)
+    close(f[0]["v"], -mp.sqrt((mp.mpf("1e50") ** 4 - mp.mpf("4e49") ** 4) / 2), scale=0)
+    close(f[1]["s"], mp.mpf("-4e49") - mp.mpf("6.4e148") * mp.mpf("1e-200") / 2, scale=0)
+    close(f[1]["v"], -mp.mpf("6.4e148") * mp.mpf("1e-100"), scale=0)
+
+
 # -- general ------------------------------------------------------------------------
 
 

@@ -16,7 +16,12 @@ Accuracy measures:
 * at a turning point dt = ds/|v| has an inverse-square-root singularity; the
   substitution s = s_T - e u^2 makes the integrand 2u/|v| smooth;
 * at an asymptotic equilibrium s_E the log singularity is removed by
-  s = s_E - (s_E - s_M) e^(-x); towards infinity s = s_M + e c (e^x - 1);
+  s = s_E - (s_E - s_M) e^(-x); towards infinity s = s_M + e c (e^x - 1) with
+  c the smallest length of the problem, so that every scale from c to the cap
+  |s| = 1e100 gets unit cells in x (the scan is geometric down to c as well);
+  whether the body escapes in finite time (∫^∞ ds/|v| converges, a = s^3) or
+  only grows without bound (a = 25 s) is read off the decay of dt/dx there;
+  where v^2 overflows the doubles the leg is capped like |s| = 1e100;
 * each leg (s1 -> end) is split at its midpoint so both ends get their own
   substitution; t-queries invert the leg times by a bracketed root search and
   periodic motion is reduced modulo the period.
@@ -34,6 +39,14 @@ _EPS = float(np.finfo(float).eps)
 _BIG = 1e100
 
 
+def _log1p_ratio(d: float, c: float) -> float:
+    """log(1 + d/c) without overflowing d/c (d ~ 1e100, c ~ 1e-290)."""
+    r = d / c
+    if math.isfinite(r):
+        return math.log1p(r)
+    return math.log(d) - math.log(c)
+
+
 def _fmt(x: float) -> str:
     return f"{x:.10g}"
 
@@ -42,8 +55,12 @@ class End:
     def __init__(self, kind: str, pos: float):
         self.kind = kind      # turn | asym | sing | inf
         self.pos = pos
+        # inf: is the time to infinity finite (∫ ds/|v| converges)?  True, False or None (unknown)
+        self.finite_time = None
 
     def describe(self) -> str:
+        if self.kind == "inf" and math.isfinite(self.pos):
+            return f"|s| grows without bound; v^2 exceeds the doubles beyond s ≈ {_fmt(self.pos)}"
         return {
             "turn": f"turning point s = {_fmt(self.pos)}",
             "asym": f"unstable equilibrium s = {_fmt(self.pos)}, approached as t → ∞",
@@ -107,8 +124,13 @@ class Leg:
     def __init__(self, c4, A: float, a_turn: bool, end: End, e: int):
         self.c4, self.A, self.e, self.end = c4, A, e, end
         self.B = end.pos
+        # towards infinity: a short first part and then the geometric map s = M + e c (e^x - 1),
+        # c the smallest length of the problem, so every scale from c to _BIG gets cells of its own
+        self.c = c4.scale_min
         if end.kind == "inf":
-            self.M = A + e * c4.scale
+            if math.isfinite(self.B):
+                self.c = min(self.c, 0.5 * abs(self.B - A))
+            self.M = A + e * self.c
         else:
             self.M = A + 0.5 * (self.B - A)
         self.k1 = "sqrt" if a_turn else "lin"
@@ -124,7 +146,7 @@ class Leg:
             # (difference of logarithms: the ratio overflows for L2 > ~1e18)
             self.X2 = max(math.log(L2) - math.log(max(8 * _EPS * abs(self.B), 1e-290)), 0.0) if L2 > 0 else 0.0
         else:
-            self.X2 = math.log1p((_BIG - abs(self.M)) / c4.scale)
+            self.X2 = _log1p_ratio(max(min(_BIG, e * self.B) - e * self.M, 0.0), self.c)
         self.degenerate = L1 == 0 and end.kind != "inf"
         self._build()
 
@@ -144,8 +166,11 @@ class Leg:
             L2 = abs(self.B - self.M)
             d = L2 * np.exp(-x)
             return self.B, -e * d, d
-        c = self.c4.scale
-        return self.M, e * c * np.expm1(x), c * np.exp(x)
+        c, lc = self.c, math.log(self.c)
+        # (c e^x as e^(x + ln c): with c ~ 1e-290 the map needs x up to ~900, beyond e^709)
+        with np.errstate(over="ignore"):
+            off = np.where(x < 700, c * np.expm1(np.minimum(x, 700)), np.exp(x + lc) - c)
+        return self.M, e * off, np.exp(x + lc)
 
     def _dtdx(self, part: int, x):
         base, off, dsdx = self._map(part, x)
@@ -214,7 +239,40 @@ class Leg:
             total = float(cum[-1])
             etotal = float(cerr[-1])
         self.reach = total       # time to the last resolved point
+        if self.k2 == "geo":
+            self.end.finite_time = self._tail_finite()
         self.duration = math.inf if self.k2 == "exp" else total
+
+    def _tail_finite(self):
+        """Does ∫^∞ ds/|v| converge?  On the geometric map dt/dx = |s - M + e c|/|v| tends to a
+        constant for |v| ~ |s| (a linear in s: growth without bound, infinity only as t -> ∞), grows
+        for slower |v| and decays like e^(-(p-1) x) for |v| ~ |s|^p, p > 1 (escape in finite time,
+        e.g. a = s^3).  Judged on the decay rate of dt/dx over the last resolved 20 units of x;
+        None when they are not resolved (v^2 overflowed early, or too few cells)."""
+        g, cum = self.grids[1], self.cums[1]
+        if g.size < 2:
+            return None
+        w, dt = np.diff(g), np.diff(cum)
+        ok = (w > 0) & (dt > 0) & np.isfinite(dt)
+        n = len(ok)
+        if not ok.all():
+            # up to the first cell where dt/dx vanished (v^2 overflowed), that one and its neighbour excluded
+            n = max(int(np.argmin(ok)) - 1, 0)
+        if n == 0:
+            return None
+        x_end = float(g[n])
+        span = min(10.0, 0.5 * (x_end - float(g[0])))
+        if span < 2.0:
+            return None
+        mid = 0.5 * (g[:n] + g[1:n + 1])
+        last = mid >= x_end - span
+        prev = (mid >= x_end - 2 * span) & ~last
+        if not (last.any() and prev.any()):
+            return None
+        r_last = float(np.sum(dt[:n][last]) / np.sum(w[:n][last]))
+        r_prev = float(np.sum(dt[:n][prev]) / np.sum(w[:n][prev]))
+        # decay rate of dt/dx per unit x; 0.02 leaves borderline tails (|v| ~ |s| log^2|s|) 'unbounded'
+        return math.log(r_prev / r_last) / span > 0.02
 
     # -- time to a position -------------------------------------------------
     def time_to(self, s: float) -> tuple[float, float]:
@@ -234,7 +292,7 @@ class Leg:
                     return math.inf, 0.0
                 x = math.log(abs(self.B - self.M) / r)
             else:
-                x = math.log1p(abs(s - self.M) / self.c4.scale)
+                x = _log1p_ratio(abs(s - self.M), self.c)
         return self._time_at(part, x)
 
     def _time_at(self, part: int, x: float):
@@ -306,6 +364,9 @@ class _Case4:
         # (capped so that the scan s1 + c g, |s| <= _BIG, always has cells and the midpoint of an
         # escaping leg lies inside |s| < _BIG)
         self.scale = min(max(cands), 0.25 * _BIG) if cands else 1.0
+        # the smallest of them (e.g. |s1| = 1e-151 next to v1^2/|a(s1)| = 4e133 for a = 25 s): the scan
+        # and the escaping legs resolve every scale between it and _BIG geometrically
+        self.scale_min = min(max(min(cands), 1e-290), self.scale) if cands else self.scale
         self.amax = max(abs(self.a_s1), 1e-300)
         self.energy = Energy(self)
         self.scans: dict[int, dict] = {}
@@ -327,9 +388,16 @@ class _Case4:
         s1, c = self.s1, self.scale
         g = np.unique(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:], 4.0 * np.logspace(0, 300, 3001)]))
+        cm = self.scale_min
+        if cm < 1e-3 * c:
+            # offsets below the scan scale down to the smallest length of the problem, 8 per decade
+            dec = math.log10(c) - math.log10(cm)        # (c / cm overflows for c ~ 1e99, cm ~ 1e-290)
+            g = np.unique(np.concatenate([g, (cm / c) * np.logspace(-15, -3, 49),
+                                          (cm / c) * np.logspace(-3, dec, int(8 * (dec + 3)) + 1)]))
         g = np.concatenate([[0.0], g[abs(s1) + c * g <= _BIG]])
         ss = s1 + e * c * g
         end = None
+        overflow = False
         while True:
             try:
                 vals, errs, conv = integrate(lambda x, j: self.A(x), ss[:-1], np.diff(ss), self.qr, 0.0)
@@ -342,6 +410,16 @@ class _Case4:
                     vals = np.zeros(len(ss) - 1)
                     conv = np.ones(len(ss) - 1, dtype=bool)
                     break
+        with np.errstate(over="ignore", invalid="ignore"):
+            v2c = v2start + 2.0 * np.concatenate([[0.0], np.cumsum(vals)])
+        if not np.all(np.isfinite(v2c)):
+            k = int(np.argmax(~np.isfinite(v2c)))
+            if v2c[k] == math.inf and k >= 2 and np.all(conv[:k - 1]):
+                # v^2 overflows the doubles (|v| > 1e154, e.g. a = s^3 from s1 = 1 near s ~ 1e77): a cap
+                # like |s| = _BIG, not a singularity of a — the scan (and the references) stop at the
+                # last finite v^2; the leg beyond it has dt = ds/|v| = 0 in double precision
+                ss, vals, conv = ss[:k], vals[:k - 1], conv[:k - 1]
+                overflow, end = True, None      # (an overflow of a itself further out is never reached)
         bad = np.nonzero(~conv)[0]
         if bad.size:
             # a singular (non-integrable) point inside cell k — unless the body turns before it
@@ -400,7 +478,8 @@ class _Case4:
             v2 = np.append(v2, 0.0 if end.kind in ("turn", "asym") else float(v2[-1]))
             av = np.append(av, self.a1(end.pos))
         if end is None:
-            end = End("inf", e * math.inf)
+            # (a finite position: the last node before v^2 overflows — nothing beyond it is tracked)
+            end = End("inf", float(ss[-1]) if overflow else e * math.inf)
         self.scans[e] = {"s": ss, "v2": v2, "a": av}
         # scan nodes where v^2 is well above its rounding error become references too
         # (v^2 at a node carries the rounding of every cell before it)
@@ -510,7 +589,16 @@ class _Case4:
         when = "after" if forward else "before"
         at = f"at t ≈ {_fmt(t_end)}"
         if end.kind == "inf":
-            return f"|s| exceeds {_BIG:g} (escape to infinity in finite time) {at}; nothing is defined {when} that"
+            lead = f"|s| exceeds {_BIG:g}"
+            if math.isfinite(end.pos):
+                lead = f"the body passes s ≈ {_fmt(end.pos)}, beyond which v^2 exceeds the doubles,"
+            if end.finite_time:
+                if math.isfinite(end.pos):
+                    return f"{lead} {at} (escape to infinity in finite time); nothing is defined {when} that"
+                return f"{lead} (escape to infinity in finite time) {at}; nothing is defined {when} that"
+            how = ("|s| grows without bound, reaching infinity only as t → ∞" if end.finite_time is False
+                   else "|s| grows without bound")
+            return f"{lead} {at} ({how}); the motion is not followed {when} that"
         if end.kind == "sing":
             return f"the body reaches s ≈ {_fmt(end.pos)}, where a is singular, {at}; the motion is not defined {when} that"
         return end.describe()
@@ -585,7 +673,7 @@ class _Case4:
         v2s = np.concatenate([self.scans[leg.e]["v2"] for leg, _, _ in self.fwd])
         lo, hi = math.sqrt(max(float(v2s.min()), 0.0)), math.sqrt(max(float(v2s.max()), 0.0))
         if V == 0:
-            ans.unreached(i, "the body never stops: " + "; ".join(e.describe() for e in (self.endF, self.endB)))
+            ans.unreached(i, "the body never stops: " + "; ".join(dict.fromkeys(e.describe() for e in (self.endF, self.endB))))
         else:
             where = f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]"
             if lo <= abs(V) <= hi:
