@@ -158,6 +158,11 @@ CASES.update({
         "protects (13.20): |x_A/B|² underflowed to 0 for two points 1e-300 apart (ZeroDivisionError, exit 3)",
         "{type: angular-velocity, points: {B: {x: [0, 0, 0], v: [0, 0, 1.0e-150]}, "
         "A: {x: [1.0e-300, 0, 0], v: [0, 0, 1]}}}\n"),
+    "rectilinear-case3-tiny-scale-grid": (
+        "protects case 3 (6.8): on the 'inf' branch room/c overflowed for v1 = 1e-299 and the u grid became "
+        "np.arange(1, inf) (ValueError 'Maximum allowed size exceeded', exit 3)",
+        "type: rectilinear\nparams: {c: 0.5}\na: -c*v\nv1: 1.0e-299\n"
+        "find: [{t: 2.0e-08}, {t: -1}, {v: 1.0e-300}, {s: 19.000000000019}, {s: 0.0}, {v: 0}]\n"),
 })
 
 

@@ -155,7 +155,9 @@ class Branch:
         c3 = self.c3
         if self.kind == "inf":
             room = _BIG - abs(self.v1)      # |v1| beyond the blow-up threshold already: no room
-            umax = math.log1p(room / self.c) if room > 0 else 0.0
+            ratio = room / self.c if room > 0 else 0.0
+            # room / c overflows for a tiny scale c (v1 ~ 1e-299): log(room) - log(c) then
+            umax = math.log1p(ratio) if math.isfinite(ratio) else math.log(room) - math.log(self.c)
         else:
             self.D0 = self.v_end - self.v1
             dmin = max(8 * _EPS * abs(self.v_end), 1e-290)
