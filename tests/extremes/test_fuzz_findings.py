@@ -163,16 +163,20 @@ CASES.update({
         "np.arange(1, inf) (ValueError 'Maximum allowed size exceeded', exit 3)",
         "type: rectilinear\nparams: {c: 0.5}\na: -c*v\nv1: 1.0e-299\n"
         "find: [{t: 2.0e-08}, {t: -1}, {v: 1.0e-300}, {s: 19.000000000019}, {s: 0.0}, {v: 0}]\n"),
+    "rectilinear-case4-weak-exponential": (
+        "open (slow, right answers): case 4 with a = cosh(deg)**s = exp(1.5e-4 s), v1 = 20, find t = 2, v = 0, "
+        "s = 50 takes 5.3-6.0 s of CPU (fuzz_long seed 65560)",
+        "type: rectilinear\na: cosh(deg) ** s\nv1: 20\nfind: [{t: 2}, {v: 0}, {s: 50}]\n"),
 })
 
 
 #: cases still open (exit 3 or a hang inside the solver): strict xfail until fixed
 OPEN: set[str] = set()
 
-#: cases open only because they take more than the 2 s of CPU (right answers): their
-#: time is near the limit (2.6-3.3 s measured, less on a quiet machine), so the xfail
-#: is not strict — an occasional pass must not fail the suite
-SLOW: set[str] = {"rectilinear-case3-tiny-v1-backward"}
+#: cases open only because they take more than the 2 s of CPU (right answers; times in
+#: CASES).  The xfail is not strict: a time near the limit may pass on a quiet machine,
+#: and that must not fail the suite
+SLOW: set[str] = {"rectilinear-case3-tiny-v1-backward", "rectilinear-case4-weak-exponential"}
 
 
 def _params():
