@@ -168,7 +168,6 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     Y = np.empty((len(times), len(y0)))
     at0 = times == t0
     Y[at0] = y0
-    nsteps = 0
     for direction in (1.0, -1.0):
         sel = np.nonzero((times - t0) * direction > 0)[0]
         if on_step is not None:
@@ -187,7 +186,6 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
             msg = solver.step()
             if solver.status == "failed":
                 raise NumericalError(f"the {method} integrator failed at t = {solver.t:.6g}: {msg}")
-            nsteps += 1
             budget.tick(solver.t, solver.t_old)
             t_old, t_new = solver.t_old, solver.t
             if project is not None:
@@ -206,7 +204,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
                 for i in order[k:]:
                     Y[i] = solver.y
                 break
-    return Y, nsteps
+    return Y, budget.n
 
 
 class _Lazy:
@@ -242,9 +240,20 @@ class _Projected:
         return out
 
 
-def tighter(rtol: float, atol: float) -> tuple[float, float]:
-    """Tolerances for the second run of ``accuracy.estimate``."""
-    return max(rtol * 1e-2, 2.5e-14), max(atol * 1e-2, 1e-300)
+RTOL_FLOOR = 100 * float(np.finfo(float).eps) * 1.0001    # scipy's smallest rtol
+
+
+def tighter(rtol: float, atol: float, div: float = 100.0) -> tuple[float, float]:
+    """Tolerances of a check solve ``div`` times tighter than (rtol, atol)
+    (the error_estimate of the ODE routes), rtol no smaller than scipy allows."""
+    return max(rtol / div, RTOL_FLOOR), max(atol / div, 1e-300)
+
+
+def fallback_warning(div: float) -> str:
+    """The warning of an error_estimate whose check solve at rtol/div exceeded the budget."""
+    return (f"error_estimate: the check solve at rtol/{div:g} exceeds the step budget (accuracy.max_steps); "
+            "the estimate comes from a solve at 10·rtol instead (a conservative bound, typically ~10x the "
+            "actual error)")
 
 
 def check_method(method: str, allowed) -> str:

@@ -605,7 +605,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     # the very same steps); the largest difference of the positions at the
     # requested times estimates the absolute error of x of the first solve
     if p.t_end > 0:
-        r2, a2 = _tighter(rtol, atol)
+        r2, a2 = ode.tighter(rtol, atol)
         hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
         try:
             traj2 = integrate(p, F, r2, a2, method, max_steps=max_steps, max_step=hmax)
@@ -621,11 +621,6 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     else:
         res.error_estimate = 0.0
     return res
-
-
-def _tighter(rtol: float, atol: float) -> tuple[float, float]:
-    """Tolerances of the comparison solve: 100x tighter, rtol at least ~100 eps."""
-    return max(rtol * 1e-2, 100 * EPS * 1.0001), max(atol * 1e-2, 1e-300)
 
 
 def _vec(a) -> list[float]:

@@ -190,9 +190,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
                 if route == "quadrature":
                     raise
                 res2, ans2 = run(min(rtol * 10.0, 0.1), atol * 10.0)
-                res.warn(f"error_estimate: the check solve at rtol/{1 / factor:g} exceeds the step budget "
-                         "(accuracy.max_steps); the estimate comes from a solve at 10·rtol instead "
-                         "(a conservative bound, typically ~10x the actual error)")
+                from dyncli import ode
+
+                res.warn(ode.fallback_warning(1 / factor))
         res.error_estimate = max(_difference(ans.items, ans2.items), ans.err)
     return res
 
