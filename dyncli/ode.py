@@ -307,6 +307,22 @@ def relative_difference(pairs, floors=None) -> float:
     return worst
 
 
+#: the note of an estimate that comes from no second solve (accuracy.estimate false, the default)
+NOMINAL_NOTE = ("nominal: rtol, or the largest relative drift of the route's invariants when larger (no "
+                "second solve); set accuracy.estimate: true for a measured estimate")
+
+
+def nominal_estimate(res, rtol: float, *drifts: float | None) -> float:
+    """The error_estimate of an ODE route run without a check solve (``accuracy.estimate``
+    false): ``rtol``, or the largest relative drift of the route's invariants (energy, momenta,
+    first integrals; each relative to its scale) when larger, an order of magnitude of the
+    error of a well-conditioned run.  Sets ``res.error_estimate`` and its note; returns it."""
+    est = max([float(rtol)] + [float(d) for d in drifts if d is not None and math.isfinite(d)])
+    res.error_estimate = est
+    res.extra["error_estimate_note"] = NOMINAL_NOTE
+    return est
+
+
 def check_solve(res, run, rtol: float, atol: float, *, fallback: bool = True):
     """The one check-solve rule of the ODE routes: ``run(rtol2, atol2)`` at :func:`tighter`
     (rtol, atol) (÷ CHECK_DIV).  Over the step budget (:class:`OverBudget`): with ``fallback``,

@@ -178,7 +178,7 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
         res.warn("error_estimate is the actual error against the exact torque-free solution")
         res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0
     else:                           # the largest relative drift of H and T
-        res.error_estimate = max(rtol, drift.worst_H, drift.worst_T)
+        ode.nominal_estimate(res, rtol, drift.worst_H, drift.worst_T)
     return W, drift.worst_H, drift.worst_T
 
 
