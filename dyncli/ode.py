@@ -177,6 +177,9 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     The run is refused (:class:`OverBudget`, a NumericalError) as soon as it
     is clear that it needs more than ``max_steps`` steps (default MAX_STEPS):
     see :class:`Budget`.
+
+    (Just over 60 lines: the stepping loop of both directions is kept in one piece, as scipy's
+    own ``solve_ivp`` loop is, so the order of step, budget, projection and sampling reads at once.)
     """
     budget = Budget(max_steps)
     from scipy import integrate as si

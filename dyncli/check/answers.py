@@ -212,39 +212,8 @@ def _read_check(af: AnswerFile, doc: Document, item: Any, prefix: tuple, index: 
             extra = "" if hint else "; answers go under 'answers:'"
             af.diagnostics.append(diag(prefix + (k,), f"unknown key '{shown(k)}'{hint}; known: {', '.join(CHECK_KEYS)}{extra}"))
             ok = False
-    # problem
-    if "problem" not in item:
-        af.diagnostics.append(diag(prefix, "missing 'problem': a problem file path (relative to this file) or an inline problem mapping"))
-        ok = False
-    else:
-        p = item["problem"]
-        pos = doc.value_pos(prefix + ("problem",))
-        spec.line, spec.col = pos if pos else (None, None)
-        if isinstance(p, str) and p.strip():
-            spec.problem_ref = p.strip()
-        elif isinstance(p, dict):
-            spec.problem_inline = p
-        else:
-            af.diagnostics.append(diag(prefix + ("problem",), "'problem' must be a file path or an inline problem mapping", key=False))
-            ok = False
-    if "index" in item:
-        v = item["index"]
-        if isinstance(v, bool) or not isinstance(v, int) or v < 0:
-            af.diagnostics.append(diag(prefix + ("index",), "index must be a whole number >= 0 (which problem of a 'problems:' file)", key=False))
-            ok = False
-        else:
-            spec.problem_index = v
-    if "params" in item:
-        v = item["params"]
-        if not isinstance(v, dict) or not v:
-            af.diagnostics.append(diag(prefix + ("params",), "params must be a mapping name: number-or-expression", key=False))
-            ok = False
-        else:
-            bad = [k for k, x in v.items() if isinstance(x, (bool, list, dict)) or x is None]
-            if bad:
-                af.diagnostics.append(diag(prefix + ("params", bad[0]), "a parameter must be a number or an expression", key=False))
-                ok = False
-            spec.params = {str(k): x for k, x in v.items()}
+    ok = _read_problem(af, doc, item, prefix, spec, diag) and ok
+    ok = _read_selection(af, item, prefix, spec, diag) and ok
     if isinstance(item.get("title"), str):
         spec.title = item["title"]
     tol = base
@@ -267,6 +236,50 @@ def _read_check(af: AnswerFile, doc: Document, item: Any, prefix: tuple, index: 
                 spec.answers.append(_read_answer(doc, prefix + ("answers", k), str(k), v, tol))
     if ok:
         af.checks.append(spec)
+
+
+def _read_problem(af: AnswerFile, doc: Document, item: dict, prefix: tuple, spec: CheckSpec, diag) -> bool:
+    """A check's ``problem``: a file path (relative to the answer file) or an inline mapping."""
+    ok = True
+    if "problem" not in item:
+        af.diagnostics.append(diag(prefix, "missing 'problem': a problem file path (relative to this file) or an inline problem mapping"))
+        ok = False
+    else:
+        p = item["problem"]
+        pos = doc.value_pos(prefix + ("problem",))
+        spec.line, spec.col = pos if pos else (None, None)
+        if isinstance(p, str) and p.strip():
+            spec.problem_ref = p.strip()
+        elif isinstance(p, dict):
+            spec.problem_inline = p
+        else:
+            af.diagnostics.append(diag(prefix + ("problem",), "'problem' must be a file path or an inline problem mapping", key=False))
+            ok = False
+    return ok
+
+
+def _read_selection(af: AnswerFile, item: dict, prefix: tuple, spec: CheckSpec, diag) -> bool:
+    """A check's ``index`` (which problem of a ``problems:`` file) and ``params``."""
+    ok = True
+    if "index" in item:
+        v = item["index"]
+        if isinstance(v, bool) or not isinstance(v, int) or v < 0:
+            af.diagnostics.append(diag(prefix + ("index",), "index must be a whole number >= 0 (which problem of a 'problems:' file)", key=False))
+            ok = False
+        else:
+            spec.problem_index = v
+    if "params" in item:
+        v = item["params"]
+        if not isinstance(v, dict) or not v:
+            af.diagnostics.append(diag(prefix + ("params",), "params must be a mapping name: number-or-expression", key=False))
+            ok = False
+        else:
+            bad = [k for k, x in v.items() if isinstance(x, (bool, list, dict)) or x is None]
+            if bad:
+                af.diagnostics.append(diag(prefix + ("params", bad[0]), "a parameter must be a number or an expression", key=False))
+                ok = False
+            spec.params = {str(k): x for k, x in v.items()}
+    return ok
 
 
 def _read_answer(doc: Document, path: tuple, key: str, v: Any, tol: Tolerance) -> Answer:

@@ -105,12 +105,50 @@ def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]
 
 
 def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: list[str] | None = None) -> None:
-    from rich import box
-    from rich.table import Table as RTable
+    """The terminal view of one solved problem: a header (title, type, method, error estimate,
+    equations), the table of scalar results, one table per series and per nested result, the
+    frame views (δ/δt tables) and the warnings."""
+    from dyncli.render.plain import print_table, print_text
+
+    _print_header(console, lp, result)
+    values, unit_names = display_units(result, units)
+    in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
+    deferred: list[tuple[str, Any]] = []
+    scalars, n_rows = _results_table(), 0
+    for name, val in values.items():
+        if name in in_series:
+            continue
+        if hasattr(val, "tolist"):
+            val = val.tolist()
+        if _nested(val):
+            deferred.append((name, val))
+            continue
+        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell(fmt_value(val, digits)),
+                        escape(unit_names.get(name, "")))
+        n_rows += 1
+    if n_rows:
+        print_table(console, scalars)
+
+    width = max(40, getattr(console, "width", 80) or 80)
+    for s in result.series:
+        for t in series_tables(s, values, unit_names, result.symbols, digits, width):
+            print_table(console, t)
+    for name, val in deferred:
+        print_table(console, _nested_table(result.symbols.get(name, name), val, digits))
+    for view in result.views:
+        print_table(console, render_view(view, digits))
+    for w in result.warnings:
+        from rich.text import Text
+
+        print_text(console, Text("warning: " + printable(w), style="yellow"))
+    print_text(console, "")
+
+
+def _print_header(console, lp, result: Result) -> None:
     from rich.text import Text
 
     from dyncli import registry
-    from dyncli.render.plain import print_table, print_text
+    from dyncli.render.plain import print_text
 
     info = registry.TYPES.get(lp.type)
     section = f" ({info.section})" if info else ""
@@ -125,63 +163,50 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
         meta += "   equations: " + ", ".join(f"({e})" for e in result.equations)
     print_text(console, Text(meta, style="dim"))
 
-    values, unit_names = display_units(result, units)
-    in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
-    scalars = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
-    scalars.add_column("result")
-    scalars.add_column("symbol", style="cyan")
-    scalars.add_column("value", justify="left")
-    scalars.add_column("unit", style="dim")
-    deferred: list[tuple[str, Any]] = []
-    n_rows = 0
-    for name, val in values.items():
-        if name in in_series:
-            continue
-        if hasattr(val, "tolist"):
-            val = val.tolist()
-        if isinstance(val, dict) and val and all(isinstance(v, (list, tuple, dict)) or _is_scalar_num(v) for v in val.values()) and len(val) > 1 and any(isinstance(v, (list, tuple, dict)) for v in val.values()):
-            deferred.append((name, val))
-            continue
-        if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
-            deferred.append((name, val))
-            continue
-        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell(fmt_value(val, digits)), escape(unit_names.get(name, "")))
-        n_rows += 1
-    if n_rows:
-        print_table(console, scalars)
 
-    width = max(40, getattr(console, "width", 80) or 80)
-    for s in result.series:
-        for t in series_tables(s, values, unit_names, result.symbols, digits, width):
-            print_table(console, t)
+def _results_table():
+    from rich import box
+    from rich.table import Table as RTable
 
-    for name, val in deferred:
-        if isinstance(val, list):
-            keys: list[str] = []
-            for rec in val:
-                for k in rec:
-                    if k not in keys:
-                        keys.append(k)
-            t = RTable(title=escape(result.symbols.get(name, name)), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
-            t.add_column("#", justify="right", style="dim")
-            for k in keys:
-                t.add_column(escape(str(k)), justify="right")
-            for i, rec in enumerate(val):
-                t.add_row(str(i), *[cell(fmt_value(rec.get(k), digits)) for k in keys])
-        else:
-            t = RTable(title=escape(result.symbols.get(name, name)), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
-            t.add_column("name")
-            t.add_column("value")
-            for k, v in val.items():
-                t.add_row(escape(str(k)), cell(fmt_value(v, digits)))
-        print_table(console, t)
+    t = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
+    t.add_column("result")
+    t.add_column("symbol", style="cyan")
+    t.add_column("value", justify="left")
+    t.add_column("unit", style="dim")
+    return t
 
-    for view in result.views:
-        print_table(console, render_view(view, digits))
 
-    for w in result.warnings:
-        print_text(console, Text("warning: " + printable(w), style="yellow"))
-    print_text(console, "")
+def _nested(val) -> bool:
+    """A result shown in a table of its own: a list of records, or a mapping (with more than one
+    entry) of numbers, vectors and records."""
+    if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
+        return True
+    return (isinstance(val, dict) and len(val) > 1
+            and all(isinstance(v, (list, tuple, dict)) or _is_scalar_num(v) for v in val.values())
+            and any(isinstance(v, (list, tuple, dict)) for v in val.values()))
+
+
+def _nested_table(title: str, val, digits: int):
+    """The table of a nested result: one row per record (a column per key) or per entry."""
+    from rich import box
+    from rich.table import Table as RTable
+
+    t = RTable(title=escape(title), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+    if isinstance(val, list):
+        keys: list[str] = []
+        for rec in val:
+            keys += [k for k in rec if k not in keys]
+        t.add_column("#", justify="right", style="dim")
+        for k in keys:
+            t.add_column(escape(str(k)), justify="right")
+        for i, rec in enumerate(val):
+            t.add_row(str(i), *[cell(fmt_value(rec.get(k), digits)) for k in keys])
+    else:
+        t.add_column("name")
+        t.add_column("value")
+        for k, v in val.items():
+            t.add_row(escape(str(k)), cell(fmt_value(v, digits)))
+    return t
 
 
 #: a series longer than this shows its first and last SERIES_EDGE rows only
