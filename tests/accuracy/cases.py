@@ -320,8 +320,10 @@ CASES: list[Case] = [
     Case("rectilinear ODE + events (general)", "rectilinear", _rectg_yaml, _rectg_error, scipy_baseline=_rectg_scipy),
     Case("particle ODE (gravity + linear drag)", "particle", _part_yaml, _part_error, scipy_baseline=_part_scipy),
     Case("top ODE (steady precession)", "top", _top_yaml, _top_error),
-    Case("vibration ODE route (DOP853)", "vibration", _vib_yaml, _vib_error),
-    Case("kinematics quadrature (arc length)", "kinematics", _kin_yaml, _kin_error),
+    # relative estimates: vibration relative to max |x| over the reported times, kinematics to D
+    Case("vibration ODE route (DOP853)", "vibration", _vib_yaml, _vib_error,
+         estimate_scale=float(max(abs(_vib_x(t)) for t in VT))),
+    Case("kinematics quadrature (arc length)", "kinematics", _kin_yaml, _kin_error, estimate_scale=float(_kin_ref())),
     Case("force-field quadrature (work)", "force-field", _ff_yaml, _ff_error),
 ]
 

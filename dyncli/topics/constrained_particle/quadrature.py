@@ -250,10 +250,11 @@ def solve(p, model, times, fallback=True) -> Result | None:
     r["period"] = period
     r["q_turn"] = [float(v) + 0.0 for v in turns]
     X, V = np.array(r["x"], float).T, np.array(r["v"], float).T
-    diff = float(np.max(np.abs(X - x2))) if n else 0.0
-    # the rounding floor of the sums and the root finding: 100 ε of the position scale |x| + |v| t
-    floor = 100 * np.finfo(float).eps * float(np.max(np.abs(X)) + np.max(np.abs(V)) * max(times)) if n else 0.0
-    res.error_estimate = max(diff, floor)
+    # relative to the position scale |x| + |v| t (the runner's rule: relative, docs/accuracy.md), at least
+    # the rounding floor of the sums and the root finding, 100 ε
+    scale = float(np.max(np.abs(X)) + np.max(np.abs(V)) * max(times)) if n else 0.0
+    diff = float(np.max(np.abs(X - x2))) / scale if n and scale > 0 else 0.0
+    res.error_estimate = max(diff, 100 * np.finfo(float).eps) if n else 0.0
     if period and times and max(times) > 1e12 * period:
         res.warn(f"t = {max(times):.6g} s is more than 1e12 periods ({period:.6g} s): the phase of the motion there "
                  "is lost to rounding of t itself")

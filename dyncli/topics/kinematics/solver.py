@@ -114,7 +114,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         D, err, ok = distance(coords, p.position, t1, t2, p.accuracy.rtol, p.accuracy.atol)
         res.results["distance"] = D
         res.method = "quadrature"
-        res.error_estimate = err
+        res.error_estimate = err / abs(D) if D else err      # relative to the distance (docs/accuracy.md)
         res.equations.append("4.5")
         if not ok:
             res.warn(f"distance: the adaptive quadrature did not reach the requested tolerance "

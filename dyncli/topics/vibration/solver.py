@@ -165,7 +165,10 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
         fm = None if fo is None else forced.ode_rhs(fo.amplitude, fo.omega, p.m)
         xo, vo = _ode(t, omega_n, zeta, L, x0, v0, s0, max(Om, 0.0 if fo is None else fo.omega),
                       p.accuracy.rtol, p.accuracy.atol, fm, max_steps=p.accuracy.max_steps)
-        err = float(np.max(np.abs(np.concatenate([xo - x, vo - v])))) if t.size else 0.0
+        from dyncli import ode
+
+        # relative to each quantity's scale over the run (the runner's rule, docs/accuracy.md)
+        err = ode.relative_difference([(xo, x), (vo, v)]) if t.size else 0.0
         sd = s0 * np.sin(Om * t)
         x, v, w = xo, vo, xo - sd - L
         res.method = "ode:DOP853"
