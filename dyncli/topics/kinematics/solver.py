@@ -111,7 +111,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         res.equations.append("16.1")
     if p.distance is not None:
         t1, t2 = p.distance
-        D, err, ok = distance(coords, p.position, t1, t2, p.accuracy.rtol, p.accuracy.atol)
+        D, err, ok = distance(coords, p.position, t1, t2, p.accuracy.rtol, p.accuracy.atol,
+                              p.accuracy.max_steps)
         res.results["distance"] = D
         res.method = "quadrature"
         res.error_estimate = err / abs(D) if D else err      # relative to the distance (docs/accuracy.md)
@@ -190,74 +191,19 @@ def _per_time(rows, times):
 
 
 # ---------------------------------------------------------------------------
-# distance traveled (4.5): vectorised adaptive Gauss–Kronrod G7/K15
-
-_XGK = np.array([0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                 0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                 0.207784955007898467600689403773245, 0.000000000000000000000000000000000])
-_WGK = np.array([0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-                 0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-                 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-                 0.204432940075298892414161999234649, 0.209482141084727828012999174891714])
-_WG = np.array([0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                0.381830050505118944950369775488975, 0.417959183673469387755102040816327])
-_NODES = np.concatenate([-_XGK[:-1], _XGK[::-1]])               # 15 nodes on [-1, 1]
-_WK = np.concatenate([_WGK[:-1], _WGK[::-1]])
-_WG15 = np.zeros(15)
-_WG15[[1, 3, 5, 13, 11, 9]] = np.concatenate([_WG[:3], _WG[:3]])
-_WG15[7] = _WG[3]
+# distance traveled (4.5): the quadrature runner's adaptive Gauss–Kronrod (dyncli/quadrature.py)
 
 
-def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, max_intervals: int = 20000):
-    """∫_a^b f by globally adaptive G7/K15 (f evaluated on arrays).
-    Returns (integral, error estimate = Σ|K15 − G7|, converged)."""
-    if b == a:
-        return 0.0, 0.0, True
-    lo = np.array([a])
-    hi = np.array([b])
-    done_val = 0.0
-    done_err = 0.0
-    while True:
-        c = 0.5 * (lo + hi)
-        h = 0.5 * (hi - lo)
-        x = c[:, None] + h[:, None] * _NODES[None, :]
-        y = f(x.ravel()).reshape(x.shape)
-        if not np.all(np.isfinite(y)):
-            bad = x[~np.isfinite(y)][0]
-            raise InputError(f"the speed is not finite at t = {bad:.6g} inside the distance interval "
-                             "(the position or its derivative is undefined there)", "distance")
-        with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
-            K = (y @ _WK) * h
-            G = (y @ _WG15) * h
-            err = np.abs(K - G)
-        if not (np.all(np.isfinite(K)) and np.all(np.isfinite(err))):
-            raise InputError("the distance overflows a double (speed × time span beyond ~1.8e308 m)", "distance")
-        total = done_val + float(K.sum())
-        total_err = done_err + float(err.sum())
-        tol = max(atol, rtol * abs(total))
-        if total_err <= tol:
-            return total, total_err, True
-        # split the intervals that carry more than their share of the error
-        share = tol * (2 * h) / (b - a)
-        split = err > share
-        if not np.any(split):
-            split = err >= err.max()
-        done_val += float(K[~split].sum())
-        done_err += float(err[~split].sum())
-        if (2 * split.sum() + (~split).sum() > max_intervals) or np.any(h[split] <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0)):
-            return done_val + float(K[split].sum()), done_err + float(err[split].sum()), False
-        lo, hi, c = lo[split], hi[split], c[split]
-        lo, hi = np.concatenate([lo, c]), np.concatenate([c, hi])
+def distance(coords: str, position: dict, t1: float, t2: float, rtol: float, atol: float, max_steps=None):
+    """D = ∫|v| dt (4.5): (D, error estimate, converged)."""
+    from dyncli.quadrature import gauss_kronrod
 
-
-def distance(coords: str, position: dict, t1: float, t2: float, rtol: float, atol: float):
     def speed(tt):
         r = motion(coords, position, tt)
         v = r["v"]   # components on an orthonormal basis: same length
         return np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
 
-    return gauss_kronrod(speed, t1, t2, rtol, atol)
+    return gauss_kronrod(speed, t1, t2, rtol, atol, max_steps=max_steps, what="the speed", path="distance")
 
 
 # ---------------------------------------------------------------------------
