@@ -118,3 +118,23 @@ def test_same_as_blocks_match_their_files():
             assert yaml.safe_load(body) == yaml.safe_load((ROOT / path).read_text(encoding="utf-8")), \
                 f"{md.relative_to(ROOT)}: the YAML shown differs from {path}"
     assert n >= 1  # the README's sample problem
+
+
+def test_no_file_sends_the_reader_outside_the_repository():
+    """The contract and the conventions live in docs/ (docs/conventions.md, the type pages,
+    docs/reference/): no tracked file cites the specification files outside the repository."""
+    import re
+    import subprocess
+
+    from tests.conftest import ROOT
+
+    files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True).stdout.split()
+    pattern = re.compile(r"book-conventions|problem-files\.md|shared/spec|shared/seed|contract §")
+    this = "tests/docs/test_docs.py"
+    bad = []
+    for f in files:
+        if f == this or not f.endswith((".py", ".md", ".yaml", ".yml", ".toml", ".txt", ".sh", ".cfg")):
+            continue
+        text = (ROOT / f).read_text(encoding="utf-8", errors="replace")
+        bad += [f"{f}:{i}" for i, line in enumerate(text.splitlines(), 1) if pattern.search(line)]
+    assert not bad, "files citing a document outside the repository: " + ", ".join(bad[:20])

@@ -1,7 +1,7 @@
 """The gyroscope's exact route (accuracy.method auto or exact): θ(t) of
 :mod:`dyncli.topics.gyroscope.elliptic` at the requested times, with its error estimate.
 
-error_estimate (relative, contract §9) bounds the round-off of the evaluation:
+error_estimate (relative, docs/accuracy.md) bounds the round-off of the evaluation:
 
 * the phase u = λt + u0 is formed in floating point, so θ and θ̇ carry a relative
   error of ~ε·(1 + λt) (the condition number of the phase at time t; the dominant
