@@ -183,7 +183,7 @@ class _Case2:
         except NonFinite as exc:
             self.ans.unreached(i, f"{_what(exc)}, between t1 and t")
             return
-        self.ans.reached(i, T, s, v, err=max(es, ev))
+        self.ans.reached(i, T, s, v, err=(0.0, es, ev))
 
     # -- v and s queries: scan forward in chunks ------------------------
     def scan(self, vq: dict[int, float], sq: dict[int, float]) -> None:
@@ -313,7 +313,8 @@ class _Case2:
                     es += self.es_c + self.ev_c * abs(t - ca)
                     ev += self.ev_c
                     at = abs(self.a1(t))
-                    ans.reached(i, t, s, v, err=max(es, ev, ev / at if (at > 0 and not graze) else 0.0))
+                    # t is off by the error of v over |a| (at a grazing extremum: the root search on a)
+                    ans.reached(i, t, s, v, err=(ev / at if (at > 0 and not graze) else 0.0, es, ev))
                 del vq[i]
                 break
 
@@ -375,7 +376,8 @@ class _Case2:
                     s, v, es, ev = self.state(t, tb, sb_, vb)
                     es += float(esB[k]) + float(evB.max()) * abs(t - tb)
                     ev += float(evB.max())
-                    ans.reached(i, t, s, v, err=max(es, ev, es / abs(v) if (v != 0 and not graze) else 0.0))
+                    # t is off by the error of s over |v| (at a turning point: the root search on v)
+                    ans.reached(i, t, s, v, err=(es / abs(v) if (v != 0 and not graze) else 0.0, es, ev))
                 del sq[i]
                 break
 
