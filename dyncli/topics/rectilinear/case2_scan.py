@@ -33,14 +33,7 @@ class _Scan:
     def scan(self, vq: dict[int, float], sq: dict[int, float]) -> None:
         p, ans = self.p, self.ans
         t1, s1, v1 = p.t1, p.s1, p.v1
-        for i, V in list(vq.items()):
-            if V == v1:
-                ans.reached(i, t1, s1, v1)
-                del vq[i]
-        for i, S in list(sq.items()):
-            if S == s1:
-                ans.reached(i, t1, s1, v1)
-                del sq[i]
+        ans.at_start(vq, sq)
         if not vq and not sq:
             return
         H = p.t_max

@@ -118,14 +118,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
     tq = [(i, q.t) for i, q in enumerate(p.find) if q.kind == "t"]
     vq = {i: q.v for i, q in enumerate(p.find) if q.kind == "v"}
     sq = {i: q.s for i, q in enumerate(p.find) if q.kind == "s"}
-    for i, V in list(vq.items()):
-        if V == v1:
-            ans.reached(i, t1, s1, v1)
-            del vq[i]
-    for i, S in list(sq.items()):
-        if S == s1:
-            ans.reached(i, t1, s1, v1)
-            del sq[i]
+    ans.at_start(vq, sq)
     for i, T in tq:
         if T == t1:
             ans.reached(i, t1, s1, v1)

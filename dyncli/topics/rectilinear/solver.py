@@ -95,6 +95,15 @@ class Answers:
                     worst = max(worst, e / sc)
         return worst
 
+    def at_start(self, vq: dict, sq: dict) -> None:
+        """Answer (and remove) the v and s queries equal to the initial state: at t1 itself."""
+        p = self.p
+        for queries, x1 in ((vq, p.v1), (sq, p.s1)):
+            for i, X in list(queries.items()):
+                if X == x1:
+                    self.reached(i, p.t1, p.s1, p.v1)
+                    del queries[i]
+
     def unreached(self, i: int, reason: str) -> None:
         q = self.p.find[i]
         self.res.warn(f"{self.labels[i]} ({q.kind} = {_fmt(q.target)}): not reached — {reason}")
