@@ -498,3 +498,41 @@ CASES.append(Case("gyroscope ODE (0 to π)", "gyroscope", lambda r, a, e: _gyro_
                   estimate_scale=1.0))
 CASES.append(Case("gyroscope exact (0 to π)", "gyroscope", lambda r, a, e: _gyro_yaml(r, a, e, "auto"), _gyro_error,
                   estimate_scale=1.0))
+
+
+# rectilinear's other quadrature routes (appended: the scipy baselines above are matched by position);
+# errors relative to each quantity's scale over the answers, as the type's error_estimate
+def _rect2_yaml(rtol, atol, est):
+    # case 2, a = cos t: v = 1 + sin t, s = t + 1 - cos t (s1 = 0, v1 = 1)
+    return ("type: rectilinear\na: 'cos(t)'\nv1: 1\n"
+            "find: [{t: 2}, {t: 7}, {v: 1.5}, {s: 3}]\n" + _acc(rtol, atol, est, "quadrature"))
+
+
+def _rect2_error(rec):
+    f = rec["results"]["find"]
+    s = lambda t: t + 1 - mp.cos(t)                 # noqa: E731
+    v = lambda t: 1 + mp.sin(t)                     # noqa: E731
+    ts = [mp.mpf(2), mp.mpf(7), mp.pi / 6, mp.findroot(lambda t: s(t) - 3, 2)]
+    return _relerr([[(f[k]["t"], t) for k, t in enumerate(ts)], [(f[k]["s"], s(t)) for k, t in enumerate(ts)],
+                    [(f[k]["v"], v(t)) for k, t in enumerate(ts)]])
+
+
+def _rect4_yaml(rtol, atol, est):
+    # case 4, a = -4 s: s = 0.5 cos 2t + 0.5 sin 2t (s1 = 0.5, v1 = 1), periodic
+    return ("type: rectilinear\na: '-4*s'\ns1: 0.5\nv1: 1\n"
+            "find: [{t: 1}, {t: 7}, {v: 0}, {s: -0.3}]\n" + _acc(rtol, atol, est, "quadrature"))
+
+
+def _rect4_error(rec):
+    f = rec["results"]["find"]
+    s = lambda t: (mp.cos(2 * t) + mp.sin(2 * t)) / 2   # noqa: E731
+    v = lambda t: mp.cos(2 * t) - mp.sin(2 * t)         # noqa: E731
+    ts = [mp.mpf(1), mp.mpf(7), mp.pi / 8, mp.findroot(lambda t: s(t) + mp.mpf("0.3"), 1.2)]
+    return _relerr([[(f[k]["t"], t) for k, t in enumerate(ts)], [(f[k]["s"], s(t)) for k, t in enumerate(ts)],
+                    [(f[k]["v"], v(t)) for k, t in enumerate(ts)]])
+
+
+CASES.append(Case("rectilinear quadrature + roots (case 2)", "rectilinear", _rect2_yaml, _rect2_error,
+                  estimate_scale=1.0))
+CASES.append(Case("rectilinear quadrature + turning points (case 4)", "rectilinear", _rect4_yaml, _rect4_error,
+                  estimate_scale=1.0))

@@ -206,10 +206,10 @@ def _solve(p) -> Result:
         # the quadratures' propagated error bounds, each relative to its answer's scale
         res.error_estimate = bound
     if p.accuracy.estimate:
-        # the runner's check solve (ode.check_solve: rtol/CHECK_DIV, its one fallback for the ODE
-        # route; the quadrature routes have none: their work meter refuses the problem)
+        # the runner's check solve (ode.check_solve: rtol/CHECK_DIV and its one fallback, also
+        # when the quadratures' work meter refuses the tighter run: work.OverWork is an OverBudget)
         with np.errstate(all="ignore"):
-            check = ode.check_solve(res, run, rtol, atol, fallback=route != "quadrature")
+            check = ode.check_solve(res, run, rtol, atol)
         if check is not None:
             res.error_estimate = max(_difference(p, ans.items, check[0][1].items), bound)
     elif route != "quadrature":
