@@ -19,7 +19,7 @@ soon as every query is answered.
 
 Work budget: :class:`dyncli.ode.Budget` counts every accepted step of the
 solve; one that needs more than ``accuracy.max_steps`` steps (default
-``DEFAULT_MAX_STEPS`` = 10,000, about 1 s) is refused with a NumericalError as soon as the
+``DEFAULT_MAX_STEPS`` = 10,000, about 0.7 s) is refused with a NumericalError as soon as the
 projection towards the furthest time asked for shows it.  A state that overflows (inf/NaN) ends the integration
 there: the queries beyond it are answered ``reached: false`` with a warning
 naming the time where it blew up.
@@ -33,8 +33,8 @@ from dyncli import ode
 from dyncli.topics.rectilinear._quad import brentq
 
 
-#: default accuracy.max_steps of one run of this route: ~50 us a step (DOP853, 12
-#: evaluations of the expression), so a solve and its check solve stay near 1 s
+#: default accuracy.max_steps of one run of this route: ~65 us a step (DOP853, 12
+#: evaluations of the expression), so a solve stays near 0.7 s (its check solve has its own)
 DEFAULT_MAX_STEPS = 10_000
 
 
@@ -49,8 +49,7 @@ class _Run:
         self.rtol = max(rtol, 2.5e-14)
         self.atol = atol
         self.fn = fn = p.a.scalar_fn()
-        # all integrations of this run; the default keeps a whole solve (this run and the
-        # error-estimate run) near 1 s of CPU
+        # all integrations of this run (the check solve of accuracy.estimate has its own)
         self.budget = ode.Budget(p.accuracy.max_steps, default=min(ode.MAX_STEPS, DEFAULT_MAX_STEPS))
         self._cls = ode.budgeted(method, self.budget, stop_nonfinite=True)
 
