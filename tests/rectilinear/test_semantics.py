@@ -149,6 +149,18 @@ def test_case3_v_query_close_to_terminal_velocity():
 # -- case 4 -------------------------------------------------------------------------
 
 
+@pytest.mark.parametrize("rtol", [1e-12, 2.3e-14])
+def test_case4_tight_rtol_is_answered(rtol):
+    # the quadratures' rtol (rtol/100) is floored where their error estimate can certify it:
+    # below 1.1e-14 they never converged and the work budget refused the problem (exit 1)
+    rec = problem("-4*s", [{"t": 1}, {"s": -0.3}], s1=0.5, v1=1, accuracy=f"{{rtol: {rtol}, estimate: true}}")
+    f = entries(rec)
+    s_ = lambda t: (mp.cos(2 * t) + mp.sin(2 * t)) / 2     # noqa: E731
+    close(f[0]["s"], s_(1), scale=0.5, rtol=1e-13)
+    close(f[1]["t"], mp.findroot(lambda t: s_(t) + mp.mpf("0.3"), 1.2), rtol=1e-13)
+    assert rec["error_estimate"] < 1e-12 and not rec["warnings"]
+
+
 def test_case4_start_at_rest_is_symmetric_in_time():
     f = entries(problem("-9*s", [{"t": 0.4}, {"t": -0.4}, {"v": 0}, {"s": -0.2}], s1=0.2))
     close(f[0]["s"], 0.2 * math.cos(1.2)); close(f[1]["s"], 0.2 * math.cos(1.2))

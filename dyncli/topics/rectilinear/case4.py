@@ -37,7 +37,7 @@ import math
 import numpy as np
 
 from dyncli.topics.rectilinear._quad import brentq
-from dyncli.topics.rectilinear.case4_legs import _BIG, End, Energy, Leg, _fmt
+from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End, Energy, Leg, _fmt
 from dyncli.topics.rectilinear.case4_scan import _Scan
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
@@ -48,7 +48,10 @@ class _Case4(_Scan):
         self._fn = p.a.scalar_fn()
         self.work = Work(p, 4)          # accuracy.max_steps (.work)
         self.rtol, self.atol = rtol, atol
-        self.qr = max(rtol * 1e-2, 1e-15)
+        # the quadratures' rtol: 100 x tighter, but not below what their error estimate can
+        # certify (_quad.integrate floors it at 50 eps x the integral of |f|: a tighter rtol never
+        # converges and bisects until the work budget refuses the problem, e.g. at rtol 1e-12)
+        self.qr = max(rtol * 1e-2, 100 * _EPS)
         self.s1, self.v1 = p.s1, p.v1
         if not abs(p.s1) <= 0.5 * _BIG:
             from dyncli.errors import InputError
