@@ -134,7 +134,10 @@ def references() -> dict:
     from tests.gyroscopic.gyroscope_reference_data import CASES as GREF
     from tests.top.exact_reference_data import CASES as TREF
 
-    C._rectg_error({"results": {"find": [{"s": 0, "v": 0}] * 3 + [{"t": 0, "s": 0}, {"t": 0, "v": 0}]}})
+    ts = C._rectg_times()
+    # rectilinear's error is relative (tests/accuracy/cases.py): t to the largest time, s and v
+    # to their largest magnitudes over the answers
+    sc_t, sc_s, sc_v = (float(max(abs(f(t)) for t in ts)) for f in (lambda t: t, C._osc_s, C._osc_v))
     om = 2 * C.TM * C.TG * C.TL / (C.TC * C.TP + C.mp.sqrt((C.TC * C.TP) ** 2 - 4 * C.TM * C.TG * C.TL
                                                             * (C.TA - C.TC) * C.mp.cos(C.TTH)))
     om = float(om)
@@ -142,7 +145,8 @@ def references() -> dict:
     return {
         "particle": ([float(v) for t in C.PT for xv in C._part_exact(t) for v in xv], 1.0),
         "rectilinear": ([float(f(t)) for t in (1, 3, 10) for f in (C._osc_s, C._osc_v)]
-                        + [float(C._T_V0), float(C._osc_s(C._T_V0)), float(C._T_SM), float(C._osc_v(C._T_SM))], 1.0),
+                        + [float(C._T_V0), float(C._osc_s(C._T_V0)), float(C._T_SM), float(C._osc_v(C._T_SM))],
+                        (sc_s, sc_v) * 3 + (sc_t, sc_s, sc_t, sc_v)),
         "euler": ([float(v) for t in C.ET for v in C._euler_exact(t)], 1.0),
         "top": ([v for t in C.TT for v in (om * t, float(C.TTH), float(C.TP) * t)], 1.0),
         "nutating": ([v for row in TREF["nutating"]["rows"] for v in row[:6]],
@@ -152,7 +156,7 @@ def references() -> dict:
 
 
 def script_error(values, ref) -> float:
-    """Largest absolute error (gyroscope: relative to the scales of θ and θ̇, as the case does)."""
+    """Largest error, each relative to its scale as the case measures it (1: absolute)."""
     if values is None:
         return math.inf
     ref, scale = ref

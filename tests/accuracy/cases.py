@@ -46,6 +46,13 @@ def _maxerr(pairs) -> float:
     return max(float(abs(mp.mpf(got) - ref)) for got, ref in pairs)
 
 
+def _relerr(quantities) -> float:
+    """The largest error of every quantity relative to its own scale, the largest exact
+    magnitude of that quantity over the answers (rectilinear's error_estimate: t as the time
+    since t1 = 0, s, v); ``quantities``: one list of (got, exact) pairs per quantity."""
+    return max(_maxerr(pairs) / float(max(abs(ref) for _, ref in pairs)) for pairs in quantities)
+
+
 # --- rectilinear case 3 (a = -c v): quadrature of (6.8)/(6.10) and events ----------
 C3 = mp.mpf("0.5")
 V1 = mp.mpf(10)
@@ -62,14 +69,13 @@ def _rect3_error(rec):
     s = lambda t: V1 / C3 * (1 - mp.exp(-C3 * t))   # noqa: E731
     t_v1 = mp.log(10) / C3
     t_s19 = -mp.log(1 - mp.mpf(19) * C3 / V1) / C3
-    return _maxerr([(f[0]["s"], s(2)), (f[0]["v"], v(2)), (f[1]["s"], s(7)), (f[1]["v"], v(7)),
-                    (f[2]["t"], t_v1), (f[2]["s"], s(t_v1)), (f[3]["t"], t_s19), (f[3]["v"], v(t_s19))])
+    ts = [2, 7, t_v1, t_s19]
+    return _relerr([[(f[k]["t"], t) for k, t in enumerate(ts)], [(f[k]["s"], s(t)) for k, t in enumerate(ts)],
+                    [(f[k]["v"], v(t)) for k, t in enumerate(ts)]])
 
 
 def _rect3_scipy(rtol, atol):
     """Plain scipy: t(v) = ∫ dv/a and s(v) = ∫ v dv/a with quad, the event by brentq."""
-    import math
-
     from scipy.integrate import quad
     from scipy.optimize import brentq
 
@@ -86,14 +92,14 @@ def _rect3_scipy(rtol, atol):
     def s_of(v):
         return quad(lambda u: u / a(u), 10, v, epsrel=rtol, epsabs=atol)[0]
 
-    errs = []
+    find = []
     for T in (2.0, 7.0):
         vv = brentq(lambda v: t_of(v) - T, 1e-12, 10, xtol=atol, rtol=max(rtol, 4.5e-16))
-        errs += [abs(vv - 10 * math.exp(-0.5 * T)), abs(s_of(vv) - 20 * (1 - math.exp(-0.5 * T)))]
-    errs.append(abs(t_of(1.0) - 2 * math.log(10)))
+        find.append({"t": T, "s": s_of(vv), "v": vv})
+    find.append({"t": t_of(1.0), "s": s_of(1.0), "v": 1.0})
     v19 = brentq(lambda v: s_of(v) - 19, 1e-9, 10, xtol=atol, rtol=max(rtol, 4.5e-16))
-    errs += [abs(t_of(v19) - 2 * math.log(20)), abs(v19 - 0.5)]
-    return max(errs), nfev
+    find.append({"t": t_of(v19), "s": 19.0, "v": v19})
+    return _rect3_error({"results": {"find": find}}), nfev
 
 
 # --- rectilinear general (ODE with events): a = -4 s - 0.4 v ------------------------
@@ -119,21 +125,23 @@ _T_V0 = None
 _T_SM = None
 
 
-def _rectg_error(rec):
+def _rectg_times():
+    """The exact times of the five answers: t = 1, 3, 10, the first v = 0, the first s = -0.3."""
     global _T_V0, _T_SM
     if _T_V0 is None:
         _T_V0 = mp.findroot(_osc_v, mp.mpf("0.39"))
         _T_SM = mp.findroot(lambda t: _osc_s(t) + mp.mpf("0.3"), mp.mpf("1.5"))
+    return [mp.mpf(1), mp.mpf(3), mp.mpf(10), _T_V0, _T_SM]
+
+
+def _rectg_error(rec):
     f = rec["results"]["find"]
-    pairs = []
-    for q, t in zip(f[:3], (1, 3, 10)):
-        pairs += [(q["s"], _osc_s(t)), (q["v"], _osc_v(t))]
-    pairs += [(f[3]["t"], _T_V0), (f[3]["s"], _osc_s(_T_V0)), (f[4]["t"], _T_SM), (f[4]["v"], _osc_v(_T_SM))]
-    return _maxerr(pairs)
+    ts = _rectg_times()
+    return _relerr([[(q["t"], t) for q, t in zip(f, ts)], [(q["s"], _osc_s(t)) for q, t in zip(f, ts)],
+                    [(q["v"], _osc_v(t)) for q, t in zip(f, ts)]])
 
 
 def _rectg_scipy(rtol, atol):
-    import numpy as np
     from scipy.integrate import solve_ivp
 
     def rhs(t, y):
@@ -143,18 +151,14 @@ def _rectg_scipy(rtol, atol):
     ev_s = lambda t, y: y[0] + 0.3    # noqa: E731
     sol = solve_ivp(rhs, (0, 10), [0.5, 1.0], method="DOP853", rtol=rtol, atol=atol, dense_output=True,
                     events=[ev_v, ev_s])
-    errs = []
-    for t in (1, 3, 10):
-        y = sol.sol(t)
-        errs += [abs(y[0] - float(_osc_s(t))), abs(y[1] - float(_osc_v(t)))]
-    global _T_V0, _T_SM
-    if _T_V0 is None:
-        _rectg_error({"results": {"find": [{"s": 0, "v": 0}] * 3 + [{"t": 0, "s": 0}, {"t": 0, "v": 0}]}})
+    find = [{"t": t, "s": y[0], "v": y[1]} for t, y in zip((1, 3, 10), sol.sol([1, 3, 10]).T)]
     # plain sign-change event detection misses a crossing inside one long step
     # (at loose rtol the steps span the whole dip below s = -0.3): error = inf
-    for ev, ref in ((sol.t_events[0], _T_V0), (sol.t_events[1], _T_SM)):
-        errs.append(abs(ev[0] - float(ref)) if len(ev) else float("inf"))
-    return max(errs), int(sol.nfev)
+    if not (len(sol.t_events[0]) and len(sol.t_events[1])):
+        return float("inf"), int(sol.nfev)
+    find.append({"t": sol.t_events[0][0], "s": sol.y_events[0][0][0], "v": 0.0})
+    find.append({"t": sol.t_events[1][0], "s": -0.3, "v": sol.y_events[1][0][1]})
+    return _rectg_error({"results": {"find": find}}), int(sol.nfev)
 
 
 # --- particle: gravity + linear drag (exact exponential solution) -------------------
@@ -316,8 +320,10 @@ def _ff_error(rec):
 
 
 CASES: list[Case] = [
-    Case("rectilinear quadrature + events (case 3)", "rectilinear", _rect3_yaml, _rect3_error, scipy_baseline=_rect3_scipy),
-    Case("rectilinear ODE + events (general)", "rectilinear", _rectg_yaml, _rectg_error, scipy_baseline=_rectg_scipy),
+    Case("rectilinear quadrature + events (case 3)", "rectilinear", _rect3_yaml, _rect3_error, scipy_baseline=_rect3_scipy,
+         estimate_scale=1.0),
+    Case("rectilinear ODE + events (general)", "rectilinear", _rectg_yaml, _rectg_error, scipy_baseline=_rectg_scipy,
+         estimate_scale=1.0),
     Case("particle ODE (gravity + linear drag)", "particle", _part_yaml, _part_error, scipy_baseline=_part_scipy),
     Case("top ODE (steady precession)", "top", _top_yaml, _top_error),
     # relative estimates: vibration relative to max |x| over the reported times, kinematics to D
@@ -493,4 +499,42 @@ def _gyro_error(rec):
 CASES.append(Case("gyroscope ODE (0 to π)", "gyroscope", lambda r, a, e: _gyro_yaml(r, a, e, "DOP853"), _gyro_error,
                   estimate_scale=1.0))
 CASES.append(Case("gyroscope exact (0 to π)", "gyroscope", lambda r, a, e: _gyro_yaml(r, a, e, "auto"), _gyro_error,
+                  estimate_scale=1.0))
+
+
+# rectilinear's other quadrature routes (appended: the scipy baselines above are matched by position);
+# errors relative to each quantity's scale over the answers, as the type's error_estimate
+def _rect2_yaml(rtol, atol, est):
+    # case 2, a = cos t: v = 1 + sin t, s = t + 1 - cos t (s1 = 0, v1 = 1)
+    return ("type: rectilinear\na: 'cos(t)'\nv1: 1\n"
+            "find: [{t: 2}, {t: 7}, {v: 1.5}, {s: 3}]\n" + _acc(rtol, atol, est, "quadrature"))
+
+
+def _rect2_error(rec):
+    f = rec["results"]["find"]
+    s = lambda t: t + 1 - mp.cos(t)                 # noqa: E731
+    v = lambda t: 1 + mp.sin(t)                     # noqa: E731
+    ts = [mp.mpf(2), mp.mpf(7), mp.pi / 6, mp.findroot(lambda t: s(t) - 3, 2)]
+    return _relerr([[(f[k]["t"], t) for k, t in enumerate(ts)], [(f[k]["s"], s(t)) for k, t in enumerate(ts)],
+                    [(f[k]["v"], v(t)) for k, t in enumerate(ts)]])
+
+
+def _rect4_yaml(rtol, atol, est):
+    # case 4, a = -4 s: s = 0.5 cos 2t + 0.5 sin 2t (s1 = 0.5, v1 = 1), periodic
+    return ("type: rectilinear\na: '-4*s'\ns1: 0.5\nv1: 1\n"
+            "find: [{t: 1}, {t: 7}, {v: 0}, {s: -0.3}]\n" + _acc(rtol, atol, est, "quadrature"))
+
+
+def _rect4_error(rec):
+    f = rec["results"]["find"]
+    s = lambda t: (mp.cos(2 * t) + mp.sin(2 * t)) / 2   # noqa: E731
+    v = lambda t: mp.cos(2 * t) - mp.sin(2 * t)         # noqa: E731
+    ts = [mp.mpf(1), mp.mpf(7), mp.pi / 8, mp.findroot(lambda t: s(t) + mp.mpf("0.3"), 1.2)]
+    return _relerr([[(f[k]["t"], t) for k, t in enumerate(ts)], [(f[k]["s"], s(t)) for k, t in enumerate(ts)],
+                    [(f[k]["v"], v(t)) for k, t in enumerate(ts)]])
+
+
+CASES.append(Case("rectilinear quadrature + roots (case 2)", "rectilinear", _rect2_yaml, _rect2_error,
+                  estimate_scale=1.0))
+CASES.append(Case("rectilinear quadrature + turning points (case 4)", "rectilinear", _rect4_yaml, _rect4_error,
                   estimate_scale=1.0))

@@ -23,25 +23,23 @@ refines at most ``_MAX_PANELS`` panels: an integrand it cannot resolve (an
 oscillation without bound near a pole of tan inside a) is accepted with its
 error estimate and a warning, and a non-integrable pole (1/(t - c)) ends the
 motion there like a non-finite a.
+
+This module holds the quadratures of the state and the root searches; the forward
+scan that answers the v- and s-queries is :mod:`.case2_scan`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable, brentq, integrate, roots
+from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.topics.rectilinear.case2_scan import _N0, _Scan, _fmt, _what
 from dyncli.topics.rectilinear.work import CALL as _CALL, QUAD as _QUAD, SCALAR as _SCALAR, Work
 
-_N0 = 2048
-_NMAX = 1 << 16
 _MAX_PANELS = 4000          # panels one quadrature may evaluate before it gives up refining
 
 
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
-
-
-class _Case2:
+class _Case2(_Scan):
     def __init__(self, p, ans, rtol, atol):
         self.p = p
         self.ans = ans
@@ -183,207 +181,7 @@ class _Case2:
         except NonFinite as exc:
             self.ans.unreached(i, f"{_what(exc)}, between t1 and t")
             return
-        self.ans.reached(i, T, s, v, err=max(es, ev))
-
-    # -- v and s queries: scan forward in chunks ------------------------
-    def scan(self, vq: dict[int, float], sq: dict[int, float]) -> None:
-        p, ans = self.p, self.ans
-        t1, s1, v1 = p.t1, p.s1, p.v1
-        for i, V in list(vq.items()):
-            if V == v1:
-                ans.reached(i, t1, s1, v1)
-                del vq[i]
-        for i, S in list(sq.items()):
-            if S == s1:
-                ans.reached(i, t1, s1, v1)
-                del sq[i]
-        if not vq and not sq:
-            return
-        H = p.t_max
-        edges = t1 + H * np.concatenate([[0.0], 2.0 ** -np.arange(12, -1, -1)])
-        tc, sc, vc = t1, s1, v1
-        vmin = vmax = v1
-        smin = smax = s1
-        stop_reason = None
-        for ca, cb in zip(edges[:-1], edges[1:]):
-            if not vq and not sq:
-                break
-            try:
-                (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s, stop) = self._chunk(ca, cb, sc, vc, vq, sq)
-            except NonFinite as exc:
-                # a pole inside the chunk that the sampling missed (only the quadrature's nodes or
-                # the bisection met it): scan up to just before it, then stop
-                x = exc.x if ca < exc.x <= cb else cb
-                cut = ca + (x - ca) * (1 - 1e-9)
-                stop = _what(exc)
-                try:
-                    (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s, _) = self._chunk(ca, cut, sc, vc, vq, sq) \
-                        if cut > ca else (ca, sc, vc, vc, vc, sc, sc, None)
-                except NonFinite:
-                    (tc2, sc2, vc2, lo_v, hi_v, lo_s, hi_s) = (ca, sc, vc, vc, vc, sc, sc)
-            tc, sc, vc = tc2, sc2, vc2
-            vmin, vmax = min(vmin, lo_v), max(vmax, hi_v)
-            smin, smax = min(smin, lo_s), max(smax, hi_s)
-            if stop:
-                stop_reason = stop
-                break
-        horizon = stop_reason or f"search horizon t1 + t_max = {_fmt(t1 + H)}"
-        for i, V in vq.items():
-            ans.unreached(i, f"v stays within [{_fmt(vmin)}, {_fmt(vmax)}] for t1 <= t <= {_fmt(tc)} ({horizon})")
-        for i, S in sq.items():
-            ans.unreached(i, f"s stays within [{_fmt(smin)}, {_fmt(smax)}] for t1 <= t <= {_fmt(tc)} ({horizon})")
-
-    def _samples(self, ca: float, cb: float):
-        n = _N0
-        while True:
-            x = np.linspace(ca, cb, n + 1)
-            ax = self.A(x)
-            bad = ~np.isfinite(ax)
-            changes = int(np.count_nonzero(np.signbit(ax[:-1]) != np.signbit(ax[1:])))
-            if bad.any() or changes <= n // 16 or n >= _NMAX:
-                if changes > n // 16 and not bad.any():
-                    self.ans.res.warn("a changes sign very often; crossings closer than the sampling step "
-                                      f"{_fmt((cb - ca) / n)} s may be missed")
-                return x, ax
-            n *= 4
-
-    def _chunk(self, ca, cb, sc, vc, vq, sq):
-        """Scan [ca, cb] starting from the state (sc, vc); answer what is crossed."""
-        x, ax = self._samples(ca, cb)
-        stop = None
-        bad = ~np.isfinite(ax)
-        if bad.any():
-            k = int(np.argmax(bad))
-            stop = f"a is not finite at t = {_fmt(x[k])}"
-            if k <= 1:
-                return ca, sc, vc, vc, vc, sc, sc, stop
-            x, ax = x[:k], ax[:k]
-            cb = float(x[-1])
-        # extrema of v: sign changes of a
-        sb = np.signbit(ax)
-        ks = np.nonzero(sb[:-1] != sb[1:])[0]
-        ks = ks[ax[ks + 1] != 0]              # a zero sample is itself the root (ax[k] == 0: root x[k])
-        rts = roots(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
-        rts = rts[(rts > ca) & (rts < cb)]
-        Bv = np.unique(np.concatenate([[ca], rts, [cb]]))
-        vals, errs, conv = self.integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv))
-        self._check(conv)
-        vB = vc + np.concatenate([[0.0], np.cumsum(vals)])
-        evB = self.ev_c + np.concatenate([[0.0], np.cumsum(errs)])
-        self._v_queries(vq, Bv, vB, ca, sc, vc)
-        if not sq:
-            # no position queries left: s only at the chunk end (for the next chunk and the range)
-            h = float(cb - ca)
-            s_end, _, es_end, _ = self.state(cb, ca, sc, vc) if h else (sc, vc, 0.0, 0.0)
-            self.es_c += es_end + self.ev_c * abs(h)
-            self.ev_c = float(evB[-1])
-            return (cb, float(s_end), float(vB[-1]), float(vB.min()), float(vB.max()),
-                    float(min(sc, s_end)), float(max(sc, s_end)), stop)
-        Bs, vs = self._s_breaks(Bv, vB, ca, cb, vc)
-        h = np.diff(Bs)
-        ends = Bs[1:]
-        vals2, errs2, conv2 = self.integrate(lambda t, j: (ends[j] - t) * self.A(t), Bs[:-1], h)
-        self._check(conv2)
-        sB = sc + np.concatenate([[0.0], np.cumsum(vs[:-1] * h + vals2)])
-        esB = self.es_c + self.ev_c * (Bs - ca) + np.concatenate([[0.0], np.cumsum(errs2 + float(evB.max()) * h)])
-        self._s_queries(sq, Bs, sB, vs, esB, evB)
-        self.es_c = float(esB[-1])
-        self.ev_c = float(evB[-1])
-        return (cb, float(sB[-1]), float(vB[-1]), float(vB.min()), float(vB.max()),
-                float(sB.min()), float(sB.max()), stop)
-
-    def _v_queries(self, vq, Bv, vB, ca, sc, vc) -> None:
-        """Answer (and remove from ``vq``) the v queries crossed on the pieces Bv of the chunk
-        (interior breakpoints are extrema of v)."""
-        ans = self.ans
-        for i, V in list(vq.items()):
-            for k in range(len(Bv) - 1):
-                lo, hi = min(vB[k], vB[k + 1]), max(vB[k], vB[k + 1])
-                tol = self.rtol * max(abs(V), abs(lo), abs(hi)) + self.atol
-                tb, vb = float(Bv[k]), float(vB[k])
-                ext = k + 1 < len(Bv) - 1
-                if ext and abs(V - vB[k + 1]) <= tol:
-                    t, graze = float(Bv[k + 1]), True     # target = extremum (grazing)
-                elif lo <= V <= hi:
-                    t, graze = self.vroot(tb, vb, float(Bv[k + 1]), float(vB[k + 1]), V), False
-                else:
-                    continue
-                if not ans.beyond_t_max(i, t):
-                    s, v, es, ev = self.state(t, ca, sc, vc)
-                    es += self.es_c + self.ev_c * abs(t - ca)
-                    ev += self.ev_c
-                    at = abs(self.a1(t))
-                    ans.reached(i, t, s, v, err=max(es, ev, ev / at if (at > 0 and not graze) else 0.0))
-                del vq[i]
-                break
-
-    def _s_breaks(self, Bv, vB, ca, cb, vc):
-        """The breakpoints of s on the chunk (its ends and the zeros of v inside the monotone
-        pieces of v, i.e. the extrema of s) and v there: (Bs, vs) arrays."""
-        Bs, vs = [ca], [vc]
-        last = len(Bv) - 1
-        pend = []                       # pieces with a sign change of v: one vectorised root search
-        for k in range(last):
-            va, vb_ = vB[k], vB[k + 1]
-            if va != 0 and vb_ != 0 and (va > 0) != (vb_ > 0):
-                # v grazing 0 at an extremum of v (a double zero, e.g. v = c(1 - cos ωt)): the
-                # sign change is quadrature noise within the tolerance; the zero is the extremum
-                # itself (a root search there converges only slowly on the noise)
-                tolz = self.rtol * max(abs(va), abs(vb_)) + self.atol
-                if 0 < k + 1 < last and abs(vb_) <= tolz:
-                    Bs.append(float(Bv[k + 1]))
-                    continue
-                if 0 < k and abs(va) <= tolz:
-                    continue
-                pend.append(k)
-            elif vb_ == 0 and 0 < k + 1 < len(Bv) - 1:
-                Bs.append(float(Bv[k + 1]))
-        if pend:
-            pk = np.array(pend)
-            t0, v0 = Bv[pk], vB[pk]
-
-            def fv(t, j):
-                vals, errs, conv = self.integrate(lambda x, i: self.A(x), t0[j], t - t0[j])
-                self._check(conv)
-                return v0[j] + vals
-
-            Bs.extend(float(r) for r in roots(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
-        Bs = sorted(set(b for b in Bs[1:] if ca < b < cb))
-        Bs = [ca] + Bs
-        vs = [vc] + [0.0] * (len(Bs) - 1)
-        Bs.append(cb)
-        vs.append(float(vB[-1]))
-        return np.array(Bs), np.array(vs)
-
-    def _s_queries(self, sq, Bs, sB, vs, esB, evB) -> None:
-        """Answer (and remove from ``sq``) the s queries crossed on the pieces Bs of the chunk
-        (interior breakpoints are turning points)."""
-        ans = self.ans
-        for i, S in list(sq.items()):
-            for k in range(len(Bs) - 1):
-                lo, hi = min(sB[k], sB[k + 1]), max(sB[k], sB[k + 1])
-                tol = self.rtol * max(abs(S), abs(lo), abs(hi)) + self.atol
-                tb, sb_, vb = float(Bs[k]), float(sB[k]), float(vs[k])
-                ext = k + 1 < len(Bs) - 1
-                if ext and abs(S - sB[k + 1]) <= tol:
-                    t, graze = float(Bs[k + 1]), True      # target = turning point
-                elif lo <= S <= hi:
-                    t, graze = self.root("s", S, tb, sb_, vb, float(Bs[k + 1]), float(sB[k + 1]), float(vs[k + 1])), False
-                else:
-                    continue
-                if not ans.beyond_t_max(i, t):
-                    s, v, es, ev = self.state(t, tb, sb_, vb)
-                    es += float(esB[k]) + float(evB.max()) * abs(t - tb)
-                    ev += float(evB.max())
-                    ans.reached(i, t, s, v, err=max(es, ev, es / abs(v) if (v != 0 and not graze) else 0.0))
-                del sq[i]
-                break
-
-
-def _what(exc: NonFinite) -> str:
-    if isinstance(exc, NotIntegrable):
-        return f"a is not integrable near t = {_fmt(exc.x)} (a pole: the velocity diverges there)"
-    return f"a is not finite at t = {_fmt(exc.x)}"
+        self.ans.reached(i, T, s, v, err=(0.0, es, ev))
 
 
 def solve(p, ans, rtol: float, atol: float) -> str:

@@ -113,7 +113,7 @@ class _Case3:
             tt, ds, v, (et, es) = b.at(u)
             # an error et in t(u) moves the answer along the trajectory: v by |a| et;
             # s and t(u) share their integrand, so s moves by about |v| et + es
-            ans.reached(i, T, p.s1 + ds, v, err=max(abs(self.a1(v)) * et, es + abs(v) * et))
+            ans.reached(i, T, p.s1 + ds, v, err=(0.0, es + abs(v) * et, abs(self.a1(v)) * et))
             return
         when = "after" if tau > 0 else "before"
         if b.kind == "zero":
@@ -163,7 +163,7 @@ class _Case3:
         tau, ds, v, (et, es) = b.at(u)
         t = p.t1 + tau
         if not ans.beyond_t_max(i, t):
-            ans.reached(i, t, p.s1 + ds, V, err=max(et, es))
+            ans.reached(i, t, p.s1 + ds, V, err=(et, es, 0.0))
 
     def s_query(self, i: int, S: float) -> None:
         p, ans = self.p, self.ans
@@ -201,7 +201,9 @@ class _Case3:
             tau, dss, v, (et, es) = b.at(u)
             t = p.t1 + tau
             if not ans.beyond_t_max(i, t):
-                ans.reached(i, t, p.s1 + dss, v, err=max(et + (es / abs(v) if v else 0.0), es))
+                # s = S is found within es: t is off by es / |v| more, v by |a| times that
+                dt = et + (es / abs(v) if v else 0.0)
+                ans.reached(i, t, p.s1 + dss, v, err=(dt, es, abs(self.a1(v)) * dt))
             return
         last_s = float(ds[-1])
         if b.kind == "zero" and b.v_end != 0 and (target - last_s) * b.v_end > 0:

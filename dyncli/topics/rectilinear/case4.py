@@ -37,7 +37,7 @@ import math
 import numpy as np
 
 from dyncli.topics.rectilinear._quad import brentq
-from dyncli.topics.rectilinear.case4_legs import _BIG, End, Energy, Leg, _fmt
+from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End, Energy, Leg, _fmt
 from dyncli.topics.rectilinear.case4_scan import _Scan
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
@@ -48,7 +48,10 @@ class _Case4(_Scan):
         self._fn = p.a.scalar_fn()
         self.work = Work(p, 4)          # accuracy.max_steps (.work)
         self.rtol, self.atol = rtol, atol
-        self.qr = max(rtol * 1e-2, 1e-15)
+        # the quadratures' rtol: 100 x tighter, but not below what their error estimate can
+        # certify (_quad.integrate floors it at 50 eps x the integral of |f|: a tighter rtol never
+        # converges and bisects until the work budget refuses the problem, e.g. at rtol 1e-12)
+        self.qr = max(rtol * 1e-2, 100 * _EPS)
         self.s1, self.v1 = p.s1, p.v1
         if not abs(p.s1) <= 0.5 * _BIG:
             from dyncli.errors import InputError
@@ -182,8 +185,9 @@ class _Case4(_Scan):
         if s is None:
             self.ans.unreached(i, self._reason_end(end, self.p.t1 + (t_end if forward else -t_end), forward))
             return
-        err = self.last_err * max(abs(v), abs(self.a1(s)))
-        self.ans.reached(i, T, s, v, err=err)
+        # an error e of the time along the leg moves the state along the trajectory: s by |v| e, v by |a| e
+        e = self.last_err
+        self.ans.reached(i, T, s, v, err=(0.0, abs(v) * e, abs(self.a1(s)) * e))
 
     def _time_on(self, k: int, s: float) -> float:
         """Time after t1 at which leg k of the forward sequence passes s."""
@@ -213,7 +217,7 @@ class _Case4(_Scan):
                 err = self.last_err
                 if not ans.beyond_t_max(i, t):
                     s, v, _, _ = self.state(t)
-                    ans.reached(i, t, S, v if s is not None else 0.0, err=err)
+                    ans.reached(i, t, S, v if s is not None else 0.0, err=(err, 0.0, 0.0))
                 return
         ends = [self.endF] + ([self.endB] if self.endF.kind == "turn" else [])
         ans.unreached(i, "it lies beyond the reachable positions: " + "; ".join(e.describe() for e in ends))
@@ -240,7 +244,7 @@ class _Case4(_Scan):
             if hit is not None:
                 t = p.t1 + self._time_on(k, hit)
                 if not ans.beyond_t_max(i, t):
-                    ans.reached(i, t, hit, V, err=self.last_err)
+                    ans.reached(i, t, hit, V, err=(self.last_err, 0.0, 0.0))
                 return
         v2s = np.concatenate([self.scans[leg.e]["v2"] for leg, _, _ in self.fwd])
         lo, hi = math.sqrt(max(float(v2s.min()), 0.0)), math.sqrt(max(float(v2s.max()), 0.0))

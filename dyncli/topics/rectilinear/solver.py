@@ -57,7 +57,8 @@ class Answers:
         self.p = p
         self.res = res
         self.items: list[dict | None] = [None] * len(p.find)
-        self.err = 0.0
+        #: the absolute error bounds (t, s, v) of each reached answer (quadrature routes)
+        self.errs: list[tuple] = []
         #: how a query is named in warnings (its index in the user's list; see _distinct)
         self.labels = getattr(p, "_labels", None) or [f"find[{i}]" for i in range(len(p.find))]
 
@@ -65,14 +66,43 @@ class Answers:
         val = self.p.a(t=t, s=s, v=v)
         return float(val)
 
-    def reached(self, i: int, t: float, s: float, v: float, err: float = 0.0, a: float | None = None) -> None:
+    def reached(self, i: int, t: float, s: float, v: float, err=(0.0, 0.0, 0.0), a: float | None = None) -> None:
+        """Answer query i with the state (t, s, v); ``err``: the absolute error bounds of t, s
+        and v (the quadrature routes' propagated estimates)."""
         t, s, v = float(t), float(s), float(v)
         a = self.acc(t, s, v) if a is None else float(a)
         if not all(math.isfinite(x) for x in (t, s, v, a)):
             self.unreached(i, f"the state is not finite there (t = {t!r}, s = {s!r}, v = {v!r})")
             return
         self.items[i] = {"t": t, "s": s, "v": v, "a": a, "reached": True}
-        self.err = max(self.err, float(err))
+        if any(err):
+            self.errs.append(tuple(float(e) for e in err))
+
+    def relative_error(self) -> float:
+        """The largest error bound of t, s, v over the answers, each relative to its own scale
+        (the largest |t - t1|, |s|, |v| over the reached answers; at least atol for s and v):
+        the quadrature routes' error_estimate, in the terms of :func:`dyncli.ode.relative_difference`."""
+        if not self.errs:
+            return 0.0
+        got = [x for x in self.items if x is not None and x["reached"]]
+        floor = self.p.accuracy.atol
+        scales = (max(abs(x["t"] - self.p.t1) for x in got),
+                  max([abs(x["s"]) for x in got] + [floor]), max([abs(x["v"]) for x in got] + [floor]))
+        worst = 0.0
+        for err in self.errs:
+            for e, sc in zip(err, scales):
+                if e > 0 and sc > 0:
+                    worst = max(worst, e / sc)
+        return worst
+
+    def at_start(self, vq: dict, sq: dict) -> None:
+        """Answer (and remove) the v and s queries equal to the initial state: at t1 itself."""
+        p = self.p
+        for queries, x1 in ((vq, p.v1), (sq, p.s1)):
+            for i, X in list(queries.items()):
+                if X == x1:
+                    self.reached(i, p.t1, p.s1, p.v1)
+                    del queries[i]
 
     def unreached(self, i: int, reason: str) -> None:
         q = self.p.find[i]
@@ -165,26 +195,25 @@ def _solve(p) -> Result:
 
     import numpy as np
 
+    from dyncli import ode
+
     rtol, atol = p.accuracy.rtol, p.accuracy.atol
     with np.errstate(all="ignore"):
         res, ans = run(rtol, atol)
     res.results["find"] = ans.items
-    res.error_estimate = ans.err
-    if p.accuracy.estimate or route != "quadrature":
-        # a second solve 100 times tighter (the runner's check solve, ode.check_solve: the ODE route
-        # always, the quadrature routes with accuracy.estimate); the largest change of any answer
-        # estimates the error of the reported answers.  When the tighter ODE solve exceeds the step
-        # budget, a 10 times looser one gives a conservative bound instead (the runner's one
-        # fallback); the quadrature routes have none (their work meter refuses the problem).
-        from dyncli import ode
-
+    bound = ans.relative_error()
+    if route == "quadrature":
+        # the quadratures' propagated error bounds, each relative to its answer's scale
+        res.error_estimate = bound
+    if p.accuracy.estimate:
+        # the runner's check solve (ode.check_solve: rtol/CHECK_DIV and its one fallback, also
+        # when the quadratures' work meter refuses the tighter run: work.OverWork is an OverBudget)
         with np.errstate(all="ignore"):
-            if route == "quadrature":
-                check = (run(rtol * 1e-2, atol * 1e-2), "tighter")
-            else:
-                check = ode.check_solve(res, run, rtol, atol)
+            check = ode.check_solve(res, run, rtol, atol)
         if check is not None:
-            res.error_estimate = max(_difference(ans.items, check[0][1].items), ans.err)
+            res.error_estimate = max(_difference(p, ans.items, check[0][1].items), bound)
+    elif route != "quadrature":
+        ode.nominal_estimate(res, rtol)
     res.extra["sample"] = lambda times: sample(p, times)
     return res
 
@@ -229,16 +258,18 @@ def sample(p, times) -> list[dict]:
     return ans.items
 
 
-def _difference(a: list, b: list) -> float:
-    d = 0.0
-    for x, y in zip(a, b):
-        if x is None or y is None or x["reached"] != y["reached"]:
-            continue
-        if not x["reached"]:
-            continue
-        for k in ("t", "s", "v", "a"):
-            d = max(d, abs(x[k] - y[k]))
-    return d
+def _difference(p, a: list, b: list) -> float:
+    """ode.relative_difference over the answers reached in both runs: t (as the time elapsed
+    since t1), s, v and a, each relative to its own scale (s, v, a: at least atol)."""
+    both = [(x, y) for x, y in zip(a, b) if x is not None and y is not None and x["reached"] and y["reached"]]
+    if not both:
+        return 0.0
+    from dyncli import ode
+
+    shift = {"t": p.t1, "s": 0.0, "v": 0.0, "a": 0.0}
+    pairs = [([x[k] - shift[k] for x, _ in both], [y[k] - shift[k] for _, y in both]) for k in shift]
+    floor = p.accuracy.atol
+    return ode.relative_difference(pairs, [0.0, floor, floor, floor])
 
 
 # ---------------------------------------------------------------------------

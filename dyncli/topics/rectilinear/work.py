@@ -5,12 +5,12 @@ Every evaluation of a is counted, plus the Python overhead of each call
 ``STEP`` · ``accuracy.max_steps`` evaluations' worth (one step = two 30-point
 quadrature panels, ``PER_STEP`` of them in cases 3 and 4; default
 ``dyncli.ode.MAX_STEPS``), else NumericalError (exit 1) with one message
-naming the budget: a few tenths of a second to ~1.5 s of CPU at the default.
+naming the budget (:class:`OverWork`, the runner's OverBudget): a few tenths of a second to ~1.5 s of CPU at the default.
 """
 
 from __future__ import annotations
 
-from dyncli.errors import NumericalError
+from dyncli import ode
 
 STEP = 60                   # evaluations of a per budget step (two 30-point quadrature panels)
 # the Python overhead of one call, in evaluations of a (vectorised evaluation ~0.1 µs a point;
@@ -24,12 +24,18 @@ PER_POINT = {2: 1.0, 3: 1 / 32, 4: 1 / 32}
 PER_STEP = {2: 1, 3: 2, 4: 2}
 
 
+class OverWork(ode.OverBudget):
+    """A quadrature solve refused by its work budget: the runner's :class:`dyncli.ode.OverBudget`,
+    so that a check solve over the budget takes the runner's one fallback (ode.check_solve)."""
+
+    def __init__(self, message: str):
+        Exception.__init__(self, message)
+
+
 class Work:
     """Counts the work of one solve of case ``case`` against its budget."""
 
     def __init__(self, p, case: int):
-        from dyncli import ode
-
         self.case = case
         self.steps = int(p.accuracy.max_steps or ode.MAX_STEPS)
         self.limit = STEP * self.steps * PER_STEP.get(case, 1)
@@ -42,7 +48,7 @@ class Work:
     def charge(self, n: int, where: str = "") -> None:
         self.n += n
         if self.n > self.limit:
-            raise NumericalError(
+            raise OverWork(
                 f"case {self.case}: the quadratures and root searches need more than {self.steps} steps{where} "
                 f"(one step: {STEP} evaluations of a, or the same work in call overhead), more than the budget "
                 f"of {self.steps}: shorten the time span (t_max), loosen accuracy.rtol, or raise accuracy.max_steps")
