@@ -64,7 +64,8 @@ def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_pane
     a non-integrable one raises :class:`NotIntegrable`.
     ``info`` (a dict), when given, receives ``x_bad``: the middle of the
     unconverged piece with the largest error estimate."""
-    # (one vectorised adaptive loop over a dozen parallel arrays of pieces; split, they would travel as arguments)
+    # (over 60 lines on purpose: one vectorised adaptive loop over a dozen parallel arrays of pieces;
+    # split, they would travel as arguments)
     lo = np.atleast_1d(np.asarray(lo, dtype=float))
     width = np.broadcast_to(np.asarray(width, dtype=float), lo.shape).astype(float)
     m = lo.size

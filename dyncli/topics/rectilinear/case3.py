@@ -212,6 +212,11 @@ class _Case3:
             if not ans.beyond_t_max(i, t):
                 ans.reached(i, t, S, b.v_end)
             return
+        ans.unreached(i, f"s never attains it: {self._s_unreached(b, ds, last_s)}")
+
+    def _s_unreached(self, b: Branch, ds, last_s: float) -> str:
+        """Why the branch never attains a queried position."""
+        p = self.p
         smin, smax = p.s1 + float(ds.min()), p.s1 + float(ds.max())
         if b.kind == "zero" and b.v_end == 0:
             if b.finite_time:
@@ -225,7 +230,7 @@ class _Case3:
         else:
             why = (f"the motion ends at t ≈ {_fmt(p.t1 + float(b.tau[-1]))} ({self._end_text(b)}) "
                    f"with s within [{_fmt(smin)}, {_fmt(smax)}]")
-        ans.unreached(i, f"s never attains it: {why}")
+        return why
 
 
 def _at_rest_within_input(c) -> bool:
