@@ -223,8 +223,8 @@ def _read_check(af: AnswerFile, doc: Document, item: Any, prefix: tuple, index: 
         except _Bad as exc:
             af.diagnostics.append(diag(exc.path, exc.message, exc.key))
             ok = False
-    if "answers" not in item:
-        af.diagnostics.append(diag(prefix, "missing 'answers': a mapping key: value (keys are dotted paths into the results, e.g. find.1.t)"))
+    if _missing(af, item, "answers", prefix, diag,
+                "a mapping key: value (keys are dotted paths into the results, e.g. find.1.t)"):
         ok = False
     else:
         ans = item["answers"]
@@ -240,22 +240,28 @@ def _read_check(af: AnswerFile, doc: Document, item: Any, prefix: tuple, index: 
 
 def _read_problem(af: AnswerFile, doc: Document, item: dict, prefix: tuple, spec: CheckSpec, diag) -> bool:
     """A check's ``problem``: a file path (relative to the answer file) or an inline mapping."""
-    ok = True
-    if "problem" not in item:
-        af.diagnostics.append(diag(prefix, "missing 'problem': a problem file path (relative to this file) or an inline problem mapping"))
-        ok = False
+    if _missing(af, item, "problem", prefix, diag,
+                "a problem file path (relative to this file) or an inline problem mapping"):
+        return False
+    p = item["problem"]
+    pos = doc.value_pos(prefix + ("problem",))
+    spec.line, spec.col = pos if pos else (None, None)
+    if isinstance(p, str) and p.strip():
+        spec.problem_ref = p.strip()
+    elif isinstance(p, dict):
+        spec.problem_inline = p
     else:
-        p = item["problem"]
-        pos = doc.value_pos(prefix + ("problem",))
-        spec.line, spec.col = pos if pos else (None, None)
-        if isinstance(p, str) and p.strip():
-            spec.problem_ref = p.strip()
-        elif isinstance(p, dict):
-            spec.problem_inline = p
-        else:
-            af.diagnostics.append(diag(prefix + ("problem",), "'problem' must be a file path or an inline problem mapping", key=False))
-            ok = False
-    return ok
+        af.diagnostics.append(diag(prefix + ("problem",), "'problem' must be a file path or an inline problem mapping", key=False))
+        return False
+    return True
+
+
+def _missing(af: AnswerFile, item: dict, key: str, prefix: tuple, diag, what: str) -> bool:
+    """True (with the diagnostic "missing 'key': what") when a check lacks ``key``."""
+    if key in item:
+        return False
+    af.diagnostics.append(diag(prefix, f"missing '{key}': {what}"))
+    return True
 
 
 def _read_selection(af: AnswerFile, item: dict, prefix: tuple, spec: CheckSpec, diag) -> bool:
