@@ -57,7 +57,8 @@ def solve(p, options=None) -> Result:
     else:
         from dyncli.topics.top import ode_route
 
-        out = ode_route.route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales)
+        out = ode_route.route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales,
+                              state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot), bounds=(th_min, th_max))
         res.extra["sample"] = lambda ts: _resample(p, ts)
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out
     _report_motion(res, p, out)
