@@ -76,14 +76,15 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
             res.error_estimate = 0.0
         return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, math.inf)[0]
     check_budget(p, T, Wfast, Wp, float(y0[6]), top.C, top.A, EPS)
-    cap = 1.0 / Wfast if bounds[1] > bounds[0] and Wfast > 0 else math.inf
     red = Reduced(top, state, bounds, Wp)
-    if method == "projected" or not usable(top, *bounds, red.w3, red.b, Wp, Wfast, rtol):
-        def run_at(r, a):
-            return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, r, a, cap)
-    else:
-        def run_at(r, a):
-            return _reduced_run(red, p, ts, inv, method, scales, r, a, cap)
+    quat = method == "projected" or not usable(top, *bounds, red.w3, red.b, Wp, Wfast, rtol)
+
+    def run_at(r, a):
+        h = step_cap(bounds, Wfast, method, r / rtol)
+        if quat:
+            return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, r, a, h)
+        return _reduced_run(red, p, ts, inv, method, scales, r, a, h)
+
     out, drifts = run_at(rtol, atol)
     if p.accuracy.estimate:
         check = ode.check_solve(res, lambda r, a: run_at(r, a)[0], rtol, atol)
@@ -98,6 +99,16 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
     else:
         ode.nominal_estimate(res, rtol, *drifts)
     return out
+
+
+def step_cap(bounds, Wfast, method, ratio=1.0):
+    """The largest step while the axis nutates: 1/W (W the fastest rate), times ratio^(1/order) for
+    a run at ``ratio`` × rtol (the step an error ∝ h^order scales by), so that a check solve's
+    capped steps are as much shorter as its uncapped ones (with the same cap both runs would make
+    the same capped-step error, and their difference would miss it).  No cap in steady precession."""
+    if not (bounds[1] > bounds[0] and Wfast > 0):
+        return math.inf
+    return ratio ** (1.0 / (8.0 if method in ("DOP853", "projected") else 5.0)) / Wfast
 
 
 #: indices of the reported quantities in a run's output (ψ, θ, φ, ψ̇, θ̇, φ̇, R; not S, drift, ...)
