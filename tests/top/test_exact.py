@@ -99,7 +99,7 @@ def test_ode_and_exact_routes_check_each_other(estimate):
     err = max(_errors(ode, rows).values())
     if estimate:        # the check solve at rtol/100: its own error is ~1/60 of the reported run's
         assert 0.9 * err <= ode["error_estimate"] <= 1.5 * err, (ode["error_estimate"], err)
-    else:               # one solve over ~22 nutation periods: within the stated 10 x rtol of the nominal estimate
+    else:               # one solve over ~11 nutation periods: within the stated 10 x rtol of the nominal estimate
         assert ode["error_estimate"] == 1e-10 and err <= 10 * 1e-10, err
 
 
