@@ -11,14 +11,15 @@ error_estimate: the runner's policy (dyncli/ode.py, docs/accuracy.md).  With
 accuracy.estimate, a check solve (:func:`dyncli.ode.check_solve`: rtol/100, its one
 fallback) and :func:`dyncli.ode.relative_difference` over ψ, θ, φ, ψ̇, θ̇, φ̇ and R, each
 relative to its own scale over the requested times (θ̇ and ψ̇ at least a tenth of
-|ω⊥|max, the transverse-rate bound from the energy integral: in steady precession θ̇ is
-rounding and no scale of its own).  Without it (the default), one solve and
+|ω⊥|max, the transverse-rate bound from the energy integral: in steady precession θ̇ ≡ 0,
+its computed values are the integrator's own error and no scale of their own).  Without it (the default), one solve and
 :func:`dyncli.ode.nominal_estimate` with the relative drifts of the invariants (E; with the
 quaternion form also H_O·e3 and ω3; the reduced form keeps p_ψ and ω3 exactly).
 
 Both forms cap the step at h ≤ 1/W (W the fastest rate) while the axis nutates: with
 longer steps DOP853's error estimator underestimates (module docstring of
-:mod:`dyncli.topics.top.reduced`).
+:mod:`dyncli.topics.top.reduced`); a check solve's cap shrinks with its tolerance
+(:func:`step_cap`).
 """
 
 from __future__ import annotations
