@@ -1,5 +1,6 @@
-"""The `top`'s integrator (the ODE route): the motion of the heavy symmetric top (notes
-§38, equations 38.18) integrated with continuous Euler angles.
+"""The `top`'s integrator next to the vertical (the ODE route's quaternion form; away from it
+the route integrates the reduced equations of :mod:`dyncli.topics.top.reduced`): the motion
+of the heavy symmetric top (notes §38, equations 38.18) with continuous Euler angles.
 
 Numerical route (numpy; scipy imported lazily inside :func:`integrate`)
 -----------------------------------------------------------------------
