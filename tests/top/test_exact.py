@@ -75,29 +75,32 @@ def test_exact_route_at_one_million_seconds():
     assert max(err.values()) <= rec["error_estimate"] <= 1e-7, (rec["error_estimate"], err)
 
 
-@pytest.mark.slow      # the ODE route: ~3300 rad of nutation, five runs of its global error control (~7 s CPU)
+@pytest.mark.slow      # the ODE route: ~530 nutation periods, a run and its check solve (~3 s CPU)
 def test_issue_top_rates_on_both_routes():
     # m 0.5, L 0.04, I11 1.2e-3, I33 4e-4, θ 1, φ̇ 5000, rtol 1e-8: θ̇(2 s) = 0.0089363826 (elliptic)
     case = CASES["spin5000"]
     for method in ("auto", "DOP853"):
-        rec = solve_one_text(_text(case, extra=f"accuracy: {{rtol: 1.0e-8, method: {method}}}\n"))
-        strict = _errors(rec, case["rows"])          # θ̇ relative to its own largest value at the times
-        assert max(strict.values()) <= 1e-8, (method, strict)
-        wp = ref.wperp_max(0.5, 0.04, 1.2e-3, 9.81, 1.0, 0.0, 0.0, case["theta_max"])
-        err = _errors(rec, case["rows"], wp if method == "DOP853" else 0.0)
-        assert rec["error_estimate"] >= max(err.values()), (method, rec["error_estimate"], err)
+        rec = solve_one_text(_text(case, extra=f"accuracy: {{rtol: 1.0e-8, method: {method}, estimate: true}}\n"))
+        err = _errors(rec, case["rows"])          # θ̇ relative to its own largest value at the times
         if method == "auto":
+            assert max(err.values()) <= 1e-8, (method, err)
             assert rec["results"]["theta_dot"][-1] == pytest.approx(0.0089363826, abs=5e-11)    # 8 digits quoted
+        # the ODE's global error grows with the ~530 nutation periods (~600 rtol here): the check solve says so
+        assert rec["error_estimate"] >= 0.9 * max(err.values()), (method, rec["error_estimate"], err)
 
 
-def test_ode_and_exact_routes_check_each_other():
+@pytest.mark.parametrize("estimate", [False, True])
+def test_ode_and_exact_routes_check_each_other(estimate):
     case = CASES["nutating"]
     ex = solve_one_text(_text(case))
-    ode = solve_one_text(_text(case, extra="accuracy: {rtol: 1.0e-10, method: DOP853}\n"))
+    ode = solve_one_text(_text(case, extra=f"accuracy: {{rtol: 1.0e-10, method: DOP853, estimate: {str(estimate).lower()}}}\n"))
     assert ode["method"] == "ode:DOP853"
     rows = [[ex["results"][n][i] for n in NAMES] + [ex["results"]["R"][i]] for i in range(len(case["times"]))]
-    err = _errors(ode, rows)
-    assert max(err.values()) <= ode["error_estimate"] <= 1e-10, (ode["error_estimate"], err)
+    err = max(_errors(ode, rows).values())
+    if estimate:        # the check solve at rtol/100: its own error is ~1/60 of the reported run's
+        assert 0.9 * err <= ode["error_estimate"] <= 1.5 * err, (ode["error_estimate"], err)
+    else:               # one solve over ~11 nutation periods: within the stated 10 x rtol of the nominal estimate
+        assert ode["error_estimate"] == 1e-10 and err <= 10 * 1e-10, err
 
 
 def test_sleeping_top():
@@ -182,13 +185,13 @@ def test_pendulum_through_the_bottom_jumps_by_pi():
 @given(th=st.floats(0.05, math.pi - 0.05), thd=st.floats(-5, 5), psd=st.floats(-10, 10),
        phd=st.floats(-300, 300), ratio=st.floats(0.05, 1.95))
 def test_random_tops_exact_and_ode_agree(th, thd, psd, phd, ratio):
-    # each route checks the other: the ODE (DOP853, rtol 1e-9) within its own error_estimate of the exact
+    # each route checks the other: the ODE (DOP853, rtol 1e-9, check solve) within its own error_estimate of the exact
     # route, every quantity relative to its scale (ψ̇, φ̇ only away from the vertical, where they are defined)
     A, C = 2.0e-3, ratio * 1.0e-3
     txt = (f"type: top\nm: 0.5\nL: 0.05\nI11: {A}\nI33: {C!r}\ntheta: {th!r}\ntheta_dot: {thd!r}\n"
            f"psi_dot: {psd!r}\nphi_dot: {phd!r}\nat: [0.05, 0.13, 0.2]\n")
     ex = solve_one_text(txt)
-    ode = solve_one_text(txt + "accuracy: {rtol: 1.0e-9, method: DOP853}\n")
+    ode = solve_one_text(txt + "accuracy: {rtol: 1.0e-9, method: DOP853, estimate: true}\n")
     re_, ro = ex["results"], ode["results"]
     if min(re_["theta_min"], math.pi - re_["theta_max"]) < 1e-2:
         return          # ψ, φ individually ill-conditioned next to the vertical (the docs say so)

@@ -1,5 +1,6 @@
-"""The `top`'s integrator (the ODE route): the motion of the heavy symmetric top (notes
-§38, equations 38.18) integrated with continuous Euler angles.
+"""The `top`'s integrator next to the vertical (the ODE route's quaternion form; away from it
+the route integrates the reduced equations of :mod:`dyncli.topics.top.reduced`): the motion
+of the heavy symmetric top (notes §38, equations 38.18) with continuous Euler angles.
 
 Numerical route (numpy; scipy imported lazily inside :func:`integrate`)
 -----------------------------------------------------------------------
@@ -142,7 +143,8 @@ class _Recorder:
             run.w[k] = y[4:]
 
 
-def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales, max_steps=None):
+def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales, max_steps=None,
+              max_step=math.inf):
     """Integrate from y0 (quaternion + body ω at t = 0, where the spin-free frame p
     coincides with the body) to the sorted ``times``.
 
@@ -173,7 +175,8 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     T = times[-1] if n else 0.0
     if k < n:
         budget.leg(0.0, T)
-        solver = cls(ode.finite(top.rhs_spinfree), 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v)
+        solver = cls(ode.finite(top.rhs_spinfree), 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v,
+                     max_step=max_step)
         _steps(solver, run, tr, record, budget, times, k, method, math.sqrt(top.A) * Ws)
     run.drift = (record.dE / Es if Es > 0 else 0.0, record.dH / Hs if Hs > 0 else 0.0,
                  record.dW / Ws if Ws > 0 else 0.0)

@@ -4,8 +4,9 @@
 This module is the adapter: it checks and normalises the input, forms the
 invariants and the nutation bounds (:mod:`dyncli.topics.top.kinematics`), takes the
 exact route (the elliptic solution, :mod:`dyncli.topics.top.exact_route`) or the ODE
-route (:mod:`dyncli.topics.top.ode_route`, integrating with continuous Euler angles
-in :mod:`dyncli.topics.top.integrator`) and reports the results, warnings and Table
+route (:mod:`dyncli.topics.top.ode_route`: the reduced equations of
+:mod:`dyncli.topics.top.reduced` away from the vertical, the quaternion form of
+:mod:`dyncli.topics.top.integrator` next to it) and reports the results, warnings and Table
 38.1 (:mod:`dyncli.topics.top.derived`).  Both routes are imported only when taken.
 """
 
@@ -57,7 +58,8 @@ def solve(p, options=None) -> Result:
     else:
         from dyncli.topics.top import ode_route
 
-        out = ode_route.route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales)
+        out = ode_route.route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales,
+                              state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot), bounds=(th_min, th_max))
         res.extra["sample"] = lambda ts: _resample(p, ts)
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out
     _report_motion(res, p, out)
