@@ -311,16 +311,20 @@ def relative_difference(pairs, floors=None) -> float:
 
 
 #: the note of an estimate that comes from no second solve (accuracy.estimate false, the default)
-NOMINAL_NOTE = ("nominal: rtol, or the largest relative drift of the route's invariants when larger (no "
-                "second solve); set accuracy.estimate: true for a measured estimate")
+NOMINAL_NOTE = ("nominal: rtol times the number of steps (the steps' local error bounds added up), or the "
+                "largest relative drift of the route's invariants when larger (no second solve); set "
+                "accuracy.estimate: true for a measured estimate")
 
 
-def nominal_estimate(res, rtol: float, *drifts: float | None) -> float:
+def nominal_estimate(res, rtol: float, *drifts: float | None, steps: int = 1) -> float:
     """The error_estimate of an ODE route run without a check solve (``accuracy.estimate``
-    false): ``rtol``, or the largest relative drift of the route's invariants (energy, momenta,
-    first integrals; each relative to its scale) when larger, an order of magnitude of the
-    error of a well-conditioned run.  Sets ``res.error_estimate`` and its note; returns it."""
-    est = max([float(rtol)] + [float(d) for d in drifts if d is not None and math.isfinite(d)])
+    false, the default): ``rtol`` × ``steps`` — each accepted step keeps its local error within
+    ~rtol of the state's scale, and without amplification the global error is at most their sum
+    (a conservative bound: the actual error is typically 10-100 times smaller; a long run whose
+    errors are amplified, e.g. an unstable or chaotic motion, can exceed it) — or the largest
+    relative drift of the route's invariants (energy, momenta, first integrals; each relative
+    to its scale) when larger.  Sets ``res.error_estimate`` and its note; returns it."""
+    est = max([float(rtol) * max(int(steps), 1)] + [float(d) for d in drifts if d is not None and math.isfinite(d)])
     res.error_estimate = est
     res.extra["error_estimate_note"] = NOMINAL_NOTE
     return est

@@ -164,4 +164,4 @@ def test_general_forced_damped():
     check(f[3], t=t5, s=-0.5, v=sol(t5)[1])
     unreached(f[4])
     assert any("find[4]" in w and "t_max" in w for w in rec["warnings"])
-    assert 0 < rec["error_estimate"] < 1e-8
+    assert 0 < rec["error_estimate"] <= 1e-10 * 10_000      # the nominal bound: rtol x the steps (at most the budget)

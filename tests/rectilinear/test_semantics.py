@@ -359,10 +359,11 @@ def test_general_error_estimate_is_honest(rtol, estimate):
                            [(e["v"], v_(t)) for e, t in zip(f, times)], [(e["a"], -4 * s_(t)) for e, t in zip(f, times)]])
     assert err > 1e-14
     ratio = rec["error_estimate"] / err
-    # the check solve measures the error (its own is 1/100 of it); the nominal estimate (rtol,
-    # no second solve) is only its order of magnitude: DOP853's global error grows with the span
-    # (here 2.4-3 x rtol after the ~6 undamped periods to t = 20)
-    assert (0.5 <= ratio <= 2) if estimate else (rec["error_estimate"] == rtol and 0.1 <= ratio <= 10), \
+    # the check solve measures the error (its own is 1/100 of it); the nominal estimate (no second
+    # solve: rtol x the accepted steps, the local error bounds added up) bounds it: DOP853's global
+    # error grows with the span (here 2.4-3 x rtol after the ~6 undamped periods to t = 20), the
+    # bound with the steps (20-50 x the error here)
+    assert (0.5 <= ratio <= 2) if estimate else (rec["error_estimate"] >= rtol and 1 <= ratio <= 1000), \
         (rec["error_estimate"], err)
 
 
@@ -372,7 +373,7 @@ def test_general_error_estimate_falls_back_to_a_looser_solve_over_budget():
     assert entries(rec)[0]["reached"] and rec["error_estimate"] > 0
     assert any("10·rtol" in w and "accuracy.max_steps" in w for w in rec["warnings"])
     rec = problem("-4*s + 0*t", [{"t": 100}], s1=1, accuracy="{max_steps: 800}")
-    assert rec["error_estimate"] == 1e-10 and not rec["warnings"]     # no check solve: nominal rtol
+    assert rec["error_estimate"] >= 1e-10 and not rec["warnings"]     # no check solve: the nominal bound
 
 
 # -- case 2: singular and unresolvable a(t), work budget ---------------------------

@@ -100,7 +100,7 @@ def test_ode_and_exact_routes_check_each_other(estimate):
     if estimate:        # the check solve at rtol/100: its own error is ~1/60 of the reported run's
         assert 0.9 * err <= ode["error_estimate"] <= 1.5 * err, (ode["error_estimate"], err)
     else:               # one solve over ~11 nutation periods: within the stated 10 x rtol of the nominal estimate
-        assert ode["error_estimate"] == 1e-10 and err <= 10 * 1e-10, err
+        assert err <= ode["error_estimate"] and err <= 10 * 1e-10, (ode["error_estimate"], err)
 
 
 def test_sleeping_top():

@@ -103,9 +103,9 @@ def test_error_estimate_default_and_tight():
     # the check solve at rtol/100 has ~1/60 of the reported run's error (DOP853: error ~ tol^(7/8)), so their
     # difference is 0.98-1.02 times the error (R is covered too; here ψ̇, θ̇ dominate)
     assert 0.9 * err(tight) <= tight["error_estimate"] <= 1.5 * err(tight)
-    # one solve by default: the nominal estimate (rtol, or the energy's drift when larger) bounds the error of
-    # this two-nutation-period run
-    assert err(default) <= default["error_estimate"] == pytest.approx(max(1e-7, default["results"]["drift"]))
+    # one solve by default: the nominal estimate (rtol x the steps, or the energy's drift when larger) bounds
+    # the error of this two-nutation-period run
+    assert err(default) <= default["error_estimate"] and default["error_estimate"] >= max(1e-7, default["results"]["drift"])
     assert "nominal" in default["error_estimate_note"] if "error_estimate_note" in default else True
     none = solve_one_text(HEAD + "theta: 0.5\nphi_dot: 100\nat: [0]\n")
     assert none["error_estimate"] == 0.0
@@ -178,8 +178,8 @@ def test_error_estimate_is_honest_against_the_elliptic_solution(rtol, estimate):
     assert err > 1e-13
     if estimate:       # the check solve at rtol/100 measures the error (its own is ~1/60 of it)
         assert 0.9 <= rec["error_estimate"] / err <= 1.5, (rec["error_estimate"], err)
-    else:              # one solve: the nominal rtol, within the stated multiple of the error for ~2 periods
-        assert rec["error_estimate"] == rtol
+    else:              # one solve: the nominal estimate (rtol x the steps) bounds the error; ~2 periods: within 3 rtol
+        assert err <= rec["error_estimate"] and rec["error_estimate"] >= rtol, (rec["error_estimate"], err)
         assert err <= 3 * rtol, err
 
 

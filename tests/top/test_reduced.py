@@ -52,7 +52,7 @@ def test_step_cap_keeps_a_loose_run_within_a_few_rtol():
     for rtol in (1e-5, 1e-6):
         rec = solve_one_text(_text(case, extra=f"accuracy: {{rtol: {rtol}, method: DOP853}}\n"))
         assert max(_errors(rec, case["rows"]).values()) <= 3 * rtol
-        assert rec["error_estimate"] == rtol      # one solve: the nominal estimate
+        assert rec["error_estimate"] >= max(_errors(rec, case["rows"]).values())   # one solve: the nominal bound
 
 
 def test_steady_precession_estimate_is_not_inflated_by_theta_dot():

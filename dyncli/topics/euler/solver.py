@@ -162,11 +162,15 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
     project = make_projector(I, H0, T0) if method == "projected" else None
     drift = _Drift(I, H0, T0, forced)
 
+    steps = [0]
+
     def run(fn, tol, on_step=None):
-        return ode.integrate(fn, y0, times, method=m, rtol=tol[0], atol=tol[1], project=project, on_step=on_step,
-                             max_steps=pb.accuracy.max_steps)[0]
+        Y, steps[0] = ode.integrate(fn, y0, times, method=m, rtol=tol[0], atol=tol[1], project=project,
+                                    on_step=on_step, max_steps=pb.accuracy.max_steps)
+        return Y
 
     Y = run(fun, (rtol, atol), drift.on_step)
+    nsteps = steps[0]
     W = Y[:, :3]
     if exact is None:        # the sampler for plots: the run again with its steps' interpolants, when first asked
         res.extra["sample"] = _LazySampler(lambda on_step: run(fun, (rtol, atol), on_step))
@@ -178,7 +182,7 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
         res.warn("error_estimate is the actual error against the exact torque-free solution")
         res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0
     else:                           # the largest relative drift of H and T
-        ode.nominal_estimate(res, rtol, drift.worst_H, drift.worst_T)
+        ode.nominal_estimate(res, rtol, drift.worst_H, drift.worst_T, steps=nsteps)
     return W, drift.worst_H, drift.worst_T
 
 

@@ -154,7 +154,7 @@ def _ode_route(pb, times, res):
             Y2 = check[0]
             res.error_estimate = ode.relative_difference([(Y[:, 0], Y2[:, 0]), (Y[:, 1], Y2[:, 1])], [math.pi, 0.0])
     else:
-        ode.nominal_estimate(res, rtol, drift)
+        ode.nominal_estimate(res, rtol, drift, steps=nsteps)
     return Y[:, 0], Y[:, 1], drift
 
 

@@ -127,6 +127,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
         _times(r, fwd, 1, ans)
     else:
         _Forward(r, ans, fwd, vq, sq).run()
+    ans.res.extra["nsteps"] = r.budget.n      # accepted steps (the nominal error estimate)
     return f"ode:{method}"
 
 

@@ -213,7 +213,7 @@ def _solve(p) -> Result:
         if check is not None:
             res.error_estimate = max(_difference(p, ans.items, check[0][1].items), bound)
     elif route != "quadrature":
-        ode.nominal_estimate(res, rtol)
+        ode.nominal_estimate(res, rtol, steps=res.extra.get("nsteps", 1))
     res.extra["sample"] = lambda times: sample(p, times)
     return res
 

@@ -86,7 +86,7 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
             return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, r, a, h)
         return _reduced_run(red, p, ts, inv, method, scales, r, a, h)
 
-    out, drifts = run_at(rtol, atol)
+    out, drifts, nsteps = run_at(rtol, atol)
     if p.accuracy.estimate:
         check = ode.check_solve(res, lambda r, a: run_at(r, a)[0], rtol, atol)
         if check is not None:
@@ -98,7 +98,7 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
                 "the largest difference of ψ, θ, φ, ψ̇, θ̇, φ̇, R, each relative to its scale over the requested "
                 "times, from a check solve at " + ("rtol/100" if check[1] == "tighter" else "10·rtol"))
     else:
-        ode.nominal_estimate(res, rtol, *drifts)
+        ode.nominal_estimate(res, rtol, *drifts, steps=nsteps)
     return out
 
 
@@ -119,7 +119,7 @@ REPORTED = (0, 1, 2, 3, 4, 5, 7)
 def _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, cap):
     run = integrate(top, y0, psi0, phi0, ts, rtol=rtol, atol=atol, method=method, Wp=Wp, scales=scales,
                     max_steps=p.accuracy.max_steps, max_step=cap)
-    return motion(top, run, inv, rates, reaction) + (max(run.drift), run.ambiguous), run.drift
+    return motion(top, run, inv, rates, reaction) + (max(run.drift), run.ambiguous), run.drift, run.steps
 
 
 def _reduced_run(red, p, ts, inv, method, scales, rtol, atol, cap):
@@ -129,7 +129,7 @@ def _reduced_run(red, p, ts, inv, method, scales, rtol, atol, cap):
                          max_steps=p.accuracy.max_steps)
     drift = dE * red.top.A / scales[0] if scales[0] > 0 else 0.0
     idx = back[inv]
-    return tuple(a[idx] for a in arrays) + (drift, []), (drift,)
+    return tuple(a[idx] for a in arrays) + (drift, []), (drift,), red.steps
 
 
 def _sorted_times(times):

@@ -116,6 +116,7 @@ class Reduced:
         rtol, atol = self.tolerances(rtol, atol)
         sol = solve_ivp(self.rhs, (0.0, T), self.y0, method=_unwrapped(ode.budgeted(method, budget)), t_eval=ts,
                         rtol=rtol, atol=atol, max_step=max_step)
+        self.steps = budget.n          # accepted steps of the last run (the nominal error estimate)
         if sol.status != 0 or sol.y.shape[1] != len(ts):
             from dyncli.errors import NumericalError
 
