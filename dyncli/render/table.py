@@ -120,7 +120,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
             continue
         if hasattr(val, "tolist"):
             val = val.tolist()
-        if _nested(val):
+        if is_deferred(val):
             deferred.append((name, val))
             continue
         scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell(fmt_value(val, digits)),
@@ -156,12 +156,7 @@ def _print_header(console, lp, result: Result) -> None:
     head.append(printable(lp.title), style="bold")
     head.append(f"  ·  {lp.type}{section}", style="dim")
     print_text(console, head)
-    meta = f"method: {result.method}"
-    if result.error_estimate is not None:
-        meta += f"   error estimate: {fmt_num(result.error_estimate, 3)}"
-    if result.equations:
-        meta += "   equations: " + ", ".join(f"({e})" for e in result.equations)
-    print_text(console, Text(meta, style="dim"))
+    print_text(console, Text("   ".join(meta_parts(result)), style="dim"))
 
 
 def _results_table():
@@ -176,14 +171,26 @@ def _results_table():
     return t
 
 
-def _nested(val) -> bool:
-    """A result shown in a table of its own: a list of records, or a mapping (with more than one
-    entry) of numbers, vectors and records."""
+def is_deferred(val) -> bool:
+    """Results drawn as their own table: a list of records, or a mapping (with more than one
+    entry) of numbers, vectors and records, one row per name."""
     if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
         return True
     return (isinstance(val, dict) and len(val) > 1
             and all(isinstance(v, (list, tuple, dict)) or _is_scalar_num(v) for v in val.values())
             and any(isinstance(v, (list, tuple, dict)) for v in val.values()))
+
+
+def meta_parts(result: Result) -> list[str]:
+    """The header line's parts: method, error estimate (marked nominal when no second solve
+    measured it), equations."""
+    parts = [f"method: {result.method}"]
+    if result.error_estimate is not None:
+        nominal = " (nominal)" if str(result.extra.get("error_estimate_note", "")).startswith("nominal") else ""
+        parts.append(f"error estimate: {fmt_num(result.error_estimate, 3)}{nominal}")
+    if result.equations:
+        parts.append("equations: " + ", ".join(f"({e})" for e in result.equations))
+    return parts
 
 
 def _nested_table(title: str, val, digits: int):

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from dyncli.render.table import _is_scalar_num, display_units, fmt_num, fmt_value, series_columns
+from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, series_columns
 from dyncli.result import FrameTable, Result, Table
 
 
@@ -37,26 +37,12 @@ class View:
     warnings: list[str]
 
 
-def is_deferred(val: Any) -> bool:
-    """Results drawn as their own table: a list of records, or a mapping
-    that holds lists or mappings (one row per name)."""
-    if isinstance(val, list) and val and all(isinstance(v, dict) for v in val):
-        return True
-    return (isinstance(val, dict) and len(val) > 1
-            and all(isinstance(v, (list, tuple, dict)) or _is_scalar_num(v) for v in val.values())
-            and any(isinstance(v, (list, tuple, dict)) for v in val.values()))
-
-
 def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -> View:
     from dyncli import registry
 
     info = registry.TYPES.get(lp.type)
     kind = f"{lp.type} ({info.section})" if info else str(lp.type)
-    meta = [f"method: {result.method}"]
-    if result.error_estimate is not None:
-        meta.append(f"error estimate: {fmt_num(result.error_estimate, 3)}")
-    if result.equations:
-        meta.append("equations: " + ", ".join(f"({e})" for e in result.equations))
+    meta = meta_parts(result)
     values, unit_names = display_units(result, units)
     values = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in values.items()}
     in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
