@@ -58,8 +58,8 @@ def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
                  "no positive mass distribution has this inertia tensor")
     nw, nH = norm(w), norm(H)
     if 0 < nw < math.inf and 0 < nH < math.inf:
-        c = float(np.clip(unit(w) @ unit(H), -1.0, 1.0))      # directions scaled first: ω = 1e-200 is a direction
-        res.results["angle_omega_H"] = float(np.arccos(c))
+        c = math.fsum(a * b for a, b in zip(unit(w), unit(H)))      # directions scaled first: ω = 1e-200 is a direction
+        res.results["angle_omega_H"] = math.acos(min(max(c, -1.0), 1.0))
     else:
         res.results["angle_omega_H"] = None
         res.warn("angle_omega_H is undefined: ω = 0 or H̄ = 0" if nw == 0 or nH == 0
