@@ -19,16 +19,28 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Series, Table
 from dyncli.topics.rigid_kinetics import equations as eq
+from dyncli.vec3 import cross
 
 
 def _finite(name: str, *arrays) -> None:
-    if not all(np.isfinite(np.asarray(a, dtype=float)).all() for a in arrays):
+    """InputError unless every component of every (nested) array is finite (plain floats: no numpy)."""
+    def ok(a) -> bool:
+        return all(ok(c) for c in a) if hasattr(a, "__len__") else math.isfinite(a)
+
+    if not all(ok(a) for a in arrays):
         raise InputError(f"{name} overflows a double (values beyond ~1e308)", name.split()[0])
+
+
+def _sum(xs) -> float:
+    """Σ xs correctly rounded (math.fsum); inf or nan where the sum overflows (then reported by _finite)."""
+    xs = [float(x) for x in xs]
+    try:
+        return math.fsum(xs)
+    except (OverflowError, ValueError):     # an overflowing sum, or inf − inf
+        return sum(xs)
 
 
 def initial_state(p):
@@ -47,6 +59,8 @@ def initial_state(p):
 
 def momentum_about(res, p, v, H) -> None:
     """``H_O`` (29.25) and ``x``-dependent views when the position is given."""
+    import numpy as np
+
     if p.x is None:
         return
     xb = np.asarray(p.x, dtype=float)
@@ -61,6 +75,8 @@ def momentum_about(res, p, v, H) -> None:
 
 def power(res, p, v, w) -> None:
     """``power`` and its terms (34.17-34.19) when forces, moments or b are given."""
+    import numpy as np
+
     if not (p.forces or p.moments or p.b is not None):
         return
     xb = np.zeros(3) if p.x is None else np.asarray(p.x, dtype=float)
@@ -78,7 +94,7 @@ def power(res, p, v, w) -> None:
         pb = 0.0 if p.b is None else float(p.m * (np.asarray(p.b, dtype=float) @ v))   # (34.18)
         if p.b is not None:
             rows.append(["m b", (p.m * np.asarray(p.b, dtype=float)).tolist(), xb.tolist(), v.tolist(), pb])
-        P = math.fsum(pf + pm + [pb])
+        P = _sum(pf + pm + [pb])
     _finite("forces (their power)", pf, pm, [pb, P])
     res.results.update(power=P, power_forces=pf, power_moments=pm, power_body=pb)
     res.equations += ["34.17", "34.18", "34.19"]
@@ -89,6 +105,8 @@ def power(res, p, v, w) -> None:
 
 def motion(res, p, I) -> None:
     """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20)."""
+    import numpy as np
+
     mo = p.motion
     if mo is None:
         return
@@ -114,15 +132,14 @@ def translation(res, p) -> None:
     """planar-moments with forces: F, ā (32.6, 32.8), Σ p×F and the couple still needed."""
     if not p.forces:
         return
-    Fs = [np.asarray(f.F, dtype=float) for f in p.forces]
-    ps = [np.zeros(3) if f.x is None else np.asarray(f.x, dtype=float) for f in p.forces]
-    with np.errstate(over="ignore", invalid="ignore"):
-        F = np.array([math.fsum(f[i] for f in Fs) for i in range(3)])
-        a = F / p.m
-        MF = np.array([math.fsum(c[i] for c in (np.cross(q, f) for q, f in zip(ps, Fs))) for i in range(3)])
-        couple = np.asarray(res.results["M"], dtype=float) - MF
+    Fs = [f.F for f in p.forces]
+    ps = [(0.0, 0.0, 0.0) if f.x is None else f.x for f in p.forces]
+    F = [_sum(f[i] for f in Fs) for i in range(3)]                          # (32.6)
+    a = [c / p.m for c in F]                                                # (32.8)
+    MF = [_sum(c[i] for c in [cross(q, f) for q, f in zip(ps, Fs)]) for i in range(3)]
+    couple = [M - c for M, c in zip(res.results["M"], MF)]
     _finite("forces (their resultant or moment)", F, a, MF, couple)
-    res.results.update(F=F.tolist(), a_com=a.tolist(), M_forces=MF.tolist(), M_couple=couple.tolist())
+    res.results.update(F=F, a_com=a, M_forces=MF, M_couple=couple)
     res.equations += ["32.5", "32.6", "32.8"]
     if F[2] != 0.0:
         res.warn(f"the forces have a resultant F'3 = {F[2]:.6g} N along e'3: the center of mass accelerates out of "

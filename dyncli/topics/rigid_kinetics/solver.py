@@ -5,11 +5,8 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.direction import norm, unit
 from dyncli.result import FrameTable, Result, SolveOptions
-from dyncli.topics.inertia import rotations as rot
 from dyncli.topics.rigid_kinetics import energy
 from dyncli.topics.rigid_kinetics import equations as eq
 
@@ -38,6 +35,10 @@ def solve_planar_moments(p, options: SolveOptions | None = None) -> Result:
 
 
 def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
+    import numpy as np     # planar-moments (above) needs none
+
+    from dyncli.topics.inertia import rotations as rot
+
     m = p.m
     v0, w0 = energy.initial_state(p)
     v = np.asarray(v0, dtype=float)
