@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from dyncli.topics.inertia.eigen3 import inertia_defect  # noqa: F401  (one definition, plain floats)
+
 #: largest admissible deviation max|RᵀR − 1| of a user-given rotation matrix
 ORTHONORMAL_TOL = 1e-6
 
@@ -90,16 +92,6 @@ def transfer_term(m: float, p) -> np.ndarray:
     p = np.asarray(p, dtype=float)
     with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, checked by the caller
         return m * (float(p @ p) * np.eye(3) - np.outer(p, p))
-
-
-def inertia_defect(T) -> tuple[float, float, float]:
-    """For a symmetric tensor, return (smallest eigenvalue, triangle defect,
-    scale): the tensor is a physical inertia tensor when the smallest
-    eigenvalue is >= 0 and the triangle defect max(I3 − I1 − I2, 0) is 0
-    (eigenvalues ascending); ``scale`` is the largest |eigenvalue|."""
-    w = np.linalg.eigvalsh(sym(T))
-    scale = float(np.max(np.abs(w))) if w.size else 0.0
-    return float(w[0]), float(w[2] - w[0] - w[1]), scale
 
 
 def principal(T, *, repeat_rtol: float = 1e-10):
