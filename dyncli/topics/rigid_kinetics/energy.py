@@ -47,9 +47,10 @@ def initial_state(p):
     """(v̄, ω): as given, or the prescribed motion's values at its first time."""
     v, w = p.v, p.omega
     if p.motion is not None and (v is None or w is None):
+        from dyncli.topics.kinematics.jet import vec_jet_at     # plain floats: no numpy
+
         t0 = p.motion.at[0]
-        ev = [float(e(t=t0)) for e in p.motion.v]
-        ew = [float(e(t=t0)) for e in p.motion.omega]
+        ev, ew = list(vec_jet_at(p.motion.v, t0)[0]), list(vec_jet_at(p.motion.omega, t0)[0])
         if not all(math.isfinite(c) for c in ev + ew):
             raise NumericalError("the prescribed motion is not finite at its first time")
         v = ev if v is None else v
@@ -59,42 +60,34 @@ def initial_state(p):
 
 def momentum_about(res, p, v, H) -> None:
     """``H_O`` (29.25) and ``x``-dependent views when the position is given."""
-    import numpy as np
-
     if p.x is None:
         return
-    xb = np.asarray(p.x, dtype=float)
-    O = np.zeros(3) if p.about is None else np.asarray(p.about, dtype=float)
-    with np.errstate(over="ignore", invalid="ignore"):
-        HO, orbit = eq.angular_momentum_about(xb, O, p.m, v, H)     # (29.25)
+    O = (0.0, 0.0, 0.0) if p.about is None else p.about
+    HO, orbit = eq.angular_momentum_about(p.x, O, p.m, v, H)     # (29.25)
     _finite("x (the position) with H_O", HO)
-    res.results["H_O"] = HO.tolist()
-    res.results["H_orbit"] = orbit.tolist()
+    res.results["H_O"] = list(HO)
+    res.results["H_orbit"] = list(orbit)
     res.equations.append("29.25")
 
 
 def power(res, p, v, w) -> None:
     """``power`` and its terms (34.17-34.19) when forces, moments or b are given."""
-    import numpy as np
-
     if not (p.forces or p.moments or p.b is not None):
         return
-    xb = np.zeros(3) if p.x is None else np.asarray(p.x, dtype=float)
+    xb = (0.0, 0.0, 0.0) if p.x is None else p.x
     rows, pf = [], []
-    with np.errstate(over="ignore", invalid="ignore"):
-        for i, f in enumerate(p.forces):
-            F = np.asarray(f.F, dtype=float)
-            xi = xb if f.x is None else np.asarray(f.x, dtype=float)
-            vi = eq.point_velocity(v, w, xi, xb)                # (13.8)
-            pf.append(float(F @ vi))
-            rows.append([f"F{i + 1}", list(f.F), xi.tolist(), vi.tolist(), pf[-1]])
-        pm = [float(np.asarray(M, dtype=float) @ w) for M in p.moments]
-        for i, M in enumerate(p.moments):
-            rows.append([f"M{i + 1}", list(M), "", w.tolist(), pm[i]])
-        pb = 0.0 if p.b is None else float(p.m * (np.asarray(p.b, dtype=float) @ v))   # (34.18)
-        if p.b is not None:
-            rows.append(["m b", (p.m * np.asarray(p.b, dtype=float)).tolist(), xb.tolist(), v.tolist(), pb])
-        P = _sum(pf + pm + [pb])
+    for i, f in enumerate(p.forces):
+        xi = xb if f.x is None else f.x
+        vi = eq.point_velocity(v, w, xi, xb)                # (13.8)
+        pf.append(eq.dot(f.F, vi))
+        rows.append([f"F{i + 1}", list(f.F), list(xi), list(vi), pf[-1]])
+    pm = [eq.dot(M, w) for M in p.moments]
+    for i, M in enumerate(p.moments):
+        rows.append([f"M{i + 1}", list(M), "", list(w), pm[i]])
+    pb = 0.0 if p.b is None else p.m * eq.dot(p.b, v)       # (34.18)
+    if p.b is not None:
+        rows.append(["m b", [p.m * c for c in p.b], list(xb), list(v), pb])
+    P = _sum(pf + pm + [pb])
     _finite("forces (their power)", pf, pm, [pb, P])
     res.results.update(power=P, power_forces=pf, power_moments=pm, power_body=pb)
     res.equations += ["34.17", "34.18", "34.19"]
@@ -104,24 +97,24 @@ def power(res, p, v, w) -> None:
 
 
 def motion(res, p, I) -> None:
-    """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20)."""
-    import numpy as np
-
+    """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20), evaluated
+    at each time in plain floats (exact derivatives: :func:`dyncli.topics.kinematics.jet.vec_jet_at`)."""
     mo = p.motion
     if mo is None:
         return
-    from dyncli.topics.kinematics.jet import vec_jet
+    from dyncli.topics.kinematics.jet import vec_jet_at
 
-    t = np.asarray(mo.at, dtype=float)
-    V, W = vec_jet(mo.v, t), vec_jet(mo.omega, t)         # (order, component, time)
-    v, vd, w, wd = V[0], V[1], W[0], W[1]
-    with np.errstate(over="ignore", invalid="ignore"):
-        T, Td = eq.kinetic_energy_and_rate(p.m, I, v, vd, w, wd)     # (34.13), (34.15)
-        U = T - T[0]
-    if not (np.isfinite(T).all() and np.isfinite(Td).all()):
+    T, Td, vs, ws = [], [], [], []
+    for t in mo.at:
+        V, W = vec_jet_at(mo.v, t), vec_jet_at(mo.omega, t)      # (order, component)
+        e, rate = eq.kinetic_energy_and_rate(p.m, I, V[0], V[1], W[0], W[1])     # (34.13), (34.15)
+        T.append(e)
+        Td.append(rate)
+        vs.append([c + 0.0 for c in V[0]])
+        ws.append([c + 0.0 for c in W[0]])
+    if not all(math.isfinite(x) for x in T + Td):
         raise NumericalError("the prescribed motion is not finite (or not differentiable) at one of the times 'at'")
-    res.results.update(T_motion=T.tolist(), T_rate=Td.tolist(), work=U.tolist(),
-                       v_motion=(v.T + 0.0).tolist(), omega_motion=(w.T + 0.0).tolist())
+    res.results.update(T_motion=T, T_rate=Td, work=[x - T[0] for x in T], v_motion=vs, omega_motion=ws)
     res.equations += ["34.13", "34.15", "34.16", "34.20"]
     res.series.append(Series("t", list(mo.at), ["T_motion", "T_rate", "work"],
                              title="energy over the prescribed motion: P = dT/dt (34.16), U₂/₁ = T₂ − T₁ (34.20)"))
