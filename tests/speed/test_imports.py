@@ -86,7 +86,7 @@ def test_closed_forms_import_neither_scipy_nor_sympy():
 
 #: closed-form types whose example problems are solved in plain floats (dyncli.vec3,
 #: dyncli.direction): solving them never imports numpy (issue 19, cold start)
-NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "impact", "motor-bodies", "particles",
+NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "impact", "inertia", "motor-bodies", "particles",
               "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity", "rotating-frame", "screw",
               "spin-change", "vibration")
 
