@@ -76,6 +76,15 @@ def test_purely_planar_32_15():
     assert "32.15" in rec["equations"]
 
 
+@pytest.mark.parametrize("F, x", [("[1e308, 0, 0]", "[0, 0, 0]"), ("[1e308, 0, 0]", "[0, 1e300, 0]")])
+def test_planar_forces_whose_sum_or_moment_overflows_exit_2(F, x):
+    """Σ Fᵢ or Σ pᵢ × Fᵢ beyond ~1e308: one line naming the forces, never an internal error."""
+    doc = f"type: planar-moments\nI13: 0\nI23: 0\nI33: 1\nomega: 1\nm: 1\nforces:\n- {{F: {F}, x: {x}}}\n- {{F: {F}, x: [0, 0, 0]}}\n"
+    code, out, err = run_cli("solve", "-", input=doc)
+    assert code == 2, (out, err)
+    assert "forces (their resultant or moment) overflows a double" in err and "Traceback" not in err
+
+
 # ---------------------------------------------------------------- rigid-energy
 
 def particle_model(m, I):

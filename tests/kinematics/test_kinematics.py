@@ -299,6 +299,35 @@ def test_jet_matches_symbolic_derivatives(text):
         close(f[n], symbolic.diff(e, "t", n).evaluate(t=t), 1e-12)
 
 
+JET_TEXTS = [
+    "0.3*sin(2*t) + t**2", "exp(-t)*cos(3*t)", "sqrt(1 + t**2)", "atan2(sin(t), 2 + cos(t))", "t**t",
+    "2**t", "log(2 + t)", "log10(3 + t**3)", "abs(t - 0.5)*t", "tan(t/3)", "asin(t/3)", "acos(t/4)",
+    "atan(t)", "sinh(t)", "cosh(t)*tanh(t)", "min(t, 1 - t) + max(t**2, 0.5)", "(1 + t)**(-1.5)",
+    "1/(2 + t)**3", "(t + 2)**0.5*t**3", "-t/(1 + t)", "sign(t - 0.3)*t", "t**0", "t**1", "(t - 0.5)**3",
+    # out of range: poles, domain errors, overflow (numpy's inf and nan, never an exception)
+    "sqrt(t)", "log(t)", "1/t", "asin(t)", "acos(t)", "exp(1000*t)", "sinh(1000*t)", "cosh(-1000*t)", "t**(1/3)",
+    "(-1 - t)**0.5", "t**(-2)", "(t - 1)**(-3)", "sin(1e300*t*1e10)", "t**t", "log10(t)", "atan2(t, 0)",
+    "atan2(0*t, t)", "abs(t)", "sign(t)", "2**(1100*t)", "(-2)**(1100*t)",
+]
+
+
+@pytest.mark.parametrize("text", JET_TEXTS)
+def test_jet_at_one_time_equals_the_arrays(text):
+    """The plain-float jet (one time, no numpy: the closed forms' route) gives the array jet's
+    values, inf and nan included: the same rules, numpy's conventions out of range."""
+    from dyncli import expr
+    from dyncli.topics.kinematics.jet import jet, jet_at
+
+    e = expr.parse(text, ("t",))
+    ts = [0.0, -0.0, 0.5, 1.0, -1.0, 3.0, -1e-300, 1e300, math.inf]
+    arr = jet(e, np.array(ts))
+    for i, t in enumerate(ts):
+        one = jet_at(e, t)
+        for n in range(3):
+            a, b = float(arr[n][i]), one[n]
+            assert (math.isnan(a) and math.isnan(b)) or a == b or abs(a - b) <= 4e-16 * abs(a), (text, t, n, a, b)
+
+
 def test_numeric_path_does_not_import_sympy():
     from tests.conftest import run_cli
 

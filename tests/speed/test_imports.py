@@ -82,3 +82,38 @@ def test_closed_forms_import_neither_scipy_nor_sympy():
                 continue
             bad.append(f"{r['file']} ({', '.join(sorted(types))}) imported {mod}")
     assert not bad, "\n".join(bad)
+
+
+#: closed-form types whose example problems are solved in plain floats (dyncli.vec3,
+#: dyncli.direction): solving them never imports numpy (issue 19, cold start)
+NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "impact", "inertia", "motor-bodies", "particles",
+              "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity", "rotating-frame", "screw",
+              "spin-change", "vibration")
+
+_SOLVE_NUMPY_FREE = """
+import json, sys
+from dyncli.loader import load_paths
+from dyncli.run import solve_one
+for f in sys.argv[1:]:
+    problems, _ = load_paths([f])
+    methods = [[lp.type, o.result.method if o.result is not None else None]
+               for lp in problems for o in [solve_one(lp)]]
+    print("REC=" + json.dumps({"file": f, "methods": methods, "numpy": "numpy" in sys.modules}))
+    if "numpy" in sys.modules:
+        break
+"""
+
+
+def test_numpy_free_closed_forms_import_no_numpy():
+    """Every example of a NUMPY_FREE type, solved in one fresh interpreter, leaves numpy unimported
+    (the first file that imports it is named)."""
+    from dyncli import registry
+
+    files = [registry.TYPES[t].example for t in NUMPY_FREE]
+    assert all(files), "every NUMPY_FREE type declares an example"
+    code = "import sys\nsys.argv = ['x'] + " + repr(files) + "\n" + _SOLVE_NUMPY_FREE
+    recs = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
+    assert recs and all(m == "closed-form" for r in recs for _, m in r["methods"]), recs
+    bad = [r["file"] for r in recs if r["numpy"]]
+    assert not bad, f"{bad[0]} ({', '.join(sorted({t for t, _ in recs[-1]['methods']}))}) imported numpy"
+    assert len(recs) == len(files)

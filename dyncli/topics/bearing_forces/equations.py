@@ -1,58 +1,59 @@
-"""Spinning arms on a shaft (notes §36, Table 36.1): the closed forms as pure functions on numpy
-arrays over time (no pydantic, no renderer).
+"""Spinning arms on a shaft (notes §36, Table 36.1): the closed forms as pure functions on plain
+floats at one time (no numpy, no pydantic, no renderer).
 
 A mass m at x = L (sin α e'₁ + cos α e'₂) on a shaft turning with ω = ω e'₂; s = sin α,
-c = cos α, ad = α̇, add = α̈, wd = ω̇.  Components are on the turning basis e'ᵢ.
+c = cos α, ad = α̇, add = α̈, wd = ω̇.  Components are on the turning basis e'ᵢ; vectors are
+3-tuples.
 """
 
 from __future__ import annotations
 
-import numpy as np
+from dyncli.vec3 import cross, sub
 
 
 def arm_velocity(L, s, c, ad, w):
     """v = δx/δt + ω×x = [L α̇ cos α, −L α̇ sin α, −ω L sin α] [m/s] (Table 36.1, 11.4).
 
-    >>> arm_velocity(2.0, 1.0, 0.0, 3.0, 5.0).tolist()
-    [0.0, -6.0, -10.0]
+    >>> arm_velocity(2.0, 1.0, 0.0, 3.0, 5.0)
+    (0.0, -6.0, -10.0)
     """
-    return np.array([L * ad * c, -L * ad * s, -w * L * s])
+    return (L * ad * c, -L * ad * s, -w * L * s)
 
 
 def arm_velocity_rate(L, s, c, ad, add, w, wd):
     """δv/δt [m/s²]: the rate of the components of v of :func:`arm_velocity`.
 
-    >>> arm_velocity_rate(1.0, 0.0, 1.0, 0.0, 2.0, 3.0, 0.0).tolist()
-    [2.0, -0.0, -0.0]
+    >>> arm_velocity_rate(1.0, 0.0, 1.0, 0.0, 2.0, 3.0, 0.0)
+    (2.0, -0.0, -0.0)
     """
-    return np.array([L * (add * c - ad * ad * s), -L * (add * s + ad * ad * c), -L * (wd * s + w * ad * c)])
+    return (L * (add * c - ad * ad * s), -L * (add * s + ad * ad * c), -L * (wd * s + w * ad * c))
 
 
 def arm_angular_momentum(mL2, s, c, ad, w):
     """x × m v = m L² [−ω sin α cos α, ω sin²α, −α̇] [kg·m²/s] (Table 36.1, 36.14); mL2 = m L².
 
-    >>> arm_angular_momentum(2.0, 1.0, 0.0, 3.0, 5.0).tolist()
-    [-0.0, 10.0, -6.0]
+    >>> arm_angular_momentum(2.0, 1.0, 0.0, 3.0, 5.0)
+    (-0.0, 10.0, -6.0)
     """
-    return mL2 * np.array([-w * s * c, w * s * s, -ad])
+    return (mL2 * (-w * s * c), mL2 * (w * s * s), mL2 * -ad)
 
 
 def arm_angular_momentum_rate(mL2, s, c, ad, add, w, wd):
     """δ(x × m v)/δt [N·m]: the rate of the components of :func:`arm_angular_momentum`.
 
-    >>> arm_angular_momentum_rate(1.0, 1.0, 0.0, 0.0, 1.0, 2.0, 3.0).tolist()
-    [-0.0, 3.0, -1.0]
+    >>> arm_angular_momentum_rate(1.0, 1.0, 0.0, 0.0, 1.0, 2.0, 3.0)
+    (-0.0, 3.0, -1.0)
     """
-    return mL2 * np.array([-(wd * s * c + w * ad * (c * c - s * s)), wd * s * s + 2.0 * w * ad * s * c, -add])
+    return (mL2 * -(wd * s * c + w * ad * (c * c - s * s)), mL2 * (wd * s * s + 2.0 * w * ad * s * c), mL2 * -add)
 
 
 def spin_cross(w, X):
-    """ω e'₂ × X for X of shape (3, n) (the second term of the general operator, 11.4).
+    """ω e'₂ × X (the second term of the general operator, 11.4).
 
-    >>> spin_cross(np.array([2.0]), np.array([[1.0], [5.0], [3.0]])).ravel().tolist()
-    [6.0, 0.0, -2.0]
+    >>> spin_cross(2.0, (1.0, 5.0, 3.0))
+    (6.0, 0.0, -2.0)
     """
-    return np.array([w * X[2], np.zeros_like(w), -w * X[0]])
+    return (w * X[2], 0.0, -w * X[0])
 
 
 def free_shaft_rate(H, I):
@@ -67,7 +68,7 @@ def free_shaft_rate(H, I):
 def bearing_moment(M, x1, F):
     """M₁ = M_O − x₁ × F₁ [N·m] (36.16b): the moment the bearing at x₁ carries, F₁ = F.
 
-    >>> bearing_moment(np.zeros((3, 1)), np.array([[0.0], [-1.0], [0.0]]), np.array([[1.0], [0.0], [0.0]])).ravel().tolist()
-    [0.0, 0.0, -1.0]
+    >>> bearing_moment((0.0, 0.0, 0.0), (0.0, -1.0, 0.0), (1.0, 0.0, 0.0))
+    (0.0, 0.0, -1.0)
     """
-    return M - np.cross(x1, F, axis=0)
+    return sub(M, cross(x1, F))

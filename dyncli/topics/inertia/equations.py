@@ -1,5 +1,5 @@
-"""Inertia of simple shapes and composite bodies (notes §30, §31): pure functions on floats
-and numpy arrays (no pydantic, no renderer).
+"""Inertia of simple shapes and composite bodies (notes §30, §31): pure functions on plain floats,
+3-vectors and 3×3 matrices as lists of rows (no numpy, no pydantic, no renderer).
 
 The principal moments of the standard shapes are about the shape's own center of mass, on its
 own axes with e3 the axis of symmetry [kg·m²]; the composite body is assembled in
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from dyncli.topics.inertia import mat3
 
 
 def rod_moments(m: float, L: float):
@@ -87,20 +87,20 @@ def rotated(R, I):
     """I' = R I Rᵀ (30.37): a tensor given on a part's axes (the columns of R) expressed on the
     body axes; with R = Aᵀ the change of basis I'' = A I' Aᵀ (30.36).
 
-    >>> R = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
-    >>> np.diag(rotated(R, np.diag([1.0, 2.0, 3.0]))).tolist()
+    >>> R = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    >>> [row[i] for i, row in enumerate(rotated(R, mat3.diag([1.0, 2.0, 3.0])))]
     [2.0, 1.0, 3.0]
     """
-    return R @ I @ R.T
+    return mat3.matmul(mat3.matmul(R, I), mat3.transpose(R))
 
 
 def center_of_mass(signed_masses, xs, m: float):
     """x̄ = Σ ±mᵢ xᵢ / m [m] (holes count with negative mass, 31.3), m = Σ ±mᵢ.
 
-    >>> center_of_mass(np.array([1.0, 3.0]), np.array([[0.0, 0, 0], [4.0, 0, 0]]), 4.0).tolist()
+    >>> center_of_mass([1.0, 3.0], [[0.0, 0, 0], [4.0, 0, 0]], 4.0)
     [3.0, 0.0, 0.0]
     """
-    return signed_masses @ xs / m
+    return [sum(sm * x[i] for sm, x in zip(signed_masses, xs)) / m for i in range(3)]
 
 
 def radius_of_gyration(I: float, m: float) -> float:

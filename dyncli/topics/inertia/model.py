@@ -7,7 +7,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.fields import Num, ProblemBase, StrictModel, Tensor3, Vec3
-from dyncli.topics.inertia import rotations
+from dyncli.topics.inertia.eigen3 import inertia_defect
 
 #: the fields each shape needs (all others are rejected)
 SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
@@ -26,7 +26,7 @@ GEOMETRY_FIELDS = ("length", "size", "radius", "height", "inertia")
 
 def check_psd(T) -> None:
     """ValueError unless the symmetric tensor T is positive-semidefinite."""
-    lo, _tri, scale = rotations.inertia_defect(T)
+    lo, _tri, scale = inertia_defect(T)       # plain floats (Jacobi): no numpy
     if lo < -1e-12 * max(scale, 1e-300):
         raise ValueError(
             f"not positive-semidefinite (smallest principal moment {lo:.6g}): "
@@ -45,6 +45,8 @@ class Orientation(StrictModel):
 
     @model_validator(mode="after")
     def _check(self):
+        from dyncli.topics.inertia import rotations
+
         rotations.from_fields(self.axis, self.angle, self.euler313, self.matrix)  # ValueError -> exit 2
         return self
 

@@ -6,20 +6,19 @@ being the part axes) and moved to the composite center of mass by the
 transfer theorem (31.7); holes contribute with a negative sign (31.3).  The
 composite tensor is then moved to B (31.7), expressed on the requested basis
 (30.36) and diagonalised with a symmetric eigensolver (30.28-30.31).
-Closed forms only (numpy; no scipy).
+Closed forms only, in plain floats (Jacobi's method for the eigenproblem: no numpy).
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions, Table
-from dyncli.topics.inertia import angular
+from dyncli.topics.inertia import angular, mat3
 from dyncli.topics.inertia import equations as eq
 from dyncli.topics.inertia import rotations as rot
+from dyncli.topics.inertia.eigen3 import eigvalsh3
 
 
 #: relative gap below which two principal moments are reported as repeated
@@ -40,45 +39,46 @@ _SHAPES = {
 }
 
 
-def shape_inertia(part) -> np.ndarray:
+def shape_inertia(part):
     """Standard inertia of a part about its own center of mass, on its own
     axes (axis of symmetry e3), for mass ``part.mass`` (positive)."""
     if part.shape == "tensor":
         return rot.sym(part.inertia)
     if part.shape not in _SHAPES:  # pragma: no cover - the model restricts shapes
         raise ValueError(part.shape)
-    return np.diag(_SHAPES[part.shape](part.mass, part))
+    return mat3.diag(_SHAPES[part.shape](part.mass, part))
 
 
-def orientation_matrix(o) -> np.ndarray:
+def orientation_matrix(o):
     if o is None:
-        return np.eye(3)
+        return mat3.eye()
     return rot.from_fields(o.axis, o.angle, o.euler313, o.matrix)
 
 
 def composite(parts):
     """(mass, com, I_com, per-part records, scale) in body components."""
-    signs = np.array([-1.0 if p.hole else 1.0 for p in parts])
-    masses = np.array([p.mass for p in parts])
-    xs = np.array([p.at for p in parts], dtype=float)
-    m = float(signs @ masses)
-    m_abs = float(masses.sum())
+    signs = [-1.0 if p.hole else 1.0 for p in parts]
+    masses = [float(p.mass) for p in parts]
+    xs = [[float(c) for c in p.at] for p in parts]
+    m = math.fsum(sg * mm for sg, mm in zip(signs, masses))
+    m_abs = math.fsum(masses)
     if not m > 1e-12 * m_abs:
-        solid = float(masses[signs > 0].sum())
-        holes = float(masses[signs < 0].sum())
+        solid = math.fsum(mm for sg, mm in zip(signs, masses) if sg > 0)
+        holes = math.fsum(mm for sg, mm in zip(signs, masses) if sg < 0)
         raise InputError(
             f"the holes remove {holes:.6g} kg from {solid:.6g} kg of solid parts: the remaining mass "
             f"{m:.6g} kg is not positive", _first_hole(parts))
-    com = eq.center_of_mass(signs * masses, xs, m)
-    I = np.zeros((3, 3))
+    com = eq.center_of_mass([sg * mm for sg, mm in zip(signs, masses)], xs, m)
+    I = [[0.0] * 3 for _ in range(3)]
     scale = 0.0
     recs = []
     for p, sgn, x in zip(parts, signs, xs):
         R = orientation_matrix(p.orientation)
         Ibar = eq.rotated(R, shape_inertia(p))                  # (30.37)
-        Ipart = Ibar + rot.transfer_term(p.mass, x - com)
-        I += sgn * Ipart
-        scale += float(np.trace(Ipart))
+        Tr = rot.transfer_term(p.mass, [a - b for a, b in zip(x, com)])
+        Ipart = [[Ibar[i][j] + Tr[i][j] for j in range(3)] for i in range(3)]
+        I = [[I[i][j] + sgn * Ipart[i][j] for j in range(3)] for i in range(3)]
+        scale += Ipart[0][0] + Ipart[1][1] + Ipart[2][2]
         recs.append((p, sgn, R, Ibar))
     return m, com, rot.sym(I), recs, scale
 
@@ -110,24 +110,23 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res = Result({}, method="closed-form", equations=["30.20", "31.3", "31.7"])
     _warn_tensor_parts(res, p)
     m, com, I_com, recs, scale = composite(p.parts)
-    if not (math.isfinite(m) and np.isfinite(com).all() and np.isfinite(I_com).all()):
+    if not (math.isfinite(m) and mat3.finite(com) and mat3.finite(I_com)):
         raise InputError("the mass, center of mass or inertia tensor overflows a double (values beyond ~1e308)", "parts")
     if any(part.hole for part in p.parts):
         _check_remainder(I_com, scale, res, _first_hole(p.parts))
     B, pbar, T, I_B, tscale = _about(p, m, com, I_com, scale)
     A, lab = _basis(res, p)
-    com_b, B_b, pbar_b = A @ com, A @ B, A @ pbar
-    with np.errstate(over="ignore", invalid="ignore"):
-        Ic_b, T_b, IB_b = (rot.sym(eq.rotated(A, X)) for X in (I_com, T, I_B))
-    if not all(np.isfinite(X).all() for X in (Ic_b, T_b, IB_b)):
+    com_b, B_b, pbar_b = mat3.matvec(A, com), mat3.matvec(A, B), mat3.matvec(A, pbar)
+    Ic_b, T_b, IB_b = (rot.sym(eq.rotated(A, X)) for X in (I_com, T, I_B))
+    if not mat3.finite([Ic_b, T_b, IB_b]):
         raise InputError("the inertia tensor on the requested basis overflows a double (values beyond ~1e308)",
                          "basis" if p.basis is not None else ("about" if p.about is not None else "parts"))
 
     lam, axes, groups, lscale = rot.principal(IB_b, repeat_rtol=REPEAT_RTOL)
-    lam = np.maximum(lam, 0.0)  # tiny negatives are rounding (checked above)
+    lam = [max(x, 0.0) for x in lam]  # tiny negatives are rounding (checked above)
     res.equations += ["30.30", "30.31", "30.8"]
     radii = [eq.radius_of_gyration(x, m) for x in lam]
-    L = max(float(np.max(np.abs(com_b))), float(np.max(np.abs(B_b))), 1e-300)
+    L = max(mat3.max_abs(com_b), mat3.max_abs(B_b), 1e-300)
     res.results.update({
         "mass": m,
         "com": rot.clean(com_b, L),
@@ -138,7 +137,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         "radii_of_gyration": radii,
         "p_bar": rot.clean(pbar_b, L),
         "I_transfer": rot.clean(T_b, tscale),
-        "principal_gap": float(np.min(np.diff(lam))),
+        "principal_gap": min(lam[1] - lam[0], lam[2] - lam[1]),
         "principal_axes_unique": not groups,
         "principal_axes_note": _axes_note(lam, groups, lscale),
     })
@@ -161,13 +160,12 @@ def _warn_tensor_parts(res, p) -> None:
 def _about(p, m, com, I_com, scale):
     """(B, p̄, transfer term, I_B, tensor scale): the transfer theorem (31.7) to B (the center
     of mass when ``about`` is not given)."""
-    B = com.copy() if p.about is None else np.asarray(p.about, dtype=float)
-    pbar = com - B
-    with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, rejected just below
-        T = rot.transfer_term(m, pbar)
-        I_B = I_com + T
-        tscale = max(scale + m * float(pbar @ pbar) * 2.0, 1e-300)
-    if not (np.isfinite(T).all() and np.isfinite(I_B).all() and math.isfinite(tscale)):
+    B = list(com) if p.about is None else [float(c) for c in p.about]
+    pbar = [a - b for a, b in zip(com, B)]
+    T = rot.transfer_term(m, pbar)                      # overflow -> inf, rejected just below
+    I_B = [[I_com[i][j] + T[i][j] for j in range(3)] for i in range(3)]
+    tscale = max(scale + m * (pbar[0] * pbar[0] + pbar[1] * pbar[1] + pbar[2] * pbar[2]) * 2.0, 1e-300)
+    if not (mat3.finite(T) and mat3.finite(I_B) and math.isfinite(tscale)):
         raise InputError(
             f"B is so far from the center of mass (|p̄| = {math.hypot(*pbar):.6g} m) that the transfer "
             "term m[(p̄·p̄)1 − p̄⊗p̄] (31.7) overflows a double (values beyond ~1e308)", "about")
@@ -178,8 +176,8 @@ def _basis(res, p):
     """(A, labels): the change of basis (30.36) I'' = A I' Aᵀ with A = Rᵀ, or the body axes."""
     if p.basis is not None:
         res.equations.append("30.36")
-        return orientation_matrix(p.basis).T, ("e''₁", "e''₂", "e''₃")
-    return np.eye(3).T, ("e'₁", "e'₂", "e'₃")
+        return mat3.transpose(orientation_matrix(p.basis)), ("e''₁", "e''₂", "e''₃")
+    return mat3.eye(), ("e'₁", "e'₂", "e'₃")
 
 
 def _axes_note(lam, groups, scale) -> str:
@@ -229,9 +227,9 @@ def _views(res, p, recs, lab, A, m, Ic, T, IB, pbar, lam, axes, radii, scale):
 
     rows = []
     for k, (part, sgn, R, Ibar) in enumerate(recs):
-        mom = np.linalg.eigvalsh(Ibar)
+        mom = eigvalsh3(Ibar)
         rows.append([str(k), part.shape + (" (hole)" if part.hole else ""), sgn * part.mass,
-                     rot.clean(A @ np.asarray(part.at, float), max(1e-300, float(np.max(np.abs(part.at))))),
+                     rot.clean(mat3.matvec(A, part.at), max(1e-300, mat3.max_abs(part.at))),
                      c(mom)])
     res.views.append(Table("parts", ["#", "shape", "mass [kg]", "center [m]", "own principal moments [kg·m²]"], rows,
                            note="holes count with negative mass (31.3); center on the " + ("basis e''ᵢ" if p.basis is not None else "body axes e'ᵢ")))

@@ -24,19 +24,39 @@ non-finite, which the solvers report as ``null`` with a warning.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Mapping
-
-import numpy as np
+from types import ModuleType, SimpleNamespace
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Union
 
 from dyncli.expr import Expr
+from dyncli.topics.kinematics import floatmath
+
+if TYPE_CHECKING:
+    import numpy as np
 
 Jet = tuple  # (f, f', f'') — arrays or floats
+#: the functions the rules call: numpy (arrays over t) or :mod:`floatmath` (one float t)
+Backend = Union[SimpleNamespace, ModuleType]
 
 _ZERO = 0.0
+_NUMPY: SimpleNamespace | None = None
 
 
-def _const(v: float):
-    c = (np.float64(v), _ZERO, _ZERO)
+def numpy_backend() -> SimpleNamespace:
+    """numpy's functions under the names the rules use (imports numpy)."""
+    global _NUMPY
+    if _NUMPY is None:
+        import numpy as np
+
+        _NUMPY = SimpleNamespace(
+            sin=np.sin, cos=np.cos, tan=np.tan, arcsin=np.arcsin, arccos=np.arccos, arctan=np.arctan,
+            sinh=np.sinh, cosh=np.cosh, tanh=np.tanh, exp=np.exp, log=np.log, sqrt=np.sqrt, fabs=np.abs,
+            sign=np.sign, div=np.true_divide, power=np.power, arctan2=np.arctan2, where=np.where, f64=np.float64,
+            ones=lambda t: np.ones_like(t, dtype=float), zeros=lambda t: np.zeros_like(t, dtype=float))
+    return _NUMPY
+
+
+def _const(v: float, X: Backend):
+    c = (X.f64(v), _ZERO, _ZERO)
     return (lambda env: c), True
 
 
@@ -55,55 +75,55 @@ def _is_const_ir(ir: tuple, var: str) -> bool:
     raise AssertionError(k)  # pragma: no cover
 
 
-def _unary(name: str, u: Jet) -> Jet:
+def _unary(name: str, u: Jet, X: Backend) -> Jet:
     f0, f1, f2 = u
     if name == "sin":
-        s, c = np.sin(f0), np.cos(f0)
+        s, c = X.sin(f0), X.cos(f0)
         return s, c * f1, c * f2 - s * f1 * f1
     if name == "cos":
-        s, c = np.sin(f0), np.cos(f0)
+        s, c = X.sin(f0), X.cos(f0)
         return c, -s * f1, -s * f2 - c * f1 * f1
     if name == "tan":
-        T = np.tan(f0)
+        T = X.tan(f0)
         d = 1.0 + T * T
         return T, d * f1, d * (f2 + 2.0 * T * f1 * f1)
     if name == "asin":
         w = 1.0 - f0 * f0
-        d = 1.0 / np.sqrt(w)
-        return np.arcsin(f0), d * f1, d * f2 + f0 * d / w * f1 * f1
+        d = X.div(1.0, X.sqrt(w))
+        return X.arcsin(f0), d * f1, d * f2 + X.div(f0 * d, w) * f1 * f1
     if name == "acos":
         w = 1.0 - f0 * f0
-        d = 1.0 / np.sqrt(w)
-        return np.arccos(f0), -d * f1, -(d * f2 + f0 * d / w * f1 * f1)
+        d = X.div(1.0, X.sqrt(w))
+        return X.arccos(f0), -d * f1, -(d * f2 + X.div(f0 * d, w) * f1 * f1)
     if name == "atan":
-        w = 1.0 / (1.0 + f0 * f0)
-        return np.arctan(f0), w * f1, w * f2 - 2.0 * f0 * w * w * f1 * f1
+        w = X.div(1.0, 1.0 + f0 * f0)
+        return X.arctan(f0), w * f1, w * f2 - 2.0 * f0 * w * w * f1 * f1
     if name == "sinh":
-        sh, ch = np.sinh(f0), np.cosh(f0)
+        sh, ch = X.sinh(f0), X.cosh(f0)
         return sh, ch * f1, ch * f2 + sh * f1 * f1
     if name == "cosh":
-        sh, ch = np.sinh(f0), np.cosh(f0)
+        sh, ch = X.sinh(f0), X.cosh(f0)
         return ch, sh * f1, sh * f2 + ch * f1 * f1
     if name == "tanh":
-        T = np.tanh(f0)
+        T = X.tanh(f0)
         d = 1.0 - T * T
         return T, d * f1, d * (f2 - 2.0 * T * f1 * f1)
     if name == "exp":
-        E = np.exp(f0)
+        E = X.exp(f0)
         return E, E * f1, E * (f2 + f1 * f1)
     if name in ("log", "log10"):
         scale = 1.0 if name == "log" else 1.0 / math.log(10.0)
-        q = f1 / f0
-        return np.log(f0) * scale, q * scale, (f2 / f0 - q * q) * scale
+        q = X.div(f1, f0)
+        return X.log(f0) * scale, q * scale, (X.div(f2, f0) - q * q) * scale
     if name == "sqrt":
-        S = np.sqrt(f0)
-        h = 0.5 / S
+        S = X.sqrt(f0)
+        h = X.div(0.5, S)
         return S, h * f1, h * f2 - h * h * h * 2.0 * f1 * f1
     if name == "abs":
-        sg = np.sign(f0)
-        return np.abs(f0), sg * f1, sg * f2
+        sg = X.sign(f0)
+        return X.fabs(f0), sg * f1, sg * f2
     if name == "sign":
-        return np.sign(f0), _ZERO * f1, _ZERO * f2
+        return X.sign(f0), _ZERO * f1, _ZERO * f2
     raise AssertionError(name)  # pragma: no cover
 
 
@@ -111,88 +131,89 @@ def _mul(a: Jet, b: Jet) -> Jet:
     return a[0] * b[0], a[1] * b[0] + a[0] * b[1], a[2] * b[0] + 2.0 * a[1] * b[1] + a[0] * b[2]
 
 
-def _div(a: Jet, b: Jet) -> Jet:
-    q0 = np.true_divide(a[0], b[0])
-    q1 = np.true_divide(a[1] - q0 * b[1], b[0])
-    q2 = np.true_divide(a[2] - 2.0 * q1 * b[1] - q0 * b[2], b[0])
+def _div(a: Jet, b: Jet, X: Backend) -> Jet:
+    q0 = X.div(a[0], b[0])
+    q1 = X.div(a[1] - q0 * b[1], b[0])
+    q2 = X.div(a[2] - 2.0 * q1 * b[1] - q0 * b[2], b[0])
     return q0, q1, q2
 
 
-def _pow_const_exponent(a: Jet, n: float) -> Jet:
+def _pow_const_exponent(a: Jet, n: float, X: Backend) -> Jet:
     if n == 0.0:
-        return np.float64(1.0) + 0.0 * a[0], _ZERO, _ZERO
+        return X.f64(1.0) + 0.0 * a[0], _ZERO, _ZERO
     if n == 1.0:
         return a
-    a0 = np.float64(1.0) * a[0]
+    a0 = X.f64(1.0) * a[0]
     if n == 2.0:
         return a0 * a0, 2.0 * a0 * a[1], 2.0 * (a[1] * a[1] + a0 * a[2])
-    p1 = np.power(a0, n - 1.0)          # a^(n-1)
-    f0 = np.power(a0, n)
+    p1 = X.power(a0, n - 1.0)          # a^(n-1)
+    f0 = X.power(a0, n)
     d1 = n * p1
-    d2 = n * (n - 1.0) * np.power(a0, n - 2.0)
+    d2 = n * (n - 1.0) * X.power(a0, n - 2.0)
     return f0, d1 * a[1], d1 * a[2] + d2 * a[1] * a[1]
 
 
-def _pow(a: Jet, b: Jet, b_const: bool) -> Jet:
+def _pow(a: Jet, b: Jet, b_const: bool, X: Backend) -> Jet:
     if b_const:
-        return _pow_const_exponent(a, float(b[0]))
+        return _pow_const_exponent(a, float(b[0]), X)
     # a**b = exp(b log a)  (a > 0; a <= 0 with a variable exponent is not real)
-    a0 = np.float64(1.0) * a[0]
-    la = np.log(a0)
-    f0 = np.power(a0, b[0])
-    q = np.true_divide(a[1], a0)
+    a0 = X.f64(1.0) * a[0]
+    la = X.log(a0)
+    f0 = X.power(a0, b[0])
+    q = X.div(a[1], a0)
     g1 = b[1] * la + b[0] * q
-    g2 = b[2] * la + 2.0 * b[1] * q + b[0] * (np.true_divide(a[2], a0) - q * q)
+    g2 = b[2] * la + 2.0 * b[1] * q + b[0] * (X.div(a[2], a0) - q * q)
     return f0, f0 * g1, f0 * (g2 + g1 * g1)
 
 
-def _atan2(y: Jet, x: Jet) -> Jet:
+def _atan2(y: Jet, x: Jet, X: Backend) -> Jet:
     D = x[0] * x[0] + y[0] * y[0]
     N = x[0] * y[1] - y[0] * x[1]
     dN = x[0] * y[2] - y[0] * x[2]
     dD = 2.0 * (x[0] * x[1] + y[0] * y[1])
-    d1 = np.true_divide(N, D)
-    d2 = np.true_divide(dN - d1 * dD, D)
-    return np.arctan2(y[0], x[0]), d1, d2
+    d1 = X.div(N, D)
+    d2 = X.div(dN - d1 * dD, D)
+    return X.arctan2(y[0], x[0]), d1, d2
 
 
-def _select(args: list[Jet], pick_min: bool) -> Jet:
+def _select(args: list[Jet], pick_min: bool, X: Backend) -> Jet:
     out = args[0]
     for b in args[1:]:
         cond = (out[0] <= b[0]) if pick_min else (out[0] >= b[0])
-        out = tuple(np.where(cond, out[i], b[i]) for i in range(3))
+        out = tuple(X.where(cond, out[i], b[i]) for i in range(3))
     return out
 
 
-def compile_jet(ir: tuple, var: str = "t") -> Callable[[Mapping[str, Any]], Jet]:
-    """Compile an IR tree into ``env -> (f, df/dvar, d²f/dvar²)``."""
-    fn, _ = _compile(ir, var)
+def compile_jet(ir: tuple, var: str = "t", X: Backend | None = None) -> Callable[[Mapping[str, Any]], Jet]:
+    """Compile an IR tree into ``env -> (f, df/dvar, d²f/dvar²)`` (numpy's functions unless
+    ``X`` is :mod:`floatmath`)."""
+    fn, _ = _compile(ir, var, numpy_backend() if X is None else X)
     return fn
 
 
-def _compile(ir: tuple, var: str):
+def _compile(ir: tuple, var: str, X: Backend):
     kind = ir[0]
     if kind == "num":
-        return _const(ir[1])
+        return _const(ir[1], X)
     if kind == "param":
-        return _const(ir[2])
+        return _const(ir[2], X)
     if kind == "var":
         name = ir[1]
         if name == var:
             def v(env):
                 t = env[name]
-                return t, np.ones_like(t, dtype=float), np.zeros_like(t, dtype=float)
+                return t, X.ones(t), X.zeros(t)
             return v, False
 
         def other(env):
             return env[name], _ZERO, _ZERO
         return other, True
     if kind == "neg":
-        a, c = _compile(ir[1], var)
+        a, c = _compile(ir[1], var, X)
         return (lambda env: tuple(-x for x in a(env))), c
     if kind in ("add", "sub", "mul", "div", "pow"):
-        a, ca = _compile(ir[1], var)
-        b, cb = _compile(ir[2], var)
+        a, ca = _compile(ir[1], var, X)
+        b, cb = _compile(ir[2], var, X)
         if kind == "add":
             return (lambda env: tuple(x + y for x, y in zip(a(env), b(env)))), ca and cb
         if kind == "sub":
@@ -200,40 +221,68 @@ def _compile(ir: tuple, var: str):
         if kind == "mul":
             return (lambda env: _mul(a(env), b(env))), ca and cb
         if kind == "div":
-            return (lambda env: _div(a(env), b(env))), ca and cb
-        return (lambda env: _pow(a(env), b(env), cb)), ca and cb
+            return (lambda env: _div(a(env), b(env), X)), ca and cb
+        return (lambda env: _pow(a(env), b(env), cb, X)), ca and cb
     if kind == "call":
         name = ir[1]
-        parts = [_compile(x, var) for x in ir[2]]
+        parts = [_compile(x, var, X) for x in ir[2]]
         fns = [p[0] for p in parts]
         const = all(p[1] for p in parts)
         if name == "atan2":
-            return (lambda env: _atan2(fns[0](env), fns[1](env))), const
+            return (lambda env: _atan2(fns[0](env), fns[1](env), X)), const
         if name in ("min", "max"):
             pick_min = name == "min"
-            return (lambda env: _select([f(env) for f in fns], pick_min)), const
+            return (lambda env: _select([f(env) for f in fns], pick_min, X)), const
         f0 = fns[0]
-        return (lambda env: _unary(name, f0(env))), const
+        return (lambda env: _unary(name, f0(env), X)), const
     raise AssertionError(kind)  # pragma: no cover
 
 
 _CACHE: dict[tuple, Callable] = {}
 
 
-def jet(e: Expr, t, var: str = "t", **env: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(e, de/dvar, d²e/dvar²)`` at ``var = t`` (arrays of the shape of ``t``)."""
-    key = (e.ir, var)
+def _compiled(e: Expr, var: str, X: Backend | None) -> Callable:
+    key = (e.ir, var, X is None)
     fn = _CACHE.get(key)
     if fn is None:
-        fn = _CACHE[key] = compile_jet(e.ir, var)
+        fn = _CACHE[key] = compile_jet(e.ir, var, X)
+    return fn
+
+
+def jet(e: Expr, t, var: str = "t", **env: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(e, de/dvar, d²e/dvar²)`` at ``var = t`` (arrays of the shape of ``t``)."""
+    import numpy as np
+
+    fn = _compiled(e, var, None)
     t = np.asarray(t, dtype=float)
     with np.errstate(all="ignore"):
         out = fn({**env, var: t})
     return tuple(np.broadcast_to(np.asarray(x, dtype=float), t.shape).copy() for x in out)  # type: ignore[return-value]
 
 
+def jet_at(e: Expr, t: float, var: str = "t") -> tuple[float, float, float]:
+    """``(e, de/dvar, d²e/dvar²)`` at one time, in plain floats (:mod:`floatmath`: no numpy,
+    numpy's values: inf or nan where the arrays give them).
+
+    >>> from dyncli.expr import parse
+    >>> jet_at(parse("t**3 + sin(t)", ("t",)), 0.0)
+    (0.0, 1.0, 0.0)
+    """
+    out = _compiled(e, var, floatmath)({var: float(t)})
+    return tuple(float(x) for x in out)      # type: ignore[return-value]
+
+
+def vec_jet_at(exprs, t: float, var: str = "t") -> tuple[tuple[float, ...], ...]:
+    """Jets of 3 component expressions at one time: (values, first derivatives, second
+    derivatives), each a 3-tuple of floats."""
+    comps = [jet_at(e, t, var) for e in exprs]
+    return tuple(tuple(c[k] for c in comps) for k in range(3))
+
+
 def vec_jet(exprs, t, var: str = "t") -> np.ndarray:
     """Jets of 3 component expressions: array of shape (3 orders, 3 components, len(t))."""
+    import numpy as np
+
     t = np.atleast_1d(np.asarray(t, dtype=float))
     out = np.empty((3, 3, t.size))
     for i, e in enumerate(exprs):

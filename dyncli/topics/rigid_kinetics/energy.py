@@ -19,25 +19,38 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Series, Table
 from dyncli.topics.rigid_kinetics import equations as eq
+from dyncli.vec3 import cross
 
 
 def _finite(name: str, *arrays) -> None:
-    if not all(np.isfinite(np.asarray(a, dtype=float)).all() for a in arrays):
+    """InputError unless every component of every (nested) array is finite (plain floats: no numpy)."""
+    def ok(a) -> bool:
+        return all(ok(c) for c in a) if hasattr(a, "__len__") else math.isfinite(a)
+
+    if not all(ok(a) for a in arrays):
         raise InputError(f"{name} overflows a double (values beyond ~1e308)", name.split()[0])
+
+
+def _sum(xs) -> float:
+    """Σ xs correctly rounded (math.fsum); inf or nan where the sum overflows (then reported by _finite)."""
+    xs = [float(x) for x in xs]
+    try:
+        return math.fsum(xs)
+    except (OverflowError, ValueError):     # an overflowing sum, or inf − inf
+        return sum(xs)
 
 
 def initial_state(p):
     """(v̄, ω): as given, or the prescribed motion's values at its first time."""
     v, w = p.v, p.omega
     if p.motion is not None and (v is None or w is None):
+        from dyncli.topics.kinematics.jet import vec_jet_at     # plain floats: no numpy
+
         t0 = p.motion.at[0]
-        ev = [float(e(t=t0)) for e in p.motion.v]
-        ew = [float(e(t=t0)) for e in p.motion.omega]
+        ev, ew = list(vec_jet_at(p.motion.v, t0)[0]), list(vec_jet_at(p.motion.omega, t0)[0])
         if not all(math.isfinite(c) for c in ev + ew):
             raise NumericalError("the prescribed motion is not finite at its first time")
         v = ev if v is None else v
@@ -49,13 +62,11 @@ def momentum_about(res, p, v, H) -> None:
     """``H_O`` (29.25) and ``x``-dependent views when the position is given."""
     if p.x is None:
         return
-    xb = np.asarray(p.x, dtype=float)
-    O = np.zeros(3) if p.about is None else np.asarray(p.about, dtype=float)
-    with np.errstate(over="ignore", invalid="ignore"):
-        HO, orbit = eq.angular_momentum_about(xb, O, p.m, v, H)     # (29.25)
+    O = (0.0, 0.0, 0.0) if p.about is None else p.about
+    HO, orbit = eq.angular_momentum_about(p.x, O, p.m, v, H)     # (29.25)
     _finite("x (the position) with H_O", HO)
-    res.results["H_O"] = HO.tolist()
-    res.results["H_orbit"] = orbit.tolist()
+    res.results["H_O"] = list(HO)
+    res.results["H_orbit"] = list(orbit)
     res.equations.append("29.25")
 
 
@@ -63,22 +74,20 @@ def power(res, p, v, w) -> None:
     """``power`` and its terms (34.17-34.19) when forces, moments or b are given."""
     if not (p.forces or p.moments or p.b is not None):
         return
-    xb = np.zeros(3) if p.x is None else np.asarray(p.x, dtype=float)
+    xb = (0.0, 0.0, 0.0) if p.x is None else p.x
     rows, pf = [], []
-    with np.errstate(over="ignore", invalid="ignore"):
-        for i, f in enumerate(p.forces):
-            F = np.asarray(f.F, dtype=float)
-            xi = xb if f.x is None else np.asarray(f.x, dtype=float)
-            vi = eq.point_velocity(v, w, xi, xb)                # (13.8)
-            pf.append(float(F @ vi))
-            rows.append([f"F{i + 1}", list(f.F), xi.tolist(), vi.tolist(), pf[-1]])
-        pm = [float(np.asarray(M, dtype=float) @ w) for M in p.moments]
-        for i, M in enumerate(p.moments):
-            rows.append([f"M{i + 1}", list(M), "", w.tolist(), pm[i]])
-        pb = 0.0 if p.b is None else float(p.m * (np.asarray(p.b, dtype=float) @ v))   # (34.18)
-        if p.b is not None:
-            rows.append(["m b", (p.m * np.asarray(p.b, dtype=float)).tolist(), xb.tolist(), v.tolist(), pb])
-        P = math.fsum(pf + pm + [pb])
+    for i, f in enumerate(p.forces):
+        xi = xb if f.x is None else f.x
+        vi = eq.point_velocity(v, w, xi, xb)                # (13.8)
+        pf.append(eq.dot(f.F, vi))
+        rows.append([f"F{i + 1}", list(f.F), list(xi), list(vi), pf[-1]])
+    pm = [eq.dot(M, w) for M in p.moments]
+    for i, M in enumerate(p.moments):
+        rows.append([f"M{i + 1}", list(M), "", list(w), pm[i]])
+    pb = 0.0 if p.b is None else p.m * eq.dot(p.b, v)       # (34.18)
+    if p.b is not None:
+        rows.append(["m b", [p.m * c for c in p.b], list(xb), list(v), pb])
+    P = _sum(pf + pm + [pb])
     _finite("forces (their power)", pf, pm, [pb, P])
     res.results.update(power=P, power_forces=pf, power_moments=pm, power_body=pb)
     res.equations += ["34.17", "34.18", "34.19"]
@@ -88,22 +97,24 @@ def power(res, p, v, w) -> None:
 
 
 def motion(res, p, I) -> None:
-    """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20)."""
+    """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20), evaluated
+    at each time in plain floats (exact derivatives: :func:`dyncli.topics.kinematics.jet.vec_jet_at`)."""
     mo = p.motion
     if mo is None:
         return
-    from dyncli.topics.kinematics.jet import vec_jet
+    from dyncli.topics.kinematics.jet import vec_jet_at
 
-    t = np.asarray(mo.at, dtype=float)
-    V, W = vec_jet(mo.v, t), vec_jet(mo.omega, t)         # (order, component, time)
-    v, vd, w, wd = V[0], V[1], W[0], W[1]
-    with np.errstate(over="ignore", invalid="ignore"):
-        T, Td = eq.kinetic_energy_and_rate(p.m, I, v, vd, w, wd)     # (34.13), (34.15)
-        U = T - T[0]
-    if not (np.isfinite(T).all() and np.isfinite(Td).all()):
+    T, Td, vs, ws = [], [], [], []
+    for t in mo.at:
+        V, W = vec_jet_at(mo.v, t), vec_jet_at(mo.omega, t)      # (order, component)
+        e, rate = eq.kinetic_energy_and_rate(p.m, I, V[0], V[1], W[0], W[1])     # (34.13), (34.15)
+        T.append(e)
+        Td.append(rate)
+        vs.append([c + 0.0 for c in V[0]])
+        ws.append([c + 0.0 for c in W[0]])
+    if not all(math.isfinite(x) for x in T + Td):
         raise NumericalError("the prescribed motion is not finite (or not differentiable) at one of the times 'at'")
-    res.results.update(T_motion=T.tolist(), T_rate=Td.tolist(), work=U.tolist(),
-                       v_motion=(v.T + 0.0).tolist(), omega_motion=(w.T + 0.0).tolist())
+    res.results.update(T_motion=T, T_rate=Td, work=[x - T[0] for x in T], v_motion=vs, omega_motion=ws)
     res.equations += ["34.13", "34.15", "34.16", "34.20"]
     res.series.append(Series("t", list(mo.at), ["T_motion", "T_rate", "work"],
                              title="energy over the prescribed motion: P = dT/dt (34.16), U₂/₁ = T₂ − T₁ (34.20)"))
@@ -114,15 +125,14 @@ def translation(res, p) -> None:
     """planar-moments with forces: F, ā (32.6, 32.8), Σ p×F and the couple still needed."""
     if not p.forces:
         return
-    Fs = [np.asarray(f.F, dtype=float) for f in p.forces]
-    ps = [np.zeros(3) if f.x is None else np.asarray(f.x, dtype=float) for f in p.forces]
-    with np.errstate(over="ignore", invalid="ignore"):
-        F = np.array([math.fsum(f[i] for f in Fs) for i in range(3)])
-        a = F / p.m
-        MF = np.array([math.fsum(c[i] for c in (np.cross(q, f) for q, f in zip(ps, Fs))) for i in range(3)])
-        couple = np.asarray(res.results["M"], dtype=float) - MF
+    Fs = [f.F for f in p.forces]
+    ps = [(0.0, 0.0, 0.0) if f.x is None else f.x for f in p.forces]
+    F = [_sum(f[i] for f in Fs) for i in range(3)]                          # (32.6)
+    a = [c / p.m for c in F]                                                # (32.8)
+    MF = [_sum(c[i] for c in [cross(q, f) for q, f in zip(ps, Fs)]) for i in range(3)]
+    couple = [M - c for M, c in zip(res.results["M"], MF)]
     _finite("forces (their resultant or moment)", F, a, MF, couple)
-    res.results.update(F=F.tolist(), a_com=a.tolist(), M_forces=MF.tolist(), M_couple=couple.tolist())
+    res.results.update(F=F, a_com=a, M_forces=MF, M_couple=couple)
     res.equations += ["32.5", "32.6", "32.8"]
     if F[2] != 0.0:
         res.warn(f"the forces have a resultant F'3 = {F[2]:.6g} N along e'3: the center of mass accelerates out of "

@@ -5,11 +5,9 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.direction import norm, unit
 from dyncli.result import FrameTable, Result, SolveOptions
-from dyncli.topics.inertia import rotations as rot
+from dyncli.topics.inertia.eigen3 import inertia_defect, sym3
 from dyncli.topics.rigid_kinetics import energy
 from dyncli.topics.rigid_kinetics import equations as eq
 
@@ -40,31 +38,32 @@ def solve_planar_moments(p, options: SolveOptions | None = None) -> Result:
 def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
     m = p.m
     v0, w0 = energy.initial_state(p)
-    v = np.asarray(v0, dtype=float)
-    w = np.asarray(w0, dtype=float)
-    I = rot.sym(p.I)
-    H = I @ w                                # (30.12a)
+    v = tuple(float(c) for c in v0)
+    w = tuple(float(c) for c in w0)
+    I = sym3(p.I)
+    H = eq.matvec(I, w)                      # (30.12a)
+    G = [m * c for c in v]
     T_trans = eq.translational_kinetic_energy(m, v)     # (34.6)
     T_rot = eq.rotational_kinetic_energy(w, H)          # (34.7)
     T_rot = max(T_rot, 0.0)                  # I is positive-semidefinite: only rounding can make it negative
     res = Result(
-        {"T": T_trans + T_rot, "T_trans": T_trans, "T_rot": T_rot, "H": H.tolist(), "G": (m * v).tolist()},
+        {"T": T_trans + T_rot, "T_trans": T_trans, "T_rot": T_rot, "H": list(H), "G": G},
         method="closed-form",
         equations=["30.12", "34.6", "34.7"],
     )
-    lo, tri, scale = rot.inertia_defect(I)
+    lo, tri, scale = inertia_defect(I)
     if tri > 1e-10 * max(scale, 1e-300):
         res.warn(f"I violates the triangle inequality of principal moments (I₁ + I₂ < I₃ by {tri:.6g} kg·m²): "
                  "no positive mass distribution has this inertia tensor")
     nw, nH = norm(w), norm(H)
     if 0 < nw < math.inf and 0 < nH < math.inf:
-        c = float(np.clip(unit(w) @ unit(H), -1.0, 1.0))      # directions scaled first: ω = 1e-200 is a direction
-        res.results["angle_omega_H"] = float(np.arccos(c))
+        c = math.fsum(a * b for a, b in zip(unit(w), unit(H)))      # directions scaled first: ω = 1e-200 is a direction
+        res.results["angle_omega_H"] = math.acos(min(max(c, -1.0), 1.0))
     else:
         res.results["angle_omega_H"] = None
         res.warn("angle_omega_H is undefined: ω = 0 or H̄ = 0" if nw == 0 or nH == 0
                  else "angle_omega_H is undefined: |ω| or |H̄| overflows a double")
-    res.views.append(FrameTable("vectors on the basis of I", [("v̄", v.tolist()), ("ω", w.tolist()), ("H̄ = Īω", H.tolist()), ("G = m v̄", (m * v).tolist())]))
+    res.views.append(FrameTable("vectors on the basis of I", [("v̄", list(v)), ("ω", list(w)), ("H̄ = Īω", list(H)), ("G = m v̄", G)]))
     energy.momentum_about(res, p, v, H)
     energy.power(res, p, v, w)
     energy.motion(res, p, I)

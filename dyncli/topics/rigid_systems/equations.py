@@ -1,10 +1,8 @@
 """Systems of point masses and rigid bodies with massless links (notes §36): the closed forms
-as pure functions on floats and numpy arrays (no pydantic, no renderer).
+as pure functions on plain floats and tuples (no numpy, no pydantic, no renderer).
 """
 
 from __future__ import annotations
-
-import numpy as np
 
 from dyncli.direction import norm
 
@@ -13,12 +11,11 @@ def distance_from_axis(x, e) -> float:
     """d = |x − (x·e) e| [m]: the distance of the point x from the axis through the origin along
     the unit vector e (scaled norm: no overflow of d² before the square root; inf on overflow).
 
-    >>> distance_from_axis(np.array([3.0, 4.0, 7.0]), np.array([0.0, 0.0, 1.0]))
+    >>> distance_from_axis((3.0, 4.0, 7.0), (0.0, 0.0, 1.0))
     5.0
     """
-    with np.errstate(over="ignore", invalid="ignore"):   # overflow -> inf, checked by the caller
-        perp = x - (x @ e) * e             # component normal to the axis
-        return norm(perp)                  # math.hypot: no overflow of |perp|² (dyncli.direction)
+    xe = x[0] * e[0] + x[1] * e[1] + x[2] * e[2]      # overflow -> inf (never raises), checked by the caller
+    return norm([xi - xe * ei for xi, ei in zip(x, e)])   # math.hypot of the normal component: no overflow of |perp|²
 
 
 def spin_after(omega0: float, I_before: float, I_after: float) -> float:

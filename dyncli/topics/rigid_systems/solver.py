@@ -13,19 +13,17 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.direction import unit
 from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions, Table
 from dyncli.topics.rigid_systems import equations as eq
 
 
-def axial_inertia(masses, attr: str, e: np.ndarray) -> tuple[float, list[float]]:
+def axial_inertia(masses, attr: str, e: tuple[float, ...]) -> tuple[float, list[float]]:
     """Σ m d² about the axis through the origin along unit e, and each d."""
     total, dists = 0.0, []
     for mm in masses:
-        d = eq.distance_from_axis(np.asarray(getattr(mm, attr), dtype=float), e)
+        d = eq.distance_from_axis([float(c) for c in getattr(mm, attr)], e)
         total += mm.m * d * d if math.isfinite(d) else math.inf
         dists.append(d)
     return total, dists

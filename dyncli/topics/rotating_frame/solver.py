@@ -1,7 +1,7 @@
 """Rotating frames (notes §10, §11) — numeric core.
 
 p = p'_i e'_i with ė'_i = ω × e'_i.  The exact derivatives of the
-components (forward-mode AD, :mod:`dyncli.topics.kinematics.jet`) give
+components (forward-mode AD, :mod:`dyncli.topics.kinematics.jet`, in plain floats at each time) give
 
     δp/δt = ṗ'_i e'_i (11.5),     ṗ = δp/δt + ω×p (11.4),
     ω̇ = δω/δt (11.10),
@@ -14,11 +14,11 @@ a_B = δv_B/δt + ω×v_B.
 
 from __future__ import annotations
 
-import numpy as np
+import math
 
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.kinematics import frame
-from dyncli.topics.kinematics.jet import vec_jet
+from dyncli.topics.kinematics.jet import vec_jet_at
 from dyncli.topics.rotating_frame import equations as eq
 
 
@@ -33,7 +33,7 @@ BASIS = ("e'₁", "e'₂", "e'₃")
 
 
 def terms(w, dw, p, dp, d2p, vB=None, dvB=None, aB=None) -> dict:
-    """Every named term from the components (numpy arrays or sympy objects), through
+    """Every named term from the components (floats or sympy objects), through
     :mod:`dyncli.topics.rotating_frame.equations`."""
     out = {"omega": w, "p": p, "dp_dt": dp, "omega_x_p": frame.cross(w, p), "p_dot": eq.total_rate(dp, w, p),
            "omega_dot": dw, "d2p_dt2": d2p, "omega_dot_x_p": frame.cross(dw, p), "coriolis": eq.coriolis(w, dp),
@@ -49,29 +49,33 @@ def terms(w, dw, p, dp, d2p, vB=None, dvB=None, aB=None) -> dict:
     return out
 
 
+def _terms_at(p, t: float) -> dict:
+    """Every named term at the time t, in plain floats (exact derivatives of the components)."""
+    W, P = vec_jet_at(p.omega, t), vec_jet_at(p.p, t)
+    VB = vec_jet_at(p.vB, t) if p.vB is not None else None
+    AB = vec_jet_at(p.aB, t) if p.aB is not None else None
+    return terms(W[0], W[1], P[0], P[1], P[2], VB[0] if VB else None, VB[1] if VB else None,
+                 AB[0] if AB else None)
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
     options = options or SolveOptions()
     times = [float(t) for t in p.at]
-    t = np.asarray(times, dtype=float)
-    W = vec_jet(p.omega, t)
-    P = vec_jet(p.p, t)
-    VB = vec_jet(p.vB, t) if p.vB is not None else None
-    AB = vec_jet(p.aB, t) if p.aB is not None else None
-    with np.errstate(all="ignore"):
-        T = terms(tuple(W[0]), tuple(W[1]), tuple(P[0]), tuple(P[1]), tuple(P[2]),
-                  tuple(VB[0]) if VB is not None else None, tuple(VB[1]) if VB is not None else None,
-                  tuple(AB[0]) if AB is not None else None)
+    at = [_terms_at(p, t) for t in times]
     res = Result({}, method="closed-form", equations=["11.4", "11.5", "11.10", "11.11"])
     bad: set[float] = set()
-    names = [n for _, n in TABLE_ROWS] + [n for _, n in EXTRA_ROWS if n in T]
+    given = {"omega_dot"} | ({"vB", "vA"} if p.vB is not None else set()) | (
+        {"aB", "aA"} if p.vB is not None or p.aB is not None else set())     # the keys terms() returns
+    names = [n for _, n in TABLE_ROWS] + [n for _, n in EXTRA_ROWS if n in given]
     per_time: dict[str, list] = {}
     for name in names:
-        arr = np.stack([np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in T[name]], axis=1) + 0.0
-        ok = np.all(np.isfinite(arr), axis=1)
-        vals = arr.tolist()
-        for i in np.flatnonzero(~ok):
-            vals[i] = None
-            bad.add(times[i])
+        vals = []
+        for ti, T in zip(times, at):
+            v = [float(c) + 0.0 for c in T[name]]
+            if not all(math.isfinite(c) for c in v):
+                v = None
+                bad.add(ti)
+            vals.append(v)
         per_time[name] = vals
     for name in ["omega", "p", "dp_dt", "omega_x_p", "p_dot", "omega_dot", "d2p_dt2", "omega_dot_x_p",
                  "coriolis", "centripetal", "p_ddot", "vA", "aA"]:

@@ -1,4 +1,6 @@
-"""Closed-form response of the spring-mass-damper of notes §17 (numpy only).
+"""Closed-form response of the spring-mass-damper of notes §17: one set of formulas, evaluated
+on numpy arrays (plots, sweeps; numpy imported there) or on plain floats and cmath (``*_at``:
+the few times of a problem, no numpy).
 
 Everything here is uniform in the damping ratio ζ ≥ 0: one formulation is
 continuous through ζ = 1 and free of cancellation for large ζ, and the forced
@@ -35,10 +37,11 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-
-import numpy as np
+from types import SimpleNamespace
 
 from dyncli.exact import INPUT_ROUNDING, cmp_sqrt
+from dyncli.topics.vibration.backends import FLOATS as _FLOATS
+from dyncli.topics.vibration.backends import arrays as _arrays
 
 _SERIES_TERMS = 24
 
@@ -67,63 +70,25 @@ def char_roots(omega_n: float, zeta: float) -> tuple[complex, complex]:
 
 
 # ---------------------------------------------------------------------------
-# helpers
-
-
-def _sinc(y):
-    """sin(y)/y, 1 at 0 (y real array)."""
-    y = np.asarray(y, dtype=float)
-    out = np.ones_like(y)
-    nz = y != 0
-    out[nz] = np.sin(y[nz]) / y[nz]
-    return out
-
-
-def _phi1(z):
-    """(1 - e^{-z})/z = -expm1(-z)/z, 1 at 0 (z ≥ 0 real array)."""
-    z = np.asarray(z, dtype=float)
-    out = np.ones_like(z)
-    nz = z != 0
-    out[nz] = -np.expm1(-z[nz]) / z[nz]
-    return out
-
-
-def _sinhc(u):
-    """sinh(u)/u for complex u (1 at 0), accurate for small |u|."""
-    u = np.asarray(u, dtype=complex)
-    out = np.empty_like(u)
-    small = np.abs(u) < 1e-4
-    us = u[small]
-    u2 = us * us
-    out[small] = 1.0 + u2 / 6.0 * (1.0 + u2 / 20.0)
-    ub = u[~small]
-    out[~small] = np.sinh(ub) / ub
-    return out
-
-
-# ---------------------------------------------------------------------------
 # free response
 
 
-def free(t, w0: float, wd0: float, omega_n: float, zeta: float):
-    """Homogeneous solution of (17.17) with w(0) = w0, ẇ(0) = wd0.
-    Returns (w, ẇ) as float arrays over t ≥ 0."""
-    t = np.asarray(t, dtype=float)
+def _free(t, w0: float, wd0: float, omega_n: float, zeta: float, X: SimpleNamespace):
     wn = omega_n
     ws, lam1, _ = roots(wn, zeta)
     if zeta < 1.0:
         y = ws * t
-        ex = np.exp(-zeta * wn * t)
-        c = np.cos(y)
-        ts = t * _sinc(y)
+        ex = X.exp(-zeta * wn * t)
+        c = X.cos(y)
+        ts = t * X.sinc(y)
         w = ex * (w0 * c + (wd0 + zeta * wn * w0) * ts)
         # the velocity obeys the same equation with (ẇ0, ẅ0), ẅ0 = -2ζωẇ0 - ω²w0
         v = ex * (wd0 * c - (wn * (wn * w0) + zeta * wn * wd0) * ts)
         return w, v
     y = ws * t
-    e1 = np.exp(-lam1 * t)
-    tau = t * _phi1(2.0 * y)
-    big_e = np.exp(-2.0 * y)
+    e1 = X.exp(-lam1 * t)
+    tau = t * X.phi1(2.0 * y)
+    big_e = X.exp(-2.0 * y)
     b = wd0 + lam1 * w0
     inner = w0 + b * tau
     w = e1 * inner
@@ -131,8 +96,33 @@ def free(t, w0: float, wd0: float, omega_n: float, zeta: float):
     return w, v
 
 
+def free(t, w0: float, wd0: float, omega_n: float, zeta: float):
+    """Homogeneous solution of (17.17) with w(0) = w0, ẇ(0) = wd0.
+    Returns (w, ẇ) as float arrays over t ≥ 0."""
+    import numpy as np
+
+    return _free(np.asarray(t, dtype=float), w0, wd0, omega_n, zeta, _arrays())
+
+
+def free_at(t: float, w0: float, wd0: float, omega_n: float, zeta: float) -> tuple[float, float]:
+    """:func:`free` at one time, in plain floats.
+
+    >>> free_at(math.pi / 2, 1.0, 0.0, 1.0, 0.0)      # cos t, -sin t
+    (6.123233995736766e-17, -1.0)
+    """
+    return _free(float(t), w0, wd0, omega_n, zeta, _FLOATS)
+
+
 # ---------------------------------------------------------------------------
 # divided differences of z -> exp(z t)
+
+
+def _dd1_direct(a: complex, b: complex, t, X):
+    return (X.cexp(a * t) - X.cexp(b * t)) / (a - b)
+
+
+def _dd1_symmetric(a: complex, b: complex, t, X):
+    return X.cexp(0.5 * (a + b) * t) * t * X.sinhc(0.5 * (a - b) * t)
 
 
 def dd1(a: complex, b: complex, t):
@@ -142,13 +132,26 @@ def dd1(a: complex, b: complex, t):
     apart that the two exponentials differ by more than a factor e (then the
     plain difference has no cancellation and the symmetric form could
     overflow)."""
+    import numpy as np
+
+    X = _arrays()
     t = np.asarray(t, dtype=float)
-    d = a - b
     out = np.empty(t.shape, dtype=complex)
-    direct = abs(d.real) * t > 1.0
-    _put(out, direct, lambda td: (np.exp(a * td) - np.exp(b * td)) / d, t)
-    _put(out, ~direct, lambda ts: np.exp(0.5 * (a + b) * ts) * ts * _sinhc(0.5 * d * ts), t)
+    direct = abs((a - b).real) * t > 1.0
+    _put(out, direct, lambda td: _dd1_direct(a, b, td, X), t)
+    _put(out, ~direct, lambda ts: _dd1_symmetric(a, b, ts, X), t)
     return out
+
+
+def dd1_at(a: complex, b: complex, t: float) -> complex:
+    """:func:`dd1` at one time, in plain floats (cmath).
+
+    >>> dd1_at(0j, 0j, 2.0)
+    (2+0j)
+    """
+    if abs((a - b).real) * t > 1.0:
+        return _dd1_direct(a, b, t, _FLOATS)
+    return _dd1_symmetric(a, b, t, _FLOATS)
 
 
 def _put(out, mask, fn, t):
@@ -160,14 +163,21 @@ def _put(out, mask, fn, t):
         out[mask] = fn(t[mask])
 
 
-def dd2(a: complex, b: complex, c: complex, t):
-    """e^{zt}[a, b, c] (second divided difference), t ≥ 0 array."""
-    t = np.asarray(t, dtype=float)
+def _outer_pair(a: complex, b: complex, c: complex) -> tuple[complex, complex, complex]:
+    """(a, b, c) reordered so that the outer pair a, c are the two most distant nodes."""
     nodes = [a, b, c]
-    # outer pair = the two most distant nodes
     pairs = [(0, 2, 1), (0, 1, 2), (1, 2, 0)]
     i, k, j = max(pairs, key=lambda p: abs(nodes[p[0]] - nodes[p[1]]))
-    a, c, b = nodes[i], nodes[k], nodes[j]
+    return nodes[i], nodes[j], nodes[k]
+
+
+def dd2(a: complex, b: complex, c: complex, t):
+    """e^{zt}[a, b, c] (second divided difference), t ≥ 0 array."""
+    import numpy as np
+
+    X = _arrays()
+    t = np.asarray(t, dtype=float)
+    a, b, c = _outer_pair(a, b, c)
     span = abs(a - c)
     out = np.empty(t.shape, dtype=complex)
     far = span * t > 1.0
@@ -177,17 +187,31 @@ def dd2(a: complex, b: complex, c: complex, t):
     if zero.any():        # the series is exactly +0 at t = 0 (t² e^{bt} Σ…): skip its 24 terms there
         out[zero] = 0j
         near &= ~zero
-    _put(out, near, lambda tn: _dd2_series(a, b, c, tn), t)
+    _put(out, near, lambda tn: _dd2_series(a, b, c, tn, X), t)
     return out
 
 
-def _dd2_series(a: complex, b: complex, c: complex, tn):
+def dd2_at(a: complex, b: complex, c: complex, t: float) -> complex:
+    """:func:`dd2` at one time, in plain floats (cmath).
+
+    >>> dd2_at(0j, 0j, 0j, 2.0)       # t²/2 e^{0}
+    (2+0j)
+    """
+    a, b, c = _outer_pair(a, b, c)
+    if abs(a - c) * t > 1.0:
+        return (dd1_at(a, b, t) - dd1_at(b, c, t)) / (a - c)
+    if t == 0.0:
+        return 0j
+    return _dd2_series(a, b, c, t, _FLOATS)
+
+
+def _dd2_series(a: complex, b: complex, c: complex, tn, X):
     """e^{zt}[a, b, c] by its Taylor series (nodes within 1/t of each other)."""
     al = (a - b) * tn
     ga = (c - b) * tn
     # e^{u}[al, 0, ga] = sum_k h_k(al, ga) / (k+2)!,  h_k = al h_{k-1} + ga^k
-    h = np.ones_like(al)
-    gk = np.ones_like(ga)
+    h = X.ones(al)
+    gk = X.ones(ga)
     total = h / 2.0
     fact = 2.0
     for kk in range(1, _SERIES_TERMS):
@@ -195,12 +219,14 @@ def _dd2_series(a: complex, b: complex, c: complex, tn):
         h = al * h + gk
         fact *= kk + 2
         total = total + h / fact
-    return np.exp(b * tn) * tn * tn * total
+    return X.cexp(b * tn) * tn * tn * total
 
 
 def forced(t, force: float, Omega: float, omega_n: float, zeta: float):
     """Zero-initial-condition response of ẅ + 2ζωẇ + ω²w = F sin(Ωt):
     (w_f, ẇ_f) as float arrays."""
+    import numpy as np
+
     t = np.asarray(t, dtype=float)
     if force == 0.0 or Omega == 0.0:
         z = np.zeros_like(t)
@@ -210,27 +236,59 @@ def forced(t, force: float, Omega: float, omega_n: float, zeta: float):
     return force * e.imag, force * Omega * e.real
 
 
+def forced_at(t: float, force: float, Omega: float, omega_n: float, zeta: float) -> tuple[float, float]:
+    """:func:`forced` at one time, in plain floats.
+
+    >>> w, v = forced_at(1.0, 1.0, 2.0, 1.0, 0.0)     # (sin 2t − 2 sin t)/(1 − 4)
+    >>> abs(w - (math.sin(2.0) - 2 * math.sin(1.0)) / -3) < 1e-15
+    True
+    """
+    if force == 0.0 or Omega == 0.0:
+        return 0.0, 0.0
+    s1, s2 = char_roots(omega_n, zeta)
+    e = dd2_at(complex(0.0, Omega), s1, s2, float(t))
+    return force * e.imag, force * Omega * e.real
+
+
+def _response(t, wh, vh, wf, vf, L: float, s0: float, Omega: float, X):
+    w = wh + wf
+    wdot = vh + vf
+    if s0 != 0.0 and Omega != 0.0:
+        th = Omega * t
+        s = s0 * X.sin(th)
+        sd = s0 * Omega * X.cos(th)
+    else:
+        s = X.zeros(t)
+        sd = X.zeros(t)
+    return w + s + L, wdot + sd, w
+
+
 def response(t, *, omega_n: float, zeta: float, L: float, x0: float, v0: float,
              s0: float = 0.0, Omega: float = 0.0):
     """Total response of (17.15a) with s(t) = s0 sin(Ωt), x(0) = x0, ẋ(0) = v0.
     Returns (x, v, w) float arrays."""
+    import numpy as np
+
     t = np.asarray(t, dtype=float)
     w0 = x0 - L                      # s(0) = 0
     wd0 = v0 - s0 * Omega            # ẇ(0) = v0 - ṡ(0)
     wh, vh = free(t, w0, wd0, omega_n, zeta)
     wf, vf = forced(t, s0 * Omega * Omega, Omega, omega_n, zeta)
-    w = wh + wf
-    wdot = vh + vf
-    if s0 != 0.0 and Omega != 0.0:
-        th = Omega * t
-        s = s0 * np.sin(th)
-        sd = s0 * Omega * np.cos(th)
-    else:
-        s = np.zeros_like(t)
-        sd = np.zeros_like(t)
-    x = w + s + L
-    v = wdot + sd
-    return x, v, w
+    return _response(t, wh, vh, wf, vf, L, s0, Omega, _arrays())
+
+
+def response_at(t: float, *, omega_n: float, zeta: float, L: float, x0: float, v0: float,
+                s0: float = 0.0, Omega: float = 0.0) -> tuple[float, float, float]:
+    """:func:`response` at one time, in plain floats: (x, v, w).
+
+    >>> response_at(0.0, omega_n=20.0, zeta=0.05, L=0.25, x0=0.5, v0=0.0, s0=0.002, Omega=30.0)
+    (0.5, 0.0, 0.25)
+    """
+    t = float(t)
+    w0, wd0 = x0 - L, v0 - s0 * Omega
+    wh, vh = free_at(t, w0, wd0, omega_n, zeta)
+    wf, vf = forced_at(t, s0 * Omega * Omega, Omega, omega_n, zeta)
+    return _response(t, wh, vh, wf, vf, L, s0, Omega, _FLOATS)
 
 
 # ---------------------------------------------------------------------------
@@ -245,6 +303,8 @@ def amplification(r, zeta: float):
     G = r²/|D|, φ = -arg D, g = |1 + 2iζr|/|D|,
     Φ = arg((1 + 2iζr) conj(D)) = atan2(-2ζr³, (1-r)(1+r) + (2ζr)²).
     Phases are in (-π, π]."""
+    import numpy as np
+
     r = np.asarray(r, dtype=float)
     # for r > 2 divide D by r² (no overflow for large r; no cancellation there)
     big = r > 2.0
@@ -276,29 +336,30 @@ def amplification(r, zeta: float):
 
 def amplification_at(r: float, zeta: float) -> tuple[float, float, float, float]:
     """:func:`amplification` at one ratio, the same operations on Python
-    floats (one branch instead of both under ``np.where``; hypot and atan2
-    through numpy's ufuncs, so every value is the array version's, bit for
-    bit): a sweep evaluates it thousands of times."""
+    floats (one branch instead of both under ``np.where``; hypot as the C
+    library's, through ``abs(complex)``, and atan2, so every value is the
+    array version's, bit for bit): a sweep evaluates it thousands of times,
+    and a problem without a sweep needs no numpy."""
     if r > 2.0:
         inv = 1.0 / r
         re = (inv - 1.0) * (inv + 1.0)
         im = 2.0 * zeta * inv
-        num_G, num_g = 1.0, float(np.hypot(inv * inv, im))
+        num_G, num_g = 1.0, abs(complex(inv * inv, im))
     else:
         re = (1.0 - r) * (1.0 + r)
         im = 2.0 * zeta * r
-        num_G, num_g = r * r, float(np.hypot(1.0, im))
-    mod = float(np.hypot(re, im))
+        num_G, num_g = r * r, abs(complex(1.0, im))
+    mod = abs(complex(re, im))
     if mod > 0:
         G, g = num_G / mod, num_g / mod
     else:
         G = g = math.inf
     if mod == 0:
-        phi = Phi = -0.5 * np.pi
+        phi = Phi = -0.5 * math.pi
     else:
-        phi = float(np.arctan2(-im + 0.0, re))
-        Phi = float(np.arctan2(-2.0 * zeta * r + 0.0, re + 4.0 * zeta * zeta) if r > 2.0
-                    else np.arctan2(-im * r * r + 0.0, re + im * im))
+        phi = math.atan2(-im + 0.0, re)
+        Phi = (math.atan2(-2.0 * zeta * r + 0.0, re + 4.0 * zeta * zeta) if r > 2.0
+               else math.atan2(-im * r * r + 0.0, re + im * im))
     return G, phi + 0.0, g, Phi + 0.0
 
 
@@ -319,5 +380,5 @@ def peak_g(zeta: float):
     if not zeta > 0.0:
         return None
     r = math.sqrt(2.0 / (1.0 + math.sqrt(1.0 + 8.0 * zeta * zeta)))
-    _, _, g, _ = amplification(np.array([r]), zeta)
-    return r, float(g[0])
+    _, _, g, _ = amplification_at(r, zeta)
+    return r, g

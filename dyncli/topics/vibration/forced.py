@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.topics.vibration import closed_form as cf
 
 
@@ -30,6 +28,8 @@ def magnification(r, zeta: float):
     G/r² from the cancellation-free G of :func:`closed_form.amplification`
     (two roundings), and 1/|1 + 2iζr| where r² is below the double's
     resolution of 1 − r² (r < 1e-50)."""
+    import numpy as np
+
     r = np.asarray(r, dtype=float)
     G = cf.amplification(r, zeta)[0]
     tiny = r < 1e-50
@@ -38,22 +38,32 @@ def magnification(r, zeta: float):
         return np.where(tiny, 1.0 / np.hypot(1.0, 2.0 * zeta * r), G / (rr * rr))
 
 
+def magnification_at(r: float, G: float, zeta: float) -> float:
+    """:func:`magnification` at one ratio from its G (plain floats, the same operations).
+
+    >>> magnification_at(2.0, 4.0 / 3.0, 0.0)
+    0.3333333333333333
+    """
+    if r < 1e-50:
+        return 1.0 / abs(complex(1.0, 2.0 * zeta * r))       # the C library's hypot, as numpy's
+    return G / (r * r)
+
+
 def steady(F0: float, r: float, k: float, zeta: float):
     """(r, M, X, φ, TR, F_T) at the frequency ratio r: the steady-state
     quantities (X, F_T inf at undamped resonance)."""
-    _, phi, g, _ = (float(a[0]) for a in cf.amplification(np.array([r]), zeta))
-    M = float(magnification(np.array([r]), zeta)[0])
+    G, phi, g, _ = cf.amplification_at(r, zeta)
+    M = magnification_at(r, G, zeta)
     X = abs(F0) / k * M
     if F0 < 0:                                   # −|F0| sin(ωt) = |F0| sin(ωt + π)
         phi = phi + math.pi if phi <= 0 else phi - math.pi
     return r, M, X, phi, g, abs(F0) * g
 
 
-def response(t, *, m, omega_n, zeta, L, x0, v0, F0, Om):
-    """Exact total response (x, ẋ, w) with w = x − L."""
-    t = np.asarray(t, dtype=float)
-    wh, vh = cf.free(t, x0 - L, v0, omega_n, zeta)
-    wf, vf = cf.forced(t, F0 / m, Om, omega_n, zeta)
+def response_at(t: float, *, m, omega_n, zeta, L, x0, v0, F0, Om) -> tuple[float, float, float]:
+    """Exact total response (x, ẋ, w) at the time t, with w = x − L (plain floats)."""
+    wh, vh = cf.free_at(t, x0 - L, v0, omega_n, zeta)
+    wf, vf = cf.forced_at(t, F0 / m, Om, omega_n, zeta)
     w = wh + wf
     return w + L, vh + vf, w
 
@@ -79,6 +89,8 @@ def report(p, res, r, zeta, k) -> list[str]:
 
 def add_sweep(res, zeta: float) -> None:
     """``sweep_magnification`` over the sweep's ratios (null at undamped resonance)."""
+    import numpy as np
+
     M = magnification(np.array(res.results["sweep_r"]), zeta)
     res.results["sweep_magnification"] = [float(x) if math.isfinite(x) else None for x in M]
 

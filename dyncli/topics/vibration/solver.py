@@ -1,5 +1,6 @@
 """Vibrations of a spring–mass–damper, free and base-excited (notes §17) —
-numeric core (plain numpy; scipy only on the DOP853 route).
+numeric core (plain floats at the times of a problem; numpy for sweeps, scipy only on the DOP853
+route).
 
 Notation of the notes: w = x − s − L (17.16b), ωₙ² = k/m (17.5b),
 c = 2mζωₙ (17.20), ω* the damped frequency (17.22b/17.24b), base motion
@@ -11,8 +12,6 @@ through ζ = 1, no cancellation for large ζ or near resonance).
 from __future__ import annotations
 
 import math
-
-import numpy as np
 
 from dyncli import exact
 from dyncli.errors import InputError, NumericalError
@@ -152,41 +151,44 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
 
 
 def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
-    t = np.asarray(p.at, dtype=float)
+    times = [float(ti) for ti in p.at]
     fo = p.force
-    with np.errstate(all="ignore"):   # non-finite values are reported below
-        if fo is None:
-            x, v, w = cf.response(t, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om)
-        else:
-            x, v, w = forced.response(t, m=p.m, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0,
-                                      F0=fo.amplitude, Om=fo.omega)
+    if fo is None:      # the exact response at each time, in plain floats (no numpy)
+        rows = [cf.response_at(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om) for ti in times]
+    else:
+        rows = [forced.response_at(ti, m=p.m, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0,
+                                   F0=fo.amplitude, Om=fo.omega) for ti in times]
+    x, v, w = ([row[i] for row in rows] for i in range(3))
     method = p.accuracy.method
     if method in ("ode", "DOP853"):
         fm = None if fo is None else forced.ode_rhs(fo.amplitude, fo.omega, p.m)
-        xo, vo = _ode(t, omega_n, zeta, L, x0, v0, s0, max(Om, 0.0 if fo is None else fo.omega),
+        xo, vo = _ode(times, omega_n, zeta, L, x0, v0, s0, max(Om, 0.0 if fo is None else fo.omega),
                       p.accuracy.rtol, p.accuracy.atol, fm, max_steps=p.accuracy.max_steps)
         from dyncli import ode
 
         # relative to each quantity's scale over the run (the runner's rule, docs/accuracy.md)
-        err = ode.relative_difference([(xo, x), (vo, v)]) if t.size else 0.0
-        sd = s0 * np.sin(Om * t)
-        x, v, w = xo, vo, xo - sd - L
+        err = ode.relative_difference([(xo, x), (vo, v)]) if times else 0.0
+        x, v = [float(c) for c in xo], [float(c) for c in vo]
+        w = [xi - s0 * math.sin(Om * ti) - L for xi, ti in zip(x, times)]
         res.method = "ode:DOP853"
         res.error_estimate = err
         res.warn("accuracy.method = DOP853: x, v, w are integrated numerically; error_estimate is the "
                  "largest difference from the exact closed form (method: auto uses the closed form)")
-    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+    if not all(math.isfinite(c) for c in x + v):
         raise NumericalError("the response is not representable at the requested times "
                              "(ω·t beyond the floating-point range)")
-    res.results.update(x=x.tolist(), v=v.tolist(), w=w.tolist())
+    res.results.update(x=x, v=v, w=w)
     res.series.append(Series("t", list(p.at), ["x", "v", "w"], title="Response x = w + s + L (17.16b)"))
 
 
 def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol, force_per_mass=None, max_steps=None):
     """(17.15a) integrated with DOP853 by the runner (:func:`dyncli.ode.integrate`: the step
     budget accuracy.max_steps, non-finite rates refused) (the numerical route)."""
+    import numpy as np
+
     from dyncli import ode
 
+    t = np.asarray(t, dtype=float)
     T = float(np.max(t)) if t.size else 0.0
     _, _, lam2 = cf.roots(omega_n, zeta)
     rate = max(omega_n, lam2 if zeta >= 1 else omega_n, Om)
@@ -211,6 +213,8 @@ def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol, force_per_mass=None, m
 
 
 def _sweep(sw, zeta, res, given_zeta):
+    import numpy as np
+
     lo, hi = sw.ratio
     if sw.spacing == "log":
         r = np.geomspace(lo, hi, sw.points)
@@ -237,7 +241,13 @@ def _sweep(sw, zeta, res, given_zeta):
         res.warn("peak_G_r, peak_G are null: for ζ ≥ 1/√2 G has no maximum; it rises monotonically "
                  "towards 1 as r → ∞")
 
-    # display: mark the sweep points nearest to the exact peaks, and a peaks table
+    _sweep_display(res, r, lo, hi, zeta, pG, pg)
+
+
+def _sweep_display(res, r, lo, hi, zeta, pG, pg) -> None:
+    """The sweep's series (the points nearest to the exact peaks marked) and the peaks table."""
+    import numpy as np
+
     marks: dict[int, list[str]] = {}
 
     def mark(rp, label):
