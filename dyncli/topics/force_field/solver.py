@@ -2,6 +2,9 @@
 the symbolic curl and potential are in :mod:`dyncli.topics.force_field.symbolic_field`,
 the checks at random points in :mod:`dyncli.topics.force_field.checks`.
 
+* a polynomial field (integer or rational coefficients) takes the exact route of
+  :mod:`dyncli.topics.force_field.polynomial_field` (no sympy: exact curl, verdict and
+  potential, formulas printed as sympy prints them); every other field the sympy route:
 * curl F (19.9) from exact derivatives: the field's expressions are turned
   into sympy objects node by node (``dyncli.symbolic``), differentiated, and
   converted back to dyncli expressions for evaluation at the points;
@@ -89,7 +92,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         from .coordinates import solve as solve_curvilinear
 
         return solve_curvilinear(p, options)
-    fld = _field(p.F)
+    from . import polynomial_field
+
+    poly = polynomial_field.of(p.F)       # a polynomial field: exact without sympy
+    fld = poly if poly is not None else _field(p.F)
     res = Result({}, method="closed-form", equations=["19.9"])
 
     # curl at the points
@@ -109,7 +115,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     for pt in p.points:
         box = max(box, 1.5 * max(abs(v) for v in pt))
 
-    cons, how, res.results["curl_formula"], V, Vnum = _symbolic_part(fld, box, res)
+    part = polynomial_field.exact_part(poly, box) if poly is not None else _symbolic_part(fld, box, res)
+    cons, how, res.results["curl_formula"], V, Vnum = part
     report_verdict(res, cons, how, V, fld.decimals)
 
     _work(res, p, fld, cons, Vnum)
@@ -147,7 +154,8 @@ def _work(res: Result, p, fld: Field, cons: bool, Vnum) -> None:
 
 
 def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_zero: bool | None = None) -> None:
-    """``conservative``, ``conservative_method`` and ``potential``; (19.7), (19.8) when the curl
+    """``conservative``, ``conservative_method`` and ``potential`` (V a sympy object, or already its
+    formula text); (19.7), (19.8) when the curl
     vanishes (``curl_zero``, default ``cons``: a zero curl with a multi-valued V is not conservative)."""
     if cons if curl_zero is None else curl_zero:
         res.equations += ["19.7", "19.8"]
@@ -155,4 +163,4 @@ def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_ze
         res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
     res.results["conservative"] = bool(cons)
     res.results["conservative_method"] = how
-    res.results["potential"] = _display(V, decimals) if V is not None else None
+    res.results["potential"] = V if V is None or isinstance(V, str) else _display(V, decimals)
