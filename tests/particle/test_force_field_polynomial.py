@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import os
 
 import pytest
 import sympy as sp
@@ -66,7 +67,11 @@ def _assert_same(new, old):
     R, S = new["results"], old["results"]
     assert R.keys() == S.keys()
     for k in R:
-        if isinstance(S[k], (float, list)) and k != "curl_formula":
+        if k in ("work", "work_check"):     # quadratures of integrands equal to rounding: within their error estimates
+            assert abs(R[k] - S[k]) <= 4 * (R["work_error"] + S["work_error"]) + 1e-12 * (1 + abs(R[k])), (k, R, S)
+        elif k == "work_error":
+            assert math.isfinite(R[k]) and math.isfinite(S[k])
+        elif isinstance(S[k], (float, list)) and k != "curl_formula":
             _close(R[k], S[k], k)
         else:
             assert R[k] == S[k], (k, R[k], S[k])
@@ -86,9 +91,14 @@ def _grow(children):
     )
 
 
-poly_text = st.recursive(_leaf, _grow, max_leaves=7)
+_monomial = st.tuples(st.integers(-12, 12), st.integers(1, 12), st.lists(st.integers(0, 4), min_size=3, max_size=3)).map(
+    lambda t: "*".join([f"({t[0]}/{t[1]})"] + [f"{v}**{e}" for v, e in zip(VARS, t[2])]))
+_expanded = st.lists(_monomial, min_size=1, max_size=6).map(" + ".join)     # sums of rational monomials
+poly_text = st.one_of(st.recursive(_leaf, _grow, max_leaves=7), _expanded)
 points = st.lists(st.lists(st.integers(-4, 4).map(lambda k: k / 2), min_size=3, max_size=3), min_size=1, max_size=2)
-FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# 60 examples each (~2 s); DYNCLI_FF_EXAMPLES=3000 for a deep run (as in development: ~6 min)
+N_EXAMPLES = int(os.environ.get("DYNCLI_FF_EXAMPLES", "60"))
+FAST = settings(max_examples=N_EXAMPLES, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def _sym(text):
@@ -119,15 +129,16 @@ def test_random_fields_agree_with_sympy(F, pts):
     assert new["results"]["conservative"] is all(c == 0 for c in curl)
 
 
-@settings(max_examples=10, deadline=None)
+@settings(max_examples=max(8, N_EXAMPLES // 20), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(V=poly_text, path=st.lists(poly_text.map(lambda s: s.replace("x1", "t").replace("x2", "(1-t)")
-                                                  .replace("x3", "t**2")), min_size=3, max_size=3))
+                                                  .replace("x3", "(t/2)")), min_size=3, max_size=3))
 def test_work_along_polynomial_paths_agrees_with_sympy(V, path):
     F = [sp.sstr(-sp.diff(_sym(V), x)) for x in X]
     p = "{" + ", ".join(f"x{i + 1}: {s!r}" for i, s in enumerate(path)) + ", t_span: [0, 1]}"
     new, old = _both(_yaml(F, [[1, 2, 3]], p))
     _assert_same(new, old)
-    assert abs(new["results"]["work_check"]) <= 1e-9 * (1 + abs(new["results"]["work"]))
+    R = new["results"]         # U = V1 - V2 (19.8) within the quadrature's error estimate
+    assert abs(R["work_check"]) <= 4 * R["work_error"] + 1e-12 * (1 + abs(R["work"]))
 
 
 # -- the printer's corner cases and the shapes that keep the sympy route ---------------------

@@ -23,6 +23,7 @@ from fractions import Fraction
 
 MAX_DEGREE = 40        # of any variable: above it, sympy's route (and its CPU limit)
 MAX_TERMS = 400        # of any intermediate product
+MAX_PRODUCTS = 20000   # term-by-term products of one multiplication (bounds the time before MAX_TERMS)
 MAX_BITS = 1000        # of a coefficient's numerator and denominator (a float's range is 2**1024)
 _SAFE_INT = 1e15       # dyncli.expr.to_sympy keeps integers below this exact (Integer), else Float
 
@@ -65,6 +66,8 @@ def scale(p: Poly, c) -> Poly:
 
 
 def mul(p: Poly, q: Poly) -> Poly:
+    if len(p) * len(q) > MAX_PRODUCTS:
+        raise NotPolynomial("product too large")
     out: Poly = {}
     for m1, c1 in p.items():
         for m2, c2 in q.items():

@@ -112,7 +112,7 @@ def derivative(e, var: str):
         else:
             from dyncli.expr import Expr
 
-            return Expr(f"d({e.text})/d{var}", P.to_ir(d, (var,)), e.allowed, frozenset({var}) if d else frozenset())
+            return Expr(f"d({e.text})/d{var}", P.to_ir(d, (var,)), e.allowed, frozenset({var}) if any(m[0] for m in d) else frozenset())
     from dyncli import symbolic
 
     return symbolic.diff(e, var)
