@@ -86,8 +86,6 @@ def _single_valued(fld, V, Vnum, box, res, how):
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    import numpy as np
-
     if getattr(p, "coordinates", "cartesian") != "cartesian":     # Tables 19.1-19.2: coordinates.py
         from .coordinates import solve as solve_curvilinear
 
@@ -99,12 +97,12 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res = Result({}, method="closed-form", equations=["19.9"])
 
     # curl at the points
-    curls = []
+    curls = []       # plain floats: a conservative polynomial field without a path imports no numpy
     for i, pt in enumerate(p.points):
-        x = np.asarray(pt, float)
-        c = fld.curl_at(x)
-        if np.all(np.isfinite(c)) and np.all(np.isfinite(fld.F_at(x))):
-            curls.append([float(v) + 0.0 for v in c])
+        x = [float(v) for v in pt]
+        c = [float(v) + 0.0 for v in fld.curl_at(x)]
+        if all(map(math.isfinite, c)) and all(math.isfinite(float(v)) for v in fld.F_at(x)):
+            curls.append(c)
         else:
             curls.append(None)
             res.warn(f"curl at points[{i}] is undefined (F is singular there)")
