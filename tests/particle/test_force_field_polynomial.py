@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from dyncli.expr import parse
 from dyncli.topics.force_field import polynomial as P
-from dyncli.topics.force_field import polynomial_field
+from dyncli.topics.force_field import derivative, polynomial_field
 from tests.conftest import solve_one_text
 
 VARS = ("x1", "x2", "x3")
@@ -27,12 +27,12 @@ X = [sp.Symbol(n, real=True) for n in VARS]
 
 @contextlib.contextmanager
 def sympy_route():
-    """Force the sympy route (the oracle)."""
-    polynomial_field.ENABLED = False
+    """Force the sympy route (the oracle): the field's and the path's derivatives."""
+    polynomial_field.ENABLED = derivative.ENABLED = False
     try:
         yield
     finally:
-        polynomial_field.ENABLED = True
+        polynomial_field.ENABLED = derivative.ENABLED = True
 
 
 def _yaml(F, points, path=None):

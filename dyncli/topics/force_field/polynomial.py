@@ -113,26 +113,22 @@ def _power(base: Poly, ex: Poly, n: int) -> Poly:
     return out
 
 
-def _number(v: float, n: int, floats: bool) -> Poly:
-    if floats and math.isfinite(v):
-        return const(Fraction(v), n)
+def _number(v: float, n: int) -> Poly:
     if not (float(v).is_integer() and abs(v) < _SAFE_INT):
         raise NotPolynomial("not an integer literal")
     return const(int(v), n)
 
 
-def from_ir(ir: tuple, names: tuple[str, ...], floats: bool = False) -> Poly:
-    """The polynomial of an expression IR in the variables ``names`` (raises NotPolynomial).
-    With ``floats`` a decimal number is taken at its exact binary value (for a derivative
-    that is only evaluated, never printed)."""
+def from_ir(ir: tuple, names: tuple[str, ...]) -> Poly:
+    """The polynomial of an expression IR in the variables ``names`` (raises NotPolynomial)."""
     n = len(names)
 
     def conv(node) -> Poly:
         k = node[0]
         if k == "num":
-            return _number(node[1], n, floats)
+            return _number(node[1], n)
         if k == "param":
-            return _number(node[2], n, floats)
+            return _number(node[2], n)
         if k == "var":
             if node[1] not in names:
                 raise NotPolynomial(f"variable {node[1]}")
@@ -199,24 +195,6 @@ def values(p: Poly, X):
                 if e:
                     t = t * xi ** e
             out = out + t
-    return out
-
-
-def to_ir(p: Poly, names: tuple[str, ...]) -> tuple:
-    """The IR of p (coefficients rounded to floats), for dyncli's evaluator."""
-    terms = []
-    for m, c in sorted(p.items(), reverse=True):
-        t: tuple = ("num", float(c))
-        for name, e in zip(names, m):
-            if e:
-                f = ("var", name) if e == 1 else ("pow", ("var", name), ("num", float(e)))
-                t = ("mul", t, f)
-        terms.append(t)
-    if not terms:
-        return ("num", 0.0)
-    out = terms[0]
-    for t in terms[1:]:
-        out = ("add", out, t)
     return out
 
 

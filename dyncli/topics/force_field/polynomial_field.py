@@ -100,19 +100,3 @@ def exact_part(fld: PolynomialField, box: float):
     return True, "symbolic", curl_formula, P.sstr(V, VARS), Vnum
 
 
-
-def derivative(e, var: str):
-    """de/d(var) as an Expr: exact polynomial differentiation when e is a polynomial in var
-    alone (a path such as (t, t², t³)), else sympy's (``dyncli.symbolic.diff``)."""
-    if ENABLED:
-        try:
-            d = P.diff(P.from_ir(e.ir, (var,), floats=True), 0)
-        except P.NotPolynomial:
-            pass
-        else:
-            from dyncli.expr import Expr
-
-            return Expr(f"d({e.text})/d{var}", P.to_ir(d, (var,)), e.allowed, frozenset({var}) if any(m[0] for m in d) else frozenset())
-    from dyncli import symbolic
-
-    return symbolic.diff(e, var)
