@@ -167,19 +167,19 @@ def diff(p: Poly, j: int) -> Poly:
     return out
 
 
+def exact_value(p: Poly, x) -> Fraction:
+    """p at the point x (floats, taken at their exact binary values), exactly."""
+    xs = [Fraction(float(v)) for v in x]
+    return sum((c * math.prod(xi ** e for xi, e in zip(xs, m) if e) for m, c in p.items()), Fraction(0))
+
+
 def value(p: Poly, x) -> float:
     """p at the point x (floats), computed exactly and rounded once (±inf on overflow)."""
-    xs = [Fraction(float(v)) for v in x]
-    s = sum((c * math.prod(xi ** e for xi, e in zip(xs, m) if e) for m, c in p.items()), Fraction(0))
+    s = exact_value(p, x)
     try:
         return float(s)
     except OverflowError:
         return math.inf if s > 0 else -math.inf
-
-
-def is_zero_at(p: Poly, x) -> bool:
-    xs = [Fraction(float(v)) for v in x]
-    return sum((c * math.prod(xi ** e for xi, e in zip(xs, m) if e) for m, c in p.items()), Fraction(0)) == 0
 
 
 def values(p: Poly, X):
