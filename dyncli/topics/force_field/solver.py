@@ -18,7 +18,8 @@ the checks at random points in :mod:`dyncli.topics.force_field.checks`.
   random straight segments by Gauss-Legendre quadrature — a field such as -x2/(x1²+x2²) e1 + x1/(x1²+x2²) e2
   has zero curl but no potential around the x3 axis);
 * the work along a path x(t) (19.4): adaptive quadrature (scipy ``quad``) of
-  F(x(t)) . x'(t) with x'(t) exact, cross-checked against V1 - V2 (19.8).
+  F(x(t)) . x'(t) with x'(t) exact (the rules of calculus on the expression IR,
+  :mod:`dyncli.topics.force_field.derivative`), cross-checked against V1 - V2 (19.8).
 """
 
 from __future__ import annotations
