@@ -25,10 +25,10 @@ def _field(*F):
 
 
 def _heavy_imports_of(text: str) -> tuple[dict, list[str]]:
-    """(results, heavy top-level packages imported) of solving ``text`` in a fresh interpreter."""
+    """(results, heavy top-level packages imported, numpy included) of solving ``text`` in a fresh interpreter."""
     code = ("import json, sys; from tests.conftest import solve_one_text\n"
             f"r = solve_one_text({text!r})['results']\n"
-            "print(json.dumps([r, sorted({m.split('.')[0] for m in sys.modules} & {'scipy', 'sympy', 'matplotlib'})]))")
+            "print(json.dumps([r, sorted({m.split('.')[0] for m in sys.modules} & {'numpy', 'scipy', 'sympy', 'matplotlib'})]))")
     out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True).stdout
     results, mods = json.loads(out.splitlines()[-1])
     return results, mods
@@ -38,7 +38,25 @@ def test_no_path_does_not_import_scipy():
     results, mods = _heavy_imports_of(
         "type: force-field\nF: ['2*x1*x2 + x3**3', 'x1**2', '3*x1*x3**2']\npoints: [[1, 2, 3]]\n")
     assert results["potential"] == "-x1**2*x2 - x1*x3**3"
-    assert mods == ["sympy"]          # the exact curl and potential; no scipy (no quadrature)
+    assert mods == []                 # a conservative polynomial field: exact without sympy, nor even numpy
+    results, mods = _heavy_imports_of("type: force-field\nF: ['-x2', 'x1', '0']\n")
+    assert results["curl_formula"] == ["0", "0", "2"]
+    assert mods == ["numpy"]          # not conservative: numpy's random test points name a counterexample
+    results, mods = _heavy_imports_of("type: force-field\nF: ['x2*cos(x1)', 'sin(x1)', '0']\n")
+    assert results["potential"] == "-x2*sin(x1)"
+    assert mods == ["numpy", "sympy"]          # any other field: sympy's exact curl and potential
+
+
+def test_polynomial_field_along_a_path_imports_no_sympy():
+    # the work of a polynomial field along a path: scipy's quad, x'(t) exact without sympy
+    results, mods = _heavy_imports_of("type: force-field\nF: ['2*x1*x2 + x3**3', 'x1**2', '3*x1*x3**2']\n"
+                                      "path: {x1: t, x2: 't**2', x3: 't**3', t_span: [0, 1]}\n")
+    assert results["work"] == pytest.approx(2.0, rel=1e-14)       # V(0) - V(1, 1, 1) = 0 - (-2) (19.8)
+    assert mods == ["numpy", "scipy"]
+    results, mods = _heavy_imports_of("type: force-field\nF: ['-x2', 'x1', '0']\n"
+                                      "path: {x1: 'cos(t)', x2: 'sin(t)', x3: 0, t_span: [0, pi]}\n")
+    assert results["work"] == pytest.approx(math.pi, rel=1e-13)   # twice the half disc's area (Stokes)
+    assert mods == ["numpy", "scipy"]                               # x'(t) by the IR's rules, not sympy
 
 
 @pytest.mark.parametrize("a, b", [([0, 0, 0], [1, 1, 1]), ([-1.5, 0.3, 2], [0.7, -1.1, -0.4])])

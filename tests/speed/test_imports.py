@@ -67,6 +67,22 @@ def _solve_each(files: list[str]) -> list[dict]:
     return [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
 
 
+# closed-form routes whose declared example integrates (benchmarks/startup_types.py's EXTRA)
+CLOSED_TEXTS = {
+    "force-field (no path), a polynomial field: exact without sympy":
+        "type: force-field\nF: ['2*x1*x2 + x3**3', 'x1**2', '3*x1*x3**2']\npoints: [[1, 2, 3]]\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(CLOSED_TEXTS))
+def test_closed_form_texts_import_neither_scipy_nor_sympy(name, tmp_path):
+    f = tmp_path / "case.yaml"
+    f.write_text(CLOSED_TEXTS[name])
+    [r] = _solve_each([str(f)])
+    assert r["methods"] and all(m == "closed-form" for _, m in r["methods"]), r
+    assert r["new"] == [], f"{name} imported {r['new']}"
+
+
 def test_closed_forms_import_neither_scipy_nor_sympy():
     files = [str(p.relative_to(ROOT)) for p in sorted(PROBLEMS.rglob("*.yaml")) if "course-example" not in p.parts]
     recs = _solve_each(files)

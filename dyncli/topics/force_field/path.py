@@ -1,6 +1,7 @@
 """The work along a path (19.4): adaptive quadrature (scipy ``quad``) of
-F(x(t))·x'(t), with x'(t) differentiated exactly; the integrand runs on the
-expressions' compiled scalar closures and stops at its first non-finite value.
+F(x(t))·x'(t), with x'(t) differentiated exactly by the rules of calculus on the
+expression IR (no sympy: :mod:`dyncli.topics.force_field.derivative`); the integrand
+runs on the expressions' compiled scalar closures and stops at its first non-finite value.
 The work along a straight segment (the single-valuedness check of V): composite
 Gauss-Legendre in numpy, no scipy."""
 
@@ -8,9 +9,9 @@ from __future__ import annotations
 
 import math
 
-from dyncli import symbolic
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result
+from dyncli.topics.force_field.derivative import derivative
 
 
 class _NotFinite(Exception):
@@ -39,7 +40,7 @@ def path_work(fld, path, rtol: float, atol: float, res: Result):
 
     xs = (path.x1, path.x2, path.x3)
     try:
-        dxs = [symbolic.diff(e, "t") for e in xs]
+        dxs = [derivative(e, "t") for e in xs]
     except ValueError as exc:
         raise InputError(f"cannot differentiate the path exactly: {exc}", "path") from None
     t1, t2 = (float(v) for v in path.t_span)

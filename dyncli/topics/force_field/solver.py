@@ -2,6 +2,9 @@
 the symbolic curl and potential are in :mod:`dyncli.topics.force_field.symbolic_field`,
 the checks at random points in :mod:`dyncli.topics.force_field.checks`.
 
+* a polynomial field (integer or rational coefficients) takes the exact route of
+  :mod:`dyncli.topics.force_field.polynomial_field` (no sympy: exact curl, verdict and
+  potential, formulas printed as sympy prints them); every other field the sympy route:
 * curl F (19.9) from exact derivatives: the field's expressions are turned
   into sympy objects node by node (``dyncli.symbolic``), differentiated, and
   converted back to dyncli expressions for evaluation at the points;
@@ -15,7 +18,8 @@ the checks at random points in :mod:`dyncli.topics.force_field.checks`.
   random straight segments by Gauss-Legendre quadrature — a field such as -x2/(x1²+x2²) e1 + x1/(x1²+x2²) e2
   has zero curl but no potential around the x3 axis);
 * the work along a path x(t) (19.4): adaptive quadrature (scipy ``quad``) of
-  F(x(t)) . x'(t) with x'(t) exact, cross-checked against V1 - V2 (19.8).
+  F(x(t)) . x'(t) with x'(t) exact (the rules of calculus on the expression IR,
+  :mod:`dyncli.topics.force_field.derivative`), cross-checked against V1 - V2 (19.8).
 """
 
 from __future__ import annotations
@@ -83,22 +87,23 @@ def _single_valued(fld, V, Vnum, box, res, how):
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    import numpy as np
-
     if getattr(p, "coordinates", "cartesian") != "cartesian":     # Tables 19.1-19.2: coordinates.py
         from .coordinates import solve as solve_curvilinear
 
         return solve_curvilinear(p, options)
-    fld = _field(p.F)
+    from . import polynomial_field
+
+    poly = polynomial_field.of(p.F)       # a polynomial field: exact without sympy
+    fld = poly if poly is not None else _field(p.F)
     res = Result({}, method="closed-form", equations=["19.9"])
 
     # curl at the points
-    curls = []
+    curls = []       # plain floats: a conservative polynomial field without a path imports no numpy
     for i, pt in enumerate(p.points):
-        x = np.asarray(pt, float)
-        c = fld.curl_at(x)
-        if np.all(np.isfinite(c)) and np.all(np.isfinite(fld.F_at(x))):
-            curls.append([float(v) + 0.0 for v in c])
+        x = [float(v) for v in pt]
+        c = [float(v) + 0.0 for v in fld.curl_at(x)]
+        if all(map(math.isfinite, c)) and all(math.isfinite(float(v)) for v in fld.F_at(x)):
+            curls.append(c)
         else:
             curls.append(None)
             res.warn(f"curl at points[{i}] is undefined (F is singular there)")
@@ -109,7 +114,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     for pt in p.points:
         box = max(box, 1.5 * max(abs(v) for v in pt))
 
-    cons, how, res.results["curl_formula"], V, Vnum = _symbolic_part(fld, box, res)
+    part = polynomial_field.exact_part(poly, box) if poly is not None else _symbolic_part(fld, box, res)
+    cons, how, res.results["curl_formula"], V, Vnum = part
     report_verdict(res, cons, how, V, fld.decimals)
 
     _work(res, p, fld, cons, Vnum)
@@ -147,7 +153,8 @@ def _work(res: Result, p, fld: Field, cons: bool, Vnum) -> None:
 
 
 def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_zero: bool | None = None) -> None:
-    """``conservative``, ``conservative_method`` and ``potential``; (19.7), (19.8) when the curl
+    """``conservative``, ``conservative_method`` and ``potential`` (V a sympy object, or already its
+    formula text); (19.7), (19.8) when the curl
     vanishes (``curl_zero``, default ``cons``: a zero curl with a multi-valued V is not conservative)."""
     if cons if curl_zero is None else curl_zero:
         res.equations += ["19.7", "19.8"]
@@ -155,4 +162,4 @@ def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_ze
         res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
     res.results["conservative"] = bool(cons)
     res.results["conservative_method"] = how
-    res.results["potential"] = _display(V, decimals) if V is not None else None
+    res.results["potential"] = V if V is None or isinstance(V, str) else _display(V, decimals)
