@@ -126,13 +126,13 @@ def _rc1p(e, y1):
 
 
 def _rc1p_arrays(e, y1):
-    """:func:`_rc1p` on arrays."""
+    """:func:`_rc1p` on arrays (``y1()`` gives 1 + e, formed only where e < 0 needs it)."""
     # t floored at 1e-200: atan(t)/t = atanh(t)/t = 1 there, as for any e below 1e-32
     t = np.maximum(np.sqrt(np.abs(e)), 1e-200)
     if bool(np.all(e >= 0.0)):
         return np.arctan(t) / t
     with np.errstate(divide="ignore", invalid="ignore"):
-        low = np.log((1.0 + t) / np.sqrt(y1))
+        low = np.log((1.0 + t) / np.sqrt(y1()))
     return np.where(e >= 0.0, np.arctan(t), np.where(e > -0.5, np.arctanh(np.minimum(t, 0.75)), low)) / t
 
 
@@ -154,11 +154,12 @@ def _rf_arrays(x, y, z):
     """R_F on arrays (valid elements only; one step count for all, the largest)."""
     a0 = (x + y + z) / 3.0
     q = _Q_RF * np.maximum(np.maximum(np.abs(a0 - x), np.abs(a0 - y)), np.abs(a0 - z))
-    a, f, xn, yn, zn = a0, 1.0, x, y, z
+    a, f, v = a0, 1.0, np.stack([x, y, z])
     while not bool(np.all(q * f < a)):
-        sx, sy, sz = np.sqrt(xn), np.sqrt(yn), np.sqrt(zn)
+        sx, sy, sz = np.sqrt(v)
         lam = sx * (sy + sz) + sy * sz
-        a, xn, yn, zn, f = 0.25 * (a + lam), 0.25 * (xn + lam), 0.25 * (yn + lam), 0.25 * (zn + lam), 0.25 * f
+        v = 0.25 * (v + lam)
+        a, f = 0.25 * (a + lam), 0.25 * f
     return _rf_series(f * (a0 - x) / a, f * (a0 - y) / a) / np.sqrt(a)
 
 
@@ -187,19 +188,19 @@ def _rj_floats(x, y, z, p):
 def _rj_arrays(x, y, z, p):
     """R_J on arrays (valid elements only; one step count for all, the largest)."""
     a0 = (x + y + z + 2.0 * p) / 5.0
-    q = _Q_RJ * np.max([np.abs(a0 - v) for v in (x, y, z, p)], axis=0)
-    dx, dy, dz = p - x, p - y, p - z
-    a, f, total = a0, 1.0, 0.0
-    xn, yn, zn, pn = x, y, z, p
+    q = _Q_RJ * np.max(np.abs(a0 - np.stack([x, y, z, p])), axis=0)
+    delta = np.stack([p - x, p - y, p - z])
+    a, f, total, v = a0, 1.0, 0.0, np.stack([x, y, z, p])
     while not bool(np.all(q * f < a)):
-        sx, sy, sz, sp = np.sqrt(xn), np.sqrt(yn), np.sqrt(zn), np.sqrt(pn)
+        sq = np.sqrt(v)
+        sx, sy, sz, sp = sq
         lam = sx * (sy + sz) + sy * sz
-        bx, by, bz = sp + sx, sp + sy, sp + sz
-        d = bx * by * bz
-        e = (f * dx / (bx * bx)) * (f * dy / (by * by)) * (f * dz / (bz * bz))
-        total = total + f * _rc1p_arrays(e, 2.0 * sp * (pn + lam) / d) / d
-        a, xn, yn, zn, pn = (0.25 * (v + lam) for v in (a, xn, yn, zn, pn))
-        f *= 0.25
+        b = sp + sq[:3]
+        d = np.prod(b, axis=0)
+        e = np.prod((f * delta) / (b * b), axis=0)        # as in _rj_floats
+        total = total + _rc1p_arrays(e, lambda: 2.0 * sp * (v[3] + lam) / d) * (f / d)
+        v = 0.25 * (v + lam)
+        a, f = 0.25 * (a + lam), 0.25 * f
     g = f / a
     return f * _rj_series((a0 - x) * g, (a0 - y) * g, (a0 - z) * g) / (a * np.sqrt(a)) + 6.0 * total
 
@@ -248,11 +249,13 @@ def _apply(cores, args, hi, degree, special, invalid):
     if all(isinstance(v, (float, int)) for v in args):
         return _float_path(core, tuple(float(v) for v in args), hi, degree, special)
     arrs = [np.asarray(v, dtype=float) for v in args]
-    shape = np.broadcast_shapes(*(a.shape for a in arrs))
-    if math.prod(shape) <= SMALL:
-        n = math.prod(shape)
-        cols = [a.ravel().tolist() if a.size == n else (np.broadcast_to(a, shape).ravel().tolist() if a.size > 1
-                                                        else [a.item()] * n) for a in arrs]
+    shape = max((a.shape for a in arrs), key=len)
+    if any(a.shape != shape and a.shape != () for a in arrs):
+        shape = np.broadcast_shapes(*(a.shape for a in arrs))
+    n = math.prod(shape)
+    if n <= SMALL:
+        cols = [a.ravel().tolist() if a.shape == shape else
+                ([a.item()] * n if a.size == 1 else np.broadcast_to(a, shape).ravel().tolist()) for a in arrs]
         flat = [_float_path(core, vals, hi, degree, special) for vals in zip(*cols)]
         return np.array(flat, dtype=float).reshape(shape)
     arrs = np.broadcast_arrays(*arrs)

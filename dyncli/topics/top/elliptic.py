@@ -240,7 +240,7 @@ class ExactTop:
         self.nu = n.k / n.v2 if n.v2 > 0 else math.inf
         self.np_m = m1 * n.delta / n.w2        # n' − m, without cancellation
         self.one_np = m1 * n.w1 / n.w2
-        self.Jc = self._J(np.array([1.0]), np.array([0.0]), np.array([m1]))
+        self.Jc = self._J(1.0, 0.0, m1)          # the complete integrals (τ = K), plain floats
         self.J0 = self._at_phase(np.array([self.tau0]))[1]
 
     def _J(self, s, c, d2):
