@@ -2,9 +2,10 @@
 
 * ``--version``, ``--help`` and ``solve --help`` import neither numpy nor scipy
   (nor sympy);
-* every example problem in problems/ solved by a closed form imports neither
-  scipy nor sympy (sympy only where exact derivatives need it: list such a
-  type in SYMPY_NEEDED with the reason).
+* every example problem in problems/ solved by a closed form or an exact
+  (elliptic) route imports neither scipy nor sympy (sympy only where exact
+  derivatives need it: list such a type in SYMPY_NEEDED with the reason);
+  the top without ``at`` and the gyroscope's exact route included.
 
 Timings are never asserted here; benchmarks/startup.py and
 benchmarks/batch.py measure them.
@@ -83,11 +84,21 @@ def test_closed_form_texts_import_neither_scipy_nor_sympy(name, tmp_path):
     assert r["new"] == [], f"{name} imported {r['new']}"
 
 
-def test_closed_forms_import_neither_scipy_nor_sympy():
+#: routes that are formulas evaluated at the requested times (no integrator, no quadrature)
+FORMULA_ROUTES = ("closed-form", "exact")
+#: exact-route variants not among the examples: the top without `at` (its bounds only)
+EXTRA = {"top-no-at.yaml": "type: top\nm: 0.5\nL: 0.05\nI11: 2.0e-3\nI33: 1.0e-3\ntheta: 0.5\nphi_dot: 150\n"}
+
+
+def test_closed_forms_import_neither_scipy_nor_sympy(tmp_path):
     files = [str(p.relative_to(ROOT)) for p in sorted(PROBLEMS.rglob("*.yaml")) if "course-example" not in p.parts]
+    for name, text in EXTRA.items():
+        (tmp_path / name).write_text(text)
+        files.append(str(tmp_path / name))
     recs = _solve_each(files)
     closed = [r["file"] for r in recs
-              if r["methods"] and all(m == "closed-form" for _, m in r["methods"])]
+              if r["methods"] and all(m in FORMULA_ROUTES for _, m in r["methods"])]
+    assert {"top", "gyroscope"} <= {t for r in recs if r["file"] in closed for t, _ in r["methods"]}
     assert closed, "no closed-form example found"
     # second interpreter: only the closed-form files, so nothing else imported scipy first
     bad = []

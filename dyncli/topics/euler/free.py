@@ -12,8 +12,9 @@
   solution stays accurate near the separatrix (spin about the intermediate
   axis).  u₀ is never formed: sn, cn, dn at u₀ are the initial data, and the
   addition theorems carry them to u₀ + λt.  sn, cn, dn of λt come from the
-  arithmetic-geometric mean in terms of m₁ directly (argument reduced modulo
-  4K); dn = √(m₁ + m cn²) avoids the 0/0 of the usual dn formula near u = K.
+  arithmetic-geometric mean in terms of m₁ directly (:mod:`dyncli.elliptic`,
+  argument reduced modulo 4K); dn = √(m₁ + m cn²) avoids the 0/0 of the usual
+  dn formula near u = K.
 """
 
 from __future__ import annotations
@@ -22,53 +23,9 @@ import math
 
 import numpy as np
 
+from dyncli.elliptic import ellipj, ellipK
+
 EQUAL_TOL = 1e-13
-
-
-def agm_table(m: float, m1: float):
-    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N)."""
-    a = [1.0]
-    c = [math.sqrt(m)]
-    b = math.sqrt(m1)
-    for _ in range(60):
-        if abs(c[-1]) <= 1e-17 * a[-1]:
-            break
-        an = 0.5 * (a[-1] + b)
-        cn = 0.5 * (a[-1] - b)
-        b = math.sqrt(a[-1] * b)
-        a.append(an)
-        c.append(cn)
-    return a, c
-
-
-def ellipK(m: float, m1: float) -> float:
-    if m1 == 0.0:
-        return math.inf
-    a, _ = agm_table(m, m1)
-    return math.pi / (2.0 * a[-1])
-
-
-def ellipj(u, m: float, m1: float | None = None):
-    """sn, cn, dn of u (array) for parameter m, 0 <= m <= 1, given m1 = 1 − m exactly."""
-    u = np.asarray(u, dtype=float)
-    if m1 is None:
-        m1 = 1.0 - m
-    if m1 == 0.0:
-        sech = 1.0 / np.cosh(u)
-        return np.tanh(u), sech, sech
-    if m == 0.0:
-        return np.sin(u), np.cos(u), np.ones_like(u)
-    a, c = agm_table(m, m1)
-    N = len(a) - 1
-    K = math.pi / (2.0 * a[N])
-    four_k = 4.0 * K
-    u = u - four_k * np.round(u / four_k)
-    phi = (2.0**N) * a[N] * u
-    for i in range(N, 0, -1):
-        phi = 0.5 * (np.arcsin(np.clip(c[i] * np.sin(phi) / a[i], -1.0, 1.0)) + phi)
-    sn, cn = np.sin(phi), np.cos(phi)
-    dn = np.sqrt(m1 + m * cn * cn)
-    return sn, cn, dn
 
 
 def _parity(perm) -> int:

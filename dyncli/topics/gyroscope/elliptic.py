@@ -23,8 +23,9 @@ when the motion reaches z = ∞ but not z = 0.  With x0 = z0² the motion is one
 
 m < 0 (a gyroscope spinning against the turntable, a circulation with real roots)
 goes through the imaginary-modulus transformation to parameter −m/(1 − m) ∈ [0, 1).
-sn, cn, dn come from the AGM of dyncli.topics.euler.free with 1 − m given exactly
-(next to the separatrix, m → 1), the phase u0 from Carlson's R_F.  The argument is
+sn, cn, dn come from the AGM of dyncli.elliptic with 1 − m given exactly
+(next to the separatrix, m → 1), the phase u0 from Carlson's R_F (dyncli.elliptic, numpy
+only: no scipy on this route).  The argument is
 reduced modulo the period, so each requested time costs the same whatever t.
 """
 
@@ -34,16 +35,12 @@ import math
 
 import numpy as np
 
-
-def _rf(x, y, z):
-    from scipy.special import elliprf
-    return float(elliprf(x, y, z))
+from dyncli.elliptic import elliprf as _rf
+from dyncli.elliptic import ellipj
 
 
 def ellipj_any(u, m: float, m1: float):
     """sn, cn, dn for any parameter m < 1 (m1 = 1 − m exact); m < 0 by DLMF 22.17."""
-    from dyncli.topics.euler.free import ellipj
-
     if m >= 0.0:
         return ellipj(u, m, m1)
     mu, mu1 = -m / m1, 1.0 / m1

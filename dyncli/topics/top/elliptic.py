@@ -23,7 +23,7 @@ follow from the integrals H_O·e3 and ω3 (partial fractions):
     B = b − c = (H·e3 − I33ω3)/I11,   B' = b + c,
 
 and ψ, φ from ∫dτ/v and ∫dτ/w, elliptic integrals of the third kind written in
-Carlson's symmetric forms (scipy.special.elliprf/elliprj/elliprc): with s = sn τ,
+Carlson's symmetric forms (dyncli.elliptic's elliprf/elliprj/elliprc, numpy only): with s = sn τ,
 c = cn τ, d = dn τ,
 
     v2 ∫dτ/v = F − (ν + m)/3 s³ R_J(c², d², 1, 1 + νs²),      ν = k/v2 (ν ≤ 1)
@@ -45,6 +45,7 @@ import math
 
 import numpy as np
 
+from dyncli.elliptic import ellipj, elliprc, elliprf, elliprj
 from dyncli.topics.top.rootfind import brent as _brent
 
 EPS = float(np.finfo(float).eps)
@@ -178,14 +179,12 @@ class Nutation:
 
 
 def _legendre_F(s, c, d2):
-    from scipy.special import elliprf
     return s * elliprf(c * c, d2, 1.0)
 
 
 def _integrals(nu, np_m, one_np, m, s, c, d2):
     """Jv = v2 ∫dτ/v, Jw = w2 ∫dτ/w over [0, τ] and Jd = Jw − Jv (module docstring),
     each as a sum of positive terms where the parameter is large."""
-    from scipy.special import elliprc, elliprj
     s2, c2, s3 = s * s, c * c, s * s * s
     F = _legendre_F(s, c, d2)
     tw = (np_m / 3.0) * s3 * elliprj(c2, d2, 1.0, c2 + one_np * s2)
@@ -224,7 +223,6 @@ class ExactTop:
         self._constants(theta_dot0)
 
     def _constants(self, theta_dot0):
-        from scipy.special import elliprf
         n = self.nut
         m, m1 = n.m, n.m1
         self.K = float(elliprf(0.0, m1, 1.0))
@@ -242,7 +240,7 @@ class ExactTop:
         self.nu = n.k / n.v2 if n.v2 > 0 else math.inf
         self.np_m = m1 * n.delta / n.w2        # n' − m, without cancellation
         self.one_np = m1 * n.w1 / n.w2
-        self.Jc = self._J(np.array([1.0]), np.array([0.0]), np.array([m1]))
+        self.Jc = self._J(1.0, 0.0, m1)          # the complete integrals (τ = K), plain floats
         self.J0 = self._at_phase(np.array([self.tau0]))[1]
 
     def _J(self, s, c, d2):
@@ -255,8 +253,6 @@ class ExactTop:
     def _at_phase(self, tau):
         """(sn, cn, dn) at τ and (Jv, Jw, Jd) from τ = 0, whole periods included (sn, cn, dn
         by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix)."""
-        from dyncli.topics.euler.free import ellipj
-
         P, K, m1 = 2.0 * self.K, self.K, self.nut.m1
         nper = np.round(tau / P)
         r = tau - nper * P
@@ -270,7 +266,8 @@ class ExactTop:
         cn = np.where(far, q * s1 / d1, c1)
         dn = np.where(far, q / d1, d1)
         J = self._J(sn, cn, dn * dn)
-        return (sn, cn, dn), tuple(j + 2.0 * nper * jc for j, jc in zip(J, self.Jc))
+        with np.errstate(invalid="ignore"):     # ∫dτ/w is infinite (unused) when w1 = 0 (a pole passage)
+            return (sn, cn, dn), tuple(j + 2.0 * nper * jc for j, jc in zip(J, self.Jc))
 
     def evaluate(self, t):
         """Arrays psi, theta, phi, psi_dot, theta_dot, phi_dot, S (= ψ̇ sinθ) at times t

@@ -43,7 +43,7 @@ class ExactRun:
             return
         (self.psi, self.theta, self.phi, self.psi_dot, self.theta_dot,
          self.phi_dot, self.S) = ex.evaluate(t)
-        # a parameter beyond doubles (1 − m underflowing next to the separatrix, θ0 within ~1e-90 rad
+        # a parameter beyond doubles (1 − m underflowing next to the separatrix, θ0 within ~1e-153 rad
         # of an unstable vertical): not representable here; the caller falls back to the ODE route
         self.finite = bool(all(np.all(np.isfinite(a)) for a in (self.psi, self.theta, self.phi, self.theta_dot,
                                                                    self.S)))
