@@ -1,5 +1,5 @@
 """Exact time derivatives of user expressions: forward-mode AD jets
-(dyncli.topics.kinematics.jet) versus sympy (dyncli.symbolic.diff, which
+(dyncli.expr.jet) versus sympy (dyncli.symbolic.diff, which
 differentiates and converts back to dyncli's evaluator).
 
 Prints, from one run:
@@ -35,7 +35,7 @@ PARAMS = {"s0": 0.1, "c": 0.05}
 COLD_AD = """
 import numpy as np
 from dyncli import expr
-from dyncli.topics.kinematics.jet import jet
+from dyncli.expr.jet import jet
 t = np.linspace(0.1, 2, 5)
 for s in {exprs!r}:
     e = expr.parse(s, ("t",), {params!r})
@@ -75,7 +75,7 @@ def main() -> None:
     import numpy as np
 
     from dyncli import expr, symbolic
-    from dyncli.topics.kinematics import jet as J
+    from dyncli.expr import jet as J
 
     print("cold start (fresh interpreter, derive 5 expressions at 5 times; best of 5)")
     c_ad, c_sp = cold(COLD_AD), cold(COLD_SYMPY)

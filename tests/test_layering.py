@@ -19,9 +19,13 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 #: the numeric core: the equations modules plus the neutral helpers and the topics' pure numeric modules
-CORE = ["dyncli.numfmt", "dyncli.vec3", "dyncli.exact", "dyncli.errors", "dyncli.result",
-        "dyncli.topics.vibration.closed_form", "dyncli.topics.euler.free", "dyncli.topics.inertia.rotations",
-        "dyncli.topics.particle.forces", "dyncli.topics.particle.trajectory"] + [
+CORE = ["dyncli.numfmt", "dyncli.vec3", "dyncli.exact", "dyncli.errors", "dyncli.result", "dyncli.direction",
+        "dyncli.ode", "dyncli.quadrature", "dyncli.elliptic", "dyncli.expr.jet", "dyncli.expr.floatmath",
+        "dyncli.expr.derivative",
+        "dyncli.topics.vibration.closed_form", "dyncli.topics.vibration.backends", "dyncli.topics.euler.free",
+        "dyncli.topics.inertia.rotations", "dyncli.topics.inertia.eigen3", "dyncli.topics.inertia.mat3",
+        "dyncli.topics.force_field.polynomial", "dyncli.topics.particle.forces",
+        "dyncli.topics.particle.trajectory"] + [
     f"dyncli.topics.{p.parent.name}.equations" for p in sorted(ROOT.glob("dyncli/topics/*/equations.py"))]
 FORBIDDEN_IN_CORE = ("pydantic", "dyncli.render")
 

@@ -289,7 +289,7 @@ def test_distance_empty_interval_and_no_times():
 ])
 def test_jet_matches_symbolic_derivatives(text):
     from dyncli import expr, symbolic
-    from dyncli.topics.kinematics.jet import jet
+    from dyncli.expr.jet import jet
 
     e = expr.parse(text, ("t",))
     t = np.linspace(0.05, 0.95, 9)
@@ -316,7 +316,7 @@ def test_jet_at_one_time_equals_the_arrays(text):
     """The plain-float jet (one time, no numpy: the closed forms' route) gives the array jet's
     values, inf and nan included: the same rules, numpy's conventions out of range."""
     from dyncli import expr
-    from dyncli.topics.kinematics.jet import jet, jet_at
+    from dyncli.expr.jet import jet, jet_at
 
     e = expr.parse(text, ("t",))
     ts = [0.0, -0.0, 0.5, 1.0, -1.0, 3.0, -1e-300, 1e300, math.inf]

@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from dyncli import symbolic
 from dyncli.expr import ExpressionError, parse
-from dyncli.topics.force_field.derivative import d_ir, derivative
+from dyncli.expr.derivative import d_ir, derivative
 
 _FUNCS = ["sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "log10", "sqrt", "abs",
           "sign"]

@@ -19,7 +19,8 @@ from hypothesis import strategies as st
 
 from dyncli.expr import parse
 from dyncli.topics.force_field import polynomial as P
-from dyncli.topics.force_field import derivative, polynomial_field
+from dyncli.expr import derivative
+from dyncli.topics.force_field import polynomial_field
 from tests.conftest import solve_one_text
 
 VARS = ("x1", "x2", "x3")

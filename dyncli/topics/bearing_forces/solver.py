@@ -34,8 +34,8 @@ import math
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import FrameTable, Result, Series, SolveOptions
 from dyncli.topics.bearing_forces import equations as eq
-from dyncli.topics.kinematics import floatmath as fm
-from dyncli.topics.kinematics.jet import jet_at
+from dyncli.expr import floatmath as fm
+from dyncli.expr.jet import jet_at
 from dyncli.vec3 import add, scale
 
 

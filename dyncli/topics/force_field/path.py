@@ -1,6 +1,6 @@
 """The work along a path (19.4): adaptive quadrature (scipy ``quad``) of
 F(x(t))·x'(t), with x'(t) differentiated exactly by the rules of calculus on the
-expression IR (no sympy: :mod:`dyncli.topics.force_field.derivative`); the integrand
+expression IR (no sympy: :mod:`dyncli.expr.derivative`); the integrand
 runs on the expressions' compiled scalar closures and stops at its first non-finite value.
 The work along a straight segment (the single-valuedness check of V): composite
 Gauss-Legendre in numpy, no scipy."""
@@ -11,7 +11,7 @@ import math
 
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result
-from dyncli.topics.force_field.derivative import derivative
+from dyncli.expr.derivative import derivative
 
 
 class _NotFinite(Exception):

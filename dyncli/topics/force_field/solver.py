@@ -19,7 +19,7 @@ the checks at random points in :mod:`dyncli.topics.force_field.checks`.
   has zero curl but no potential around the x3 axis);
 * the work along a path x(t) (19.4): adaptive quadrature (scipy ``quad``) of
   F(x(t)) . x'(t) with x'(t) exact (the rules of calculus on the expression IR,
-  :mod:`dyncli.topics.force_field.derivative`), cross-checked against V1 - V2 (19.8).
+  :mod:`dyncli.expr.derivative`), cross-checked against V1 - V2 (19.8).
 """
 
 from __future__ import annotations

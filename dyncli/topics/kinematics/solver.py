@@ -2,7 +2,7 @@
 
 The coordinates are expressions in t; their exact first and second
 derivatives come from forward-mode automatic differentiation
-(:mod:`dyncli.topics.kinematics.jet`, no sympy on this path).  Every
+(:mod:`dyncli.expr.jet`, no sympy on this path).  Every
 coordinate system is treated as a rotating basis with the general operator
 (11.4): the basis (e_R, e_θ, e_φ) of §12, (e_r, e_θ, e_3) of §7-§8, or the
 fixed e_i, with
@@ -25,7 +25,7 @@ from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.kinematics import equations as eq
 from dyncli.topics.kinematics import frame
 from dyncli.topics.kinematics.equations import frame_rows, to_cartesian  # noqa: F401
-from dyncli.topics.kinematics.jet import jet
+from dyncli.expr.jet import jet
 
 #: a path is taken as straight at an instant (rho = null, e_n = null,
 #: a_n = 0) when |v×a| <= STRAIGHT_TOL·|v||a|, i.e. when the angle between v

@@ -47,7 +47,7 @@ def initial_state(p):
     """(v̄, ω): as given, or the prescribed motion's values at its first time."""
     v, w = p.v, p.omega
     if p.motion is not None and (v is None or w is None):
-        from dyncli.topics.kinematics.jet import vec_jet_at     # plain floats: no numpy
+        from dyncli.expr.jet import vec_jet_at     # plain floats: no numpy
 
         t0 = p.motion.at[0]
         ev, ew = list(vec_jet_at(p.motion.v, t0)[0]), list(vec_jet_at(p.motion.omega, t0)[0])
@@ -98,11 +98,11 @@ def power(res, p, v, w) -> None:
 
 def motion(res, p, I) -> None:
     """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20), evaluated
-    at each time in plain floats (exact derivatives: :func:`dyncli.topics.kinematics.jet.vec_jet_at`)."""
+    at each time in plain floats (exact derivatives: :func:`dyncli.expr.jet.vec_jet_at`)."""
     mo = p.motion
     if mo is None:
         return
-    from dyncli.topics.kinematics.jet import vec_jet_at
+    from dyncli.expr.jet import vec_jet_at
 
     T, Td, vs, ws = [], [], [], []
     for t in mo.at:

@@ -1,7 +1,7 @@
 """Rotating frames (notes §10, §11) — numeric core.
 
 p = p'_i e'_i with ė'_i = ω × e'_i.  The exact derivatives of the
-components (forward-mode AD, :mod:`dyncli.topics.kinematics.jet`, in plain floats at each time) give
+components (forward-mode AD, :mod:`dyncli.expr.jet`, in plain floats at each time) give
 
     δp/δt = ṗ'_i e'_i (11.5),     ṗ = δp/δt + ω×p (11.4),
     ω̇ = δω/δt (11.10),
@@ -18,7 +18,7 @@ import math
 
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.kinematics import frame
-from dyncli.topics.kinematics.jet import vec_jet_at
+from dyncli.expr.jet import vec_jet_at
 from dyncli.topics.rotating_frame import equations as eq
 
 

@@ -28,7 +28,7 @@ from types import ModuleType, SimpleNamespace
 from typing import TYPE_CHECKING, Any, Callable, Mapping, Union
 
 from dyncli.expr import Expr
-from dyncli.topics.kinematics import floatmath
+from dyncli.expr import floatmath
 
 if TYPE_CHECKING:
     import numpy as np

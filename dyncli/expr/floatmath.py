@@ -1,5 +1,5 @@
 """Plain-float versions of the numpy functions the derivative jets call
-(:mod:`dyncli.topics.kinematics.jet`), with numpy's conventions for values out of range
+(:mod:`dyncli.expr.jet`), with numpy's conventions for values out of range
 instead of Python's exceptions: inf on overflow, ±inf for x/0, nan for a domain error
 (sqrt of a negative number, sin(inf), asin(2), a negative base to a fractional power).
 So the closed forms of a problem at its few times need no numpy, and give what the arrays
