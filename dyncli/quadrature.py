@@ -4,10 +4,14 @@ vectorised f(t) -> array.
 
 * Every pass evaluates all the panels still being refined in one call of ``f`` (the 15
   Kronrod nodes of each panel), so an integrand written with numpy costs one call per pass.
-* Panels are bisected until Σ|K15 − G7| ≤ max(atol, rtol·|I|); the error returned is that sum.
+* Panels are bisected until Σ|K15 − G7| ≤ max(atol, rtol·|I|); the error returned is that sum,
+  each panel's term at least the rounding of its sum, 50 ε ∫|f| (QUADPACK's rule): an integral
+  whose terms cancel below that stops there, its error saying so.
 * Work budget: each panel evaluated counts one step against ``max_steps`` (default
   ``MAX_PANELS``); a run that needs more is refused (:class:`dyncli.ode.OverBudget`, exit 1,
   the runner's one message), as on the ODE routes.
+* A non-finite value of the integrand is an input error (the expression is undefined there,
+  exit 2); a sum that overflows is a numerical one (exit 1).
 * A panel that cannot be halved any more (its width at the rounding of t) ends the run as not
   converged: the caller warns.
 """
@@ -16,9 +20,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 
 MAX_PANELS = 50_000         # default budget: panels evaluated (15 evaluations each)
+_EPS = float(np.finfo(float).eps)
 
 _XGK = np.array([0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
                  0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
@@ -54,6 +59,9 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
 
     if b == a:
         return 0.0, 0.0, True
+    if b < a:                                    # ∫_a^b = −∫_b^a
+        I, err, ok = gauss_kronrod(f, b, a, rtol, atol, max_steps=max_steps, what=what, path=path)
+        return -I, err, ok
     limit = int(max_steps or MAX_PANELS)
     lo, hi = np.array([a]), np.array([b])
     done_val = done_err = 0.0
@@ -71,18 +79,25 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
                              "(the position or its derivative is undefined there)", path)
         with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
             K = (y @ _WK) * h
-            err = np.abs(K - (y @ _WG15) * h)
+            diff = np.abs(K - (y @ _WG15) * h)
+            # the rounding of a panel's sum (QUADPACK's rule): its error is never below 50 ε ∫|f|
+            floor = 50 * _EPS * (np.abs(y) @ _WK) * np.abs(h)
+            err = np.maximum(diff, floor)
         if not (np.all(np.isfinite(K)) and np.all(np.isfinite(err))):
-            raise InputError(f"the integral of {what} overflows a double (beyond ~1.8e308)", path)
+            raise NumericalError(f"the integral of {what} is not finite: it overflows a double (beyond ~1.8e308)")
         total = done_val + float(K.sum())
         total_err = done_err + float(err.sum())
         tol = max(atol, rtol * abs(total))
         if total_err <= tol:
             return total, total_err, True
-        # split the panels that carry more than their share of the error
-        split = err > tol * (2 * h) / (b - a)
+        # split the panels that carry more than their share of the error, unless it is rounding
+        # alone (a sum that cancels: no bisection can lower it; the error says what is left)
+        refinable = diff > floor
+        split = refinable & (err > tol * (2 * h) / (b - a))
         if not np.any(split):
-            split = err >= err.max()
+            if not np.any(refinable):
+                return total, total_err, True
+            split = refinable & (err >= err[refinable].max())
         done_val += float(K[~split].sum())
         done_err += float(err[~split].sum())
         if np.any(h[split] <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0)):

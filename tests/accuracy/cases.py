@@ -330,7 +330,8 @@ CASES: list[Case] = [
     Case("vibration ODE route (DOP853)", "vibration", _vib_yaml, _vib_error,
          estimate_scale=float(max(abs(_vib_x(t)) for t in VT))),
     Case("kinematics quadrature (arc length)", "kinematics", _kin_yaml, _kin_error, estimate_scale=float(_kin_ref())),
-    Case("force-field quadrature (work)", "force-field", _ff_yaml, _ff_error),
+    # relative to the work's scale, at least |U| (the stricter comparison)
+    Case("force-field quadrature (work)", "force-field", _ff_yaml, _ff_error, estimate_scale=float(abs(_ff_ref()))),
 ]
 
 

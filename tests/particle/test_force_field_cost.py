@@ -48,15 +48,16 @@ def test_no_path_does_not_import_scipy():
 
 
 def test_polynomial_field_along_a_path_imports_no_sympy():
-    # the work of a polynomial field along a path: scipy's quad, x'(t) exact without sympy
+    # the work of a polynomial field along a path: the quadrature runner (dyncli/quadrature.py, no
+    # scipy), x'(t) exact without sympy
     results, mods = _heavy_imports_of("type: force-field\nF: ['2*x1*x2 + x3**3', 'x1**2', '3*x1*x3**2']\n"
                                       "path: {x1: t, x2: 't**2', x3: 't**3', t_span: [0, 1]}\n")
     assert results["work"] == pytest.approx(2.0, rel=1e-14)       # V(0) - V(1, 1, 1) = 0 - (-2) (19.8)
-    assert mods == ["numpy", "scipy"]
+    assert mods == ["numpy"]
     results, mods = _heavy_imports_of("type: force-field\nF: ['-x2', 'x1', '0']\n"
                                       "path: {x1: 'cos(t)', x2: 'sin(t)', x3: 0, t_span: [0, pi]}\n")
     assert results["work"] == pytest.approx(math.pi, rel=1e-13)   # twice the half disc's area (Stokes)
-    assert mods == ["numpy", "scipy"]                               # x'(t) by the IR's rules, not sympy
+    assert mods == ["numpy"]                                        # x'(t) by the IR's rules, not sympy
 
 
 @pytest.mark.parametrize("a, b", [([0, 0, 0], [1, 1, 1]), ([-1.5, 0.3, 2], [0.7, -1.1, -0.4])])

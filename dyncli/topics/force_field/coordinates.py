@@ -219,11 +219,11 @@ class _ScaledField:
         return np.array([float(g.evaluate(**env)) for g in self.G])
 
 
-def path_work(fld: CurvilinearField, path, rtol, atol, res):
+def path_work(fld: CurvilinearField, path, rtol, atol, res, max_steps=None):
     """∫ Σ F_i h_i q̇_i dt along q(t) (19.4): (U, error, q_start, q_end)."""
     from .path import path_work as cartesian_path_work
 
-    return cartesian_path_work(_ScaledField(fld), path, rtol, atol, res)
+    return cartesian_path_work(_ScaledField(fld), path, rtol, atol, res, max_steps)
 
 
 def _curl_at_points(fld, p, formulas, res):
@@ -293,8 +293,7 @@ def _work(fld, p, V, cons, res) -> None:
         r["work"] = None
         res.warn("no path given: work is null")
         return
-    U, err, qa, qb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res)
-    res.method, res.error_estimate = "quadrature", err
+    U, err, qa, qb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res, p.accuracy.max_steps)
     res.equations.append("19.4")
     r.update(work=U, work_error=err, x_start=[v + 0.0 for v in fld.cartesian(qa)],
              x_end=[v + 0.0 for v in fld.cartesian(qb)], work_from_potential=None, work_check=None)

@@ -17,7 +17,7 @@ the checks at random points in :mod:`dyncli.topics.force_field.checks`.
   checked for being single-valued (its differences must equal the work along
   random straight segments by Gauss-Legendre quadrature — a field such as -x2/(x1²+x2²) e1 + x1/(x1²+x2²) e2
   has zero curl but no potential around the x3 axis);
-* the work along a path x(t) (19.4): adaptive quadrature (scipy ``quad``) of
+* the work along a path x(t) (19.4): adaptive quadrature (:mod:`dyncli.quadrature`) of
   F(x(t)) . x'(t) with x'(t) exact (the rules of calculus on the expression IR,
   :mod:`dyncli.expr.derivative`), cross-checked against V1 - V2 (19.8).
 """
@@ -128,9 +128,8 @@ def _work(res: Result, p, fld: Field, cons: bool, Vnum) -> None:
         res.results["work"] = None
         res.warn("no path given: work is null")
     else:
-        U, err, xa, xb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res)
-        res.method = "quadrature"
-        res.error_estimate = err
+        U, err, xa, xb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res,
+                                   p.accuracy.max_steps)
         res.equations.append("19.4")
         res.results["work"] = U
         res.results["work_error"] = err
