@@ -34,25 +34,21 @@ def _ode_method(p) -> str:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
+    from . import work
+
     F = Forces(p)
     rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
-    traj, method, switched = _integrate_route(p, F, rtol, atol)
     times = [float(t) for t in p.at]
+    # the work of one non-conservative term is W_nc (less the uniform terms' exact work); of
+    # several, a quadrature over every step's dense output
+    traj, method, switched = _integrate_route(p, F, rtol, atol, times, work.quadrature_terms(p) > 1)
     S = _at_times(traj, F, times)
-    xs, vs, accs, Hs = (_vecs(S[k]) for k in ("x", "v", "a", "H_O"))
-    Ts, Vs, Es, Ws = (arr.tolist() for arr in (S["T"], S["V"], S["E"], S["W_nc"] + 0.0))
     resid, scale = _energy_residual(p, F, traj, S, times)
-
-    res = Result(
-        {"x": xs, "v": vs, "a": accs, "T": Ts, "V": Vs, "E": Es, "W_nc": Ws, "H_O": Hs,
-         "energy_residual": resid},
-        method=f"ode:{method}",
-        equations=_equations(F),
-        series=[Series("t", times, ["x", "v", "a", "T", "V", "E", "W_nc", "H_O"])],
-    )
+    res = Result(_reported(S, resid), method=f"ode:{method}", equations=_equations(F),
+                 series=[Series("t", times, list(REPORTED))])
     _report_terms(res, p, F, traj, times)
     res.extra["nfev"] = traj.nfev
-    res.extra["sample"] = lambda ts: _at_times(traj, F, ts)     # the dense output, for plots
+    res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     res.extra["nsteps"] = traj.nsteps
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
@@ -64,25 +60,68 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if resid > 1e3 * (rtol * scale + atol) and resid > 1e-9 * scale:
         res.warn(f"energy residual {resid:.3g} J is large for rtol = {rtol:g} (energy scale {scale:.3g} J): "
                  "tighten accuracy.rtol")
-    _error_estimate(res, p, F, traj, times, rtol, atol, method)
+    if not p.t_end > 0:
+        res.error_estimate = 0.0            # nothing integrated: the initial state is exact
+    elif p.accuracy.estimate:
+        _check_estimate(res, p, F, S, times, rtol, atol, method)
+    else:                                   # the relative drift of the energy equation (20.4)
+        ode.nominal_estimate(res, rtol, resid / scale if scale > 0 else 0.0)
     return res
 
 
-def _integrate_route(p, F, rtol, atol):
+#: the reported quantities at the requested times (each with its error in error_estimate)
+REPORTED = ("x", "v", "a", "T", "V", "E", "W_nc", "H_O")
+
+
+def _reported(S, resid) -> dict:
+    """The results at the requested times as lists (vectors as lists of 3, -0.0 as 0.0)."""
+    out = {k: (S[k].T + 0.0).tolist() for k in REPORTED}
+    out["energy_residual"] = resid
+    return out
+
+
+class _Sampler:
+    """The motion at any times (plots): the run again with every step's dense output, made on the
+    first call (the same steps, so the requested times give the results exactly)."""
+
+    def __init__(self, p, F, traj, method, times):
+        self.p, self.F, self.traj, self.method, self.times = p, F, traj, method, times
+
+    def __call__(self, ts) -> dict:
+        if not self.traj.dense:
+            p = self.p
+            self.traj = integrate(p, self.F, float(p.accuracy.rtol), float(p.accuracy.atol), self.method,
+                                  max_steps=p.accuracy.max_steps, times=self.times, dense=True)
+        return _at_times(self.traj, self.F, ts)
+
+
+def _integrate_route(p, F, rtol, atol, times, dense):
     """(trajectory, method, why it switched or None): method auto hands a run that is stiff for
     DOP853 to LSODA."""
     method = _ode_method(p)
-    max_steps = p.accuracy.max_steps
+    kw = {"max_steps": p.accuracy.max_steps, "times": times, "dense": dense}
     try:
-        return integrate(p, F, rtol, atol, method, max_steps=max_steps), method, None
+        return integrate(p, F, rtol, atol, method, **kw), method, None
     except NumericalError as exc:
         if p.accuracy.method != "auto" or not getattr(exc, "stiff", False):
             raise
         try:
-            traj = integrate(p, F, rtol, atol, "LSODA", max_steps=max_steps)
+            traj = integrate(p, F, rtol, atol, "LSODA", **kw)
         except NumericalError:
             raise exc from None
         return traj, "LSODA", str(exc)
+
+
+def _check_estimate(res, p, F, S, times, rtol, atol, method) -> None:
+    """The runner's check solve (ode.check_solve: rtol/100, its one looser fallback over the step
+    budget); error_estimate: the largest difference of every reported quantity at the requested
+    times, each relative to its own scale over the run (ode.relative_difference)."""
+    check = ode.check_solve(res, lambda r2, a2: integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps,
+                                                          times=times), rtol, atol)
+    if check is None:
+        return
+    S2 = _at_times(check[0], F, times)
+    res.error_estimate = ode.relative_difference([(S[k], S2[k]) for k in REPORTED])
 
 
 def _energy_residual(p, F, traj, S, times):
@@ -140,27 +179,6 @@ def _report_inside_R0(res, F, traj) -> None:
                      f"(R_min = {Rmin:.6g} m): below the surface of the attracting body")
 
 
-def _error_estimate(res, p, F, traj, times, rtol, atol, method) -> None:
-    """A second solve at tolerances 100x tighter (and steps at most half the longest step of the
-    first solve, so that it cannot take the very same steps); the largest difference of the
-    positions at the requested times estimates the absolute error of x of the first solve."""
-    if not p.t_end > 0:
-        res.error_estimate = 0.0
-        return
-    hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
-    # the runner's check solve (ode.check_solve); no looser fallback here: over the budget the
-    # estimate is null (tests/particle/test_error_estimate.py keeps that behaviour)
-    check = ode.check_solve(res, lambda r2, a2: integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps,
-                                                          max_step=hmax), rtol, atol, fallback=False)
-    if check is None:
-        return
-    traj2 = check[0]
-    err = float(np.max(np.abs(traj.state_array(times)[1][0:3] - traj2.state_array(times)[1][0:3]), initial=0.0))
-    res.error_estimate = err if math.isfinite(err) else None
-    if res.error_estimate is None:
-        res.warn("error_estimate is null: the comparison solve differs by a non-finite amount")
-
-
 def _at_times(traj: Trajectory, F: Forces, times) -> dict:
     """The motion at every time of ``times`` at once, as arrays: x, v, a
     (3 x N), T, V, E, W_nc (N), H_O (3 x N).  Dense output per phase,
@@ -188,11 +206,6 @@ def _at_times(traj: Trajectory, F: Forces, times) -> dict:
 
 def _vec(a) -> list[float]:
     return [float(c) + 0.0 for c in np.asarray(a, float)]
-
-
-def _vecs(A) -> list[list[float]]:
-    """The columns of a 3 x N array as N vectors (lists), -0.0 as 0.0."""
-    return (np.asarray(A, float).T + 0.0).tolist()
 
 
 def _equations(F: Forces) -> list[str]:

@@ -27,13 +27,18 @@ MAX_PHASES = 20000
 
 
 class OdePhase:
+    """One integrated phase on [t0, t1]: the accepted steps (``steps_t``, ``steps_y`` 7 x n), the
+    phase's right-hand side, and ``sol`` (a scipy ``OdeSolution`` over its steps) when the run
+    kept every step's dense output (``dense=True``), else None."""
+
     def __init__(self, t0, t1, sol, rhs, steps_t, steps_y):
         self.t0, self.t1, self.sol, self.rhs = t0, t1, sol, rhs
         self.steps_t, self.steps_y = steps_t, steps_y
 
     def state(self, t):
-        y = self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
-        return y
+        if self.t1 > self.t0 and self.sol is None:
+            raise RuntimeError("the trajectory was integrated without dense output")
+        return self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
 
 
 class RestPhase:
@@ -45,12 +50,18 @@ class RestPhase:
 
 
 class Trajectory:
-    def __init__(self, phases, notes, nfev, nsteps=0, hmax=0.0):
+    """The phases of a run, the friction notes, and the states recorded during the run at the
+    requested times (``recorded``: time -> (phase index, state)); with ``dense`` every phase has
+    its dense output and any time can be evaluated."""
+
+    def __init__(self, phases, notes, nfev, nsteps=0, hmax=0.0, recorded=None, dense=True):
         self.phases = phases
         self.notes = notes      # list of (kind, t, info) for stops/slips
         self.nfev = nfev
         self.nsteps = nsteps    # accepted steps over all phases
         self.hmax = hmax        # the longest accepted step
+        self.recorded = recorded or {}
+        self.dense = dense
 
     def phase_at(self, t):
         """The first phase whose interval [t0, t1] contains t."""
@@ -65,17 +76,24 @@ class Trajectory:
         return self.phases[-1]
 
     def states(self, times):
-        out = []
-        for t in times:
-            ph = self.phase_at(t)
-            out.append((ph, ph.state(t)))
-        return out
+        """(phase, state) at each time."""
+        idx, Y = self.state_array(times)
+        return [(self.phases[k], Y[:, j]) for j, k in enumerate(idx.tolist())]
 
     def state_array(self, times) -> tuple[np.ndarray, np.ndarray]:
         """The phase index of each time (as :meth:`phase_at`) and the states
-        y (7 x N) at all ``times`` at once: each phase's dense output is
-        called once on the array of its times, not once per time."""
+        y (7 x N) at all ``times`` at once: a time recorded during the run takes its
+        recorded state; each phase's dense output is called once on the array of the others."""
         t = np.asarray(times, float)
+        rec = self.recorded
+        if rec and all(tt in rec for tt in t.tolist()):
+            got = [rec[tt] for tt in t.tolist()]
+            idx = np.array([k for k, _ in got], dtype=int)
+            Y = np.array([y for _, y in got], dtype=float).T if got else np.empty((7, 0))
+            return idx, Y.reshape(7, t.size)
+        return self._dense_array(t)
+
+    def _dense_array(self, t):
         starts = np.array([ph.t0 for ph in self.phases])
         ends = np.array([ph.t1 for ph in self.phases])
         idx = np.clip(np.searchsorted(starts, t, side="left") - 1, 0, len(self.phases) - 1)
@@ -92,9 +110,12 @@ class Trajectory:
             if isinstance(ph, RestPhase):
                 Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[:, None]
             elif ph.t1 > ph.t0:
-                Y[:, sel] = ph.sol(t[sel])
+                Y[:, sel] = ph.state(t[sel])
             else:
                 Y[:, sel] = ph.steps_y[:, :1]
+        for j, tt in enumerate(t.tolist()):     # the recorded states exactly (the same as the results)
+            if tt in self.recorded:
+                Y[:, j] = self.recorded[tt][1]
         return idx, Y
 
 
@@ -147,26 +168,30 @@ def _budget_message(over: ode.OverBudget, method: str, rhs=None) -> tuple[str, b
 
 
 def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
-              max_step: float = math.inf) -> Trajectory:
-    """Integrate the motion from t = 0 to t_end (phases for friction).
+              times=(), dense: bool = True) -> Trajectory:
+    """Integrate the motion from t = 0 to t_end (phases for friction), recording the state at
+    ``times``; ``dense``: keep every step's dense output (for plots and for the work of several
+    non-conservative terms), else a step's interpolant is built only where a requested time or a
+    friction stop falls in it.
 
     The run is refused with a NumericalError as soon as it is clear that it
     needs more than ``max_steps`` accepted steps (default MAX_STEPS); a
     non-finite force is a NumericalError at once."""
     with np.errstate(all="ignore"):     # overflow is detected and reported, not warned about
-        return _integrate(p, F, rtol, atol, method, max_steps, max_step)
+        return _integrate(p, F, rtol, atol, method, max_steps, times, dense)
 
 
-def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
+def _integrate(p, F, rtol, atol, method, max_steps, times, dense) -> Trajectory:
     rtol = max(rtol, 100 * EPS * 1.0001)
     t_end = float(p.t_end)
     y = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
     if t_end == 0.0:
         rhs = F.make_rhs(np.zeros(3))
-        return Trajectory([OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy())], [], 0)
+        return Trajectory([OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy())], [], 0,
+                          recorded={float(t): (0, y.copy()) for t in times})
     budget = ode.Budget(max_steps, default=MAX_STEPS, probe=PROBE_STEPS)
     budget.leg(0.0, t_end)
-    run = _Run(F, rtol, atol, method, ode.budgeted(method, budget), max_step, t_end, y)
+    run = _Run(F, rtol, atol, method, budget, t_end, y, times, dense)
     try:
         run.phases_to_end()
     except _NonFinite as exc:
@@ -174,25 +199,38 @@ def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
                              f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
     except ode.OverBudget as exc:
         msg, stiff = _budget_message(exc, method, run.rhs)
-        err = NumericalError(msg)
-        err.stiff = stiff                # method auto switches to LSODA
-        raise err from None
-    return Trajectory(run.phases, run.notes, run.nfev, budget.n, budget.hmax)
+        exc.args = (msg,)               # the runner's refusal with a hint on what limits the steps
+        exc.stiff = stiff               # method auto switches to LSODA
+        raise exc from None
+    return Trajectory(run.phases, run.notes, run.nfev, budget.n, budget.hmax, run.recorded, dense)
 
 
 class _Run:
     """The phases of one integration from t = 0 to t_end: each starts with the friction
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
 
-    def __init__(self, F, rtol, atol, method, solver_cls, max_step, t_end, y):
-        self.F, self.rtol, self.atol, self.method = F, rtol, atol, method
-        self.solver_cls, self.max_step, self.t_end = solver_cls, max_step, t_end
+    def __init__(self, F, rtol, atol, method, budget, t_end, y, times, dense):
+        from scipy import integrate as si
+
+        self.F, self.rtol, self.atol, self.method, self.budget = F, rtol, atol, method, budget
+        self.solver_cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
+        self.t_end, self.dense = t_end, dense
         self.t, self.y = 0.0, y
         self.phases: list = []
         self.notes: list = []       # (kind, t, |F_other|) for stops, slips and releases
         self.nfev = 0
         self.vscale = float(np.linalg.norm(y[3:6]))
         self.rhs = F.make_rhs(np.zeros(3))
+        self.want = sorted(set(float(t) for t in times))     # the requested times, in order
+        self.k = 0                                              # the next one to record
+        self.recorded: dict = {}
+
+    def record_rest(self, ph) -> None:
+        """The requested times within a rest phase (up to its end)."""
+        y = np.concatenate([ph.x, np.zeros(3), [ph.W]])
+        while self.k < len(self.want) and self.want[self.k] <= ph.t1:
+            self.recorded[self.want[self.k]] = (len(self.phases) - 1, y)
+            self.k += 1
 
     def phases_to_end(self) -> None:
         for _ in range(MAX_PHASES):
@@ -223,6 +261,7 @@ class _Run:
             t_free = _release_time(F, t, self.t_end, y[0:3]) if F.time_dependent else None
             t1 = self.t_end if t_free is None else t_free
             self.phases.append(RestPhase(t, t1, y[0:3], y[6]))
+            self.record_rest(self.phases[-1])
             self.notes.append(("stick", t, nFo))
             if t_free is None:
                 return None
@@ -234,50 +273,76 @@ class _Run:
             self.notes.append(("slip", t, nFo))
         return Fo / nFo
 
-    def _events(self, d):
-        if not self.F.muN:
-            return None
-        dd = d.copy()
-
-        def ev(t, y, dd=dd):
-            return float(y[3:6] @ dd)
-
-        ev.terminal = True
-        ev.direction = -1
-        return [ev]
-
     def integrate_phase(self, d) -> bool:
         """Integrate one phase with friction direction d; True when it reaches t_end."""
-        from scipy import integrate as si
-
-        t, y, method = self.t, self.y, self.method
+        t0, y0, method = self.t, self.y, self.method
         self.rhs = rhs = self.F.make_rhs(d)
         try:
-            sol = si.solve_ivp(rhs, (t, self.t_end), y, method=self.solver_cls, rtol=self.rtol, atol=self.atol,
-                               dense_output=True, events=self._events(d), max_step=self.max_step)
+            solver = self.solver_cls(rhs, t0, y0, self.t_end, rtol=self.rtol, atol=self.atol)
+            stop, ts, ys, sols = self._steps(solver, d)
         except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
-            raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
-        self.nfev += sol.nfev
-        if sol.status == -1:
-            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
-                                 + _singularity_hint(self.F, sol.y[0:3, -1]))
-        if not np.all(np.isfinite(sol.y)):
-            bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
-            raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
+            raise NumericalError(f"the integrator ({method}) failed near t = {self.t:g}: {exc}") from None
+        self.nfev += solver.nfev
+        Y = np.array(ys).T
+        if not np.all(np.isfinite(Y)):
+            bad = int(np.argmax(~np.all(np.isfinite(Y), axis=0)))
+            raise NumericalError(f"the motion is not finite near t = {ts[max(bad - 1, 0)]:g} "
                                  "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
-        self.vscale = max(self.vscale, float(np.max(np.linalg.norm(sol.y[3:6], axis=0))))
-        if sol.status == 1 and sol.t_events[0].size:
-            te = float(sol.t_events[0][0])
-            ye = np.array(sol.y_events[0][0], float)
-            steps_t = np.append(sol.t, te) if sol.t[-1] < te else sol.t
-            steps_y = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
-            self.phases.append(OdePhase(t, te, sol.sol, rhs, steps_t, steps_y))
-            self.t, self.y = te, ye
-            return te >= self.t_end
-        self.phases.append(OdePhase(t, float(sol.t[-1]), sol.sol, rhs, sol.t, sol.y))
-        return True
+        self.vscale = max(self.vscale, float(np.max(np.linalg.norm(Y[3:6], axis=0))))
+        sol = None
+        if self.dense and sols:
+            from scipy.integrate import OdeSolution
 
+            sol = OdeSolution(ts, sols)
+        self.phases.append(OdePhase(t0, ts[-1], sol, rhs, np.array(ts), Y))
+        self.t, self.y = ts[-1], ys[-1]
+        return not stop or ts[-1] >= self.t_end
 
+    def _steps(self, solver, d):
+        """The accepted steps of one phase (the loop of scipy's ``solve_ivp``): the budget ticks,
+        the requested times recorded from the step's dense output, and the friction stop: the
+        terminal event v·d = 0 crossed downwards, located by brentq on the dense output as
+        ``solve_ivp`` does.  Returns (stopped, step times, states, interpolants if dense)."""
+        from scipy.optimize import brentq
+
+        t, y = solver.t, solver.y.copy()
+        ts, ys, sols = [t], [y], []
+        want, k, rec, n_ph = self.want, self.k, self.recorded, len(self.phases)
+        while k < len(want) and want[k] <= t:       # a time at the phase's start
+            rec[want[k]] = (n_ph, y)
+            k += 1
+        muN, budget, dense = self.F.muN, self.budget, self.dense
+        g = float(y[3:6] @ d)
+        stop = False
+        while solver.status == "running":
+            msg = solver.step()
+            if solver.status == "failed":
+                raise NumericalError(f"the integrator ({self.method}) failed near t = {solver.t:g}: {msg}"
+                                     + _singularity_hint(self.F, solver.y[0:3]))
+            t_old, t, y = solver.t_old, solver.t, solver.y.copy()
+            budget.tick(t, t_old, y)
+            sol = solver.dense_output() if dense else None
+            if muN:
+                g_new = float(y[3:6] @ d)
+                if g >= 0 and g_new <= 0:           # solve_ivp's event of direction −1
+                    sol = sol or solver.dense_output()
+                    t = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
+                    y, stop = sol(t), True
+                g = g_new
+            while k < len(want) and want[k] <= t:
+                tk = want[k]
+                if tk != t:
+                    sol = sol or solver.dense_output()
+                rec[tk] = (n_ph, y if tk == t else sol(tk))
+                k += 1
+            ts.append(t)
+            ys.append(y)
+            if sol is not None and dense:
+                sols.append(sol)
+            if stop:
+                break
+        self.k = k
+        return stop, ts, ys, sols
 def _singularity_hint(F: Forces, x) -> str:
     for c, _, R0 in F.inv:
         R = float(np.linalg.norm(x - c))

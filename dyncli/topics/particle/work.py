@@ -25,6 +25,11 @@ GL_NODES = 8
 POTENTIAL_KINDS = ("gravity", "inverse-square", "spring", "uniform")
 
 
+def quadrature_terms(p) -> int:
+    """How many force terms have no potential (their work is a quadrature along the motion)."""
+    return sum(f.kind not in POTENTIAL_KINDS for f in p.forces)
+
+
 def labels(forces) -> list[str]:
     """One label per force term: its kind (a custom term's ``name`` if given),
     with #2, #3, ... for repeats."""
@@ -194,12 +199,16 @@ def add(res, p, F, traj, times, states) -> None:
     Fi = _term_forces(terms, F, t, X, V, rest)
     P = np.sum(Fi * V[None], axis=1)
     with np.errstate(all="ignore"):
-        U = _quadrature_work(traj, terms, F, times) if terms else np.zeros((0, t.size))
+        quad = [i for i, tm in enumerate(terms) if tm.kind not in POTENTIAL_KINDS]
+        U = _quadrature_work(traj, terms, F, times) if len(quad) > 1 else np.zeros((len(terms), t.size))
         x1 = np.asarray(p.x0, float)
         for i, tm in enumerate(terms):
             ex = tm.exact_work(X, x1)
             if ex is not None:
                 U[i] = ex
+        if len(quad) == 1:      # the one term without a potential: W_nc (20.3) less the uniform terms' work
+            uni = [i for i, tm in enumerate(terms) if tm.kind == "uniform"]
+            U[quad[0]] = Y[6] - np.sum(U[uni], axis=0)
     T = 0.5 * F.m * np.sum(V * V, axis=0)
     T1 = 0.5 * F.m * float(np.dot(p.v0, p.v0))
     resid = float(np.max(np.abs(np.sum(U, axis=0) - (T - T1)))) if t.size else 0.0
