@@ -114,10 +114,10 @@ class Forces:
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
         springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
         custom = [tuple(e.scalar_fn() for e in comps) for comps in self.custom]
-        sqrt, isfinite = math.sqrt, math.isfinite
+        sqrt, isfinite, array = math.sqrt, math.isfinite, np.array
 
         def rhs(t, y):
-            x1, x2, x3, v1, v2, v3 = y[:6].tolist()
+            x1, x2, x3, v1, v2, v3, _ = y.tolist()
             f1, f2, f3 = u1, u2, u3              # the non-conservative force
             if c_lin:
                 f1, f2, f3 = f1 - c_lin * v1, f2 - c_lin * v2, f3 - c_lin * v3
@@ -157,9 +157,10 @@ class Forces:
                     g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
             a1, a2, a3 = (f1 + g1) / m, (f2 + g2) / m, (f3 + g3) / m
             w = f1 * v1 + f2 * v2 + f3 * v3
-            if not (isfinite(a1) and isfinite(a2) and isfinite(a3) and isfinite(w)):
+            if not isfinite(a1 + a2 + a3 + w) and not (isfinite(a1) and isfinite(a2) and isfinite(a3)
+                                                     and isfinite(w)):
                 raise _NonFinite(t, (x1, x2, x3))
-            return np.array([v1, v2, v3, a1, a2, a3, w])
+            return array((v1, v2, v3, a1, a2, a3, w))
 
         return rhs
 

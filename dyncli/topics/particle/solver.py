@@ -42,11 +42,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     # the work of one non-conservative term is W_nc (less the uniform terms' exact work); of
     # several, a quadrature over every step's dense output
     traj, method, switched = _integrate_route(p, F, rtol, atol, times, work.quadrature_terms(p) > 1)
-    S = _at_times(traj, F, times)
-    resid, scale = _energy_residual(p, F, traj, S, times)
+    S = _at_times(traj, F, times, steps=True)
+    resid, scale = _energy_residual(p, F, S)
     res = Result(_reported(S, resid), method=f"ode:{method}", equations=_equations(F),
                  series=[Series("t", times, list(REPORTED))])
-    _report_terms(res, p, F, traj, times)
+    _report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
     res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     res.extra["nsteps"] = traj.nsteps
@@ -124,24 +124,15 @@ def _check_estimate(res, p, F, S, times, rtol, atol, method) -> None:
     res.error_estimate = ode.relative_difference([(S[k], S2[k]) for k in REPORTED])
 
 
-def _energy_residual(p, F, traj, S, times):
+def _energy_residual(p, F, S):
     """(max |E − E1 − W_nc| over every accepted step and the requested times (20.4), the energy
-    scale it is measured against)."""
-    m = F.m
-    y0 = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
-    E1 = 0.5 * m * float(y0[3:6] @ y0[3:6]) + float(F.potential(y0[0:3]))
-    resid = 0.0
-    scale = abs(E1)
-    for ph in traj.phases:
-        if isinstance(ph, OdePhase):
-            Y = ph.steps_y
-            T = eq.kinetic_energy(m, Y[3:6])
-            V = F.potential(Y[0:3])
-            resid = max(resid, eq.energy_residual(T + V, E1, Y[6]))
-            scale = max(scale, float(np.max(np.abs(T))), float(np.max(np.abs(V))), float(np.max(np.abs(Y[6]))))
-    if times:
-        resid = max(resid, eq.energy_residual(S["E"], E1, S["W_nc"]))
-    return resid, scale
+    scale it is measured against: the largest |E1|, |T|, |V|, |W_nc| over them)."""
+    x0, v0 = np.asarray(p.x0, float), np.asarray(p.v0, float)
+    E1 = 0.5 * F.m * float(v0 @ v0) + float(F.potential(x0))
+    T, V, W = S["energies"]
+    if not T.size:
+        return 0.0, abs(E1)
+    return eq.energy_residual(T + V, E1, W), max(abs(E1), float(abs(np.concatenate(S["energies"])).max()))
 
 
 def _report_friction(res, F, traj) -> None:
@@ -169,39 +160,46 @@ def _report_friction(res, F, traj) -> None:
 
 def _report_inside_R0(res, F, traj) -> None:
     """Inverse-square: a path below R0 passes inside the attracting body."""
+    X = np.concatenate([traj.steps()[1][0:3]] + [ph.x[:, None] for ph in traj.phases if isinstance(ph, RestPhase)],
+                       axis=1)
     for c, _, R0 in F.inv:
-        Rmin = math.inf
-        for ph in traj.phases:
-            Y = ph.steps_y if isinstance(ph, OdePhase) else ph.x[:, None]
-            Rmin = min(Rmin, float(np.min(eq.distance(Y[0:3] - c[:, None]))))
+        Rmin = float(np.min(eq.distance(X - c[:, None])))
         if Rmin < R0 * (1 - 1e-9):
             res.warn(f"the path passes inside R0 = {R0:g} m of the inverse-square centre "
                      f"(R_min = {Rmin:.6g} m): below the surface of the attracting body")
 
 
-def _at_times(traj: Trajectory, F: Forces, times) -> dict:
+def _at_times(traj: Trajectory, F: Forces, times, steps: bool = False) -> dict:
     """The motion at every time of ``times`` at once, as arrays: x, v, a
-    (3 x N), T, V, E, W_nc (N), H_O (3 x N).  Dense output per phase,
-    energies and angular momentum on whole arrays; only a = f(t, y) is per
-    time (the phase's own right-hand side, friction continuation included)."""
+    (3 x N), T, V, E, W_nc (N), H_O (3 x N); with ``steps``, also T, V, W_nc over every accepted
+    step and the times (``energies``, for the energy residual).  Energies and angular momentum
+    on whole arrays; only a = f(t, y) is per time (the phase's own right-hand side, friction
+    continuation included)."""
     times = [float(t) for t in times]
     m = F.m
     idx, Y = traj.state_array(times)
     X, Vel = Y[0:3], Y[3:6]
-    A = np.zeros((3, len(times)))
-    for j, (t, k) in enumerate(zip(times, idx.tolist())):
-        ph = traj.phases[k]
-        if isinstance(ph, RestPhase):
-            continue
+    rest = [isinstance(traj.phases[k], RestPhase) for k in idx.tolist()]
+    A = []
+    for t, y, k, r in zip(times, Y.T, idx.tolist(), rest):
         try:
-            A[:, j] = ph.rhs(t, Y[:, j])[3:6]
+            A.append(_ZERO3 if r else traj.phases[k].rhs(t, y)[3:6])
         except _NonFinite as exc:
             raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                                  f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m") from None
-    T = eq.kinetic_energy(m, Vel)
-    V = F.potential(X) + np.zeros(len(times))
-    return {"x": X, "v": Vel, "a": A, "T": T, "V": V, "E": T + V, "W_nc": Y[6],
-            "H_O": eq.angular_momentum(m, X, Vel)}
+    Z = np.concatenate([traj.steps()[1], Y], axis=1) if steps else Y
+    T = eq.kinetic_energy(m, Z[3:6])
+    V = F.potential(Z[0:3])
+    k = Z.shape[1] - len(times)
+    S = {"x": X, "v": Vel, "a": np.array(A, dtype=float).reshape(-1, 3).T, "T": T[k:], "V": V[k:],
+         "E": T[k:] + V[k:], "W_nc": Y[6], "H_O": eq.angular_momentum(m, X, Vel), "t": times, "Y": Y,
+         "rest": np.array(rest, dtype=bool)}
+    if steps:
+        S["energies"] = (T, V, Z[6])
+    return S
+
+
+_ZERO3 = (0.0, 0.0, 0.0)
 
 
 def _vec(a) -> list[float]:
@@ -222,11 +220,12 @@ def _equations(F: Forces) -> list[str]:
     return eq
 
 
-def _report_terms(res, p, F, traj, times) -> None:
+def _report_terms(res, p, F, traj, S) -> None:
     """Power and work per force (work.py); the cylindrical basis (cylindrical.py)."""
-    from . import cylindrical, work
+    from . import work
 
-    states = traj.states(times)
-    work.add(res, p, F, traj, times, states)
+    work.add(res, p, F, traj, S)
     if getattr(p, "basis", "cartesian") == "cylindrical":
-        cylindrical.add(res, p, traj, times, states, F.m)
+        from . import cylindrical
+
+        cylindrical.add(res, p, traj, S, F.m)

@@ -63,6 +63,15 @@ class Trajectory:
         self.recorded = recorded or {}
         self.dense = dense
 
+    def steps(self) -> tuple[np.ndarray, np.ndarray]:
+        """(times, states 7 x M) of every accepted step of every integrated phase, in order."""
+        if not hasattr(self, "_steps"):
+            ode_ph = [ph for ph in self.phases if isinstance(ph, OdePhase)]
+            self._steps = ((np.concatenate([ph.steps_t for ph in ode_ph]),
+                            np.concatenate([ph.steps_y for ph in ode_ph], axis=1)) if ode_ph else
+                           (np.zeros(0), np.zeros((7, 0))))
+        return self._steps
+
     def phase_at(self, t):
         """The first phase whose interval [t0, t1] contains t."""
         import bisect
