@@ -74,8 +74,14 @@ REPORTED = ("x", "v", "a", "T", "V", "E", "W_nc", "H_O")
 
 
 def _reported(S, resid) -> dict:
-    """The results at the requested times as lists (vectors as lists of 3, -0.0 as 0.0)."""
-    out = {k: (S[k].T + 0.0).tolist() for k in REPORTED}
+    """The results at the requested times as lists (vectors as lists of 3, -0.0 as 0.0): one
+    array of every reported row, converted at once."""
+    rows = np.concatenate([S[k] if S[k].ndim == 2 else S[k][None] for k in REPORTED]) + 0.0
+    out, i = {}, 0
+    for k in REPORTED:
+        n = 3 if S[k].ndim == 2 else 1
+        out[k] = rows[i:i + 3].T.tolist() if n == 3 else rows[i].tolist()
+        i += n
     out["energy_residual"] = resid
     return out
 

@@ -214,6 +214,9 @@ def _integrate(p, F, rtol, atol, method, max_steps, times, dense) -> Trajectory:
     return Trajectory(run.phases, run.notes, run.nfev, budget.n, budget.hmax, run.recorded, dense)
 
 
+_NO_FRICTION = np.zeros(3)
+
+
 class _Run:
     """The phases of one integration from t = 0 to t_end: each starts with the friction
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
@@ -228,8 +231,8 @@ class _Run:
         self.phases: list = []
         self.notes: list = []       # (kind, t, |F_other|) for stops, slips and releases
         self.nfev = 0
-        self.vscale = float(np.linalg.norm(y[3:6]))
-        self.rhs = F.make_rhs(np.zeros(3))
+        self.vscale = float(np.linalg.norm(y[3:6])) if F.muN else 0.0     # friction decides stops on it
+        self.rhs = None             # the right-hand side of the current phase
         self.want = sorted(set(float(t) for t in times))     # the requested times, in order
         self.k = 0                                              # the next one to record
         self.recorded: dict = {}
@@ -253,10 +256,10 @@ class _Run:
         """The friction reference direction d of the next phase (zeros without friction), after
         a rest phase if the particle sticks; None when it sticks until t_end."""
         F, y, t = self.F, self.y, self.t
+        if not F.muN:
+            return _NO_FRICTION
         speed = float(np.linalg.norm(y[3:6]))
         self.vscale = max(self.vscale, speed)
-        if not F.muN:
-            return np.zeros(3)
         if not speed <= 10.0 * (self.atol + self.rtol * self.vscale):     # sliding (or not a number)
             return y[3:6] / speed
         y[3:6] = 0.0
@@ -297,7 +300,8 @@ class _Run:
             bad = int(np.argmax(~np.all(np.isfinite(Y), axis=0)))
             raise NumericalError(f"the motion is not finite near t = {ts[max(bad - 1, 0)]:g} "
                                  "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
-        self.vscale = max(self.vscale, float(np.max(np.linalg.norm(Y[3:6], axis=0))))
+        if self.F.muN:
+            self.vscale = max(self.vscale, float(np.linalg.norm(Y[3:6], axis=0).max()))
         sol = None
         if self.dense and sols:
             from scipy.integrate import OdeSolution

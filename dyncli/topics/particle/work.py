@@ -61,30 +61,28 @@ class Term:
             self.muN = float(f.mu) * float(f.N)
 
     def force(self, t, x, v):
+        """F_i at the states (3, n), or a (3, 1) column for a constant force."""
         f, k = self.f, self.kind
-        out = np.zeros_like(x)
         if k == "uniform":
-            out += np.asarray(f.F, float)[:, None]
-        elif k == "gravity":
-            out[2] = -self.m * self.g
-        elif k == "inverse-square":
+            return np.asarray(f.F, float)[:, None]
+        if k == "gravity":
+            return np.array([[0.0], [0.0], [-self.m * self.g]])
+        if k == "inverse-square":
             r = x - self.c
-            out = -self.mu * r / np.sqrt((r * r).sum(axis=0)) ** 3
-        elif k == "spring":
+            return -self.mu * r / np.sqrt((r * r).sum(axis=0)) ** 3
+        if k == "spring":
             r = x - self.c
             R = np.sqrt((r * r).sum(axis=0))
-            out = -f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)
-        elif k == "damper":
-            out = -f.c * v
-        elif k == "drag":
-            out = -f.c * v if f.power == 1 else -f.c * np.sqrt((v * v).sum(axis=0)) * v
-        elif k == "friction":
+            return -f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)
+        if k == "damper" or (k == "drag" and f.power == 1):
+            return -f.c * v
+        if k == "drag":
+            return -f.c * np.sqrt((v * v).sum(axis=0)) * v
+        if k == "friction":
             sp = np.sqrt((v * v).sum(axis=0))
-            out = -self.muN * v / np.where(sp > 0, sp, 1.0)
-        elif k == "custom":
-            env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}
-            out = np.stack([np.broadcast_to(np.asarray(e.evaluate(**env), float), x.shape[1:]) for e in f.F])
-        return out
+            return -self.muN * v / np.where(sp > 0, sp, 1.0)
+        env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}   # custom
+        return np.stack([np.broadcast_to(np.asarray(e.evaluate(**env), float), x.shape[1:]) for e in f.F])
 
     def exact_work(self, x, x1):
         """U since t = 0 from the potential (19.8), or None (quadrature)."""
@@ -122,7 +120,9 @@ def _sliding_dirs(F, t, X, V):
 def _term_forces(terms, F, t, X, V, rest):
     """(len(terms), 3, n) forces at the states; ``rest`` marks states of a
     rest (stuck) phase, where friction is the static reaction."""
-    out = np.stack([tm.force(t, X, V) for tm in terms]) if terms else np.zeros((0,) + X.shape)
+    out = np.empty((len(terms),) + X.shape)
+    for i, tm in enumerate(terms):
+        out[i] = tm.force(t, X, V)
     fr = [i for i, tm in enumerate(terms) if tm.kind == "friction"]
     if fr and F.muN > 0:
         d = _sliding_dirs(F, t, X, V)
