@@ -103,18 +103,18 @@ class Forces:
 
     def make_rhs(self, d):  # over 60 lines: the integrator's hot loop, inlined in plain floats on purpose
         """The right-hand side y' = f(t, y) of one phase, y = [x, v, W_nc],
-        in plain float arithmetic (the integrator calls it for one state at a
+        as a tuple of 7 floats, in plain float arithmetic (the integrator calls it for one state at a
         time; the same forces as conservative() + nonconservative(), with
         the friction continuation -mu N sign(v.d) v/|v| of the phase).
         A non-finite force raises _NonFinite at once."""
         m, muN, weight = self.m, self.muN, self.weight
-        u1, u2, u3 = (float(c) for c in self.uniform)
+        u1, u2, u3 = self.uniform.tolist()
         c_lin, c_quad = self.c_lin, self.c_quad
-        d1, d2, d3 = (float(c) for c in d)
+        d1, d2, d3 = np.asarray(d, float).tolist()
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
         springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
         custom = [tuple(e.scalar_fn() for e in comps) for comps in self.custom]
-        sqrt, isfinite, array = math.sqrt, math.isfinite, np.array
+        sqrt, isfinite = math.sqrt, math.isfinite
 
         def rhs(t, y):
             x1, x2, x3, v1, v2, v3, _ = y.tolist()
@@ -160,7 +160,7 @@ class Forces:
             if not isfinite(a1 + a2 + a3 + w) and not (isfinite(a1) and isfinite(a2) and isfinite(a3)
                                                      and isfinite(w)):
                 raise _NonFinite(t, (x1, x2, x3))
-            return array((v1, v2, v3, a1, a2, a3, w))
+            return v1, v2, v3, a1, a2, a3, w         # a tuple: scipy makes it an array once
 
         return rhs
 

@@ -166,6 +166,8 @@ def _report_friction(res, F, traj) -> None:
 
 def _report_inside_R0(res, F, traj) -> None:
     """Inverse-square: a path below R0 passes inside the attracting body."""
+    if not F.inv:
+        return
     X = np.concatenate([traj.steps()[1][0:3]] + [ph.x[:, None] for ph in traj.phases if isinstance(ph, RestPhase)],
                        axis=1)
     for c, _, R0 in F.inv:

@@ -93,14 +93,10 @@ class Trajectory:
         """The phase index of each time (as :meth:`phase_at`) and the states
         y (7 x N) at all ``times`` at once: a time recorded during the run takes its
         recorded state; each phase's dense output is called once on the array of the others."""
-        t = np.asarray(times, float)
-        rec = self.recorded
-        if rec and all(tt in rec for tt in t.tolist()):
-            got = [rec[tt] for tt in t.tolist()]
-            idx = np.array([k for k, _ in got], dtype=int)
-            Y = np.array([y for _, y in got], dtype=float).T if got else np.empty((7, 0))
-            return idx, Y.reshape(7, t.size)
-        return self._dense_array(t)
+        got = [self.recorded.get(float(tt)) for tt in times]
+        if got and None not in got:
+            return np.array([k for k, _ in got], dtype=int), np.array([y for _, y in got], dtype=float).T
+        return self._dense_array(np.asarray(times, float))
 
     def _dense_array(self, t):
         starts = np.array([ph.t0 for ph in self.phases])
@@ -140,13 +136,13 @@ def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
     differences) and whether it is stiff-like (a real, decaying mode) rather
     than an oscillation.  (0, False) if it cannot be computed."""
     try:
-        f0 = rhs(t, y)
+        f0 = np.asarray(rhs(t, y))
         J = np.empty((7, 7))
         for j in range(7):
             d = 1e-7 * max(abs(y[j]), 1e-3)
             yj = y.copy()
             yj[j] += d
-            J[:, j] = (rhs(t, yj) - f0) / d
+            J[:, j] = (np.asarray(rhs(t, yj)) - f0) / d
         if not np.all(np.isfinite(J)):
             return 0.0, False
         lam = np.linalg.eigvals(J)
@@ -296,7 +292,7 @@ class _Run:
             raise NumericalError(f"the integrator ({method}) failed near t = {self.t:g}: {exc}") from None
         self.nfev += solver.nfev
         Y = np.array(ys).T
-        if not np.all(np.isfinite(Y)):
+        if not np.isfinite(Y).all():
             bad = int(np.argmax(~np.all(np.isfinite(Y), axis=0)))
             raise NumericalError(f"the motion is not finite near t = {ts[max(bad - 1, 0)]:g} "
                                  "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
@@ -316,46 +312,59 @@ class _Run:
         the requested times recorded from the step's dense output, and the friction stop: the
         terminal event v·d = 0 crossed downwards, located by brentq on the dense output as
         ``solve_ivp`` does.  Returns (stopped, step times, states, interpolants if dense)."""
-        from scipy.optimize import brentq
-
-        t, y = solver.t, solver.y.copy()
+        t, y = float(solver.t), solver.y.copy()
         ts, ys, sols = [t], [y], []
         want, k, rec, n_ph = self.want, self.k, self.recorded, len(self.phases)
-        while k < len(want) and want[k] <= t:       # a time at the phase's start
+        n_want = len(want)
+        while k < n_want and want[k] <= t:          # a time at the phase's start
             rec[want[k]] = (n_ph, y)
             k += 1
-        muN, budget, dense = self.F.muN, self.budget, self.dense
-        g = float(y[3:6] @ d)
+        muN, tick, dense, step = self.F.muN, self.budget.tick, self.dense, solver.step
+        copy = self.method == "LSODA"               # the others make a new state array every step
+        g = float(y[3:6] @ d) if muN else 0.0
         stop = False
         while solver.status == "running":
-            msg = solver.step()
+            msg = step()
             if solver.status == "failed":
                 raise NumericalError(f"the integrator ({self.method}) failed near t = {solver.t:g}: {msg}"
                                      + _singularity_hint(self.F, solver.y[0:3]))
-            t_old, t, y = solver.t_old, solver.t, solver.y.copy()
-            budget.tick(t, t_old, y)
+            t_old, t, y = float(solver.t_old), float(solver.t), solver.y
+            if copy:
+                y = y.copy()
+            tick(t, t_old, y)
             sol = solver.dense_output() if dense else None
             if muN:
                 g_new = float(y[3:6] @ d)
                 if g >= 0 and g_new <= 0:           # solve_ivp's event of direction −1
-                    sol = sol or solver.dense_output()
-                    t = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
-                    y, stop = sol(t), True
+                    t, y, sol = self._stop(solver, sol, d, t_old, t)
+                    stop = True
                 g = g_new
-            while k < len(want) and want[k] <= t:
+            while k < n_want and want[k] <= t:
                 tk = want[k]
-                if tk != t:
-                    sol = sol or solver.dense_output()
+                if tk != t and sol is None:
+                    sol = solver.dense_output()
                 rec[tk] = (n_ph, y if tk == t else sol(tk))
                 k += 1
             ts.append(t)
             ys.append(y)
-            if sol is not None and dense:
+            if dense:
                 sols.append(sol)
             if stop:
                 break
         self.k = k
         return stop, ts, ys, sols
+
+    @staticmethod
+    def _stop(solver, sol, d, t_old, t):
+        """(time, state, interpolant) of the friction stop v·d = 0 inside the last step: brentq on
+        the step's dense output, as ``solve_ivp`` locates a terminal event."""
+        from scipy.optimize import brentq
+
+        sol = sol or solver.dense_output()
+        te = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
+        return te, sol(te), sol
+
+
 def _singularity_hint(F: Forces, x) -> str:
     for c, _, R0 in F.inv:
         R = float(np.linalg.norm(x - c))

@@ -202,7 +202,7 @@ def add(res, p, F, traj, S) -> None:
     P = (Fi * V).sum(axis=1)
     with np.errstate(all="ignore"):
         U = _works(p, traj, terms, F, times, X, Y[6])
-    T1 = 0.5 * F.m * float(np.dot(p.v0, p.v0))
+    T1 = 0.5 * F.m * sum(float(c) * float(c) for c in p.v0)
     resid = float(abs(U.sum(axis=0) - (S["T"] - T1)).max()) if t.size else 0.0
     Fl, Pl, Ul = (Fi.transpose(2, 0, 1) + 0.0).tolist(), (P.T + 0.0).tolist(), (U.T + 0.0).tolist()
     res.results["force_terms"] = [dict(zip(labs, row)) for row in Fl]
