@@ -63,7 +63,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if not p.t_end > 0:
         res.error_estimate = 0.0            # nothing integrated: the initial state is exact
     elif p.accuracy.estimate:
-        _check_estimate(res, p, F, S, times, rtol, atol, method)
+        _check_estimate(res, p, F, traj, S, rtol, atol, method)
     else:                                   # the relative drift of the energy equation (20.4)
         ode.nominal_estimate(res, rtol, resid / scale if scale > 0 else 0.0)
     return res
@@ -118,12 +118,17 @@ def _integrate_route(p, F, rtol, atol, times, dense):
         return traj, "LSODA", str(exc)
 
 
-def _check_estimate(res, p, F, S, times, rtol, atol, method) -> None:
+def _check_estimate(res, p, F, traj, S, rtol, atol, method) -> None:
     """The runner's check solve (ode.check_solve: rtol/100, its one looser fallback over the step
     budget); error_estimate: the largest difference of every reported quantity at the requested
-    times, each relative to its own scale over the run (ode.relative_difference)."""
+    times, each relative to its own scale over the run (ode.relative_difference).  The check run's
+    steps are at most half the longest step of the reported run: steps limited by their growth
+    from a small first step, not by the tolerance, would otherwise be the very same steps (and
+    the difference zero) at any tolerance."""
+    hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
+    times = S["t"]
     check = ode.check_solve(res, lambda r2, a2: integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps,
-                                                          times=times), rtol, atol)
+                                                          times=times, dense=False, max_step=hmax), rtol, atol)
     if check is None:
         return
     S2 = _at_times(check[0], F, times)

@@ -173,7 +173,7 @@ def _budget_message(over: ode.OverBudget, method: str, rhs=None) -> tuple[str, b
 
 
 def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
-              times=(), dense: bool = True) -> Trajectory:
+              times=(), dense: bool = True, max_step: float = math.inf) -> Trajectory:
     """Integrate the motion from t = 0 to t_end (phases for friction), recording the state at
     ``times``; ``dense``: keep every step's dense output (for plots and for the work of several
     non-conservative terms), else a step's interpolant is built only where a requested time or a
@@ -181,12 +181,13 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps:
 
     The run is refused with a NumericalError as soon as it is clear that it
     needs more than ``max_steps`` accepted steps (default MAX_STEPS); a
-    non-finite force is a NumericalError at once."""
+    non-finite force is a NumericalError at once.  ``max_step``: the longest step allowed."""
     with np.errstate(all="ignore"):     # overflow is detected and reported, not warned about
-        return _integrate(p, F, rtol, atol, method, max_steps, times, dense)
+        return _integrate(p, F, (rtol, atol, max_step), method, max_steps, times, dense)
 
 
-def _integrate(p, F, rtol, atol, method, max_steps, times, dense) -> Trajectory:
+def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
+    rtol, atol, max_step = tol
     rtol = max(rtol, 100 * EPS * 1.0001)
     t_end = float(p.t_end)
     y = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
@@ -196,7 +197,7 @@ def _integrate(p, F, rtol, atol, method, max_steps, times, dense) -> Trajectory:
                           recorded={float(t): (0, y.copy()) for t in times})
     budget = ode.Budget(max_steps, default=MAX_STEPS, probe=PROBE_STEPS)
     budget.leg(0.0, t_end)
-    run = _Run(F, rtol, atol, method, budget, t_end, y, times, dense)
+    run = _Run(F, (rtol, atol, max_step), method, budget, t_end, y, times, dense)
     try:
         run.phases_to_end()
     except _NonFinite as exc:
@@ -217,10 +218,11 @@ class _Run:
     """The phases of one integration from t = 0 to t_end: each starts with the friction
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
 
-    def __init__(self, F, rtol, atol, method, budget, t_end, y, times, dense):
+    def __init__(self, F, tol, method, budget, t_end, y, times, dense):
         from scipy import integrate as si
 
-        self.F, self.rtol, self.atol, self.method, self.budget = F, rtol, atol, method, budget
+        self.F, self.method, self.budget = F, method, budget
+        self.rtol, self.atol, self.max_step = tol
         self.solver_cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
         self.t_end, self.dense = t_end, dense
         self.t, self.y = 0.0, y
@@ -286,7 +288,7 @@ class _Run:
         t0, y0, method = self.t, self.y, self.method
         self.rhs = rhs = self.F.make_rhs(d)
         try:
-            solver = self.solver_cls(rhs, t0, y0, self.t_end, rtol=self.rtol, atol=self.atol)
+            solver = self.solver_cls(rhs, t0, y0, self.t_end, rtol=self.rtol, atol=self.atol, max_step=self.max_step)
             stop, ts, ys, sols = self._steps(solver, d)
         except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
             raise NumericalError(f"the integrator ({method}) failed near t = {self.t:g}: {exc}") from None
