@@ -121,14 +121,19 @@ def _integrate_route(p, F, rtol, atol, times, dense):
 def _check_estimate(res, p, F, traj, S, rtol, atol, method) -> None:
     """The runner's check solve (ode.check_solve: rtol/100, its one looser fallback over the step
     budget); error_estimate: the largest difference of every reported quantity at the requested
-    times, each relative to its own scale over the run (ode.relative_difference).  The check run's
-    steps are at most half the longest step of the reported run: steps limited by their growth
-    from a small first step, not by the tolerance, would otherwise be the very same steps (and
-    the difference zero) at any tolerance."""
+    times, each relative to its own scale over the run (ode.relative_difference).  The tighter
+    check run's steps are at most half the longest step of the reported run: steps limited by
+    their growth from a small first step, not by the tolerance, would otherwise be the very same
+    steps (and the difference zero) at any tolerance.  (The looser fallback runs only for a long
+    run, whose steps the tolerance limits.)"""
     hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
     times = S["t"]
-    check = ode.check_solve(res, lambda r2, a2: integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps,
-                                                          times=times, dense=False, max_step=hmax), rtol, atol)
+
+    def run(r2, a2):
+        return integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps, times=times, dense=False,
+                         max_step=hmax if r2 < rtol else math.inf)
+
+    check = ode.check_solve(res, run, rtol, atol)
     if check is None:
         return
     S2 = _at_times(check[0], F, times)
