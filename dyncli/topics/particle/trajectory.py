@@ -219,11 +219,11 @@ class _Run:
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
 
     def __init__(self, F, tol, method, budget, t_end, y, times, dense):
-        from scipy import integrate as si
+        import scipy.integrate
 
         self.F, self.method, self.budget = F, method, budget
         self.rtol, self.atol, self.max_step = tol
-        self.solver_cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
+        self.solver_cls = getattr(scipy.integrate, method)      # DOP853, RK45, Radau or LSODA
         self.t_end, self.dense = t_end, dense
         self.t, self.y = 0.0, y
         self.phases: list = []
