@@ -4,9 +4,13 @@ integration (:mod:`~dyncli.topics.particle.trajectory`, forces in
 from the trajectory to a :class:`~dyncli.result.Result`.
 
 The equation of motion m a = F(t, x, v) (16.7) is built from the listed force terms and
-integrated with scipy's ``solve_ivp`` (DOP853 by default).  The state is augmented with the work
+integrated by stepping scipy's solvers (DOP853 by default).  The state is augmented with the work
 of the non-conservative forces, y = [x, v, W_nc] with dW_nc/dt = F_nc·v (20.3), so that the
 energy equation (20.4) E − E1 = W_nc becomes a built-in accuracy check (``energy_residual``).
+
+``error_estimate`` (the runner's policy, dyncli/ode.py): relative to each reported quantity's
+scale.  With ``accuracy.estimate`` a check solve (:func:`_check_estimate`); else nominal: rtol,
+or the relative energy residual when larger (:func:`dyncli.ode.nominal_estimate`).
 """
 
 from __future__ import annotations
@@ -20,17 +24,14 @@ from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
 from dyncli.topics.particle.forces import Forces, _NonFinite
-from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401
+from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
 ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
-
-
 
 
 def _ode_method(p) -> str:
     m = p.accuracy.method
     return "DOP853" if m in ("auto", "ode") else m
-
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:

@@ -10,6 +10,12 @@ terminal event at v·d = 0 ends the phase.  There, if the speed is (numerically)
 condition |F_other| <= mu N decides between sticking (the particle stays at rest, as long as
 the condition holds) and slipping on in the direction of F_other; otherwise the velocity merely
 turned through 90° and a new phase starts with the new direction.
+
+Each phase steps scipy's solver directly (the loop of ``solve_ivp``): every accepted step is
+counted by the runner's budget (:class:`dyncli.ode.Budget`) and stored (time and state); a step's
+dense output (``OdeSolver.dense_output()``) is built only where a requested time or a friction
+stop falls in it, or for every step when the trajectory must be evaluated anywhere
+(``dense=True``: plots, the work of several non-conservative terms).
 """
 
 from __future__ import annotations
@@ -21,6 +27,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import NumericalError
 from dyncli.topics.particle.forces import Forces, _NonFinite
+from dyncli.topics.particle.hints import budget_message, singularity_hint
 
 EPS = np.finfo(float).eps
 MAX_PHASES = 20000
@@ -131,47 +138,6 @@ MAX_STEPS = 5_000      # default accuracy.max_steps for particle (~1 s of solve_
 PROBE_STEPS = 500      # every this many steps, project the run's total and refuse early (dyncli.ode.Budget)
 
 
-def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
-    """The largest |eigenvalue| of the Jacobian of rhs at (t, y) (finite
-    differences) and whether it is stiff-like (a real, decaying mode) rather
-    than an oscillation.  (0, False) if it cannot be computed."""
-    try:
-        f0 = np.asarray(rhs(t, y))
-        J = np.empty((7, 7))
-        for j in range(7):
-            d = 1e-7 * max(abs(y[j]), 1e-3)
-            yj = y.copy()
-            yj[j] += d
-            J[:, j] = (np.asarray(rhs(t, yj)) - f0) / d
-        if not np.all(np.isfinite(J)):
-            return 0.0, False
-        lam = np.linalg.eigvals(J)
-    except (_NonFinite, ArithmeticError, ValueError, np.linalg.LinAlgError):
-        return 0.0, False
-    k = int(np.argmax(np.abs(lam)))
-    big = lam[k]
-    return float(abs(big)), bool(big.real < 0 and abs(big.imag) <= abs(big.real))
-
-
-def _budget_message(over: ode.OverBudget, method: str, rhs=None) -> tuple[str, bool]:
-    """The budget's refusal message with a hint on what limits the steps; and
-    whether the run is stiff for an explicit method (an implicit one would
-    take long steps)."""
-    msg = str(over)
-    stiff = False
-    if rhs is not None and over.y is not None and method in ("DOP853", "RK45"):
-        rho, decaying = _stiffness(rhs, over.t, over.y)
-        if decaying and over.h * rho > 1.0:
-            stiff = True
-            msg += (f" (the problem is stiff near t = {over.t:.3g} s: a decaying mode with rate {rho:.3g} 1/s "
-                    f"limits the {method} steps to about {over.h:.3g} s; accuracy.method: LSODA or Radau "
-                    "takes long steps there)")
-        elif rho > 0 and over.h * rho > 0.05:
-            msg += (f" (the motion has a time scale of about {1 / rho:.3g} s near t = {over.t:.3g} s, "
-                    "which the steps must resolve)")
-    return msg, stiff
-
-
 def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
               times=(), dense: bool = True, max_step: float = math.inf) -> Trajectory:
     """Integrate the motion from t = 0 to t_end (phases for friction), recording the state at
@@ -202,9 +168,9 @@ def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
         run.phases_to_end()
     except _NonFinite as exc:
         raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
-                             f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
+                             f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + singularity_hint(F, exc.x)) from None
     except ode.OverBudget as exc:
-        msg, stiff = _budget_message(exc, method, run.rhs)
+        msg, stiff = budget_message(exc, method, run.rhs)
         exc.args = (msg,)               # the runner's refusal with a hint on what limits the steps
         exc.stiff = stiff               # method auto switches to LSODA
         raise exc from None
@@ -329,7 +295,7 @@ class _Run:
             msg = step()
             if solver.status == "failed":
                 raise NumericalError(f"the integrator ({self.method}) failed near t = {solver.t:g}: {msg}"
-                                     + _singularity_hint(self.F, solver.y[0:3]))
+                                     + singularity_hint(self.F, solver.y[0:3]))
             t_old, t, y = float(solver.t_old), float(solver.t), solver.y
             if copy:
                 y = y.copy()
@@ -367,18 +333,6 @@ class _Run:
         return te, sol(te), sol
 
 
-def _singularity_hint(F: Forces, x) -> str:
-    for c, _, R0 in F.inv:
-        R = float(np.linalg.norm(x - c))
-        if R < 1e-3 * R0:
-            return f" (the particle falls into the centre of the inverse-square field: R = {R:.3g} m)"
-    for a, _, L in F.springs:
-        R = float(np.linalg.norm(x - a))
-        if L > 0 and R < 1e-3 * L:
-            return f" (the particle reaches the anchor of a spring with free length L > 0: R = {R:.3g} m)"
-    return ""
-
-
 def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
     """First time after t0 at which |F_other(t, x)| exceeds mu N (the particle
     breaks free); None if it stays stuck until t_end.  Samples the interval
@@ -397,7 +351,3 @@ def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
             return float(brentq(h, prev, tt, xtol=1e-14 * max(1.0, abs(tt)), rtol=4 * EPS))
         prev = tt
     return None
-
-
-# ---------------------------------------------------------------------------
-
