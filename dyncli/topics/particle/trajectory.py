@@ -156,7 +156,7 @@ def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
     rtol, atol, max_step = tol
     rtol = max(rtol, 100 * EPS * 1.0001)
     t_end = float(p.t_end)
-    y = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
+    y = np.array([*p.x0, *p.v0, 0.0], dtype=float)
     if t_end == 0.0:
         rhs = F.make_rhs(np.zeros(3))
         return Trajectory([OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy())], [], 0,
@@ -197,7 +197,7 @@ class _Run:
         self.nfev = 0
         self.vscale = float(np.linalg.norm(y[3:6])) if F.muN else 0.0     # friction decides stops on it
         self.rhs = None             # the right-hand side of the current phase
-        self.want = sorted(set(float(t) for t in times))     # the requested times, in order
+        self.want = sorted(set(map(float, times)))      # the requested times, in order
         self.k = 0                                              # the next one to record
         self.recorded: dict = {}
 
