@@ -171,14 +171,15 @@ class Forces:
 
     def potential(self, x):
         """V of the conservative terms (19.23, 19.20b, 19.26b)."""
-        V = np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
-        if self.weight:
-            V = V + eq.gravity_potential(self.weight, x[2])
-        for c, mu, _ in self.inv:
-            V = V + eq.inverse_square_potential(mu, x - _col(c, x))
-        for a, k, L in self.springs:
-            V = V + eq.spring_potential(k, L, x - _col(a, x))
-        return V
+        V = [eq.gravity_potential(self.weight, x[2])] if self.weight else []
+        V += [eq.inverse_square_potential(mu, x - _col(c, x)) for c, mu, _ in self.inv]
+        V += [eq.spring_potential(k, L, x - _col(a, x)) for a, k, L in self.springs]
+        if not V:
+            return np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
+        total = V[0]
+        for term in V[1:]:
+            total = total + term
+        return total
 
 
 def _col(c, x):
