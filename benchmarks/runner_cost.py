@@ -142,8 +142,10 @@ def references() -> dict:
                                                             * (C.TA - C.TC) * C.mp.cos(C.TTH)))
     om = float(om)
     s_thd = math.sqrt(2 * 0.004 / 0.006 + 2 * 2 * 0.01 * 100 / 0.006)
+    # particle: x and v each relative to its scale over the run, as the case's error
+    px, pv = (max(abs(float(c)) for t in C.PT for c in C._part_exact(t)[k]) for k in (0, 1))
     return {
-        "particle": ([float(v) for t in C.PT for xv in C._part_exact(t) for v in xv], 1.0),
+        "particle": ([float(v) for t in C.PT for xv in C._part_exact(t) for v in xv], (px,) * 3 + (pv,) * 3),
         "rectilinear": ([float(f(t)) for t in (1, 3, 10) for f in (C._osc_s, C._osc_v)]
                         + [float(C._T_V0), float(C._osc_s(C._T_V0)), float(C._T_SM), float(C._osc_v(C._T_SM))],
                         (sc_s, sc_v) * 3 + (sc_t, sc_s, sc_t, sc_v)),
@@ -156,7 +158,8 @@ def references() -> dict:
 
 
 def script_error(values, ref) -> float:
-    """Largest error, each relative to its scale as the case measures it (1: absolute)."""
+    """Largest error, each relative to its scale as the case measures it (1: absolute; particle,
+    rectilinear, the nutating top, the gyroscope: relative to each quantity's scale)."""
     if values is None:
         return math.inf
     ref, scale = ref

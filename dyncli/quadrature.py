@@ -71,20 +71,8 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
         panels += len(c)
         if panels > limit:
             raise OverBudget(b, panels + len(c), limit, float(c[0]))
-        x = c[:, None] + h[:, None] * NODES[None, :]
-        y = f(x.ravel()).reshape(x.shape)
-        if not np.all(np.isfinite(y)):
-            bad = x[~np.isfinite(y)][0]
-            raise InputError(f"{what} is not finite at t = {bad:.6g} inside the interval "
-                             "(the position or its derivative is undefined there)", path)
-        with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
-            K = (y @ _WK) * h
-            diff = np.abs(K - (y @ _WG15) * h)
-            # the rounding of a panel's sum (QUADPACK's rule): its error is never below 50 ε ∫|f|
-            floor = 50 * _EPS * (np.abs(y) @ _WK) * np.abs(h)
-            err = np.maximum(diff, floor)
-        if not (np.all(np.isfinite(K)) and np.all(np.isfinite(err))):
-            raise NumericalError(f"the integral of {what} is not finite: it overflows a double (beyond ~1.8e308)")
+        K, diff, floor = _panels(f, c, h, what, path)
+        err = np.maximum(diff, floor)
         total = done_val + float(K.sum())
         total_err = done_err + float(err.sum())
         tol = max(atol, rtol * abs(total))
@@ -104,3 +92,21 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
             return done_val + float(K[split].sum()), done_err + float(err[split].sum()), False
         lo, hi, c = lo[split], hi[split], c[split]
         lo, hi = np.concatenate([lo, c]), np.concatenate([c, hi])
+
+
+def _panels(f, c, h, what: str, path: str | None):
+    """One pass over the panels of centres ``c`` and half-widths ``h``: (K15 sums, |K15 − G7|,
+    the rounding of each sum, 50 ε ∫|f|: QUADPACK's rule, no error is below it)."""
+    x = c[:, None] + h[:, None] * NODES[None, :]
+    y = f(x.ravel()).reshape(x.shape)
+    if not np.all(np.isfinite(y)):
+        bad = x[~np.isfinite(y)][0]
+        raise InputError(f"{what} is not finite at t = {bad:.6g} inside the interval "
+                         "(the position or its derivative is undefined there)", path)
+    with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
+        K = (y @ _WK) * h
+        diff = np.abs(K - (y @ _WG15) * h)
+        floor = 50 * _EPS * (np.abs(y) @ _WK) * np.abs(h)
+    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(diff)) and np.all(np.isfinite(floor))):
+        raise NumericalError(f"the integral of {what} is not finite: it overflows a double (beyond ~1.8e308)")
+    return K, diff, floor

@@ -161,8 +161,10 @@ def _rectg_scipy(rtol, atol):
     return _rectg_error({"results": {"find": find}}), int(sol.nfev)
 
 
-# --- particle: gravity + linear drag (exact exponential solution) -------------------
+# --- particle: gravity + linear drag (exact exponential solution); the error of every reported
+# quantity relative to its scale over the run, as the type's error_estimate ------------------
 PK = mp.mpf("0.2")      # c/m
+PM = mp.mpf("0.5")
 G = mp.mpf("9.81")
 PV0 = [mp.mpf(20), mp.mpf(0), mp.mpf(20)]
 PT = [1, 2, 3]
@@ -176,6 +178,18 @@ def _part_exact(t):
     return x, v
 
 
+def _part_all(t):
+    """Every reported quantity of the exact motion: x, v, a = g − (c/m) v, T, V = m g x3, E,
+    W_nc = E − E1 (the drag is the only non-conservative force), H_O = m x × v."""
+    x, v = _part_exact(t)
+    T = PM * sum(c * c for c in v) / 2
+    V = PM * G * x[2]
+    E1 = PM * sum(c * c for c in PV0) / 2
+    H = [PM * (x[1] * v[2] - x[2] * v[1]), PM * (x[2] * v[0] - x[0] * v[2]), PM * (x[0] * v[1] - x[1] * v[0])]
+    return {"x": x, "v": v, "a": [-PK * v[0], -PK * v[1], -G - PK * v[2]], "T": [T], "V": [V], "E": [T + V],
+            "W_nc": [T + V - E1], "H_O": H}
+
+
 def _part_yaml(rtol, atol, est):
     return ("type: particle\nm: 0.5\nx0: [0, 0, 0]\nv0: [20, 0, 20]\n"
             "forces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\nt_end: 3\nat: [1, 2, 3]\n"
@@ -184,11 +198,13 @@ def _part_yaml(rtol, atol, est):
 
 def _part_error(rec):
     r = rec["results"]
-    pairs = []
-    for i, t in enumerate(PT):
-        x, v = _part_exact(t)
-        pairs += list(zip(r["x"][i], x)) + list(zip(r["v"][i], v))
-    return _maxerr(pairs)
+    ref = [_part_all(t) for t in PT]
+    errs = []
+    for q in ref[0]:
+        scale = max(abs(c) for row in ref for c in row[q])
+        got = [r[q][i] if isinstance(r[q][i], list) else [r[q][i]] for i in range(len(PT))]
+        errs.append(max(abs(mp.mpf(g) - c) for gi, row in zip(got, ref) for g, c in zip(gi, row[q])) / scale)
+    return float(max(errs))
 
 
 def _part_scipy(rtol, atol):

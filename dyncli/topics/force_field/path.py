@@ -21,14 +21,34 @@ class _NotFinite(Exception):
 
 
 def _scalar(exprs):
-    """Each expression as its compiled closure of an environment dict (float
-    in, float out; the caller holds one np.errstate)."""
-    out = []
-    for e in exprs:
-        e(t=0.0, x1=0.0, x2=0.0, x3=0.0)          # compiles
-        fn = e._fn
-        out.append((lambda env, fn=fn: float(fn(env))) if fn is not None else (lambda env, e=e: float(e(**env))))
-    return out
+    """Each expression as its compiled closure of an environment dict (float in, float out; the
+    caller holds one np.errstate): :meth:`dyncli.expr.Expr.scalar_fn`."""
+    return [(lambda env, fn=e.scalar_fn(): float(fn(env))) for e in exprs]
+
+
+def _integrand(fld, xs, dxs):
+    """F(x(t))·x'(t) as a function of one float t; raises :class:`_NotFinite` at a non-finite value."""
+    import numpy as np
+
+    X, DX = _scalar(xs), _scalar(dxs)
+    exprs = getattr(fld, "exprs", None)      # Cartesian F(x1, x2, x3); else the field's own F_at(x)
+    F = _scalar(exprs) if exprs is not None else None
+
+    def f(t):
+        # scalar closures (no per-call array set-up): called once per quadrature node
+        env = {"t": t}
+        x = [g(env) for g in X]
+        if F is not None:
+            envx = {"x1": x[0], "x2": x[1], "x3": x[2]}
+            Fx = [Fi(envx) for Fi in F]
+        else:
+            Fx = fld.F_at(np.array(x))
+        out = float(sum(Fi * dxi(env) for Fi, dxi in zip(Fx, DX)))
+        if not math.isfinite(out):
+            raise _NotFinite(t)
+        return out
+
+    return f
 
 
 def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int | None = None):
@@ -50,24 +70,7 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
     def pos(t):
         return np.array([float(e.evaluate(t=t)) for e in xs])
 
-    X, DX = _scalar(xs), _scalar(dxs)
-    exprs = getattr(fld, "exprs", None)      # Cartesian F(x1, x2, x3); else the field's own F_at(x)
-    F = _scalar(exprs) if exprs is not None else None
-
-    def f(t):
-        # scalar closures (no per-call array set-up): called once per quadrature node
-        env = {"t": t}
-        x = [g(env) for g in X]
-        if F is not None:
-            envx = {"x1": x[0], "x2": x[1], "x3": x[2]}
-            Fx = [Fi(envx) for Fi in F]
-        else:
-            Fx = fld.F_at(np.array(x))
-        out = float(sum(Fi * dxi(env) for Fi, dxi in zip(Fx, DX)))
-        if not math.isfinite(out):
-            raise _NotFinite(t)
-        return out
-
+    f = _integrand(fld, xs, dxs)
     x_start, x_end = pos(t1), pos(t2)
     if not (np.all(np.isfinite(x_start)) and np.all(np.isfinite(x_end))):
         raise InputError("the path is not defined at the ends of t_span", "path.t_span")

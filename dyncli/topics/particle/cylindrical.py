@@ -55,25 +55,20 @@ def components(th, vecs):
 
 def _drifts(m, Xs, Vs):
     """max |Δ(r²θ̇)|, max |Δẋ3|, max |ΔH_O| from the first state."""
+    from .equations import angular_momentum, distance
+
     h = Xs[0] * Vs[1] - Xs[1] * Vs[0]
-    H = m * np.cross(Xs.T, Vs.T).T
+    H = angular_momentum(m, Xs, Vs)
     return (float(np.max(np.abs(h - h[0]))), float(np.max(np.abs(Vs[2] - Vs[2, 0]))),
-            float(np.max(np.linalg.norm(H - H[:, :1], axis=0))))
+            float(np.max(distance(H - H[:, :1]))))
 
 
-def add(res, p, traj, times, states, m) -> None:
-    from .solver import _vec
-    from .trajectory import OdePhase
-
-    Y = np.stack([y for _, y in states], axis=1)
-    X, V = Y[0:3], Y[3:6]
-    A = np.array(res.results["a"], float).T if res.results["a"] else np.zeros((3, 0))
-    st = [ph.steps_t for ph in traj.phases if isinstance(ph, OdePhase)]
-    sy = [ph.steps_y for ph in traj.phases if isinstance(ph, OdePhase)]
-    step_t = np.concatenate(st) if st else np.zeros(0)
-    step_Y = np.concatenate(sy, axis=1) if sy else np.zeros((7, 0))
+def add(res, p, traj, S, m) -> None:
+    """Add the results on {e_r, e_θ, e3} at the requested times (``S``: the motion there)."""
+    times = S["t"]
+    X, V, A, H = S["x"], S["v"], S["a"], S["H_O"]
+    step_t, step_Y = traj.steps()
     th, on_axis = angles(times, X, step_t, step_Y[0:3])
-    H = m * np.cross(X.T, V.T).T
     cyl = {name: components(th, vec) for name, vec in
            (("x_cyl", X), ("v_cyl", V), ("a_cyl", A), ("F_cyl", m * A), ("H_O_cyl", H))}
     r = np.hypot(X[0], X[1])
@@ -84,7 +79,7 @@ def add(res, p, traj, times, states, m) -> None:
     out["r"] = [float(v) for v in r]
     out["theta"] = [float(v) + 0.0 for v in th]
     for name, comps in cyl.items():
-        out[name] = [_vec(comps[:, j]) for j in range(comps.shape[1])]
+        out[name] = (comps.T + 0.0).tolist()
     out["r2_theta_dot"] = [float(v) + 0.0 for v in X[0] * V[1] - X[1] * V[0]]
     out["x3_dot"] = [float(v) + 0.0 for v in V[2]]
     out["drift_r2_theta_dot"], out["drift_x3_dot"], out["drift_H_O"] = d_h, d_x3, d_H

@@ -16,7 +16,7 @@ def distance(r):
     >>> float(distance(np.array([3.0, 4.0, 0.0])))
     5.0
     """
-    return np.sqrt(np.sum(r * r, axis=0))
+    return np.sqrt((r * r).sum(axis=0))
 
 
 def gravity_potential(weight: float, x3):
@@ -77,7 +77,7 @@ def kinetic_energy(m: float, v):
     >>> kinetic_energy(2.0, np.array([[3.0, 0.0], [4.0, 1.0], [0.0, 0.0]])).tolist()
     [25.0, 1.0]
     """
-    return 0.5 * m * np.sum(v * v, axis=0)
+    return 0.5 * m * (v * v).sum(axis=0)
 
 
 def angular_momentum(m: float, x, v):
@@ -86,7 +86,9 @@ def angular_momentum(m: float, x, v):
     >>> angular_momentum(2.0, np.array([[1.0], [0.0], [0.0]]), np.array([[0.0], [3.0], [0.0]])).ravel().tolist()
     [0.0, 0.0, 6.0]
     """
-    return m * np.cross(x.T, v.T).T
+    x1, x2, x3 = x
+    v1, v2, v3 = v
+    return m * np.array([x2 * v3 - x3 * v2, x3 * v1 - x1 * v3, x1 * v2 - x2 * v1])
 
 
 def energy_residual(E, E1: float, W_nc):
@@ -96,4 +98,4 @@ def energy_residual(E, E1: float, W_nc):
     >>> energy_residual(np.array([1.0, 0.5]), 1.0, np.array([0.0, -0.25]))
     0.25
     """
-    return float(np.max(np.abs(E - E1 - W_nc)))
+    return float(abs(E - E1 - W_nc).max())

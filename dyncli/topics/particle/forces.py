@@ -103,21 +103,21 @@ class Forces:
 
     def make_rhs(self, d):  # over 60 lines: the integrator's hot loop, inlined in plain floats on purpose
         """The right-hand side y' = f(t, y) of one phase, y = [x, v, W_nc],
-        in plain float arithmetic (the integrator calls it for one state at a
+        as a tuple of 7 floats, in plain float arithmetic (the integrator calls it for one state at a
         time; the same forces as conservative() + nonconservative(), with
         the friction continuation -mu N sign(v.d) v/|v| of the phase).
         A non-finite force raises _NonFinite at once."""
         m, muN, weight = self.m, self.muN, self.weight
-        u1, u2, u3 = (float(c) for c in self.uniform)
+        u1, u2, u3 = self.uniform.tolist()
         c_lin, c_quad = self.c_lin, self.c_quad
-        d1, d2, d3 = (float(c) for c in d)
+        d1, d2, d3 = np.asarray(d, float).tolist()
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
         springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
         custom = [tuple(e.scalar_fn() for e in comps) for comps in self.custom]
         sqrt, isfinite = math.sqrt, math.isfinite
 
         def rhs(t, y):
-            x1, x2, x3, v1, v2, v3 = y[:6].tolist()
+            x1, x2, x3, v1, v2, v3, _ = y.tolist()
             f1, f2, f3 = u1, u2, u3              # the non-conservative force
             if c_lin:
                 f1, f2, f3 = f1 - c_lin * v1, f2 - c_lin * v2, f3 - c_lin * v3
@@ -157,9 +157,10 @@ class Forces:
                     g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
             a1, a2, a3 = (f1 + g1) / m, (f2 + g2) / m, (f3 + g3) / m
             w = f1 * v1 + f2 * v2 + f3 * v3
-            if not (isfinite(a1) and isfinite(a2) and isfinite(a3) and isfinite(w)):
+            if not isfinite(a1 + a2 + a3 + w) and not (isfinite(a1) and isfinite(a2) and isfinite(a3)
+                                                     and isfinite(w)):
                 raise _NonFinite(t, (x1, x2, x3))
-            return np.array([v1, v2, v3, a1, a2, a3, w])
+            return v1, v2, v3, a1, a2, a3, w         # a tuple: scipy makes it an array once
 
         return rhs
 
@@ -170,14 +171,15 @@ class Forces:
 
     def potential(self, x):
         """V of the conservative terms (19.23, 19.20b, 19.26b)."""
-        V = np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
-        if self.weight:
-            V = V + eq.gravity_potential(self.weight, x[2])
-        for c, mu, _ in self.inv:
-            V = V + eq.inverse_square_potential(mu, x - _col(c, x))
-        for a, k, L in self.springs:
-            V = V + eq.spring_potential(k, L, x - _col(a, x))
-        return V
+        V = [eq.gravity_potential(self.weight, x[2])] if self.weight else []
+        V += [eq.inverse_square_potential(mu, x - _col(c, x)) for c, mu, _ in self.inv]
+        V += [eq.spring_potential(k, L, x - _col(a, x)) for a, k, L in self.springs]
+        if not V:
+            return np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
+        total = V[0]
+        for term in V[1:]:
+            total = total + term
+        return total
 
 
 def _col(c, x):

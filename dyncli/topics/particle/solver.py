@@ -4,9 +4,13 @@ integration (:mod:`~dyncli.topics.particle.trajectory`, forces in
 from the trajectory to a :class:`~dyncli.result.Result`.
 
 The equation of motion m a = F(t, x, v) (16.7) is built from the listed force terms and
-integrated with scipy's ``solve_ivp`` (DOP853 by default).  The state is augmented with the work
+integrated by stepping scipy's solvers (DOP853 by default).  The state is augmented with the work
 of the non-conservative forces, y = [x, v, W_nc] with dW_nc/dt = F_nc·v (20.3), so that the
 energy equation (20.4) E − E1 = W_nc becomes a built-in accuracy check (``energy_residual``).
+
+``error_estimate`` (the runner's policy, dyncli/ode.py): relative to each reported quantity's
+scale.  With ``accuracy.estimate`` a check solve (:func:`_check_estimate`); else nominal: rtol,
+or the relative energy residual when larger (:func:`dyncli.ode.nominal_estimate`).
 """
 
 from __future__ import annotations
@@ -20,11 +24,9 @@ from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
 from dyncli.topics.particle.forces import Forces, _NonFinite
-from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401
+from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
 ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
-
-
 
 
 def _ode_method(p) -> str:
@@ -32,27 +34,22 @@ def _ode_method(p) -> str:
     return "DOP853" if m in ("auto", "ode") else m
 
 
-
 def solve(p, options: SolveOptions | None = None) -> Result:
+    from . import work
+
     F = Forces(p)
     rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
-    traj, method, switched = _integrate_route(p, F, rtol, atol)
     times = [float(t) for t in p.at]
-    S = _at_times(traj, F, times)
-    xs, vs, accs, Hs = (_vecs(S[k]) for k in ("x", "v", "a", "H_O"))
-    Ts, Vs, Es, Ws = (arr.tolist() for arr in (S["T"], S["V"], S["E"], S["W_nc"] + 0.0))
-    resid, scale = _energy_residual(p, F, traj, S, times)
-
-    res = Result(
-        {"x": xs, "v": vs, "a": accs, "T": Ts, "V": Vs, "E": Es, "W_nc": Ws, "H_O": Hs,
-         "energy_residual": resid},
-        method=f"ode:{method}",
-        equations=_equations(F),
-        series=[Series("t", times, ["x", "v", "a", "T", "V", "E", "W_nc", "H_O"])],
-    )
-    _report_terms(res, p, F, traj, times)
+    # the work of one non-conservative term is W_nc (less the uniform terms' exact work); of
+    # several, a quadrature over every step's dense output
+    traj, method, switched = _integrate_route(p, F, rtol, atol, times, work.quadrature_terms(p) > 1)
+    S = _at_times(traj, F, times, steps=True)
+    resid, scale = _energy_residual(p, F, S)
+    res = Result(_reported(S, resid), method=f"ode:{method}", equations=_equations(F),
+                 series=[Series("t", times, list(REPORTED))])
+    _report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
-    res.extra["sample"] = lambda ts: _at_times(traj, F, ts)     # the dense output, for plots
+    res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     res.extra["nsteps"] = traj.nsteps
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
@@ -64,45 +61,95 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if resid > 1e3 * (rtol * scale + atol) and resid > 1e-9 * scale:
         res.warn(f"energy residual {resid:.3g} J is large for rtol = {rtol:g} (energy scale {scale:.3g} J): "
                  "tighten accuracy.rtol")
-    _error_estimate(res, p, F, traj, times, rtol, atol, method)
+    if not p.t_end > 0:
+        res.error_estimate = 0.0            # nothing integrated: the initial state is exact
+    elif p.accuracy.estimate:
+        _check_estimate(res, p, F, traj, S, rtol, atol, method)
+    else:                                   # the relative drift of the energy equation (20.4)
+        ode.nominal_estimate(res, rtol, resid / scale if scale > 0 else 0.0, steps=traj.nsteps)
     return res
 
 
-def _integrate_route(p, F, rtol, atol):
+#: the reported quantities at the requested times (each with its error in error_estimate)
+REPORTED = ("x", "v", "a", "T", "V", "E", "W_nc", "H_O")
+
+
+def _reported(S, resid) -> dict:
+    """The results at the requested times as lists (vectors as lists of 3, -0.0 as 0.0): one
+    array of every reported row, converted at once."""
+    rows = np.concatenate([S[k] if S[k].ndim == 2 else S[k][None] for k in REPORTED]) + 0.0
+    out, i = {}, 0
+    for k in REPORTED:
+        n = 3 if S[k].ndim == 2 else 1
+        out[k] = rows[i:i + 3].T.tolist() if n == 3 else rows[i].tolist()
+        i += n
+    out["energy_residual"] = resid
+    return out
+
+
+class _Sampler:
+    """The motion at any times (plots): the run again with every step's dense output, made on the
+    first call (the same steps, so the requested times give the results exactly)."""
+
+    def __init__(self, p, F, traj, method, times):
+        self.p, self.F, self.traj, self.method, self.times = p, F, traj, method, times
+
+    def __call__(self, ts) -> dict:
+        if not self.traj.dense:
+            p = self.p
+            self.traj = integrate(p, self.F, float(p.accuracy.rtol), float(p.accuracy.atol), self.method,
+                                  max_steps=p.accuracy.max_steps, times=self.times, dense=True)
+        return _at_times(self.traj, self.F, ts)
+
+
+def _integrate_route(p, F, rtol, atol, times, dense):
     """(trajectory, method, why it switched or None): method auto hands a run that is stiff for
     DOP853 to LSODA."""
     method = _ode_method(p)
-    max_steps = p.accuracy.max_steps
+    kw = {"max_steps": p.accuracy.max_steps, "times": times, "dense": dense}
     try:
-        return integrate(p, F, rtol, atol, method, max_steps=max_steps), method, None
+        return integrate(p, F, rtol, atol, method, **kw), method, None
     except NumericalError as exc:
         if p.accuracy.method != "auto" or not getattr(exc, "stiff", False):
             raise
         try:
-            traj = integrate(p, F, rtol, atol, "LSODA", max_steps=max_steps)
+            traj = integrate(p, F, rtol, atol, "LSODA", **kw)
         except NumericalError:
             raise exc from None
         return traj, "LSODA", str(exc)
 
 
-def _energy_residual(p, F, traj, S, times):
+def _check_estimate(res, p, F, traj, S, rtol, atol, method) -> None:
+    """The runner's check solve (ode.check_solve: rtol/100, its one looser fallback over the step
+    budget); error_estimate: the largest difference of every reported quantity at the requested
+    times, each relative to its own scale over the run (ode.relative_difference).  The tighter
+    check run's steps are at most half the longest step of the reported run: steps limited by
+    their growth from a small first step, not by the tolerance, would otherwise be the very same
+    steps (and the difference zero) at any tolerance.  (The looser fallback runs only for a long
+    run, whose steps the tolerance limits.)"""
+    hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
+    times = S["t"]
+
+    def run(r2, a2):
+        return integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps, times=times, dense=False,
+                         max_step=hmax if r2 < rtol else math.inf)
+
+    check = ode.check_solve(res, run, rtol, atol)
+    if check is None:
+        return
+    S2 = _at_times(check[0], F, times)
+    res.error_estimate = ode.relative_difference([(S[k], S2[k]) for k in REPORTED])
+
+
+def _energy_residual(p, F, S):
     """(max |E − E1 − W_nc| over every accepted step and the requested times (20.4), the energy
-    scale it is measured against)."""
-    m = F.m
-    y0 = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
-    E1 = 0.5 * m * float(y0[3:6] @ y0[3:6]) + float(F.potential(y0[0:3]))
-    resid = 0.0
-    scale = abs(E1)
-    for ph in traj.phases:
-        if isinstance(ph, OdePhase):
-            Y = ph.steps_y
-            T = eq.kinetic_energy(m, Y[3:6])
-            V = F.potential(Y[0:3])
-            resid = max(resid, eq.energy_residual(T + V, E1, Y[6]))
-            scale = max(scale, float(np.max(np.abs(T))), float(np.max(np.abs(V))), float(np.max(np.abs(Y[6]))))
-    if times:
-        resid = max(resid, eq.energy_residual(S["E"], E1, S["W_nc"]))
-    return resid, scale
+    scale it is measured against: the largest |E1|, |T|, |V|, |W_nc| over them)."""
+    x0, v0 = np.asarray(p.x0, float), np.asarray(p.v0, float)
+    E1 = 0.5 * F.m * float(v0 @ v0) + float(F.potential(x0))
+    T, V, W = S["energies"]
+    if not T.size:
+        return 0.0, abs(E1)
+    return eq.energy_residual(T + V, E1, W), max(abs(E1), float(abs(np.concatenate(S["energies"])).max()))
 
 
 def _report_friction(res, F, traj) -> None:
@@ -130,69 +177,52 @@ def _report_friction(res, F, traj) -> None:
 
 def _report_inside_R0(res, F, traj) -> None:
     """Inverse-square: a path below R0 passes inside the attracting body."""
+    if not F.inv:
+        return
+    X = np.concatenate([traj.steps()[1][0:3]] + [ph.x[:, None] for ph in traj.phases if isinstance(ph, RestPhase)],
+                       axis=1)
     for c, _, R0 in F.inv:
-        Rmin = math.inf
-        for ph in traj.phases:
-            Y = ph.steps_y if isinstance(ph, OdePhase) else ph.x[:, None]
-            Rmin = min(Rmin, float(np.min(eq.distance(Y[0:3] - c[:, None]))))
+        Rmin = float(np.min(eq.distance(X - c[:, None])))
         if Rmin < R0 * (1 - 1e-9):
             res.warn(f"the path passes inside R0 = {R0:g} m of the inverse-square centre "
                      f"(R_min = {Rmin:.6g} m): below the surface of the attracting body")
 
 
-def _error_estimate(res, p, F, traj, times, rtol, atol, method) -> None:
-    """A second solve at tolerances 100x tighter (and steps at most half the longest step of the
-    first solve, so that it cannot take the very same steps); the largest difference of the
-    positions at the requested times estimates the absolute error of x of the first solve."""
-    if not p.t_end > 0:
-        res.error_estimate = 0.0
-        return
-    hmax = traj.hmax / 2 if traj.hmax > 0 else math.inf
-    # the runner's check solve (ode.check_solve); no looser fallback here: over the budget the
-    # estimate is null (tests/particle/test_error_estimate.py keeps that behaviour)
-    check = ode.check_solve(res, lambda r2, a2: integrate(p, F, r2, a2, method, max_steps=p.accuracy.max_steps,
-                                                          max_step=hmax), rtol, atol, fallback=False)
-    if check is None:
-        return
-    traj2 = check[0]
-    err = float(np.max(np.abs(traj.state_array(times)[1][0:3] - traj2.state_array(times)[1][0:3]), initial=0.0))
-    res.error_estimate = err if math.isfinite(err) else None
-    if res.error_estimate is None:
-        res.warn("error_estimate is null: the comparison solve differs by a non-finite amount")
-
-
-def _at_times(traj: Trajectory, F: Forces, times) -> dict:
+def _at_times(traj: Trajectory, F: Forces, times, steps: bool = False) -> dict:
     """The motion at every time of ``times`` at once, as arrays: x, v, a
-    (3 x N), T, V, E, W_nc (N), H_O (3 x N).  Dense output per phase,
-    energies and angular momentum on whole arrays; only a = f(t, y) is per
-    time (the phase's own right-hand side, friction continuation included)."""
+    (3 x N), T, V, E, W_nc (N), H_O (3 x N); with ``steps``, also T, V, W_nc over every accepted
+    step and the times (``energies``, for the energy residual).  Energies and angular momentum
+    on whole arrays; only a = f(t, y) is per time (the phase's own right-hand side, friction
+    continuation included)."""
     times = [float(t) for t in times]
     m = F.m
     idx, Y = traj.state_array(times)
     X, Vel = Y[0:3], Y[3:6]
-    A = np.zeros((3, len(times)))
-    for j, (t, k) in enumerate(zip(times, idx.tolist())):
-        ph = traj.phases[k]
-        if isinstance(ph, RestPhase):
-            continue
+    rest = [isinstance(traj.phases[k], RestPhase) for k in idx.tolist()]
+    A = []
+    for t, y, k, r in zip(times, Y.T, idx.tolist(), rest):
         try:
-            A[:, j] = ph.rhs(t, Y[:, j])[3:6]
+            A.append(_ZERO3 if r else traj.phases[k].rhs(t, y)[3:6])
         except _NonFinite as exc:
             raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                                  f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m") from None
-    T = eq.kinetic_energy(m, Vel)
-    V = F.potential(X) + np.zeros(len(times))
-    return {"x": X, "v": Vel, "a": A, "T": T, "V": V, "E": T + V, "W_nc": Y[6],
-            "H_O": eq.angular_momentum(m, X, Vel)}
+    Z = np.concatenate([traj.steps()[1], Y], axis=1) if steps else Y
+    T = eq.kinetic_energy(m, Z[3:6])
+    V = F.potential(Z[0:3])
+    k = Z.shape[1] - len(times)
+    S = {"x": X, "v": Vel, "a": np.array(A, dtype=float).reshape(-1, 3).T, "T": T[k:], "V": V[k:],
+         "E": T[k:] + V[k:], "W_nc": Y[6], "H_O": eq.angular_momentum(m, X, Vel), "t": times, "Y": Y,
+         "rest": np.array(rest, dtype=bool)}
+    if steps:
+        S["energies"] = (T, V, Z[6])
+    return S
+
+
+_ZERO3 = (0.0, 0.0, 0.0)
 
 
 def _vec(a) -> list[float]:
     return [float(c) + 0.0 for c in np.asarray(a, float)]
-
-
-def _vecs(A) -> list[list[float]]:
-    """The columns of a 3 x N array as N vectors (lists), -0.0 as 0.0."""
-    return (np.asarray(A, float).T + 0.0).tolist()
 
 
 def _equations(F: Forces) -> list[str]:
@@ -209,11 +239,12 @@ def _equations(F: Forces) -> list[str]:
     return eq
 
 
-def _report_terms(res, p, F, traj, times) -> None:
+def _report_terms(res, p, F, traj, S) -> None:
     """Power and work per force (work.py); the cylindrical basis (cylindrical.py)."""
-    from . import cylindrical, work
+    from . import work
 
-    states = traj.states(times)
-    work.add(res, p, F, traj, times, states)
+    work.add(res, p, F, traj, S)
     if getattr(p, "basis", "cartesian") == "cylindrical":
-        cylindrical.add(res, p, traj, times, states, F.m)
+        from . import cylindrical
+
+        cylindrical.add(res, p, traj, S, F.m)

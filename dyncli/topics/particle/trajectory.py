@@ -10,6 +10,12 @@ terminal event at v·d = 0 ends the phase.  There, if the speed is (numerically)
 condition |F_other| <= mu N decides between sticking (the particle stays at rest, as long as
 the condition holds) and slipping on in the direction of F_other; otherwise the velocity merely
 turned through 90° and a new phase starts with the new direction.
+
+Each phase steps scipy's solver directly (the loop of ``solve_ivp``): every accepted step is
+counted by the runner's budget (:class:`dyncli.ode.Budget`) and stored (time and state); a step's
+dense output (``OdeSolver.dense_output()``) is built only where a requested time or a friction
+stop falls in it, or for every step when the trajectory must be evaluated anywhere
+(``dense=True``: plots, the work of several non-conservative terms).
 """
 
 from __future__ import annotations
@@ -21,19 +27,25 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import NumericalError
 from dyncli.topics.particle.forces import Forces, _NonFinite
+from dyncli.topics.particle.hints import budget_message, singularity_hint
 
 EPS = np.finfo(float).eps
 MAX_PHASES = 20000
 
 
 class OdePhase:
+    """One integrated phase on [t0, t1]: the accepted steps (``steps_t``, ``steps_y`` 7 x n), the
+    phase's right-hand side, and ``sol`` (a scipy ``OdeSolution`` over its steps) when the run
+    kept every step's dense output (``dense=True``), else None."""
+
     def __init__(self, t0, t1, sol, rhs, steps_t, steps_y):
         self.t0, self.t1, self.sol, self.rhs = t0, t1, sol, rhs
         self.steps_t, self.steps_y = steps_t, steps_y
 
     def state(self, t):
-        y = self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
-        return y
+        if self.t1 > self.t0 and self.sol is None:
+            raise RuntimeError("the trajectory was integrated without dense output")
+        return self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
 
 
 class RestPhase:
@@ -45,12 +57,27 @@ class RestPhase:
 
 
 class Trajectory:
-    def __init__(self, phases, notes, nfev, nsteps=0, hmax=0.0):
+    """The phases of a run, the friction notes, and the states recorded during the run at the
+    requested times (``recorded``: time -> (phase index, state)); with ``dense`` every phase has
+    its dense output and any time can be evaluated."""
+
+    def __init__(self, phases, notes, nfev, nsteps=0, hmax=0.0, recorded=None, dense=True):
         self.phases = phases
         self.notes = notes      # list of (kind, t, info) for stops/slips
         self.nfev = nfev
         self.nsteps = nsteps    # accepted steps over all phases
         self.hmax = hmax        # the longest accepted step
+        self.recorded = recorded or {}
+        self.dense = dense
+
+    def steps(self) -> tuple[np.ndarray, np.ndarray]:
+        """(times, states 7 x M) of every accepted step of every integrated phase, in order."""
+        if not hasattr(self, "_steps"):
+            ode_ph = [ph for ph in self.phases if isinstance(ph, OdePhase)]
+            self._steps = ((np.concatenate([ph.steps_t for ph in ode_ph]),
+                            np.concatenate([ph.steps_y for ph in ode_ph], axis=1)) if ode_ph else
+                           (np.zeros(0), np.zeros((7, 0))))
+        return self._steps
 
     def phase_at(self, t):
         """The first phase whose interval [t0, t1] contains t."""
@@ -65,17 +92,20 @@ class Trajectory:
         return self.phases[-1]
 
     def states(self, times):
-        out = []
-        for t in times:
-            ph = self.phase_at(t)
-            out.append((ph, ph.state(t)))
-        return out
+        """(phase, state) at each time."""
+        idx, Y = self.state_array(times)
+        return [(self.phases[k], Y[:, j]) for j, k in enumerate(idx.tolist())]
 
     def state_array(self, times) -> tuple[np.ndarray, np.ndarray]:
         """The phase index of each time (as :meth:`phase_at`) and the states
-        y (7 x N) at all ``times`` at once: each phase's dense output is
-        called once on the array of its times, not once per time."""
-        t = np.asarray(times, float)
+        y (7 x N) at all ``times`` at once: a time recorded during the run takes its
+        recorded state; each phase's dense output is called once on the array of the others."""
+        got = [self.recorded.get(float(tt)) for tt in times]
+        if got and None not in got:
+            return np.array([k for k, _ in got], dtype=int), np.array([y for _, y in got], dtype=float).T
+        return self._dense_array(np.asarray(times, float))
+
+    def _dense_array(self, t):
         starts = np.array([ph.t0 for ph in self.phases])
         ends = np.array([ph.t1 for ph in self.phases])
         idx = np.clip(np.searchsorted(starts, t, side="left") - 1, 0, len(self.phases) - 1)
@@ -92,9 +122,12 @@ class Trajectory:
             if isinstance(ph, RestPhase):
                 Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[:, None]
             elif ph.t1 > ph.t0:
-                Y[:, sel] = ph.sol(t[sel])
+                Y[:, sel] = ph.state(t[sel])
             else:
                 Y[:, sel] = ph.steps_y[:, :1]
+        for j, tt in enumerate(t.tolist()):     # the recorded states exactly (the same as the results)
+            if tt in self.recorded:
+                Y[:, j] = self.recorded[tt][1]
         return idx, Y
 
 
@@ -105,94 +138,75 @@ MAX_STEPS = 5_000      # default accuracy.max_steps for particle (~1 s of solve_
 PROBE_STEPS = 500      # every this many steps, project the run's total and refuse early (dyncli.ode.Budget)
 
 
-def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
-    """The largest |eigenvalue| of the Jacobian of rhs at (t, y) (finite
-    differences) and whether it is stiff-like (a real, decaying mode) rather
-    than an oscillation.  (0, False) if it cannot be computed."""
-    try:
-        f0 = rhs(t, y)
-        J = np.empty((7, 7))
-        for j in range(7):
-            d = 1e-7 * max(abs(y[j]), 1e-3)
-            yj = y.copy()
-            yj[j] += d
-            J[:, j] = (rhs(t, yj) - f0) / d
-        if not np.all(np.isfinite(J)):
-            return 0.0, False
-        lam = np.linalg.eigvals(J)
-    except (_NonFinite, ArithmeticError, ValueError, np.linalg.LinAlgError):
-        return 0.0, False
-    k = int(np.argmax(np.abs(lam)))
-    big = lam[k]
-    return float(abs(big)), bool(big.real < 0 and abs(big.imag) <= abs(big.real))
-
-
-def _budget_message(over: ode.OverBudget, method: str, rhs=None) -> tuple[str, bool]:
-    """The budget's refusal message with a hint on what limits the steps; and
-    whether the run is stiff for an explicit method (an implicit one would
-    take long steps)."""
-    msg = str(over)
-    stiff = False
-    if rhs is not None and over.y is not None and method in ("DOP853", "RK45"):
-        rho, decaying = _stiffness(rhs, over.t, over.y)
-        if decaying and over.h * rho > 1.0:
-            stiff = True
-            msg += (f" (the problem is stiff near t = {over.t:.3g} s: a decaying mode with rate {rho:.3g} 1/s "
-                    f"limits the {method} steps to about {over.h:.3g} s; accuracy.method: LSODA or Radau "
-                    "takes long steps there)")
-        elif rho > 0 and over.h * rho > 0.05:
-            msg += (f" (the motion has a time scale of about {1 / rho:.3g} s near t = {over.t:.3g} s, "
-                    "which the steps must resolve)")
-    return msg, stiff
-
-
 def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps: int | None = None,
-              max_step: float = math.inf) -> Trajectory:
-    """Integrate the motion from t = 0 to t_end (phases for friction).
+              times=(), dense: bool = True, max_step: float = math.inf) -> Trajectory:
+    """Integrate the motion from t = 0 to t_end (phases for friction), recording the state at
+    ``times``; ``dense``: keep every step's dense output (for plots and for the work of several
+    non-conservative terms), else a step's interpolant is built only where a requested time or a
+    friction stop falls in it.
 
     The run is refused with a NumericalError as soon as it is clear that it
     needs more than ``max_steps`` accepted steps (default MAX_STEPS); a
-    non-finite force is a NumericalError at once."""
+    non-finite force is a NumericalError at once.  ``max_step``: the longest step allowed."""
     with np.errstate(all="ignore"):     # overflow is detected and reported, not warned about
-        return _integrate(p, F, rtol, atol, method, max_steps, max_step)
+        return _integrate(p, F, (rtol, atol, max_step), method, max_steps, times, dense)
 
 
-def _integrate(p, F, rtol, atol, method, max_steps, max_step) -> Trajectory:
+def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
+    rtol, atol, max_step = tol
     rtol = max(rtol, 100 * EPS * 1.0001)
     t_end = float(p.t_end)
-    y = np.concatenate([np.asarray(p.x0, float), np.asarray(p.v0, float), [0.0]])
+    y = np.array([*p.x0, *p.v0, 0.0], dtype=float)
     if t_end == 0.0:
         rhs = F.make_rhs(np.zeros(3))
-        return Trajectory([OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy())], [], 0)
+        return Trajectory([OdePhase(0.0, 0.0, None, rhs, np.array([0.0]), y[:, None].copy())], [], 0,
+                          recorded={float(t): (0, y.copy()) for t in times})
     budget = ode.Budget(max_steps, default=MAX_STEPS, probe=PROBE_STEPS)
     budget.leg(0.0, t_end)
-    run = _Run(F, rtol, atol, method, ode.budgeted(method, budget), max_step, t_end, y)
+    run = _Run(F, (rtol, atol, max_step), method, budget, t_end, y, times, dense)
     try:
         run.phases_to_end()
     except _NonFinite as exc:
         raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
-                             f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + _singularity_hint(F, exc.x)) from None
+                             f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + singularity_hint(F, exc.x)) from None
     except ode.OverBudget as exc:
-        msg, stiff = _budget_message(exc, method, run.rhs)
-        err = NumericalError(msg)
-        err.stiff = stiff                # method auto switches to LSODA
-        raise err from None
-    return Trajectory(run.phases, run.notes, run.nfev, budget.n, budget.hmax)
+        msg, stiff = budget_message(exc, method, run.rhs)
+        exc.args = (msg,)               # the runner's refusal with a hint on what limits the steps
+        exc.stiff = stiff               # method auto switches to LSODA
+        raise exc from None
+    return Trajectory(run.phases, run.notes, run.nfev, budget.n, budget.hmax, run.recorded, dense)
+
+
+_NO_FRICTION = np.zeros(3)
 
 
 class _Run:
     """The phases of one integration from t = 0 to t_end: each starts with the friction
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
 
-    def __init__(self, F, rtol, atol, method, solver_cls, max_step, t_end, y):
-        self.F, self.rtol, self.atol, self.method = F, rtol, atol, method
-        self.solver_cls, self.max_step, self.t_end = solver_cls, max_step, t_end
+    def __init__(self, F, tol, method, budget, t_end, y, times, dense):
+        import scipy.integrate
+
+        self.F, self.method, self.budget = F, method, budget
+        self.rtol, self.atol, self.max_step = tol
+        self.solver_cls = getattr(scipy.integrate, method)      # DOP853, RK45, Radau or LSODA
+        self.t_end, self.dense = t_end, dense
         self.t, self.y = 0.0, y
         self.phases: list = []
         self.notes: list = []       # (kind, t, |F_other|) for stops, slips and releases
         self.nfev = 0
-        self.vscale = float(np.linalg.norm(y[3:6]))
-        self.rhs = F.make_rhs(np.zeros(3))
+        self.vscale = float(np.linalg.norm(y[3:6])) if F.muN else 0.0     # friction decides stops on it
+        self.rhs = None             # the right-hand side of the current phase
+        self.want = sorted(set(map(float, times)))      # the requested times, in order
+        self.k = 0                                              # the next one to record
+        self.recorded: dict = {}
+
+    def record_rest(self, ph) -> None:
+        """The requested times within a rest phase (up to its end)."""
+        y = np.concatenate([ph.x, np.zeros(3), [ph.W]])
+        while self.k < len(self.want) and self.want[self.k] <= ph.t1:
+            self.recorded[self.want[self.k]] = (len(self.phases) - 1, y)
+            self.k += 1
 
     def phases_to_end(self) -> None:
         for _ in range(MAX_PHASES):
@@ -206,10 +220,10 @@ class _Run:
         """The friction reference direction d of the next phase (zeros without friction), after
         a rest phase if the particle sticks; None when it sticks until t_end."""
         F, y, t = self.F, self.y, self.t
+        if not F.muN:
+            return _NO_FRICTION
         speed = float(np.linalg.norm(y[3:6]))
         self.vscale = max(self.vscale, speed)
-        if not F.muN:
-            return np.zeros(3)
         if not speed <= 10.0 * (self.atol + self.rtol * self.vscale):     # sliding (or not a number)
             return y[3:6] / speed
         y[3:6] = 0.0
@@ -223,6 +237,7 @@ class _Run:
             t_free = _release_time(F, t, self.t_end, y[0:3]) if F.time_dependent else None
             t1 = self.t_end if t_free is None else t_free
             self.phases.append(RestPhase(t, t1, y[0:3], y[6]))
+            self.record_rest(self.phases[-1])
             self.notes.append(("stick", t, nFo))
             if t_free is None:
                 return None
@@ -234,60 +249,88 @@ class _Run:
             self.notes.append(("slip", t, nFo))
         return Fo / nFo
 
-    def _events(self, d):
-        if not self.F.muN:
-            return None
-        dd = d.copy()
-
-        def ev(t, y, dd=dd):
-            return float(y[3:6] @ dd)
-
-        ev.terminal = True
-        ev.direction = -1
-        return [ev]
-
     def integrate_phase(self, d) -> bool:
         """Integrate one phase with friction direction d; True when it reaches t_end."""
-        from scipy import integrate as si
-
-        t, y, method = self.t, self.y, self.method
+        t0, y0, method = self.t, self.y, self.method
         self.rhs = rhs = self.F.make_rhs(d)
         try:
-            sol = si.solve_ivp(rhs, (t, self.t_end), y, method=self.solver_cls, rtol=self.rtol, atol=self.atol,
-                               dense_output=True, events=self._events(d), max_step=self.max_step)
+            solver = self.solver_cls(rhs, t0, y0, self.t_end, rtol=self.rtol, atol=self.atol, max_step=self.max_step)
+            stop, ts, ys, sols = self._steps(solver, d)
         except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
-            raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
-        self.nfev += sol.nfev
-        if sol.status == -1:
-            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}"
-                                 + _singularity_hint(self.F, sol.y[0:3, -1]))
-        if not np.all(np.isfinite(sol.y)):
-            bad = int(np.argmax(~np.all(np.isfinite(sol.y), axis=0)))
-            raise NumericalError(f"the motion is not finite near t = {sol.t[max(bad - 1, 0)]:g} "
+            raise NumericalError(f"the integrator ({method}) failed near t = {self.t:g}: {exc}") from None
+        self.nfev += solver.nfev
+        Y = np.array(ys).T
+        if not np.isfinite(Y).all():
+            bad = int(np.argmax(~np.all(np.isfinite(Y), axis=0)))
+            raise NumericalError(f"the motion is not finite near t = {ts[max(bad - 1, 0)]:g} "
                                  "(a singular force: the particle reached an inverse-square centre or a spring anchor?)")
-        self.vscale = max(self.vscale, float(np.max(np.linalg.norm(sol.y[3:6], axis=0))))
-        if sol.status == 1 and sol.t_events[0].size:
-            te = float(sol.t_events[0][0])
-            ye = np.array(sol.y_events[0][0], float)
-            steps_t = np.append(sol.t, te) if sol.t[-1] < te else sol.t
-            steps_y = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
-            self.phases.append(OdePhase(t, te, sol.sol, rhs, steps_t, steps_y))
-            self.t, self.y = te, ye
-            return te >= self.t_end
-        self.phases.append(OdePhase(t, float(sol.t[-1]), sol.sol, rhs, sol.t, sol.y))
-        return True
+        if self.F.muN:
+            self.vscale = max(self.vscale, float(np.linalg.norm(Y[3:6], axis=0).max()))
+        sol = None
+        if self.dense and sols:
+            from scipy.integrate import OdeSolution
 
+            sol = OdeSolution(ts, sols)
+        self.phases.append(OdePhase(t0, ts[-1], sol, rhs, np.array(ts), Y))
+        self.t, self.y = ts[-1], ys[-1]
+        return not stop or ts[-1] >= self.t_end
 
-def _singularity_hint(F: Forces, x) -> str:
-    for c, _, R0 in F.inv:
-        R = float(np.linalg.norm(x - c))
-        if R < 1e-3 * R0:
-            return f" (the particle falls into the centre of the inverse-square field: R = {R:.3g} m)"
-    for a, _, L in F.springs:
-        R = float(np.linalg.norm(x - a))
-        if L > 0 and R < 1e-3 * L:
-            return f" (the particle reaches the anchor of a spring with free length L > 0: R = {R:.3g} m)"
-    return ""
+    def _steps(self, solver, d):
+        """The accepted steps of one phase (the loop of scipy's ``solve_ivp``): the budget ticks,
+        the requested times recorded from the step's dense output, and the friction stop: the
+        terminal event v·d = 0 crossed downwards, located by brentq on the dense output as
+        ``solve_ivp`` does.  Returns (stopped, step times, states, interpolants if dense)."""
+        t, y = float(solver.t), solver.y.copy()
+        ts, ys, sols = [t], [y], []
+        want, k, rec, n_ph = self.want, self.k, self.recorded, len(self.phases)
+        n_want = len(want)
+        while k < n_want and want[k] <= t:          # a time at the phase's start
+            rec[want[k]] = (n_ph, y)
+            k += 1
+        muN, tick, dense, step = self.F.muN, self.budget.tick, self.dense, solver.step
+        copy = self.method == "LSODA"               # the others make a new state array every step
+        g = float(y[3:6] @ d) if muN else 0.0
+        stop = False
+        while solver.status == "running":
+            msg = step()
+            if solver.status == "failed":
+                raise NumericalError(f"the integrator ({self.method}) failed near t = {solver.t:g}: {msg}"
+                                     + singularity_hint(self.F, solver.y[0:3]))
+            t_old, t, y = float(solver.t_old), float(solver.t), solver.y
+            if copy:
+                y = y.copy()
+            tick(t, t_old, y)
+            sol = solver.dense_output() if dense else None
+            if muN:
+                g_new = float(y[3:6] @ d)
+                if g >= 0 and g_new <= 0:           # solve_ivp's event of direction −1
+                    t, y, sol = self._stop(solver, sol, d, t_old, t)
+                    stop = True
+                g = g_new
+            while k < n_want and want[k] <= t:
+                tk = want[k]
+                if tk != t and sol is None:
+                    sol = solver.dense_output()
+                rec[tk] = (n_ph, y if tk == t else sol(tk))
+                k += 1
+            ts.append(t)
+            ys.append(y)
+            if dense:
+                sols.append(sol)
+            if stop:
+                break
+        self.k = k
+        return stop, ts, ys, sols
+
+    @staticmethod
+    def _stop(solver, sol, d, t_old, t):
+        """(time, state, interpolant) of the friction stop v·d = 0 inside the last step: brentq on
+        the step's dense output, as ``solve_ivp`` locates a terminal event."""
+        from scipy.optimize import brentq
+
+        sol = sol or solver.dense_output()
+        te = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
+        return te, sol(te), sol
 
 
 def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
@@ -308,7 +351,3 @@ def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
             return float(brentq(h, prev, tt, xtol=1e-14 * max(1.0, abs(tt)), rtol=4 * EPS))
         prev = tt
     return None
-
-
-# ---------------------------------------------------------------------------
-

@@ -25,6 +25,11 @@ GL_NODES = 8
 POTENTIAL_KINDS = ("gravity", "inverse-square", "spring", "uniform")
 
 
+def quadrature_terms(p) -> int:
+    """How many force terms have no potential (their work is a quadrature along the motion)."""
+    return sum(f.kind not in POTENTIAL_KINDS for f in p.forces)
+
+
 def labels(forces) -> list[str]:
     """One label per force term: its kind (a custom term's ``name`` if given),
     with #2, #3, ... for repeats."""
@@ -56,30 +61,28 @@ class Term:
             self.muN = float(f.mu) * float(f.N)
 
     def force(self, t, x, v):
+        """F_i at the states (3, n), or a (3, 1) column for a constant force."""
         f, k = self.f, self.kind
-        out = np.zeros_like(x)
         if k == "uniform":
-            out += np.asarray(f.F, float)[:, None]
-        elif k == "gravity":
-            out[2] = -self.m * self.g
-        elif k == "inverse-square":
+            return np.asarray(f.F, float)[:, None]
+        if k == "gravity":
+            return np.array([[0.0], [0.0], [-self.m * self.g]])
+        if k == "inverse-square":
             r = x - self.c
-            out = -self.mu * r / np.sqrt(np.sum(r * r, axis=0)) ** 3
-        elif k == "spring":
+            return -self.mu * r / np.sqrt((r * r).sum(axis=0)) ** 3
+        if k == "spring":
             r = x - self.c
-            R = np.sqrt(np.sum(r * r, axis=0))
-            out = -f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)
-        elif k == "damper":
-            out = -f.c * v
-        elif k == "drag":
-            out = -f.c * v if f.power == 1 else -f.c * np.sqrt(np.sum(v * v, axis=0)) * v
-        elif k == "friction":
-            sp = np.sqrt(np.sum(v * v, axis=0))
-            out = -self.muN * v / np.where(sp > 0, sp, 1.0)
-        elif k == "custom":
-            env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}
-            out = np.stack([np.broadcast_to(np.asarray(e.evaluate(**env), float), x.shape[1:]) for e in f.F])
-        return out
+            R = np.sqrt((r * r).sum(axis=0))
+            return -f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)
+        if k == "damper" or (k == "drag" and f.power == 1):
+            return -f.c * v
+        if k == "drag":
+            return -f.c * np.sqrt((v * v).sum(axis=0)) * v
+        if k == "friction":
+            sp = np.sqrt((v * v).sum(axis=0))
+            return -self.muN * v / np.where(sp > 0, sp, 1.0)
+        env = {"t": t, "x1": x[0], "x2": x[1], "x3": x[2], "v1": v[0], "v2": v[1], "v3": v[2]}   # custom
+        return np.stack([np.broadcast_to(np.asarray(e.evaluate(**env), float), x.shape[1:]) for e in f.F])
 
     def exact_work(self, x, x1):
         """U since t = 0 from the potential (19.8), or None (quadrature)."""
@@ -95,7 +98,7 @@ class Term:
         if k == "gravity":
             return self.m * self.g * x[2]
         r = x - self.c
-        R = np.sqrt(np.sum(r * r, axis=0))
+        R = np.sqrt((r * r).sum(axis=0))
         if k == "inverse-square":
             return -self.mu / R
         return 0.5 * f.k * (R - f.L) ** 2
@@ -105,7 +108,7 @@ def _sliding_dirs(F, t, X, V):
     """The direction −F_friction/μN at the states: v/|v|, or (at v = 0 inside
     a sliding phase, i.e. slipping off from rest) the direction of the net
     other force."""
-    sp = np.sqrt(np.sum(V * V, axis=0))
+    sp = np.sqrt((V * V).sum(axis=0))
     d = V / np.where(sp > 0, sp, 1.0)
     for j in np.flatnonzero(sp == 0):
         Fo = F.other(float(t[j]), X[:, j])
@@ -117,7 +120,9 @@ def _sliding_dirs(F, t, X, V):
 def _term_forces(terms, F, t, X, V, rest):
     """(len(terms), 3, n) forces at the states; ``rest`` marks states of a
     rest (stuck) phase, where friction is the static reaction."""
-    out = np.stack([tm.force(t, X, V) for tm in terms]) if terms else np.zeros((0,) + X.shape)
+    out = np.empty((len(terms),) + X.shape)
+    for i, tm in enumerate(terms):
+        out[i] = tm.force(t, X, V)
     fr = [i for i, tm in enumerate(terms) if tm.kind == "friction"]
     if fr and F.muN > 0:
         d = _sliding_dirs(F, t, X, V)
@@ -130,9 +135,14 @@ def _term_forces(terms, F, t, X, V, rest):
     return out
 
 
+_GL: list = []
+
+
 def _gl_integrals(phase, terms, F, a, b):
     """∫_a^b P_i dt for the intervals [a_k, b_k] of one ODE phase: (len(terms), K)."""
-    xg, wg = np.polynomial.legendre.leggauss(GL_NODES)
+    if not _GL:
+        _GL.extend(np.polynomial.legendre.leggauss(GL_NODES))
+    xg, wg = _GL
     a, b = np.asarray(a, float), np.asarray(b, float)
     half = 0.5 * (b - a)
     tt = (0.5 * (a + b))[:, None] + half[:, None] * xg[None, :]
@@ -178,38 +188,46 @@ def _quadrature_work(traj, terms, F, times):
     return out
 
 
-def add(res, p, F, traj, times, states) -> None:
-    """Add ``force_terms``, ``power``, ``work`` and ``work_residual`` to res."""
+def add(res, p, F, traj, S) -> None:
+    """Add ``force_terms``, ``power``, ``work`` and ``work_residual`` to res (``S``: the motion at
+    the requested times, solver._at_times)."""
     from dyncli.result import Series
-
-    from .solver import _vec
-    from .trajectory import RestPhase
 
     terms = [Term(f, p) for f in p.forces]
     labs = labels(p.forces)
-    t = np.asarray(times, float)
-    Y = np.stack([y for _, y in states], axis=1) if states else np.zeros((7, 0))
-    rest = np.array([isinstance(ph, RestPhase) for ph, _ in states], bool)
+    times = S["t"]
+    t, Y = np.asarray(times, float), S["Y"]
     X, V = Y[0:3], Y[3:6]
-    Fi = _term_forces(terms, F, t, X, V, rest)
-    P = np.sum(Fi * V[None], axis=1)
+    Fi = _term_forces(terms, F, t, X, V, S["rest"])
+    P = (Fi * V).sum(axis=1)
     with np.errstate(all="ignore"):
-        U = _quadrature_work(traj, terms, F, times) if terms else np.zeros((0, t.size))
-        x1 = np.asarray(p.x0, float)
-        for i, tm in enumerate(terms):
-            ex = tm.exact_work(X, x1)
-            if ex is not None:
-                U[i] = ex
-    T = 0.5 * F.m * np.sum(V * V, axis=0)
-    T1 = 0.5 * F.m * float(np.dot(p.v0, p.v0))
-    resid = float(np.max(np.abs(np.sum(U, axis=0) - (T - T1)))) if t.size else 0.0
-    res.results["force_terms"] = [{lab: _vec(Fi[i][:, j]) for i, lab in enumerate(labs)} for j in range(t.size)]
-    res.results["power"] = [{lab: float(P[i, j]) + 0.0 for i, lab in enumerate(labs)} for j in range(t.size)]
-    res.results["work"] = [{lab: float(U[i, j]) + 0.0 for i, lab in enumerate(labs)} for j in range(t.size)]
+        U = _works(p, traj, terms, F, times, X, Y[6])
+    T1 = 0.5 * F.m * sum(float(c) * float(c) for c in p.v0)
+    resid = float(abs(U.sum(axis=0) - (S["T"] - T1)).max()) if t.size else 0.0
+    Fl, Pl, Ul = (Fi.transpose(2, 0, 1) + 0.0).tolist(), (P.T + 0.0).tolist(), (U.T + 0.0).tolist()
+    res.results["force_terms"] = [dict(zip(labs, row)) for row in Fl]
+    res.results["power"] = [dict(zip(labs, row)) for row in Pl]
+    res.results["work"] = [dict(zip(labs, row)) for row in Ul]
     res.results["work_residual"] = resid
     for name, title in (("force_terms", "Fᵢ (each force)"), ("power", "Pᵢ = Fᵢ·v"),
                         ("work", "Uᵢ = ∫ Pᵢ dt")):
-        res.series.append(Series("t", [float(x) for x in t], [name], title=title))   # one column per force
+        res.series.append(Series("t", list(times), [name], title=title))   # one column per force
     for eq in ("18.1", "18.2", "18.7", "19.8"):
         if eq not in res.equations:
             res.equations.append(eq)
+
+
+def _works(p, traj, terms, F, times, X, W_nc):
+    """U_i at the times: exact from the potential (19.8) where there is one; the one term without
+    a potential: W_nc (20.3) less the uniform terms' work; several: a quadrature each."""
+    quad = [i for i, tm in enumerate(terms) if tm.kind not in POTENTIAL_KINDS]
+    U = _quadrature_work(traj, terms, F, times) if len(quad) > 1 else np.zeros((len(terms), len(times)))
+    x1 = np.asarray(p.x0, float)
+    for i, tm in enumerate(terms):
+        ex = tm.exact_work(X, x1)
+        if ex is not None:
+            U[i] = ex
+    if len(quad) == 1:
+        uni = [i for i, tm in enumerate(terms) if tm.kind == "uniform"]
+        U[quad[0]] = W_nc - U[uni].sum(axis=0) if uni else W_nc
+    return U
