@@ -108,8 +108,8 @@ def top_script(rtol, atol):
 
 
 def nutating_script(rtol, atol):
-    """The nutating top of tests/top: ψ, θ, φ and their rates."""
-    from tests.top.exact_reference_data import CASES as REF
+    """The nutating top of tests/topics/top: ψ, θ, φ and their rates."""
+    from tests.topics.top.exact_reference_data import CASES as REF
 
     m, L, A, C, ps, th, ph, psd, thd, phd = REF["nutating"]["input"]
     rows = lagrange_top(m, L, A, C, 9.81, th, thd, ps, ph, psd, phd, REF["nutating"]["times"], rtol, atol)
@@ -131,8 +131,8 @@ def gyroscope_script(rtol, atol):
 # --- the references, as floats, in the scripts' order -------------------------------------------
 def references() -> dict:
     from tests.accuracy import cases as C
-    from tests.gyroscopic.gyroscope_reference_data import CASES as GREF
-    from tests.top.exact_reference_data import CASES as TREF
+    from tests.topics.gyroscope.gyroscope_reference_data import CASES as GREF
+    from tests.topics.top.exact_reference_data import CASES as TREF
 
     ts = C._rectg_times()
     # rectilinear's error is relative (tests/accuracy/cases.py): t to the largest time, s and v

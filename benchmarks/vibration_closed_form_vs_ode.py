@@ -21,7 +21,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from dyncli.topics.vibration import closed_form as cf  # noqa: E402
-from tests.vibration.reference import max_rel_err, reference  # noqa: E402
+from tests.topics.vibration.reference import max_rel_err, reference  # noqa: E402
 
 
 def best_of(fn, repeat=5):

@@ -221,10 +221,10 @@ def _part_scipy(rtol, atol):
     return max(errs), int(sol.nfev)
 
 
-# --- top: nutating top, 60-digit elliptic reference (tests/top/gen_exact_reference.py); the error
+# --- top: nutating top, 60-digit elliptic reference (tests/topics/top/gen_exact_reference.py); the error
 # of every reported quantity relative to its scale over the run, as the type's error_estimate -----
 def _nut_yaml(rtol, atol, est, method):
-    from tests.top.exact_reference_data import CASES as REF
+    from tests.topics.top.exact_reference_data import CASES as REF
 
     m, L, A, C, ps, th, ph, psd, thd, phd = REF["nutating"]["input"]
     return (f"type: top\nm: {m}\nL: {L}\nI11: {A}\nI33: {C}\npsi: {ps}\ntheta: {th}\nphi: {ph}\n"
@@ -233,7 +233,7 @@ def _nut_yaml(rtol, atol, est, method):
 
 
 def _nut_error(rec):
-    from tests.top.exact_reference_data import CASES as REF
+    from tests.topics.top.exact_reference_data import CASES as REF
 
     rows, r = REF["nutating"]["rows"], rec["results"]
     errs = []
@@ -496,7 +496,7 @@ CASES.append(Case("top exact (nutating)", "top", lambda r, a, e: _nut_yaml(r, a,
 
 
 # the gyroscope's two routes on the §37 swing from 0 to π (the gallery file), against the
-# 30-digit Taylor integration of (37.12) in tests/gyroscopic/gyroscope_reference_data.py;
+# 30-digit Taylor integration of (37.12) in tests/topics/gyroscope/gyroscope_reference_data.py;
 # errors relative to the scales of the exact route's estimate (π for θ, √(2|a| + 2|b|) for θ̇)
 def _gyro_yaml(rtol, atol, est, method):
     return ("type: gyroscope\nI1: 0.01\nI2: 0.006\np: 100\nq: 1\nat: [0.05, 0.1, 0.2, 0.33]\n"
@@ -504,7 +504,7 @@ def _gyro_yaml(rtol, atol, est, method):
 
 
 def _gyro_error(rec):
-    from tests.gyroscopic.gyroscope_reference_data import CASES as GREF
+    from tests.topics.gyroscope.gyroscope_reference_data import CASES as GREF
 
     rows = GREF["zero_to_pi"]["rows"]
     r = rec["results"]

@@ -13,7 +13,7 @@ a division by a variable, a very large degree, term count or coefficient) is
 (terms in descending lexicographic order of the exponents, the rational coefficient
 as ``2*x1*x2/3``, and sympy's one special case: a positive constant and one negative
 single-factor term print as ``1 - x1``); the property test
-``tests/particle/test_force_field_polynomial.py`` holds it against sympy.
+``tests/topics/force_field/test_force_field_polynomial.py`` holds it against sympy.
 """
 
 from __future__ import annotations

@@ -16,7 +16,7 @@ singular, the route integrates the spin-free quaternion form
 
 Step size: DOP853's (and RK45's) error estimator is only asymptotically right; with steps
 of h ≈ 1-1.5 rad of the nutation (h·W ≈ 1, W the fastest rate) it underestimates, and the
-error of the nutating top of tests/top at rtol 1e-6 was 35x rtol where rtol 1e-5 gave 3x.  The step is capped at
+error of the nutating top of tests/topics/top at rtol 1e-6 was 35x rtol where rtol 1e-5 gave 3x.  The step is capped at
 h ≤ 1/W whenever the axis nutates (θ_max > θ_min), which keeps the global error within a
 few rtol at loose tolerances; in steady precession (a fixed point of 38.18a) the cap is
 not needed and not applied.
