@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from dyncli import symbolic
+from dyncli.expr.derivative import derivative
 from dyncli.direction import norm_rows, unit_rows
 
 
@@ -37,15 +37,16 @@ class Curve:
     def __init__(self, p):
         comps = (p.curve.x1, p.curve.x2, p.curve.x3)
         self.y0 = comps
-        self.y1 = tuple(symbolic.diff(e, "q") for e in comps)
-        self.y2 = tuple(symbolic.diff(e, "q", 2) for e in comps)
+        # exact derivatives by the rules of calculus on the expression IR (sympy only for min/max)
+        self.y1 = tuple(derivative(e, "q") for e in comps)
+        self.y2 = tuple(derivative(e, "q") for e in self.y1)
         rot = p.rotation
         self.k = np.asarray(rot.axis, float) if rot else np.array([0.0, 0.0, 1.0])
         self.omega_expr = rot.omega if rot else None
         self.rotating = rot is not None
         self.omega_const = None if rot is None or "t" in rot.omega.variables else float(rot.omega.value())
         if self.omega_expr is not None and self.omega_const is None:
-            self.omega_dot_expr = symbolic.diff(rot.omega, "t")
+            self.omega_dot_expr = derivative(rot.omega, "t")
 
     @staticmethod
     def _ev(es, q):
