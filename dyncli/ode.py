@@ -14,8 +14,12 @@
 * ``error_estimate``: :func:`relative_difference`, the largest difference between the
   reported and the check run of every reported quantity, each relative to its own scale
   over the run.
+* Stepping: :func:`steps`, the one loop over scipy's public ``OdeSolver.step`` (every route's
+  own loop — :func:`integrate`, the particle's phases, the top's tracker, rectilinear's event
+  march — iterates it), each step counted, a failed step :class:`StepFailed`.
 * Dense output only through scipy's public ``OdeSolver.dense_output()``
   (:func:`dense_output`), never its private interpolant internals.
+* The error_estimate without a check solve: :func:`nominal_estimate`.
 
 Step-by-step integration with a work budget, shared by the topics that integrate:
 
@@ -129,6 +133,29 @@ def finite(fun):
     return checked
 
 
+class StepFailed(NumericalError):
+    """scipy's solver reported a failed step (``t``: where; ``reason``: scipy's message)."""
+
+    def __init__(self, method: str, t: float, reason: str | None):
+        super().__init__(f"the integrator ({method}) failed at t = {t:.6g} s: {reason}")
+        self.t, self.reason = float(t), reason
+
+
+def steps(solver, budget: Budget | None, method: str):
+    """The one stepping loop of the ODE routes (the loop ``solve_ivp`` runs, over the public
+    ``OdeSolver.step``): yields ``solver`` after every accepted step (its ``t_old``, ``t``, ``y``
+    current; the step's interpolant through :func:`dense_output`), each step counted by
+    ``budget`` (None: the solver class counts itself, :func:`budgeted`), until the solver
+    finishes or the caller stops iterating.  A failed step raises :class:`StepFailed`."""
+    while solver.status == "running":
+        msg = solver.step()
+        if solver.status == "failed":
+            raise StepFailed(method, solver.t, msg)
+        if budget is not None:
+            budget.tick(float(solver.t), None if solver.t_old is None else float(solver.t_old), solver.y)
+        yield solver
+
+
 def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False):
     """scipy's solver class for ``method`` (for ``solve_ivp(method=...)``)
     with every accepted step counted by ``budget`` and a rate that is not
@@ -204,11 +231,7 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
             kw["first_step"] = min(first_step, abs(t_end - t0))
         solver = cls(finite(fun), t0, y0.copy(), t_end, **kw)
         k = 0
-        while k < len(order):
-            msg = solver.step()
-            if solver.status == "failed":
-                raise NumericalError(f"the {method} integrator failed at t = {solver.t:.6g}: {msg}")
-            budget.tick(solver.t, solver.t_old)
+        for _ in steps(solver, budget, method):
             t_old, t_new = solver.t_old, solver.t
             if project is not None:
                 yp = project(solver.y)
@@ -222,10 +245,10 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
                 i = order[k]
                 Y[i] = solver.y if times[i] == t_new else dense(times[i])
                 k += 1
-            if solver.status == "finished" and k < len(order):  # pragma: no cover - defensive
-                for i in order[k:]:
-                    Y[i] = solver.y
+            if k == len(order):
                 break
+        for i in order[k:]:         # pragma: no cover - defensive: the solver finished early
+            Y[i] = solver.y
     return Y, budget.n
 
 

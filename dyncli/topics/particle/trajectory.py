@@ -287,19 +287,14 @@ class _Run:
         while k < n_want and want[k] <= t:          # a time at the phase's start
             rec[want[k]] = (n_ph, y)
             k += 1
-        muN, tick, dense, step = self.F.muN, self.budget.tick, self.dense, solver.step
+        muN, dense = self.F.muN, self.dense
         copy = self.method == "LSODA"               # the others make a new state array every step
         g = float(y[3:6] @ d) if muN else 0.0
         stop = False
-        while solver.status == "running":
-            msg = step()
-            if solver.status == "failed":
-                raise NumericalError(f"the integrator ({self.method}) failed near t = {solver.t:g}: {msg}"
-                                     + singularity_hint(self.F, solver.y[0:3]))
+        for _ in self._stepping(solver):
             t_old, t, y = float(solver.t_old), float(solver.t), solver.y
             if copy:
                 y = y.copy()
-            tick(t, t_old, y)
             sol = solver.dense_output() if dense else None
             if muN:
                 g_new = float(y[3:6] @ d)
@@ -321,6 +316,15 @@ class _Run:
                 break
         self.k = k
         return stop, ts, ys, sols
+
+    def _stepping(self, solver):
+        """The runner's stepping loop (:func:`dyncli.ode.steps`, the budget counting every step),
+        a failed step told with the hint of a singular force where there is one."""
+        try:
+            yield from ode.steps(solver, self.budget, self.method)
+        except ode.StepFailed as exc:
+            raise NumericalError(f"the integrator ({self.method}) failed near t = {exc.t:g}: {exc.reason}"
+                                 + singularity_hint(self.F, solver.y[0:3])) from None
 
     @staticmethod
     def _stop(solver, sol, d, t_old, t):

@@ -68,13 +68,13 @@ class _Run:
         with np.errstate(all="ignore"):
             solver = self._cls(self.rhs, t0, np.array(y0, dtype=float), t_end, rtol=self.rtol, atol=self.atol, **kw)
             step = _Step(self, solver)
-            while solver.status == "running":
-                msg = solver.step()
-                if solver.status == "failed":
-                    return float(solver.t), msg
-                step.advance()
-                if visit(step):
-                    return None
+            try:
+                for _ in ode.steps(solver, None, self.method):     # the budgeted class counts the steps
+                    step.advance()
+                    if visit(step):
+                        return None
+            except ode.StepFailed as exc:
+                return exc.t, exc.reason
         return None
 
 

@@ -191,12 +191,8 @@ def _steps(solver, run, tr, record, budget, times, k, method, S):
     projected = method == "projected"
     n = len(times)
     t_prev = 0.0
-    while k < n:
-        msg = solver.step()
-        if solver.status == "failed":
-            raise NumericalError(f"the integrator ({method}) failed at t = {solver.t:.6g} s: {msg}")
+    for _ in ode.steps(solver, budget, method):
         run.steps += 1
-        budget.tick(solver.t, solver.t_old)
         tb = solver.t
         dense, dense_q = _dense(solver)
         while k < n and times[k] <= tb:
@@ -218,7 +214,7 @@ def _steps(solver, run, tr, record, budget, times, k, method, S):
             solver.y = yb
             solver.f = solver.fun(solver.t, yb)
         record(None, tb, yb)
-        if solver.status == "finished":
+        if k >= n:
             break
     run.nfev = solver.nfev
     if k < n:  # pragma: no cover - the solver ends exactly at T
