@@ -109,7 +109,8 @@ def ellipj(u, m: float, m1: float | None = None):
     if m1 is None:
         m1 = 1.0 - m
     if m1 == 0.0:
-        sech = 1.0 / xp.cosh(u)
+        with xp.errstate(over="ignore"):
+            sech = 1.0 / xp.cosh(u)
         return xp.tanh(u), sech, sech
     if m == 0.0:
         return xp.sin(u), xp.cos(u), xp.ones_like(u)
