@@ -48,12 +48,16 @@ SMALL = 32
 # ---------------------------------------------------------------- Jacobi sn, cn, dn; K
 
 def agm_table(m: float, m1: float):
-    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N)."""
+    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N).
+
+    Stops at c_N ≤ ε a_N: the next c is c_N²/(4 a) ≤ ε² a/4, below the rounding of a_N and
+    of the phase it would correct (a − b stalls at an ulp there, so a smaller bound would
+    run all 60 steps without changing a digit)."""
     a = [1.0]
     c = [math.sqrt(m)]
     b = math.sqrt(m1)
     for _ in range(60):
-        if abs(c[-1]) <= 1e-17 * a[-1]:
+        if abs(c[-1]) <= EPS * a[-1]:
             break
         an = 0.5 * (a[-1] + b)
         cn = 0.5 * (a[-1] - b)
