@@ -115,7 +115,10 @@ class Asymmetric:
         t = float(t) if xp is FLOAT_OPS else xp.asarray(t, dtype=float)
         if self.constant:
             return _assemble(xp, t, dict(enumerate(self.w0)))
-        comps = self._components(xp, t)
+        try:
+            comps = self._components(xp, t)
+        except ZeroDivisionError:      # plain floats, constants beyond doubles: nan, as numpy gives
+            comps = (math.nan, math.nan, math.nan)
         s = self.sign
         return _assemble(xp, t, {k: s * comp for comp, k in zip(comps, self.perm)})
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from dyncli import vec3
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 from dyncli.result import FrameTable, Result, Series, SolveOptions
 from dyncli.topics.euler import free
 
@@ -82,6 +82,9 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     if pb.coin is not None:
         res.equations.append("39.10")
     H0, T0 = energy_momentum(I, w0)
+    if not (math.isfinite(H0) and math.isfinite(T0)):
+        raise InputError(f"omega0 with these moments gives |H̄| = {H0:.3g} kg·m²/s, T = {T0:.3g} J: beyond a "
+                         "double (~1e308); rescale the units", "omega0")
     torque_free = pb.M is None or all(e.is_constant and e.value() == 0.0 for e in pb.M)
     exact = free.exact(I, w0) if torque_free else None
     r = res.results
@@ -89,6 +92,9 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
         r["I"] = list(I)
     if torque_free and method in ("auto", "closed-form"):
         W = [exact.omega(t) for t in times]
+        if not all(vec3.finite(w) for w in W):
+            raise NumericalError("the exact torque-free solution is not representable in doubles at these "
+                                 "magnitudes (its elliptic constants overflow): rescale the units")
         res.method = "closed-form"
         drift_H, drift_T = _drifts(I, W, H0, T0)
     elif method == "closed-form":
