@@ -191,6 +191,11 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     res = Result({}, equations=["37.5", "37.6", "37.9", "37.12", "37.13", "37.15", "Table 37.1"])
     method = pb.accuracy.method
     tmin, tmax, C = turning_points(I1, I2, p, q, th0, thd0)
+    if not math.isfinite(C):
+        from dyncli.errors import InputError
+
+        raise InputError(f"the constant C of (37.13) is {C:.3g} J for these θ̇0, p, q and moments: beyond a double "
+                         "(~1e308); rescale the units", "theta_dot0")
     out = None
     if method in ("auto", "closed-form") and q == 0.0:
         th = [th0 + thd0 * t for t in times]
@@ -210,6 +215,10 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
             res.extra["sample"] = lambda ts: _ode_route(pb, ts, Result({}))[0]
         else:
             th, thd, drift = out
+    if not all(math.isfinite(x) for x in th + thd):
+        from dyncli.errors import NumericalError
+
+        raise NumericalError("θ(t) is beyond a double at the requested times (|θ̇0 t| ~ 1e308): rescale the units")
     thdd = [theta_ddot(I1, I2, p, q, x) for x in th]
     r = res.results
     r["theta"] = [float(x) for x in th]
