@@ -32,10 +32,8 @@ condition number (1/2 for R_F and R_C, 3/2 for R_J).
 from __future__ import annotations
 
 import math
-from contextlib import nullcontext
-from types import SimpleNamespace
 
-from dyncli.expr import floatmath as _fm
+from dyncli.backends import FLOAT_OPS, array_ops
 
 EPS = 2.0 ** -52
 #: Carlson's stopping rule for the degree-7 series: truncation error below ε
@@ -73,31 +71,6 @@ def ellipK(m: float, m1: float) -> float:
         return math.inf
     a, _ = agm_table(m, m1)
     return math.pi / (2.0 * a[-1])
-
-
-def _round(x: float) -> float:
-    """x rounded half to even (as numpy's round), x itself when not finite."""
-    return float(round(x)) if math.isfinite(x) else x
-
-
-#: the plain-float backend of the formulas written once for floats and arrays (math, with numpy's
-#: conventions out of range: inf on overflow, nan for a domain error); :func:`array_ops` is numpy
-FLOAT_OPS = SimpleNamespace(sin=_fm.sin, cos=_fm.cos, arcsin=_fm.arcsin, arctan=_fm.arctan, arctan2=_fm.arctan2,
-                            tanh=_fm.tanh, cosh=_fm.cosh, sqrt=_fm.sqrt, abs=abs, where=_fm.where,
-                            maximum=max, minimum=min, round=_round, ones_like=_fm.ones,
-                            clip=lambda x, lo, hi: min(max(x, lo), hi), errstate=lambda **kw: nullcontext())
-
-
-def array_ops():
-    """The numpy backend (imports numpy)."""
-    import numpy as np
-
-    return np
-
-
-def ops_for(x):
-    """:data:`FLOAT_OPS` for a plain number, else numpy."""
-    return FLOAT_OPS if isinstance(x, (float, int)) else array_ops()
 
 
 def ellipj(u, m: float, m1: float | None = None):

@@ -1,6 +1,6 @@
 """Exact motion of the torque-free rigid body, no scipy: ω at one time in plain floats (math,
 no numpy import), or at an array of times with numpy (the same formulas on either backend,
-:data:`dyncli.elliptic.FLOAT_OPS` or numpy).
+:data:`dyncli.backends.FLOAT_OPS` or numpy).
 
 * Axisymmetric body (two equal principal moments): (39.14)-(39.22).
 * Asymmetric body: Jacobi elliptic functions.  With the moments sorted so
@@ -23,7 +23,8 @@ from __future__ import annotations
 
 import math
 
-from dyncli.elliptic import FLOAT_OPS, ellipj, ellipK, ops_for
+from dyncli.backends import FLOAT_OPS, ops_for
+from dyncli.elliptic import ellipj, ellipK
 
 EQUAL_TOL = 1e-13
 

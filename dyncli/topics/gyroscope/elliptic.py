@@ -34,7 +34,8 @@ from __future__ import annotations
 
 import math
 
-from dyncli.elliptic import FLOAT_OPS, ellipj, ops_for
+from dyncli.backends import FLOAT_OPS, ops_for
+from dyncli.elliptic import ellipj
 from dyncli.elliptic import elliprf as _rf
 
 

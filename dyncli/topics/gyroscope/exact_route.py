@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import sys
 
-from dyncli.elliptic import ops_for
+from dyncli.backends import ops_for
 from dyncli.topics.gyroscope.elliptic import GyroTheta
 
 EPS = sys.float_info.epsilon
