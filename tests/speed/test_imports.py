@@ -144,3 +144,13 @@ def test_numpy_free_closed_forms_import_no_numpy():
     bad = [r["file"] for r in recs if r["numpy"]]
     assert not bad, f"{bad[0]} ({', '.join(sorted({t for t, _ in recs[-1]['methods']}))}) imported numpy"
     assert len(recs) == len(files)
+
+
+def test_top_without_times_imports_no_numpy(tmp_path):
+    """The top without `at` (EXTRA: its nutation bounds only, by the exact route) is solved in plain
+    floats: the nutation cubic's roots by the Nutation constants, no evaluation (issue 19)."""
+    f = tmp_path / "top-no-at.yaml"
+    f.write_text(EXTRA["top-no-at.yaml"])
+    code = "import sys\nsys.argv = ['x', " + repr(str(f)) + "]\n" + _SOLVE_NUMPY_FREE
+    [rec] = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
+    assert rec["methods"] == [["top", "exact"]] and not rec["numpy"], rec
