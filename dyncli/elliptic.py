@@ -1,5 +1,6 @@
-"""Elliptic functions and integrals in numpy (no scipy): Jacobi sn, cn, dn and the complete
+"""Elliptic functions and integrals without scipy: Jacobi sn, cn, dn and the complete
 integral K by the arithmetic-geometric mean, and Carlson's symmetric integrals R_F, R_J, R_C.
+Each takes plain floats (math only: numpy is not imported) or arrays (numpy, vectorised).
 
 Topic-agnostic numerics: what a problem type does with them is its own business.
 
@@ -32,7 +33,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from dyncli.backends import FLOAT_OPS, array_ops
 
 EPS = 2.0 ** -52
 #: Carlson's stopping rule for the degree-7 series: truncation error below ε
@@ -45,12 +46,16 @@ SMALL = 32
 # ---------------------------------------------------------------- Jacobi sn, cn, dn; K
 
 def agm_table(m: float, m1: float):
-    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N)."""
+    """AGM sequences (a, c) for parameter m (complement m1); K = π/(2 a_N).
+
+    Stops at c_N ≤ ε a_N: the next c is c_N²/(4 a) ≤ ε² a/4, below the rounding of a_N and
+    of the phase it would correct (a − b stalls at an ulp there, so a smaller bound would
+    run all 60 steps without changing a digit)."""
     a = [1.0]
     c = [math.sqrt(m)]
     b = math.sqrt(m1)
     for _ in range(60):
-        if abs(c[-1]) <= 1e-17 * a[-1]:
+        if abs(c[-1]) <= EPS * a[-1]:
             break
         an = 0.5 * (a[-1] + b)
         cn = 0.5 * (a[-1] - b)
@@ -69,25 +74,33 @@ def ellipK(m: float, m1: float) -> float:
 
 
 def ellipj(u, m: float, m1: float | None = None):
-    """sn, cn, dn of u (array) for parameter m, 0 <= m <= 1, given m1 = 1 − m exactly."""
-    u = np.asarray(u, dtype=float)
+    """sn, cn, dn of u (a float: floats; else an array) for parameter m, 0 <= m <= 1, given
+    m1 = 1 − m exactly.  One algorithm for both (the descending Landen/AGM recursion, u reduced
+    modulo 4K), on the backend of u."""
+    if isinstance(u, (float, int)):
+        xp = FLOAT_OPS
+        u = float(u)
+    else:
+        xp = array_ops()
+        u = xp.asarray(u, dtype=float)
     if m1 is None:
         m1 = 1.0 - m
     if m1 == 0.0:
-        sech = 1.0 / np.cosh(u)
-        return np.tanh(u), sech, sech
+        with xp.errstate(over="ignore"):
+            sech = 1.0 / xp.cosh(u)
+        return xp.tanh(u), sech, sech
     if m == 0.0:
-        return np.sin(u), np.cos(u), np.ones_like(u)
+        return xp.sin(u), xp.cos(u), xp.ones_like(u)
     a, c = agm_table(m, m1)
     N = len(a) - 1
     K = math.pi / (2.0 * a[N])
     four_k = 4.0 * K
-    u = u - four_k * np.round(u / four_k)
+    u = u - four_k * xp.round(u / four_k)
     phi = (2.0**N) * a[N] * u
     for i in range(N, 0, -1):
-        phi = 0.5 * (np.arcsin(np.clip(c[i] * np.sin(phi) / a[i], -1.0, 1.0)) + phi)
-    sn, cn = np.sin(phi), np.cos(phi)
-    dn = np.sqrt(m1 + m * cn * cn)
+        phi = 0.5 * (xp.arcsin(xp.clip(c[i] * xp.sin(phi) / a[i], -1.0, 1.0)) + phi)
+    sn, cn = xp.sin(phi), xp.cos(phi)
+    dn = xp.sqrt(m1 + m * cn * cn)
     return sn, cn, dn
 
 
@@ -129,6 +142,8 @@ def _rc1p(e, y1):
 
 def _rc1p_arrays(e, y1):
     """:func:`_rc1p` on arrays (``y1()`` gives 1 + e, formed only where e < 0 needs it)."""
+    import numpy as np
+
     # t floored at 1e-200: atan(t)/t = atanh(t)/t = 1 there, as for any e below 1e-32
     t = np.maximum(np.sqrt(np.abs(e)), 1e-200)
     if bool(np.all(e >= 0.0)):
@@ -154,6 +169,8 @@ def _rf_floats(x, y, z):
 
 def _rf_arrays(x, y, z):
     """R_F on arrays (valid elements only; one step count for all, the largest)."""
+    import numpy as np
+
     a0 = (x + y + z) / 3.0
     q = _Q_RF * np.maximum(np.maximum(np.abs(a0 - x), np.abs(a0 - y)), np.abs(a0 - z))
     a, f, v = a0, 1.0, np.stack([x, y, z])
@@ -189,6 +206,8 @@ def _rj_floats(x, y, z, p):
 
 def _rj_arrays(x, y, z, p):
     """R_J on arrays (valid elements only; one step count for all, the largest)."""
+    import numpy as np
+
     a0 = (x + y + z + 2.0 * p) / 5.0
     q = _Q_RJ * np.max(np.abs(a0 - np.stack([x, y, z, p])), axis=0)
     delta = np.stack([p - x, p - y, p - z])
@@ -221,6 +240,8 @@ def _scale(big, hi):
 
 def _scaled(args, hi):
     """Arrays rescaled by 4^(−k) (as :func:`_scale`, per element) and k (0 when none needs it)."""
+    import numpy as np
+
     big = np.max(args, axis=0)
     e = np.frexp(big)[1]
     k = np.where((big > 2.0 ** hi) & np.isfinite(big), (e - hi + 1) // 2,
@@ -250,6 +271,8 @@ def _apply(cores, args, hi, degree, special, invalid):
     core, core_arrays = cores
     if all(isinstance(v, (float, int)) for v in args):
         return _float_path(core, tuple(float(v) for v in args), hi, degree, special)
+    import numpy as np
+
     arrs = [np.asarray(v, dtype=float) for v in args]
     shape = max((a.shape for a in arrs), key=len)
     if any(a.shape != shape and a.shape != () for a in arrs):
@@ -278,6 +301,8 @@ def _rf_special(x, y, z):
 
 
 def _rf_invalid(x, y, z):
+    import numpy as np
+
     zeros = (x == 0.0).astype(int) + (y == 0.0) + (z == 0.0)
     bad = ~((x >= 0.0) & (y >= 0.0) & (z >= 0.0))
     inf = np.isinf(x) | np.isinf(y) | np.isinf(z)
@@ -298,6 +323,8 @@ def _rj_special(x, y, z, p):
 
 
 def _rj_invalid(x, y, z, p):
+    import numpy as np
+
     zeros = (x == 0.0).astype(int) + (y == 0.0) + (z == 0.0)
     bad = ~((x >= 0.0) & (y >= 0.0) & (z >= 0.0) & (p >= 0.0))
     sing = (p == 0.0) | (zeros >= 2)
@@ -335,6 +362,8 @@ def elliprc(x, y):
     """Carlson's R_C(x, y) = ½∫₀^∞ dt/((t+y)√(t+x)), x ≥ 0 (y < 0: Cauchy principal value)."""
     if isinstance(x, (float, int)) and isinstance(y, (float, int)):
         return _rc_float(float(x), float(y))
+    import numpy as np
+
     x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
     if x.size <= SMALL:
         return np.array([_rc_float(float(a), float(b)) for a, b in zip(x.ravel(), y.ravel())]).reshape(x.shape)

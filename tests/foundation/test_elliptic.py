@@ -1,4 +1,4 @@
-"""dyncli.elliptic (numpy-only Carlson R_F, R_J, R_C; Jacobi sn, cn, dn and K by the AGM) against
+"""dyncli.elliptic (Carlson R_F, R_J, R_C; Jacobi sn, cn, dn and K by the AGM; floats or arrays) against
 an independent route: mpmath's elliprf/elliprj/elliprc/elliprd/ellipk at 50 digits, confirmed at
 90 (more where the two disagree: mpmath loses digits for p ≪ x, y, z).
 
@@ -199,6 +199,38 @@ def test_shapes_and_broadcasting():
         np.testing.assert_allclose(out.ravel(), one, rtol=4 * K_ULP * EPS, atol=0)
     assert E.elliprf(np.array([[0.5, 1.0]]), np.array([[1.0], [2.0]]), 1.0).shape == (2, 2)
     assert E.elliprj(np.float64(1.0), 2, 3, 4) == E.elliprj(1.0, 2.0, 3.0, 4.0)
+
+
+@pytest.mark.parametrize("m1", ["1", "0.9", "0.5", "0.01", "1e-6", "1e-12", "0"])
+def test_ellipj_one_float_against_mpmath_and_the_array_path(m1):
+    """ellipj of one float (math only) against mpmath's ellipfun at 40 digits with m = 1 − m1
+    exact, and against the array path (the same algorithm on numpy).  sn, cn, dn lie in [−1, 1]
+    with |d/du| ≤ 1, and u is reduced modulo 4K (K to a few ulp), so the error bound is absolute,
+    k ε (1 + |u|): k = 16 against mpmath (the recursion and the reduction; 6.7 observed), k = 2
+    between the backends (libm's and numpy's sin/arcsin may differ by an ulp; 0.3 observed)."""
+    us = [float(u) for u in np.linspace(-40.0, 40.0, 33)] + [1e-300, 3.0e4, -7.0e5]
+    with mp.workdps(40):
+        mm = 1 - mp.mpf(m1)
+        m = float(mm)
+        arrays = E.ellipj(np.array(us), m, float(m1))
+        for i, u in enumerate(us):
+            got = E.ellipj(u, m, float(m1))
+            assert all(type(g) is float for g in got)
+            for k, name in enumerate(("sn", "cn", "dn")):
+                ref = float(mp.ellipfun(name, mp.mpf(u), m=mm))
+                assert abs(got[k] - ref) <= 16 * EPS * (1 + abs(u)), (name, u)
+                assert abs(got[k] - arrays[k][i]) <= 2 * EPS * (1 + abs(u)), (name, u)
+
+
+def test_float_paths_import_no_numpy():
+    import subprocess
+    import sys
+
+    code = ("import sys, dyncli.elliptic as E\nE.ellipj(3.0, 0.7, 0.3); E.ellipj(3.0, 1.0, 0.0); E.ellipK(0.5, 0.5)\n"
+            "E.elliprf(1.0, 2.0, 3.0); E.elliprj(1.0, 2.0, 3.0, 4.0); E.elliprc(1.0, -2.0)\n"
+            "print('numpy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.stdout.strip() == "False", out.stderr
 
 
 def test_no_scipy():

@@ -111,11 +111,11 @@ def test_closed_forms_import_neither_scipy_nor_sympy(tmp_path):
     assert not bad, "\n".join(bad)
 
 
-#: closed-form types whose example problems are solved in plain floats (dyncli.vec3,
-#: dyncli.direction): solving them never imports numpy (issue 19, cold start)
-NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "impact", "inertia", "motor-bodies", "particles",
-              "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity", "rotating-frame", "screw",
-              "spin-change", "vibration")
+#: closed-form (or exact) types whose example problems are solved in plain floats (dyncli.vec3,
+#: dyncli.direction, dyncli.elliptic's float paths): solving them never imports numpy (issue 19, cold start)
+NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "euler", "gyroscope", "impact", "inertia", "motor-bodies",
+              "particles", "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity",
+              "rotating-frame", "screw", "spin-change", "vibration")
 
 _SOLVE_NUMPY_FREE = """
 import json, sys
@@ -140,7 +140,17 @@ def test_numpy_free_closed_forms_import_no_numpy():
     assert all(files), "every NUMPY_FREE type declares an example"
     code = "import sys\nsys.argv = ['x'] + " + repr(files) + "\n" + _SOLVE_NUMPY_FREE
     recs = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
-    assert recs and all(m == "closed-form" for r in recs for _, m in r["methods"]), recs
+    assert recs and all(m in FORMULA_ROUTES for r in recs for _, m in r["methods"]), recs
     bad = [r["file"] for r in recs if r["numpy"]]
     assert not bad, f"{bad[0]} ({', '.join(sorted({t for t, _ in recs[-1]['methods']}))}) imported numpy"
     assert len(recs) == len(files)
+
+
+def test_top_without_times_imports_no_numpy(tmp_path):
+    """The top without `at` (EXTRA: its nutation bounds only, by the exact route) is solved in plain
+    floats: the nutation cubic's roots by the Nutation constants, no evaluation (issue 19)."""
+    f = tmp_path / "top-no-at.yaml"
+    f.write_text(EXTRA["top-no-at.yaml"])
+    code = "import sys\nsys.argv = ['x', " + repr(str(f)) + "]\n" + _SOLVE_NUMPY_FREE
+    [rec] = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
+    assert rec["methods"] == [["top", "exact"]] and not rec["numpy"], rec

@@ -1,4 +1,6 @@
-"""Exact motion of the torque-free rigid body (numpy only).
+"""Exact motion of the torque-free rigid body, no scipy: ω at one time in plain floats (math,
+no numpy import), or at an array of times with numpy (the same formulas on either backend,
+:data:`dyncli.backends.FLOAT_OPS` or numpy).
 
 * Axisymmetric body (two equal principal moments): (39.14)-(39.22).
 * Asymmetric body: Jacobi elliptic functions.  With the moments sorted so
@@ -21,8 +23,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
+from dyncli.backends import FLOAT_OPS, ops_for
 from dyncli.elliptic import ellipj, ellipK
 
 EQUAL_TOL = 1e-13
@@ -108,12 +109,22 @@ class Asymmetric:
             return None
         return 4.0 * ellipK(self.m, self.m1) / abs(self.lam)
 
-    def omega(self, t) -> np.ndarray:
-        t = np.asarray(t, dtype=float)
-        out = np.empty(t.shape + (3,))
+    def omega(self, t):
+        """ω at t (body components): a float gives a tuple of 3 floats (no numpy), an array
+        (shape S) an array of shape S + (3,)."""
+        xp = ops_for(t)
+        t = float(t) if xp is FLOAT_OPS else xp.asarray(t, dtype=float)
         if self.constant:
-            out[...] = self.w0
-            return out
+            return _assemble(xp, t, dict(enumerate(self.w0)))
+        try:
+            comps = self._components(xp, t)
+        except ZeroDivisionError:      # plain floats, constants beyond doubles: nan, as numpy gives
+            comps = (math.nan, math.nan, math.nan)
+        s = self.sign
+        return _assemble(xp, t, {k: s * comp for comp, k in zip(comps, self.perm)})
+
+    def _components(self, xp, t):
+        """(ω_A, ω_B, ω_C) at t, on the backend xp (floats or numpy)."""
         m = self.m
         s0, c0, d0 = self.s0, self.c0, self.d0
         if self.m1 == 0.0:
@@ -122,8 +133,8 @@ class Asymmetric:
             flip = -1.0 if c0 < 0 else 1.0
             u0 = math.asinh(s0 / abs(c0)) if c0 != 0 else math.copysign(math.inf, s0)
             u = u0 + flip * self.lam * t
-            with np.errstate(over="ignore"):
-                sn, cn = np.tanh(u), 1.0 / np.cosh(u)
+            with xp.errstate(over="ignore"):
+                sn, cn = xp.tanh(u), 1.0 / xp.cosh(u)
             cn, dn = flip * cn, cn
         else:
             sv, cv, dv = ellipj(self.lam * t, m, self.m1)
@@ -132,20 +143,27 @@ class Asymmetric:
             if mu == 0.0:
                 mu = 1.0
             c0h, d0h = c0 / mu, d0 / mu
-            nu = np.maximum(np.abs(cv), np.abs(dv))
-            kappa = np.maximum(nu, mu)
-            nuh = np.where(nu > 0, nu, 1.0)
+            nu = xp.maximum(xp.abs(cv), xp.abs(dv))
+            kappa = xp.maximum(nu, mu)
+            nuh = xp.where(nu > 0, nu, 1.0)
             cvh, dvh = cv / nuh, dv / nuh
             x, y = mu / kappa, nu / kappa
             den = x * x * d0h * d0h + m * s0 * s0 * y * y * cvh * cvh      # = (1 − m s0² sv²)/κ²
             sn = (y * y * s0 * cvh * dvh + x * x * sv * c0h * d0h) / den
             cn = x * y * (c0h * cvh - s0 * sv * d0h * dvh) / den
             dn = x * y * (d0h * dvh - m * s0 * sv * c0h * cvh) / den
-        wA, wB, wC = self.a * cn, self.b * sn, self.sigma * self.c * dn
-        s = self.sign
-        for comp, k in zip((wA, wB, wC), self.perm):
-            out[..., k] = s * comp
-        return out
+        return self.a * cn, self.b * sn, self.sigma * self.c * dn
+
+
+def _assemble(xp, t, comps):
+    """ω from its components by body axis ({0: ω₁, 1: ω₂, 2: ω₃}): a tuple for a float t, else
+    an array of shape t.shape + (3,)."""
+    if xp is FLOAT_OPS:
+        return tuple(float(comps[k]) for k in range(3))
+    out = xp.empty(t.shape + (3,))
+    for k in range(3):
+        out[..., k] = comps[k]
+    return out
 
 
 class Axisymmetric:
@@ -166,15 +184,15 @@ class Axisymmetric:
         self.psi_dot = self.alpha * math.hypot(*lam_vec)    # (39.20); hypot: no overflow of the squares
         self.theta = math.atan2(math.hypot(w01, w02), abs(lam_vec[2]))   # (39.21)
 
-    def omega(self, t) -> np.ndarray:
-        t = np.asarray(t, dtype=float)
+    def omega(self, t):
+        """ω at t, as :meth:`Asymmetric.omega`."""
+        xp = ops_for(t)
+        t = float(t) if xp is FLOAT_OPS else xp.asarray(t, dtype=float)
         w01, w02, w03 = self.w
-        c, s = np.cos(self.lam * t), np.sin(self.lam * t)
-        out = np.empty(t.shape + (3,))
-        out[..., self.i1] = w01 * c - w02 * s               # (39.17a)
-        out[..., self.i2] = w01 * s + w02 * c               # (39.17b)
-        out[..., self.k] = w03                              # (39.12)
-        return out
+        c, s = xp.cos(self.lam * t), xp.sin(self.lam * t)
+        return _assemble(xp, t, {self.i1: w01 * c - w02 * s,          # (39.17a)
+                                 self.i2: w01 * s + w02 * c,          # (39.17b)
+                                 self.k: w03})                        # (39.12)
 
 
 def symmetry_axis(I) -> int | None:

@@ -10,19 +10,19 @@
 * With ``M(t)`` the work ∫M·ω dt and ∫2H·M dt are integrated alongside ω so
   that ``drift`` measures the error of the energy and momentum balances
   (T − T₀ = ∫M·ω dt, |H|² − H₀² = ∫2H·M dt).
+
+The closed form at the requested times runs in plain floats (no numpy import, issue 19's cold
+start); numpy and the integrator are imported by the ODE routes only.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from dyncli.errors import InputError
+from dyncli import vec3
+from dyncli.errors import InputError, NumericalError
 from dyncli.result import FrameTable, Result, Series, SolveOptions
-from dyncli import ode
 from dyncli.topics.euler import free
-from dyncli.topics.euler.equations import energy_momentum
 
 BASIS1 = ("e'₁", "e'₂", "e'₃")
 
@@ -50,75 +50,102 @@ def make_projector(I, H0, T0):
                 f = math.sqrt(TT / (I1 * w1 * w1 + I2 * w2 * w2 + I3 * w3 * w3))
                 w1, w2, w3 = w1 * f, w2 * f, w3 * f
                 break
-        out = np.array(y, dtype=float)
+        out = y.astype(float)
         out[:3] = (w1, w2, w3)
         return out
 
     return project
 
 
+def energy_momentum(I, w) -> tuple[float, float]:
+    """(|H̄|, T) of one ω in plain floats (the operations of
+    :func:`dyncli.topics.euler.equations.energy_momentum`, in its order)."""
+    h1, h2, h3 = I[0] * w[0], I[1] * w[1], I[2] * w[2]
+    return (math.sqrt(h1 * h1 + h2 * h2 + h3 * h3),
+            0.5 * (h1 * w[0] + h2 * w[1] + h3 * w[2]))
+
+
+def _drifts(I, W, H0, T0) -> tuple[float, float]:
+    """The largest relative change of |H̄| and T over the rows of W."""
+    HT = [energy_momentum(I, w) for w in W]
+    drift_H = max(abs(h - H0) for h, _ in HT) / H0 if H0 > 0 and HT else 0.0
+    drift_T = max(abs(t - T0) for _, t in HT) / T0 if T0 > 0 and HT else 0.0
+    return drift_H, drift_T
+
+
 def solve(pb, options: SolveOptions | None = None) -> Result:
-    I = np.array(pb.moments(), dtype=float)
-    w0 = np.array(pb.omega0, dtype=float)
-    times = np.asarray(pb.at, dtype=float)
+    I = tuple(float(v) for v in pb.moments())
+    w0 = tuple(float(v) for v in pb.omega0)
+    times = [float(t) for t in pb.at]
     res = Result({}, equations=["39.5"])
     method = pb.accuracy.method
     if pb.coin is not None:
         res.equations.append("39.10")
-    H0, T0 = (float(x) for x in energy_momentum(I, w0))
+    H0, T0 = energy_momentum(I, w0)
+    if not (math.isfinite(H0) and math.isfinite(T0)):
+        raise InputError(f"omega0 with these moments gives |H̄| = {H0:.3g} kg·m²/s, T = {T0:.3g} J: beyond a "
+                         "double (~1e308); rescale the units", "omega0")
     torque_free = pb.M is None or all(e.is_constant and e.value() == 0.0 for e in pb.M)
     exact = free.exact(I, w0) if torque_free else None
     r = res.results
     if pb.coin is not None:
-        r["I"] = I.tolist()
+        r["I"] = list(I)
     if torque_free and method in ("auto", "closed-form"):
-        W = exact.omega(times)
+        W = [exact.omega(t) for t in times]
+        if not all(vec3.finite(w) for w in W):
+            raise NumericalError("the exact torque-free solution is not representable in doubles at these "
+                                 "magnitudes (its elliptic constants overflow): rescale the units")
         res.method = "closed-form"
-        Ht, Tt = energy_momentum(I, W)
-        drift_H = float(np.max(np.abs(Ht - H0)) / H0) if H0 > 0 and len(times) else 0.0
-        drift_T = float(np.max(np.abs(Tt - T0)) / T0) if T0 > 0 and len(times) else 0.0
+        drift_H, drift_T = _drifts(I, W, H0, T0)
     elif method == "closed-form":
         raise InputError("the closed form is for torque-free bodies; remove M or use auto/an ODE method", "accuracy.method")
     else:
         W, drift_H, drift_T = _integrate(pb, I, w0, times, res, exact, H0, T0)
     if exact is not None:
         res.extra["sample"] = exact.omega         # the exact torque-free ω(t), for plots
-    r["omega"] = W.tolist()
+    r["omega"] = [list(w) for w in W]
     r["H"] = H0
-    if torque_free:
-        r["T"] = T0
-    else:
-        r["T"] = T0
-        Ht, Tt = energy_momentum(I, W)
-        r["H_t"] = Ht.tolist()
-        r["T_t"] = Tt.tolist()
+    r["T"] = T0
+    if not torque_free:
+        HT = [energy_momentum(I, w) for w in W]
+        r["H_t"] = [h for h, _ in HT]
+        r["T_t"] = [t for _, t in HT]
         res.warn("with an applied moment H and T are the initial values; H_t and T_t give them at the requested times")
-    if torque_free:
-        if isinstance(exact, free.Axisymmetric):
-            res.equations += ["39.12", "39.15", "39.17", "39.18", "39.20", "39.21", "39.22"]
-            r["lambda"] = exact.lam
-            r["psi_dot"] = exact.psi_dot
-            r["theta"] = exact.theta
-            r["symmetry_axis"] = exact.k + 1
-            if exact.w[2] == 0.0:
-                res.warn("ω'₀₃ = 0: α in (39.20) is taken as +1 (θ = π/2, the body tumbles end over end)")
-        else:
-            r["m"] = exact.m
-            per = exact.period
-            r["period"] = per
-            if per is None:
-                res.warn("period is null: ω is constant or the motion lies on the separatrix (infinite period)")
+    else:
+        _torque_free_results(res, exact)
     r["drift"] = max(drift_H, drift_T)
     r["drift_detail"] = {"H": drift_H, "T": drift_T}
-    if len(times):
-        res.series.append(Series("t", times.tolist(), ["omega"] + ([] if torque_free else ["H_t", "T_t"])))
-        res.views.append(_table_39_1(pb, I, W[0], float(times[0])))
+    if times:
+        res.series.append(Series("t", times, ["omega"] + ([] if torque_free else ["H_t", "T_t"])))
+        M = (0.0, 0.0, 0.0) if torque_free else _moment(pb, times[0])
+        res.views.append(_table_39_1(I, W[0], M, times[0]))
     return res
 
 
-def _sample_steps(steps, ts) -> np.ndarray:
+def _torque_free_results(res, exact):
+    """λ, ψ̇, θ of (39.15)-(39.21) (axisymmetric) or m and the period (asymmetric)."""
+    r = res.results
+    if isinstance(exact, free.Axisymmetric):
+        res.equations += ["39.12", "39.15", "39.17", "39.18", "39.20", "39.21", "39.22"]
+        r["lambda"] = exact.lam
+        r["psi_dot"] = exact.psi_dot
+        r["theta"] = exact.theta
+        r["symmetry_axis"] = exact.k + 1
+        if exact.w[2] == 0.0:
+            res.warn("ω'₀₃ = 0: α in (39.20) is taken as +1 (θ = π/2, the body tumbles end over end)")
+    else:
+        r["m"] = exact.m
+        per = exact.period
+        r["period"] = per
+        if per is None:
+            res.warn("period is null: ω is constant or the motion lies on the separatrix (infinite period)")
+
+
+def _sample_steps(steps, ts):
     """ω at ``ts`` (N x 3) from the interpolants of the accepted steps; NaN
     outside the integrated span."""
+    import numpy as np
+
     ts = np.asarray(ts, dtype=float)
     out = np.full((ts.size, 3), np.nan)
     if not steps:
@@ -135,23 +162,28 @@ def _sample_steps(steps, ts) -> np.ndarray:
 
 
 def _moment(pb, t):
-    if pb.M is None:
-        return np.zeros(3)
-    return np.array([float(np.asarray(e(t=t), dtype=float)) for e in pb.M])
+    """The applied moment M(t) (body components, floats)."""
+    return tuple(float(e(t=t)) for e in pb.M)
 
 
-def _table_39_1(pb, I, w, t):
-    w = np.asarray(w, dtype=float)
-    H = I * w
-    M = _moment(pb, t)
-    wxH = np.cross(w, H)
-    dH = M - wxH                                   # I ω̇ from (39.5)
-    rows = [("ω", w.tolist()), ("H̄", H.tolist()), ("δH̄/δt", dH.tolist()), ("ω×H̄", wxH.tolist()),
-            ("Ḣ = M̄", (dH + wxH).tolist())]
+def _table_39_1(I, w, M, t):
+    w = tuple(float(x) for x in w)
+    H = (I[0] * w[0], I[1] * w[1], I[2] * w[2])
+    wxH = vec3.cross(w, H)
+    dH = vec3.sub(M, wxH)                          # I ω̇ from (39.5)
+    rows = [("ω", list(w)), ("H̄", list(H)), ("δH̄/δt", list(dH)), ("ω×H̄", list(wxH)),
+            ("Ḣ = M̄", list(vec3.add(dH, wxH)))]
     return FrameTable(f"Table 39.1 at t = {t:.6g} s", rows, basis=BASIS1)
 
 
 def _integrate(pb, I, w0, times, res, exact, H0, T0):
+    """ω at ``times`` integrated (rows of floats), and the drifts of |H̄| and T."""
+    import numpy as np
+
+    from dyncli import ode
+
+    w0 = np.array(w0, dtype=float)
+    times = np.asarray(times, dtype=float)
     method = pb.accuracy.method
     m = "DOP853" if method in ("auto", "projected") else method
     rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
@@ -183,7 +215,7 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
         res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0
     else:                           # the largest relative drift of H and T
         ode.nominal_estimate(res, rtol, drift.worst_H, drift.worst_T, steps=nsteps)
-    return W, drift.worst_H, drift.worst_T
+    return W.tolist(), drift.worst_H, drift.worst_T
 
 
 class _Drift:
@@ -243,6 +275,8 @@ def _rhs(I, M, w0):
     (the same operations, in the same order, as :func:`euler_rates`); with an applied moment M
     the state carries the work of M and the change of |H|², y = [ω, W_M, |H|² − |H₀|²], to check
     the two balances."""
+    import numpy as np
+
     I1, I2, I3 = (float(v) for v in I)
     j1, j2, j3 = 1.0 / I1, 1.0 / I2, 1.0 / I3
     if M is None:

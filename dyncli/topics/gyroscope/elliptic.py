@@ -24,19 +24,19 @@ when the motion reaches z = ∞ but not z = 0.  With x0 = z0² the motion is one
 m < 0 (a gyroscope spinning against the turntable, a circulation with real roots)
 goes through the imaginary-modulus transformation to parameter −m/(1 − m) ∈ [0, 1).
 sn, cn, dn come from the AGM of dyncli.elliptic with 1 − m given exactly
-(next to the separatrix, m → 1), the phase u0 from Carlson's R_F (dyncli.elliptic, numpy
-only: no scipy on this route).  The argument is
-reduced modulo the period, so each requested time costs the same whatever t.
+(next to the separatrix, m → 1), the phase u0 from Carlson's R_F (dyncli.elliptic: no scipy
+on this route).  The argument is reduced modulo the period, so each requested time costs the
+same whatever t.  One time is evaluated in plain floats (no numpy import), an array of times
+(plots) with numpy: the same formulas on either backend.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from dyncli.elliptic import elliprf as _rf
+from dyncli.backends import FLOAT_OPS, ops_for
 from dyncli.elliptic import ellipj
+from dyncli.elliptic import elliprf as _rf
 
 
 def ellipj_any(u, m: float, m1: float):
@@ -45,7 +45,7 @@ def ellipj_any(u, m: float, m1: float):
         return ellipj(u, m, m1)
     mu, mu1 = -m / m1, 1.0 / m1
     r = math.sqrt(m1)
-    s, c, d = ellipj(np.asarray(u, dtype=float) * r, mu, mu1)
+    s, c, d = ellipj(u * r, mu, mu1)
     return s / (d * r), c / d, 1.0 / d
 
 
@@ -184,17 +184,17 @@ class GyroTheta:
         n = 2.0 if self.kind == "band" else 4.0
         return n * self.K / self.lam
 
-    def phase(self, t):
-        """λ t (for the round-off estimate)."""
-        return self.lam * np.abs(np.asarray(t, dtype=float))
-
     def evaluate(self, t):
-        """θ(t), θ̇(t) arrays (the initial state itself at t = 0)."""
-        t = np.asarray(t, dtype=float)
+        """θ(t), θ̇(t): floats for a float t (no numpy), else arrays (the initial state itself
+        at t = 0)."""
+        xp = ops_for(t)
+        t = float(t) if xp is FLOAT_OPS else xp.asarray(t, dtype=float)
         if self.kind == "steady":
-            return np.full_like(t, self.theta0), np.zeros_like(t)
+            if xp is FLOAT_OPS:
+                return self.theta0, 0.0
+            return xp.full_like(t, self.theta0), xp.zeros_like(t)
         if self.kind == "circulation":
-            th, thd = self._eval_circ(t)
+            th, thd = self._eval_circ(xp, t)
         else:
             u = self.lam * t + self.u0
             sn, cn, dn = ellipj_any(u, self.m, self.m1)
@@ -204,18 +204,17 @@ class GyroTheta:
             else:
                 z = self.sz * self.zh * dn
                 zd = -self.sz * self.zh * self.lam * self.m * sn * cn
-            th = self.offset + 2.0 * np.arctan(z)
+            th = self.offset + 2.0 * xp.arctan(z)
             thd = 2.0 * zd / (1.0 + z * z)
         at0 = t == 0
-        th[at0], thd[at0] = self.theta0, self.theta_dot0
-        return th, thd
+        return xp.where(at0, self.theta0, th), xp.where(at0, self.theta_dot0, thd)
 
-    def _eval_circ(self, t):
+    def _eval_circ(self, xp, t):
         u = self.sigma * self.lam * t + self.u0
         sn, cn, dn = ellipj_any(u, self.m, self.m1)
-        n = np.round(u / (4.0 * self.K)) if math.isfinite(self.K) else 0.0
-        phi = 2.0 * math.pi * n + np.arctan2(sn, cn)
+        n = xp.round(u / (4.0 * self.K)) if math.isfinite(self.K) else 0.0
+        phi = 2.0 * math.pi * n + xp.arctan2(sn, cn)
         bt = self.beta
-        chi = phi + 2.0 * np.arctan2((bt - 1.0) * sn, (1.0 + bt) + (1.0 - bt) * cn)
+        chi = phi + 2.0 * xp.arctan2((bt - 1.0) * sn, (1.0 + bt) + (1.0 - bt) * cn)
         dchi = 2.0 * bt / ((1.0 + bt * bt) + (1.0 - bt * bt) * cn)
         return self.offset + chi, dchi * self.sigma * self.lam * dn

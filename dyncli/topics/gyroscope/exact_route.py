@@ -15,39 +15,43 @@ for the top).
 
 from __future__ import annotations
 
-import numpy as np
+import math
+import sys
 
+from dyncli.backends import ops_for
 from dyncli.topics.gyroscope.elliptic import GyroTheta
 
-EPS = float(np.finfo(float).eps)
+EPS = sys.float_info.epsilon
 PHASE_FACTOR = 16.0
 
 
 def theta_dot_sq(I1, I2, p, q, th0, thd0, th):
-    """G(θ) of (37.15b) about the initial state: θ̇0² + a (s² − s0²) + b (s − s0)."""
+    """G(θ) of (37.15b) about the initial state: θ̇0² + a (s² − s0²) + b (s − s0) (θ a float or
+    an array)."""
     a, b = (I1 - I2) * q * q / I2, 2.0 * I1 * p * q / I2
-    s, s0 = np.sin(th), np.sin(th0)
+    s, s0 = ops_for(th).sin(th), math.sin(th0)
     return thd0 * thd0 + a * (s - s0) * (s + s0) + b * (s - s0)
 
 
 class ExactRun:
-    """θ, θ̇ at the requested times and the run's round-off estimate."""
+    """θ, θ̇ at the requested times (lists of floats: no numpy) and the run's round-off estimate."""
 
     def __init__(self, I1, I2, p, q, th0, thd0, times, steady=False):
         self.g = g = GyroTheta(I1, I2, p, q, th0, thd0, steady=steady)
-        t = np.asarray(times, dtype=float)
+        t = [float(x) for x in times]
         self.finite = g.finite
         if not self.finite:
             return
-        self.theta, self.theta_dot = g.evaluate(t)
-        self.finite = bool(np.all(np.isfinite(self.theta)) and np.all(np.isfinite(self.theta_dot)))
+        states = [g.evaluate(x) for x in t]
+        self.theta, self.theta_dot = [th for th, _ in states], [thd for _, thd in states]
+        self.finite = all(math.isfinite(th) and math.isfinite(thd) for th, thd in states)
         if not self.finite:
             return
         a, b = abs(g.a), abs(g.b)
         scale = thd0 * thd0 + 2.0 * a + 2.0 * b + 1e-300          # range of θ̇² over a motion
-        resid = np.abs(self.theta_dot ** 2 - theta_dot_sq(I1, I2, p, q, th0, thd0, self.theta))
-        self.drift = float(np.max(resid)) / scale if len(t) else 0.0
-        T = float(np.max(np.abs(t))) if len(t) else 0.0
+        resid = [abs(thd * thd - theta_dot_sq(I1, I2, p, q, th0, thd0, th)) for th, thd in states]
+        self.drift = max(resid) / scale if t else 0.0
+        T = max(abs(x) for x in t) if t else 0.0
         self.lam_T = g.lam * T
         self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * (1.0 + self.lam_T)) if T > 0 else 0.0
 
@@ -56,5 +60,7 @@ class ExactRun:
         return self.g.period
 
     def sample(self, ts):
-        """θ at any times (for plots)."""
+        """θ at any times (for plots: an array, numpy)."""
+        import numpy as np
+
         return self.g.evaluate(np.asarray(ts, dtype=float))[0]

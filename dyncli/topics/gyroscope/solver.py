@@ -14,29 +14,29 @@ dyncli.topics.gyroscope.elliptic; q = 0 has the closed form θ₀ + θ̇₀ t); 
 integrators (DOP853, ...) keep the ODE route as an independent cross-check.
 θ_min, θ_max are the turning points of (37.13): zeros of C − V(θ) on either
 side of θ₀, found from the roots of a quadratic in sin θ — not from samples.
+
+The exact and closed-form routes work in plain floats at the requested times (no numpy
+import, issue 19's cold start); numpy and the integrator are imported by the ODE route only.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.result import FrameTable, Result, Series, SolveOptions
-from dyncli import ode
 from dyncli.topics.gyroscope.elliptic import quadratic_roots
 
 BASIS2 = ("e''₁", "e''₂", "e''₃")
 
 
 def theta_ddot(I1, I2, p, q, th):
-    """(37.12) solved for θ̈."""
-    return ((I1 - I2) * q * q * np.sin(th) + I1 * p * q) * np.cos(th) / I2
+    """(37.12) solved for θ̈ (floats)."""
+    return ((I1 - I2) * q * q * math.sin(th) + I1 * p * q) * math.cos(th) / I2
 
 
 def first_integral(I1, I2, p, q, th, thd):
-    """C of (37.13)."""
-    s = np.sin(th)
+    """C of (37.13) (floats)."""
+    s = math.sin(th)
     return 0.5 * I2 * thd * thd + 0.5 * (I2 - I1) * q * q * s * s - I1 * p * q * s
 
 
@@ -52,12 +52,12 @@ def table_rows(I1, I2, p, q, th, thd, thdd):
 
 
 def moment(I1, I2, p, q, th, thd, thdd):
-    """M̄ = Ḣ (Table 37.1), vectorised; the e''₃ component vanishes by (37.11)."""
-    s, c = np.sin(th), np.cos(th)
+    """M̄ = Ḣ (Table 37.1) at one state, [M1, M2, M3]; the e''₃ component vanishes by (37.11)."""
+    s, c = math.sin(th), math.cos(th)
     m1 = I1 * q * thd * c
     m2 = -2.0 * I2 * q * thd * s + I1 * (q * s + p) * thd
     m3 = I2 * thdd + (I2 - I1) * q * q * s * c - I1 * p * q * c
-    return np.stack([m1, m2, m3], axis=-1)
+    return [m1, m2, m3]
 
 
 def _balanced(I1, I2, p, q, th0) -> bool:
@@ -122,7 +122,13 @@ def turning_points(I1, I2, p, q, th0, thd0):
 
 
 def _ode_route(pb, times, res):
-    """θ, θ̇ integrated (DOP853 by default), the drift of (37.13) and the method's estimate."""
+    """θ, θ̇ integrated (DOP853 by default; lists of floats), the drift of (37.13) and the
+    method's estimate."""
+    import numpy as np
+
+    from dyncli import ode
+
+    times = np.asarray(times, dtype=float)
     I1, I2, p, q = pb.I1, pb.I2, pb.p, pb.q
     th0, thd0 = pb.theta0, pb.theta_dot0
     m = ode.check_method("DOP853" if pb.accuracy.method in ("auto", "exact") else pb.accuracy.method,
@@ -155,7 +161,7 @@ def _ode_route(pb, times, res):
             res.error_estimate = ode.relative_difference([(Y[:, 0], Y2[:, 0]), (Y[:, 1], Y2[:, 1])], [math.pi, 0.0])
     else:
         ode.nominal_estimate(res, rtol, drift, steps=nsteps)
-    return Y[:, 0], Y[:, 1], drift
+    return Y[:, 0].tolist(), Y[:, 1].tolist(), drift
 
 
 def _exact_route(pb, times, res, steady):
@@ -181,17 +187,22 @@ def _exact_route(pb, times, res, steady):
 def solve(pb, options: SolveOptions | None = None) -> Result:
     I1, I2, p, q = pb.I1, pb.I2, pb.p, pb.q
     th0, thd0 = pb.theta0, pb.theta_dot0
-    times = np.asarray(pb.at, dtype=float)
+    times = [float(t) for t in pb.at]
     res = Result({}, equations=["37.5", "37.6", "37.9", "37.12", "37.13", "37.15", "Table 37.1"])
     method = pb.accuracy.method
     tmin, tmax, C = turning_points(I1, I2, p, q, th0, thd0)
+    if not math.isfinite(C):
+        from dyncli.errors import InputError
+
+        raise InputError(f"the constant C of (37.13) is {C:.3g} J for these θ̇0, p, q and moments: beyond a double "
+                         "(~1e308); rescale the units", "theta_dot0")
     out = None
     if method in ("auto", "closed-form") and q == 0.0:
-        th = th0 + thd0 * times
-        thd = np.full_like(times, thd0)
+        th = [th0 + thd0 * t for t in times]
+        thd = [thd0 for _ in times]
         res.method = "closed-form"
         drift = 0.0
-        res.extra["sample"] = lambda ts: th0 + thd0 * np.asarray(ts, dtype=float)
+        res.extra["sample"] = lambda ts: [th0 + thd0 * float(t) for t in ts]
     elif method == "closed-form":
         from dyncli.errors import InputError
 
@@ -201,15 +212,18 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
             out = _exact_route(pb, times, res, steady=tmin is not None and tmin == tmax)
         if out is None:
             th, thd, drift = _ode_route(pb, times, res)
-            res.extra["sample"] = lambda ts: _ode_route(pb, np.asarray(ts, dtype=float), Result({}))[0]
+            res.extra["sample"] = lambda ts: _ode_route(pb, ts, Result({}))[0]
         else:
             th, thd, drift = out
-    thdd = theta_ddot(I1, I2, p, q, th)
-    M = moment(I1, I2, p, q, th, thd, thdd)
+    if not all(math.isfinite(x) for x in th + thd):
+        from dyncli.errors import NumericalError
+
+        raise NumericalError("θ(t) is beyond a double at the requested times (|θ̇0 t| ~ 1e308): rescale the units")
+    thdd = [theta_ddot(I1, I2, p, q, x) for x in th]
     r = res.results
-    r["theta"] = th.tolist()
-    r["theta_dot"] = thd.tolist()
-    r["M"] = M.tolist()
+    r["theta"] = [float(x) for x in th]
+    r["theta_dot"] = [float(x) for x in thd]
+    r["M"] = [moment(I1, I2, p, q, *state) for state in zip(th, thd, thdd)]
     r["theta_min"] = tmin
     r["theta_max"] = tmax
     r["C"] = C
@@ -217,9 +231,8 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     if tmin is None:
         res.warn("θ circulates: C exceeds the largest value of V(θ) in (37.13), so there is no turning point; "
                  "theta_min and theta_max are null")
-    if len(times):
-        res.series.append(Series("t", times.tolist(), ["theta", "theta_dot", "M"]))
-        i = 0
-        res.views.append(FrameTable(f"Table 37.1 at t = {times[i]:.6g} s",
-                                    table_rows(I1, I2, p, q, float(th[i]), float(thd[i]), float(thdd[i])), basis=BASIS2))
+    if times:
+        res.series.append(Series("t", times, ["theta", "theta_dot", "M"]))
+        res.views.append(FrameTable(f"Table 37.1 at t = {times[0]:.6g} s",
+                                    table_rows(I1, I2, p, q, th[0], thd[0], thdd[0]), basis=BASIS2))
     return res

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.topics.top.kinematics import Top
 
 BASIS = ("e''₁", "e''₂", "e''₃")
@@ -14,7 +12,9 @@ BASIS = ("e''₁", "e''₂", "e''₃")
 
 
 def rates(top: Top, theta, phi, w):
-    """ψ̇, θ̇, φ̇ and S = ψ̇ sinθ from body ω (38.11b); ψ̇ = nan where sinθ = 0."""
+    """ψ̇, θ̇, φ̇ and S = ψ̇ sinθ from body ω (38.11b); ψ̇ = nan where sinθ = 0 (arrays)."""
+    import numpy as np
+
     c, s = np.cos(phi), np.sin(phi)
     th_dot = w[:, 0] * c - w[:, 1] * s
     S = w[:, 0] * s + w[:, 1] * c
@@ -26,7 +26,9 @@ def rates(top: Top, theta, phi, w):
 
 
 def reaction(top: Top, theta, phi, w):
-    """R = mg e3 + m ā (38.16a) on e'', with ā = ω̇ × x̄ + ω × (ω × x̄), x̄ = L e'_3."""
+    """R = mg e3 + m ā (38.16a) on e'', with ā = ω̇ × x̄ + ω × (ω × x̄), x̄ = L e'_3 (arrays)."""
+    import numpy as np
+
     m, g, L = top.m, top.g, top.L
     w1, w2, w3 = w[:, 0], w[:, 1], w[:, 2]
     sth, cth = np.sin(theta), np.cos(theta)
@@ -47,23 +49,23 @@ def _cross(a, b):
 
 
 def table_381(top: Top, theta, psi_dot, theta_dot, omega3, S):
-    """Rows of the notes' Table 38.1 on e'' (numbers; None where undefined)."""
+    """Rows of the notes' Table 38.1 on e'' (numbers; None where undefined), in plain floats (an
+    overflow gives inf, which the rows show as None)."""
     A, C, L, mgL = top.A, top.C, top.L, top.mgL
     sth, cth = math.sin(theta), math.cos(theta)
-    with np.errstate(all="ignore"):
-        Om3 = psi_dot * cth
-        th_dd = S * psi_dot * cth - C / A * S * omega3 + mgL / A * sth          # (38.18a)
-        psdd_s = -2.0 * psi_dot * theta_dot * cth + C / A * omega3 * theta_dot  # ψ̈ sinθ (38.18b)
-        Om = [theta_dot, S, Om3]
-        H = [A * theta_dot, A * S, C * omega3]
-        dH = [A * th_dd, A * (psdd_s + psi_dot * theta_dot * cth), 0.0]
-        OxH = _cross(Om, H)
-        Hdot = [dH[i] + OxH[i] for i in range(3)]
-        xb = [0.0, 0.0, L]
-        vb = [L * S, -L * theta_dot, 0.0]
-        ab = [L * psdd_s + 2 * L * psi_dot * theta_dot * cth,
-              -L * th_dd + L * S * psi_dot * cth,
-              -L * theta_dot ** 2 - L * S * S]
+    Om3 = psi_dot * cth
+    th_dd = S * psi_dot * cth - C / A * S * omega3 + mgL / A * sth          # (38.18a)
+    psdd_s = -2.0 * psi_dot * theta_dot * cth + C / A * omega3 * theta_dot  # ψ̈ sinθ (38.18b)
+    Om = [theta_dot, S, Om3]
+    H = [A * theta_dot, A * S, C * omega3]
+    dH = [A * th_dd, A * (psdd_s + psi_dot * theta_dot * cth), 0.0]
+    OxH = _cross(Om, H)
+    Hdot = [dH[i] + OxH[i] for i in range(3)]
+    xb = [0.0, 0.0, L]
+    vb = [L * S, -L * theta_dot, 0.0]
+    ab = [L * psdd_s + 2 * L * psi_dot * theta_dot * cth,
+          -L * th_dd + L * S * psi_dot * cth,
+          -L * theta_dot * theta_dot - L * S * S]
 
     def clean(v):
         return [float(x) + 0.0 if x is not None and math.isfinite(x) else None for x in v]

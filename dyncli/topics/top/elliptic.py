@@ -23,7 +23,7 @@ follow from the integrals H_O·e3 and ω3 (partial fractions):
     B = b − c = (H·e3 − I33ω3)/I11,   B' = b + c,
 
 and ψ, φ from ∫dτ/v and ∫dτ/w, elliptic integrals of the third kind written in
-Carlson's symmetric forms (dyncli.elliptic's elliprf/elliprj/elliprc, numpy only): with s = sn τ,
+Carlson's symmetric forms (dyncli.elliptic's elliprf/elliprj/elliprc, no scipy): with s = sn τ,
 c = cn τ, d = dn τ,
 
     v2 ∫dτ/v = F − (ν + m)/3 s³ R_J(c², d², 1, 1 + νs²),      ν = k/v2 (ν ≤ 1)
@@ -42,13 +42,12 @@ there (ψ ± π with φ ∓ π at θ = 0, φ ± π at θ = π), as the orientati
 from __future__ import annotations
 
 import math
-
-import numpy as np
+import sys
 
 from dyncli.elliptic import ellipj, elliprc, elliprf, elliprj
 from dyncli.topics.top.rootfind import brent as _brent
 
-EPS = float(np.finfo(float).eps)
+EPS = sys.float_info.epsilon
 
 
 def _polish(coef, x, lo, hi, iters=12):
@@ -241,7 +240,15 @@ class ExactTop:
         self.np_m = m1 * n.delta / n.w2        # n' − m, without cancellation
         self.one_np = m1 * n.w1 / n.w2
         self.Jc = self._J(1.0, 0.0, m1)          # the complete integrals (τ = K), plain floats
-        self.J0 = self._at_phase(np.array([self.tau0]))[1]
+        self._J0 = None                          # the integrals at τ0: when first evaluated (numpy)
+
+    @property
+    def J0(self):
+        if self._J0 is None:
+            import numpy as np
+
+            self._J0 = self._at_phase(np.array([self.tau0]))[1]
+        return self._J0
 
     def _J(self, s, c, d2):
         if self.nu == math.inf:          # v2 = 0: the B/v term is absent (B = 0)
@@ -253,6 +260,8 @@ class ExactTop:
     def _at_phase(self, tau):
         """(sn, cn, dn) at τ and (Jv, Jw, Jd) from τ = 0, whole periods included (sn, cn, dn
         by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix)."""
+        import numpy as np
+
         P, K, m1 = 2.0 * self.K, self.K, self.nut.m1
         nper = np.round(tau / P)
         r = tau - nper * P
@@ -272,6 +281,8 @@ class ExactTop:
     def evaluate(self, t):
         """Arrays psi, theta, phi, psi_dot, theta_dot, phi_dot, S (= ψ̇ sinθ) at times t
         (the initial state itself at t = 0)."""
+        import numpy as np
+
         t = np.asarray(t, dtype=float)
         out = [np.array(a, dtype=float) for a in (self._steady(t) if self.steady else self._moving(t))]
         at0 = t == 0
@@ -283,6 +294,8 @@ class ExactTop:
         return tuple(out)
 
     def _moving(self, t):
+        import numpy as np
+
         n = self.nut
         tau = n.lam * t + self.tau0
         (sn, cn, dn), J = self._at_phase(tau)
@@ -327,6 +340,8 @@ class ExactTop:
     def _rates(self, psi, theta, phi, theta_dot, v, w, x):
         """ψ̇ = (b − cu)/(vw) = (P − c x)/(vw) or ½(B/v + B'/w), whichever has the smaller
         round-off there (the first for a fast top, the second next to a pole); φ̇, ψ̇ sinθ."""
+        import numpy as np
+
         n = self.nut
         with np.errstate(divide="ignore", invalid="ignore"):
             bv = np.where(v > 0, n.B / v, 0.0) if n.B != 0 else np.zeros_like(v)
@@ -346,6 +361,8 @@ class ExactTop:
 
     def _steady(self, t):
         """Constant θ (steady precession, a sleeping top): ψ̇, φ̇ constant."""
+        import numpy as np
+
         n = self.nut
         v = np.full_like(t, n.v0)
         w = np.full_like(t, n.w0)

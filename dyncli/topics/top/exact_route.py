@@ -17,8 +17,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.errors import NumericalError
 from dyncli.topics.top.derived import reaction
 from dyncli.topics.top.elliptic import EPS, ExactTop
@@ -37,10 +35,17 @@ class ExactRun:
         except RuntimeError:     # the nutation cubic's root search did not converge (a degenerate top
             self.finite = False  # ~1e-30 rad from the vertical): the caller takes the ODE route
             return
-        t = np.asarray(times, dtype=float)
         self.finite = ex.nut.finite
         if not self.finite:
             return
+        if not len(times):       # the bounds only: no evaluation, no numpy
+            self._bounds(theta0)
+            self.psi = self.theta = self.phi = self.psi_dot = self.theta_dot = self.phi_dot = self.S = self.w = []
+            self.passes, self.drift, self.lam_T, self.error_estimate = [], 0.0, 0.0, 0.0
+            return
+        import numpy as np
+
+        t = np.asarray(times, dtype=float)
         (self.psi, self.theta, self.phi, self.psi_dot, self.theta_dot,
          self.phi_dot, self.S) = ex.evaluate(t)
         # a parameter beyond doubles (1 − m underflowing next to the separatrix, θ0 within ~1e-153 rad
@@ -52,14 +57,19 @@ class ExactRun:
         W3 = ex.omega3
         w = np.column_stack([self.theta_dot, self.S, np.full_like(t, W3)])
         self.w = w
-        n = ex.nut
-        self.theta_min = n.theta_min if not ex.sleeping else theta0
-        self.theta_max = n.theta_max if not ex.sleeping else theta0
+        self._bounds(theta0)
         self.passes = [] if ex.steady else self._passages(t)
         self._residuals(top, t, w)
 
+    def _bounds(self, theta0):
+        n, ex = self.ex.nut, self.ex
+        self.theta_min = n.theta_min if not ex.sleeping else theta0
+        self.theta_max = n.theta_max if not ex.sleeping else theta0
+
     def _passages(self, t):
         """First time in the run at which the axis passes exactly through the vertical."""
+        import numpy as np
+
         ex, n = self.ex, self.ex.nut
         P = 2.0 * ex.K
         out = []
@@ -73,6 +83,8 @@ class ExactRun:
 
     def _residuals(self, top, t, w):
         """drift and error_estimate (module docstring)."""
+        import numpy as np
+
         A, C, mgL = top.A, top.C, top.mgL
         ex, n = self.ex, self.ex.nut
         W3 = ex.omega3
@@ -116,10 +128,9 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
             raise NumericalError(msg + ": use accuracy.method DOP853")
         res.warn(msg + "; solved by the ODE route (DOP853)")
         return None
-    phi_p = np.zeros(len(times))
-    R = reaction(top, ex.theta, phi_p, ex.w) if len(times) else np.zeros((0, 3))
+    R = reaction(top, ex.theta, [0.0] * len(times), ex.w) if len(times) else []
     res.method = "exact"
-    res.extra["sample"] = lambda ts: ex.ex.evaluate(np.asarray(ts, dtype=float))[:2]      # (ψ, θ), for plots
+    res.extra["sample"] = lambda ts: ex.ex.evaluate(_array(ts))[:2]      # (ψ, θ), for plots
     res.error_estimate = float(ex.error_estimate) if len(times) else None
     res.extra["error_estimate_note"] = (
         "round-off of the elliptic solution: the larger of ε·16(1 + λt + periods) (the phase λt + τ0 "
@@ -133,3 +144,10 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
                  "nutation period): there ψ and φ are individually undefined and the 3-1-3 angles jump by π "
                  "(ψ + π with φ ∓ π); the orientation is continuous")
     return ex.psi, ex.theta, ex.phi, ex.psi_dot, ex.theta_dot, ex.phi_dot, ex.S, R, ex.drift, []
+
+
+def _array(ts):
+    """Times as an array (numpy, imported here: the plots' dense sampling)."""
+    import numpy as np
+
+    return np.asarray(ts, dtype=float)

@@ -7,17 +7,17 @@ Nutation bounds: with u = cosθ, the energy and the two momentum integrals
 (H·e3 and ω3 = ψ̇ cosθ + φ̇) give u̇² = f(u) = (α − βu)(1 − u²) − (b − cu)²,
 a cubic; θ_min, θ_max are its roots around u0 = cosθ0.  The cubic is formed
 about u0 (its constant term (θ̇0 sinθ0)² exact), solved with numpy.roots and
-polished in v = 1 − u or w = 1 + u near the poles.
+polished in v = 1 − u or w = 1 + u near the poles.  Plain floats except the root finding
+(numpy, imported there: the exact route of a top without times never needs it).
 """
 
 from __future__ import annotations
 
 import math
-
-import numpy as np
+import sys
 
 TWO_PI = 2.0 * math.pi
-EPS = float(np.finfo(float).eps)
+EPS = sys.float_info.epsilon
 #: sinθ below this: ψ and φ individually undefined (only ψ ± φ)
 S_TINY = 1e-12
 
@@ -32,18 +32,18 @@ def _wrap(x: float) -> float:
 # kinematics of the representation
 
 
-def quat_from_euler(psi: float, theta: float, phi: float) -> np.ndarray:
+def quat_from_euler(psi: float, theta: float, phi: float) -> tuple[float, float, float, float]:
     """Unit quaternion of Rz(ψ) Rx(θ) Rz(φ) (columns = body axes, 38.6-38.7)."""
     ch, sh = math.cos(theta / 2), math.sin(theta / 2)
     s2, d2 = (psi + phi) / 2, (psi - phi) / 2
-    return np.array([ch * math.cos(s2), sh * math.cos(d2), sh * math.sin(d2), ch * math.sin(s2)])
+    return (ch * math.cos(s2), sh * math.cos(d2), sh * math.sin(d2), ch * math.sin(s2))
 
 
-def body_omega(theta, phi, psi_dot, theta_dot, phi_dot) -> np.ndarray:
+def body_omega(theta, phi, psi_dot, theta_dot, phi_dot) -> tuple[float, float, float]:
     """Body components of ω = θ̇ e''_1 + ψ̇ sinθ e''_2 + (ψ̇ cosθ + φ̇) e''_3 (38.11b)."""
     o1, o2, o3 = theta_dot, psi_dot * math.sin(theta), psi_dot * math.cos(theta) + phi_dot
     c, s = math.cos(phi), math.sin(phi)
-    return np.array([o1 * c + o2 * s, -o1 * s + o2 * c, o3])
+    return (o1 * c + o2 * s, -o1 * s + o2 * c, o3)
 
 
 def gamma(q) -> tuple[float, float, float]:
@@ -136,6 +136,8 @@ class Top:
                               q2 + q0 * d2 + q3 * d1 - q1 * d3, q3 + q0 * d3 + q1 * d2 - q2 * d1)
             n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
             q0, q1, q2, q3 = q0 / n, q1 / n, q2 / n, q3 / n
+        import numpy as np
+
         return np.array([q0, q1, q2, q3, w1, w2, w3])
 
 
@@ -145,6 +147,8 @@ class Top:
 
 def _newton(coef, x, lo, hi):
     """Polish a root of the polynomial ``coef`` (highest first) within [lo, hi]."""
+    import numpy as np
+
     p = np.poly1d(coef)
     dp = p.deriv()
     fx = abs(p(x))
@@ -160,25 +164,37 @@ def _newton(coef, x, lo, hi):
     return x
 
 
+def nutation_cubic(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3):
+    """The coefficients [β, F2, F1, F0] of f about u0 (x = u − u0) and (u0, v0, w0, K, P, β, c);
+    a coefficient that is not finite means the top overflows a double."""
+    s0, u0 = math.sin(theta0), math.cos(theta0)
+    v0 = 2.0 * math.sin(theta0 / 2) ** 2        # 1 − u0
+    w0 = 2.0 * math.cos(theta0 / 2) ** 2        # 1 + u0
+    K = _sq(theta_dot0) + _sq(psi_dot0 * s0)    # α − β u0 = |ω⊥|²
+    P = psi_dot0 * s0 * s0                      # b − c u0
+    beta = 2.0 * mgL / A
+    c = C * omega3 / A
+    F0 = _sq(theta_dot0 * s0)
+    F1 = -beta * s0 * s0 - 2.0 * u0 * K + 2.0 * c * P
+    F2 = 2.0 * beta * u0 - K - c * c
+    return [beta, F2, F1, F0], (u0, v0, w0, K, P, beta, c)
+
+
+def _sq(x: float) -> float:
+    """x² (inf on overflow, where x ** 2 of a float raises)."""
+    return x * x
+
+
 def turning_points(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3):
     """θ_min, θ_max of the nutation and the bound of |ω⊥|² over the motion.
 
     f(u) = (α − βu)(1 − u²) − (b − cu)², u = cosθ, with α = (2E − I33 ω3²)/I11,
     β = 2mgL/I11, b = H·e3/I11, c = I33 ω3/I11; the motion keeps f(u) = u̇² ≥ 0."""
-    s0, u0 = math.sin(theta0), math.cos(theta0)
-    v0 = 2.0 * math.sin(theta0 / 2) ** 2        # 1 − u0
-    w0 = 2.0 * math.cos(theta0 / 2) ** 2        # 1 + u0
-    K = theta_dot0 ** 2 + (psi_dot0 * s0) ** 2  # α − β u0 = |ω⊥|²
-    P = psi_dot0 * s0 * s0                      # b − c u0
-    beta = 2.0 * mgL / A
-    c = C * omega3 / A
-    # about u0: x = u − u0
-    F0 = (theta_dot0 * s0) ** 2
-    F1 = -beta * s0 * s0 - 2.0 * u0 * K + 2.0 * c * P
-    F2 = 2.0 * beta * u0 - K - c * c
-    coef = [beta, F2, F1, F0]
+    coef, (u0, v0, w0, K, P, beta, c) = nutation_cubic(A, C, mgL, theta0, theta_dot0, psi_dot0, omega3)
     if not all(math.isfinite(x) for x in coef):
         return math.nan, math.nan, math.nan     # the caller reports the overflow
+    import numpy as np
+
     # a leading coefficient so small that the companion matrix overflows (β ~ 1e-315) belongs to a
     # root |x| ≫ 2, outside the physical range u ∈ [-1, 1]: drop it
     while coef and (coef[0] == 0.0 or not all(math.isfinite(x / coef[0]) for x in coef[1:])):

@@ -14,12 +14,10 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from dyncli.errors import InputError
 from dyncli.result import FrameTable, Result, Series
 from dyncli.topics.top.derived import BASIS, TABLE_FORMULAS, table_381
-from dyncli.topics.top.kinematics import (S_TINY, TWO_PI, Top, body_omega, quat_from_euler,
+from dyncli.topics.top.kinematics import (S_TINY, TWO_PI, Top, body_omega, nutation_cubic, quat_from_euler,
                                           turning_points)
 
 #: closest approach to a pole that gets a warning (rad)
@@ -27,7 +25,7 @@ POLE_WARN = 1e-3
 
 
 def _listf(a):
-    return [float(x) + 0.0 for x in np.asarray(a, dtype=float)]
+    return [float(x) + 0.0 for x in a]
 
 
 def solve(p, options=None) -> Result:
@@ -37,12 +35,11 @@ def solve(p, options=None) -> Result:
                  equations=["38.6", "38.11b", "38.15b", "38.16", "38.17c", "38.18"])
     _warn_moments(res, A, C, m, L)
     psi0, th0, phi0, th_dot0, psd0 = _initial_state(res, p)
-    y0 = np.concatenate([quat_from_euler(psi0, th0, phi0),
-                         body_omega(th0, phi0, psd0, th_dot0, p.phi_dot)])
+    y0 = quat_from_euler(psi0, th0, phi0) + body_omega(th0, phi0, psd0, th_dot0, p.phi_dot)   # plain floats
     W3 = float(y0[6])
-    E0, H0, th_min, th_max, Wfast, Wp, scales = _integrals(top, p, y0, th0, th_dot0, psd0)
+    E0, H0, Wfast, scales = _integrals(top, p, y0, th0, th_dot0, psd0)
 
-    res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)
+    res.results.update(theta_min=None, theta_max=None)       # from the route taken (the order of the results)
     res.results["invariants"] = {"E": float(E0) + 0.0, "H_e3": float(H0) + 0.0, "omega3": W3 + 0.0}
 
     # --- the motion at the requested times: exact (auto) or integrated
@@ -56,9 +53,13 @@ def solve(p, options=None) -> Result:
     if out is not None:
         th_min, th_max = res.results["theta_min"], res.results["theta_max"]
     else:
+        import numpy as np
+
         from dyncli.topics.top import ode_route
 
-        out = ode_route.route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales,
+        th_min, th_max, Wp = _bounds(top, p, th0, th_dot0, psd0, W3)
+        res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)
+        out = ode_route.route(res, top, p, np.array(y0, dtype=float), psi0, phi0, times, Wfast, Wp, scales,
                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot), bounds=(th_min, th_max))
         res.extra["sample"] = lambda ts: _resample(p, ts)
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out
@@ -103,27 +104,33 @@ def _initial_state(res, p):
 
 
 def _integrals(top, p, y0, th0, th_dot0, psd0):
-    """E, H·e3, the nutation bounds θ_min, θ_max, the fastest rate, the bound of |ω⊥| and the
-    scales (E, H, ω) of the ODE route; InputError when they overflow a double."""
+    """E, H·e3, the fastest rate and the scales (E, H, ω) of the ODE route, in plain floats;
+    InputError when they, or the nutation cubic, overflow a double."""
     A, C = top.A, top.C
     W3 = float(y0[6])
-    with np.errstate(over="ignore", invalid="ignore"):
-        E0, H0, _ = top.invariants(y0[:4], y0[4:])
-        Wn = math.hypot(*y0[4:])
-        Wg = math.sqrt(4.0 * top.mgL / A)
-        Es = 0.5 * (A * (y0[4] ** 2 + y0[5] ** 2) + C * W3 * W3) + top.mgL
-        Hs = math.hypot(A * math.hypot(y0[4], y0[5]), C * W3) + A * Wg
-        # fastest rates of the motion in the spin-free frame (the spin ω3 is taken out exactly):
-        # nutation ≈ I33 ω3/I11 (the turning of ω⊥ on p) and the pendulum rate √(4mgL/I11)
-        Wfast = abs(C * W3 / A) + Wg
-    if not all(math.isfinite(x) for x in (E0, H0, Wn, Wg, Es, Hs, Wfast)):
+    w1, w2 = y0[4], y0[5]
+    E0, H0, _ = top.invariants(y0[:4], y0[4:])
+    Wn = math.hypot(*y0[4:])
+    Wg = math.sqrt(4.0 * top.mgL / A)
+    Es = 0.5 * (A * (w1 * w1 + w2 * w2) + C * W3 * W3) + top.mgL
+    Hs = math.hypot(A * math.hypot(w1, w2), C * W3) + A * Wg
+    # fastest rates of the motion in the spin-free frame (the spin ω3 is taken out exactly):
+    # nutation ≈ I33 ω3/I11 (the turning of ω⊥ on p) and the pendulum rate √(4mgL/I11)
+    Wfast = abs(C * W3 / A) + Wg
+    coef, _ = nutation_cubic(A, C, top.mgL, th0, th_dot0, psd0, W3)
+    if not all(math.isfinite(x) for x in (E0, H0, Wn, Wg, Es, Hs, Wfast, *coef)):
         raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
+    Ws = Wn + Wg
+    return E0, H0, Wfast, (Es, Hs, Ws if Ws > 0 else 1.0)
+
+
+def _bounds(top, p, th0, th_dot0, psd0, W3):
+    """θ_min, θ_max from the nutation cubic's roots (numpy) and the bound of |ω⊥| (the ODE route)."""
+    A, C = top.A, top.C
     th_min, th_max, wperp2 = turning_points(A, C, top.mgL, th0, th_dot0, psd0, W3)
     if not all(math.isfinite(x) for x in (th_min, th_max, wperp2)):
         raise InputError(_overflow_message(A, C, W3, th_dot0, psd0, p.phi_dot), _fastest_rate(th_dot0, psd0, p.phi_dot))
-    Wp = math.sqrt(max(wperp2, 0.0))
-    Ws = Wn + Wg
-    return E0, H0, th_min, th_max, Wfast, Wp, (Es, Hs, Ws if Ws > 0 else 1.0)
+    return th_min, th_max, math.sqrt(max(wperp2, 0.0))
 
 
 def _report_motion(res, p, out):
@@ -137,7 +144,7 @@ def _report_motion(res, p, out):
         R=[_listf(r) for r in R],
         drift=float(drift),
     )
-    if len(p.at) and not np.all(np.isfinite(psi_dot)):
+    if len(p.at) and not all(math.isfinite(x) for x in psi_dot):
         res.warn("psi_dot and phi_dot are null where sinθ = 0: at the vertical only ψ̇ + φ̇ (θ = 0) "
                  "or ψ̇ − φ̇ (θ = π) is defined")
     res.series.append(Series("t", list(p.at), ["psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot", "R"],
@@ -172,6 +179,8 @@ def _warn_poles(res, top, th_min, th_max, W3, ambiguous, n):
 
 def _resample(p, ts):
     """(ψ, θ) of the integrated motion at other times (for plots): the same run on those times."""
+    import numpy as np
+
     R = solve(p.model_copy(update={"at": [float(t) for t in ts]})).results
     return np.asarray(R["psi"], dtype=float), np.asarray(R["theta"], dtype=float)
 

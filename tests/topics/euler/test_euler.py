@@ -202,3 +202,26 @@ def test_invalid(text, field, msg):
         line = [i + 1 for i, l in enumerate(text.splitlines()) if l.startswith(field + ":")][0]
         assert err.startswith(f"bad.yaml:{line}:")
     assert msg in err
+
+
+@settings(max_examples=40, deadline=None)
+@given(I=st.lists(st.floats(1.0, 3.0), min_size=3, max_size=3), w=st.lists(st.floats(-3, 3), min_size=3, max_size=3),
+       t=st.floats(-50.0, 50.0))
+def test_omega_at_one_time_in_floats_is_the_array_path(I, w, t):
+    """ω at one float time (the solver's requested times: math only) and at an array of times (the
+    plots: numpy) are one algorithm on two backends, whose sin/arcsin may differ by an ulp: the
+    Jacobi functions then differ by ~2ε(1 + |λt|) and the addition theorems amplify that by at most
+    ~1/m1 (their denominator 1 − m s0² sn² ≥ m1); the bound allows 8 times that (0.4 observed)."""
+    from dyncli.topics.euler import free
+
+    if max(I) > I[0] + I[1] + I[2] - max(I) or np.linalg.norm(w) == 0.0:
+        return
+    ex = free.exact(I, w)
+    one = ex.omega(t)
+    assert isinstance(one, tuple) and all(type(x) is float for x in one)
+    arr = ex.omega(np.array([t]))[0]
+    m1 = min(getattr(ex, "m1", 1.0), 1.0)
+    if m1 < 1e-6:
+        return                           # next to the separatrix: conditioning ~1/m1 (tested above)
+    tol = 8 * 2.0 ** -52 * (1 + abs(ex.lam * t)) * np.linalg.norm(w) / m1
+    assert np.max(np.abs(np.array(one) - arr)) <= tol

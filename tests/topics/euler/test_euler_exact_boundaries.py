@@ -34,3 +34,14 @@ def test_separatrix_given_with_square_roots(I, w0, wf):
 def test_near_separatrix_keeps_its_period():
     r = solve_one_text('type: euler\nI: [1, 2, 3]\nomega0: ["sqrt(3)*(1 + 1e-12)", 0.5, 1]\nat: [1]\n')["results"]
     assert r["period"] is not None and r["m"] < 1.0
+
+
+def test_magnitudes_beyond_doubles_are_reported_not_printed_as_nan():
+    """|H̄|, T of omega0 beyond a double: exit 2 naming omega0; T representable but the elliptic
+    constants overflowing (ω'₀ ~ 1e154 with I ~ 1e-14): exit 1 with a message, not nan results."""
+    from tests.conftest import error_of, solve_text
+
+    msg = error_of("type: euler\nI: [1, 2, 3]\nomega0: [1e200, 1, 1]\n")
+    assert "omega0" in msg and "beyond a double" in msg
+    rec = solve_text("type: euler\nI: [6.7e-14, 6.4e-14, 5.4e-14]\nomega0: [-8.8e154, 2.3e-63, -3.5e8]\nat: [0, 1]\n")[0]
+    assert rec["error"] is not None and rec["exit_code"] == 1 and "not representable in doubles" in rec["error"]

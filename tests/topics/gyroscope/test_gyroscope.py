@@ -104,3 +104,15 @@ def test_invalid(text, field, msg):
         line = [i + 1 for i, l in enumerate(text.splitlines()) if l.startswith(field + ":")][0]
         assert err.startswith(f"bad.yaml:{line}:") and f"{field}:" in err
     assert msg in err
+
+
+def test_magnitudes_beyond_doubles_are_reported_not_printed_as_inf():
+    """C of (37.13) beyond a double: exit 2 naming theta_dot0; θ0 + θ̇0 t beyond a double (q = 0):
+    exit 1 with a message (both printed inf or nan with exit 0 before)."""
+    from tests.conftest import error_of, solve_text
+
+    base = "type: gyroscope\nI1: 0.01\nI2: 0.006\np: 100\nq: 0\n"
+    msg = error_of(base + "theta_dot0: 1e300\nat: [0, 1]\n")
+    assert "theta_dot0" in msg and "beyond a double" in msg
+    rec = solve_text(base + "theta_dot0: 1e150\nat: [0, 1e300]\n")[0]
+    assert rec["exit_code"] == 1 and "beyond a double" in rec["error"]
