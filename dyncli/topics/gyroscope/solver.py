@@ -136,7 +136,7 @@ def _ode_route(pb, times, res):
     rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
 
     def fun(t, y):
-        return np.array([y[1], theta_ddot(I1, I2, p, q, y[0])])
+        return (float(y[1]), theta_ddot(I1, I2, p, q, float(y[0])))   # plain floats: the runner wraps them once
 
     C0 = float(first_integral(I1, I2, p, q, th0, thd0))
     scale = 0.5 * I2 * thd0 * thd0 + 0.5 * abs(I2 - I1) * q * q + abs(I1 * p * q)
