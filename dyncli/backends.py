@@ -3,7 +3,7 @@
 closed form at the few requested times needs no numpy import) and numpy itself
 (:func:`array_ops`, imported when first asked for: plots' dense sampling, vectorised callers).
 Each offers the numpy names the formulas call: sin, cos, arcsin, arctan, arctan2, tanh, cosh,
-sqrt, abs, where, maximum, minimum, round, clip, ones_like, errstate.  Neutral (no topic).
+sqrt, abs, sign, floor, where, maximum, minimum, round, clip, ones_like, zeros_like, errstate, pi.  Neutral (no topic).
 
 >>> FLOAT_OPS.cosh(1000.0), FLOAT_OPS.round(2.5), FLOAT_OPS.clip(3.0, -1.0, 1.0), ops_for(1.0) is FLOAT_OPS
 (inf, 2.0, 1.0, True)
@@ -23,10 +23,15 @@ def _round(x: float) -> float:
     return float(round(x)) if math.isfinite(x) else x
 
 
+def _floor(x: float) -> float:
+    """The largest whole number <= x, as a float (x itself when not finite)."""
+    return float(math.floor(x)) if math.isfinite(x) else x
+
+
 #: the plain-float backend
 FLOAT_OPS = SimpleNamespace(sin=_fm.sin, cos=_fm.cos, arcsin=_fm.arcsin, arctan=_fm.arctan, arctan2=_fm.arctan2,
-                            tanh=_fm.tanh, cosh=_fm.cosh, sqrt=_fm.sqrt, abs=abs, where=_fm.where,
-                            maximum=max, minimum=min, round=_round, ones_like=_fm.ones,
+                            tanh=_fm.tanh, cosh=_fm.cosh, sqrt=_fm.sqrt, abs=abs, sign=_fm.sign, floor=_floor, where=_fm.where,
+                            maximum=max, minimum=min, round=_round, ones_like=_fm.ones, zeros_like=_fm.zeros, pi=math.pi,
                             clip=lambda x, lo, hi: min(max(x, lo), hi), errstate=lambda **kw: nullcontext())
 
 

@@ -115,7 +115,7 @@ def test_closed_forms_import_neither_scipy_nor_sympy(tmp_path):
 #: dyncli.direction, dyncli.elliptic's float paths): solving them never imports numpy (issue 19, cold start)
 NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "euler", "gyroscope", "impact", "inertia", "motor-bodies",
               "particles", "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity",
-              "rotating-frame", "screw", "spin-change", "vibration")
+              "rotating-frame", "screw", "spin-change", "top", "vibration")
 
 _SOLVE_NUMPY_FREE = """
 import json, sys

@@ -26,13 +26,18 @@ def rates(top: Top, theta, phi, w):
 
 
 def reaction(top: Top, theta, phi, w):
-    """R = mg e3 + m ā (38.16a) on e'', with ā = ω̇ × x̄ + ω × (ω × x̄), x̄ = L e'_3 (arrays)."""
+    """R = mg e3 + m ā (38.16a) on e'' (arrays: one row per time; numpy)."""
     import numpy as np
 
+    return np.column_stack(reaction_on(np, top, theta, phi, w[:, 0], w[:, 1], w[:, 2]))
+
+
+def reaction_on(xp, top: Top, theta, phi, w1, w2, w3):
+    """(R1, R2, R3) = mg e3 + m ā (38.16a) on e'', with ā = ω̇ × x̄ + ω × (ω × x̄), x̄ = L e'_3, from
+    body ω on backend xp (:data:`dyncli.backends.FLOAT_OPS` for one time, numpy for arrays)."""
     m, g, L = top.m, top.g, top.L
-    w1, w2, w3 = w[:, 0], w[:, 1], w[:, 2]
-    sth, cth = np.sin(theta), np.cos(theta)
-    sp, cp = np.sin(phi), np.cos(phi)
+    sth, cth = xp.sin(theta), xp.cos(theta)
+    sp, cp = xp.sin(phi), xp.cos(phi)
     g1, g2 = sth * sp, sth * cp
     wd1 = top.k1 * w2 * w3 + top.kg * g2
     wd2 = -top.k1 * w3 * w1 - top.kg * g1
@@ -41,7 +46,7 @@ def reaction(top: Top, theta, phi, w):
     a3 = -L * (w1 * w1 + w2 * w2)
     R1b, R2b = m * (g * g1 + a1), m * (g * g2 + a2)
     R3 = m * (g * cth + a3)
-    return np.column_stack([R1b * cp - R2b * sp, R1b * sp + R2b * cp, R3])
+    return R1b * cp - R2b * sp, R1b * sp + R2b * cp, R3
 
 
 def _cross(a, b):

@@ -44,6 +44,7 @@ from __future__ import annotations
 import math
 import sys
 
+from dyncli.backends import FLOAT_OPS, array_ops, ops_for
 from dyncli.elliptic import ellipj, elliprc, elliprf, elliprj
 from dyncli.topics.top.rootfind import brent as _brent
 
@@ -245,9 +246,7 @@ class ExactTop:
     @property
     def J0(self):
         if self._J0 is None:
-            import numpy as np
-
-            self._J0 = self._at_phase(np.array([self.tau0]))[1]
+            self._J0 = self._at_phase(FLOAT_OPS, self.tau0)[1]
         return self._J0
 
     def _J(self, s, c, d2):
@@ -257,67 +256,73 @@ class ExactTop:
             nu = self.nu
         return _integrals(nu, self.np_m, self.one_np, self.nut.m, s, c, d2)
 
-    def _at_phase(self, tau):
+    def _at_phase(self, xp, tau):
         """(sn, cn, dn) at τ and (Jv, Jw, Jd) from τ = 0, whole periods included (sn, cn, dn
-        by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix)."""
-        import numpy as np
-
+        by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix); on backend xp."""
         P, K, m1 = 2.0 * self.K, self.K, self.nut.m1
-        nper = np.round(tau / P)
+        nper = xp.round(tau / P)
         r = tau - nper * P
-        a = np.abs(r)
+        a = xp.abs(r)
         far = a > 0.5 * K
         # past K/2 from the reflection ρ = K − |r|: sn = cd ρ, cn = √m1 sd ρ, dn = √m1 nd ρ, so cn and
         # dn keep their relative precision where they are small (next to the separatrix, m1 → 0)
-        s1, c1, d1 = ellipj(np.where(far, K - a, a), self.nut.m, m1)
+        s1, c1, d1 = ellipj(xp.where(far, K - a, a), self.nut.m, m1)
+        d1 = xp.where(d1 != 0, d1, math.nan)     # dn = 0 only at m1 = 0 (sech underflowing): not representable
         q = math.sqrt(m1)
-        sn = np.sign(r) * np.where(far, c1 / d1, s1)
-        cn = np.where(far, q * s1 / d1, c1)
-        dn = np.where(far, q / d1, d1)
+        sn = xp.sign(r) * xp.where(far, c1 / d1, s1)
+        cn = xp.where(far, q * s1 / d1, c1)
+        dn = xp.where(far, q / d1, d1)
         J = self._J(sn, cn, dn * dn)
-        with np.errstate(invalid="ignore"):     # ∫dτ/w is infinite (unused) when w1 = 0 (a pole passage)
+        with xp.errstate(invalid="ignore"):     # ∫dτ/w is infinite (unused) when w1 = 0 (a pole passage)
             return (sn, cn, dn), tuple(j + 2.0 * nper * jc for j, jc in zip(J, self.Jc))
 
     def evaluate(self, t):
-        """Arrays psi, theta, phi, psi_dot, theta_dot, phi_dot, S (= ψ̇ sinθ) at times t
-        (the initial state itself at t = 0)."""
-        import numpy as np
-
-        t = np.asarray(t, dtype=float)
-        out = [np.array(a, dtype=float) for a in (self._steady(t) if self.steady else self._moving(t))]
+        """psi, theta, phi, psi_dot, theta_dot, phi_dot, S (= ψ̇ sinθ) at times t (the initial state
+        itself at t = 0): plain floats for one float time (no numpy), arrays for an array."""
+        xp = ops_for(t)
+        pole = math.sin(self.theta0) == 0.0
+        if xp is FLOAT_OPS:
+            t = float(t)
+            try:
+                out = self._steady(xp, t) if self.steady else self._moving(xp, t)
+            except (ZeroDivisionError, OverflowError):      # a degenerate parameter: numpy's inf/nan
+                return tuple(float(a[0]) for a in self.evaluate(array_ops().array([t])))
+            if t == 0:
+                out = [o if pole and k in (3, 5) else x for k, (o, x) in enumerate(zip(out, self.initial))]
+            return tuple(float(o) for o in out)
+        t = xp.asarray(t, dtype=float)
+        out = [xp.array(a, dtype=float) for a in (self._steady(xp, t) if self.steady else self._moving(xp, t))]
         at0 = t == 0
-        if np.any(at0):
-            pole = math.sin(self.theta0) == 0.0
+        if xp.any(at0):
             for k, x in enumerate(self.initial):
                 if not (pole and k in (3, 5)):
                     out[k][at0] = x
         return tuple(out)
 
-    def _moving(self, t):
-        import numpy as np
-
+    def _moving(self, xp, t):
         n = self.nut
         tau = n.lam * t + self.tau0
-        (sn, cn, dn), J = self._at_phase(tau)
+        (sn, cn, dn), J = self._at_phase(xp, tau)
         d2 = dn * dn
-        tv, tw = n.delta * n.m1 * (sn * sn) / d2, n.delta * (cn * cn) / d2     # v − v2, w − w1 (sum Δ)
+        s2, c2 = sn * sn, cn * cn
+        tv, tw = n.delta * n.m1 * s2 / d2, n.delta * c2 / d2     # v − v2, w − w1 (sum Δ)
         v, w = n.v2 + tv, n.w1 + tw
-        theta = np.where(v <= w, 2.0 * np.arcsin(np.sqrt(np.minimum(v, 2.0) / 2.0)),
-                         np.pi - 2.0 * np.arcsin(np.sqrt(np.minimum(w, 2.0) / 2.0)))
-        with np.errstate(divide="ignore", invalid="ignore"):
+        theta = xp.where(v <= w, 2.0 * xp.arcsin(xp.sqrt(xp.minimum(v, 2.0) / 2.0)),
+                         xp.pi - 2.0 * xp.arcsin(xp.sqrt(xp.minimum(w, 2.0) / 2.0)))
+        with xp.errstate(divide="ignore", invalid="ignore"):
             # exactly at a pole passed through (v2 = 0 or w1 = 0) θ̇ is the incoming rate
             qv0 = -1.0 / math.sqrt(n.delta * n.m1) if n.v2 == 0.0 else 0.0
             qw0 = 1.0 / math.sqrt(n.delta) if n.w1 == 0.0 else 0.0
-            ev = n.v2 * d2 / (sn * sn) if n.v2 > 0 else 0.0
-            ew = n.w1 * d2 / (cn * cn) if n.w1 > 0 else 0.0
-            qv = np.where(sn == 0, qv0, np.sign(sn) / np.sqrt(ev + n.delta * n.m1))
-            qw = np.where(cn == 0, qw0, np.sign(cn) / np.sqrt(ew + n.delta))
+            ev = xp.where(s2 > 0, n.v2 * d2 / xp.where(s2 > 0, s2, 1.0), math.inf) if n.v2 > 0 else 0.0
+            ew = xp.where(c2 > 0, n.w1 * d2 / xp.where(c2 > 0, c2, 1.0), math.inf) if n.w1 > 0 else 0.0
+            qv = xp.where(sn == 0, qv0, xp.sign(sn) / xp.sqrt(ev + n.delta * n.m1))
+            qw = xp.where(cn == 0, qw0, xp.sign(cn) / xp.sqrt(ew + n.delta))
         theta_dot = 2.0 * n.lam * n.delta * n.m1 * qv * qw / dn
         dJv, dJw, dJd = ((j - j0) / (2.0 * n.lam) for j, j0 in zip(J, self.J0))
         # ∫dt/v, ∫dt/w (×½): ψ̇ = ½(B/v + B'/w), φ̇ = ω3(1 − I33/I11) − ½B/v + ½B'/w
         # B ≠ 0 keeps v ≥ v2 > 0 (f(1) = −B²); a B so small that v2 underflows to 0 is no term
-        hv = n.B * dJv / n.v2 if n.B != 0 and n.v2 > 0 else np.zeros_like(t)
-        hw = n.Bp * dJw / n.w2 if n.Bp != 0 and n.w1 > 0 else np.zeros_like(t)
+        hv = n.B * dJv / n.v2 if n.B != 0 and n.v2 > 0 else xp.zeros_like(t)
+        hw = n.Bp * dJw / n.w2 if n.Bp != 0 and n.w1 > 0 else xp.zeros_like(t)
         phi = self.phi0 + self.spin_free * t - hv + hw
         if n.v2 > 0 and n.w1 > 0:
             # ψ = ψ0 + (b − c u2)∫dt/(vw) + c/2 ∫(w2/w − v2/v)dt: no cancellation of B/v against B'/w
@@ -328,47 +333,48 @@ class ExactTop:
         # passages exactly through a pole: the 3-1-3 angles jump by π there
         P = 2.0 * self.K
         if n.v2 == 0.0 and n.B == 0.0:
-            j = np.floor(tau / P) - math.floor(self.tau0 / P)
+            j = xp.floor(tau / P) - math.floor(self.tau0 / P)
             psi, phi = psi + math.pi * j, phi - math.pi * j
         if n.w1 == 0.0 and n.Bp == 0.0:
-            j = np.floor((tau - self.K) / P) - math.floor((self.tau0 - self.K) / P)
+            j = xp.floor((tau - self.K) / P) - math.floor((self.tau0 - self.K) / P)
             psi, phi = psi + math.pi * j, phi + math.pi * j
         # x = u − u0 from the nearer turning point (x2 and x1 have full relative precision)
-        x = np.where(tv <= tw, n.x2 - tv, n.x1 + tw)
-        return self._rates(psi, theta, phi, theta_dot, v, w, x)
+        x = xp.where(tv <= tw, n.x2 - tv, n.x1 + tw)
+        return self._rates(xp, psi, theta, phi, theta_dot, v, w, x)
 
-    def _rates(self, psi, theta, phi, theta_dot, v, w, x):
+    def _rates(self, xp, psi, theta, phi, theta_dot, v, w, x):
         """ψ̇ = (b − cu)/(vw) = (P − c x)/(vw) or ½(B/v + B'/w), whichever has the smaller
-        round-off there (the first for a fast top, the second next to a pole); φ̇, ψ̇ sinθ."""
-        import numpy as np
-
+        round-off there (the first for a fast top, the second next to a pole); φ̇, ψ̇ sinθ.
+        Each division by v, w or vw is kept to where that is positive (the others are unused)."""
         n = self.nut
-        with np.errstate(divide="ignore", invalid="ignore"):
-            bv = np.where(v > 0, n.B / v, 0.0) if n.B != 0 else np.zeros_like(v)
-            bw = np.where(w > 0, n.Bp / w, 0.0) if n.Bp != 0 else np.zeros_like(w)
+        vp, wp, vw = v > 0, w > 0, v * w
+        v1, w1, vw1 = xp.where(vp, v, 1.0), xp.where(wp, w, 1.0), xp.where(vw > 0, vw, 1.0)
+        with xp.errstate(divide="ignore", invalid="ignore"):
+            bv = xp.where(vp, n.B / v1, 0.0) if n.B != 0 else xp.zeros_like(v)
+            bw = xp.where(wp, n.Bp / w1, 0.0) if n.Bp != 0 else xp.zeros_like(w)
             num = n.P - n.c * x
-            direct = num / (v * w)
-            use_direct = (abs(n.P) + np.abs(n.c * x)) / (v * w) < np.abs(bv) + np.abs(bw)
-            psi_dot = np.where(use_direct, direct, 0.5 * (bv + bw))
-            S = np.where(use_direct, num / np.sqrt(v * w),
-                         0.5 * (np.where(v > 0, n.B * np.sqrt(w / v), 0.0) if n.B != 0 else 0.0)
-                         + 0.5 * (np.where(w > 0, n.Bp * np.sqrt(v / w), 0.0) if n.Bp != 0 else 0.0))
+            use_direct = (vw > 0) & ((abs(n.P) + xp.abs(n.c * x)) / vw1 < xp.abs(bv) + xp.abs(bw))
+            psi_dot = xp.where(use_direct, num / vw1, 0.5 * (bv + bw))
+            S = xp.where(use_direct, num / xp.sqrt(vw1),
+                         0.5 * (xp.where(vp, n.B * xp.sqrt(w / v1), 0.0) if n.B != 0 else 0.0)
+                         + 0.5 * (xp.where(wp, n.Bp * xp.sqrt(v / w1), 0.0) if n.Bp != 0 else 0.0))
         pole = (v == 0) | (w == 0)
-        psi_dot = np.where(pole, np.nan, psi_dot)
-        phi_dot = np.where(pole, np.nan, self.spin_free - 0.5 * bv + 0.5 * bw)
-        S = np.broadcast_to(S, np.shape(theta)).astype(float)
+        psi_dot = xp.where(pole, math.nan, psi_dot)
+        phi_dot = xp.where(pole, math.nan, self.spin_free - 0.5 * bv + 0.5 * bw)
+        if xp is not FLOAT_OPS:
+            S = xp.broadcast_to(S, xp.shape(theta)).astype(float)
         return psi, theta, phi, psi_dot, theta_dot, phi_dot, S
 
-    def _steady(self, t):
+    def _steady(self, xp, t):
         """Constant θ (steady precession, a sleeping top): ψ̇, φ̇ constant."""
-        import numpy as np
-
         n = self.nut
-        v = np.full_like(t, n.v0)
-        w = np.full_like(t, n.w0)
-        theta = np.full_like(t, self.theta0)
-        psi, theta, phi, psi_dot, theta_dot, phi_dot, S = self._rates(0 * t, theta, 0 * t, 0 * t, v, w, 0 * t)
+        one, zero = xp.ones_like(t), 0 * t
+        v, w, theta = n.v0 * one, n.w0 * one, self.theta0 * one
+        psi, theta, phi, psi_dot, theta_dot, phi_dot, S = self._rates(xp, zero, theta, zero, zero, v, w, zero)
         if n.v0 == 0.0 or n.w0 == 0.0:      # sleeping: ψ held, φ carries ψ ± φ (ω3 about the vertical)
-            return self.psi0 + 0 * t, theta, self.phi0 + self.omega3 * t, psi_dot, theta_dot, phi_dot, S
-        pd, fd = float(psi_dot[0]) if len(t) else 0.0, float(phi_dot[0]) if len(t) else 0.0
+            return self.psi0 + zero, theta, self.phi0 + self.omega3 * t, psi_dot, theta_dot, phi_dot, S
+        if xp is FLOAT_OPS:
+            pd, fd = psi_dot, phi_dot
+        else:
+            pd, fd = float(psi_dot[0]) if len(t) else 0.0, float(phi_dot[0]) if len(t) else 0.0
         return self.psi0 + pd * t, theta, self.phi0 + fd * t, psi_dot, theta_dot, phi_dot, S

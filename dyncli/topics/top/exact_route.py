@@ -17,16 +17,20 @@ from __future__ import annotations
 
 import math
 
+from dyncli.backends import FLOAT_OPS
 from dyncli.errors import NumericalError
-from dyncli.topics.top.derived import reaction
+from dyncli.topics.top.derived import reaction_on
 from dyncli.topics.top.elliptic import EPS, ExactTop
 
 #: safety factor on the phase round-off term ε (1 + λ t + periods)
 PHASE_FACTOR = 16.0
+#: at most this many requested times are evaluated one by one in plain floats (no numpy import; each
+#: costs ~50 µs, mostly three Carlson integrals), more as arrays (~0.7 ms for numpy's calls + ~8 µs a time)
+FLOAT_TIMES = 16
 
 
 class ExactRun:
-    """Arrays at the requested times (same order as ``times``) and the run's figures."""
+    """Lists of plain floats at the requested times (same order as ``times``) and the run's figures."""
 
     def __init__(self, top, psi0, theta0, phi0, psi_dot0, theta_dot0, phi_dot0, times):
         A, C, mgL = top.A, top.C, top.mgL
@@ -38,28 +42,22 @@ class ExactRun:
         self.finite = ex.nut.finite
         if not self.finite:
             return
-        if not len(times):       # the bounds only: no evaluation, no numpy
-            self._bounds(theta0)
-            self.psi = self.theta = self.phi = self.psi_dot = self.theta_dot = self.phi_dot = self.S = self.w = []
-            self.passes, self.drift, self.lam_T, self.error_estimate = [], 0.0, 0.0, 0.0
-            return
-        import numpy as np
-
-        t = np.asarray(times, dtype=float)
-        (self.psi, self.theta, self.phi, self.psi_dot, self.theta_dot,
-         self.phi_dot, self.S) = ex.evaluate(t)
+        self.times = t = [float(x) for x in times]
+        if len(t) <= FLOAT_TIMES:      # one by one in plain floats: no numpy import (most of a cold start)
+            cols = list(zip(*(ex.evaluate(x) for x in t))) if t else [[]] * 7
+        else:                          # many times: the arrays (numpy), the same algorithm
+            cols = [a.tolist() for a in ex.evaluate(_array(t))]
+        (self.psi, self.theta, self.phi, self.psi_dot, self.theta_dot, self.phi_dot, self.S) = map(list, cols)
         # a parameter beyond doubles (1 − m underflowing next to the separatrix, θ0 within ~1e-153 rad
         # of an unstable vertical): not representable here; the caller falls back to the ODE route
-        self.finite = bool(all(np.all(np.isfinite(a)) for a in (self.psi, self.theta, self.phi, self.theta_dot,
-                                                                   self.S)))
+        self.finite = all(math.isfinite(x) for a in (self.psi, self.theta, self.phi, self.theta_dot, self.S)
+                          for x in a)
         if not self.finite:
             return
-        W3 = ex.omega3
-        w = np.column_stack([self.theta_dot, self.S, np.full_like(t, W3)])
-        self.w = w
+        self.w = [(td, S, ex.omega3) for td, S in zip(self.theta_dot, self.S)]     # body ω on e'' (φ = 0)
         self._bounds(theta0)
         self.passes = [] if ex.steady else self._passages(t)
-        self._residuals(top, t, w)
+        self._residuals(top, t)
 
     def _bounds(self, theta0):
         n, ex = self.ex.nut, self.ex
@@ -68,8 +66,6 @@ class ExactRun:
 
     def _passages(self, t):
         """First time in the run at which the axis passes exactly through the vertical."""
-        import numpy as np
-
         ex, n = self.ex, self.ex.nut
         P = 2.0 * ex.K
         out = []
@@ -77,32 +73,32 @@ class ExactRun:
             if at_pole and len(t):
                 tau_p = off + P * (math.floor((ex.tau0 - off) / P) + 1.0)
                 tp = (tau_p - ex.tau0) / n.lam
-                if tp <= float(np.max(t)):
+                if tp <= max(t):
                     out.append(tp)
         return sorted(out)
 
-    def _residuals(self, top, t, w):
-        """drift and error_estimate (module docstring)."""
-        import numpy as np
-
+    def _residuals(self, top, t):
+        """drift and error_estimate (module docstring), in plain floats."""
         A, C, mgL = top.A, top.C, top.mgL
         ex, n = self.ex, self.ex.nut
         W3 = ex.omega3
-        u, s = np.cos(self.theta), np.sin(self.theta)
         # E and H_O·e3 of the initial state from the constants of the solution (α = D + β, b)
         self.E0 = E0 = 0.5 * A * (n.D + n.beta) + 0.5 * C * W3 * W3
         self.H0 = H0 = 0.5 * A * (n.B + n.Bp)
-        T = float(np.max(t)) if len(t) else 0.0
+        T = max(t) if t else 0.0
         dE = dH = 0.0
-        if len(t):
-            with np.errstate(all="ignore"):
-                E = 0.5 * A * (w[:, 0] ** 2 + w[:, 1] ** 2) + 0.5 * C * W3 * W3 + mgL * u
-                H = A * w[:, 1] * s + C * W3 * u
-            wmax = float(np.max(np.abs(w[:, :2])))
-            Es = 0.5 * A * wmax ** 2 + 0.5 * C * W3 * W3 + mgL
+        if t:
+            spin = 0.5 * C * W3 * W3
+            dEs, dHs = [], []
+            for th, (w1, w2, _) in zip(self.theta, self.w):
+                u, s = math.cos(th), math.sin(th)
+                dEs.append(abs(0.5 * A * (w1 * w1 + w2 * w2) + spin + mgL * u - E0))
+                dHs.append(abs(A * w2 * s + C * W3 * u - H0))
+            wmax = max(max(abs(w1), abs(w2)) for w1, w2, _ in self.w)
+            Es = 0.5 * A * wmax * wmax + spin + mgL
             Hs = A * wmax + abs(C * W3) + 1e-300
-            dE = float(np.max(np.abs(E - E0))) / Es if Es > 0 else 0.0
-            dH = float(np.max(np.abs(H - H0))) / Hs
+            dE = max(dEs) / Es if Es > 0 else 0.0
+            dH = max(dHs) / Hs
         self.drift = max(dE, dH)
         lam = 0.0 if ex.steady else n.lam
         periods = 0.0 if ex.steady else lam * T / (2.0 * ex.K)
@@ -128,7 +124,7 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
             raise NumericalError(msg + ": use accuracy.method DOP853")
         res.warn(msg + "; solved by the ODE route (DOP853)")
         return None
-    R = reaction(top, ex.theta, [0.0] * len(times), ex.w) if len(times) else []
+    R = [reaction_on(FLOAT_OPS, top, th, 0.0, *w) for th, w in zip(ex.theta, ex.w)]
     res.method = "exact"
     res.extra["sample"] = lambda ts: ex.ex.evaluate(_array(ts))[:2]      # (ψ, θ), for plots
     res.error_estimate = float(ex.error_estimate) if len(times) else None
