@@ -315,7 +315,7 @@ def amplification(r, zeta: float):
     num_G = np.where(big, 1.0, r * r)                           # r² (/r²)
     num_g = np.where(big, np.hypot(inv * inv, im), np.hypot(1.0, im))   # |1 + 2iζr| (/r²)
     mod = np.hypot(re, im)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # G, g beyond a double: inf
         safe = np.where(mod > 0, mod, 1.0)
         G = np.where(mod > 0, num_G / safe, np.inf)
         g = np.where(mod > 0, num_g / safe, np.inf)

@@ -2,8 +2,9 @@
 imports no numpy) gives the array version's values, signs of zero included, at the
 extremes of r and ζ (undamped resonance, r = 2 where the formula switches, huge and tiny r):
 the same operations in the same order, G and g bit for bit (both hypot from the C library),
-the phases within 1 ulp (math.atan2 and numpy's arctan2 are each correctly rounded to within
-1 ulp, not always the same one)."""
+the phases within 4 ulp: math.atan2 and numpy's arctan2 are each within ~2 ulp of the exact
+value and need not agree (numpy 2 differs from math by at most 1 ulp here, numpy 1.26 by 2:
+found by the lowest-version run, r = 2, ζ = 1.09375)."""
 
 from __future__ import annotations
 
@@ -31,7 +32,7 @@ def _same(a: float, b: float, ulps: int = 0) -> bool:
 def test_scalar_equals_array(r, z):
     arr = [float(v[0]) for v in cf.amplification(np.array([r]), z)]
     one = cf.amplification_at(r, z)
-    assert all(_same(a, b, ulps) for a, b, ulps in zip(arr, one, (0, 1, 0, 1))), (r, z, arr, one)
+    assert all(_same(a, b, ulps) for a, b, ulps in zip(arr, one, (0, 4, 0, 4))), (r, z, arr, one)
 
 
 def test_undamped_resonance():
