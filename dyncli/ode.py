@@ -204,9 +204,6 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     The run is refused (:class:`OverBudget`, a NumericalError) as soon as it
     is clear that it needs more than ``max_steps`` steps (default MAX_STEPS):
     see :class:`Budget`.
-
-    (Just over 60 lines: the stepping loop of both directions is kept in one piece, as scipy's
-    own ``solve_ivp`` loop is, so the order of step, budget, projection and sampling reads at once.)
     """
     budget = Budget(max_steps)
     from scipy import integrate as si
@@ -343,7 +340,7 @@ def nominal_estimate(res, rtol: float, *drifts: float | None, steps: int = 1) ->
     """The error_estimate of an ODE route run without a check solve (``accuracy.estimate``
     false, the default): ``rtol`` × ``steps`` — each accepted step keeps its local error within
     ~rtol of the state's scale, and without amplification the global error is at most their sum
-    (a conservative bound: the actual error is typically 10-100 times smaller; a long run whose
+    (a conservative bound: 2-1,000 times the actual error on the references; a long run whose
     errors are amplified, e.g. an unstable or chaotic motion, can exceed it) — or the largest
     relative drift of the route's invariants (energy, momenta, first integrals; each relative
     to its scale) when larger.  Sets ``res.error_estimate`` and its note; returns it."""
