@@ -43,7 +43,12 @@ def _check(A):
     with mpmath.workdps(40):
         ref = sorted(float(x) for x in mpmath.eigsy(mpmath.matrix(A), eigvals_only=True))
     assert all(abs(a - b) <= tol for a, b in zip(w, ref)), (A, w, ref)
-    assert all(abs(a - b) <= tol for a, b in zip(w, np.linalg.eigvalsh(np.array(A)))), (A, w)
+    if 1e-100 <= nA <= 1e100:
+        # LAPACK as a second route where its own scaling is not in question (the 40-digit mpmath
+        # reference above is the authority: a fresh lowest-version CI run once got an eigvalsh
+        # beyond this bound for a 2.6e135 matrix that LAPACK solves correctly elsewhere)
+        lapack = np.linalg.eigvalsh(np.array(A))
+        assert all(abs(a - b) <= tol for a, b in zip(w, lapack)), (A, w, lapack)
     assert w == sorted(w)
     for k in range(3):
         v = [V[i][k] for i in range(3)]
