@@ -76,42 +76,42 @@ def to_cartesian(comps, basis):
 
 
 def tangential_normal(v, a):
-    """(|v|, e_t, a_t, v×a, |v×a|, |a|) per row of v, a [m/s, m/s²]: v = ṡ e_t (5.14a), e_t = v/|v|,
-    a_t = s̈ = a·e_t (5.14b).
+    """(|v|, e_t, a_t, e_t×a, |a|) per row of v, a [m/s, m/s²]: v = ṡ e_t (5.14a), e_t = v/|v|,
+    a_t = s̈ = a·e_t (5.14b).  e_t × a = (v×a)/|v| is formed from the scaled e_t, so a speed near
+    the underflow (5e-324 m/s) keeps the digits of a_n and e_n.
 
-    >>> sp, et, at, c, cn, amag = tangential_normal(np.array([[2.0, 0, 0]]), np.array([[1.0, 3.0, 0]]))
-    >>> sp.tolist(), at.tolist(), cn.tolist()
-    ([2.0], [1.0], [6.0])
+    >>> sp, et, at, c, amag = tangential_normal(np.array([[2.0, 0, 0]]), np.array([[1.0, 3.0, 0]]))
+    >>> sp.tolist(), at.tolist(), c.tolist()
+    ([2.0], [1.0], [[0.0, 0.0, 3.0]])
     """
     speed = norm_rows(v)                       # lengths and directions scaled first (dyncli.direction)
     et = unit_rows(v)
     at = np.einsum("ij,ij->i", a, et)
-    c = np.cross(v, a)
-    return speed, et, at, c, norm_rows(c), norm_rows(a)
+    return speed, et, at, np.cross(et, a), norm_rows(a)
 
 
-def normal_acceleration(cn, speed):
-    """a_n = |v×a|/|v| = ṡ²/ρ [m/s²] (5.14b).
+def normal_acceleration(c):
+    """a_n = |e_t × a| = |v×a|/|v| = ṡ²/ρ [m/s²] (5.14b), from c = e_t × a (rows).
 
-    >>> normal_acceleration(np.array([6.0]), np.array([2.0])).tolist()
+    >>> normal_acceleration(np.array([[0.0, 0.0, 3.0]])).tolist()
     [3.0]
     """
-    return cn / speed
+    return norm_rows(c)
 
 
-def radius_of_curvature(speed, cn):
-    """ρ = |v|³/|v×a| [m] (from 5.14b), formed as (|v|/|v×a|)|v|² so that |v|³ neither under- nor overflows.
+def radius_of_curvature(speed, an):
+    """ρ = ṡ²/a_n [m] (5.14b), formed as (|v|/a_n)|v| so that |v|² neither under- nor overflows.
 
-    >>> radius_of_curvature(np.array([2.0]), np.array([6.0])).tolist()
+    >>> radius_of_curvature(np.array([2.0]), np.array([3.0])).tolist()
     [1.3333333333333333]
     """
-    return (speed / cn) * speed * speed
+    return (speed / an) * speed
 
 
-def principal_normal(c, cn, et):
-    """e_n = ((v×a)×v)/(|v×a||v|), scaled first and normalised again (rows).
+def principal_normal(c, an, et):
+    """e_n = ((v×a)×v)/(|v×a||v|) = ((e_t×a)/a_n) × e_t, scaled first and normalised again (rows).
 
-    >>> principal_normal(np.array([[0, 0, 6.0]]), np.array([6.0]), np.array([[1.0, 0, 0]])).tolist()
+    >>> principal_normal(np.array([[0, 0, 3.0]]), np.array([3.0]), np.array([[1.0, 0, 0]])).tolist()
     [[0.0, 1.0, 0.0]]
     """
-    return unit_rows(np.cross(c / cn[:, None], et))
+    return unit_rows(np.cross(c / an[:, None], et))

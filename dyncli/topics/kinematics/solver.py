@@ -161,10 +161,10 @@ def _per_time(rows, times):
     okx, okv, oka = fin(X), fin(V) & fin(VB), fin(A) & fin(AB)
     okq = fin(Q)
     with np.errstate(all="ignore"):
-        speed, et, at, c, cn, amag = eq.tangential_normal(VB, AB)
-        an = eq.normal_acceleration(cn, speed)
-        rho = eq.radius_of_curvature(speed, cn)
-        en = eq.principal_normal(c, cn, et)
+        speed, et, at, c, amag = eq.tangential_normal(VB, AB)
+        an = eq.normal_acceleration(c)
+        rho = eq.radius_of_curvature(speed, an)
+        en = eq.principal_normal(c, an, et)
         et_c = np.einsum("ij,ijk->ik", et, Q) + 0.0
         en_c = np.einsum("ij,ijk->ik", en, Q) + 0.0
     okva = okv & oka & okq
@@ -172,7 +172,7 @@ def _per_time(rows, times):
     # can change, |a|·δt — so t = pi on x = cos t is a rest point, not a noise direction
     rest_band = INPUT_ROUNDING * np.abs(np.asarray(times, dtype=float)) * amag
     moving = okva & (speed > 0) & ~(speed <= rest_band)
-    is_straight = moving & (cn <= STRAIGHT_TOL * speed * amag)
+    is_straight = moving & (an <= STRAIGHT_TOL * amag)          # |v×a| <= tol |v||a|
     curved = moving & ~is_straight
     out = {
         "x": _rows_list(X, okx), "v": _rows_list(V, okv), "a": _rows_list(A, oka),

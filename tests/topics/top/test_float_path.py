@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from dyncli.topics.top.elliptic import ExactTop
@@ -45,8 +45,14 @@ def _agree(ex, t, wsc):
        th=st.one_of(st.sampled_from([0.0, math.pi, 1e-9, math.pi - 1e-9]), st.floats(0.0, math.pi)),
        thd=st.one_of(st.just(0.0), RATE), psd=st.one_of(st.just(0.0), RATE),
        phd=st.one_of(st.just(0.0), st.floats(-1e4, 1e4)), t=st.one_of(st.just(0.0), st.floats(0.0, 1e3)))
+@example(A=1.0, ratio=1.0, mgL=1.0, th=7.888609052210118e-31, thd=1.0, psd=0.0, phd=1.0, t=0.0)   # cubic: no root
 def test_one_time_in_floats_is_the_array_path(A, ratio, mgL, th, thd, psd, phd, t):
-    ex = ExactTop(A, ratio * A, mgL, 0.1, th, 0.2, psd, thd, phd)
+    try:
+        ex = ExactTop(A, ratio * A, mgL, 0.1, th, 0.2, psd, thd, phd)
+    except RuntimeError:
+        # the nutation cubic's root search cannot converge (θ ~1e-30 rad from an unstable vertical):
+        # the route declares the top not representable and integrates it (exact_route.py, test_exact.py)
+        return
     if not ex.nut.finite or (not ex.steady and ex.nut.m1 < 1e-6):
         return          # beyond doubles (the solver's fallback) or next to the separatrix (test_exact.py)
     _agree(ex, t, math.sqrt(thd * thd + (psd * math.sin(th)) ** 2 + 4 * mgL / A))
