@@ -242,7 +242,9 @@ _CACHE: dict[tuple, Callable] = {}
 
 
 def _compiled(e: Expr, var: str, X: Backend | None) -> Callable:
-    key = (e.ir, var, X is None)
+    # keyed by the IR's repr, not the tuple: 0.0 == -0.0 (a parameter k: -0.0 would share k: 0.0's
+    # compiled constants, and atan2(k, -1) turn from -π to π)
+    key = (repr(e.ir), var, X is None)
     fn = _CACHE.get(key)
     if fn is None:
         fn = _CACHE[key] = compile_jet(e.ir, var, X)

@@ -412,3 +412,12 @@ def test_tangential_components_on_a_circle():
         th = t * t
         close(r["e_t"][i], [-math.sin(th), math.cos(th), 0])
         close(r["e_n"][i], [-math.cos(th), -math.sin(th), 0])
+
+
+def test_signed_zero_parameters_are_not_confused():
+    """k: 0.0 and k: -0.0 compile to different derivative jets (atan2(k, -1) is π and −π), in
+    whichever order they are solved in one process (the jets are cached by expression)."""
+    text = "type: kinematics\nparams: {{k: {k}}}\nposition: {{x1: 'atan2(k, -1)*t', x2: 't', x3: 0}}\nat: [1]\n"
+    for order in (("0.0", "-0.0"), ("-0.0", "0.0")):
+        got = [solve_one_text(text.format(k=k))["results"]["x"][0][0] for k in order]
+        assert got == [math.copysign(math.pi, float(k)) for k in order], (order, got)
