@@ -1,0 +1,408 @@
+"""The ``find`` queries of a motion (problem files §11), for every type that reports one.
+
+Topic-agnostic, in plain floats.  :func:`parse_queries` validates the raw list; :func:`answer`
+answers it against any motion with: ``t0``, ``t_end`` (floats); ``breaks`` (increasing floats
+from t0 to t_end: step ends or natural pieces; the results are smooth between two breaks);
+``paths()`` (the valid scalar result paths); ``value(path, t) -> float`` (KeyError for an
+unknown path); optional ``rate(path, t) -> float | None`` (the time derivative when known);
+optional ``rtol`` (the values' relative accuracy, default 0: exact to rounding; it widens the
+tolerance within which a value touches VALUE and two extremes are equal).  Each answer is
+``{"t", "reached", "at_end"}``; the caller adds the state at ``t``.
+
+Every break interval is cut into :data:`SUBDIVIDE` pieces and sampled at their ends.  ``when``:
+a sign change of value - VALUE between samples is one Brent solve to full double accuracy
+(4 eps relative in t); a sample within tolerance of VALUE, or one closer to it than both
+neighbours (with ``rate``: a rate turning toward VALUE and away) starts a search for the
+closest approach in that span: within tolerance a touch (reaching it), beyond two crossings.
+A value held at the start counts only when reached again; the direction of a crossing or a
+touch is that of the approach (``up``: from below).  ``max``/``min``: the window's ends and the
+turning points, roots of ``rate`` (Brent) when known, else Brent's minimiser (golden section
+and parabolas) on each span whose middle sample beats both neighbours; of equal extremes (within
+tolerance) the first.  No text is evaluated: numbers go through the ``constant`` callable.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, Iterable, Union
+
+from dyncli.errors import InputError
+from dyncli.expr import did_you_mean
+
+__all__ = ["AtTime", "When", "Extreme", "Query", "parse_queries", "answer", "SUBDIVIDE"]
+
+SUBDIVIDE = 4       #: pieces each break interval is cut into before the sign tests
+_EPS, _TINY = 2.220446049250313e-16, 5e-324
+_KEYS = {"t": ("t",), "when": ("when", "direction", "occurrence"), "max": ("max", "within"), "min": ("min", "within")}
+_ALL_KEYS = ("t", "when", "direction", "occurrence", "max", "min", "within")
+_EXPR = "a number or a constant expression such as \"pi/2\" or \"30*deg\""
+
+
+@dataclass(frozen=True)
+class AtTime:
+    """``{t: T}``: the state at time T; ``index`` is the query's place in ``find``."""
+    t: float
+    index: int = 0
+
+
+@dataclass(frozen=True)
+class When:
+    """``{when: {PATH: VALUE}, direction, occurrence}``: the n-th time PATH reaches VALUE."""
+    path: str
+    value: float
+    direction: str = "any"                      # "up", "down" or "any"
+    occurrence: int = 1
+    index: int = 0
+
+
+@dataclass(frozen=True)
+class Extreme:
+    """``{max: PATH}`` or ``{min: PATH}`` (``kind``), ``within: [t1, t2]`` (None: the whole motion)."""
+    path: str
+    kind: str
+    within: tuple[float, float] | None = None
+    index: int = 0
+
+
+Query = Union[AtTime, When, Extreme]
+
+
+def _kind(x: Any) -> str:
+    kinds = {dict: "a mapping", list: "a list", tuple: "a list", type(None): "nothing (null)", bool: f"the boolean {x}"}
+    return kinds.get(type(x)) or f"{type(x).__name__} {x!r}"
+
+
+def _number(constant: Callable[[Any], float], raw: Any, where: str, what: str) -> float:
+    """A finite number or constant expression, else InputError at ``where``."""
+    if isinstance(raw, (bool, dict, list, tuple)) or raw is None:
+        raise InputError(f"{what} must be {_EXPR}, got {_kind(raw)}", where)
+    try:
+        v = float(constant(raw))
+    except InputError as exc:
+        raise InputError(f"{what} must be {_EXPR}: {exc.message}", where) from None
+    if not math.isfinite(v):
+        raise InputError(f"{what} must be finite, got {v}", where)
+    return v
+
+
+def _path(raw: Any, where: str, what: str) -> str:
+    if not isinstance(raw, str) or not raw.strip():
+        raise InputError(f"{what} must be a result path such as x.2, x.A.1 or theta, got {_kind(raw)}", where)
+    return raw.strip()
+
+
+def parse_queries(raw: list, constant: Callable[[Any], float] | None = None) -> list[Query]:
+    """The raw ``find`` list validated; ``constant(text) -> float`` evaluates a number or constant
+    expression (``lambda x: dyncli.expr.constant(x, params)``; default: without params).  Raises
+    :class:`InputError` at ``find.<i>.<field>`` with one message naming the field and the fix."""
+    if constant is None:
+        from dyncli.expr import constant
+    if raw is None:
+        return []
+    if not isinstance(raw, (list, tuple)):
+        raise InputError("find must be a list of queries such as [{t: 1.5}, {when: {x.1: 0}}, {max: x.2}], "
+                         f"got {_kind(raw)}", "find")
+    return [_parse_one(q, i, constant) for i, q in enumerate(raw)]
+
+
+def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
+    base = f"find.{i}"
+    if not isinstance(q, dict):
+        raise InputError("a query is a mapping such as {t: 1.5}, {when: {x.1: 0}}, {max: x.2} or "
+                         f"{{min: x.2, within: [0, 1]}}, got {_kind(q)}", base)
+    for key in q:
+        if key not in _ALL_KEYS:
+            raise InputError(f"unknown key {str(key)!r}{did_you_mean(str(key), _ALL_KEYS)}; a query has one of t, "
+                             "when (with direction, occurrence), max or min (with within)", f"{base}.{key}")
+    kinds = [k for k in ("t", "when", "max", "min") if k in q]
+    if len(kinds) != 1:
+        raise InputError(f"a query asks one thing: give '{kinds[0]}' and '{kinds[1]}' as two queries" if kinds else
+                         f"a query needs one of t, when, max or min, not only {', '.join(q) or 'nothing'}",
+                         f"{base}.{kinds[1]}" if kinds else base)
+    kind = kinds[0]
+    for key in q:
+        if key not in _KEYS[kind]:
+            owner = "when" if key in ("direction", "occurrence") else "max and min"
+            raise InputError(f"'{key}' goes with {owner} only, not with '{kind}': remove it", f"{base}.{key}")
+    if kind == "t":
+        return AtTime(_number(constant, q["t"], f"{base}.t", "the time t"), index=i)
+    if kind == "when":
+        return _parse_when(q, base, i, constant)
+    within = _parse_within(q["within"], base, constant) if "within" in q else None
+    return Extreme(_path(q[kind], f"{base}.{kind}", f"the result of {kind}"), kind, within, index=i)
+
+
+def _parse_within(w: Any, base: str, constant: Callable[[Any], float]) -> tuple[float, float]:
+    if not isinstance(w, (list, tuple)) or len(w) != 2:
+        raise InputError("within is a time window [t1, t2], such as within: [0, 2], got "
+                         + (f"a list of {len(w)}" if isinstance(w, (list, tuple)) else _kind(w)), f"{base}.within")
+    t1, t2 = (_number(constant, x, f"{base}.within.{k}", f"the window's {'end' if k else 'start'}")
+              for k, x in enumerate(w))
+    if t2 < t1:
+        raise InputError(f"within [{w[0]}, {w[1]}] is reversed: write [{w[1]}, {w[0]}]", f"{base}.within")
+    return t1, t2
+
+
+def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) -> When:
+    w = q["when"]
+    if not isinstance(w, dict) or len(w) != 1:
+        raise InputError("when takes one result and its value, such as when: {x.1: 0}, got "
+                         + (f"{len(w)} entries" if isinstance(w, dict) else _kind(w)), f"{base}.when")
+    (key, val), = w.items()
+    path = _path(key, f"{base}.when", "the result in when")
+    value = _number(constant, val, f"{base}.when.{path}", f"the value of {path}")
+    d = q.get("direction", "any")
+    if d not in ("up", "down", "any"):
+        hint = did_you_mean(d, ("up", "down", "any")) if isinstance(d, str) else ""
+        raise InputError(f"direction must be up, down or any, got {d!r}{hint}" if isinstance(d, str) else
+                         f"direction must be up, down or any, got {_kind(d)}", f"{base}.direction")
+    n = q.get("occurrence", 1)
+    n = int(n) if isinstance(n, float) and n.is_integer() else n
+    if isinstance(n, bool) or not isinstance(n, int):
+        raise InputError(f"occurrence must be a whole number 1, 2, 3 ... (the n-th crossing), got {_kind(n)}",
+                         f"{base}.occurrence")
+    if n < 1:
+        raise InputError(f"occurrence counts from 1 (the first crossing), got {n}", f"{base}.occurrence")
+    return When(path, value, d, n, index=i)
+
+
+def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
+    """One ``{"t", "reached", "at_end"}`` per query, in order (``t`` and ``at_end`` None when not
+    reached; ``at_end`` None for ``t`` and ``when``).  An unknown result path is an InputError at
+    ``find.<i>.when`` / ``.max`` / ``.min`` naming it."""
+    out = []
+    for q in queries:
+        if isinstance(q, AtTime):
+            ok = motion.t0 <= q.t <= motion.t_end
+            out.append({"t": float(q.t) if ok else None, "reached": ok, "at_end": None})
+            continue
+        _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
+        t, at_end = (_when(motion, q), None) if isinstance(q, When) else _extreme(motion, q)
+        out.append({"t": t, "reached": t is not None, "at_end": at_end})
+    return out
+
+
+def _check_path(motion: Any, path: str, where: str) -> None:
+    known = list(motion.paths())
+    if path not in known:
+        raise InputError(f"no result '{path}' to search{did_you_mean(path, known)}; the scalar results are "
+                         + ", ".join(sorted(known)[:8]) + (" ..." if len(known) > 8 else ""), where)
+
+
+def _grid(breaks: Iterable[float], lo: float, hi: float) -> list[float]:
+    """lo, the breaks inside (lo, hi) and hi, each interval cut into SUBDIVIDE equal pieces."""
+    pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
+    out = [lo]
+    for a, b in zip(pts, pts[1:]):
+        out += [x for x in (a + (b - a) * k / SUBDIVIDE for k in range(1, SUBDIVIDE)) if a < x < b] + [b]
+    return [x for i, x in enumerate(out) if i == 0 or x > out[i - 1]]
+
+
+def _rate_fn(motion: Any, path: str, t0: float):
+    rate = getattr(motion, "rate", None)
+    return None if not callable(rate) or rate(path, t0) is None else (lambda t: float(rate(path, t)))
+
+
+def _tol(motion: Any, scale: float) -> float:
+    return max(8 * _EPS, float(getattr(motion, "rtol", 0.0) or 0.0)) * scale
+
+
+def _sign(x: float, tol: float) -> int:
+    return 0 if abs(x) <= tol else (1 if x > 0 else -1)
+
+
+def _when(motion: Any, q: When) -> float | None:
+    """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None."""
+    path, V = q.path, q.value
+    T = _grid(motion.breaks, float(motion.t0), float(motion.t_end))
+    F = [float(motion.value(path, t)) for t in T]
+    scan = _Crossings(lambda t: float(motion.value(path, t)) - V, _rate_fn(motion, path, motion.t0),
+                      T, [f - V for f in F], _tol(motion, max([abs(V)] + [abs(f) for f in F])))
+    want = {"up": 1, "down": -1}.get(q.direction)
+    hits = [t for t, d in scan.events() if want is None or d == want]
+    return hits[q.occurrence - 1] if len(hits) >= q.occurrence else None
+
+
+class _Crossings:
+    """The crossings and touches of g = value - VALUE = 0 over the samples G at the times T:
+    ``events()`` lists (time, +1 reaching from below / -1 from above) in time order."""
+
+    def __init__(self, g, rate, T, G, tol):
+        self.g, self.rate, self.T, self.G, self.tol, self.S = g, rate, T, G, tol, [_sign(x, tol) for x in G]
+        self.found: list[tuple[float, int]] = []
+
+    def events(self) -> list[tuple[float, int]]:
+        self._dips()
+        self._signs()
+        return sorted(self.found)
+
+    def first_reach(self, a: float, b: float, s: int) -> float:
+        """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b))."""
+        return _root(lambda t: _hr_psi(lambda t: s * self.g(t), t), a, b)
+
+    def dip(self, a: float, b: float, s: int, run: Iterable[int] = ()) -> None:
+        """g at a and b on side s (the samples ``run`` between on VALUE): a touch, two crossings?"""
+        rate, g = self.rate, self.g
+        tm, hm = _peak(lambda t: -s * g(t), (lambda t: -s * rate(t)) if rate else None, a, b)
+        tm, hm = max([(tm, hm)] + [(self.T[j], -s * self.G[j]) for j in run], key=lambda c: c[1])   # a kink
+        sm = _sign(-s * hm, self.tol)                 # the side of the closest approach
+        if sm == 0:                                   # touches VALUE: reaching it counts
+            t1 = self.first_reach(a, tm, s) if hm >= 0 and rate is None else tm
+            self.found.append((t1 if tm - t1 > 1e-6 * (b - a) else tm, -s))   # a plateau: its start
+        elif sm == -s:                                # through VALUE and back
+            self.found += [(self.first_reach(a, tm, s), -s), (self.first_reach(tm, b, -s), s)]
+
+    def _dips(self) -> None:
+        """Spans of samples on one side closer to VALUE than their neighbours (with the rate: a
+        rate turning toward VALUE and away again) may hide a touch or two crossings."""
+        T, G, S = self.T, self.G, self.S
+        n, covered = len(T), set()
+        for j in range(1, n - 1):
+            if S[j - 1] == S[j] == S[j + 1] != 0 and abs(G[j]) < abs(G[j - 1]) and abs(G[j]) <= abs(G[j + 1]):
+                self.dip(T[j - 1], T[j + 1], S[j])
+                covered.update((j - 1, j))
+        R = [self.rate(t) for t in T] if self.rate else None
+        for k in range(n - 1):
+            s = S[k]
+            if k in covered or s == 0 or S[k + 1] != s:
+                continue
+            if R is not None and s * R[k] < 0 < s * R[k + 1]:
+                self.dip(T[k], T[k + 1], s)
+            elif R is None and ((k == 0 and abs(G[0]) <= abs(G[1])) or (k == n - 2 and abs(G[-1]) < abs(G[-2]))):
+                self.dip(T[k], T[k + 1], s)            # a dip just inside an end
+
+    def _signs(self) -> None:
+        """Sign changes between samples off VALUE, runs of samples on it (within tolerance)."""
+        T, G, S = self.T, self.G, self.S
+        sp = ip = None                                # the last sample off VALUE: its side, index
+        for i, s in enumerate(S):
+            if s != 0 and sp is not None and s != sp:     # crossed (possibly through samples on VALUE)
+                self.found.append((self.first_reach(T[ip], T[i], sp), -sp))
+            elif s != 0 and sp is not None and i - ip > 1:    # came to VALUE and went back: a touch
+                self.dip(T[ip], T[i], sp, range(ip + 1, i))
+            if s != 0:
+                sp, ip = s, i                         # (sp None before: a value held at the start)
+        if sp is not None and ip < len(T) - 1:        # reaches VALUE and stays on it to the end
+            j = next((j for j in range(ip + 1, len(T)) if sp * G[j] <= 0), None)
+            t = self.first_reach(T[ip], T[j], sp) if j is not None else \
+                _root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance: its edge
+            self.found.append((t, -sp))
+
+
+def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
+    """The first time of the largest (``max``) or smallest value in the window, and at_end."""
+    t0, t_end = float(motion.t0), float(motion.t_end)
+    w1, w2 = max((q.within or (t0,))[0], t0), min((q.within or (0, t_end))[1], t_end)
+    if w1 > w2:
+        return None, None
+    sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
+    h = lambda t: sense * float(motion.value(path, t))     # noqa: E731
+    hr = (lambda t: sense * rate(t)) if rate else None
+    T = _grid(motion.breaks, w1, w2)
+    H, n, rooted = [h(t) for t in T], len(T), set()
+    cands = [(T[0], H[0]), (T[-1], H[-1])]
+    HR = [hr(t) for t in T] if hr else []
+    for k in range(len(HR) - 1):
+        if HR[k] > 0 >= HR[k + 1]:                    # h turns from rising to not rising
+            tm = _root(lambda t: _hr_psi(hr, t), T[k], T[k + 1])
+            cands.append((tm, h(tm)))
+            rooted.add(k)
+    for j in range(1, n - 1):
+        if H[j] > H[j - 1] and H[j] >= H[j + 1] and not ({j - 1, j} & rooted):
+            tm, hm = _peak(h, None, T[j - 1], T[j + 1])
+            cands.append((tm, hm) if hm >= H[j] else (T[j], H[j]))
+    if hr is None and n > 2:                          # a peak just inside an end
+        cands += [_peak(h, None, a, b) for a, b, ha, hb in ((T[0], T[1], H[0], H[1]), (T[-2], T[-1], H[-1], H[-2]))
+                  if ha >= hb]
+    best = max(c[1] for c in cands)
+    tol = _tol(motion, max(abs(x) for x in H + [best]))
+    t = min(c[0] for c in cands if c[1] >= best - tol)
+    return t, (t == w1 or t == w2)
+
+
+def _hr_psi(hr: Callable[[float], float], t: float) -> float:
+    """hr(t), an exact zero counted as negative: a root is the first time hr stops being positive."""
+    return y if (y := hr(t)) != 0 else -_TINY
+
+
+def _root(f: Callable[[float], float], xa: float, xb: float, xtol: float = 1e-300, rtol: float = 4 * _EPS,
+          maxiter: int = 2000) -> float:
+    """The root of f bracketed by [xa, xb] to full double accuracy (4 eps relative in t) by Brent's
+    method (bisection guarding inverse quadratic / secant steps), the operations of scipy's
+    ``brentq``: converged when the bracket half-width is below (xtol + rtol|x|)/2."""
+    # TODO: one Brent (dyncli/rootfind.py, issue #26)
+    xpre, xcur, fpre, fcur = xa, xb, f(xa), f(xb)
+    if fpre == 0 or fcur == 0:
+        return xpre if fpre == 0 else xcur
+    xblk = fblk = spre = scur = 0.0
+    for _ in range(maxiter):
+        if fpre != 0 and fcur != 0 and (math.copysign(1.0, fpre) != math.copysign(1.0, fcur)):
+            xblk, fblk, spre, scur = xpre, fpre, xcur - xpre, xcur - xpre
+        if abs(fblk) < abs(fcur):
+            xpre, xcur, xblk, fpre, fcur, fblk = xcur, xblk, xcur, fcur, fblk, fcur
+        delta, sbis = (xtol + rtol * abs(xcur)) / 2, (xblk - xcur) / 2
+        if fcur == 0 or abs(sbis) < delta:
+            return xcur
+        stry = math.nan
+        if abs(spre) > delta and abs(fcur) < abs(fpre):
+            try:
+                if xpre == xblk:                      # secant
+                    stry = -fcur * (xcur - xpre) / (fcur - fpre)
+                else:                                 # inverse quadratic
+                    dpre, dblk = (fpre - fcur) / (xpre - xcur), (fblk - fcur) / (xblk - xcur)
+                    stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+            except ZeroDivisionError:
+                pass
+        spre, scur = (scur, stry) if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta) else (sbis, sbis)
+        xpre, fpre = xcur, fcur
+        xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
+        fcur = f(xcur)
+    return xcur
+
+
+def _peak(h, hr, a: float, b: float) -> tuple[float, float]:
+    """The largest value of h inside [a, b] and its time: the root of its rate hr (Brent) when
+    hr is given and turns from positive to not positive over [a, b], else Brent's minimiser."""
+    if hr is not None and hr(a) > 0 >= hr(b):
+        t = _root(lambda t: _hr_psi(hr, t), a, b)
+        return t, h(t)
+    u = _fminbound(lambda u: -h(a + u * (b - a)), 1e-12)
+    t = min(max(a + u * (b - a), a), b)
+    return t, h(t)
+
+
+def _fminbound(f: Callable[[float], float], xatol: float, maxfun: int = 500) -> float:
+    """Brent's minimiser on [0, 1] (golden section with parabolic steps; Brent 1973, ch. 5)."""
+    c, sqrt_eps = 0.5 * (3.0 - math.sqrt(5.0)), math.sqrt(_EPS)
+    a, b, v, w, x = 0.0, 1.0, c, c, c
+    fv = fw = fx = f(x)
+    d = e = 0.0
+    for _ in range(maxfun):
+        xm, tol1 = 0.5 * (a + b), sqrt_eps * abs(x) + xatol / 3.0
+        if abs(x - xm) <= 2 * tol1 - 0.5 * (b - a):
+            break
+        golden = True
+        if abs(e) > tol1:                             # a parabola through x, w, v
+            r, q = (x - w) * (fx - fv), (x - v) * (fx - fw)
+            p, q = (x - v) * q - (x - w) * r, 2.0 * (q - r)
+            p, q = (-p if q > 0 else p), abs(q)
+            r, e = e, d
+            if abs(p) < abs(0.5 * q * r) and q * (a - x) < p < q * (b - x):
+                d, golden = p / q, False
+                if (x + d - a) < 2 * tol1 or (b - x - d) < 2 * tol1:
+                    d = tol1 if xm >= x else -tol1
+        if golden:
+            d = c * (e := (a - x) if x >= xm else (b - x))
+        u = x + (d if abs(d) >= tol1 else (tol1 if d >= 0 else -tol1))
+        fu = f(u)
+        if fu <= fx:
+            a, b = (x, b) if u >= x else (a, x)
+            v, fv, w, fw, x, fx = w, fw, x, fx, u, fu
+        else:
+            a, b = (u, b) if u < x else (a, u)
+            if fu <= fw or w == x:
+                v, fv, w, fw = w, fw, u, fu
+            elif fu <= fv or v == x or v == w:
+                v, fv = u, fu
+    return x

@@ -1,0 +1,136 @@
+"""Assembly, degrees of freedom and consistent initial velocities (contract §10, steps 1–2).
+
+* Positions the file left out are placed by Gauss–Newton on φ(q) = 0 over those coordinates
+  only, minimum-norm steps from the sketch (so every given coordinate is kept).
+* A joint whose rows still have a gap after assembly is refused, naming it and the gap.
+* Degrees of freedom by the rank of J (never by counting); redundant joints are named.
+* Velocities that violate the joints are projected, mass-weighted, with a warning.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError
+
+EPS = float(np.finfo(float).eps)
+
+
+def length_scale(q, system) -> float:
+    s = float(np.max(np.abs(q))) if q.size else 0.0
+    for b in system.bodies:
+        s = max(s, b.length, b.radius, *b.size)
+    return max(s, 1.0)
+
+
+def assemble(system, q, free, t: float = 0.0, iters: int = 60) -> np.ndarray:
+    q = q.astype(float).copy()
+    if not np.any(free) or system.m == 0:
+        return q
+    cols = np.nonzero(free)[0]
+    tol = 1e-14 * length_scale(q, system)
+    for _ in range(iters):
+        ph = system.phi(q, t)
+        if float(np.max(np.abs(ph), initial=0.0)) <= tol:
+            break
+        J = system.jac(q)[:, cols]
+        step = np.linalg.lstsq(J, -ph, rcond=None)[0]
+        nrm = float(np.max(np.abs(step), initial=0.0))
+        if nrm > 0.5 * length_scale(q, system):         # damp far jumps from a rough sketch
+            step *= 0.5 * length_scale(q, system) / nrm
+        q[cols] += step
+        if nrm <= 1e-16 * length_scale(q, system):
+            break
+    return q
+
+
+def gaps(system, q, t: float = 0.0) -> list[tuple[object, float]]:
+    """(element, largest |φ| of its rows) for every element not satisfied to rounding."""
+    out = []
+    tol = 1e-9 * length_scale(q, system)
+    for e in system.elements:
+        g = float(np.max(np.abs(e.phi(q, t)), initial=0.0))
+        if g > tol:
+            out.append((e, g))
+    return out
+
+
+def refuse_gaps(system, q, free, t: float = 0.0) -> None:
+    bad = gaps(system, q, t)
+    if not bad:
+        return
+    e, g = bad[0]
+    placed = "" if not np.any(free) else " (the joints could not place the positions left out either)"
+    unit = "rad" if e.kind == "drive" and system.names[e.index].startswith("angle") else "m"
+    raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {g:.6g} {unit}{placed}; "
+                     "fix the positions, or leave one out (x or angle) so that the joints place it", e.path)
+
+
+def rank(J: np.ndarray) -> int:
+    if J.size == 0:
+        return 0
+    s = np.linalg.svd(J, compute_uv=False)
+    return int(np.sum(s > s[0] * 1e-10)) if s[0] > 0 else 0
+
+
+def redundant(system, q) -> list[str]:
+    """Names of the joints any one of which could go without changing the rank (empty when
+    the rows are independent)."""
+    J = system.jac(q)
+    r = rank(J)
+    if r == J.shape[0]:
+        return []
+    names = []
+    for i, e in enumerate(system.elements):
+        if e.kind == "guide":
+            continue
+        keep = np.ones(J.shape[0], bool)
+        o = system.offsets[i]
+        keep[o:o + e.rows] = False
+        if rank(J[keep]) == r:
+            names.append(e.name)
+    return names or [e.name for e in system.elements]
+
+
+def independent(J: np.ndarray, n: int) -> list[int]:
+    """Coordinates that can be chosen freely: greedy, in order, each kept when it raises the
+    rank of [J; e_i] (the angles first: the textbooks' choice)."""
+    r0 = rank(J)
+    chosen: list[int] = []
+    rows = J.copy() if J.size else np.zeros((0, n))
+    need = n - r0
+    for i in sorted(range(n), key=lambda i: -i):
+        if len(chosen) == need:
+            break
+        e = np.zeros((1, n))
+        e[0, i] = 1.0
+        trial = np.vstack([rows, e])
+        if rank(trial) > rows.shape[0] - (J.shape[0] - r0) if False else rank(trial) > rank(rows):
+            rows, chosen = trial, chosen + [i]
+    return sorted(chosen)
+
+
+def project_velocity(system, q, v, t: float = 0.0):
+    """(v projected onto J v + φ_t = 0, changed?)."""
+    if system.m == 0:
+        return v, False
+    J = system.jac(q)
+    r = J @ v + system.phi_t(t)
+    scale = max(float(np.max(np.abs(v), initial=0.0)), 1e-300)
+    if float(np.max(np.abs(r), initial=0.0)) <= 1e-12 * scale * max(1.0, float(np.max(np.abs(J)))):
+        return v, False
+    return system.project_velocity(q, v, t), True
+
+
+def fmt_vec(v) -> str:
+    return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
+
+
+def near_zero(x: float, scale: float) -> bool:
+    return abs(x) <= 64 * EPS * max(scale, 1e-300)
+
+
+def isclose(a, b) -> bool:
+    return math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-300)

@@ -1,0 +1,334 @@
+"""From a scene's plain description to its system: bodies, points, joints as rows, loads.
+
+The input arrives here as :class:`Plan` — plain numbers, names and callables made by the
+solver from the validated model — never the model itself.  Every name is resolved with a
+did-you-mean; every refusal names the field.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from dyncli.errors import InputError
+from dyncli.expr import did_you_mean
+
+from . import elements as el
+from .dynamics import Load, SceneSystem
+from .system import BodyData, Point, SurfaceData, perp
+
+SHAPE_I = {"rod": lambda b: b["mass"] * b["length"] ** 2 / 12, "disk": lambda b: b["mass"] * b["radius"] ** 2 / 2,
+           "ring": lambda b: b["mass"] * b["radius"] ** 2,
+           "box": lambda b: b["mass"] * (b["size"][0] ** 2 + b["size"][1] ** 2) / 12}
+
+
+@dataclass
+class Plan:
+    """A scene as plain data (dicts of floats, strings and callables of t)."""
+
+    bodies: dict[str, dict]
+    surfaces: dict[str, dict]
+    joints: dict[str, dict]
+    loads: list[dict]
+    g: float
+
+
+@dataclass
+class Built:
+    system: SceneSystem
+    q: np.ndarray                  # the sketch (given coordinates, defaults for the rest)
+    free: np.ndarray               # True where the file left the coordinate out
+    v: np.ndarray
+    bodies: dict[str, BodyData]
+    cords: list[tuple[str, dict]] = field(default_factory=list)   # placed after a first assembly
+    surfaces: dict[str, SurfaceData] = field(default_factory=dict)
+
+
+def bodies_of(plan: Plan) -> tuple:
+    out: dict[str, BodyData] = {}
+    q, free, v, names, vgiven = [], [], [], [], []
+    for name, b in plan.bodies.items():
+        rigid = b["shape"] != "point"
+        I = b["I"] if b["I"] is not None else (SHAPE_I[b["shape"]](b) if rigid else None)
+        k = len(q)
+        idx = (k, k + 1, k + 2) if rigid else (k, k + 1)
+        pts = {"center": (0.0, 0.0)}
+        if b["shape"] == "rod":
+            pts["end1"], pts["end2"] = (-b["length"] / 2, 0.0), (b["length"] / 2, 0.0)
+        pts.update(b["points"])
+        out[name] = BodyData(name, b["mass"], I, idx, pts, b["shape"], b["length"] or 0.0, b["radius"] or 0.0,
+                             tuple(b["size"] or (0.0, 0.0)))
+        x = b["x"]
+        q += list(x) if x is not None else [0.0, 0.0]
+        free += [x is None] * 2
+        v += list(b["v"]) if b["v"] is not None else [0.0, 0.0]
+        vgiven += [b["v"] is not None] * 2
+        names += [f"x.{name}.0", f"x.{name}.1"]
+        if rigid:
+            q.append(b["angle"] if b["angle"] is not None else 0.0)
+            free.append(b["angle"] is None)
+            v.append(b["omega"] or 0.0)
+            vgiven.append(b["omega"] is not None)
+            names.append(f"angle.{name}")
+    return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
+
+
+def surface_of(name: str, s: dict) -> SurfaceData:
+    d = np.array(s["direction"], float)
+    d = d / math.hypot(d[0], d[1])
+    return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])))
+
+
+class Resolver:
+    def __init__(self, bodies: dict[str, BodyData], surfaces: dict[str, SurfaceData]):
+        self.bodies, self.surfaces = bodies, surfaces
+
+    def body(self, name, path) -> BodyData:
+        if not isinstance(name, str) or name not in self.bodies:
+            hint = did_you_mean(name, self.bodies) if isinstance(name, str) else ""
+            raise InputError(f"unknown body {name!r}{hint}; bodies: {', '.join(self.bodies)}", path)
+        return self.bodies[name]
+
+    def surface(self, name, path) -> SurfaceData:
+        if not isinstance(name, str) or name not in self.surfaces:
+            hint = did_you_mean(name, self.surfaces) if isinstance(name, str) else ""
+            known = ", ".join(self.surfaces) or "none: add a `surfaces:` entry"
+            raise InputError(f"unknown surface {name!r}{hint}; surfaces: {known}", path)
+        return self.surfaces[name]
+
+    def pair(self, refs, path, q) -> tuple[Point, Point]:
+        """Two points; `ground` alone is the ground point where the other one is at t = 0."""
+        if refs[0] == "ground" and refs[1] == "ground":
+            raise InputError("join a body to the ground, not the ground to itself", path)
+        if refs[1] == "ground":
+            P = self.point(refs[0], path + ".0")
+            return P, Point("ground", None, tuple(float(x) for x in P.pos(q)))
+        if refs[0] == "ground":
+            Q = self.point(refs[1], path + ".1")
+            return Point("ground", None, tuple(float(x) for x in Q.pos(q))), Q
+        return self.point(refs[0], path + ".0"), self.point(refs[1], path + ".1")
+
+    def point(self, ref, path) -> Point:
+        if isinstance(ref, (list, tuple)):
+            if len(ref) != 2:
+                raise InputError(f"a ground point is [x1, x2], got {len(ref)} numbers", path)
+            return Point(f"[{ref[0]:g}, {ref[1]:g}]", None, (float(ref[0]), float(ref[1])))
+        if not isinstance(ref, str):
+            raise InputError("a point is BODY, BODY.POINT or [x1, x2] on the ground", path)
+        bname, _, pname = ref.partition(".")
+        if bname == "ground":
+            raise InputError("a ground point is written [x1, x2] (`ground` alone only as the second point of a pin, "
+                             "link, spring or damper: the ground where the first point is)", path)
+        b = self.body(bname, path)
+        if not pname:
+            return Point(ref, b, (0.0, 0.0))
+        if pname not in b.points:
+            raise InputError(f"body {bname!r} has no point {pname!r}{did_you_mean(pname, b.points)}; its points: "
+                             f"{', '.join(b.points)}", path)
+        if not b.rigid and pname != "center":
+            raise InputError(f"{bname!r} is a point body: it has no point {pname!r}", path)
+        return Point(ref, b, b.points[pname])
+
+
+def _rigid(b: BodyData, what: str, path: str) -> None:
+    if not b.rigid:
+        raise InputError(f"{what} needs a rigid body; {b.name!r} is a point", path)
+
+
+def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int, loads_t) -> tuple[list, list]:
+    """Every joint but the cords (placed after a first assembly) as elements; the cords as
+    (name, spec) to build later."""
+    out, cords = [], []
+    for name, j in plan.joints.items():
+        kind, path = j["kind"], f"joints.{name}.{j['kind']}"
+        a = j[kind]
+        if kind == "pin":
+            P, Q = R.pair(a, path, q)
+            out.append(el.Pin(name, kind, n, path, P=P, Q=Q))
+        elif kind == "link":
+            P, Q = R.pair(a, path, q)
+            L = j["length"]
+            if L is None:
+                d = P.pos(q) - Q.pos(q)
+                L = math.hypot(d[0], d[1])
+                if L == 0:
+                    raise InputError("the link's ends coincide in the sketch: give its length", f"joints.{name}.length")
+            out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
+            out[-1].angle = j.get("angle")
+        elif kind == "slider":
+            b = R.body(a[0], path + ".0")
+            s = R.surface(a[1], path + ".1")
+            P = Point(b.name, b, (0.0, 0.0))
+            c0 = float(np.array(s.n) @ P.pos(q))
+            th0 = float(q[b.index[2]]) if b.rigid else None
+            out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
+        elif kind == "contact":
+            P = R.point(a[0], path + ".0")
+            s = R.surface(a[1], path + ".1")
+            mu_s = j["mu"] if j["mu"] is not None else (j["mu_s"] or 0.0)
+            mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j["mu_k"] is not None else mu_s)
+            if j["mu_k"] is not None and j["mu_s"] is None:
+                mu_s = mu_k
+            out.append(el.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k,
+                                  mode="slide" if (mu_s or mu_k) else "smooth", sign=0.0))
+        elif kind == "rolls":
+            b = R.body(a[0], path + ".0")
+            _rigid(b, "rolling", path + ".0")
+            if b.radius <= 0:
+                raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
+            s = R.surface(a[1], path + ".1")
+            i = b.index
+            c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
+            out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+                                c0=c0, mu_s=j["mu_s"]))
+            out[-1].at = j["at"]
+        elif kind == "drive":
+            bname, _, coord = a.partition(".")
+            b = R.body(bname, path)
+            choices = {"x1": 0, "x2": 1, "angle": 2}
+            if coord not in choices:
+                raise InputError(f"drive a body's coordinate: {bname}.angle, {bname}.x1 or {bname}.x2 (got {a!r})"
+                                 f"{did_you_mean(coord, choices)}", path)
+            if coord == "angle":
+                _rigid(b, "an angle drive", path)
+            out.append(el.Drive(name, kind, n, path, index=b.index[choices[coord]], f=j["value"]))
+        elif kind == "cord":
+            cords.append((name, j))
+    return out, cords
+
+
+def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
+    out = []
+    for i, f in enumerate(plan.loads):
+        kind, path = f["kind"], f"forces.{i}.{f['kind']}"
+        if kind in ("spring", "damper"):
+            P, Q = R.pair(f[kind], path, q)
+            out.append(Load(kind, f["name"], P=P, Q=Q, k=f["k"] or 0.0, L=f["L"] or 0.0, one_sided=f["one_sided"],
+                            c=f["c"] or 0.0))
+        elif kind == "force":
+            out.append(Load(kind, f["name"], P=R.point(f["force"], path), F=f["F"], constant=f["constant"]))
+        else:
+            b = R.body(f["torque"], path)
+            _rigid(b, "a couple", path)
+            out.append(Load(kind, f["name"], body=b, M=f["M"], constant=f["constant"]))
+    return out
+
+
+# ---------------------------------------------------------------------------- cords
+
+def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> tuple[el.Cord, list[el.Guide]]:
+    """A cord with the directions of its segments at the assembled positions of t = 0."""
+    path = f"joints.{name}.cord"
+    items = spec["cord"]
+    nodes = []          # (kind, data, label) with kind in point, disk, pulley, wound
+    for i, it in enumerate(items):
+        p = f"{path}.{i}"
+        end = i in (0, len(items) - 1)
+        if isinstance(it, dict):
+            if "pulley" in it:
+                if end:
+                    raise InputError("a cord ends at a point or a wound body, not at a pulley", p)
+                c = it["pulley"]
+                nodes.append(("pulley", (np.array(c, float), float(it.get("radius") or 0.0)), p))
+            elif "wound" in it:
+                if not end:
+                    raise InputError("a wound body is an end of the cord (first or last)", p)
+                b = R.body(it["wound"], p + ".wound")
+                _rigid(b, "a wound cord", p + ".wound")
+                r = it.get("radius") or b.radius
+                if not r:
+                    raise InputError(f"give the radius the cord unwinds from ({it['wound']!r} has none)", p + ".radius")
+                nodes.append(("wound", (b, float(r), it.get("side")), p))
+            else:
+                raise InputError("a cord entry is a point, a body, {pulley: [x1, x2], radius: r} or "
+                                 "{wound: BODY, radius: r}", p)
+        elif not end and isinstance(it, str) and "." not in it and it in R.bodies and R.bodies[it].rigid:
+            b = R.bodies[it]
+            if b.radius <= 0:
+                raise InputError(f"the cord passes over {it!r}, which has no radius (a disk or ring)", p)
+            nodes.append(("disk", b, p))
+        else:
+            if not end:
+                raise InputError("the cord's inner entries are pulleys: a disk body or {pulley: [x1, x2], radius: r}", p)
+            nodes.append(("point", R.point(it, p), p))
+    centres = [_centre(nd, q) for nd in nodes]
+    rho = _sides(nodes, centres)
+    runs, run, guides = [], [], []
+    for i in range(len(nodes) - 1):
+        tg = el.segment_tangents(centres[i], rho[i], centres[i + 1], rho[i + 1])
+        if tg is None:
+            raise InputError(f"the cord's segment {i + 1} has no straight part (its ends overlap)", path)
+        u, Ta, Tb = tg
+        seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u,
+                         float(u @ (Tb - Ta)))
+        run.append(seg)
+        for nd, other in ((nodes[i], Tb), (nodes[i + 1], Ta)):
+            if nd[0] == "point" and nd[1].body is not None and not nd[1].body.rigid:
+                w = perp(u)
+                guides.append(el.Guide(f"{name}:guide", "guide", len(q), path, P=nd[1], w=w,
+                                       c0=float(w @ nd[1].pos(q))))
+        if nodes[i + 1][0] == "disk":
+            runs.append(run)
+            run = []
+    runs.append(run)
+    cord = el.Cord(name, "cord", len(q), path, runs=runs)
+    cord.consts = list(cord.lengths(q))
+    return cord, guides
+
+
+def _sides(nodes, centres) -> list[float]:
+    """Signed radii: a pulley is passed on the side away from the line of its neighbours; a
+    wound end on the side its `side` names (or the drawing's)."""
+    rho = [0.0] * len(nodes)
+    for i in range(1, len(nodes) - 1):
+        r = nodes[i][1][1] if nodes[i][0] == "pulley" else nodes[i][1].radius
+        a, b, c = centres[i - 1], centres[i + 1], centres[i]
+        side = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        rho[i] = r if side >= 0 else -r
+    for i in (0, len(nodes) - 1):
+        if nodes[i][0] == "wound":
+            rho[i] = _wound_side(nodes, centres, rho, i)
+    return rho
+
+
+def _centre(nd, q):
+    kind, data, _ = nd
+    if kind == "point":
+        return data.pos(q)
+    if kind == "pulley":
+        return data[0]
+    b = data if kind == "disk" else data[0]
+    i = b.index
+    return np.array([q[i[0]], q[i[1]]])
+
+
+def _wound_side(nodes, centres, rho, i):
+    b, r, side = nodes[i][1]
+    j = 1 if i == 0 else len(nodes) - 2
+    if side in ("left", "right"):
+        sgn = 1.0 if side == "left" else -1.0
+        return sgn * r if i == 0 else -sgn * r
+    best = None
+    for s in (r, -r):       # the textbook drawing: the free segment the more nearly vertical or horizontal
+        args = (centres[i], s, centres[j], rho[j]) if i == 0 else (centres[j], rho[j], centres[i], s)
+        tg = el.segment_tangents(*args)
+        if tg is None:
+            continue
+        u = tg[0]
+        score = min(abs(u[0]), abs(u[1]))
+        if best is None or score < best[0] - 1e-12:
+            best = (score, s)
+    return best[1] if best else r
+
+
+def _end(nd, T, C, u) -> el.CordEnd:
+    kind, data, _ = nd
+    if kind == "point":
+        return el.CordEnd(point=data)
+    if kind == "pulley":
+        return el.CordEnd(fixed=T)
+    b = data if kind == "disk" else data[0]
+    k = float(u @ perp(T - C))
+    return el.CordEnd(centre=Point(b.name, b, (0.0, 0.0)), k=k)

@@ -1,0 +1,216 @@
+"""The equations of motion of a scene in maximal coordinates, one linear solve per evaluation.
+
+    [ M   −Jᵀ − Φ ] [ q̈ ]   [ f(q, q̇, t) ]
+    [ J      0    ] [ λ ] = [ γ(q, q̇, t) ]
+
+M is diagonal (m, m, Ī₃₃ per rigid body: 16.7, 29.5, 32.15), f the applied loads (gravity −g e2,
+springs, dampers, forces, couples) as generalized forces, J the joints' rows, γ = −J̇q̇ − φ_tt,
+and Φ the columns of kinetic friction (−μ_k N sign d̂ at a sliding contact: a force
+proportional to that contact's own multiplier).  The multipliers λ are the joint forces.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from dyncli.errors import NumericalError
+
+from .elements import Contact, Element
+from .system import BodyData, Point
+
+EPS = float(np.finfo(float).eps)
+
+
+@dataclass
+class Load:
+    """An applied element: spring, damper, force or torque (``name`` reported as force.NAME)."""
+
+    kind: str
+    name: str | None
+    P: Point | None = None
+    Q: Point | None = None
+    k: float = 0.0
+    L: float = 0.0
+    one_sided: str | None = None
+    c: float = 0.0
+    F: object = None        # t -> (F1, F2)
+    M: object = None        # t -> M
+    body: BodyData | None = None
+    constant: bool = True   # F or M does not depend on t
+
+    def spring_tension(self, q) -> float:
+        d = self.P.pos(q) - self.Q.pos(q)
+        T = self.k * (math.hypot(d[0], d[1]) - self.L)
+        if self.one_sided == "compression" and T > 0 or self.one_sided == "tension" and T < 0:
+            return 0.0
+        return T
+
+    def stretch(self, q) -> float:
+        d = self.P.pos(q) - self.Q.pos(q)
+        return math.hypot(d[0], d[1]) - self.L
+
+    def generalized(self, q, v, t, n: int) -> tuple[np.ndarray, float, object]:
+        """(generalized force, its power if non-conservative else 0, the reported value)."""
+        if self.kind in ("spring", "damper"):
+            d = self.P.pos(q) - self.Q.pos(q)
+            ln = math.hypot(d[0], d[1])
+            if ln == 0:
+                raise NumericalError(f"the ends of {self.label} coincide: its direction is undefined")
+            e = d / ln
+            JPQ = self.P.jac(q, n) - self.Q.jac(q, n)
+            if self.kind == "spring":
+                T = self.spring_tension(q)
+                return -T * (e @ JPQ), 0.0, T
+            T = self.c * float(e @ (self.P.vel(q, v) - self.Q.vel(q, v)))
+            g = -T * (e @ JPQ)
+            return g, float(g @ v), T
+        if self.kind == "force":
+            F = np.array(self.F(t), dtype=float)
+            g = F @ self.P.jac(q, n)
+            return g, float(g @ v), [float(F[0]), float(F[1]), 0.0]
+        M = float(self.M(t))
+        g = np.zeros(n)
+        g[self.body.index[2]] = M
+        return g, M * float(v[self.body.index[2]]), M
+
+    @property
+    def label(self) -> str:
+        return f"the {self.kind}" + (f" {self.name!r}" if self.name else "")
+
+
+@dataclass
+class SceneSystem:
+    bodies: list[BodyData]
+    elements: list[Element]
+    loads: list[Load]
+    g: float
+    n: int
+    names: list[str] = field(default_factory=list)     # coordinate names, e.g. "x.A.0", "angle.rod"
+
+    def __post_init__(self):
+        m = np.zeros(self.n)
+        for b in self.bodies:
+            m[b.index[0]] = m[b.index[1]] = b.mass
+            if b.rigid:
+                m[b.index[2]] = b.inertia
+        self.mass = m
+        self.grav = np.zeros(self.n)
+        for b in self.bodies:
+            self.grav[b.index[1]] = -b.mass * self.g
+        self._offsets()
+
+    def _offsets(self):
+        self.offsets, k = [], 0
+        for e in self.elements:
+            self.offsets.append(k)
+            k += e.rows
+        self.m = k
+
+    def refresh(self):
+        """Recompute the row offsets after an element changed its rows (a contact's mode)."""
+        self._offsets()
+
+    # ------------------------------------------------------------------ rows
+    def phi(self, q, t) -> np.ndarray:
+        return np.concatenate([e.phi(q, t) for e in self.elements]) if self.elements else np.zeros(0)
+
+    def jac(self, q) -> np.ndarray:
+        return np.vstack([e.jac(q) for e in self.elements]) if self.elements else np.zeros((0, self.n))
+
+    def gamma(self, q, v, t) -> np.ndarray:
+        return np.concatenate([e.gamma(q, v, t) for e in self.elements]) if self.elements else np.zeros(0)
+
+    def phi_t(self, t) -> np.ndarray:
+        return np.concatenate([e.phi_t(t) for e in self.elements]) if self.elements else np.zeros(0)
+
+    def lam_of(self, lam, i: int) -> np.ndarray:
+        o = self.offsets[i]
+        return lam[o:o + self.elements[i].rows]
+
+    # ------------------------------------------------------------------ loads
+    def applied(self, q, v, t) -> tuple[np.ndarray, float]:
+        """Generalized applied force and the power of the non-conservative loads."""
+        f = self.grav.copy()
+        power = 0.0
+        for ld in self.loads:
+            g, p, _ = ld.generalized(q, v, t, self.n)
+            f += g
+            power += p
+        return f, power
+
+    # ------------------------------------------------------------------ the solve
+    def solve(self, q, v, t) -> tuple[np.ndarray, np.ndarray, float]:
+        """(q̈, λ, power of the non-conservative loads incl. friction)."""
+        n, m = self.n, self.m
+        f, power = self.applied(q, v, t)
+        J = self.jac(q)
+        A = np.zeros((n + m, n + m))
+        A[:n, :n] = np.diag(self.mass)
+        A[:n, n:] = -J.T
+        A[n:, :n] = J
+        for i, e in enumerate(self.elements):
+            if isinstance(e, Contact):
+                col = e.friction_column(q)
+                if col is not None:
+                    A[:n, n + self.offsets[i]] -= col
+        rhs = np.concatenate([f, self.gamma(q, v, t)])
+        try:
+            x = np.linalg.solve(A, rhs)
+        except np.linalg.LinAlgError:
+            raise NumericalError(f"the equations of motion are singular at t = {t:.6g} s (a massless body with a "
+                                 "free motion, or joints that lock each other)") from None
+        a, lam = x[:n], x[n:]
+        for i, e in enumerate(self.elements):
+            if isinstance(e, Contact) and e.mode == "slide" and e.mu_k:
+                power += e.friction(self.lam_of(lam, i)) * e.slip_speed(q, v)
+        for i, e in enumerate(self.elements):
+            if e.kind == "drive":
+                power += float(self.lam_of(lam, i)[0]) * float(v[e.index])
+        return a, lam, power
+
+    # ------------------------------------------------------------------ energy
+    def kinetic(self, v) -> float:
+        return 0.5 * float(self.mass @ (v * v))
+
+    def potential(self, q) -> float:
+        V = -float(self.grav @ q)
+        for ld in self.loads:
+            if ld.kind == "spring":
+                s = ld.stretch(q)
+                if ld.one_sided == "compression" and s > 0 or ld.one_sided == "tension" and s < 0:
+                    continue
+                V += 0.5 * ld.k * s * s
+        return V
+
+    # ------------------------------------------------------------------ projection
+    def weights(self) -> np.ndarray:
+        w = self.mass.copy()
+        floor = max(float(np.max(w)), 1e-300) * 1e-12
+        return np.maximum(w, floor)
+
+    def project_position(self, q, t, iters: int = 4) -> np.ndarray:
+        if self.m == 0:
+            return q
+        Winv = 1.0 / self.weights()
+        for _ in range(iters):
+            ph = self.phi(q, t)
+            if not np.any(ph):
+                break
+            J = self.jac(q)
+            S = (J * Winv) @ J.T
+            q = q - Winv * (J.T @ np.linalg.solve(S, ph))
+        return q
+
+    def project_velocity(self, q, v, t) -> np.ndarray:
+        if self.m == 0:
+            return v
+        Winv = 1.0 / self.weights()
+        J = self.jac(q)
+        r = J @ v + self.phi_t(t)
+        if not np.any(r):
+            return v
+        S = (J * Winv) @ J.T
+        return v - Winv * (J.T @ np.linalg.solve(S, r))

@@ -1,0 +1,399 @@
+"""The joints of a scene as blocks of constraint rows (contract §10).
+
+Each element holds rows φ(q, t) = 0 with their analytic Jacobian J = ∂φ/∂q and
+γ = −J̇ v − φ_tt (so that J q̈ = γ), and the velocity term φ_t (J q̇ + φ_t = 0).  The
+equations of motion M q̈ = f + Jᵀ λ then make the multipliers λ the joint forces of the
+free-body diagrams (16.7, 29.5, 32.15, 36); each element reads its own λ back in the
+contract's terms and signs (on the first-named body, by the second).  One-sided elements
+list the quantities that must stay ≥ 0 (``watch``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .system import Point, SurfaceData, perp
+
+
+@dataclass
+class Element:
+    name: str
+    kind: str
+    n: int                          # size of q
+    path: str = ""                  # the field path in the file, for messages
+
+    rows = 0
+    linear = True                   # rows affine in q with a constant Jacobian (closed-form test)
+
+    def phi(self, q, t) -> np.ndarray:
+        raise NotImplementedError
+
+    def jac(self, q) -> np.ndarray:
+        raise NotImplementedError
+
+    def gamma(self, q, v, t) -> np.ndarray:
+        return np.zeros(self.rows)
+
+    def phi_t(self, t) -> np.ndarray:
+        return np.zeros(self.rows)
+
+    def report(self, lam, q, v, t) -> dict:
+        return {}
+
+    def watch(self, lam, q, v, t) -> list[tuple[str, float]]:
+        """(what, g): the event ``what`` happens where g crosses zero from above."""
+        return []
+
+    def scale(self) -> float:
+        return 1.0
+
+
+def _two(P: Point, Q: Point, q, n):
+    return P.jac(q, n) - Q.jac(q, n)
+
+
+@dataclass
+class Pin(Element):
+    P: Point = None
+    Q: Point = None
+    rows = 2
+
+    @property
+    def linear(self):
+        return not (self.P.turns_with_body or self.Q.turns_with_body)
+
+    def phi(self, q, t):
+        return self.P.pos(q) - self.Q.pos(q)
+
+    def jac(self, q):
+        return _two(self.P, self.Q, q, self.n)
+
+    def gamma(self, q, v, t):
+        return -(self.P.bias(q, v) - self.Q.bias(q, v))
+
+    def report(self, lam, q, v, t):
+        return {"R": [float(lam[0]), float(lam[1]), 0.0]}
+
+
+@dataclass
+class Slider(Element):
+    """The body's centre stays on the line through its position at t = 0 parallel to the
+    surface; a rigid body keeps its angle."""
+
+    body_point: Point = None
+    surface: SurfaceData = None
+    c0: float = 0.0
+    theta0: float | None = None
+
+    @property
+    def rows(self):
+        return 1 if self.theta0 is None else 2
+
+    def phi(self, q, t):
+        nn = np.array(self.surface.n)
+        out = [float(nn @ self.body_point.pos(q)) - self.c0]
+        if self.theta0 is not None:
+            out.append(float(q[self.body_point.body.index[2]]) - self.theta0)
+        return np.array(out)
+
+    def jac(self, q):
+        J = np.zeros((self.rows, self.n))
+        J[0] = np.array(self.surface.n) @ self.body_point.jac(q, self.n)
+        if self.theta0 is not None:
+            J[1, self.body_point.body.index[2]] = 1.0
+        return J
+
+    def report(self, lam, q, v, t):
+        out = {"N": float(lam[0])}
+        if self.theta0 is not None:
+            out["M"] = [0.0, 0.0, float(lam[1])]
+        return out
+
+
+@dataclass
+class Contact(Element):
+    """P on the surface, pushing only; Coulomb friction with the computed N.  ``mode``:
+    "smooth" (no friction), "slide" (kinetic friction against ``sign``), "stick" (a second row
+    holds P's tangential position)."""
+
+    P: Point = None
+    surface: SurfaceData = None
+    mu_s: float = 0.0
+    mu_k: float = 0.0
+    mode: str = "smooth"
+    sign: float = 0.0               # direction of sliding along d̂ in mode "slide"
+    stick_at: float = 0.0           # d̂·r_P held in mode "stick"
+
+    @property
+    def rows(self):
+        return 2 if self.mode == "stick" else 1
+
+    @property
+    def linear(self):
+        return not self.P.turns_with_body
+
+    @property
+    def rough(self) -> bool:
+        return self.mu_s > 0 or self.mu_k > 0
+
+    def phi(self, q, t):
+        r = self.P.pos(q) - np.array(self.surface.origin)
+        out = [float(np.array(self.surface.n) @ r)]
+        if self.mode == "stick":
+            out.append(float(np.array(self.surface.d) @ self.P.pos(q)) - self.stick_at)
+        return np.array(out)
+
+    def jac(self, q):
+        JP = self.P.jac(q, self.n)
+        rows = [np.array(self.surface.n) @ JP]
+        if self.mode == "stick":
+            rows.append(np.array(self.surface.d) @ JP)
+        return np.array(rows)
+
+    def gamma(self, q, v, t):
+        b = self.P.bias(q, v)
+        out = [-float(np.array(self.surface.n) @ b)]
+        if self.mode == "stick":
+            out.append(-float(np.array(self.surface.d) @ b))
+        return np.array(out)
+
+    def friction_column(self, q):
+        """Generalized force per unit N of the kinetic friction −μ_k N sign d̂ at P."""
+        if self.mode != "slide" or self.mu_k == 0:
+            return None
+        return -self.mu_k * self.sign * (np.array(self.surface.d) @ self.P.jac(q, self.n))
+
+    def slip_speed(self, q, v) -> float:
+        return float(np.array(self.surface.d) @ self.P.vel(q, v))
+
+    def friction(self, lam) -> float:
+        if self.mode == "stick":
+            return float(lam[1])
+        if self.mode == "slide":
+            return -self.mu_k * self.sign * float(lam[0])
+        return 0.0
+
+    def report(self, lam, q, v, t):
+        return {"N": float(lam[0]), "F": self.friction(lam)}
+
+    def watch(self, lam, q, v, t):
+        out = [("separates", float(lam[0]))]
+        if self.mode == "slide":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mode == "stick":
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+        return out
+
+
+@dataclass
+class Rolls(Element):
+    """A disk or ring of radius R rolls on the surface without slipping (15.8):
+    n·(x − O) = R and d̂·x + R θ = const."""
+
+    body_point: Point = None
+    surface: SurfaceData = None
+    R: float = 0.0
+    c0: float = 0.0
+    mu_s: float | None = None
+    rows = 2
+
+    def phi(self, q, t):
+        i = self.body_point.body.index
+        x = np.array([q[i[0]], q[i[1]]])
+        nn, d = np.array(self.surface.n), np.array(self.surface.d)
+        return np.array([float(nn @ (x - np.array(self.surface.origin))) - self.R,
+                         float(d @ x) + self.R * float(q[i[2]]) - self.c0])
+
+    def jac(self, q):
+        i = self.body_point.body.index
+        J = np.zeros((2, self.n))
+        J[0, i[0]], J[0, i[1]] = self.surface.n
+        J[1, i[0]], J[1, i[1]] = self.surface.d
+        J[1, i[2]] = self.R
+        return J
+
+    def report(self, lam, q, v, t):
+        N, F = float(lam[0]), float(lam[1])
+        return {"N": N, "F": F, "slip_margin": None if self.mu_s is None else self.mu_s * N - abs(F)}
+
+    def watch(self, lam, q, v, t):
+        out = [("separates", float(lam[0]))]
+        if self.mu_s is not None:
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+        return out
+
+
+@dataclass
+class Link(Element):
+    """A massless rigid link (36): |r_P − r_Q| = L; T tension positive."""
+
+    P: Point = None
+    Q: Point = None
+    L: float = 1.0
+    rows = 1
+    linear = False
+
+    def _d(self, q):
+        d = self.P.pos(q) - self.Q.pos(q)
+        return d, math.hypot(d[0], d[1])
+
+    def phi(self, q, t):
+        _, ln = self._d(q)
+        return np.array([ln - self.L])
+
+    def jac(self, q):
+        d, ln = self._d(q)
+        return ((d / ln) @ _two(self.P, self.Q, q, self.n))[None, :]
+
+    def gamma(self, q, v, t):
+        d, ln = self._d(q)
+        e = d / ln
+        dv = self.P.vel(q, v) - self.Q.vel(q, v)
+        db = self.P.bias(q, v) - self.Q.bias(q, v)
+        return np.array([-(float(e @ db) + (float(dv @ dv) - float(e @ dv) ** 2) / ln)])
+
+    def report(self, lam, q, v, t):
+        return {"T": -float(lam[0])}
+
+    def scale(self):
+        return self.L
+
+
+@dataclass
+class Drive(Element):
+    """A prescribed coordinate q_i = f(t); λ is the force or couple the driver applies."""
+
+    index: int = 0
+    f: object = None                # f(t) -> (value, rate, second rate)
+    rows = 1
+
+    def phi(self, q, t):
+        return np.array([float(q[self.index]) - self.f(t)[0]])
+
+    def jac(self, q):
+        J = np.zeros((1, self.n))
+        J[0, self.index] = 1.0
+        return J
+
+    def phi_t(self, t):
+        return np.array([-self.f(t)[1]])
+
+    def gamma(self, q, v, t):
+        return np.array([self.f(t)[2]])
+
+    def report(self, lam, q, v, t):
+        return {"drive": float(lam[0])}
+
+
+@dataclass
+class CordEnd:
+    """One end of a straight cord segment: a point (``point``), or a tangent point on a disk
+    body turning with it (``body`` with ``k`` = u·(e3 × (T − C)) per unit rotation), or a
+    fixed light pulley (``fixed``: a constant)."""
+
+    point: Point | None = None
+    centre: Point | None = None     # disk body centre (tangent ends)
+    k: float = 0.0
+    fixed: np.ndarray | None = None
+
+    def proj(self, u, q) -> float:
+        if self.point is not None:
+            return float(u @ self.point.pos(q))
+        if self.centre is not None:
+            return float(u @ self.centre.pos(q)) + self.k * float(q[self.centre.body.index[2]])
+        return float(u @ self.fixed)
+
+    def jac(self, u, q, n) -> np.ndarray:
+        if self.point is not None:
+            return u @ self.point.jac(q, n)
+        J = np.zeros(n)
+        if self.centre is not None:
+            J += u @ self.centre.jac(q, n)
+            J[self.centre.body.index[2]] += self.k
+        return J
+
+    def bias(self, u, q, v) -> float:
+        return float(u @ self.point.bias(q, v)) if self.point is not None else 0.0
+
+    @property
+    def turns(self) -> bool:
+        return self.point is not None and self.point.turns_with_body
+
+
+@dataclass
+class Segment:
+    a: CordEnd
+    b: CordEnd
+    u: np.ndarray                   # unit direction a -> b, kept from t = 0
+    length0: float = 0.0
+
+
+@dataclass
+class Cord(Element):
+    """A taut inextensible cord: one row per run between disk bodies (no slip on a disk: one
+    tension per side), each the run's length Σ u·(X_b − X_a) = const; T = −λ ≥ 0 per run,
+    reported once per straight segment."""
+
+    runs: list[list[Segment]] = field(default_factory=list)
+    consts: list[float] = field(default_factory=list)
+
+    @property
+    def rows(self):
+        return len(self.runs)
+
+    @property
+    def linear(self):
+        return not any(s.a.turns or s.b.turns for run in self.runs for s in run)
+
+    def lengths(self, q) -> np.ndarray:
+        return np.array([sum(s.b.proj(s.u, q) - s.a.proj(s.u, q) for s in run) for run in self.runs])
+
+    def phi(self, q, t):
+        return self.lengths(q) - np.array(self.consts)
+
+    def jac(self, q):
+        return np.array([sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in run) for run in self.runs])
+
+    def gamma(self, q, v, t):
+        return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in run) for run in self.runs])
+
+    def report(self, lam, q, v, t):
+        return {"T": [-float(lam[r]) for r, run in enumerate(self.runs) for _ in run]}
+
+    def watch(self, lam, q, v, t):
+        return [("slack", -float(lam[r])) for r in range(len(self.runs))]
+
+
+@dataclass
+class Guide(Element):
+    """A point mass at a cord segment's end moves along the segment (its direction of t = 0)."""
+
+    P: Point = None
+    w: np.ndarray = None            # unit normal of the segment
+    c0: float = 0.0
+    rows = 1
+
+    def phi(self, q, t):
+        return np.array([float(self.w @ self.P.pos(q)) - self.c0])
+
+    def jac(self, q):
+        return (self.w @ self.P.jac(q, self.n))[None, :]
+
+
+def segment_tangents(Ca, ra, Cb, rb):
+    """The straight segment between two circles (centre, signed radius ρ: the cord runs with
+    the circle's centre at ρ·(e3 × u) ... on its right for ρ > 0): returns (u, Ta, Tb) with
+    T = C + ρ (e3 × u).  A point is a circle of radius 0."""
+    d = np.asarray(Cb, float) - np.asarray(Ca, float)
+    D = math.hypot(d[0], d[1])
+    delta = ra - rb
+    if D <= abs(delta):
+        return None
+    phi = math.atan2(d[1], d[0])
+    psi = phi - math.asin(delta / D)
+    u = np.array([math.cos(psi), math.sin(psi)])
+    nrm = perp(u)
+    return u, np.asarray(Ca, float) + ra * nrm, np.asarray(Cb, float) + rb * nrm

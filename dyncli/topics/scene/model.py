@@ -1,0 +1,238 @@
+"""Input model of ``scene`` problems: a planar mechanism as a student draws it (contract §10).
+
+Surfaces (fixed straight lines), bodies (points and the ``inertia`` type's planar shapes),
+joints (each a block of constraint rows whose multipliers are its forces), forces, the times to
+report and the ``find`` queries.  Only the shapes of the entries are checked here; names,
+geometry and mechanics (assembly, degrees of freedom, one-sided joints) are checked by the
+solver, which reports each refusal at the field it concerns.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar, Literal, Optional, Union
+
+from pydantic import Field, model_validator
+
+from dyncli.errors import InputError
+from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
+from dyncli.topics.particle.model import check_times
+
+TIME = ("t",)
+
+#: a point: "BODY", "BODY.POINT", or [x1, x2] on the ground
+PointRef = Union[str, list[Num(dim="length")]]  # type: ignore[valid-type]
+
+
+class Surface(StrictModel):
+    """A fixed straight line through ``through`` along ``direction``; bodies are on its left
+    (the side of n = e3 × d̂)."""
+
+    through: list[Num(dim="length")] = Field(description="[x1, x2]: a point of the line [m]")  # type: ignore[valid-type]
+    direction: list[Num()] = Field(description="[d1, d2]: its direction (bodies on the left)")  # type: ignore[valid-type]
+    curve: Optional[Any] = Field(None, description="curved surfaces: not in the first release (refused)")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.curve is not None:
+            raise InputError("curved surfaces have no syntax in this release: use a straight surface, or the "
+                             "constrained-particle type for a particle on a curve", "curve")
+        if len(self.through) != 2:
+            raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", "through")
+        if len(self.direction) != 2:
+            raise InputError(f"expected [d1, d2], got {len(self.direction)} numbers", "direction")
+        if self.direction[0] == 0 and self.direction[1] == 0:
+            raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", "direction")
+        return self
+
+
+SHAPES = ("point", "rod", "disk", "ring", "box")
+
+
+class Body(StrictModel):
+    """A body: a particle (``shape: point``) or a rigid body in planar motion."""
+
+    shape: Optional[Literal["point", "rod", "disk", "ring", "box"]] = Field(
+        None, description="point, rod (along e'1), disk, ring, box; or give I instead")
+    mass: Num(ge=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
+    length: Optional[Num(gt=0, dim="length", description="rod length [m]")] = None  # type: ignore[valid-type]
+    radius: Optional[Num(gt=0, dim="length", description="disk/ring radius [m]")] = None  # type: ignore[valid-type]
+    size: Optional[list[Num(gt=0, dim="length")]] = Field(None, description="box [a, b] along e'1, e'2 [m]")  # type: ignore[valid-type]
+    I: Optional[Num(ge=0, dim="moment_of_inertia", description="I33 about the centre [kg·m²]")] = None  # type: ignore[valid-type]
+    x: Optional[list[Num(dim="length")]] = Field(None, description="[x1, x2]: centre at t = 0 (left out: placed by the joints)")  # type: ignore[valid-type]
+    angle: Optional[Num(description="angle of e'1 from e1 at t = 0 [rad] (left out: placed by the joints)")] = None  # type: ignore[valid-type]
+    v: Optional[list[Num(dim="velocity")]] = Field(None, description="[v1, v2] of the centre at t = 0 (default rest, or what the drives and joints impose)")  # type: ignore[valid-type]
+    omega: Optional[Num(dim="angular_velocity", description="angular velocity at t = 0 [rad/s] (default rest, or what the drives and joints impose)")] = None  # type: ignore[valid-type]
+    points: dict[str, list[Num(dim="length")]] = Field(default_factory=dict, description="named points [p1, p2] on e'1, e'2 [m]")  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.shape is None and self.I is None:
+            raise InputError("give shape (point, rod, disk, ring, box) or I (the moment of inertia about the "
+                             "centre)", "shape")
+        need = {"rod": "length", "disk": "radius", "ring": "radius", "box": "size"}.get(self.shape or "")
+        if need and getattr(self, need) is None:
+            raise InputError(f"a {self.shape} needs {need}", need)
+        if self.size is not None and len(self.size) != 2:
+            raise InputError("expected [a, b]", "size")
+        for name in ("x", "v"):
+            val = getattr(self, name)
+            if val is not None and len(val) != 2:
+                raise InputError(f"expected [{name}1, {name}2] (a planar vector), got {len(val)} numbers", name)
+        for k, p in self.points.items():
+            if len(p) != 2:
+                raise InputError(f"expected [p1, p2], got {len(p)} numbers", f"points.{k}")
+        if self.shape == "point":
+            for name in ("length", "radius", "size", "I"):
+                if getattr(self, name) is not None:
+                    raise InputError(f"a point body has no {name}", name)
+            if self.points:
+                raise InputError("a point body has no named points (it is one point)", "points")
+            if self.omega is not None or self.angle is not None:
+                raise InputError("a point body has no angle or angular velocity", "omega" if self.omega is not None else "angle")
+        return self
+
+
+class FixedPulley(StrictModel):
+    """A light, smooth, fixed pulley the cord passes over."""
+
+    pulley: list[Num(dim="length")] = Field(description="[x1, x2]: its centre [m]")  # type: ignore[valid-type]
+    radius: Num(ge=0, dim="length", description="its radius [m] (default 0)") = 0.0  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _check(self):
+        if len(self.pulley) != 2:
+            raise InputError(f"expected [x1, x2], got {len(self.pulley)} numbers", "pulley")
+        return self
+
+
+class Wound(StrictModel):
+    """A cord end wound on a body: it unwinds at ``radius`` without slipping (a yo-yo, a spool)."""
+
+    wound: str = Field(description="the body the cord is wound on")
+    radius: Optional[Num(gt=0, dim="length", description="the radius it unwinds from [m] (default the body's radius)")] = None  # type: ignore[valid-type]
+    side: Optional[Literal["left", "right"]] = Field(None, description="the side of the body the cord leaves from, seen from the other end (default: the drawing's: the free segment nearest vertical or horizontal)")
+
+
+CordEntry = Union[FixedPulley, Wound, str, list[Num(dim="length")]]  # type: ignore[valid-type]
+
+
+class Joint(StrictModel):
+    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive."""
+
+    pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
+    slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
+    contact: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: one-sided contact, Coulomb friction")
+    rolls: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: rolls without slipping")
+    cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord")
+    link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
+    drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
+    value: Optional[ExprField(TIME, description="drive: the coordinate as an expression in t")] = None  # type: ignore[valid-type]
+    mu: Optional[Num(ge=0, description="friction coefficient (static = kinetic)")] = None  # type: ignore[valid-type]
+    mu_s: Optional[Num(ge=0, description="static friction coefficient")] = None  # type: ignore[valid-type]
+    mu_k: Optional[Num(ge=0, description="kinetic friction coefficient")] = None  # type: ignore[valid-type]
+    at: Optional[Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]")] = None  # type: ignore[valid-type]
+    length: Optional[Num(gt=0, dim="length", description="cord or link length [m]")] = None  # type: ignore[valid-type]
+    angle: Optional[Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")] = None  # type: ignore[valid-type]
+
+    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive")
+
+    @property
+    def kind(self) -> str:
+        return next(k for k in self.KINDS if getattr(self, k) is not None)
+
+    @model_validator(mode="after")
+    def _check(self):
+        given = [k for k in self.KINDS if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise InputError("a joint is exactly one of " + ", ".join(self.KINDS)
+                             + (f" (got {', '.join(given)})" if given else ""))
+        kind = given[0]
+        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k"}, "rolls": {"at", "mu_s"},
+                   "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
+        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
+            if getattr(self, extra) is not None and extra not in allowed:
+                raise InputError(f"a {kind} joint takes no {extra}", extra)
+        if kind == "drive" and self.value is None:
+            raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", "value")
+        if kind == "contact" and self.mu is not None and (self.mu_s is not None or self.mu_k is not None):
+            raise InputError("give mu, or mu_s and mu_k, not both", "mu")
+        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2}.get(kind)
+        if two and len(getattr(self, kind)) != 2:
+            raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
+                             kind)
+        if kind == "cord" and len(self.cord) < 2:
+            raise InputError("a cord needs two ends: [END, PULLEY..., END]", "cord")
+        return self
+
+
+class Force(StrictModel):
+    """One applied element: exactly one of spring, damper, force, torque."""
+
+    spring: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear spring (tension positive)")
+    damper: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear damper")
+    force: Optional[PointRef] = Field(None, description="P: a force applied at P")
+    torque: Optional[str] = Field(None, description="BODY: a couple on the body")
+    k: Optional[Num(ge=0, dim="stiffness", description="spring stiffness [N/m]")] = None  # type: ignore[valid-type]
+    L: Optional[Num(ge=0, dim="length", description="spring free length [m]")] = None  # type: ignore[valid-type]
+    one_sided: Optional[Literal["compression", "tension"]] = Field(
+        None, description="compression: the spring only pushes; tension: it only pulls")
+    c: Optional[Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")] = None  # type: ignore[valid-type]
+    F: Optional[list[ExprField(TIME, dim="force")]] = Field(None, description="[F1, F2]: expressions in t [N]")  # type: ignore[valid-type]
+    M: Optional[ExprField(TIME, dim="moment", description="couple about e3 [N·m], expression in t")] = None  # type: ignore[valid-type]
+    name: Optional[str] = Field(None, description="reported as force.NAME")
+
+    KINDS: ClassVar[tuple[str, ...]] = ("spring", "damper", "force", "torque")
+
+    @property
+    def kind(self) -> str:
+        return next(k for k in self.KINDS if getattr(self, k) is not None)
+
+    @model_validator(mode="after")
+    def _check(self):
+        given = [k for k in self.KINDS if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise InputError("a force entry is exactly one of spring, damper, force, torque"
+                             + (f" (got {', '.join(given)})" if given else ""))
+        kind = given[0]
+        need = {"spring": ("k", "L"), "damper": ("c",), "force": ("F",), "torque": ("M",)}[kind]
+        for n in need:
+            if getattr(self, n) is None:
+                raise InputError(f"a {kind} needs {n}", n)
+        for extra in ("k", "L", "one_sided", "c", "F", "M"):
+            if getattr(self, extra) is not None and extra not in need and not (kind == "spring" and extra == "one_sided"):
+                raise InputError(f"a {kind} takes no {extra}", extra)
+        if kind in ("spring", "damper") and len(getattr(self, kind)) != 2:
+            raise InputError(f"a {kind} joins exactly two points: [P, Q]", kind)
+        if kind == "force" and len(self.F) != 2:
+            raise InputError("expected [F1, F2] (a planar force)", "F")
+        return self
+
+
+class Scene(ProblemBase):
+    """A planar mechanism: bodies, joints, forces (contract §10)."""
+
+    type: Literal["scene"]
+    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines by name")
+    bodies: dict[str, Body] = Field(description="bodies by name (`ground` is reserved)")
+    joints: dict[str, Joint] = Field(default_factory=dict, description="joints by name")
+    forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")] = None  # type: ignore[valid-type]
+    at: Times(description="times at which to report the state [s]") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}")
+    motion: Optional[Any] = Field(None, description="out-of-plane motion is refused (use top, euler, gyroscope)")
+
+    accuracy_methods = ("auto", "closed-form", "ode", "DOP853", "RK45", "Radau", "LSODA")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.motion is not None:
+            raise InputError("motion out of the plane is not a scene: use the top, euler or gyroscope types",
+                             "motion")
+        if "ground" in self.bodies:
+            raise InputError("'ground' is reserved for the fixed frame: name the body otherwise", "bodies.ground")
+        if not self.bodies:
+            raise InputError("a scene needs at least one body", "bodies")
+        if self.t_end is None and not self.at:
+            self.at = [0.0]
+        check_times(self)
+        return self

@@ -1,0 +1,300 @@
+"""The routes of a scene in motion, each giving a :class:`Trajectory` (contract §10, steps 3–4).
+
+* ``ode``: (q, q̇, W_nc) integrated by the project's one stepping loop (:func:`dyncli.ode.steps`
+  with its budget and method map), q and q̇ projected back onto the joints after every accepted
+  step (the constraints then hold to rounding), the step's interpolant projected too.
+* ``closed-form``: one degree of freedom whose rows are affine in q (constant Jacobian) and
+  whose loads are affine in the coordinate and its rate (decided from the elements'
+  structure, never by sampling): constant acceleration, or the vibration formulas of §17.
+* One-sided joints are watched on every route: after each step (or closed-form piece) the
+  contact forces, cord tensions and slip margins are evaluated; a sign change is located by
+  Brent's method on the interpolant to the double's resolution.  A sliding contact that stops
+  sticks if the static test holds (an event), else slides back (a new phase).
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from dyncli import ode
+from dyncli.topics.top.rootfind import brent  # TODO: one Brent (dyncli/rootfind.py, issue #26)
+
+from .elements import Contact
+
+EPS = float(np.finfo(float).eps)
+
+
+@dataclass
+class Piece:
+    t_a: float
+    t_b: float
+    fn: object                     # t -> (q, v, W)
+    modes: tuple
+
+
+@dataclass
+class Event:
+    t: float
+    joint: str
+    what: str
+
+
+@dataclass
+class Trajectory:
+    system: object
+    t0: float
+    t_end: float
+    pieces: list[Piece] = field(default_factory=list)
+    events: list[Event] = field(default_factory=list)
+    steps: int = 0
+    stopped: float | None = None    # the time of a stopping event
+
+    def add(self, piece: Piece):
+        if piece.t_b > piece.t_a or not self.pieces:
+            self.pieces.append(piece)
+
+    @property
+    def breaks(self) -> list[float]:
+        return [self.pieces[0].t_a] + [p.t_b for p in self.pieces] if self.pieces else [self.t0]
+
+    def covers(self, t: float) -> bool:
+        end = self.stopped if self.stopped is not None else self.t_end
+        return self.t0 - 1e-15 <= t <= end * (1 + 4 * EPS) + 1e-300
+
+    def state(self, t: float):
+        ends = [p.t_b for p in self.pieces]
+        i = min(bisect.bisect_left(ends, t), len(self.pieces) - 1)
+        p = self.pieces[i]
+        set_modes(self.system, p.modes)
+        return p.fn(min(max(t, p.t_a), p.t_b))
+
+
+def modes_of(system) -> tuple:
+    return tuple((e.mode, e.sign, e.stick_at) if isinstance(e, Contact) else None for e in system.elements)
+
+
+def set_modes(system, modes) -> None:
+    changed = False
+    for e, m in zip(system.elements, modes):
+        if m is not None and (e.mode, e.sign, e.stick_at) != m:
+            e.mode, e.sign, e.stick_at = m
+            changed = True
+    if changed:
+        system.refresh()
+
+
+def watches(system, q, v, t) -> list[tuple[str, str, float]]:
+    """(joint, what, g) of every one-sided quantity (event where g crosses 0 downwards), and
+    ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event)."""
+    _, lam, _ = system.solve(q, v, t)
+    out = []
+    for i, e in enumerate(system.elements):
+        for what, g in e.watch(system.lam_of(lam, i), q, v, t):
+            out.append((e.name, what, g))
+    for ld in system.loads:
+        if ld.kind == "spring" and ld.one_sided:
+            out.append(("", "switch", ld.stretch(q)))
+    return out
+
+
+def _crossed(g0: float, g1: float, what: str) -> bool:
+    if what == "switch":
+        return (g0 > 0) != (g1 > 0) and g0 != 0
+    return g1 < 0 <= g0 and not (g0 == 0 and what != "sticks")
+
+
+# ----------------------------------------------------------------------------- the ODE route
+
+class OdeRoute:
+    def __init__(self, system, acc, method: str):
+        self.system, self.acc, self.method = system, acc, method
+        n = system.n
+        self.n = n
+
+        def rhs(t, y):
+            q, v = y[:n], y[n:2 * n]
+            a, _, P = system.solve(q, v, t)
+            return np.concatenate([v, a, [P]])
+
+        self.rhs = rhs
+
+    def project(self, y, t):
+        n, s = self.n, self.system
+        q = s.project_position(y[:n], t)
+        v = s.project_velocity(q, y[n:2 * n], t)
+        return np.concatenate([q, v, y[2 * n:]])
+
+    def run(self, q0, v0, t_end, budget, traj: Trajectory, rtol: float, atol: float, t0: float = 0.0, W0: float = 0.0):
+        """Integrate phase after phase until t_end or a stopping event; fills ``traj``."""
+        y = np.concatenate([q0, v0, [W0]])
+        t = t0
+        while t < t_end and traj.stopped is None:
+            t, y = self._phase(t, y, t_end, budget, traj, rtol, atol)
+
+    def _phase(self, t0, y0, t_end, budget, traj, rtol, atol):
+        from scipy import integrate as si
+
+        s, n = self.system, self.n
+        cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[self.method]
+        solver = cls(ode.finite(self.rhs), t0, y0.copy(), t_end, rtol=rtol, atol=atol)
+        budget.leg(t0, t_end)
+        modes = modes_of(s)
+        w_old = watches(s, y0[:n], y0[n:2 * n], t0)
+        for _ in ode.steps(solver, budget, self.method):
+            t_old, t_new = float(solver.t_old), float(solver.t)
+            yp = self.project(solver.y, t_new)
+            solver.y = yp
+            if hasattr(solver, "f"):
+                solver.f = self.rhs(t_new, yp)
+            dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
+            w_new = watches(s, yp[:n], yp[n:2 * n], t_new)
+            hit = self._first_crossing(w_old, w_new, dense, t_old, t_new)
+            if hit is None:
+                traj.add(Piece(t_old, t_new, self._fn(dense), modes))
+                traj.steps += 1
+                w_old = w_new
+                continue
+            tc, joint, what = hit
+            yc = dense(tc)
+            traj.add(Piece(t_old, tc, self._fn(dense), modes))
+            traj.steps += 1
+            return tc, self._after(tc, yc, joint, what, traj)
+        return float(solver.t), solver.y.copy()
+
+    def _fn(self, dense):
+        n = self.n
+        return lambda t: (lambda y: (y[:n], y[n:2 * n], float(y[2 * n])))(dense(t))
+
+    def _first_crossing(self, w_old, w_new, dense, t_old, t_new):
+        best = None
+        s, n = self.system, self.n
+        for k, ((joint, what, g0), (_, _, g1)) in enumerate(zip(w_old, w_new)):
+            if not _crossed(g0, g1, what):
+                continue
+
+            def g(t, k=k):
+                y = dense(t)
+                return watches(s, y[:n], y[n:2 * n], t)[k][2] - (0.0 if what != "switch" else 0.0)
+
+            tc = t_new if g1 == 0 else brent(g, t_old, t_new, 4 * EPS * max(abs(t_new), 1e-300), 4 * EPS, 200)
+            if best is None or tc < best[0]:
+                best = (tc, joint, what)
+        return best
+
+    def _after(self, tc, yc, joint, what, traj):
+        """What happens at a located crossing: a new phase (a kink, a reversal) or the stop."""
+        s, n = self.system, self.n
+        if what == "switch":
+            return yc
+        if what == "sticks":
+            e = next(x for x in s.elements if x.name == joint)
+            q = yc[:n]
+            sticks, new_sign = stick_test(s, e, q, yc[n:2 * n], tc)
+            if not sticks:
+                e.mode, e.sign = "slide", new_sign
+                s.refresh()
+                v = s.project_velocity(q, yc[n:2 * n], tc)
+                return np.concatenate([q, v, yc[2 * n:]])
+        traj.events.append(Event(tc, joint, what))
+        traj.stopped = tc
+        return yc
+
+
+class _ProjectedStep:
+    def __init__(self, dense, route, t_end, y_end):
+        self.dense, self.route, self.t_end, self.y_end = dense, route, t_end, y_end
+
+    def __call__(self, t):
+        if t == self.t_end:
+            return self.y_end.copy()
+        return self.route.project(self.dense(t), t)
+
+
+def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
+    """Hold the contact's point (a second row) and solve: it sticks when |F| ≤ μ_s N (the
+    boundary, within the rounding of the solve, sticks); else it slides opposite to the
+    friction it would need.  Leaves the contact in mode "stick" (when it sticks)."""
+    e.mode, e.sign = "stick", 0.0
+    e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
+    system.refresh()
+    v0 = np.array(v, float)
+    v0 = system.project_velocity(q, v0, t)
+    _, lam, _ = system.solve(q, v0, t)
+    i = system.elements.index(e)
+    N, F = (float(x) for x in system.lam_of(lam, i))
+    margin = e.mu_s * N - abs(F)
+    scale = max(abs(e.mu_s * N), abs(F), 1e-300)
+    if margin >= -64 * EPS * scale:
+        return True, 0.0
+    return False, -math.copysign(1.0, F)
+
+
+# ----------------------------------------------------------------------------- the closed form
+
+@dataclass
+class Linear1:
+    """s̈ = A0 + A1 (s − s0) + A2 ṡ along q = q0 + N (s − s0)."""
+
+    q0: np.ndarray
+    N: np.ndarray
+    i: int
+    A0: float
+    A1: float
+    A2: float
+
+    def motion(self, t: float, s0: float, sd0: float) -> tuple[float, float]:
+        A0, A1, A2 = self.A0, self.A1, self.A2
+        if A1 == 0 and A2 == 0:
+            return s0 + sd0 * t + 0.5 * A0 * t * t, sd0 + A0 * t
+        if A1 == 0:          # damped drift to the terminal rate −A0/A2
+            vinf = -A0 / A2
+            e = math.expm1(A2 * t)
+            return s0 + vinf * t + (sd0 - vinf) * e / A2, vinf + (sd0 - vinf) * (e + 1.0)
+        from dyncli.topics.vibration.closed_form import free_at
+
+        wn = math.sqrt(-A1)
+        zeta = -A2 / (2 * wn)
+        s_eq = s0 - A0 / A1
+        w, wd = free_at(t, s0 - s_eq, sd0, wn, zeta)
+        return s_eq + w, wd
+
+
+def closed_form_reason(system, N: np.ndarray, q0) -> str | None:
+    """None when the 1-DOF motion along N is affine (constant Jacobian, affine loads); else why not."""
+    for e in system.elements:
+        if not e.linear:
+            return f"the {e.kind} {e.name!r} is not linear in the coordinates"
+        if e.kind == "drive":
+            return "a drive prescribes a motion in time"
+        if isinstance(e, Contact) and e.mode == "slide" and e.mu_k:
+            pass
+    for ld in system.loads:
+        if ld.kind in ("force", "torque") and not ld.constant:
+            return f"{ld.label} depends on time"
+        if ld.kind in ("force",) and ld.P.turns_with_body:
+            return f"{ld.label} acts at a point that turns with its body"
+        if ld.kind in ("spring", "damper"):
+            if ld.P.turns_with_body or ld.Q.turns_with_body:
+                return f"{ld.label} is attached to a point that turns with its body"
+            if ld.kind == "spring" and ld.one_sided:
+                return f"{ld.label} is one-sided"
+            d = ld.P.pos(q0) - ld.Q.pos(q0)
+            w = ld.P.jac(q0, system.n) @ N - ld.Q.jac(q0, system.n) @ N
+            if abs(d[0] * w[1] - d[1] * w[0]) > 1e-12 * math.hypot(*d) * math.hypot(*w):
+                return f"{ld.label} turns as the scene moves"
+    return None
+
+
+def along(system, q0, N) -> tuple[bool, bool]:
+    """(springs act along the motion, dampers act along it): structural, from the loads."""
+    k = c = False
+    for ld in system.loads:
+        if ld.kind in ("spring", "damper"):
+            w = ld.P.jac(q0, system.n) @ N - ld.Q.jac(q0, system.n) @ N
+            if np.any(w != 0) and (ld.k if ld.kind == "spring" else ld.c) > 0:
+                k, c = (True, c) if ld.kind == "spring" else (k, True)
+    return k, c

@@ -1,0 +1,142 @@
+"""The results of a solved scene: the state at every requested time, the events with their
+state, the first integrals, W_nc (integrated along the ODE route, by quadrature of the power on
+the exact routes), the error estimate of each route and the ``find`` answers."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from dyncli import ode
+from dyncli.result import Result, Series
+
+from . import report
+from .elements import Contact
+
+EPS = float(np.finfo(float).eps)
+from .prepare import Scene
+
+
+# ----------------------------------------------------------------------------- results
+
+def results(scene: Scene, traj, route: str, times: list[float], find_raw, params, acc) -> Result:
+    s = scene.system
+    t_stop = traj.stopped
+    E1 = None
+
+    def state_at(t):
+        q, v, W = traj.state(t)
+        fixed = getattr(traj, "fixed", None)
+        solved = fixed if fixed is not None else None
+        if route == "kinematics":
+            a, lam = _kin_forces(s, q, v, t)
+            solved = (a, lam, 0.0)
+        elif route == "closed-form":
+            a, lam, P = s.solve(q, v, t)
+            N, i = traj.along
+            solved = (N * a[i], lam, P)           # the motion is along N: no rounding across it
+        return q, v, W, solved
+
+    q0, v0, _, solved0 = state_at(0.0)
+    E1 = s.kinetic(v0) + s.potential(q0)
+    W_of = _work(scene, traj, route)
+
+    def inst(t):
+        q, v, W, solved = state_at(t)
+        return report.instant(s, q, v, W_of(t, W), t, E1, solved=solved)
+
+    instants = [None if (t_stop is not None and t > t_stop) else inst(t) for t in times]
+    res = Result({"dof": scene.dof, "coordinates": scene.coords, "route": route, "t": list(times)})
+    res.results.update(report.collect(instants))
+    events = []
+    for ev in traj.events:
+        st = inst(ev.t)
+        events.append({"t": ev.t, "joint": ev.joint, "what": ev.what, "state": st})
+    res.results["events"] = events
+    res.results["integrals"] = _integrals(scene, traj, times, instants)
+    for w in scene.warnings:
+        res.warn(w)
+    if t_stop is not None:
+        later = [t for t in times if t > t_stop]
+        ev = traj.events[-1]
+        if later:
+            res.warn(f"the motion stops at t = {t_stop:.10g} s where {ev.joint!r} {ev.what}: the results at the later "
+                     f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
+                     "event)")
+    if find_raw:
+        from . import queries
+
+        res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
+    res.method = getattr(traj, "method", route)
+    _estimate(res, scene, route, acc, traj)
+    res.equations = ["16.7", "29.5", "32.15", "34.20"]
+    res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
+                                                 if k in res.results], index_result="t"))
+    return res
+
+
+def _estimate(res, scene, route, acc, traj) -> None:
+    """The error estimate of each route: nominal on the ODE route (rtol × steps, the policy of
+    every ODE route), the linear solves' rounding bound on statics and kinematics, none (exact
+    to rounding) on the closed form."""
+    s = scene.system
+    if route == "ode":
+        ode.nominal_estimate(res, acc.rtol, steps=traj.steps)
+    elif route in ("statics", "kinematics"):
+        J = s.jac(scene.q0)
+        cond = float(np.linalg.cond(J)) if J.size else 1.0
+        res.error_estimate = max(cond * EPS, EPS)
+        res.extra["error_estimate_note"] = ("the linear solves' rounding bound, cond(J) × ε at t = 0 (the positions "
+                                            "by Newton to the double's resolution)")
+
+
+def _kin_forces(s, q, v, t):
+    J = s.jac(q)
+    a = np.linalg.solve(J, s.gamma(q, v, t))
+    f, _ = s.applied(q, v, t)
+    lam = np.linalg.solve(J.T, s.mass * a - f)
+    return a, lam
+
+
+def _work(scene, traj, route):
+    """W_nc(t): integrated with the state on the ODE route; by quadrature of the power on the
+    others (exact motions)."""
+    if route == "ode":
+        return lambda t, W: W
+    s = scene.system
+
+    def power(t):
+        q, v, _ = traj.state(float(t))
+        if route == "kinematics":
+            a, lam = _kin_forces(s, q, v, float(t))
+            P = sum(float(s.lam_of(lam, i)[0]) * float(v[e.index]) for i, e in enumerate(s.elements) if e.kind == "drive")
+            return P + s.applied(q, v, float(t))[1]
+        return s.solve(q, v, float(t))[2]
+
+    def W(t, _W):
+        if route == "statics" or t == 0:
+            return 0.0
+        from dyncli.quadrature import gauss_kronrod
+
+        total = 0.0
+        for p in traj.pieces:
+            a, b = p.t_a, min(p.t_b, t)
+            if b <= a:
+                continue
+            I, _, _ = gauss_kronrod(lambda x: np.array([power(xx) for xx in x]), a, b, 1e-13, 1e-300)
+            total += I
+        return total
+
+    return W
+
+
+def _integrals(scene, traj, times, instants) -> list:
+    s = scene.system
+    out = []
+    conservative = (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
+                    and not any(e.kind == "drive" or isinstance(e, Contact) and e.mode == "slide" and e.mu_k
+                                for e in s.elements))
+    Es = [st["E"] for st in instants if st is not None]
+    if conservative and Es:
+        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
+        out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
+    return out

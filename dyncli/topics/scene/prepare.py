@@ -1,0 +1,194 @@
+"""Set up a scene: bodies and joints, assembly, degrees of freedom, the contacts' initial modes
+(the static test decides stick or slip at rest) and the refusals at t = 0 (a one-sided joint
+that would pull, push or slip already)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from dyncli.errors import InputError
+
+from . import assembly, build, motion
+from .dynamics import SceneSystem
+from .elements import Contact, Rolls
+
+EPS = float(np.finfo(float).eps)
+
+
+@dataclass
+class Scene:
+    system: SceneSystem
+    q0: np.ndarray
+    v0: np.ndarray
+    dof: int
+    coords: list[str]
+    warnings: list[str] = field(default_factory=list)
+
+
+def setup(plan: build.Plan) -> Scene:
+    bodies, q, free, v, names, vgiven = build.bodies_of(plan)
+    surfaces = {k: build.surface_of(k, s) for k, s in plan.surfaces.items()}
+    R = build.Resolver(bodies, surfaces)
+    for name, b in plan.bodies.items():
+        if b["mass"] == 0 and b["I"] is None and b["shape"] == "point":
+            pass
+    _sketch_links_and_rolls(plan, R, q, free)
+    n = len(q)
+    elems, cords = build.joint_elements(plan, R, q, n, None)
+    loads = build.loads_of(plan, R, q)
+    system = SceneSystem(list(bodies.values()), elems, loads, plan.g, n, names)
+    warnings: list[str] = []
+    q = assembly.assemble(system, q, free)
+    if cords:
+        _place_hanging(plan, cords, R, q, free, system)
+        for name, spec in cords:
+            cord, guides = build.cord_element(name, spec, R, q, n)
+            system.elements.append(cord)
+            system.refresh()
+            for gd in guides:
+                system.elements.append(gd)
+                system.refresh()
+                J = system.jac(q)
+                if assembly.rank(J) < J.shape[0]:
+                    system.elements.pop()
+                    system.refresh()
+        q = assembly.assemble(system, q, free)
+    assembly.refuse_gaps(system, q, free)
+    red = assembly.redundant(system, q)
+    if red:
+        raise InputError(f"redundant joints: {', '.join(red)} — any one of them could go without changing the motion, "
+                         "so the joint forces would not be unique; remove one", f"joints.{red[0]}")
+    v_in = v.copy()
+    v, changed = assembly.project_velocity(system, q, v)
+    moved = [k for k in range(n) if vgiven[k] and abs(v[k] - v_in[k]) > 1e-12 * max(abs(v_in[k]), abs(v[k]), 1e-300)]
+    if changed and moved:
+        warnings.append("the initial velocities given violate the joints and were projected (mass-weighted) onto "
+                        "them: " + ", ".join(f"{_rate_name(names[k])} = {v[k]:.6g}" for k in range(n)
+                                             if vgiven[k] or abs(v[k]) > 0))
+    _initial_modes(system, q, v)
+    J = system.jac(q)
+    dof = n - assembly.rank(J)
+    coords = [names[i] for i in assembly.independent(J, n)]
+    _refuse_at_start(system, q, v)
+    return Scene(system, q, v, dof, coords, warnings)
+
+
+def _rate_name(coord: str) -> str:
+    """x.A.0 -> v.A.0, angle.rod -> omega.rod."""
+    head, _, rest = coord.partition(".")
+    return ("v." if head == "x" else "omega.") + rest
+
+
+def _sketch_links_and_rolls(plan, R, q, free) -> None:
+    """Sketch positions the joints place exactly: a link's free end from its `angle`, a rolling
+    body's centre from `at`."""
+    for name, j in plan.joints.items():
+        if j["kind"] == "link" and j["angle"] is not None and j["length"] is not None:
+            P, Q = R.point(j["link"][0], ""), R.point(j["link"][1], "")
+            if Q.body is not None and free[Q.body.index[0]]:
+                r = P.pos(q) + j["length"] * np.array([math.sin(j["angle"]), -math.cos(j["angle"])])
+                i = Q.body.index
+                q[i[0]], q[i[1]] = r - Q.arm(q)
+        if j["kind"] == "rolls" and j["at"] is not None:
+            b, s = R.body(j["rolls"][0], ""), R.surface(j["rolls"][1], "")
+            if b.rigid and free[b.index[0]]:
+                c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
+                q[b.index[0]], q[b.index[1]] = c
+
+
+def _place_hanging(plan, cords, R, q, free, system) -> None:
+    """A cord end mass left out hangs straight down from its neighbour, at the cord's length."""
+    for name, spec in cords:
+        items = spec["cord"]
+        for k in (0, len(items) - 1):
+            it = items[k]
+            if isinstance(it, str) and it in R.bodies and free[R.bodies[it].index[0]]:
+                if spec["length"] is None:
+                    raise InputError(f"the position of {it!r} is left out: give its x, or the cord's length so that "
+                                     "the cord places it", f"joints.{name}.length")
+                b = R.bodies[it]
+                i = b.index
+                nb = items[1] if k == 0 else items[-2]
+                top = _node_xy(nb, R, q)
+                q[i[0]], q[i[1]] = top[0], top[1] - 1.0        # a first guess below; the length row places it
+                cord, _ = build.cord_element(name, spec, R, q, len(q))
+                shortfall = spec["length"] - _cord_length(cord, spec, R, q)
+                q[i[1]] -= shortfall
+                if not _cord_length(cord, spec, R, q) > 0:
+                    raise InputError("the cord is too short to reach its ends", f"joints.{name}.length")
+
+
+def _node_xy(nd, R, q):
+    if isinstance(nd, dict) and "pulley" in nd:
+        c = np.array(nd["pulley"], float)
+        return c + np.array([float(nd.get("radius", 0.0)), 0.0])
+    if isinstance(nd, str):
+        return R.point(nd, "").pos(q)
+    return np.array(nd, float)
+
+
+def _cord_length(cord, spec, R, q) -> float:
+    """Straight lengths plus the arcs over pulleys (the cord's whole length at q)."""
+    total = 0.0
+    segs = [s for run in cord.runs for s in run]
+    for s in segs:
+        total += s.length0 if False else float(s.u @ (_tangent(s.b, s.u, q) - _tangent(s.a, s.u, q)))
+    items = spec["cord"]
+    for i in range(1, len(items) - 1):
+        u1, u2 = segs[i - 1].u, segs[i].u
+        turn = abs(math.atan2(u1[0] * u2[1] - u1[1] * u2[0], float(u1 @ u2)))
+        it = items[i]
+        r = float(it.get("radius", 0.0)) if isinstance(it, dict) else R.bodies[it].radius
+        total += r * turn
+    return total
+
+
+def _tangent(end, u, q):
+    if end.point is not None:
+        return end.point.pos(q)
+    if end.centre is not None:
+        return end.centre.pos(q)
+    return end.fixed
+
+
+def _initial_modes(system, q, v) -> None:
+    """Rough contacts: sliding when their point slides, else the static test decides."""
+    for e in system.elements:
+        if isinstance(e, Contact) and e.rough:
+            vt = e.slip_speed(q, v)
+            if vt != 0:
+                e.mode, e.sign = "slide", math.copysign(1.0, vt)
+                system.refresh()
+            else:
+                sticks, sign = motion.stick_test(system, e, q, v, 0.0)
+                if not sticks:
+                    e.mode, e.sign = "slide", sign
+                    system.refresh()
+
+
+def _refuse_at_start(system, q, v) -> None:
+    _, lam, _ = system.solve(q, v, 0.0)
+    for i, e in enumerate(system.elements):
+        lm = system.lam_of(lam, i)
+        for what, g in e.watch(lm, q, v, 0.0):
+            scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+            if g >= -64 * EPS * scale:
+                continue
+            if what == "separates":
+                on = e.P.label if isinstance(e, Contact) else e.body_point.label
+                raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
+                                 "release it from a position where it pushes, or join them with a two-sided joint",
+                                 e.path)
+            if what == "slack":
+                raise InputError(f"at t = 0 the cord {e.name!r} would have to push: T = {g:.6g} N; a cord only pulls "
+                                 "(use a link for a rod that pushes)", e.path)
+            if what == "slips" and isinstance(e, Rolls):
+                N, F = float(lm[0]), float(lm[1])
+                raise InputError(f"at t = 0 rolling needs |F| = {abs(F):.6g} N of friction, more than μ_s N = "
+                                 f"{e.mu_s * N:.6g} N: it slips at once (raise mu_s, or use a rough contact)",
+                                 e.path)
+
+

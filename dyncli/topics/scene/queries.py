@@ -1,0 +1,67 @@
+"""The scene's answers to the ``find`` queries (§11), through the topic-agnostic
+:mod:`dyncli.queries`: the motion is the trajectory's pieces (steps of the ODE, phases of a
+closed form), each answer filled with the whole state at its time."""
+
+from __future__ import annotations
+
+from dyncli import queries as _q
+from dyncli.expr import constant
+
+from . import report
+
+
+class SceneMotion:
+    def __init__(self, traj, inst):
+        self.traj, self.inst = traj, inst
+        self.t0 = traj.t0
+        self.t_end = traj.stopped if traj.stopped is not None else traj.t_end
+        self.breaks = [t for t in traj.breaks if t <= self.t_end] or [self.t0, self.t_end]
+        if self.breaks[-1] < self.t_end:
+            self.breaks.append(self.t_end)
+        self._cache: dict[float, dict] = {}
+        self._paths = None
+
+    def _flat(self, t: float) -> dict:
+        got = self._cache.get(t)
+        if got is None:
+            if len(self._cache) > 4096:
+                self._cache.clear()
+            got = self._cache[t] = report.flatten(self.inst(t))
+        return got
+
+    def paths(self):
+        if self._paths is None:
+            self._paths = sorted(self._flat(self.t0))
+        return self._paths
+
+    def value(self, path: str, t: float) -> float:
+        flat = self._flat(float(t))
+        if path not in flat:
+            raise KeyError(path)
+        return flat[path]
+
+    def rate(self, path: str, t: float):
+        head, _, rest = path.partition(".")
+        d = {"x": "v", "v": "a", "angle": "omega"}.get(head)
+        if d is None:
+            return None
+        flat = self._flat(float(t))
+        if head == "angle":
+            return flat.get(f"omega.{rest}.2")
+        return flat.get(f"{d}.{rest}")
+
+
+def answer(raw, scene, traj, inst, params, times, warn=None) -> list[dict]:
+    qs = _q.parse_queries(raw, lambda text: constant(text, params))
+    motion = SceneMotion(traj, inst)
+    out = []
+    for k, ans in enumerate(_q.answer(qs, motion)):
+        entry = dict(ans)
+        if not ans.get("reached") and warn is not None:
+            warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
+                 + (" (the motion stops there at an event)" if traj.stopped is not None else
+                    "; raise t_end to search further"))
+        if ans.get("reached") and ans.get("t") is not None:
+            entry.update(inst(ans["t"]))
+        out.append(entry)
+    return out

@@ -1,0 +1,115 @@
+"""A scene in plain numbers: bodies in maximal coordinates and the kinematics of their points.
+
+Every body keeps its own coordinates (a point: x1, x2; a rigid body: x1, x2, θ), stacked in
+one vector q; the mass matrix is diagonal (m, m, Ī₃₃ per rigid body, 29.5 and 32.15).  A point
+of a body is r = x + Q(θ) p with p on the body's e'1, e'2; its velocity v = ẋ + ω e3 × Q p (13.8)
+and acceleration a = ẍ + α e3 × Q p − ω² Q p (14.8).  Nothing here knows the input model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass
+class BodyData:
+    name: str
+    mass: float
+    inertia: float | None        # Ī₃₃ about the centre; None for a point body
+    index: tuple[int, ...]       # (i_x1, i_x2) or (i_x1, i_x2, i_θ) in q
+    points: dict[str, tuple[float, float]] = field(default_factory=dict)
+    shape: str = "point"
+    length: float = 0.0          # rod
+    radius: float = 0.0          # disk, ring
+    size: tuple[float, float] = (0.0, 0.0)   # box
+
+    @property
+    def rigid(self) -> bool:
+        return self.inertia is not None
+
+
+@dataclass(frozen=True)
+class Point:
+    """A point: on a body (``body`` set, ``p`` on its e'1, e'2) or on the ground (``p`` fixed)."""
+
+    label: str
+    body: BodyData | None
+    p: tuple[float, float]
+
+    def pos(self, q) -> np.ndarray:
+        if self.body is None:
+            return np.array(self.p, dtype=float)
+        i = self.body.index
+        r = np.array([q[i[0]], q[i[1]]], dtype=float)
+        if self.body.rigid and (self.p[0] or self.p[1]):
+            r = r + rot(q[i[2]]) @ np.array(self.p)
+        return r
+
+    def arm(self, q) -> np.ndarray:
+        """Q(θ) p: the point's offset from its body's centre on the fixed basis."""
+        if self.body is None or not self.body.rigid:
+            return np.zeros(2)
+        return rot(q[self.body.index[2]]) @ np.array(self.p)
+
+    def jac(self, q, n: int) -> np.ndarray:
+        """∂r/∂q, 2 × n."""
+        J = np.zeros((2, n))
+        if self.body is None:
+            return J
+        i = self.body.index
+        J[0, i[0]] = J[1, i[1]] = 1.0
+        if self.body.rigid:
+            a = self.arm(q)
+            J[0, i[2]], J[1, i[2]] = -a[1], a[0]          # e3 × Q p
+        return J
+
+    def vel(self, q, v) -> np.ndarray:
+        if self.body is None:
+            return np.zeros(2)
+        i = self.body.index
+        out = np.array([v[i[0]], v[i[1]]], dtype=float)
+        if self.body.rigid:
+            a, w = self.arm(q), v[i[2]]
+            out += w * np.array([-a[1], a[0]])
+        return out
+
+    def bias(self, q, v) -> np.ndarray:
+        """J̇ v: the part of the acceleration not linear in q̈ (−ω² Q p, 14.8)."""
+        if self.body is None or not self.body.rigid:
+            return np.zeros(2)
+        w = v[self.body.index[2]]
+        return -w * w * self.arm(q)
+
+    @property
+    def moves(self) -> bool:
+        return self.body is not None
+
+    @property
+    def turns_with_body(self) -> bool:
+        """True when r depends on the body's angle (a rigid body's point off its centre)."""
+        return self.body is not None and self.body.rigid and (self.p[0] != 0 or self.p[1] != 0)
+
+
+def rot(th: float) -> np.ndarray:
+    c, s = math.cos(th), math.sin(th)
+    return np.array([[c, -s], [s, c]])
+
+
+@dataclass(frozen=True)
+class SurfaceData:
+    name: str
+    origin: tuple[float, float]
+    d: tuple[float, float]       # unit direction
+    n: tuple[float, float]       # e3 × d̂: the side the bodies are on
+
+
+def cross2(a, b) -> float:
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def perp(a) -> np.ndarray:
+    """e3 × a."""
+    return np.array([-a[1], a[0]], dtype=float)
