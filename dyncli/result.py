@@ -15,7 +15,8 @@ nothing of any topic and draw it from these generic pieces:
 * ``series``: groups of list-valued results that share an index, e.g.
   ``Series("t", times, ["x", "v", "w"])`` -> one table with a row per time;
 * ``views``: extra tables (:class:`FrameTable`, :class:`Table`), e.g. the
-  δ/δt table of rotating-frame kinematics.
+  δ/δt table of rotating-frame kinematics; ``covered`` names the results a
+  type's views present in readable form, so the tables skip their raw nesting.
 """
 
 from __future__ import annotations
@@ -100,6 +101,9 @@ class Result:
     plots: list[Plot] = field(default_factory=list)
     # free-form extra data for plots etc. (never rendered as results)
     extra: dict[str, Any] = field(default_factory=dict)
+    # results the ``views`` present in the tables (the terminal and document views show the
+    # views instead of the raw nesting; JSON, YAML and CSV hold every result as always)
+    covered: list[str] = field(default_factory=list)
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:

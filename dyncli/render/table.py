@@ -113,6 +113,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     _print_header(console, lp, result)
     values, unit_names = display_units(result, units)
     in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
+    in_series |= set(result.covered)
     deferred: list[tuple[str, Any]] = []
     scalars, n_rows = _results_table(), 0
     for name, val in values.items():

@@ -46,6 +46,7 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
     values, unit_names = display_units(result, units)
     values = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in values.items()}
     in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
+    in_series |= set(result.covered)
     rows, deferred = [], []
     for name, val in values.items():
         if name in in_series:

@@ -4,7 +4,8 @@
 writes ``tests/data/baseline-results.json``: per problem, its contract record (results, method,
 equations, warnings) plus the ``rtol``/``atol`` it ran at. Run it on the code whose results are the
 reference (the baseline in the repository was recorded from ``main`` before the refactors of
-issue #19), and commit the file. ``tests/test_baseline_results.py`` compares the current code with
+issue #19), and commit the file; ``python -m tests.tools.baseline add`` records only the files
+not recorded yet (a new example or type), leaving every other reference value as it is. ``tests/test_baseline_results.py`` compares the current code with
 it through :func:`compare`.
 
 Tolerances (what each route guarantees, docs/accuracy.md):
@@ -140,9 +141,34 @@ def load() -> dict[str, list[dict]]:
     return json.loads(BASELINE.read_text())
 
 
+def add(paths: list[str]) -> list[str]:
+    """Record the files of ``problems/`` that the baseline does not hold yet (or only ``paths``,
+    each of which must be new): a new type or example is added without re-recording, and so
+    without rewriting, any other file's reference values."""
+    base = load() if BASELINE.exists() else {}
+    files = [Path(p).resolve() for p in paths] if paths else problem_files()
+    names = [p.relative_to(ROOT).as_posix() for p in files]
+    again = [n for n in names if n in base and paths]
+    if again:
+        raise SystemExit(f"already recorded: {', '.join(again)} (an intended change of results: `record`)")
+    new = [(n, p) for n, p in zip(names, files) if n not in base]
+    for n, p in new:
+        base[n] = record_file(p)
+    BASELINE.write_text(json.dumps(base, indent=1, sort_keys=True) + "\n")
+    return [n for n, _ in new]
+
+
+USAGE = ("usage: python -m tests.tools.baseline record          (every file, after an intended change)\n"
+         "       python -m tests.tools.baseline add [FILE ...]   (only files not recorded yet)")
+
+
 def main(argv: list[str]) -> int:
+    if argv[:1] == ["add"]:
+        added = add(argv[1:])
+        print(f"added {len(added)} file(s) to {BASELINE.relative_to(ROOT)}: {', '.join(added) or 'none'}")
+        return 0
     if argv[:1] != ["record"]:
-        print("usage: python -m tests.tools.baseline record", file=sys.stderr)
+        print(USAGE, file=sys.stderr)
         return 2
     BASELINE.parent.mkdir(parents=True, exist_ok=True)
     BASELINE.write_text(json.dumps(record_all(), indent=1, sort_keys=True) + "\n")

@@ -1,4 +1,4 @@
-"""Assembly, degrees of freedom and consistent initial velocities (contract §10, steps 1–2).
+"""Assembly, degrees of freedom and consistent initial velocities (docs/types/scene.md: assembly and degrees of freedom).
 
 * Positions the file left out are placed by Gauss–Newton on φ(q) = 0 over those coordinates
   only, minimum-norm steps from the sketch (so every given coordinate is kept).

@@ -78,7 +78,8 @@ def bodies_of(plan: Plan) -> tuple:
 def surface_of(name: str, s: dict) -> SurfaceData:
     d = np.array(s["direction"], float)
     d = d / math.hypot(d[0], d[1])
-    return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])))
+    return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
+                       s.get("length"))
 
 
 class Resolver:

@@ -1,4 +1,4 @@
-"""The joints of a scene as blocks of constraint rows (contract §10).
+"""The joints of a scene as blocks of constraint rows (docs/types/scene.md).
 
 Each element holds rows φ(q, t) = 0 with their analytic Jacobian J = ∂φ/∂q and
 γ = −J̇ v − φ_tt (so that J q̈ = γ), and the velocity term φ_t (J q̇ + φ_t = 0).  The
@@ -181,6 +181,9 @@ class Contact(Element):
 
     def watch(self, lam, q, v, t):
         out = [("separates", float(lam[0]))]
+        m = self.surface.ends_margin(self.P.pos(q))
+        if m is not None:
+            out.append(("leaves", m))
         if self.mode == "slide":
             out.append(("sticks", self.sign * self.slip_speed(q, v)))
         elif self.mode == "stick":
@@ -221,6 +224,10 @@ class Rolls(Element):
 
     def watch(self, lam, q, v, t):
         out = [("separates", float(lam[0]))]
+        i = self.body_point.body.index
+        m = self.surface.ends_margin((float(q[i[0]]), float(q[i[1]])))
+        if m is not None:
+            out.append(("leaves", m))
         if self.mu_s is not None:
             out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out

@@ -1,4 +1,4 @@
-"""Input model of ``scene`` problems: a planar mechanism as a student draws it (contract §10).
+"""Input model of ``scene`` problems: a planar mechanism as a student draws it (docs/types/scene.md).
 
 Surfaces (fixed straight lines), bodies (points and the ``inertia`` type's planar shapes),
 joints (each a block of constraint rows whose multipliers are its forces), forces, the times to
@@ -29,6 +29,7 @@ class Surface(StrictModel):
 
     through: list[Num(dim="length")] = Field(description="[x1, x2]: a point of the line [m]")  # type: ignore[valid-type]
     direction: list[Num()] = Field(description="[d1, d2]: its direction (bodies on the left)")  # type: ignore[valid-type]
+    length: Optional[Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")] = None  # type: ignore[valid-type]
     curve: Optional[Any] = Field(None, description="curved surfaces: not in the first release (refused)")
 
     @model_validator(mode="after")
@@ -209,7 +210,7 @@ class Force(StrictModel):
 
 
 class Scene(ProblemBase):
-    """A planar mechanism: bodies, joints, forces (contract §10)."""
+    """A planar mechanism: bodies, joints, forces (docs/types/scene.md)."""
 
     type: Literal["scene"]
     surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines by name")

@@ -1,4 +1,4 @@
-"""The routes of a scene in motion, each giving a :class:`Trajectory` (contract §10, steps 3–4).
+"""The routes of a scene in motion, each giving a :class:`Trajectory` (docs/types/scene.md: routes and events).
 
 * ``ode``: (q, q̇, W_nc) integrated by the project's one stepping loop (:func:`dyncli.ode.steps`
   with its budget and method map), q and q̇ projected back onto the joints after every accepted

@@ -9,7 +9,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.result import Result, Series
 
-from . import report
+from . import assembly, report
 from .elements import Contact
 
 EPS = float(np.finfo(float).eps)
@@ -68,10 +68,36 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
     res.method = getattr(traj, "method", route)
     _estimate(res, scene, route, acc, traj)
+    from . import views
+
+    t_last = traj.stopped if traj.stopped is not None else traj.t_end
+    res.extra["scene_t_end"] = t_last
+    res.extra["scene_sample"] = lambda t: inst(min(float(t), t_last))
+    res.extra["scene_draw"] = _drawing(scene)
+
+    res.views.extend(views.views(res))
+    res.covered.extend(views.COVERED)
     res.equations = ["16.7", "29.5", "32.15", "34.20"]
     res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
                                                  if k in res.results], index_result="t"))
     return res
+
+
+def _drawing(scene) -> dict:
+    """What the plots draw: each body's shape and size, the surfaces, the fixed pulleys."""
+    s = scene.system
+    bodies = {b.name: {"shape": b.shape, "length": b.length, "radius": b.radius, "size": b.size} for b in s.bodies}
+    span = max(assembly.length_scale(scene.q0, s), 1.0)
+    pulleys = []
+    for e in s.elements:
+        if e.kind == "cord":
+            for run in e.runs:
+                for seg in run:
+                    for end in (seg.a, seg.b):
+                        if end.fixed is not None:
+                            pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
+    return {"bodies": bodies, "surfaces": [{"name": x.name, "origin": x.origin, "d": x.d} for x in scene.surfaces],
+            "pulleys": pulleys, "span": span}
 
 
 def _estimate(res, scene, route, acc, traj) -> None:

@@ -26,6 +26,7 @@ class Scene:
     dof: int
     coords: list[str]
     warnings: list[str] = field(default_factory=list)
+    surfaces: list = field(default_factory=list)
 
 
 def setup(plan: build.Plan) -> Scene:
@@ -73,7 +74,7 @@ def setup(plan: build.Plan) -> Scene:
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
     _refuse_at_start(system, q, v)
-    return Scene(system, q, v, dof, coords, warnings)
+    return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
 def _rate_name(coord: str) -> str:
@@ -155,18 +156,45 @@ def _tangent(end, u, q):
 
 
 def _initial_modes(system, q, v) -> None:
-    """Rough contacts: sliding when their point slides, else the static test decides."""
+    """Rough contacts: sliding when their point slides; those at rest are held together (a
+    second row each) and the static test decides: every one with |F| ≤ μ_s N sticks; else the
+    one furthest past its limit slides opposite to the friction it needed, and the rest are
+    tested again.  Friction that equilibrium does not determine (the held rows redundant) is
+    refused naming the contacts."""
+    at_rest = []
     for e in system.elements:
         if isinstance(e, Contact) and e.rough:
             vt = e.slip_speed(q, v)
             if vt != 0:
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
-                system.refresh()
             else:
-                sticks, sign = motion.stick_test(system, e, q, v, 0.0)
-                if not sticks:
-                    e.mode, e.sign = "slide", sign
-                    system.refresh()
+                e.mode, e.sign, e.stick_at = "stick", 0.0, float(np.array(e.surface.d) @ e.P.pos(q))
+                at_rest.append(e)
+    system.refresh()
+    if not at_rest:
+        return
+    J = system.jac(q)
+    if assembly.rank(J) < J.shape[0]:
+        names = [e.name for e in at_rest]
+        raise InputError(f"the friction at {', '.join(names)} is not determined by the equations of motion (statically "
+                         "indeterminate: the rows that hold the contacts at rest are redundant); make one contact smooth, "
+                         "or give the friction as a force", at_rest[0].path)
+    while at_rest:
+        v0 = system.project_velocity(q, v, 0.0)
+        _, lam, _ = system.solve(q, v0, 0.0)
+        worst, ratio = None, 0.0
+        for e in at_rest:
+            N, F = (float(x) for x in system.lam_of(lam, system.elements.index(e)))
+            limit = e.mu_s * N
+            if abs(F) - limit > 64 * EPS * max(abs(F), abs(limit), 1e-300):
+                r = abs(F) / max(limit, 1e-300)
+                if worst is None or r > ratio:
+                    worst, ratio, sign = e, r, -math.copysign(1.0, F)
+        if worst is None:
+            return
+        worst.mode, worst.sign = "slide", sign
+        at_rest.remove(worst)
+        system.refresh()
 
 
 def _refuse_at_start(system, q, v) -> None:
@@ -182,6 +210,10 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
                                  "release it from a position where it pushes, or join them with a two-sided joint",
                                  e.path)
+            if what == "leaves":
+                raise InputError(f"at t = 0 the contact point is {-g:.6g} m beyond an end of the surface "
+                                 f"{e.surface.name!r} (length {e.surface.length:g} m from its `through` point): "
+                                 "place it on the surface or lengthen it", e.path)
             if what == "slack":
                 raise InputError(f"at t = 0 the cord {e.name!r} would have to push: T = {g:.6g} N; a cord only pulls "
                                  "(use a link for a rod that pushes)", e.path)

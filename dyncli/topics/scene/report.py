@@ -1,4 +1,4 @@
-"""The results of a scene at one instant, and over the requested times (contract §10).
+"""The results of a scene at one instant, and over the requested times (docs/types/scene.md).
 
 Per body x, v, a (3-vectors on e_i) and, for a rigid body, angle, ω, α (ω and α as
 [0, 0, ·]); per named point its x, v, a; per joint its forces in the joint's own terms; per

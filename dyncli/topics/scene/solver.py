@@ -1,4 +1,4 @@
-"""The ``scene`` solver (contract §10): the only reader of the validated model.
+"""The ``scene`` solver (docs/types/scene.md): the only reader of the validated model.
 
 1. the model becomes plain data (:class:`build.Plan`), then bodies, points and joint rows;
 2. assembly places the positions left out; the degrees of freedom come from the rank of J;
@@ -10,10 +10,14 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass, replace
+
+from dyncli import ode
+from dyncli.expr import resolve_params
 from dyncli.expr.jet import jet_at
 from dyncli.result import Result, SolveOptions
 
-from . import build, outcome, prepare, routes
+from . import build, outcome, prepare, report, routes
 
 
 def _plan(p) -> build.Plan:
@@ -23,7 +27,7 @@ def _plan(p) -> build.Plan:
         bodies[name] = {"shape": shape, "mass": b.mass, "length": b.length, "radius": b.radius, "size": b.size,
                         "I": b.I, "x": b.x, "angle": b.angle, "v": b.v, "omega": b.omega,
                         "points": {k: tuple(v) for k, v in b.points.items()}}
-    surfaces = {k: {"through": s.through, "direction": s.direction} for k, s in p.surfaces.items()}
+    surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length} for k, s in p.surfaces.items()}
     joints = {}
     for name, j in p.joints.items():
         val = getattr(j, j.kind)
@@ -51,10 +55,75 @@ def _plan(p) -> build.Plan:
     return build.Plan(bodies, surfaces, joints, loads, float(p.g))
 
 
+@dataclass(frozen=True)
+class Accuracy:
+    rtol: float
+    atol: float
+    method: str
+    estimate: bool
+    max_steps: int | None
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
     plan = _plan(p)
-    scene = prepare.setup(plan)
     times = [float(t) for t in p.at]
-    acc = p.accuracy
-    traj, route = routes.run(scene, float(p.t_end), acc)
-    return outcome.results(scene, traj, route, times, p.find, dict(p.params), acc)
+    a = p.accuracy
+    acc = Accuracy(float(a.rtol), float(a.atol), a.method, bool(a.estimate), a.max_steps)
+    t_end = float(p.t_end)
+    scene = prepare.setup(plan)
+    traj, route = routes.run(scene, t_end, acc)
+    res = outcome.results(scene, traj, route, times, p.find, resolve_params(p.params), acc)
+    if route == "ode" and acc.estimate:
+        _check_solve(res, plan, t_end, times, acc)
+    return res
+
+
+def _kind(key: str) -> str:
+    """The kind of a flattened result: x, v, a, angle, omega, alpha, force or energy."""
+    parts = [p for p in key.split(".") if p not in ("events", "state")]
+    head = parts[0]
+    if head == "point":
+        return parts[-1]
+    if head in ("reaction", "drive", "force"):
+        return "force"
+    if head in ("T", "V", "E", "W_nc", "energy_residual"):
+        return "energy"
+    return head
+
+
+def _check_solve(res: Result, plan, t_end: float, times: list[float], acc: Accuracy) -> None:
+    """``accuracy.estimate``: the one check-solve rule of the ODE routes (dyncli.ode.check_solve):
+    the scene solved again at tighter tolerances; the estimate is the largest difference of every
+    reported quantity at the requested times, the events' times and states included, each
+    relative to its own scale."""
+    def flat(r) -> dict:
+        out = report.flatten({k: r.get(k) for k in report.PER_TIME})
+        for i, ev in enumerate(r.get("events", [])):
+            out[f"events.{i}.t"] = ev["t"]
+            out.update(report.flatten(ev["state"], f"events.{i}.state."))
+        return out
+
+    def run(rtol: float, atol: float) -> dict:
+        acc2 = replace(acc, rtol=rtol, atol=atol, estimate=False)
+        scene2 = prepare.setup(plan)
+        traj2, route2 = routes.run(scene2, t_end, acc2)
+        return flat(outcome.results(scene2, traj2, route2, times, [], {}, acc2).results)
+
+    got = ode.check_solve(res, run, acc.rtol, acc.atol)
+    if got is None:
+        return
+    other, _how = got
+    mine = flat(res.results)
+    groups: dict[str, list] = {}
+    for k, v in mine.items():       # one scale per quantity over the times: x.A.0 over every time
+        key = ".".join(part for part in k.split(".") if not part.isdigit())
+        groups.setdefault(key, []).append((v, other.get(k, v)))
+    # each quantity at least at the scale of its kind (a component that is 0 but for rounding is
+    # measured against the positions, forces or energies of the scene, not against itself)
+    kinds: dict[str, float] = {}
+    for key, g in groups.items():
+        kinds[_kind(key)] = max(kinds.get(_kind(key), 0.0), max(abs(a) for a, _ in g))
+    keys = list(groups)
+    pairs = [([a for a, _ in groups[k]], [b for _, b in groups[k]]) for k in keys]
+    res.error_estimate = ode.relative_difference(pairs, [kinds[_kind(k)] for k in keys])
+    res.extra.pop("error_estimate_note", None)

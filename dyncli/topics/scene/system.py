@@ -104,6 +104,14 @@ class SurfaceData:
     origin: tuple[float, float]
     d: tuple[float, float]       # unit direction
     n: tuple[float, float]       # e3 × d̂: the side the bodies are on
+    length: float | None = None  # it runs from origin to origin + length d̂ (None: no end)
+
+    def ends_margin(self, r) -> float | None:
+        """How far the point r (on the line) is from the nearer end; None without ends."""
+        if self.length is None:
+            return None
+        s = (r[0] - self.origin[0]) * self.d[0] + (r[1] - self.origin[1]) * self.d[1]
+        return float(min(s, self.length - s))
 
 
 def cross2(a, b) -> float:

@@ -1,0 +1,106 @@
+"""Plots of ``scene`` problems (``dyncli solve --plot``).
+
+* the mechanism drawn at each requested time (rods as lines, disks and rings as circles with
+  a radius marking their turn, boxes as rectangles, points as markers, the surfaces as lines,
+  fixed pulleys as circles), one colour per time;
+* the joint forces over time (each scalar force, each pin force's components), sampled from
+  the solver's trajectory (``result.extra["scene_sample"]``: the exact motion, or the
+  interpolants of the integration's own steps; nothing is solved again), with the events marked.
+"""
+
+from __future__ import annotations
+
+import math
+
+from dyncli.result import Line, Plot
+
+SAMPLES = 400
+
+
+def _outline(body: dict, x, angle) -> list[tuple[list, list]]:
+    """Polylines of one body at one instant (fixed-basis coordinates)."""
+    c, s = (math.cos(angle), math.sin(angle)) if angle is not None else (1.0, 0.0)
+
+    def at(p1, p2):
+        return x[0] + c * p1 - s * p2, x[1] + s * p1 + c * p2
+
+    shape = body["shape"]
+    if shape == "rod":
+        h = body["length"] / 2
+        (a1, a2), (b1, b2) = at(-h, 0), at(h, 0)
+        return [([a1, b1], [a2, b2])]
+    if shape in ("disk", "ring"):
+        R = body["radius"]
+        pts = [at(R * math.cos(2 * math.pi * k / 48), R * math.sin(2 * math.pi * k / 48)) for k in range(49)]
+        e = at(R, 0)
+        return [([p[0] for p in pts], [p[1] for p in pts]), ([x[0], e[0]], [x[1], e[1]])]
+    if shape == "box":
+        a, b = body["size"][0] / 2, body["size"][1] / 2
+        pts = [at(*p) for p in ((-a, -b), (a, -b), (a, b), (-a, b), (-a, -b))]
+        return [([p[0] for p in pts], [p[1] for p in pts])]
+    return [([x[0]], [x[1]])]
+
+
+def _mechanism(result, draw) -> Plot:
+    r = result.results
+    plot = Plot("the mechanism at the requested times", "x1 [m]", "x2 [m]", equal_aspect=True)
+    span = draw["span"]
+    for s in draw["surfaces"]:
+        (o1, o2), (d1, d2) = s["origin"], s["d"]
+        plot.lines.append(Line([o1 - span * d1, o1 + span * d1], [o2 - span * d2, o2 + span * d2],
+                               label=f"surface {s['name']}", style=":"))
+    for (c1, c2), rad in draw["pulleys"]:
+        k = range(33)
+        plot.lines.append(Line([c1 + max(rad, span * 0.01) * math.cos(2 * math.pi * i / 32) for i in k],
+                               [c2 + max(rad, span * 0.01) * math.sin(2 * math.pi * i / 32) for i in k], style="-"))
+    for j, t in enumerate(r.get("t", [])):
+        first = True
+        for name, body in draw["bodies"].items():
+            x = r["x"][name][j]
+            if x is None:
+                continue
+            ang = r["angle"].get(name, [None] * (j + 1))[j]
+            for xs, ys in _outline(body, x, ang):
+                point = len(xs) == 1
+                plot.lines.append(Line(xs, ys, label=f"t = {t:g} s" if first else None,
+                                       style="" if point else "-", marker="o" if point else None))
+                first = False
+    return plot
+
+
+def _forces(result, sample) -> Plot | None:
+    r = result.results
+    t_end = result.extra.get("scene_t_end", 0.0)
+    if not t_end > 0:
+        return None
+    ts = [t_end * k / (SAMPLES - 1) for k in range(SAMPLES)]
+    series: dict[str, list] = {}
+    for t in ts:
+        st = sample(t)
+        for j, rep in (st or {}).get("reaction", {}).items():
+            for name, v in rep.items():
+                comps = [("", v)] if not isinstance(v, list) else (
+                    [(f"[{i}]", c) for i, c in enumerate(v)] if name == "T" else [(".1", v[0]), (".2", v[1])])
+                for suffix, c in comps:
+                    series.setdefault(f"{j} {name}{suffix}", []).append((t, c))
+    if not series:
+        return None
+    plot = Plot("joint forces over time", "t [s]", "force [N]")
+    for label, pts in series.items():
+        plot.lines.append(Line([p[0] for p in pts], [p[1] for p in pts], label=label))
+    for ev in r.get("events", []):
+        plot.vlines.append((ev["t"], f"{ev['joint']} {ev['what']}"))
+    return plot
+
+
+def plots(problem, result) -> list[Plot]:
+    draw = result.extra.get("scene_draw")
+    if draw is None:
+        return []
+    out = [_mechanism(result, draw)]
+    sample = result.extra.get("scene_sample")
+    if sample is not None:
+        f = _forces(result, sample)
+        if f is not None:
+            out.append(f)
+    return out

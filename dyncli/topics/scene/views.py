@@ -1,0 +1,106 @@
+"""The tables a student reads next to the notes: views that only read a scene's results.
+
+One row per requested time and body (centre x, v, a; angle, ω, α), per named point, per joint
+force (in the joint's own terms), per drive and named load; the events with the coordinates at
+their instant; the ``find`` answers with the quantity each query asked about.  The raw nested
+results stay in JSON, YAML and CSV.
+"""
+
+from __future__ import annotations
+
+from dyncli.result import Table
+
+COVERED = ["x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "drive", "force", "events", "find"]
+
+
+def _xy(v):
+    return None if v is None else [v[0], v[1]]
+
+
+def _z(v):
+    return None if v is None else v[2]
+
+
+def views(res) -> list[Table]:
+    r = res.results
+    times = r.get("t", [])
+    out = [_bodies(r, times)]
+    pts = _points(r, times)
+    if pts.rows:
+        out.append(pts)
+    forces = _forces(r, times)
+    if forces.rows:
+        out.append(forces)
+    if r.get("events"):
+        out.append(_events(r))
+    if r.get("find"):
+        out.append(_find(r))
+    return out
+
+
+def _bodies(r, times) -> Table:
+    rows = []
+    for k, t in enumerate(times):
+        for b in r["x"]:
+            rigid = b in r["angle"]
+            rows.append([t, b, _xy(r["x"][b][k]), _xy(r["v"][b][k]), _xy(r["a"][b][k]),
+                         r["angle"][b][k] if rigid else "", _z(r["omega"][b][k]) if rigid else "",
+                         _z(r["alpha"][b][k]) if rigid else ""])
+    return Table("bodies (centres on e1, e2)", ["t [s]", "body", "x̄ [m]", "v̄ [m/s]", "ā [m/s²]", "θ [rad]",
+                                                "ω [rad/s]", "α [rad/s²]"], rows)
+
+
+def _points(r, times) -> Table:
+    rows = []
+    for k, t in enumerate(times):
+        for b, pts in r["point"].items():
+            for p, d in pts.items():
+                rows.append([t, f"{b}.{p}", _xy(d["x"][k]), _xy(d["v"][k]), _xy(d["a"][k])])
+    return Table("points", ["t [s]", "point", "x [m]", "v [m/s]", "a [m/s²]"], rows)
+
+
+def _forces(r, times) -> Table:
+    cols, getters = [], []
+    for j, rep in r["reaction"].items():
+        for name in rep:
+            unit = "N·m" if name == "M" else "N"
+            cols.append(f"{j} {name} [{unit}]")
+            conv = _xy if name == "R" else _z if name == "M" else (lambda v: v)
+            getters.append(lambda k, j=j, name=name, conv=conv: conv(r["reaction"][j][name][k]))
+    for d in r["drive"]:
+        cols.append(f"drive {d}")
+        getters.append(lambda k, d=d: r["drive"][d][k])
+    for f in r["force"]:
+        cols.append(f"force {f}")
+        getters.append(lambda k, f=f: (lambda v: _xy(v) if isinstance(v, list) else v)(r["force"][f][k]))
+    rows = [[t] + [g(k) for g in getters] for k, t in enumerate(times)] if cols else []
+    return Table("joint forces (on the first-named body, by the second) and loads", ["t [s]"] + cols, rows,
+                 note="pin R on e1, e2; a cord's T per straight segment, in order; drive: the driver's force [N] "
+                      "or couple [N·m]")
+
+
+def _coords(state) -> list:
+    out = []
+    for b, x in state["x"].items():
+        out.append(f"{b}: x̄ = {_fmt(_xy(x))}")
+        if b in state["angle"]:
+            out.append(f"θ = {_fmt(state['angle'][b])}")
+    return out
+
+
+def _fmt(v) -> str:
+    from dyncli.render.table import fmt_value
+
+    return fmt_value(v, 6)
+
+
+def _events(r) -> Table:
+    rows = [[e["t"], e["joint"], e["what"], ", ".join(_coords(e["state"]))] for e in r["events"]]
+    return Table("events", ["t [s]", "joint", "what", "state (events.N.state holds every result)"], rows)
+
+
+def _find(r) -> Table:
+    rows = []
+    for i, f in enumerate(r["find"]):
+        rows.append([i, f.get("t"), f.get("reached"), f.get("at_end"), ", ".join(_coords(f)) if f.get("reached") else "—"])
+    return Table("find", ["#", "t [s]", "reached", "at end", "state (find.N holds every result)"], rows)
