@@ -46,6 +46,28 @@ def assemble(system, q, free, t: float = 0.0, iters: int = 60) -> np.ndarray:
     return q
 
 
+def other_branch(system, q, free, t: float = 0.0):
+    """A second assembly of the positions left out, when a loop closes two ways (an elbow up
+    or down): assembled again from the sketch with each free angle mirrored about its value
+    (θ → 2θ_line − θ) or turned by π; returns (coordinate, placed value, other value) of the
+    first coordinate that differs, or None."""
+    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.")]
+    scale = length_scale(q, system)
+    for k in angles:
+        for trial in (-q[k], q[k] + math.pi, q[k] - math.pi / 2, q[k] + math.pi / 2):
+            q2 = q.copy()
+            q2[k] = trial
+            q2 = assemble(system, q2, free, t)
+            if gaps(system, q2, t):
+                continue
+            d = (q2 - q + math.pi) % (2 * math.pi) - math.pi
+            d = np.where([nm.startswith("angle.") for nm in system.names], d, q2 - q)
+            if float(np.max(np.abs(d[free]), initial=0.0)) > 1e-6 * scale:
+                j = int(np.argmax(np.abs(d) * free))
+                return j, float(q[j]), float(q[j] + d[j])
+    return None
+
+
 def gaps(system, q, t: float = 0.0) -> list[tuple[object, float]]:
     """(element, largest |φ| of its rows) for every element not satisfied to rounding."""
     out = []

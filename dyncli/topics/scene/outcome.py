@@ -165,4 +165,38 @@ def _integrals(scene, traj, times, instants) -> list:
     if conservative and Es:
         drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
         out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
+    out += _momenta(scene, instants)
+    return out
+
+
+def _momenta(scene, instants) -> list:
+    """G·e_i = Σ m v̄·e_i (36.10) where it holds: a translation of the whole scene along e_i is
+    allowed by every joint row (so the joint forces have no net e_i component), gravity has
+    none (e1, or g = 0), and no load or friction ties the scene to the ground along e_i."""
+    s = scene.system
+    out = []
+    J = s.jac(scene.q0)
+    for axis, name in ((0, "G.0"), (1, "G.1")):
+        if axis == 1 and s.g != 0:
+            continue
+        T = np.zeros(s.n)
+        for b in s.bodies:
+            T[b.index[axis]] = 1.0
+        if J.size and float(np.max(np.abs(J @ T))) > 1e-12 * max(float(np.max(np.abs(J))), 1.0):
+            continue
+        if any(ld.kind in ("spring", "damper") and (ld.P.body is None or ld.Q.body is None)
+               or ld.kind == "force" and not (ld.constant and ld.F(0.0)[axis] == 0) for ld in s.loads):
+            continue
+        if any(isinstance(e, Contact) and e.mu_k and e.surface.d[axis] != 0 for e in s.elements):
+            continue
+        vals, scale = [], 0.0
+        for st in instants:
+            if st is None:
+                continue
+            G = sum(b.mass * st["v"][b.name][axis] for b in s.bodies)
+            scale = max(scale, sum(b.mass * abs(st["v"][b.name][axis]) for b in s.bodies))
+            vals.append(G)
+        if vals:
+            drift = max(abs(g - vals[0]) for g in vals) / max(scale, 1e-300) if scale else 0.0
+            out.append({"name": name, "value": vals[0], "drift": drift, "equation": "36.10"})
     return out

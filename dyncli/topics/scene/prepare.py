@@ -58,6 +58,11 @@ def setup(plan: build.Plan) -> Scene:
                     system.refresh()
         q = assembly.assemble(system, q, free)
     assembly.refuse_gaps(system, q, free)
+    other = assembly.other_branch(system, q, free)
+    if other is not None:
+        k, mine, theirs = other
+        warnings.append(f"the joints close two ways: assembled with {names[k]} = {mine:.6g} (the other branch has "
+                        f"{names[k]} = {theirs:.6g}); give that coordinate in the file to choose")
     red = assembly.redundant(system, q)
     if red:
         raise InputError(f"redundant joints: {', '.join(red)} — any one of them could go without changing the motion, "

@@ -12,6 +12,8 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from dyncli import ode
@@ -81,6 +83,12 @@ def _kinematics(scene: Scene, traj, acc):
     qs = [scene.q0]
     for t in grid[1:]:
         qs.append(_position(s, qs[-1], t))
+    conds = [float(np.linalg.cond(s.jac(q))) for q in qs]
+    worst = int(np.argmax(conds))
+    if conds[worst] > 1e8:
+        scene.warnings.append(f"the mechanism comes near a toggle position (the joint rows' condition number reaches "
+                              f"{conds[worst]:.3g} at t = {grid[worst]:.6g} s): its velocities and forces lose about "
+                              f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         q_start, t_a, t_b = qs[k], grid[k], grid[k + 1]
         traj.add(motion.Piece(t_a, t_b, lambda t, q_start=q_start: _kin_state(s, q_start, t), motion.modes_of(s)))

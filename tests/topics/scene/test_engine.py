@@ -1,0 +1,187 @@
+"""The scene engine's pieces against independent checks (never its own outputs):
+
+* every element's Jacobian against central differences of its rows, and γ = −J̇q̇ against the
+  second difference of φ along a motion (the rows' derivatives are written by hand);
+* the multipliers against the free-body diagrams: Σ forces and moments on every body, with the
+  reported joint forces, gravity and loads, equal m ā and Ī α (29.5, 32.15) — a second
+  formulation of the balance laws, body by body;
+* events null the later times, the views, the plots, the check solve's honesty.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from tests.conftest import PROBLEMS, solve_one_text, solve_path
+
+SCENES = sorted((PROBLEMS / "scenes").glob("*.yaml"))
+
+
+def _system(text: str):
+    from dyncli.loader import split_problems, validate
+    from dyncli.topics.scene import prepare, solver
+    from tests.conftest import ROOT
+
+    problems, diags = split_problems("t.yaml", text.encode(), ROOT)
+    assert not diags
+    validate(problems[0])
+    p = problems[0].model
+    return prepare.setup(solver._plan(p))
+
+
+LADDER_PEND = """
+type: scene
+params: {L: 2}
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  rod: {shape: rod, mass: 3, length: L}
+  bob: {shape: point, mass: 1, v: [0.3, 0.2]}
+  disk: {shape: disk, mass: 2, radius: 0.25, angle: 0.3, omega: -1.1}
+joints:
+  p: {pin: [rod.end2, [1.5, 1.2]]}
+  l: {link: [bob, rod.end1], length: 1, angle: 2.5}
+  c: {contact: [rod.end1, floor]}
+  r: {rolls: [disk, floor], at: -1}
+at: [0]
+"""
+
+
+def _fd_check(system, q, v):
+    n = system.n
+    for e in system.elements:
+        J = e.jac(q)
+        h = 1e-6
+        Jfd = np.zeros_like(J)
+        for k in range(n):
+            dq = np.zeros(n)
+            dq[k] = h
+            Jfd[:, k] = (e.phi(q + dq, 0.0) - e.phi(q - dq, 0.0)) / (2 * h)
+        assert np.allclose(J, Jfd, atol=1e-8), (e.kind, J, Jfd)
+        # φ(q + v τ + ½ a τ²) with J a = γ: the second derivative along the path vanishes
+        a = np.linalg.lstsq(J, e.gamma(q, v, 0.0), rcond=None)[0]
+        tau = 1e-4
+        f = [e.phi(q + v * s + 0.5 * a * s * s, 0.0) for s in (-tau, 0.0, tau)]
+        second = (f[0] - 2 * f[1] + f[2]) / tau ** 2
+        assert np.allclose(second, 0.0, atol=2e-5), (e.kind, second)
+
+
+def test_jacobians_and_gamma_against_differences():
+    sc = _system(LADDER_PEND.replace("at: [0]", "at: [0]\ng: 9.81"))
+    rng = np.random.default_rng(1)
+    for _ in range(5):
+        q = sc.q0 + rng.normal(scale=0.3, size=sc.system.n)
+        v = rng.normal(size=sc.system.n)
+        _fd_check(sc.system, q, v)
+
+
+def _balance(rec_results, k, bodies, joints, g=9.81):
+    """Σ F = m ā and Σ M = Ī α on every body, from the reported joint forces (the free-body
+    diagrams written again, independently of the engine's rows)."""
+    r = rec_results
+    force = {b: np.array([0.0, -bodies[b]["m"] * g]) for b in bodies}
+    moment = {b: 0.0 for b in bodies}
+
+    def apply(b, F, at):
+        if b is None:
+            return
+        force[b] += F
+        if at is not None:
+            arm = np.array(at) - np.array(r["x"][b][k][:2])
+            moment[b] += arm[0] * F[1] - arm[1] * F[0]
+
+    for name, (kind, P, Q) in joints.items():
+        rep = r["reaction"][name]
+        if kind == "pin":
+            R = np.array(rep["R"][k][:2])
+            apply(P[0], R, P[1])
+            apply(Q[0], -R, Q[1])
+        elif kind == "link":
+            d = np.array(P[1]) - np.array(Q[1])
+            e = d / np.linalg.norm(d)
+            T = rep["T"][k]
+            apply(P[0], -T * e, P[1])
+            apply(Q[0], T * e, Q[1])
+        elif kind == "contact":
+            n, dd = np.array(Q["n"]), np.array(Q["d"])
+            apply(P[0], rep["N"][k] * n + rep["F"][k] * dd, P[1])
+        elif kind == "rolls":
+            n, dd = np.array(Q["n"]), np.array(Q["d"])
+            c = np.array(r["x"][P][k][:2]) - Q["R"] * n
+            apply(P, rep["N"][k] * n + rep["F"][k] * dd, c)
+    for b, spec in bodies.items():
+        ma = spec["m"] * np.array(r["a"][b][k][:2])
+        assert np.allclose(force[b], ma, atol=1e-9 * max(1.0, np.abs(ma).max())), (b, force[b], ma)
+        if spec.get("I") is not None:
+            Ia = spec["I"] * r["alpha"][b][k][2]
+            assert math.isclose(moment[b], Ia, abs_tol=1e-9 * max(1.0, abs(Ia))), (b, moment[b], Ia)
+
+
+def test_multipliers_are_the_free_body_forces():
+    rec = solve_one_text(LADDER_PEND.replace("at: [0]", "at: [0, 0.05]\naccuracy: {rtol: 1e-12}"))
+    r = rec["results"]
+    pts = r["point"]["rod"]
+    for k in range(2):
+        e1, e2 = pts["end1"]["x"][k][:2], pts["end2"]["x"][k][:2]
+        bodies = {"rod": {"m": 3, "I": 3 * 4 / 12}, "bob": {"m": 1}, "disk": {"m": 2, "I": 2 * 0.25 ** 2 / 2}}
+        floor = {"n": (0.0, 1.0), "d": (1.0, 0.0), "R": 0.25}
+        joints = {"p": ("pin", ("rod", e2), (None, None)),
+                  "l": ("link", ("bob", r["x"]["bob"][k][:2]), ("rod", e1)),
+                  "c": ("contact", ("rod", e1), floor),
+                  "r": ("rolls", "disk", floor)}
+        _balance(r, k, bodies, joints)
+
+
+def test_event_nulls_every_later_result_and_warns():
+    rec = solve_path(PROBLEMS / "scenes" / "sliding-ladder.yaml")[0]
+    r = rec["results"]
+    t_ev = r["events"][0]["t"]
+    for k, t in enumerate(r["t"]):
+        later = t > t_ev
+        assert (r["x"]["rod"][k] is None) == later
+        assert (r["reaction"]["at_wall"]["N"][k] is None) == later
+    assert any("stops at t" in w for w in rec["warnings"])
+    # the event's state: the wall force is zero there (to the located time's accuracy)
+    st = r["events"][0]["state"]
+    assert abs(st["reaction"]["at_wall"]["N"]) < 1e-6 * st["reaction"]["at_floor"]["N"]
+
+
+def test_check_solve_is_honest_on_the_ladder():
+    """accuracy.estimate: the estimate bounds the actual error against a tight solve."""
+    text = (PROBLEMS / "scenes" / "sliding-ladder.yaml").read_text()
+    loose = solve_one_text(text.replace("type: scene", "type: scene\naccuracy: {rtol: 1.0e-7, estimate: true}"))
+    tight = solve_one_text(text.replace("type: scene", "type: scene\naccuracy: {rtol: 1.0e-13}"))
+    err = abs(loose["results"]["events"][0]["t"] - tight["results"]["events"][0]["t"]) / tight["results"]["events"][0]["t"]
+    assert loose["error_estimate"] is not None
+    assert err <= loose["error_estimate"] * 1.01
+
+
+@pytest.mark.parametrize("path", SCENES, ids=[p.name for p in SCENES])
+def test_terminal_tables_read_like_the_notes(path):
+    from tests.conftest import run_cli
+
+    code, out, err = run_cli("solve", str(path))
+    assert code == 0, err
+    assert "bodies (centres on e1, e2)" in out
+    assert "Traceback" not in out + err
+    assert "'x':" not in out                 # no raw nesting in the tables
+
+
+def test_plot_draws_the_mechanism_and_the_forces(tmp_path):
+    from tests.conftest import run_cli
+
+    png = tmp_path / "ladder.png"
+    code, _, err = run_cli("solve", str(PROBLEMS / "scenes" / "sliding-ladder.yaml"), "--plot", str(png))
+    assert code == 0, err
+    assert png.exists() and png.stat().st_size > 10_000
+
+
+def test_find_at_time_matches_the_requested_time():
+    text = (PROBLEMS / "scenes" / "atwood-massive-pulley.yaml").read_text()
+    rec = solve_one_text(text.replace("find: [", "find: [{t: 0.5}, "))
+    r = rec["results"]
+    assert r["find"][0]["reached"] is True
+    assert r["find"][0]["x"]["A"] == r["x"]["A"][r["t"].index(0.5)]
