@@ -330,7 +330,7 @@ class _Run:
     def _stop(solver, sol, d, t_old, t):
         """(time, state, interpolant) of the friction stop v·d = 0 inside the last step: brentq on
         the step's dense output, as ``solve_ivp`` locates a terminal event."""
-        from scipy.optimize import brentq
+        from dyncli.rootfind import brentq
 
         sol = sol or solver.dense_output()
         te = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
@@ -341,7 +341,7 @@ def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
     """First time after t0 at which |F_other(t, x)| exceeds mu N (the particle
     breaks free); None if it stays stuck until t_end.  Samples the interval
     and refines the first crossing with brentq."""
-    from scipy.optimize import brentq
+    from dyncli.rootfind import brentq
 
     def h(t):
         return float(np.linalg.norm(F.other(t, x))) - F.muN

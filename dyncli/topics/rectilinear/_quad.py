@@ -177,8 +177,8 @@ def integrate1(f, lo: float, width: float, rtol: float = 1e-12, atol: float = 0.
 
 def brentq(g, x0: float, x1: float, g0: float | None = None, g1: float | None = None) -> float:
     """Root of ``g`` in the bracket ``[x0, x1]`` to machine precision
-    (scipy's Brent method; endpoint values may be given to save calls)."""
-    from scipy.optimize import brentq as _brentq
+    (Brent's method, :func:`dyncli.rootfind.brentq`; endpoint values may be given to save calls)."""
+    from dyncli.rootfind import brentq as _brentq
 
     if g0 is None:
         g0 = g(x0)
