@@ -42,7 +42,6 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
-ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
 PROBE_STEPS = 2_000      # every this many steps, project the run's total and refuse early
 
@@ -284,10 +283,10 @@ class _Projected:
 
 
 def __getattr__(name):
-    if name == "RTOL_FLOOR":        # the one rtol floor is the runner's (dyncli.runner.RTOL_FLOOR)
-        from dyncli.runner import RTOL_FLOOR
+    if name in ("RTOL_FLOOR", "ODE_METHODS"):     # the one rtol floor and method list are the runner's
+        from dyncli import runner
 
-        return RTOL_FLOOR
+        return runner.RTOL_FLOOR if name == "RTOL_FLOOR" else runner.METHODS
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
@@ -384,10 +383,6 @@ def dense_output(solver):
     """The interpolant of ``solver``'s last accepted step, through scipy's public API only
     (``OdeSolver.dense_output()``: a ``DenseOutput`` callable on a float or an array of times)."""
     return solver.dense_output()
-
-
-def check_method(method: str, allowed) -> str:
-    return "DOP853" if method == "auto" else method
 
 
 def rel_change(values, ref, scale):
