@@ -8,6 +8,7 @@ root finders directly (``tests/test_one_runner.py``)."""
 from __future__ import annotations
 
 import math
+import struct
 import sys
 
 #: scipy's defaults and smallest rtol of ``brentq``
@@ -82,6 +83,121 @@ def brent(f, xa, xb, xtol, rtol, maxiter, *, signs=False):
         xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
         fcur = fx(xcur)
     raise RuntimeError(f"Failed to converge after {maxiter} iterations, value is {xcur}")   # as brentq
+
+
+
+def root_in_bracket(g, x0: float, x1: float, g0: float | None = None, g1: float | None = None) -> float:
+    """Root of ``g`` in the bracket ``[x0, x1]`` to machine precision (:func:`brentq`; endpoint
+    values may be given to save calls).  Ends of one sign (a bracket up to rounding): the end
+    closer to zero.  A root many orders of magnitude below the bracket's width is approached by
+    bisection in the ordering of the doubles first."""
+    _brentq = brentq
+
+    if g0 is None:
+        g0 = g(x0)
+    if g0 == 0:
+        return x0
+    if g1 is None:
+        g1 = g(x1)
+    if g1 == 0:
+        return x1
+    if (g0 > 0) == (g1 > 0):
+        # the caller guarantees a bracket up to rounding: return the closer end
+        return x0 if abs(g0) <= abs(g1) else x1
+    try:
+        return float(_brentq(g, x0, x1, xtol=1e-300, rtol=RTOL, maxiter=200))
+    except RuntimeError:
+        pass
+    # Brent's bisection steps halve the bracket arithmetically: a root many
+    # orders of magnitude smaller than the bracket (a root near 0 in [0, h])
+    # needs ~log2(h/root) of them and exhausts maxiter.  Bisect the bracket in
+    # the ordering of the doubles themselves (≤ 64 steps to adjacent doubles)
+    # until its ends are within a factor 4 of each other, then polish.
+    a, b, ga = float(x0), float(x1), g0
+    if a > b:
+        a, b, ga = b, a, g1
+    for _ in range(130):
+        if a > 0 and b <= 4 * a or b < 0 and a >= 4 * b:
+            break
+        m = _float_mid(a, b)
+        if m in (a, b):
+            return a if abs(ga) <= abs(g(b)) else b
+        gm = g(m)
+        if gm == 0:
+            return m
+        if (gm > 0) == (ga > 0):
+            a, ga = m, gm
+        else:
+            b = m
+    try:
+        return float(_brentq(g, a, b, xtol=1e-300, rtol=RTOL, maxiter=200))
+    except RuntimeError as exc:
+        from dyncli.errors import NumericalError
+
+        raise NumericalError(f"the root finder did not converge in the bracket [{a!r}, {b!r}] ({exc}); "
+                             "the function is probably too noisy there: loosen accuracy.rtol or move the target") from None
+
+
+def _float_key(x: float) -> int:
+    (b,) = struct.unpack("<q", struct.pack("<d", x))
+    return b if b >= 0 else -(b & 0x7FFFFFFFFFFFFFFF)
+
+
+def _float_mid(a: float, b: float) -> float:
+    """The double halfway between ``a`` and ``b`` in the ordering of all doubles
+    (the geometric mean for same-sign ends; about ±1e-154 across zero)."""
+    k = (_float_key(a) + _float_key(b)) // 2
+    bits = k if k >= 0 else (-k) | 0x8000000000000000
+    return struct.unpack("<d", struct.pack("<Q", bits))[0]
+
+
+def roots_in_brackets(F, a, b, fa, fb, maxit: int = 200):
+    """Roots of ``F`` in many brackets ``[a_j, b_j]`` at once (sign change
+    from ``fa`` to ``fb``): the Illinois variant of regula falsi with a
+    bisection every third step (at least linear convergence, superlinear for
+    simple roots), to adjacent doubles.  ``F(x, k)`` evaluates the brackets
+    ``k`` at the points ``x`` in one vectorised call; one call per iteration
+    for all brackets replaces one scalar root search per bracket."""
+    import numpy as np
+
+    a = np.array(a, dtype=float)
+    b = np.array(b, dtype=float)
+    ga = np.array(fa, dtype=float)
+    gb = np.array(fb, dtype=float)
+    wa, wb = ga.copy(), gb.copy()          # Illinois weights
+    side = np.zeros(a.size, dtype=int)
+    root = np.where(np.abs(ga) <= np.abs(gb), a, b)
+    done = (ga == 0) | (gb == 0) | ((ga > 0) == (gb > 0))
+    root[ga == 0] = a[ga == 0]
+    root[(gb == 0) & (ga != 0)] = b[(gb == 0) & (ga != 0)]
+    for it in range(maxit):
+        mid = a + 0.5 * (b - a)
+        act = ~done & (mid != a) & (mid != b)
+        if not act.any():
+            break
+        k = np.nonzero(act)[0]
+        ak, bk = a[k], b[k]
+        with np.errstate(all="ignore"):
+            x = (ak * wb[k] - bk * wa[k]) / (wb[k] - wa[k])
+        lo, hi = np.minimum(ak, bk), np.maximum(ak, bk)
+        bis = (it % 3 == 2) | ~(x > lo) | ~(x < hi)
+        x = np.where(bis, mid[k], x)
+        fx = np.asarray(F(x, k), dtype=float)
+        fx = np.broadcast_to(fx, x.shape)
+        z = fx == 0
+        root[k[z]] = x[z]
+        done[k[z]] = True
+        same = ((fx > 0) == (ga[k] > 0)) & ~z
+        other = ~same & ~z
+        ks, ko = k[same], k[other]
+        # moved a: halve b's weight if a moved last time too (Illinois)
+        wb[ks] = np.where(side[ks] == 1, 0.5 * wb[ks], wb[ks])
+        a[ks], ga[ks], wa[ks], side[ks] = x[same], fx[same], fx[same], 1
+        wa[ko] = np.where(side[ko] == -1, 0.5 * wa[ko], wa[ko])
+        b[ko], gb[ko], wb[ko], side[ko] = x[other], fx[other], fx[other], -1
+    rest = ~done
+    root[rest] = np.where(np.abs(ga[rest]) <= np.abs(gb[rest]), a[rest], b[rest])
+    return root
 
 
 def minimize_bounded(f, lo: float, hi: float, xatol: float):

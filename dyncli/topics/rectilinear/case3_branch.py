@@ -9,7 +9,8 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.work import QUAD
 
 _EPS = float(np.finfo(float).eps)
@@ -65,7 +66,7 @@ class Branch:
             elif av[k] == 0:
                 self.v_end = hi
             else:
-                self.v_end = brentq(c3.a1, lo, hi, alo, float(av[k]))
+                self.v_end = root_in_bracket(c3.a1, lo, hi, alo, float(av[k]))
             a_end = c3.a1(self.v_end)
             amax = float(np.max(np.abs(av[:k]))) if k > 0 else abs(c3.a_v1)
             amax = max(amax, abs(c3.a_v1))
