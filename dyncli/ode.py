@@ -42,7 +42,6 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
-ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
 PROBE_STEPS = 2_000      # every this many steps, project the run's total and refuse early
 
@@ -156,19 +155,20 @@ def steps(solver, budget: Budget | None, method: str):
         yield solver
 
 
-def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False):
-    """scipy's solver class for ``method`` (for ``solve_ivp(method=...)``)
-    with every accepted step counted by ``budget`` and a rate that is not
-    finite raised as :class:`NonFiniteRate`.  ``stop_nonfinite``: instead, a
-    non-finite rate or state ends the integration as failed (status -1, with
-    the reason) at the last good step."""
-    from scipy import integrate as si
+def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check_finite: bool = True):
+    """scipy's solver class for ``method`` (the runner's one method map,
+    :func:`dyncli.runner.solver_class`; for ``solve_ivp(method=...)``) with every accepted
+    step counted by ``budget`` and a rate that is not finite raised as
+    :class:`NonFiniteRate` (``check_finite=False``: the right-hand side checks its own).
+    ``stop_nonfinite``: instead, a non-finite rate or state ends the integration as failed
+    (status -1, with the reason) at the last good step."""
+    from dyncli.runner import solver_class
 
-    base = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
+    base = solver_class(method)
 
     class Budgeted(base):
         def __init__(self, fun, *args, **kw):
-            super().__init__(finite(fun), *args, **kw)
+            super().__init__(finite(fun) if check_finite else fun, *args, **kw)
 
         def step(self):
             try:
@@ -205,10 +205,10 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     is clear that it needs more than ``max_steps`` steps (default MAX_STEPS):
     see :class:`Budget`.
     """
-    budget = Budget(max_steps)
-    from scipy import integrate as si
+    from dyncli.runner import solver_class
 
-    cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[method]
+    budget = Budget(max_steps)
+    cls = solver_class(method)
     times = np.asarray(times, dtype=float)
     y0 = np.asarray(y0, dtype=float)
     Y = np.empty((len(times), len(y0)))
@@ -282,14 +282,21 @@ class _Projected:
         return out
 
 
-RTOL_FLOOR = 100 * float(np.finfo(float).eps) * 1.0001    # scipy's smallest rtol
+def __getattr__(name):
+    if name in ("RTOL_FLOOR", "ODE_METHODS"):     # the one rtol floor and method list are the runner's
+        from dyncli import runner
+
+        return runner.RTOL_FLOOR if name == "RTOL_FLOOR" else runner.METHODS
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def tighter(rtol: float, atol: float, div: float | None = None) -> tuple[float, float]:
     """Tolerances of a check solve ``div`` times tighter than (rtol, atol)
     (the error_estimate of the ODE routes), rtol no smaller than scipy allows."""
+    from dyncli.runner import floor_rtol
+
     div = CHECK_DIV if div is None else div
-    return max(rtol / div, RTOL_FLOOR), max(atol / div, 1e-300)
+    return floor_rtol(rtol / div), max(atol / div, 1e-300)
 
 
 def fallback_warning(div: float) -> str:
@@ -376,10 +383,6 @@ def dense_output(solver):
     """The interpolant of ``solver``'s last accepted step, through scipy's public API only
     (``OdeSolver.dense_output()``: a ``DenseOutput`` callable on a float or an array of times)."""
     return solver.dense_output()
-
-
-def check_method(method: str, allowed) -> str:
-    return "DOP853" if method == "auto" else method
 
 
 def rel_change(values, ref, scale):

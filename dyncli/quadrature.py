@@ -110,3 +110,12 @@ def _panels(f, c, h, what: str, path: str | None):
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(diff)) and np.all(np.isfinite(floor))):
         raise NumericalError(f"the integral of {what} is not finite: it overflows a double (beyond ~1.8e308)")
     return K, diff, floor
+
+
+def quad(f, a: float, b: float, **kw):
+    """QUADPACK's adaptive quadrature of a scalar ``f`` (scipy's ``quad``, imported here only,
+    lazily): (integral, error estimate).  For integrands that are not vectorised (a curve's
+    speed evaluated point by point); ``kw``: scipy's (``limit``, ``epsabs``, ``epsrel``)."""
+    from scipy.integrate import quad as scipy_quad
+
+    return scipy_quad(f, a, b, **kw)[:2]

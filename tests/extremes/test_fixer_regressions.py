@@ -9,7 +9,7 @@ from tests.conftest import error_of, solve_one_text
 
 
 def test_rectilinear_brentq_finds_a_root_far_below_the_bracket_width():
-    from dyncli.topics.rectilinear._quad import brentq
+    from dyncli.rootfind import root_in_bracket as brentq
 
     calls = []
 

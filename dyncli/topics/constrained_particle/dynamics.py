@@ -25,7 +25,7 @@ import numpy as np
 
 from dyncli.direction import norm_rows, unit_rows
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.topics.constrained_particle import equations as eq
 from dyncli.vec3 import cross as _cross
@@ -149,8 +149,8 @@ class Model:
                 qdd = eq.parameter_acceleration(-Rt, ft, m, sp)
             P_nc = sum((float(Fn[i]) + ft * et[i]) * v[i] for i in range(3))
             P_N = N[0] * v[0] + N[1] * v[1] + N[2] * v[2]
-            out = np.array([qd, qdd, w, P_nc, P_N])
-            if not np.all(np.isfinite(out)):
+            out = [qd, qdd, w, P_nc, P_N]
+            if not all(map(math.isfinite, out)):      # the rate checked here (the runner's check_finite off)
                 raise NumericalError(f"the motion is not finite at t = {t:.6g} s, q = {q:.6g} "
                                      "(the curve's tangent vanishes, a force is singular there, or the accelerations overflow)")
             return out
@@ -208,17 +208,14 @@ def _start_mode(model, t, y, rtol):
 
 
 def integrate(model, rtol, atol, method, max_steps=None, max_step=math.inf):
-    from scipy import integrate as si
-
     p = model.p
-    rtol = max(rtol, 100 * np.finfo(float).eps * 1.0001)
+    rtol = runner.floor_rtol(rtol)
     t_end = float(p.t_end)
     y = np.array([p.q0, p.q_dot0, 0.0, 0.0, 0.0], float)
     t = 0.0
     phases, notes = [], []
     budget = ode.Budget(max_steps, default=MAX_STEPS, probe=500)
     budget.leg(0.0, t_end)
-    solver_cls = ode.budgeted(method, budget)
     for _ in range(MAX_PHASES):
         mode = _start_mode(model, t, y, rtol)
         if mode[0] == "stick":
@@ -227,8 +224,9 @@ def integrate(model, rtol, atol, method, max_steps=None, max_step=math.inf):
         elif phases and model.mu > 0 and y[1] == 0:
             notes.append(("slip", t))
         try:
-            sol = si.solve_ivp(model.rhs_for(mode), (t, t_end), y, method=solver_cls, rtol=rtol, atol=atol,
-                               dense_output=True, events=_events(model, mode, rtol) or None, max_step=max_step)
+            sol = runner.solve_ivp(model.rhs_for(mode), (t, t_end), y, method=method, budget=budget,
+                                   check_finite=False, rtol=rtol, atol=atol, dense_output=True, events=_events(model, mode, rtol) or None,
+                                   max_step=max_step)
         except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
             raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
         if sol.status == -1:

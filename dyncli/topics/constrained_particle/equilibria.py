@@ -45,7 +45,7 @@ def _why_not(p, model) -> str | None:
 
 def find(p, model):
     """A list of {q, x, stable, omega_small} or (None, reason)."""
-    from scipy.optimize import brentq
+    from dyncli.rootfind import brentq
 
     lo, hi = p.q_range
     qs = np.linspace(lo, hi, N_SAMPLES + 1)

@@ -105,7 +105,7 @@ class Energy:
     def next_turn(self, qs, d, ref):
         """The first turning point after qs in the direction d (None if none
         before the end of an open wire, or within one loop of a closed one)."""
-        from scipy.optimize import brentq
+        from dyncli.rootfind import brentq
 
         end = qs + d * self.L if self.closed else (self.hi if d > 0 else self.lo)
         if end == qs:                             # already at that end of the wire
@@ -148,7 +148,7 @@ class Energy:
     def q_at(self, leg, target, n):
         """q on the leg (qs, qe, turn_s, turn_e, duration, ref) at the time
         ``target`` after its start."""
-        from scipy.optimize import brentq
+        from dyncli.rootfind import brentq
 
         qs, qe, ts, te, dur, ref = leg
         if target <= 0:

@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import InputError
 from dyncli.result import Result, Series, SolveOptions
 
@@ -55,7 +55,7 @@ def quadrature_applies(p, curve) -> bool:
 
 
 def arc_length(curve, q0, qs):
-    from scipy.integrate import quad
+    from dyncli.quadrature import quad
 
     def sp(q):
         return float(np.linalg.norm(curve.dy(q)[:, 0]))
@@ -85,12 +85,12 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
 
 def _ode_method(p):
-    return "DOP853" if p.accuracy.method in ("auto", "ode") else p.accuracy.method
+    return runner.scipy_method(p.accuracy.method)
 
 
 def _solve_ode(p, model, times) -> Result:
     method = _ode_method(p)
-    rtol, atol = max(float(p.accuracy.rtol), 100 * np.finfo(float).eps), float(p.accuracy.atol)
+    rtol, atol = runner.floor_rtol(float(p.accuracy.rtol)), float(p.accuracy.atol)
     phases, notes, nsteps = dynamics.integrate(model, rtol, atol, method, p.accuracy.max_steps)
     Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in times])
     modes = [dynamics.phase_at(phases, t).mode for t in times]
@@ -102,14 +102,18 @@ def _solve_ode(p, model, times) -> Result:
     res.extra["nsteps"] = nsteps
     res.extra["energy_scale"] = scale
     _friction_notes(res, model, notes, phases)
-    # the runner's check solve (ode.check_solve); x and v each relative to its scale over the run
-    check = ode.check_solve(res, lambda r2, a2: dynamics.integrate(model, r2, a2, method, p.accuracy.max_steps)[0],
-                            rtol, atol)
-    if check is not None:
-        Y2 = np.column_stack([dynamics.phase_at(check[0], t).state(t) for t in times])
+    # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its
+    # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
+    def difference(_, phases2):
+        Y2 = np.column_stack([dynamics.phase_at(phases2, t).state(t) for t in times])
         x2, v2 = model.curve.state(np.array(times), Y2[0], Y2[1], Y2[2])[:2]
-        res.error_estimate = ode.relative_difference(
+        return ode.relative_difference(
             [(np.array(out["results"]["x"], float).T, x2), (np.array(out["results"]["v"], float).T, v2)])
+
+    drift = resid / scale if resid is not None and scale else None
+    runner.estimate_error(res, phases, estimate=p.accuracy.estimate, rtol=rtol, atol=atol,
+                          rerun=lambda r2, a2: dynamics.integrate(model, r2, a2, method, p.accuracy.max_steps)[0],
+                          difference=difference, drifts=(drift,), steps=nsteps)
     return res
 
 

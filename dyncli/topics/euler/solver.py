@@ -180,12 +180,12 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
     """ω at ``times`` integrated (rows of floats), and the drifts of |H̄| and T."""
     import numpy as np
 
-    from dyncli import ode
+    from dyncli import ode, runner
 
     w0 = np.array(w0, dtype=float)
     times = np.asarray(times, dtype=float)
     method = pb.accuracy.method
-    m = "DOP853" if method in ("auto", "projected") else method
+    m = runner.scipy_method(method)
     rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
     forced = pb.M is not None and exact is None
     res.method = "ode:projected-DOP853" if method == "projected" else f"ode:{m}"
@@ -207,14 +207,14 @@ def _integrate(pb, I, w0, times, res, exact, H0, T0):
     if exact is None:        # the sampler for plots: the run again with its steps' interpolants, when first asked
         res.extra["sample"] = _LazySampler(lambda on_step: run(fun, (rtol, atol), on_step))
     scale = max(float(np.max(np.linalg.norm(W, axis=1))) if len(W) else 0.0, float(np.linalg.norm(w0)), 1e-300)
-    if pb.accuracy.estimate:        # a second solve at tighter tolerances (accuracy.estimate)
-        Y2 = run(fun, ode.tighter(rtol, atol))
-        res.error_estimate = float(np.max(np.abs(Y2[:, :3] - W)) / scale) if len(times) else 0.0
-    elif exact is not None:
+    if exact is not None and not pb.accuracy.estimate:
         res.warn("error_estimate is the actual error against the exact torque-free solution")
         res.error_estimate = float(np.max(np.abs(exact.omega(times) - W)) / scale) if len(times) else 0.0
-    else:                           # the largest relative drift of H and T
-        ode.nominal_estimate(res, rtol, drift.worst_H, drift.worst_T, steps=nsteps)
+    else:       # the runner's policy: a check solve (and its one fallback) with accuracy.estimate, else nominal
+        runner.estimate_error(
+            res, W, estimate=pb.accuracy.estimate, rtol=rtol, atol=atol, rerun=lambda r, a: run(fun, (r, a)),
+            difference=lambda W1, Y2: float(np.max(np.abs(Y2[:, :3] - W1)) / scale) if len(times) else 0.0,
+            drifts=(drift.worst_H, drift.worst_T), steps=nsteps)
     return W.tolist(), drift.worst_H, drift.worst_T
 
 

@@ -126,13 +126,12 @@ def _ode_route(pb, times, res):
     method's estimate."""
     import numpy as np
 
-    from dyncli import ode
+    from dyncli import ode, runner
 
     times = np.asarray(times, dtype=float)
     I1, I2, p, q = pb.I1, pb.I2, pb.p, pb.q
     th0, thd0 = pb.theta0, pb.theta_dot0
-    m = ode.check_method("DOP853" if pb.accuracy.method in ("auto", "exact") else pb.accuracy.method,
-                         ode.ODE_METHODS)
+    m = runner.scipy_method(pb.accuracy.method)
     rtol, atol = pb.accuracy.rtol, pb.accuracy.atol
 
     def fun(t, y):

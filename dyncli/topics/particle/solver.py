@@ -19,19 +19,15 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
 from dyncli.topics.particle.forces import Forces, _NonFinite
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
-ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
-
-
 def _ode_method(p) -> str:
-    m = p.accuracy.method
-    return "DOP853" if m in ("auto", "ode") else m
+    return runner.scipy_method(p.accuracy.method)
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.topics.particle.forces import Forces, _NonFinite
 from dyncli.topics.particle.hints import budget_message, singularity_hint
@@ -154,7 +154,7 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps:
 
 def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
     rtol, atol, max_step = tol
-    rtol = max(rtol, 100 * EPS * 1.0001)
+    rtol = runner.floor_rtol(rtol)
     t_end = float(p.t_end)
     y = np.array([*p.x0, *p.v0, 0.0], dtype=float)
     if t_end == 0.0:
@@ -185,11 +185,9 @@ class _Run:
     decision (:meth:`direction`) and integrates until a stop or t_end (:meth:`integrate_phase`)."""
 
     def __init__(self, F, tol, method, budget, t_end, y, times, dense):
-        import scipy.integrate
-
         self.F, self.method, self.budget = F, method, budget
         self.rtol, self.atol, self.max_step = tol
-        self.solver_cls = getattr(scipy.integrate, method)      # DOP853, RK45, Radau or LSODA
+        self.solver_cls = runner.solver_class(method)      # the runner's one method map
         self.t_end, self.dense = t_end, dense
         self.t, self.y = 0.0, y
         self.phases: list = []
@@ -268,9 +266,7 @@ class _Run:
             self.vscale = max(self.vscale, float(np.linalg.norm(Y[3:6], axis=0).max()))
         sol = None
         if self.dense and sols:
-            from scipy.integrate import OdeSolution
-
-            sol = OdeSolution(ts, sols)
+            sol = runner.ode_solution(ts, sols)
         self.phases.append(OdePhase(t0, ts[-1], sol, rhs, np.array(ts), Y))
         self.t, self.y = ts[-1], ys[-1]
         return not stop or ts[-1] >= self.t_end
@@ -330,7 +326,7 @@ class _Run:
     def _stop(solver, sol, d, t_old, t):
         """(time, state, interpolant) of the friction stop v·d = 0 inside the last step: brentq on
         the step's dense output, as ``solve_ivp`` locates a terminal event."""
-        from scipy.optimize import brentq
+        from dyncli.rootfind import brentq
 
         sol = sol or solver.dense_output()
         te = brentq(lambda s: float(sol(s)[3:6] @ d), t_old, t, xtol=4 * EPS, rtol=4 * EPS)
@@ -341,7 +337,7 @@ def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
     """First time after t0 at which |F_other(t, x)| exceeds mu N (the particle
     breaks free); None if it stays stuck until t_end.  Samples the interval
     and refines the first crossing with brentq."""
-    from scipy.optimize import brentq
+    from dyncli.rootfind import brentq
 
     def h(t):
         return float(np.linalg.norm(F.other(t, x))) - F.muN

@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.result import Series
 from dyncli.topics.particle_systems import pairs as pf
@@ -69,7 +69,7 @@ def _quantities(p, masses, Y, O):
 def solve_motion(p, res, masses, X0, V0, O) -> None:
     """Fill the ``*_motion`` results, the checks and ``error_estimate``."""
     acc = p.accuracy
-    method = ode.check_method(acc.method if acc.method != "ode" else "auto", None)
+    method = runner.scipy_method(acc.method)
     Y = _integrate(p, masses, X0, V0, acc.rtol, acc.atol, method)
     X, G, H, T, com, Vint, Pint, W = _quantities(p, masses, Y, O)
     if not all(np.isfinite(a).all() for a in (X, G, H, T, Vint, Pint, W)):

@@ -32,7 +32,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case2_scan import _N0, _Scan, _fmt, _what
 from dyncli.topics.rectilinear.work import CALL as _CALL, QUAD as _QUAD, SCALAR as _SCALAR, Work
 
@@ -115,7 +116,7 @@ class _Case2(_Scan):
         if 0 < idx.size <= 64:
             for k in idx:
                 if ax[k] != 0 and ax[k + 1] != 0:
-                    cuts.append(brentq(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
+                    cuts.append(root_in_bracket(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
         B = np.array([tb] + sorted(cuts, reverse=h < 0) + [T])
         lo, w = B[:-1], np.diff(B)
         n = lo.size
@@ -157,7 +158,7 @@ class _Case2(_Scan):
             known.append((t, s, v, self._nbad == n))
             return (s, v)[k - 1] - target
 
-        return brentq(g, t0, t1, (s0, v0)[k - 1] - target, (s1, v1)[k - 1] - target)
+        return root_in_bracket(g, t0, t1, (s0, v0)[k - 1] - target, (s1, v1)[k - 1] - target)
 
     def vroot(self, t0: float, v0: float, t1: float, v1: float, target: float) -> float:
         """v = target in [t0, t1] (v only: one integral per step)."""
@@ -171,7 +172,7 @@ class _Case2(_Scan):
             known.append((t, v, bool(np.all(conv))))
             return v - target
 
-        return brentq(g, t0, t1, v0 - target, v1 - target)
+        return root_in_bracket(g, t0, t1, v0 - target, v1 - target)
 
     # -- t queries ------------------------------------------------------
     def t_query(self, i: int, T: float) -> None:

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable, roots
+from dyncli.rootfind import roots_in_brackets
+from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable
 
 _N0 = 2048
 _NMAX = 1 << 16
@@ -100,7 +101,7 @@ class _Scan:
         sb = np.signbit(ax)
         ks = np.nonzero(sb[:-1] != sb[1:])[0]
         ks = ks[ax[ks + 1] != 0]              # a zero sample is itself the root (ax[k] == 0: root x[k])
-        rts = roots(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
+        rts = roots_in_brackets(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
         rts = rts[(rts > ca) & (rts < cb)]
         Bv = np.unique(np.concatenate([[ca], rts, [cb]]))
         vals, errs, conv = self.integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv))
@@ -185,7 +186,7 @@ class _Scan:
                 self._check(conv)
                 return v0[j] + vals
 
-            Bs.extend(float(r) for r in roots(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
+            Bs.extend(float(r) for r in roots_in_brackets(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
         Bs = sorted(set(b for b in Bs[1:] if ca < b < cb))
         Bs = [ca] + Bs
         vs = [vc] + [0.0] * (len(Bs) - 1)

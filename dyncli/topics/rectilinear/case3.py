@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import brentq
+from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear.case3_branch import _BIG, Branch, _fmt
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
@@ -108,7 +108,7 @@ class _Case3:
             k = min(max(k, 1), len(taus) - 1)
             ulo, uhi = float(b.u[k - 1]), float(b.u[k])
             t0 = float(taus[k - 1])
-            u = brentq(lambda u: t0 + float(b.integ(ulo, u)[0][0]) - tau if u != ulo else t0 - tau,
+            u = root_in_bracket(lambda u: t0 + float(b.integ(ulo, u)[0][0]) - tau if u != ulo else t0 - tau,
                        ulo, uhi, t0 - tau, float(taus[k]) - tau)
             tt, ds, v, (et, es) = b.at(u)
             # an error et in t(u) moves the answer along the trajectory: v by |a| et;
@@ -196,7 +196,7 @@ class _Case3:
             elif abs(target - ds[k + 1]) <= tol_of(float(ds[k + 1])) and not (lo <= target <= hi):
                 u = uhi
             else:
-                u = brentq(lambda u: s0 + float(b.integ(ulo, u)[1][0]) - target if u != ulo else s0 - target,
+                u = root_in_bracket(lambda u: s0 + float(b.integ(ulo, u)[1][0]) - target if u != ulo else s0 - target,
                            ulo, uhi, s0 - target, float(ds[k + 1]) - target)
             tau, dss, v, (et, es) = b.at(u)
             t = p.t1 + tau

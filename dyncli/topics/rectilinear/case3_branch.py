@@ -9,7 +9,8 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.work import QUAD
 
 _EPS = float(np.finfo(float).eps)
@@ -65,7 +66,7 @@ class Branch:
             elif av[k] == 0:
                 self.v_end = hi
             else:
-                self.v_end = brentq(c3.a1, lo, hi, alo, float(av[k]))
+                self.v_end = root_in_bracket(c3.a1, lo, hi, alo, float(av[k]))
             a_end = c3.a1(self.v_end)
             amax = float(np.max(np.abs(av[:k]))) if k > 0 else abs(c3.a_v1)
             amax = max(amax, abs(c3.a_v1))
@@ -78,13 +79,12 @@ class Branch:
             cand = np.nonzero((aa[1:-1] <= aa[:-2]) & (aa[1:-1] <= aa[2:])
                               & (aa[1:-1] < 1e-3 * np.maximum(aa[:-2], aa[2:])))[0] + 1
             for k in cand:
-                from scipy.optimize import minimize_scalar
+                from dyncli.rootfind import minimize_bounded
 
                 lo, hi = sorted((float(vs[k - 1]), float(vs[k + 1])))
-                r = minimize_scalar(lambda x: abs(c3.a1(x)), bounds=(lo, hi), method="bounded",
-                                    options={"xatol": 1e-14 * max(abs(lo), abs(hi), 1e-300)})
-                if abs(r.fun) <= 1e-12 * max(abs(c3.a_v1), float(aa.max())):
-                    self.v_end, self.kind = float(r.x), "zero"
+                x, fx = minimize_bounded(lambda x: abs(c3.a1(x)), lo, hi, 1e-14 * max(abs(lo), abs(hi), 1e-300))
+                if abs(fx) <= 1e-12 * max(abs(c3.a_v1), float(aa.max())):
+                    self.v_end, self.kind = x, "zero"
                     break
 
     # -- parametrisation ---------------------------------------------------

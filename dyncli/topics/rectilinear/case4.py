@@ -36,7 +36,7 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import brentq
+from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End, Energy, Leg, _fmt
 from dyncli.topics.rectilinear.case4_scan import _Scan
 from dyncli.topics.rectilinear.work import SCALAR, Work
@@ -269,7 +269,7 @@ class _Case4(_Scan):
             tol = self.rtol * max(V2, abs(w_a), abs(w_b)) + self.atol * math.sqrt(max(V2, 1e-300))
             pieces = [(s_a, w_a, s_b, w_b)]
             if av[k] * av[k + 1] < 0:   # an extremum of v^2 inside the cell
-                sm = brentq(self.a1, float(ss[k]), float(ss[k + 1]), float(av[k]), float(av[k + 1]))
+                sm = root_in_bracket(self.a1, float(ss[k]), float(ss[k + 1]), float(av[k]), float(av[k + 1]))
                 wm = float(self.energy.v2(sm, 0.0))
                 pieces = [(s_a, w_a, sm, wm, True), (sm, wm, s_b, w_b, False)]
             for pc in pieces:
@@ -280,7 +280,7 @@ class _Case4(_Scan):
                 if min(w0, w1) <= V2 <= max(w0, w1):
                     if w0 == V2:
                         return s0
-                    return brentq(lambda s: float(self.energy.v2(s, 0.0)) - V2, s0, s1_, w0 - V2, w1 - V2)
+                    return root_in_bracket(lambda s: float(self.energy.v2(s, 0.0)) - V2, s0, s1_, w0 - V2, w1 - V2)
         return None
 
     def equilibrium(self) -> None:

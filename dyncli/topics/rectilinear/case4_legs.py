@@ -8,7 +8,8 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.work import QUAD
 
 _EPS = float(np.finfo(float).eps)
@@ -301,7 +302,7 @@ class Leg:
             def f(x, part=part, lo=lo, c0=c0):
                 return c0 + (float(self._integ(part, lo, x)[0][0]) if x != lo else 0.0) - tau
 
-            x = brentq(f, lo, hi, c0 - tau, float(cum[k]) - tau)
+            x = root_in_bracket(f, lo, hi, c0 - tau, float(cum[k]) - tau)
             base, off, _ = self._map(part, np.float64(x))
             s = float(base + off)
             v2 = float(self.c4.energy.v2(base, off))

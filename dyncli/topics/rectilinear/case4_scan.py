@@ -8,7 +8,8 @@ import math
 
 import numpy as np
 
-from dyncli.topics.rectilinear._quad import NonFinite, brentq, integrate
+from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End
 
 
@@ -127,13 +128,13 @@ class _Scan:
                 if v2[k + 1] == 0:
                     sT = hi
                 else:
-                    sT = brentq(E, lo, hi, v2lo, float(v2[k + 1]))
+                    sT = root_in_bracket(E, lo, hi, v2lo, float(v2[k + 1]))
                 # a dip inside the cell before the crossing is a turning point as well
                 return self._classify(sT, e, tolsep)
-            sm = brentq(self.a1, lo, hi, float(av[k]), float(av[k + 1]))
+            sm = root_in_bracket(self.a1, lo, hi, float(av[k]), float(av[k + 1]))
             v2m = E(sm)
             if v2m < -tolsep:
-                return self._classify(brentq(E, lo, sm, v2lo, v2m), e, tolsep)
+                return self._classify(root_in_bracket(E, lo, sm, v2lo, v2m), e, tolsep)
             if v2m <= tolsep:
                 return End("asym", sm)
         return None

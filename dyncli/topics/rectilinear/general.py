@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from dyncli import ode
-from dyncli.topics.rectilinear._quad import brentq
+from dyncli.rootfind import root_in_bracket
 
 
 #: default accuracy.max_steps of one run of this route: ~65 us a step (DOP853, 12
@@ -233,7 +233,7 @@ class _Forward:
                 if k + 1 < len(bps) - 1 and abs(X - vals[k + 1]) <= tol:
                     t, graze = bps[k + 1], True      # the target is the extremum
                 elif lo <= X <= hi:
-                    t, graze = brentq(lambda t: float(step.y(t)[comp]) - X, bps[k], bps[k + 1],
+                    t, graze = root_in_bracket(lambda t: float(step.y(t)[comp]) - X, bps[k], bps[k + 1],
                                       vals[k] - X, vals[k + 1] - X), False
                 else:
                     continue
@@ -253,4 +253,4 @@ def _event(g, ta: float, tb: float, ga: float, gb: float):
         return None
     if gb == 0:
         return tb
-    return brentq(g, ta, tb, ga, gb)
+    return root_in_bracket(g, ta, tb, ga, gb)

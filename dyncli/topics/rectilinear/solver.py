@@ -26,7 +26,6 @@ import math
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result, SolveOptions
 
-ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 EQUATIONS = {
     1: ["6.5a", "6.5b"],
     2: ["6.6a", "6.6b"],
@@ -134,7 +133,9 @@ def _route(p, case) -> str:
             raise InputError("no quadrature route when a uses more than one of t, s, v (general case): use auto or an ODE method",
                              "accuracy.method")
         return m
-    return "DOP853" if m == "ode" else m
+    from dyncli.runner import scipy_method      # an ODE route (the runner's one method map)
+
+    return scipy_method(m)
 
 
 def _check_initial(p) -> None:

@@ -46,7 +46,7 @@ import sys
 
 from dyncli.backends import FLOAT_OPS, array_ops, ops_for
 from dyncli.elliptic import ellipj, elliprc, elliprf, elliprj
-from dyncli.topics.top.rootfind import brent as _brent
+from dyncli.rootfind import brent as _brent
 
 EPS = sys.float_info.epsilon
 

@@ -2,7 +2,7 @@
 the route integrates the reduced equations of :mod:`dyncli.topics.top.reduced`): the motion
 of the heavy symmetric top (notes §38, equations 38.18) with continuous Euler angles.
 
-Numerical route (numpy; scipy imported lazily inside :func:`integrate`)
+Numerical route (numpy; scipy imported lazily by the runner, :mod:`dyncli.runner`)
 -----------------------------------------------------------------------
 The 3-1-3 Euler angles are singular at θ = 0 and θ = π, so the motion is
 integrated in a non-singular representation: the unit quaternion q of the
@@ -49,9 +49,9 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
-from dyncli.topics.top.kinematics import EPS, S_TINY, Top, _wrap, half_angles
+from dyncli.topics.top.kinematics import S_TINY, Top, _wrap, half_angles
 
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
@@ -151,16 +151,13 @@ def integrate(top: Top, y0, psi0, phi0, times, *, rtol, atol, method, Wp, scales
     Step budget :class:`dyncli.ode.Budget`: refused (NumericalError) as soon
     as it is clear that the run needs more than ``max_steps`` steps (default
     ``ode.MAX_STEPS``)."""
-    import scipy.integrate as si
-
     budget = ode.Budget(max_steps)
 
     n = len(times)
     run = Run(n)
     Es, Hs, Ws = scales
-    cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA,
-           "projected": si.DOP853}[method]
-    rtol = max(rtol, 100 * EPS * 1.0001)
+    cls = runner.solver_class(method)          # the runner's one method map ("projected": DOP853)
+    rtol = runner.floor_rtol(rtol)
     # the transverse rates ω⊥ get atol relative to their own bound, not to |ω| (the spin)
     atol_v = np.array([atol] * 4 + [atol * (Wp if Wp > 0 else Ws)] * 2 + [atol * Ws])
     # p has no spin about its axis: the tracker follows ψ and φ_p, φ = φ_p + ω3 t

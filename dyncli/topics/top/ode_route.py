@@ -28,22 +28,21 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.topics.top.derived import rates, reaction
 from dyncli.topics.top.integrator import integrate
-from dyncli.topics.top.kinematics import EPS
 from dyncli.topics.top.reduced import FLOOR, Reduced, usable
 
 #: refusal when the a-priori step estimate exceeds the budget by this factor
 PREDICT_MARGIN = 4.0
 
 
-def check_budget(p, T, Wfast, Wp, W3, C, A, EPS):
+def check_budget(p, T, Wfast, Wp, W3, C, A):
     """Refuse at once a run clearly over the step budget (the estimate is 1.1-1.9 times the steps)."""
     budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
     work = T * (Wfast + Wp)
-    rtol_eff = max(min(p.accuracy.rtol, 1e-3), 100 * EPS)
+    rtol_eff = runner.floor_rtol(min(p.accuracy.rtol, 1e-3))
     steps = 0.3 * work * (1e-3 / rtol_eff) ** 0.125
     if not steps <= PREDICT_MARGIN * budget:
         raise NumericalError(
@@ -67,7 +66,8 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
     """The integrated motion at ``times`` (requested order) and its error estimate.
     ``state``: (ψ0, θ0, φ0, ψ̇0, θ̇0, φ̇0); ``bounds``: (θ_min, θ_max)."""
     ts, inv = _sorted_times(times)
-    method = "DOP853" if p.accuracy.method in ("auto", "exact") else p.accuracy.method
+    method = p.accuracy.method           # "projected" stays: the integrator projects (DOP853 steps it)
+    method = method if method == "projected" else runner.scipy_method(method)
     rtol, atol = p.accuracy.rtol, p.accuracy.atol
     T = ts[-1] if ts else 0.0
     if ts:
@@ -76,7 +76,7 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
         if ts:
             res.error_estimate = 0.0
         return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, math.inf)[0]
-    check_budget(p, T, Wfast, Wp, float(y0[6]), top.C, top.A, EPS)
+    check_budget(p, T, Wfast, Wp, float(y0[6]), top.C, top.A)
     red = Reduced(top, state, bounds, Wp)
     quat = method == "projected" or not usable(top, *bounds, red.w3, red.b, Wp, Wfast, rtol)
 
@@ -87,18 +87,13 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
         return _reduced_run(red, p, ts, inv, method, scales, r, a, h)
 
     out, drifts, nsteps = run_at(rtol, atol)
-    if p.accuracy.estimate:
-        check = ode.check_solve(res, lambda r, a: run_at(r, a)[0], rtol, atol)
-        if check is not None:
-            fl = FLOOR * Wp
-            res.error_estimate = ode.relative_difference(
-                [(a, b) for k, (a, b) in enumerate(zip(out, check[0])) if k in REPORTED],
-                [0.0, 0.0, 0.0, fl, fl, 0.0, 0.0])
-            res.extra["error_estimate_note"] = (
-                "the largest difference of ψ, θ, φ, ψ̇, θ̇, φ̇, R, each relative to its scale over the requested "
-                "times, from a check solve at " + ("rtol/100" if check[1] == "tighter" else "10·rtol"))
-    else:
-        ode.nominal_estimate(res, rtol, *drifts, steps=nsteps)
+    fl = FLOOR * Wp
+    runner.estimate_error(           # the runner's policy: check solve (and fallback) or nominal
+        res, out, estimate=p.accuracy.estimate, rtol=rtol, atol=atol, rerun=lambda r, a: run_at(r, a)[0],
+        difference=lambda a, b: ode.relative_difference(
+            [(x, y) for k, (x, y) in enumerate(zip(a, b)) if k in REPORTED], [0.0, 0.0, 0.0, fl, fl, 0.0, 0.0]),
+        note="the largest difference of ψ, θ, φ, ψ̇, θ̇, φ̇, R, each relative to its scale over the requested "
+             "times, from a check solve at {how}", drifts=drifts, steps=nsteps)
     return out
 
 

@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import ode, runner
 from dyncli.topics.top.derived import reaction
 from dyncli.topics.top.kinematics import EPS, Top
 
@@ -83,7 +83,7 @@ class Reduced:
         θ̇, ψ̇ errors ~1e4 rtol); atol of x and θ̇ no tighter than FLOOR rtol times their scales X and
         |ω⊥|max (the scales the error_estimate counts them against: steady precession's x and θ̇
         are the integrator's own error, which an atol below that chases with ever smaller steps)."""
-        rtol = max(rtol, ode.RTOL_FLOOR)
+        rtol = runner.floor_rtol(rtol)
         return rtol, [max(atol, FLOOR * rtol * self.X), max(atol, FLOOR * rtol * self.Wp), atol, atol]
 
     def rhs(self, t, y):
@@ -107,15 +107,14 @@ class Reduced:
     def run(self, times, *, rtol, atol, method, max_step, max_steps):
         """ψ, θ, φ, ψ̇, θ̇, φ̇, S = ψ̇ sinθ, R at the sorted ``times`` (t ≥ 0) and the energy's
         largest change at them, over I11 (the caller scales it)."""
-        from scipy.integrate import solve_ivp
-
         budget = ode.Budget(max_steps)
         ts = np.asarray(times, dtype=float)
         T = float(ts[-1])
         budget.leg(0.0, T)
         rtol, atol = self.tolerances(rtol, atol)
-        sol = solve_ivp(self.rhs, (0.0, T), self.y0, method=_unwrapped(ode.budgeted(method, budget)), t_eval=ts,
-                        rtol=rtol, atol=atol, max_step=max_step)
+        # the rhs checks its own rates (check_finite=False: one Python call less per evaluation)
+        sol = runner.solve_ivp(self.rhs, (0.0, T), self.y0, method=method, budget=budget, check_finite=False,
+                               t_eval=ts, rtol=rtol, atol=atol, max_step=max_step)
         self.steps = budget.n          # accepted steps of the last run (the nominal error estimate)
         if sol.status != 0 or sol.y.shape[1] != len(ts):
             from dyncli.errors import NumericalError
@@ -141,13 +140,3 @@ class Reduced:
             return 0.0
         return max(abs(self._energy(a, b) - self.E0) for a, b in zip(th.tolist(), thd.tolist()))
 
-
-def _unwrapped(budgeted):
-    """The runner's budgeted solver class without its ``ode.finite`` wrapper of the right-hand
-    side (:meth:`Reduced.rhs` checks its own rates: one Python call less per evaluation)."""
-
-    class Solver(budgeted):
-        def __init__(self, fun, *args, **kw):
-            super(budgeted, self).__init__(fun, *args, **kw)
-
-    return Solver

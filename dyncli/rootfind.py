@@ -1,0 +1,209 @@
+"""The one bracketed root finder of dyncli (docs/accuracy.md; issue #26): Brent's method in
+plain floats, step for step the operations of scipy's ``brentq`` (so a root is the same double),
+without importing scipy.optimize (~0.1 s at start-up).  Topic-agnostic: every topic finds its
+roots here (the top's nutation cubic, the constrained particle's turning points and
+equilibria, the particle's events, rectilinear's legs and crossings), never with scipy's
+root finders directly (``tests/test_one_runner.py``)."""
+
+from __future__ import annotations
+
+import math
+import struct
+import sys
+
+#: scipy's defaults and smallest rtol of ``brentq``
+XTOL = 2e-12
+RTOL = 4 * sys.float_info.epsilon
+MAXITER = 100
+
+
+def brentq(f, a: float, b: float, *, xtol: float = XTOL, rtol: float = RTOL, maxiter: int = MAXITER) -> float:
+    """Root of ``f`` in the bracket [a, b] (f(a), f(b) of opposite signs, else ValueError):
+    scipy's ``brentq`` with its arguments, its checks and its errors (a NaN value: ValueError;
+    ``maxiter`` exhausted: RuntimeError), in plain floats (:func:`brent`).
+
+    >>> brentq(lambda x: x * x - 2.0, 0.0, 2.0) == 2 ** 0.5
+    True
+    """
+    if xtol <= 0:
+        raise ValueError(f"xtol too small ({xtol:g} <= 0)")
+    if rtol < RTOL:
+        raise ValueError(f"rtol too small ({rtol:g} < {RTOL:g})")
+    return brent(f, float(a), float(b), xtol, rtol, int(maxiter), signs=True)
+
+
+def brent(f, xa, xb, xtol, rtol, maxiter, *, signs=False):
+    """Root of ``f`` bracketed by [xa, xb] by Brent's method (bisection guarding inverse
+    quadratic / secant steps), in plain floats: step for step the operations of scipy's
+    ``brentq``, so the root is the same double.  Converged when the bracket half-width is
+    below (xtol + rtol|x|)/2.  ``signs``: end values of one sign are refused (ValueError), as
+    brentq does (without: the caller guarantees the bracket)."""
+    def fx(x):
+        y = float(f(x))
+        if math.isnan(y):           # as brentq: refused, not iterated on
+            raise ValueError(f"The function value at x={x:f} is NaN; solver cannot converge.")
+        return y
+
+    xpre, xcur = xa, xb
+    fpre, fcur = fx(xpre), fx(xcur)
+    if fpre == 0:
+        return xpre
+    if fcur == 0:
+        return xcur
+    if signs and math.copysign(1.0, fpre) == math.copysign(1.0, fcur):
+        raise ValueError("f(a) and f(b) must have different signs")
+    xblk = fblk = spre = scur = 0.0
+    for _ in range(maxiter):
+        if fpre != 0 and fcur != 0 and (math.copysign(1.0, fpre) != math.copysign(1.0, fcur)):
+            xblk, fblk = xpre, fpre
+            spre = scur = xcur - xpre
+        if abs(fblk) < abs(fcur):           # keep the best estimate in xcur
+            xpre, xcur, xblk = xcur, xblk, xcur
+            fpre, fcur, fblk = fcur, fblk, fcur
+        delta = (xtol + rtol * abs(xcur)) / 2
+        sbis = (xblk - xcur) / 2
+        if fcur == 0 or abs(sbis) < delta:
+            return xcur
+        stry = math.nan                     # no interpolation: bisect
+        if abs(spre) > delta and abs(fcur) < abs(fpre):
+            try:
+                if xpre == xblk:            # secant
+                    stry = -fcur * (xcur - xpre) / (fcur - fpre)
+                else:                       # inverse quadratic
+                    dpre = (fpre - fcur) / (xpre - xcur)
+                    dblk = (fblk - fcur) / (xblk - xcur)
+                    stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+            except ZeroDivisionError:       # C's ±inf or nan: the test below fails, so bisect
+                pass
+        if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta):
+            spre, scur = scur, stry         # a good short step
+        else:                               # bisect
+            spre = scur = sbis
+        xpre, fpre = xcur, fcur
+        xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
+        fcur = fx(xcur)
+    raise RuntimeError(f"Failed to converge after {maxiter} iterations, value is {xcur}")   # as brentq
+
+
+
+def root_in_bracket(g, x0: float, x1: float, g0: float | None = None, g1: float | None = None) -> float:
+    """Root of ``g`` in the bracket ``[x0, x1]`` to machine precision (:func:`brentq`; endpoint
+    values may be given to save calls).  Ends of one sign (a bracket up to rounding): the end
+    closer to zero.  A root many orders of magnitude below the bracket's width is approached by
+    bisection in the ordering of the doubles first."""
+    _brentq = brentq
+
+    if g0 is None:
+        g0 = g(x0)
+    if g0 == 0:
+        return x0
+    if g1 is None:
+        g1 = g(x1)
+    if g1 == 0:
+        return x1
+    if (g0 > 0) == (g1 > 0):
+        # the caller guarantees a bracket up to rounding: return the closer end
+        return x0 if abs(g0) <= abs(g1) else x1
+    try:
+        return float(_brentq(g, x0, x1, xtol=1e-300, rtol=RTOL, maxiter=200))
+    except RuntimeError:
+        pass
+    # Brent's bisection steps halve the bracket arithmetically: a root many
+    # orders of magnitude smaller than the bracket (a root near 0 in [0, h])
+    # needs ~log2(h/root) of them and exhausts maxiter.  Bisect the bracket in
+    # the ordering of the doubles themselves (≤ 64 steps to adjacent doubles)
+    # until its ends are within a factor 4 of each other, then polish.
+    a, b, ga = float(x0), float(x1), g0
+    if a > b:
+        a, b, ga = b, a, g1
+    for _ in range(130):
+        if a > 0 and b <= 4 * a or b < 0 and a >= 4 * b:
+            break
+        m = _float_mid(a, b)
+        if m in (a, b):
+            return a if abs(ga) <= abs(g(b)) else b
+        gm = g(m)
+        if gm == 0:
+            return m
+        if (gm > 0) == (ga > 0):
+            a, ga = m, gm
+        else:
+            b = m
+    try:
+        return float(_brentq(g, a, b, xtol=1e-300, rtol=RTOL, maxiter=200))
+    except RuntimeError as exc:
+        from dyncli.errors import NumericalError
+
+        raise NumericalError(f"the root finder did not converge in the bracket [{a!r}, {b!r}] ({exc}); "
+                             "the function is probably too noisy there: loosen accuracy.rtol or move the target") from None
+
+
+def _float_key(x: float) -> int:
+    (b,) = struct.unpack("<q", struct.pack("<d", x))
+    return b if b >= 0 else -(b & 0x7FFFFFFFFFFFFFFF)
+
+
+def _float_mid(a: float, b: float) -> float:
+    """The double halfway between ``a`` and ``b`` in the ordering of all doubles
+    (the geometric mean for same-sign ends; about ±1e-154 across zero)."""
+    k = (_float_key(a) + _float_key(b)) // 2
+    bits = k if k >= 0 else (-k) | 0x8000000000000000
+    return struct.unpack("<d", struct.pack("<Q", bits))[0]
+
+
+def roots_in_brackets(F, a, b, fa, fb, maxit: int = 200):
+    """Roots of ``F`` in many brackets ``[a_j, b_j]`` at once (sign change
+    from ``fa`` to ``fb``): the Illinois variant of regula falsi with a
+    bisection every third step (at least linear convergence, superlinear for
+    simple roots), to adjacent doubles.  ``F(x, k)`` evaluates the brackets
+    ``k`` at the points ``x`` in one vectorised call; one call per iteration
+    for all brackets replaces one scalar root search per bracket."""
+    import numpy as np
+
+    a = np.array(a, dtype=float)
+    b = np.array(b, dtype=float)
+    ga = np.array(fa, dtype=float)
+    gb = np.array(fb, dtype=float)
+    wa, wb = ga.copy(), gb.copy()          # Illinois weights
+    side = np.zeros(a.size, dtype=int)
+    root = np.where(np.abs(ga) <= np.abs(gb), a, b)
+    done = (ga == 0) | (gb == 0) | ((ga > 0) == (gb > 0))
+    root[ga == 0] = a[ga == 0]
+    root[(gb == 0) & (ga != 0)] = b[(gb == 0) & (ga != 0)]
+    for it in range(maxit):
+        mid = a + 0.5 * (b - a)
+        act = ~done & (mid != a) & (mid != b)
+        if not act.any():
+            break
+        k = np.nonzero(act)[0]
+        ak, bk = a[k], b[k]
+        with np.errstate(all="ignore"):
+            x = (ak * wb[k] - bk * wa[k]) / (wb[k] - wa[k])
+        lo, hi = np.minimum(ak, bk), np.maximum(ak, bk)
+        bis = (it % 3 == 2) | ~(x > lo) | ~(x < hi)
+        x = np.where(bis, mid[k], x)
+        fx = np.asarray(F(x, k), dtype=float)
+        fx = np.broadcast_to(fx, x.shape)
+        z = fx == 0
+        root[k[z]] = x[z]
+        done[k[z]] = True
+        same = ((fx > 0) == (ga[k] > 0)) & ~z
+        other = ~same & ~z
+        ks, ko = k[same], k[other]
+        # moved a: halve b's weight if a moved last time too (Illinois)
+        wb[ks] = np.where(side[ks] == 1, 0.5 * wb[ks], wb[ks])
+        a[ks], ga[ks], wa[ks], side[ks] = x[same], fx[same], fx[same], 1
+        wa[ko] = np.where(side[ko] == -1, 0.5 * wa[ko], wa[ko])
+        b[ko], gb[ko], wb[ko], side[ko] = x[other], fx[other], fx[other], -1
+    rest = ~done
+    root[rest] = np.where(np.abs(ga[rest]) <= np.abs(gb[rest]), a[rest], b[rest])
+    return root
+
+
+def minimize_bounded(f, lo: float, hi: float, xatol: float):
+    """The minimum of ``f`` on [lo, hi] by Brent's bounded method (scipy's
+    ``minimize_scalar(method="bounded")``, imported here only, lazily): (x, f(x))."""
+    from scipy.optimize import minimize_scalar
+
+    r = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
+    return float(r.x), r.fun

@@ -1,0 +1,190 @@
+"""The runner contract: the one module every integrating route of dyncli goes through for its
+numerics (docs/accuracy.md; issue #26).  A topic never imports ``scipy.integrate`` or
+``scipy.optimize`` itself (``tests/test_one_runner.py``): it states its problem through the
+hooks of :class:`Route` (or the functions below), and this module owns the policy.
+
+What lives here, once:
+
+* :data:`METHODS` / :func:`solver_class` — the one map from ``accuracy.method`` to scipy's
+  ``OdeSolver`` class (``auto``, ``ode``, ``exact`` and ``projected`` step with DOP853);
+* :data:`RTOL_FLOOR` / :func:`floor_rtol` — the one rtol floor (scipy's smallest rtol,
+  100 machine epsilons);
+* :func:`solve_ivp` and :func:`ode_solution` — scipy's driver and piecewise interpolant, with
+  every accepted step counted by the work budget (:class:`dyncli.ode.Budget`);
+* :class:`Route` — the contract of a route (below), whose :meth:`Route.estimate_error` is the
+  check-solve and fallback policy (:func:`dyncli.ode.check_solve`,
+  :func:`dyncli.ode.nominal_estimate`, :func:`dyncli.ode.tighter`).
+
+The stepping loop, the budget and the check-solve rule themselves are :mod:`dyncli.ode`'s; the
+quadrature is :mod:`dyncli.quadrature`'s, the bracketed root :mod:`dyncli.rootfind`'s.
+scipy is imported lazily, only when a problem actually integrates.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+from dyncli import ode
+
+#: scipy's integrators an ``accuracy.method`` may name
+METHODS = ("DOP853", "RK45", "Radau", "LSODA")
+#: the names of ``accuracy.method`` that are not scipy's, and the integrator that steps them
+ALIASES = {"auto": "DOP853", "ode": "DOP853", "exact": "DOP853", "projected": "DOP853"}
+#: the one rtol floor: scipy's smallest rtol (100 machine epsilons; the model refuses below 2.3e-14)
+RTOL_FLOOR = 100 * sys.float_info.epsilon * 1.0001
+
+
+def floor_rtol(rtol: float) -> float:
+    """``rtol`` no smaller than scipy allows (:data:`RTOL_FLOOR`)."""
+    return max(rtol, RTOL_FLOOR)
+
+
+def scipy_method(method: str) -> str:
+    """The scipy integrator (one of :data:`METHODS`) that steps ``accuracy.method``."""
+    name = ALIASES.get(method, method)
+    if name not in METHODS:
+        raise ValueError(f"unknown integrator {method!r}: one of {', '.join(METHODS + tuple(ALIASES))}")
+    return name
+
+
+def solver_class(method: str):
+    """The one method map: scipy's ``OdeSolver`` class for ``accuracy.method``."""
+    from scipy import integrate as si
+
+    return getattr(si, scipy_method(method))
+
+
+def solve_ivp(fun, t_span, y0, *, method: str, budget, check_finite: bool = True, stop_nonfinite: bool = False,
+              **kw):
+    """scipy's ``solve_ivp`` with the runner's solver class for ``method`` (:func:`dyncli.ode.budgeted`:
+    every accepted step counted by ``budget``; a non-finite rate raised, or with ``stop_nonfinite``
+    ending the run as failed; ``check_finite=False``: ``fun`` checks its own rates)."""
+    from scipy.integrate import solve_ivp as scipy_solve_ivp
+
+    cls = ode.budgeted(method, budget, stop_nonfinite=stop_nonfinite, check_finite=check_finite)
+    return scipy_solve_ivp(fun, t_span, y0, method=cls, **kw)
+
+
+def ode_solution(ts, interpolants):
+    """One interpolant over consecutive steps (scipy's ``OdeSolution``)."""
+    from scipy.integrate import OdeSolution
+
+    return OdeSolution(ts, interpolants)
+
+
+class Route:
+    """The contract of a numerical route (in the spirit of sympy.physics.mechanics' ``_Methods``):
+    a subclass states its problem through these hooks, and the runner owns the policy.
+
+    Problem hooks (a subclass overrides what its route needs):
+
+    * :meth:`initial_state` — y0, a sequence of floats;
+    * :meth:`rhs` — ``rhs(t, y)``, the rate as a list of plain floats or an array (plain floats
+      are 2-5 times faster on the small states of dyncli);
+    * :attr:`events` — event functions ``g(t, y)`` in scipy's convention (``terminal``,
+      ``direction`` attributes), empty by default;
+    * :meth:`solve` — one run at ``(rtol, atol)``: returns the route's output (default: the
+      state at :attr:`times` by :func:`dyncli.ode.integrate`, from :meth:`initial_state`);
+    * :meth:`reported` — the output's reported quantities, one array per quantity;
+    * :meth:`floors` — the scale floor of each reported quantity (None: none), for quantities
+      that may vanish throughout (docs/accuracy.md);
+    * :meth:`difference` — the error measure between the reported and the check run (default:
+      :func:`dyncli.ode.relative_difference` over :meth:`reported`, each quantity relative to
+      its own scale);
+    * :meth:`drifts` — the relative drifts of the route's invariants (for the nominal estimate);
+    * :meth:`steps` — accepted steps of a run (for the nominal estimate).
+
+    Policy (the runner's; a subclass does not override these):
+
+    * :attr:`method` through :func:`solver_class` (the one method map), :attr:`rtol` through
+      :func:`floor_rtol` (the one rtol floor), :attr:`max_steps` the work budget
+      (:class:`dyncli.ode.Budget`; None: the route's :attr:`default_steps`, else
+      ``ode.MAX_STEPS``);
+    * :meth:`run` — the reported run, then :meth:`estimate_error`: with ``estimate`` the check
+      solve at rtol/100 and its one fallback (:func:`dyncli.ode.check_solve`), else the nominal
+      estimate (:func:`dyncli.ode.nominal_estimate`).
+    """
+
+    events: tuple = ()
+    times: object = ()
+    default_steps: int | None = None
+    #: the error_estimate note of a check solve (``{how}``: rtol/100, or 10·rtol after the fallback)
+    note = "the largest difference of every reported quantity, each relative to its scale, from a check solve at {how}"
+
+    def __init__(self, *, method: str = "DOP853", rtol: float = 1e-10, atol: float = 1e-12,
+                 max_steps: int | None = None, estimate: bool = False):
+        self.method = scipy_method(method)
+        self.rtol, self.atol = floor_rtol(float(rtol)), float(atol)
+        self.max_steps, self.estimate = max_steps, bool(estimate)
+        self.nsteps = 0
+
+    # -- problem hooks --------------------------------------------------------------------------
+
+    def initial_state(self):
+        raise NotImplementedError
+
+    def rhs(self, t, y):
+        raise NotImplementedError
+
+    def budget(self, probe: int = ode.PROBE_STEPS):
+        """A fresh work budget for one solve."""
+        return ode.Budget(self.max_steps, default=self.default_steps, probe=probe)
+
+    def solve(self, rtol: float, atol: float):
+        """One run at (rtol, atol); default: the state at :attr:`times` (rows)."""
+        Y, self.nsteps = ode.integrate(self.rhs, self.initial_state(), self.times, method=self.method, rtol=rtol,
+                                       atol=atol, max_steps=self.max_steps or self.default_steps)
+        return Y
+
+    def reported(self, out):
+        """The reported quantities of a run's output, one array each (default: the state's columns)."""
+        return [out[:, j] for j in range(out.shape[1])]
+
+    def floors(self):
+        return None
+
+    def difference(self, out, check) -> float:
+        return ode.relative_difference(list(zip(self.reported(out), self.reported(check))), self.floors())
+
+    def drifts(self, out):
+        return ()
+
+    def steps(self, out) -> int:
+        return self.nsteps
+
+    # -- the policy -----------------------------------------------------------------------------
+
+    def run(self, res):
+        """The reported run and its error_estimate (on ``res``); returns the run's output."""
+        out = self.solve(self.rtol, self.atol)
+        self.estimate_error(res, out)
+        return out
+
+    def estimate_error(self, res, out):
+        """The error_estimate of ``out`` (docs/accuracy.md): the check solve and its one fallback
+        with ``estimate``, else the nominal bound.  Returns the check run's output or None."""
+        return estimate_error(res, out, estimate=self.estimate, rtol=self.rtol, atol=self.atol,
+                              rerun=self.solve, difference=self.difference, note=self.note,
+                              drifts=self.drifts(out), steps=self.steps(out))
+
+
+def estimate_error(res, out, *, estimate: bool, rtol: float, atol: float, rerun, difference, note=None,
+                   drifts=(), steps: int = 1):
+    """The check-solve and fallback policy of docs/accuracy.md as a function (what
+    :meth:`Route.estimate_error` runs, for the routes not yet written as a :class:`Route`):
+    with ``estimate``, ``rerun(rtol2, atol2)`` at rtol/100 (over the budget: once at 10·rtol,
+    with a warning; any other failure: a null estimate and a warning) and
+    ``res.error_estimate = difference(out, check)``; without, :func:`dyncli.ode.nominal_estimate`
+    from ``drifts`` and ``steps``.  Returns the check run's output or None."""
+    if not estimate:
+        ode.nominal_estimate(res, rtol, *drifts, steps=steps)
+        return None
+    check = ode.check_solve(res, rerun, rtol, atol)
+    if check is None:
+        return None
+    est = difference(out, check[0])
+    res.error_estimate = float(est) if est is not None and math.isfinite(est) else est
+    if note:
+        res.extra["error_estimate_note"] = note.format(how="rtol/100" if check[1] == "tighter" else "10·rtol")
+    return check[0]
