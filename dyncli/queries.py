@@ -328,37 +328,11 @@ def _hr_psi(hr: Callable[[float], float], t: float) -> float:
 
 def _root(f: Callable[[float], float], xa: float, xb: float, xtol: float = 1e-300, rtol: float = 4 * _EPS,
           maxiter: int = 2000) -> float:
-    """The root of f bracketed by [xa, xb] to full double accuracy (4 eps relative in t) by Brent's
-    method (bisection guarding inverse quadratic / secant steps), the operations of scipy's
-    ``brentq``: converged when the bracket half-width is below (xtol + rtol|x|)/2."""
-    # TODO: one Brent (dyncli/rootfind.py, issue #26)
-    xpre, xcur, fpre, fcur = xa, xb, f(xa), f(xb)
-    if fpre == 0 or fcur == 0:
-        return xpre if fpre == 0 else xcur
-    xblk = fblk = spre = scur = 0.0
-    for _ in range(maxiter):
-        if fpre != 0 and fcur != 0 and (math.copysign(1.0, fpre) != math.copysign(1.0, fcur)):
-            xblk, fblk, spre, scur = xpre, fpre, xcur - xpre, xcur - xpre
-        if abs(fblk) < abs(fcur):
-            xpre, xcur, xblk, fpre, fcur, fblk = xcur, xblk, xcur, fcur, fblk, fcur
-        delta, sbis = (xtol + rtol * abs(xcur)) / 2, (xblk - xcur) / 2
-        if fcur == 0 or abs(sbis) < delta:
-            return xcur
-        stry = math.nan
-        if abs(spre) > delta and abs(fcur) < abs(fpre):
-            try:
-                if xpre == xblk:                      # secant
-                    stry = -fcur * (xcur - xpre) / (fcur - fpre)
-                else:                                 # inverse quadratic
-                    dpre, dblk = (fpre - fcur) / (xpre - xcur), (fblk - fcur) / (xblk - xcur)
-                    stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
-            except ZeroDivisionError:
-                pass
-        spre, scur = (scur, stry) if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta) else (sbis, sbis)
-        xpre, fpre = xcur, fcur
-        xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
-        fcur = f(xcur)
-    return xcur
+    """The root of f bracketed by [xa, xb] to full double accuracy (4 eps relative in t): the
+    project's one Brent (:func:`dyncli.rootfind.brent`)."""
+    from dyncli.rootfind import brent
+
+    return brent(f, xa, xb, xtol, rtol, maxiter)
 
 
 def _peak(h, hr, a: float, b: float) -> tuple[float, float]:

@@ -21,7 +21,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from dyncli import ode
-from dyncli.topics.top.rootfind import brent  # TODO: one Brent (dyncli/rootfind.py, issue #26)
+from dyncli import runner
+from dyncli.rootfind import brent
 
 from .elements import Contact
 
@@ -136,11 +137,9 @@ class OdeRoute:
             t, y = self._phase(t, y, t_end, budget, traj, rtol, atol)
 
     def _phase(self, t0, y0, t_end, budget, traj, rtol, atol):
-        from scipy import integrate as si
-
         s, n = self.system, self.n
-        cls = {"DOP853": si.DOP853, "RK45": si.RK45, "Radau": si.Radau, "LSODA": si.LSODA}[self.method]
-        solver = cls(ode.finite(self.rhs), t0, y0.copy(), t_end, rtol=rtol, atol=atol)
+        cls = runner.solver_class(self.method)
+        solver = cls(ode.finite(self.rhs), t0, y0.copy(), t_end, rtol=runner.floor_rtol(rtol), atol=atol)
         budget.leg(t0, t_end)
         modes = modes_of(s)
         w_old = watches(s, y0[:n], y0[n:2 * n], t0)

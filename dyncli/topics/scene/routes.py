@@ -194,7 +194,7 @@ def _closed_form(scene: Scene, traj, t_end):
 def _one_sided_events(s, traj) -> None:
     """Contact forces and tensions along a closed-form motion: a sign change is located
     (each piece scanned at 64 points, then Brent) and stops the motion there."""
-    from dyncli.topics.top.rootfind import brent
+    from dyncli.rootfind import brent
 
     for p in list(traj.pieces):
         if p.t_b <= p.t_a:
