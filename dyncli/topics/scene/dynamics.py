@@ -195,9 +195,10 @@ class SceneSystem:
         if self.m == 0:
             return q
         Winv = 1.0 / self.weights()
+        tol = 8 * EPS * max(1.0, float(np.max(np.abs(q))))
         for _ in range(iters):
             ph = self.phi(q, t)
-            if not np.any(ph):
+            if float(np.max(np.abs(ph))) <= tol:      # on the joints to rounding: Newton has converged
                 break
             J = self.jac(q)
             S = (J * Winv) @ J.T

@@ -13,6 +13,7 @@ from . import report
 class SceneMotion:
     def __init__(self, traj, inst):
         self.traj, self.inst = traj, inst
+        self._coords = _coordinate_paths(traj.system)
         self.t0 = traj.t0
         self.t_end = traj.stopped if traj.stopped is not None else traj.t_end
         self.breaks = [t for t in traj.breaks if t <= self.t_end] or [self.t0, self.t_end]
@@ -35,6 +36,11 @@ class SceneMotion:
         return self._paths
 
     def value(self, path: str, t: float) -> float:
+        fast = self._coords.get(path)
+        if fast is not None:            # a body's coordinate or rate: the state alone, no solve
+            q, v, _ = self.traj.state(float(t))
+            which, k = fast
+            return float((q if which == "q" else v)[k]) + 0.0
         flat = self._flat(float(t))
         if path not in flat:
             raise KeyError(path)
@@ -42,6 +48,9 @@ class SceneMotion:
 
     def rate(self, path: str, t: float):
         head, _, rest = path.partition(".")
+        if head in ("x", "angle") and path in self._coords:
+            _, v, _ = self.traj.state(float(t))
+            return float(v[self._coords[path][1]])
         d = {"x": "v", "v": "a", "angle": "omega"}.get(head)
         if d is None:
             return None
@@ -49,6 +58,20 @@ class SceneMotion:
         if head == "angle":
             return flat.get(f"omega.{rest}.2")
         return flat.get(f"{d}.{rest}")
+
+
+def _coordinate_paths(system) -> dict:
+    """Dotted paths that read the state directly: x.B.i, v.B.i, angle.B, omega.B.2."""
+    out = {}
+    for b in system.bodies:
+        i = b.index
+        for c in (0, 1):
+            out[f"x.{b.name}.{c}"] = ("q", i[c])
+            out[f"v.{b.name}.{c}"] = ("v", i[c])
+        if b.rigid:
+            out[f"angle.{b.name}"] = ("q", i[2])
+            out[f"omega.{b.name}.2"] = ("v", i[2])
+    return out
 
 
 def answer(raw, scene, traj, inst, params, times, warn=None) -> list[dict]:
