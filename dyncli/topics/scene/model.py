@@ -19,6 +19,11 @@ from dyncli.topics.particle.model import check_times
 
 TIME = ("t",)
 
+
+def _at(base: str, field: str | None) -> str:
+    """The full path of a field inside one entry (``joints.motor`` + ``value``)."""
+    return f"{base}.{field}" if field else base
+
 #: a point: "BODY", "BODY.POINT", or [x1, x2] on the ground
 PointRef = Union[str, list[Num(dim="length")]]  # type: ignore[valid-type]
 
@@ -32,18 +37,16 @@ class Surface(StrictModel):
     length: Optional[Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")] = None  # type: ignore[valid-type]
     curve: Optional[Any] = Field(None, description="curved surfaces: not in the first release (refused)")
 
-    @model_validator(mode="after")
-    def _check(self):
+    def check(self, base: str) -> None:
         if self.curve is not None:
             raise InputError("curved surfaces have no syntax in this release: use a straight surface, or the "
-                             "constrained-particle type for a particle on a curve", "curve")
+                             "constrained-particle type for a particle on a curve", _at(base, "curve"))
         if len(self.through) != 2:
-            raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", "through")
+            raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", _at(base, "through"))
         if len(self.direction) != 2:
-            raise InputError(f"expected [d1, d2], got {len(self.direction)} numbers", "direction")
+            raise InputError(f"expected [d1, d2], got {len(self.direction)} numbers", _at(base, "direction"))
         if self.direction[0] == 0 and self.direction[1] == 0:
-            raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", "direction")
-        return self
+            raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", _at(base, "direction"))
 
 
 SHAPES = ("point", "rod", "disk", "ring", "box")
@@ -65,32 +68,31 @@ class Body(StrictModel):
     omega: Optional[Num(dim="angular_velocity", description="angular velocity at t = 0 [rad/s] (default rest, or what the drives and joints impose)")] = None  # type: ignore[valid-type]
     points: dict[str, list[Num(dim="length")]] = Field(default_factory=dict, description="named points [p1, p2] on e'1, e'2 [m]")  # type: ignore[valid-type]
 
-    @model_validator(mode="after")
-    def _check(self):
+    def check(self, base: str) -> None:
         if self.shape is None and self.I is None:
             raise InputError("give shape (point, rod, disk, ring, box) or I (the moment of inertia about the "
-                             "centre)", "shape")
+                             "centre)", _at(base, "shape"))
         need = {"rod": "length", "disk": "radius", "ring": "radius", "box": "size"}.get(self.shape or "")
         if need and getattr(self, need) is None:
-            raise InputError(f"a {self.shape} needs {need}", need)
+            raise InputError(f"a {self.shape} needs {need}", _at(base, need))
         if self.size is not None and len(self.size) != 2:
-            raise InputError("expected [a, b]", "size")
+            raise InputError("expected [a, b]", _at(base, "size"))
         for name in ("x", "v"):
             val = getattr(self, name)
             if val is not None and len(val) != 2:
-                raise InputError(f"expected [{name}1, {name}2] (a planar vector), got {len(val)} numbers", name)
+                raise InputError(f"expected [{name}1, {name}2] (a planar vector), got {len(val)} numbers", _at(base, name))
         for k, p in self.points.items():
             if len(p) != 2:
-                raise InputError(f"expected [p1, p2], got {len(p)} numbers", f"points.{k}")
+                raise InputError(f"expected [p1, p2], got {len(p)} numbers", _at(base, f"points.{k}"))
         if self.shape == "point":
             for name in ("length", "radius", "size", "I"):
                 if getattr(self, name) is not None:
-                    raise InputError(f"a point body has no {name}", name)
+                    raise InputError(f"a point body has no {name}", _at(base, name))
             if self.points:
-                raise InputError("a point body has no named points (it is one point)", "points")
+                raise InputError("a point body has no named points (it is one point)", _at(base, "points"))
             if self.omega is not None or self.angle is not None:
-                raise InputError("a point body has no angle or angular velocity", "omega" if self.omega is not None else "angle")
-        return self
+                raise InputError("a point body has no angle or angular velocity (give the body a shape to turn it)",
+                                 _at(base, "omega" if self.omega is not None else "angle"))
 
 
 class FixedPulley(StrictModel):
@@ -99,11 +101,9 @@ class FixedPulley(StrictModel):
     pulley: list[Num(dim="length")] = Field(description="[x1, x2]: its centre [m]")  # type: ignore[valid-type]
     radius: Num(ge=0, dim="length", description="its radius [m] (default 0)") = 0.0  # type: ignore[valid-type]
 
-    @model_validator(mode="after")
-    def _check(self):
+    def check(self, base: str) -> None:
         if len(self.pulley) != 2:
-            raise InputError(f"expected [x1, x2], got {len(self.pulley)} numbers", "pulley")
-        return self
+            raise InputError(f"expected [x1, x2], got {len(self.pulley)} numbers", _at(base, "pulley"))
 
 
 class Wound(StrictModel):
@@ -141,29 +141,31 @@ class Joint(StrictModel):
     def kind(self) -> str:
         return next(k for k in self.KINDS if getattr(self, k) is not None)
 
-    @model_validator(mode="after")
-    def _check(self):
+    def check(self, base: str) -> None:
         given = [k for k in self.KINDS if getattr(self, k) is not None]
         if len(given) != 1:
             raise InputError("a joint is exactly one of " + ", ".join(self.KINDS)
-                             + (f" (got {', '.join(given)})" if given else ""))
+                             + (f" (got {', '.join(given)})" if given else ": add one, e.g. pin: [BODY, ground]"), base)
         kind = given[0]
         allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k"}, "rolls": {"at", "mu_s"},
                    "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
         for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
             if getattr(self, extra) is not None and extra not in allowed:
-                raise InputError(f"a {kind} joint takes no {extra}", extra)
+                raise InputError(f"a {kind} joint takes no {extra}", _at(base, extra))
         if kind == "drive" and self.value is None:
-            raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", "value")
+            raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", _at(base, "value"))
         if kind == "contact" and self.mu is not None and (self.mu_s is not None or self.mu_k is not None):
-            raise InputError("give mu, or mu_s and mu_k, not both", "mu")
+            raise InputError("give mu, or mu_s and mu_k, not both", _at(base, "mu"))
         two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2}.get(kind)
         if two and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
-                             kind)
+                             _at(base, kind))
+        if kind == "cord":
+            for i, it in enumerate(self.cord):
+                if isinstance(it, FixedPulley):
+                    it.check(_at(base, f"cord.{i}"))
         if kind == "cord" and len(self.cord) < 2:
-            raise InputError("a cord needs two ends: [END, PULLEY..., END]", "cord")
-        return self
+            raise InputError("a cord needs two ends: [END, PULLEY..., END]", _at(base, "cord"))
 
 
 class Force(StrictModel):
@@ -188,25 +190,23 @@ class Force(StrictModel):
     def kind(self) -> str:
         return next(k for k in self.KINDS if getattr(self, k) is not None)
 
-    @model_validator(mode="after")
-    def _check(self):
+    def check(self, base: str) -> None:
         given = [k for k in self.KINDS if getattr(self, k) is not None]
         if len(given) != 1:
             raise InputError("a force entry is exactly one of spring, damper, force, torque"
-                             + (f" (got {', '.join(given)})" if given else ""))
+                             + (f" (got {', '.join(given)})" if given else ": add one, e.g. force: BODY"), base)
         kind = given[0]
         need = {"spring": ("k", "L"), "damper": ("c",), "force": ("F",), "torque": ("M",)}[kind]
         for n in need:
             if getattr(self, n) is None:
-                raise InputError(f"a {kind} needs {n}", n)
+                raise InputError(f"a {kind} needs {n}", _at(base, n))
         for extra in ("k", "L", "one_sided", "c", "F", "M"):
             if getattr(self, extra) is not None and extra not in need and not (kind == "spring" and extra == "one_sided"):
-                raise InputError(f"a {kind} takes no {extra}", extra)
+                raise InputError(f"a {kind} takes no {extra}", _at(base, extra))
         if kind in ("spring", "damper") and len(getattr(self, kind)) != 2:
-            raise InputError(f"a {kind} joins exactly two points: [P, Q]", kind)
+            raise InputError(f"a {kind} joins exactly two points: [P, Q]", _at(base, kind))
         if kind == "force" and len(self.F) != 2:
-            raise InputError("expected [F1, F2] (a planar force)", "F")
-        return self
+            raise InputError("expected [F1, F2] (a planar force)", _at(base, "F"))
 
 
 class Scene(ProblemBase):
@@ -233,6 +233,10 @@ class Scene(ProblemBase):
             raise InputError("'ground' is reserved for the fixed frame: name the body otherwise", "bodies.ground")
         if not self.bodies:
             raise InputError("a scene needs at least one body", "bodies")
+        for group, entries in (("surfaces", self.surfaces), ("bodies", self.bodies), ("joints", self.joints),
+                               ("forces", dict(enumerate(self.forces)))):
+            for name, entry in entries.items():
+                entry.check(f"{group}.{name}")
         if self.t_end is None and not self.at:
             self.at = [0.0]
         check_times(self)

@@ -18,15 +18,14 @@ from .prepare import Scene
 
 # ----------------------------------------------------------------------------- results
 
-def results(scene: Scene, traj, route: str, times: list[float], find_raw, params, acc) -> Result:
+def instants_of(scene: Scene, traj, route: str):
+    """inst(t): every result at one instant of the solved motion (the forces from the route's
+    own solve: the kinematics' J λ balance, the closed form's motion along its one direction)."""
     s = scene.system
-    t_stop = traj.stopped
-    E1 = None
 
     def state_at(t):
         q, v, W = traj.state(t)
-        fixed = getattr(traj, "fixed", None)
-        solved = fixed if fixed is not None else None
+        solved = getattr(traj, "fixed", None)
         if route == "kinematics":
             a, lam = _kin_forces(s, q, v, t)
             solved = (a, lam, 0.0)
@@ -36,7 +35,7 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
             solved = (N * a[i], lam, P)           # the motion is along N: no rounding across it
         return q, v, W, solved
 
-    q0, v0, _, solved0 = state_at(0.0)
+    q0, v0, _, _ = state_at(0.0)
     E1 = s.kinetic(v0) + s.potential(q0)
     W_of = _work(scene, traj, route)
 
@@ -44,43 +43,49 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
         q, v, W, solved = state_at(t)
         return report.instant(s, q, v, W_of(t, W), t, E1, solved=solved)
 
+    return inst
+
+
+def results(scene: Scene, traj, route: str, times: list[float], find_raw, params, acc) -> Result:
+    t_stop = traj.stopped
+    inst = instants_of(scene, traj, route)
     instants = [None if (t_stop is not None and t > t_stop) else inst(t) for t in times]
     res = Result({"dof": scene.dof, "coordinates": scene.coords, "route": route, "t": list(times)})
     res.results.update(report.collect(instants))
-    events = []
-    for ev in traj.events:
-        st = inst(ev.t)
-        events.append({"t": ev.t, "joint": ev.joint, "what": ev.what, "state": st})
-    res.results["events"] = events
+    res.results["events"] = [{"t": ev.t, "joint": ev.joint, "what": ev.what, "state": inst(ev.t)}
+                             for ev in traj.events]
     res.results["integrals"] = _integrals(scene, traj, times, instants)
     for w in scene.warnings:
         res.warn(w)
-    if t_stop is not None:
-        later = [t for t in times if t > t_stop]
+    later = [t for t in times if t_stop is not None and t > t_stop]
+    if later:
         ev = traj.events[-1]
-        if later:
-            res.warn(f"the motion stops at t = {t_stop:.10g} s where {ev.joint!r} {ev.what}: the results at the later "
-                     f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
-                     "event)")
+        res.warn(f"the motion stops at t = {t_stop:.10g} s where {ev.joint!r} {ev.what}: the results at the later "
+                 f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
+                 "event)")
     if find_raw:
         from . import queries
 
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
     res.method = getattr(traj, "method", route)
     _estimate(res, scene, route, acc, traj)
+    _present(res, scene, traj, inst, times)
+    return res
+
+
+def _present(res, scene, traj, inst, times) -> None:
+    """The tables, the plots' data, the equations."""
     from . import views
 
     t_last = traj.stopped if traj.stopped is not None else traj.t_end
     res.extra["scene_t_end"] = t_last
     res.extra["scene_sample"] = lambda t: inst(min(float(t), t_last))
     res.extra["scene_draw"] = _drawing(scene)
-
     res.views.extend(views.views(res))
     res.covered.extend(views.COVERED)
     res.equations = ["16.7", "29.5", "32.15", "34.20"]
     res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
                                                  if k in res.results], index_result="t"))
-    return res
 
 
 def _drawing(scene) -> dict:
@@ -138,18 +143,33 @@ def _work(scene, traj, route):
             return P + s.applied(q, v, float(t))[1]
         return s.solve(q, v, float(t))[2]
 
+    from dyncli.quadrature import gauss_kronrod
+
+    done: dict[int, float] = {}         # ∫ of the power over whole pieces, computed once each
+
+    def piece(k: int, b: float) -> float:
+        p = traj.pieces[k]
+        if b <= p.t_a:
+            return 0.0
+        mid = 0.5 * (p.t_a + b)
+        q, v, _ = traj.state(mid)
+        # each piece to the rounding of the energies it moves (an exact motion: only the
+        # quadrature's own error is left, well below the energy residual it is checked by)
+        scale = abs(power(mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
+        return gauss_kronrod(lambda x: np.array([power(xx) for xx in x]), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+
     def W(t, _W):
         if route == "statics" or t == 0:
             return 0.0
-        from dyncli.quadrature import gauss_kronrod
-
         total = 0.0
-        for p in traj.pieces:
-            a, b = p.t_a, min(p.t_b, t)
-            if b <= a:
-                continue
-            I, _, _ = gauss_kronrod(lambda x: np.array([power(xx) for xx in x]), a, b, 1e-13, 1e-300)
-            total += I
+        for k, p in enumerate(traj.pieces):
+            if p.t_b <= t:
+                if k not in done:
+                    done[k] = piece(k, p.t_b)
+                total += done[k]
+            else:
+                total += piece(k, t)
+                break
         return total
 
     return W

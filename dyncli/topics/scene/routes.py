@@ -79,7 +79,7 @@ def _statics(scene: Scene, traj):
 
 def _kinematics(scene: Scene, traj, acc):
     s = scene.system
-    grid = np.linspace(0.0, traj.t_end, 65) if traj.t_end > 0 else np.array([0.0])
+    grid = _drive_grid(s, traj.t_end)
     qs = [scene.q0]
     for t in grid[1:]:
         qs.append(_position(s, qs[-1], t))
@@ -96,6 +96,23 @@ def _kinematics(scene: Scene, traj, acc):
         traj.add(motion.Piece(0.0, 0.0, lambda t: _kin_state(s, scene.q0, t), motion.modes_of(s)))
     traj.method = "kinematics"
     return traj
+
+
+def _drive_grid(s, t_end: float) -> np.ndarray:
+    """Times at which the positions are continued from one to the next: at least 64 pieces, and
+    so many that no drive moves more than 0.05 rad (an angle) or 2 % of the scene's size (a
+    coordinate) within one (Newton from the piece's start then stays on the branch)."""
+    if not t_end > 0:
+        return np.array([0.0])
+    fine = np.linspace(0.0, t_end, 1025)
+    size = max(assembly.length_scale(np.zeros(1), s), 1e-300)
+    pieces = 64
+    for e in s.elements:
+        if e.kind == "drive":
+            vals = np.array([e.f(t)[0] for t in fine])
+            step = 0.05 if s.names[e.index].startswith("angle.") else 0.02 * size
+            pieces = max(pieces, int(np.sum(np.abs(np.diff(vals))) / step) + 1)
+    return np.linspace(0.0, t_end, min(pieces, 20_000) + 1)
 
 
 def _position(s, q, t, depth: int = 0):

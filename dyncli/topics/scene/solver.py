@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from dyncli import ode
+from dyncli.errors import InputError
 from dyncli.expr import resolve_params
 from dyncli.expr.jet import jet_at
 from dyncli.result import Result, SolveOptions
@@ -55,6 +56,21 @@ def _plan(p) -> build.Plan:
     return build.Plan(bodies, surfaces, joints, loads, float(p.g))
 
 
+def _search_end(t_end: float, find, params) -> float:
+    """The motion runs to t_end, extended to a `find` query's `within` window when that ends
+    later (§11); a malformed window is left to the queries' own validation."""
+    from dyncli.expr import constant
+
+    for q in find or []:
+        w = q.get("within") if isinstance(q, dict) else None
+        if isinstance(w, (list, tuple)) and len(w) == 2:
+            try:
+                t_end = max(t_end, float(constant(w[1], params)))
+            except (InputError, ValueError, TypeError):     # reported by dyncli.queries with its field path
+                pass
+    return t_end
+
+
 @dataclass(frozen=True)
 class Accuracy:
     rtol: float
@@ -69,10 +85,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     times = [float(t) for t in p.at]
     a = p.accuracy
     acc = Accuracy(float(a.rtol), float(a.atol), a.method, bool(a.estimate), a.max_steps)
-    t_end = float(p.t_end)
+    params = resolve_params(p.params)
+    t_end = _search_end(float(p.t_end), p.find, params)
     scene = prepare.setup(plan)
     traj, route = routes.run(scene, t_end, acc)
-    res = outcome.results(scene, traj, route, times, p.find, resolve_params(p.params), acc)
+    res = outcome.results(scene, traj, route, times, p.find, params, acc)
     if route == "ode" and acc.estimate:
         _check_solve(res, plan, t_end, times, acc)
     return res

@@ -89,9 +89,9 @@ def _coords(state) -> list:
 
 
 def _fmt(v) -> str:
-    from dyncli.render.table import fmt_value
-
-    return fmt_value(v, 6)
+    if isinstance(v, list):
+        return "[" + ", ".join(_fmt(x) for x in v) + "]"
+    return f"{v + 0.0:.6g}"
 
 
 def _events(r) -> Table:

@@ -20,7 +20,7 @@ Nothing here imports dyncli.  Every reference is derived a second way, by hand o
   dT/dt + dV/dt).
 
 Each scene's function returns a mapping dotted result path -> expected value (mpf), in the
-contract's shapes (problem-files.md §10, §11): ``angle.bar.1``, ``reaction.pivot.R.0.1``,
+result shapes of docs/types/scene.md: ``angle.bar.1``, ``reaction.pivot.R.0.1``,
 ``find.0.t``, ``find.0.x.A.1``.
 """
 
@@ -217,8 +217,12 @@ def put(out, prefix, value):
 
 
 def family(path):
-    """The quantity a path belongs to (its numeric parts removed): its scale is shared."""
-    return ".".join(p for p in path.split(".") if not re.fullmatch(r"\d+", p))
+    """The quantity a path belongs to (its numeric parts and a leading `find` removed): the values
+    at the requested times and at the find answers share one scale."""
+    parts = [p for p in path.split(".") if not re.fullmatch(r"\d+", p)]
+    if parts[0] == "find" and parts[1:] != ["t"]:
+        parts = parts[1:]
+    return ".".join(parts)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -271,7 +275,7 @@ def compound_pendulum_case(m, L, th0, at, g=G, upright=False):
             u = mp.ellipf(mp.asin(mp.sin(mp.pi / 4) / k), k**2)
             times = [(K - u) / wn, K / wn]
         else:
-            times = [K / wn, 2 * K / wn, 3 * K / wn]         # T/4, T/2 (lowest angle), 3T/4
+            times = [K / wn, 2 * K / wn, 3 * K / wn, 4 * K / wn]   # T/4, T/2 (lowest), 3T/4, T (highest)
         for j, t in enumerate(times):
             s = compound_pendulum_state(m, L, th0, g, t)
             out[f"find.{j}.t"] = t
@@ -371,6 +375,7 @@ def falling_rod_case(m, L, b0, at, find_angle, g=G, route="ode"):
             out[f"{prefix}V{sfx}"] = s["V"]
 
         for i, t in enumerate(at):
+            t = mpf(t)
             if route == "ode":
                 b, bd = integrate(f, 0, [b0, 0], t)
             else:                                              # invert the quadrature
@@ -538,7 +543,7 @@ def cart_pendulum_state(M, m, l, k, L0, xw, y0, hook, g, f, y):
 
 
 def cart_pendulum_case(M, m, l, k, L0, xw, x0, y0, hook, p0, at, t_end, g=G):
-    """at-times, and find.0: the cart's first turning point {min: x.cart.1}."""
+    """at-times, and find.0: the cart's first turning point {min: x.cart.0} (the lowest x1)."""
     with mp.workdps(30):
         M, m, l, k, L0, xw, x0, y0, g = (mpf(v) for v in (M, m, l, k, L0, xw, x0, y0, g))
         hook = (mpf(hook[0]), mpf(hook[1]))
@@ -579,12 +584,12 @@ def slider_crank_kinematics(r, l, w, t):
     rod = A + ls / 2 * sp.Matrix([sp.cos(phi), sp.sin(phi)])
     subs = {rs: r, ls: l, ws: w}
     ev = {}
-    for name, expr in (("crank", crank), ("rod", rod), ("slider", sp.Matrix([xB, 0]))):
+    for name, expr in (("crank", crank), ("conrod", rod), ("slider", sp.Matrix([xB, 0]))):
         for d, key in ((0, "x"), (1, "v"), (2, "a")):
             e = expr.diff(ts, d) if d else expr
             fn = sp.lambdify([ts], e.subs(subs), modules="mpmath")
             ev[f"{key}.{name}"] = [mpf(c) for c in fn(t)]
-    for name, ang in (("crank", th), ("rod", phi), ("slider", sp.Integer(0))):
+    for name, ang in (("crank", th), ("conrod", phi), ("slider", sp.Integer(0))):
         for d, key in ((0, "angle"), (1, "omega"), (2, "alpha")):
             e = ang.diff(ts, d) if d else ang
             ev[f"{key}.{name}"] = mpf(sp.lambdify([ts], e.subs(subs), modules="mpmath")(t))
@@ -596,7 +601,7 @@ def slider_crank_forces(r, l, w, m1, m2, m3, size, t, g, kin=None):
     kin = kin or slider_crank_kinematics(r, l, w, t)
     bodies = {
         "crank": {"m": m1, "I": m1 * r**2 / 12},
-        "rod": {"m": m2, "I": m2 * l**2 / 12},
+        "conrod": {"m": m2, "I": m2 * l**2 / 12},
         "slider": {"m": m3, "I": m3 * (size[0] ** 2 + size[1] ** 2) / 12},
     }
     for nm, b in bodies.items():
@@ -605,8 +610,8 @@ def slider_crank_forces(r, l, w, m1, m2, m3, size, t, g, kin=None):
     A = (r * mp.cos(th), r * mp.sin(th))
     B = tuple(kin["x.slider"][:2])
     unknowns = (pin_unknowns("main", "crank", "ground", (0, 0))
-                + pin_unknowns("crankpin", "rod", "crank", A)
-                + pin_unknowns("wrist", "rod", "slider", B)
+                + pin_unknowns("crankpin", "conrod", "crank", A)
+                + pin_unknowns("wrist", "conrod", "slider", B)
                 + [("guide.N", [("slider", B, (0, 1), 0)]),
                    ("guide.M", [("slider", B, (0, 0), 1)]),
                    ("motor", [("crank", (0, 0), (0, 0), 1)])])
@@ -628,7 +633,7 @@ def slider_crank_case(r, l, w, m1, m2, m3, size, at, find_angle, g=G):
         def store(t, sfx, prefix=""):
             kin = slider_crank_kinematics(r, l, w, t)
             F = slider_crank_forces(r, l, w, m1, m2, m3, size, t, g, kin)
-            for nm in ("crank", "rod", "slider"):
+            for nm in ("crank", "conrod", "slider"):
                 for key in ("x", "v", "a"):
                     put(out, f"{prefix}{key}.{nm}{sfx}", vec(*kin[f"{key}.{nm}"][:2]))
                 out[f"{prefix}angle.{nm}{sfx}"] = kin[f"angle.{nm}"]
@@ -672,8 +677,9 @@ def four_bar_rates(a, b, c, th, w2, al2=0):
     Amat = mp.matrix([[-b * mp.sin(th3), c * mp.sin(th4)], [b * mp.cos(th3), -c * mp.cos(th4)]])
     rhs = mp.matrix([a * w2 * mp.sin(th2), -a * w2 * mp.cos(th2)])
     w3, w4 = mp.lu_solve(Amat, rhs)
-    rhs2 = mp.matrix([a * al2 * mp.sin(th2) + a * w2**2 * mp.cos(th2) + b * w3**2 * mp.cos(th3) - c * w4**2 * mp.cos(th4),
-                      -a * al2 * mp.cos(th2) + a * w2**2 * mp.sin(th2) + b * w3**2 * mp.sin(th3) - c * w4**2 * mp.sin(th4)])
+    cen = a * w2**2 * mp.cos(th2) + b * w3**2 * mp.cos(th3) - c * w4**2 * mp.cos(th4)
+    sen = a * w2**2 * mp.sin(th2) + b * w3**2 * mp.sin(th3) - c * w4**2 * mp.sin(th4)
+    rhs2 = mp.matrix([a * al2 * mp.sin(th2) + cen, -a * al2 * mp.cos(th2) + sen])
     a3, a4 = mp.lu_solve(Amat, rhs2)
     return (w3, w4), (a3, a4)
 

@@ -1,0 +1,529 @@
+"""Every refusal of a scene (docs/types/scene.md, "Refusals"), each as a small YAML scene.
+
+A refusal is exit 2 with ONE line ``file:line:col: FIELD.PATH: message`` that names the field and
+says how to fix it — never a traceback, never exit 3.  ``error_of`` runs the loader and the
+solver in-process and returns that line; a few cases go through the command line
+(``dyncli solve FILE``) to pin the exit code and the absence of a traceback on stderr.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+from tests.conftest import error_of, run_cli
+
+LOCATION = re.compile(r"^bad\.yaml:(\d+):(\d+): (\S+): (.+)$")
+
+
+def refusal(text: str, field: str, *needles: str) -> str:
+    """The one-line diagnostic of ``text``; it must be located, name ``field`` (a dotted path,
+    matched as a prefix of the diagnostic's path) and contain every needle (case-insensitive)."""
+    msg = error_of(text)
+    assert "Traceback" not in msg, msg
+    assert "\n" not in msg.strip(), f"more than one line:\n{msg}"
+    m = LOCATION.match(msg.strip())
+    assert m, f"not 'bad.yaml:line:col: field: message': {msg!r}"
+    path = m.group(3)
+    assert path == field or path.startswith(field + "."), f"field {path!r} is not {field!r}: {msg!r}"
+    low = msg.lower()
+    for n in needles:
+        assert n.lower() in low, f"{n!r} not in {msg!r}"
+    assert "nan" not in re.findall(r"[a-z]+", low), msg
+    return msg
+
+
+def cli_refusal(tmp_path, text: str, field: str, *needles: str) -> str:
+    """The same through ``dyncli solve FILE``: exit 2, no traceback, the diagnostic on one line."""
+    f = tmp_path / "bad.yaml"
+    f.write_text(text)
+    code, out, err = run_cli("solve", str(f))
+    both = out + err
+    assert "Traceback" not in both, both
+    assert code == 2, f"exit {code}:\n{both}"
+    lines = [ln for ln in both.splitlines() if re.search(r"bad\.yaml:\d+:\d+: ", ln)]
+    assert len(lines) == 1, f"expected one located line:\n{both}"
+    line = lines[0]
+    assert re.search(r"bad\.yaml:\d+:\d+: " + re.escape(field) + r"[.:]", line), f"{field!r} not named: {line!r}"
+    for n in needles:
+        assert n.lower() in line.lower(), f"{n!r} not in {line!r}"
+    return line
+
+
+# --- names ---------------------------------------------------------------------------------------
+
+PENDULUM = """\
+type: scene
+bodies:
+  rod: {{shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}}
+joints:
+  p: {{pin: [{P}, ground]}}
+at: [0, 1]
+"""
+
+
+def test_unknown_body_did_you_mean():
+    msg = refusal(PENDULUM.format(P="rdo.end1"), "joints.p.pin.0", "rdo", "did you mean", "rod")
+    assert msg.startswith("bad.yaml:5:")
+
+
+def test_unknown_body_through_cli(tmp_path):
+    cli_refusal(tmp_path, PENDULUM.format(P="rdo.end1"), "joints.p.pin.0", "did you mean 'rod'")
+
+
+def test_unknown_point_did_you_mean():
+    refusal(PENDULUM.format(P="rod.edn1"), "joints.p.pin.0", "edn1", "did you mean", "end1")
+
+
+def test_unknown_surface_did_you_mean():
+    text = """\
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  c: {contact: [A, flor]}
+at: [0, 1]
+"""
+    refusal(text, "joints.c.contact.1", "flor", "did you mean", "floor")
+
+
+def test_unknown_force_point_did_you_mean():
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+forces:
+  - {spring: [B, [0, 1]], k: 10, L: 1}
+at: [0, 1]
+"""
+    refusal(text, "forces.0.spring.0", "'B'", "bodies: A")
+
+
+def test_ground_is_reserved():
+    text = """\
+type: scene
+bodies:
+  ground: {shape: point, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    refusal(text, "bodies.ground", "reserved", "name the body otherwise")
+
+
+def test_ground_is_reserved_through_cli(tmp_path):
+    text = """\
+type: scene
+bodies:
+  ground: {shape: point, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "bodies.ground", "reserved")
+
+
+# --- joints: shape of the entries ------------------------------------------------------------------
+
+def test_joint_with_two_kinds():
+    text = """\
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  j: {pin: [A, ground], slider: [A, floor]}
+at: [0, 1]
+"""
+    refusal(text, "joints.j", "exactly one of", "pin", "slider")
+
+
+def test_joint_of_no_kind():
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  j: {length: 1}
+at: [0, 1]
+"""
+    refusal(text, "joints.j", "exactly one of", "pin", "drive")
+
+
+def test_drive_without_value():
+    text = """\
+type: scene
+bodies:
+  crank: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  axle: {pin: [crank.end1, ground]}
+  motor: {drive: crank.angle}
+at: [0, 1]
+"""
+    refusal(text, "joints.motor", "drive needs value", "expression in t")
+
+
+def test_drive_without_value_through_cli(tmp_path):
+    text = """\
+type: scene
+bodies:
+  crank: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  axle: {pin: [crank.end1, ground]}
+  motor: {drive: crank.angle}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "joints.motor", "value")
+
+
+def test_drive_of_unknown_coordinate():
+    text = """\
+type: scene
+bodies:
+  crank: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  axle: {pin: [crank.end1, ground]}
+  motor: {drive: crank.angel, value: "2*t"}
+at: [0, 1]
+"""
+    refusal(text, "joints.motor.drive", "crank.angle", "did you mean")
+
+
+def test_drive_of_unknown_body():
+    text = """\
+type: scene
+bodies:
+  crank: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  axle: {pin: [crank.end1, ground]}
+  motor: {drive: crnak.angle, value: "2*t"}
+at: [0, 1]
+"""
+    refusal(text, "joints.motor.drive", "crnak", "did you mean", "crank")
+
+
+# --- bodies -----------------------------------------------------------------------------------------
+
+def test_rod_without_length():
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, x: [0, 0], angle: 0}
+at: [0, 1]
+"""
+    refusal(text, "bodies.rod", "rod needs length")
+
+
+def test_disk_without_radius():
+    text = """\
+type: scene
+bodies:
+  wheel: {shape: disk, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    refusal(text, "bodies.wheel", "disk needs radius")
+
+
+def test_point_body_with_angle():
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0], angle: 0.3}
+at: [0, 1]
+"""
+    refusal(text, "bodies.A.angle", "point body has no angle")
+
+
+def test_point_body_with_omega():
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0], omega: 2}
+at: [0, 1]
+"""
+    refusal(text, "bodies.A.omega", "point body has no angle or angular velocity")
+
+
+# --- assembly and degrees of freedom ------------------------------------------------------------------
+
+def test_given_position_violates_a_pin_gap_named():
+    # the rod's end1 is at [0.3, 0]; the pin wants it at [0, 0]: a gap of 0.3 m
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, length: 1, x: [0.8, 0], angle: 0}
+joints:
+  p: {pin: [rod.end1, [0, 0]]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.p", "violate", "gap", "0.3")
+    assert "pin" in msg
+
+
+def test_given_position_violates_a_link_gap_named():
+    # A and B are 2 m apart, the link says 1 m: a gap of 1 m
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+  B: {shape: point, mass: 1, x: [2, 0]}
+joints:
+  p: {pin: [A, ground]}
+  l: {link: [A, B], length: 1}
+at: [0, 1]
+"""
+    refusal(text, "joints.l", "violate", "gap", "1")
+
+
+def test_redundant_pins_named():
+    # a 1 m rod pinned at both ends to ground points 1 m apart: 4 rows of rank 3 on 3
+    # coordinates; either pin could go (the horizontal reactions are not unique)
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  left: {pin: [rod.end1, [0, 0]]}
+  right: {pin: [rod.end2, [1, 0]]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints", "redundant", "left", "right")
+    assert "not unique" in msg.lower() or "could go" in msg.lower(), msg
+
+
+def test_redundant_pins_through_cli(tmp_path):
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  left: {pin: [rod.end1, [0, 0]]}
+  right: {pin: [rod.end2, [1, 0]]}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "joints", "redundant")
+
+
+def test_redundant_slider_and_pin():
+    # a point on a horizontal track AND pinned to the ground: the track's row repeats the pin's
+    # vertical row; only the slider could go without changing the motion (without the pin the
+    # point would slide), so the slider is the joint named
+    text = """\
+type: scene
+surfaces:
+  track: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  p: {pin: [A, [0, 0]]}
+  s: {slider: [A, track]}
+at: [0, 1]
+"""
+    refusal(text, "joints.s", "redundant joints: s", "not be unique")
+
+
+# --- one-sided joints at t = 0 --------------------------------------------------------------------
+
+def test_contact_that_would_pull():
+    # a ceiling (direction [-1, 0]: n = -e2, bodies below it) with a 2 kg block under it:
+    # it could hold the block only by pulling, N = -m g = -19.62 N
+    text = """\
+type: scene
+surfaces:
+  ceiling: {through: [0, 0], direction: [-1, 0]}
+bodies:
+  A: {shape: point, mass: 2, x: [0, 0]}
+joints:
+  c: {contact: [A, ceiling]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.c", "pull", "N = ")
+    m = re.search(r"N = (-?[0-9.eE+-]+)", msg.replace("−", "-"))
+    assert m and math.isclose(float(m.group(1)), -19.62, rel_tol=1e-5), msg
+
+
+def test_contact_that_would_pull_lifted_by_a_force():
+    # a 1 kg block on the floor lifted by 20 N: N = 9.81 - 20 = -10.19 N
+    text = """\
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  c: {contact: [A, floor], mu: 0.5}
+forces:
+  - {force: A, F: [0, 20]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.c", "pull", "N = ")
+    m = re.search(r"N = (-?[0-9.eE+-]+)", msg.replace("−", "-"))
+    assert m and math.isclose(float(m.group(1)), -10.19, rel_tol=1e-5), msg
+
+
+def test_contact_that_would_pull_through_cli(tmp_path):
+    text = """\
+type: scene
+surfaces:
+  ceiling: {through: [0, 0], direction: [-1, 0]}
+bodies:
+  A: {shape: point, mass: 2, x: [0, 0]}
+joints:
+  c: {contact: [A, ceiling]}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "joints.c", "pull")
+
+
+def test_cord_that_would_push():
+    # a 1 kg mass hanging 1 m under a ground point, pushed up by 20 N: T = 9.81 - 20 = -10.19 N
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, -1]}
+joints:
+  rope: {cord: [[0, 0], A]}
+forces:
+  - {force: A, F: [0, 20]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.rope", "push", "T = ")
+    m = re.search(r"T = (-?[0-9.eE+-]+)", msg.replace("−", "-"))
+    assert m and math.isclose(float(m.group(1)), -10.19, rel_tol=1e-5), msg
+
+
+def test_rolling_that_would_slip_at_start():
+    # a uniform disk on a 30° incline needs |F| = m g sin β / 3 = 1.635 N (m = 1) of friction;
+    # mu_s = 0.1 gives only mu_s m g cos β = 0.8496 N: it slips at once
+    text = """\
+type: scene
+surfaces:
+  slope: {through: [0, 0], direction: ["cos(30*deg)", "-sin(30*deg)"]}
+bodies:
+  wheel: {shape: disk, mass: 1, radius: 0.2}
+joints:
+  r: {rolls: [wheel, slope], at: 0, mu_s: 0.1}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.r", "slip", "mu_s")
+    assert "1.635" in msg and "0.849" in msg, msg
+
+
+# --- refused features ---------------------------------------------------------------------------------
+
+def test_curved_surface_refused_names_constrained_particle():
+    text = """\
+type: scene
+surfaces:
+  bowl: {through: [0, 0], direction: [1, 0], curve: "x2 = x1^2"}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  c: {contact: [A, bowl]}
+at: [0, 1]
+"""
+    refusal(text, "surfaces.bowl", "curved", "constrained-particle")
+
+
+def test_curved_surface_refused_through_cli(tmp_path):
+    text = """\
+type: scene
+surfaces:
+  bowl: {through: [0, 0], direction: [1, 0], curve: "x2 = x1^2"}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "surfaces.bowl", "constrained-particle")
+
+
+def test_motion_out_of_plane_refused_names_types():
+    text = """\
+type: scene
+motion: spatial
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    refusal(text, "motion", "out of the plane", "top", "euler", "gyroscope")
+
+
+def test_out_of_plane_velocity_refused():
+    # a third component is motion out of the e1-e2 plane
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0], v: [0, 0, 1]}
+at: [0, 1]
+"""
+    refusal(text, "bodies.A.v", "planar")
+
+
+# --- cords ----------------------------------------------------------------------------------------------
+
+def test_cord_hanging_mass_without_position_or_length():
+    text = """\
+type: scene
+bodies:
+  pulley: {shape: disk, mass: 1, radius: 0.1, x: [0, 0]}
+  A: {shape: point, mass: 3, x: [-0.1, -1]}
+  B: {shape: point, mass: 2}
+joints:
+  axle: {pin: [pulley, ground]}
+  rope: {cord: [A, pulley, B]}
+at: [0, 1]
+"""
+    msg = refusal(text, "joints.rope", "'B'", "length")
+    assert "x" in msg
+
+
+def test_cord_hanging_mass_without_position_through_cli(tmp_path):
+    text = """\
+type: scene
+bodies:
+  pulley: {shape: disk, mass: 1, radius: 0.1, x: [0, 0]}
+  A: {shape: point, mass: 3, x: [-0.1, -1]}
+  B: {shape: point, mass: 2}
+joints:
+  axle: {pin: [pulley, ground]}
+  rope: {cord: [A, pulley, B]}
+at: [0, 1]
+"""
+    cli_refusal(tmp_path, text, "joints.rope", "length")
+
+
+# --- massless bodies ----------------------------------------------------------------------------------
+
+MASSLESS_FREE = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 0, x: [0, 0]}
+at: [0, 1]
+"""
+
+MASSLESS_ON_SPRING = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, -1]}
+  B: {shape: point, mass: 0, x: [0, -2]}
+joints:
+  p: {pin: [A, ground]}
+forces:
+  - {spring: [A, B], k: 10, L: 1}
+at: [0, 1]
+"""
+
+
+@pytest.mark.parametrize("text", [MASSLESS_FREE, MASSLESS_ON_SPRING], ids=["alone", "on-a-spring"])
+def test_massless_free_body_clear_message(tmp_path, text):
+    """A massless point on nothing has no equation of motion: exit 2 (refused) or 1 (cannot be
+    solved), with one clear line naming the body — never a traceback, exit 3 or a nan."""
+    f = tmp_path / "bad.yaml"
+    f.write_text(text)
+    code, out, err = run_cli("solve", str(f), "--format", "json")
+    both = out + err
+    assert "Traceback" not in both, both
+    assert code in (1, 2), f"exit {code}:\n{both}"
+    assert not re.search(r"\bnan\b", both, re.I), both
+    assert "massless" in both.lower(), both
