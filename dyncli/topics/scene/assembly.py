@@ -22,7 +22,7 @@ def length_scale(q, system) -> float:
     s = float(np.max(np.abs(q))) if q.size else 0.0
     for b in system.bodies:
         s = max(s, b.length, b.radius, *b.size)
-    return max(s, 1.0)
+    return s if s > 0 else 1.0
 
 
 def assemble(system, q, free, t: float = 0.0, iters: int = 60) -> np.ndarray:

@@ -265,11 +265,16 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
         seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u,
                          float(u @ (Tb - Ta)))
         run.append(seg)
-        for nd, other in ((nodes[i], Tb), (nodes[i + 1], Ta)):
+        for nd in (nodes[i], nodes[i + 1]):
+            guided = None
             if nd[0] == "point" and nd[1].body is not None and not nd[1].body.rigid:
+                guided = nd[1]                  # a hanging mass moves along its segment
+            elif nd[0] == "wound":
+                guided = Point(nd[1][0].name, nd[1][0], (0.0, 0.0))   # a yo-yo's centre likewise
+            if guided is not None:
                 w = perp(u)
-                guides.append(el.Guide(f"{name}:guide", "guide", len(q), path, P=nd[1], w=w,
-                                       c0=float(w @ nd[1].pos(q))))
+                guides.append(el.Guide(f"{name}:guide", "guide", len(q), path, P=guided, w=w,
+                                       c0=float(w @ guided.pos(q))))
         if nodes[i + 1][0] == "disk":
             runs.append(run)
             run = []

@@ -222,7 +222,7 @@ class Scene(ProblemBase):
     find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}")
     motion: Optional[Any] = Field(None, description="out-of-plane motion is refused (use top, euler, gyroscope)")
 
-    accuracy_methods = ("auto", "closed-form", "ode", "DOP853", "RK45", "Radau", "LSODA")
+    accuracy_methods = ("auto", "closed-form", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
     @model_validator(mode="after")
     def _check(self):

@@ -112,6 +112,10 @@ def _estimate(res, scene, route, acc, traj) -> None:
     s = scene.system
     if route == "ode":
         ode.nominal_estimate(res, acc.rtol, steps=traj.steps)
+    elif route == "quadrature":
+        res.error_estimate = float(traj.energy.error_estimate)
+        res.extra["error_estimate_note"] = ("the energy quadrature's own estimate (dyncli.energy_route: the "
+                                            "quadratures' error sums and the turning points' uncertainty)")
     elif route in ("statics", "kinematics"):
         J = s.jac(scene.q0)
         cond = float(np.linalg.cond(J)) if J.size else 1.0
@@ -134,6 +138,8 @@ def _work(scene, traj, route):
     if route == "ode":
         return lambda t, W: W
     s = scene.system
+    if route == "quadrature" and not any(ld.kind in ("force", "torque") for ld in s.loads):
+        return lambda t, W: 0.0         # every load has its potential in V: no non-conservative work
 
     def power(t):
         q, v, _ = traj.state(float(t))

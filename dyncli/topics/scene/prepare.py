@@ -65,8 +65,9 @@ def setup(plan: build.Plan) -> Scene:
                         f"{names[k]} = {theirs:.6g}); give that coordinate in the file to choose")
     red = assembly.redundant(system, q)
     if red:
-        raise InputError(f"redundant joints: {', '.join(red)} — any one of them could go without changing the motion, "
-                         "so the joint forces would not be unique; remove one", f"joints.{red[0]}")
+        raise InputError(f"redundant joints: {', '.join(red)} — their rows are dependent (one of them removes a "
+                         "freedom the others already remove), so the joint forces are not unique (statically indeterminate); remove one of them",
+                         f"joints.{red[0]}")
     v_in = v.copy()
     v, changed = assembly.project_velocity(system, q, v)
     moved = [k for k in range(n) if vgiven[k] and abs(v[k] - v_in[k]) > 1e-12 * max(abs(v_in[k]), abs(v[k]), 1e-300)]
@@ -74,6 +75,7 @@ def setup(plan: build.Plan) -> Scene:
         warnings.append("the initial velocities given violate the joints and were projected (mass-weighted) onto "
                         "them: " + ", ".join(f"{_rate_name(names[k])} = {v[k]:.6g}" for k in range(n)
                                              if vgiven[k] or abs(v[k]) > 0))
+    _refuse_massless(system, q, plan)
     _initial_modes(system, q, v)
     J = system.jac(q)
     dof = n - assembly.rank(J)
@@ -158,6 +160,28 @@ def _tangent(end, u, q):
     if end.centre is not None:
         return end.centre.pos(q)
     return end.fixed
+
+
+def _refuse_massless(system, q, plan) -> None:
+    """A body without mass (or inertia) whose coordinate no joint holds has no equation of
+    motion: refused naming it."""
+    zero = [k for k in range(system.n) if system.mass[k] == 0]
+    if not zero:
+        return
+    J = system.jac(q)
+    if J.size:
+        _, sv, Vt = np.linalg.svd(J)
+        r = int(np.sum(sv > sv[0] * 1e-10)) if sv.size and sv[0] > 0 else 0
+        null = Vt[r:]
+    else:
+        null = np.eye(system.n)
+    for k in zero:
+        if null.size and float(np.max(np.abs(null[:, k]))) > 1e-9:
+            body = next(b for b in system.bodies if k in b.index)
+            what = "I" if body.rigid and k == body.index[-1] and body.mass > 0 else "mass"
+            raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
+                             f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
+                             "the joints carry it", f"bodies.{body.name}.{what}")
 
 
 def _initial_modes(system, q, v) -> None:

@@ -36,14 +36,25 @@ def run(scene: Scene, t_end: float, acc):
         if drives:
             return _kinematics(scene, traj, acc), "kinematics"
         return _statics(scene, traj), "statics"
-    forced = acc.method not in ("auto", "closed-form")
-    if not forced:
+    if acc.method in ("auto", "closed-form"):
         cf = _closed_form(scene, traj, t_end)
         if cf is not None:
             return cf, "closed-form"
         if acc.method == "closed-form":
-            raise InputError("no closed form: " + (scene.warnings[-1] if scene.warnings else "the scene is not "
-                             "affine"), "accuracy.method")
+            raise InputError("this scene has no closed form (it needs one degree of freedom, joints whose rows are "
+                             "affine in the positions and loads affine along the motion): use method auto",
+                             "accuracy.method")
+    if acc.method == "quadrature":      # on request only in this release: its cost is seconds (docs)
+        from . import energy
+
+        why = energy.applies(s, "auto") if scene.dof == 1 else "the scene has more than one degree of freedom"
+        if why is None:
+            energy.run(scene, traj, t_end, acc)
+            _one_sided_events(s, traj)
+            return traj, "quadrature"
+        if acc.method == "quadrature":
+            raise InputError(f"the quadrature route needs one degree of freedom and an energy integral: {why}; use "
+                             "method auto", "accuracy.method")
     method = "DOP853" if acc.method in ("auto", "ode") else acc.method
     route = motion.OdeRoute(s, acc, method)
     budget = ode.Budget(acc.max_steps)
@@ -116,14 +127,15 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
 
 
 def _position(s, q, t, depth: int = 0):
-    """Newton on φ(q, t) = 0 from q (halving the step in t when it does not converge)."""
+    """Newton on φ(q, t) = 0 from q, until the correction is at the rounding of the positions."""
     q = q.copy()
+    scale = assembly.length_scale(q, s)
     for _ in range(30):
         ph = s.phi(q, t)
-        if float(np.max(np.abs(ph), initial=0.0)) <= 1e-14 * assembly.length_scale(q, s):
+        dq = np.linalg.solve(s.jac(q), ph)
+        q = q - dq
+        if float(np.max(np.abs(dq))) <= 4 * EPS * scale:
             return q
-        J = s.jac(q)
-        q = q - np.linalg.solve(J, ph)
     raise NumericalError(f"the mechanism cannot be placed at t = {t:.6g} s: the drive takes it past a position where "
                          "the joints lock (a toggle position)")
 

@@ -320,7 +320,7 @@ joints:
   s: {slider: [A, track]}
 at: [0, 1]
 """
-    refusal(text, "joints.s", "redundant joints: s", "not be unique")
+    refusal(text, "joints.s", "redundant joints: s", "not unique")
 
 
 # --- one-sided joints at t = 0 --------------------------------------------------------------------
