@@ -20,11 +20,12 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import statistics
 import sys
-import time
 import warnings
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from runner_cost import interleaved  # noqa: E402  the benchmarks' one timing loop
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -84,18 +85,6 @@ def dyncli_solver(rtol, estimate):
     return fn(lp.model, SolveOptions()), lambda: fn(lp.model, SolveOptions())
 
 
-def timed(fns, repeats):
-    for f in fns:
-        f()
-    ts = [[] for _ in fns]
-    for _ in range(repeats):
-        for i, f in enumerate(fns):
-            t0 = time.process_time()
-            f()
-            ts[i].append(time.process_time() - t0)
-    return [statistics.median(t) for t in ts]
-
-
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--rtols", type=float, nargs="+", default=[1e-6, 1e-10])
@@ -119,7 +108,7 @@ def main() -> None:
         if got is None:
             print(f"{rtol:6.0e}  scipy never reaches {err:.1e}")
             continue
-        t_d, t_c, t_s = timed([plain, with_check, lambda: script(got[0], got[0] * 1e-3)], args.repeats)
+        t_d, t_c, t_s = interleaved([plain, with_check, lambda: script(got[0], got[0] * 1e-3)], args.repeats)
         print(f"{rtol:6.0e} {t_d * 1e3:9.2f} {err:8.1e} {res.error_estimate:8.1e} {(t_c - t_d) * 1e3:8.2f} | "
               f"{got[0]:10.1e} {t_s * 1e3:6.2f} {got[1]:8.1e} | {t_d / t_s:5.2f}")
 

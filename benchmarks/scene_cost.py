@@ -37,13 +37,15 @@ import argparse
 import inspect
 import math
 import os
-import statistics
 import subprocess
 import sys
 import tempfile
 import time
 import warnings
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from runner_cost import interleaved  # noqa: E402  the benchmarks' one timing loop
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -241,18 +243,6 @@ def error(got: dict, ref: dict, offset: dict) -> float:
             if g is not None:
                 err = max(err, max(abs(gc - offset[b][k] - rc) for k, (gc, rc) in enumerate(zip(g, r))))
     return err / scale
-
-
-def interleaved(fns, repeats: int) -> list[float]:
-    for f in fns:
-        f()
-    ts: list[list[float]] = [[] for _ in fns]
-    for _ in range(repeats):
-        for i, f in enumerate(fns):
-            t0 = time.process_time()
-            f()
-            ts[i].append(time.process_time() - t0)
-    return [statistics.median(t) for t in ts]
 
 
 def load_line() -> str:

@@ -219,11 +219,9 @@ def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
 
 # ---------------------------------------------------------------------------- cords
 
-def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> tuple[el.Cord, list[el.Guide]]:
-    """A cord with the directions of its segments at the assembled positions of t = 0."""
-    path = f"joints.{name}.cord"
-    items = spec["cord"]
-    nodes = []          # (kind, data, label) with kind in point, disk, pulley, wound
+def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
+    """The cord's entries resolved: (kind, data, field path), kind point, disk, pulley, wound."""
+    nodes = []
     for i, it in enumerate(items):
         p = f"{path}.{i}"
         end = i in (0, len(items) - 1)
@@ -254,6 +252,13 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
             if not end:
                 raise InputError("the cord's inner entries are pulleys: a disk body or {pulley: [x1, x2], radius: r}", p)
             nodes.append(("point", R.point(it, p), p))
+    return nodes
+
+
+def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> tuple[el.Cord, list[el.Guide]]:
+    """A cord with the directions of its segments at the assembled positions of t = 0."""
+    path = f"joints.{name}.cord"
+    nodes = _cord_nodes(path, spec["cord"], R)
     centres = [_centre(nd, q) for nd in nodes]
     rho = _sides(nodes, centres)
     runs, run, guides = [], [], []

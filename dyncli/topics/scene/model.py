@@ -117,7 +117,24 @@ class Wound(StrictModel):
 CordEntry = Union[FixedPulley, Wound, str, list[Num(dim="length")]]  # type: ignore[valid-type]
 
 
-class Joint(StrictModel):
+class _OneOf(StrictModel):
+    """An entry that is exactly one of ``KINDS`` (a joint, a load)."""
+
+    KINDS: ClassVar[tuple[str, ...]] = ()
+
+    @property
+    def kind(self) -> str:
+        return next(k for k in self.KINDS if getattr(self, k) is not None)
+
+    def _one(self, base: str, what: str, example: str) -> str:
+        given = [k for k in self.KINDS if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise InputError(f"{what} is exactly one of " + ", ".join(self.KINDS)
+                             + (f" (got {', '.join(given)})" if given else f": add one, e.g. {example}"), base)
+        return given[0]
+
+
+class Joint(_OneOf):
     """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive."""
 
     pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
@@ -137,16 +154,8 @@ class Joint(StrictModel):
 
     KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive")
 
-    @property
-    def kind(self) -> str:
-        return next(k for k in self.KINDS if getattr(self, k) is not None)
-
     def check(self, base: str) -> None:
-        given = [k for k in self.KINDS if getattr(self, k) is not None]
-        if len(given) != 1:
-            raise InputError("a joint is exactly one of " + ", ".join(self.KINDS)
-                             + (f" (got {', '.join(given)})" if given else ": add one, e.g. pin: [BODY, ground]"), base)
-        kind = given[0]
+        kind = self._one(base, "a joint", "pin: [BODY, ground]")
         allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k"}, "rolls": {"at", "mu_s"},
                    "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
         for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
@@ -168,7 +177,7 @@ class Joint(StrictModel):
             raise InputError("a cord needs two ends: [END, PULLEY..., END]", _at(base, "cord"))
 
 
-class Force(StrictModel):
+class Force(_OneOf):
     """One applied element: exactly one of spring, damper, force, torque."""
 
     spring: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear spring (tension positive)")
@@ -186,16 +195,8 @@ class Force(StrictModel):
 
     KINDS: ClassVar[tuple[str, ...]] = ("spring", "damper", "force", "torque")
 
-    @property
-    def kind(self) -> str:
-        return next(k for k in self.KINDS if getattr(self, k) is not None)
-
     def check(self, base: str) -> None:
-        given = [k for k in self.KINDS if getattr(self, k) is not None]
-        if len(given) != 1:
-            raise InputError("a force entry is exactly one of spring, damper, force, torque"
-                             + (f" (got {', '.join(given)})" if given else ": add one, e.g. force: BODY"), base)
-        kind = given[0]
+        kind = self._one(base, "a force entry", "force: BODY")
         need = {"spring": ("k", "L"), "damper": ("c",), "force": ("F",), "torque": ("M",)}[kind]
         for n in need:
             if getattr(self, n) is None:

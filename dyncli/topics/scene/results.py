@@ -44,7 +44,7 @@ SCENE = TypeSpec(
           kind="list", contract=True),
         R("events", "", "", "", "one-sided joints: {t, joint, what, state}, what = separates, slack, slips, sticks, "
           "leaves", kind="list", contract=True),
-        R("integrals", "", "", "34.20, 36.10, 36.11", "first integrals that hold: {name, value, drift, equation}",
+        R("integrals", "", "", "34.20, 36.10", "first integrals that hold: {name, value, drift, equation}",
           kind="list", contract=True),
         R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state}",
           kind="list", contract=True),

@@ -7,6 +7,8 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 * ``kinematics``: no degree of freedom with drives: positions by Newton on φ(q, t) = 0 from the
   previous time, J q̇ = −φ_t, J q̈ = γ, and the forces from M q̈ − f = Jᵀ λ;
 * ``closed-form``: one DOF, rows affine in q and loads affine along the motion (motion.py);
+* ``quadrature`` (``accuracy.method: quadrature`` only, in this release: it costs seconds):
+  one DOF with an energy integral (energy.py);
 * ``ode``: otherwise.
 """
 

@@ -3,7 +3,7 @@
 1. the model becomes plain data (:class:`build.Plan`), then bodies, points and joint rows;
 2. assembly places the positions left out; the degrees of freedom come from the rank of J;
 3. the route, the cheapest exact one: ``statics`` or ``kinematics`` (0 DOF), ``closed-form``
-   (one DOF, affine), ``ode`` (otherwise);
+   (one DOF, affine), ``ode`` (otherwise; ``quadrature`` on request);
 4. one-sided joints are watched on every route; the first stopping event ends the motion;
 5. results at the requested times, the events with their state, the ``find`` queries.
 """
