@@ -43,16 +43,22 @@ class Point:
         if self.body is None:
             return np.array(self.p, dtype=float)
         i = self.body.index
-        r = np.array([q[i[0]], q[i[1]]], dtype=float)
+        x1, x2 = float(q[i[0]]), float(q[i[1]])
         if self.body.rigid and (self.p[0] or self.p[1]):
-            r = r + rot(q[i[2]]) @ np.array(self.p)
-        return r
+            a1, a2 = self._arm(float(q[i[2]]))
+            return np.array((x1 + a1, x2 + a2))
+        return np.array((x1, x2))
+
+    def _arm(self, th: float) -> tuple[float, float]:
+        c, s = math.cos(th), math.sin(th)
+        p1, p2 = self.p
+        return c * p1 - s * p2, s * p1 + c * p2
 
     def arm(self, q) -> np.ndarray:
         """Q(θ) p: the point's offset from its body's centre on the fixed basis."""
         if self.body is None or not self.body.rigid:
             return np.zeros(2)
-        return rot(q[self.body.index[2]]) @ np.array(self.p)
+        return np.array(self._arm(float(q[self.body.index[2]])))
 
     def jac(self, q, n: int) -> np.ndarray:
         """∂r/∂q, 2 × n."""
@@ -61,27 +67,30 @@ class Point:
             return J
         i = self.body.index
         J[0, i[0]] = J[1, i[1]] = 1.0
-        if self.body.rigid:
-            a = self.arm(q)
-            J[0, i[2]], J[1, i[2]] = -a[1], a[0]          # e3 × Q p
+        if self.body.rigid and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            J[0, i[2]], J[1, i[2]] = -a2, a1          # e3 × Q p
         return J
 
     def vel(self, q, v) -> np.ndarray:
         if self.body is None:
             return np.zeros(2)
         i = self.body.index
-        out = np.array([v[i[0]], v[i[1]]], dtype=float)
-        if self.body.rigid:
-            a, w = self.arm(q), v[i[2]]
-            out += w * np.array([-a[1], a[0]])
-        return out
+        v1, v2 = float(v[i[0]]), float(v[i[1]])
+        if self.body.rigid and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            w = float(v[i[2]])
+            return np.array((v1 - w * a2, v2 + w * a1))
+        return np.array((v1, v2))
 
     def bias(self, q, v) -> np.ndarray:
         """J̇ v: the part of the acceleration not linear in q̈ (−ω² Q p, 14.8)."""
-        if self.body is None or not self.body.rigid:
+        if self.body is None or not self.body.rigid or not (self.p[0] or self.p[1]):
             return np.zeros(2)
-        w = v[self.body.index[2]]
-        return -w * w * self.arm(q)
+        i = self.body.index
+        w = float(v[i[2]])
+        a1, a2 = self._arm(float(q[i[2]]))
+        return np.array((-w * w * a1, -w * w * a2))
 
     @property
     def moves(self) -> bool:
