@@ -129,7 +129,7 @@ def independent(J: np.ndarray, n: int) -> list[int]:
         e = np.zeros((1, n))
         e[0, i] = 1.0
         trial = np.vstack([rows, e])
-        if rank(trial) > rows.shape[0] - (J.shape[0] - r0) if False else rank(trial) > rank(rows):
+        if rank(trial) > rank(rows):
             rows, chosen = trial, chosen + [i]
     return sorted(chosen)
 

@@ -71,7 +71,14 @@ class Trajectory:
         i = min(bisect.bisect_left(ends, t), len(self.pieces) - 1)
         p = self.pieces[i]
         set_modes(self.system, p.modes)
-        return p.fn(min(max(t, p.t_a), p.t_b))
+        memo = self.__dict__.setdefault("_memo", {})
+        got = memo.get(t)
+        if got is None:                 # a time asked again (a value and its rate, a table row)
+            got = p.fn(min(max(t, p.t_a), p.t_b))
+            if len(memo) > 50_000:
+                memo.clear()
+            memo[t] = got
+        return got
 
 
 def modes_of(system) -> tuple:
@@ -177,7 +184,7 @@ class OdeRoute:
 
             def g(t, k=k):
                 y = dense(t)
-                return watches(s, y[:n], y[n:2 * n], t)[k][2] - (0.0 if what != "switch" else 0.0)
+                return watches(s, y[:n], y[n:2 * n], t)[k][2]
 
             tc = t_new if g1 == 0 else brent(g, t_old, t_new, 4 * EPS * max(abs(t_new), 1e-300), 4 * EPS, 200)
             if best is None or tc < best[0]:
@@ -269,8 +276,6 @@ def closed_form_reason(system, N: np.ndarray, q0) -> str | None:
             return f"the {e.kind} {e.name!r} is not linear in the coordinates"
         if e.kind == "drive":
             return "a drive prescribes a motion in time"
-        if isinstance(e, Contact) and e.mode == "slide" and e.mu_k:
-            pass
     for ld in system.loads:
         if ld.kind in ("force", "torque") and not ld.constant:
             return f"{ld.label} depends on time"

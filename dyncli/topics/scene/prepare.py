@@ -11,7 +11,7 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build, motion
+from . import assembly, build
 from .dynamics import SceneSystem
 from .elements import Contact, Rolls
 
@@ -33,9 +33,6 @@ def setup(plan: build.Plan) -> Scene:
     bodies, q, free, v, names, vgiven = build.bodies_of(plan)
     surfaces = {k: build.surface_of(k, s) for k, s in plan.surfaces.items()}
     R = build.Resolver(bodies, surfaces)
-    for name, b in plan.bodies.items():
-        if b["mass"] == 0 and b["I"] is None and b["shape"] == "point":
-            pass
     _sketch_links_and_rolls(plan, R, q, free)
     n = len(q)
     elems, cords = build.joint_elements(plan, R, q, n, None)
@@ -143,7 +140,7 @@ def _cord_length(cord, spec, R, q) -> float:
     total = 0.0
     segs = [s for run in cord.runs for s in run]
     for s in segs:
-        total += s.length0 if False else float(s.u @ (_tangent(s.b, s.u, q) - _tangent(s.a, s.u, q)))
+        total += float(s.u @ (_tangent(s.b, s.u, q) - _tangent(s.a, s.u, q)))
     items = spec["cord"]
     for i in range(1, len(items) - 1):
         u1, u2 = segs[i - 1].u, segs[i].u
