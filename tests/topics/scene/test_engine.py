@@ -185,3 +185,24 @@ def test_find_at_time_matches_the_requested_time():
     r = rec["results"]
     assert r["find"][0]["reached"] is True
     assert r["find"][0]["x"]["A"] == r["x"]["A"][r["t"].index(0.5)]
+
+
+def test_one_sided_spring_switches_without_stalling():
+    """A point dropped onto a spring that only pushes: the spring switches on at its free length
+    and off again on the way up (new phases, no event); the drop is free fall until then and the
+    energy is kept through both switches (the phases restart exactly at the switch)."""
+    rec = solve_one_text("""
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 1]}
+forces:
+  - {spring: [A, [0, -1]], k: 1000, L: 1.5, one_sided: compression, name: pad}
+at: [0, 0.3, 0.5, 1]
+accuracy: {rtol: 1.0e-11}
+""")
+    r = rec["results"]
+    assert r["events"] == []
+    assert abs(r["x"]["A"][1][1] - (1 - 0.5 * 9.81 * 0.09)) < 1e-9          # still falling freely
+    assert r["force"]["pad"][1] == 0.0
+    E0 = r["E"][0]
+    assert all(abs(E - E0) <= 1e-8 * abs(E0) for E in r["E"])
