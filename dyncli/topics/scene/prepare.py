@@ -73,10 +73,10 @@ def setup(plan: build.Plan) -> Scene:
                         "them: " + ", ".join(f"{_rate_name(names[k])} = {v[k]:.6g}" for k in range(n)
                                              if vgiven[k] or abs(v[k]) > 0))
     _refuse_massless(system, q, plan)
-    _initial_modes(system, q, v)
-    J = system.jac(q)
+    J = system.jac(q)                   # the mechanism's freedom: a contact held by friction still may slide
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
+    _initial_modes(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 

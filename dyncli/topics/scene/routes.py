@@ -33,11 +33,11 @@ from .prepare import Scene
 def run(scene: Scene, t_end: float, acc):
     s = scene.system
     traj = motion.Trajectory(s, 0.0, t_end)
-    if scene.dof == 0 or _effective_dof(s, scene.q0) == 0 and _steady(s):
-        drives = any(e.kind == "drive" for e in s.elements)
-        if drives:
-            return _kinematics(scene, traj, acc), "kinematics"
-        return _statics(scene, traj), "statics"
+    drives = any(e.kind == "drive" for e in s.elements)
+    if scene.dof == 0 and drives:
+        return _kinematics(scene, traj, acc), "kinematics"
+    if _effective_dof(s, scene.q0) == 0 and _steady(s):
+        return _statics(scene, traj), "statics"     # held by the joints, or by friction at rest
     if acc.method in ("auto", "closed-form"):
         cf = _closed_form(scene, traj, t_end)
         if cf is not None:
