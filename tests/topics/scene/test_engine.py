@@ -206,3 +206,26 @@ accuracy: {rtol: 1.0e-11}
     assert r["force"]["pad"][1] == 0.0
     E0 = r["E"][0]
     assert all(abs(E - E0) <= 1e-8 * abs(E0) for E in r["E"])
+
+
+def test_a_block_held_by_friction_slips_when_the_push_exceeds_mu_s_N():
+    """F = 5 t on a block at rest on a rough floor: it sticks (the static test) until
+    5 t = μ_s m g, then slips (an event: this release stops there)."""
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 2, x: [0, 0]}
+joints:
+  f: {contact: [A, floor], mu_s: 0.5, mu_k: 0.4}
+forces:
+  - {force: A, F: ["5*t", 0], name: push}
+at: [0, 1, 3]
+""")
+    r = rec["results"]
+    assert r["dof"] == 1 and r["route"] == "ode"
+    ev = r["events"]
+    assert [(e["joint"], e["what"]) for e in ev] == [("f", "slips")]
+    assert abs(ev[0]["t"] - 0.5 * 2 * 9.81 / 5) <= 1e-9
+    assert r["reaction"]["f"]["F"][1] == -5.0 and r["x"]["A"][2] is None
