@@ -48,6 +48,20 @@ def solve_one_text(text: str) -> dict:
     return rec
 
 
+def lookup(results, dotted: str):
+    """The value at a dotted result path (``find.1.t``, ``reaction.axle.R.0.1``: list indices
+    by number), or None where the path leads nowhere."""
+    node = results
+    for part in dotted.split("."):
+        if isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        elif isinstance(node, dict) and part in node:
+            node = node[part]
+        else:
+            return None
+    return node
+
+
 def solve_path(path) -> list[dict]:
     from dyncli.loader import load_paths
 

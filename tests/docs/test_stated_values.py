@@ -24,7 +24,7 @@ import re
 
 import pytest
 
-from tests.conftest import PROBLEMS, ROOT, solve_path
+from tests.conftest import PROBLEMS, ROOT, lookup, solve_path
 
 FILES = sorted(PROBLEMS.rglob("*.yaml"))
 CHECK = re.compile(r"^#\s*check(?:\[(\d+)\])?:\s*(.*)$")
@@ -65,18 +65,6 @@ def stated_numbers(path):
     return found
 
 
-def _lookup(results, name):
-    node = results
-    for part in name.split("."):
-        if isinstance(node, list) and part.isdigit() and int(part) < len(node):
-            node = node[int(part)]
-        elif isinstance(node, dict) and part in node:
-            node = node[part]
-        else:
-            return None
-    return node
-
-
 @pytest.mark.parametrize("path", FILES, ids=[p.relative_to(ROOT).as_posix() for p in FILES])
 def test_stated_values(path):
     from dyncli.expr import constant
@@ -88,7 +76,7 @@ def test_stated_values(path):
         stated = float(tok)
         rec = recs[idx]
         name, deg = (name[:-5].strip(), True) if name.endswith("[deg]") else (name, False)
-        got = _lookup(rec["results"], name)
+        got = lookup(rec["results"], name)
         if deg and isinstance(got, (int, float)):
             got = math.degrees(got)
         if got is None:

@@ -21,7 +21,6 @@ Tolerances (what each route guarantees, tests/tolerances.py and docs/accuracy.md
 
 from __future__ import annotations
 
-import functools
 import math
 
 import mpmath as mp
@@ -29,9 +28,10 @@ import pytest
 import sympy as sp
 import yaml
 
-from tests.conftest import PROBLEMS, solve_one_text, solve_path
+from tests.conftest import PROBLEMS, solve_one_text
 from tests.tolerances import ODE_GLOBAL
 from tests.topics.scene import refs_a as R
+from tests.topics.scene.common import gallery
 
 MPMATH_DPS = 30
 SCENES = PROBLEMS / "scenes"
@@ -39,15 +39,6 @@ CLOSED = 1e-12
 REACTION_FACTOR = 1000
 DEFAULT_RTOL = 1e-10
 EXACT_ROUTES = ("closed-form", "statics", "kinematics")
-
-
-@functools.lru_cache(maxsize=None)
-def gallery(name):
-    recs = solve_path(SCENES / name)
-    assert len(recs) == 1
-    rec = recs[0]
-    assert rec.get("error") is None, rec.get("error")
-    return rec
 
 
 def file_rtol(name) -> float:

@@ -30,7 +30,8 @@ import pytest
 import yaml
 from mpmath import mp, mpf
 
-from tests.conftest import PROBLEMS, run_cli, solve_path
+from tests.conftest import PROBLEMS, lookup, run_cli
+from tests.topics.scene.common import gallery
 from tests.topics.scene import refs_b as R
 
 SCENES = PROBLEMS / "scenes"
@@ -105,15 +106,6 @@ def reference(name):
     return {k: v for k, v in out.items() if not k.startswith("_")}
 
 
-@functools.lru_cache(maxsize=None)
-def gallery(name):
-    recs = solve_path(SCENES / name)
-    assert len(recs) == 1
-    rec = recs[0]
-    assert rec.get("error") is None, rec.get("error")
-    return rec
-
-
 def file_data(name):
     return yaml.safe_load((SCENES / name).read_text(encoding="utf-8"))
 
@@ -128,20 +120,6 @@ def tolerance(rec, rtol):
         return EXACT
     est = rec.get("error_estimate")
     return max(NUMERICAL_FACTOR * rtol, 2 * est if isinstance(est, (int, float)) else 0.0)
-
-
-def lookup(res, path):
-    node = res
-    for part in path.split("."):
-        if isinstance(node, list):
-            if not part.isdigit() or int(part) >= len(node):
-                return None
-            node = node[int(part)]
-        elif isinstance(node, dict) and part in node:
-            node = node[part]
-        else:
-            return None
-    return node
 
 
 def compare(res, ref, rel, skip=()):

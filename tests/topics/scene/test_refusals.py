@@ -205,44 +205,17 @@ at: [0, 1]
 
 # --- bodies -----------------------------------------------------------------------------------------
 
-def test_rod_without_length():
-    text = """\
-type: scene
-bodies:
-  rod: {shape: rod, mass: 1, x: [0, 0], angle: 0}
-at: [0, 1]
-"""
-    refusal(text, "bodies.rod", "rod needs length")
+BODY_ERRORS = [
+    ("rod: {shape: rod, mass: 1, x: [0, 0], angle: 0}", "bodies.rod", "rod needs length"),
+    ("wheel: {shape: disk, mass: 1, x: [0, 0]}", "bodies.wheel", "disk needs radius"),
+    ("A: {shape: point, mass: 1, x: [0, 0], angle: 0.3}", "bodies.A.angle", "point body has no angle"),
+    ("A: {shape: point, mass: 1, x: [0, 0], omega: 2}", "bodies.A.omega", "point body has no angle or angular velocity"),
+]
 
 
-def test_disk_without_radius():
-    text = """\
-type: scene
-bodies:
-  wheel: {shape: disk, mass: 1, x: [0, 0]}
-at: [0, 1]
-"""
-    refusal(text, "bodies.wheel", "disk needs radius")
-
-
-def test_point_body_with_angle():
-    text = """\
-type: scene
-bodies:
-  A: {shape: point, mass: 1, x: [0, 0], angle: 0.3}
-at: [0, 1]
-"""
-    refusal(text, "bodies.A.angle", "point body has no angle")
-
-
-def test_point_body_with_omega():
-    text = """\
-type: scene
-bodies:
-  A: {shape: point, mass: 1, x: [0, 0], omega: 2}
-at: [0, 1]
-"""
-    refusal(text, "bodies.A.omega", "point body has no angle or angular velocity")
+@pytest.mark.parametrize("body, field, words", BODY_ERRORS, ids=[e[2] for e in BODY_ERRORS])
+def test_body_refusals(body, field, words):
+    refusal(f"type: scene\nbodies:\n  {body}\nat: [0, 1]\n", field, words)
 
 
 # --- assembly and degrees of freedom ------------------------------------------------------------------
