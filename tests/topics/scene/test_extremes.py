@@ -30,7 +30,7 @@ from hypothesis import HealthCheck, Phase, example, given, settings
 from hypothesis import strategies as st
 
 from tests.conftest import solve_one_text
-from tests.tolerances import EPS, ODE_GLOBAL, closed_form
+from tests.tolerances import ODE_GLOBAL, closed_form
 
 G = 9.81
 EXACT = ("closed-form", "statics", "kinematics")
