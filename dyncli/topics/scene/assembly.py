@@ -144,15 +144,3 @@ def project_velocity(system, q, v, t: float = 0.0):
     if float(np.max(np.abs(r), initial=0.0)) <= 1e-12 * scale * max(1.0, float(np.max(np.abs(J)))):
         return v, False
     return system.project_velocity(q, v, t), True
-
-
-def fmt_vec(v) -> str:
-    return "[" + ", ".join(f"{x:.6g}" for x in v) + "]"
-
-
-def near_zero(x: float, scale: float) -> bool:
-    return abs(x) <= 64 * EPS * max(scale, 1e-300)
-
-
-def isclose(a, b) -> bool:
-    return math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-300)

@@ -9,8 +9,6 @@ along the motion).
 
 from __future__ import annotations
 
-import numpy as np
-
 
 def _v3(a) -> list:
     return [float(a[0]) + 0.0, float(a[1]) + 0.0, 0.0]
@@ -92,7 +90,3 @@ def flatten(node, prefix="") -> dict:
     elif isinstance(node, (int, float)) and not isinstance(node, bool):
         out[prefix[:-1]] = float(node)
     return out
-
-
-def to_numpy(x):
-    return np.asarray(x, dtype=float)

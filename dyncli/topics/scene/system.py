@@ -93,18 +93,9 @@ class Point:
         return np.array((-w * w * a1, -w * w * a2))
 
     @property
-    def moves(self) -> bool:
-        return self.body is not None
-
-    @property
     def turns_with_body(self) -> bool:
         """True when r depends on the body's angle (a rigid body's point off its centre)."""
         return self.body is not None and self.body.rigid and (self.p[0] != 0 or self.p[1] != 0)
-
-
-def rot(th: float) -> np.ndarray:
-    c, s = math.cos(th), math.sin(th)
-    return np.array([[c, -s], [s, c]])
 
 
 @dataclass(frozen=True)
@@ -121,10 +112,6 @@ class SurfaceData:
             return None
         s = (r[0] - self.origin[0]) * self.d[0] + (r[1] - self.origin[1]) * self.d[1]
         return float(min(s, self.length - s))
-
-
-def cross2(a, b) -> float:
-    return float(a[0] * b[1] - a[1] * b[0])
 
 
 def perp(a) -> np.ndarray:
