@@ -206,6 +206,10 @@ def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
         kind, path = f["kind"], f"forces.{i}.{f['kind']}"
         if kind in ("spring", "damper"):
             P, Q = R.pair(f[kind], path, q)
+            d = P.pos(q) - Q.pos(q)
+            if d[0] == 0 and d[1] == 0:
+                raise InputError(f"the {kind}'s ends coincide at t = 0, so its direction is undefined: attach it "
+                                 "between two distinct points", path)
             out.append(Load(kind, f["name"], P=P, Q=Q, k=f["k"] or 0.0, L=f["L"] or 0.0, one_sided=f["one_sided"],
                             c=f["c"] or 0.0))
         elif kind == "force":

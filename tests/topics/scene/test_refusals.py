@@ -500,3 +500,15 @@ def test_massless_free_body_clear_message(tmp_path, text):
     assert code in (1, 2), f"exit {code}:\n{both}"
     assert not re.search(r"\bnan\b", both, re.I), both
     assert "massless" in both.lower(), both
+
+
+def test_spring_between_coinciding_points():
+    text = """\
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+forces:
+  - {spring: [A, A], k: 1, L: 0}
+at: [0, 1]
+"""
+    refusal(text, "forces.0.spring", "coincide")
