@@ -117,8 +117,9 @@ def redundant(system, q) -> list[str]:
 
 
 def independent(J: np.ndarray, n: int) -> list[int]:
-    """Coordinates that can be chosen freely: greedy, in order, each kept when it raises the
-    rank of [J; e_i] (the angles first: the textbooks' choice)."""
+    """Coordinates that can be chosen freely: greedy from the last coordinate back (a body's
+    angle before its position, the later bodies first), each kept when it raises the rank of
+    [J; e_i]."""
     r0 = rank(J)
     chosen: list[int] = []
     rows = J.copy() if J.size else np.zeros((0, n))

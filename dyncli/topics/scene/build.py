@@ -138,7 +138,7 @@ def _rigid(b: BodyData, what: str, path: str) -> None:
         raise InputError(f"{what} needs a rigid body; {b.name!r} is a point", path)
 
 
-def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int, loads_t) -> tuple[list, list]:
+def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list, list]:
     """Every joint but the cords (placed after a first assembly) as elements; the cords as
     (name, spec) to build later."""
     out, cords = [], []
@@ -157,7 +157,6 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int, loads_t) -> t
                 if L == 0:
                     raise InputError("the link's ends coincide in the sketch: give its length", f"joints.{name}.length")
             out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
-            out[-1].angle = j.get("angle")
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
             s = R.surface(a[1], path + ".1")
@@ -184,7 +183,6 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int, loads_t) -> t
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
                                 c0=c0, mu_s=j["mu_s"]))
-            out[-1].at = j["at"]
         elif kind == "drive":
             bname, _, coord = a.partition(".")
             b = R.body(bname, path)
@@ -271,8 +269,7 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
         if tg is None:
             raise InputError(f"the cord's segment {i + 1} has no straight part (its ends overlap)", path)
         u, Ta, Tb = tg
-        seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u,
-                         float(u @ (Tb - Ta)))
+        seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u)
         run.append(seg)
         for nd in (nodes[i], nodes[i + 1]):
             guided = None

@@ -17,6 +17,8 @@ import numpy as np
 
 from .system import Point, SurfaceData, perp
 
+EPS = float(np.finfo(float).eps)
+
 
 @dataclass
 class Element:
@@ -46,9 +48,6 @@ class Element:
     def watch(self, lam, q, v, t) -> list[tuple[str, float]]:
         """(what, g): the event ``what`` happens where g crosses zero from above."""
         return []
-
-    def scale(self) -> float:
-        return 1.0
 
 
 def _two(P: Point, Q: Point, q, n):
@@ -166,6 +165,11 @@ class Contact(Element):
             return None
         return -self.mu_k * self.sign * (np.array(self.surface.d) @ self.P.jac(q, self.n))
 
+    def holds(self, N: float, F: float) -> bool:
+        """The static test |F| ≤ μ_s N; the boundary, within the rounding of the linear solve
+        that gave N and F (64 ε of the larger), holds: friction exactly at the limit sticks."""
+        return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
+
     def slip_speed(self, q, v) -> float:
         return float(np.array(self.surface.d) @ self.P.vel(q, v))
 
@@ -265,9 +269,6 @@ class Link(Element):
     def report(self, lam, q, v, t):
         return {"T": -float(lam[0])}
 
-    def scale(self):
-        return self.L
-
 
 @dataclass
 class Drive(Element):
@@ -335,7 +336,6 @@ class Segment:
     a: CordEnd
     b: CordEnd
     u: np.ndarray                   # unit direction a -> b, kept from t = 0
-    length0: float = 0.0
 
 
 @dataclass

@@ -27,10 +27,8 @@ from . import motion
 EPS = float(np.finfo(float).eps)
 
 
-def applies(system, acc_method: str) -> str | None:
+def applies(system) -> str | None:
     """None when the route applies (decided from the elements' kinds), else why not."""
-    if acc_method not in ("auto", "quadrature"):
-        return "accuracy.method asks for another route"
     for e in system.elements:
         if e.kind == "drive":
             return "a drive prescribes a motion in time"
@@ -161,13 +159,12 @@ class Work:
         return total
 
 
-def run(scene, traj, t_end: float, acc) -> object | None:
-    """The trajectory by the energy quadrature; None when it does not apply."""
+def run(scene, traj, t_end: float, acc) -> object:
+    """The trajectory by the energy quadrature (the caller decided that it applies: one degree
+    of freedom, :func:`applies`)."""
     from dyncli.energy_route import EnergyMotion
 
     s = scene.system
-    if scene.dof != 1 or applies(s, acc.method) is not None:
-        return None
     i = s.names.index(scene.coords[0])
     man = Manifold(s, scene.q0, i)
     N0 = man.direction(scene.q0)

@@ -53,6 +53,11 @@ class Trajectory:
     events: list[Event] = field(default_factory=list)
     steps: int = 0
     stopped: float | None = None    # the time of a stopping event
+    method: str = ""                # the route's method as reported (ode:DOP853, closed-form ...)
+    fixed: tuple | None = None      # statics: the one solve (q̈ = 0, λ, power) for every time
+    along: tuple | None = None      # closed form: (N, i), the one direction of motion
+    energy: object = None           # quadrature: the EnergyMotion
+    _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
 
     def add(self, piece: Piece):
         if piece.t_b > piece.t_a or not self.pieces:
@@ -62,16 +67,13 @@ class Trajectory:
     def breaks(self) -> list[float]:
         return [self.pieces[0].t_a] + [p.t_b for p in self.pieces] if self.pieces else [self.t0]
 
-    def covers(self, t: float) -> bool:
-        end = self.stopped if self.stopped is not None else self.t_end
-        return self.t0 - 1e-15 <= t <= end * (1 + 4 * EPS) + 1e-300
 
     def state(self, t: float):
         ends = [p.t_b for p in self.pieces]
         i = min(bisect.bisect_left(ends, t), len(self.pieces) - 1)
         p = self.pieces[i]
         set_modes(self.system, p.modes)
-        memo = self.__dict__.setdefault("_memo", {})
+        memo = self._memo
         got = memo.get(t)
         if got is None:                 # a time asked again (a value and its rate, a table row)
             got = p.fn(min(max(t, p.t_a), p.t_b))
@@ -119,7 +121,7 @@ def _crossed(g0: float, g1: float, what: str) -> bool:
 
 class OdeRoute:
     def __init__(self, system, acc, method: str):
-        self.system, self.acc, self.method = system, acc, method
+        self.system, self.method = system, method
         n = system.n
         self.n = n
 
@@ -237,9 +239,7 @@ def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
     _, lam, _ = system.solve(q, v0, t)
     i = system.elements.index(e)
     N, F = (float(x) for x in system.lam_of(lam, i))
-    margin = e.mu_s * N - abs(F)
-    scale = max(abs(e.mu_s * N), abs(F), 1e-300)
-    if margin >= -64 * EPS * scale:
+    if e.holds(N, F):
         return True, 0.0
     return False, -math.copysign(1.0, F)
 

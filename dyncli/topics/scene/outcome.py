@@ -25,7 +25,7 @@ def instants_of(scene: Scene, traj, route: str):
 
     def state_at(t):
         q, v, W = traj.state(t)
-        solved = getattr(traj, "fixed", None)
+        solved = traj.fixed
         if route == "kinematics":
             a, lam = _kin_forces(s, q, v, t)
             solved = (a, lam, 0.0)
@@ -67,7 +67,7 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
         from . import queries
 
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
-    res.method = getattr(traj, "method", route)
+    res.method = traj.method or route
     _estimate(res, scene, route, acc, traj)
     _present(res, scene, traj, inst, times)
     return res

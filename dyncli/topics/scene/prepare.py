@@ -35,7 +35,7 @@ def setup(plan: build.Plan) -> Scene:
     R = build.Resolver(bodies, surfaces)
     _sketch_links_and_rolls(plan, R, q, free)
     n = len(q)
-    elems, cords = build.joint_elements(plan, R, q, n, None)
+    elems, cords = build.joint_elements(plan, R, q, n)
     loads = build.loads_of(plan, R, q)
     system = SceneSystem(list(bodies.values()), elems, loads, plan.g, n, names)
     warnings: list[str] = []
@@ -211,9 +211,8 @@ def _initial_modes(system, q, v) -> None:
         worst, ratio = None, 0.0
         for e in at_rest:
             N, F = (float(x) for x in system.lam_of(lam, system.elements.index(e)))
-            limit = e.mu_s * N
-            if abs(F) - limit > 64 * EPS * max(abs(F), abs(limit), 1e-300):
-                r = abs(F) / max(limit, 1e-300)
+            if not e.holds(N, F):
+                r = abs(F) / max(e.mu_s * N, 1e-300)
                 if worst is None or r > ratio:
                     worst, ratio, sign = e, r, -math.copysign(1.0, F)
         if worst is None:

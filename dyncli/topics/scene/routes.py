@@ -49,7 +49,7 @@ def run(scene: Scene, t_end: float, acc):
     if acc.method == "quadrature":      # on request only in this release: its cost is seconds (docs)
         from . import energy
 
-        why = energy.applies(s, "auto") if scene.dof == 1 else "the scene has more than one degree of freedom"
+        why = energy.applies(s) if scene.dof == 1 else "the scene has more than one degree of freedom"
         if why is None:
             energy.run(scene, traj, t_end, acc)
             _one_sided_events(s, traj)
