@@ -72,14 +72,30 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if meth == "quadrature" and not quadrature_applies(p, curve):
         raise InputError("method quadrature needs a fixed curve, no friction, damper or drag, and forces of the "
                          "position only (the energy integral); use method ode", "accuracy.method")
+    if p.find:                              # the motion runs to the end of every window searched (§11)
+        from dyncli import motion_find
+        from dyncli.expr import constant, resolve_params
+
+        params = resolve_params(p.params)
+        end = motion_find.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
+        if end > p.t_end:
+            p = p.model_copy(update={"t_end": end})
+            model = dynamics.Model(p, curve)
     times = [float(t) for t in p.at]
     res = None
+    from . import find
+
     if use_quad:
         from . import quadrature
 
         res = quadrature.solve(p, model, times, fallback=(meth == "auto"))
+        if res is not None:
+            find.report(p, res, find.quadrature_states(p, model),
+                        find.uniform_breaks(float(p.t_end), res.results.get("period")), SERIES)
     if res is None:
         res = _solve_ode(p, model, times)
+        find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
+                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES)
     equilibria.add(res, p, model)
     return res
 
@@ -97,10 +113,11 @@ def _solve_ode(p, model, times) -> Result:
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
     res = Result(out["results"], method=f"ode:{method}", equations=_equations(model),
-                 series=[Series("t", times, SERIES)])
+                 series=[Series("t", times, SERIES + ["distance"])])
     res.results["energy_residual"] = resid
     res.extra["nsteps"] = nsteps
     res.extra["energy_scale"] = scale
+    res.extra["phases"] = res.extra["breaks_of"] = phases
     _friction_notes(res, model, notes, phases)
     # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its
     # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
