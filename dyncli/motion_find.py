@@ -228,3 +228,60 @@ def turns(rate: Callable[[float], float], breaks: Iterable[float]) -> list[float
         elif R[k] * R[k + 1] < 0:
             out.append(_q._root(rate, T[k], T[k + 1]))
     return out
+
+
+def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapping[str, str],
+             fast: Iterable[str] = (), t0: float = 0.0) -> None:
+    """The ``find`` answers of a type whose solver reports its motion at the times of ``at``: the
+    motion at any times is the same solve with those times (one solve for a whole grid, and the
+    route's own accuracy; its check solve off).  The results over time are the type's series
+    over ``t``; ``rates`` names which is the rate of which; the search grid has at least
+    :data:`PER_TURN` pieces per turn of the fastest of the ``fast`` rates (rad/s) seen on a first
+    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`."""
+    import math as _m
+
+    names = [n for s in result.series if s.index_name == "t" for n in s.names]
+    acc = getattr(problem, "accuracy", None)
+    base = {"find": []}
+    if acc is not None and getattr(acc, "estimate", False):
+        base["accuracy"] = acc.model_copy(update={"estimate": False})
+
+    def batch(ts) -> list[dict]:
+        ts = [float(t) for t in ts]
+        r = solve(problem.model_copy(update=dict(base, at=ts))).results
+        return [{n: r[n][j] for n in names if isinstance(r.get(n), list) and len(r[n]) == len(ts)}
+                for j in range(len(ts))]
+
+    from dyncli.expr import constant, resolve_params
+
+    params = resolve_params(getattr(problem, "params", {}) or {})
+    const = lambda x: constant(x, params)            # noqa: E731
+    at = [float(t) for t in getattr(problem, "at", []) or []]
+    t_end = search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find, const)
+    if t_end <= t0:
+        breaks = [t0, t0]
+    else:
+        probe = [t0 + (t_end - t0) * k / 64 for k in range(65)]
+        fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
+        period = result.results.get("period")
+        turns = (t_end - t0) * fastest / (2 * _m.pi)
+        if isinstance(period, (int, float)) and period and period > 0:
+            turns = max(turns, (t_end - t0) / period)
+        n = int(min(max(64, _m.ceil(turns * PER_TURN)), MAX_PIECES))
+        breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
+        if turns * PER_TURN > MAX_PIECES:
+            result.warn(f"find: the motion to t = {t_end:g} s turns about {turns:.3g} times; the search grid is "
+                        f"capped at {MAX_PIECES} pieces, so extremes closer than that may be missed (use within)")
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks,
+                         rtol=float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0,
+                         rates=rates, batch=batch)
+    attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+
+
+PER_TURN, MAX_PIECES = 8, 20_000
+
+
+def _leaves(x: Any) -> list[float]:
+    if isinstance(x, (list, tuple)):
+        return [y for v in x for y in _leaves(v)]
+    return [float(x)] if isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(float(x)) else []
