@@ -112,6 +112,11 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
             line, col = doc.locate(("problems",)) or (None, None)
             return [], [Diagnostic(display, line, col, "problems", "expected a non-empty list of problems")]
         prefixes = [("problems", i) for i in range(len(items))]
+    elif isinstance(data, dict) and "type" not in data and (near := _near_key(data, "problems")) is not None:
+        line, col = doc.locate((near,)) or (None, None)
+        return [], [Diagnostic(display, line, col, str(near),
+                               f"unknown top-level key '{near}' (did you mean 'problems'?): a file of several "
+                               "problems lists them under 'problems:'")]
     elif isinstance(data, dict):
         items = [data]
         prefixes = [()]
@@ -137,7 +142,11 @@ def validate(lp: LoadedProblem) -> None:
         lp.error = lp.diagnostic((), "expected a problem: a mapping with 'type'")
         return
     if "type" not in raw:
-        lp.error = lp.diagnostic((), f"missing 'type'; one of: {', '.join(registry.TYPES)}")
+        near = _near_key(raw, "type")
+        if near is not None:
+            lp.error = lp.diagnostic((near,), f"unknown field '{near}' (did you mean 'type'?): every problem names its type")
+        else:
+            lp.error = lp.diagnostic((), f"missing 'type': add 'type: NAME', one of: {', '.join(registry.TYPES)}")
         return
     t = raw["type"]
     if not isinstance(t, str) or t not in registry.TYPES:
@@ -155,6 +164,15 @@ def validate(lp: LoadedProblem) -> None:
         lp.error = lp.diagnostic(exc.path, exc.message)
         return
     lp.model, lp.error = validate_model(lp, cls, raw, params)
+
+
+def _near_key(data: dict, word: str) -> Any:
+    """The key of ``data`` that is a slip for ``word`` (``problem`` for
+    ``problems``, ``Type`` for ``type``), or None."""
+    for k in data:
+        if isinstance(k, str) and k != word and did_you_mean(k, [word]):
+            return k
+    return None
 
 
 def params_of(raw: dict) -> dict[str, float]:
@@ -254,7 +272,6 @@ def _fields_at(cls, loc: tuple) -> list[str]:
 
     def models_in(tp) -> list:
         out = []
-        origin = typing.get_origin(tp)
         if isinstance(tp, type) and issubclass(tp, BaseModel):
             return [tp]
         for a in typing.get_args(tp) or ():
