@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from dyncli.angles import degrees_hint
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean, resolve_params
 from dyncli.printable import printable
@@ -208,14 +209,14 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
             loc = _strip_tags(raw, err["loc"])
             if loc not in seen:   # one message per field (a union reports each member)
                 seen.add(loc)
-                diags.append(lp.diagnostic(loc, _message(cls, err)))
+                diags.append(lp.diagnostic(loc, _message(cls, err) + degrees_hint(cls, raw, loc)))
         first, *others = sorted(diags, key=lambda d: (d.line or 0, d.col or 0))
         if len(errors) > MAX_ERRORS:
             others.append(lp.diagnostic((), f"{len(errors) - MAX_ERRORS} more errors in this problem not listed"))
         first.others = others
         return None, first
     except InputError as exc:
-        return None, lp.diagnostic(exc.path, exc.message)
+        return None, lp.diagnostic(exc.path, exc.message + degrees_hint(cls, raw, exc.path))
 
 
 def _strip_tags(raw: Any, loc) -> tuple:
