@@ -47,6 +47,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res.extra["nfev"] = traj.nfev
     res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     res.extra["nsteps"] = traj.nsteps
+    if not p.forces:
+        res.warn("no forces: the particle moves in a straight line at constant velocity (no gravity); "
+                 "if it has weight, add {kind: gravity} to forces")
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
                  f"DOP853 reported: {switched}")

@@ -191,6 +191,11 @@ def _solve(p) -> Result:
         res.extra["sample"] = lambda times: sample(p, times)
         return res
 
+    from dyncli.topics.rectilinear import coulomb
+
+    if route != "quadrature" and coulomb.by_hand(p.a):
+        raise coulomb.refuse(p.a, case)
+
     def run(rtol, atol):
         return _run(p, case, route, rtol, atol)
 
