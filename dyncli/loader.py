@@ -251,9 +251,12 @@ def _message(cls, err: dict) -> str:
         known = f"; known fields: {', '.join(sorted(fields))}" if fields and not hint else ""
         return f"unknown field '{key}'{hint}{known}"
     if t == "missing":
-        return "required field is missing"
+        what = _description(cls, loc)
+        return "required field is missing" + (f": add {loc[-1]} ({what})" if what else "")
     if t == "dyncli":
         return err["msg"]
+    if t in _PLAIN:
+        return _PLAIN[t](err.get("input"), err.get("ctx") or {})
     if t in ("literal_error",):
         return err["msg"].replace("Input should be", "must be")
     if t in ("union_tag_invalid", "union_tag_not_found"):
@@ -265,8 +268,55 @@ def _message(cls, err: dict) -> str:
     return msg.replace("Input should be", "must be")
 
 
+def _shown(x: Any) -> str:
+    from dyncli.expr import _kind
+
+    return repr(x) if isinstance(x, (str, int, float)) and not isinstance(x, bool) and len(repr(x)) <= 40 else _kind(x)
+
+
+def _entries(n: Any) -> str:
+    return f"{n} entry" if n == 1 else f"{n} entries"
+
+
+#: pydantic's wording of the common slips, said the way a problem file is written
+_PLAIN = {
+    "int_from_float": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "int_parsing": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "int_type": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "bool_parsing": lambda x, c: f"must be true or false, got {_shown(x)}",
+    "bool_type": lambda x, c: f"must be true or false, got {_shown(x)}",
+    "string_type": lambda x, c: f"must be text, got {_shown(x)}",
+    "list_type": lambda x, c: f"must be a list, got {_shown(x)}: write [a, b] or one '- ' line per entry",
+    "dict_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "model_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "model_attributes_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "too_short": lambda x, c: f"must have at least {_entries(c.get('min_length', 1))}, got {c.get('actual_length', 0)}",
+    "too_long": lambda x, c: f"must have at most {_entries(c.get('max_length', '?'))}, got {c.get('actual_length', '?')}",
+}
+
+
+def _description(cls, loc: tuple) -> str:
+    """The declared description of the field at ``loc`` (one short line), or ""."""
+    for m in _models_at(cls, loc[:-1]):
+        info = getattr(m, "model_fields", {}).get(loc[-1]) if loc else None
+        schemas = [getattr(meta, "json_schema", None) for meta in (info.metadata if info is not None else ())]
+        d = (info.description if info is not None else None) or next(
+            (s["description"] for s in schemas if isinstance(s, dict) and s.get("description")), None)
+        if d:
+            return d if len(d) <= 90 else d[:87] + "..."
+    return ""
+
+
 def _fields_at(cls, loc: tuple) -> list[str]:
     """Best effort: the field names of the model found at ``loc``."""
+    names: list[str] = []
+    for m in _models_at(cls, loc):
+        names += list(getattr(m, "model_fields", {}))
+    return names
+
+
+def _models_at(cls, loc: tuple) -> list:
+    """Best effort: the models found at ``loc``."""
     import typing
 
     from pydantic import BaseModel
@@ -298,10 +348,7 @@ def _fields_at(cls, loc: tuple) -> list[str]:
             tagged = [m for m in nxt if part in tags(m)]
             nxt = tagged or nxt  # union tag: keep the member it names
         current = nxt or current
-    names: list[str] = []
-    for m in current:
-        names += list(getattr(m, "model_fields", {}))
-    return names
+    return current
 
 
 def load_paths(names: list[str]) -> tuple[list[LoadedProblem], list[Diagnostic]]:
