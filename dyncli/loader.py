@@ -84,7 +84,7 @@ def read_source(name: str) -> tuple[str, bytes]:
         return "<stdin>", data
     p = Path(name)
     if not p.exists():
-        raise InputError(f"{name}: no such file")
+        raise InputError(f"{name}: no such file (check the name, and the directory you run dyncli from)")
     if p.is_dir():
         raise InputError(f"{name}: is a directory (give the YAML files, e.g. {name}/*.yaml)")
     try:

@@ -178,7 +178,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     try:
         wanted = parse_units(units)
         if long and fmt != "csv":
-            raise InputError("--long: only with --format csv (one row per time)")
+            raise InputError("--long works only with --format csv (one row per time): add --format csv")
     except InputError as exc:
         _err(exc.message)
         return 2

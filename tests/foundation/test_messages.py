@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import error_of
+from tests.conftest import ROOT, error_of
 
 IMPACT = "vA1: [5, 0, 0]\nvB1: [0, 0, 0]\nn: [1, 0, 0]\ne: 0\n"
 
@@ -100,3 +100,36 @@ def test_misspelt_type_key(key):
 def test_missing_type_says_what_to_add():
     err = error_of("title: x\nmA: 2\n")
     assert "missing 'type': add 'type: NAME'" in err and "rectilinear" in err, err
+
+
+# ------------------------------------------------------------------ the review: what, where, how to fix
+
+@pytest.mark.parametrize("text,where,fix", [
+    ("type: particle\nt_end: 1\n", "bad.yaml:1:1: m: required field is missing", "add m (mass [kg])"),
+    ("type: particle\nm: 1\nforces: gravity\nt_end: 1\n", "forces: must be a list, got 'gravity'", "one '- ' line per entry"),
+    ("type: particle\nm: 1\nt_end: 1\naccuracy: {max_steps: 1.5}\n", "accuracy.max_steps:", "must be a whole number, got 1.5"),
+    ("type: particle\nm: 1\nt_end: 1\naccuracy: {estimate: maybe}\n", "accuracy.estimate:", "must be true or false, got 'maybe'"),
+    ("type: inertia\nparts: []\n", "parts:", "must have at least 1 entry, got 0"),
+    ("type: particle\nm: 1\nt_end: 1\naccuracy: 3\n", "accuracy:", "must be a mapping"),
+    ("type: rectilinear\nparams: {pi: 3}\na: 1\n", "params.pi:", "rename it (e.g. 'pi_1')"),
+    ("type: rectilinear\nparams: {a: b, b: a}\na: 1\n", "in a cycle", "give one of them a value"),
+    ("type: rectilinear\na: '1/s'\n", "not finite at the initial state", "change t1, s1 or v1"),
+    ("type: vibration\nm: 1\nk: 1\nsweep: {ratio: [0, 1], points: 10, spacing: log}\n", "log spacing needs r_min > 0",
+     "spacing: linear"),
+    ("type: impact\nmA: 1\nmB: 1\nvA1: [1, 0, 0]\nvB1: [0, 0, 0]\nn: [1, 0, 0]\neta: 0.5\nphi: 0.1\nt: [0, 2, 0]\n",
+     "t must be a unit vector", "omit t and dyncli computes it"),
+    ("type: particle\nm: 1\nforces: [{kind: spring, k: 1, L: 0.5}]\nt_end: 1\n", "forces.0.anchor", "off the anchor"),
+    ("type: constrained-particle\nm: 1\ncurve: {x1: q, x2: 0, x3: 0}\nq_range: [2, 1]\nt_end: 1\n", "got [2, 1]", "q_min < q_max"),
+    ("type: constrained-particle\nm: 1\ncurve: {x1: q, x2: 0, x3: 0}\nq_range: [1, 2]\nt_end: 1\n", "outside q_range",
+     "widen q_range"),
+])
+def test_message_names_the_fix(text, where, fix):
+    err = error_of(text)
+    assert where in err and fix in err, err
+
+
+def test_sweep_of_one_number_says_give_a_list():
+    import dyncli
+
+    with pytest.raises(dyncli.InputError, match=r"sweep k: give a list of values, e\.g\. \{'k': \[100, 200, 300\]\} \(got 100\)"):
+        dyncli.sweep(str(ROOT / "problems" / "vibration" / "base-excitation.yaml"), {"k": 100})

@@ -37,7 +37,8 @@ def _vec(a) -> list[float]:
 def _check_curve(p, curve: Curve) -> None:
     sp = np.linalg.norm(curve.dy(p.q0)[:, 0])
     if not np.isfinite(sp):
-        raise InputError(f"the curve is not defined at q0 = {p.q0:g}", "curve")
+        raise InputError(f"the curve is not defined at q0 = {p.q0:g} (x1, x2, x3 or their derivatives are not finite "
+                         "there): choose q0 where the curve exists", "curve")
     if sp == 0:
         raise InputError(f"the curve's tangent dy/dq vanishes at q0 = {p.q0:g}: q is not a regular parameter there",
                          "curve")

@@ -146,7 +146,7 @@ def _check_initial(p) -> None:
     if not math.isfinite(a1):
         raise InputError(
             f"a = {p.a.text} is not finite at the initial state (t1 = {_fmt(p.t1)}, s1 = {_fmt(p.s1)}, v1 = {_fmt(p.v1)}): "
-            f"it evaluates to {a1!r}", "a")
+            f"it evaluates to {a1!r}; start where a is defined (change t1, s1 or v1) or correct a", "a")
 
 
 def _distinct(p):
