@@ -68,10 +68,13 @@ def _bare(written: Any) -> float | None:
     """The number a value is when written as a bare number, else None."""
     if isinstance(written, bool):
         return None
-    if isinstance(written, (int, float)):
-        return float(written)
-    if isinstance(written, str) and _NUMBER.match(written):
-        return float(written)
+    try:
+        if isinstance(written, (int, float)):
+            return float(written)
+        if isinstance(written, str) and len(written) < 400 and _NUMBER.match(written):
+            return float(written)
+    except OverflowError:     # a 400-digit integer: refused by the field itself, not judged here
+        return None
     return None
 
 

@@ -98,3 +98,9 @@ def test_warning_text():
     (w,) = degrees_warnings(problems[0].model, problems[0].raw)
     assert w == f"theta: 30 is read in radians ({math.degrees(30):.4g}°, more than a full turn); " \
                 "if you meant degrees, write 30*deg"
+
+
+def test_a_huge_integer_is_left_to_its_field():
+    from dyncli.angles import _bare
+
+    assert _bare(10 ** 400) is None and _bare("9" * 500) is None and _bare("30") == 30.0
