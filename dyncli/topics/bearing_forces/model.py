@@ -44,7 +44,7 @@ class BearingForces(ProblemBase):
     @classmethod
     def _times(cls, v):
         if not v:
-            raise ValueError("give at least one time")
+            raise ValueError("give at least one time, e.g. at: [0, 1]")
         return v
 
     @model_validator(mode="after")

@@ -86,9 +86,11 @@ class ConstrainedParticle(ProblemBase):
         check_times(self)
         if self.q_range is not None:
             if len(self.q_range) != 2 or not self.q_range[0] < self.q_range[1]:
-                raise InputError("q_range must be [q_min, q_max] with q_min < q_max", "q_range")
+                got = ", ".join(f"{v:g}" for v in self.q_range)
+                raise InputError(f"q_range must be [q_min, q_max] with q_min < q_max, got [{got}]", "q_range")
             if not all(math.isfinite(v) for v in self.q_range):
-                raise InputError("q_range must be finite", "q_range")
+                raise InputError("q_range must be finite: give the two ends of the wire as numbers", "q_range")
             if not self.q_range[0] <= self.q0 <= self.q_range[1]:
-                raise InputError(f"q0 = {self.q0:g} is outside q_range [{self.q_range[0]:g}, {self.q_range[1]:g}]", "q0")
+                raise InputError(f"q0 = {self.q0:g} is outside q_range [{self.q_range[0]:g}, {self.q_range[1]:g}]: "
+                                 "start on the wire, or widen q_range", "q0")
         return self

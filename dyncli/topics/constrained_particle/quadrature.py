@@ -262,7 +262,4 @@ def solve(p, model, times, fallback=True) -> Result | None:
     if period and times and max(times) > 1e12 * period:
         res.warn(f"t = {max(times):.6g} s is more than 1e12 periods ({period:.6g} s): the phase of the motion there "
                  "is lost to rounding of t itself")
-    if out["straight"]:
-        res.warn("the curve is straight at some reported point: its principal normal is not defined there, "
-                 "so e_n is the axis direction (e3, or e1) with its e_t part removed")
     return res

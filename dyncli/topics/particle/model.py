@@ -146,7 +146,9 @@ class Particle(ProblemBase):
         check_times(self)
         for i, f in enumerate(self.forces):
             if isinstance(f, InverseSquare) and math.dist(f.center, self.x0) == 0:
-                raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force)", f"forces.{i}.center")
+                raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force): "
+                                 "start the particle elsewhere", f"forces.{i}.center")
             if isinstance(f, Spring) and f.L > 0 and math.dist(f.anchor, self.x0) == 0:
-                raise InputError("x0 is at the spring's anchor while L > 0: the spring force has no direction", f"forces.{i}.anchor")
+                raise InputError("x0 is at the spring's anchor while L > 0: the spring force has no direction; "
+                                 "start the particle off the anchor", f"forces.{i}.anchor")
         return self

@@ -56,6 +56,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
     find.report(p, res, lambda ts: sampler(ts), sampler.dense)
     res.extra["nsteps"] = traj.nsteps
+    if not p.forces:
+        res.warn("no forces: the particle moves in a straight line at constant velocity (no gravity); "
+                 "if it has weight, add {kind: gravity} to forces")
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
                  f"DOP853 reported: {switched}")

@@ -71,7 +71,7 @@ class Particles(ProblemBase):
                                      f"pairs.{k}.between")
             if pr.kind == "inverse-square" and self.particles[pr.between[0]].x == self.particles[pr.between[1]].x:
                 raise InputError("the two particles of an inverse-square pair start at the same point "
-                                 "(the force is infinite)", f"pairs.{k}")
+                                 "(the force is infinite): give them distinct positions x", f"pairs.{k}")
         if self.t_end is None and self.at:
             self.t_end = max(self.at)
         if self.t_end is not None:

@@ -146,7 +146,7 @@ def _check_initial(p) -> None:
     if not math.isfinite(a1):
         raise InputError(
             f"a = {p.a.text} is not finite at the initial state (t1 = {_fmt(p.t1)}, s1 = {_fmt(p.s1)}, v1 = {_fmt(p.v1)}): "
-            f"it evaluates to {a1!r}", "a")
+            f"it evaluates to {a1!r}; start where a is defined (change t1, s1 or v1) or correct a", "a")
 
 
 def _distinct(p, keep: list[int]):
@@ -198,6 +198,11 @@ def _solve(p) -> Result:
         res.results["find"] = ans.items
         res.extra["sample"] = lambda times: sample(p, times)
         return res
+
+    from dyncli.topics.rectilinear import coulomb
+
+    if route != "quadrature" and coulomb.by_hand(p.a):
+        raise coulomb.refuse(p.a, case)
 
     def run(rtol, atol):
         return _run(p, case, route, rtol, atol)

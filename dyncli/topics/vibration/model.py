@@ -48,7 +48,8 @@ class Sweep(StrictModel):
         if not lo < hi:
             raise InputError(f"must be [r_min, r_max] with r_min < r_max (got [{lo:g}, {hi:g}])", "sweep.ratio")
         if self.spacing == "log" and lo <= 0:
-            raise InputError("log spacing needs r_min > 0", "sweep.ratio")
+            raise InputError(f"log spacing needs r_min > 0 (got {lo:g}): start the ratios above 0, or use spacing: linear",
+                             "sweep.ratio")
         return self
 
 
