@@ -168,7 +168,7 @@ def _exact_route(pb, times, res, steady):
     is beyond doubles (auto then integrates)."""
     from dyncli.topics.gyroscope.exact_route import ExactRun
 
-    run = ExactRun(pb.I1, pb.I2, pb.p, pb.q, pb.theta0, pb.theta_dot0, times, steady=steady)
+    run = ExactRun(pb.I1, pb.I2, pb.p, pb.q, pb.theta0, pb.theta_dot0, times, steady=steady, rtol=pb.accuracy.rtol)
     if not run.finite:
         msg = "the elliptic solution is not representable in doubles here (next to the separatrix)"
         if pb.accuracy.method == "exact":
