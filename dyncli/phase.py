@@ -13,9 +13,9 @@ few ε, and the reduced phase r = φ·P with ~ε·P — as if t were a small tim
 Written once for a float t (plain floats, no numpy) and for an array (numpy: the same
 operations element by element; Dekker's split there).  Neutral (no topic).
 
->>> ph = ReducedPhase(pair(0.1), pair(0.25), 2.0)
->>> ph.reduce(10.0)          # 0.1 × 10 + 0.25 = 1.25 periods: n = 1, r = 0.25 × 2
-(1.0, 0.5)
+>>> ph = ReducedPhase(pair(0.125), pair(0.25), 2.0)
+>>> ph.reduce(9.0)           # 0.125 × 9 + 0.25 = 1.375 periods: n = 1, r = 0.375 × 2
+(1.0, 0.75)
 >>> two_prod(1.0 + 2.0 ** -30, 1.0 - 2.0 ** -30)     # the product and its rounding error, exactly
 (1.0, -8.673617379884035e-19)
 """
