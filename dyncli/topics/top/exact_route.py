@@ -155,6 +155,11 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
         "round-off of the elliptic solution: the larger of ε·16(1 + λt + periods) (the phase λt + τ0 "
         "formed in floating point) and the residuals of the energy and H_O·e3 integrals at the reported times, "
         "each relative to its scale")
+    if ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > p.accuracy.rtol:
+        from dyncli import runner       # (numpy: only when there is something to say)
+
+        runner.warn_unmet(res, p.accuracy.rtol, res.error_estimate,
+                          what=f"error_estimate (the elliptic solution's round-off over λt = {ex.lam_T:.3g} rad)")
     th_min = min(ex.theta_min, th0)
     th_max = max(ex.theta_max, th0)
     res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)

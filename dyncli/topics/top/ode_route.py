@@ -94,6 +94,10 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
             [(x, y) for k, (x, y) in enumerate(zip(a, b)) if k in REPORTED], [0.0, 0.0, 0.0, fl, fl, 0.0, 0.0]),
         note="the largest difference of ψ, θ, φ, ψ̇, θ̇, φ̇, R, each relative to its scale over the requested "
              "times, from a check solve at {how}", drifts=drifts, steps=nsteps)
+    # issue 28: a measured error above the route's promise (100 × rtol) is said, with its size
+    measured = res.error_estimate if p.accuracy.estimate else max([0.0, *(d for d in drifts if d is not None)])
+    runner.warn_unmet(res, rtol, measured, promise=runner.ODE_PROMISE,
+                      what="the check solve's difference" if p.accuracy.estimate else "the drift of the invariants")
     return out
 
 
