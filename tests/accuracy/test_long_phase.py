@@ -175,3 +175,61 @@ def test_exact_gyroscope_at_long_times_against_40_digits(name):
     assert err <= GOAL, (eth, ethd)
     assert rec["error_estimate"] >= err, (rec["error_estimate"], err)
     assert rec["error_estimate"] <= 1e-13
+
+
+def _gyro_text(name, times, extra=""):
+    I1, I2, p, q, th0, thd0, _ = GYROS[name]
+    return (f"type: gyroscope\nI1: {I1!r}\nI2: {I2!r}\np: {p!r}\nq: {q!r}\ntheta0: {th0!r}\n"
+            f"theta_dot0: {thd0!r}\nat: {times}\n{extra}")
+
+
+def _gyro_error(rec, rows):
+    """θ relative to π, θ̇ to its largest value at the reported times (the route's own scales)."""
+    r = rec["results"]
+    eth = max(abs(float(x - w[0])) for x, w in zip(r["theta"], rows)) / float(mp.pi)
+    ethd = max(abs(float(x - w[1])) for x, w in zip(r["theta_dot"], rows)) / max(abs(float(w[1])) for w in rows)
+    return max(eth, ethd)
+
+
+@pytest.mark.parametrize("name", ["zero_to_pi", "slow"])
+@pytest.mark.parametrize("rtol", [1e-6, 1e-8, 1e-10])
+def test_gyroscope_ode_default_estimate_bounds_the_error_over_many_periods(name, rtol):
+    # issue 28: over ~200 periods the error is the phase's (quadratic in t); rtol × steps alone read
+    # 5-30 times below it; the drift of (37.13) times the phase run bounds it
+    times = [10.0, 100.0]
+    with mp.workdps(DPS):
+        rows, _ = _gyro_reference(*GYROS[name], times)
+    rec = solve_one_text(_gyro_text(name, times, f"accuracy: {{method: DOP853, rtol: {rtol}}}\n"))
+    err = _gyro_error(rec, rows)
+    assert rec["error_estimate"] >= err, (rec["error_estimate"], err)
+
+
+def test_an_ode_route_that_misses_its_promise_says_so():
+    # the drift of (37.13), a measured error, is 4.6e-4 > 100 × rtol
+    rec = solve_one_text(_gyro_text("zero_to_pi", [100.0], "accuracy: {method: DOP853, rtol: 1e-6}\n"))
+    msg = [w for w in rec["warnings"] if "requested accuracy was not met" in w]
+    assert msg and "100 × rtol = 0.0001" in msg[0], rec["warnings"]
+    rec = solve_one_text(_gyro_text("zero_to_pi", [1.0], "accuracy: {method: DOP853, rtol: 1e-10}\n"))
+    assert not any("requested accuracy" in w for w in rec["warnings"]), rec["warnings"]
+
+
+def test_exact_routes_say_when_the_estimate_exceeds_rtol(monkeypatch):
+    # without the double-double phase (as if its 40-digit constants were unavailable) the estimate at
+    # t = 1e6 s is the double phase's ε·16·λt ~ 5e-8: above the default rtol, and said
+    from dyncli.topics.gyroscope import phase as gphase
+    from dyncli.topics.top import phase as tphase
+
+    monkeypatch.setattr(gphase, "long_phase", lambda *a: None)
+    monkeypatch.setattr(tphase, "long_phase", lambda *a: None)
+    for text in (_gyro_text("slow", [1e6]), _top_text(TOPS["nutating"], [1e6])):
+        rec = solve_one_text(text)
+        assert rec["error_estimate"] > 1e-10
+        msg = [w for w in rec["warnings"] if "requested accuracy was not met" in w]
+        assert msg and f"{rec['error_estimate']:.2g}" in msg[0], rec["warnings"]
+    monkeypatch.undo()
+    for text in (_gyro_text("slow", [1e6]), _top_text(TOPS["nutating"], [1e6])):
+        rec = solve_one_text(text)
+        assert rec["error_estimate"] < 1e-13 and not any("requested accuracy" in w for w in rec["warnings"])
+    # a request below what the evaluation can promise (rtol 2.3e-14, the floor): said as well
+    rec = solve_one_text(_gyro_text("zero_to_pi", [1e6], "accuracy: {rtol: 2.3e-14}\n"))
+    assert any("requested accuracy was not met" in w for w in rec["warnings"]), rec["warnings"]
