@@ -51,7 +51,10 @@ class ExactRun:
                 and PHASE_FACTOR * EPS * (1.0 + g.lam * T) > min(rtol, EXTENDED_ABOVE) and math.isfinite(g.K):
             from dyncli.topics.gyroscope.phase import long_phase
 
-            g.phase = long_phase((I1, I2, p, q, th0, thd0), g)
+            try:
+                g.phase = long_phase((I1, I2, p, q, th0, thd0), g)
+            except (ArithmeticError, ValueError):     # degenerate at 40 digits: the double phase stays
+                g.phase = None
             self.extended = g.phase is not None
         states = [g.evaluate(x) for x in t]
         self.theta, self.theta_dot = [th for th, _ in states], [thd for _, thd in states]

@@ -75,7 +75,10 @@ class ExactRun:
         from dyncli.topics.top.phase import long_phase
 
         mgl = (top.m, top.g, top.L) if all(hasattr(top, k) for k in ("m", "g", "L")) else (top.mgL, 1.0, 1.0)
-        ex.phase = long_phase((*mgl, top.A, top.C, *state), ex.nut, ex.tau0)
+        try:
+            ex.phase = long_phase((*mgl, top.A, top.C, *state), ex.nut, ex.tau0)
+        except (ArithmeticError, ValueError):     # a degenerate motion at 40 digits: the double phase stays
+            ex.phase = None
         self.extended = ex.phase is not None
 
     def _bounds(self, theta0):
