@@ -31,9 +31,13 @@ def _ode_method(p) -> str:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    from . import work
+    from . import orbit, work
 
     F = Forces(p)
+    notes: list[str] = []
+    orb = orbit.choose(p, notes)
+    if orb is not None:
+        return orbit.solve_exact(p, F, orb)
     rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
     times = [float(t) for t in p.at]
     # the work of one non-conservative term is W_nc (less the uniform terms' exact work); of
@@ -47,6 +51,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res.extra["nfev"] = traj.nfev
     res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     res.extra["nsteps"] = traj.nsteps
+    res.extra["state"] = res.extra["sample"].state
+    for msg in notes:
+        res.warn(msg)
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
                  f"DOP853 reported: {switched}")
@@ -96,6 +103,11 @@ class _Sampler:
             self.traj = integrate(p, self.F, float(p.accuracy.rtol), float(p.accuracy.atol), self.method,
                                   max_steps=p.accuracy.max_steps, times=self.times, dense=True)
         return _at_times(self.traj, self.F, ts)
+
+    def state(self, t: float) -> dict:
+        """The reported results at one time t (single values), from the dense output."""
+        S = self([float(t)])
+        return {k: (S[k][:, 0].tolist() if S[k].ndim == 2 else float(S[k][0])) for k in REPORTED}
 
 
 def _integrate_route(p, F, rtol, atol, times, dense):

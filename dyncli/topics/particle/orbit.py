@@ -1,0 +1,144 @@
+"""The exact route of ``particle``: an inverse-square central force alone is the Kepler problem
+(notes §19 (19.18), §21), solved without integrating (:mod:`~dyncli.topics.particle.kepler`).
+
+The route is taken when every force term is ``inverse-square`` about one centre (their strengths
+add) and ``accuracy.method`` is ``auto`` or ``exact``; any other term, or ``method: ode`` or a
+scipy integrator, keeps the ODE.  The state at any time comes from Kepler's equation; the
+reported results are those of the ODE route at the same times (through the same reporting code,
+on a trajectory whose one phase is the conic) plus ``orbit``.  ``res.extra["state"]`` is
+``state(t) -> {result: value}`` at one time (for ``find``), ``res.extra["sample"]`` the arrays at
+many times (plots).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import InputError
+from dyncli.result import Result, Series
+from dyncli.topics.particle.kepler import EPS, Orbit
+from dyncli.topics.particle.trajectory import OdePhase, Trajectory
+
+#: the error_estimate note of the exact route
+NOTE = ("round-off of the Kepler solution: 8 ε (1 + t_max v_p/r_p), the rounding of the time (and of the "
+        "mean motion) carried through the fastest rate of the orbit, relative to each quantity's scale")
+
+
+def kepler_field(p):
+    """(centre, mu = g R0² summed) when every force term is inverse-square about one centre, else None."""
+    if not p.forces or any(f.kind != "inverse-square" for f in p.forces):
+        return None
+    centres = {tuple(map(float, f.center)) for f in p.forces}
+    if len(centres) != 1:
+        return None
+    mu = sum(float(p.g if f.g is None else f.g) * float(f.R0) * float(f.R0) for f in p.forces)
+    return np.array(next(iter(centres))), mu
+
+
+def choose(p, res_warn):
+    """The Orbit when the exact route solves ``p``, else None (the ODE route).  ``accuracy.method:
+    exact`` on another problem is refused (exit 2); a radial orbit (h = 0) goes to the ODE with a
+    warning under ``auto`` and is refused under ``exact``."""
+    method = p.accuracy.method
+    if method not in ("auto", "exact"):
+        return None
+    field = kepler_field(p)
+    if field is None:
+        if method == "exact":
+            raise InputError("accuracy.method exact solves an inverse-square central force alone (Kepler's "
+                             "equation); these forces need the ODE: use auto or ode", "accuracy.method")
+        return None
+    c, mu = field
+    if not math.isfinite(mu):
+        return None                     # the Forces refuse it with their own message
+    orb = Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
+    if orb.radial:
+        msg = ("the orbit is radial (x0 − center parallel to v0, angular momentum 0): it has no conic "
+               "plane, and the particle falls into the centre unless it escapes")
+        if method == "exact":
+            raise InputError(msg + "; the exact route does not solve it: use accuracy.method ode", "accuracy.method")
+        res_warn.append(msg + "; integrated by the ODE route")
+        return None
+    return orb
+
+
+def solve_exact(p, F, orb: Orbit) -> Result:
+    """The Kepler route's Result: the reported quantities at ``at`` from the conic, ``orbit``,
+    the collision and surface warnings, a round-off error estimate."""
+    from . import solver as sv
+
+    c = np.asarray(next(iter(p.forces)).center, float)
+    times = [float(t) for t in p.at]
+    traj = _trajectory(orb, c, F, float(p.t_end), times)
+    S = sv._at_times(traj, F, times, steps=True)
+    resid, scale = sv._energy_residual(p, F, S)
+    res = Result(sv._reported(S, resid), method="exact", equations=_equations(),
+                 series=[Series("t", times, list(sv.REPORTED))])
+    sv._report_terms(res, p, F, traj, S)
+    res.results["orbit"] = orbit_results(orb)
+    _warn_surface(res, p, orb)
+    t_max = max(times) if times else 0.0
+    res.error_estimate = 8 * EPS * (1.0 + t_max * (orb.h / orb.r_p) / orb.r_p) if times else 0.0
+    res.extra["error_estimate_note"] = NOTE
+    res.extra["energy_scale"] = scale
+    res.extra["nfev"] = 0
+    res.extra["sample"] = lambda ts: sv._at_times(traj, F, ts)
+    res.extra["state"] = lambda t: state_at(traj, F, t)
+    res.extra["orbit"] = orb
+    return res
+
+
+def state_at(traj, F, t: float) -> dict:
+    """The reported results at one time t (single values): x, v, a, T, V, E, W_nc, H_O."""
+    from . import solver as sv
+
+    S = sv._at_times(traj, F, [float(t)])
+    return {k: (S[k][:, 0].tolist() if S[k].ndim == 2 else float(S[k][0])) for k in sv.REPORTED}
+
+
+def _trajectory(orb: Orbit, c, F, t_end: float, times) -> Trajectory:
+    """A trajectory of one phase whose 'dense output' is the conic: the reporting code of the ODE
+    route reads it as it reads an integrated run (its steps: the requested times)."""
+
+    def sol(t):
+        scalar = np.ndim(t) == 0
+        X, V = orb.state(np.atleast_1d(np.asarray(t, float)))
+        Y = np.concatenate([X + c[:, None], V, np.zeros((1, X.shape[1]))])
+        return Y[:, 0] if scalar else Y
+
+    ts = np.array(sorted(set(times) | {0.0, t_end}))
+    phase = OdePhase(0.0, t_end, sol, F.make_rhs(np.zeros(3)), ts, sol(ts))
+    return Trajectory([phase], [], 0, dense=True)
+
+
+def orbit_results(orb: Orbit) -> dict:
+    """``orbit``: e, a (null on a parabola, < 0 on a hyperbola), r_p, r_a and period (null when
+    open), the speeds at the apsides (h/r), the circular and escape speeds at the start."""
+    closed = orb.kind == "elliptic"
+    v_c = math.sqrt(orb.mu / orb.R0)
+    return {"e": float(orb.e), "a": float(orb.a) if math.isfinite(orb.a) else None, "r_p": float(orb.r_p),
+            "r_a": float(orb.r_a) if closed else None, "period": float(orb.period) if closed else None,
+            "v_p": orb.h / orb.r_p, "v_a": orb.h / orb.r_a if closed else None,
+            "v_circular": v_c, "v_escape": math.sqrt(2.0) * v_c}
+
+
+def _warn_surface(res, p, orb: Orbit) -> None:
+    """r_p below R0 (the radius of the attracting body): when the path reaches R0 before t_end,
+    say when (past it the motion is that of a point mass through the body)."""
+    R0 = max(float(f.R0) for f in p.forces)
+    if orb.r_p >= R0 * (1 - 1e-9):
+        return
+    t_hit = orb.time_at_radius(R0, float(p.t_end))
+    if orb.R0 < R0 * (1 - 1e-9):
+        res.warn(f"the particle starts inside R0 = {R0:g} m of the inverse-square centre (R = {orb.R0:.6g} m): "
+                 "below the surface of the attracting body")
+    elif t_hit is not None:
+        res.warn(f"the orbit meets the surface R = R0 = {R0:g} m of the attracting body at t = {t_hit:.6g} s "
+                 f"(its perigee r_p = {orb.r_p:.6g} m is below R0): a collision; past it the results are "
+                 "those of a point mass passing through the body")
+
+
+def _equations() -> list[str]:
+    return ["16.7", "18.6", "19.18", "19.20b", "20.5", "21.3", "21.8"]
