@@ -125,19 +125,24 @@ def orbit_results(orb: Orbit) -> dict:
 
 
 def _warn_surface(res, p, orb: Orbit) -> None:
-    """r_p below R0 (the radius of the attracting body): when the path reaches R0 before t_end,
-    say when (past it the motion is that of a point mass through the body)."""
+    """A path below R0 (the radius of the attracting body) before t_end: its least distance (the
+    perigee when it is passed, else an end of the run) and the time it meets R = R0 (a collision;
+    past it the motion is that of a point mass through the body)."""
     R0 = max(float(f.R0) for f in p.forces)
+    t_end = float(p.t_end)
     if orb.r_p >= R0 * (1 - 1e-9):
         return
-    t_hit = orb.time_at_radius(R0, float(p.t_end))
-    if orb.R0 < R0 * (1 - 1e-9):
-        res.warn(f"the particle starts inside R0 = {R0:g} m of the inverse-square centre (R = {orb.R0:.6g} m): "
-                 "below the surface of the attracting body")
-    elif t_hit is not None:
-        res.warn(f"the orbit meets the surface R = R0 = {R0:g} m of the attracting body at t = {t_hit:.6g} s "
-                 f"(its perigee r_p = {orb.r_p:.6g} m is below R0): a collision; past it the results are "
-                 "those of a point mass passing through the body")
+    tp = orb.perigee_time()
+    if tp is not None and tp <= t_end:
+        Rmin = orb.r_p
+    else:
+        Rmin = min(orb.R0, float(orb.anomalies(np.array([t_end]))[0][0]))
+    if Rmin >= R0 * (1 - 1e-9):
+        return
+    t_hit = orb.time_at_radius(R0, t_end) if orb.R0 >= R0 else 0.0
+    when = f"; it meets R = R0 at t = {t_hit:.6g} s: a collision with the body" if t_hit is not None else ""
+    res.warn(f"the path passes inside R0 = {R0:g} m of the inverse-square centre (R_min = {Rmin:.6g} m): "
+             f"below the surface of the attracting body{when}")
 
 
 def _equations() -> list[str]:
