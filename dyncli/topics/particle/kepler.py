@@ -119,15 +119,12 @@ def kepler_H(M, e: float, e_minus_one: float | None = None):
 
 def barker_D(B):
     """D = tan(ν/2) of Barker's equation D + D³/3 = B (a parabola, B = 2 sqrt(mu/p³)(t − t_p)): the
-    real root of D³ + 3D − 3B = 0, D = y − 1/y with y = cbrt(3B/2 + sqrt(9B²/4 + 1)) (odd in B).
+    real root of D³ + 3D − 3B = 0, D = 2 sinh(asinh(3B/2)/3) (no cancellation at any B).
 
     >>> D = float(barker_D(4 / 3)); round(D, 14)
     1.0
     """
-    B = np.asarray(B, float)
-    b = np.abs(1.5 * B)
-    y = np.cbrt(b + np.hypot(b, 1.0))
-    return np.sign(B) * (y - 1.0 / y)
+    return 2 * np.sinh(np.arcsinh(1.5 * np.asarray(B, float)) / 3)
 
 
 def inverse_a(mu: float, r, v) -> float:

@@ -37,6 +37,16 @@ def kepler_field(p):
     return np.array(next(iter(centres))), mu
 
 
+def conic(p, field=None):
+    """The Orbit of the initial state when the forces are an inverse-square field alone (radial
+    or not), else None."""
+    field = field or kepler_field(p)
+    if field is None or not math.isfinite(field[1]):
+        return None                     # (an overflowing field: the Forces refuse it)
+    c, mu = field
+    return Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
+
+
 def choose(p, res_warn):
     """The Orbit when the exact route solves ``p``, else None (the ODE route).  ``accuracy.method:
     exact`` on another problem is refused (exit 2); a radial orbit (h = 0) goes to the ODE with a
@@ -50,10 +60,9 @@ def choose(p, res_warn):
             raise InputError("accuracy.method exact solves an inverse-square central force alone (Kepler's "
                              "equation); these forces need the ODE: use auto or ode", "accuracy.method")
         return None
-    c, mu = field
-    if not math.isfinite(mu):
-        return None                     # the Forces refuse it with their own message
-    orb = Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
+    orb = conic(p, field)
+    if orb is None:
+        return None
     if orb.radial:
         msg = ("the orbit is radial (x0 − center parallel to v0, angular momentum 0): it has no conic "
                "plane, and the particle falls into the centre unless it escapes")

@@ -47,6 +47,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res = Result({}, method=f"ode:{method}", equations=_equations(F))
     if F.inv and p.t_end > 0:           # an orbit: the nominal estimate cannot be trusted
         traj = _to_promise(res, p, F, traj, method, rtol, atol, times, dense)
+    orb = orbit.conic(p)
+    if orb is not None and not orb.radial:
+        res.results["orbit"] = orbit.orbit_results(orb)
     S = _at_times(traj, F, times, steps=True)
     resid, scale = _energy_residual(p, F, S)
     res.results.update(_reported(S, resid))
