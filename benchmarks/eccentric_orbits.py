@@ -57,15 +57,19 @@ def error(ode, ref) -> float:
 
 
 def main(estimate: bool = False) -> None:
-    print("| e | rtol | error / rtol | estimate / error | steps | time [s] |")
-    print("|---|---|---|---|---|---|")
+    print("| e | rtol | error / rtol | estimate / error | internal rtol | steps | time [s] | warning |")
+    print("|---|---|---|---|---|---|---|---|")
     for e in (0.5, 0.9, 0.97):
         for rtol in (1e-6, 1e-8, 1e-10, 1e-12):
             ref, _ = solve(problem(e, rtol, "exact"))
             ode, dt = solve(problem(e, rtol, "DOP853", estimate))
             err = error(ode, ref)
             est = ode.error_estimate
-            print(f"| {e} | {rtol:.0e} | {err / rtol:.3g} | {est / err:.3g} | {ode.extra.get('nsteps')} | {dt:.2f} |")
+            note = ode.extra.get("error_estimate_note", "")
+            inner = note.split("tightened to ")[1].split(" ")[0] if "tightened to" in note else f"{rtol:.0e}"
+            missed = any("not met" in w for w in ode.warnings)
+            print(f"| {e} | {rtol:.0e} | {err / rtol:.3g} | {est / err:.3g} | {inner} | {ode.extra.get('nsteps')} "
+                  f"| {dt:.2f} | {'not met' if missed else ''} |")
 
 
 if __name__ == "__main__":
