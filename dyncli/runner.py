@@ -233,7 +233,9 @@ def solve_to_promise(res, run, difference, rtol: float, atol: float, out=None):
     res.extra["error_estimate_note"] = (f"{MARGIN:g} x the largest difference of every reported quantity, each "
                                         f"relative to its scale, from a check solve at rtol/100{tight}")
     if est > PROMISE * rtol:
+        why = ("at its floor: the integrator cannot do better in double precision" if r <= TIGHTEST else
+               "the step budget stopped it: raise accuracy.max_steps")
         res.warn(f"the requested accuracy is not met: error_estimate {est:.2g} is above {PROMISE:g} x rtol = "
-                 f"{PROMISE * rtol:.2g} (internal rtol {r:.2g}); loosen accuracy.rtol to at least {est / PROMISE:.2g}, "
-                 "or raise accuracy.max_steps if the budget stopped it")
+                 f"{PROMISE * rtol:.2g} (internal rtol {r:.2g}, {why}); an rtol of {est / PROMISE:.2g} is what "
+                 "this run delivers")
     return out, r

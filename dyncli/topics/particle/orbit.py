@@ -111,10 +111,14 @@ def _trajectory(orb: Orbit, c, F, t_end: float, times) -> Trajectory:
     """A trajectory of one phase whose 'dense output' is the conic: the reporting code of the ODE
     route reads it as it reads an integrated run (its steps: the requested times)."""
 
+    y0 = np.concatenate([orb.r0 + c, orb.v0, [0.0]])
+
     def sol(t):
         scalar = np.ndim(t) == 0
-        X, V = orb.state(np.atleast_1d(np.asarray(t, float)))
+        t = np.atleast_1d(np.asarray(t, float))
+        X, V = orb.state(t)
         Y = np.concatenate([X + c[:, None], V, np.zeros((1, X.shape[1]))])
+        Y[:, t == 0.0] = y0[:, None]            # the state at t = 0 is the input, exactly
         return Y[:, 0] if scalar else Y
 
     ts = np.array(sorted(set(times) | {0.0, t_end}))

@@ -10,7 +10,10 @@ energy equation (20.4) E − E1 = W_nc becomes a built-in accuracy check (``ener
 
 ``error_estimate`` (the runner's policy, dyncli/ode.py): relative to each reported quantity's
 scale.  With ``accuracy.estimate`` a check solve (:func:`_check_estimate`); else nominal: rtol,
-or the relative energy residual when larger (:func:`dyncli.ode.nominal_estimate`).
+or the relative energy residual when larger (:func:`dyncli.ode.nominal_estimate`).  Under an
+inverse-square force (an orbit, whose perigee passage amplifies a phase error beyond the nominal
+estimate) the run is solved to its promise (:func:`_to_promise`).  An inverse-square force
+alone takes the exact Kepler route instead (:mod:`~dyncli.topics.particle.orbit`).
 """
 
 from __future__ import annotations
@@ -88,6 +91,7 @@ def _to_promise(res, p, F, traj, method, rtol, atol, times, dense) -> Trajectory
     100 x rtol (docs/accuracy.md: on an eccentric orbit the nominal estimate was 0.0004-0.6 of the
     true error, itself 500-700,000 x rtol, benchmarks/eccentric_orbits.py).  The check runs
     take steps at most half the reported run's longest (:func:`_check_estimate`)."""
+    from . import orbit
 
     def run(r, a, ref):
         hmax = ref.hmax / 2 if ref is not None and ref.hmax > 0 else math.inf
@@ -99,6 +103,9 @@ def _to_promise(res, p, F, traj, method, rtol, atol, times, dense) -> Trajectory
         return ode.relative_difference([(S1[k], S2[k]) for k in REPORTED])
 
     out, _ = runner.solve_to_promise(res, run, difference, rtol, atol, out=traj)
+    if res.error_estimate is not None and res.error_estimate > runner.PROMISE * rtol and orbit.kepler_field(p):
+        res.warn("an inverse-square force alone is solved to rounding by the exact route (Kepler's "
+                 "equation): leave accuracy.method at auto, or set it to exact")
     return out
 
 

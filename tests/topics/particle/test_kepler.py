@@ -247,3 +247,11 @@ def test_collision_with_the_body_is_said_with_its_time():
         E = 2 * mp.pi - mp.acos((1 - mp.mpf(6371000) / a) / e)
         t = (E - e * mp.sin(E) - mp.pi) * mp.sqrt(a ** 3 / mu)
     assert f"t = {float(t):.6g} s" in w
+
+
+def test_the_state_at_t0_is_the_input_exactly():
+    x0, v0 = perigee_state(0.3, incline=0.2)
+    x0 = x0 + np.array([123.4, 0, 0])
+    rec = solve_one_text(text(x0, v0, [0, 10.0]))
+    assert rec["results"]["x"][0] == [float(c) for c in x0]
+    assert rec["results"]["v"][0] == [float(c) for c in v0]
