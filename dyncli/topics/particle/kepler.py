@@ -144,6 +144,31 @@ def inverse_a(mu: float, r, v) -> float:
     return float(num) / ((2 * mu + R * v2) * R * mu)
 
 
+def radial_fall_time(mu: float, R: float, rdot: float):
+    """The time after which a particle on a radial line (h = 0) at distance R with radial speed
+    ṙ reaches the centre, or None when it escapes (ṙ >= 0 at or above the escape speed).
+    Bound (energy < 0): r = a(1 − cos E), t = sqrt(a³/mu)(E − sin E), the centre at E = 2π;
+    unbound falling in: r = A(cosh H − 1), t = sqrt(A³/mu)(sinh H − H), the centre at H = 0;
+    at the escape speed exactly: t = (2/3) R^1.5/sqrt(2 mu).
+
+    >>> round(radial_fall_time(1.0, 1.0, 0.0) / (math.pi / 2 / math.sqrt(2)), 14)   # from rest
+    1.0
+    """
+    eps = rdot * rdot / 2 - mu / R
+    if eps < 0:
+        a = -mu / (2 * eps)
+        E0 = math.acos(min(max(1 - R / a, -1.0), 1.0))
+        E0 = E0 if rdot >= 0 else 2 * math.pi - E0
+        return math.sqrt(a ** 3 / mu) * (2 * math.pi - E0 + math.sin(E0))
+    if rdot >= 0:
+        return None
+    if eps == 0:
+        return 2 / 3 * R ** 1.5 / math.sqrt(2 * mu)
+    A = mu / (2 * eps)
+    H0 = math.acosh(1 + R / A)
+    return math.sqrt(A ** 3 / mu) * float(sinh_minus(H0))
+
+
 class Orbit:
     """The conic of a state (r, v) about the centre under mu = g R0²; ``state(t)`` at any time.
 

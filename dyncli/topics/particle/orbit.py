@@ -64,13 +64,29 @@ def choose(p, res_warn):
     if orb is None:
         return None
     if orb.radial:
-        msg = ("the orbit is radial (x0 − center parallel to v0, angular momentum 0): it has no conic "
-               "plane, and the particle falls into the centre unless it escapes")
-        if method == "exact":
-            raise InputError(msg + "; the exact route does not solve it: use accuracy.method ode", "accuracy.method")
-        res_warn.append(msg + "; integrated by the ODE route")
+        _radial(p, orb, res_warn)
         return None
     return orb
+
+
+def _radial(p, orb: Orbit, res_warn) -> None:
+    """A radial orbit (h = 0): no conic plane.  Falling into the centre before t_end is refused
+    (the force is infinite there) with the time it happens; else the ODE route with a warning
+    (``accuracy.method: exact`` refuses it)."""
+    from dyncli.topics.particle.kepler import radial_fall_time
+
+    R = orb.R0
+    t_c = radial_fall_time(orb.mu, R, float(orb.r0 @ orb.v0) / R)
+    msg = "the orbit is radial (x0 − center parallel to v0, angular momentum 0)"
+    if t_c is not None and t_c <= float(p.t_end):
+        raise InputError(f"{msg}: the particle falls into the centre of the inverse-square field at "
+                         f"t = {t_c:.6g} s, before t_end, where the force is infinite (a collision): take "
+                         f"t_end (and every time of at) below {t_c:.6g} s", "t_end")
+    if p.accuracy.method == "exact":
+        raise InputError(msg + ": it has no conic plane and the exact route does not solve it; use "
+                         "accuracy.method ode", "accuracy.method")
+    fall = f"; it reaches the centre at t = {t_c:.6g} s" if t_c is not None else "; it escapes"
+    res_warn.append(msg + fall + "; integrated by the ODE route")
 
 
 def solve_exact(p, F, orb: Orbit) -> Result:

@@ -234,6 +234,38 @@ def test_radial_orbit_goes_to_the_ode_and_exact_refuses_it():
     assert "radial" in error_of(base + "accuracy: {method: exact}\n")
 
 
+def test_radial_fall_into_the_centre_is_refused_with_its_time():
+    # dropped from rest at r0: the free-fall time (pi/2) sqrt(r0³/(2 mu)), in mpmath
+    with mp.workdps(30):
+        t_c = mp.pi / 2 * mp.sqrt(mp.mpf(7e6) ** 3 / (2 * mp.mpf(9.81) * mp.mpf(6371000) ** 2))
+    msg = error_of("type: particle\nm: 1\nx0: [7e6, 0, 0]\nt_end: 5000\nforces: [{kind: inverse-square, R0: 6371000}]\n")
+    assert "t_end" in msg and f"t = {float(t_c):.6g} s" in msg and "falls into the centre" in msg
+    rec = solve_one_text("type: particle\nm: 1\nx0: [7e6, 0, 0]\nt_end: 100\nforces: [{kind: inverse-square, R0: 6371000}]\n")
+    assert any(f"reaches the centre at t = {float(t_c):.6g} s" in w for w in rec["warnings"])
+
+
+@pytest.mark.parametrize("rdot", [3000.0, -3000.0, -20000.0])
+def test_radial_fall_time_against_mpmath(rdot):
+    from dyncli.topics.particle.kepler import radial_fall_time
+
+    mu, R = 3.986e14, 7.0e6
+    with mp.workdps(30):
+        # t = ∫ dr / |ṙ(r)| along the way out (to the apex, if bound) and in, ṙ² = 2(ε + mu/r)
+        eps = mp.mpf(rdot) ** 2 / 2 - mp.mpf(mu) / R
+        def fall(r):    # the time from r to the centre: ∫ dr/|ṙ|, ṙ² = 2(eps + mu/r)
+            if eps >= 0:
+                return mp.quad(lambda x: mp.sqrt(x / (2 * (eps * x + mu))), [0, r])
+            apex = -mp.mpf(mu) / eps      # r = apex sin²φ takes the apex's 1/sqrt away
+            return mp.quad(lambda f: 2 * apex * mp.sqrt(apex / (2 * mu)) * mp.sin(f) ** 2,
+                           [0, mp.asin(mp.sqrt(r / apex))])
+
+        if eps < 0 and rdot > 0:            # up to the apex, then all the way down
+            t = 2 * fall(-mp.mpf(mu) / eps) - fall(R)
+        else:
+            t = fall(R)
+    assert radial_fall_time(mu, R, rdot) == pytest.approx(float(t), rel=1e-12)
+
+
 def test_collision_with_the_body_is_said_with_its_time():
     # released at apogee r = 7e6 m with too little speed: r_p < R0 = 6371 km
     v = 5000.0
