@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result, Series
 from dyncli.topics.particle.kepler import EPS, Orbit
 from dyncli.topics.particle.trajectory import OdePhase, Trajectory
@@ -70,8 +70,8 @@ def choose(p, res_warn):
 
 
 def _radial(p, orb: Orbit, res_warn) -> None:
-    """A radial orbit (h = 0): no conic plane.  Falling into the centre before t_end is refused
-    (the force is infinite there) with the time it happens; else the ODE route with a warning
+    """A radial orbit (h = 0): no conic plane.  Falling into the centre before t_end fails (exit 1,
+    as the integration would: the force is infinite there) with the time it happens; else the ODE route with a warning
     (``accuracy.method: exact`` refuses it)."""
     from dyncli.topics.particle.kepler import radial_fall_time
 
@@ -79,9 +79,9 @@ def _radial(p, orb: Orbit, res_warn) -> None:
     t_c = radial_fall_time(orb.mu, R, float(orb.r0 @ orb.v0) / R)
     msg = "the orbit is radial (x0 − center parallel to v0, angular momentum 0)"
     if t_c is not None and t_c <= float(p.t_end):
-        raise InputError(f"{msg}: the particle falls into the centre of the inverse-square field at "
-                         f"t = {t_c:.6g} s, before t_end, where the force is infinite (a collision): take "
-                         f"t_end (and every time of at) below {t_c:.6g} s", "t_end")
+        raise NumericalError(f"{msg}: the particle falls into the centre of the inverse-square field at "
+                             f"t = {t_c:.6g} s, before t_end, where the force is infinite (a collision): take "
+                             f"t_end (and every time of at) below {t_c:.6g} s")
     if p.accuracy.method == "exact":
         raise InputError(msg + ": it has no conic plane and the exact route does not solve it; use "
                          "accuracy.method ode", "accuracy.method")

@@ -16,7 +16,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from tests.conftest import error_of, solve_one_text
+from tests.conftest import error_of, run_cli, solve_one_text
 from tests.topics.particle import kepler_ref as ref
 
 MU = 3.986004418e14           # g R0² with R0 = 6371 km
@@ -238,8 +238,9 @@ def test_radial_fall_into_the_centre_is_refused_with_its_time():
     # dropped from rest at r0: the free-fall time (pi/2) sqrt(r0³/(2 mu)), in mpmath
     with mp.workdps(30):
         t_c = mp.pi / 2 * mp.sqrt(mp.mpf(7e6) ** 3 / (2 * mp.mpf(9.81) * mp.mpf(6371000) ** 2))
-    msg = error_of("type: particle\nm: 1\nx0: [7e6, 0, 0]\nt_end: 5000\nforces: [{kind: inverse-square, R0: 6371000}]\n")
-    assert "t_end" in msg and f"t = {float(t_c):.6g} s" in msg and "falls into the centre" in msg
+    rc, _, msg = run_cli("solve", "-", input="type: particle\nm: 1\nx0: [7e6, 0, 0]\nt_end: 5000\n"
+                                             "forces: [{kind: inverse-square, R0: 6371000}]\n")
+    assert rc == 1 and "t_end" in msg and f"t = {float(t_c):.6g} s" in msg and "falls into the centre" in msg
     rec = solve_one_text("type: particle\nm: 1\nx0: [7e6, 0, 0]\nt_end: 100\nforces: [{kind: inverse-square, R0: 6371000}]\n")
     assert any(f"reaches the centre at t = {float(t_c):.6g} s" in w for w in rec["warnings"])
 
