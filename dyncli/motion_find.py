@@ -173,15 +173,25 @@ class Odometer:
         return (self.cum[k] + part + 0.0).tolist()
 
 
-def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float]) -> list[float]:
-    """The distance travelled by one coordinate s(t) that is monotonic between the ``turns``:
-    Σ|Δs| over the pieces, exact to the rounding of s (no quadrature)."""
-    turns = sorted(float(t) for t in turns)
+def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float],
+                   t0: float = 0.0) -> list[float]:
+    """The distance travelled since ``t0`` by one coordinate s(t) that is monotonic between the
+    ``turns``: Σ|Δs| over the pieces, exact to the rounding of s (no quadrature); s is evaluated
+    once at each turning point."""
+    turns = sorted(float(t) for t in turns if t > t0)
+    at_turn = [s(t) for t in turns]
+    cum = [0.0]
+    prev = s(t0)
+    for v in at_turn:
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
     out = []
+    import bisect
+
     for t in (float(x) for x in times):
-        pts = [x for x in turns if x < t]
-        knots = pts + [t]
-        out.append(sum(abs(s(b) - s(a)) for a, b in zip(knots, knots[1:])) + 0.0)
+        k = bisect.bisect_left(turns, t)            # turning points strictly before t
+        last = at_turn[k - 1] if k else s(t0)
+        out.append(cum[k] + abs(s(t) - last) + 0.0)
     return out
 
 
