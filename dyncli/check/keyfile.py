@@ -174,7 +174,9 @@ class _Reader:
             self.rejected.add(q.id)
 
     def fields(self, q: Question, item: dict, path: tuple) -> None:
-        qid = item.get("id")
+        from dyncli.check.submission import as_written
+
+        qid = as_written(self.doc, path + ("id",), item.get("id"))
         if isinstance(qid, bool) or not isinstance(qid, (str, int)) or not str(qid).strip() \
                 or len(str(qid)) > MAX_ID or oneline(qid) != str(qid):
             raise _Bad(path + ("id",), f"id must be a short name (1 to {MAX_ID} printable characters)", key=False)
@@ -198,6 +200,9 @@ class _Reader:
             q.partial = self.partial(item["partial"], path + ("partial",))
         if "carry" in item:
             q.carry = self.carry(item["carry"], path + ("carry",))
+            from dyncli.check.submission import as_written
+
+            q.carry = (str(as_written(self.doc, path + ("carry", "from"), item["carry"]["from"])), q.carry[1])
         if "visible" in item:
             if not isinstance(item["visible"], bool):
                 raise _Bad(path + ("visible",), "visible must be true or false", key=False)

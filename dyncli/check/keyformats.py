@@ -101,6 +101,9 @@ def question_json(q: QuestionResult, reveal: bool) -> dict:
            "message": q.message, "given": jsonable(q.given), "answer": q.answer, "title": q.title,
            "visible": q.visible, "line": q.line, "col": q.col,
            "relative_error": jsonable(rel) if q.status not in ("correct", "carried") else None}
+    if q.carried_rel_error is not None and q.status not in ("correct", "carried"):
+        c = q.carried_rel_error
+        rec["carried_relative_error"] = jsonable(c if reveal else round2(c))
     if reveal and q.status != "error":
         rec["expected"] = jsonable(q.expected)
     return rec
@@ -224,7 +227,9 @@ def render_gradescope(report: KeyReport) -> str:
         for q in s.questions:
             out = STATUS_TEXT[q.status]
             text = feedback(q, report.reveal)
-            if text:
+            if text.startswith(out):          # "not graded: ..." says its status itself
+                out = text
+            elif text:
                 out += f": {text}"
             if q.given is not None and q.status not in ("correct",):
                 out += f"\ngiven: {_given(q)}"

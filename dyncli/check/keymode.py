@@ -18,11 +18,13 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from dyncli.check.compare import compare, has_unit_text
+from dyncli.check import carry
+from dyncli.check.compare import compare, has_unit_text, rel_text as _pct
 from dyncli.check.diagnose import TEXT, diagnose
 from dyncli.check.engine import _diag_from_message, lookup
 from dyncli.check.keyfile import Key, Question
 from dyncli.check.quantities import NO_UNIT, UnitSpec, WrongDimension, convert, result_unit, unit_spec
+from dyncli.check.formats import fmt_given
 from dyncli.check.safe import shown
 from dyncli.check.submission import Submission
 from dyncli.loader import Diagnostic, LoadedProblem
@@ -52,6 +54,7 @@ class QuestionResult:
     diagnosis: str | None = None
     message: str = ""
     rel_error: float | None = None
+    carried_rel_error: float | None = None   # from the answer that follows from the student's carried input
     line: int | None = None
     col: int | None = None
     visible: bool = True
@@ -234,8 +237,10 @@ class KeyGrader:
                            title=title, answer=q.answer)
         t = self.truth(q, sub.student)
         r.expected = t.value
-        if t.error:
-            r.status, r.message = "error", f"not graded: the key's problem could not be solved ({t.error})"
+        if t.error:   # the detail may quote values derived from true answers: only with --reveal
+            r.status = "error"
+            r.message = ("not graded: the key's problem could not be solved for this variant"
+                         + (f" ({t.error})" if self.reveal else " (tell your instructor: --selftest shows why)"))
             sr.error_code = max(sr.error_code, t.code)
             return r
         if r.given is None:
@@ -258,7 +263,7 @@ class KeyGrader:
 
     def _carried(self, q: Question, sub: Submission, r: QuestionResult, spec: UnitSpec) -> bool:
         """Grade against the problem re-solved with the student's answer to
-        the question this one carries from (when that answer was not correct)."""
+        the question this one carries from (:mod:`dyncli.check.carry`)."""
         if q.carry is None or sub.answers.get(q.carry[0]) is None:
             return False
         src = self.key.question(q.carry[0])
@@ -267,14 +272,52 @@ class KeyGrader:
             return False
         src_spec = self.unit(src, true_src, sub.answers[src.id])
         mine = _si_scalar(sub.answers[src.id], src_spec)
-        if mine is None or compare(sub.answers[src.id], true_src.value, src.tol, src_spec).correct:
+        if mine is None:
             return False
-        alt = self.truth(q, sub.student, carried=mine)
-        if alt.error or not compare(r.given, alt.value, q.tol, spec).correct:
+        src_ok = compare(sub.answers[src.id], true_src.value, src.tol, src_spec).correct
+        if not self.plausible(src, mine, sub):
+            if not src_ok:
+                r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: it is too far "
+                              f"from any value {shown(src.id)} can have (more than {carry.WINDOW:g} times off)")
             return False
-        r.status, r.score, r.diagnosis, r.rel_error = "carried", q.points, None, None
-        r.message = f"correct with your answer to {shown(src.id)} carried forward"
-        return True
+        h = carry.halfwidth(sub.answers[src.id], sub.written.get(src.id), mine)
+        points = (mine - h, mine, mine + h) if h > 0 else (mine,)
+        alts = [self.truth(q, sub.student, carried=c) for c in points]
+        g = _si_scalar(r.given, spec)
+        if g is not None and carry.repeats(g, mine, q.tol):
+            if not src_ok:
+                r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: your answer "
+                              f"repeats it and shows nothing of this question's own part")
+            return False
+        values = [None if a.error else a.value for a in alts]
+        if any(v is not None and compare(r.given, v, q.tol, spec).correct for v in values) or \
+                carry.between(g, [scalar(v) for v in values]):
+            r.status, r.score, r.diagnosis, r.rel_error = "carried", q.points, None, None
+            r.message = f"correct with your answer to {shown(src.id)} carried forward"
+            return True
+        rel = carry.nearest_rel(g, [scalar(v) for v in values])
+        if not src_ok and rel is not None:
+            r.carried_rel_error = rel
+            r.message = (f"relative error {_pct(rel)} from the answer that follows from your "
+                         f"{shown(src.id)} = {shown(fmt_given(sub.answers[src.id]), 24)} (carried forward) "
+                         f"exceeds the tolerance ({q.tol.describe()})")
+        return False
+
+    def plausible(self, src: Question, c: float, sub: Submission) -> bool:
+        """Whether ``c`` is a value the question ``src`` can carry forward:
+        within :data:`~dyncli.check.carry.WINDOW` of its true answer, or of the
+        answer that follows from the student's own plausible earlier answer."""
+        if carry.in_window(c, scalar(self.truth(src, sub.student).value)):
+            return True
+        if src.carry is None or sub.answers.get(src.carry[0]) is None:
+            return False
+        up = self.key.question(src.carry[0])
+        t_up = self.truth(up, sub.student)
+        m = None if t_up.error else _si_scalar(sub.answers[up.id], self.unit(up, t_up, sub.answers[up.id]))
+        if m is None or not self.plausible(up, m, sub):
+            return False
+        alt = self.truth(src, sub.student, carried=m)
+        return not alt.error and carry.in_window(c, scalar(alt.value))
 
     def _partial(self, q: Question, r: QuestionResult, t: Truth, spec: UnitSpec) -> None:
         if r.diagnosis is None:
