@@ -29,7 +29,8 @@ def load_key(key_name: str, root: str | None):
 
 
 def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: bool = False,
-                  output: str | None = None, student: str | None = None, root: str | None = None) -> int:
+                  output: str | None = None, student: str | None = None, root: str | None = None,
+                  id_from: str = "student") -> int:
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
     from dyncli.check.keymode import KeyGrader, KeyReport
@@ -52,7 +53,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     grader = KeyGrader(key, files, reveal)
     report = KeyReport(key, reveal=reveal)
     for name in names:
-        sr = grader.grade(read_submission(name, student))
+        sr = grader.grade(read_submission(name, student, id_from))
         report.submissions.append(sr)
         for d in sr.diagnostics:
             _err(d)
@@ -61,6 +62,9 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
                 where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
                 _err(f"{where}: answers.{q.id}: {q.message}")
     report.solves = files.solves
+    report.claims()
+    for w in report.warnings:
+        _err(f"warning: {w['message']}")
     if fmt == "table":
         from dyncli.render.emit import write_view
 
@@ -117,13 +121,18 @@ def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
         return 2
     grader = KeyGrader(key, files)
     values: dict[str, list] = {q.id: [] for q in key.questions}
+    problem = _unanswerable(grader)
+    if problem:
+        _err(f"{key.file}: selftest failed: {problem}")
+        return 1
+    warned: set[str] = set()
     for sid in selftest_ids(n if key.variants is not None else 0):
         try:
             params = grader.params(sid)
         except VariantError as exc:
             _err(f"{key.file}: variants.require: {exc}")
             return 2
-        failure = _selftest_variant(grader, sid, values)
+        failure = _selftest_variant(grader, sid, values, warned)
         if failure:
             shown_params = ", ".join(f"{k} = {v:g}" for k, v in params.items()) or "no variant parameters"
             _err(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
@@ -137,7 +146,41 @@ def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
     return 0
 
 
-def _selftest_variant(grader, sid: str, values: dict) -> str | None:
+def _unanswerable(grader) -> str | None:
+    """A question no student can answer, on the key's first variant: an
+    ``answer`` path that is a record, a ``unit`` of another dimension."""
+    from dyncli.check.quantities import result_unit, unit_spec
+
+    for q in grader.key.questions:
+        t = grader.truth(q, "")
+        if t.error:
+            continue
+        if _has_record(t.value):
+            return (f"question {shown(q.id)}: answer '{shown(q.answer)}' is a record, which no submission can "
+                    "answer: point it at one of its entries (e.g. " + ", ".join(
+                        f"{shown(q.answer)}.{shown(k)}" for k in list(_first_record(t.value))[:3]) + ")")
+        ru = result_unit(t.units, q.answer)
+        if q.unit and ru:
+            try:
+                want, got = unit_spec(q.unit).dim, unit_spec(ru, bare=False).dim
+            except ValueError:  # pragma: no cover - both were read before
+                continue
+            if want != got:
+                return (f"question {shown(q.id)}: unit '{shown(q.unit)}' is not of the dimension of its answer "
+                        f"'{shown(q.answer)}' (the solver gives {shown(ru)}): the right answer with its unit "
+                        "would score 0; give a unit of that dimension")
+    return None
+
+
+def _has_record(x) -> bool:
+    return isinstance(x, dict) or (isinstance(x, list) and any(_has_record(v) for v in x))
+
+
+def _first_record(x) -> dict:
+    return x if isinstance(x, dict) else next(_first_record(v) for v in x if _has_record(v))
+
+
+def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None) -> str | None:
     from dyncli.check.keymode import scalar
     from dyncli.check.submission import Submission
 
@@ -153,6 +196,11 @@ def _selftest_variant(grader, sid: str, values: dict) -> str | None:
             return f"question {shown(q.id)} ({shown(q.answer)}) is not reached for this variant"
         if not _finite(t.value):
             return f"question {shown(q.id)} ({shown(q.answer)}) is not finite for this variant"
+        if t.roundoff and warned is not None and q.id not in warned:
+            warned.add(q.id)
+            _err(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
+                 f"variant '{shown(sid)}': graded as exactly 0 (correct within {_zero_bound(q.tol)}), never "
+                 "diagnosed; make the problem give 0 exactly or ask for another quantity")
         values[q.id].append(t.value)
         sub.answers[q.id] = _in_unit(t.value, q.unit) if scalar(t.value) is not None else t.value
     sub.student = sid
@@ -161,6 +209,10 @@ def _selftest_variant(grader, sid: str, values: dict) -> str | None:
         if r.status != "correct":
             return f"the key does not grade its own answer to {shown(r.id)} as correct ({r.status}: {r.message})"
     return None
+
+
+def _zero_bound(tol) -> str:
+    return f"{0.51 * 10.0 ** (1 - tol.sigfigs):g}" if tol.sigfigs is not None else f"atol = {tol.atol:g}"
 
 
 def _in_unit(x: float, unit: str | None) -> float:

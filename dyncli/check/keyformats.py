@@ -119,7 +119,7 @@ def to_json(report: KeyReport) -> dict:
                      "unknown": [{"id": u["id"], "message": u["message"]} for u in s.unknown]})
     return {"key": report.key.file, "title": report.key.title, "score": report.score,
             "max_score": report.max_score, "exit_code": report.exit_code, "counts": report.counts(),
-            "solves": report.solves, "submissions": subs}
+            "solves": report.solves, "submissions": subs, "warnings": list(report.warnings)}
 
 
 def render_json(report: KeyReport) -> str:
@@ -199,6 +199,9 @@ def render_github(report: KeyReport) -> str:
         listed = " | ".join(f"{oneline(f)}:{l or ''}: {t}: {m}" for f, l, _, t, m in rest)
         lines.append(gh_command("notice", f"{len(rest)} more not annotated: {listed}",
                                 title=f"dyncli check: {len(rest)} more"))
+    for w in report.warnings:
+        f = oneline(w["files"][-1]) if w["files"][-1] not in ("<stdin>", "") else None
+        lines.append(gh_command("warning", oneline(w["message"]), file=f, title="one student id, several submissions"))
     lines.append(gh_command("notice", summary_line(report), title="dyncli check score"))
     return "\n".join(lines) + "\n"
 

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from dyncli.check import carry
+from dyncli.check import carry, zeros
 from dyncli.check.compare import compare, has_unit_text, rel_text as _pct
 from dyncli.check.diagnose import TEXT, diagnose
 from dyncli.check.engine import _diag_from_message, lookup
@@ -41,6 +41,8 @@ class Truth:
     error: str | None = None
     code: int = 0
     reached: bool = True
+    roundoff: bool = False         # a number zero up to round-off, graded as 0 (dyncli.check.zeros)
+    quotes_values: bool = False    # a solver's message: may quote values derived from true answers
 
 
 @dataclass
@@ -93,10 +95,25 @@ class KeyReport:
     submissions: list[SubmissionResult] = field(default_factory=list)
     solves: int = 0
     reveal: bool = False
+    warnings: list[dict] = field(default_factory=list)     # {student, files, message}
 
     @property
     def score(self) -> float:
         return sum(s.score for s in self.submissions)
+
+    def claims(self) -> None:
+        """A warning for every student id that several submissions claim."""
+        by: dict[str, list[SubmissionResult]] = {}
+        for s in self.submissions:
+            if s.student is not None:
+                by.setdefault(s.student, []).append(s)
+        for sid, subs in by.items():
+            if len(subs) > 1:
+                files = [s.file for s in subs]
+                self.warnings.append({"student": sid, "files": files, "message":
+                                      f"{len(files)} submissions claim student '{shown(sid)}' ("
+                                      + ", ".join(shown(f) for f in files[:5]) + (", ..." if len(files) > 5 else "")
+                                      + "): each is graded with that student's numbers; check who wrote which"})
 
     @property
     def max_score(self) -> float:
@@ -175,7 +192,8 @@ class KeyGrader:
                 if src.error or carried is None:
                     t = Truth(error=src.error or f"the true answer to '{shown(q.carry[0])}' (carried forward) "
                                                  "is not one finite number (a carry needs a question whose answer "
-                                                 "is a single number)", code=src.code or 2)
+                                                 "is a single number)", code=src.code or 2,
+                              quotes_values=src.quotes_values)
                     self._truth[memo] = t
                     return t
             extra[q.carry[1]] = carried
@@ -187,7 +205,7 @@ class KeyGrader:
         outcome = self.files.solve(self.problem(q, values, extra), validated=False)
         if outcome.exit_code != 0 or outcome.result is None:
             d = _diag_from_message(outcome.message or "")
-            return Truth(error=d.message, code=outcome.exit_code or 3)
+            return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True)
         results = getattr(outcome, "_plain", None)
         if results is None:
             from dyncli.render.jsonout import jsonable
@@ -197,7 +215,11 @@ class KeyGrader:
         if not found:
             return Truth(error=f"the key's answer path '{shown(q.answer)}' is not in the results"
                                + (f" ({msg})" if msg else ""), code=2)
-        return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer))
+        scale = getattr(outcome, "_scale", None)
+        if scale is None:
+            scale = outcome._scale = zeros.scale_of(results)
+        value, roundoff = zeros.snap(value, scale)
+        return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer), roundoff=roundoff)
 
     def unit(self, q: Question, truth: Truth, given: Any = None) -> UnitSpec:
         """How ``given`` is read: the question's ``unit``, else (for an
@@ -240,7 +262,8 @@ class KeyGrader:
         if t.error:   # the detail may quote values derived from true answers: only with --reveal
             r.status = "error"
             r.message = ("not graded: the key's problem could not be solved for this variant"
-                         + (f" ({t.error})" if self.reveal else " (tell your instructor: --selftest shows why)"))
+                         + (f" ({t.error})" if self.reveal or not t.quotes_values
+                            else " (tell your instructor: --selftest shows why)"))
             sr.error_code = max(sr.error_code, t.code)
             return r
         if r.given is None:
