@@ -115,6 +115,9 @@ def check(
     student: Optional[str] = typer.Option(None, "--student", help="With --key: the student id of the submissions."),
     root: Optional[str] = typer.Option(None, "--root", metavar="DIR",
                                        help="Problem files may lie anywhere inside DIR (default: the folder of the file naming them)."),
+    upload: bool = typer.Option(False, "--upload",
+                                help="With --key: the files are one student's upload (Gradescope): grade the file "
+                                     "the key's 'submission:' names, else the only .yaml; refuse, listing them, otherwise."),
     id_from: IdFrom = typer.Option(IdFrom.student, "--id-from",
                                    help="With --key: where a submission's student id comes from: its 'student:' "
                                         "(default) or its file name (a differing 'student:' is refused)."),
@@ -135,7 +138,11 @@ def check(
         if id_from is IdFrom.filename and student is not None:
             _err("--id-from filename and --student do not go together")
             raise typer.Exit(2)
-        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root, id_from.value))
+        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root, id_from.value,
+                                       upload))
+    if upload:
+        _err("--upload goes with --key KEY")
+        raise typer.Exit(2)
     if selftest or student is not None or id_from is not IdFrom.student:
         _err(f"{'--selftest' if selftest else '--student' if student is not None else '--id-from'} goes with --key KEY")
         raise typer.Exit(2)

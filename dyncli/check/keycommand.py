@@ -30,7 +30,7 @@ def load_key(key_name: str, root: str | None):
 
 def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: bool = False,
                   output: str | None = None, student: str | None = None, root: str | None = None,
-                  id_from: str = "student") -> int:
+                  id_from: str = "student", upload: bool = False) -> int:
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
     from dyncli.check.keymode import KeyGrader, KeyReport
@@ -52,6 +52,15 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
         return 2
     grader = KeyGrader(key, files, reveal)
     report = KeyReport(key, reveal=reveal)
+    if upload:
+        names, problem = pick_upload(key, names)
+        if problem:
+            from dyncli.check.keymode import SubmissionResult
+            from dyncli.loader import Diagnostic
+
+            report.submissions.append(SubmissionResult("upload", None, key.max_score,
+                                                       diagnostics=[Diagnostic("upload", None, None, None, problem)]))
+            _err(f"upload: {problem}")
     for name in names:
         sr = grader.grade(read_submission(name, student, id_from))
         report.submissions.append(sr)
@@ -89,6 +98,25 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
     _err(keyformats.summary_line(report))
     return report.exit_code
+
+
+def pick_upload(key, names: list[str]) -> tuple[list[str], str | None]:
+    """The one submission among a student's uploaded files: the file the
+    key's ``submission:`` names, else the only .yaml/.yml file; otherwise
+    ([], why) listing the files."""
+    listed = ", ".join(shown(Path(n).name) for n in names[:20]) + (", ..." if len(names) > 20 else "")
+    if key.submission:
+        hits = [n for n in names if Path(n).name == key.submission]
+        if len(hits) == 1:
+            return hits, None
+        return [], (f"upload one file named {shown(key.submission)}" + (f"; you uploaded: {listed}" if names else "")
+                    + (" (several files have that name)" if hits else ""))
+    yaml_files = [n for n in names if Path(n).suffix.lower() in (".yaml", ".yml")]
+    if len(yaml_files) == 1:
+        return yaml_files, None
+    if not yaml_files:
+        return [], "no submission found: upload one .yaml file" + (f" (you uploaded: {listed})" if names else "")
+    return [], f"upload one .yaml file, not {len(yaml_files)}: you uploaded {listed}"
 
 
 def _invalid_key_json(key_name: str, fmt: str) -> str:

@@ -30,7 +30,7 @@ from dyncli.check.safe import oneline, shown
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
-TOP_KEYS = ("title", "tolerance", "variants", "questions")
+TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission")
 Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title")
 MAX_ID = 64
 MAX_QUESTIONS = 1000
@@ -63,6 +63,7 @@ class Key:
     variants: Any = None                       # dyncli.check.variants.Variants or None
     questions: list[Question] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    submission: str | None = None              # the file name a Gradescope upload must have
 
     def question(self, qid: str) -> Question | None:
         return next((q for q in self.questions if q.id == qid), None)
@@ -120,6 +121,13 @@ class _Reader:
                                 f"{', '.join(TOP_KEYS)}")
         if isinstance(data.get("title"), str):
             self.key.title = data["title"]
+        if "submission" in data:
+            sub = data["submission"]
+            if not isinstance(sub, str) or not sub.strip() or "/" in sub or "\\" in sub or len(sub) > 200 \
+                    or oneline(sub) != sub:
+                self.diag(("submission",), "submission must be a file name such as answers.yaml (no folder)", key=False)
+            else:
+                self.key.submission = sub.strip()
         if "tolerance" in data:
             try:
                 self.key.tol = parse_tolerance(data["tolerance"], Tolerance(), ("tolerance",))

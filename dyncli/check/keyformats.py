@@ -217,16 +217,27 @@ def step_summary_markdown(report: KeyReport) -> str:
 
 
 def render_gradescope(report: KeyReport) -> str:
-    """Gradescope's results.json: a test per question with ``visibility``
-    (``visible: false`` -> ``after_published``); the summary counts only
-    visible questions, so it says nothing of the hidden ones."""
+    """Gradescope's results.json (its autograder specification): a test per
+    question with ``score``, ``max_score``, ``output`` and ``visibility``
+    (``visible: false`` -> ``after_published``); ``output`` at the top counts
+    only visible questions.  The top-level ``score`` overrides the sum of the
+    tests, so it is written only when every question is visible: with hidden
+    questions Gradescope totals the tests itself, and no number written here
+    for the student before publication counts a hidden question.  An invalid
+    submission gives every question 0 with its one-line error."""
     tests = []
     multi = len(report.submissions) > 1
     for s in report.submissions:
         pre = f"{who(s)}: " if multi else ""
-        for d in s.diagnostics:
-            tests.append({"name": f"{pre}submission", "score": 0, "max_score": 0, "status": "failed",
-                          "output": oneline(d), "visibility": "visible"})
+        if s.diagnostics:
+            error = oneline(s.diagnostics[0].message if not s.diagnostics[0].path
+                            else f"{s.diagnostics[0].path}: {s.diagnostics[0].message}")
+            for q in report.key.questions:
+                title = q.title or (q.problem.title if q.problem is not None else "")
+                tests.append({"name": f"{pre}{oneline(q.id)}" + (f" ({oneline(title)})" if title else ""),
+                              "score": 0, "max_score": q.points, "status": "failed",
+                              "output": f"not graded: {error}",
+                              "visibility": "visible" if q.visible else "after_published"})
         for q in s.questions:
             out = STATUS_TEXT[q.status]
             text = feedback(q, report.reveal)
@@ -245,8 +256,14 @@ def render_gradescope(report: KeyReport) -> str:
                           "output": oneline(u["message"]), "visibility": "visible"})
     visible = [q for s in report.submissions for q in s.questions if q.visible]
     full = sum(1 for q in visible if q.status in ("correct", "carried"))
-    hidden = sum(1 for s in report.submissions for q in s.questions if not q.visible)
-    output = f"{full} of {len(visible)} visible answers with full points" + \
-        (f"; {hidden} question{'s' if hidden != 1 else ''} graded after release" if hidden else "")
-    doc = {"score": report.score, "output": output, "tests": tests}
+    hidden = sum(1 for q in report.key.questions if not q.visible) * max(1, len(report.submissions))
+    bad = [s for s in report.submissions if s.diagnostics]
+    if bad and not multi:
+        output = "Not graded: " + oneline(bad[0].diagnostics[0])
+    else:
+        output = f"{full} of {len(visible)} visible answers with full points" + \
+            (f"; {hidden} question{'s' if hidden != 1 else ''} graded after release" if hidden else "")
+    doc = {"output": output, "tests": tests}
+    if not hidden or (bad and not multi):
+        doc = {"score": report.score, **doc}
     return json_text(doc)

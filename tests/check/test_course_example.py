@@ -177,7 +177,9 @@ def test_gradescope_autograder(tmp_path):
     assert p.returncode == 0, p.stderr
     doc = json.loads((ag / "results" / "results.json").read_text())
     tests = {t["name"].split(" ")[0]: t for t in doc["tests"]}
-    assert doc["score"] == 8 and tests["1c"]["score"] == 1 and tests["1c"]["max_score"] == 2
+    # 2b is hidden: no top-level score (it would override the tests' total and count 2b before release)
+    assert "score" not in doc and sum(t["score"] for t in doc["tests"]) == 8
+    assert tests["1c"]["score"] == 1 and tests["1c"]["max_score"] == 2
     assert tests["2b"]["visibility"] == "after_published" and tests["1a"]["visibility"] == "visible"
     assert "expected" not in json.dumps(doc)
     # the hidden question is not summarised in the visible output
@@ -196,6 +198,28 @@ def test_gradescope_autograder_bad_submissions(tmp_path, submission, email, need
     assert p.returncode == 0, p.stderr
     doc = json.loads((ag / "results" / "results.json").read_text())
     assert doc["score"] == 0 and needle in json.dumps(doc)
+    if submission is not None:        # an invalid upload: its one-line error, every question 0 with it
+        assert needle in doc["output"] and len(doc["tests"]) == 6
+        assert all(t["score"] == 0 and needle in t["output"] for t in doc["tests"])
+
+
+@pytest.mark.parametrize("named", [None, "answers.yaml"])
+def test_gradescope_several_uploads(tmp_path, named):
+    ag = _autograder(tmp_path, (COURSE / "submissions" / "alice.yaml").read_text())
+    (ag / "submission" / "answers.yaml").write_text((COURSE / "submissions" / "alice.yaml").read_text())
+    (ag / "submission" / "notes.txt").write_text("scratch")
+    if named:
+        with open(ag / "source" / "key.yaml", "a") as fh:
+            fh.write(f"submission: {named}\n")
+    env = dict(_shim(tmp_path), AUTOGRADER_ROOT=str(ag))
+    p = _run(f'bash "{ag}/source/run_autograder"', ag, env)
+    assert p.returncode == 0, p.stderr
+    doc = json.loads((ag / "results" / "results.json").read_text())
+    if named:                         # the key names the file to grade: the other uploads are ignored
+        assert sum(t["score"] for t in doc["tests"]) == 8
+    else:                             # two .yaml files: refused, naming them, every question 0
+        assert doc["score"] == 0 and "answers.yaml, hw1-answers.yaml" in doc["output"]
+        assert len(doc["tests"]) == 6 and all(t["score"] == 0 for t in doc["tests"])
 
 
 def _fake_python(tmp: Path) -> Path:
@@ -226,7 +250,7 @@ def test_gradescope_setup_installs_the_bundled_wheel(tmp_path):
     assert (ag / "dyncli-venv" / "pip-args").read_text().split() == ["install", "-q", str(wheel)]
     p = _run(f'bash "{ag}/source/run_autograder"', ag, env)
     assert p.returncode == 0, p.stderr
-    assert json.loads((ag / "results" / "results.json").read_text())["score"] == 8
+    assert sum(t["score"] for t in json.loads((ag / "results" / "results.json").read_text())["tests"]) == 8
 
 
 def test_gradescope_setup_without_a_bundled_dyncli_says_what_to_zip(tmp_path):
