@@ -31,7 +31,10 @@ from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
 TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission")
-Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title")
+Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title",
+          "feedback")
+FEEDBACK_KEYS = ("correct", "carried", "partial", "wrong", "missing", "invalid") + SLIPS
+MAX_FEEDBACK = 1000
 MAX_ID = 64
 MAX_QUESTIONS = 1000
 
@@ -50,6 +53,7 @@ class Question:
     carry: tuple[str, str] | None = None       # (from question id, param name)
     visible: bool = True
     title: str | None = None
+    feedback: dict[str, str] = field(default_factory=dict)   # status or slip -> the instructor's text
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
 
@@ -215,6 +219,8 @@ class _Reader:
             if not isinstance(item["visible"], bool):
                 raise _Bad(path + ("visible",), "visible must be true or false", key=False)
             q.visible = item["visible"]
+        if "feedback" in item:
+            q.feedback = self.feedback(item["feedback"], path + ("feedback",))
         if "title" in item:
             if not isinstance(item["title"], str):
                 raise _Bad(path + ("title",), "title must be text", key=False)
@@ -274,6 +280,20 @@ class _Reader:
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v <= 1:
                 raise _Bad(path + (k,), "a partial credit is a fraction from 0 to 1", key=False)
             out[k] = float(v)
+        return out
+
+    def feedback(self, raw: Any, path: tuple) -> dict[str, str]:
+        if not isinstance(raw, dict) or not raw:
+            raise _Bad(path, f"feedback must be a mapping status-or-slip: text ({', '.join(FEEDBACK_KEYS)})",
+                       key=False)
+        out = {}
+        for k, v in raw.items():
+            if k not in FEEDBACK_KEYS:
+                raise _Bad(path + (k,), f"unknown feedback key '{shown(k)}'{did_you_mean(str(k), FEEDBACK_KEYS)}; "
+                                        f"known: {', '.join(FEEDBACK_KEYS)}")
+            if not isinstance(v, str) or not v.strip() or len(v) > MAX_FEEDBACK:
+                raise _Bad(path + (k,), f"feedback text must be 1 to {MAX_FEEDBACK} characters", key=False)
+            out[k] = v.strip()
         return out
 
     def carry(self, raw: Any, path: tuple) -> tuple[str, str]:

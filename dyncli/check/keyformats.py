@@ -101,6 +101,8 @@ def question_json(q: QuestionResult, reveal: bool) -> dict:
            "message": q.message, "given": jsonable(q.given), "answer": q.answer, "title": q.title,
            "visible": q.visible, "line": q.line, "col": q.col,
            "relative_error": jsonable(rel) if q.status not in ("correct", "carried") else None}
+    if q.feedback is not None:
+        rec["feedback"] = q.feedback
     if q.carried_rel_error is not None and q.status not in ("correct", "carried"):
         c = q.carried_rel_error
         rec["carried_relative_error"] = jsonable(c if reveal else round2(c))
@@ -153,7 +155,7 @@ def render_junit(report: KeyReport) -> str:
                 tc.set("line", str(q.line))
             n[0] += 1
             if q.status in ("correct", "carried"):
-                if q.status == "carried":
+                if q.message:           # carried, or the instructor's feedback for a correct answer
                     ET.SubElement(tc, "system-out").text = _x(oneline(q.message))
                 continue
             text = feedback(q, report.reveal)

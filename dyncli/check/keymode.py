@@ -56,6 +56,7 @@ class QuestionResult:
     diagnosis: str | None = None
     message: str = ""
     rel_error: float | None = None
+    feedback: str | None = None              # the key's feedback text shown with this status or slip
     carried_rel_error: float | None = None   # from the answer that follows from the student's carried input
     line: int | None = None
     col: int | None = None
@@ -248,6 +249,9 @@ class KeyGrader:
             return sr
         for q in self.key.questions:
             r = self.grade_one(q, sub, sr)
+            text = q.feedback.get(r.diagnosis or "") or q.feedback.get(r.status)
+            if text:           # the instructor's words for this status or slip, in every format
+                r.feedback, r.message = text, (f"{r.message}; {text}" if r.message else text)
             r.line, r.col = sub.positions.get(q.id, (None, None))
             sr.questions.append(r)
         self.unknown(sub, sr)

@@ -113,3 +113,38 @@ def test_roundoff_zero_flagged_and_graded_as_zero(tmp_path, capsys, tol):
         _, doc, _ = check_json(tmp_path / "key.yaml", [sub], capsys)
         r = questions(doc)["z"]
         assert r["status"] == status and r["diagnosis"] is None, (given, r)
+
+
+# -- the instructor's feedback ------------------------------------------------
+
+FEEDBACK_KEY = """\
+questions:
+  - {id: s, problem: p.yaml, index: 1, answer: find.0.s, partial: {sign: 0.5},
+     feedback: {correct: "Well done: s = v t + a t^2/2.", sign: "Which way is positive?",
+                wrong: "Start from s = v t + a t^2/2 (notes 6.5a).", missing: "Try it: 6.5a."}}
+"""
+
+
+@pytest.mark.parametrize("given,status,text", [
+    (2.5, "correct", "Well done"), (-2.5, "partial", "Which way is positive?"), (7, "wrong", "notes 6.5a"),
+    (None, "missing", "Try it")])
+def test_feedback_by_status_and_slip_in_every_format(tmp_path, capsys, given, status, text):
+    (tmp_path / "p.yaml").write_text(PROBLEMS)
+    (tmp_path / "key.yaml").write_text(FEEDBACK_KEY)     # s = 2·1 + 1·1²/2 = 2.5 by hand
+    sub = _sub(tmp_path, "s.yaml", "student: x\nanswers: {s: %s}\n" % ("null" if given is None else given))
+    _, doc, _ = check_json(tmp_path / "key.yaml", [sub], capsys)
+    q = questions(doc)["s"]
+    assert q["status"] == status and text in q["feedback"] and text in q["message"]
+    for fmt in ("table", "junit", "gradescope"):
+        _, out, _ = check_json(tmp_path / "key.yaml", [sub], capsys, fmt=fmt)
+        assert text in (json.dumps(out) if isinstance(out, dict) else out.replace("\n", " ")), fmt
+    if status != "correct":
+        _, out, _ = check_json(tmp_path / "key.yaml", [sub], capsys, fmt="github")
+        assert text in out
+
+
+def test_feedback_key_is_checked(tmp_path, capsys):
+    (tmp_path / "p.yaml").write_text(PROBLEMS)
+    (tmp_path / "key.yaml").write_text(FEEDBACK_KEY.replace('sign: "Which', 'sing: "Which'))
+    code, _, err = check_json(tmp_path / "key.yaml", [_sub(tmp_path, "s.yaml", "answers: {s: 1}\n")], capsys)
+    assert code == 2 and "unknown feedback key 'sing'" in err and "did you mean 'sign'" in err
