@@ -224,6 +224,12 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
             return f"question {shown(q.id)} ({shown(q.answer)}) is not reached for this variant"
         if not _finite(t.value):
             return f"question {shown(q.id)} ({shown(q.answer)}) is not finite for this variant"
+        if q.carry is not None and warned is not None and q.id + "\x00carry" not in warned \
+                and _repeats_input(grader, q, sid, t):
+            warned.add(q.id + "\x00carry")
+            _err(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
+                 f"to {shown(q.carry[0])} it carries (variant '{shown(sid)}'): repeating that answer would be "
+                 "correct, and no carried answer can earn credit (it would repeat its input)")
         if t.roundoff and warned is not None and q.id not in warned:
             warned.add(q.id)
             _err(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
@@ -237,6 +243,15 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
         if r.status != "correct":
             return f"the key does not grade its own answer to {shown(r.id)} as correct ({r.status}: {r.message})"
     return None
+
+
+def _repeats_input(grader, q, sid: str, t) -> bool:
+    from dyncli.check.compare import number_ok
+    from dyncli.check.keymode import scalar
+
+    src = grader.truth(grader.key.question(q.carry[0]), sid)
+    y, c = scalar(t.value), scalar(src.value)
+    return y is not None and c is not None and number_ok(y, c, q.tol)
 
 
 def _zero_bound(tol) -> str:
@@ -275,3 +290,19 @@ def _print_ranges(key, values: dict) -> None:
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:
         print("  ".join(c.ljust(w) for c, w in zip(r, widths)) + "  " + r[4])
+    _print_carries(key, values)
+
+
+def _print_carries(key, values: dict) -> None:
+    """What a carried answer may carry: a factor WINDOW around the values the
+    earlier question has (docs/check.md, "Carried answers")."""
+    from dyncli.check.carry import WINDOW
+    from dyncli.render.table import fmt_num
+
+    for q in key.questions:
+        nums = [abs(v) for v in values.get(q.carry[0], []) if isinstance(v, (int, float)) and not isinstance(v, bool)
+                and v != 0] if q.carry else []
+        if nums:
+            print(f"carry: {oneline(q.id)} takes the answer to {oneline(q.carry[0])} (either sign) within "
+                  f"{fmt_num(min(nums) / WINDOW, 3)} ... {fmt_num(max(nums) * WINDOW, 3)} "
+                  f"(a factor {WINDOW:g} around its true answers above)")

@@ -148,3 +148,18 @@ def test_feedback_key_is_checked(tmp_path, capsys):
     (tmp_path / "key.yaml").write_text(FEEDBACK_KEY.replace('sign: "Which', 'sing: "Which'))
     code, _, err = check_json(tmp_path / "key.yaml", [_sub(tmp_path, "s.yaml", "answers: {s: 1}\n")], capsys)
     assert code == 2 and "unknown feedback key 'sing'" in err and "did you mean 'sign'" in err
+
+
+def test_selftest_prints_the_carry_window_and_warns_of_a_carry_that_repeats(tmp_path, capsys):
+    from dyncli.check.keycommand import run_selftest
+
+    (tmp_path / "p.yaml").write_text("problems:\n  - {type: rectilinear, a: 2, v1: 3, find: [{t: 1}]}\n"
+                                     "  - {type: rectilinear, params: {s0: 0}, s1: s0, v1: 0.0001, a: 0, find: [{t: 1}]}\n")
+    (tmp_path / "key.yaml").write_text("questions:\n  - {id: A, problem: p.yaml, index: 0, answer: find.0.s}\n"
+                                       "  - {id: B, problem: p.yaml, index: 1, answer: find.0.s, "
+                                       "carry: {from: A, param: s0}}\n")
+    capsys.readouterr()
+    assert run_selftest(str(tmp_path / "key.yaml"), 2) == 0
+    out, err = capsys.readouterr()
+    assert "carry: B takes the answer to A (either sign) within 0.4 ... 40" in out   # A = 4 by hand
+    assert "question B's true answer is within its tolerance of the answer to A it carries" in err
