@@ -33,9 +33,6 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
                   id_from: str = "student", upload: bool = False) -> int:
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
-    from dyncli.check.keymode import KeyGrader, KeyReport
-    from dyncli.check.submission import read_submission
-
     if not names:
         _err("give the submissions to grade (or --selftest to check the key)")
         return 2
@@ -50,30 +47,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             except _OutputError as exc:
                 _err(exc)
         return 2
-    grader = KeyGrader(key, files, reveal)
-    report = KeyReport(key, reveal=reveal)
-    if upload:
-        names, problem = pick_upload(key, names)
-        if problem:
-            from dyncli.check.keymode import SubmissionResult
-            from dyncli.loader import Diagnostic
-
-            report.submissions.append(SubmissionResult("upload", None, key.max_score,
-                                                       diagnostics=[Diagnostic("upload", None, None, None, problem)]))
-            _err(f"upload: {problem}")
-    for name in names:
-        sr = grader.grade(read_submission(name, student, id_from))
-        report.submissions.append(sr)
-        for d in sr.diagnostics:
-            _err(d)
-        for q in sr.questions:
-            if q.status in ("invalid", "error"):
-                where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
-                _err(f"{where}: answers.{q.id}: {q.message}")
-    report.solves = files.solves
-    report.claims()
-    for w in report.warnings:
-        _err(f"warning: {w['message']}")
+    report = grade_all(key, files, names, reveal, student, id_from, upload)
     if fmt == "table":
         from dyncli.render.emit import write_view
 
@@ -98,6 +72,37 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
     _err(keyformats.summary_line(report))
     return report.exit_code
+
+
+def grade_all(key, files, names: list[str], reveal: bool = False, student: str | None = None,
+              id_from: str = "student", upload: bool = False):
+    """Every submission graded (a :class:`KeyReport`); each problem on stderr."""
+    from dyncli.check.keymode import KeyGrader, KeyReport, SubmissionResult
+    from dyncli.check.submission import read_submission
+    from dyncli.loader import Diagnostic
+
+    grader = KeyGrader(key, files, reveal)
+    report = KeyReport(key, reveal=reveal)
+    if upload:
+        names, problem = pick_upload(key, names)
+        if problem:
+            report.submissions.append(SubmissionResult("upload", None, key.max_score,
+                                                       diagnostics=[Diagnostic("upload", None, None, None, problem)]))
+            _err(f"upload: {problem}")
+    for name in names:
+        sr = grader.grade(read_submission(name, student, id_from))
+        report.submissions.append(sr)
+        for d in sr.diagnostics:
+            _err(d)
+        for q in sr.questions:
+            if q.status in ("invalid", "error"):
+                where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
+                _err(f"{where}: answers.{q.id}: {q.message}")
+    report.solves = files.solves
+    report.claims()
+    for w in report.warnings:
+        _err(f"warning: {w['message']}")
+    return report
 
 
 def pick_upload(key, names: list[str]) -> tuple[list[str], str | None]:
