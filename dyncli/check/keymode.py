@@ -307,15 +307,15 @@ class KeyGrader:
                 r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: it is too far "
                               f"from any value {shown(src.id)} can have (more than {carry.WINDOW:g} times off)")
             return False
-        h = carry.halfwidth(sub.answers[src.id], sub.written.get(src.id), mine)
-        points = (mine - h, mine, mine + h) if h > 0 else (mine,)
-        alts = [self.truth(q, sub.student, carried=c) for c in points]
         g = _si_scalar(r.given, spec)
         if g is not None and carry.repeats(g, mine, q.tol):
             if not src_ok:
                 r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: your answer "
                               f"repeats it and shows nothing of this question's own part")
             return False
+        h = carry.halfwidth(sub.answers[src.id], sub.written.get(src.id), mine)
+        points = (mine - h, mine, mine + h) if h > 0 else (mine,)
+        alts = [self.truth(q, sub.student, carried=c) for c in points]
         values = [None if a.error else a.value for a in alts]
         if any(v is not None and compare(r.given, v, q.tol, spec).correct for v in values) or \
                 carry.between(g, [scalar(v) for v in values]):
