@@ -157,17 +157,34 @@ def check(
 class VariantFormat(str, Enum):
     yaml = "yaml"
     markdown = "markdown"
+    html = "html"
 
 
 @app.command()
 def variant(
     key: str = typer.Argument(..., metavar="KEY", help="The instructor's key."),
-    student: str = typer.Option(..., "--student", help="The student id."),
+    student: Optional[str] = typer.Option(None, "--student", help="The student id."),
     format: VariantFormat = typer.Option(VariantFormat.yaml, "--format", "-f", help="Sheet format."),
     template: bool = typer.Option(False, "--template", help="Print an empty submission instead."),
     root: Optional[str] = typer.Option(None, "--root", metavar="DIR", help="Problem files may lie anywhere inside DIR."),
+    roster: Optional[str] = typer.Option(None, "--roster", metavar="CSV",
+                                         help="Every student of this roster (a 'student' column): one file each in -o DIR."),
+    output: Optional[str] = typer.Option(None, "--output", "-o", metavar="DIR", help="With --roster: the folder of the sheets."),
 ):
     """Print a student's problem set (their numbers), or an empty submission with --template."""
+    if (student is None) == (roster is None):
+        _err("give --student ID (one sheet on stdout) or --roster CSV -o DIR (one file per student)")
+        raise typer.Exit(2)
+    if roster is not None:
+        if not output:
+            _err("--roster needs -o DIR: the folder that receives one file per student")
+            raise typer.Exit(2)
+        from dyncli.check.roster import write_sheets
+
+        raise typer.Exit(write_sheets(key, roster, output, format.value, template, root))
+    if output:
+        _err("-o DIR goes with --roster (one sheet prints on stdout)")
+        raise typer.Exit(2)
     from dyncli.check.sheet import run_variant
 
     raise typer.Exit(run_variant(key, student, format.value, template, root))
