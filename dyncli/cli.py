@@ -91,6 +91,7 @@ class CheckFormat(str, Enum):
     junit = "junit"
     github = "github"
     gradescope = "gradescope"
+    csv = "csv"
 
 
 class IdFrom(str, Enum):
@@ -121,6 +122,14 @@ def check(
     id_from: IdFrom = typer.Option(IdFrom.student, "--id-from",
                                    help="With --key: where a submission's student id comes from: its 'student:' "
                                         "(default) or its file name (a differing 'student:' is refused)."),
+
+    roster: Optional[str] = typer.Option(None, "--roster", metavar="CSV",
+                                         help="With --key: the class (a 'student' column): students without a "
+                                              "submission are missing; submissions of others are reported."),
+    stats: bool = typer.Option(False, "--stats", help="With --key: per question the class's mean, % correct, "
+                                                      "statuses, diagnoses and the range of the true answers."),
+    compare: Optional[str] = typer.Option(None, "--compare", metavar="PREVIOUS.json",
+                                          help="With --key: every student whose score changed since this JSON report."),
 ):
     """Grade answers: graded work with --key KEY SUBMISSION..., self-study with ANSWERS... (exit 1 if any is wrong)."""
     files = files or []
@@ -138,10 +147,15 @@ def check(
         if id_from is IdFrom.filename and student is not None:
             _err("--id-from filename and --student do not go together")
             raise typer.Exit(2)
+        course = None
+        if roster is not None or stats or compare is not None:
+            from dyncli.check.gradebook import CourseOptions
+
+            course = CourseOptions(roster, stats, compare)
         raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root, id_from.value,
-                                       upload))
-    if upload:
-        _err("--upload goes with --key KEY")
+                                       upload, course))
+    if upload or roster is not None or stats or compare is not None or format is CheckFormat.csv:
+        _err(f"{'--upload' if upload else '--roster' if roster is not None else '--stats' if stats else '--compare' if compare is not None else '--format csv'} goes with --key KEY")
         raise typer.Exit(2)
     if selftest or student is not None or id_from is not IdFrom.student:
         _err(f"{'--selftest' if selftest else '--student' if student is not None else '--id-from'} goes with --key KEY")
