@@ -197,9 +197,9 @@ def read_previous(name: str) -> dict[str, float]:
 def regrade(report, previous: dict[str, float]) -> list[dict]:
     """Every student whose score changed (or who is in only one report)."""
     now: dict[str, float] = {}
-    for sid, s in rows(report):
-        if s is not None and s.student is not None:
-            now.setdefault(sid, s.score)
+    for s in report.submissions:
+        if s.student is not None:
+            now.setdefault(s.student, s.score)
     out = []
     for sid in list(now) + [p for p in previous if p not in now]:
         old, new = previous.get(sid), now.get(sid)
