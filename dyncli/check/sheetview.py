@@ -7,6 +7,7 @@ HTML (no script, no external resource)."""
 
 from __future__ import annotations
 
+import re
 from html import escape
 
 from dyncli.check.safe import oneline
@@ -58,7 +59,7 @@ def render_markdown(key, doc: dict) -> str:
         if p.get("text"):
             lines += [oneline(p["text"]), ""]
         if p["data"]:
-            lines += ["Data: " + "; ".join(f"{oneline(n)} = {oneline(v)}" for n, v in p["data"]), ""]
+            lines += ["Data: " + "; ".join(f"`{oneline(n)}` = {_bold_carry(oneline(v))}" for n, v in p["data"]), ""]
         for q in p["questions"]:
             head, text = _question_line(q)
             lines.append(f"- **{oneline(head)}**" + (f": {oneline(text)}" if text else ""))
@@ -66,6 +67,10 @@ def render_markdown(key, doc: dict) -> str:
     lines += ["Answer in a submission file (`dyncli variant KEY --student ID --template`): numbers, constant",
               "expressions (`\"2*pi\"`) or numbers with units (`\"12 m/s\"`).", ""]
     return "\n".join(lines)
+
+
+def _bold_carry(v: str) -> str:
+    return re.sub(r"your answer to (\S+)", r"**your answer to \1**", v)
 
 
 _CSS = """body{font-family:system-ui,sans-serif;max-width:46em;margin:2em auto;line-height:1.45;color:#111}

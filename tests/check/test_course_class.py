@@ -62,8 +62,8 @@ def test_markdown_sheet_a_student_can_work_from():
     d = _draws("alice@example.edu")      # v0 = 25, a0 = -3, vb = 15.8
     assert f"A car moving at {d['v0']:g} m/s brakes with a constant acceleration of {d['a0']:g} m/s²" in out
     assert f"thrown straight up at {d['vb']:.1f} m/s" in out
-    assert "s0 = your answer to 1c" in out and "t1 = 10 s" in out and "a = 0.5 m/s²" in out   # fixed data
-    assert "find: t = 2 s" in out and "a = -9.81 m/s²" in out
+    assert "`s0` = **your answer to 1c**" in out and "`t1` = 10 s" in out and "`a` = 0.5 m/s²" in out   # fixed
+    assert "`find: t` = 2 s" in out and "`a` = -9.81 m/s²" in out
     assert "**1a (2 points, in m)**: Where is the car at t = 2 s?" in out
     assert "find.0" not in out and "find.1" not in out and "in dimensionless" not in out   # no result path
 
