@@ -134,31 +134,14 @@ def check(
     """Grade answers: graded work with --key KEY SUBMISSION..., self-study with ANSWERS... (exit 1 if any is wrong)."""
     files = files or []
     if key is not None:
-        from dyncli.check.keycommand import run_key_check, run_selftest
-
-        if write_key:
-            _err("--write-key and --key do not go together")
-            raise typer.Exit(2)
-        if selftest:
-            if files:
-                _err("--selftest checks the key alone: give no submissions")
-                raise typer.Exit(2)
-            raise typer.Exit(run_selftest(key, n, root))
-        if id_from is IdFrom.filename and student is not None:
-            _err("--id-from filename and --student do not go together")
-            raise typer.Exit(2)
-        course = None
-        if roster is not None or stats or compare is not None:
-            from dyncli.check.gradebook import CourseOptions
-
-            course = CourseOptions(roster, stats, compare)
-        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root, id_from.value,
-                                       upload, course))
-    if upload or roster is not None or stats or compare is not None or format is CheckFormat.csv:
-        _err(f"{'--upload' if upload else '--roster' if roster is not None else '--stats' if stats else '--compare' if compare is not None else '--format csv'} goes with --key KEY")
-        raise typer.Exit(2)
-    if selftest or student is not None or id_from is not IdFrom.student:
-        _err(f"{'--selftest' if selftest else '--student' if student is not None else '--id-from'} goes with --key KEY")
+        raise typer.Exit(_graded(key, files, format, reveal, output, write_key, selftest, n, student, root, upload,
+                                 id_from, roster, stats, compare))
+    keyonly = [name for name, given in (("--upload", upload), ("--roster", roster is not None), ("--stats", stats),
+                                        ("--compare", compare is not None), ("--format csv", format is CheckFormat.csv),
+                                        ("--selftest", selftest), ("--student", student is not None),
+                                        ("--id-from", id_from is not IdFrom.student)) if given]
+    if keyonly:
+        _err(f"{keyonly[0]} goes with --key KEY")
         raise typer.Exit(2)
     if not files:
         _err("give answer files (self-study), or --key KEY and the submissions (graded work)")
@@ -166,6 +149,28 @@ def check(
     from dyncli.check.command import run_check
 
     raise typer.Exit(run_check(files, format.value, reveal, output, write_key, _state["debug"], root))
+
+
+def _graded(key, files, format, reveal, output, write_key, selftest, n, student, root, upload, id_from, roster,
+            stats, compare) -> int:
+    """``dyncli check --key``: graded work, the key's selftest, a whole course."""
+    from dyncli.check.keycommand import run_key_check, run_selftest
+
+    if write_key:
+        _err("--write-key and --key do not go together")
+        return 2
+    if selftest:
+        if files:
+            _err("--selftest checks the key alone: give no submissions")
+            return 2
+        return run_selftest(key, n, root)
+    if id_from is IdFrom.filename and student is not None:
+        _err("--id-from filename and --student do not go together")
+        return 2
+    from dyncli.check.gradebook import CourseOptions
+
+    course = CourseOptions(roster, stats, compare) if roster is not None or stats or compare is not None else None
+    return run_key_check(key, files, format.value, reveal, output, student, root, id_from.value, upload, course)
 
 
 class VariantFormat(str, Enum):
