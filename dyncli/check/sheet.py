@@ -49,8 +49,12 @@ def unit_of(q, grader, student: str, cache: dict | None = None) -> str:
         return cache[q.id]
     from dyncli.check.quantities import result_unit
 
+    from dyncli.check.statement import declared_dimensionless
+
     t = grader.truth(q, student)
     ru = None if t.error else result_unit(t.units, q.answer)
+    if ru is None and not t.error and declared_dimensionless(q.problem.type if q.problem else None, q.answer):
+        ru = ""
     u = "" if ru is None else "dimensionless" if ru.strip() in DIMENSIONLESS else ru
     if cache is not None:
         cache[q.id] = u

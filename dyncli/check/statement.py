@@ -184,7 +184,8 @@ def _leaves(x: Any, path: tuple, out: list) -> None:
     if isinstance(x, dict):
         for k, v in x.items():
             _leaves(v, path + (k,), out)
-    elif isinstance(x, list) and not (len(x) == 3 and all(isinstance(c, (int, float, str)) for c in x)):
+    elif isinstance(x, list) and not (x and all(isinstance(c, (int, float, str)) and not isinstance(c, bool)
+                                                 for c in x)):
         for i, v in enumerate(x):
             _leaves(v, path + (i,), out)
     elif x is not None and not isinstance(x, bool):
@@ -193,7 +194,8 @@ def _leaves(x: Any, path: tuple, out: list) -> None:
 
 def _show(x: Any, unit: str, values: dict, units: dict) -> str:
     if isinstance(x, list):
-        return "(" + ", ".join(_show(c, "", values, units) for c in x) + ")" + (f" {unit}" if unit else "")
+        inner = ", ".join(_show(c, "", values, units) for c in x)
+        return (f"({inner})" if len(x) == 3 else inner) + (f" {unit}" if unit else "")
     if isinstance(x, str) and x.strip() in values:
         name = x.strip()
         v = values[name]
@@ -213,6 +215,28 @@ def _schema(ptype: str) -> dict:
         return {}
 
 
+@lru_cache(maxsize=64)
+def _results_schema(ptype: str) -> dict:
+    from dyncli.schema import results_json_schema
+
+    try:
+        return results_json_schema(ptype)
+    except KeyError:
+        return {}
+
+
+def declared_dimensionless(ptype: str | None, answer: str) -> bool:
+    """True when the type declares the answer's result as a plain number
+    without a unit (an amplification, a ratio, a count of turns)."""
+    if not ptype:
+        return False
+    prop = (_results_schema(ptype).get("properties") or {}).get(str(answer).split(".")[0])
+    if not isinstance(prop, dict) or "." in str(answer) or prop.get("x-unit"):
+        return False
+    types = prop.get("type")
+    return types == "number" or (isinstance(types, list) and "number" in types)
+
+
 def field_unit(ptype: str | None, path: tuple) -> str:
     """The SI unit of a problem field (from its declared dimension), or ''."""
     from dyncli.units import si_unit
@@ -229,7 +253,7 @@ def field_unit(ptype: str | None, path: tuple) -> str:
             node = (node.get("properties") or {}).get(p) if isinstance(node, dict) else None
         if node is None:
             return ""
-    dim = _dim(node, sch)
+    dim = _dim(node, sch) or _dim(_resolve(node.get("items"), sch), sch) if isinstance(node, dict) else None
     return si_unit(dim) if dim else ""
 
 

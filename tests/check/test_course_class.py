@@ -166,3 +166,26 @@ def test_roster_errors_name_the_line(tmp_path):
     r.write_text("student\nalice@example.edu\nalice@example.edu\n", encoding="utf-8")
     code, _, err = run_cli("check", "--key", KEY, "--roster", str(r), "docs/course-example/submissions/alice.yaml")
     assert code == 2 and ":3: student 'alice@example.edu' is listed twice" in err
+
+
+def test_fixed_data_units_and_dimensionless(tmp_path):
+    """Every number a vibration problem uses (drawn k0; fixed ζ, a 2 mm base amplitude) with its unit, and
+    'dimensionless' only for a result declared as a pure number (the amplification G), 'in rad' for φ."""
+    (tmp_path / "p.yaml").write_text(
+        "type: vibration\ntitle: Base-excited\nparams: {k0: 400, Y: \"2 mm\"}\nm: 1\nk: k0\nzeta: 0.05\n"
+        "L: 0.2\nx0: 0.2\nv0: 0\nbase: {amplitude: Y, omega: 30}\nat: [0, 0.1]\n", encoding="utf-8")
+    (tmp_path / "key.yaml").write_text(
+        'title: HW\nvariants: {salt: s, params: {k0: {uniform: [300, 500], step: 10, unit: N/m}}}\n'
+        'problems:\n  - {problem: p.yaml, text: "A {{mass}} on k = {k0:.3g} N/m, base amplitude {Y} mm."}\n'
+        'questions:\n  - {id: G, problem: p.yaml, answer: G, text: "Transmissibility?"}\n'
+        '  - {id: phi, problem: p.yaml, answer: phi}\n', encoding="utf-8")
+    code, out, err = run_cli("variant", str(tmp_path / "key.yaml"), "--student", "x", "--format", "markdown")
+    assert code == 0, err
+    from dyncli.check.keyfile import read_key
+    from dyncli.check.problemfiles import ProblemFiles
+
+    k0 = read_key(str(tmp_path / "key.yaml"), ProblemFiles()).variants.draw("x")["k0"]
+    assert f"A {{mass}} on k = {k0:.3g} N/m, base amplitude 2 mm." in out
+    assert "`zeta` = 0.05;" in out and "`base.amplitude` = Y = 2 mm" in out and "`base.omega` = 30 rad/s" in out
+    assert "`m` = 1 kg" in out and f"`k` = k0 = {k0:g} N/m" in out
+    assert "**G (1 point, dimensionless)**: Transmissibility?" in out and "**phi (1 point, in rad)**" in out
