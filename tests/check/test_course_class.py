@@ -109,15 +109,12 @@ def test_csv_cells_never_formulas():
     assert cell("-x") == "'-x" and cell("-1.5") == "-1.5" and cell("+2e3") == "+2e3" and cell("alice") == "alice"
 
 
-def test_gradebook_and_stats_of_the_course_example():
+def test_gradebook_and_stats_of_the_course_example(tmp_path):
     """The committed gradebook.csv and stats.txt are what the documented command writes."""
-    out_csv = ROOT / "build-test-gradebook.csv"
-    try:
-        code, out, err = run_cli("check", "--key", KEY, "--roster", ROSTER, *_subs(), "--format", "csv",
-                                 "-o", str(out_csv), "--stats")
-        book = out_csv.read_text(encoding="utf-8")
-    finally:
-        out_csv.unlink(missing_ok=True)
+    out_csv = tmp_path / "gradebook.csv"
+    code, out, err = run_cli("check", "--key", KEY, "--roster", ROSTER, *_subs(), "--format", "csv",
+                             "-o", str(out_csv), "--stats")
+    book = out_csv.read_text(encoding="utf-8")
     assert code == 1
     assert "student 'eve@elsewhere.edu' is not on the roster" in err
     assert book == (COURSE / "gradebook.csv").read_text(encoding="utf-8")
@@ -189,3 +186,29 @@ def test_fixed_data_units_and_dimensionless(tmp_path):
     assert "`zeta` = 0.05;" in out and "`base.amplitude` = Y = 2 mm" in out and "`base.omega` = 30 rad/s" in out
     assert "`m` = 1 kg" in out and f"`k` = k0 = {k0:g} N/m" in out
     assert "**G (1 point, dimensionless)**: Transmissibility?" in out and "**phi (1 point, in rad)**" in out
+
+
+def test_course_options_go_with_their_commands():
+    for args in (["check", "docs/course-example/self-study.yaml", "--format", "csv"],
+                 ["check", "docs/course-example/self-study.yaml", "--stats"],
+                 ["check", "docs/course-example/self-study.yaml", "--roster", ROSTER],
+                 ["variant", KEY, "--student", "a", "--roster", ROSTER, "-o", "x"],
+                 ["variant", KEY, "--roster", ROSTER],
+                 ["variant", KEY, "--student", "a", "-o", "x"]):
+        code, _, err = run_cli(*args)
+        assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err, (args, err)
+
+
+def test_missing_students_in_json_and_a_not_json_previous(tmp_path):
+    code, out, err = run_cli("check", "--key", KEY, "--roster", ROSTER, "docs/course-example/submissions/alice.yaml",
+                             "--format", "json")
+    assert code == 1
+    doc = json.loads(out)
+    missing = [s for s in doc["submissions"] if s["file"] == "(no submission)"]
+    assert len(missing) == 39 and all(q["status"] == "missing" and q["score"] == 0
+                                      for s in missing for q in s["questions"])
+    assert doc["roster"] == ROSTER and doc["score"] == 8
+    bad = tmp_path / "prev.json"
+    bad.write_text("[1, 2]", encoding="utf-8")
+    code, _, err = run_cli("check", "--key", KEY, "docs/course-example/submissions/alice.yaml", "--compare", str(bad))
+    assert code == 2 and "not a report" in err
