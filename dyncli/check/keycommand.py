@@ -30,10 +30,11 @@ def load_key(key_name: str, root: str | None):
 
 def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: bool = False,
                   output: str | None = None, student: str | None = None, root: str | None = None,
-                  id_from: str = "student", upload: bool = False) -> int:
+                  id_from: str = "student", upload: bool = False, course=None) -> int:
+    """``course``: a :class:`dyncli.check.gradebook.CourseOptions` (--roster, --stats, --compare) or None."""
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
-    if not names:
+    if not names and (course is None or course.roster is None):
         _err("give the submissions to grade (or --selftest to check the key)")
         return 2
     if names.count("-") > 1:
@@ -47,7 +48,14 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             except _OutputError as exc:
                 _err(exc)
         return 2
+    if course is not None and not course.load():
+        return 2
     report = grade_all(key, files, names, reveal, student, id_from, upload)
+    if course is not None:
+        course.finish(report, files, key)
+        if course.summary_only(output):
+            _err(keyformats.summary_line(report))
+            return report.exit_code
     if fmt == "table":
         from dyncli.render.emit import write_view
 
@@ -57,7 +65,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             _err(f"{output}: cannot write ({exc.strerror})")
             return 2
         return report.exit_code
-    render = {"json": keyformats.render_json, "junit": keyformats.render_junit,
+    render = {"json": keyformats.render_json, "junit": keyformats.render_junit, "csv": _csv,
               "github": keyformats.render_github, "gradescope": keyformats.render_gradescope}[fmt]
     try:
         _emit(render(report), output)
@@ -72,6 +80,12 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
     _err(keyformats.summary_line(report))
     return report.exit_code
+
+
+def _csv(report) -> str:
+    from dyncli.check.gradebook import render_csv
+
+    return render_csv(report)
 
 
 def grade_all(key, files, names: list[str], reveal: bool = False, student: str | None = None,

@@ -30,9 +30,9 @@ from dyncli.check.safe import oneline, shown
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
-TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission")
+TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission", "problems")
 Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title",
-          "feedback")
+          "feedback", "text")
 FEEDBACK_KEYS = ("correct", "carried", "partial", "wrong", "missing", "invalid") + SLIPS
 MAX_FEEDBACK = 1000
 MAX_ID = 64
@@ -54,6 +54,7 @@ class Question:
     visible: bool = True
     title: str | None = None
     feedback: dict[str, str] = field(default_factory=dict)   # status or slip -> the instructor's text
+    text: Any = None                           # the statement: parsed pieces (dyncli.check.statement)
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
 
@@ -68,6 +69,10 @@ class Key:
     questions: list[Question] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     submission: str | None = None              # the file name a Gradescope upload must have
+    texts: dict = field(default_factory=dict)  # (problem file, index) -> parsed statement of that problem
+
+    def problem_text(self, lp) -> Any:
+        return self.texts.get((lp.file, lp.index)) if lp is not None else None
 
     def question(self, qid: str) -> Question | None:
         return next((q for q in self.questions if q.id == qid), None)
@@ -145,6 +150,8 @@ class _Reader:
         for i, item in enumerate(items):
             self.question(item, ("questions", i))
         self.check_ids()
+        if "problems" in data:
+            self.problem_texts(data["problems"])
         if "variants" in data:
             from dyncli.check.variants import read_variants
 
@@ -225,6 +232,8 @@ class _Reader:
             if not isinstance(item["title"], str):
                 raise _Bad(path + ("title",), "title must be text", key=False)
             q.title = item["title"]
+        if "text" in item:
+            q.text = item["text"]      # checked against the problem's params in check_texts
 
     def problem(self, q: Question, item: dict, path: tuple) -> None:
         p = item.get("problem")
@@ -296,6 +305,16 @@ class _Reader:
             out[k] = v.strip()
         return out
 
+    def problem_texts(self, raw: Any) -> None:
+        from dyncli.check.statement import read_problem_texts
+
+        read_problem_texts(self, raw, Question)
+
+    def check_texts(self, names) -> None:
+        from dyncli.check.statement import check_texts
+
+        check_texts(self, names, Question)
+
     def carry(self, raw: Any, path: tuple) -> tuple[str, str]:
         if not isinstance(raw, dict) or set(raw) != {"from", "param"}:
             raise _Bad(path, "carry must be {from: QUESTION-ID, param: PARAMS-NAME}", key=False)
@@ -345,6 +364,7 @@ class _Reader:
             p = raw.get("params")
             return set(p) if isinstance(p, dict) else set()
 
+        self.check_texts(names)
         for q in self.key.questions:
             if q.carry is not None and q.carry[1] not in names(q):
                 self.diag(q.prefix + ("carry", "param"),

@@ -121,7 +121,8 @@ def to_json(report: KeyReport) -> dict:
                      "unknown": [{"id": u["id"], "message": u["message"]} for u in s.unknown]})
     return {"key": report.key.file, "title": report.key.title, "score": report.score,
             "max_score": report.max_score, "exit_code": report.exit_code, "counts": report.counts(),
-            "solves": report.solves, "submissions": subs, "warnings": list(report.warnings)}
+            "solves": report.solves, "submissions": subs, "warnings": list(report.warnings),
+            **({"roster": report.roster.file} if report.roster is not None else {}), **report.course}
 
 
 def render_json(report: KeyReport) -> str:

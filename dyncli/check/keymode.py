@@ -97,6 +97,8 @@ class KeyReport:
     solves: int = 0
     reveal: bool = False
     warnings: list[dict] = field(default_factory=list)     # {student, files, message}
+    roster: Any = None                                    # --roster (dyncli.check.roster.Roster)
+    course: dict = field(default_factory=dict)            # --stats, --compare (dyncli.check.gradebook)
 
     @property
     def score(self) -> float:
