@@ -47,8 +47,9 @@ class StateMotion:
 
     def __init__(self, state: Callable[[float], Mapping], t0: float, t_end: float,
                  breaks: Iterable[float] = (), rtol: float = 0.0, rates: Mapping[str, Any] | None = None,
-                 batch: Callable[[list[float]], list[Mapping]] | None = None):
+                 batch: Callable[[list[float]], list[Mapping]] | None = None, subdivide: int | None = None):
         self.state, self.t0, self.t_end, self.rtol = state, float(t0), float(t_end), float(rtol)
+        self.subdivide = subdivide                  # 1 when the breaks are an ODE's steps
         self.batch = batch                          # the states at many times in one run (optional)
         inner = sorted({float(b) for b in breaks if self.t0 < b < self.t_end})
         self.breaks = [self.t0] + inner + [self.t_end]
@@ -68,7 +69,7 @@ class StateMotion:
     def prefetch(self) -> None:
         """The states at every sample of the search grid in one ``batch`` call (when given)."""
         if self.batch is not None:
-            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end) if t not in self._cache]
+            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self)) if t not in self._cache]
             self._limit = 4096 + len(self._cache) + len(T)
             for t, st in zip(T, self.batch(T)):
                 self._cache[t] = flatten(st)
@@ -232,11 +233,11 @@ def _table(rows):
     return Table("find (§11): find.N holds the whole state at t", ["#", "query", "t [s]", "value", "at end"], rows)
 
 
-def turns(rate: Callable[[float], float], breaks: Iterable[float]) -> list[float]:
+def turns(rate: Callable[[float], float], breaks: Iterable[float], subdivide: int = _q.SUBDIVIDE) -> list[float]:
     """The roots of ``rate`` where it changes sign (Brent), over the :mod:`dyncli.queries` grid of
     the breaks: the turning points of the coordinate whose rate it is."""
     b = sorted(float(x) for x in breaks)
-    T = _q._grid(b, b[0], b[-1])
+    T = _q._grid(b, b[0], b[-1], subdivide)
     R = [rate(t) for t in T]
     out = []
     for k in range(len(T) - 1):

@@ -3,6 +3,7 @@
 Topic-agnostic, in plain floats.  :func:`parse_queries` validates the raw list; :func:`answer`
 answers it against any motion with: ``t0``, ``t_end`` (floats); ``breaks`` (increasing floats
 from t0 to t_end: step ends or natural pieces; the results are smooth between two breaks);
+optional ``subdivide`` (the pieces each break interval is cut into, default SUBDIVIDE);
 ``paths()`` (the valid scalar result paths); ``value(path, t) -> float`` (KeyError for an
 unknown path); optional ``rate(path, t) -> float | None`` (the time derivative when known);
 optional ``rtol`` (the values' relative accuracy, default 0: exact to rounding; it widens the
@@ -190,13 +191,19 @@ def _check_path(motion: Any, path: str, where: str) -> None:
                          + ", ".join(sorted(known)[:8]) + (" ..." if len(known) > 8 else ""), where)
 
 
-def _grid(breaks: Iterable[float], lo: float, hi: float) -> list[float]:
-    """lo, the breaks inside (lo, hi) and hi, each interval cut into SUBDIVIDE equal pieces."""
+def _grid(breaks: Iterable[float], lo: float, hi: float, n: int = SUBDIVIDE) -> list[float]:
+    """lo, the breaks inside (lo, hi) and hi, each interval cut into n (SUBDIVIDE) equal pieces."""
     pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
     out = [lo]
     for a, b in zip(pts, pts[1:]):
-        out += [x for x in (a + (b - a) * k / SUBDIVIDE for k in range(1, SUBDIVIDE)) if a < x < b] + [b]
+        out += [x for x in (a + (b - a) * k / n for k in range(1, n)) if a < x < b] + [b]
     return [x for i, x in enumerate(out) if i == 0 or x > out[i - 1]]
+
+
+def _pieces(motion: Any) -> int:
+    """How many pieces each break interval is cut into: ``motion.subdivide`` (1 for the steps of
+    an ODE, already short beside the motion) or SUBDIVIDE."""
+    return int(getattr(motion, "subdivide", SUBDIVIDE) or SUBDIVIDE)
 
 
 def _rate_fn(motion: Any, path: str, t0: float):
@@ -215,7 +222,7 @@ def _sign(x: float, tol: float) -> int:
 def _when(motion: Any, q: When) -> float | None:
     """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None."""
     path, V = q.path, q.value
-    T = _grid(motion.breaks, float(motion.t0), float(motion.t_end))
+    T = _grid(motion.breaks, float(motion.t0), float(motion.t_end), _pieces(motion))
     F = [float(motion.value(path, t)) for t in T]
     scan = _Crossings(lambda t: float(motion.value(path, t)) - V, _rate_fn(motion, path, motion.t0),
                       T, [f - V for f in F], _tol(motion, max([abs(V)] + [abs(f) for f in F])))
@@ -299,7 +306,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
     h = lambda t: sense * float(motion.value(path, t))     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
-    T = _grid(motion.breaks, w1, w2)
+    T = _grid(motion.breaks, w1, w2, _pieces(motion))
     H, n, rooted = [h(t) for t in T], len(T), set()
     cands = [(T[0], H[0]), (T[-1], H[-1])]
     HR = [hr(t) for t in T] if hr else []

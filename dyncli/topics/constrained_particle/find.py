@@ -67,8 +67,9 @@ def uniform_breaks(t_end: float, period) -> list[float]:
     return [t_end * k / n for k in range(n + 1)]
 
 
-def report(p, res, states, breaks, keys) -> None:
-    """``distance`` at the times of ``at`` and the ``find`` answers."""
+def report(p, res, states, breaks, keys, subdivide=None) -> None:
+    """``distance`` at the times of ``at`` and the ``find`` answers (``subdivide``: 1 when the
+    breaks are the ODE's steps)."""
     t_end = float(p.t_end)
     B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
 
@@ -82,7 +83,7 @@ def report(p, res, states, breaks, keys) -> None:
             memo.update(zip(new, _entries(states(new), len(new), keys)))
         return [memo[float(t)] for t in ts]
 
-    turns = [] if t_end <= 0 else _turns(batch, B)
+    turns = [] if t_end <= 0 else _turns(batch, B, subdivide)
     s = lambda t: batch([t])[0]["s"]                 # noqa: E731
     s_at = {}
 
@@ -102,13 +103,13 @@ def report(p, res, states, breaks, keys) -> None:
     def full(t: float) -> dict:
         return dict(batch([t])[0], distance=distance(t))
 
-    motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol),
+    motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,
                             rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a"},
                             batch=lambda ts: [dict(e) for e in batch(ts)])
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
 
 
-def _turns(batch, B) -> list[float]:
-    sm = mf.StateMotion(lambda t: batch([t])[0], B[0], B[-1], B, batch=batch)
+def _turns(batch, B, subdivide=None) -> list[float]:
+    sm = mf.StateMotion(lambda t: batch([t])[0], B[0], B[-1], B, batch=batch, subdivide=subdivide)
     sm.prefetch()
-    return mf.turns(lambda t: sm.value("s_dot", t), B)
+    return mf.turns(lambda t: sm.value("s_dot", t), B, subdivide or mf._q.SUBDIVIDE)

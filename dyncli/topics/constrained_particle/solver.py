@@ -96,7 +96,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if res is None:
         res = _solve_ode(p, model, times)
         find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
-                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES)
+                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES, subdivide=1)
     equilibria.add(res, p, model)
     if not p.forces:
         res.warn("no forces: the particle moves under the curve's reaction alone (no gravity)"

@@ -55,7 +55,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         st["distance"] = odo.at([t])[0]
         return st
 
-    motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol),
+    motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x": "v", "v": "a"},
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))])
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))

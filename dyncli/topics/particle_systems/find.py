@@ -80,6 +80,6 @@ def report(p, res, steps: Steps, quantities, n: int) -> None:
         return float(steps.y([t])[0, 3 * (n + int(i)) + int(c)])
 
     params = resolve_params(p.params)
-    motion = mf.StateMotion(lambda t: batch([t])[0], 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol),
+    motion = mf.StateMotion(lambda t: batch([t])[0], 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x_motion": velocity}, batch=batch)
     mf.attach(res, p.find, mf.answer_find(p.find, motion, lambda x: constant(x, params), res.warn))

@@ -169,18 +169,29 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         from dyncli.topics.rectilinear.case2 import States
 
         sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
-    motion = _Motion(p, sample)
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
     t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
     raw = [x for _, x in generic]
+    dense = None
     if generic:
-        t_end = motion.reachable_end(mf.search_end(t_end, raw, const))
+        t_end = mf.search_end(t_end, raw, const)
+        if res.results.get("case") == "general":    # one run with every step's interpolant
+            from dyncli.topics.rectilinear.general import Dense
+
+            sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
+    motion = _Motion(p, sample)
+    if generic:
+        t_end = dense.end if dense is not None else motion.reachable_end(t_end)
     else:
         t_end = t1
     times = [e["t"] for e in items if e and e.get("reached")] + [t1, t_end]
     lo, hi = min(times), max(times)
-    turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
+    if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
+        turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
+        knots = [b for b in dense.breaks if t1 < b < t_end]
+    else:
+        turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
     if generic:
         def batch(ts) -> list[dict]:                 # the state with the distance travelled
             return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
@@ -189,7 +200,8 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
                             rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
                             rates={"s": "v", "v": lambda t, _: motion.accel(t),
-                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch)
+                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch,
+                            subdivide=1 if dense is not None else None)
         for (i, _), a in zip(generic, mf.answer_find(raw, sm, const, None, full=motion.state)):
             if not a["reached"]:
                 res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"

@@ -254,3 +254,41 @@ def _event(g, ta: float, tb: float, ga: float, gb: float):
     if gb == 0:
         return tb
     return root_in_bracket(g, ta, tb, ga, gb)
+
+
+class Dense:
+    """The motion from t1 to t_end (or to where the integration fails: ``end``) as every accepted
+    step's interpolant: the queries of every motion (:mod:`.find`) search it without integrating
+    again; ``breaks`` are the steps' ends."""
+
+    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float):
+        import bisect
+
+        self._bisect = bisect.bisect_left
+        self.p, self.run = p, _Run(p, method, rtol, atol)
+        self.breaks, self.steps = [float(p.t1)], []
+
+        def visit(step):
+            step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
+            self.breaks.append(float(step.tb))
+            self.steps.append(step._dense)
+            return False
+
+        failed = self.run.march(p.t1, [p.s1, p.v1], t_end, visit) if t_end > p.t1 else None
+        self.end = float(failed[0]) if failed else float(t_end)
+        if failed and self.breaks[-1] > self.end:
+            self.end = self.breaks[-1]
+
+    def __call__(self, p, times) -> list[dict]:
+        out = []
+        for t in (float(x) for x in times):
+            if t == self.p.t1 or not self.steps:
+                s, v = self.p.s1, self.p.v1
+            elif t > self.breaks[-1]:
+                out.append({"reached": False})
+                continue
+            else:
+                k = min(max(self._bisect(self.breaks, t) - 1, 0), len(self.steps) - 1)
+                s, v = (float(c) for c in self.steps[k](t))
+            out.append({"t": t, "s": s, "v": v, "a": self.run.acc(t, s, v), "reached": True})
+        return out
