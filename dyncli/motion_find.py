@@ -285,6 +285,8 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
         turns = (t_end - t0) * fastest / (2 * _m.pi)
         if isinstance(period, (int, float)) and period and period > 0:
             turns = max(turns, (t_end - t0) / period)
+        if not _m.isfinite(turns):                  # a rate beyond a double: the finest grid allowed
+            turns = MAX_PIECES
         n = int(min(max(64, _m.ceil(turns * PER_TURN)), MAX_PIECES))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
         if turns * PER_TURN > MAX_PIECES:

@@ -173,20 +173,17 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     asked = [q.t for q in p.find if q.kind == "t"]
     t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
     raw = [x for _, x in generic]
+    reached = [e["t"] for e in items if e and e.get("reached")]
+    t_end = mf.search_end(t_end, raw, const) if generic else max(reached + [t1])
     dense = None
-    if generic:
-        t_end = mf.search_end(t_end, raw, const)
-        if res.results.get("case") == "general":    # one run with every step's interpolant
-            from dyncli.topics.rectilinear.general import Dense
+    if res.results.get("case") == "general" and t_end > t1:    # one run with every step's interpolant
+        from dyncli.topics.rectilinear.general import Dense
 
-            sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
+        sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
     motion = _Motion(p, sample)
     if generic:
         t_end = dense.end if dense is not None else motion.reachable_end(t_end)
-    else:
-        t_end = t1
-    times = [e["t"] for e in items if e and e.get("reached")] + [t1, t_end]
-    lo, hi = min(times), max(times)
+    lo, hi = min(reached + [t1]), max(reached + [t1, t_end])
     if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
         turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
         knots = [b for b in dense.breaks if t1 < b < t_end]
