@@ -207,3 +207,66 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
 
     r = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
     return float(r.x), r.fun
+
+
+def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48):
+    """Every root of a smooth ``f`` (evaluated on arrays) in [a, b], decided by the sign analysis
+    of its critical points, not by sampling: (roots, touches, bad).
+
+    On each cell f is replaced by its Chebyshev interpolant p of degree ``deg``, the cell halved
+    until p's last coefficients are at the rounding of f's values (p then equals f to rounding).
+    Between consecutive critical points of p (the real roots of p') p is monotone, so f has at
+    most one root there: the signs of f itself at the cell's ends and at those critical points
+    decide every root, each refined by Brent in its bracket (``roots``: the sign changes).  A
+    critical point where f is within its rounding of 0 without a sign change is a double root
+    (a tangency), unless halving the cell around it decides its sign (``touches``).  ``bad``:
+    cells where f is not finite or not resolved at the smallest width (their midpoints)."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    eps = sys.float_info.epsilon
+    x1 = C.chebpts1(deg + 1)
+    V = C.chebvander(x1, deg)
+    edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
+    stack = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1]
+    roots, touches, bad = [], [], []
+    tiny = 64 * eps * max(abs(a), abs(b), 1e-300)
+    while stack:
+        u, v, depth = stack.pop()
+        m, h = 0.5 * (u + v), 0.5 * (v - u)
+        with np.errstate(all="ignore"):
+            y = np.asarray(f(m + h * x1), dtype=float)
+        split = depth < max_depth and h > tiny
+        if not np.all(np.isfinite(y)):
+            if split:
+                stack += [(m, v, depth + 1), (u, m, depth + 1)]
+            else:
+                bad.append(m)
+            continue
+        c = V.T @ y / (deg + 1)
+        c[1:] *= 2
+        noise = 16 * eps * float(np.max(np.abs(y)))
+        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise) and split:
+            stack += [(m, v, depth + 1), (u, m, depth + 1)]
+            continue
+        r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+        r = np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
+        sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
+        with np.errstate(all="ignore"):
+            fs = [float(w) for w in np.asarray(f(np.array(sep)), dtype=float)]
+        undecided = [j for j in range(1, len(sep) - 1)
+                     if abs(fs[j]) <= noise and fs[j] * fs[j - 1] > 0 and fs[j] * fs[j + 1] > 0]
+        if undecided and split:          # a near-tangency: halve at it, the rounding shrinks with f's size
+            s = sep[undecided[0]]
+            stack += [(s, v, depth + 1), (u, s, depth + 1)]
+            continue
+        touches += [sep[j] for j in undecided]
+        for j in range(len(sep) - 1):
+            if fs[j] == 0 and (j > 0 or not roots or roots[-1] != sep[j]):
+                roots.append(sep[j])
+            elif fs[j] * fs[j + 1] < 0:
+                roots.append(brent(lambda x: float(np.asarray(f(np.array([x])), dtype=float)[0]), sep[j], sep[j + 1],
+                                   4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
+        if fs[-1] == 0 and v == b:
+            roots.append(v)
+    return sorted(set(roots)), sorted(touches), bad
