@@ -6,7 +6,7 @@ piece in a variable x ≥ 0 that makes the integrand smooth: q = a + σx² from 
 (K ≈ Q(a)(q − a): dt = 2 sqrt(M u/(2K)) dx, the inverse square root absorbed exactly, K formed
 from a itself so that it keeps its relative precision however close a lies to a barrier's top),
 else q = q0 + σx; an oscillation is split at the midpoint of its turning points.  Each piece is
-integrated by adaptive Gauss–Kronrod (dyncli.quadrature) to rtol 1e-14, which follows the
+integrated by adaptive Gauss–Kronrod (dyncli.quadrature) to rtol 1e-13, which follows the
 near-separatrix structure (a time growing like the log of the distance to the top).  q(t): Brent
 on x within a piece.  The state at t = 0 is the input itself.
 
@@ -30,8 +30,9 @@ from dyncli.rootfind import brent
 
 from .turning import Energy, Skip
 
-RTOL = 1e-14
+RTOL = 1e-13            # above Gauss–Kronrod's rounding floor (50 ε ∫|f|)
 _EPS = float(np.finfo(float).eps)
+REFUSE = 1e-3              # an error estimate above this is refused (exit 1), not reported
 _TABLE = 8                  # table points per piece (Brent inverts between two of them)
 
 
@@ -41,6 +42,14 @@ class Piece:
     def __init__(self, E, kind, anchor, sig, X, ref=None):
         self.E, self.kind, self.a, self.sig, self.X = E, kind, anchor, sig, X
         self.ref = (anchor, 0.0) if kind == "turn" else ref
+        barrier = E.nearest_crit(anchor) if kind == "turn" else None
+        # next to a barrier's top c, Q(q) itself carries the rounding of q: relative ~ulp(q)/|q − c|
+        self.rtol = RTOL if barrier is None or barrier == anchor else \
+            min(max(RTOL, 4 * math.ulp(max(abs(anchor), 1.0)) / abs(barrier - anchor)), 1e-2)
+        if kind == "line":      # over a barrier's top: K there against its rounding
+            for c in E.crit_between(anchor, anchor + sig * X):
+                k, e = E.K(c, [self.ref])
+                self.rtol = min(max(self.rtol, 4 * e / k if k > 0 else 1e-2), 1e-2)
         self.c = abs(float(E.Q(np.array([anchor]))[0])) if kind == "turn" else 0.0
         self.err = 0.0
         self.xs = [X * j / _TABLE for j in range(_TABLE + 1)]
@@ -77,7 +86,7 @@ class Piece:
         return g
 
     def _quad(self, x0, x1, table=False):
-        I, err, ok = gauss_kronrod(self._g, x0, x1, RTOL, 0.0, what="the time integrand 1/|q̇|")
+        I, err, ok = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, what="the time integrand 1/|q̇|")
         if table:
             self.err += err + (0.0 if ok else abs(I))
         return I
@@ -117,8 +126,9 @@ class Seg:
         return float(self.p.q(x)), self.p.speed(x) * self.p.sig * self.dir
 
 
-def _oscillation(E, a, b, d, start):
-    """Turning points a (behind) and b (ahead in the direction d): (first legs, cycle)."""
+def _oscillation(E, a, b, d, start, ca, cb):
+    """Turning points a (behind) and b (ahead in the direction d), the barriers' tops ca, cb
+    beyond them (or None): (first legs, cycle)."""
     mid = 0.5 * (a + b)
     A = Piece(E, "turn", a, d, math.sqrt(abs(mid - a)))
     B = Piece(E, "turn", b, -d, math.sqrt(abs(b - mid)))
@@ -151,7 +161,7 @@ def plan(E):
     b, cb = ahead
     if b == q0:
         raise Skip("the start is itself a turning point at an equilibrium")
-    behind = (q0, None) if rest else E.next_turn(q0, -d, refs)
+    behind = (q0, E.nearest_crit(q0)) if rest else E.next_turn(q0, -d, refs)
     if behind is None:
         if E.closed:
             raise Skip("no turning point behind the start on the closed curve (rounding): undecided")
@@ -159,7 +169,7 @@ def plan(E):
         P = Piece(E, "turn", b, -d, math.sqrt(abs(wall - b)))
         return [Seg(P, P.x_of(q0), 0.0), Seg(P, 0.0, P.X)], None, 0.0, [b], 0.0
     a, ca = behind
-    first, cycle = _oscillation(E, a, b, d, q0)
+    first, cycle = _oscillation(E, a, b, d, q0, ca, cb)
     sens = 2 * (E.sensitivity(a, ca) + E.sensitivity(b, cb))
     return first, cycle, 0.0, sorted([a, b]), sens
 
@@ -245,6 +255,11 @@ def _estimate(res, p, E, times, dt, period):
     est = vmax * dt / scale if scale > 0 else 0.0
     res.error_estimate = max(est, 100 * _EPS) if n else 0.0
     rtol = float(p.accuracy.rtol)
+    if res.error_estimate > REFUSE:
+        raise NumericalError(f"the energy route's error estimate is {res.error_estimate:.2g} (> {REFUSE:g}): the motion "
+                             "passes so close to a barrier's top (an unstable equilibrium) that its timing is not "
+                             "determined in double precision (it depends on the last digits of q0 and of the turning "
+                             "points); start further from the separatrix (e.g. 1e-10 of q_range from the top or more)")
     if res.error_estimate > rtol:
         res.warn(f"error estimate {res.error_estimate:.2g} > rtol {rtol:g}: the motion passes close to a barrier's "
                  "top (an unstable equilibrium), where its timing depends on the last digits of q0 and of the turning "

@@ -12,9 +12,9 @@ W(q) = ∫ Q dq with the generalised force Q = F·y' (19.4), so T = K(q) = T1 + 
   the particle passes, K < 0 it turns before it — at the one root of K in that bracket (Brent) —
   and |K| within its rounding is undecided: refused with a message (never guessed).
 * K is formed from the nearest point where it is known exactly (the start and, on a closed curve,
-  its images q0 + kL; a turning point, K = 0) as K_ref + ∫_ref^q Q, by Gauss–Legendre when q is
-  within two cells of it (then relative to the integral itself: a barrier 1e-12 rad above the
-  start is resolved), else from the composite table of W on 1024 cells.
+  its images q0 + kL; a turning point, K = 0) as K_ref + ∫_ref^q Q, composite Gauss–Legendre on
+  cells laid from that point, so its rounding is relative to K itself (not to the work over the
+  whole curve): a barrier 1e-12 rad above the start is resolved, and K is smooth to rounding.
 """
 
 from __future__ import annotations
@@ -57,6 +57,7 @@ class Energy:
         self.q0 = float(p.q0)
         self.T0 = 0.5 * float(self.M(np.array([self.q0]))[0]) * float(p.q_dot0) ** 2
         self.Q0 = float(self.Q(np.array([self.q0]))[0])
+        self._integrals = {}
         self.crit = self._critical_points()
 
     # -- the generalised force and the work ----------------------------------------------
@@ -95,22 +96,10 @@ class Energy:
         return (cum[i] + part.reshape(np.shape(q))) + loops * cum[-1]
 
     def I(self, qa, q):
-        """∫_qa^q Q (q an array) and its rounding: directly (4 Gauss panels) within two cells of
-        qa, else from the table."""
-        q = np.atleast_1d(np.asarray(q, float))
-        out, err = np.empty_like(q), np.empty_like(q)
-        near = np.abs(q - qa) <= 2 * self.h
-        if np.any(near):
-            j = np.arange(5) / 4
-            e = qa + (q[near, None] - qa) * j[None, :]
-            v = self.Q(self._nodes(e[:, :-1], e[:, 1:]))
-            parts = (v @ _WG) * (e[:, 1:] - e[:, :-1]) / 2
-            out[near] = parts.sum(axis=1)
-            err[near] = 32 * _EPS * np.abs(parts).sum(axis=1)
-        if np.any(~near):
-            out[~near] = self.W(q[~near]) - self.W(np.array(qa))
-            err[~near] = 64 * _EPS * (self.scale + np.abs(out[~near]))
-        return out, err
+        """∫_qa^q Q (q an array) and its rounding, from qa's own table (:class:`Integral`)."""
+        if qa not in self._integrals:
+            self._integrals[qa] = Integral(self, qa)
+        return self._integrals[qa](np.atleast_1d(np.asarray(q, float)))
 
     def ref_near(self, q, refs):
         """The reference (q_ref, K_ref) nearest q: refs, and the start's images on a closed curve."""
@@ -153,6 +142,10 @@ class Energy:
             cs += [c + k * self.L for c in self.crit if lo < c + k * self.L < hi]
         return sorted(cs, reverse=end < s)
 
+    def nearest_crit(self, q):
+        cs = self.crit_between(q - self.L, q + self.L) if self.closed else self.crit
+        return min(cs, key=lambda c: abs(c - q), default=None)
+
     def next_turn(self, s, d, refs):
         """(a, c): the first root a of K after s in the direction d and the critical point c
         beyond it (None at a wall), or None: no turning point (to the end of an open wire, or
@@ -186,3 +179,36 @@ class Energy:
         hq = max(abs(a - c), 64 * _EPS * max(abs(c), 1.0))
         dQ = abs(float(self.Q(np.array([c + hq]))[0] - self.Q(np.array([c - hq]))[0])) / (2 * hq)
         return math.sqrt(float(self.M(np.array([c]))[0]) / max(dQ, 1e-300)) * da / abs(a - c)
+
+
+class Integral:
+    """∫_qa^q Q by 8-point Gauss–Legendre on cells of the table's width laid from qa on either
+    side (cumulated lazily), the last cell partial: smooth in q, rounding ~ε ∫|Q|."""
+
+    def __init__(self, E, qa):
+        self.E, self.qa = E, qa
+        self.tab = {1.0: (np.zeros(1), np.zeros(1)), -1.0: (np.zeros(1), np.zeros(1))}
+
+    def _extend(self, side, j):
+        cum, cab = self.tab[side]
+        if len(cum) > j:
+            return
+        e = self.qa + side * self.E.h * np.arange(len(cum) - 1, j + 2)
+        parts = (self.E.Q(Energy._nodes(e[:-1], e[1:])) @ _WG) * (e[1:] - e[:-1]) / 2
+        self.tab[side] = (np.concatenate([cum, cum[-1] + np.cumsum(parts)]),
+                          np.concatenate([cab, cab[-1] + np.cumsum(np.abs(parts))]))
+
+    def __call__(self, q):
+        out, err = np.zeros_like(q), np.zeros_like(q)
+        for side in (1.0, -1.0):
+            sel = (q - self.qa) * side > 0
+            if not np.any(sel):
+                continue
+            j = np.floor(np.abs(q[sel] - self.qa) / self.E.h).astype(int)
+            self._extend(side, int(j.max()))
+            cum, cab = self.tab[side]
+            edge = self.qa + side * self.E.h * j
+            part = (self.E.Q(Energy._nodes(edge, q[sel])) @ _WG) * (q[sel] - edge) / 2
+            out[sel] = cum[j] + part
+            err[sel] = 32 * _EPS * (cab[j] + np.abs(part))
+        return out, err
