@@ -209,7 +209,8 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
     return float(r.x), r.fun
 
 
-def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48):
+def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
+              limit: int | None = None):
     """Every root of a smooth ``f`` (evaluated on arrays) in [a, b], decided by the sign analysis
     of its critical points, not by sampling: (roots, touches, bad).
 
@@ -220,7 +221,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
     decide every root, each refined by Brent in its bracket (``roots``: the sign changes).  A
     critical point where f is within its rounding of 0 without a sign change is a double root
     (a tangency), unless halving the cell around it decides its sign (``touches``).  ``bad``:
-    cells where f is not finite or not resolved at the smallest width (their midpoints)."""
+    cells where f is not finite or not resolved at the smallest width (their midpoints).
+    ``limit``: stop (from a) once more than that many roots are found."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
@@ -231,7 +233,7 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
     stack = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1]
     roots, touches, bad = [], [], []
     tiny = 64 * eps * max(abs(a), abs(b), 1e-300)
-    while stack:
+    while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
         m, h = 0.5 * (u + v), 0.5 * (v - u)
         with np.errstate(all="ignore"):
