@@ -211,18 +211,16 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
 
 def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
               limit: int | None = None):
-    """Every root of a smooth ``f`` (evaluated on arrays) in [a, b], decided by the sign analysis
-    of its critical points, not by sampling: (roots, touches, bad).
-
-    On each cell f is replaced by its Chebyshev interpolant p of degree ``deg``, the cell halved
+    """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
+    critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its Chebyshev interpolant p of degree ``deg``, the cell halved
     until p's last coefficients are at the rounding of f's values (p then equals f to rounding).
     Between consecutive critical points of p (the real roots of p') p is monotone, so f has at
     most one root there: the signs of f itself at the cell's ends and at those critical points
     decide every root, each refined by Brent in its bracket (``roots``: the sign changes).  A
     critical point where f is within its rounding of 0 without a sign change is a double root
     (a tangency), unless halving the cell around it decides its sign (``touches``).  ``bad``:
-    cells where f is not finite or not resolved at the smallest width (their midpoints).
-    ``limit``: stop (from a) once more than that many roots are found."""
+    cells where f is not finite or not resolved at the smallest width (their midpoints);
+    ``limit``: stop once more than that many roots are found."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
@@ -230,9 +228,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
     x1 = C.chebpts1(deg + 1)
     V = C.chebvander(x1, deg)
     edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
-    stack = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1]
+    stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
     roots, touches, bad = [], [], []
-    tiny = 64 * eps * max(abs(a), abs(b), 1e-300)
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
         m, h = 0.5 * (u + v), 0.5 * (v - u)
