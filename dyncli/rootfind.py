@@ -210,7 +210,7 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
 
 
 def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
-              limit: int | None = None):
+              limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
     critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its Chebyshev interpolant p of degree ``deg``, the cell halved
     until p's last coefficients are at the rounding of f's values (p then equals f to rounding).
@@ -220,7 +220,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
     critical point where f is within its rounding of 0 without a sign change is a double root
     (a tangency), unless halving the cell around it decides its sign (``touches``).  ``bad``:
     cells where f is not finite or not resolved at the smallest width (their midpoints);
-    ``limit``: stop once more than that many roots are found."""
+    ``limit``: stop once more than that many roots are found; ``floor``: a tail below it is
+    resolved too; more than ``budget`` cells: the rest is ``bad``."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
@@ -232,6 +233,10 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
     roots, touches, bad = [], [], []
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
+        budget -= 1
+        if budget < 0:
+            bad.append(0.5 * (u + v))
+            continue
         m, h = 0.5 * (u + v), 0.5 * (v - u)
         with np.errstate(all="ignore"):
             y = np.asarray(f(m + h * x1), dtype=float)
@@ -245,7 +250,7 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
         c = V.T @ y / (deg + 1)
         c[1:] *= 2
         noise = 16 * eps * float(np.max(np.abs(y)))
-        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise) and split:
+        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor) and split:
             stack += [(m, v, depth + 1), (u, m, depth + 1)]
             continue
         r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
@@ -269,3 +274,4 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
         if fs[-1] == 0 and v == b:
             roots.append(v)
     return sorted(set(roots)), sorted(touches), bad
+
