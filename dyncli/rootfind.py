@@ -212,29 +212,26 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
 def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
               limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
-    critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its Chebyshev interpolant p of degree ``deg``, the cell halved
-    until p's last coefficients are at the rounding of f's values (p then equals f to rounding).
-    Between consecutive critical points of p (the real roots of p') p is monotone, so f has at
-    most one root there: the signs of f itself at the cell's ends and at those critical points
-    decide every root, each refined by Brent in its bracket (``roots``: the sign changes).  A
-    critical point where f is within its rounding of 0 without a sign change is a double root
-    (a tangency), unless halving the cell around it decides its sign (``touches``).  ``bad``:
-    cells where f is not finite or not resolved at the smallest width (their midpoints);
-    ``limit``: stop once more than that many roots are found; ``floor``: a tail below it is
-    resolved too; more than ``budget`` cells: the rest is ``bad``."""
+    critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its
+    Chebyshev interpolant p of degree ``deg``, the cell halved until p's last coefficients are at
+    the rounding of f's values (or below ``floor``).  Between consecutive critical points of p
+    (the real roots of p') p is monotone, so f has at most one root there: the signs of f itself
+    at the cell's ends and at those points decide every root, refined by Brent (``roots``: sign
+    changes).  A critical point where f is within its rounding of 0 without a sign change is a
+    double root (``touches``) unless halving the cell around it decides its sign.  ``bad``: cells
+    where f is not finite or not resolved (midpoints), or beyond ``budget`` cells; ``limit``:
+    stop once more than that many roots are found."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
     eps = sys.float_info.epsilon
-    x1 = C.chebpts1(deg + 1)
-    V = C.chebvander(x1, deg)
+    x1, V = C.chebpts1(deg + 1), C.chebvander(C.chebpts1(deg + 1), deg)
     edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
     stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
     roots, touches, bad = [], [], []
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
-        budget -= 1
-        if budget < 0:
+        if (budget := budget - 1) < 0:
             bad.append(0.5 * (u + v))
             continue
         m, h = 0.5 * (u + v), 0.5 * (v - u)
@@ -271,7 +268,6 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
             elif fs[j] * fs[j + 1] < 0:
                 roots.append(brent(lambda x: float(np.asarray(f(np.array([x])), dtype=float)[0]), sep[j], sep[j + 1],
                                    4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
-        if fs[-1] == 0 and v == b:
-            roots.append(v)
+        roots += [v] if fs[-1] == 0 and v == b else []
     return sorted(set(roots)), sorted(touches), bad
 
