@@ -235,10 +235,9 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
             continue
         m, h = 0.5 * (u + v), 0.5 * (v - u)
         with np.errstate(all="ignore"):
-            y = np.asarray(f(m + h * x1), dtype=float)
-        split = depth < max_depth and h > tiny
-        if not np.all(np.isfinite(y)):
-            if split:
+            y, split = np.asarray(f(m + h * x1), dtype=float), depth < max_depth and h > tiny
+        if not np.all(np.isfinite(y)):          # (a cell with no finite value at all: not halved)
+            if split and np.any(np.isfinite(y)):
                 stack += [(m, v, depth + 1), (u, m, depth + 1)]
             else:
                 bad.append(m)
@@ -256,9 +255,10 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
             fs = [float(w) for w in np.asarray(f(np.array(sep)), dtype=float)]
         undecided = [j for j in range(1, len(sep) - 1)
                      if abs(fs[j]) <= noise and fs[j] * fs[j - 1] > 0 and fs[j] * fs[j + 1] > 0]
-        if undecided and split:          # a near-tangency: halve at it, the rounding shrinks with f's size
-            s = sep[undecided[0]]
-            stack += [(s, v, depth + 1), (u, s, depth + 1)]
+        s = sep[undecided[0]] if undecided else u
+        if undecided and split and (d := 0.125 * min(s - u, v - s)) > 0:
+            # a near-tangency: a cell around it (the rounding shrinks with f's size there)
+            stack += [(s + d, v, depth + 1), (s - d, s + d, depth + 1), (u, s - d, depth + 1)]
             continue
         touches += [sep[j] for j in undecided]
         for j in range(len(sep) - 1):
