@@ -273,6 +273,7 @@ class EnergyMotion:
             return ("wall", wall)
         kmax = kp = self.K1(sp)
         spp = kpp = None
+        dp = self._dk(sp, d)
         for _ in range(_STEPS):
             s = sp + d * h
             at_wall = wall is not None and d * (s - wall) >= 0
@@ -282,12 +283,21 @@ class EnergyMotion:
             k = self.K1(s)
             if k <= 0:
                 return self._kind(s if k == 0 else self._root(sp, s))
-            found = self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None
+            # a minimum of K inside the step: K' from − to + along d (with K_prime: decided by its sign
+            # at the step's ends, issue #28 — not only by three values of K that happen to bracket it)
+            dk = self._dk(s, d)
+            found = self._dip(sp, s, kmax) if dp is not None and dp < 0 <= dk else None
+            found = found or (self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None)
+            dp = dk
             if found or at_wall:
                 return found or ("wall", wall)
             kmax = self.kref = max(kmax, k, self.kref)
             spp, kpp, sp, kp, h = sp, kp, s, k, h * _GROW
         return ("open", None)
+
+    def _dk(self, s, d):
+        """d·K'(s) from K_prime (None without it)."""
+        return None if self.Kp is None else d * float(self.Kp(s))
 
     def _dip(self, a, b, kmax):
         """A local minimum of K inside (a, b): a root pair (returns the first root) or a double
