@@ -209,7 +209,7 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
     return float(r.x), r.fun
 
 
-def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
+def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_depth: int = 48,
               limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
     critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its
