@@ -271,33 +271,24 @@ class EnergyMotion:
             sp, h = (s0 + d * h if wall is None or d * (wall - s0 - d * h) > 0 else wall), h / 2
         if (at_rest and sp == wall) or wall == s0:   # (starting against the wall: refused at once)
             return ("wall", wall)
-        kmax = kp = self.K1(sp)
-        spp = kpp = None
-        dp = self._dk(sp, d)
+        dk_of = (lambda x: d * float(self.Kp(x))) if self.Kp is not None else (lambda x: None)   # noqa: E731
+        kmax, spp, kpp, dp = (kp := self.K1(sp)), None, None, dk_of(sp)
         for _ in range(_STEPS):
-            s = sp + d * h
-            at_wall = wall is not None and d * (s - wall) >= 0
-            s = wall if at_wall else s
+            at_wall = wall is not None and d * (sp + d * h - wall) >= 0
+            s = wall if at_wall else sp + d * h
             if float(self._K(s)) == _INF:   # K overflows far out: no turning point ahead
                 return ("open", None)
             k = self.K1(s)
             if k <= 0:
                 return self._kind(s if k == 0 else self._root(sp, s))
-            # a minimum of K inside the step: K' from − to + along d (with K_prime: decided by its sign
-            # at the step's ends, issue #28 — not only by three values of K that happen to bracket it)
-            dk = self._dk(s, d)
-            found = self._dip(sp, s, kmax) if dp is not None and dp < 0 <= dk else None
-            found = found or (self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None)
-            dp = dk
+            dk = dk_of(s)       # a minimum of K inside the step: K' − to + along d (issue #28), or 3 values of K
+            found = (self._dip(sp, s, kmax) if dp is not None and dp < 0 <= dk else None) or \
+                (self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None)
             if found or at_wall:
                 return found or ("wall", wall)
             kmax = self.kref = max(kmax, k, self.kref)
-            spp, kpp, sp, kp, h = sp, kp, s, k, h * _GROW
+            spp, kpp, sp, kp, h, dp = sp, kp, s, k, h * _GROW, dk
         return ("open", None)
-
-    def _dk(self, s, d):
-        """d·K'(s) from K_prime (None without it)."""
-        return None if self.Kp is None else d * float(self.Kp(s))
 
     def _dip(self, a, b, kmax):
         """A local minimum of K inside (a, b): a root pair (returns the first root) or a double
