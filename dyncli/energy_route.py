@@ -271,22 +271,23 @@ class EnergyMotion:
             sp, h = (s0 + d * h if wall is None or d * (wall - s0 - d * h) > 0 else wall), h / 2
         if (at_rest and sp == wall) or wall == s0:   # (starting against the wall: refused at once)
             return ("wall", wall)
-        kmax = kp = self.K1(sp)
-        spp = kpp = None
+        dk_of = (lambda x: d * float(self.Kp(x))) if self.Kp is not None else (lambda x: None)   # noqa: E731
+        kmax, spp, kpp, dp = (kp := self.K1(sp)), None, None, dk_of(sp)
         for _ in range(_STEPS):
-            s = sp + d * h
-            at_wall = wall is not None and d * (s - wall) >= 0
-            s = wall if at_wall else s
+            at_wall = wall is not None and d * (sp + d * h - wall) >= 0
+            s = wall if at_wall else sp + d * h
             if float(self._K(s)) == _INF:   # K overflows far out: no turning point ahead
                 return ("open", None)
             k = self.K1(s)
             if k <= 0:
                 return self._kind(s if k == 0 else self._root(sp, s))
-            found = self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None
+            dk = dk_of(s)       # a minimum of K inside the step: K' − to + along d (issue #28), or 3 values of K
+            found = (self._dip(sp, s, kmax) if dp is not None and dp < 0 <= dk else None) or \
+                (self._dip(spp, s, kmax) if spp is not None and kp < kpp and kp <= k else None)
             if found or at_wall:
                 return found or ("wall", wall)
             kmax = self.kref = max(kmax, k, self.kref)
-            spp, kpp, sp, kp, h = sp, kp, s, k, h * _GROW
+            spp, kpp, sp, kp, h, dp = sp, kp, s, k, h * _GROW, dk
         return ("open", None)
 
     def _dip(self, a, b, kmax):

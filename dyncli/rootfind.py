@@ -207,3 +207,66 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
 
     r = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": xatol})
     return float(r.x), r.fun
+
+
+def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_depth: int = 48,
+              limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
+    """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
+    critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its
+    Chebyshev interpolant p of degree ``deg``, the cell halved until p's last coefficients are at
+    the rounding of f's values (or below ``floor``).  Between consecutive critical points of p
+    (the real roots of p') p is monotone, so f has at most one root there: the signs of f itself
+    at the cell's ends and at those points decide every root, refined by Brent (``roots``: sign
+    changes).  A critical point where f is within its rounding of 0 without a sign change is a
+    double root (``touches``) unless halving the cell around it decides its sign.  ``bad``: cells
+    where f is not finite or not resolved (midpoints), or beyond ``budget`` cells; ``limit``:
+    stop once more than that many roots are found."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    eps, x1, V = sys.float_info.epsilon, C.chebpts1(deg + 1), C.chebvander(C.chebpts1(deg + 1), deg)
+    edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
+    stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
+    roots, touches, bad = [], [], []      # (the sign changes, the double roots, the unresolved cells)
+    while stack and (limit is None or len(roots) + len(touches) <= limit):
+        u, v, depth = stack.pop()
+        if (budget := budget - 1) < 0:
+            bad.append(0.5 * (u + v))
+            continue
+        m, h = 0.5 * (u + v), 0.5 * (v - u)
+        with np.errstate(all="ignore"):
+            y, split = np.asarray(f(m + h * x1), dtype=float), depth < max_depth and h > tiny
+        if not np.all(np.isfinite(y)):          # (a cell with no finite value at all: not halved)
+            if split and np.any(np.isfinite(y)):
+                stack += [(m, v, depth + 1), (u, m, depth + 1)]
+            else:
+                bad.append(m)
+            continue
+        c = V.T @ y / (deg + 1)
+        c[1:] *= 2
+        noise = 16 * eps * float(np.max(np.abs(y)))
+        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor) and split:
+            stack += [(m, v, depth + 1), (u, m, depth + 1)]
+            continue
+        r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+        r = np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
+        sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
+        with np.errstate(all="ignore"):
+            fs = [float(w) for w in np.asarray(f(np.array(sep)), dtype=float)]
+        undecided = [j for j in range(1, len(sep) - 1)
+                     if abs(fs[j]) <= noise and fs[j] * fs[j - 1] > 0 and fs[j] * fs[j + 1] > 0]
+        s = sep[undecided[0]] if undecided else u
+        if undecided and split and (d := 0.125 * min(s - u, v - s)) > 0:
+            # a near-tangency: a cell around it (the rounding shrinks with f's size there)
+            stack += [(s + d, v, depth + 1), (s - d, s + d, depth + 1), (u, s - d, depth + 1)]
+            continue
+        touches += [sep[j] for j in undecided]
+        for j in range(len(sep) - 1):
+            if fs[j] == 0 and (j > 0 or not roots or roots[-1] != sep[j]):
+                roots.append(sep[j])
+            elif fs[j] * fs[j + 1] < 0:
+                roots.append(brent(lambda x: float(np.asarray(f(np.array([x])), dtype=float)[0]), sep[j], sep[j + 1],
+                                   4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
+        roots += [v] if fs[-1] == 0 and v == b else []
+    return sorted(set(roots)), sorted(touches), bad
+

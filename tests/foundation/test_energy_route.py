@@ -214,3 +214,14 @@ def test_starting_against_a_wall():
     assert m.kind == "wall" and m.t_wall == 0.0 and m.state(0.0) == (0.0, -1.0)
     with pytest.raises(NumericalError, match="end of its range"):
         m.state(0.1)
+
+
+def test_a_minimum_of_K_inside_one_step_of_the_march_is_found_from_K_prime():
+    """Issue #28: a Gaussian barrier (w = 3e-3) narrower than the march's step, K at the step's
+    ends (and the three-value test) above 0: K' from − to + across the step decides that K has a
+    minimum there, which is examined — the body turns at s_T = b − w √ln(2/v²) (closed form)."""
+    w, b, v2 = 3e-3, 0.7770123, 1.999
+    m = EnergyMotion(lambda s: v2 - 2 * np.exp(-((s - b) / w) ** 2), 0.0, math.sqrt(v2),
+                     K_prime=lambda s: 4 * (s - b) / w ** 2 * np.exp(-((s - b) / w) ** 2))
+    assert m.turning_points == pytest.approx([b - w * math.sqrt(math.log(2 / v2))], abs=1e-15)
+    assert m.state(1.0)[1] < 0              # it came back

@@ -10,8 +10,12 @@ angular frequency sqrt(−G'(q*)/(m |τ(q*)|)); unstable when G'(q*) > 0.  For
 potential forces G = −dV_eff/ds with V_eff = V − ½ m ω² ρ² (ρ the distance
 from the axis): stable at a minimum of V_eff.
 
-Roots are bracketed on 4000 samples of q_range and refined with brentq; G' is
-a Richardson-extrapolated central difference.  Needs: q_range, a constant ω
+The roots are decided exactly (dyncli.rootfind.all_roots: the sign of G at the critical points of
+its resolved Chebyshev interpolant, sign changes and tangencies — never by sampling; a closed
+curve also at its seam).  Stability from G's sign on either side of q* (exact, also at a
+degenerate root such as the bifurcation ω² = g/R of the hoop, where G'(q*) = 0: there q* ≈ 0 is
+stable by its cubic term); G' (for omega_small) is a Richardson-extrapolated central difference
+on a step below the gap to the next root (q* ≈ ±√(2δ) just past the bifurcation).  Needs: q_range, a constant ω
 (or a fixed curve), forces that do not depend on t, and forces symmetric
 about the axis of a turning curve (G the same at every angle of the curve);
 otherwise ``equilibria`` is null with a warning.  Friction is ignored here
@@ -22,8 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-N_SAMPLES = 4000
-MAX_EQUILIBRIA = 100      # more on one q_range: the sampling cannot resolve them
+N_CHECK = 400            # points of the symmetry check of a turning curve (not a root search)
+MAX_EQUILIBRIA = 100      # more on one q_range: refused (give a shorter q_range)
 
 
 def _G(model, q, phi=0.0):
@@ -45,10 +49,10 @@ def _why_not(p, model) -> str | None:
 
 def find(p, model):
     """A list of {q, x, stable, omega_small} or (None, reason)."""
-    from dyncli.rootfind import brentq
+    from dyncli.rootfind import all_roots
 
-    lo, hi = p.q_range
-    qs = np.linspace(lo, hi, N_SAMPLES + 1)
+    lo, hi = (float(v) for v in p.q_range)
+    qs = np.linspace(lo, hi, N_CHECK + 1)        # the symmetry check only (no root is decided here)
     with np.errstate(all="ignore"):
         G, _ = _G(model, qs)
         if model.curve.rotating:
@@ -59,42 +63,68 @@ def find(p, model):
     scale = float(np.nanmax(np.abs(G))) if np.any(np.isfinite(G)) else 0.0
     if scale == 0.0:
         return None, "no tangential force anywhere on q_range: every point is a (neutral) relative equilibrium"
-    tol = 1e-12 * max(scale, 1e-300)
-    roots = []
-    for i in range(N_SAMPLES + 1):
-        if np.isfinite(G[i]) and abs(G[i]) <= tol:
-            roots.append(float(qs[i]))
-        elif i < N_SAMPLES and np.isfinite(G[i]) and np.isfinite(G[i + 1]) and G[i] * G[i + 1] < 0 and abs(G[i + 1]) > tol:
-            roots.append(brentq(lambda q: float(_G(model, q)[0][0]), qs[i], qs[i + 1], xtol=1e-15, rtol=1e-15))
-        if len(roots) > MAX_EQUILIBRIA:
-            return None, (f"more than {MAX_EQUILIBRIA} relative equilibria on q_range: give a shorter q_range "
-                          "to list them")
-    if model.closed and roots and abs(roots[-1] - hi) <= 1e-12 * max(1.0, abs(hi)) and abs(roots[0] - lo) <= 1e-12 * max(1.0, abs(lo)):
+    g = lambda q: _G(model, q)[0]            # noqa: E731
+    roots, touches, _bad = all_roots(g, lo, hi, limit=MAX_EQUILIBRIA)
+    ends = g(np.array([lo, hi]))
+    roots += [e for e, v in zip((lo, hi), ends) if abs(v) <= 64 * np.finfo(float).eps * scale]
+    if model.closed and ends[0] * ends[1] <= 0:
+        roots.append(lo)                      # G changes sign across the seam of a closed curve
+    roots = sorted(set(roots + touches))
+    if model.closed and roots and roots[-1] == hi and roots[0] == lo:
         roots.pop()          # the ends of a closed curve are one point
-    h = 1e-4 * (hi - lo)
-    k_ref = scale / (model.m * (hi - lo)) / max(float(np.nanmean(_G(model, qs[::100])[1])), 1e-300)
+    if len(roots) > MAX_EQUILIBRIA:
+        return None, (f"more than {MAX_EQUILIBRIA} relative equilibria on q_range: give a shorter q_range "
+                      "to list them")
     regular = [q for q in roots if float(_G(model, q)[1][0]) > 0]
+    out = [_classify(model, regular, j, lo, hi) for j in range(len(regular))]
     if len(regular) < len(roots):
         bad = ", ".join(f"{q:.6g}" for q in roots if q not in regular)
-        return [_classify(model, q, h, k_ref) for q in regular], (
-            f"the curve's tangent dy/dq vanishes at q = {bad} (not a regular point of the parameter): "
-            "left out of equilibria")
-    return [_classify(model, q, h, k_ref) for q in regular], None
+        return out, (f"the curve's tangent dy/dq vanishes at q = {bad} (not a regular point of the parameter): "
+                     "left out of equilibria")
+    return out, None
 
 
-def _classify(model, q, h, k_ref):
+def _sides(model, qs, j, lo, hi):
+    """G on either side of the root qs[j], at the midpoints to its neighbours (no root between:
+    the sign there is the sign on that whole side), None where the wire ends."""
+    q, L = qs[j], hi - lo
+    nb = []
+    for k, end in ((j - 1, lo), (j + 1, hi)):
+        if 0 <= k < len(qs):
+            nb.append(qs[k])
+        elif model.closed:
+            nb.append(qs[k % len(qs)] + (L if k >= len(qs) else -L) if len(qs) > 1 else q + (L if k > j else -L))
+        else:
+            nb.append(end if end != q else None)
+    vals = [None if v is None else float(_G(model, 0.5 * (q + v))[0][0]) for v in nb]
+    gap = min((abs(v - q) for v in nb if v is not None and v != q), default=L)
+    return vals, gap
+
+
+def _classify(model, qs, j, lo, hi):
+    """Stable when G is restoring on both sides (G > 0 below, < 0 above: a minimum of V_eff; exact,
+    also at a degenerate root where G'(q*) = 0); omega_small from G'(q*) (a Richardson central
+    difference on a step below the gap to the next root), 0 when G'(q*) is 0 within its error."""
+    q = qs[j]
+    (gl, gr), gap = _sides(model, qs, j, lo, hi)
+
     def d(hh):
         return (float(_G(model, q + hh)[0][0]) - float(_G(model, q - hh)[0][0])) / (2 * hh)
 
-    dG = (4 * d(h / 2) - d(h)) / 3          # Richardson: error O(h⁴)
+    h = min(1e-4 * (hi - lo), 0.125 * gap)
+    d1, d2 = d(h), d(h / 2)
+    dG = (4 * d2 - d1) / 3          # Richardson: error O(h⁴)
     _, sp = _G(model, q)
     x = model.curve.state(0.0, q, 0.0, 0.0)[0][:, 0]
+    Gs = abs(float(_G(model, q + h)[0][0])) + abs(float(_G(model, q - h)[0][0]))
+    err = abs(d2 - d1) + 64 * np.finfo(float).eps * (Gs + abs(dG) * h) / h
+    if gl is not None and gr is not None:
+        stable = bool(gl > 0 > gr)
+    else:                            # at the end of an open wire: the linearisation, if it decides
+        stable = None if abs(dG) <= err else bool(dG < 0)
     k = -dG / (model.m * float(sp[0]))
-    if abs(k) <= 1e-8 * k_ref:     # G'(q*) = 0 to within the difference's error: the linearisation cannot tell
-        return {"q": float(q) + 0.0, "x": [float(c) + 0.0 for c in x], "stable": None, "omega_small": 0.0}
-    stable = bool(k > 0)
-    return {"q": float(q) + 0.0, "x": [float(c) + 0.0 for c in x], "stable": stable,
-            "omega_small": float(np.sqrt(k)) if stable else None}
+    omega = (float(np.sqrt(k)) if dG < -err else 0.0) if stable else None
+    return {"q": float(q) + 0.0, "x": [float(c) + 0.0 for c in x], "stable": stable, "omega_small": omega}
 
 
 def add(res, p, model) -> None:

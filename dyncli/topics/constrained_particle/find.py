@@ -33,7 +33,7 @@ def quadrature_states(p, model):
 
     def states(ts):
         ts = [float(t) for t in ts]
-        q, qd, _, _ = quadrature.motion(E, ts, 96)
+        q, qd = quadrature.motion(E, ts)[:2]
         n = len(ts)
         Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
         Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])

@@ -1,27 +1,20 @@
-"""The energy route of ``constrained-particle``: a fixed curve and forces of
-the position only (notes §18-§20).
+"""The energy route of ``constrained-particle``: a fixed curve and forces of the position only
+(notes §18-§20).  The energy integral and its turning points: turning.py (decided exactly).
 
-Along a fixed curve every force of the position only does work that depends
-on q alone, W(q) = ∫ F(y(q))·y'(q) dq (19.4), so the energy equation (20.1)
-integrates once: T = ½ m |y'|² q̇² = T1 + W(q) − W(q0) = K(q).  Turning
-points are the roots of K; the time follows by quadrature,
+The time follows by quadrature, t = ∫ dq/|q̇|, |q̇| = sqrt(2K(q)/M(q)), M = m|y'|², piece by
+piece in a variable x ≥ 0 that makes the integrand smooth: q = a + σx² from a turning point a
+(K ≈ Q(a)(q − a): dt = 2 sqrt(M u/(2K)) dx, the inverse square root absorbed exactly, K formed
+from a itself so that it keeps its relative precision however close a lies to a barrier's top),
+else q = q0 + σx; an oscillation is split at the midpoint of its turning points.  Each piece is
+integrated by adaptive Gauss–Kronrod (dyncli.quadrature) to rtol 1e-13, which follows the
+near-separatrix structure (a time growing like the log of the distance to the top).  q(t): Brent
+on x within a piece.  The state at t = 0 is the input itself.
 
-    t(q) = ∫ dq / |q̇|,   |q̇| = sqrt(2 K(q) / (m |y'(q)|²)),
-
-with Gauss–Jacobi rules whose weight (q − a)^(−½) absorbs the inverse
-square root at a turning point a (K ≈ K'(a)(q − a)), so the rest of the
-integrand is smooth and the rule converges exponentially.  q(t) is found by
-brentq on t(q) within each leg between turning points (from the nearer end
-in time); the motion is periodic between two turning points (the period is
-reported), or a revolution of a closed curve, or a run to the end of the
-wire.  W is a composite 8-point Gauss–Legendre sum on 1024 cells of
-q_range.  ``error_estimate``: the positions recomputed with rules of half
-the nodes (48 vs 96), the largest difference, and at least 100 ε of the
-position scale |x| + |v| t (the rounding of the sums and the root finding).
-
-Not used (the ODE route takes over under method auto) without q_range, on a
-closed curve whose forces do net work around it, or when a turning point is
-an equilibrium (an asymptotic approach that takes infinite time).
+``error_estimate``: the time error (the quadratures' estimates, per period times the periods run,
+plus the sensitivity of the time to the turning points' rounding next to a barrier's top) times
+the largest speed, relative to the position scale |x| + |v| t, at least 100 ε.  Not used (the ODE
+route takes over under method auto) without q_range, on a closed curve whose forces do net work
+around it, or when the energy equals a barrier's top to rounding (refused: undecided).
 """
 
 from __future__ import annotations
@@ -31,202 +24,198 @@ import math
 import numpy as np
 
 from dyncli.errors import NumericalError
+from dyncli.quadrature import gauss_kronrod
 from dyncli.result import Result, Series
+from dyncli.rootfind import brent
 
-N_CELLS = 1024
+from .turning import Energy, Skip
+
+RTOL = 1e-13            # above Gauss–Kronrod's rounding floor (50 ε ∫|f|)
+_EPS = float(np.finfo(float).eps)
+REFUSE = 1e-3              # an error estimate above this is refused (exit 1), not reported
+_TABLE = 8                  # table points per piece (Brent inverts between two of them)
 
 
-class _Skip(Exception):
-    """The energy route does not apply; the message says why."""
+class Piece:
+    """q = anchor + σx² ('turn', K(anchor) = 0) or anchor + σx ('line', K from ref), 0 ≤ x ≤ X."""
 
+    def __init__(self, E, kind, anchor, sig, X, ref=None):
+        self.E, self.kind, self.a, self.sig, self.X = E, kind, anchor, sig, X
+        self.ref = (anchor, 0.0) if kind == "turn" else ref
+        barrier = E.nearest_crit(anchor) if kind == "turn" else None
+        # next to a barrier's top c, Q(q) itself carries the rounding of q: relative ~ulp(q)/|q − c|
+        self.rtol = RTOL if barrier is None or barrier == anchor else \
+            min(max(RTOL, 4 * math.ulp(max(abs(anchor), 1.0)) / abs(barrier - anchor)), 1e-2)
+        if kind == "line":      # over a barrier's top: K there against its rounding
+            for c in E.crit_between(anchor, anchor + sig * X):
+                k, e = E.K(c, [self.ref])
+                self.rtol = min(max(self.rtol, 4 * e / k if k > 0 else 1e-2), 1e-2)
+        self.c = abs(float(E.Q(np.array([anchor]))[0])) if kind == "turn" else 0.0
+        self.err = 0.0
+        self.xs = [X * j / _TABLE for j in range(_TABLE + 1)]
+        self.ts = [0.0]
+        for x0, x1 in zip(self.xs[:-1], self.xs[1:]):
+            self.ts.append(self.ts[-1] + self._quad(x0, x1, table=True))
 
-class Energy:
-    def __init__(self, p, model):
-        self.p, self.model, self.curve, self.m = p, model, model.curve, model.m
-        if p.q_range is None:
-            raise _Skip("the energy route needs q_range (the ends of the wire)")
-        self.lo, self.hi = (float(v) for v in p.q_range)
-        self.L = self.hi - self.lo
-        self.closed = model.closed
-        xg, wg = np.polynomial.legendre.leggauss(8)
-        self.xg, self.wg = xg, wg
-        edges = np.linspace(self.lo, self.hi, N_CELLS + 1)
-        self.edges, self.h = edges, edges[1] - edges[0]
-        Qt, Qn = self._gen(self._cell_nodes(edges[:-1], edges[1:]))
-        w = wg * (self.h / 2)
-        self.cum = np.concatenate([[0.0], np.cumsum(Qt @ w)])
-        self.cum_n = np.concatenate([[0.0], np.cumsum(Qn @ w)])
-        self.scale = max(float(np.max(np.abs(self.cum))), 1e-300)
-        x6, w6 = np.polynomial.legendre.leggauss(6)   # the cells must resolve the forces along the curve
-        Q6 = self._gen((0.5 * (edges[:-1] + edges[1:]))[:, None] + (0.5 * self.h) * x6[None, :])[0]
-        if np.max(np.abs(self.cum[1:] - np.cumsum(Q6 @ (w6 * self.h / 2)))) > 1e-9 * self.scale:
-            raise _Skip(f"q_range is too long for the energy route's {N_CELLS} cells to resolve the curve")
-        if self.closed and abs(self.cum[-1]) > 1e-10 * self.scale:
-            raise _Skip("the forces do net work around the closed curve")
-        self.q0, self.T0 = float(p.q0), 0.5 * self.m * self._g(np.array([p.q0]))[0] * float(p.q_dot0) ** 2
+    def q(self, x):
+        return self.a + self.sig * (x * x if self.kind == "turn" else x)
 
-    def _cell_nodes(self, a, b):
-        return (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.xg[None, :]
+    def x_of(self, q):
+        u = abs(q - self.a)
+        return math.sqrt(u) if self.kind == "turn" else u
 
-    def _gen(self, q):
-        """The generalised forces F·y' (total and of the non-potential terms) at q (any shape)."""
-        shape = q.shape
-        qf = q.ravel()
-        x = self.curve.y(qf)
-        Fc, Fn = self.model.forces(np.zeros_like(qf), x, np.zeros_like(x))
-        y1 = self.curve.dy(qf)
-        return (np.sum((Fc + Fn) * y1, axis=0).reshape(shape), np.sum(Fn * y1, axis=0).reshape(shape))
+    def _K(self, x):
+        q = self.q(np.asarray(x, float))
+        return q, self.E.K_from(q, self.ref)
 
-    def _g(self, q):
-        y1 = self.curve.dy(np.ravel(q))
-        return np.sum(y1 * y1, axis=0).reshape(np.shape(q))
-
-    def W(self, q, which=0):
-        """W(q) − W(lo) (which=0: all forces; 1: the non-potential ones), q anywhere
-        (a closed curve is periodic)."""
-        q = np.asarray(q, float)
-        loops = np.floor((q - self.lo) / self.L) if self.closed else np.zeros_like(q)
-        qq = q - loops * self.L
-        i = np.clip(((qq - self.lo) // self.h).astype(int), 0, N_CELLS - 1)
-        a = self.edges[i]
-        nodes = self._cell_nodes(np.ravel(a), np.ravel(qq))
-        G = self._gen(nodes)[which]
-        part = (G @ self.wg) * (np.ravel(qq) - np.ravel(a)) / 2
-        cum = self.cum if which == 0 else self.cum_n
-        return (cum[i] + part.reshape(np.shape(q))) + loops * cum[-1]
-
-    def K(self, q, ref=None):
-        """Kinetic energy at q: from a turning point ref (K(ref) = 0), else from q0."""
-        if ref is None:
-            return self.T0 + self.W(q) - self.W(np.array(self.q0))
-        return self.W(q) - self.W(np.array(ref))
-
-    # -- turning points ---------------------------------------------------
-    def next_turn(self, qs, d, ref):
-        """The first turning point after qs in the direction d (None if none
-        before the end of an open wire, or within one loop of a closed one)."""
-        from dyncli.rootfind import brentq
-
-        end = qs + d * self.L if self.closed else (self.hi if d > 0 else self.lo)
-        if end == qs:                             # already at that end of the wire
-            return None
-        n = max(2, int(math.ceil(abs(end - qs) / self.h * 2)))
-        qn = qs + (end - qs) * np.arange(1, n + 1) / n
-        K = self.K(qn, ref)
-        neg = np.flatnonzero(K <= 0)
-        if not neg.size:
-            return None
-        j = int(neg[0])
-        a = qs if j == 0 else float(qn[j - 1])
-        if K[j] == 0:
-            return float(qn[j])
-        fa = float(self.K(np.array(a), ref))
-        if fa <= 0:
-            return a
-        return float(brentq(lambda q: float(self.K(np.array(q), ref)), a, float(qn[j]), xtol=1e-15, rtol=1e-15))
-
-    def check_turn(self, b):
-        Qb = float(self._gen(np.array([b]))[0][0])
-        if abs(Qb) <= 1e-9 * self.scale / self.L:
-            raise _Skip(f"the turning point q = {b:.6g} is an equilibrium (an asymptotic approach)")
-
-    # -- time along a leg ---------------------------------------------------
-    def tau(self, qs, qe, turn_s, turn_e, n, ref):
-        """∫ dq/|q̇| from qs to qe (either order); turn_* marks turning points."""
-        from scipy.special import roots_jacobi
-
-        if qs == qe:
-            return 0.0
-        al, be = (-0.5 if turn_s else 0.0), (-0.5 if turn_e else 0.0)
-        x, w = roots_jacobi(n, be, al)          # weight (1 − x)^be (1 + x)^al on [−1, 1]
-        q = qs + (qe - qs) * (x + 1) / 2
-        K = np.maximum(self.K(q, ref), 0.0)
-        qd = np.sqrt(2 * K / (self.m * self._g(q)))
-        h = (1 - x) ** (-be) * (1 + x) ** (-al) / qd
-        return float(abs(qe - qs) / 2 * (w @ h))
-
-    def q_at(self, leg, target, n):
-        """q on the leg (qs, qe, turn_s, turn_e, duration, ref) at the time
-        ``target`` after its start."""
-        from dyncli.rootfind import brentq
-
-        qs, qe, ts, te, dur, ref = leg
-        if target <= 0:
-            return qs
-        if target >= dur:
-            return qe
-        if target <= dur / 2:
-            f = lambda q: self.tau(qs, q, ts, False, n, ref) - target  # noqa: E731
+    def _g(self, x):
+        """dt/dx (smooth: the turning point's inverse square root taken out exactly)."""
+        q, K = self._K(x)
+        M = self.E.M(q)
+        if self.kind == "turn":
+            u = np.abs(q - self.a)             # (the rounded q: K/u → |Q(a)| as u → 0)
+            r = np.where(u > 0, K / np.where(u > 0, u, 1.0), self.c)
+            bad = ~(r > 0)
+            g = 2.0 * np.sqrt(M / (2.0 * np.where(bad, 1.0, r)))
         else:
-            f = lambda q: dur - target - self.tau(q, qe, False, te, n, ref)  # noqa: E731
-        lo, hi = (qs, qe) if qs < qe else (qe, qs)
-        return float(brentq(f, lo, hi, xtol=1e-15 * max(1.0, abs(lo), abs(hi)), rtol=1e-15))
+            bad = ~(K > 0)
+            g = np.sqrt(M / (2.0 * np.where(bad, 1.0, K)))
+        if np.any(bad):
+            raise NumericalError(f"the kinetic energy is not positive at q = {float(np.ravel(q)[np.ravel(bad)][0]):.9g} "
+                                 "inside the motion (a turning point the analysis did not find): please report this")
+        return g
+
+    def _quad(self, x0, x1, table=False):
+        I, err, ok = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, what="the time integrand 1/|q̇|")
+        if table:
+            self.err += err + (0.0 if ok else abs(I))
+        return I
+
+    def tau(self, x):
+        """The time from x = 0 to x."""
+        k = min(int(np.searchsorted(self.xs, x, side="right")) - 1, _TABLE - 1)
+        return self.ts[k] + (self._quad(self.xs[k], x) if x != self.xs[k] else 0.0)
+
+    def x_at(self, target):
+        """x where τ(x) = target (0 ≤ target ≤ τ(X))."""
+        if target <= 0:
+            return 0.0
+        if target >= self.ts[-1]:
+            return self.X
+        k = max(int(np.searchsorted(self.ts, target, side="left")) - 1, 0)
+        x0, x1, t0 = self.xs[k], self.xs[k + 1], self.ts[k]
+        return brent(lambda x: t0 + self._quad(x0, x) - target if x > x0 else t0 - target,
+                     x0, x1, 4 * _EPS * abs(x1), 4 * _EPS, 200)
+
+    def speed(self, x):
+        q, K = self._K(np.array([x]))
+        return math.sqrt(max(float(K[0]), 0.0) / (0.5 * float(self.E.M(q)[0])))
 
 
-def _plan(E: Energy, n: int):
-    """The legs of the motion: (first legs, periodic legs or None, shift per period)."""
-    p = E.p
-    Q0 = float(E._gen(np.array([E.q0]))[0][0])
-    if p.q_dot0 == 0 and abs(Q0) <= 1e-12 * E.scale / E.L:
-        return "rest", None, None
-    d = 1.0 if (p.q_dot0 > 0 or (p.q_dot0 == 0 and Q0 > 0)) else -1.0
-    start_turn = p.q_dot0 == 0
-    ref0 = E.q0 if start_turn else None
-    b = E.next_turn(E.q0, d, ref0)
-    if b is None:
+class Seg:
+    """A piece run from x0 to x1."""
+
+    def __init__(self, piece, x0, x1):
+        self.p, self.x0, self.x1 = piece, x0, x1
+        self.t0 = piece.tau(x0) if x0 not in (0.0, piece.X) else (0.0 if x0 == 0.0 else piece.ts[-1])
+        t1 = piece.tau(x1) if x1 not in (0.0, piece.X) else (0.0 if x1 == 0.0 else piece.ts[-1])
+        self.dur, self.dir = abs(t1 - self.t0), (1.0 if x1 >= x0 else -1.0)
+
+    def state(self, tt):
+        x = self.p.x_at(self.t0 + self.dir * min(max(tt, 0.0), self.dur))
+        return float(self.p.q(x)), self.p.speed(x) * self.p.sig * self.dir
+
+
+def _oscillation(E, a, b, d, start, ca, cb):
+    """Turning points a (behind) and b (ahead in the direction d), the barriers' tops ca, cb
+    beyond them (or None): (first legs, cycle)."""
+    mid = 0.5 * (a + b)
+    A = Piece(E, "turn", a, d, math.sqrt(abs(mid - a)))
+    B = Piece(E, "turn", b, -d, math.sqrt(abs(b - mid)))
+    cycle = [Seg(B, 0.0, B.X), Seg(A, A.X, 0.0), Seg(A, 0.0, A.X), Seg(B, B.X, 0.0)]   # from b
+    if d * (mid - start) >= 0:
+        first = [Seg(A, A.x_of(start), A.X), cycle[3]]
+    else:
+        first = [Seg(B, B.x_of(start), 0.0)]
+    return first, cycle
+
+
+def plan(E):
+    """(first legs, cycle or None, shift of q per cycle, turning points, time sensitivity per
+    cycle), or None at rest."""
+    p, q0 = E.p, E.q0
+    rest = p.q_dot0 == 0
+    if rest and (E.Q0 == 0 or any(abs(q0 - c) <= 2 * math.ulp(q0) for c in E.crit_between(q0 - 1, q0 + 1) + E.crit)):
+        return None                            # released at an equilibrium
+    d = math.copysign(1.0, p.q_dot0 if not rest else E.Q0)
+    refs = [(q0, E.T0)]
+    ahead = E.next_turn(q0, d, refs)
+    if ahead is None:
+        wall = None if E.closed else (E.hi if d > 0 else E.lo)
+        if wall is None:                        # a revolution of the closed curve
+            P = Piece(E, "line", q0, d, E.L, ref=(q0, E.T0))
+            return [], [Seg(P, 0.0, P.X)], d * E.L, [], 0.0
+        kind, X = ("turn", math.sqrt(abs(wall - q0))) if rest else ("line", abs(wall - q0))
+        P = Piece(E, kind, q0, d, X, ref=(q0, E.T0))
+        return [Seg(P, 0.0, P.X)], None, 0.0, [], 0.0
+    b, cb = ahead
+    if b == q0:
+        raise Skip("the start is itself a turning point at an equilibrium")
+    behind = (q0, E.nearest_crit(q0)) if rest else E.next_turn(q0, -d, refs)
+    if behind is None:
         if E.closed:
-            dur = E.tau(E.q0, E.q0 + d * E.L, start_turn, start_turn, n, ref0)
-            return [], [(E.q0, E.q0 + d * E.L, start_turn, start_turn, dur, ref0)], d * E.L
-        end = E.hi if d > 0 else E.lo
-        return [(E.q0, end, start_turn, False, E.tau(E.q0, end, start_turn, False, n, ref0), ref0)], None, None
-    E.check_turn(b)
-    first = (E.q0, b, start_turn, True, E.tau(E.q0, b, start_turn, True, n, b), b)
-    a = E.next_turn(b, -d, b)
-    if a is None:
-        end = E.lo if d > 0 else E.hi
-        return [first, (b, end, True, False, E.tau(b, end, True, False, n, b), b)], None, None
-    E.check_turn(a)
-    dur = E.tau(b, a, True, True, n, b)
-    return [first], [(b, a, True, True, dur, b), (a, b, True, True, dur, a)], 0.0
+            raise Skip("no turning point behind the start on the closed curve (rounding): undecided")
+        wall = E.lo if d > 0 else E.hi
+        P = Piece(E, "turn", b, -d, math.sqrt(abs(wall - b)))
+        return [Seg(P, P.x_of(q0), 0.0), Seg(P, 0.0, P.X)], None, 0.0, [b], 0.0
+    a, ca = behind
+    first, cycle = _oscillation(E, a, b, d, q0, ca, cb)
+    sens = 2 * (E.sensitivity(a, ca) + E.sensitivity(b, cb))
+    return first, cycle, 0.0, sorted([a, b]), sens
 
 
-def motion(E: Energy, times, n: int):
-    """q and q̇ at the times, and the period (or None); the legs planned once per Energy and n
-    (the find queries ask for the motion at many single times)."""
-    plans = E.__dict__.setdefault("_plans", {})
-    if n not in plans:
-        plans[n] = _plan(E, n)
-    first, cycle, shift = plans[n]
-    if first == "rest":
-        return np.full(len(times), E.q0), np.zeros(len(times)), None, []
-    qs, qds = [], []
-    t_first = sum(leg[4] for leg in first)
-    period = sum(leg[4] for leg in cycle) if cycle else None
+def motion(E, times):
+    """q, q̇ at the times, the period (or None), the turning points and the time error at the
+    latest time; the legs planned once per Energy (the find queries ask for many single times)."""
+    if "_plan" not in E.__dict__:
+        E._plan = plan(E)
+    pl = E._plan
+    if pl is None:
+        return np.full(len(times), E.q0), np.zeros(len(times)), None, [], 0.0
+    first, cycle, shift, turns, sens = pl
+    t_first = sum(s.dur for s in first)
+    period = sum(s.dur for s in cycle) if cycle else None
     if period is not None and not period > 0:
-        raise _Skip("the motion's turning points coincide")
+        raise Skip("the motion's turning points coincide")
     if cycle is None and t_first < max(times, default=0.0):
-        end = first[-1][1]
+        end = first[-1].p.q(first[-1].x1)
         raise NumericalError(f"the particle reaches the end of the wire (q = {end:.6g}) at t = {t_first:.6g} s, "
                              f"before t_end = {max(times):g} s")
+    pieces = {id(s.p): s.p for s in first + (cycle or [])}.values()
+    err_cycle = sum(pc.err for pc in pieces) + sens
+    qs, qds, dt = [], [], 0.0
     for t in times:
-        k, tt = 0, t
-        legs, base = first, 0.0
+        if t == 0:                             # the input itself
+            qs.append(E.q0)
+            qds.append(float(E.p.q_dot0))
+            continue
+        legs, tt, base = first, t, 0.0
         if cycle and (tt > t_first or not first):
             tt -= t_first
             nper = math.floor(tt / period)
             tt -= nper * period
             legs, base = cycle, nper * shift
-        while k < len(legs) - 1 and tt > legs[k][4]:
-            tt -= legs[k][4]
+            dt = max(dt, err_cycle * (nper + 2))
+        else:
+            dt = max(dt, err_cycle)
+        k = 0
+        while k < len(legs) - 1 and tt > legs[k].dur:
+            tt -= legs[k].dur
             k += 1
-        leg = legs[k]
-        q = E.q_at(leg, tt, n)
-        K = max(float(E.K(np.array(q), leg[5])), 0.0)
-        sgn = 1.0 if leg[1] > leg[0] else -1.0
+        q, qd = legs[k].state(tt)
         qs.append(q + base)
-        qds.append(sgn * math.sqrt(2 * K / (E.m * float(E._g(np.array([q]))[0]))))
-    turns = sorted({leg[1] for leg in (cycle or []) if leg[3]})
-    return np.array(qs), np.array(qds), period, turns
+        qds.append(qd)
+    return np.array(qs), np.array(qds), period, turns, dt
 
 
 def solve(p, model, times, fallback=True) -> Result | None:
@@ -234,9 +223,8 @@ def solve(p, model, times, fallback=True) -> Result | None:
 
     try:
         E = Energy(p, model)
-        q, qd, period, turns = motion(E, times, 96)
-        q2, qd2, _, _ = motion(E, times, 48)
-    except _Skip as exc:
+        q, qd, period, turns, dt = motion(E, times)
+    except Skip as exc:
         if fallback:
             return None
         raise NumericalError(f"method quadrature: {exc}; use method ode") from None
@@ -244,7 +232,6 @@ def solve(p, model, times, fallback=True) -> Result | None:
     Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
     Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
     out = assemble(p, model, times, Y, [("slide", 1.0)] * n)
-    x2 = model.curve.state(np.zeros(n), q2, qd2, np.zeros(n))[0]
     res = Result(out["results"], method="quadrature", equations=_equations(model) + ["19.4", "20.1"],
                  series=[Series("t", times, SERIES + ["distance"])])
     r = res.results
@@ -253,13 +240,32 @@ def solve(p, model, times, fallback=True) -> Result | None:
     r["energy_residual"] = max((abs(e - E1 - w) for e, w in zip(r["E"], r["W_nc"])), default=0.0)
     r["period"] = period
     r["q_turn"] = [float(v) + 0.0 for v in turns]
+    _estimate(res, p, E, times, dt, period)
+    if out["straight"]:
+        res.warn("the curve is straight at some reported point: its principal normal is not defined there, "
+                 "so e_n is the axis direction (e3, or e1) with its e_t part removed")
+    return res
+
+
+def _estimate(res, p, E, times, dt, period):
+    """error_estimate: the time error times the largest speed, relative to |x| + |v| t."""
+    r, n = res.results, len(times)
     X, V = np.array(r["x"], float).T, np.array(r["v"], float).T
-    # relative to the position scale |x| + |v| t (the runner's rule: relative, docs/accuracy.md), at least
-    # the rounding floor of the sums and the root finding, 100 ε
-    scale = float(np.max(np.abs(X)) + np.max(np.abs(V)) * max(times)) if n else 0.0
-    diff = float(np.max(np.abs(X - x2))) / scale if n and scale > 0 else 0.0
-    res.error_estimate = max(diff, 100 * np.finfo(float).eps) if n else 0.0
+    vmax = float(np.max(np.linalg.norm(V, axis=0))) if n else 0.0
+    vmax = max(vmax, math.sqrt(2 * (E.T0 + E.scale) / E.m))     # the speed bound of the energy
+    scale = float(np.max(np.abs(X)) + vmax * max(times)) if n else 0.0
+    est = vmax * dt / scale if scale > 0 else 0.0
+    res.error_estimate = max(est, 100 * _EPS) if n else 0.0
+    rtol = float(p.accuracy.rtol)
+    if res.error_estimate > REFUSE:
+        raise NumericalError(f"the energy route's error estimate is {res.error_estimate:.2g} (> {REFUSE:g}): the motion "
+                             "passes so close to a barrier's top (an unstable equilibrium) that its timing is not "
+                             "determined in double precision (it depends on the last digits of q0 and of the turning "
+                             "points); start further from the separatrix (e.g. 1e-10 of q_range from the top or more)")
+    if res.error_estimate > rtol:
+        res.warn(f"error estimate {res.error_estimate:.2g} > rtol {rtol:g}: the motion passes close to a barrier's "
+                 "top (an unstable equilibrium), where its timing depends on the last digits of q0 and of the turning "
+                 "points; move the start further from the separatrix for a better-determined answer")
     if period and times and max(times) > 1e12 * period:
         res.warn(f"t = {max(times):.6g} s is more than 1e12 periods ({period:.6g} s): the phase of the motion there "
                  "is lost to rounding of t itself")
-    return res

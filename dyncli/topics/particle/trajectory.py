@@ -335,19 +335,23 @@ class _Run:
 
 def _release_time(F: Forces, t0: float, t_end: float, x) -> float | None:
     """First time after t0 at which |F_other(t, x)| exceeds mu N (the particle
-    breaks free); None if it stays stuck until t_end.  Samples the interval
-    and refines the first crossing with brentq."""
-    from dyncli.rootfind import brentq
+    breaks free); None if it stays stuck until t_end.  Decided by the roots of
+    h = |F_other| − mu N (dyncli.rootfind.all_roots: the sign of h at the critical
+    points of its resolved interpolant, so a pulse between any two sample points is
+    not missed — issue #28): the first root after which h > 0."""
+    from dyncli.rootfind import all_roots
 
     def h(t):
         return float(np.linalg.norm(F.other(t, x))) - F.muN
 
-    ts = np.linspace(t0, t_end, 4097)
-    prev = ts[0]
-    for tt in ts[1:]:
-        if h(tt) > 0.0:
-            if h(prev) > 0.0:
-                return float(prev)
-            return float(brentq(h, prev, tt, xtol=1e-14 * max(1.0, abs(tt)), rtol=4 * EPS))
-        prev = tt
+    if h(t0) > 0.0:
+        return float(t0)
+    roots, _, bad = all_roots(lambda ts: np.array([h(float(t)) for t in np.ravel(ts)]), t0, t_end, cells=128)
+    ends = sorted(set(roots)) + [t_end]
+    for r, nxt in zip(ends[:-1], ends[1:]):
+        if h(0.5 * (r + nxt)) > 0.0:          # h > 0 on the whole piece after r (no root inside)
+            return float(r)
+    if bad:
+        raise NumericalError(f"friction: the other force is not finite near t = {bad[0]:.6g} s while the particle "
+                             "is stuck: the release time is not decided")
     return None

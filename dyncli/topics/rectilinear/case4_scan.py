@@ -112,8 +112,9 @@ class _Scan:
         # first cell where v^2 becomes <= 0, and cells where v^2 has a small interior minimum
         neg = np.nonzero(v2[1:] <= 0)[0]
         first_neg = int(neg[0]) if neg.size else n
-        dips = np.nonzero((av[:-1] * e < 0) & (av[1:] * e > 0)
-                          & (np.minimum(v2[:-1], v2[1:]) < 1e-2 * cumabs[1:]))[0]
+        # every local minimum of v² between nodes (a from −e to +e) is examined (issue #28: a narrow
+        # barrier's dip below 0 is not announced by v² at the nodes; no threshold on them)
+        dips = np.nonzero((av[:-1] * e < 0) & (av[1:] * e > 0))[0]
         for k in sorted(set([first_neg] + [int(d) for d in dips if d < first_neg])):
             if k >= n - 1:
                 break

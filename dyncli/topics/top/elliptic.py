@@ -134,7 +134,12 @@ class Nutation:
             r = -a1 / a2 if a2 != 0 else 0.0
             x1, x2 = (r, 0.0) if r < 0 else (0.0, r)
         else:
-            q = -0.5 * (a1 + math.copysign(math.sqrt(a1 * a1 - 4.0 * a2 * F0), a1))
+            # the discriminant a1² − 4 a2 F0 scaled by its size (a2 F0 underflows for a top within
+            # ~1e-73 rad of the vertical, where a1 may cancel to 0: q would be 0, F0/q a ZeroDivisionError)
+            sa = 2.0 * math.sqrt(abs(a2)) * math.sqrt(F0)
+            sc = max(abs(a1), sa)
+            disc = sc * math.sqrt(max((a1 / sc) ** 2 - math.copysign(1.0, a2) * (sa / sc) ** 2, 0.0)) if sc > 0 else 0.0
+            q = -0.5 * (a1 + math.copysign(disc, a1))
             ra, rb = q / a2, F0 / q
             x1, x2 = min(ra, rb, 0.0), max(ra, rb, 0.0)
         x2, x1 = min(x2, v0), max(x1, -w0)

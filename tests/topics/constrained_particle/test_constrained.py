@@ -179,11 +179,12 @@ def test_zero_rate_rotation_is_the_fixed_curve():
     assert b["results"]["W_N"][1] == pytest.approx(0, abs=1e-12)
 
 
-def test_critical_rate_leaves_stability_undecided():
-    """ω² = g/R exactly: G′(0) = 0 at the bottom; the linearisation cannot tell."""
+def test_critical_rate_is_decided_by_the_sign_of_G():
+    """ω² = g/R exactly: G′(0) = 0 at the bottom, so the linearisation cannot tell, but G ≈ −m g q³/2
+    is restoring on both sides: stable (issue #28: decided by G's sign), with no linear frequency."""
     r = solve_one_text(HOOP.format(extra="rotation: {omega: \"sqrt(19.62)\"}\nforces: [{kind: gravity}]\nat: [0, 0.1]"))
     bottom = [e for e in r["results"]["equilibria"] if e["q"] == 0][0]
-    assert bottom["stable"] is None and bottom["omega_small"] == 0
+    assert bottom["stable"] is True and bottom["omega_small"] == 0
 
 
 def test_free_straight_wire_and_its_end():

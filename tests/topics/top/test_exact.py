@@ -259,3 +259,27 @@ def test_a_top_whose_nutation_roots_do_not_separate_is_not_representable():
     run = ExactRun(SimpleNamespace(A=1.0, C=0.0, mgL=1.0), 0.0, 7.888609052210118e-31, 0.0, 1.0, 1.0, -1.0,
                    [0.1])
     assert run.finite is False
+
+
+def test_nutation_roots_of_a_top_1e_73_rad_from_the_vertical():
+    """Issue #28: θ0 = 2.75e-73 with a1 cancelling to 0 made a2·F0 underflow (q = 0: a
+    ZeroDivisionError in the roots of Q).  The roots x = u − u0 of f(x) = βx³ + F2x² + F1x + F0
+    bounding the motion against mpmath (60 digits, the cubic formed from the same inputs)."""
+    import mpmath as mp
+
+    from dyncli.topics.top.elliptic import Nutation
+
+    A, C, mgL, th, thd, psid, w3 = (2.1576085370698745, 4.315217074139749, 9.51164030999553, 2.75e-73,
+                                    -2.5568523488869783e-44, -2.3665084547986442e-20, 0.0)
+    n = Nutation(A, C, mgL, th, thd, psid, w3)
+    assert n.finite
+    with mp.workdps(60):
+        s0, u0 = mp.sin(mp.mpf(th)), mp.cos(mp.mpf(th))
+        K = mp.mpf(thd) ** 2 + (mp.mpf(psid) * s0) ** 2
+        P, beta, c = mp.mpf(psid) * s0 * s0, 2 * mp.mpf(mgL) / mp.mpf(A), mp.mpf(C) * w3 / mp.mpf(A)
+        F = [beta, 2 * beta * u0 - K - c * c, -beta * s0 * s0 - 2 * u0 * K + 2 * c * P, (mp.mpf(thd) * s0) ** 2]
+        f = lambda x: ((F[0] * x + F[1]) * x + F[2]) * x + F[3]    # noqa: E731
+        # the two roots next to x = 0 (u0): x1 < 0 < x2, sign changes of f bracket them
+        x2 = mp.findroot(f, (mp.mpf(0), mp.mpf(n.x2) * 2), solver="anderson") if n.x2 > 0 else mp.mpf(0)
+        x1 = mp.findroot(f, (mp.mpf(n.x1) * 2, mp.mpf(0)), solver="anderson") if n.x1 < 0 else mp.mpf(0)
+    assert n.x1 == pytest.approx(float(x1), rel=1e-12) and n.x2 == pytest.approx(float(x2), rel=1e-12)
