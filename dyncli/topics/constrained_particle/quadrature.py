@@ -241,9 +241,6 @@ def solve(p, model, times, fallback=True) -> Result | None:
     r["period"] = period
     r["q_turn"] = [float(v) + 0.0 for v in turns]
     _estimate(res, p, E, times, dt, period)
-    if out["straight"]:
-        res.warn("the curve is straight at some reported point: its principal normal is not defined there, "
-                 "so e_n is the axis direction (e3, or e1) with its e_t part removed")
     return res
 
 
