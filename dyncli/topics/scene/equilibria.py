@@ -30,6 +30,7 @@ EPS = float(np.finfo(float).eps)
 STEP = 0.1              # path step along a free coordinate (rad, or a fraction of the scene's size)
 REACH = math.pi         # how far each path runs either way (same units)
 MAX_FOUND = 24
+EVERY = 5              # every fifth point of a path starts a Newton iteration too
 MAX_WALKED = 8         # equilibria whose own paths are followed too
 
 
@@ -51,6 +52,16 @@ class Search:
         if J.shape[0] == 0:
             return np.zeros(0)
         return np.linalg.lstsq(J.T, -self.forces(q), rcond=None)[0]
+
+    def same_sides(self, qa, qb) -> bool:
+        """No spring or damper passed through zero length from qa to qb (its direction, undefined
+        there, would flip: the model ends where its two ends meet)."""
+        for ld in self.s.loads:
+            if ld.kind in ("spring", "damper"):
+                da, db = ld.P.pos(qa) - ld.Q.pos(qa), ld.P.pos(qb) - ld.Q.pos(qb)
+                if float(da @ db) <= 0:
+                    return False
+        return True
 
     # ------------------------------------------------------------------ Newton on (q, λ)
     def newton(self, q_start):
@@ -76,7 +87,7 @@ class Search:
         if not ok:
             return None
         q = y[:n]
-        if float(np.max(np.abs(s.phi(q, 0.0)), initial=0.0)) > 1e-10 * self.L:
+        if float(np.max(np.abs(s.phi(q, 0.0)), initial=0.0)) > 1e-10 * self.L or not self.same_sides(q_start, q):
             return None
         lam = self.multipliers(q)
         if float(np.max(np.abs(self.forces(q) + s.jac(q).T @ lam), initial=0.0)) > 1e-9 * self.F0:
@@ -110,18 +121,20 @@ class Search:
             if t is None:
                 continue
             g_prev, q_prev = float(t @ self.forces(q)), q
-            for _ in range(int(REACH / STEP)):
+            for k in range(int(REACH / STEP)):
                 q_new = self._onto(q + STEP * t)
                 if q_new is None:
                     break
                 t_new = self._tangent(q_new, t)
-                if t_new is None:
+                if t_new is None or not self.same_sides(q, q_new):
                     break
                 g = float(t_new @ self.forces(q_new))
                 noise = 1e-9 * self.F0 * max(1.0, self.L)
                 if (g_prev > noise and g < -noise) or (g_prev < -noise and g > noise):
                     w = abs(g_prev) / (abs(g_prev) + abs(g))
                     out.append(self._onto(q_prev + w * (q_new - q_prev)))
+                elif k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
+                    out.append(q_new)
                 q, t, g_prev, q_prev = q_new, t_new, g, q_new
         return [x for x in out if x is not None]
 
