@@ -46,7 +46,7 @@ SCENE = TypeSpec(
           "leaves", kind="list", contract=True),
         R("integrals", "", "", "34.20, 36.10", "first integrals that hold: {name, value, drift, equation}",
           kind="list", contract=True),
-        R("equilibria", "", "", "§17", "`linearize: true`: each rest configuration {coordinates (names), values, x, "
+        R("equilibria", "", "", "", "`linearize: true`: each rest configuration {coordinates (names), values, x, "
           "angle, V, reaction, stability (stable, unstable, neutral), stable, omega2 [1/s²], frequencies [rad/s], "
           "frequencies_hz, modes (first non-zero component 1), M, K (C, damped), response}", kind="list",
           contract=True),
