@@ -64,7 +64,7 @@ class Search:
         return True
 
     # ------------------------------------------------------------------ Newton on (q, λ)
-    def newton(self, q_start):
+    def rest_from(self, q_start):
         s, n = self.s, self.n
         m = s.m
 
@@ -201,7 +201,7 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
     dropped: list[str] = []
     walked = 0
     while starts:
-        got = S.newton(starts.pop(0))
+        got = S.rest_from(starts.pop(0))
         if got is None:
             continue
         q, lam = got
