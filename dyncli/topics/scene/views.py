@@ -122,4 +122,10 @@ def equilibria(eqs) -> list[Table]:
     if mrows:
         out.append(Table("mode shapes (first non-zero component 1)", ["equilibrium", "mode", "ω [rad/s]", "shape"],
                          mrows))
+    drows = [[i, f"{z[0]:.6g} {'+' if z[1] >= 0 else '−'} {abs(z[1]):.6g} i", wd, zeta]
+             for i, e in enumerate(eqs) if e.get("damped")
+             for z, wd, zeta in zip(e["damped"]["eigenvalues"], e["damped"]["frequencies"], e["damped"]["damping_ratios"])]
+    if drows:
+        out.append(Table("damped (complex) modes: λ = −ζω ± iω_d", ["equilibrium", "λ [1/s]", "ω_d [rad/s]", "ζ"],
+                         drows))
     return out
