@@ -209,29 +209,41 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
         if any(_same(q, f[0], S, f[2]) for f in found):
             continue
         bad = _pulls(system, q, lam)
-        found.append((q, lam, np.zeros((system.n, 0)) if bad else neutral_dirs(system, q, lam)))
+        found.append((q, lam, neutral_dirs(system, q, lam)))
         if bad:
-            dropped.append(bad)
+            pos = ", ".join(f"{nm} = {x:.6g}" for nm, x in zip(system.names, q))
+            dropped.append(f"at {pos}: {bad}")
         if walked < MAX_WALKED:           # the paths from each new equilibrium reach the others
             walked += 1
             starts += _walks(S, q, assembly.independent(system.jac(q), system.n))
         if len(found) >= MAX_FOUND:
             warn(f"the equilibrium search stopped after {MAX_FOUND} equilibria")
             break
+    if len(dropped) == len(found):
+        warn("no rest configuration found: the loads cannot be held by the joints at rest anywhere the search "
+             "reached (from the given configuration and along each free coordinate)")
     if dropped:
-        warn("equilibria where a one-sided joint would not hold are not rest configurations and are left out: "
-             + "; ".join(dropped))
+        warn("equilibria that are not rest configurations (a one-sided joint would not hold, or a body would be "
+             "through a surface) are left out: "
+             + "; ".join(dict.fromkeys(dropped)))
     return [(q, lam) for q, lam, d in found if not _pulls(system, q, lam)]
 
 
 def _pulls(system, q, lam) -> str | None:
     """Why a one-sided joint does not hold at this equilibrium (None when every one holds)."""
     v = np.zeros(system.n)
+    for e in system.elements:
+        if e.kind in ("contact", "rolls"):
+            body = e.P.body if e.kind == "contact" else e.body_point.body
+            if body is not None:
+                i = body.index
+                side = float(np.array(e.surface.n) @ (np.array([q[i[0]], q[i[1]]]) - np.array(e.surface.origin)))
+                if side < -1e-9 * assembly.length_scale(q, system):
+                    return f"{body.name!r} would be through the surface {e.surface.name!r} (its centre on the far side)"
     for i, e in enumerate(system.elements):
         for what, g in e.watch(system.lam_of(lam, i), q, v, 0.0):
             if what in ("sticks",):
                 continue
             if g < -1e-9 * max(1.0, float(np.max(np.abs(lam), initial=0.0))):
-                pos = ", ".join(f"{nm} = {x:.6g}" for nm, x in zip(system.names, q))
-                return f"at {pos} the joint {e.name!r} {what}"
+                return f"the joint {e.name!r} {what}"
     return None

@@ -378,3 +378,21 @@ def test_gallery_double_pendulum_modes_side_by_side():
                 off = abs(r["x"]["A"][k][0] - want[0]) / float(xA)
                 assert off <= (float(p1) ** 2 if deg == 3 else 1.0)
             assert abs(r["x"]["A"][1][0] - e["response"]["s"][1][0]) > 0.02 * float(xA) or deg == 3
+
+
+def test_no_rest_through_a_surface_and_none_at_all():
+    """The falling rod on its smooth floor rests only upright (unstable; free to slide: ω² = 0
+    too) — hanging below the floor from its end would need the body through the surface, left
+    out with a warning; the Atwood machine with unequal masses has no rest: an empty list."""
+    from tests.conftest import PROBLEMS
+
+    text = (PROBLEMS / "scenes" / "falling-rod.yaml").read_text() + "linearize: true\n"
+    rec = solve_one_text(text)
+    e = rec["results"]["equilibria"]
+    assert len(e) == 1 and e[0]["angle"]["rod"] == pytest.approx(math.pi / 2, abs=1e-12)
+    assert e[0]["stability"] == "unstable" and e[0]["omega2"][1] == pytest.approx(0.0, abs=1e-9)
+    assert any("through the surface 'floor'" in w for w in rec["warnings"])
+    text = (PROBLEMS / "scenes" / "atwood-massive-pulley.yaml").read_text() + "linearize: true\n"
+    rec = solve_one_text(text)
+    assert rec["results"]["equilibria"] == []
+    assert any("no rest configuration" in w for w in rec["warnings"])
