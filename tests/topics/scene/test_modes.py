@@ -396,3 +396,40 @@ def test_no_rest_through_a_surface_and_none_at_all():
     rec = solve_one_text(text)
     assert rec["results"]["equilibria"] == []
     assert any("no rest configuration" in w for w in rec["warnings"])
+
+
+@pytest.mark.parametrize("c", [2.0, 20.0])
+def test_damped_response_against_the_vibration_closed_form(c):
+    """A block on a smooth floor between a spring and a damper to the wall (m = 1 kg, k = 100 N/m),
+    released 0.1 m from rest: x(t) = e^{−ζωt}(x0 cos ω_d t + (ζω x0/ω_d) sin ω_d t) for ζ = 0.1, and
+    x0 (1 + ωt) e^{−ωt} at critical damping (ζ = 1: a defective pair, the exponential route)."""
+    text = f"""
+type: scene
+title: block spring damper
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+bodies:
+  A: {{shape: point, mass: 1, x: [1.1, 0]}}
+joints:
+  s: {{slider: [A, floor]}}
+forces:
+  - {{spring: [[0, 0], A], k: 100, L: 1}}
+  - {{damper: [[0, 0], A], c: {c}}}
+at: [0, 0.1, 0.3, 0.7]
+linearize: true
+"""
+    r = solved(text)
+    e = r["equilibria"][0]
+    w, z, x0 = 10.0, c / 20.0, 0.1
+    for k, t in enumerate(r["t"]):
+        if z < 1:
+            wd = w * math.sqrt(1 - z * z)
+            want = math.exp(-z * w * t) * (x0 * math.cos(wd * t) + z * w * x0 / wd * math.sin(wd * t))
+        else:
+            want = x0 * (1 + w * t) * math.exp(-w * t)
+        assert e["response"]["s"][k][0] - 1.0 == pytest.approx(want, rel=1e-9, abs=1e-14)
+    lam = e["damped"]["eigenvalues"][0]
+    assert lam[0] == pytest.approx(-z * w, rel=1e-6)
+    if z < 1:
+        assert e["damped"]["damping_ratios"][0] == pytest.approx(z, rel=1e-12)
+        assert e["damped"]["frequencies"][0] == pytest.approx(w * math.sqrt(1 - z * z), rel=1e-12)
