@@ -91,6 +91,12 @@ class CheckFormat(str, Enum):
     junit = "junit"
     github = "github"
     gradescope = "gradescope"
+    csv = "csv"
+
+
+class IdFrom(str, Enum):
+    student = "student"
+    filename = "filename"
 
 
 @app.command()
@@ -110,23 +116,32 @@ def check(
     student: Optional[str] = typer.Option(None, "--student", help="With --key: the student id of the submissions."),
     root: Optional[str] = typer.Option(None, "--root", metavar="DIR",
                                        help="Problem files may lie anywhere inside DIR (default: the folder of the file naming them)."),
+    upload: bool = typer.Option(False, "--upload",
+                                help="With --key: the files are one student's upload (Gradescope): grade the file "
+                                     "the key's 'submission:' names, else the only .yaml; refuse, listing them, otherwise."),
+    id_from: IdFrom = typer.Option(IdFrom.student, "--id-from",
+                                   help="With --key: where a submission's student id comes from: its 'student:' "
+                                        "(default) or its file name (a differing 'student:' is refused)."),
+
+    roster: Optional[str] = typer.Option(None, "--roster", metavar="CSV",
+                                         help="With --key: the class (a 'student' column): students without a "
+                                              "submission are missing; submissions of others are reported."),
+    stats: bool = typer.Option(False, "--stats", help="With --key: per question the class's mean, % correct, "
+                                                      "statuses, diagnoses and the range of the true answers."),
+    compare: Optional[str] = typer.Option(None, "--compare", metavar="PREVIOUS.json",
+                                          help="With --key: every student whose score changed since this JSON report."),
 ):
     """Grade answers: graded work with --key KEY SUBMISSION..., self-study with ANSWERS... (exit 1 if any is wrong)."""
     files = files or []
     if key is not None:
-        from dyncli.check.keycommand import run_key_check, run_selftest
-
-        if write_key:
-            _err("--write-key and --key do not go together")
-            raise typer.Exit(2)
-        if selftest:
-            if files:
-                _err("--selftest checks the key alone: give no submissions")
-                raise typer.Exit(2)
-            raise typer.Exit(run_selftest(key, n, root))
-        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root))
-    if selftest or student is not None:
-        _err(f"{'--selftest' if selftest else '--student'} goes with --key KEY")
+        raise typer.Exit(_graded(key, files, format, reveal, output, write_key, selftest, n, student, root, upload,
+                                 id_from, roster, stats, compare))
+    keyonly = [name for name, given in (("--upload", upload), ("--roster", roster is not None), ("--stats", stats),
+                                        ("--compare", compare is not None), ("--format csv", format is CheckFormat.csv),
+                                        ("--selftest", selftest), ("--student", student is not None),
+                                        ("--id-from", id_from is not IdFrom.student)) if given]
+    if keyonly:
+        _err(f"{keyonly[0]} goes with --key KEY")
         raise typer.Exit(2)
     if not files:
         _err("give answer files (self-study), or --key KEY and the submissions (graded work)")
@@ -136,20 +151,59 @@ def check(
     raise typer.Exit(run_check(files, format.value, reveal, output, write_key, _state["debug"], root))
 
 
+def _graded(key, files, format, reveal, output, write_key, selftest, n, student, root, upload, id_from, roster,
+            stats, compare) -> int:
+    """``dyncli check --key``: graded work, the key's selftest, a whole course."""
+    from dyncli.check.keycommand import run_key_check, run_selftest
+
+    if write_key:
+        _err("--write-key and --key do not go together")
+        return 2
+    if selftest:
+        if files:
+            _err("--selftest checks the key alone: give no submissions")
+            return 2
+        return run_selftest(key, n, root)
+    if id_from is IdFrom.filename and student is not None:
+        _err("--id-from filename and --student do not go together")
+        return 2
+    from dyncli.check.gradebook import CourseOptions
+
+    course = CourseOptions(roster, stats, compare) if roster is not None or stats or compare is not None else None
+    return run_key_check(key, files, format.value, reveal, output, student, root, id_from.value, upload, course)
+
+
 class VariantFormat(str, Enum):
     yaml = "yaml"
     markdown = "markdown"
+    html = "html"
 
 
 @app.command()
 def variant(
     key: str = typer.Argument(..., metavar="KEY", help="The instructor's key."),
-    student: str = typer.Option(..., "--student", help="The student id."),
+    student: Optional[str] = typer.Option(None, "--student", help="The student id."),
     format: VariantFormat = typer.Option(VariantFormat.yaml, "--format", "-f", help="Sheet format."),
     template: bool = typer.Option(False, "--template", help="Print an empty submission instead."),
     root: Optional[str] = typer.Option(None, "--root", metavar="DIR", help="Problem files may lie anywhere inside DIR."),
+    roster: Optional[str] = typer.Option(None, "--roster", metavar="CSV",
+                                         help="Every student of this roster (a 'student' column): one file each in -o DIR."),
+    output: Optional[str] = typer.Option(None, "--output", "-o", metavar="DIR", help="With --roster: the folder of the sheets."),
 ):
     """Print a student's problem set (their numbers), or an empty submission with --template."""
+    if (student is None) == (roster is None):
+        _err("give --student ID (one sheet on stdout) or --roster CSV -o DIR (one file per student)")
+        raise typer.Exit(2)
+    if roster is not None:
+        if not output:
+            _err("--roster needs -o DIR: the folder that receives one file per student")
+            raise typer.Exit(2)
+        from dyncli.check.roster import write_sheets
+
+        raise typer.Exit(write_sheets(key, roster, output, format.value, template, root))
+    if output:
+        _err("-o DIR goes with --roster (one sheet prints on stdout)")
+        raise typer.Exit(2)
     from dyncli.check.sheet import run_variant
 
     raise typer.Exit(run_variant(key, student, format.value, template, root))

@@ -30,8 +30,11 @@ from dyncli.check.safe import oneline, shown
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
-TOP_KEYS = ("title", "tolerance", "variants", "questions")
-Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title")
+TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission", "problems")
+Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title",
+          "feedback", "text")
+FEEDBACK_KEYS = ("correct", "carried", "partial", "wrong", "missing", "invalid") + SLIPS
+MAX_FEEDBACK = 1000
 MAX_ID = 64
 MAX_QUESTIONS = 1000
 
@@ -50,6 +53,8 @@ class Question:
     carry: tuple[str, str] | None = None       # (from question id, param name)
     visible: bool = True
     title: str | None = None
+    feedback: dict[str, str] = field(default_factory=dict)   # status or slip -> the instructor's text
+    text: Any = None                           # the statement: parsed pieces (dyncli.check.statement)
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
 
@@ -63,6 +68,11 @@ class Key:
     variants: Any = None                       # dyncli.check.variants.Variants or None
     questions: list[Question] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    submission: str | None = None              # the file name a Gradescope upload must have
+    texts: dict = field(default_factory=dict)  # (problem file, index) -> parsed statement of that problem
+
+    def problem_text(self, lp) -> Any:
+        return self.texts.get((lp.file, lp.index)) if lp is not None else None
 
     def question(self, qid: str) -> Question | None:
         return next((q for q in self.questions if q.id == qid), None)
@@ -120,6 +130,13 @@ class _Reader:
                                 f"{', '.join(TOP_KEYS)}")
         if isinstance(data.get("title"), str):
             self.key.title = data["title"]
+        if "submission" in data:
+            sub = data["submission"]
+            if not isinstance(sub, str) or not sub.strip() or "/" in sub or "\\" in sub or len(sub) > 200 \
+                    or oneline(sub) != sub:
+                self.diag(("submission",), "submission must be a file name such as answers.yaml (no folder)", key=False)
+            else:
+                self.key.submission = sub.strip()
         if "tolerance" in data:
             try:
                 self.key.tol = parse_tolerance(data["tolerance"], Tolerance(), ("tolerance",))
@@ -133,6 +150,8 @@ class _Reader:
         for i, item in enumerate(items):
             self.question(item, ("questions", i))
         self.check_ids()
+        if "problems" in data:
+            self.problem_texts(data["problems"])
         if "variants" in data:
             from dyncli.check.variants import read_variants
 
@@ -174,7 +193,9 @@ class _Reader:
             self.rejected.add(q.id)
 
     def fields(self, q: Question, item: dict, path: tuple) -> None:
-        qid = item.get("id")
+        from dyncli.check.submission import as_written
+
+        qid = as_written(self.doc, path + ("id",), item.get("id"))
         if isinstance(qid, bool) or not isinstance(qid, (str, int)) or not str(qid).strip() \
                 or len(str(qid)) > MAX_ID or oneline(qid) != str(qid):
             raise _Bad(path + ("id",), f"id must be a short name (1 to {MAX_ID} printable characters)", key=False)
@@ -198,14 +219,21 @@ class _Reader:
             q.partial = self.partial(item["partial"], path + ("partial",))
         if "carry" in item:
             q.carry = self.carry(item["carry"], path + ("carry",))
+            from dyncli.check.submission import as_written
+
+            q.carry = (str(as_written(self.doc, path + ("carry", "from"), item["carry"]["from"])), q.carry[1])
         if "visible" in item:
             if not isinstance(item["visible"], bool):
                 raise _Bad(path + ("visible",), "visible must be true or false", key=False)
             q.visible = item["visible"]
+        if "feedback" in item:
+            q.feedback = self.feedback(item["feedback"], path + ("feedback",))
         if "title" in item:
             if not isinstance(item["title"], str):
                 raise _Bad(path + ("title",), "title must be text", key=False)
             q.title = item["title"]
+        if "text" in item:
+            q.text = item["text"]      # checked against the problem's params in check_texts
 
     def problem(self, q: Question, item: dict, path: tuple) -> None:
         p = item.get("problem")
@@ -263,6 +291,30 @@ class _Reader:
             out[k] = float(v)
         return out
 
+    def feedback(self, raw: Any, path: tuple) -> dict[str, str]:
+        if not isinstance(raw, dict) or not raw:
+            raise _Bad(path, f"feedback must be a mapping status-or-slip: text ({', '.join(FEEDBACK_KEYS)})",
+                       key=False)
+        out = {}
+        for k, v in raw.items():
+            if k not in FEEDBACK_KEYS:
+                raise _Bad(path + (k,), f"unknown feedback key '{shown(k)}'{did_you_mean(str(k), FEEDBACK_KEYS)}; "
+                                        f"known: {', '.join(FEEDBACK_KEYS)}")
+            if not isinstance(v, str) or not v.strip() or len(v) > MAX_FEEDBACK:
+                raise _Bad(path + (k,), f"feedback text must be 1 to {MAX_FEEDBACK} characters", key=False)
+            out[k] = v.strip()
+        return out
+
+    def problem_texts(self, raw: Any) -> None:
+        from dyncli.check.statement import read_problem_texts
+
+        read_problem_texts(self, raw, Question)
+
+    def check_texts(self, names) -> None:
+        from dyncli.check.statement import check_texts
+
+        check_texts(self, names, Question)
+
     def carry(self, raw: Any, path: tuple) -> tuple[str, str]:
         if not isinstance(raw, dict) or set(raw) != {"from", "param"}:
             raise _Bad(path, "carry must be {from: QUESTION-ID, param: PARAMS-NAME}", key=False)
@@ -312,6 +364,7 @@ class _Reader:
             p = raw.get("params")
             return set(p) if isinstance(p, dict) else set()
 
+        self.check_texts(names)
         for q in self.key.questions:
             if q.carry is not None and q.carry[1] not in names(q):
                 self.diag(q.prefix + ("carry", "param"),

@@ -3,12 +3,14 @@
 * ``--format yaml``: ``{student, params: {name: value}, problems: [{title,
   type, problem (the mapping with this student's params), questions: [{id,
   answer, points, unit}]}]}``;
-* ``--format markdown``: a sheet a student can read: the key's title, the
-  student's numbers with units, each problem's title and its question ids;
+* ``--format markdown`` / ``html``: a sheet a student can work from
+  (dyncli.check.sheetview): the statement, every number each problem uses,
+  each question with its unit, never a result path;
 * ``--template``: an empty submission (question ids, units, no values).
 
 No value of any result is printed: the problems are solved only to name
-the SI unit of an answer that has no ``unit`` in the key.
+the SI unit of an answer that has no ``unit`` in the key (once per question
+when many sheets are written: dyncli.check.sheets).
 """
 
 from __future__ import annotations
@@ -33,28 +35,68 @@ def _groups(key) -> list[tuple[Any, list]]:
     return out
 
 
-def unit_of(q, grader, student: str) -> str:
+DIMENSIONLESS = ("", "1", "dimensionless")
+
+
+def unit_of(q, grader, student: str, cache: dict | None = None) -> str:
     """The unit a bare number is read in: the question's ``unit``, else the
-    SI unit the solver reports for that result (units only, no values)."""
+    SI unit the solver reports for that result (units only, no values);
+    "dimensionless" for a pure number, "" when unknown.  ``cache``: the
+    unit of each question, the same for every variant (solved once)."""
     if q.unit:
         return q.unit
+    if cache is not None and q.id in cache:
+        return cache[q.id]
     from dyncli.check.quantities import result_unit
 
+    from dyncli.check.statement import declared_dimensionless
+
     t = grader.truth(q, student)
-    return "" if t.error else (result_unit(t.units, q.answer) or "")
+    ru = None if t.error else result_unit(t.units, q.answer)
+    if ru is None and not t.error and declared_dimensionless(q.problem.type if q.problem else None, q.answer):
+        ru = ""
+    u = "" if ru is None else "dimensionless" if ru.strip() in DIMENSIONLESS else ru
+    if cache is not None:
+        cache[q.id] = u
+    return u
 
 
-def sheet(key, grader, student: str) -> dict:
+def sheet(key, grader, student: str, cache: dict | None = None) -> dict:
+    """A student's sheet: per problem its statement, the numbers it uses
+    (drawn and fixed) and its questions with their units; no result path
+    is needed to read it (``answer`` is kept in YAML for scripts)."""
+    from dyncli.check.statement import given_data, param_units, param_values, render_text
+
     values = grader.params(student)
+    var_units = {p.name: p.unit for p in key.variants.params} if key.variants is not None else {}
     problems = []
     for lp, qs in _groups(key):
         raw = grader.problem(qs[0], values, {}).raw
-        problems.append({"title": lp.title, "type": lp.type, "problem": raw,
-                         "questions": [{"id": q.id, "answer": q.answer, "points": q.points,
-                                        **({"unit": u} if (u := unit_of(q, grader, student)) else {}),
-                                        **({"title": q.title} if q.title else {}),
-                                        **({"carry_from": q.carry[0]} if q.carry else {})} for q in qs]})
+        carried = {q.carry[1]: q.carry[0] for q in qs if q.carry is not None}
+        own = lp.raw.get("params") if isinstance(lp.raw, dict) and isinstance(lp.raw.get("params"), dict) else {}
+        vals, punits = param_values(own, values, var_units, carried)
+        punits = {**param_units(lp.type, lp.raw, own), **punits}
+        if carried and isinstance(raw, dict) and isinstance(raw.get("params"), dict):
+            # the student fills in their own earlier answer, never the key's default
+            raw = {**raw, "params": {**raw["params"], **{p: {"carried": src} for p, src in carried.items()}}}
+        data = [(n, _datum(vals[n], punits.get(n))) for n in own]
+        data += given_data(lp.type, lp.raw if isinstance(lp.raw, dict) else {}, vals, punits)
+        ptext = key.problem_text(lp)
+        problems.append({"title": lp.title, "type": lp.type,
+                         **({"text": render_text(ptext, vals)} if ptext else {}),
+                         "data": [list(d) for d in data], "problem": raw,
+                         "questions": [_question(q, grader, student, cache, vals) for q in qs]})
     return {"student": student, "params": values, "problems": problems}
+
+
+def _question(q, grader, student: str, cache, vals: dict) -> dict:
+    from dyncli.check.statement import render_text
+
+    u = unit_of(q, grader, student, cache)
+    return {"id": q.id, "answer": q.answer, "points": q.points, **({"unit": u} if u else {}),
+            **({"title": q.title} if q.title else {}),
+            **({"text": render_text(q.text, vals)} if q.text else {}),
+            **({"carry_from": q.carry[0]} if q.carry else {})}
 
 
 def render_yaml(doc: dict) -> str:
@@ -65,38 +107,23 @@ def render_yaml(doc: dict) -> str:
     return yaml.safe_dump(plain(doc), sort_keys=False, allow_unicode=True, width=100)
 
 
-def render_markdown(key, doc: dict) -> str:
-    units = {p.name: p.unit for p in key.variants.params} if key.variants is not None else {}
-    lines = [f"# {oneline(key.title or 'Problem set')}", "", f"Student: `{oneline(doc['student'])}`", ""]
-    if doc["params"]:
-        lines += ["## Your numbers", "", "| parameter | value |", "|---|---|"]
-        for n, v in doc["params"].items():
-            lines.append(f"| `{n}` | {v:g}{' ' + units[n] if units.get(n) else ''} |")
-        lines.append("")
-    lines += ["## Problems", ""]
-    for p in doc["problems"]:
-        lines += [f"### {oneline(p['title'])}", ""]
-        for q in p["questions"]:
-            extra = f" ({oneline(q['title'])})" if q.get("title") else ""
-            unit = f", in {oneline(q['unit'])}" if q.get("unit") else ""
-            carry = f", uses your answer to `{oneline(q['carry_from'])}`" if q.get("carry_from") else ""
-            pts = f"{q['points']:g} point{'s' if q['points'] != 1 else ''}"
-            lines.append(f"- **{oneline(q['id'])}**{extra}: `{oneline(q['answer'])}`{unit}{carry}: {pts}")
-        lines.append("")
-    lines += ["Answer in a submission file (`dyncli variant KEY --student ID --template`): numbers, constant",
-              "expressions (`\"2*pi\"`) or numbers with units (`\"12 m/s\"`).", ""]
-    return "\n".join(lines)
+def _datum(v: Any, unit: str | None) -> str:
+    if isinstance(v, dict) and "carried" in v:
+        return f"your answer to {oneline(v['carried'])}"
+    if isinstance(v, str):
+        return oneline(v)
+    return f"{v:g}{' ' + unit if unit else ''}"
 
 
-def render_template(key, grader, student: str) -> str:
+def render_template(key, grader, student: str, cache: dict | None = None) -> str:
     lines = [f"# Submission for {oneline(key.title or 'this problem set')}: fill in every answer.",
              "# A value may be a number, a constant expression (\"2*pi\") or a number with a unit (\"12 m/s\");",
              "# a bare number is read in the unit shown.  Nothing else belongs in this file.",
              f"student: {json.dumps(student)}", "answers:"]
     for q in key.questions:
         title = q.title or (q.problem.title if q.problem is not None else "")
-        u = unit_of(q, grader, student)
-        unit = f"; unit {u}" if u else ""
+        u = unit_of(q, grader, student, cache)
+        unit = f"; unit {u}" if u and u != "dimensionless" else "; a pure number" if u else ""
         lines.append(f"  {json.dumps(q.id)}:      # {oneline(title)}: {oneline(q.answer)}{unit}; "
                      f"{q.points:g} point{'s' if q.points != 1 else ''}")
     return "\n".join(lines) + "\n"
@@ -123,5 +150,7 @@ def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool =
     except VariantError as exc:
         _err(f"{key.file}: {exc}")
         return 2
-    sys.stdout.write(render_yaml(doc) if fmt == "yaml" else render_markdown(key, doc))
+    from dyncli.check.sheetview import render
+
+    sys.stdout.write(render(key, doc, fmt))
     return 0

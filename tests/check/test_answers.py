@@ -106,7 +106,7 @@ checks:
 
 
 def test_whole_record_answer():
-    r = grade("problem: brake.yaml\nanswers:\n  find.1: {t: 5, s: 50, v: 0, a: -4, reached: true}\n")
+    r = grade("problem: brake.yaml\nanswers:\n  find.1: {t: 5, s: 50, v: 0, a: -4, reached: true, distance: 50}\n")
     assert r.exit_code == 0
 
 

@@ -91,7 +91,7 @@ def test_write_key_round_trip(tmp_path):
     rc, out, err = run_cli("check", str(key), "-f", "json")
     assert rc == 0, err
     doc = json.loads(out)
-    assert doc["score"] == doc["max_score"] == 17 and doc["solves"] == 2
+    assert doc["score"] == doc["max_score"] == 20 and doc["solves"] == 2    # 17 values + 3 find distances
 
 
 def test_write_key_to_stdout_is_accepted_unchanged_via_stdin():
@@ -102,7 +102,7 @@ def test_write_key_to_stdout_is_accepted_unchanged_via_stdin():
     rc, out, err = run_cli("check", "-", "-f", "gradescope", input=key)
     assert rc == 0, err
     doc = json.loads(out)
-    assert doc["score"] == 16 and all(t["status"] == "passed" for t in doc["tests"])
+    assert doc["score"] == 19 and all(t["status"] == "passed" for t in doc["tests"])   # 16 + 3 distances
 
 
 def test_write_key_invalid_problem_is_exit_2():

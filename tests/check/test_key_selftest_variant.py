@@ -83,7 +83,7 @@ def test_variant_markdown_and_template_round_trip(tmp_path, capsys):
     rc, md, err = run_cli("variant", str(KEY), "--student", "bob", "--format", "markdown")
     assert rc == 0, err
     p = params_of("bob")
-    assert f"| `v0` | {p['v0']:g} |" in md and "### Braking car" in md and "**1a**" in md
+    assert f"| `v0` | {p['v0']:g} |" in md and "### 1. Braking car" in md and "**1a (" in md
     rc, tpl, err = run_cli("variant", str(KEY), "--student", "bob", "--template")
     assert rc == 0 and 'student: "bob"' in tpl and '"1d":' in tpl and "unit mm" in tpl
     t = truth(p["v0"], p["a0"])

@@ -210,6 +210,7 @@ def _start_mode(model, t, y, rtol):
 def integrate(model, rtol, atol, method, max_steps=None, max_step=math.inf):
     p = model.p
     rtol = runner.floor_rtol(rtol)
+    max_step = min(max_step, model.compiled.kink_step)     # no step over a one-sided spring's contact
     t_end = float(p.t_end)
     y = np.array([p.q0, p.q_dot0, 0.0, 0.0, 0.0], float)
     t = 0.0

@@ -47,28 +47,47 @@ def inverse_square_potential(mu: float, r):
     return -(mu / distance(r))
 
 
-def spring_force(k: float, L: float, r):
+def spring_force(k: float, L: float, r, side: str | None = None):
     """F = −k (R − L) r/R [N] (19.26a): a linear spring of stiffness k [N/m] and free length
-    L [m], r from the anchor; −k r when L = 0 (no division by R, so R = 0 is fine).
+    L [m], r from the anchor; −k r when L = 0 (no division by R, so R = 0 is fine).  A one-sided
+    spring (``side``) acts only while it is compressed (R < L) or stretched (R > L): its force is
+    continuous (zero at R = L).
 
     >>> spring_force(10.0, 1.0, np.array([0.0, 0.0, 3.0])).tolist()
     [-0.0, -0.0, -20.0]
     >>> spring_force(10.0, 0.0, np.array([0.0, 0.0, 0.0])).tolist()
     [-0.0, -0.0, -0.0]
+    >>> spring_force(10.0, 1.0, np.array([0.0, 0.0, 3.0]), "compression").tolist()
+    [-0.0, -0.0, -0.0]
     """
     if L == 0.0:
-        return -(k * r)
+        return -(k * r) * engaged(side, distance(r), L)
     R = distance(r)
-    return -(k * (R - L) * r / R)
+    return -(k * (R - L) * r / R) * engaged(side, R, L)
 
 
-def spring_potential(k: float, L: float, r):
-    """V = ½ k (R − L)² [J] (19.26b).
+def spring_potential(k: float, L: float, r, side: str | None = None):
+    """V = ½ k (R − L)² [J] (19.26b); of a one-sided spring only while it acts (zero beyond).
 
     >>> float(spring_potential(10.0, 1.0, np.array([0.0, 0.0, 3.0])))
     20.0
+    >>> float(spring_potential(10.0, 1.0, np.array([0.0, 0.0, 0.5]), "compression"))
+    1.25
     """
-    return 0.5 * k * (distance(r) - L) ** 2
+    R = distance(r)
+    return 0.5 * k * (R - L) ** 2 * engaged(side, R, L)
+
+
+def engaged(side: str | None, R, L: float):
+    """1 where a spring acts, 0 where a one-sided one is slack: ``compression`` acts for R < L
+    (it only pushes), ``tension`` for R > L (it only pulls, an elastic cord); None: always.
+
+    >>> engaged("compression", np.array([0.5, 1.5]), 1.0).tolist()
+    [1.0, 0.0]
+    """
+    if side is None:
+        return 1.0
+    return np.where(R < L, 1.0, 0.0) if side == "compression" else np.where(R > L, 1.0, 0.0)
 
 
 def kinetic_energy(m: float, v):

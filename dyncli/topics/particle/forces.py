@@ -35,7 +35,7 @@ class Forces:
         self.uniform = np.zeros(3)
         self.weight = 0.0            # m g for each gravity term
         self.inv: list[tuple[np.ndarray, float, float]] = []      # (centre, m g R0², R0)
-        self.springs: list[tuple[np.ndarray, float, float]] = []  # (anchor, k, L)
+        self.springs: list[tuple[np.ndarray, float, float, str | None]] = []  # (anchor, k, L, one_sided)
         self.c_lin = 0.0             # dampers + linear drag
         self.c_quad = 0.0            # quadratic drag
         self.muN = 0.0               # sum of mu N over friction terms
@@ -57,7 +57,7 @@ class Forces:
                                      f"{m:g} kg · {g:g} m/s² · ({R0:g} m)² overflows", f"forces.{len(self.kinds) - 1}.R0")
                 self.inv.append((np.asarray(f.center, float), mu, R0))
             elif k == "spring":
-                self.springs.append((np.asarray(f.anchor, float), float(f.k), float(f.L)))
+                self.springs.append((np.asarray(f.anchor, float), float(f.k), float(f.L), f.one_sided))
             elif k == "damper":
                 self.c_lin += f.c
             elif k == "drag":
@@ -72,6 +72,9 @@ class Forces:
             else:  # pragma: no cover - the model's union forbids it
                 raise InputError(f"unknown force kind {k!r}", "forces")
         self.time_dependent = any("t" in e.variables for F in self.custom for e in F)
+        #: the longest step over a one-sided spring's engagement (a kink in the force): an eighth of its
+        #: half period, so that no step leaps over the contact and the error control sees the kink
+        self.kink_step = min([math.pi * math.sqrt(m / k) / 8 for _, k, _, side in self.springs if side] + [math.inf])
 
     # -- forces -------------------------------------------------------------
     def conservative(self, x):
@@ -81,8 +84,8 @@ class Forces:
             F[2] = F[2] - self.weight
         for c, mu, _ in self.inv:
             F = F + eq.inverse_square_force(mu, x - _col(c, x))     # (19.18)
-        for a, k, L in self.springs:
-            F = F + eq.spring_force(k, L, x - _col(a, x))           # (19.26a)
+        for a, k, L, side in self.springs:
+            F = F + eq.spring_force(k, L, x - _col(a, x), side)     # (19.26a)
         return F
 
     def nonconservative(self, t, x, v):
@@ -112,7 +115,8 @@ class Forces:
         c_lin, c_quad = self.c_lin, self.c_quad
         d1, d2, d3 = np.asarray(d, float).tolist()
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
-        springs = [(float(a[0]), float(a[1]), float(a[2]), k, L) for a, k, L in self.springs]
+        springs = [(float(a[0]), float(a[1]), float(a[2]), k, L, {None: 0, "compression": -1, "tension": 1}[side])
+                   for a, k, L, side in self.springs]
         custom = [tuple(e.scalar_fn() for e in comps) for comps in self.custom]
         sqrt, isfinite = math.sqrt, math.isfinite
 
@@ -145,12 +149,15 @@ class Forces:
                     raise _NonFinite(t, (x1, x2, x3))
                 k = mu / den
                 g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
-            for a1, a2, a3, ks, L in springs:
+            for a1, a2, a3, ks, L, side in springs:
                 r1, r2, r3 = x1 - a1, x2 - a2, x3 - a3
                 if L == 0.0:
-                    g1, g2, g3 = g1 - ks * r1, g2 - ks * r2, g3 - ks * r3
+                    if side <= 0:                  # one-sided compression is refused at L = 0
+                        g1, g2, g3 = g1 - ks * r1, g2 - ks * r2, g3 - ks * r3
                 else:
                     R = sqrt(r1 * r1 + r2 * r2 + r3 * r3)
+                    if side * (R - L) < 0.0:       # a one-sided spring that is slack
+                        continue
                     if R == 0.0:
                         raise _NonFinite(t, (x1, x2, x3))
                     k = ks * (R - L) / R
@@ -173,7 +180,7 @@ class Forces:
         """V of the conservative terms (19.23, 19.20b, 19.26b)."""
         V = [eq.gravity_potential(self.weight, x[2])] if self.weight else []
         V += [eq.inverse_square_potential(mu, x - _col(c, x)) for c, mu, _ in self.inv]
-        V += [eq.spring_potential(k, L, x - _col(a, x)) for a, k, L in self.springs]
+        V += [eq.spring_potential(k, L, x - _col(a, x), side) for a, k, L, side in self.springs]
         if not V:
             return np.zeros(np.shape(x)[1:]) if np.ndim(x) > 1 else 0.0
         total = V[0]

@@ -56,7 +56,7 @@ def singularity_hint(F: Forces, x) -> str:
         R = float(np.linalg.norm(x - c))
         if R < 1e-3 * R0:
             return f" (the particle falls into the centre of the inverse-square field: R = {R:.3g} m)"
-    for a, _, L in F.springs:
+    for a, _, L, _ in F.springs:
         R = float(np.linalg.norm(x - a))
         if L > 0 and R < 1e-3 * L:
             return f" (the particle reaches the anchor of a spring with free length L > 0: R = {R:.3g} m)"

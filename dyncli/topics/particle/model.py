@@ -48,6 +48,16 @@ class Spring(StrictModel):
     anchor: Vec3(dim="length", description="fixed end of the spring [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
     k: Num(gt=0, dim="stiffness", description="stiffness [N/m]")  # type: ignore[valid-type]
     L: Num(ge=0, dim="length", description="free length [m]") = 0.0  # type: ignore[valid-type]
+    one_sided: Optional[Literal["compression", "tension"]] = Field(
+        None, description="compression: only pushes (acts while R < L: a block dropped onto it); tension: only "
+                          "pulls (R > L: an elastic cord); default two-sided")
+
+    @model_validator(mode="after")
+    def _one_sided_needs_length(self):
+        if self.one_sided == "compression" and self.L == 0:
+            raise ValueError("one_sided: compression needs a free length L > 0 (the spring acts while shorter "
+                             "than L): give L")
+        return self
 
 
 class Damper(StrictModel):

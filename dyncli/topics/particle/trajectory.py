@@ -149,7 +149,7 @@ def integrate(p, F: Forces, rtol: float, atol: float, method: str, *, max_steps:
     needs more than ``max_steps`` accepted steps (default MAX_STEPS); a
     non-finite force is a NumericalError at once.  ``max_step``: the longest step allowed."""
     with np.errstate(all="ignore"):     # overflow is detected and reported, not warned about
-        return _integrate(p, F, (rtol, atol, max_step), method, max_steps, times, dense)
+        return _integrate(p, F, (rtol, atol, min(max_step, F.kink_step)), method, max_steps, times, dense)
 
 
 def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from dyncli.topics.particle import equations as eq
+
 GL_NODES = 8
 POTENTIAL_KINDS = ("gravity", "inverse-square", "spring", "uniform")
 
@@ -73,7 +75,8 @@ class Term:
         if k == "spring":
             r = x - self.c
             R = np.sqrt((r * r).sum(axis=0))
-            return -f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)
+            on = eq.engaged(f.one_sided, R, f.L)
+            return (-f.k * r if f.L == 0 else -f.k * (R - f.L) * r / np.where(R > 0, R, 1.0)) * on
         if k == "damper" or (k == "drag" and f.power == 1):
             return -f.c * v
         if k == "drag":
@@ -101,7 +104,7 @@ class Term:
         R = np.sqrt((r * r).sum(axis=0))
         if k == "inverse-square":
             return -self.mu / R
-        return 0.5 * f.k * (R - f.L) ** 2
+        return 0.5 * f.k * (R - f.L) ** 2 * eq.engaged(f.one_sided, R, f.L)
 
 
 def _sliding_dirs(F, t, X, V):
