@@ -270,3 +270,26 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
         roots += [v] if fs[-1] == 0 and v == b else []
     return sorted(set(roots)), sorted(touches), bad
 
+
+def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
+    """A root of the square system F(x) = 0 by Newton's method with the analytic Jacobian
+    ``jac``: least-squares steps (a singular Jacobian, a continuum of roots, takes the
+    minimum-norm step), each limited to ``max_step`` in the units ``scale`` (a vector of
+    per-component scales).  Converged when the step is below ``tol`` of those units; returns
+    (x, converged)."""
+    import numpy as np
+
+    x = np.array(x0, dtype=float)
+    scale = np.asarray(scale, dtype=float)
+    for _ in range(maxit):
+        r = np.asarray(F(x), dtype=float)
+        if not np.all(np.isfinite(r)):
+            return x, False
+        step = np.linalg.lstsq(np.asarray(jac(x), dtype=float), -r, rcond=1e-13)[0]
+        big = float(np.max(np.abs(step) / scale, initial=0.0))
+        if big > max_step:
+            step *= max_step / big
+        x = x + step
+        if big <= tol:
+            return x, True
+    return x, False

@@ -222,6 +222,8 @@ class Scene(ProblemBase):
     at: Times(description="times at which to report the state [s]") = Field(default_factory=list)  # type: ignore[valid-type]
     find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}")
     motion: Optional[Any] = Field(None, description="out-of-plane motion is refused (use top, euler, gyroscope)")
+    linearize: bool = Field(False, description="true: the equilibria (rest configurations) with their stability, "
+                            "natural frequencies, mode shapes and the linear response (result `equilibria`)")
 
     accuracy_methods = ("auto", "closed-form", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")
 

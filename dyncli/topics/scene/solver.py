@@ -92,7 +92,22 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res = outcome.results(scene, traj, route, times, p.find, params, acc)
     if route == "ode" and acc.estimate:
         _check_solve(res, plan, t_end, times, acc)
+    if p.linearize:
+        _linearize(res, plan, times)
     return res
+
+
+def _linearize(res: Result, plan, times: list[float]) -> None:
+    """`linearize: true`: the equilibria and small oscillations, on a scene set up afresh (the
+    route may have changed the contacts' modes)."""
+    from . import modes, views
+
+    scene = prepare.setup(plan)
+    why = modes.refusal(scene)
+    if why:
+        raise InputError(why, "linearize")
+    res.results["equilibria"] = modes.results(scene, times, res.warn)
+    res.views.extend(views.equilibria(res.results["equilibria"]))
 
 
 def _kind(key: str) -> str:

@@ -104,3 +104,28 @@ def _find(r) -> Table:
     for i, f in enumerate(r["find"]):
         rows.append([i, f.get("t"), f.get("reached"), f.get("at_end"), ", ".join(_coords(f)) if f.get("reached") else "—"])
     return Table("find", ["#", "t [s]", "reached", "at end", "state (find.N holds every result)"], rows)
+
+
+def equilibria(eqs) -> list[Table]:
+    """One row per equilibrium (its coordinates, stability, ω² and frequencies) and one per mode."""
+    rows, mrows = [], []
+    for i, e in enumerate(eqs):
+        coords = ", ".join(f"{c} = {_fmt(v)}" for c, v in zip(e["coordinates"], e["values"]))
+        rows.append([i, coords, e["stability"], _fmt(e["omega2"]),
+                     "—" if e["frequencies"] is None else _fmt(e["frequencies"]),
+                     "—" if e["frequencies_hz"] is None else _fmt(e["frequencies_hz"])])
+        for r, u in enumerate(e["modes"]):
+            mrows.append([i, r + 1, "—" if e["frequencies"] is None else e["frequencies"][r],
+                          ", ".join(f"{c}: {_fmt(x)}" for c, x in zip(e["coordinates"], u))])
+    out = [Table("equilibria (rest configurations; stability from the reduced stiffness)",
+                 ["#", "coordinates", "stability", "ω² [1/s²]", "ω [rad/s]", "f [Hz]"], rows)]
+    if mrows:
+        out.append(Table("mode shapes (first non-zero component 1)", ["equilibrium", "mode", "ω [rad/s]", "shape"],
+                         mrows))
+    drows = [[i, f"{z[0]:.6g} {'+' if z[1] >= 0 else '−'} {abs(z[1]):.6g} i", wd, zeta]
+             for i, e in enumerate(eqs) if e.get("damped")
+             for z, wd, zeta in zip(e["damped"]["eigenvalues"], e["damped"]["frequencies"], e["damped"]["damping_ratios"])]
+    if drows:
+        out.append(Table("damped (complex) modes: λ = −ζω ± iω_d", ["equilibrium", "λ [1/s]", "ω_d [rad/s]", "ζ"],
+                         drows))
+    return out

@@ -1,0 +1,108 @@
+"""Second derivatives of a scene's rows and potential, analytic (docs/types/scene.md: equilibria).
+
+Every row of a joint is a linear functional c·r of body points, a body coordinate, or the
+length |r_P − r_Q| of a link; a point of a rigid body r = x + Q(θ) p has one second derivative,
+∂²r/∂θ² = −Q(θ) p.  From these:
+
+* :func:`rows_hessian` — Σ_k w_k ∇²φ_k for weights w (the multipliers: the constraint-force
+  curvature of the linearized system);
+* :func:`potential_hessian` — ∇²V of gravity (0), springs (k (∇s ∇sᵀ + s ∇²|d|)) and
+  constant forces (−∇²(F·r_P));
+* :func:`damping_matrix` — the dampers' C (the generalized force −C q̇ at rest).
+
+No finite differences: the tests compare these with differences of the Jacobians.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .system import Point
+
+
+def point_hessian(P: Point, q, c, n: int) -> np.ndarray:
+    """∇²(c·r_P) for a constant 2-vector c: only the body angle's diagonal entry, −c·Q(θ)p."""
+    H = np.zeros((n, n))
+    if P.turns_with_body:
+        k = P.body.index[2]
+        H[k, k] = -float(np.asarray(c, float) @ P.arm(q))
+    return H
+
+
+def length_terms(P: Point, Q: Point, q, n: int):
+    """(|d|, e, ∇|d|, ∇²|d|) of d = r_P − r_Q."""
+    d = P.pos(q) - Q.pos(q)
+    ln = math.hypot(d[0], d[1])
+    e = d / ln
+    D = P.jac(q, n) - Q.jac(q, n)
+    grad = e @ D
+    perp_proj = np.eye(2) - np.outer(e, e)
+    H = D.T @ perp_proj @ D / ln + point_hessian(P, q, e, n) - point_hessian(Q, q, e, n)
+    return ln, e, grad, H
+
+
+def _element_hessian(el, q, w, n: int) -> np.ndarray:
+    kind = el.kind
+    if kind == "pin":
+        return point_hessian(el.P, q, w[:2], n) - point_hessian(el.Q, q, w[:2], n)
+    if kind == "slider":
+        return point_hessian(el.body_point, q, w[0] * np.array(el.surface.n), n)
+    if kind == "contact":
+        c = w[0] * np.array(el.surface.n)
+        if el.mode == "stick":
+            c = c + w[1] * np.array(el.surface.d)
+        return point_hessian(el.P, q, c, n)
+    if kind == "link":
+        return w[0] * length_terms(el.P, el.Q, q, n)[3]
+    if kind == "guide":
+        return point_hessian(el.P, q, w[0] * el.w, n)
+    if kind == "cord":
+        H = np.zeros((n, n))
+        for r, run in enumerate(el.runs):
+            for seg in run:
+                for end, sign in ((seg.b, 1.0), (seg.a, -1.0)):
+                    if end.point is not None:
+                        H += sign * point_hessian(end.point, q, w[r] * seg.u, n)
+        return H
+    return np.zeros((n, n))          # rolls, drive: rows affine in q
+
+
+def rows_hessian(system, q, lam) -> np.ndarray:
+    """Σ_k λ_k ∇²φ_k over every row of every joint."""
+    n = system.n
+    H = np.zeros((n, n))
+    for i, el in enumerate(system.elements):
+        w = system.lam_of(lam, i)
+        if np.any(w):
+            H += _element_hessian(el, q, w, n)
+    return H
+
+
+def potential_hessian(system, q) -> np.ndarray:
+    """∇²V of the conservative loads (gravity is linear in q: no term)."""
+    n = system.n
+    H = np.zeros((n, n))
+    for ld in system.loads:
+        if ld.kind == "spring":
+            ln, _e, grad, Hl = length_terms(ld.P, ld.Q, q, n)
+            s = ln - ld.L
+            if ld.one_sided == "compression" and s > 0 or ld.one_sided == "tension" and s < 0:
+                continue
+            H += ld.k * (np.outer(grad, grad) + s * Hl)
+        elif ld.kind == "force":
+            F = np.array(ld.F(0.0), dtype=float)
+            H -= point_hessian(ld.P, q, F, n)
+    return H
+
+
+def damping_matrix(system, q) -> np.ndarray:
+    """C with the dampers' generalized force −C q̇ (linear in the rates)."""
+    n = system.n
+    C = np.zeros((n, n))
+    for ld in system.loads:
+        if ld.kind == "damper":
+            _ln, _e, grad, _H = length_terms(ld.P, ld.Q, q, n)
+            C += ld.c * np.outer(grad, grad)
+    return C

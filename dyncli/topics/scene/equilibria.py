@@ -1,0 +1,249 @@
+"""Where a scene can rest: the equilibria of its reduced system, found exactly (docs/types/scene.md).
+
+At rest the joints hold the loads: f(q) + Jᵀλ = 0 with φ(q) = 0 — the generalized forces
+Zᵀf of the reduced system vanish (Z spanning the null space of J).  Each equilibrium is a root
+of that square system in (q, λ), found by Newton's method with its analytic Jacobian
+
+    [ −∇²V + Σ λ_k ∇²φ_k   Jᵀ ]
+    [ J                    0  ]      (curvature.py),
+
+started from the given configuration and from the points where the generalized force along a
+path on the mechanism changes sign: each free coordinate is followed on the joints' manifold
+(a step of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either
+way) — the sign change brackets a root the Newton iteration then converges to quadratically.
+Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
+of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
+at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.rootfind import newton_system
+
+from . import assembly, curvature
+
+EPS = float(np.finfo(float).eps)
+STEP = 0.1              # path step along a free coordinate (rad, or a fraction of the scene's size)
+REACH = math.pi         # how far each path runs either way (same units)
+MAX_FOUND = 24
+EVERY = 5              # every fifth point of a path starts a Newton iteration too
+MAX_WALKED = 8         # equilibria whose own paths are followed too
+
+
+class Search:
+    def __init__(self, system, q0):
+        self.s = system
+        self.n = system.n
+        self.L = assembly.length_scale(q0, system)
+        self.angles = np.array([nm.startswith("angle.") for nm in system.names])
+        self.scale = np.where(self.angles, 1.0, self.L)
+        f = self.forces(q0)
+        self.F0 = max(float(np.max(np.abs(f), initial=0.0)), float(np.max(np.abs(system.grav), initial=0.0)), 1e-300)
+
+    def forces(self, q) -> np.ndarray:
+        return self.s.applied(q, np.zeros(self.n), 0.0)[0]
+
+    def multipliers(self, q) -> np.ndarray:
+        J = self.s.jac(q)
+        if J.shape[0] == 0:
+            return np.zeros(0)
+        return np.linalg.lstsq(J.T, -self.forces(q), rcond=None)[0]
+
+    def same_sides(self, qa, qb) -> bool:
+        """No spring or damper passed through zero length from qa to qb (its direction, undefined
+        there, would flip: the model ends where its two ends meet)."""
+        for ld in self.s.loads:
+            if ld.kind in ("spring", "damper"):
+                da, db = ld.P.pos(qa) - ld.Q.pos(qa), ld.P.pos(qb) - ld.Q.pos(qb)
+                if float(da @ db) <= 0:
+                    return False
+        return True
+
+    # ------------------------------------------------------------------ Newton on (q, λ)
+    def rest_from(self, q_start):
+        s, n = self.s, self.n
+        m = s.m
+
+        def F(y):
+            q, lam = y[:n], y[n:]
+            return np.concatenate([self.forces(q) + s.jac(q).T @ lam, s.phi(q, 0.0)])
+
+        def jac(y):
+            q, lam = y[:n], y[n:]
+            J = s.jac(q)
+            A = np.zeros((n + m, n + m))
+            A[:n, :n] = -curvature.potential_hessian(s, q) + curvature.rows_hessian(s, q, lam)
+            A[:n, n:] = J.T
+            A[n:, :n] = J
+            return A
+
+        y0 = np.concatenate([q_start, self.multipliers(q_start)])
+        scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
+        y, ok = newton_system(F, jac, y0, scale=scale, tol=1e-13)
+        if not ok:
+            return None
+        q = y[:n]
+        if float(np.max(np.abs(s.phi(q, 0.0)), initial=0.0)) > 1e-10 * self.L or not self.same_sides(q_start, q):
+            return None
+        lam = self.multipliers(q)
+        if float(np.max(np.abs(self.forces(q) + s.jac(q).T @ lam), initial=0.0)) > 1e-9 * self.F0:
+            return None
+        return q, lam
+
+    # ------------------------------------------------------------------ paths on the manifold
+    def _onto(self, q):
+        """q placed on the joints by minimum-norm Gauss–Newton (the branch nearest q)."""
+        for _ in range(30):
+            ph = self.s.phi(q, 0.0)
+            if float(np.max(np.abs(ph), initial=0.0)) <= 1e-13 * self.L:
+                return q
+            step = np.linalg.lstsq(self.s.jac(q) * self.scale, -ph, rcond=None)[0] * self.scale
+            q = q + step
+        return None
+
+    def _tangent(self, q, t):
+        J = self.s.jac(q) * self.scale
+        ts = t / self.scale
+        if J.shape[0]:
+            ts = ts - J.T @ np.linalg.lstsq(J @ J.T, J @ ts, rcond=None)[0]
+        nrm = float(np.linalg.norm(ts))
+        return None if nrm < 1e-12 else ts / nrm * self.scale
+
+    def path_starts(self, q0, t0) -> list:
+        """Points of the path from q0 along t0 (both ways) where the force along it changes sign."""
+        out = []
+        for sign in (1.0, -1.0):
+            q, t = q0.copy(), self._tangent(q0, sign * t0)
+            if t is None:
+                continue
+            g_prev, q_prev = float(t @ self.forces(q)), q
+            for k in range(int(REACH / STEP)):
+                q_new = self._onto(q + STEP * t)
+                if q_new is None:
+                    break
+                t_new = self._tangent(q_new, t)
+                if t_new is None or not self.same_sides(q, q_new):
+                    break
+                g = float(t_new @ self.forces(q_new))
+                noise = 1e-9 * self.F0 * max(1.0, self.L)
+                if (g_prev > noise and g < -noise) or (g_prev < -noise and g > noise):
+                    w = abs(g_prev) / (abs(g_prev) + abs(g))
+                    out.append(self._onto(q_prev + w * (q_new - q_prev)))
+                elif k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
+                    out.append(q_new)
+                q, t, g_prev, q_prev = q_new, t_new, g, q_new
+        return [x for x in out if x is not None]
+
+
+def null_basis(J, n: int, indep: list[int]) -> np.ndarray:
+    """Z with Z[indep] = I and J Z = 0 (the independent coordinates' own directions)."""
+    dep = [k for k in range(n) if k not in indep]
+    Z = np.zeros((n, len(indep)))
+    Z[indep, range(len(indep))] = 1.0
+    if dep and J.shape[0]:
+        Z[dep] = -np.linalg.solve(J[:, dep], J[:, indep])
+    return Z
+
+
+def neutral_dirs(system, q, lam) -> np.ndarray:
+    """The directions in q along which the reduced stiffness vanishes (a continuum of rest)."""
+    n = system.n
+    J = system.jac(q)
+    if J.shape[0]:
+        _, sv, Vt = np.linalg.svd(J)
+        r = assembly.rank(J)
+        Z = Vt[r:].T
+    else:
+        Z = np.eye(n)
+    Hv = Z.T @ curvature.potential_hessian(system, q) @ Z
+    Hc = Z.T @ curvature.rows_hessian(system, q, lam) @ Z
+    K = Hv - Hc
+    K = 0.5 * (K + K.T)
+    w, U = np.linalg.eigh(K)
+    tol = 1e-8 * max(float(np.linalg.norm(Hv, 2)) if Hv.size else 0.0,
+                     float(np.linalg.norm(Hc, 2)) if Hc.size else 0.0, 1e-300)
+    return Z @ U[:, np.abs(w) <= tol]
+
+
+def _same(a, b, search, dirs) -> bool:
+    d = (b - a) / search.scale
+    d = np.where(search.angles, (d + math.pi) % (2 * math.pi) - math.pi, d)
+    if float(np.max(np.abs(d), initial=0.0)) <= 1e-7:
+        return True
+    if dirs.shape[1]:
+        D = dirs / search.scale[:, None]
+        c = np.linalg.lstsq(D, d, rcond=None)[0]
+        return float(np.max(np.abs(D @ c - d), initial=0.0)) <= 1e-7
+    return False
+
+
+def _walks(S, q, indep) -> list:
+    Z = null_basis(S.s.jac(q), S.n, indep)
+    return [x for k in range(Z.shape[1]) for x in S.path_starts(q, Z[:, k])]
+
+
+def _near_start(q, q0, angles) -> np.ndarray:
+    """Each angle moved by whole turns to the value nearest the initial configuration's."""
+    q = q.copy()
+    q[angles] = q[angles] - 2 * math.pi * np.round((q[angles] - q0[angles]) / (2 * math.pi))
+    return q
+
+
+def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Every equilibrium reached: [(q, λ)], the one reached from the initial configuration first."""
+    S = Search(system, q0)
+    starts = [q0] + _walks(S, q0, coords_idx)
+    found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+    dropped: list[str] = []
+    walked = 0
+    while starts:
+        got = S.rest_from(starts.pop(0))
+        if got is None:
+            continue
+        q, lam = got
+        q = _near_start(q, q0, S.angles)
+        if any(_same(q, f[0], S, f[2]) for f in found):
+            continue
+        bad = _pulls(system, q, lam)
+        found.append((q, lam, neutral_dirs(system, q, lam)))
+        if bad:
+            pos = ", ".join(f"{nm} = {x:.6g}" for nm, x in zip(system.names, q))
+            dropped.append(f"at {pos}: {bad}")
+        if walked < MAX_WALKED:           # the paths from each new equilibrium reach the others
+            walked += 1
+            starts += _walks(S, q, assembly.independent(system.jac(q), system.n))
+        if len(found) >= MAX_FOUND:
+            warn(f"the equilibrium search stopped after {MAX_FOUND} equilibria")
+            break
+    if len(dropped) == len(found):
+        warn("no rest configuration found: the loads cannot be held by the joints at rest anywhere the search "
+             "reached (from the given configuration and along each free coordinate)")
+    if dropped:
+        warn("equilibria that are not rest configurations (a one-sided joint would not hold, or a body would be "
+             "through a surface) are left out: "
+             + "; ".join(dict.fromkeys(dropped)))
+    return [(q, lam) for q, lam, d in found if not _pulls(system, q, lam)]
+
+
+def _pulls(system, q, lam) -> str | None:
+    """Why a one-sided joint does not hold at this equilibrium (None when every one holds)."""
+    v = np.zeros(system.n)
+    for e in system.elements:
+        if e.kind in ("contact", "rolls"):
+            body = e.P.body if e.kind == "contact" else e.body_point.body
+            if body is not None:
+                i = body.index
+                side = float(np.array(e.surface.n) @ (np.array([q[i[0]], q[i[1]]]) - np.array(e.surface.origin)))
+                if side < -1e-9 * assembly.length_scale(q, system):
+                    return f"{body.name!r} would be through the surface {e.surface.name!r} (its centre on the far side)"
+    for i, e in enumerate(system.elements):
+        for what, g in e.watch(system.lam_of(lam, i), q, v, 0.0):
+            if what in ("sticks",):
+                continue
+            if g < -1e-9 * max(1.0, float(np.max(np.abs(lam), initial=0.0))):
+                return f"the joint {e.name!r} {what}"
+    return None
