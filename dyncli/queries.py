@@ -312,7 +312,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     HR = [hr(t) for t in T] if hr else []
     for k in range(len(HR) - 1):
         if HR[k] > 0 >= HR[k + 1]:                    # h turns from rising to not rising
-            tm = _root(lambda t: _hr_psi(hr, t), T[k], T[k + 1])
+            tm = _turn(hr, T[k], T[k + 1], T[k + 2] if k + 2 < len(T) and HR[k + 1] == 0 else None)
             cands.append((tm, h(tm)))
             rooted.add(k)
     for j in range(1, n - 1):
@@ -326,6 +326,21 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     tol = _tol(motion, max(abs(x) for x in H + [best]))
     t = min(c[0] for c in cands if c[1] >= best - tol)
     return t, (t == w1 or t == w2)
+
+
+def _turn(hr: Callable[[float], float], a: float, b: float, c: float | None) -> float:
+    """Where hr turns from positive to negative after a: the middle of the run of exact zeros
+    there (a rate computed as √(2K/m) from an energy is exactly 0 over a few rounding steps
+    around a turning point, symmetric about it), a single root when there is none.  The run
+    starts in [a, b]; ``c``: the next sample when hr(b) is 0 (the run may go on past b)."""
+    first = _root(lambda t: _hr_psi(hr, t), a, b)
+    if hr(first) != 0:
+        return first
+    end = c if c is not None else b
+    if hr(end) >= 0:                                  # no negative rate in reach: the run's start
+        return first
+    last = _root(lambda t: y if (y := hr(t)) != 0 else _TINY, first, end)
+    return 0.5 * (first + last)
 
 
 def _hr_psi(hr: Callable[[float], float], t: float) -> float:

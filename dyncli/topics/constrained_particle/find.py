@@ -31,6 +31,23 @@ def quadrature_states(p, model):
 
     E = quadrature.Energy(p, model)
 
+    def legs(t_end: float) -> list[float]:
+        """The ends of the route's legs up to t_end: the turning points (and the legs' middles)."""
+        quadrature.motion(E, [0.0])
+        pl = E._plan
+        if pl is None:
+            return []
+        first, cycle = pl[0], pl[1]
+        out, t = [], 0.0
+        for s in first:
+            t += s.dur
+            out.append(t)
+        while cycle and t < t_end and len(out) < MAX_PIECES:
+            for s in cycle:
+                t += s.dur
+                out.append(t)
+        return [x for x in out if 0.0 < x < t_end]
+
     def states(ts):
         ts = [float(t) for t in ts]
         q, qd = quadrature.motion(E, ts)[:2]
@@ -38,6 +55,7 @@ def quadrature_states(p, model):
         Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
         Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
         return assemble(p, model, ts, Y, [("slide", 1.0)] * n)["results"]
+    states.legs = legs
     return states
 
 

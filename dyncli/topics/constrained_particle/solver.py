@@ -91,8 +91,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
         res = quadrature.solve(p, model, times, fallback=(meth == "auto"))
         if res is not None:
-            find.report(p, res, find.quadrature_states(p, model),
-                        find.uniform_breaks(float(p.t_end), res.results.get("period")), SERIES)
+            states = find.quadrature_states(p, model)
+            find.report(p, res, states, find.uniform_breaks(float(p.t_end), res.results.get("period"))
+                        + states.legs(float(p.t_end)), SERIES)
     if res is None:
         res = _solve_ode(p, model, times)
         find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
