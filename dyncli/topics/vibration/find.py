@@ -221,16 +221,19 @@ def _forced_turns(resp: Response, t_end: float) -> list[float]:
     zeros = T[1:-1][V[1:-1] == 0.0]
     a, b, va, vb = T[k], T[k + 1], V[k], V[k + 1]
     t = a - va * (b - a) / (vb - va)
-    for _ in range(5):                                 # Newton from the secant: a few steps reach rounding
+    eps = np.finfo(float).eps
+    for _ in range(100):                               # Newton (bisection when it leaves the bracket)
         _, vt = resp.arrays(t)
+        if not np.any(vt):
+            break
         neg = (vt * va) < 0                            # the root lies in [a, t]
         b, vb = np.where(neg, t, b), np.where(neg, vt, vb)
         a, va = np.where(neg, a, t), np.where(neg, va, vt)
         step = t - vt / resp.accel_array(t)
         bad = ~((step > a) & (step < b)) | ~np.isfinite(step)
         t_new = np.where(bad, 0.5 * (a + b), step)
-        if np.all(np.abs(t_new - t) <= 4 * np.finfo(float).eps * np.maximum(np.abs(t), 1e-300)):
-            t = t_new
+        done = (np.abs(t_new - t) <= 4 * eps * np.abs(t)) | (b - a <= 4 * eps * np.abs(b)) | (vt == 0)
+        t = np.where(vt == 0, t, t_new)
+        if np.all(done):
             break
-        t = t_new
     return sorted(t.tolist() + zeros.tolist())
