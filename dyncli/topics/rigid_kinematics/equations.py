@@ -138,3 +138,19 @@ def contact_split(vM1, vM2, n):
     vrel = sub(vM1, vM2)
     approach = dot(vrel, n)
     return vrel, approach, sub(vrel, mul(approach, n))
+
+
+def rolling_rates(vB, aB, c) -> tuple[Vec, Vec]:
+    """(ω, ω̇) [rad/s, rad/s²] of a body rolling without slip, in plane motion, on a fixed surface,
+    from the motion of the centre B of its rolling profile: the contact material point C (at
+    x_C/B = c) has v_C = v_B + ω × c = 0 (15.9 with ωr = v), so with ω ⟂ c,
+    ω = (v_B × c)/|c|²; and since |c| is constant and c turns with the contact,
+    ω̇ = (a_B × c)/|c|² (the component of a_B along c, the centripetal part on a curved
+    surface, drops out).  Formed as ((v_B × ĉ)/|c|): |c|² cannot underflow.
+
+    >>> rolling_rates((2.0, 0.0, 0.0), (0.5, 0.0, 0.0), (0.0, -0.5, 0.0))
+    ((0.0, 0.0, -4.0), (0.0, 0.0, -1.0))
+    """
+    r = norm(c)
+    ch = unit(c)
+    return mul(1.0 / r, cross(vB, ch)), mul(1.0 / r, cross(aB, ch))

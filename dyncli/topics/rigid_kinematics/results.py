@@ -15,6 +15,10 @@ RIGID_VELOCITY = TypeSpec(
           "mapping name → v_P = v_B + ω×x_{P/B} (m/s)", kind="mapping", contract=True),
         R("a", "a_P", "m/s²", "13.9",
           "mapping name → a_P = a_B + ω̇×x_{P/B} + ω×(ω×x_{P/B}) (m/s²)", kind="mapping", contract=True),
+        R("omega", "ω", "rad/s", "15.9",
+          "with `rolling`: ω = (v_B × x_{C/B})/|x_{C/B}|², from v_C = 0 at the contact", kind="vector"),
+        R("alpha", "ω̇", "rad/s²", "",
+          "with `rolling`: ω̇ = (a_B × x_{C/B})/|x_{C/B}|²", kind="vector"),
     ],
 )
 
