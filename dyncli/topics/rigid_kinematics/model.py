@@ -30,6 +30,13 @@ class Rolling(StrictModel):
     contact: Vec3(nonzero=True, dim="length", description="x_C/B: the contact point C relative to B, B the centre of the rolling disk (of curvature of its rim) [m]") = Field(...)  # type: ignore[valid-type]
 
 
+class Rotation(StrictModel):
+    """One rotation of a chain: a frame (or the body) turning relative to the one before."""
+
+    omega: Vec3(dim="angular velocity", description="its angular velocity relative to the frame before (the first: relative to the fixed frame) [rad/s]") = Field(...)  # type: ignore[valid-type]
+    omega_dot: Vec3(dim="angular acceleration", description="the rate of that omega as seen in the frame before (δ/δt; the first: its absolute rate) [rad/s²]") = ZERO  # type: ignore[valid-type]
+
+
 class RigidVelocity(ProblemBase):
     """Velocity and acceleration of points of a rigid body (13.8, 13.9)."""
 
@@ -40,22 +47,38 @@ class RigidVelocity(ProblemBase):
     alpha: Vec3(dim="angular acceleration", description="angular acceleration ω̇ [rad/s²]") = ZERO  # type: ignore[valid-type]
     rolling: Optional[Rolling] = Field(None, description="rolling without slip on a fixed surface: omega and "
                                        "alpha from vB and aB (not with omega or alpha)")
+    rotations: Optional[list[Rotation]] = Field(None, description="nested rotations, outermost first (an axle "
+                                                "turning at Omega, then the disk spinning on it): omega and alpha "
+                                                "of the last (not with omega, alpha or rolling)")
     points: dict[str, Vec3(dim="length", description="x_P/B: position of the point relative to B [m]")] = Field(  # type: ignore[valid-type]
         ..., description="point name -> x_P/B (position relative to B)")
 
     @model_validator(mode="after")
     def _pts(self):
         _check_names(self.points)
+        if self.rotations is not None:
+            return self._check_rotations()
         if self.rolling is None:
             if self.omega is None:
                 raise InputError("give the angular velocity omega, or rolling: {contact: x_C/B} for a body "
-                                 "rolling without slip (omega then follows from vB)", "omega")
+                                 "rolling without slip (omega then follows from vB), or rotations (nested: "
+                                 "[{omega: axle}, {omega: spin relative to the axle}])", "omega")
             return self
         for name in ("omega", "alpha"):
             if name in self.model_fields_set:
                 raise InputError(f"give either {name} or rolling, not both: rolling computes omega from vB "
                                  "and alpha from aB", name)
         self._check_rolling()
+        return self
+
+    def _check_rotations(self):
+        for name in ("omega", "alpha", "rolling"):
+            if name in self.model_fields_set:
+                raise InputError(f"give either {name} or rotations, not both: rotations compose omega and alpha "
+                                 "of the body from the chain", name)
+        if not self.rotations:
+            raise InputError("give at least one rotation: [{omega: Ω, omega_dot: Ω̇}, {omega: ω_rel, ...}], "
+                             "the outermost first", "rotations")
         return self
 
     def _check_rolling(self) -> None:
