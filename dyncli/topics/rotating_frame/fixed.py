@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import math
 
-from dyncli import runner
 from dyncli.expr.jet import jet_at
 from dyncli.topics.inertia import mat3, rotations
 
@@ -45,21 +44,26 @@ def skew_rate(Q, w):
     return [[sum(Q[i][k] * W[k][j] for k in range(3)) + 0.0 for j in range(3)] for i in range(3)]
 
 
-class _Poisson(runner.Route):
-    """(10.4) as Q̇ = Q [ω'(t)]×, the nine entries of Q row by row."""
+def _integrated(p, Q0, times, res):
+    """Q at the times by (10.4), Q̇ = Q [ω'(t)]× on the nine entries of Q row by row, through the
+    runner (imported here: numpy and scipy only when a problem integrates)."""
+    from dyncli import runner
 
-    def __init__(self, p, Q0, times):
-        a = p.accuracy
-        super().__init__(method="DOP853", rtol=a.rtol, atol=a.atol, max_steps=a.max_steps, estimate=a.estimate)
-        self.omega, self.Q0, self.times = p.omega, Q0, list(times)
+    class Poisson(runner.Route):
+        def initial_state(self):
+            return [x for row in Q0 for x in row]
 
-    def initial_state(self):
-        return [x for row in self.Q0 for x in row]
+        def rhs(self, t, y):
+            w = tuple(jet_at(e, t)[0] for e in p.omega)
+            Q = [list(y[0:3]), list(y[3:6]), list(y[6:9])]
+            return [x for row in skew_rate(Q, w) for x in row]
 
-    def rhs(self, t, y):
-        w = tuple(jet_at(e, t)[0] for e in self.omega)
-        Q = [list(y[0:3]), list(y[3:6]), list(y[6:9])]
-        return [x for row in skew_rate(Q, w) for x in row]
+    a = p.accuracy
+    route = Poisson(method="DOP853", rtol=a.rtol, atol=a.atol, max_steps=a.max_steps, estimate=a.estimate)
+    route.times = list(times)
+    out = route.run(res)
+    res.method = "ode:DOP853"
+    return [[[float(out[k, 3 * i + j]) for j in range(3)] for i in range(3)] for k in range(len(times))]
 
 
 def orientations(p, times, res) -> list:
@@ -71,11 +75,7 @@ def orientations(p, times, res) -> list:
         if rate == 0.0:
             return [Q0 for _ in times]
         return [mat3.matmul(Q0, rotations.rot_axis(w, rate * t)) for t in times]
-    if not times:
-        return []
-    out = _Poisson(p, Q0, times).run(res)
-    res.method = "ode:DOP853"
-    return [[[float(out[k, 3 * i + j]) for j in range(3)] for i in range(3)] for k in range(len(times))]
+    return _integrated(p, Q0, times, res) if times else []
 
 
 def report(p, res, times) -> None:

@@ -115,3 +115,19 @@ def test_without_fixed_nothing_changes():
 def test_invalid_fixed_basis(text, field, fix):
     msg = error_of("type: rotating-frame\nomega: [0, 0, 1]\np: [1, 0, 0]\nat: [1]\n" + text)
     assert f" {field}" in msg and fix in msg, msg
+
+
+def test_exact_route_imports_no_numpy():
+    """A constant ω' turns the basis in plain floats: the type stays without numpy and scipy."""
+    import subprocess
+    import sys
+
+    from tests.conftest import ROOT
+
+    code = ("import sys; from dyncli.loader import load_paths; from dyncli.run import solve_one; "
+            "ps, _ = load_paths(['problems/kinematics/turntable-fixed-basis.yaml']); "
+            "[solve_one(lp) for lp in ps]; print('numpy' in sys.modules, 'scipy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                         env={"PYTHONPATH": str(ROOT), "PATH": ""})
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["False", "False"]
