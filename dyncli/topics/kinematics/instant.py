@@ -37,8 +37,14 @@ def path_state(v: float, v_dot: float, rho: float | None) -> tuple[float, float,
 
 
 def solve(p, options: SolveOptions) -> Result:
-    if p.coordinates == "path":
-        return _path(p)
+    res = _path(p) if p.coordinates == "path" else _coordinates(p)
+    if options.symbolic:
+        res.warn("--symbolic: no formulas at one instant (the state is given as numbers)"
+                 + ("" if p.coordinates == "path" else "; the frame table shows the numbers"))
+    return res
+
+
+def _coordinates(p) -> Result:
     from dyncli.topics.kinematics import solver
 
     coords = p.coordinates

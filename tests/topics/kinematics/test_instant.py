@@ -126,3 +126,15 @@ def test_straight_path_and_rest():
 def test_invalid_instant_names_the_field_and_the_fix(text, field, fix):
     msg = error_of("type: kinematics\n" + text)
     assert f" {field}:" in msg and fix in msg, msg
+
+
+def test_symbolic_says_it_has_nothing_to_show():
+    from dyncli.loader import split_problems, validate
+    from dyncli.result import SolveOptions
+    from dyncli.run import solve_one
+    from tests.conftest import ROOT
+
+    (lp,), _ = split_problems("x.yaml", _yaml("path", {"v": 2.0, "rho": 4.0}).encode(), ROOT)
+    validate(lp)
+    o = solve_one(lp, SolveOptions(symbolic=True))
+    assert any("--symbolic: no formulas at one instant" in w for w in o.result.warnings)
