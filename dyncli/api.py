@@ -103,9 +103,11 @@ def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> 
 
     out = [Assign("override", k.replace("__", "."), (_plain(v),)) for k, v in overrides.items()]
     for k, values in (sweeps or {}).items():
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+            raise InputError(f"sweep {k}: give a list of values, e.g. {{{k!r}: [100, 200, 300]}} (got {values!r})")
         vals = tuple(_plain(list(values)))
         if not vals:
-            raise InputError(f"sweep {k}: no values")
+            raise InputError(f"sweep {k}: no values; give a list of values, e.g. {{{k!r}: [100, 200, 300]}}")
         out.append(Assign("sweep", k.replace("__", "."), vals, sweep=True))
     return out
 

@@ -188,3 +188,22 @@ def estimate_error(res, out, *, estimate: bool, rtol: float, atol: float, rerun,
     if note:
         res.extra["error_estimate_note"] = note.format(how="rtol/100" if check[1] == "tighter" else "10·rtol")
     return check[0]
+
+
+#: the global error an ODE route promises, in units of rtol (docs/accuracy.md, "What the numbers guarantee")
+ODE_PROMISE = 100.0
+
+
+def warn_unmet(res, rtol: float, achieved, *, promise: float = 1.0, what: str = "error_estimate") -> bool:
+    """The warning of issue 28 when a route did not deliver what was asked: ``achieved`` (the
+    route's error_estimate, or a measured part of it) above ``promise`` × rtol.  Exact routes
+    compare their estimate with rtol itself; ODE routes a measured error (a check solve's
+    difference, an invariant's drift: lower bounds of the error) with :data:`ODE_PROMISE` × rtol,
+    their documented guarantee (their nominal estimate, rtol × steps, is above it by design).
+    Returns whether it warned."""
+    if achieved is None or not math.isfinite(achieved) or not achieved > promise * rtol:
+        return False
+    goal = f"{promise:g} × rtol = {promise * rtol:.2g}" if promise != 1.0 else f"rtol = {rtol:.2g}"
+    res.warn(f"the requested accuracy was not met: {what} {achieved:.2g} > {goal} (accuracy.rtol); the "
+             "answer stands with that estimate")
+    return True

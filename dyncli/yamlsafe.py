@@ -92,6 +92,9 @@ def load(text: str | bytes) -> Document:
         nodes = list(yaml.compose_all(text, Loader=loader))
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
+        tab = _tab_near(text, m.line if m is not None else None, m.column if m is not None else None)
+        if tab is not None:
+            raise YamlError(f"tab character at line {tab[0]}, column {tab[1]}: use spaces for indentation", *tab) from None
         msg = exc.problem or exc.context or "malformed YAML"
         if m is not None:
             raise YamlError(f"YAML syntax error: {msg}", m.line + 1, m.column + 1) from None
@@ -114,6 +117,23 @@ def load(text: str | bytes) -> Document:
     counter = [0]
     doc.data = _construct(nodes[0], (), doc, counter, 0)
     return doc
+
+
+def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] | None:
+    """(line, column), 1-based, of the tab that a YAML syntax error at the
+    0-based ``line``/``col`` is about: the character at the error itself, or
+    the first tab in the indentation of a line up to the error's (the
+    parsers name it as "a character that cannot start any token")."""
+    if line is None:
+        return None
+    lines = text.split("\n")
+    if line < len(lines) and col is not None and lines[line][col:col + 1] == "\t":
+        return line + 1, col + 1
+    for i, ln in enumerate(lines[:line + 1]):
+        indent = len(ln) - len(ln.lstrip(" \t"))
+        if "\t" in ln[:indent] and ln[indent:] and not ln[indent:].startswith("#"):
+            return i + 1, ln.index("\t") + 1
+    return None
 
 
 def _precheck(text: str, loader) -> None:

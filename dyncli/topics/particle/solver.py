@@ -31,22 +31,34 @@ def _ode_method(p) -> str:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    from . import work
+    if p.find:                              # the motion runs to the end of every window searched (§11)
+        from dyncli import motion_find
+        from dyncli.expr import constant, resolve_params
 
+        params = resolve_params(p.params)
+        end = motion_find.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
+        if end > p.t_end:
+            p = p.model_copy(update={"t_end": end})
     F = Forces(p)
     rtol, atol = float(p.accuracy.rtol), float(p.accuracy.atol)
     times = [float(t) for t in p.at]
-    # the work of one non-conservative term is W_nc (less the uniform terms' exact work); of
-    # several, a quadrature over every step's dense output
-    traj, method, switched = _integrate_route(p, F, rtol, atol, times, work.quadrature_terms(p) > 1)
+    # every step's dense output: the distance travelled, the find queries, and the work of several
+    # non-conservative terms (a quadrature over the steps; of one term it is W_nc itself)
+    traj, method, switched = _integrate_route(p, F, rtol, atol, times, True)
     S = _at_times(traj, F, times, steps=True)
     resid, scale = _energy_residual(p, F, S)
     res = Result(_reported(S, resid), method=f"ode:{method}", equations=_equations(F),
-                 series=[Series("t", times, list(REPORTED))])
+                 series=[Series("t", times, list(REPORTED) + ["distance"])])
     _report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
-    res.extra["sample"] = _Sampler(p, F, traj, method, times)     # the dense output, for plots
+    res.extra["sample"] = sampler = _Sampler(p, F, traj, method, times)     # the dense output, for plots
+    from . import find
+
+    find.report(p, res, lambda ts: sampler(ts), sampler.dense)
     res.extra["nsteps"] = traj.nsteps
+    if not p.forces:
+        res.warn("no forces: the particle moves in a straight line at constant velocity (no gravity); "
+                 "if it has weight, add {kind: gravity} to forces")
     if switched:
         res.warn("method auto: the problem is stiff for DOP853, so it was integrated with LSODA; "
                  f"DOP853 reported: {switched}")
@@ -90,12 +102,15 @@ class _Sampler:
     def __init__(self, p, F, traj, method, times):
         self.p, self.F, self.traj, self.method, self.times = p, F, traj, method, times
 
-    def __call__(self, ts) -> dict:
+    def dense(self) -> Trajectory:
         if not self.traj.dense:
             p = self.p
             self.traj = integrate(p, self.F, float(p.accuracy.rtol), float(p.accuracy.atol), self.method,
                                   max_steps=p.accuracy.max_steps, times=self.times, dense=True)
-        return _at_times(self.traj, self.F, ts)
+        return self.traj
+
+    def __call__(self, ts) -> dict:
+        return _at_times(self.dense(), self.F, ts)
 
 
 def _integrate_route(p, F, rtol, atol, times, dense):

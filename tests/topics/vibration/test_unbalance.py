@@ -118,3 +118,16 @@ def test_plot_draws_the_forced_response(tmp_path, excitation):
         t, x = (np.asarray(a, float) for a in (line(ax, "x(t)").get_xdata(), line(ax, "x(t)").get_ydata()))
         for tt, want in zip([0.5, 1.5], ref):
             assert float(np.interp(tt, t, x)) == pytest.approx(float(want), abs=2e-3 * max(abs(float(r)) for r in ref))
+
+
+def test_find_and_distance_follow_the_unbalance():
+    """find and distance (§11) answer on the unbalance-excited motion: the same answers as the
+    force m0 e ω² it makes, and x at the answered time is the mpmath response there."""
+    extra = "find: [{max: x, within: [0, 3]}, {when: {v: 0}, occurrence: 2}]\n"
+    u = solve_one_text(_problem(0.05, 6.0, [1.0, 2.0], extra=extra))["results"]
+    f = solve_one_text(_problem(0.05, 6.0, [1.0, 2.0], extra=extra).replace(
+        "unbalance: {m0: 0.1, e: 0.05, omega: 6.0}", f"force: {{amplitude: {0.1 * 0.05 * 36.0!r}, omega: 6.0}}"))["results"]
+    assert u["find"] == f["find"] and u["distance"] == f["distance"]
+    t_max = u["find"][0]["t"]
+    (ref,) = ref_force([t_max], m=1.5, k=60.0, zeta=0.05, F0=0.1 * 0.05 * 36.0, Om=6.0, x0=0.01, v0=-0.2)
+    assert u["find"][0]["x"] == pytest.approx(float(ref), abs=1e-12)
