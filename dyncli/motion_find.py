@@ -139,42 +139,59 @@ class Odometer:
     """∫ |v| dt from the first break: Gauss–Legendre with ``nodes`` points on every piece between
     consecutive breaks (the speed is smooth inside an ODE step or a closed-form piece: the rule
     is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
-    at many times in one call.  ``at(times)``: the distance at each time (≥ the first break)."""
+    at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
+    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns."""
 
-    def __init__(self, speeds: Callable[[list[float]], Iterable[float]], breaks: Iterable[float], nodes: int = 10):
+    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10):
         import numpy as np
 
         self.speeds, self.np = speeds, np
         self.x, self.w = np.polynomial.legendre.leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
-        self.cum = np.concatenate([[0.0], np.cumsum(self._pieces(self.pts[:-1], self.pts[1:]))])
+        first = self._pieces(self.pts[:-1], self.pts[1:])
+        self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
 
     def _pieces(self, a, b):
         np = self.np
         T = (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.x[None, :]
-        S = np.asarray(list(self.speeds(T.ravel().tolist())), dtype=float).reshape(T.shape)
-        return (0.5 * (b - a)) * (S @ self.w)
+        S = np.asarray(self.speeds(T.ravel().tolist()), dtype=float)
+        S = S.reshape(T.shape + S.shape[1:])
+        half = (0.5 * (b - a)).reshape((-1,) + (1,) * (S.ndim - 2))
+        return half * np.tensordot(S, self.w, axes=([1], [0]))
 
-    def at(self, times: Iterable[float]) -> list[float]:
+    def at(self, times: Iterable[float]) -> list:
         np = self.np
         t = np.asarray([float(x) for x in times], dtype=float)
         if t.size == 0:
             return []
         k = np.clip(np.searchsorted(self.pts, t, side="right") - 1, 0, len(self.pts) - 1)
         lo = self.pts[k]
-        part = self._pieces(lo, t) if np.any(t > lo) else np.zeros_like(t)
-        return [float(c) + 0.0 for c in self.cum[k] + np.where(t > lo, part, 0.0)]
+        inside = t > lo
+        part = np.zeros_like(self.cum[k])
+        if np.any(inside):
+            part[inside] = self._pieces(lo[inside], t[inside])
+        return (self.cum[k] + part + 0.0).tolist()
 
 
-def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float]) -> list[float]:
-    """The distance travelled by one coordinate s(t) that is monotonic between the ``turns``:
-    Σ|Δs| over the pieces, exact to the rounding of s (no quadrature)."""
-    turns = sorted(float(t) for t in turns)
+def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float],
+                   t0: float = 0.0) -> list[float]:
+    """The distance travelled since ``t0`` by one coordinate s(t) that is monotonic between the
+    ``turns``: Σ|Δs| over the pieces, exact to the rounding of s (no quadrature); s is evaluated
+    once at each turning point."""
+    turns = sorted(float(t) for t in turns if t > t0)
+    at_turn = [s(t) for t in turns]
+    cum = [0.0]
+    prev = s(t0)
+    for v in at_turn:
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
     out = []
+    import bisect
+
     for t in (float(x) for x in times):
-        pts = [x for x in turns if x < t]
-        knots = pts + [t]
-        out.append(sum(abs(s(b) - s(a)) for a, b in zip(knots, knots[1:])) + 0.0)
+        k = bisect.bisect_left(turns, t)            # turning points strictly before t
+        last = at_turn[k - 1] if k else s(t0)
+        out.append(cum[k] + abs(s(t) - last) + 0.0)
     return out
 
 

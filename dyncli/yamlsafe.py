@@ -43,6 +43,9 @@ class Document:
     # mapping entry, ``pos`` at the value.
     pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
     key_pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
+    # the source text of scalars YAML read as numbers or booleans (``012345671``,
+    # ``1:30``, ``1.50``), by value path; ``path + ("<key>",)`` for mapping keys
+    text: dict[tuple, str] = field(default_factory=dict)
 
     def locate(self, path: tuple) -> tuple[int, int] | None:
         """Best position for ``path``: the key of the entry if known, else the
@@ -182,6 +185,8 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
     if tag not in _ALLOWED_TAGS:
         raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
     if isinstance(node, yaml.ScalarNode):
+        if tag != _STD + "str" and tag != _STD + "null":
+            doc.text[path] = node.value
         try:
             return _scalar(node)
         except (ValueError, OverflowError):
@@ -200,12 +205,15 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
                 raise YamlError("mapping keys must be plain names", kl, kc)
             key = _construct(knode, path + ("<key>",), doc, counter, depth + 1)
             doc.pos.pop(path + ("<key>",), None)
+            ktext = doc.text.pop(path + ("<key>",), None)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
                 key = str(knode.value)
             if key in out:
                 kl, kc = _mark(knode)
                 raise YamlError(f"duplicate key {key!r}", kl, kc)
             doc.key_pos[path + (key,)] = _mark(knode)
+            if ktext is not None:
+                doc.text[path + (key, "<key>")] = ktext
             out[key] = _construct(vnode, path + (key,), doc, counter, depth + 1)
         return out
     raise YamlError("unsupported YAML node", line, col)  # pragma: no cover

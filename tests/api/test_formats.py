@@ -62,7 +62,7 @@ def test_markdown_structure():
             assert lines[j].count("|") - lines[j].count("\\|") == n
             j += 1
         assert lines[i - 1].count("|") == n
-    assert "| 0.1 | 0.201977 | 0.0214629 | 0.00169501 |" in lines
+    assert "| 0.1 | 0.201977 | 0.0214629 | 0.00169501 | 0.00197725 |" in lines      # x, v, w, distance
 
 
 def test_latex_structure_ascii_booktabs_siunitx():

@@ -1,8 +1,9 @@
 """The ``find`` queries and ``distance`` of a particle's motion (§11), on the ODE's dense output.
 
 The motion is the integrated trajectory at any time (every step's dense output, the same steps
-as the reported times); its breaks are the accepted steps and the phase ends (a stop by
-friction, a rest), between which the state is one interpolating polynomial; v is the rate of x
+as the reported times) or the exact conic of an orbit; its breaks are the accepted steps and the
+phase ends (a stop by friction, a rest), between which the state is one interpolating
+polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x
 and a of v, so a turning point of a coordinate is a root of its rate (Brent).  ``distance`` is
 ∫|v| dt by Gauss–Legendre on every step (:class:`dyncli.motion_find.Odometer`).
 """
@@ -23,12 +24,12 @@ def breaks(traj) -> list[float]:
     return sorted(ts)
 
 
-def report(p, res, at_times, traj_of) -> None:
+def report(p, res, at_times, traj_of, pieces=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers.  ``at_times(ts)``: the
     reported quantities at many times as arrays (solver._at_times on the dense trajectory);
-    ``traj_of()``: the dense trajectory."""
-    traj = traj_of()
-    B = breaks(traj)
+    ``traj_of()``: the dense trajectory; ``pieces``: the breaks when they are not its steps (the
+    exact orbit: equal steps of the eccentric anomaly)."""
+    B = pieces if pieces is not None else breaks(traj_of())
 
     def batch(ts) -> list[dict]:
         S = at_times(ts)

@@ -139,7 +139,7 @@ class Particle(ProblemBase):
     basis: Literal["cartesian", "cylindrical"] = Field(
         "cartesian", description="cylindrical: also report x, v, a, F, H_O on {e_r, e_θ, e3} and the drift of r²θ̇, ẋ3, H_O (§22)")
 
-    accuracy_methods = ("auto", "ode", "DOP853", "RK45", "Radau", "LSODA")
+    accuracy_methods = ("auto", "exact", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
     @model_validator(mode="after")
     def _check(self):

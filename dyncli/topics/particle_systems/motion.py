@@ -108,7 +108,8 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
     res.series.append(Series("t", list(p.at), ["T_motion", "V_internal_motion", "P_internal_motion", "W_internal"],
                              title="energy under the internal forces: T − T(0) = W (27.10)"))
     find.report(p, res, steps, lambda Y: _quantities(p, masses, Y, O), len(masses))
-    res.series.append(Series("t", list(p.at), ["x_motion", "distance"], title="positions of the particles"))
+    res.series.append(Series("t", list(p.at), ["x_motion"], title="positions of the particles"))
+    res.series.append(Series("t", list(p.at), ["distance"], title="path length of each particle since t = 0, ∫|vᵢ| dt"))
     res.series.append(Series("t", list(p.at), ["com_motion", "G_motion", "H_O_motion"],
                              title="center of mass and momenta over time (G_drift, H_drift: their changes)"))
     if not math.isfinite(r["H_drift"]):  # pragma: no cover - guarded by the finiteness check above

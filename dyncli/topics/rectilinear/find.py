@@ -44,7 +44,13 @@ class _Motion:
         self.p, self.sample = p, sample
 
     def batch(self, times: list[float]) -> list[dict]:
-        return [self._entry(e) for e in self.sample(self.p, times)]
+        memo = self.__dict__.setdefault("_memo", {})
+        new = [float(t) for t in times if float(t) not in memo]
+        if new:
+            if len(memo) > 100_000:
+                memo.clear()
+            memo.update(zip(new, (self._entry(e) for e in self.sample(self.p, new))))
+        return [memo[float(t)] for t in times]
 
     def state(self, t: float) -> dict:
         return self.batch([t])[0]
@@ -176,9 +182,14 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     lo, hi = min(times), max(times)
     turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
     if generic:
-        sm = mf.StateMotion(motion.state, t1, t_end, _breaks(t1, t_end, turns, knots),
+        def batch(ts) -> list[dict]:                 # the state with the distance travelled
+            return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
+                    for t, st in zip(ts, motion.batch(ts))]
+
+        sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
                             rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
-                            rates={"s": "v", "v": lambda t, _: motion.accel(t)}, batch=motion.batch)
+                            rates={"s": "v", "v": lambda t, _: motion.accel(t),
+                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch)
         for (i, _), a in zip(generic, mf.answer_find(raw, sm, const, None, full=motion.state)):
             if not a["reached"]:
                 res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"
