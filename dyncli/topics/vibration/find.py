@@ -68,7 +68,7 @@ class Response:
                                       s0=self.s0, Omega=self.Om)
                 return x, v
             wh, vh = cf.free(t, self.x0 - self.L, p.v0, self.omega_n, self.zeta)
-            wf, vf = cf.forced(t, self.fo.amplitude / p.m, self.fo.omega, self.omega_n, self.zeta)
+            wf, vf = cf.forced(t, self.fo[0] / p.m, self.fo[1], self.omega_n, self.zeta)
             return wh + wf + self.L, vh + vf
         import numpy as np
 
@@ -79,13 +79,13 @@ class Response:
 
     def _steady(self):
         """(the complex amplitude P of the steady state x − L = Im(P e^(iΩt)), Ω), or (None, None)."""
-        Om = self.fo.omega if self.fo is not None else self.Om
+        Om = self.fo[1] if self.fo is not None else self.Om
         r = Om / self.omega_n
         D = complex(1.0 - r * r, 2.0 * self.zeta * r)
         if D == 0:
             return None, None
         if self.fo is not None:
-            return (self.fo.amplitude / (self.p.m * self.omega_n ** 2)) / D, Om
+            return (self.fo[0] / (self.p.m * self.omega_n ** 2)) / D, Om
         return self.s0 * complex(1.0, 2.0 * self.zeta * r) / D, Om
 
     def accel_array(self, t):
@@ -93,7 +93,7 @@ class Response:
 
         x, v = self.arrays(t)
         s, sd = self.s0 * np.sin(self.Om * t), self.s0 * self.Om * np.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo.amplitude * np.sin(self.fo.omega * t) / self.p.m
+        f = 0.0 if self.fo is None else self.fo[0] * np.sin(self.fo[1] * t) / self.p.m
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
