@@ -25,7 +25,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
-# result kinds, for the JSON Schema of results and the docs
+# result kinds, for the JSON Schema of results and the docs; "list|number" is either (e.g. a list
+# over times, or the single value of one instant)
 KINDS = ("number", "vector", "tensor", "string", "bool", "list", "mapping", "any")
 
 
@@ -239,12 +240,22 @@ _JSON_KIND = {
 }
 
 
+def _json_kind(kind: str) -> dict:
+    """The JSON Schema of a result kind; of a union "a|b", its types (every value of either)."""
+    if "|" not in kind:
+        return dict(_JSON_KIND.get(kind, {}))
+    types: list[str] = []
+    for k in kind.split("|"):
+        types += [t for t in _JSON_KIND[k]["type"] if t not in types]
+    return {"type": types}
+
+
 def results_schema(spec: TypeSpec) -> dict:
     """The JSON Schema of a type's ``results`` object (draft 2020-12)."""
     props: dict[str, Any] = {}
     patterns: dict[str, Any] = {}
     for r in spec.top_level():
-        s: dict[str, Any] = dict(_JSON_KIND.get(r.kind, {}))
+        s: dict[str, Any] = _json_kind(r.kind)
         desc = r.meaning + (f" [{r.unit}]" if r.unit else "")
         if r.equations:
             desc += " (" + ", ".join(r.equations) + ")"

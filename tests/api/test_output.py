@@ -167,7 +167,7 @@ def test_option_values_are_checked(args, message):
 
 
 def test_symbolic_says_where_it_has_no_effect():
-    rc, out, err = run_cli("solve", BASE, "problems/kinematics/" + sorted(os.listdir(ROOT / "problems/kinematics"))[0],
+    rc, out, err = run_cli("solve", BASE, "problems/kinematics/helix-cylindrical.yaml",
                            "--symbolic")
     assert rc == 0
     assert "--symbolic: no symbolic view for vibration" in err

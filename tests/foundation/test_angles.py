@@ -31,11 +31,15 @@ def _problem(t: str, path: str, value) -> dict:
         raw.pop("e")
         raw.update(IMPACT_ROUGH)
     parts = path.replace("*", "0").split(".")
+    if parts[0] == "instant":              # kinematics at one instant: the state instead of position
+        raw.pop("position", None)
+        raw.pop("distance", None)
+        raw.update(coordinates="spherical", at=[], instant={"R": 1, "theta": 0, "phi": 0})
     node = raw
     for p in parts[:-1]:
         node = node[int(p)] if p.isdigit() else node.setdefault(p, {})
     leaf = parts[-1]
-    if parts[-2:] == ["orientation", "angle"] or parts[-2:] == ["basis", "angle"]:
+    if parts[-2:] in (["orientation", "angle"], ["basis", "angle"], ["basis0", "angle"]):
         node["axis"] = [0, 0, 1]
     node[leaf] = [value, 0, 0] if leaf == "euler313" else value
     return raw

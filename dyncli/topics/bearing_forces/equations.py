@@ -72,3 +72,28 @@ def bearing_moment(M, x1, F):
     (0.0, 0.0, -1.0)
     """
     return sub(M, cross(x1, F))
+
+
+def turn_about_axis(X, cb, sb):
+    """X from the arm's own plane basis (u, e'₂, u × e'₂), u = cos β e'₁ + sin β e'₃, to e'ᵢ: a
+    rotation about the spin axis, so it commutes with δ/δt and ω e'₂ × (cb = cos β, sb = sin β).
+
+    >>> turn_about_axis((1.0, 2.0, 3.0), 0.0, 1.0)
+    (-3.0, 2.0, 1.0)
+    """
+    return (cb * X[0] - sb * X[2], X[1], sb * X[0] + cb * X[2])
+
+
+def two_bearings(F, M, yA, yB):
+    """(F_A, F_B) [N]: the forces of two bearings at y_A e'₂, y_B e'₂ (y_A ≠ y_B) that together
+    apply the force F and, about O, the moment M transverse to the shaft:
+    F_A + F_B = F and y_A e'₂ × F_A + y_B e'₂ × F_B = (M₁, 0, M₃), with e'₂ × F = (F₃, 0, −F₁);
+    A takes the axial component F₂ (a thrust bearing), M₂ is the drive's torque.
+
+    >>> two_bearings((10.0, 0.0, 0.0), (0.0, 0.0, -5.0), 0.0, 1.0)
+    ((5.0, 0.0, 0.0), (5.0, 0.0, 0.0))
+    """
+    d = yB - yA
+    b3 = (M[0] - yA * F[2]) / d
+    b1 = (-M[2] - yA * F[0]) / d
+    return (F[0] - b1, F[1], F[2] - b3), (b1, 0.0, b3)

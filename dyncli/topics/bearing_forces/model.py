@@ -17,6 +17,23 @@ class ArmMass(StrictModel):
     m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
     L: Num(ge=0, dim="length", description="arm length from O [m]") = Field(...)  # type: ignore[valid-type]
     alpha: ExprField(("t",), dim="angle", description="α(t): angle of the arm from the axis e'2 towards e'1 [rad], a number or an expression in t (the notes' mass A has −α, B has +α)") = Field(...)  # type: ignore[valid-type]
+    y: Num(dim="length", description="axial position of the arm's pivot on the shaft, along e'2 from O [m]") = 0.0  # type: ignore[valid-type]
+    beta: Num(dim="angle", description="azimuth of the arm's plane about e'2: the arm swings in the plane of e'2 and cos β e'1 + sin β e'3 [rad]") = 0.0  # type: ignore[valid-type]
+
+
+class Bearings(StrictModel):
+    """Two bearings on the shaft, at axial positions along e'2 (from O): they share the load F = Ġ
+    and carry the moment M_O between them as a pair of forces; A also takes the axial (thrust) load."""
+
+    A: Num(dim="length", description="axial position of bearing A (and the thrust bearing) along e'2 [m]") = Field(...)  # type: ignore[valid-type]
+    B: Num(dim="length", description="axial position of bearing B along e'2 [m]") = Field(...)  # type: ignore[valid-type]
+
+    @model_validator(mode="after")
+    def _apart(self):
+        if self.A == self.B:
+            raise InputError(f"bearings A and B are both at {self.A:g} m: two bearings at one point carry no "
+                             "moment; give two different axial positions (or one bearing with h)", "bearings.B")
+        return self
 
 
 class BearingForces(ProblemBase):
@@ -29,6 +46,8 @@ class BearingForces(ProblemBase):
     omega: Optional[ExprField(("t",), dim="angular velocity", description="ω(t): prescribed spin of the shaft about e'2 [rad/s] (a motor drives it); give omega or omega0")] = None  # type: ignore[valid-type]
     omega0: Optional[Num(dim="angular velocity", description="ω at t = 0 for a shaft turning freely (M_O·e'2 = 0, H_O·e'2 conserved, 36.19-36.22); give omega or omega0")] = None  # type: ignore[valid-type]
     h: Num(dim="length", description="the bearing is at x1 = −h e'2 (36.17) [m]") = 0.0  # type: ignore[valid-type]
+    bearings: Optional[Bearings] = Field(None, description="two bearings A and B at axial positions along e'2 "
+                                         "instead of the one bearing at −h e'2")
     at: Times(description="times t [s] at which to report the loads") = Field(..., json_schema_extra={"minItems": 1})  # type: ignore[valid-type]
     find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {max: F1.0}, {min: motor_torque}")  # type: ignore[valid-type]
     t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
@@ -52,4 +71,6 @@ class BearingForces(ProblemBase):
         if (self.omega is None) == (self.omega0 is None):
             raise InputError("give exactly one of omega (a prescribed spin ω(t)) or omega0 (a free shaft, ω at t = 0)"
                              + (" — both were given" if self.omega is not None else ""), "omega")
+        if self.bearings is not None and "h" in self.model_fields_set:
+            raise InputError("give either h (one bearing at −h e'2) or bearings (two, at A and B), not both", "h")
         return self

@@ -44,6 +44,19 @@ def _arms(p, t: float):
     return [(mm.m, mm.L) + jet_at(mm.alpha, t) for mm in p.masses]
 
 
+def _placed(mm, v, dv, H, dH):
+    """One mass's v, δv/δt, x × m v and its rate from its own arm plane to e'ᵢ (the azimuth β), with
+    its pivot at y e'₂: x × m v gains y e'₂ × m v (y e'₂ turns with the basis: δ/δt of it is
+    y e'₂ × m δv/δt)."""
+    if mm.beta != 0.0:
+        cb, sb = fm.cos(mm.beta), fm.sin(mm.beta)
+        v, dv, H, dH = (eq.turn_about_axis(X, cb, sb) for X in (v, dv, H, dH))
+    if mm.y != 0.0:
+        H = add(H, scale(eq.spin_cross(mm.y, v), mm.m))            # y e'₂ × v has the form of ω e'₂ × v
+        dH = add(dH, scale(eq.spin_cross(mm.y, dv), mm.m))
+    return v, dv, H, dH
+
+
 def _axial_inertia(arms) -> float:
     """I = Σ m L² sin²α (36.21)."""
     return sum(m * L * L * (fm.sin(a) * fm.sin(a)) for m, L, a, _, _ in arms)
@@ -76,14 +89,17 @@ def loads(p, t: float) -> dict:
     w, wd, I = _rate(p, t, arms)
     G = dG = H = dH = (0.0, 0.0, 0.0)
     T = 0.0
-    for m, L, a, ad, add_ in arms:
+    for mm, (m, L, a, ad, add_) in zip(p.masses, arms):
         s, c = fm.sin(a), fm.cos(a)
-        v = eq.arm_velocity(L, s, c, ad, w)                                        # Table 36.1
-        G = add(G, scale(v, m))
-        dG = add(dG, scale(eq.arm_velocity_rate(L, s, c, ad, add_, w, wd), m))
         mL2 = m * L * L
-        H = add(H, eq.arm_angular_momentum(mL2, s, c, ad, w))
-        dH = add(dH, eq.arm_angular_momentum_rate(mL2, s, c, ad, add_, w, wd))
+        v, dv, Hk, dHk = _placed(mm, eq.arm_velocity(L, s, c, ad, w),                # Table 36.1
+                                 eq.arm_velocity_rate(L, s, c, ad, add_, w, wd),
+                                 eq.arm_angular_momentum(mL2, s, c, ad, w),
+                                 eq.arm_angular_momentum_rate(mL2, s, c, ad, add_, w, wd))
+        G = add(G, scale(v, m))
+        dG = add(dG, scale(dv, m))
+        H = add(H, Hk)
+        dH = add(dH, dHk)
         T += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
     wxG = eq.spin_cross(w, G)                                # ω e'2 × G
     wxH = eq.spin_cross(w, H)
@@ -91,9 +107,13 @@ def loads(p, t: float) -> dict:
     M = add(dH, wxH)                                         # (36.11)
     if p.omega is None:
         M = (M[0], 0.0, M[2])    # a free shaft: ω is defined by M_O·e'2 = 0 (36.19); only rounding would remain
-    M1 = eq.bearing_moment(M, (0.0, -p.h + 0.0, 0.0), F)     # (36.16b)
-    return dict(omega=w, omega_dot=wd, I_axis=I, G=G, H_O=H, F=F, M_O=M, F1=F, M1=M1, motor_torque=M[1], T=T,
-                dG=dG, wxG=wxG, dH=dH, wxH=wxH)
+    out = dict(omega=w, omega_dot=wd, I_axis=I, G=G, H_O=H, F=F, M_O=M, motor_torque=M[1], T=T,
+               dG=dG, wxG=wxG, dH=dH, wxH=wxH)
+    if p.bearings is None:
+        out.update(F1=F, M1=eq.bearing_moment(M, (0.0, -p.h + 0.0, 0.0), F))     # (36.16b)
+    else:
+        out["F_A"], out["F_B"] = eq.two_bearings(F, M, p.bearings.A, p.bearings.B)
+    return out
 
 
 def _finite(x) -> bool:
@@ -107,12 +127,13 @@ def _plain(x):
 def solve(p, options: SolveOptions | None = None) -> Result:
     times = [float(ti) for ti in p.at]
     qs = [loads(p, ti) for ti in times]
-    names = ("omega", "omega_dot", "I_axis", "G", "H_O", "F", "M_O", "F1", "M1", "motor_torque", "T")
+    pair = ("F1", "M1") if p.bearings is None else ("F_A", "F_B")
+    names = ("omega", "omega_dot", "I_axis", "G", "H_O", "F", "M_O") + pair + ("motor_torque", "T")
     if not all(_finite(q[n]) for q in qs for n in names):
         raise NumericalError("the loads are not finite at one of the times 'at' (the prescribed angles or rate are "
                              "not finite or not differentiable there, or the values overflow)")
-    res = Result({}, method="closed-form",
-                 equations=["11.4", "36.10", "36.11", "36.14", "36.15", "36.16", "36.17", "36.18"])
+    one = ["36.16", "36.17", "36.18"] if p.bearings is None else []         # the one bearing at −h e'₂
+    res = Result({}, method="closed-form", equations=["11.4", "36.10", "36.11", "36.14", "36.15"] + one)
     for n in names:
         res.results[n] = [_plain(q[n]) for q in qs]
     if p.omega0 is not None:
@@ -121,7 +142,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     for names_, title in ((["omega", "omega_dot", "I_axis", "motor_torque"], "shaft rate and the torque about the axis"),
                           (["T", "G", "H_O"], "kinetic energy and momenta (on e'ᵢ)"),
                           (["F", "M_O"], "the bearing's load at O (on e'ᵢ)"),
-                          (["F1", "M1"], "the load at the bearing x₁ = −h e'₂ (on e'ᵢ)")):
+                          ((["F1", "M1"], "the load at the bearing x₁ = −h e'₂ (on e'ᵢ)") if p.bearings is None
+                           else (["F_A", "F_B"], "the forces of the bearings A and B (on e'ᵢ)"))):
         res.series.append(Series("t", list(p.at), names_, title=title))
     q = qs[0]
     res.views.append(FrameTable(

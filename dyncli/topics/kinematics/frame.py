@@ -48,12 +48,13 @@ def numeric_tables(title: str, times, rows: list[tuple[str, Any]], basis, limit:
         note = None
         if i == limit - 1 and n > limit:
             note = f"(tables for the remaining {n - limit} times are omitted; the results list every time)"
-        out.append(FrameTable(f"{title}, t = {_fmt_t(times[i])}", tab_rows, tuple(basis), note))
+        out.append(FrameTable(f"{title}, {_fmt_t(times[i])}", tab_rows, tuple(basis), note))
     return out
 
 
-def _fmt_t(t: float) -> str:
-    return f"{t:.6g}"
+def _fmt_t(t) -> str:
+    """"t = 1.5", or a label given instead of a time ("at the instant")."""
+    return t if isinstance(t, str) else f"t = {t:.6g}"
 
 
 # ---------------------------------------------------------------------------

@@ -8,7 +8,7 @@ from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
-from dyncli.fields import ExprField, Num, ProblemBase, Times
+from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
 
 #: the coordinate names of each system, in basis order
 COORDINATES: dict[str, tuple[str, ...]] = {
@@ -26,19 +26,72 @@ OPTIONAL: dict[str, tuple[str, ...]] = {
     "spherical": (),
 }
 
+#: the entries of ``instant`` each system takes (a coordinate, its rate, its second rate)
+INSTANT: dict[str, tuple[str, ...]] = {
+    c: tuple(f"{n}{d}" for n in COORDINATES[c] for d in ("", "_dot", "_ddot"))
+    for c in ("polar", "cylindrical", "spherical")
+}
+INSTANT["path"] = ("v", "v_dot", "rho")
+
+#: the entries of ``instant`` that must be given (the rates default to 0; x3 to 0; rho to a straight path)
+INSTANT_REQUIRED: dict[str, tuple[str, ...]] = {
+    "polar": ("r", "theta"), "cylindrical": ("r", "theta"), "spherical": ("R", "theta", "phi"), "path": ("v",),
+}
+
+
+def _n(dim: str, what: str, **kw):
+    return Optional[Num(dim=dim, description=what, **kw)]  # type: ignore[valid-type]
+
+
+class Instant(StrictModel):
+    """The state at one instant, as the textbooks give it (polar/cylindrical: r, θ, x3 and their
+    first and second rates; spherical: R, θ, φ and their rates; path: v, v̇, ρ)."""
+
+    r: _n("length", "polar/cylindrical: r [m]") = None
+    r_dot: _n("velocity", "ṙ [m/s] (default 0)") = None
+    r_ddot: _n("acceleration", "r̈ [m/s²] (default 0)") = None
+    theta: _n("angle", "θ [rad] (polar, cylindrical; spherical: azimuth about e3)") = None
+    theta_dot: _n("angular_velocity", "θ̇ [rad/s] (default 0)") = None
+    theta_ddot: _n("angular_acceleration", "θ̈ [rad/s²] (default 0)") = None
+    x3: _n("length", "cylindrical: x3 [m] (default 0)") = None
+    x3_dot: _n("velocity", "cylindrical: ẋ3 [m/s] (default 0)") = None
+    x3_ddot: _n("acceleration", "cylindrical: ẍ3 [m/s²] (default 0)") = None
+    R: _n("length", "spherical: R [m]") = None
+    R_dot: _n("velocity", "spherical: Ṙ [m/s] (default 0)") = None
+    R_ddot: _n("acceleration", "spherical: R̈ [m/s²] (default 0)") = None
+    phi: _n("angle", "spherical: φ [rad], elevation from the e1-e2 plane") = None
+    phi_dot: _n("angular_velocity", "spherical: φ̇ [rad/s] (default 0)") = None
+    phi_ddot: _n("angular_acceleration", "spherical: φ̈ [rad/s²] (default 0)") = None
+    v: _n("velocity", "path: the speed v = ṡ [m/s], >= 0", ge=0) = None
+    v_dot: _n("acceleration", "path: the rate of change of speed v̇ = s̈ [m/s²] (default 0)") = None
+    rho: _n("length", "path: radius of curvature ρ [m], > 0 (default: a straight path)", gt=0, allow_inf=True) = None
+
+    def given(self) -> list[str]:
+        return [k for k in type(self).model_fields if getattr(self, k) is not None]
+
+    def jets(self, coords: str) -> dict[str, tuple[float, float, float]]:
+        """name -> (q, q̇, q̈) for the coordinates of ``coords`` (absent entries 0)."""
+        val = lambda k: getattr(self, k) or 0.0      # noqa: E731
+        return {n: (val(n), val(n + "_dot"), val(n + "_ddot")) for n in COORDINATES[coords]}
+
 
 class Kinematics(ProblemBase):
     """Motion of a point given by its coordinates as functions of time
     (notes §4, §5, §7, §8, §12)."""
 
     type: Literal["kinematics"]
-    coordinates: Literal["cartesian", "polar", "cylindrical", "spherical"] = Field(
+    coordinates: Literal["cartesian", "polar", "cylindrical", "spherical", "path"] = Field(
         "cartesian",
         description="cartesian (x1, x2, x3), polar (r, theta), cylindrical (r, theta, x3), "
-        "spherical (R, theta, phi; theta azimuth about e3, phi elevation from the e1-e2 plane)",
+        "spherical (R, theta, phi; theta azimuth about e3, phi elevation from the e1-e2 plane), "
+        "path (with instant: v, v_dot, rho)",
     )
-    position: dict[str, ExprField(("t",), description="coordinate as an expression in t")] = Field(  # type: ignore[valid-type]
-        ..., description="coordinate name -> expression in t (lengths in m, angles in rad)"
+    position: Optional[dict[str, ExprField(("t",), description="coordinate as an expression in t")]] = Field(  # type: ignore[valid-type]
+        None, description="coordinate name -> expression in t (lengths in m, angles in rad); not with instant"
+    )
+    instant: Optional[Instant] = Field(
+        None, description="the state at one instant instead of position: the coordinates and their "
+        "rates (polar, cylindrical, spherical) or v, v_dot, rho (path)"
     )
     at: Times() = Field(default_factory=list)  # type: ignore[valid-type]
     distance: Optional[Times(description="[t1, t2]: distance traveled between these times (4.5)")] = None  # type: ignore[valid-type]
@@ -48,6 +101,15 @@ class Kinematics(ProblemBase):
 
     @model_validator(mode="after")
     def _check(self):
+        if self.instant is not None:
+            return self._check_instant()
+        if self.position is None:
+            raise InputError("give the motion: position (the coordinates as expressions in t) or instant "
+                             "(the state at one instant: e.g. r, r_dot, r_ddot, theta, theta_dot, theta_ddot)",
+                             "position")
+        if self.coordinates == "path":
+            raise InputError("coordinates: path describes the state at one instant: give instant: "
+                             "{v, v_dot, rho} instead of position", "position")
         names = COORDINATES[self.coordinates]
         for key in self.position:
             if key not in names:
@@ -76,4 +138,31 @@ class Kinematics(ProblemBase):
             t1, t2 = self.distance
             if t2 < t1:
                 raise InputError(f"distance: t2 = {t2:g} is before t1 = {t1:g}; give [t1, t2] with t1 <= t2", "distance")
+        return self
+
+    def _check_instant(self):
+        c = self.coordinates
+        if self.position is not None:
+            raise InputError("give either position (functions of t) or instant (the state at one instant), "
+                             "not both", "instant")
+        if c not in INSTANT:
+            raise InputError(f"instant needs coordinates: polar, cylindrical, spherical or path (here {c}): set "
+                             "coordinates, or give position (x1, x2, x3 as expressions in t)", "coordinates")
+        names = INSTANT[c]
+        for key in self.instant.given():
+            if key not in names:
+                other = [o for o, ns in INSTANT.items() if key in ns and o != c]
+                extra = f"; '{key}' belongs to {' / '.join(other)} (set coordinates: {other[0]})" if other else ""
+                raise InputError(f"{c} coordinates take no '{key}' at an instant{extra}; give {', '.join(names)}",
+                                 f"instant.{key}")
+        missing = [n for n in INSTANT_REQUIRED[c] if getattr(self.instant, n) is None]
+        if missing:
+            raise InputError(f"{c} coordinates need {', '.join(INSTANT_REQUIRED[c])} at the instant; missing: "
+                             f"{', '.join(missing)} (the rates default to 0)", "instant")
+        if self.at:
+            raise InputError("with instant the results are at that one instant: remove at "
+                             "(at lists times of a motion given by position)", "at")
+        if self.distance is not None:
+            raise InputError("the distance travelled needs the motion over time: give position (functions of t) "
+                             "instead of instant", "distance")
         return self

@@ -63,9 +63,15 @@ def _motion(coords: str, position: dict, t: np.ndarray) -> dict:
     for name in COORDINATES[coords]:
         e = position.get(name)
         J[name] = jet(e, t) if e is not None else (np.zeros_like(t), np.zeros_like(t), np.zeros_like(t))
+    return motion_of_jets(coords, J, t.shape)
+
+
+def motion_of_jets(coords: str, J: dict, shape) -> dict:
+    """The rows of :func:`motion` from each coordinate's (q, q̇, q̈), arrays of the given shape
+    (from expressions in t, or the numbers of one instant)."""
     rows = frame_rows(coords, J, np)
-    rows = {k: tuple(np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in v) if k != "basis" else
-            tuple(tuple(np.broadcast_to(np.asarray(c, dtype=float), t.shape) for c in b) for b in v)
+    rows = {k: tuple(np.broadcast_to(np.asarray(c, dtype=float), shape) for c in v) if k != "basis" else
+            tuple(tuple(np.broadcast_to(np.asarray(c, dtype=float), shape) for c in b) for b in v)
             for k, v in rows.items()}
     w, x, dx, dv = rows["omega"], rows["x"], rows["dx"], rows["dv"]
     wx = frame.cross(w, x)
@@ -87,6 +93,10 @@ def _times(ts) -> str:
 
 def solve(p, options: SolveOptions | None = None) -> Result:
     options = options or SolveOptions()
+    if p.instant is not None:
+        from dyncli.topics.kinematics import instant
+
+        return instant.solve(p, options)
     coords = p.coordinates
     times = [float(t) for t in p.at]
     t = np.asarray(times, dtype=float)

@@ -138,3 +138,42 @@ def contact_split(vM1, vM2, n):
     vrel = sub(vM1, vM2)
     approach = dot(vrel, n)
     return vrel, approach, sub(vrel, mul(approach, n))
+
+
+def rolling_rates(vB, aB, c) -> tuple[Vec, Vec]:
+    """(ω, ω̇) [rad/s, rad/s²] of a body rolling without slip, in plane motion, on a fixed surface,
+    from the motion of the centre B of its rolling profile: the contact material point C (at
+    x_C/B = c) has v_C = v_B + ω × c = 0 (15.9 with ωr = v), so with ω ⟂ c,
+    ω = (v_B × c)/|c|²; and since |c| is constant and c turns with the contact,
+    ω̇ = (a_B × c)/|c|² (the component of a_B along c, the centripetal part on a curved
+    surface, drops out).  Formed as ((v_B × ĉ)/|c|): |c|² cannot underflow.
+
+    >>> rolling_rates((2.0, 0.0, 0.0), (0.5, 0.0, 0.0), (0.0, -0.5, 0.0))
+    ((0.0, 0.0, -4.0), (0.0, 0.0, -1.0))
+    """
+    r = norm(c)
+    ch = unit(c)
+    return mul(1.0 / r, cross(vB, ch)), mul(1.0 / r, cross(aB, ch))
+
+
+def nested_rates(rotations) -> tuple[Vec, Vec, Vec]:
+    """(ω, ω̇, Σ W × ω_k) [rad/s, rad/s², rad/s²] of a body turning in a chain of frames: frame 1
+    turns at ω_1 relative to the fixed frame, each next frame (the last is the body) at ω_k relative
+    to the one before, and ω̇_k is the rate of ω_k seen in that frame before (δω_k/δt, 11.10; for
+    k = 1 the absolute ω̇_1).  ω = Σ ω_k (angular velocities of nested frames add), and by (11.7)
+    on each term dω_k/dt = δω_k/δt + W_{k−1} × ω_k, W_{k−1} = ω_1 + … + ω_{k−1} the frame's own angular velocity:
+    ω̇ = Σ ω̇_k + Σ W_{k−1} × ω_k.  ``rotations``: [(ω_k, ω̇_k)], every vector on one basis.
+
+    A disk spinning at ω_rel on an axle turning at Ω: ω = Ω + ω_rel, ω̇ = Ω̇ + ω̇_rel + Ω × ω_rel.
+
+    >>> nested_rates([((0.0, 0.0, 2.0), (0.0, 0.0, 0.0)), ((10.0, 0.0, 0.0), (3.0, 0.0, 0.0))])
+    ((10.0, 0.0, 2.0), (3.0, 20.0, 0.0), (0.0, 20.0, 0.0))
+    """
+    W: Vec = (0.0, 0.0, 0.0)
+    rates: Vec = (0.0, 0.0, 0.0)
+    coupling: Vec = (0.0, 0.0, 0.0)
+    for w, wd in rotations:
+        coupling = add(coupling, cross(W, w))
+        rates = add(rates, wd)
+        W = add(W, w)
+    return W, add(rates, coupling), coupling

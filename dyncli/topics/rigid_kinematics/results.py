@@ -15,6 +15,12 @@ RIGID_VELOCITY = TypeSpec(
           "mapping name → v_P = v_B + ω×x_{P/B} (m/s)", kind="mapping", contract=True),
         R("a", "a_P", "m/s²", "13.9",
           "mapping name → a_P = a_B + ω̇×x_{P/B} + ω×(ω×x_{P/B}) (m/s²)", kind="mapping", contract=True),
+        R("omega", "ω", "rad/s", "15.9",
+          "with `rolling`: ω = (v_B × x_{C/B})/|x_{C/B}|², from v_C = 0 at the contact; with `rotations`: Σ ω_k (Ω + ω_rel)", kind="vector"),
+        R("alpha", "ω̇", "rad/s²", "11.7",
+          "with `rolling`: ω̇ = (a_B × x_{C/B})/|x_{C/B}|²; with `rotations`: Σ ω̇_k + Σ W_{k−1} × ω_k (Ω̇ + ω̇_rel + Ω × ω_rel)", kind="vector"),
+        R("alpha_coupling", "Ω×ω_rel", "rad/s²", "11.7",
+          "with `rotations`: the part of ω̇ from the frames turning the relative spins, Σ W_{k−1} × ω_k (Ω × ω_rel)", kind="vector"),
     ],
 )
 

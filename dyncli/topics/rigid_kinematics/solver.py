@@ -56,6 +56,17 @@ def _out(res: Result, name: str, value: Any) -> None:
 def solve_rigid_velocity(p, options: SolveOptions | None = None) -> Result:
     res = Result({}, method="closed-form", equations=["13.8", "13.9"])
     w, al = p.omega, p.alpha
+    if p.rolling is not None:            # v_C = 0 at the contact (15.9): ω, ω̇ from the centre's motion
+        w, al = eq.rolling_rates(p.vB, p.aB, p.rolling.contact)
+        _out(res, "omega", w)
+        _out(res, "alpha", al)
+        res.equations.append("15.9")
+    elif p.rotations is not None:        # ω = Ω + ω_rel, ω̇ = Ω̇ + δω_rel/δt + Ω × ω_rel, down the chain
+        w, al, coupling = eq.nested_rates([(r.omega, r.omega_dot) for r in p.rotations])
+        _out(res, "omega", w)
+        _out(res, "alpha", al)
+        _out(res, "alpha_coupling", coupling)
+        res.equations.append("11.7")
     v_out, a_out = {}, {}
     for name, x in p.points.items():
         v_out[name] = [c + 0.0 for c in eq.rigid_velocity(p.vB, w, x)]                # (13.8)

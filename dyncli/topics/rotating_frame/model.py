@@ -7,6 +7,7 @@ from typing import Literal, Optional
 from pydantic import Field
 
 from dyncli.fields import ExprVec3, ProblemBase, Times
+from dyncli.topics.inertia.model import Orientation
 
 
 class RotatingFrame(ProblemBase):
@@ -20,3 +21,10 @@ class RotatingFrame(ProblemBase):
     vB: Optional[ExprVec3(("t",), dim="velocity", description="velocity of B, components on e'_i, expressions in t [m/s]")] = None  # type: ignore[valid-type]
     aB: Optional[ExprVec3(("t",), dim="acceleration", description="acceleration of B, components on e'_i, expressions in t [m/s²]")] = None  # type: ignore[valid-type]
     at: Times() = Field(default_factory=list)  # type: ignore[valid-type]
+    fixed: bool = Field(False, description="also report every vector on the fixed basis e_i (names ending in "
+                        "_fixed), e'_i = e_i at t = 0 unless basis0 says otherwise")
+    basis0: Optional[Orientation] = Field(None, description="the orientation of e'_i at t = 0 relative to the fixed "
+                                          "basis (implies fixed): {axis, angle}, {euler313} or {matrix} whose "
+                                          "columns are e'_i in fixed components")
+
+    accuracy_methods = ("auto", "ode")

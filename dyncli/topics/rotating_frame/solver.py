@@ -20,6 +20,7 @@ from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.kinematics import frame
 from dyncli.expr.jet import vec_jet_at
 from dyncli.topics.rotating_frame import equations as eq
+from dyncli.topics.rotating_frame import fixed
 
 
 #: the rows of the δ/δt table, in the notes' order (label, result name)
@@ -83,6 +84,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             res.results[name] = per_time[name]
     if p.vB is not None or p.aB is not None:
         res.equations += ["9.1"]
+    if fixed.wanted(p):                  # e'_i turned by (10.4) from basis0: every vector on e_i too
+        fixed.report(p, res, times)
     if p.vB is not None and p.aB is None:
         res.warn("aB not given: a_B is taken as the derivative of the given v_B, δv_B/δt + ω×v_B (11.4)")
     if bad:
@@ -98,6 +101,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         ab = [n for n in ("vA", "aA") if n in res.results]
         if ab:
             res.series.append(Series("t", times, ab, "point A (9.1), components on e'_i"))
+        if fixed.wanted(p):              # each table again with the vectors on e_i
+            res.series += [Series("t", times, [n + "_fixed" for n in s.names],
+                                  (s.title or "").replace("components on e'_i", "") + " — on the fixed basis e_i")
+                           for s in list(res.series)]
+            res.series.append(Series("t", times, ["basis_fixed"], "e'_1, e'_2, e'_3 on the fixed basis e_i (10.4)"))
     rows = [(lab, per_time[n]) for lab, n in TABLE_ROWS] + [(lab, per_time[n]) for lab, n in EXTRA_ROWS if n in per_time]
     if options.symbolic:
         res.views.append(symbolic_table(p))

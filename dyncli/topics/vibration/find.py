@@ -1,7 +1,7 @@
 """The ``find`` queries and ``distance`` of a vibration (§11), on the exact closed form.
 
 The motion is the closed-form total response at any time (:func:`closed_form.response_at`, or the
-force-excited :func:`forced.response_at`); its rates are exact (v is the rate of x, and the rates
+force- or unbalance-excited :func:`forced.response_at`); its rates are exact (v is the rate of x, and the rates
 of v and w follow from the equation of motion (17.15a)), so a turning point is a root of the rate
 (Brent), never a sampled peak.  The breaks are an eighth of the shortest period present (the
 damped free vibration's, the excitation's), so every piece holds at most one turning point of
@@ -38,7 +38,7 @@ class Response:
         self.L = p.L
         self.x0 = self.L if p.x0 is None else p.x0
         self.s0, self.Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
-        self.fo = p.force
+        self.fo = forced.forcing(p)      # (F0, ω) of a force on the mass or a rotating unbalance, or None
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -46,13 +46,13 @@ class Response:
             return cf.response_at(t, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0, v0=p.v0,
                                   s0=self.s0, Omega=self.Om)
         return forced.response_at(t, m=p.m, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0,
-                                  v0=p.v0, F0=self.fo.amplitude, Om=self.fo.omega)
+                                  v0=p.v0, F0=self.fo[0], Om=self.fo[1])
 
     def acceleration(self, t: float) -> float:
         """ẍ from (17.15a): −ωₙ²(x − s − L) − 2ζωₙ(ẋ − ṡ) + F/m."""
         x, v, _ = self.at(t)
         s, sd = self.s0 * math.sin(self.Om * t), self.s0 * self.Om * math.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo.amplitude * math.sin(self.fo.omega * t) / self.p.m
+        f = 0.0 if self.fo is None else self.fo[0] * math.sin(self.fo[1] * t) / self.p.m
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
@@ -68,7 +68,7 @@ class Response:
                                       s0=self.s0, Omega=self.Om)
                 return x, v
             wh, vh = cf.free(t, self.x0 - self.L, p.v0, self.omega_n, self.zeta)
-            wf, vf = cf.forced(t, self.fo.amplitude / p.m, self.fo.omega, self.omega_n, self.zeta)
+            wf, vf = cf.forced(t, self.fo[0] / p.m, self.fo[1], self.omega_n, self.zeta)
             return wh + wf + self.L, vh + vf
         import numpy as np
 
@@ -79,13 +79,13 @@ class Response:
 
     def _steady(self):
         """(the complex amplitude P of the steady state x − L = Im(P e^(iΩt)), Ω), or (None, None)."""
-        Om = self.fo.omega if self.fo is not None else self.Om
+        Om = self.fo[1] if self.fo is not None else self.Om
         r = Om / self.omega_n
         D = complex(1.0 - r * r, 2.0 * self.zeta * r)
         if D == 0:
             return None, None
         if self.fo is not None:
-            return (self.fo.amplitude / (self.p.m * self.omega_n ** 2)) / D, Om
+            return (self.fo[0] / (self.p.m * self.omega_n ** 2)) / D, Om
         return self.s0 * complex(1.0, 2.0 * self.zeta * r) / D, Om
 
     def accel_array(self, t):
@@ -93,7 +93,7 @@ class Response:
 
         x, v = self.arrays(t)
         s, sd = self.s0 * np.sin(self.Om * t), self.s0 * self.Om * np.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo.amplitude * np.sin(self.fo.omega * t) / self.p.m
+        f = 0.0 if self.fo is None else self.fo[0] * np.sin(self.fo[1] * t) / self.p.m
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
@@ -103,7 +103,7 @@ class Response:
     def breaks(self, t_end: float) -> tuple[list[float], bool]:
         """Every 1/PER_PERIOD of the shortest period over [0, t_end] (and whether capped)."""
         _, _, lam2 = cf.roots(self.omega_n, self.zeta)
-        rate = max(self.omega_n, lam2 if self.zeta >= 1 else 0.0, self.Om, self.fo.omega if self.fo else 0.0)
+        rate = max(self.omega_n, lam2 if self.zeta >= 1 else 0.0, self.Om, self.fo[1] if self.fo else 0.0)
         h = 2.0 * math.pi / rate / PER_PERIOD
         n = math.ceil(t_end / h) if h > 0 and t_end > 0 else 1
         capped = n > MAX_PIECES

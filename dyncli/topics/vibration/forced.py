@@ -68,10 +68,39 @@ def response_at(t: float, *, m, omega_n, zeta, L, x0, v0, F0, Om) -> tuple[float
     return w + L, vh + vf, w
 
 
-def report(p, res, r, zeta, k) -> list[str]:
-    """Fill the steady-state results of a force-excited problem at the ratio r
+def unbalance_force(m0: float, e: float, omega: float) -> float:
+    """F0 = m0 e ω² [N]: the amplitude of the force a mass m0 [kg] turning at ω [rad/s] at the
+    eccentricity e [m] puts on its machine (the centripetal force on m0, reversed), along the
+    direction of motion F = m0 e ω² sin(ωt).
+
+    >>> unbalance_force(0.5, 0.02, 100.0)
+    100.0
+    """
+    return m0 * e * omega * omega
+
+
+def forcing(p) -> tuple[float, float] | None:
+    """(F0, ω) of the harmonic force on the mass: ``force``, or a rotating ``unbalance``
+    (F0 = m0 e ω²); None without either."""
+    if p.force is not None:
+        return p.force.amplitude, p.force.omega
+    u = getattr(p, "unbalance", None)
+    if u is not None:
+        return unbalance_force(u.m0, u.e, u.omega), u.omega
+    return None
+
+
+def response(t, *, m, omega_n, zeta, L, x0, v0, F0, Om):
+    """:func:`response_at` over an array of times (numpy; the plots): (x, ẋ)."""
+    wh, vh = cf.free(t, x0 - L, v0, omega_n, zeta)
+    wf, vf = cf.forced(t, F0 / m, Om, omega_n, zeta)
+    return wh + wf + L, vh + vf
+
+
+def report(F0, res, r, zeta, k) -> list[str]:
+    """Fill the steady-state results of a force-excited problem (amplitude F0) at the ratio r
     (exactly 1 at exact resonance); returns the equations of the notes it uses."""
-    r, M, X, phi, TR, FT = steady(p.force.amplitude, r, k, zeta)
+    r, M, X, phi, TR, FT = steady(F0, r, k, zeta)
     R = res.results
 
     def f(x):

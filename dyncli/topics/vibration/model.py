@@ -28,6 +28,14 @@ class Force(StrictModel):
     omega: Num(ge=0, dim="angular velocity", description="ω: forcing frequency [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
 
 
+class Unbalance(StrictModel):
+    """A rotating unbalance: a mass m0 at eccentricity e turning at ω puts F = m0 e ω² sin(ωt) on the mass."""
+
+    m0: Num(gt=0, dim="mass", description="the unbalanced mass [kg] (part of m)") = Field(...)  # type: ignore[valid-type]
+    e: Num(gt=0, dim="length", description="its eccentricity (distance from the axis of rotation) [m]") = Field(...)  # type: ignore[valid-type]
+    omega: Num(ge=0, dim="angular velocity", description="ω: the rotation rate [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
+
+
 class Sweep(StrictModel):
     """Frequency sweep of the amplification functions over r = ω/ωₙ."""
 
@@ -66,6 +74,8 @@ class Vibration(ProblemBase):
     v0: Num(dim="velocity", description="initial velocity of the mass [m/s]") = 0.0  # type: ignore[valid-type]
     base: Optional[Base] = None
     force: Optional[Force] = Field(None, description="force on the mass F(t) = amplitude·sin(omega·t) (not with base)")
+    unbalance: Optional[Unbalance] = Field(None, description="a rotating unbalance: F = m0·e·omega²·sin(omega·t) on "
+                                           "the mass, m the total mass (m0 included); not with base or force")
     at: Times(description="times t >= 0 [s] at which to report x, v, w") = Field(default_factory=list)  # type: ignore[valid-type]
     find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x: VALUE}}, {max: x}, {min: v}")  # type: ignore[valid-type]
     t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
@@ -101,9 +111,26 @@ class Vibration(ProblemBase):
                 raise InputError(f"ω/ωₙ must be <= {MAX_RATIO:g}", "force.omega")
             if not math.isfinite(self.force.amplitude / self.m):
                 raise InputError("F0/m overflows", "force.amplitude")
+        if self.unbalance is not None:
+            self._check_unbalance(omega_n)
         if self.base is not None:
             if self.base.omega / omega_n > MAX_RATIO:
                 raise InputError(f"ω/ωₙ must be <= {MAX_RATIO:g}", "base.omega")
             if not math.isfinite(self.base.amplitude * self.base.omega * self.base.omega):
                 raise InputError("amplitude·ω² overflows", "base")
         return self
+
+    def _check_unbalance(self, omega_n: float) -> None:
+        u = self.unbalance
+        for other in ("base", "force"):
+            if getattr(self, other) is not None:
+                raise InputError(f"give one excitation: unbalance (a rotating unbalance) or {other}, not both; "
+                                 f"for an unbalanced machine on a moving base, solve the two and add them (linear)",
+                                 "unbalance")
+        if u.m0 > self.m:
+            raise InputError(f"m0 = {u.m0:g} kg exceeds m = {self.m:g} kg: m is the total mass of the machine, "
+                             "the unbalanced mass m0 included (give m as that total)", "unbalance.m0")
+        if u.omega / omega_n > MAX_RATIO:
+            raise InputError(f"ω/ωₙ must be <= {MAX_RATIO:g}", "unbalance.omega")
+        if not math.isfinite(u.m0 * u.e * u.omega * u.omega / self.m):
+            raise InputError("m0·e·ω²/m overflows", "unbalance")

@@ -25,6 +25,7 @@ import numpy as np
 
 from dyncli.result import Line, Plot
 from dyncli.topics.vibration import closed_form as cf
+from dyncli.topics.vibration import forced
 
 MIN_POINTS, MAX_POINTS, PER_PERIOD = 400, 40000, 40
 ENVELOPE_MAX = 20      # an envelope more than this many times the largest |x − L| is not drawn
@@ -37,7 +38,7 @@ def plots(problem, result) -> list[Plot]:
     out = []
     R = result.results
     moves = problem.at or problem.base is not None or (problem.x0 is not None and problem.x0 != problem.L) \
-        or problem.v0 != 0
+        or problem.v0 != 0 or forced.forcing(problem) is not None
     if moves:
         out.append(_response(problem, R))
         zoom = _zoom(problem, R)
@@ -63,8 +64,8 @@ def _time_span(p, R) -> float:
         T = max(T, 4.0 / slow)                 # no oscillation: show the creep back to L
     elif zeta > 0:
         T = max(T, min(4.0 / slow, 40 * period))
-    if p.base is not None and p.base.omega > 0:
-        T = max(T, min(5 * 2 * math.pi / p.base.omega, 40 * period))
+    if _omega(p) > 0:
+        T = max(T, min(5 * 2 * math.pi / _omega(p), 40 * period))
     return T
 
 
@@ -73,36 +74,56 @@ def _zoom(p, R) -> Plot | None:
     when the whole span holds more cycles than a panel can show one by one
     (the renderer then draws the full span as a band)."""
     wn = R["omega_n"]
-    Om = p.base.omega if p.base is not None else 0.0
+    Om = _omega(p)
     fastest = max(wn, Om)
     T = _time_span(p, R)
     if fastest * T / (2 * math.pi) <= ZOOM_CYCLES:
         return None
     span = ZOOM_PERIODS * 2 * math.pi / fastest
-    x0 = p.L if p.x0 is None else p.x0
-    s0 = p.base.amplitude if p.base is not None else 0.0
     t = np.linspace(0.0, span, 600)
-    with np.errstate(all="ignore"):
-        x, _, _ = cf.response(t, omega_n=wn, zeta=R["zeta"], L=p.L, x0=x0, v0=p.v0, s0=s0, Omega=Om)
+    x = _x(p, R, t)
     return Plot(f"x(t) over the first {ZOOM_PERIODS} periods (2π/{fastest:.4g} s each), exact",
                 "t [s]", "x, position of the mass [m]", [Line(t.tolist(), x.tolist(), "x(t), exact", style="-")])
+
+
+def _omega(p) -> float:
+    """The excitation's frequency (base, force or unbalance; 0 for free vibration)."""
+    fo = forced.forcing(p)
+    return p.base.omega if p.base is not None else (fo[1] if fo is not None else 0.0)
+
+
+def _x(p, R, t):
+    """The exact total response x(t) over an array of times (any excitation)."""
+    x0 = p.L if p.x0 is None else p.x0
+    fo = forced.forcing(p)
+    with np.errstate(all="ignore"):
+        if fo is not None:
+            return forced.response(t, m=p.m, omega_n=R["omega_n"], zeta=R["zeta"], L=p.L, x0=x0, v0=p.v0,
+                                   F0=fo[0], Om=fo[1])[0]
+        s0, Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
+        return cf.response(t, omega_n=R["omega_n"], zeta=R["zeta"], L=p.L, x0=x0, v0=p.v0, s0=s0, Omega=Om)[0]
 
 
 def _response(p, R) -> Plot:
     wn, zeta, L = R["omega_n"], R["zeta"], p.L
     x0 = L if p.x0 is None else p.x0
-    s0, Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
+    s0, Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, _omega(p))
     T = _time_span(p, R)
     fastest = max(wn, Om)
     n = int(min(MAX_POINTS, max(MIN_POINTS, PER_PERIOD * fastest * T / (2 * math.pi))))
     t = np.linspace(0.0, T, n)
-    with np.errstate(all="ignore"):
-        x, _, _ = cf.response(t, omega_n=wn, zeta=zeta, L=L, x0=x0, v0=p.v0, s0=s0, Omega=Om)
+    x = _x(p, R, t)
     ts = t.tolist()
     lines = [Line(ts, x.tolist(), "x(t), exact total response", style="-")]
     hlines = []
     decays = np.exp(-zeta * wn * t)
-    if p.base is None:
+    if forced.forcing(p) is not None:
+        title = ("rotating-unbalance" if p.unbalance is not None else "force-excited") + " vibration x(t)"
+        if R.get("X") is not None:
+            hlines += [(L + R["X"], "steady state L ± X"), (L - R["X"], None)]
+        else:
+            title += ": undamped resonance, the amplitude grows linearly"
+    elif p.base is None:
         title = "free vibration x(t)"
         A = R.get("A")
         swing = float(np.max(np.abs(x - L))) if x.size else 0.0
@@ -185,7 +206,7 @@ def _amplification(p, R) -> Plot:
              Line(rs, g.tolist(), "g, absolute motion x (17.34b)", style="--")]
     vlines = []
     if r0 is not None and lo <= r0 <= hi:
-        w = p.base.omega
+        w = _omega(p)
         vlines.append((r0, f"chosen r = {r0:.4g} (ω = {w:.4g} rad/s)"))
         if R.get("G") is not None:
             lines.append(Line([r0, r0], [R["G"], R["g"]], f"G = {R['G']:.4g}, g = {R['g']:.4g} at the chosen r",

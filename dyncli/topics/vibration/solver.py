@@ -55,8 +55,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             "overdamped": ["17.24"]}[regime]
 
     s0 = Om = 0.0
-    if p.force is not None:
-        eqs += forced.report(p, res, _ratio(p.force.omega, k, m, omega_n), zeta, k)
+    fo = forced.forcing(p)          # a force on the mass, or a rotating unbalance's (F0 = m0 e ω²)
+    if fo is not None:
+        eqs += forced.report(fo[0], res, _ratio(fo[1], k, m, omega_n), zeta, k)
+        if p.unbalance is not None:
+            R["F0"] = fo[0]
     elif p.base is None:
         A, phi = _free_amplitude_phase(x0 - L, v0, omega_n, zeta, omega_d, regime, res)
         R.update(A=A, phi=phi)
@@ -83,7 +86,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         find.report(p, res, omega_n, zeta)
     if p.sweep is not None:
         _sweep(p.sweep, zeta, res, p.zeta is not None)
-        if p.force is not None:
+        if fo is not None:
             forced.add_sweep(res, zeta)
     return res
 
@@ -156,17 +159,17 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
 
 def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
     times = [float(ti) for ti in p.at]
-    fo = p.force
+    fo = forced.forcing(p)
     if fo is None:      # the exact response at each time, in plain floats (no numpy)
         rows = [cf.response_at(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om) for ti in times]
     else:
         rows = [forced.response_at(ti, m=p.m, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0,
-                                   F0=fo.amplitude, Om=fo.omega) for ti in times]
+                                   F0=fo[0], Om=fo[1]) for ti in times]
     x, v, w = ([row[i] for row in rows] for i in range(3))
     method = p.accuracy.method
     if method in ("ode", "DOP853"):
-        fm = None if fo is None else forced.ode_rhs(fo.amplitude, fo.omega, p.m)
-        xo, vo = _ode(times, omega_n, zeta, L, x0, v0, s0, max(Om, 0.0 if fo is None else fo.omega),
+        fm = None if fo is None else forced.ode_rhs(fo[0], fo[1], p.m)
+        xo, vo = _ode(times, omega_n, zeta, L, x0, v0, s0, max(Om, 0.0 if fo is None else fo[1]),
                       p.accuracy.rtol, p.accuracy.atol, fm, max_steps=p.accuracy.max_steps)
         from dyncli import ode
 

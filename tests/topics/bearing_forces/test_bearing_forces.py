@@ -114,7 +114,7 @@ BF = "type: bearing-forces\n"
     (BF + "masses: [{m: 1, L: 1, alpha: \"x + t\"}]\nomega: 1\nat: [0]\n", "masses.0.alpha: unknown name 'x'"),
     (BF + "masses: [{m: 1, L: 1, alpha: 0.5}]\nomega: \"t^2\"\nat: [0]\n", "use ** for powers"),
     (BF + "masses: [{m: 1, L: 1, alpha: 0}]\nomega0: 3\nat: [0]\n", "omega0: every mass starts on the axis"),
-    (BF + "masses: [{m: 1, L: 1, alpha: 0, beta: 1}]\nomega: 1\nat: [0]\n", "masses.0.beta: unknown field"),
+    (BF + "masses: [{m: 1, L: 1, alpha: 0, gamma: 1}]\nomega: 1\nat: [0]\n", "masses.0.gamma: unknown field"),
 ])
 def test_invalid(text, expected):
     msg = error_of(text)
@@ -129,3 +129,84 @@ def test_table_puts_each_time_on_its_own_row():
     rows = [line.split() for line in out.splitlines() if "[0, -0.0342695, 0]" in line]
     assert rows and all(r[0] == "0" for r in rows)           # F at t = 0 (the gallery's check value)
     assert "F = Ġ [N]" in out and "M₁ = M_O − x₁×F₁ [N·m]" in out
+
+
+# ---------------------------------------------------------------------------
+# two bearings (issue 27): masses at axial positions y and azimuths β
+
+
+def test_gallery_two_bearing_rotor_by_hand():
+    (rec,) = solve_path(PROBLEMS / "rigid-bodies" / "two-bearing-rotor.yaml")
+    r = rec["results"]
+    w, rad = 100.0, 0.05
+    f1, f2 = 0.1 * w * w * rad, 0.2 * w * w * rad          # m ω² r toward the axis: 50 N, 100 N
+    F = -f1 + f2                                            # along e'1
+    M3 = -(0.25 * -f1 + 0.75 * f2)                          # y e'2 × F1 e'1 = −y F1 e'3
+    FB = -M3 / 1.0                                          # bearing B at 1 m: −1·F_B1 = M3
+    assert r["F"][0] == pytest.approx([F, 0, 0], abs=1e-12)
+    assert r["M_O"][0] == pytest.approx([0, 0, M3], abs=1e-12)
+    assert r["F_A"][0] == pytest.approx([F - FB, 0, 0], abs=1e-12)
+    assert r["F_B"][0] == pytest.approx([FB, 0, 0], abs=1e-12)
+    assert "F1" not in r and "M1" not in r
+
+
+def _sympy_two_bearings(masses, omega_expr, times, yA, yB):
+    """F, M_O on e'ᵢ by differentiating the masses' positions in the fixed frame (sympy), then the
+    bearing forces from the 5×5 linear system F_A + F_B = F, (x_A × F_A + x_B × F_B)·e'₁,₃ = M_O·e'₁,₃,
+    F_B·e'₂ = 0 (numpy), a formulation of its own."""
+    import numpy as np
+    import sympy as sp
+
+    t = sp.Symbol("t", real=True)
+    th = sp.Function("theta")(t)
+    R = sp.Matrix([[sp.cos(th), 0, sp.sin(th)], [0, 1, 0], [-sp.sin(th), 0, sp.cos(th)]])
+    Xs = []
+    for m, L, a, y, b in masses:
+        a = sp.sympify(a, locals={"t": t})
+        u = sp.Matrix([sp.cos(b), 0, sp.sin(b)])
+        Xs.append((m, R * (y * sp.Matrix([0, 1, 0]) + L * (sp.sin(a) * u + sp.cos(a) * sp.Matrix([0, 1, 0])))))
+    w = sp.sympify(omega_expr, locals={"t": t})
+    G = sum((m * X.diff(t) for m, X in Xs), sp.zeros(3, 1))
+    H = sum((X.cross(m * X.diff(t)) for m, X in Xs), sp.zeros(3, 1))
+    out = []
+    for tt in times:
+        F, M = ([float(q) for q in (R.T * Q.diff(t)).subs(sp.Derivative(th, (t, 2)), sp.diff(w, t))
+                 .subs(sp.Derivative(th, t), w).subs(th, 0).subs(t, tt)] for Q in (G, H))
+        # unknowns FA1, FA2, FA3, FB1, FB3; y e2 × F = (y F3, 0, −y F1)
+        A = np.array([[1, 0, 0, 1, 0], [0, 1, 0, 0, 0], [0, 0, 1, 0, 1],
+                      [0, 0, yA, 0, yB], [-yA, 0, 0, -yB, 0]], float)
+        x = np.linalg.solve(A, [F[0], F[1], F[2], M[0], M[2]])
+        out.append((F, M, [x[0], x[1], x[2]], [x[3], 0.0, x[4]]))
+    return out
+
+
+@pytest.mark.parametrize("case", [
+    dict(masses=[(0.3, 0.2, "pi/2", 0.1, 0.0), (0.5, 0.1, "pi/2", 0.6, 2.0)], omega="50", A=-0.2, B=0.9),
+    dict(masses=[(1.0, 0.4, "0.6 + 0.3*sin(t)", 0.3, 0.7), (0.4, 0.3, "-1.2 + 0.2*t", -0.5, 4.0)],
+         omega="3 + t", A=0.5, B=-0.4),
+])
+def test_two_bearings_against_sympy_and_a_linear_solve(case):
+    times = [0.0, 1.3]
+    ms = "".join(f"  - {{m: {m}, L: {L}, alpha: \"{a}\", y: {y}, beta: {b}}}\n" for m, L, a, y, b in case["masses"])
+    r = solve_one_text(f"type: bearing-forces\nmasses:\n{ms}omega: \"{case['omega']}\"\n"
+                       f"bearings: {{A: {case['A']}, B: {case['B']}}}\nat: {times}\n")["results"]
+    for k, (F, M, FA, FB) in enumerate(_sympy_two_bearings(case["masses"], case["omega"], times, case["A"], case["B"])):
+        scale = 1 + max(abs(x) for x in F + M + FA + FB)
+        assert r["F"][k] == pytest.approx(F, abs=1e-12 * scale)
+        assert r["M_O"][k] == pytest.approx(M, abs=1e-12 * scale)
+        assert r["F_A"][k] == pytest.approx(FA, abs=1e-12 * scale)
+        assert r["F_B"][k] == pytest.approx(FB, abs=1e-12 * scale)
+
+
+@pytest.mark.parametrize("text,expected", [
+    (BF + "masses: [{m: 1, L: 1, alpha: 0.5}]\nomega: 1\nbearings: {A: 0.5, B: 0.5}\nat: [0]\n",
+     "bearings.B: bearings A and B are both at 0.5 m"),
+    (BF + "masses: [{m: 1, L: 1, alpha: 0.5}]\nomega: 1\nh: 0.2\nbearings: {A: 0, B: 1}\nat: [0]\n",
+     "h: give either h (one bearing at −h e'2) or bearings"),
+    (BF + "masses: [{m: 1, L: 1, alpha: 0.5}]\nomega: 1\nbearings: {A: 0}\nat: [0]\n",
+     "bearings.B: required field is missing"),
+    (BF + "masses: [{m: 1, L: 1, alpha: 0.5, y: [1]}]\nomega: 1\nat: [0]\n", "masses.0.y: expected a number"),
+])
+def test_invalid_two_bearings(text, expected):
+    msg = error_of(text)
+    assert expected in msg, msg
