@@ -230,7 +230,7 @@ def _forced_turns(resp: Response, t_end: float) -> list[float]:
         b, vb = np.where(neg, t, b), np.where(neg, vt, vb)
         a, va = np.where(neg, a, t), np.where(neg, va, vt)
         step = t - vt / resp.accel_array(t)
-        bad = ~((step > a) & (step < b)) | ~np.isfinite(step)
+        bad = ~((step >= a) & (step <= b)) | ~np.isfinite(step)     # (t itself is a bracket end now)
         t_new = np.where(bad, 0.5 * (a + b), step)
         done = (np.abs(t_new - t) <= 4 * eps * np.abs(t)) | (b - a <= 4 * eps * np.abs(b)) | (vt == 0)
         t = np.where(vt == 0, t, t_new)
