@@ -305,3 +305,16 @@ def _leaves(x: Any) -> list[float]:
     if isinstance(x, (list, tuple)):
         return [y for v in x for y in _leaves(v)]
     return [float(x)] if isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(float(x)) else []
+
+
+def extended(problem: Any) -> Any:
+    """``problem`` with ``t_end`` extended to the end of every ``within`` window and ``t`` query of
+    its ``find`` (§11: the motion runs as far as the queries search), else itself."""
+    from dyncli.expr import constant, resolve_params
+
+    find = getattr(problem, "find", None)
+    if not find or getattr(problem, "t_end", None) is None:
+        return problem
+    params = resolve_params(getattr(problem, "params", {}) or {})
+    end = search_end(float(problem.t_end), find, lambda x: constant(x, params))
+    return problem.model_copy(update={"t_end": end}) if end > problem.t_end else problem

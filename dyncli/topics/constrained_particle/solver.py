@@ -75,13 +75,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
                          "position only (the energy integral); use method ode", "accuracy.method")
     if p.find:                              # the motion runs to the end of every window searched (§11)
         from dyncli import motion_find
-        from dyncli.expr import constant, resolve_params
 
-        params = resolve_params(p.params)
-        end = motion_find.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
-        if end > p.t_end:
-            p = p.model_copy(update={"t_end": end})
-            model = dynamics.Model(p, curve)
+        q = motion_find.extended(p)
+        if q is not p:
+            p, model = q, dynamics.Model(q, curve)
     times = [float(t) for t in p.at]
     res = None
     from . import find

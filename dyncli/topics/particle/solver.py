@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from dyncli import ode, runner
+from dyncli import motion_find
 from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
@@ -36,14 +37,7 @@ def _ode_method(p) -> str:
 def solve(p, options: SolveOptions | None = None) -> Result:
     from . import find, orbit
 
-    if p.find:                              # the motion runs to the end of every window searched (§11)
-        from dyncli import motion_find
-        from dyncli.expr import constant, resolve_params
-
-        params = resolve_params(p.params)
-        end = motion_find.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
-        if end > p.t_end:
-            p = p.model_copy(update={"t_end": end})
+    p = motion_find.extended(p)             # the motion runs to the end of every window searched (§11)
     F = Forces(p)
     notes: list[str] = []
     orb = orbit.choose(p, notes)

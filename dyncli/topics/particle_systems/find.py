@@ -41,13 +41,6 @@ class Steps:
         return np.array(out, dtype=float)
 
 
-def extended(p):
-    """p with t_end extended to the end of every ``within`` window and ``t`` query (§11)."""
-    params = resolve_params(p.params)
-    end = mf.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
-    return p.model_copy(update={"t_end": end}) if end > p.t_end else p
-
-
 def report(p, res, steps: Steps, quantities, n: int) -> None:
     """``distance`` per particle at the times of ``at``, and the ``find`` answers."""
     if not steps.t:

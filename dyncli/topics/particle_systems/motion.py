@@ -73,8 +73,7 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
     """Fill the ``*_motion`` results, the checks and ``error_estimate``."""
     from dyncli.topics.particle_systems import find
 
-    if p.find:                              # the motion runs to the end of every window searched (§11)
-        p = find.extended(p)
+    p = find.mf.extended(p)                 # the motion runs to the end of every window searched (§11)
     acc = p.accuracy
     method = runner.scipy_method(acc.method)
 
