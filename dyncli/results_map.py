@@ -29,6 +29,7 @@ class Results(dict):
     def __missing__(self, key):
         names = [str(k) for k in self]
         close = difflib.get_close_matches(str(key), names, n=3, cutoff=0.6)
+        close.sort(key=lambda n: (-difflib.SequenceMatcher(None, str(key), n).ratio(), n))   # ties by name
         close += [n for n in names if isinstance(key, str) and key and n.startswith(key) and n not in close][:3]
         hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
         raise ResultNameError(f"no result {key!r} in this {self.type_name or 'solution'}{hint}; "
