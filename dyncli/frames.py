@@ -174,7 +174,7 @@ def frame(sols: list, long: bool):
         for row in rows(s, long):
             table.append({"problem": s.index, **row} if several else row)
         units.update({k: field_unit(s.type, k) for k in s.swept})
-        units.update(s.units)
+        units.update({**s._result.units, **s.units})    # with the parts of records (find.0.t)
     columns: dict[str, None] = {}
     for row in table:
         columns.update(dict.fromkeys(row))

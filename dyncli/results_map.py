@@ -27,10 +27,14 @@ class Results(dict):
     type_name: str = ""
 
     def __missing__(self, key):
-        names = [str(k) for k in self]
-        close = difflib.get_close_matches(str(key), names, n=3, cutoff=0.6)
-        close.sort(key=lambda n: (-difflib.SequenceMatcher(None, str(key), n).ratio(), n))   # ties by name
-        close += [n for n in names if isinstance(key, str) and key and n.startswith(key) and n not in close][:3]
+        names, wanted = [str(k) for k in self], str(key)
+        lower: dict[str, list[str]] = {}
+        for n in names:
+            lower.setdefault(n.lower(), []).append(n)        # "x" and "X" are two results
+        close = [n for c in difflib.get_close_matches(wanted.lower(), list(lower), n=3, cutoff=0.6) for n in lower[c]]
+        close.sort(key=lambda n: (n.lower() != wanted.lower(),                 # the same but for case first
+                                  -difflib.SequenceMatcher(None, wanted.lower(), n.lower()).ratio(), n))
+        close += [n for n in names if wanted and n.startswith(wanted) and n not in close][:3]
         hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
         raise ResultNameError(f"no result {key!r} in this {self.type_name or 'solution'}{hint}; "
                               f"its results: {', '.join(names)}")
