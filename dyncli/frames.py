@@ -194,8 +194,10 @@ class Sweep(list):
         ``df.attrs["units"]`` maps each column to its SI unit."""
         return frame(list(self), long)
 
-    def to_xarray(self, name: str | None = None):
-        """An xarray Dataset of the results over time x sweep (see docs/api.md)."""
-        from dyncli.fields_xr import dataset
+    def to_xarray(self, problem: int | None = None):
+        """An xarray Dataset on the grid of the swept values (one dimension per
+        swept path, plus ``t`` for the results over time) of one problem's
+        points (``problem``: its index, needed when the sweep holds several)."""
+        from dyncli.xarrays import dataset
 
-        return dataset(list(self), name)
+        return dataset(list(self), problem)
