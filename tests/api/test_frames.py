@@ -153,3 +153,34 @@ def test_numerical_error_names_the_source_once(tmp_path):
         dyncli.solve(path)
     assert rc == 1 and err.strip() == str(info.value)             # the CLI's one line
     assert str(info.value).startswith(f"{path}:1:1: numerical step failed: the run to t = 100 s")
+
+
+def test_xarray_of_a_sweep_over_time():
+    pytest.importorskip("xarray", reason="xarray is in the test extra (pip install -e '.[test]')")
+    omegas = [10.0, 15.0, 30.0]
+    sols = dyncli.sweep(FORCED, {"zeta": [0.05, 0.1], "force.omega": omegas})
+    with pytest.raises(dyncli.InputError, match=r"pick one with to_xarray\(problem=0\)"):
+        sols.to_xarray()
+    ds = sols.to_xarray(problem=0)
+    assert dict(ds.sizes) == {"zeta": 2, "force.omega": 3, "t": 4}
+    assert ds["x"].dims == ("zeta", "force.omega", "t") and ds["X"].dims == ("zeta", "force.omega")
+    assert ds["t"].values.tolist() == [0.0, 0.5, 1.0, 3.0]
+    assert (ds["x"].attrs["units"], ds["X"].attrs["units"], ds["force.omega"].attrs["units"]) == ("m", "m", "rad/s")
+    assert "zeta" not in ds.data_vars                              # a swept input is the coordinate only
+    m, k, f0 = 2.0, 800.0, 10.0
+    for zeta in (0.05, 0.1):
+        for w in omegas:
+            r = w / math.sqrt(k / m)
+            want = f0 / k / math.hypot(1 - r * r, 2 * zeta * r)        # (17.15a)
+            assert float(ds["X"].sel(zeta=zeta, **{"force.omega": w})) == pytest.approx(want, rel=1e-13)
+    one = next(s for s in sols if s.index == 0 and s.swept == {"zeta": 0.1, "force.omega": 15.0})
+    assert ds["x"].sel(zeta=0.1, **{"force.omega": 15.0}).values.tolist() == one["x"]
+    assert one["x"] == pytest.approx([0.0, 0.0215438, 0.0217153, 0.0171283], abs=5e-7)   # the file's values
+
+
+def test_xarray_mapping_results_and_a_swept_param():
+    pytest.importorskip("xarray")
+    ds = dyncli.sweep(str(ROOT / "problems/particle/work-per-force.yaml"), {"params.mass": [1, 5]}).to_xarray(problem=0)
+    u = ds["work.gravity"]
+    assert u.dims == ("params.mass", "t") and u.attrs["units"] == "J"
+    assert u.sel(t=2.0).values.tolist() == pytest.approx([-9.81, -49.05], rel=1e-9)   # −m g x3, x3(2 s) = 1 m
