@@ -116,6 +116,7 @@ def _schema(type_name: str) -> dict:
     return model_class(type_name).model_json_schema()
 
 
+@lru_cache(maxsize=512)
 def field_unit(type_name: str | None, path: str) -> str:
     """The SI unit of an input field at a dotted ``path`` ("" when it has
     none: a ``params`` name, a dimensionless field)."""
