@@ -23,7 +23,7 @@ FORCED = str(ROOT / "problems/vibration/force-excitation.yaml")
 SPRING = {"type": "vibration", "m": 1, "k": 400, "zeta": 0.05}
 OVER_TIME = ["problems/vibration/underdamped.yaml", "problems/particle/work-per-force.yaml",
              "problems/gyroscopic/top-nutating.yaml", "problems/kinematics/rotating-slot.yaml",
-             "problems/rigid-bodies/bearing-forces.yaml", "problems/particle/bead-on-a-hoop.yaml"]
+             "problems/rigid-bodies/bearing-forces.yaml", "problems/particle/rotating-slot.yaml"]
 
 
 @pytest.fixture(scope="module")
