@@ -15,6 +15,8 @@ from pathlib import Path
 from typing import Any, Mapping
 
 from dyncli.errors import InputError, NumericalError
+from dyncli.frames import Sweep
+from dyncli.results_map import results_of, units_of
 
 
 class Solution:
@@ -25,7 +27,7 @@ class Solution:
     def __init__(self, problem, result):
         self._problem, self._result = problem, result
         self.file, self.index, self.type, self.title = problem.file, problem.index, problem.type, problem.title
-        self.results: dict[str, Any] = result.results
+        self.results: dict[str, Any] = results_of(result, problem.type)   # + "t", did-you-mean (results_map)
         self.method: str = result.method
         self.equations: list[str] = list(result.equations)
         self.warnings: list[str] = list(result.warnings)
@@ -34,6 +36,19 @@ class Solution:
 
     def __getitem__(self, name: str) -> Any:
         return self.results[name]
+
+    @property
+    def units(self) -> dict[str, str]:
+        """Result name -> SI unit, from the type's declaration ("" when dimensionless)."""
+        return units_of(self._result, self.results)
+
+    def to_frame(self, long: bool = True):
+        """A pandas DataFrame (optional extra ``dyncli[frames]``): one row per
+        reported time (one row when the results are not over time), columns the
+        flattened results, ``df.attrs["units"]`` their SI units (docs/api.md)."""
+        from dyncli.frames import frame
+
+        return frame([self], long)
 
     def to_dict(self) -> dict:
         """The JSON record of ``dyncli solve --format json`` (plain JSON values)."""
@@ -148,8 +163,9 @@ def solve(source: Any, **overrides: Any) -> list[Solution]:
     return _solve(source, overrides, None)
 
 
-def sweep(source: Any, values: Mapping[str, Any], **overrides: Any) -> list[Solution]:
+def sweep(source: Any, values: Mapping[str, Any], **overrides: Any) -> Sweep:
     """Solve for every combination of ``values`` (``{"k": [100, 200],
     "zeta": numpy.linspace(0.1, 0.5, 5)}``): one :class:`Solution` per
-    problem and point, each with ``swept``."""
-    return _solve(source, overrides, values)
+    problem and point, each with ``swept``, in a list that also has
+    ``to_frame()`` (dyncli.frames.Sweep)."""
+    return Sweep(_solve(source, overrides, values))

@@ -51,7 +51,7 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
         hint = degrees_hint(type(lp.model), lp.raw, exc.path)
         return Outcome(lp, None, 2, str(lp.diagnostic(exc.path, exc.message + hint)))
     except NumericalError as exc:
-        d = Diagnostic(lp.file, None, None, None, f"{lp.title}: numerical step failed: {exc}")
+        d = Diagnostic(lp.file, None, None, None, f"{_named(lp)}numerical step failed: {exc}")
         pos = lp.doc.locate(lp.prefix) if lp.doc else None
         if pos:
             d.line, d.col = pos
@@ -65,6 +65,16 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
     if not isinstance(result, Result):  # pragma: no cover - defensive
         return Outcome(lp, None, 3, _internal(lp, TypeError("solver returned no Result")))
     return Outcome(lp, result, 0)
+
+
+def _named(lp: LoadedProblem) -> str:
+    """``"title: "`` to put before a message about the problem, or nothing when
+    the title is only the file's name, which the message starts with already
+    (else a mapping's problem would read ``<dict>: <dict>: ...``)."""
+    from pathlib import Path
+
+    own = lp.title not in (Path(lp.file).name, "stdin" if lp.file == "<stdin>" else None)
+    return f"{lp.title}: " if own else ""
 
 
 def _library_warnings(result: Result, caught) -> None:
