@@ -50,7 +50,9 @@ def _main(
 
 
 def _err(msg: str) -> None:
-    print(msg, file=sys.stderr)
+    from dyncli.run import _err as say
+
+    say(msg)
 
 
 @app.command()

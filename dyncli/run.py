@@ -101,9 +101,14 @@ COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "m
 
 
 def _err(msg: str) -> None:
+    """One message on stderr, always through the escaper: control characters
+    visible (a --set path or a title cannot forge a second line or drive the
+    terminal), a very long line shortened (:func:`dyncli.printable.line`)."""
     import sys
 
-    print(msg, file=sys.stderr)
+    from dyncli.printable import line
+
+    print(line(msg), file=sys.stderr)
 
 
 def parse_units(text: str | None) -> list[str] | None:
@@ -191,6 +196,8 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
 
 
 def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) -> list[Outcome]:
+    import sys
+
     outcomes = []
     for lp in problems:
         o = solve_one(lp, options)
@@ -199,7 +206,9 @@ def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) ->
         if o.message:
             _err(o.message)
             if o.trace and debug:
-                _err(o.trace)
+                from dyncli.printable import lines
+
+                print(lines(o.trace), file=sys.stderr)
         if writer is not None and o.result is not None:
             writer.write(lp, o.result)
     return outcomes
