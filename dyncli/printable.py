@@ -72,9 +72,12 @@ def lines(text: object) -> str:
     return "\n".join(line(part) for part in str(text).split("\n"))
 
 
-# Markdown's inline markup; a line of the output never starts with user text,
-# so the block markers (#, -, >, 1.) need no escape
-_MD = re.compile(r"([\\`*_\[\]|~])")
+# Markdown's inline markup that can act: code spans, emphasis, table cells,
+# and a link (``](``: ``[text](url)``); HTML (raw tags, autolinks ``<url>``)
+# is escaped as entities.  A line of the output never starts with user text,
+# so the block markers (#, -, >, 1.) need no escape; ``_`` and a bracket
+# that opens no link are left alone (``v_A``, ``[2, 0, 0]`` read as written).
+_MD = re.compile(r"([\\`*|]|\](?=[(\[]))")
 
 
 def markdown(text: object, breaks: bool = False) -> str:

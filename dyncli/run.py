@@ -111,6 +111,16 @@ def _err(msg: str) -> None:
     print(line(msg), file=sys.stderr)
 
 
+def _err_lines(text: str) -> None:
+    """Messages of one problem, one per line (each :class:`Diagnostic` line
+    is made printable where it is built): each line escaped and shortened."""
+    import sys
+
+    from dyncli.printable import lines
+
+    print(lines(text), file=sys.stderr)
+
+
 def parse_units(text: str | None) -> list[str] | None:
     """``--units deg,rpm,mm`` -> the list; an unknown unit is InputError."""
     if text is None:
@@ -204,7 +214,7 @@ def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) ->
         outcomes.append(o)
         codes.append(o.exit_code)
         if o.message:
-            _err(o.message)
+            _err_lines(o.message)
             if o.trace and debug:
                 from dyncli.printable import lines
 
@@ -266,7 +276,7 @@ def validate_command(files, sets=()) -> int:
     problems, codes = loaded
     for lp in problems:
         if lp.error is not None:
-            _err(str(lp.error))
+            _err_lines(str(lp.error))
             codes.append(2)
         else:
             print(f"{lp.file}: {lp.title} ({lp.type}): ok")
