@@ -355,7 +355,7 @@ def _fast(lp, base, sweeps, hits, points) -> list:
             continue
         if k == 1 or k == len(points) - 1:
             ref = _validated(lp, raw, swept, hits)
-            if ref.error is not None or ref.model.model_dump() != m.model_dump():
+            if ref.error is not None or ref.model.model_dump(warnings=False) != m.model_dump(warnings=False):
                 return out[:1] + _full(lp, base, sweeps, hits, points[1:])
         out.append(replace(lp, raw=raw, model=m, error=None, swept=swept))
     return out
