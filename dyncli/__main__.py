@@ -5,20 +5,9 @@ anything heavy is imported (an interrupt during start-up printed a
 traceback; click turned a later one into "Aborted!" and exit 1): by the
 first lines of the ``dyncli`` package when it is imported as the command
 (``python -m dyncli``, the ``dyncli`` script), again here for any other
-route to :func:`main`.  This module imports only ``os`` and ``signal``
-(loaded by the interpreter already)."""
+route to :func:`main`."""
 
-import os
-import signal
-
-
-def _interrupted(signum, frame):  # pragma: no cover - exercised in a subprocess
-    os._exit(130)
-
-
-def quiet_interrupts() -> None:
-    """SIGINT ends the process with exit 130 and nothing else."""
-    signal.signal(signal.SIGINT, _interrupted)
+from dyncli import quiet_interrupts
 
 
 def main() -> None:

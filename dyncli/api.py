@@ -102,12 +102,27 @@ def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> 
     from dyncli.overrides import Assign
 
     out = [Assign("override", k.replace("__", "."), (_plain(v),)) for k, v in overrides.items()]
+    if sweeps is not None and not isinstance(sweeps, Mapping):
+        raise TypeError(f"dyncli.sweep: values must be a mapping {{path: values}}, e.g. {{'k': [100, 200]}}; "
+                        f"got {type(sweeps).__name__}")
     for k, values in (sweeps or {}).items():
-        vals = tuple(_plain(list(values)))
+        vals = tuple(_plain(_sweep_values(values)))
         if not vals:
             raise InputError(f"sweep {k}: no values")
         out.append(Assign("sweep", k.replace("__", "."), vals, sweep=True))
     return out
+
+
+def _sweep_values(values: Any) -> list:
+    """The values of one swept path: a list, a tuple, an array, any iterable;
+    a single value (a number, a string such as ``"100"`` or ``"2*pi"``, a
+    mapping) is one value, never its characters or keys."""
+    if isinstance(values, (str, bytes, Mapping)) or (hasattr(values, "ndim") and values.ndim == 0):
+        return [values]
+    try:
+        return list(values)
+    except TypeError:          # a number, None, a bool: not iterable
+        return [values]
 
 
 def _input_error(lines: list[str]) -> InputError:

@@ -280,6 +280,7 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     for a in assigns:
         if not any(target(lp, a) for lp in problems):
             raise _unknown(problems, a)
+    _no_path_twice(problems, assigns)
     n = math.prod(len(a.values) for a in assigns if a.sweep)
     if n > MAX_POINTS:
         raise OverrideError(f"--sweep: {n:,} combinations; at most {MAX_POINTS:,} per run")
@@ -287,6 +288,20 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     for lp in problems:
         out += _expand_one(lp, assigns)
     return out
+
+
+def _no_path_twice(problems, assigns: list[Assign]) -> None:
+    """One field given a value twice (``--sweep k=1,2 --sweep k=3,4``, a
+    ``--set`` and a ``--sweep`` of one path, or of a mapping and a field
+    inside it) is refused: one of them would be silently dropped."""
+    for lp in problems:
+        hits = [(a, t) for a in assigns if (t := target(lp, a)) is not None]
+        for i, (a, t) in enumerate(hits):
+            for b, u in hits[:i]:
+                if t[:len(u)] == u or u[:len(t)] == t:
+                    where = ".".join(str(p) for p in (t if len(t) <= len(u) else u))
+                    raise OverrideError(f"{b.label()} and {a.label()}: both give {where!r} its values; "
+                                        "give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
 
 
 def _expand_one(lp, assigns: list[Assign]) -> list:
