@@ -79,7 +79,13 @@ def read_source(name: str) -> tuple[str, bytes]:
     from dyncli.yamlsafe import MAX_BYTES
 
     if name == "-":
-        data = sys.stdin.buffer.read(MAX_BYTES + 1)
+        stream = getattr(sys.stdin, "buffer", None)
+        if stream is None:            # stdin closed (<&-) or detached
+            raise InputError("-: standard input is closed; give a file name, or pipe the YAML in (... | dyncli solve -)")
+        try:
+            data = stream.read(MAX_BYTES + 1)
+        except (OSError, ValueError) as exc:
+            raise InputError(f"-: cannot read standard input ({getattr(exc, 'strerror', None) or exc})") from None
         return "<stdin>", data
     p = Path(name)
     if not p.exists():
