@@ -54,6 +54,10 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
         return Outcome(lp, None, 1, str(d))
     except (KeyboardInterrupt, SystemExit):
         raise
+    except OverflowError as exc:
+        # float arithmetic overflows only on the size of the given numbers (a
+        # sum of masses of 1e308): invalid input for doubles, not a bug
+        return Outcome(lp, None, 2, _too_large(lp, exc))
     except RecursionError as exc:  # pragma: no cover - defensive
         return Outcome(lp, None, 3, _internal(lp, exc), traceback.format_exc())
     except Exception as exc:  # noqa: BLE001 - map every bug to exit 3
@@ -69,6 +73,17 @@ def _library_warnings(result: Result, caught) -> None:
     for w in caught:
         first = str(w.message).strip().splitlines()[0] if str(w.message).strip() else type(w.message).__name__
         result.warn(printable(f"numerical library ({w.category.__name__}): {first[:200]}"))
+
+
+def _too_large(lp: LoadedProblem, exc: OverflowError) -> str:
+    d = Diagnostic(lp.file, None, None, None,
+                   f"{lp.title}: a number overflowed a double while solving ({exc}): the problem's values are "
+                   "too large for floating point (a sum, product or power beyond 1.8e308); give them in units "
+                   "that keep the results below about 1e300")
+    pos = lp.doc.locate(lp.prefix) if lp.doc else None
+    if pos:
+        d.line, d.col = pos
+    return str(d)
 
 
 def _internal(lp: LoadedProblem, exc: BaseException) -> str:
