@@ -6,7 +6,10 @@ a mapping and returns one :class:`Solution` per problem;
 point of the sweeps' product.  Invalid input raises
 :class:`dyncli.InputError` whose message holds every error, one
 ``file:line:col: field: what is wrong`` line each (also as ``.messages``);
-a failed numerical step raises :class:`dyncli.NumericalError`.
+a failed numerical step raises :class:`dyncli.NumericalError`; a source or
+values of the wrong Python type raise TypeError.  Nothing else is raised for
+any input (RuntimeError only for a bug in dyncli, with the message asking for
+a report).
 """
 
 from __future__ import annotations
@@ -67,14 +70,23 @@ class Solution:
         return f"<Solution {self.type} {self.title!r}: {len(self.results)} results, method {self.method}>"
 
 
-def _plain(x: Any) -> Any:
-    """numpy values, tuples and paths in a mapping -> plain YAML data."""
-    if isinstance(x, Mapping):
-        return {str(k): _plain(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_plain(v) for v in x]
+def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
+    """numpy values, tuples and paths in a mapping -> plain YAML data.  A
+    mapping or list that contains itself, or nested deeper than a problem
+    file may be (yamlsafe.MAX_DEPTH), is InputError naming where."""
+    from dyncli.yamlsafe import MAX_DEPTH
+
+    if isinstance(x, (Mapping, list, tuple)):
+        if any(x is o for o in _open):
+            raise InputError(f"{where or 'the mapping'}: contains itself (a reference cycle); give plain data")
+        if len(_open) >= MAX_DEPTH:
+            raise InputError(f"{where or 'the mapping'}: nested more than {MAX_DEPTH} levels deep")
+        inner = _open + (x,)
+        if isinstance(x, Mapping):
+            return {str(k): _plain(v, f"{where}.{k}" if where else str(k), inner) for k, v in x.items()}
+        return [_plain(v, f"{where}.{i}" if where else str(i), inner) for i, v in enumerate(x)]
     if hasattr(x, "tolist") and type(x).__module__.startswith("numpy"):
-        return _plain(x.tolist())
+        return _plain(x.tolist(), where, _open)
     if isinstance(x, Path):
         return str(x)
     return x
@@ -86,7 +98,11 @@ def load(source: Any):
     from dyncli.yamlsafe import Document
 
     if isinstance(source, Mapping):
-        problems, diags = split_problems("<dict>", Document(_plain(source)), Path.cwd())
+        try:
+            data = _plain(source)
+        except InputError as exc:
+            raise _input_error([f"<dict>: {exc.message}"]) from None
+        problems, diags = split_problems("<dict>", Document(data), Path.cwd())
     elif isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and ":" not in source.replace("\\", "/").split("/")[-1]):
         return load_paths([str(source)])
     elif isinstance(source, (str, bytes)):
@@ -101,12 +117,14 @@ def load(source: Any):
 def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> list:
     from dyncli.overrides import Assign
 
-    out = [Assign("override", k.replace("__", "."), (_plain(v),)) for k, v in overrides.items()]
+    out = [Assign("override", k.replace("__", "."), (_plain(v, k),)) for k, v in overrides.items()]
     if sweeps is not None and not isinstance(sweeps, Mapping):
         raise TypeError(f"dyncli.sweep: values must be a mapping {{path: values}}, e.g. {{'k': [100, 200]}}; "
                         f"got {type(sweeps).__name__}")
     for k, values in (sweeps or {}).items():
-        vals = tuple(_plain(_sweep_values(values)))
+        if not isinstance(k, str):
+            raise TypeError(f"dyncli.sweep: a path must be a string such as 'k' or 'base.omega', got {k!r}")
+        vals = tuple(_plain(_sweep_values(values), k))
         if not vals:
             raise InputError(f"sweep {k}: no values")
         out.append(Assign("sweep", k.replace("__", "."), vals, sweep=True))
@@ -148,7 +166,9 @@ def _solve(source: Any, overrides: Mapping[str, Any], sweeps: Mapping[str, Any] 
         o = solve_one(p)
         if o.exit_code == 1:
             raise NumericalError(o.message)
-        if o.result is None:
+        if o.exit_code == 2:               # refused by the solver (values beyond a double ...)
+            raise _input_error(o.message.split("\n"))
+        if o.result is None:               # exit 3: a bug in dyncli, never the input's fault
             raise RuntimeError(o.message)
         out.append(Solution(p, o.result))
     return out
