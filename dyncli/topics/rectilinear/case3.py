@@ -27,7 +27,6 @@ import math
 import numpy as np
 
 from dyncli.rootfind import root_in_bracket
-from dyncli.topics.rectilinear._quad import NonFinite
 from dyncli.topics.rectilinear.case3_branch import _BIG, Branch, _fmt
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
@@ -252,17 +251,12 @@ def solve(p, ans, rtol: float, atol: float) -> str:
         return "quadrature"
     roots = False
     for i, q in enumerate(p.find):
-        try:
-            if q.kind == "t":
-                c.t_query(i, q.t)
-                roots = True
-            elif q.kind == "v":
-                c.v_query(i, q.v)
-            else:
-                c.s_query(i, q.s)
-                roots = True
-        except NonFinite as exc:     # 1/a(v) or v/a(v) overflows on the way (a tiny a, a huge target)
-            ans.unreached(i, f"the integrals t(v) = ∫ dv/a, s(v) = ∫ v dv/a are not finite on the way to it "
-                             f"(at v ≈ {_fmt(exc.x)} of the integration variable): a is too small or the target "
-                             "too far for doubles")
+        if q.kind == "t":
+            ans.ask(i, c.t_query, q.t)
+            roots = True
+        elif q.kind == "v":
+            ans.ask(i, c.v_query, q.v)
+        else:
+            ans.ask(i, c.s_query, q.s)
+            roots = True
     return "quadrature+root" if roots else "quadrature"
