@@ -294,5 +294,7 @@ def validate_command(files, sets=()) -> int:
             _err_lines(str(lp.error))
             codes.append(2)
         else:
-            print(f"{lp.file}: {lp.title} ({lp.type}): ok")
+            from dyncli.printable import line
+
+            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok"))
     return worst(codes)

@@ -49,6 +49,14 @@ def test_every_format_and_its_stderr_hold_no_raw_control_characters(tmp_path, fm
         assert line.startswith(str(f)), line     # one line per message: nothing forged
 
 
+def test_validate_ok_lines_are_escaped(tmp_path):
+    f = _problem(tmp_path)
+    rc, out, err = run_cli("validate", str(f))
+    assert rc == 0, err
+    _no_control(out)
+    assert len(out.strip().splitlines()) == 1
+
+
 @pytest.mark.parametrize("fmt", ["markdown", "html"])
 def test_markdown_and_html_write_markup_as_text(fmt):
     sol = dyncli.solve(str(ROOT / "problems/vibration/undamped.yaml"), title=HOSTILE)[0]
