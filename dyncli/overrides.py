@@ -291,17 +291,14 @@ def expand(problems: list, assigns: list[Assign]) -> list:
 
 
 def _no_path_twice(problems, assigns: list[Assign]) -> None:
-    """One field given a value twice (``--sweep k=1,2 --sweep k=3,4``, a
-    ``--set`` and a ``--sweep`` of one path, or of a mapping and a field
-    inside it) is refused: one of them would be silently dropped."""
+    """A field given values twice (two --sweep of k, --set and --sweep of k, base and base.omega) is refused."""
     for lp in problems:
         hits = [(a, t) for a in assigns if (t := target(lp, a)) is not None]
         for i, (a, t) in enumerate(hits):
             for b, u in hits[:i]:
                 if t[:len(u)] == u or u[:len(t)] == t:
-                    where = ".".join(str(p) for p in (t if len(t) <= len(u) else u))
-                    raise OverrideError(f"{b.label()} and {a.label()}: both give {where!r} its values; "
-                                        "give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
+                    raise OverrideError(f"{b.label()} and {a.label()}: both give {'.'.join(map(str, min(t, u, key=len)))!r} "
+                                        "its values; give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
 
 
 def _expand_one(lp, assigns: list[Assign]) -> list:
