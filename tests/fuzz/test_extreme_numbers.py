@@ -172,3 +172,19 @@ def test_an_overflow_while_solving_is_exit_2_naming_the_problem():
     rc, out, err = run_cli("solve", "-", input="type: impact\nmA: 2\nmB: 3\nvA1: [1e308, 0, 0]\nvB1: [0, 0, 0]\n"
                                                 "n: [1, 0, 0]\ne: 0\n")
     assert rc == 2 and "beyond 1.8e308" in err and "internal error" not in err, err
+
+
+@pytest.mark.parametrize("target", [1e308, -1e308, 1e200, -1e30])
+def test_a_far_target_leaves_the_other_answers_unchanged(target):
+    """Case 3 (a = a(v)): a target speed of 1e308 set the branches' scale, so the terminal
+    velocity went unseen and every other query reported a blow-up at exit 0."""
+    import dyncli
+
+    ball = {"type": "rectilinear", "a": "-9.81 - 0.01*v*abs(v)", "v1": 20,
+            "find": [{"t": 1}, {"s": -10}, {"t": 100}, {"v": -31.3}, {"t": -1}]}
+    ref = dyncli.solve(ball)[0]["find"]
+    got = dyncli.solve(dict(ball, find=ball["find"] + [{"v": target}]))[0]["find"]
+    for a, b in zip(ref, got):
+        for k in ("t", "s", "v"):
+            assert b[k] == pytest.approx(a[k], rel=1e-9, abs=1e-9), (a, b)
+    assert got[-1]["reached"] is False
