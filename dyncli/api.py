@@ -45,10 +45,17 @@ class Solution:
         return problem_record(self._problem, self._result)
 
     def table(self, digits: int = 6, units: str | None = None) -> str:
-        """The terminal view as plain text (as printed to a pipe)."""
+        """The terminal view as plain text (as printed to a pipe); ``digits`` 1 to 17,
+        ``units`` as ``--units`` ("deg,mm" or a list of names)."""
         from dyncli.render.emit import table_text
         from dyncli.run import parse_units
 
+        if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 17:
+            raise TypeError(f"Solution.table: digits must be a whole number from 1 to 17, got {digits!r}")
+        if isinstance(units, (list, tuple)) and all(isinstance(u, str) for u in units):
+            units = ",".join(units)
+        if units is not None and not isinstance(units, str):
+            raise TypeError(f"Solution.table: units must be a text such as 'deg,mm' or a list of unit names, got {units!r}")
         return table_text(self._problem, self._result, digits, parse_units(units))
 
     def _view(self):

@@ -59,6 +59,9 @@ MISUSE = {
     "sweep empty": lambda: dyncli.sweep(BASE, {"k": []}),
     "sweep unknown path": lambda: dyncli.sweep(BASE, {"nope": [1]}),
     "units unknown": lambda: dyncli.solve(BASE)[0].table(units="furlong"),
+    "units not text": lambda: dyncli.solve(BASE)[0].table(units=5),
+    "digits negative": lambda: dyncli.solve(BASE)[0].table(digits=-1),
+    "digits fractional": lambda: dyncli.solve(BASE)[0].table(digits=2.5),
 }
 
 
