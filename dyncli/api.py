@@ -151,6 +151,9 @@ def _sweep_values(values: Any) -> list:
 
 
 def _input_error(lines: list[str]) -> InputError:
+    from dyncli.printable import line
+
+    lines = [line(x) for x in lines]           # one line each, a long value shortened (as on stderr)
     err = InputError("\n".join(lines))
     err.messages = lines
     return err

@@ -15,7 +15,7 @@ from typing import Any
 
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean, resolve_params
-from dyncli.printable import printable
+from dyncli.printable import line as one_line
 from dyncli.yamlsafe import Document, YamlError, load as yaml_load
 
 
@@ -35,7 +35,7 @@ class Diagnostic:
         loc = self.file
         if self.line is not None:
             loc += f":{self.line}:{self.col or 1}"
-        return printable(f"{loc}: " + (f"{self.path}: " if self.path else "") + self.message)  # one line
+        return one_line(f"{loc}: " + (f"{self.path}: " if self.path else "") + self.message)  # one line, shortened
 
     def lines(self) -> list[str]:
         """Every error of the problem, one line each."""

@@ -121,3 +121,16 @@ def test_lru_drops_the_least_recently_used():
     assert c.get("a") == 1          # a is now the most recent
     c.put("c", 3)
     assert c.get("b") is None and c.get("a") == 1 and c.get("c") == 3
+
+
+@pytest.mark.parametrize("call", [
+    lambda: dyncli.solve(dict(BASE, **{"x" * 100_001: 1})),
+    lambda: dyncli.sweep(BASE, {"y" * 100_001: [1]}),
+    lambda: dyncli.solve(dict(BASE, params={"-" * 100_001: 1})),
+])
+def test_a_long_user_string_is_shortened_in_the_api_message(call):
+    from dyncli.printable import MAX_LINE
+
+    with pytest.raises(dyncli.InputError) as info:
+        call()
+    assert all(len(m) < MAX_LINE + 100 for m in info.value.messages), [len(m) for m in info.value.messages]
