@@ -89,12 +89,19 @@ def test_csv_cell_neutralises_formulas_and_keeps_numbers(cell, expected):
 
 
 def test_csv_output_file_names_and_swept_text_are_not_formulas(tmp_path):
-    f = _problem(tmp_path, "=HYPERLINK(1).yaml", title="@SUM(A1)")
-    rc, out, err = run_cli("solve", f"{tmp_path}/../{tmp_path.name}/=HYPERLINK(1).yaml", "-f", "csv",
-                           "--sweep", "x0=-1,-0.5", "--sweep", "title=-cmd,+cmd")
-    assert rc == 0, err
-    rows = list(csv.reader(io.StringIO(out)))
+    import os
+    import subprocess
+    import sys
+
+    _problem(tmp_path, "=HYPERLINK(1).yaml", title="@SUM(A1)")
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    p = subprocess.run([sys.executable, "-m", "dyncli", "solve", "=HYPERLINK(1).yaml", "-f", "csv",   # a relative name
+                        "--sweep", "x0=-1,-0.5", "--sweep", "title=-cmd,+cmd"],
+                       capture_output=True, text=True, cwd=tmp_path, env=env, timeout=120)
+    assert p.returncode == 0, p.stderr
+    rows = list(csv.reader(io.StringIO(p.stdout)))
     head = rows[0]
+    assert rows[1][0] == "'=HYPERLINK(1).yaml"
     for row in rows[1:]:
         for name, cell in zip(head, row):
             assert not cell.startswith(("=", "+", "@", "\t", "\r")) and (
