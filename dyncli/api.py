@@ -131,23 +131,21 @@ def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> 
     for k, values in (sweeps or {}).items():
         if not isinstance(k, str):
             raise TypeError(f"dyncli.sweep: a path must be a string such as 'k' or 'base.omega', got {k!r}")
-        vals = tuple(_plain(_sweep_values(values), k))
+        if not _is_sequence(values):
+            raise InputError(f"sweep {k}: give a list of values, e.g. {{{k!r}: [100, 200, 300]}} (got {values!r})")
+        vals = tuple(_plain(list(values), k))
         if not vals:
-            raise InputError(f"sweep {k}: no values")
+            raise InputError(f"sweep {k}: no values; give a list of values, e.g. {{{k!r}: [100, 200, 300]}}")
         out.append(Assign("sweep", k.replace("__", "."), vals, sweep=True))
     return out
 
 
-def _sweep_values(values: Any) -> list:
-    """The values of one swept path: a list, a tuple, an array, any iterable;
-    a single value (a number, a string such as ``"100"`` or ``"2*pi"``, a
-    mapping) is one value, never its characters or keys."""
-    if isinstance(values, (str, bytes, Mapping)) or (hasattr(values, "ndim") and values.ndim == 0):
-        return [values]
-    try:
-        return list(values)
-    except TypeError:          # a number, None, a bool: not iterable
-        return [values]
+def _is_sequence(values: Any) -> bool:
+    """A list, tuple, array or other iterable of values — not a string (its
+    characters), a mapping (its keys), a number or a 0-d array."""
+    if isinstance(values, (str, bytes, Mapping)) or getattr(values, "ndim", 1) == 0:
+        return False
+    return hasattr(values, "__iter__")
 
 
 def _input_error(lines: list[str]) -> InputError:

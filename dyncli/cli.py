@@ -95,6 +95,11 @@ class CheckFormat(str, Enum):
     gradescope = "gradescope"
 
 
+class IdFrom(str, Enum):
+    student = "student"
+    filename = "filename"
+
+
 @app.command()
 def check(
     files: Optional[List[str]] = typer.Argument(
@@ -112,6 +117,12 @@ def check(
     student: Optional[str] = typer.Option(None, "--student", help="With --key: the student id of the submissions."),
     root: Optional[str] = typer.Option(None, "--root", metavar="DIR",
                                        help="Problem files may lie anywhere inside DIR (default: the folder of the file naming them)."),
+    upload: bool = typer.Option(False, "--upload",
+                                help="With --key: the files are one student's upload (Gradescope): grade the file "
+                                     "the key's 'submission:' names, else the only .yaml; refuse, listing them, otherwise."),
+    id_from: IdFrom = typer.Option(IdFrom.student, "--id-from",
+                                   help="With --key: where a submission's student id comes from: its 'student:' "
+                                        "(default) or its file name (a differing 'student:' is refused)."),
 ):
     """Grade answers: graded work with --key KEY SUBMISSION..., self-study with ANSWERS... (exit 1 if any is wrong)."""
     files = files or []
@@ -126,9 +137,16 @@ def check(
                 _err("--selftest checks the key alone: give no submissions")
                 raise typer.Exit(2)
             raise typer.Exit(run_selftest(key, n, root))
-        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root))
-    if selftest or student is not None:
-        _err(f"{'--selftest' if selftest else '--student'} goes with --key KEY")
+        if id_from is IdFrom.filename and student is not None:
+            _err("--id-from filename and --student do not go together")
+            raise typer.Exit(2)
+        raise typer.Exit(run_key_check(key, files, format.value, reveal, output, student, root, id_from.value,
+                                       upload))
+    if upload:
+        _err("--upload goes with --key KEY")
+        raise typer.Exit(2)
+    if selftest or student is not None or id_from is not IdFrom.student:
+        _err(f"{'--selftest' if selftest else '--student' if student is not None else '--id-from'} goes with --key KEY")
         raise typer.Exit(2)
     if not files:
         _err("give answer files (self-study), or --key KEY and the submissions (graded work)")

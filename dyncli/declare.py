@@ -107,8 +107,12 @@ class TypeSpec:
 
     def __init__(self, name: str, title: str, sections: str, model: Any, solve: Any = "solver:solve",
                  results: list[ResultSpec] | None = None, plots: Any = "plots:plots", template: str = "",
-                 example: str = "", package: str = ""):
+                 example: str = "", package: str = "", motion: dict | None = None):
         self.name, self.title, self.sections, self.model, self.solve = name, title, sections, model, solve
+        #: a type whose solver reports its motion at the times of ``at`` and answers ``find`` by
+        #: solving at other times (dyncli.motion_find.resolved): ``{"rates": {result: its rate},
+        #: "fast": [angular rates that set the search grid]}``; None: the solver answers find itself
+        self.motion = motion
         self.results = list(results or [])
         self.plots, self.example, self.package = plots, example, package
         self.template = template or f"dyncli/templates/{name}.yaml"

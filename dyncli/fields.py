@@ -280,6 +280,19 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
     return Annotated[list[float], PlainValidator(validate), WithJsonSchema(schema)]
 
 
+#: the ``find`` queries of a motion (§11), validated where they are answered (dyncli.queries), each
+#: error at its ``find.N.<field>``
+FIND_SCHEMA = {"type": "array", "items": {"type": "object"},
+               "description": "queries about the motion: {t: T}, {when: {RESULT: VALUE}, direction, occurrence}, "
+                              "{max: RESULT}, {min: RESULT} (optional within: [t1, t2])"}
+
+
+def Find():
+    """The ``find`` list of a type that reports a motion (§11); its entries are checked when they
+    are answered, with their field paths."""
+    return Annotated[list[Any], WithJsonSchema(FIND_SCHEMA)]
+
+
 # ---------------------------------------------------------------------------
 # the fields every problem may have
 

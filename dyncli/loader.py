@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from dyncli.angles import degrees_hint
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean, resolve_params
 from dyncli.printable import line as one_line
@@ -89,7 +90,7 @@ def read_source(name: str) -> tuple[str, bytes]:
         return "<stdin>", data
     p = Path(name)
     if not p.exists():
-        raise InputError(f"{name}: no such file")
+        raise InputError(f"{name}: no such file (check the name, and the directory you run dyncli from)")
     if p.is_dir():
         raise InputError(f"{name}: is a directory (give the YAML files, e.g. {name}/*.yaml)")
     try:
@@ -118,6 +119,11 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
             line, col = doc.locate(("problems",)) or (None, None)
             return [], [Diagnostic(display, line, col, "problems", "expected a non-empty list of problems")]
         prefixes = [("problems", i) for i in range(len(items))]
+    elif isinstance(data, dict) and "type" not in data and (near := _near_key(data, "problems")) is not None:
+        line, col = doc.locate((near,)) or (None, None)
+        return [], [Diagnostic(display, line, col, str(near),
+                               f"unknown top-level key '{near}' (did you mean 'problems'?): a file of several "
+                               "problems lists them under 'problems:'")]
     elif isinstance(data, dict):
         items = [data]
         prefixes = [()]
@@ -143,7 +149,11 @@ def validate(lp: LoadedProblem) -> None:
         lp.error = lp.diagnostic((), "expected a problem: a mapping with 'type'")
         return
     if "type" not in raw:
-        lp.error = lp.diagnostic((), f"missing 'type'; one of: {', '.join(registry.TYPES)}")
+        near = _near_key(raw, "type")
+        if near is not None:
+            lp.error = lp.diagnostic((near,), f"unknown field '{near}' (did you mean 'type'?): every problem names its type")
+        else:
+            lp.error = lp.diagnostic((), f"missing 'type': add 'type: NAME', one of: {', '.join(registry.TYPES)}")
         return
     t = raw["type"]
     if not isinstance(t, str) or t not in registry.TYPES:
@@ -161,6 +171,15 @@ def validate(lp: LoadedProblem) -> None:
         lp.error = lp.diagnostic(exc.path, exc.message)
         return
     lp.model, lp.error = validate_model(lp, cls, raw, params)
+
+
+def _near_key(data: dict, word: str) -> Any:
+    """The key of ``data`` that is a slip for ``word`` (``problem`` for
+    ``problems``, ``Type`` for ``type``), or None."""
+    for k in data:
+        if isinstance(k, str) and k != word and did_you_mean(k, [word]):
+            return k
+    return None
 
 
 def params_of(raw: dict) -> dict[str, float]:
@@ -196,14 +215,14 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
             loc = _strip_tags(raw, err["loc"])
             if loc not in seen:   # one message per field (a union reports each member)
                 seen.add(loc)
-                diags.append(lp.diagnostic(loc, _message(cls, err)))
+                diags.append(lp.diagnostic(loc, _message(cls, err) + degrees_hint(cls, raw, loc)))
         first, *others = sorted(diags, key=lambda d: (d.line or 0, d.col or 0))
         if len(errors) > MAX_ERRORS:
             others.append(lp.diagnostic((), f"{len(errors) - MAX_ERRORS} more errors in this problem not listed"))
         first.others = others
         return None, first
     except InputError as exc:
-        return None, lp.diagnostic(exc.path, exc.message)
+        return None, lp.diagnostic(exc.path, exc.message + degrees_hint(cls, raw, exc.path))
 
 
 def _strip_tags(raw: Any, loc) -> tuple:
@@ -238,9 +257,12 @@ def _message(cls, err: dict) -> str:
         known = f"; known fields: {', '.join(sorted(fields))}" if fields and not hint else ""
         return f"unknown field '{key}'{hint}{known}"
     if t == "missing":
-        return "required field is missing"
+        what = _description(cls, loc)
+        return "required field is missing" + (f": add {loc[-1]} ({what})" if what else "")
     if t == "dyncli":
         return err["msg"]
+    if t in _PLAIN:
+        return _PLAIN[t](err.get("input"), err.get("ctx") or {})
     if t in ("literal_error",):
         return err["msg"].replace("Input should be", "must be")
     if t in ("union_tag_invalid", "union_tag_not_found"):
@@ -252,15 +274,61 @@ def _message(cls, err: dict) -> str:
     return msg.replace("Input should be", "must be")
 
 
+def _shown(x: Any) -> str:
+    from dyncli.expr import _kind
+
+    return repr(x) if isinstance(x, (str, int, float)) and not isinstance(x, bool) and len(repr(x)) <= 40 else _kind(x)
+
+
+def _entries(n: Any) -> str:
+    return f"{n} entry" if n == 1 else f"{n} entries"
+
+
+#: pydantic's wording of the common slips, said the way a problem file is written
+_PLAIN = {
+    "int_from_float": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "int_parsing": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "int_type": lambda x, c: f"must be a whole number, got {_shown(x)}",
+    "bool_parsing": lambda x, c: f"must be true or false, got {_shown(x)}",
+    "bool_type": lambda x, c: f"must be true or false, got {_shown(x)}",
+    "string_type": lambda x, c: f"must be text, got {_shown(x)}",
+    "list_type": lambda x, c: f"must be a list, got {_shown(x)}: write [a, b] or one '- ' line per entry",
+    "dict_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "model_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "model_attributes_type": lambda x, c: f"must be a mapping (name: value lines, or {{name: value}}), got {_shown(x)}",
+    "too_short": lambda x, c: f"must have at least {_entries(c.get('min_length', 1))}, got {c.get('actual_length', 0)}",
+    "too_long": lambda x, c: f"must have at most {_entries(c.get('max_length', '?'))}, got {c.get('actual_length', '?')}",
+}
+
+
+def _description(cls, loc: tuple) -> str:
+    """The declared description of the field at ``loc`` (one short line), or ""."""
+    for m in _models_at(cls, loc[:-1]):
+        info = getattr(m, "model_fields", {}).get(loc[-1]) if loc else None
+        schemas = [getattr(meta, "json_schema", None) for meta in (info.metadata if info is not None else ())]
+        d = (info.description if info is not None else None) or next(
+            (s["description"] for s in schemas if isinstance(s, dict) and s.get("description")), None)
+        if d:
+            return d if len(d) <= 90 else d[:87] + "..."
+    return ""
+
+
 def _fields_at(cls, loc: tuple) -> list[str]:
     """Best effort: the field names of the model found at ``loc``."""
+    names: list[str] = []
+    for m in _models_at(cls, loc):
+        names += list(getattr(m, "model_fields", {}))
+    return names
+
+
+def _models_at(cls, loc: tuple) -> list:
+    """Best effort: the models found at ``loc``."""
     import typing
 
     from pydantic import BaseModel
 
     def models_in(tp) -> list:
         out = []
-        origin = typing.get_origin(tp)
         if isinstance(tp, type) and issubclass(tp, BaseModel):
             return [tp]
         for a in typing.get_args(tp) or ():
@@ -286,10 +354,7 @@ def _fields_at(cls, loc: tuple) -> list[str]:
             tagged = [m for m in nxt if part in tags(m)]
             nxt = tagged or nxt  # union tag: keep the member it names
         current = nxt or current
-    names: list[str] = []
-    for m in current:
-        names += list(getattr(m, "model_fields", {}))
-    return names
+    return current
 
 
 def load_paths(names: list[str]) -> tuple[list[LoadedProblem], list[Diagnostic]]:

@@ -116,6 +116,10 @@ def solver(name: str) -> Callable:
 
     def solve(model, options=None):
         result = fn(model, options) if options is not None else fn(model)
+        if info.motion is not None and getattr(model, "find", None):
+            from dyncli.motion_find import resolved
+
+            resolved(model, result, fn, info.motion.get("rates", {}), info.motion.get("fast", ()))
         return info.attach(result)
 
     solve.__wrapped__ = fn  # type: ignore[attr-defined]

@@ -44,8 +44,12 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
             result = fn(lp.model, options)
         if isinstance(result, Result):
             _library_warnings(result, caught)
+            _degrees_warnings(result, lp)
     except InputError as exc:
-        return Outcome(lp, None, 2, str(lp.diagnostic(exc.path, exc.message)))
+        from dyncli.angles import degrees_hint
+
+        hint = degrees_hint(type(lp.model), lp.raw, exc.path)
+        return Outcome(lp, None, 2, str(lp.diagnostic(exc.path, exc.message + hint)))
     except NumericalError as exc:
         d = Diagnostic(lp.file, None, None, None, f"{lp.title}: numerical step failed: {exc}")
         pos = lp.doc.locate(lp.prefix) if lp.doc else None
@@ -84,6 +88,14 @@ def _too_large(lp: LoadedProblem, exc: OverflowError) -> str:
     if pos:
         d.line, d.col = pos
     return str(d)
+
+
+def _degrees_warnings(result: Result, lp: LoadedProblem) -> None:
+    """A bare angle beyond a full turn (``theta: 30`` meant as degrees): named, with ``30*deg``."""
+    from dyncli.angles import degrees_warnings
+
+    for w in degrees_warnings(lp.model, lp.raw):
+        result.warn(w)
 
 
 def _internal(lp: LoadedProblem, exc: BaseException) -> str:
@@ -196,7 +208,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     try:
         wanted = parse_units(units)
         if long and fmt != "csv":
-            raise InputError("--long: only with --format csv (one row per time)")
+            raise InputError("--long works only with --format csv (one row per time): add --format csv")
     except InputError as exc:
         _err(exc.message)
         return 2

@@ -43,6 +43,9 @@ class Document:
     # mapping entry, ``pos`` at the value.
     pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
     key_pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
+    # the source text of scalars YAML read as numbers or booleans (``012345671``,
+    # ``1:30``, ``1.50``), by value path; ``path + ("<key>",)`` for mapping keys
+    text: dict[tuple, str] = field(default_factory=dict)
 
     def locate(self, path: tuple) -> tuple[int, int] | None:
         """Best position for ``path``: the key of the entry if known, else the
@@ -92,6 +95,9 @@ def load(text: str | bytes) -> Document:
         nodes = list(yaml.compose_all(text, Loader=loader))
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
+        tab = _tab_near(text, m.line if m is not None else None, m.column if m is not None else None)
+        if tab is not None:
+            raise YamlError(f"tab character at line {tab[0]}, column {tab[1]}: use spaces for indentation", *tab) from None
         msg = exc.problem or exc.context or "malformed YAML"
         if m is not None:
             raise YamlError(f"YAML syntax error: {msg}", m.line + 1, m.column + 1) from None
@@ -114,6 +120,23 @@ def load(text: str | bytes) -> Document:
     counter = [0]
     doc.data = _construct(nodes[0], (), doc, counter, 0)
     return doc
+
+
+def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] | None:
+    """(line, column), 1-based, of the tab that a YAML syntax error at the
+    0-based ``line``/``col`` is about: the character at the error itself, or
+    the first tab in the indentation of a line up to the error's (the
+    parsers name it as "a character that cannot start any token")."""
+    if line is None:
+        return None
+    lines = text.split("\n")
+    if line < len(lines) and col is not None and lines[line][col:col + 1] == "\t":
+        return line + 1, col + 1
+    for i, ln in enumerate(lines[:line + 1]):
+        indent = len(ln) - len(ln.lstrip(" \t"))
+        if "\t" in ln[:indent] and ln[indent:] and not ln[indent:].startswith("#"):
+            return i + 1, ln.index("\t") + 1
+    return None
 
 
 def _precheck(text: str, loader) -> None:
@@ -162,6 +185,8 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
     if tag not in _ALLOWED_TAGS:
         raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
     if isinstance(node, yaml.ScalarNode):
+        if tag != _STD + "str" and tag != _STD + "null":
+            doc.text[path] = node.value
         try:
             return _scalar(node)
         except (ValueError, OverflowError):
@@ -180,12 +205,15 @@ def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int)
                 raise YamlError("mapping keys must be plain names", kl, kc)
             key = _construct(knode, path + ("<key>",), doc, counter, depth + 1)
             doc.pos.pop(path + ("<key>",), None)
+            ktext = doc.text.pop(path + ("<key>",), None)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
                 key = str(knode.value)
             if key in out:
                 kl, kc = _mark(knode)
                 raise YamlError(f"duplicate key {key!r}", kl, kc)
             doc.key_pos[path + (key,)] = _mark(knode)
+            if ktext is not None:
+                doc.text[path + (key, "<key>")] = ktext
             out[key] = _construct(vnode, path + (key,), doc, counter, depth + 1)
         return out
     raise YamlError("unsupported YAML node", line, col)  # pragma: no cover

@@ -11,7 +11,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 EQUATIONS = sorted(ROOT.glob("dyncli/topics/*/equations.py"))
-MODULES = [f"dyncli.topics.{p.parent.name}.equations" for p in EQUATIONS] + ["dyncli.numfmt", "dyncli.vec3"]
+MODULES = [f"dyncli.topics.{p.parent.name}.equations" for p in EQUATIONS] + ["dyncli.numfmt", "dyncli.vec3", "dyncli.phase",
+                                                                          "dyncli.topics.particle.kepler"]
 
 
 def test_equations_modules_exist():

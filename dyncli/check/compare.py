@@ -236,10 +236,15 @@ def round2(x: float) -> float:
 
 
 def _rel_text(rel: float) -> str:
-    """2 significant figures: ``0.0123 -> "1.2%"``, ``999 -> "1e+03"``."""
+    """2 significant figures, a percentage up to 1,000 %, beyond it how many
+    times the correct value's size: ``0.0123 -> "1.2%"``, ``99 -> "×99"``,
+    ``3.7e7 -> "×3.7e+07"``."""
     if rel < 10:
         return f"{round2(rel) * 100:g}%"
-    return f"{round2(rel):g}"
+    return f"×{round2(rel):g}"
+
+
+rel_text = _rel_text
 
 
 def _hints(ratios: list[float], tol: Tolerance) -> tuple[str | None, list[str]]:

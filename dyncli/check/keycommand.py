@@ -29,12 +29,10 @@ def load_key(key_name: str, root: str | None):
 
 
 def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: bool = False,
-                  output: str | None = None, student: str | None = None, root: str | None = None) -> int:
+                  output: str | None = None, student: str | None = None, root: str | None = None,
+                  id_from: str = "student", upload: bool = False) -> int:
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
-    from dyncli.check.keymode import KeyGrader, KeyReport
-    from dyncli.check.submission import read_submission
-
     if not names:
         _err("give the submissions to grade (or --selftest to check the key)")
         return 2
@@ -49,18 +47,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             except _OutputError as exc:
                 _err(exc)
         return 2
-    grader = KeyGrader(key, files, reveal)
-    report = KeyReport(key, reveal=reveal)
-    for name in names:
-        sr = grader.grade(read_submission(name, student))
-        report.submissions.append(sr)
-        for d in sr.diagnostics:
-            _err(d)
-        for q in sr.questions:
-            if q.status in ("invalid", "error"):
-                where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
-                _err(f"{where}: answers.{q.id}: {q.message}")
-    report.solves = files.solves
+    report = grade_all(key, files, names, reveal, student, id_from, upload)
     if fmt == "table":
         from dyncli.render.emit import write_view
 
@@ -85,6 +72,56 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
     _err(keyformats.summary_line(report))
     return report.exit_code
+
+
+def grade_all(key, files, names: list[str], reveal: bool = False, student: str | None = None,
+              id_from: str = "student", upload: bool = False):
+    """Every submission graded (a :class:`KeyReport`); each problem on stderr."""
+    from dyncli.check.keymode import KeyGrader, KeyReport, SubmissionResult
+    from dyncli.check.submission import read_submission
+    from dyncli.loader import Diagnostic
+
+    grader = KeyGrader(key, files, reveal)
+    report = KeyReport(key, reveal=reveal)
+    if upload:
+        names, problem = pick_upload(key, names)
+        if problem:
+            report.submissions.append(SubmissionResult("upload", None, key.max_score,
+                                                       diagnostics=[Diagnostic("upload", None, None, None, problem)]))
+            _err(f"upload: {problem}")
+    for name in names:
+        sr = grader.grade(read_submission(name, student, id_from))
+        report.submissions.append(sr)
+        for d in sr.diagnostics:
+            _err(d)
+        for q in sr.questions:
+            if q.status in ("invalid", "error"):
+                where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
+                _err(f"{where}: answers.{q.id}: {q.message}")
+    report.solves = files.solves
+    report.claims()
+    for w in report.warnings:
+        _err(f"warning: {w['message']}")
+    return report
+
+
+def pick_upload(key, names: list[str]) -> tuple[list[str], str | None]:
+    """The one submission among a student's uploaded files: the file the
+    key's ``submission:`` names, else the only .yaml/.yml file; otherwise
+    ([], why) listing the files."""
+    listed = ", ".join(shown(Path(n).name) for n in names[:20]) + (", ..." if len(names) > 20 else "")
+    if key.submission:
+        hits = [n for n in names if Path(n).name == key.submission]
+        if len(hits) == 1:
+            return hits, None
+        return [], (f"upload one file named {shown(key.submission)}" + (f"; you uploaded: {listed}" if names else "")
+                    + (" (several files have that name)" if hits else ""))
+    yaml_files = [n for n in names if Path(n).suffix.lower() in (".yaml", ".yml")]
+    if len(yaml_files) == 1:
+        return yaml_files, None
+    if not yaml_files:
+        return [], "no submission found: upload one .yaml file" + (f" (you uploaded: {listed})" if names else "")
+    return [], f"upload one .yaml file, not {len(yaml_files)}: you uploaded {listed}"
 
 
 def _invalid_key_json(key_name: str, fmt: str) -> str:
@@ -117,13 +154,18 @@ def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
         return 2
     grader = KeyGrader(key, files)
     values: dict[str, list] = {q.id: [] for q in key.questions}
+    problem = _unanswerable(grader)
+    if problem:
+        _err(f"{key.file}: selftest failed: {problem}")
+        return 1
+    warned: set[str] = set()
     for sid in selftest_ids(n if key.variants is not None else 0):
         try:
             params = grader.params(sid)
         except VariantError as exc:
             _err(f"{key.file}: variants.require: {exc}")
             return 2
-        failure = _selftest_variant(grader, sid, values)
+        failure = _selftest_variant(grader, sid, values, warned)
         if failure:
             shown_params = ", ".join(f"{k} = {v:g}" for k, v in params.items()) or "no variant parameters"
             _err(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
@@ -137,7 +179,41 @@ def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
     return 0
 
 
-def _selftest_variant(grader, sid: str, values: dict) -> str | None:
+def _unanswerable(grader) -> str | None:
+    """A question no student can answer, on the key's first variant: an
+    ``answer`` path that is a record, a ``unit`` of another dimension."""
+    from dyncli.check.quantities import result_unit, unit_spec
+
+    for q in grader.key.questions:
+        t = grader.truth(q, "")
+        if t.error:
+            continue
+        if _has_record(t.value):
+            return (f"question {shown(q.id)}: answer '{shown(q.answer)}' is a record, which no submission can "
+                    "answer: point it at one of its entries (e.g. " + ", ".join(
+                        f"{shown(q.answer)}.{shown(k)}" for k in list(_first_record(t.value))[:3]) + ")")
+        ru = result_unit(t.units, q.answer)
+        if q.unit and ru:
+            try:
+                want, got = unit_spec(q.unit).dim, unit_spec(ru, bare=False).dim
+            except ValueError:  # pragma: no cover - both were read before
+                continue
+            if want != got:
+                return (f"question {shown(q.id)}: unit '{shown(q.unit)}' is not of the dimension of its answer "
+                        f"'{shown(q.answer)}' (the solver gives {shown(ru)}): the right answer with its unit "
+                        "would score 0; give a unit of that dimension")
+    return None
+
+
+def _has_record(x) -> bool:
+    return isinstance(x, dict) or (isinstance(x, list) and any(_has_record(v) for v in x))
+
+
+def _first_record(x) -> dict:
+    return x if isinstance(x, dict) else next(_first_record(v) for v in x if _has_record(v))
+
+
+def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None) -> str | None:
     from dyncli.check.keymode import scalar
     from dyncli.check.submission import Submission
 
@@ -153,6 +229,17 @@ def _selftest_variant(grader, sid: str, values: dict) -> str | None:
             return f"question {shown(q.id)} ({shown(q.answer)}) is not reached for this variant"
         if not _finite(t.value):
             return f"question {shown(q.id)} ({shown(q.answer)}) is not finite for this variant"
+        if q.carry is not None and warned is not None and q.id + "\x00carry" not in warned \
+                and _repeats_input(grader, q, sid, t):
+            warned.add(q.id + "\x00carry")
+            _err(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
+                 f"to {shown(q.carry[0])} it carries (variant '{shown(sid)}'): repeating that answer would be "
+                 "correct, and no carried answer can earn credit (it would repeat its input)")
+        if t.roundoff and warned is not None and q.id not in warned:
+            warned.add(q.id)
+            _err(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
+                 f"variant '{shown(sid)}': graded as exactly 0 (correct within {_zero_bound(q.tol)}), never "
+                 "diagnosed; make the problem give 0 exactly or ask for another quantity")
         values[q.id].append(t.value)
         sub.answers[q.id] = _in_unit(t.value, q.unit) if scalar(t.value) is not None else t.value
     sub.student = sid
@@ -161,6 +248,19 @@ def _selftest_variant(grader, sid: str, values: dict) -> str | None:
         if r.status != "correct":
             return f"the key does not grade its own answer to {shown(r.id)} as correct ({r.status}: {r.message})"
     return None
+
+
+def _repeats_input(grader, q, sid: str, t) -> bool:
+    from dyncli.check.compare import number_ok
+    from dyncli.check.keymode import scalar
+
+    src = grader.truth(grader.key.question(q.carry[0]), sid)
+    y, c = scalar(t.value), scalar(src.value)
+    return y is not None and c is not None and number_ok(y, c, q.tol)
+
+
+def _zero_bound(tol) -> str:
+    return f"{0.51 * 10.0 ** (1 - tol.sigfigs):g}" if tol.sigfigs is not None else f"atol = {tol.atol:g}"
 
 
 def _in_unit(x: float, unit: str | None) -> float:
@@ -195,3 +295,19 @@ def _print_ranges(key, values: dict) -> None:
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:
         print("  ".join(c.ljust(w) for c, w in zip(r, widths)) + "  " + r[4])
+    _print_carries(key, values)
+
+
+def _print_carries(key, values: dict) -> None:
+    """What a carried answer may carry: a factor WINDOW around the values the
+    earlier question has (docs/check.md, "Carried answers")."""
+    from dyncli.check.carry import WINDOW
+    from dyncli.render.table import fmt_num
+
+    for q in key.questions:
+        nums = [abs(v) for v in values.get(q.carry[0], []) if isinstance(v, (int, float)) and not isinstance(v, bool)
+                and v != 0] if q.carry else []
+        if nums:
+            print(f"carry: {oneline(q.id)} takes the answer to {oneline(q.carry[0])} (either sign) within "
+                  f"{fmt_num(min(nums) / WINDOW, 3)} ... {fmt_num(max(nums) * WINDOW, 3)} "
+                  f"(a factor {WINDOW:g} around its true answers above)")

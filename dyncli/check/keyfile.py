@@ -30,8 +30,11 @@ from dyncli.check.safe import oneline, shown
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
-TOP_KEYS = ("title", "tolerance", "variants", "questions")
-Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title")
+TOP_KEYS = ("title", "tolerance", "variants", "questions", "submission")
+Q_KEYS = ("id", "problem", "index", "answer", "points", "tolerance", "unit", "partial", "carry", "visible", "title",
+          "feedback")
+FEEDBACK_KEYS = ("correct", "carried", "partial", "wrong", "missing", "invalid") + SLIPS
+MAX_FEEDBACK = 1000
 MAX_ID = 64
 MAX_QUESTIONS = 1000
 
@@ -50,6 +53,7 @@ class Question:
     carry: tuple[str, str] | None = None       # (from question id, param name)
     visible: bool = True
     title: str | None = None
+    feedback: dict[str, str] = field(default_factory=dict)   # status or slip -> the instructor's text
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
 
@@ -63,6 +67,7 @@ class Key:
     variants: Any = None                       # dyncli.check.variants.Variants or None
     questions: list[Question] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    submission: str | None = None              # the file name a Gradescope upload must have
 
     def question(self, qid: str) -> Question | None:
         return next((q for q in self.questions if q.id == qid), None)
@@ -120,6 +125,13 @@ class _Reader:
                                 f"{', '.join(TOP_KEYS)}")
         if isinstance(data.get("title"), str):
             self.key.title = data["title"]
+        if "submission" in data:
+            sub = data["submission"]
+            if not isinstance(sub, str) or not sub.strip() or "/" in sub or "\\" in sub or len(sub) > 200 \
+                    or oneline(sub) != sub:
+                self.diag(("submission",), "submission must be a file name such as answers.yaml (no folder)", key=False)
+            else:
+                self.key.submission = sub.strip()
         if "tolerance" in data:
             try:
                 self.key.tol = parse_tolerance(data["tolerance"], Tolerance(), ("tolerance",))
@@ -174,7 +186,9 @@ class _Reader:
             self.rejected.add(q.id)
 
     def fields(self, q: Question, item: dict, path: tuple) -> None:
-        qid = item.get("id")
+        from dyncli.check.submission import as_written
+
+        qid = as_written(self.doc, path + ("id",), item.get("id"))
         if isinstance(qid, bool) or not isinstance(qid, (str, int)) or not str(qid).strip() \
                 or len(str(qid)) > MAX_ID or oneline(qid) != str(qid):
             raise _Bad(path + ("id",), f"id must be a short name (1 to {MAX_ID} printable characters)", key=False)
@@ -198,10 +212,15 @@ class _Reader:
             q.partial = self.partial(item["partial"], path + ("partial",))
         if "carry" in item:
             q.carry = self.carry(item["carry"], path + ("carry",))
+            from dyncli.check.submission import as_written
+
+            q.carry = (str(as_written(self.doc, path + ("carry", "from"), item["carry"]["from"])), q.carry[1])
         if "visible" in item:
             if not isinstance(item["visible"], bool):
                 raise _Bad(path + ("visible",), "visible must be true or false", key=False)
             q.visible = item["visible"]
+        if "feedback" in item:
+            q.feedback = self.feedback(item["feedback"], path + ("feedback",))
         if "title" in item:
             if not isinstance(item["title"], str):
                 raise _Bad(path + ("title",), "title must be text", key=False)
@@ -261,6 +280,20 @@ class _Reader:
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v <= 1:
                 raise _Bad(path + (k,), "a partial credit is a fraction from 0 to 1", key=False)
             out[k] = float(v)
+        return out
+
+    def feedback(self, raw: Any, path: tuple) -> dict[str, str]:
+        if not isinstance(raw, dict) or not raw:
+            raise _Bad(path, f"feedback must be a mapping status-or-slip: text ({', '.join(FEEDBACK_KEYS)})",
+                       key=False)
+        out = {}
+        for k, v in raw.items():
+            if k not in FEEDBACK_KEYS:
+                raise _Bad(path + (k,), f"unknown feedback key '{shown(k)}'{did_you_mean(str(k), FEEDBACK_KEYS)}; "
+                                        f"known: {', '.join(FEEDBACK_KEYS)}")
+            if not isinstance(v, str) or not v.strip() or len(v) > MAX_FEEDBACK:
+                raise _Bad(path + (k,), f"feedback text must be 1 to {MAX_FEEDBACK} characters", key=False)
+            out[k] = v.strip()
         return out
 
     def carry(self, raw: Any, path: tuple) -> tuple[str, str]:

@@ -101,6 +101,11 @@ def question_json(q: QuestionResult, reveal: bool) -> dict:
            "message": q.message, "given": jsonable(q.given), "answer": q.answer, "title": q.title,
            "visible": q.visible, "line": q.line, "col": q.col,
            "relative_error": jsonable(rel) if q.status not in ("correct", "carried") else None}
+    if q.feedback is not None:
+        rec["feedback"] = q.feedback
+    if q.carried_rel_error is not None and q.status not in ("correct", "carried"):
+        c = q.carried_rel_error
+        rec["carried_relative_error"] = jsonable(c if reveal else round2(c))
     if reveal and q.status != "error":
         rec["expected"] = jsonable(q.expected)
     return rec
@@ -116,7 +121,7 @@ def to_json(report: KeyReport) -> dict:
                      "unknown": [{"id": u["id"], "message": u["message"]} for u in s.unknown]})
     return {"key": report.key.file, "title": report.key.title, "score": report.score,
             "max_score": report.max_score, "exit_code": report.exit_code, "counts": report.counts(),
-            "solves": report.solves, "submissions": subs}
+            "solves": report.solves, "submissions": subs, "warnings": list(report.warnings)}
 
 
 def render_json(report: KeyReport) -> str:
@@ -150,7 +155,7 @@ def render_junit(report: KeyReport) -> str:
                 tc.set("line", str(q.line))
             n[0] += 1
             if q.status in ("correct", "carried"):
-                if q.status == "carried":
+                if q.message:           # carried, or the instructor's feedback for a correct answer
                     ET.SubElement(tc, "system-out").text = _x(oneline(q.message))
                 continue
             text = feedback(q, report.reveal)
@@ -196,6 +201,9 @@ def render_github(report: KeyReport) -> str:
         listed = " | ".join(f"{oneline(f)}:{l or ''}: {t}: {m}" for f, l, _, t, m in rest)
         lines.append(gh_command("notice", f"{len(rest)} more not annotated: {listed}",
                                 title=f"dyncli check: {len(rest)} more"))
+    for w in report.warnings:
+        f = oneline(w["files"][-1]) if w["files"][-1] not in ("<stdin>", "") else None
+        lines.append(gh_command("warning", oneline(w["message"]), file=f, title="one student id, several submissions"))
     lines.append(gh_command("notice", summary_line(report), title="dyncli check score"))
     return "\n".join(lines) + "\n"
 
@@ -211,20 +219,33 @@ def step_summary_markdown(report: KeyReport) -> str:
 
 
 def render_gradescope(report: KeyReport) -> str:
-    """Gradescope's results.json: a test per question with ``visibility``
-    (``visible: false`` -> ``after_published``); the summary counts only
-    visible questions, so it says nothing of the hidden ones."""
+    """Gradescope's results.json (its autograder specification): a test per
+    question with ``score``, ``max_score``, ``output`` and ``visibility``
+    (``visible: false`` -> ``after_published``); ``output`` at the top counts
+    only visible questions.  The top-level ``score`` overrides the sum of the
+    tests, so it is written only when every question is visible: with hidden
+    questions Gradescope totals the tests itself, and no number written here
+    for the student before publication counts a hidden question.  An invalid
+    submission gives every question 0 with its one-line error."""
     tests = []
     multi = len(report.submissions) > 1
     for s in report.submissions:
         pre = f"{who(s)}: " if multi else ""
-        for d in s.diagnostics:
-            tests.append({"name": f"{pre}submission", "score": 0, "max_score": 0, "status": "failed",
-                          "output": oneline(d), "visibility": "visible"})
+        if s.diagnostics:
+            error = oneline(s.diagnostics[0].message if not s.diagnostics[0].path
+                            else f"{s.diagnostics[0].path}: {s.diagnostics[0].message}")
+            for q in report.key.questions:
+                title = q.title or (q.problem.title if q.problem is not None else "")
+                tests.append({"name": f"{pre}{oneline(q.id)}" + (f" ({oneline(title)})" if title else ""),
+                              "score": 0, "max_score": q.points, "status": "failed",
+                              "output": f"not graded: {error}",
+                              "visibility": "visible" if q.visible else "after_published"})
         for q in s.questions:
             out = STATUS_TEXT[q.status]
             text = feedback(q, report.reveal)
-            if text:
+            if text.startswith(out):          # "not graded: ..." says its status itself
+                out = text
+            elif text:
                 out += f": {text}"
             if q.given is not None and q.status not in ("correct",):
                 out += f"\ngiven: {_given(q)}"
@@ -237,8 +258,14 @@ def render_gradescope(report: KeyReport) -> str:
                           "output": oneline(u["message"]), "visibility": "visible"})
     visible = [q for s in report.submissions for q in s.questions if q.visible]
     full = sum(1 for q in visible if q.status in ("correct", "carried"))
-    hidden = sum(1 for s in report.submissions for q in s.questions if not q.visible)
-    output = f"{full} of {len(visible)} visible answers with full points" + \
-        (f"; {hidden} question{'s' if hidden != 1 else ''} graded after release" if hidden else "")
-    doc = {"score": report.score, "output": output, "tests": tests}
+    hidden = sum(1 for q in report.key.questions if not q.visible) * max(1, len(report.submissions))
+    bad = [s for s in report.submissions if s.diagnostics]
+    if bad and not multi:
+        output = "Not graded: " + oneline(bad[0].diagnostics[0])
+    else:
+        output = f"{full} of {len(visible)} visible answers with full points" + \
+            (f"; {hidden} question{'s' if hidden != 1 else ''} graded after release" if hidden else "")
+    doc = {"output": output, "tests": tests}
+    if not hidden or (bad and not multi):
+        doc = {"score": report.score, **doc}
     return json_text(doc)

@@ -18,11 +18,13 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from dyncli.check.compare import compare, has_unit_text
+from dyncli.check import carry, zeros
+from dyncli.check.compare import compare, has_unit_text, rel_text as _pct
 from dyncli.check.diagnose import TEXT, diagnose
 from dyncli.check.engine import _diag_from_message, lookup
 from dyncli.check.keyfile import Key, Question
 from dyncli.check.quantities import NO_UNIT, UnitSpec, WrongDimension, convert, result_unit, unit_spec
+from dyncli.check.formats import fmt_given
 from dyncli.check.safe import shown
 from dyncli.check.submission import Submission
 from dyncli.loader import Diagnostic, LoadedProblem
@@ -39,6 +41,8 @@ class Truth:
     error: str | None = None
     code: int = 0
     reached: bool = True
+    roundoff: bool = False         # a number zero up to round-off, graded as 0 (dyncli.check.zeros)
+    quotes_values: bool = False    # a solver's message: may quote values derived from true answers
 
 
 @dataclass
@@ -52,6 +56,8 @@ class QuestionResult:
     diagnosis: str | None = None
     message: str = ""
     rel_error: float | None = None
+    feedback: str | None = None              # the key's feedback text shown with this status or slip
+    carried_rel_error: float | None = None   # from the answer that follows from the student's carried input
     line: int | None = None
     col: int | None = None
     visible: bool = True
@@ -90,10 +96,25 @@ class KeyReport:
     submissions: list[SubmissionResult] = field(default_factory=list)
     solves: int = 0
     reveal: bool = False
+    warnings: list[dict] = field(default_factory=list)     # {student, files, message}
 
     @property
     def score(self) -> float:
         return sum(s.score for s in self.submissions)
+
+    def claims(self) -> None:
+        """A warning for every student id that several submissions claim."""
+        by: dict[str, list[SubmissionResult]] = {}
+        for s in self.submissions:
+            if s.student is not None:
+                by.setdefault(s.student, []).append(s)
+        for sid, subs in by.items():
+            if len(subs) > 1:
+                files = [s.file for s in subs]
+                self.warnings.append({"student": sid, "files": files, "message":
+                                      f"{len(files)} submissions claim student '{shown(sid)}' ("
+                                      + ", ".join(shown(f) for f in files[:5]) + (", ..." if len(files) > 5 else "")
+                                      + "): each is graded with that student's numbers; check who wrote which"})
 
     @property
     def max_score(self) -> float:
@@ -172,7 +193,8 @@ class KeyGrader:
                 if src.error or carried is None:
                     t = Truth(error=src.error or f"the true answer to '{shown(q.carry[0])}' (carried forward) "
                                                  "is not one finite number (a carry needs a question whose answer "
-                                                 "is a single number)", code=src.code or 2)
+                                                 "is a single number)", code=src.code or 2,
+                              quotes_values=src.quotes_values)
                     self._truth[memo] = t
                     return t
             extra[q.carry[1]] = carried
@@ -184,7 +206,7 @@ class KeyGrader:
         outcome = self.files.solve(self.problem(q, values, extra), validated=False)
         if outcome.exit_code != 0 or outcome.result is None:
             d = _diag_from_message(outcome.message or "")
-            return Truth(error=d.message, code=outcome.exit_code or 3)
+            return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True)
         results = getattr(outcome, "_plain", None)
         if results is None:
             from dyncli.render.jsonout import jsonable
@@ -194,7 +216,11 @@ class KeyGrader:
         if not found:
             return Truth(error=f"the key's answer path '{shown(q.answer)}' is not in the results"
                                + (f" ({msg})" if msg else ""), code=2)
-        return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer))
+        scale = getattr(outcome, "_scale", None)
+        if scale is None:
+            scale = outcome._scale = zeros.scale_of(results)
+        value, roundoff = zeros.snap(value, scale)
+        return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer), roundoff=roundoff)
 
     def unit(self, q: Question, truth: Truth, given: Any = None) -> UnitSpec:
         """How ``given`` is read: the question's ``unit``, else (for an
@@ -223,6 +249,9 @@ class KeyGrader:
             return sr
         for q in self.key.questions:
             r = self.grade_one(q, sub, sr)
+            text = q.feedback.get(r.diagnosis or "") or q.feedback.get(r.status)
+            if text:           # the instructor's words for this status or slip, in every format
+                r.feedback, r.message = text, (f"{r.message}; {text}" if r.message else text)
             r.line, r.col = sub.positions.get(q.id, (None, None))
             sr.questions.append(r)
         self.unknown(sub, sr)
@@ -234,8 +263,11 @@ class KeyGrader:
                            title=title, answer=q.answer)
         t = self.truth(q, sub.student)
         r.expected = t.value
-        if t.error:
-            r.status, r.message = "error", f"not graded: the key's problem could not be solved ({t.error})"
+        if t.error:   # the detail may quote values derived from true answers: only with --reveal
+            r.status = "error"
+            r.message = ("not graded: the key's problem could not be solved for this variant"
+                         + (f" ({t.error})" if self.reveal or not t.quotes_values
+                            else " (tell your instructor: --selftest shows why)"))
             sr.error_code = max(sr.error_code, t.code)
             return r
         if r.given is None:
@@ -258,7 +290,7 @@ class KeyGrader:
 
     def _carried(self, q: Question, sub: Submission, r: QuestionResult, spec: UnitSpec) -> bool:
         """Grade against the problem re-solved with the student's answer to
-        the question this one carries from (when that answer was not correct)."""
+        the question this one carries from (:mod:`dyncli.check.carry`)."""
         if q.carry is None or sub.answers.get(q.carry[0]) is None:
             return False
         src = self.key.question(q.carry[0])
@@ -267,14 +299,52 @@ class KeyGrader:
             return False
         src_spec = self.unit(src, true_src, sub.answers[src.id])
         mine = _si_scalar(sub.answers[src.id], src_spec)
-        if mine is None or compare(sub.answers[src.id], true_src.value, src.tol, src_spec).correct:
+        if mine is None:
             return False
-        alt = self.truth(q, sub.student, carried=mine)
-        if alt.error or not compare(r.given, alt.value, q.tol, spec).correct:
+        src_ok = compare(sub.answers[src.id], true_src.value, src.tol, src_spec).correct
+        if not self.plausible(src, mine, sub):
+            if not src_ok:
+                r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: it is too far "
+                              f"from any value {shown(src.id)} can have (more than {carry.WINDOW:g} times off)")
             return False
-        r.status, r.score, r.diagnosis, r.rel_error = "carried", q.points, None, None
-        r.message = f"correct with your answer to {shown(src.id)} carried forward"
-        return True
+        g = _si_scalar(r.given, spec)
+        if g is not None and carry.repeats(g, mine, q.tol):
+            if not src_ok:
+                r.message += (f"; not graded with your answer to {shown(src.id)} carried forward: your answer "
+                              f"repeats it and shows nothing of this question's own part")
+            return False
+        h = carry.halfwidth(sub.answers[src.id], sub.written.get(src.id), mine)
+        points = (mine - h, mine, mine + h) if h > 0 else (mine,)
+        alts = [self.truth(q, sub.student, carried=c) for c in points]
+        values = [None if a.error else a.value for a in alts]
+        if any(v is not None and compare(r.given, v, q.tol, spec).correct for v in values) or \
+                carry.between(g, [scalar(v) for v in values]):
+            r.status, r.score, r.diagnosis, r.rel_error = "carried", q.points, None, None
+            r.message = f"correct with your answer to {shown(src.id)} carried forward"
+            return True
+        rel = carry.nearest_rel(g, [scalar(v) for v in values])
+        if not src_ok and rel is not None:
+            r.carried_rel_error = rel
+            r.message = (f"relative error {_pct(rel)} from the answer that follows from your "
+                         f"{shown(src.id)} = {shown(fmt_given(sub.answers[src.id]), 24)} (carried forward) "
+                         f"exceeds the tolerance ({q.tol.describe()})")
+        return False
+
+    def plausible(self, src: Question, c: float, sub: Submission) -> bool:
+        """Whether ``c`` is a value the question ``src`` can carry forward:
+        within :data:`~dyncli.check.carry.WINDOW` of its true answer, or of the
+        answer that follows from the student's own plausible earlier answer."""
+        if carry.in_window(c, scalar(self.truth(src, sub.student).value)):
+            return True
+        if src.carry is None or sub.answers.get(src.carry[0]) is None:
+            return False
+        up = self.key.question(src.carry[0])
+        t_up = self.truth(up, sub.student)
+        m = None if t_up.error else _si_scalar(sub.answers[up.id], self.unit(up, t_up, sub.answers[up.id]))
+        if m is None or not self.plausible(up, m, sub):
+            return False
+        alt = self.truth(src, sub.student, carried=m)
+        return not alt.error and carry.in_window(c, scalar(alt.value))
 
     def _partial(self, q: Question, r: QuestionResult, t: Truth, spec: UnitSpec) -> None:
         if r.diagnosis is None:

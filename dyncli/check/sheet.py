@@ -49,6 +49,10 @@ def sheet(key, grader, student: str) -> dict:
     problems = []
     for lp, qs in _groups(key):
         raw = grader.problem(qs[0], values, {}).raw
+        carried = {q.carry[1]: q.carry[0] for q in qs if q.carry is not None}
+        if carried and isinstance(raw, dict) and isinstance(raw.get("params"), dict):
+            # the student fills in their own earlier answer, never the key's default
+            raw = {**raw, "params": {**raw["params"], **{p: {"carried": src} for p, src in carried.items()}}}
         problems.append({"title": lp.title, "type": lp.type, "problem": raw,
                          "questions": [{"id": q.id, "answer": q.answer, "points": q.points,
                                         **({"unit": u} if (u := unit_of(q, grader, student)) else {}),
@@ -76,6 +80,9 @@ def render_markdown(key, doc: dict) -> str:
     lines += ["## Problems", ""]
     for p in doc["problems"]:
         lines += [f"### {oneline(p['title'])}", ""]
+        ps = p["problem"].get("params") if isinstance(p["problem"], dict) else None
+        if isinstance(ps, dict) and ps:
+            lines += ["Data: " + "; ".join(f"`{oneline(n)}` = {_datum(v, units.get(n))}" for n, v in ps.items()), ""]
         for q in p["questions"]:
             extra = f" ({oneline(q['title'])})" if q.get("title") else ""
             unit = f", in {oneline(q['unit'])}" if q.get("unit") else ""
@@ -86,6 +93,14 @@ def render_markdown(key, doc: dict) -> str:
     lines += ["Answer in a submission file (`dyncli variant KEY --student ID --template`): numbers, constant",
               "expressions (`\"2*pi\"`) or numbers with units (`\"12 m/s\"`).", ""]
     return "\n".join(lines)
+
+
+def _datum(v: Any, unit: str | None) -> str:
+    if isinstance(v, dict) and "carried" in v:
+        return f"**your answer to {oneline(v['carried'])}**"
+    if isinstance(v, float):
+        return f"{v:g}{' ' + unit if unit else ''}"
+    return oneline(v) + (f" {unit}" if unit and isinstance(v, int) else "")
 
 
 def render_template(key, grader, student: str) -> str:

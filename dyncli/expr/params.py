@@ -24,9 +24,11 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
         raise InputError(f"too many params ({len(names)}, at most {MAX_PARAMS})", "params")
     for n in names:
         if not isinstance(n, str) or not n.isidentifier() or not n.isascii() or keyword.iskeyword(n):
-            raise InputError(f"parameter name {n!r} is not a valid name (letters, digits, _)", f"params.{n}")
+            raise InputError(f"parameter name {n!r} is not a valid name: use letters, digits and _, "
+                             "starting with a letter (e.g. k_1)", f"params.{n}")
         if n in RESERVED:
-            raise InputError(f"parameter name '{n}' is reserved (a constant or function)", f"params.{n}")
+            raise InputError(f"parameter name '{n}' is reserved (a constant or function): rename it (e.g. '{n}_1')",
+                             f"params.{n}")
     parsed: dict[str, Expr] = {}
     for n in names:
         try:
@@ -49,7 +51,7 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
             return values[n]
         if n in visiting:
             cyc = " -> ".join(visiting[visiting.index(n):] + [n])
-            raise InputError(f"params refer to each other in a cycle: {cyc}", f"params.{n}")
+            raise InputError(f"params refer to each other in a cycle: {cyc}; give one of them a value", f"params.{n}")
         visiting.append(n)
         e = parsed[n]
         deps = {d: value_of(d) for d in e.variables}

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import math
+import re
 from typing import Any, Iterable, Mapping
 
 from dyncli.expr.evaluate import _fold
@@ -109,6 +110,22 @@ def constant(text: Any, params: Mapping[str, float] | None = None) -> float:
     return v
 
 
+_DECIMAL_COMMA = re.compile(r"(?<![\w.])(\d+),(\d+)(?![\w.])")
+
+
+def _decimal_comma(text: str) -> None:
+    """A comma between two numbers is a decimal comma (2,5) or a thousands
+    separator (1,000): say which way to write it."""
+    m = _DECIMAL_COMMA.search(text)
+    if m is None:
+        return
+    a, b = m.groups()
+    if len(b) == 3:
+        raise ExpressionError(f"{a},{b}: numbers take no commas: write {a}{b} "
+                              f"(or {a}.{b} if the comma is a decimal comma)")
+    raise ExpressionError(f"{a},{b}: use a decimal point ({a}.{b})")
+
+
 class _Converter:
     def __init__(self, src: str, allowed: tuple[str, ...], params: Mapping[str, float]):
         self.src = src
@@ -152,6 +169,8 @@ class _Converter:
             return (op, self.convert(node.left, d), self.convert(node.right, d))
         if isinstance(node, ast.Call):
             return ("call", self._call(node), tuple(self.convert(a, d) for a in node.args))
+        if isinstance(node, ast.Tuple):
+            _decimal_comma(self._seg(node))
         for cls, what in _FORBIDDEN_NAMES.items():
             if isinstance(node, cls):
                 raise self._fail(node, what)
@@ -184,9 +203,14 @@ class _Converter:
             raise ExpressionError(f"function '{name}' used without arguments in {self.src!r}")
         allowed_txt = ", ".join(self.allowed) if self.allowed else "none"
         hint = did_you_mean(name, list(self.allowed) + list(self.params) + list(CONSTANTS) + list(FUNCTIONS))
+        if not hint and name == self.src and not self.allowed:   # a word where a number is expected: m: two
+            raise ExpressionError(
+                f"'{name}' is not a number: write it in digits (e.g. 2 or 0.5), or define '{name}' under params"
+            )
         ptxt = (", params: " + ", ".join(sorted(self.params))) if self.params else ""
         raise ExpressionError(
             f"unknown name '{name}' in {self.src!r}{hint}; variables allowed here: {allowed_txt}{ptxt}"
+            + ("" if hint else f"; define '{name}' under params to use it")
         )
 
     def _binop(self, node: ast.BinOp, chain: int) -> tuple[str, bool]:

@@ -1,7 +1,8 @@
 """Issue #29, the Python API misused and the sweeps: the API raises only
 InputError, NumericalError or TypeError, each with a message, for any input;
-a swept value that is a string or a scalar is one value; a field given values
-twice is refused; the derivative-jet cache is bounded."""
+a swept value that is a string or a scalar is refused naming the fix (never
+swept by its characters); a field given values twice is refused; the
+derivative-jet cache is bounded."""
 
 from __future__ import annotations
 
@@ -76,18 +77,25 @@ def test_the_api_raises_only_its_documented_errors_with_a_message(name):
         pytest.fail(f"{name}: raised {type(exc).__name__}: {exc}")
 
 
-@pytest.mark.parametrize("value, points", [("100", [100.0]), (100, [100.0]), (250.5, [250.5]),
-                                           ([100, 200], [100.0, 200.0]), ((300,), [300.0])])
-def test_a_swept_string_or_scalar_is_one_value(value, points):
+@pytest.mark.parametrize("value", ["100", 100, 250.5, {"a": 1}, b"100"])
+def test_a_swept_string_or_scalar_is_refused_naming_the_fix(value):
+    """Never swept character by character ('1', '0', '0') or key by key, never a bare TypeError."""
+    with pytest.raises(dyncli.InputError, match=r"sweep k: give a list of values, e\.g\. \{'k': \[100, 200, 300\]\}"):
+        dyncli.sweep(BASE, {"k": value})
+
+
+@pytest.mark.parametrize("value, points", [([100, 200], [100.0, 200.0]), ((300,), [300.0]), (range(100, 301, 200), [100.0, 300.0])])
+def test_a_sequence_sweeps_by_element(value, points):
     sols = dyncli.sweep(BASE, {"k": value})
     assert [s.results["omega_n"] ** 2 for s in sols] == pytest.approx(points, rel=1e-12)   # ω² = k/m, m = 1
 
 
-def test_numpy_values_sweep_by_element_and_a_0d_array_is_one_value():
+def test_numpy_values_sweep_by_element_and_a_0d_array_is_refused():
     np = pytest.importorskip("numpy")
     assert len(dyncli.sweep(BASE, {"k": np.linspace(100, 400, 4)})) == 4
-    assert len(dyncli.sweep(BASE, {"k": np.float64(100)})) == 1
-    assert len(dyncli.sweep(BASE, {"k": np.array(100.0)})) == 1
+    for one in (np.float64(100), np.array(100.0)):
+        with pytest.raises(dyncli.InputError, match="give a list of values"):
+            dyncli.sweep(BASE, {"k": one})
 
 
 @pytest.mark.parametrize("args", [

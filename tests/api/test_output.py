@@ -157,7 +157,7 @@ def test_sigint_at_any_moment_never_shows_dyncli_code():
 @pytest.mark.parametrize("args, message", [
     (["--units", "blah"], "--units: unknown unit 'blah'"),
     (["--units", "degg"], "--units: unknown unit 'degg' (did you mean 'deg'?)"),
-    (["--long"], "--long: only with --format csv (one row per time)"),
+    (["--long"], "--long works only with --format csv (one row per time): add --format csv"),
     (["--set", "k"], "--set 'k': expected PATH=VALUE, e.g. --set k=500"),
 ])
 def test_option_values_are_checked(args, message):

@@ -78,17 +78,46 @@ def test_self_study_file():
     assert [(c.get("name"), c.get("line")) for c in failed] == [("find.0.s", "19")]
 
 
-def _student_repo(tmp: Path, who: str = "alice") -> Path:
+def _instructor_repo(tmp: Path) -> Path:
+    """The instructor's repository after the fetch step: the key, the problems and the
+    submissions named by student id (the fetch step itself needs the network)."""
     repo = tmp / "repo"
-    (repo / "key").mkdir(parents=True)
+    (repo / "submissions").mkdir(parents=True)
     for f in ("key.yaml", "hw1.yaml"):
-        shutil.copy(COURSE / f, repo / "key" / f)
-    shutil.copy(COURSE / "submissions" / f"{who}.yaml", repo / "submission.yaml")
+        shutil.copy(COURSE / f, repo / f)
+    for who in ("alice", "bob"):
+        shutil.copy(COURSE / "submissions" / f"{who}.yaml", repo / "submissions" / f"{who}@example.edu.yaml")
     return repo
 
 
 def _run(cmd: str, cwd: Path, env: dict) -> subprocess.CompletedProcess:
     return subprocess.run(["bash", "-c", cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
+
+
+def _check_reports(repo: Path) -> None:
+    suites = {s.get("name"): s for s in ET.parse(repo / "reports" / "grades.xml").getroot().iter("testsuite")}
+    assert len(suites) == 2 and all(s.get("tests") == "6" for s in suites.values())
+    doc = json.loads((repo / "reports" / "grades.json").read_text())
+    assert [(s["student"], s["score"]) for s in doc["submissions"]] == [("alice@example.edu", 8), ("bob@example.edu", 7.5)]
+
+
+def test_ci_recipes_keep_the_key_out_of_students_jobs():
+    """The key is graded in the instructor's repository: no recipe runs on a student's push or
+    merge request, checks out another repository with a token, or hands a secret to dyncli."""
+    import yaml
+
+    for name in ("github-grade.yml", "gitlab-ci.yml"):
+        text = (COURSE / "ci" / name).read_text()
+        assert "KEY_REPO_TOKEN" not in text and "repository: me34010/hw1-key" not in text, name
+        assert "SUBMISSIONS_TOKEN" in text and "contents/submission.yaml" in text or "files/submission.yaml" in text
+        for line in text.splitlines():
+            if "dyncli check" in line:
+                assert "TOKEN" not in line and "secrets" not in line, line
+    wf = yaml.safe_load((COURSE / "ci" / "github-grade.yml").read_text())
+    triggers = wf[True] if True in wf else wf["on"]              # YAML 1.1 reads `on:` as true
+    assert set(triggers) == {"workflow_dispatch", "schedule"}
+    job = yaml.safe_load((COURSE / "ci" / "gitlab-ci.yml").read_text())["grade"]
+    assert "schedule" in job["rules"][0]["if"] and "merge_request" not in json.dumps(job)
 
 
 def test_github_actions_job(tmp_path):
@@ -97,34 +126,32 @@ def test_github_actions_job(tmp_path):
     wf = yaml.safe_load((COURSE / "ci" / "github-grade.yml").read_text())
     steps = wf["jobs"]["grade"]["steps"]
     runs = [s["run"] for s in steps if "dyncli check" in s.get("run", "")]
-    assert len(runs) == 2 and any("pip install key/dyncli-" in s.get("run", "") for s in steps)
-    repo = _student_repo(tmp_path)
-    env = dict(_shim(tmp_path), STUDENT="alice@example.edu", GITHUB_STEP_SUMMARY=str(tmp_path / "summary.md"))
-    p = _run(runs[0], repo, env)
-    assert p.returncode == 1, p.stderr                      # 1c has only half the points
-    lines = p.stdout.splitlines()
-    assert lines[0].startswith("::error file=submission.yaml,line=")
-    assert "1c%3A partial (1/2)" in lines[0] and lines[-1].startswith("::notice title=dyncli check score::")
-    assert "| `3` | carried |" in (tmp_path / "summary.md").read_text()
-    p = _run(runs[1], repo, env)
-    assert p.returncode == 0, p.stderr                      # `|| test $? -eq 1`: the report step passes
-    suite = ET.parse(repo / "reports" / "grade.xml").getroot().find("testsuite")
-    assert suite.get("tests") == "6" and suite.get("failures") == "1"
+    assert len(runs) == 3 and any("pip install ./dyncli-" in s.get("run", "") for s in steps)
+    repo = _instructor_repo(tmp_path)
+    env = dict(_shim(tmp_path))
+    for cmd in runs:
+        p = _run(cmd, repo, env)
+        assert p.returncode == 0, p.stderr                  # `|| test $? -eq 1`: the steps pass
+    _check_reports(repo)
+    feedback = (repo / "reports" / "feedback" / "alice@example.edu.txt").read_text()
+    assert "carried" in feedback and "expected" not in feedback
 
 
 def test_gitlab_job(tmp_path):
     import yaml
 
     job = yaml.safe_load((COURSE / "ci" / "gitlab-ci.yml").read_text())["grade"]
-    repo = _student_repo(tmp_path, "bob")
-    env = dict(_shim(tmp_path), STUDENT="bob@example.edu")
-    lines = [line for line in job["script"] if not line.startswith("pip install")]
-    p = _run("set -e\n" + "\n".join(lines), repo, env)     # `test -d key` skips the clone
-    assert p.returncode == 1, p.stderr                      # bob: a partial and a missing answer
-    report = repo / job["artifacts"]["reports"]["junit"]
-    cases = {c.get("name"): c for c in ET.parse(report).getroot().iter("testcase")}
-    assert cases["2b"].find("failure").get("type") == "partial"
-    assert cases["3"].find("failure").get("type") == "missing"
+    repo = _instructor_repo(tmp_path)
+    lines = [line for line in job["script"] if line.startswith("dyncli check")]
+    assert len(lines) == 2
+    p = _run("set -e\n" + "\n".join(lines), repo, dict(_shim(tmp_path)))
+    assert p.returncode == 0, p.stderr
+    assert job["artifacts"]["reports"]["junit"] == "reports/grades.xml"
+    _check_reports(repo)
+    cases = {(c.get("file"), c.get("name")): c for c in ET.parse(repo / "reports" / "grades.xml").getroot().iter("testcase")}
+    bob = "submissions/bob@example.edu.yaml"
+    assert cases[(bob, "2b")].find("failure").get("type") == "partial"
+    assert cases[(bob, "3")].find("failure").get("type") == "missing"
 
 
 def _autograder(tmp: Path, submission: str | None, email: str = "alice@example.edu") -> Path:
@@ -150,7 +177,9 @@ def test_gradescope_autograder(tmp_path):
     assert p.returncode == 0, p.stderr
     doc = json.loads((ag / "results" / "results.json").read_text())
     tests = {t["name"].split(" ")[0]: t for t in doc["tests"]}
-    assert doc["score"] == 8 and tests["1c"]["score"] == 1 and tests["1c"]["max_score"] == 2
+    # 2b is hidden: no top-level score (it would override the tests' total and count 2b before release)
+    assert "score" not in doc and sum(t["score"] for t in doc["tests"]) == 8
+    assert tests["1c"]["score"] == 1 and tests["1c"]["max_score"] == 2
     assert tests["2b"]["visibility"] == "after_published" and tests["1a"]["visibility"] == "visible"
     assert "expected" not in json.dumps(doc)
     # the hidden question is not summarised in the visible output
@@ -169,6 +198,28 @@ def test_gradescope_autograder_bad_submissions(tmp_path, submission, email, need
     assert p.returncode == 0, p.stderr
     doc = json.loads((ag / "results" / "results.json").read_text())
     assert doc["score"] == 0 and needle in json.dumps(doc)
+    if submission is not None:        # an invalid upload: its one-line error, every question 0 with it
+        assert needle in doc["output"] and len(doc["tests"]) == 6
+        assert all(t["score"] == 0 and needle in t["output"] for t in doc["tests"])
+
+
+@pytest.mark.parametrize("named", [None, "answers.yaml"])
+def test_gradescope_several_uploads(tmp_path, named):
+    ag = _autograder(tmp_path, (COURSE / "submissions" / "alice.yaml").read_text())
+    (ag / "submission" / "answers.yaml").write_text((COURSE / "submissions" / "alice.yaml").read_text())
+    (ag / "submission" / "notes.txt").write_text("scratch")
+    if named:
+        with open(ag / "source" / "key.yaml", "a") as fh:
+            fh.write(f"submission: {named}\n")
+    env = dict(_shim(tmp_path), AUTOGRADER_ROOT=str(ag))
+    p = _run(f'bash "{ag}/source/run_autograder"', ag, env)
+    assert p.returncode == 0, p.stderr
+    doc = json.loads((ag / "results" / "results.json").read_text())
+    if named:                         # the key names the file to grade: the other uploads are ignored
+        assert sum(t["score"] for t in doc["tests"]) == 8
+    else:                             # two .yaml files: refused, naming them, every question 0
+        assert doc["score"] == 0 and "answers.yaml, hw1-answers.yaml" in doc["output"]
+        assert len(doc["tests"]) == 6 and all(t["score"] == 0 for t in doc["tests"])
 
 
 def _fake_python(tmp: Path) -> Path:
@@ -199,7 +250,7 @@ def test_gradescope_setup_installs_the_bundled_wheel(tmp_path):
     assert (ag / "dyncli-venv" / "pip-args").read_text().split() == ["install", "-q", str(wheel)]
     p = _run(f'bash "{ag}/source/run_autograder"', ag, env)
     assert p.returncode == 0, p.stderr
-    assert json.loads((ag / "results" / "results.json").read_text())["score"] == 8
+    assert sum(t["score"] for t in json.loads((ag / "results" / "results.json").read_text())["tests"]) == 8
 
 
 def test_gradescope_setup_without_a_bundled_dyncli_says_what_to_zip(tmp_path):

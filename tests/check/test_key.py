@@ -215,7 +215,9 @@ def test_carry_chain(tmp_path, capsys):
     c_ = b_ + 1                    # ... and B's value carried into C
     cases = {"ok": ({"A": A, "B": B, "C": C}, ["correct"] * 3),
              "carried": ({"A": a_, "B": b_, "C": c_}, ["wrong", "carried", "carried"]),
-             "last": ({"A": A, "B": 99, "C": 100}, ["correct", "wrong", "carried"])}
+             "last": ({"A": A, "B": 19, "C": 20}, ["correct", "wrong", "carried"]),
+             # B 14 times its true value: carries nothing (C = B + 1 would repeat it within 1 %)
+             "huge": ({"A": A, "B": 99, "C": 100}, ["correct", "wrong", "wrong"])}
     for name, (ans, want) in cases.items():
         _, doc, err = check_json(tmp_path / "key.yaml", [write_sub(tmp_path, f"{name}.yaml", name, ans)], capsys)
         assert doc, err

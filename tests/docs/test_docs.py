@@ -138,3 +138,18 @@ def test_no_file_sends_the_reader_outside_the_repository():
         text = (ROOT / f).read_text(encoding="utf-8", errors="replace")
         bad += [f"{f}:{i}" for i, line in enumerate(text.splitlines(), 1) if pattern.search(line)]
     assert not bad, "files citing a document outside the repository: " + ", ".join(bad[:20])
+
+
+def test_readme_says_how_to_put_dyncli_on_path():
+    """After the Quick start `dyncli` lives in .venv/bin: the README says in one
+    line how to type it plainly, and the console script it names exists."""
+    import tomllib
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    line = next((ln for ln in readme.splitlines() if "PATH" in ln), "")
+    assert "activate" in line and "pipx install ." in line, line
+    scripts = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]["scripts"]
+    assert "dyncli" in scripts
+    module, func = scripts["dyncli"].split(":")
+    assert callable(getattr(importlib.import_module(module), func))
+    assert re.search(r"\.venv/bin/dyncli solve", readme)   # the Quick start runs it from the venv

@@ -31,7 +31,7 @@ def test_problems_list_and_titles():
     ("type: rectilinear\na: 1\nv1: .nan\n", "bad.yaml:3:1: v1:", "NaN"),
     ("type: rectilinear\na: 1\nv1: .inf\n", "bad.yaml:3:1: v1:", "finite"),
     ("type: rectilinear\na: 1\nparams: {k: 'k+1'}\n", "bad.yaml:3:", "k"),
-    ("type: rectilinear\na: '-k*s'\nparams: {k: 'j'}\n", "bad.yaml:3:", "unknown name 'j'"),
+    ("type: rectilinear\na: '-k*s'\nparams: {k: 'j'}\n", "bad.yaml:3:", "'j' is not a number"),
     ("type: rectilinear\na: 1\naccuracy: {method: foo}\n", "bad.yaml:3:", "unknown method"),
     ("a: 1\n", "bad.yaml:1:1:", "missing 'type'"),
     ("- 1\n- 2\n", "bad.yaml:1:1:", "expected a problem"),

@@ -266,7 +266,7 @@ def test_answers_in_order_and_frozen_queries():
     ([{"max": "x", "min": "x"}], "find.0.min", ["two queries"]),
     ([{"t": 1, "occurrence": 2}], "find.0.occurrence", ["goes with when"]),
     ([{"when": {"x": 1}, "within": [0, 1]}], "find.0.within", ["goes with max and min"]),
-    ([{"t": "tt"}], "find.0.t", ["constant expression", "unknown name"]),
+    ([{"t": "tt"}], "find.0.t", ["constant expression", "'tt' is not a number"]),
     ([{"t": True}], "find.0.t", ["boolean"]),
     ([{"t": "1/0"}], "find.0.t", ["constant expression"]),
     ([{"when": {"x": "y + 1"}}], "find.0.when.x", ["value of x", "unknown name"]),

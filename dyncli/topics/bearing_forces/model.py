@@ -7,7 +7,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
+from dyncli.fields import ExprField, Find, Num, ProblemBase, StrictModel, Times
 
 
 class ArmMass(StrictModel):
@@ -30,6 +30,8 @@ class BearingForces(ProblemBase):
     omega0: Optional[Num(dim="angular velocity", description="ω at t = 0 for a shaft turning freely (M_O·e'2 = 0, H_O·e'2 conserved, 36.19-36.22); give omega or omega0")] = None  # type: ignore[valid-type]
     h: Num(dim="length", description="the bearing is at x1 = −h e'2 (36.17) [m]") = 0.0  # type: ignore[valid-type]
     at: Times(description="times t [s] at which to report the loads") = Field(..., json_schema_extra={"minItems": 1})  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {max: F1.0}, {min: motor_torque}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
 
     @field_validator("masses")
     @classmethod
@@ -42,7 +44,7 @@ class BearingForces(ProblemBase):
     @classmethod
     def _times(cls, v):
         if not v:
-            raise ValueError("give at least one time")
+            raise ValueError("give at least one time, e.g. at: [0, 1]")
         return v
 
     @model_validator(mode="after")

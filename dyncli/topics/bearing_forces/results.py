@@ -10,6 +10,7 @@ BEARING_FORCES = TypeSpec(
     model="model:BearingForces",
     solve="solver:solve",
     example="problems/rigid-bodies/bearing-forces.yaml",
+    motion={"rates": {"omega": "omega_dot"}, "fast": ["omega"]},
     results=[
         R("omega", "ω", "rad/s", "36.22",
           "the spin ω (prescribed, or from 36.22 for a free shaft)", kind="list", contract=True),
@@ -33,6 +34,8 @@ BEARING_FORCES = TypeSpec(
           "M_O·e'₂: the torque the drive of the shaft supplies (0 when free)", kind="list", contract=True),
         R("T", "T", "J", "27.3",
           "kinetic energy Σ ½ m v·v", kind="list", contract=True),
+        R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state at t}",
+          kind="list", contract=True),
     ],
 )
 

@@ -15,7 +15,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3
 from dyncli.topics.particle.model import Custom, Damper, Drag, Gravity, InverseSquare, Spring, Uniform
 from dyncli.topics.particle.model import _check_kind as _particle_check_kind
 from dyncli.topics.particle.model import check_times
@@ -77,6 +77,7 @@ class ConstrainedParticle(ProblemBase):
     forces: list[Force] = Field(default_factory=list, description="force terms (as for particle; friction: only mu)")
     t_end: Optional[Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")] = None  # type: ignore[valid-type]
     at: Times(description="times at which to report the state [s]; default [0, t_end]") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {q: VALUE}}, {max: x.1}, {min: N.1}")  # type: ignore[valid-type]
 
     accuracy_methods = ("auto", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
@@ -85,9 +86,11 @@ class ConstrainedParticle(ProblemBase):
         check_times(self)
         if self.q_range is not None:
             if len(self.q_range) != 2 or not self.q_range[0] < self.q_range[1]:
-                raise InputError("q_range must be [q_min, q_max] with q_min < q_max", "q_range")
+                got = ", ".join(f"{v:g}" for v in self.q_range)
+                raise InputError(f"q_range must be [q_min, q_max] with q_min < q_max, got [{got}]", "q_range")
             if not all(math.isfinite(v) for v in self.q_range):
-                raise InputError("q_range must be finite", "q_range")
+                raise InputError("q_range must be finite: give the two ends of the wire as numbers", "q_range")
             if not self.q_range[0] <= self.q0 <= self.q_range[1]:
-                raise InputError(f"q0 = {self.q0:g} is outside q_range [{self.q_range[0]:g}, {self.q_range[1]:g}]", "q0")
+                raise InputError(f"q0 = {self.q0:g} is outside q_range [{self.q_range[0]:g}, {self.q_range[1]:g}]: "
+                                 "start on the wire, or widen q_range", "q0")
         return self

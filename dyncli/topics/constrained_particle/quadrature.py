@@ -191,8 +191,12 @@ def _plan(E: Energy, n: int):
 
 
 def motion(E: Energy, times, n: int):
-    """q and q̇ at the times, and the period (or None)."""
-    first, cycle, shift = _plan(E, n)
+    """q and q̇ at the times, and the period (or None); the legs planned once per Energy and n
+    (the find queries ask for the motion at many single times)."""
+    plans = E.__dict__.setdefault("_plans", {})
+    if n not in plans:
+        plans[n] = _plan(E, n)
+    first, cycle, shift = plans[n]
     if first == "rest":
         return np.full(len(times), E.q0), np.zeros(len(times)), None, []
     qs, qds = [], []
@@ -242,7 +246,7 @@ def solve(p, model, times, fallback=True) -> Result | None:
     out = assemble(p, model, times, Y, [("slide", 1.0)] * n)
     x2 = model.curve.state(np.zeros(n), q2, qd2, np.zeros(n))[0]
     res = Result(out["results"], method="quadrature", equations=_equations(model) + ["19.4", "20.1"],
-                 series=[Series("t", times, SERIES)])
+                 series=[Series("t", times, SERIES + ["distance"])])
     r = res.results
     x0 = model.curve.state(0.0, p.q0, p.q_dot0, 0.0)
     E1 = float(0.5 * model.m * np.sum(x0[1] ** 2) + model.potential(x0[0])[0])
@@ -258,7 +262,4 @@ def solve(p, model, times, fallback=True) -> Result | None:
     if period and times and max(times) > 1e12 * period:
         res.warn(f"t = {max(times):.6g} s is more than 1e12 periods ({period:.6g} s): the phase of the motion there "
                  "is lost to rounding of t itself")
-    if out["straight"]:
-        res.warn("the curve is straight at some reported point: its principal normal is not defined there, "
-                 "so e_n is the axis direction (e3, or e1) with its e_t part removed")
     return res

@@ -37,7 +37,8 @@ def _vec(a) -> list[float]:
 def _check_curve(p, curve: Curve) -> None:
     sp = np.linalg.norm(curve.dy(p.q0)[:, 0])
     if not np.isfinite(sp):
-        raise InputError(f"the curve is not defined at q0 = {p.q0:g}", "curve")
+        raise InputError(f"the curve is not defined at q0 = {p.q0:g} (x1, x2, x3 or their derivatives are not finite "
+                         "there): choose q0 where the curve exists", "curve")
     if sp == 0:
         raise InputError(f"the curve's tangent dy/dq vanishes at q0 = {p.q0:g}: q is not a regular parameter there",
                          "curve")
@@ -72,15 +73,35 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if meth == "quadrature" and not quadrature_applies(p, curve):
         raise InputError("method quadrature needs a fixed curve, no friction, damper or drag, and forces of the "
                          "position only (the energy integral); use method ode", "accuracy.method")
+    if p.find:                              # the motion runs to the end of every window searched (§11)
+        from dyncli import motion_find
+        from dyncli.expr import constant, resolve_params
+
+        params = resolve_params(p.params)
+        end = motion_find.search_end(float(p.t_end), p.find, lambda x: constant(x, params))
+        if end > p.t_end:
+            p = p.model_copy(update={"t_end": end})
+            model = dynamics.Model(p, curve)
     times = [float(t) for t in p.at]
     res = None
+    from . import find
+
     if use_quad:
         from . import quadrature
 
         res = quadrature.solve(p, model, times, fallback=(meth == "auto"))
+        if res is not None:
+            find.report(p, res, find.quadrature_states(p, model),
+                        find.uniform_breaks(float(p.t_end), res.results.get("period")), SERIES)
     if res is None:
         res = _solve_ode(p, model, times)
+        find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
+                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES)
     equilibria.add(res, p, model)
+    if not p.forces:
+        res.warn("no forces: the particle moves under the curve's reaction alone (no gravity)"
+                 + (", carried round by the turning curve" if p.rotation is not None else "")
+                 + "; if it has weight, add {kind: gravity} to forces")
     return res
 
 
@@ -97,10 +118,11 @@ def _solve_ode(p, model, times) -> Result:
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
     res = Result(out["results"], method=f"ode:{method}", equations=_equations(model),
-                 series=[Series("t", times, SERIES)])
+                 series=[Series("t", times, SERIES + ["distance"])])
     res.results["energy_residual"] = resid
     res.extra["nsteps"] = nsteps
     res.extra["energy_scale"] = scale
+    res.extra["phases"] = res.extra["breaks_of"] = phases
     _friction_notes(res, model, notes, phases)
     # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its
     # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
@@ -125,7 +147,8 @@ def assemble(p, model, times, Y, modes) -> dict:
         cols.append(model.evaluate(times[j], Y[:, j:j + 1], modes[j]))
     cat = {k: np.concatenate([c[k] for c in cols], axis=-1) for k in ("x", "v", "a", "N", "ft", "et", "speed", "Q")}
     Q = np.concatenate([c["Q"] for c in cols], axis=0)
-    et, en, eb, kappa, straight = model.curve.frenet(Y[0], Q)
+    # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
+    et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
     N = cat["N"]
     m = model.m
     T = 0.5 * m * np.sum(cat["v"] ** 2, axis=0)
@@ -146,7 +169,7 @@ def assemble(p, model, times, Y, modes) -> dict:
         "T": [float(v) for v in T], "V": [float(v) + 0.0 for v in V], "E": [float(v) + 0.0 for v in T + V],
         "W_nc": [float(v) + 0.0 for v in Y[3]], "W_N": [float(v) + 0.0 for v in Y[4]],
     }
-    return {"results": r, "straight": straight}
+    return {"results": r}
 
 
 def _residual(p, model, phases, out):

@@ -6,7 +6,7 @@ from typing import Literal, Optional
 
 from pydantic import Field, model_validator
 
-from dyncli.fields import ExprVec3, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3
 
 
 class Coin(StrictModel):
@@ -28,6 +28,8 @@ class Euler(ProblemBase):
     omega0: Vec3(dim="angular velocity", description="initial angular velocity, body components ω'₀ᵢ [rad/s]") = Field(...)  # type: ignore[valid-type]
     M: Optional[ExprVec3(("t",), dim="moment", description="applied moment about the center of mass, body components, expressions in t [N m]")] = None  # type: ignore[valid-type]
     at: Times() = Field(default_factory=lambda: [0.0])  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {omega.2: VALUE}}, {max: omega.0}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
 
     accuracy_methods = ("auto", "closed-form", "DOP853", "RK45", "Radau", "LSODA", "projected")
 

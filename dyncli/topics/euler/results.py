@@ -10,6 +10,7 @@ EULER = TypeSpec(
     model="model:Euler",
     solve="solver:solve",
     example="problems/gyroscopic/euler-flipping-coin.yaml",
+    motion={"rates": {}, "fast": ["omega"]},
     results=[
         R("I", "I (principal)", "kg·m²", "",
           "with `coin`: the principal moments used", kind="vector"),
@@ -39,6 +40,8 @@ EULER = TypeSpec(
           "with M: |H̄| at the `at` times", example=False),
         R("T_t", "T(t)", "J", "",
           "with M: the kinetic energy T at the `at` times", example=False),
+        R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state at t}",
+          kind="list", contract=True),
     ],
 )
 

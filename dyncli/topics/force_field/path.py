@@ -73,7 +73,8 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
     f = _integrand(fld, xs, dxs)
     x_start, x_end = pos(t1), pos(t2)
     if not (np.all(np.isfinite(x_start)) and np.all(np.isfinite(x_end))):
-        raise InputError("the path is not defined at the ends of t_span", "path.t_span")
+        raise InputError("the path is not defined at the ends of t_span (a coordinate is not finite there): "
+                         "choose t_span inside the times where the path exists", "path.t_span")
     res.method = "quadrature"
     if t1 == t2:
         res.error_estimate = 0.0

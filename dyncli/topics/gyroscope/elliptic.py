@@ -77,6 +77,7 @@ class GyroTheta:
         self.steady = steady
         self.lam = 0.0
         self.K = math.inf
+        self.phase = None           # the double-double phase of a long run (set by the caller; reduced())
         self.kind = "steady"
         self.finite = True
         if steady:
@@ -99,6 +100,7 @@ class GyroTheta:
         chin = math.remainder(theta0 - sgn * math.pi / 2, 2 * math.pi)
         sc, hs, hc = math.sin(chin), math.sin(chin / 2), math.cos(chin / 2)
         a, b, cc, chi0 = self.a, sgn * self.b, math.cos(chin), chin
+        self.bsign = -sgn if flip else sgn      # G about the centre: a cos²χ + bsign·b cos χ + c0
         if flip:        # χ = χn ∓ π: sin χ = −sin χn, sin(χ/2)² = cos(χn/2)², cos χ = −cos χn, b → −b
             chi0 = chin - math.copysign(math.pi, chin)
             b, sc, hs, hc, cc = -b, -sc, hc, hs, -cc
@@ -196,7 +198,7 @@ class GyroTheta:
         if self.kind == "circulation":
             th, thd = self._eval_circ(xp, t)
         else:
-            u = self.lam * t + self.u0
+            u = self.phase.reduce(t)[1] if self.phase is not None else self.lam * t + self.u0
             sn, cn, dn = ellipj_any(u, self.m, self.m1)
             if self.kind == "libration":
                 z = self.z1 * sn
@@ -210,9 +212,12 @@ class GyroTheta:
         return xp.where(at0, self.theta0, th), xp.where(at0, self.theta_dot0, thd)
 
     def _eval_circ(self, xp, t):
-        u = self.sigma * self.lam * t + self.u0
+        if self.phase is not None:      # u = σλt + u0 = n·4K + u (double-double: long runs)
+            n, u = self.phase.reduce(t)
+        else:
+            u = self.sigma * self.lam * t + self.u0
+            n = xp.round(u / (4.0 * self.K)) if math.isfinite(self.K) else 0.0
         sn, cn, dn = ellipj_any(u, self.m, self.m1)
-        n = xp.round(u / (4.0 * self.K)) if math.isfinite(self.K) else 0.0
         phi = 2.0 * math.pi * n + xp.arctan2(sn, cn)
         bt = self.beta
         chi = phi + 2.0 * xp.arctan2((bt - 1.0) * sn, (1.0 + bt) + (1.0 - bt) * cn)

@@ -23,6 +23,9 @@ from dyncli.topics.gyroscope.elliptic import GyroTheta
 
 EPS = sys.float_info.epsilon
 PHASE_FACTOR = 16.0
+#: the phase is formed in double-double (40-digit λ and period) where its double round-off would exceed
+#: min(rtol, this), as for the top
+EXTENDED_ABOVE = 1e-12
 
 
 def theta_dot_sq(I1, I2, p, q, th0, thd0, th):
@@ -36,12 +39,23 @@ def theta_dot_sq(I1, I2, p, q, th0, thd0, th):
 class ExactRun:
     """θ, θ̇ at the requested times (lists of floats: no numpy) and the run's round-off estimate."""
 
-    def __init__(self, I1, I2, p, q, th0, thd0, times, steady=False):
+    def __init__(self, I1, I2, p, q, th0, thd0, times, steady=False, rtol=None):
         self.g = g = GyroTheta(I1, I2, p, q, th0, thd0, steady=steady)
         t = [float(x) for x in times]
         self.finite = g.finite
         if not self.finite:
             return
+        T = max(abs(x) for x in t) if t else 0.0
+        self.extended = False
+        if T > 0 and g.kind != "steady" and rtol is not None \
+                and PHASE_FACTOR * EPS * (1.0 + g.lam * T) > min(rtol, EXTENDED_ABOVE) and math.isfinite(g.K):
+            from dyncli.topics.gyroscope.phase import long_phase
+
+            try:
+                g.phase = long_phase((I1, I2, p, q, th0, thd0), g)
+            except (ArithmeticError, ValueError):     # degenerate at 40 digits: the double phase stays
+                g.phase = None
+            self.extended = g.phase is not None
         states = [g.evaluate(x) for x in t]
         self.theta, self.theta_dot = [th for th, _ in states], [thd for _, thd in states]
         self.finite = all(math.isfinite(th) and math.isfinite(thd) for th, thd in states)
@@ -51,9 +65,10 @@ class ExactRun:
         scale = thd0 * thd0 + 2.0 * a + 2.0 * b + 1e-300          # range of θ̇² over a motion
         resid = [abs(thd * thd - theta_dot_sq(I1, I2, p, q, th0, thd0, th)) for th, thd in states]
         self.drift = max(resid) / scale if t else 0.0
-        T = max(abs(x) for x in t) if t else 0.0
         self.lam_T = g.lam * T
-        self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * (1.0 + self.lam_T)) if T > 0 else 0.0
+        # the phase reduced in double-double: as if λt were at most one period 4K (+ the offset u0)
+        phase = 1.0 + (4.0 * g.K + abs(g.u0) if self.extended else self.lam_T)
+        self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * phase) if T > 0 else 0.0
 
     @property
     def period(self) -> float:

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Literal, Optional
 
 from pydantic import Field, model_validator
 
-from dyncli.fields import Num, ProblemBase, Times
+from dyncli.fields import Find, Num, ProblemBase, Times
 
 
 class Gyroscope(ProblemBase):
@@ -21,6 +21,8 @@ class Gyroscope(ProblemBase):
     theta0: Num(dim="angle", description="initial tilt θ(0) of e''₁ above the horizontal [rad]") = 0.0  # type: ignore[valid-type]
     theta_dot0: Num(dim="angular velocity", description="initial θ̇(0) [rad/s]") = 0.0  # type: ignore[valid-type]
     at: Times() = Field(default_factory=lambda: [0.0])  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta}, {min: M.0}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
 
     accuracy_methods = ("auto", "exact", "closed-form", "DOP853", "RK45", "Radau", "LSODA")
 

@@ -10,6 +10,7 @@ GYROSCOPE = TypeSpec(
     model="model:Gyroscope",
     solve="solver:solve",
     example="problems/gyroscopic/gyroscope-0-to-pi.yaml",
+    motion={"rates": {"theta": "theta_dot"}, "fast": ["theta_dot"]},
     results=[
         R("theta", "θ", "rad", "37.12",
           "θ at the `at` times (continuous, not wrapped)", kind="list", contract=True),
@@ -25,6 +26,8 @@ GYROSCOPE = TypeSpec(
           "the constant of (37.13)", kind="number"),
         R("drift", "drift", "", "",
           "largest change of C over the run, relative to ½Ī₂θ̇₀² + ½", kind="number"),
+        R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state at t}",
+          kind="list", contract=True),
     ],
 )
 

@@ -159,8 +159,28 @@ def _ode_route(pb, times, res):
             Y2 = check[0]
             res.error_estimate = ode.relative_difference([(Y[:, 0], Y2[:, 0]), (Y[:, 1], Y2[:, 1])], [math.pi, 0.0])
     else:
-        ode.nominal_estimate(res, rtol, drift, steps=nsteps)
+        # over many periods the error is the phase's: the drift of (37.13) shifts the frequency, and the
+        # phase error grows with the time run (~ drift × 2π × periods), past rtol × steps (issue 28)
+        phase = drift * 2.0 * math.pi * _periods(pb, float(np.max(np.abs(times))) if len(times) else 0.0)
+        ode.nominal_estimate(res, rtol, drift, phase, steps=nsteps)
+        if phase > rtol * max(nsteps, 1) and phase >= drift:
+            res.extra["error_estimate_note"] = (
+                "nominal: the drift of (37.13) times the phase run, 2π × periods (a drifting first integral "
+                "shifts the frequency; over many periods that phase error dominates rtol times the steps)")
+    measured = res.error_estimate if pb.accuracy.estimate else drift
+    runner.warn_unmet(res, rtol, measured, promise=runner.ODE_PROMISE,
+                      what="the check solve's difference" if pb.accuracy.estimate else "the drift of (37.13)")
     return Y[:, 0].tolist(), Y[:, 1].tolist(), drift
+
+
+def _periods(pb, T):
+    """Periods of θ(t) in [0, T] (revolutions when θ circulates), from the elliptic solution's period
+    (plain floats); 0 where that is not representable or θ is steady."""
+    from dyncli.topics.gyroscope.elliptic import GyroTheta
+
+    g = GyroTheta(pb.I1, pb.I2, pb.p, pb.q, pb.theta0, pb.theta_dot0)
+    period = g.period if g.finite else math.inf
+    return T / period if math.isfinite(period) and period > 0 else 0.0
 
 
 def _exact_route(pb, times, res, steady):
@@ -168,7 +188,7 @@ def _exact_route(pb, times, res, steady):
     is beyond doubles (auto then integrates)."""
     from dyncli.topics.gyroscope.exact_route import ExactRun
 
-    run = ExactRun(pb.I1, pb.I2, pb.p, pb.q, pb.theta0, pb.theta_dot0, times, steady=steady)
+    run = ExactRun(pb.I1, pb.I2, pb.p, pb.q, pb.theta0, pb.theta_dot0, times, steady=steady, rtol=pb.accuracy.rtol)
     if not run.finite:
         msg = "the elliptic solution is not representable in doubles here (next to the separatrix)"
         if pb.accuracy.method == "exact":
@@ -179,6 +199,11 @@ def _exact_route(pb, times, res, steady):
         return None
     res.method = "exact"
     res.error_estimate = run.error_estimate
+    if times and max(abs(t) for t in times) > 0 and run.error_estimate > pb.accuracy.rtol:
+        from dyncli import runner       # (numpy: only when there is something to say)
+
+        runner.warn_unmet(res, pb.accuracy.rtol, run.error_estimate,
+                          what=f"error_estimate (the elliptic solution's round-off over λt = {run.lam_T:.3g} rad)")
     res.extra["sample"] = run.sample
     return run.theta, run.theta_dot, run.drift
 

@@ -50,8 +50,9 @@ class Impact(ProblemBase):
             tt = self.t
             length = norm(tt)
             if abs(length - 1.0) > UNIT_TOL:
-                raise InputError(f"t must be a unit vector (its length is {length:.6g})", "t")
+                raise InputError(f"t must be a unit vector (its length is {length:.6g}): give it normalised, "
+                                 "or omit t and dyncli computes it", "t")
             dot = sum(a * b for a, b in zip(tt, nn)) / length
             if abs(dot) > UNIT_TOL:
-                raise InputError(f"t must be perpendicular to n (t·n = {dot:.3g})", "t")
+                raise InputError(f"t must be perpendicular to n (t·n = {dot:.3g}): omit t and dyncli computes it", "t")
         return self

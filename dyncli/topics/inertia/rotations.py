@@ -197,7 +197,7 @@ def from_fields(axis=None, angle=None, euler313=None, matrix=None) -> Matrix:
                          + (f" (got {' and '.join(given)})" if given else ""))
     if given[0] == "axis/angle":
         if axis is None:
-            raise ValueError("'angle' needs an 'axis' to rotate about")
+            raise ValueError("'angle' needs an 'axis' to rotate about, e.g. axis: [0, 0, 1]")
         if angle is None:
             raise ValueError("'axis' needs an 'angle' (radians; e.g. \"30*deg\")")
         return rot_axis(axis, angle)

@@ -13,7 +13,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprVec3, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3
 
 CUSTOM_VARS = ("t", "x1", "x2", "x3", "v1", "v2", "v3")
 
@@ -135,17 +135,20 @@ class Particle(ProblemBase):
     forces: list[Force] = Field(default_factory=list, description="force terms; none = a free particle")
     t_end: Optional[Num(gt=0, dim="time", description="end of the integration [s]; default max(at)")] = None  # type: ignore[valid-type]
     at: Times(description="times at which to report the state [s]; default [0, t_end]") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x.1: 0}}, {max: x.1}, {min: v.0}")  # type: ignore[valid-type]
     basis: Literal["cartesian", "cylindrical"] = Field(
         "cartesian", description="cylindrical: also report x, v, a, F, H_O on {e_r, e_θ, e3} and the drift of r²θ̇, ẋ3, H_O (§22)")
 
-    accuracy_methods = ("auto", "ode", "DOP853", "RK45", "Radau", "LSODA")
+    accuracy_methods = ("auto", "exact", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
     @model_validator(mode="after")
     def _check(self):
         check_times(self)
         for i, f in enumerate(self.forces):
             if isinstance(f, InverseSquare) and math.dist(f.center, self.x0) == 0:
-                raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force)", f"forces.{i}.center")
+                raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force): "
+                                 "start the particle elsewhere", f"forces.{i}.center")
             if isinstance(f, Spring) and f.L > 0 and math.dist(f.anchor, self.x0) == 0:
-                raise InputError("x0 is at the spring's anchor while L > 0: the spring force has no direction", f"forces.{i}.anchor")
+                raise InputError("x0 is at the spring's anchor while L > 0: the spring force has no direction; "
+                                 "start the particle off the anchor", f"forces.{i}.anchor")
         return self

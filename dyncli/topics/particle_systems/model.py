@@ -7,7 +7,7 @@ from typing import Any, Literal, Optional
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import Find, Num, ProblemBase, StrictModel, Times, Vec3
 
 #: the fields each pair kind needs (the others are rejected)
 PAIR_FIELDS = {"spring": ("k", "L"), "damper": ("c",), "inverse-square": ("K",)}
@@ -57,6 +57,7 @@ class Particles(ProblemBase):
     pairs: list[Pair] = Field(default_factory=list, description="internal pair forces (springs, dampers, inverse-square attraction) between particles")
     t_end: Optional[Num(gt=0, dim="time", description="integrate the motion under the pair forces to this time [s] (default max(at))")] = None  # type: ignore[valid-type]
     at: Times(description="times [s] at which to report the motion (default [0, t_end])") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x_motion.0.0: 1}}, {min: V_internal_motion}")  # type: ignore[valid-type]
 
     accuracy_methods = ("auto", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
@@ -70,7 +71,7 @@ class Particles(ProblemBase):
                                      f"pairs.{k}.between")
             if pr.kind == "inverse-square" and self.particles[pr.between[0]].x == self.particles[pr.between[1]].x:
                 raise InputError("the two particles of an inverse-square pair start at the same point "
-                                 "(the force is infinite)", f"pairs.{k}")
+                                 "(the force is infinite): give them distinct positions x", f"pairs.{k}")
         if self.t_end is None and self.at:
             self.t_end = max(self.at)
         if self.t_end is not None:

@@ -29,7 +29,9 @@ from dyncli.topics.particle_systems import pairs as pf
 MAX_STEPS = 200_000
 
 
-def _integrate(p, masses, X0, V0, rtol, atol, method):
+def _integrate(p, masses, X0, V0, rtol, atol, method, on_step=None):
+    """The state rows at the times of ``at`` (and, with ``on_step``, every step's interpolant
+    to t_end: the ``find`` queries' motion)."""
     n = len(masses)
 
     def rhs(t, y):
@@ -39,9 +41,10 @@ def _integrate(p, masses, X0, V0, rtol, atol, method):
         return np.concatenate([V.ravel(), A.ravel(), [P]])
 
     y0 = np.concatenate([X0.ravel(), V0.ravel(), [0.0]])
-    Y, _ = ode.integrate(rhs, y0, p.at, method=method, rtol=rtol, atol=atol,
+    times = list(p.at) + ([float(p.t_end)] if on_step is not None else [])
+    Y, _ = ode.integrate(rhs, y0, times, method=method, rtol=rtol, atol=atol, on_step=on_step,
                          max_steps=p.accuracy.max_steps or MAX_STEPS)
-    return Y
+    return Y[:len(p.at)]
 
 
 def _quantities(p, masses, Y, O):
@@ -68,9 +71,15 @@ def _quantities(p, masses, Y, O):
 
 def solve_motion(p, res, masses, X0, V0, O) -> None:
     """Fill the ``*_motion`` results, the checks and ``error_estimate``."""
+    from dyncli.topics.particle_systems import find
+
+    if p.find:                              # the motion runs to the end of every window searched (§11)
+        p = find.extended(p)
     acc = p.accuracy
     method = runner.scipy_method(acc.method)
-    Y = _integrate(p, masses, X0, V0, acc.rtol, acc.atol, method)
+
+    steps = find.Steps()
+    Y = _integrate(p, masses, X0, V0, acc.rtol, acc.atol, method, on_step=steps)
     X, G, H, T, com, Vint, Pint, W = _quantities(p, masses, Y, O)
     if not all(np.isfinite(a).all() for a in (X, G, H, T, Vint, Pint, W)):
         raise NumericalError("the motion under the pair forces is not finite (two particles of an "
@@ -103,7 +112,8 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
     })
     res.series.append(Series("t", list(p.at), ["T_motion", "V_internal_motion", "P_internal_motion", "W_internal"],
                              title="energy under the internal forces: T − T(0) = W (27.10)"))
-    res.series.append(Series("t", list(p.at), ["x_motion"], title="positions of the particles"))
+    find.report(p, res, steps, lambda Y: _quantities(p, masses, Y, O), len(masses))
+    res.series.append(Series("t", list(p.at), ["x_motion", "distance"], title="positions of the particles"))
     res.series.append(Series("t", list(p.at), ["com_motion", "G_motion", "H_O_motion"],
                              title="center of mass and momenta over time (G_drift, H_drift: their changes)"))
     if not math.isfinite(r["H_drift"]):  # pragma: no cover - guarded by the finiteness check above

@@ -199,3 +199,33 @@ def solve(p, ans, rtol: float, atol: float) -> str:
         c.scan(vq, sq)
         return "quadrature+root"
     return "quadrature"
+
+
+class States:
+    """The state at any times (in any order), each integrated from the nearest time on its side
+    of t1 where the state is already known (t1, or an earlier time asked): a grid costs one sweep
+    of the span instead of one quadrature from t1 per time.  Each call has its own work budget;
+    an entry where the state is not finite is ``{"reached": False}``."""
+
+    def __init__(self, p, rtol: float, atol: float):
+        from dyncli.result import Result
+        from dyncli.topics.rectilinear.solver import Answers
+
+        self.p, self.rtol, self.atol = p, rtol, atol
+        self.c = _Case2(p, Answers(p.model_copy(update={"find": []}), Result({})), rtol, atol)
+        self.known = [(p.t1, p.s1, p.v1)]
+
+    def __call__(self, p, times) -> list[dict]:
+        c, t1, out = self.c, self.p.t1, {}
+        c.work = Work(self.p, 2)
+        for T in sorted({float(t) for t in times}, key=lambda t: (t < t1, abs(t - t1))):
+            tb, sb, vb = min(self.known, key=lambda k: abs(T - k[0]) if (T - k[0]) * (T - t1) >= 0 and
+                             abs(k[0] - t1) <= abs(T - t1) else float("inf"))
+            try:
+                s, v, _, _ = c.state_split(T, tb, sb, vb)
+            except NonFinite:
+                out[T] = {"reached": False}
+                continue
+            self.known.append((T, s, v))
+            out[T] = {"t": T, "s": s, "v": v, "a": c.a1(T), "reached": True}
+        return [out[float(t)] for t in times]

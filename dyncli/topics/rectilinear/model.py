@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
@@ -10,28 +10,50 @@ from dyncli.fields import ExprField, Num, ProblemBase, StrictModel
 
 
 class Query(StrictModel):
-    """Exactly one of t (state at time t), v (first time v is reached),
-    s (first time s is reached)."""
+    """Exactly one of t (state at time t), v (the first time v is reached), s (the first time s
+    is reached) or the queries of every motion (§11): when (with direction, occurrence), max, min
+    (with within).  A v or s held at the start counts only when the motion reaches it again; the
+    entries of when/max/min are checked where they are answered (dyncli.queries)."""
 
     t: Optional[Num(dim="time")] = None  # type: ignore[valid-type]
     v: Optional[Num(dim="velocity")] = None  # type: ignore[valid-type]
     s: Optional[Num(dim="length")] = None  # type: ignore[valid-type]
+    when: Optional[Any] = None
+    direction: Optional[Any] = None
+    occurrence: Optional[Any] = None
+    max: Optional[Any] = None
+    min: Optional[Any] = None
+    within: Optional[Any] = None
 
     @model_validator(mode="after")
     def _exactly_one(self):
-        given = [k for k in ("t", "v", "s") if getattr(self, k) is not None]
+        given = [k for k in KINDS if getattr(self, k) is not None]
         if len(given) != 1:
-            raise ValueError("a query is exactly one of {t: T}, {v: V} or {s: S}"
+            raise ValueError("a query is exactly one of {t: T}, {v: V}, {s: S}, {when: {s: S}}, {max: s} or {min: v}"
                              + (f" (got {', '.join(given)})" if given else ""))
+        extra = [k for k in ("direction", "occurrence", "within") if getattr(self, k) is not None]
+        allowed = {"when": ("direction", "occurrence"), "max": ("within",), "min": ("within",)}.get(given[0], ())
+        bad = [k for k in extra if k not in allowed]
+        if bad:
+            raise ValueError(f"'{bad[0]}' goes with " + ("when" if bad[0] != "within" else "max or min")
+                             + f", not with {given[0]}")
         return self
 
     @property
     def kind(self) -> str:
-        return next(k for k in ("t", "v", "s") if getattr(self, k) is not None)
+        return next(k for k in KINDS if getattr(self, k) is not None)
 
     @property
-    def target(self) -> float:
+    def target(self):
         return getattr(self, self.kind)
+
+    def raw(self) -> dict:
+        """The query as written, for dyncli.queries."""
+        return {k: getattr(self, k) for k in KINDS + ("direction", "occurrence", "within") if getattr(self, k) is not None}
+
+
+#: the kinds of query; the last three are answered by the queries of every motion (§11)
+KINDS = ("t", "v", "s", "when", "max", "min")
 
 
 class Rectilinear(ProblemBase):
@@ -42,7 +64,7 @@ class Rectilinear(ProblemBase):
     t1: Num(dim="time") = 0.0  # type: ignore[valid-type]
     s1: Num(dim="length") = 0.0  # type: ignore[valid-type]
     v1: Num(dim="velocity") = 0.0  # type: ignore[valid-type]
-    find: list[Query] = Field(default_factory=list, description="queries: {t: T}, {v: V} or {s: S}")
+    find: list[Query] = Field(default_factory=list, description="queries: {t: T}, {v: V}, {s: S}, {when: {s: S}}, {max: s}, {min: v}")
     t_max: Num(gt=0, dim="time") = 1000.0  # type: ignore[valid-type]
 
     accuracy_methods = ("auto", "closed-form", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")

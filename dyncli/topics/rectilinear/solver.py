@@ -159,17 +159,16 @@ def _check_initial(p) -> None:
     if not math.isfinite(a1):
         raise InputError(
             f"a = {p.a.text} is not finite at the initial state (t1 = {_fmt(p.t1)}, s1 = {_fmt(p.s1)}, v1 = {_fmt(p.v1)}): "
-            f"it evaluates to {a1!r}", "a")
+            f"it evaluates to {a1!r}; start where a is defined (change t1, s1 or v1) or correct a", "a")
 
 
-def _distinct(p):
-    """(p with each distinct query once, the index of each of the user's
-    queries among them): 20,000 copies of one query are solved once."""
+def _distinct(p, keep: list[int]):
+    """(p with each distinct query of ``keep`` (indices into p.find) once, the index of each
+    kept query among them): 20,000 copies of one query are solved once; warnings name each
+    query by its place in the user's list."""
     where: dict[tuple, int] = {}
-    index = [where.setdefault((q.kind, q.target), len(where)) for q in p.find]
-    if len(where) == len(index):
-        return p, None
-    firsts = [index.index(k) for k in range(len(where))]
+    index = [where.setdefault((p.find[i].kind, p.find[i].target), len(where)) for i in keep]
+    firsts = [keep[index.index(k)] for k in range(len(where))]
     counts = [0] * len(where)
     for k in index:
         counts[k] += 1
@@ -180,11 +179,20 @@ def _distinct(p):
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    p, index = _distinct(p)
-    res = _solve(p)
-    if index is not None:
-        items = res.results["find"]
-        res.results["find"] = [dict(items[k]) for k in index]
+    """The type's own queries by its route; the queries of every motion (§11) and ``distance``
+    by :mod:`.find` on that route's motion."""
+    from dyncli.topics.rectilinear import find
+
+    legacy, generic = find.split(p)
+    q, index = _distinct(p, legacy)
+    res = _solve(q)
+    got = res.results["find"]
+    items: list = [None] * len(p.find)
+    for i, k in zip(legacy, index):
+        items[i] = dict(got[k])
+    if p.find:
+        find.answer(p, res, generic, items, sample, _solve_one)
+    res.results["find"] = items
     return res
 
 
@@ -203,6 +211,11 @@ def _solve(p) -> Result:
         res.results["find"] = ans.items
         res.extra["sample"] = lambda times: sample(p, times)
         return res
+
+    from dyncli.topics.rectilinear import coulomb
+
+    if route != "quadrature" and coulomb.by_hand(p.a):
+        raise coulomb.refuse(p.a, case)
 
     def run(rtol, atol):
         return _run(p, case, route, rtol, atol)
@@ -253,6 +266,13 @@ def _run(p, case, route: str, rtol: float, atol: float):
     return res_, ans_
 
 
+def _solve_one(p, raw: dict) -> dict | None:
+    """The answer of one of the type's own queries (``{"v": 0.0}``) by the problem's route."""
+    from dyncli.topics.rectilinear.model import Query
+
+    return _solve(p.model_copy(update={"find": [Query(**raw)]})).results["find"][0]
+
+
 def sample(p, times) -> list[dict]:
     """The motion at ``times`` (the ``find`` entries of ``{t: T}`` queries),
     for plots: one run of the problem's own route at its tolerances, with no
@@ -266,7 +286,7 @@ def sample(p, times) -> list[dict]:
     case = case_of(q.a)
     route = _route(q, case)
     if route == "closed-form":
-        return solve(q).results["find"]
+        return _solve(q).results["find"]
     with np.errstate(all="ignore"):
         _, ans = _run(q, case, route, q.accuracy.rtol, q.accuracy.atol)
     return ans.items

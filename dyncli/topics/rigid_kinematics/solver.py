@@ -102,7 +102,8 @@ def solve_angular_velocity(p, options: SolveOptions | None = None) -> Result:
         for j in range(i + 1, len(names)):
             if sub(pts[names[i]].x, pts[names[j]].x) == (0.0, 0.0, 0.0):
                 raise InputError(f"points {names[i]} and {names[j]} are at the same position: "
-                                 "their velocities give no information on ω", f"points.{names[j]}.x")
+                                 "their velocities give no information on ω; give points at distinct positions",
+                                 f"points.{names[j]}.x")
     B = pts[names[0]]
     if len(names) == 2:
         A = pts[names[1]]

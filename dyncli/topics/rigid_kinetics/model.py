@@ -29,7 +29,7 @@ class Motion(StrictModel):
     @classmethod
     def _some(cls, v):
         if not v:
-            raise ValueError("give at least one time")
+            raise ValueError("give at least one time, e.g. at: [0, 1]")
         return v
 
 

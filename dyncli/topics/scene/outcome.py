@@ -55,6 +55,10 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     res.results["events"] = [{"t": ev.t, "joint": ev.joint, "what": ev.what, "state": inst(ev.t)}
                              for ev in traj.events]
     res.results["integrals"] = _integrals(scene, traj, times, instants)
+    from . import queries
+
+    distance = queries.odometer(scene, traj)
+    res.results["distance"] = distance(times)
     for w in scene.warnings:
         res.warn(w)
     later = [t for t in times if t_stop is not None and t > t_stop]
@@ -64,9 +68,9 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
                  f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
                  "event)")
     if find_raw:
-        from . import queries
-
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
+        for e in res.results["find"]:
+            e["distance"] = ({k: v[0] for k, v in distance([e["t"]]).items()} if e.get("reached") else None)
     res.method = traj.method or route
     _estimate(res, scene, route, acc, traj)
     _present(res, scene, traj, inst, times)

@@ -88,3 +88,39 @@ def answer(raw, scene, traj, inst, params, times, warn=None) -> list[dict]:
             entry.update(inst(ans["t"]))
         out.append(entry)
     return out
+
+
+#: uniform pieces added to the trajectory's own breaks for the distance's quadrature (a closed
+#: form's phase can span many oscillations)
+DISTANCE_PIECES = 128
+
+
+def odometer(scene, traj):
+    """Each body's path length since t = 0 (its reference point: the centre of mass), ∫|v| dt by
+    Gauss–Legendre on the trajectory's pieces: ``at(times) -> {body: [..]}``."""
+    from dyncli.motion_find import Odometer
+
+    bodies = scene.system.bodies
+    t0 = traj.t0
+    t_end = traj.stopped if traj.stopped is not None else traj.t_end
+    pts = {t for t in traj.breaks if t0 <= t <= t_end} | {t0 + (t_end - t0) * k / DISTANCE_PIECES
+                                                          for k in range(DISTANCE_PIECES + 1)}
+
+    def speeds(ts):
+        rows = []
+        for t in ts:
+            _, v, _ = traj.state(float(t))
+            rows.append([(float(v[b.index[0]]) ** 2 + float(v[b.index[1]]) ** 2) ** 0.5 for b in bodies])
+        return rows
+
+    odo = Odometer(speeds, pts) if t_end > t0 else None
+
+    def at(times) -> dict:
+        times = [float(t) for t in times]
+        if odo is None:
+            return {b.name: [0.0 if t <= t0 else None for t in times] for b in bodies}
+        ok = [t for t in times if t <= t_end]
+        vals = odo.at(ok) if ok else []
+        got = dict(zip(ok, vals))
+        return {b.name: [got[t][j] if t in got else None for t in times] for j, b in enumerate(bodies)}
+    return at

@@ -46,6 +46,8 @@ SCENE = TypeSpec(
           "leaves", kind="list", contract=True),
         R("integrals", "", "", "34.20, 36.10", "first integrals that hold: {name, value, drift, equation}",
           kind="list", contract=True),
+        R("distance", "", "m", "", "each body's path length since t = 0 (its centre of mass), ∫|v| dt, per body over `at` "
+          "(null after the motion stops at an event)", kind="mapping", contract=True),
         R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state}",
           kind="list", contract=True),
     ],

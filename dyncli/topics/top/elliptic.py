@@ -213,6 +213,7 @@ class ExactTop:
         self.psi0, self.phi0, self.theta0 = psi0, phi0, theta0
         self.initial = (psi0, theta0, phi0, psi_dot0, theta_dot0, phi_dot0, psi_dot0 * math.sin(theta0))
         self.nut = n = Nutation(A, C, mgL, theta0, theta_dot0, psi_dot0, W3)
+        self.phase = None                        # the double-double phase of a long run (reduced())
         self.spin_free = W3 * (A - C) / A
         if not n.finite:
             return
@@ -246,8 +247,21 @@ class ExactTop:
     @property
     def J0(self):
         if self._J0 is None:
-            self._J0 = self._at_phase(FLOAT_OPS, self.tau0)[1]
+            P = 2.0 * self.K
+            n0 = FLOAT_OPS.round(self.tau0 / P)
+            self._J0 = self._at_phase(FLOAT_OPS, self.tau0 - n0 * P, n0)[1]
         return self._J0
+
+    def reduced(self, xp, t):
+        """(n, r) with τ = λt + τ0 = n·2K + r, |r| ≤ K: by :attr:`phase` (a double-double
+        :class:`dyncli.phase.ReducedPhase`, set by the caller for long runs) when set, else in doubles
+        (an absolute error of ~ε·λt)."""
+        if self.phase is not None:
+            return self.phase.reduce(t)
+        P = 2.0 * self.K
+        tau = self.nut.lam * t + self.tau0
+        n = xp.round(tau / P)
+        return n, tau - n * P
 
     def _J(self, s, c, d2):
         if self.nu == math.inf:          # v2 = 0: the B/v term is absent (B = 0)
@@ -256,12 +270,10 @@ class ExactTop:
             nu = self.nu
         return _integrals(nu, self.np_m, self.one_np, self.nut.m, s, c, d2)
 
-    def _at_phase(self, xp, tau):
-        """(sn, cn, dn) at τ and (Jv, Jw, Jd) from τ = 0, whole periods included (sn, cn, dn
-        by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix); on backend xp."""
-        P, K, m1 = 2.0 * self.K, self.K, self.nut.m1
-        nper = xp.round(tau / P)
-        r = tau - nper * P
+    def _at_phase(self, xp, r, nper):
+        """(sn, cn, dn) at τ = nper·2K + r (|r| ≤ K) and (Jv, Jw, Jd) from τ = 0, whole periods included
+        (sn, cn, dn by the AGM in m1 = 1 − m given exactly, accurate next to the separatrix); on backend xp."""
+        K, m1 = self.K, self.nut.m1
         a = xp.abs(r)
         far = a > 0.5 * K
         # past K/2 from the reflection ρ = K − |r|: sn = cd ρ, cn = √m1 sd ρ, dn = √m1 nd ρ, so cn and
@@ -301,8 +313,8 @@ class ExactTop:
 
     def _moving(self, xp, t):
         n = self.nut
-        tau = n.lam * t + self.tau0
-        (sn, cn, dn), J = self._at_phase(xp, tau)
+        nper, r = self.reduced(xp, t)
+        (sn, cn, dn), J = self._at_phase(xp, r, nper)
         d2 = dn * dn
         s2, c2 = sn * sn, cn * cn
         tv, tw = n.delta * n.m1 * s2 / d2, n.delta * c2 / d2     # v − v2, w − w1 (sum Δ)
@@ -332,11 +344,11 @@ class ExactTop:
             psi = self.psi0 + hv + hw
         # passages exactly through a pole: the 3-1-3 angles jump by π there
         P = 2.0 * self.K
-        if n.v2 == 0.0 and n.B == 0.0:
-            j = xp.floor(tau / P) - math.floor(self.tau0 / P)
+        if n.v2 == 0.0 and n.B == 0.0:          # ⌊τ/P⌋ = nper + ⌊r/P⌋
+            j = nper + xp.floor(r / P) - math.floor(self.tau0 / P)
             psi, phi = psi + math.pi * j, phi - math.pi * j
         if n.w1 == 0.0 and n.Bp == 0.0:
-            j = xp.floor((tau - self.K) / P) - math.floor((self.tau0 - self.K) / P)
+            j = nper + xp.floor((r - self.K) / P) - math.floor((self.tau0 - self.K) / P)
             psi, phi = psi + math.pi * j, phi + math.pi * j
         # x = u − u0 from the nearer turning point (x2 and x1 have full relative precision)
         x = xp.where(tv <= tw, n.x2 - tv, n.x1 + tw)

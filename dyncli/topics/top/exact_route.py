@@ -24,6 +24,9 @@ from dyncli.topics.top.elliptic import EPS, ExactTop
 
 #: safety factor on the phase round-off term ε (1 + λ t + periods)
 PHASE_FACTOR = 16.0
+#: the phase is formed in double-double (40-digit λ and period) where its double round-off would exceed
+#: min(rtol, this): the exact top keeps ~1e-13 of scale at any t
+EXTENDED_ABOVE = 1e-12
 #: at most this many requested times are evaluated one by one in plain floats (no numpy import; each
 #: costs ~50 µs, mostly three Carlson integrals), more as arrays (~0.7 ms for numpy's calls + ~8 µs a time)
 FLOAT_TIMES = 16
@@ -32,7 +35,7 @@ FLOAT_TIMES = 16
 class ExactRun:
     """Lists of plain floats at the requested times (same order as ``times``) and the run's figures."""
 
-    def __init__(self, top, psi0, theta0, phi0, psi_dot0, theta_dot0, phi_dot0, times):
+    def __init__(self, top, psi0, theta0, phi0, psi_dot0, theta_dot0, phi_dot0, times, rtol=None):
         A, C, mgL = top.A, top.C, top.mgL
         try:
             self.ex = ex = ExactTop(A, C, mgL, psi0, theta0, phi0, psi_dot0, theta_dot0, phi_dot0)
@@ -43,6 +46,9 @@ class ExactRun:
         if not self.finite:
             return
         self.times = t = [float(x) for x in times]
+        self.extended = False
+        if t and not ex.steady and rtol is not None:
+            self._long_phase(top, (theta0, theta_dot0, psi_dot0, phi_dot0), max(abs(x) for x in t), rtol)
         if len(t) <= FLOAT_TIMES:      # one by one in plain floats: no numpy import (most of a cold start)
             cols = list(zip(*(ex.evaluate(x) for x in t))) if t else [[]] * 7
         else:                          # many times: the arrays (numpy), the same algorithm
@@ -58,6 +64,22 @@ class ExactRun:
         self._bounds(theta0)
         self.passes = [] if ex.steady else self._passages(t)
         self._residuals(top, t)
+
+    def _long_phase(self, top, state, T, rtol):
+        """The phase in double-double (:mod:`dyncli.topics.top.phase`) where the double phase's
+        round-off, PHASE_FACTOR·ε(1 + λT + periods), would exceed min(rtol, EXTENDED_ABOVE)."""
+        ex = self.ex
+        lam_T = ex.nut.lam * T
+        if not PHASE_FACTOR * EPS * (1.0 + lam_T + lam_T / (2.0 * ex.K)) > min(rtol, EXTENDED_ABOVE):
+            return
+        from dyncli.topics.top.phase import long_phase
+
+        mgl = (top.m, top.g, top.L) if all(hasattr(top, k) for k in ("m", "g", "L")) else (top.mgL, 1.0, 1.0)
+        try:
+            ex.phase = long_phase((*mgl, top.A, top.C, *state), ex.nut, ex.tau0)
+        except (ArithmeticError, ValueError):     # a degenerate motion at 40 digits: the double phase stays
+            ex.phase = None
+        self.extended = ex.phase is not None
 
     def _bounds(self, theta0):
         n, ex = self.ex.nut, self.ex
@@ -103,8 +125,12 @@ class ExactRun:
         lam = 0.0 if ex.steady else n.lam
         periods = 0.0 if ex.steady else lam * T / (2.0 * ex.K)
         self.lam_T = lam * T
+        if self.extended:       # the phase reduced in double-double: as if λt were at most one period
+            phase = PHASE_FACTOR * EPS * (1.0 + 2.0 * ex.K + abs(ex.tau0))
+        else:
+            phase = PHASE_FACTOR * EPS * (1.0 + lam * T + periods)
         # at t = 0 only, the reported state is the input itself
-        self.error_estimate = max(dE, dH, PHASE_FACTOR * EPS * (1.0 + lam * T + periods)) if T > 0 else 0.0
+        self.error_estimate = max(dE, dH, phase) if T > 0 else 0.0
 
 
 def nutation_period(ex: ExactTop) -> float:
@@ -115,7 +141,7 @@ def nutation_period(ex: ExactTop) -> float:
 def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
     """The elliptic solution at ``times``, or None when it is not representable in doubles
     (then the caller takes the ODE route; accuracy.method exact refuses instead)."""
-    ex = ExactRun(top, psi0, th0, phi0, psd0, th_dot0, p.phi_dot, times)
+    ex = ExactRun(top, psi0, th0, phi0, psd0, th_dot0, p.phi_dot, times, rtol=p.accuracy.rtol)
     if not ex.finite:
         msg = ("the elliptic solution of this top is not representable in doubles (its elliptic parameter "
                "1 − m underflows, or the roots of its nutation cubic are not separable: a top released "
@@ -132,6 +158,11 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
         "round-off of the elliptic solution: the larger of ε·16(1 + λt + periods) (the phase λt + τ0 "
         "formed in floating point) and the residuals of the energy and H_O·e3 integrals at the reported times, "
         "each relative to its scale")
+    if ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > p.accuracy.rtol:
+        from dyncli import runner       # (numpy: only when there is something to say)
+
+        runner.warn_unmet(res, p.accuracy.rtol, res.error_estimate,
+                          what=f"error_estimate (the elliptic solution's round-off over λt = {ex.lam_T:.3g} rad)")
     th_min = min(ex.theta_min, th0)
     th_max = max(ex.theta_max, th0)
     res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Num, ProblemBase, Times
+from dyncli.fields import Find, Num, ProblemBase, Times
 
 #: accepted ``accuracy.method`` values (auto = exact: the elliptic solution)
 METHODS = ("auto", "exact", "DOP853", "RK45", "Radau", "LSODA", "projected")
@@ -31,6 +31,8 @@ class Top(ProblemBase):
     theta_dot: Num(dim="angular velocity", description="initial θ̇ [rad/s]") = 0.0  # type: ignore[valid-type]
     phi_dot: Num(dim="angular velocity", description="initial φ̇ = spin p relative to e'' [rad/s]") = 0.0  # type: ignore[valid-type]
     at: Times(description="times t >= 0 [s] at which to report the motion") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta}, {min: R.2}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
 
     accuracy_methods = METHODS
 

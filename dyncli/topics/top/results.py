@@ -10,6 +10,7 @@ TOP = TypeSpec(
     model="model:Top",
     solve="solver:solve",
     example="problems/gyroscopic/top-near-vertical.yaml",
+    motion={"rates": {"psi": "psi_dot", "theta": "theta_dot", "phi": "phi_dot"}, "fast": ["psi_dot", "theta_dot", "phi_dot"]},
     results=[
         R("theta_min", "θ_min", "rad", "",
           "lower turning point of the nutation, from the energy and momentum integrals", kind="number", contract=True),
@@ -33,6 +34,8 @@ TOP = TypeSpec(
           "list of vectors: reaction at O on e'' (38.16a): R = mg e3 + m ā", kind="list", contract=True),
         R("drift", "", "", "",
           "largest relative change over the run of E, H_O·e3 and ω3 (below)", kind="number", contract=True),
+        R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state at t}",
+          kind="list", contract=True),
     ],
 )
 

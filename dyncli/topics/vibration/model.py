@@ -8,7 +8,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Num, ProblemBase, StrictModel, Times
+from dyncli.fields import Find, Num, ProblemBase, StrictModel, Times
 
 MAX_SWEEP_POINTS = 100_000
 MAX_RATIO = 1e100   # frequency ratios and ζ beyond this are not physical (and would overflow)
@@ -48,7 +48,8 @@ class Sweep(StrictModel):
         if not lo < hi:
             raise InputError(f"must be [r_min, r_max] with r_min < r_max (got [{lo:g}, {hi:g}])", "sweep.ratio")
         if self.spacing == "log" and lo <= 0:
-            raise InputError("log spacing needs r_min > 0", "sweep.ratio")
+            raise InputError(f"log spacing needs r_min > 0 (got {lo:g}): start the ratios above 0, or use spacing: linear",
+                             "sweep.ratio")
         return self
 
 
@@ -66,6 +67,8 @@ class Vibration(ProblemBase):
     base: Optional[Base] = None
     force: Optional[Force] = Field(None, description="force on the mass F(t) = amplitude·sin(omega·t) (not with base)")
     at: Times(description="times t >= 0 [s] at which to report x, v, w") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x: VALUE}}, {max: x}, {min: v}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
     sweep: Optional[Sweep] = None
 
     accuracy_methods = ("auto", "closed-form", "ode", "DOP853")

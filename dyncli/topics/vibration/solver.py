@@ -77,6 +77,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
     if p.at:
         _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om)
+    if p.at or p.find:
+        from dyncli.topics.vibration import find
+
+        find.report(p, res, omega_n, zeta)
     if p.sweep is not None:
         _sweep(p.sweep, zeta, res, p.zeta is not None)
         if p.force is not None:
@@ -178,7 +182,7 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
         raise NumericalError("the response is not representable at the requested times "
                              "(ω·t beyond the floating-point range)")
     res.results.update(x=x, v=v, w=w)
-    res.series.append(Series("t", list(p.at), ["x", "v", "w"], title="Response x = w + s + L (17.16b)"))
+    res.series.append(Series("t", list(p.at), ["x", "v", "w", "distance"], title="Response x = w + s + L (17.16b)"))
 
 
 def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol, force_per_mass=None, max_steps=None):

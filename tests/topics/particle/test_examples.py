@@ -184,3 +184,25 @@ def test_vortex_field_is_not_conservative():
     assert R["potential"] is None
     assert R["work"] == pytest.approx(2 * math.pi, abs=1e-11)
     assert any("single-valued" in w for w in r["warnings"])
+
+
+def test_transfer_orbit_exact_against_closed_forms():
+    # Hohmann transfer r1 -> r2 (closed forms of the conic re-derived here, in mpmath)
+    import mpmath as mp
+
+    r = rec_of("transfer-orbit.yaml")
+    assert r["method"] == "exact"
+    R, orb = r["results"], r["results"]["orbit"]
+    with mp.workdps(30):
+        mu, r1, r2 = mp.mpf(9.81) * 6371000 ** 2, mp.mpf(6678000), mp.mpf(42164000)
+        a = (r1 + r2) / 2
+        vp = mp.sqrt(2 * mu * r2 / (r1 * (r1 + r2)))
+        ref = {"e": (r2 - r1) / (r2 + r1), "a": a, "r_p": r1, "r_a": r2, "v_p": vp, "v_a": vp * r1 / r2,
+               "period": 2 * mp.pi * mp.sqrt(a ** 3 / mu), "v_circular": mp.sqrt(mu / r1),
+               "v_escape": mp.sqrt(2 * mu / r1)}
+    for k, v in ref.items():
+        assert orb[k] == pytest.approx(float(v), rel=1e-13), k
+    # at half the period: apogee, on the −e1 side, moving along −e2 at v_a
+    close(R["x"][1], [-float(r2), 0, 0], rtol=1e-13, atol=1e-6)
+    close(R["v"][1], [0, -float(ref["v_a"]), 0], rtol=1e-13, atol=1e-9)
+    close(R["x"][2], R["x"][0], rtol=1e-13, atol=1e-5)

@@ -28,7 +28,7 @@ BASE = "type: particle\nm: 1\nt_end: 1\n"
     ("at: [0.5, 2]", "4:11: at.1", "outside [0, t_end = 1]"),
     ("at: [-1]", "at.0", "outside [0, t_end"),
     ("x0: [1, 2]", "x0", "got 2 entries"),
-    ("accuracy: {method: Euler}", "accuracy.method", "choose one of: auto, ode, DOP853, RK45, Radau, LSODA"),
+    ("accuracy: {method: Euler}", "accuracy.method", "choose one of: auto, exact, ode, DOP853, RK45, Radau, LSODA"),
 ])
 def test_invalid_particle(extra, where, message):
     msg = error_of(BASE + extra + "\n")

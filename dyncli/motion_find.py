@@ -1,0 +1,304 @@
+"""The ``find`` queries (problem files §11) answered for a motion known by its reported state.
+
+Topic-agnostic.  A type that reports a motion gives :func:`answer_find` its ``state(t)`` (the
+results it reports at an ``at`` time, as single values: a nested mapping whose leaves are
+numbers, vectors as lists), the start and end of the motion, the ``breaks`` between which the
+results are smooth (the pieces of a closed form, the steps of an ODE: see :mod:`dyncli.queries`
+for how they are searched), the accuracy of the values (``rtol``) and, where known, which result
+is the rate of which (``rates``: ``{"x": "v"}`` makes ``v.1`` the rate of ``x.1``; a callable
+``(t, rest of the path) -> rate or None`` gives a rate the type does not report), so that a
+turning point is a root of the rate (Brent), never a sampled peak.  The answers are the :mod:`dyncli.queries` answers, each
+filled with the whole state at its time (``distance`` included when the type reports it).
+
+:func:`search_end` extends the motion to the end of a ``within`` window; :class:`Odometer`
+is the ``distance`` result: ∫|v| dt over the breaks (Gauss–Legendre on each smooth piece), or
+for one coordinate the sum of |Δs| between its turning points (:func:`turning_length`, exact to
+rounding).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Iterable, Mapping
+
+from dyncli import queries as _q
+from dyncli.errors import InputError
+
+__all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach"]
+
+
+def flatten(node: Any, prefix: str = "") -> dict[str, float]:
+    """{dotted path: number} of one instant (list items by their index from 0; booleans and
+    text left out)."""
+    out: dict[str, float] = {}
+    if isinstance(node, Mapping):
+        for k, v in node.items():
+            out.update(flatten(v, f"{prefix}{k}."))
+    elif isinstance(node, (list, tuple)):
+        for i, v in enumerate(node):
+            out.update(flatten(v, f"{prefix}{i}."))
+    elif isinstance(node, (int, float)) and not isinstance(node, bool) and prefix:
+        out[prefix[:-1]] = float(node)
+    return out
+
+
+class StateMotion:
+    """A motion for :func:`dyncli.queries.answer` from ``state(t)`` (see the module's text)."""
+
+    def __init__(self, state: Callable[[float], Mapping], t0: float, t_end: float,
+                 breaks: Iterable[float] = (), rtol: float = 0.0, rates: Mapping[str, Any] | None = None,
+                 batch: Callable[[list[float]], list[Mapping]] | None = None):
+        self.state, self.t0, self.t_end, self.rtol = state, float(t0), float(t_end), float(rtol)
+        self.batch = batch                          # the states at many times in one run (optional)
+        inner = sorted({float(b) for b in breaks if self.t0 < b < self.t_end})
+        self.breaks = [self.t0] + inner + [self.t_end]
+        self._rates = dict(rates or {})
+        self._cache: dict[float, dict] = {}
+        self._limit = 4096
+        self._paths: list[str] | None = None
+
+    def flat(self, t: float) -> dict[str, float]:
+        got = self._cache.get(t)
+        if got is None:
+            if len(self._cache) > self._limit:      # bounded: a long search keeps only its recent instants
+                self._cache.clear()
+            got = self._cache[t] = flatten(self.state(float(t)))
+        return got
+
+    def prefetch(self) -> None:
+        """The states at every sample of the search grid in one ``batch`` call (when given)."""
+        if self.batch is not None:
+            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end) if t not in self._cache]
+            self._limit = 4096 + len(self._cache) + len(T)
+            for t, st in zip(T, self.batch(T)):
+                self._cache[t] = flatten(st)
+
+    def paths(self) -> list[str]:
+        if self._paths is None:
+            self._paths = sorted(self.flat(self.t0))
+        return self._paths
+
+    def value(self, path: str, t: float) -> float:
+        flat = self.flat(float(t))
+        if path not in flat:
+            raise KeyError(path)
+        return flat[path]
+
+    def rate(self, path: str, t: float) -> float | None:
+        head, dot, rest = path.partition(".")
+        d = self._rates.get(head)
+        if d is None:
+            return None
+        if callable(d):                             # a rate the type knows but does not report
+            got = d(float(t), rest)
+            return None if got is None else float(got)
+        return self.flat(float(t)).get(d + dot + rest)
+
+
+def search_end(t_end: float, find: Any, constant: Callable[[Any], float]) -> float:
+    """The end of the motion searched: ``t_end`` extended to a ``t`` query or a ``within``
+    window that ends later (§11); malformed entries are left to the queries' own validation."""
+    for q in find if isinstance(find, (list, tuple)) else ():
+        if not isinstance(q, dict):
+            continue
+        w = q.get("within")
+        raw = [w[1]] if isinstance(w, (list, tuple)) and len(w) == 2 else []
+        raw += [q["t"]] if "t" in q else []
+        for r in raw:
+            try:
+                v = float(constant(r))
+            except (InputError, ValueError, TypeError):
+                continue
+            if math.isfinite(v):
+                t_end = max(t_end, v)
+    return t_end
+
+
+def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: Callable[[str], None] | None = None,
+                full: Callable[[float], Mapping] | None = None, stopped: str | None = None) -> list[dict]:
+    """One entry per query of ``raw`` (the problem's ``find`` list): ``{t, reached, at_end}`` and
+    the whole state at ``t`` (``full(t)``, default ``motion.state``) when reached; a warning per
+    query not reached (``stopped``: why the motion ends early, said in that warning)."""
+    qs = _q.parse_queries(raw, constant)
+    full = full or motion.state
+    if any(not isinstance(q, _q.AtTime) for q in qs) and hasattr(motion, "prefetch"):
+        motion.prefetch()
+    out = []
+    for k, ans in enumerate(_q.answer(qs, motion)):
+        entry = dict(ans)
+        if ans.get("reached") and ans.get("t") is not None:
+            entry.update(full(ans["t"]))
+        elif warn is not None:
+            warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
+                 + (f" ({stopped})" if stopped else "; raise t_end to search further"))
+        out.append(entry)
+    return out
+
+
+class Odometer:
+    """∫ |v| dt from the first break: Gauss–Legendre with ``nodes`` points on every piece between
+    consecutive breaks (the speed is smooth inside an ODE step or a closed-form piece: the rule
+    is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
+    at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
+    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns."""
+
+    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10):
+        import numpy as np
+
+        self.speeds, self.np = speeds, np
+        self.x, self.w = np.polynomial.legendre.leggauss(nodes)
+        self.pts = np.array(sorted({float(b) for b in breaks}))
+        first = self._pieces(self.pts[:-1], self.pts[1:])
+        self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
+
+    def _pieces(self, a, b):
+        np = self.np
+        T = (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.x[None, :]
+        S = np.asarray(self.speeds(T.ravel().tolist()), dtype=float)
+        S = S.reshape(T.shape + S.shape[1:])
+        half = (0.5 * (b - a)).reshape((-1,) + (1,) * (S.ndim - 2))
+        return half * np.tensordot(S, self.w, axes=([1], [0]))
+
+    def at(self, times: Iterable[float]) -> list:
+        np = self.np
+        t = np.asarray([float(x) for x in times], dtype=float)
+        if t.size == 0:
+            return []
+        k = np.clip(np.searchsorted(self.pts, t, side="right") - 1, 0, len(self.pts) - 1)
+        lo = self.pts[k]
+        inside = t > lo
+        part = np.zeros_like(self.cum[k])
+        if np.any(inside):
+            part[inside] = self._pieces(lo[inside], t[inside])
+        return (self.cum[k] + part + 0.0).tolist()
+
+
+def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float],
+                   t0: float = 0.0) -> list[float]:
+    """The distance travelled since ``t0`` by one coordinate s(t) that is monotonic between the
+    ``turns``: Σ|Δs| over the pieces, exact to the rounding of s (no quadrature); s is evaluated
+    once at each turning point."""
+    turns = sorted(float(t) for t in turns if t > t0)
+    at_turn = [s(t) for t in turns]
+    cum = [0.0]
+    prev = s(t0)
+    for v in at_turn:
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
+    out = []
+    import bisect
+
+    for t in (float(x) for x in times):
+        k = bisect.bisect_left(turns, t)            # turning points strictly before t
+        last = at_turn[k - 1] if k else s(t0)
+        out.append(cum[k] + abs(s(t) - last) + 0.0)
+    return out
+
+
+def _asked(q: Any) -> tuple[str, str | None]:
+    """(the query as a short text, the result path it asks about or None)."""
+    if not isinstance(q, dict):
+        return str(q), None
+    if "when" in q and isinstance(q["when"], dict) and len(q["when"]) == 1:
+        (path, value), = q["when"].items()
+        extra = "".join(f", {k} {q[k]}" for k in ("direction", "occurrence") if k in q)
+        return f"{path} = {value}{extra}", str(path)
+    for kind in ("max", "min"):
+        if kind in q:
+            w = q.get("within")
+            return f"{kind} {q[kind]}" + (f" in [{w[0]}, {w[1]}]" if isinstance(w, (list, tuple)) and len(w) == 2
+                                           else ""), str(q[kind])
+    return ("t = " + str(q["t"])) if "t" in q else str(q), None
+
+
+def attach(res: Any, raw: list, entries: list[dict]) -> None:
+    """The answers as the result ``find`` and a table of them (the asked quantity's value at each
+    answer; find.N in JSON holds the whole state)."""
+    rows = []
+    for i, (q, e) in enumerate(zip(raw, entries)):
+        text, path = _asked(q)
+        value = flatten(e).get(path) if (path and e.get("reached")) else None
+        rows.append([i, text, e.get("t"), value if value is not None else "—",
+                     "yes" if e.get("at_end") else ("no" if e.get("at_end") is False else "—")])
+    res.results["find"] = entries
+    res.views.append(_table(rows))
+    if "find" not in res.covered:
+        res.covered.append("find")
+
+
+def _table(rows):
+    from dyncli.result import Table
+
+    return Table("find (§11): find.N holds the whole state at t", ["#", "query", "t [s]", "value", "at end"], rows)
+
+
+def turns(rate: Callable[[float], float], breaks: Iterable[float]) -> list[float]:
+    """The roots of ``rate`` where it changes sign (Brent), over the :mod:`dyncli.queries` grid of
+    the breaks: the turning points of the coordinate whose rate it is."""
+    b = sorted(float(x) for x in breaks)
+    T = _q._grid(b, b[0], b[-1])
+    R = [rate(t) for t in T]
+    out = []
+    for k in range(len(T) - 1):
+        if R[k] == 0.0 and k > 0:
+            out.append(T[k])
+        elif R[k] * R[k + 1] < 0:
+            out.append(_q._root(rate, T[k], T[k + 1]))
+    return out
+
+
+def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapping[str, str],
+             fast: Iterable[str] = (), t0: float = 0.0) -> None:
+    """The ``find`` answers of a type whose solver reports its motion at the times of ``at``: the
+    motion at any times is the same solve with those times (one solve for a whole grid, and the
+    route's own accuracy; its check solve off).  The results over time are the type's series
+    over ``t``; ``rates`` names which is the rate of which; the search grid has at least
+    :data:`PER_TURN` pieces per turn of the fastest of the ``fast`` rates (rad/s) seen on a first
+    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`."""
+    import math as _m
+
+    names = [n for s in result.series if s.index_name == "t" for n in s.names]
+    acc = getattr(problem, "accuracy", None)
+    base = {"find": []}
+    if acc is not None and getattr(acc, "estimate", False):
+        base["accuracy"] = acc.model_copy(update={"estimate": False})
+
+    def batch(ts) -> list[dict]:
+        ts = [float(t) for t in ts]
+        r = solve(problem.model_copy(update=dict(base, at=ts))).results
+        return [{n: r[n][j] for n in names if isinstance(r.get(n), list) and len(r[n]) == len(ts)}
+                for j in range(len(ts))]
+
+    from dyncli.expr import constant, resolve_params
+
+    params = resolve_params(getattr(problem, "params", {}) or {})
+    const = lambda x: constant(x, params)            # noqa: E731
+    at = [float(t) for t in getattr(problem, "at", []) or []]
+    t_end = search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find, const)
+    if t_end <= t0:
+        breaks = [t0, t0]
+    else:
+        probe = [t0 + (t_end - t0) * k / 64 for k in range(65)]
+        fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
+        period = result.results.get("period")
+        turns = (t_end - t0) * fastest / (2 * _m.pi)
+        if isinstance(period, (int, float)) and period and period > 0:
+            turns = max(turns, (t_end - t0) / period)
+        n = int(min(max(64, _m.ceil(turns * PER_TURN)), MAX_PIECES))
+        breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
+        if turns * PER_TURN > MAX_PIECES:
+            result.warn(f"find: the motion to t = {t_end:g} s turns about {turns:.3g} times; the search grid is "
+                        f"capped at {MAX_PIECES} pieces, so extremes closer than that may be missed (use within)")
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks,
+                         rtol=float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0,
+                         rates=rates, batch=batch)
+    attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+
+
+PER_TURN, MAX_PIECES = 8, 20_000
+
+
+def _leaves(x: Any) -> list[float]:
+    if isinstance(x, (list, tuple)):
+        return [y for v in x for y in _leaves(v)]
+    return [float(x)] if isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(float(x)) else []

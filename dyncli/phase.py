@@ -1,0 +1,96 @@
+"""A phase τ = λt + τ0 reduced modulo its period P in double-double arithmetic (issue 28).
+
+An elliptic solution is a function of a phase τ = λt + τ0 that is periodic in P.  Formed
+in doubles, τ carries an absolute error of ~ε·λt (λ itself is known to ε relative, the product
+and the reduction modulo P round once more): at λt = 1e7 rad that is 1e-9 of the motion, whatever
+the elliptic functions do afterwards.  Here the frequency f = λ/P (periods per unit t) and the
+offset c = τ0/P are held as double-double pairs (hi + lo, |lo| ≤ ulp(hi)/2), made once by the
+caller from a high-precision λ and P (:func:`pair`), and f·t is formed exactly by an error-free
+product (TwoProd: ``math.fma`` where Python has it, 3.13+, else Dekker's split), so that the
+whole periods n and the fraction φ ∈ [−½, ½] of f·t + c come out with an absolute error of a
+few ε, and the reduced phase r = φ·P with ~ε·P — as if t were a small time.
+
+Written once for a float t (plain floats, no numpy) and for an array (numpy: the same
+operations element by element; Dekker's split there).  Neutral (no topic).
+
+>>> ph = ReducedPhase(pair(0.125), pair(0.25), 2.0)
+>>> ph.reduce(9.0)           # 0.125 × 9 + 0.25 = 1.375 periods: n = 1, r = 0.375 × 2
+(1.0, 0.75)
+>>> two_prod(1.0 + 2.0 ** -30, 1.0 - 2.0 ** -30)     # the product and its rounding error, exactly
+(1.0, -8.673617379884035e-19)
+"""
+
+from __future__ import annotations
+
+import math
+
+#: Dekker's splitter for doubles, 2^27 + 1
+_SPLIT = 134217729.0
+_FMA = getattr(math, "fma", None)
+
+
+def _split(a):
+    """a = hi + lo with hi holding the upper 26 bits (Dekker); floats or arrays."""
+    c = _SPLIT * a
+    hi = c - (c - a)
+    return hi, a - hi
+
+
+def two_prod(a, b):
+    """(p, e) with p = fl(a·b) and p + e = a·b exactly (TwoProd; |a·b| below ~1e300)."""
+    p = a * b
+    if _FMA is not None and isinstance(p, float):
+        return p, _FMA(a, b, -p)
+    ah, al = _split(a)
+    bh, bl = _split(b)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def two_sum(a, b):
+    """(s, e) with s = fl(a + b) and s + e = a + b exactly (Knuth's TwoSum)."""
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+def pair(x):
+    """A number of higher precision (an mpmath mpf, a Fraction, a float) as the double-double
+    (hi, lo) nearest it."""
+    hi = float(x)
+    return hi, float(x - hi) if math.isfinite(hi) else 0.0
+
+
+def _round(x):
+    if isinstance(x, float):
+        return float(round(x))
+    import numpy as np
+
+    return np.round(x)
+
+
+class ReducedPhase:
+    """f·t + c split into whole periods and the remainder, in double-double (module docstring).
+
+    ``freq`` = λ/P and ``offset`` = τ0/P as (hi, lo) pairs; ``period`` = P (a double: it only
+    scales the fraction back, ε relative)."""
+
+    def __init__(self, freq, offset, period: float):
+        self.f_hi, self.f_lo = freq
+        self.c_hi, self.c_lo = offset
+        self.period = float(period)
+
+    def cycles(self, t):
+        """(n, φ): the whole periods n (a float holding an integer) and φ ∈ [−½, ½], with
+        n + φ = f·t + c to a few ε absolute."""
+        p, e = two_prod(self.f_hi, t)
+        n = _round(p)
+        # p − n is exact (Sterbenz, or n = 0); the small terms are summed once
+        frac, err = two_sum(p - n, e + self.f_lo * t + self.c_hi)
+        frac = frac + (err + self.c_lo)
+        n2 = _round(frac)
+        return n + n2, frac - n2
+
+    def reduce(self, t):
+        """(n, r): τ(t) = n·P + r with |r| ≤ P/2 (+ rounding), r to ~ε·P absolute."""
+        n, phi = self.cycles(t)
+        return n, phi * self.period

@@ -1,0 +1,114 @@
+"""The ``find`` queries and ``distance`` of a particle on a curve (§11).
+
+The motion is the route's own at any time: the energy quadrature's q(t) (the legs between
+turning points, periodic when the motion is) or the ODE's dense output, each assembled into the
+reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends; on the quadrature
+route an eighth of the period (or 64 pieces of a motion that does not repeat).  Rates: q̇ of q,
+ṡ of s, v of x, a of v, so turning points are roots of the rate (Brent).  ``distance`` is the
+arc length travelled, Σ|Δs| between the turning points of s (the roots of ṡ).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli import motion_find as mf
+from dyncli.expr import constant, resolve_params
+
+PIECES, PER_PERIOD, MAX_PIECES = 64, 8, 20_000
+
+
+def _entries(r: dict, n: int, keys) -> list[dict]:
+    return [{k: r[k][j] for k in keys} for j in range(n)]
+
+
+def quadrature_states(p, model):
+    """states(ts) on the energy-quadrature route (the same legs and nodes as its answers)."""
+    from . import quadrature
+    from .solver import assemble
+
+    E = quadrature.Energy(p, model)
+
+    def states(ts):
+        ts = [float(t) for t in ts]
+        q, qd, _, _ = quadrature.motion(E, ts, 96)
+        n = len(ts)
+        Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
+        Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
+        return assemble(p, model, ts, Y, [("slide", 1.0)] * n)["results"]
+    return states
+
+
+def ode_states(p, model, phases):
+    from . import dynamics
+    from .solver import assemble
+
+    def states(ts):
+        ts = [float(t) for t in ts]
+        Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in ts])
+        return assemble(p, model, ts, Y, [dynamics.phase_at(phases, t).mode for t in ts])["results"]
+    return states
+
+
+def ode_breaks(phases) -> list[float]:
+    out = set()
+    for ph in phases:
+        out |= {float(t) for t in ph.steps_t}
+    return sorted(out)
+
+
+def uniform_breaks(t_end: float, period) -> list[float]:
+    n = PIECES
+    if period and math.isfinite(period) and period > 0:
+        n = max(PER_PERIOD, math.ceil(t_end / period * PER_PERIOD))
+    n = min(n, MAX_PIECES)
+    return [t_end * k / n for k in range(n + 1)]
+
+
+def report(p, res, states, breaks, keys) -> None:
+    """``distance`` at the times of ``at`` and the ``find`` answers."""
+    t_end = float(p.t_end)
+    B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
+
+    memo: dict[float, dict] = {}
+
+    def batch(ts) -> list[dict]:
+        new = [float(t) for t in ts if float(t) not in memo]
+        if new:
+            if len(memo) > 50_000:
+                memo.clear()
+            memo.update(zip(new, _entries(states(new), len(new), keys)))
+        return [memo[float(t)] for t in ts]
+
+    turns = [] if t_end <= 0 else _turns(batch, B)
+    s = lambda t: batch([t])[0]["s"]                 # noqa: E731
+    s_at = {}
+
+    def distance(t: float) -> float:
+        knots = [0.0] + [x for x in turns if x < t] + [t]
+        for k in knots:
+            if k not in s_at:
+                s_at[k] = s(k)
+        return sum(abs(s_at[b] - s_at[a]) for a, b in zip(knots, knots[1:])) + 0.0
+
+    res.results["distance"] = [distance(float(t)) for t in p.at]
+    if not p.find:
+        return
+    params = resolve_params(p.params)
+    const = lambda text: constant(text, params)      # noqa: E731
+
+    def full(t: float) -> dict:
+        return dict(batch([t])[0], distance=distance(t))
+
+    motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol),
+                            rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a"},
+                            batch=lambda ts: [dict(e) for e in batch(ts)])
+    mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
+
+
+def _turns(batch, B) -> list[float]:
+    sm = mf.StateMotion(lambda t: batch([t])[0], B[0], B[-1], B, batch=batch)
+    sm.prefetch()
+    return mf.turns(lambda t: sm.value("s_dot", t), B)

@@ -1,0 +1,61 @@
+"""The ``find`` queries and ``distance`` of a particle's motion (§11), on the ODE's dense output.
+
+The motion is the integrated trajectory at any time (every step's dense output, the same steps
+as the reported times) or the exact conic of an orbit; its breaks are the accepted steps and the
+phase ends (a stop by friction, a rest), between which the state is one interpolating
+polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x
+and a of v, so a turning point of a coordinate is a root of its rate (Brent).  ``distance`` is
+∫|v| dt by Gauss–Legendre on every step (:class:`dyncli.motion_find.Odometer`).
+"""
+
+from __future__ import annotations
+
+from dyncli import motion_find as mf
+from dyncli.expr import constant, resolve_params
+
+#: the results over time a find entry holds (as at an ``at`` time)
+STATE = ("x", "v", "a", "T", "V", "E", "W_nc", "H_O")
+
+
+def breaks(traj) -> list[float]:
+    ts = {float(t) for t in traj.steps()[0]}
+    for ph in traj.phases:
+        ts |= {float(ph.t0), float(ph.t1)}
+    return sorted(ts)
+
+
+def report(p, res, at_times, traj_of, pieces=None) -> None:
+    """``distance`` at the times of ``at`` and the ``find`` answers.  ``at_times(ts)``: the
+    reported quantities at many times as arrays (solver._at_times on the dense trajectory);
+    ``traj_of()``: the dense trajectory; ``pieces``: the breaks when they are not its steps (the
+    exact orbit: equal steps of the eccentric anomaly)."""
+    B = pieces if pieces is not None else breaks(traj_of())
+
+    def batch(ts) -> list[dict]:
+        S = at_times(ts)
+        out = []
+        for j in range(len(ts)):
+            out.append({k: (S[k][:, j].tolist() if S[k].ndim == 2 else float(S[k][j])) for k in STATE})
+        return out
+
+    def speeds(ts):
+        import numpy as np
+
+        return np.linalg.norm(at_times(ts)["v"], axis=0)
+
+    odo = mf.Odometer(speeds, B)
+    res.results["distance"] = odo.at(p.at)
+    if not p.find:
+        return
+    params = resolve_params(p.params)
+    const = lambda text: constant(text, params)      # noqa: E731
+
+    def full(t: float) -> dict:
+        st = batch([t])[0]
+        st["distance"] = odo.at([t])[0]
+        return st
+
+    motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol),
+                            rates={"x": "v", "v": "a"},
+                            batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))])
+    mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))

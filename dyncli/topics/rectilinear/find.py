@@ -1,0 +1,210 @@
+"""The queries of every motion in ``rectilinear`` (§11), and ``distance`` in every answer.
+
+The type's own queries ({t}, {v}, {s}) keep their routes (closed form, quadratures, the ODE's
+events).  ``when``, ``max``, ``min`` — and a ``{v: V}`` or ``{s: S}`` equal to the initial state,
+which counts only when the motion reaches it again (from rest, ``{v: 0}`` is the next turning
+point, not the release) — are answered by :mod:`dyncli.motion_find` on the motion the route
+gives at any time (one batched run per search: :func:`solver.sample`), with the exact rates
+(v of s, a(t, s, v) of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
+since t1) is Σ|Δs| between the turning points.
+"""
+
+from __future__ import annotations
+
+import math
+
+from dyncli import motion_find as mf
+from dyncli import queries as _q
+from dyncli.errors import NumericalError
+from dyncli.expr import constant, resolve_params
+
+#: pieces of the search when the motion has no period; per period when it has one; at most
+PIECES, PER_PERIOD, MAX_PIECES = 256, 8, 20_000
+GENERIC = ("when", "max", "min")
+
+
+def split(p) -> tuple[list[int], list[tuple[int, dict]]]:
+    """(the indices of the queries the type's routes answer, (index, raw query) of the others)."""
+    legacy, generic = [], []
+    for i, q in enumerate(p.find):
+        held = (q.kind == "v" and q.v == p.v1) or (q.kind == "s" and q.s == p.s1)
+        if q.kind in GENERIC:
+            generic.append((i, q.raw()))
+        elif held:
+            generic.append((i, {"when": {q.kind: q.target}}))
+        else:
+            legacy.append(i)
+    return legacy, generic
+
+
+class _Motion:
+    """s, v, a at any time of one problem, by its own route (batched)."""
+
+    def __init__(self, p, sample):
+        self.p, self.sample = p, sample
+
+    def batch(self, times: list[float]) -> list[dict]:
+        memo = self.__dict__.setdefault("_memo", {})
+        new = [float(t) for t in times if float(t) not in memo]
+        if new:
+            if len(memo) > 100_000:
+                memo.clear()
+            memo.update(zip(new, (self._entry(e) for e in self.sample(self.p, new))))
+        return [memo[float(t)] for t in times]
+
+    def state(self, t: float) -> dict:
+        return self.batch([t])[0]
+
+    @staticmethod
+    def _entry(e: dict) -> dict:
+        if not e or not e.get("reached"):
+            raise NumericalError("the motion is not defined there")
+        return {"s": e["s"], "v": e["v"], "a": e["a"]}
+
+    def accel(self, t: float) -> float:
+        st = self.state(t)
+        return float(self.p.a(t=t, s=st["s"], v=st["v"]))
+
+    def reachable_end(self, t_end: float) -> float:
+        """t_end, or the last time before it the motion reaches (it ends early: a blow-up)."""
+        try:
+            self.state(t_end)
+            return t_end
+        except NumericalError:
+            pass
+        lo, hi = self.p.t1, t_end
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            try:
+                self.state(mid)
+                lo = mid
+            except NumericalError:
+                hi = mid
+        return lo
+
+
+def _uniform(t1: float, t_end: float, n: int = PIECES) -> list[float]:
+    return [t1 + (t_end - t1) * k / n for k in range(n + 1)]
+
+
+def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[list[float], list[float] | None]:
+    """(the times in (lo, hi) where v changes sign, the other times the results are smooth and
+    monotonic between, or None when only a uniform grid can tell): case 1 from (6.5a); case 3 —
+    v is monotonic — the one zero of v by its route; case 4 from its route (the first turning
+    point, then every half period: a swing between two turning points takes half the period,
+    (6.12)); case 2: v is monotonic between the zeros of a(t) (an explicit function of t, found
+    by Brent after a fine vectorised scan), so each piece holds at most one turning point;
+    the general case: the roots of v (Brent) on a uniform grid of the route's motion."""
+    t1, case = p.t1, res.results.get("case")
+    if case == 1:
+        a = p.a.value()
+        t = t1 - p.v1 / a if a != 0 else math.inf
+        return ([t] if lo < t < hi else []), []
+    if case == 3:
+        e = solve_one(p, {"v": 0.0}) if p.v1 != 0 else None
+        return ([e["t"]] if e and e.get("reached") and lo < e["t"] < hi else []), []
+    if case == 4:
+        return _swings(p, res, lo, hi, solve_one), []
+    if case == 2:
+        knots = _zeros_of_a(p, lo, hi)
+        pts = [lo] + knots + [hi]
+        V = [st["v"] for st in motion.batch(pts)]
+        v = lambda t: motion.state(t)["v"]         # noqa: E731
+        turns = [_q._root(v, a, b) for a, b, va, vb in zip(pts, pts[1:], V, V[1:]) if va * vb < 0]
+        return sorted(turns + [a for a, va in zip(pts[1:-1], V[1:-1]) if va == 0]), knots
+    grid = _uniform(lo, hi)
+    sm = mf.StateMotion(motion.state, lo, hi, grid, batch=motion.batch)
+    sm.prefetch()
+    return mf.turns(lambda t: sm.value("v", t), grid), None
+
+
+def _swings(p, res, lo, hi, solve_one) -> list[float]:
+    T, t1 = res.results.get("period"), p.t1
+    if p.v1 == 0:
+        first = t1
+    else:
+        e = solve_one(p, {"v": 0.0})
+        first = e["t"] if e and e.get("reached") else None
+    if first is None or first >= hi:
+        return []
+    if not T:
+        return [first] if lo < first < hi else []
+    n = min(math.floor((hi - first) / (0.5 * T)), MAX_PIECES)
+    k0 = max(0, math.ceil((lo - first) / (0.5 * T))) if lo > first else 0
+    return [x for x in (first + 0.5 * T * k for k in range(k0, n + 1)) if lo < x < hi]
+
+
+def _zeros_of_a(p, lo: float, hi: float, n: int = 4096) -> list[float]:
+    import numpy as np
+
+    ts = np.linspace(lo, hi, n + 1)
+    with np.errstate(all="ignore"):
+        A = np.broadcast_to(np.asarray(p.a(t=ts), dtype=float), ts.shape)
+    f = lambda t: float(p.a(t=t))                    # noqa: E731
+    out = []
+    for k in range(n):
+        if A[k] * A[k + 1] < 0:
+            out.append(_q._root(f, float(ts[k]), float(ts[k + 1])))
+        elif A[k + 1] == 0 and k + 1 < n:
+            out.append(float(ts[k + 1]))
+    return out
+
+
+def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | None) -> list[float]:
+    """The turning points and the knots (each piece monotonic in s and v), each piece cut in
+    half; a uniform grid too when those are not known (knots None)."""
+    pts = sorted({t1, t_end} | {x for x in turns + (knots or []) if t1 < x < t_end})
+    out = set(pts) | {0.5 * (a + b) for a, b in zip(pts, pts[1:])}
+    if knots is None:
+        out |= set(_uniform(t1, t_end))
+    return sorted(out)
+
+
+def answer(p, res, generic, items, sample, solve_one) -> None:
+    """Fill ``items`` (the answers in the user's order) for the generic queries, then add
+    ``distance`` to every reached answer."""
+    params = resolve_params(p.params)
+    const = lambda text: constant(text, params)      # noqa: E731
+    if res.results.get("case") == 2 and str(res.method).startswith("quadrature"):
+        from dyncli.topics.rectilinear.case2 import States
+
+        sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
+    motion = _Motion(p, sample)
+    t1 = p.t1
+    asked = [q.t for q in p.find if q.kind == "t"]
+    t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
+    raw = [x for _, x in generic]
+    if generic:
+        t_end = motion.reachable_end(mf.search_end(t_end, raw, const))
+    else:
+        t_end = t1
+    times = [e["t"] for e in items if e and e.get("reached")] + [t1, t_end]
+    lo, hi = min(times), max(times)
+    turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
+    if generic:
+        def batch(ts) -> list[dict]:                 # the state with the distance travelled
+            return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
+                    for t, st in zip(ts, motion.batch(ts))]
+
+        sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
+                            rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
+                            rates={"s": "v", "v": lambda t, _: motion.accel(t),
+                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch)
+        for (i, _), a in zip(generic, mf.answer_find(raw, sm, const, None, full=motion.state)):
+            if not a["reached"]:
+                res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"
+                         + (" (t1 + t_max)" if t_end >= t1 + p.t_max else ""))
+                a.update({"s": None, "v": None, "a": None})
+            items[i] = a
+    for e in items:
+        if e is not None:
+            e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
+
+
+def _distance(p, e: dict, turns: list[float], motion) -> float:
+    """∫|v| dt between t1 and the answer's time: Σ|Δs| between the turning points."""
+    a, b = sorted((p.t1, e["t"]))
+    knots = [a] + [x for x in turns if a < x < b] + [b]
+    s = {t: motion.state(t)["s"] for t in knots[1:-1]}
+    s[a], s[b] = (p.s1, e["s"]) if a == p.t1 else (e["s"], p.s1)
+    return sum(abs(s[y] - s[x]) for x, y in zip(knots, knots[1:])) + 0.0

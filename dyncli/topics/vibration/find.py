@@ -1,0 +1,236 @@
+"""The ``find`` queries and ``distance`` of a vibration (§11), on the exact closed form.
+
+The motion is the closed-form total response at any time (:func:`closed_form.response_at`, or the
+force-excited :func:`forced.response_at`); its rates are exact (v is the rate of x, and the rates
+of v and w follow from the equation of motion (17.15a)), so a turning point is a root of the rate
+(Brent), never a sampled peak.  The breaks are an eighth of the shortest period present (the
+damped free vibration's, the excitation's), so every piece holds at most one turning point of
+each harmonic.
+
+``distance`` is Σ|Δx| between the turning points (the roots of v).  Free vibration: the turning
+points in closed form (v ∝ e^(−ζωₙt) cos(ω*t + β) vanishes at ω*t + β = π/2 + kπ; at most one
+when ζ ≥ 1) and the sum over them as a geometric series (each |w| at a turning point is the last
+times e^(−ζωₙπ/ω*)) — O(1) at any time.  With a base motion or a force: the roots of v on the grid
+of breaks, all at once (numpy: the steady state plus the free vibration that makes up the initial
+conditions, and safeguarded Newton steps with the exact acceleration; an error δ in a turning
+point's time changes x there by ½|ẍ|δ² only).
+"""
+
+from __future__ import annotations
+
+import math
+
+from dyncli import motion_find as mf
+from dyncli.expr import constant, resolve_params
+
+from . import closed_form as cf
+from . import forced
+
+#: pieces per shortest period, and the most pieces a search takes (beyond: a coarser grid, warned)
+PER_PERIOD, MAX_PIECES = 8, 20_000
+
+
+class Response:
+    """x(t), v(t), w(t) and the acceleration of one vibration problem, exact."""
+
+    def __init__(self, p, omega_n, zeta):
+        self.p, self.omega_n, self.zeta = p, omega_n, zeta
+        self.L = p.L
+        self.x0 = self.L if p.x0 is None else p.x0
+        self.s0, self.Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
+        self.fo = p.force
+
+    def at(self, t: float) -> tuple[float, float, float]:
+        p = self.p
+        if self.fo is None:
+            return cf.response_at(t, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0, v0=p.v0,
+                                  s0=self.s0, Omega=self.Om)
+        return forced.response_at(t, m=p.m, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0,
+                                  v0=p.v0, F0=self.fo.amplitude, Om=self.fo.omega)
+
+    def acceleration(self, t: float) -> float:
+        """ẍ from (17.15a): −ωₙ²(x − s − L) − 2ζωₙ(ẋ − ṡ) + F/m."""
+        x, v, _ = self.at(t)
+        s, sd = self.s0 * math.sin(self.Om * t), self.s0 * self.Om * math.cos(self.Om * t)
+        f = 0.0 if self.fo is None else self.fo.amplitude * math.sin(self.fo.omega * t) / self.p.m
+        wn = self.omega_n
+        return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
+
+    def arrays(self, t):
+        """(x, v) on an array of times (numpy): the steady state plus the free vibration that
+        makes up the initial conditions (a few numpy operations per call); at an undamped
+        resonance (no steady state) the general closed form."""
+        p = self.p
+        P, Om = self._steady()
+        if P is None:
+            if self.fo is None:
+                x, v, _ = cf.response(t, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0, v0=p.v0,
+                                      s0=self.s0, Omega=self.Om)
+                return x, v
+            wh, vh = cf.free(t, self.x0 - self.L, p.v0, self.omega_n, self.zeta)
+            wf, vf = cf.forced(t, self.fo.amplitude / p.m, self.fo.omega, self.omega_n, self.zeta)
+            return wh + wf + self.L, vh + vf
+        import numpy as np
+
+        e = np.exp(1j * Om * np.asarray(t, dtype=float))
+        wp, vp = (P * e).imag, (1j * Om * P * e).imag
+        wh, vh = cf.free(t, self.x0 - self.L - P.imag, p.v0 - (1j * Om * P).imag, self.omega_n, self.zeta)
+        return self.L + wh + wp, vh + vp
+
+    def _steady(self):
+        """(the complex amplitude P of the steady state x − L = Im(P e^(iΩt)), Ω), or (None, None)."""
+        Om = self.fo.omega if self.fo is not None else self.Om
+        r = Om / self.omega_n
+        D = complex(1.0 - r * r, 2.0 * self.zeta * r)
+        if D == 0:
+            return None, None
+        if self.fo is not None:
+            return (self.fo.amplitude / (self.p.m * self.omega_n ** 2)) / D, Om
+        return self.s0 * complex(1.0, 2.0 * self.zeta * r) / D, Om
+
+    def accel_array(self, t):
+        import numpy as np
+
+        x, v = self.arrays(t)
+        s, sd = self.s0 * np.sin(self.Om * t), self.s0 * self.Om * np.cos(self.Om * t)
+        f = 0.0 if self.fo is None else self.fo.amplitude * np.sin(self.fo.omega * t) / self.p.m
+        wn = self.omega_n
+        return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
+
+    def w_rate(self, t: float) -> float:
+        return self.at(t)[1] - self.s0 * self.Om * math.cos(self.Om * t)
+
+    def breaks(self, t_end: float) -> tuple[list[float], bool]:
+        """Every 1/PER_PERIOD of the shortest period over [0, t_end] (and whether capped)."""
+        _, _, lam2 = cf.roots(self.omega_n, self.zeta)
+        rate = max(self.omega_n, lam2 if self.zeta >= 1 else 0.0, self.Om, self.fo.omega if self.fo else 0.0)
+        h = 2.0 * math.pi / rate / PER_PERIOD
+        n = math.ceil(t_end / h) if h > 0 and t_end > 0 else 1
+        capped = n > MAX_PIECES
+        n = min(max(n, 1), MAX_PIECES)
+        return [t_end * k / n for k in range(n + 1)], capped
+
+
+def report(p, res, omega_n, zeta) -> None:
+    """``distance`` at the times of ``at`` and the ``find`` answers."""
+    if not p.at and not p.find:
+        return
+    params = resolve_params(p.params)
+    const = lambda text: constant(text, params)      # noqa: E731
+    t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
+    resp = Response(p, omega_n, zeta)
+    odo = _odometer(resp, t_end)
+    if p.at:
+        res.results["distance"] = odo.many(list(p.at))
+    if not p.find:
+        return
+    breaks, capped = resp.breaks(t_end)
+    if capped:
+        res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
+                 "turning points closer than the coarser grid may be missed (shorten the window with within)")
+
+    def state(t: float) -> dict:
+        xx, v, w = resp.at(t)
+        return {"x": xx, "v": v, "w": w, "distance": odo(t)}
+
+    motion = mf.StateMotion(state, 0.0, t_end, breaks,
+                            rates={"x": "v", "v": lambda t, _: resp.acceleration(t), "w": lambda t, _: resp.w_rate(t),
+                                   "distance": lambda t, _: abs(resp.at(t)[1])})
+    mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn))
+
+
+def _odometer(resp: Response, t_end: float):
+    """distance(t) for 0 <= t <= t_end."""
+    if resp.fo is None and resp.s0 == 0.0:
+        return _free_odometer(resp)
+    import numpy as np
+
+    turns = _forced_turns(resp, t_end) if t_end > 0 else []
+    at_turns = dict(zip(turns, resp.arrays(np.asarray(turns, dtype=float))[0].tolist()))
+
+    def x(u: float) -> float:
+        return at_turns[u] if u in at_turns else resp.at(u)[0]
+    return _Odometer(lambda ts: mf.turning_length(x, turns, ts))
+
+
+class _Odometer:
+    """distance(t) for one time, ``many(times)`` for a list."""
+
+    def __init__(self, many, one=None):
+        self.many = many
+        self.one = one
+
+    def __call__(self, t: float) -> float:
+        return self.one(t) if self.one is not None else self.many([t])[0]
+
+
+def _free_odometer(resp: Response):
+    """Free vibration: the turning points and the distance in closed form."""
+    wn, z = resp.omega_n, resp.zeta
+    w0, wd0 = resp.x0 - resp.L, resp.p.v0
+    ws, _, _ = cf.roots(wn, z)
+    w = lambda t: cf.free_at(t, w0, wd0, wn, z)[0]    # noqa: E731
+    if z < 1.0:
+        # v = e^(−ζωₙt)(ẇ0 cos ω*t − K sin ω*t / ω*), K = ωₙ²w0 + ζωₙẇ0: R cos(ω*t + β)
+        K = wn * (wn * w0) + z * wn * wd0
+        beta = math.atan2(K / ws, wd0)
+        y1 = (0.5 * math.pi - beta) % math.pi         # the first root of ω*t + β = π/2 + kπ in (0, π]
+        if y1 == 0.0:
+            y1 = math.pi
+        t1, half = y1 / ws, math.pi / ws
+        decay = z * wn * half                         # ln of the ratio of successive |w| at turning points
+
+        def distance(t: float) -> float:
+            if (w0 == 0.0 and wd0 == 0.0) or t <= t1:
+                return abs(w(t) - w0)
+            k = math.floor((t - t1) / half)           # turning points t1 + j·half, j = 0..k, at or before t
+            tk = t1 + k * half
+            a1 = abs(w(t1))
+            if decay == 0.0:
+                inner = 2.0 * a1 * k
+            else:
+                inner = a1 * (1.0 + math.exp(-decay)) * math.expm1(-k * decay) / math.expm1(-decay)
+            return abs(w(t1) - w0) + inner + abs(w(t) - w(tk))
+        return _Odometer(lambda ts: [distance(t) for t in ts], distance)
+    # ζ ≥ 1: v vanishes at most once (a sum of two decaying exponentials)
+    v = lambda t: cf.free_at(t, w0, wd0, wn, z)[1]    # noqa: E731
+    cache: dict[float, list[float]] = {}
+
+    def distance(t: float) -> float:
+        if t not in cache:
+            turn = []
+            if t > 0 and v(0.0) * v(t) < 0:
+                from dyncli.queries import _root
+
+                turn = [_root(v, 0.0, t)]
+            cache[t] = turn
+        knots = [0.0] + cache[t] + [t]
+        return sum(abs(w(b) - w(a)) for a, b in zip(knots, knots[1:])) + 0.0
+    return _Odometer(lambda ts: [distance(t) for t in ts], distance)
+
+
+def _forced_turns(resp: Response, t_end: float) -> list[float]:
+    """The roots of v in (0, t_end) with a base motion or a force: sign changes on the grid of
+    breaks, each refined by safeguarded Newton steps (the exact acceleration), all at once."""
+    import numpy as np
+
+    breaks, _ = resp.breaks(t_end)
+    T = np.asarray(breaks, dtype=float)
+    _, V = resp.arrays(T)
+    k = np.nonzero(V[:-1] * V[1:] < 0)[0]
+    zeros = T[1:-1][V[1:-1] == 0.0]
+    a, b, va, vb = T[k], T[k + 1], V[k], V[k + 1]
+    t = a - va * (b - a) / (vb - va)
+    for _ in range(5):                                 # Newton from the secant: a few steps reach rounding
+        _, vt = resp.arrays(t)
+        neg = (vt * va) < 0                            # the root lies in [a, t]
+        b, vb = np.where(neg, t, b), np.where(neg, vt, vb)
+        a, va = np.where(neg, a, t), np.where(neg, va, vt)
+        step = t - vt / resp.accel_array(t)
+        bad = ~((step > a) & (step < b)) | ~np.isfinite(step)
+        t_new = np.where(bad, 0.5 * (a + b), step)
+        if np.all(np.abs(t_new - t) <= 4 * np.finfo(float).eps * np.maximum(np.abs(t), 1e-300)):
+            t = t_new
+            break
+        t = t_new
+    return sorted(t.tolist() + zeros.tolist())

@@ -1,0 +1,106 @@
+"""A bare angle beyond a full turn (``theta: 30`` meant as degrees) is named
+with the way to write degrees (``30*deg``), over every angle field of every
+type; ``30*deg``, ``0.5`` and ``pi/2`` pass silently."""
+
+from __future__ import annotations
+
+import copy
+import math
+
+import pytest
+import yaml
+
+from dyncli import registry
+from dyncli.angles import declared_angle_fields, degrees_warnings
+from dyncli.loader import split_problems, validate
+from dyncli.run import solve_one
+from tests.conftest import ROOT
+
+IMPACT_ROUGH = {"eta": 0.5, "t": [0, 1, 0]}   # the general model (eta, phi) and its tangent, in place of e
+
+
+def _template(t: str) -> dict:
+    return yaml.safe_load((ROOT / "dyncli" / "templates" / f"{t}.yaml").read_text(encoding="utf-8"))
+
+
+def _problem(t: str, path: str, value) -> dict:
+    """The type's template with the angle field at ``path`` set to ``value``
+    (and what that field needs beside it)."""
+    raw = copy.deepcopy(_template(t))
+    if t == "impact":
+        raw.pop("e")
+        raw.update(IMPACT_ROUGH)
+    parts = path.replace("*", "0").split(".")
+    node = raw
+    for p in parts[:-1]:
+        node = node[int(p)] if p.isdigit() else node.setdefault(p, {})
+    leaf = parts[-1]
+    if parts[-2:] == ["orientation", "angle"] or parts[-2:] == ["basis", "angle"]:
+        node["axis"] = [0, 0, 1]
+    node[leaf] = [value, 0, 0] if leaf == "euler313" else value
+    return raw
+
+
+def _solve(raw: dict):
+    problems, diags = split_problems("angle.yaml", yaml.safe_dump(raw).encode(), ROOT)
+    assert not diags, diags
+    validate(problems[0])
+    return solve_one(problems[0])
+
+
+CASES = [(t, p) for t in registry.TYPES for p in declared_angle_fields(registry.model_class(t))]
+
+
+def test_the_angle_fields_are_found():
+    """The declarations name the angle fields this test covers (a new one joins by itself)."""
+    found = {f"{t}:{p}" for t, p in CASES}
+    assert {"precession:theta", "top:theta", "top:psi", "top:phi", "gyroscope:theta0", "impact:phi",
+            "motor-bodies:alpha", "bearing-forces:masses.*.alpha", "inertia:parts.*.orientation.angle",
+            "inertia:parts.*.orientation.euler313", "inertia:basis.angle", "inertia:basis.euler313"} <= found
+
+
+@pytest.mark.parametrize("t,path", CASES, ids=[f"{t}:{p}" for t, p in CASES])
+@pytest.mark.parametrize("bare", [30, "30", 45.0, -90, 360])
+def test_bare_degrees_are_named(t, path, bare):
+    o = _solve(_problem(t, path, bare))
+    shown = f"{float(bare):g}"
+    dotted = path.replace("*", "0")
+    if o.exit_code == 0:
+        hits = [w for w in o.result.warnings if w.startswith(dotted) and f"write {shown}*deg" in w]
+        assert len(hits) == 1, o.result.warnings
+        assert "radians" in hits[0]
+    else:   # refused by the field's range (a friction angle beyond pi/2): the refusal says it too
+        assert o.exit_code == 2, o.message
+        assert dotted in o.message and f"write {shown}*deg" in o.message, o.message
+
+
+@pytest.mark.parametrize("t,path", CASES, ids=[f"{t}:{p}" for t, p in CASES])
+@pytest.mark.parametrize("value", ["30*deg", 0.5, "pi/2", "-pi/4", 6, "0.25 rad", "30 deg"])
+def test_radians_and_degrees_written_as_such_pass(t, path, value):
+    o = _solve(_problem(t, path, value))
+    if o.exit_code == 0:
+        assert not [w for w in o.result.warnings if "*deg" in w], o.result.warnings
+    else:
+        assert "*deg" not in (o.message or ""), o.message
+
+
+def test_an_expression_in_t_is_not_bare():
+    """bearing-forces' alpha(t) written as an expression is never judged; a bare 30 is."""
+    raw = _template("bearing-forces")
+    raw["masses"][0]["alpha"] = "30 + t"
+    o = _solve(raw)
+    assert o.exit_code == 0 and not [w for w in o.result.warnings if "*deg" in w]
+
+
+def test_warning_text():
+    problems, _ = split_problems("p.yaml", yaml.safe_dump(_problem("precession", "theta", 30)).encode(), ROOT)
+    validate(problems[0])
+    (w,) = degrees_warnings(problems[0].model, problems[0].raw)
+    assert w == f"theta: 30 is read in radians ({math.degrees(30):.4g}°, more than a full turn); " \
+                "if you meant degrees, write 30*deg"
+
+
+def test_a_huge_integer_is_left_to_its_field():
+    from dyncli.angles import _bare
+
+    assert _bare(10 ** 400) is None and _bare("9" * 500) is None and _bare("30") == 30.0
