@@ -6,6 +6,39 @@ The Python API (``dyncli.solve``, ``dyncli.sweep``, ``dyncli.Solution``,
 first use.
 """
 
+import sys as _sys
+
+
+def _interrupted(signum, frame):  # pragma: no cover - exercised in a subprocess
+    import os
+
+    os._exit(130)
+
+
+def quiet_interrupts() -> None:
+    """SIGINT (Ctrl-C) ends the process with exit 130 and nothing printed
+    (the command's handler; never installed by ``import dyncli``)."""
+    import signal
+
+    signal.signal(signal.SIGINT, _interrupted)
+
+
+def _started_as_command() -> bool:
+    """True when this import is the ``dyncli`` command's own start-up
+    (``python -m dyncli`` or the ``dyncli`` script), never for ``import dyncli``."""
+    orig = getattr(_sys, "orig_argv", [])
+    if len(orig) >= 3 and orig[1:3] == ["-m", "dyncli"]:
+        return True
+    name = (_sys.argv[0] if _sys.argv else "").replace("\\", "/").rsplit("/", 1)[-1].lower()
+    return name in ("dyncli", "dyncli.exe", "dyncli-script.py")
+
+
+if _started_as_command():
+    # the first thing the command does: an interrupt (Ctrl-C) from here on
+    # ends it with exit 130 and nothing printed (dyncli.__main__); before this
+    # line only the interpreter's own start-up runs (docs/cli.md, "Interrupts")
+    quiet_interrupts()
+
 __version__ = "0.1.0"
 
 _LAZY = {

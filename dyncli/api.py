@@ -6,7 +6,10 @@ a mapping and returns one :class:`Solution` per problem;
 point of the sweeps' product.  Invalid input raises
 :class:`dyncli.InputError` whose message holds every error, one
 ``file:line:col: field: what is wrong`` line each (also as ``.messages``);
-a failed numerical step raises :class:`dyncli.NumericalError`.
+a failed numerical step raises :class:`dyncli.NumericalError`; a source or
+values of the wrong Python type raise TypeError.  Nothing else is raised for
+any input (RuntimeError only for a bug in dyncli, with the message asking for
+a report).
 """
 
 from __future__ import annotations
@@ -57,10 +60,17 @@ class Solution:
         return problem_record(self._problem, self._result)
 
     def table(self, digits: int = 6, units: str | None = None) -> str:
-        """The terminal view as plain text (as printed to a pipe)."""
+        """The terminal view as plain text (as printed to a pipe); ``digits`` 1 to 17,
+        ``units`` as ``--units`` ("deg,mm" or a list of names)."""
         from dyncli.render.emit import table_text
         from dyncli.run import parse_units
 
+        if isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 17:
+            raise TypeError(f"Solution.table: digits must be a whole number from 1 to 17, got {digits!r}")
+        if isinstance(units, (list, tuple)) and all(isinstance(u, str) for u in units):
+            units = ",".join(units)
+        if units is not None and not isinstance(units, str):
+            raise TypeError(f"Solution.table: units must be a text such as 'deg,mm' or a list of unit names, got {units!r}")
         return table_text(self._problem, self._result, digits, parse_units(units))
 
     def _view(self):
@@ -82,14 +92,23 @@ class Solution:
         return f"<Solution {self.type} {self.title!r}: {len(self.results)} results, method {self.method}>"
 
 
-def _plain(x: Any) -> Any:
-    """numpy values, tuples and paths in a mapping -> plain YAML data."""
-    if isinstance(x, Mapping):
-        return {str(k): _plain(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_plain(v) for v in x]
+def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
+    """numpy values, tuples and paths in a mapping -> plain YAML data.  A
+    mapping or list that contains itself, or nested deeper than a problem
+    file may be (yamlsafe.MAX_DEPTH), is InputError naming where."""
+    from dyncli.yamlsafe import MAX_DEPTH
+
+    if isinstance(x, (Mapping, list, tuple)):
+        if any(x is o for o in _open):
+            raise InputError(f"{where or 'the mapping'}: contains itself (a reference cycle); give plain data")
+        if len(_open) >= MAX_DEPTH:
+            raise InputError(f"{where or 'the mapping'}: nested more than {MAX_DEPTH} levels deep")
+        inner = _open + (x,)
+        if isinstance(x, Mapping):
+            return {str(k): _plain(v, f"{where}.{k}" if where else str(k), inner) for k, v in x.items()}
+        return [_plain(v, f"{where}.{i}" if where else str(i), inner) for i, v in enumerate(x)]
     if hasattr(x, "tolist") and type(x).__module__.startswith("numpy"):
-        return _plain(x.tolist())
+        return _plain(x.tolist(), where, _open)
     if isinstance(x, Path):
         return str(x)
     return x
@@ -101,7 +120,11 @@ def load(source: Any):
     from dyncli.yamlsafe import Document
 
     if isinstance(source, Mapping):
-        problems, diags = split_problems("<dict>", Document(_plain(source)), Path.cwd())
+        try:
+            data = _plain(source)
+        except InputError as exc:
+            raise _input_error([f"<dict>: {exc.message}"]) from None
+        problems, diags = split_problems("<dict>", Document(data), Path.cwd())
     elif isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and ":" not in source.replace("\\", "/").split("/")[-1]):
         return load_paths([str(source)])
     elif isinstance(source, (str, bytes)):
@@ -116,18 +139,34 @@ def load(source: Any):
 def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> list:
     from dyncli.overrides import Assign
 
-    out = [Assign("override", k.replace("__", "."), (_plain(v),)) for k, v in overrides.items()]
+    out = [Assign("override", k.replace("__", "."), (_plain(v, k),)) for k, v in overrides.items()]
+    if sweeps is not None and not isinstance(sweeps, Mapping):
+        raise TypeError(f"dyncli.sweep: values must be a mapping {{path: values}}, e.g. {{'k': [100, 200]}}; "
+                        f"got {type(sweeps).__name__}")
     for k, values in (sweeps or {}).items():
-        if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        if not isinstance(k, str):
+            raise TypeError(f"dyncli.sweep: a path must be a string such as 'k' or 'base.omega', got {k!r}")
+        if not _is_sequence(values):
             raise InputError(f"sweep {k}: give a list of values, e.g. {{{k!r}: [100, 200, 300]}} (got {values!r})")
-        vals = tuple(_plain(list(values)))
+        vals = tuple(_plain(list(values), k))
         if not vals:
             raise InputError(f"sweep {k}: no values; give a list of values, e.g. {{{k!r}: [100, 200, 300]}}")
         out.append(Assign("sweep", k.replace("__", "."), vals, sweep=True))
     return out
 
 
+def _is_sequence(values: Any) -> bool:
+    """A list, tuple, array or other iterable of values — not a string (its
+    characters), a mapping (its keys), a number or a 0-d array."""
+    if isinstance(values, (str, bytes, Mapping)) or getattr(values, "ndim", 1) == 0:
+        return False
+    return hasattr(values, "__iter__")
+
+
 def _input_error(lines: list[str]) -> InputError:
+    from dyncli.printable import line
+
+    lines = [line(x) for x in lines]           # one line each, a long value shortened (as on stderr)
     err = InputError("\n".join(lines))
     err.messages = lines
     return err
@@ -150,7 +189,9 @@ def _solve(source: Any, overrides: Mapping[str, Any], sweeps: Mapping[str, Any] 
         o = solve_one(p)
         if o.exit_code == 1:
             raise NumericalError(o.message)
-        if o.result is None:
+        if o.exit_code == 2:               # refused by the solver (values beyond a double ...)
+            raise _input_error(o.message.split("\n"))
+        if o.result is None:               # exit 3: a bug in dyncli, never the input's fault
             raise RuntimeError(o.message)
         out.append(Solution(p, o.result))
     return out

@@ -50,7 +50,9 @@ def _main(
 
 
 def _err(msg: str) -> None:
-    print(msg, file=sys.stderr)
+    from dyncli.run import _err as say
+
+    say(msg)
 
 
 @app.command()
@@ -256,8 +258,14 @@ def main() -> None:
     a closed stdout pipe ends quietly (exit 0), a failed write to stdout is
     exit 2 with one line (:mod:`dyncli.stdio`); anything unexpected is a bug
     and maps to exit 3 with one line."""
+    import warnings
+
     from dyncli import stdio
 
+    # no library's warning reaches stderr as raw text (site-packages paths,
+    # source lines): while a problem is solved its warnings become lines among
+    # the results' warnings (dyncli.run.solve_one); anywhere else they are dropped
+    warnings.simplefilter("ignore")
     stdio.setup()
     code, pending = 0, None
     try:

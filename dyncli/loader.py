@@ -16,7 +16,7 @@ from typing import Any
 from dyncli.angles import degrees_hint
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean, resolve_params
-from dyncli.printable import printable
+from dyncli.printable import line as one_line
 from dyncli.yamlsafe import Document, YamlError, load as yaml_load
 
 
@@ -36,7 +36,7 @@ class Diagnostic:
         loc = self.file
         if self.line is not None:
             loc += f":{self.line}:{self.col or 1}"
-        return printable(f"{loc}: " + (f"{self.path}: " if self.path else "") + self.message)  # one line
+        return one_line(f"{loc}: " + (f"{self.path}: " if self.path else "") + self.message)  # one line, shortened
 
     def lines(self) -> list[str]:
         """Every error of the problem, one line each."""
@@ -80,7 +80,13 @@ def read_source(name: str) -> tuple[str, bytes]:
     from dyncli.yamlsafe import MAX_BYTES
 
     if name == "-":
-        data = sys.stdin.buffer.read(MAX_BYTES + 1)
+        stream = getattr(sys.stdin, "buffer", None)
+        if stream is None:            # stdin closed (<&-) or detached
+            raise InputError("-: standard input is closed; give a file name, or pipe the YAML in (... | dyncli solve -)")
+        try:
+            data = stream.read(MAX_BYTES + 1)
+        except (OSError, ValueError) as exc:
+            raise InputError(f"-: cannot read standard input ({getattr(exc, 'strerror', None) or exc})") from None
         return "<stdin>", data
     p = Path(name)
     if not p.exists():

@@ -280,6 +280,7 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     for a in assigns:
         if not any(target(lp, a) for lp in problems):
             raise _unknown(problems, a)
+    _no_path_twice(problems, assigns)
     n = math.prod(len(a.values) for a in assigns if a.sweep)
     if n > MAX_POINTS:
         raise OverrideError(f"--sweep: {n:,} combinations; at most {MAX_POINTS:,} per run")
@@ -287,6 +288,17 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     for lp in problems:
         out += _expand_one(lp, assigns)
     return out
+
+
+def _no_path_twice(problems, assigns: list[Assign]) -> None:
+    """A field given values twice (two --sweep of k, --set and --sweep of k, base and base.omega) is refused."""
+    for lp in problems:
+        hits = [(a, t) for a in assigns if (t := target(lp, a)) is not None]
+        for i, (a, t) in enumerate(hits):
+            for b, u in hits[:i]:
+                if t[:len(u)] == u or u[:len(t)] == t:
+                    raise OverrideError(f"{b.label()} and {a.label()}: both give {'.'.join(map(str, min(t, u, key=len)))!r} "
+                                        "its values; give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
 
 
 def _expand_one(lp, assigns: list[Assign]) -> list:
@@ -355,7 +367,7 @@ def _fast(lp, base, sweeps, hits, points) -> list:
             continue
         if k == 1 or k == len(points) - 1:
             ref = _validated(lp, raw, swept, hits)
-            if ref.error is not None or ref.model.model_dump() != m.model_dump():
+            if ref.error is not None or ref.model.model_dump(warnings=False) != m.model_dump(warnings=False):
                 return out[:1] + _full(lp, base, sweeps, hits, points[1:])
         out.append(replace(lp, raw=raw, model=m, error=None, swept=swept))
     return out

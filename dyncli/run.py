@@ -58,6 +58,10 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
         return Outcome(lp, None, 1, str(d))
     except (KeyboardInterrupt, SystemExit):
         raise
+    except OverflowError as exc:
+        # float arithmetic overflows only on the size of the given numbers (a
+        # sum of masses of 1e308): invalid input for doubles, not a bug
+        return Outcome(lp, None, 2, _too_large(lp, exc))
     except RecursionError as exc:  # pragma: no cover - defensive
         return Outcome(lp, None, 3, _internal(lp, exc), traceback.format_exc())
     except Exception as exc:  # noqa: BLE001 - map every bug to exit 3
@@ -83,6 +87,17 @@ def _library_warnings(result: Result, caught) -> None:
     for w in caught:
         first = str(w.message).strip().splitlines()[0] if str(w.message).strip() else type(w.message).__name__
         result.warn(printable(f"numerical library ({w.category.__name__}): {first[:200]}"))
+
+
+def _too_large(lp: LoadedProblem, exc: OverflowError) -> str:
+    d = Diagnostic(lp.file, None, None, None,
+                   f"{lp.title}: a number overflowed a double while solving ({exc}): the problem's values are "
+                   "too large for floating point (a sum, product or power beyond 1.8e308); give them in units "
+                   "that keep the results below about 1e300")
+    pos = lp.doc.locate(lp.prefix) if lp.doc else None
+    if pos:
+        d.line, d.col = pos
+    return str(d)
 
 
 def _degrees_warnings(result: Result, lp: LoadedProblem) -> None:
@@ -123,9 +138,24 @@ COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "m
 
 
 def _err(msg: str) -> None:
+    """One message on stderr, always through the escaper: control characters
+    visible (a --set path or a title cannot forge a second line or drive the
+    terminal), a very long line shortened (:func:`dyncli.printable.line`)."""
     import sys
 
-    print(msg, file=sys.stderr)
+    from dyncli.printable import line
+
+    print(line(msg), file=sys.stderr)
+
+
+def _err_lines(text: str) -> None:
+    """Messages of one problem, one per line (each :class:`Diagnostic` line
+    is made printable where it is built): each line escaped and shortened."""
+    import sys
+
+    from dyncli.printable import lines
+
+    print(lines(text), file=sys.stderr)
 
 
 def parse_units(text: str | None) -> list[str] | None:
@@ -213,15 +243,19 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
 
 
 def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) -> list[Outcome]:
+    import sys
+
     outcomes = []
     for lp in problems:
         o = solve_one(lp, options)
         outcomes.append(o)
         codes.append(o.exit_code)
         if o.message:
-            _err(o.message)
+            _err_lines(o.message)
             if o.trace and debug:
-                _err(o.trace)
+                from dyncli.printable import lines
+
+                print(lines(o.trace), file=sys.stderr)
         if writer is not None and o.result is not None:
             writer.write(lp, o.result)
     return outcomes
@@ -279,8 +313,10 @@ def validate_command(files, sets=()) -> int:
     problems, codes = loaded
     for lp in problems:
         if lp.error is not None:
-            _err(str(lp.error))
+            _err_lines(str(lp.error))
             codes.append(2)
         else:
-            print(f"{lp.file}: {lp.title} ({lp.type}): ok")
+            from dyncli.printable import line
+
+            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok"))
     return worst(codes)

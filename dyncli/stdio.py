@@ -10,7 +10,11 @@
   :func:`finish` flushes and maps both;
 * :func:`table_width`: the terminal's width in a terminal, the tables'
   natural width otherwise (never an assumed 80 columns); ``COLUMNS`` is
-  honoured when it holds a positive number.
+  honoured when it holds a number of at least :data:`MIN_COLUMNS` (a
+  narrower width could show no value: it is treated as unknown);
+* :func:`write_file`: a whole output file (``-o FILE``) written atomically —
+  a reader or a concurrent run sees the old file or the new one, never a
+  part of one.
 """
 
 from __future__ import annotations
@@ -22,7 +26,9 @@ import sys
 import unicodedata
 
 NATURAL_WIDTH = 100_000
-MIN_WIDTH = 20
+#: a COLUMNS (or terminal) narrower than this is unusable for the tables
+#: (values would be cut to "…"): treated as unknown
+MIN_COLUMNS = 40
 
 ASCII = {"∞": "inf", "−": "-", "—": "-", "–": "-", "·": "*", "×": "x", "≈": "~", "′": "'", "″": "''",
          "…": "...", "°": "deg", "∥": "||", "→": "->", "≤": "<=", "≥": ">=", "±": "+-", "∂": "d",
@@ -170,15 +176,50 @@ def finish(code: int, exc: BaseException | None = None) -> int:
 
 
 def table_width() -> int:
+    """COLUMNS when it is a usable width; else the terminal's width (when at
+    least MIN_COLUMNS, else 80) in a terminal, the natural width elsewhere."""
     cols = os.environ.get("COLUMNS", "").strip()
-    if cols.isdigit() and 0 < int(cols) < NATURAL_WIDTH:
-        return max(MIN_WIDTH, int(cols))
+    if cols.isdigit() and MIN_COLUMNS <= int(cols) < NATURAL_WIDTH:
+        return int(cols)
     if _isatty():
         try:
-            return max(MIN_WIDTH, os.get_terminal_size(sys.__stdout__.fileno()).columns)
+            width = os.get_terminal_size(sys.__stdout__.fileno()).columns
         except (OSError, AttributeError, ValueError):
             return 80
+        return width if width >= MIN_COLUMNS else 80
     return NATURAL_WIDTH
+
+
+def write_file(path: str, text: str) -> None:
+    """Write ``text`` (UTF-8) to ``path`` atomically: a temporary file in the
+    same directory, flushed to disk, then renamed over ``path``
+    (``os.replace``).  OSError propagates; the temporary file is removed."""
+    import tempfile
+
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=".dyncli-", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        try:
+            os.chmod(tmp, 0o666 & ~_umask())
+        except OSError:  # pragma: no cover - a file system without modes
+            pass
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def _isatty() -> bool:

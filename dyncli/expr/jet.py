@@ -238,7 +238,38 @@ def _compile(ir: tuple, var: str, X: Backend):
     raise AssertionError(kind)  # pragma: no cover
 
 
-_CACHE: dict[tuple, Callable] = {}
+class Lru:
+    """A mapping of at most ``size`` entries, the least recently used dropped
+    first (thread-safe: the Python API may solve in several threads)."""
+
+    def __init__(self, size: int):
+        import threading
+        from collections import OrderedDict
+
+        self.size, self._d, self._lock = size, OrderedDict(), threading.Lock()
+
+    def get(self, key):
+        with self._lock:
+            v = self._d.get(key)
+            if v is not None:
+                self._d.move_to_end(key)
+            return v
+
+    def put(self, key, value) -> None:
+        with self._lock:
+            self._d[key] = value
+            self._d.move_to_end(key)
+            while len(self._d) > self.size:
+                self._d.popitem(last=False)
+
+    def __len__(self) -> int:
+        return len(self._d)
+
+
+#: compiled jets of the expressions in use: a sweep reuses a few; a program
+#: solving 10,000 distinct problems must not keep 10,000 of them (~1 kB each)
+CACHE_SIZE = 256
+_CACHE = Lru(CACHE_SIZE)
 
 
 def _compiled(e: Expr, var: str, X: Backend | None) -> Callable:
@@ -247,7 +278,8 @@ def _compiled(e: Expr, var: str, X: Backend | None) -> Callable:
     key = (repr(e.ir), var, X is None)
     fn = _CACHE.get(key)
     if fn is None:
-        fn = _CACHE[key] = compile_jet(e.ir, var, X)
+        fn = compile_jet(e.ir, var, X)
+        _CACHE.put(key, fn)
     return fn
 
 

@@ -5,7 +5,9 @@ to dotted keys (``vA2.0``, ``find.0.t``, ``I_com.1.2``).  With ``long``, a
 problem's series (lists over ``at``) become one row per time with the index
 column (``t``), the other results repeated on each row.  Numbers carry full
 precision (``repr``), ``true``/``false`` for booleans, an empty cell for
-``null``; a failed problem has its message in an ``error`` column.
+``null``; a failed problem has its message in an ``error`` column.  A text
+cell that a spreadsheet would run as a formula (``=``, ``+``, ``-``, ``@``
+first) starts with ``'`` (:func:`dyncli.printable.csv_cell`); numbers keep their sign.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ import io
 import math
 from typing import Any, Iterable
 
+from dyncli.printable import csv_cell, printable
 from dyncli.render.jsonout import jsonable
 
 
@@ -93,6 +96,12 @@ def _plain(v):
     return v
 
 
+def _cell(text: str) -> str:
+    """Every cell (file names, titles, swept text, messages are user text):
+    printable, and never read as a formula by a spreadsheet."""
+    return csv_cell(printable(text))
+
+
 def dumps(outcomes: Iterable[tuple], long: bool = False) -> str:
     """``outcomes``: (loaded problem, Result or None, error message or None)."""
     rows = [r for lp, res, err in outcomes for r in _rows_of(lp, res, err, long)]
@@ -105,7 +114,7 @@ def dumps(outcomes: Iterable[tuple], long: bool = False) -> str:
         columns["error"] = None
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(list(columns))
+    w.writerow([_cell(c) for c in columns])
     for r in rows:
-        w.writerow([r.get(c, "") for c in columns])
+        w.writerow([_cell(r.get(c, "")) for c in columns])
     return buf.getvalue()

@@ -134,7 +134,6 @@ def write_view(draw, output: str | None = None) -> None:
     draw(Console(file=buf, width=width, no_color=True, highlight=False, soft_wrap=False))
     text = "\n".join(line.rstrip() for line in buf.getvalue().split("\n"))
     if output:
-        with open(output, "w", encoding="utf-8") as fh:
-            fh.write(text)
+        stdio.write_file(output, text)
     else:
         sys.stdout.write(text)

@@ -13,12 +13,11 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from dyncli.printable import tex_char
 from dyncli.render.view import Grid, View
 
 PREAMBLE = "\\usepackage{booktabs}\n\\usepackage{siunitx}\n"
 
-_SPECIAL = {"&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{", "}": r"\}",
-            "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "\\": r"\textbackslash{}"}
 _MATH = {"·": r"\cdot", "×": r"\times", "−": "-", "∞": r"\infty", "′": "'", "″": "''", "∥": r"\parallel",
          "→": r"\to", "∂": r"\partial", "√": r"\surd", "≈": r"\approx", "≤": r"\le", "≥": r"\ge",
          "°": r"^{\circ}", "ℓ": r"\ell", "∫": r"\int", "±": r"\pm", "∇": r"\nabla", "⊥": r"\perp",
@@ -48,10 +47,8 @@ def _greek(ch: str) -> str | None:
 
 def _char(ch: str) -> tuple[bool, str]:
     """(is math, LaTeX) for one character."""
-    if ch in _SPECIAL:
-        return False, _SPECIAL[ch]
     if ord(ch) < 128:
-        return False, ch
+        return False, tex_char(ch) or ch
     if ch in _TEXT:
         return False, _TEXT[ch]
     if ch in _MATH:

@@ -3,8 +3,7 @@
 
 from __future__ import annotations
 
-import html
-
+from dyncli import printable as esc
 from dyncli.render.view import Grid, View
 
 
@@ -14,13 +13,13 @@ def _head(g: Grid, i: int) -> str:
 
 
 def _md_cell(text: str) -> str:
-    return text.replace("\\", "\\\\").replace("|", "\\|").replace("\n", "<br>") or " "
+    return esc.markdown(text, breaks=True) or " "
 
 
 def markdown(views: list[View]) -> str:
     out: list[str] = []
     for v in views:
-        out.append(f"### {_md_cell(v.title)}")
+        out.append(f"### {esc.markdown(v.title)}")
         out.append("")
         out.append(f"*{_md_cell(v.kind)}* · " + " · ".join(_md_cell(m) for m in v.meta))
         for g in v.grids:
@@ -34,19 +33,19 @@ def markdown(views: list[View]) -> str:
             if g.note:
                 out += ["", f"*{_md_cell(g.note)}*"]
         for w in v.warnings:
-            out += ["", f"> **warning:** {_md_cell(w)}"]
+            out += ["", f"> **warning:** {esc.markdown(w)}"]
         out.append("")
     return "\n".join(out)
 
 
 def _h(text: str) -> str:
-    return html.escape(text).replace("\n", "<br>")
+    return esc.html(text, breaks=True)
 
 
 def html_view(views: list[View]) -> str:
     out: list[str] = []
     for v in views:
-        out.append(f"<div class=\"dyncli-solution\"><p><strong>{_h(v.title)}</strong> · {_h(v.kind)}<br>"
+        out.append(f"<div class=\"dyncli-solution\"><p><strong>{esc.html(v.title)}</strong> · {_h(v.kind)}<br>"
                    f"<small>{_h('   '.join(v.meta))}</small></p>")
         for g in v.grids:
             cap = f"<caption>{_h(g.title)}</caption>" if g.title else ""
@@ -55,6 +54,6 @@ def html_view(views: list[View]) -> str:
                                             for c, a in zip(row, g.align)) + "</tr>" for row in g.rows)
             note = f"<p><em>{_h(g.note)}</em></p>" if g.note else ""
             out.append(f"<table>{cap}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>{note}")
-        out += [f"<p><strong>warning:</strong> {_h(w)}</p>" for w in v.warnings]
+        out += [f"<p><strong>warning:</strong> {esc.html(w)}</p>" for w in v.warnings]
         out.append("</div>")
     return "\n".join(out)

@@ -37,7 +37,24 @@ def dumper():
     import yaml
 
     class PlainDumper(yaml.SafeDumper):
-        pass
+        """A string with a character that is not printable (U+202E reverses the
+        text shown after it) is written double-quoted with every non-ASCII
+        character escaped (\\u202e): the same data, shown as written
+        (:mod:`dyncli.printable`)."""
+
+        def choose_scalar_style(self):
+            if isinstance(self.event.value, str) and not self.event.value.isprintable():
+                return '"'
+            return super().choose_scalar_style()
+
+        def write_double_quoted(self, text, split=True):
+            if text.isprintable():
+                return super().write_double_quoted(text, split)
+            keep, self.allow_unicode = self.allow_unicode, False
+            try:
+                return super().write_double_quoted(text, split)
+            finally:
+                self.allow_unicode = keep
 
     def fallback(d, data):
         p = plain(data)

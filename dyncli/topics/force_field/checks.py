@@ -15,6 +15,31 @@ from dyncli.topics.force_field.path import segment_work
 N_RANDOM = 48          # random points for numeric checks
 CURL_RTOL = 1e-8       # numeric check: |curl| above this times max |dF_i/dx_j| at the point is non-zero
 N_SEGMENTS = 6         # random segments for the single-valuedness check
+#: the largest half-width of the box of random points (a point given at
+#: 1e308 would make the box's width overflow a double)
+BOX_MAX = 1e300
+
+
+def box_of(sizes) -> float:
+    """Half-width of the box of random test points: 2, or 1.5 times the
+    largest coordinate given, at most BOX_MAX."""
+    return min(BOX_MAX, max([2.0] + [1.5 * abs(float(v)) for v in sizes]))
+
+
+def real_somewhere(exprs, envs: list[dict], names=None) -> None:
+    """Refuse a component of F that is real and finite at none of the test
+    points (``envs``: the random points and the given points, as variable
+    mappings of arrays or floats), e.g. ``sqrt(-x1**2 - 1)``: such a field
+    has no value anywhere, so no curl, verdict or potential means anything."""
+    import numpy as np
+
+    from dyncli.errors import InputError
+
+    for i, e in enumerate(exprs):
+        if e.variables and not any(np.any(np.isfinite(np.asarray(e.evaluate(**env), dtype=float))) for env in envs):
+            raise InputError(f"component {i + 1} ({e.text!r}) is real and finite at none of the {N_RANDOM} random "
+                             "points nor the given points (a square root or logarithm of a negative number "
+                             "everywhere?): F must be a real field", f"F.{i}")
 
 
 def _random_points(n: int, scale: float, seed: int = 19):

@@ -32,6 +32,7 @@ from typing import Any
 from dyncli import symbolic
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result, SolveOptions
+from dyncli.topics.force_field.checks import box_of, real_somewhere
 
 SYSTEMS = {
     "polar": (("r", "theta"), ("e_r", "e_θ", "e₃"), "Table 19.1"),
@@ -101,9 +102,10 @@ class CurvilinearField:
         pos = {"r", "R"}
         self.Q = [sp.Symbol(n, positive=True) if n in pos else symbolic.symbol(n) for n in self._all_names()]
         rep = {symbolic.symbol(n): q for n, q in zip(self._all_names(), self.Q)}
-        from .symbolic_field import _rationalize
+        from .symbolic_field import _rationalize, finite_real
 
         raw = [symbolic.sym(e).xreplace(rep) for e in p.F]
+        finite_real(raw)
         self.decimals = any(r.atoms(sp.Float) for r in raw)
         self.S = [_rationalize(r) for r in raw]
         q1, q2, q3 = self.Q
@@ -268,7 +270,9 @@ def _symbolic(p):
     fld = CurvilinearField(p)
     res = Result({}, method="closed-form", equations=["19.9", fld.table])
     res.results["basis"] = ", ".join(fld.basis)
-    box = max([2.0] + [1.5 * abs(float(pt[0])) for pt in p.points])
+    box = box_of(pt[0] for pt in p.points)
+    names = fld._all_names()
+    real_somewhere(fld.exprs, [dict(zip(names, fld.random_points(box)))] + [fld.env(pt) for pt in p.points])
     cons, how, simplified = verdict(fld, box, res)
     res.results["curl"] = _curl_at_points(fld, p, simplified, res)
     res.results["curl_formula"] = [_display(c, fld.decimals) for c in simplified]

@@ -29,7 +29,7 @@ import math
 from dyncli import symbolic
 from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
-from dyncli.topics.force_field.checks import numeric_verdict, single_valued
+from dyncli.topics.force_field.checks import N_RANDOM, _random_points, box_of, numeric_verdict, real_somewhere, single_valued
 from dyncli.topics.force_field.path import path_work
 from dyncli.topics.force_field.symbolic_field import Field, _display, conservative_verdict, numeric_potential, potential
 
@@ -95,6 +95,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
     poly = polynomial_field.of(p.F)       # a polynomial field: exact without sympy
     fld = poly if poly is not None else _field(p.F)
+    box = box_of(v for pt in p.points for v in pt)   # the region of the random checks
+    if poly is None:
+        pts = _random_points(N_RANDOM, box)
+        real_somewhere(fld.exprs, [dict(x1=pts[0], x2=pts[1], x3=pts[2])]
+                       + [dict(x1=float(a), x2=float(b), x3=float(c)) for a, b, c in p.points])
     res = Result({}, method="closed-form", equations=["19.9"])
 
     # curl at the points
@@ -108,11 +113,6 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             curls.append(None)
             res.warn(f"curl at points[{i}] is undefined (F is singular there)")
     res.results["curl"] = curls
-
-    # size of the region used for random checks
-    box = 2.0
-    for pt in p.points:
-        box = max(box, 1.5 * max(abs(v) for v in pt))
 
     part = polynomial_field.exact_part(poly, box) if poly is not None else _symbolic_part(fld, box, res)
     cons, how, res.results["curl_formula"], V, Vnum = part

@@ -13,6 +13,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from dyncli import symbolic
@@ -91,6 +92,21 @@ def _generic(obj):
     return obj.replace(lambda e: isinstance(e, sp.Piecewise), lambda e: e.args[0].expr)
 
 
+def finite_real(raw) -> None:
+    """Refuse a component whose exact form holds a constant beyond a double
+    (``.inf``, ``x1*1e308*2``) or the imaginary unit (``sqrt(-R)`` with R > 0)."""
+    import sympy as sp
+
+    from dyncli.errors import InputError
+
+    for i, r in enumerate(raw):
+        if r.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or any(not math.isfinite(float(f)) for f in r.atoms(sp.Float)):
+            raise InputError(f"component {i + 1} holds a constant beyond the range of a double (1.8e308); "
+                             "give F in units that keep its constants finite", f"F.{i}")
+        if r.has(sp.I):
+            raise InputError(f"component {i + 1} is imaginary ({sp.sstr(r)[:80]}): F must be a real field", f"F.{i}")
+
+
 class Field:
     def __init__(self, F):
         import sympy as sp
@@ -98,6 +114,7 @@ class Field:
         self.exprs = tuple(F)
         self.X = [symbolic.symbol(n) for n in VARS]
         raw = [symbolic.sym(e) for e in F]
+        finite_real(raw)
         self.decimals = any(r.atoms(sp.Float) for r in raw)
         self.S = [_rationalize(r) for r in raw]
         X, S = self.X, self.S

@@ -88,8 +88,13 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
         Y2, k = check[0], 3 * len(masses)
         res.error_estimate = ode.relative_difference([(Y[:, :k], Y2[:, :k]), (Y[:, k:2 * k], Y2[:, k:2 * k])])
     res.method = f"ode:{method}"
-    Gs = max(float(np.max(np.abs(G))), float(np.sqrt(masses.sum() * 2 * np.max(T))), 1e-300)
-    Hs = max(float(np.max(np.abs(H))), 1e-300)
+    # the changes are counted from the initial state at t = 0, whatever times 'at' reports
+    # (T[0], G[0] are at the first reported time: with at: [1, 2] they missed the change before it)
+    mv0 = masses[:, None] * V0
+    G0, H0 = mv0.sum(axis=0), np.cross(X0 - O, mv0).sum(axis=0)
+    T0 = 0.5 * float((masses * np.sum(V0 * V0, axis=1)).sum())
+    Gs = max(float(np.max(np.abs(G))), float(np.abs(G0).max()), float(np.sqrt(masses.sum() * 2 * max(np.max(T), T0))), 1e-300)
+    Hs = max(float(np.max(np.abs(H))), float(np.abs(H0).max()), 1e-300)
     r = res.results
     r.update({
         "x_motion": {str(i): X[:, i, :].tolist() for i in range(len(masses))},
@@ -100,9 +105,9 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
         "V_internal_motion": Vint.tolist(),
         "P_internal_motion": Pint.tolist(),
         "W_internal": W.tolist(),
-        "G_drift": float(np.max(np.abs(G - G[0]))) / Gs,
-        "H_drift": float(np.max(np.abs(H - H[0]))) / Hs if np.max(np.abs(H)) > 0 else 0.0,
-        "energy_residual": float(np.max(np.abs(T - T[0] - W))),
+        "G_drift": float(np.max(np.abs(G - G0))) / Gs,
+        "H_drift": float(np.max(np.abs(H - H0))) / Hs if Hs > 1e-300 else 0.0,
+        "energy_residual": float(np.max(np.abs(T - T0 - W))),
     })
     res.series.append(Series("t", list(p.at), ["T_motion", "V_internal_motion", "P_internal_motion", "W_internal"],
                              title="energy under the internal forces: T − T(0) = W (27.10)"))

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+from dyncli.errors import InputError
 from dyncli.exact import cmp_sqrt, fr
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.precession import stability
@@ -37,6 +38,7 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     m, L, I11, I33, theta, g = pb.m, pb.L, pb.I11, pb.I33, pb.theta, pb.g
     res = Result({}, method="closed-form")
     a, _, c = coefficients(m, L, I11, I33, theta, 0.0, g)
+    _finite_coefficients(pb, a, c)
     linear = is_linear(a, I11, I33)
     vertical = abs(math.sin(theta)) <= VERTICAL_TOL
     pm = 0.0 if linear else p_min(a, c, I33)
@@ -49,6 +51,21 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     else:
         _solve_Omega(pb, res, a, c, linear, pm)
     return res
+
+
+def _finite_coefficients(pb, a, c) -> None:
+    """(38.22)'s coefficients must be doubles: m g L or I33 p beyond 1.8e308 is refused."""
+    if not math.isfinite(c):
+        raise InputError(f"m g L = {pb.m:.3g}·{pb.g:.3g}·{pb.L:.3g} is beyond the range of a double (1.8e308): "
+                         "give m, L and g in units that keep their product finite", path="m")
+    if not math.isfinite(a):
+        raise InputError("(I11 − I33) cos θ is beyond the range of a double (1.8e308): give I11 and I33 in "
+                         "smaller units", path="I11")
+    for name in ("p", "Omega"):
+        v = getattr(pb, name, None)
+        if v is not None and not math.isfinite(pb.I33 * v):
+            raise InputError(f"I33·{name} is beyond the range of a double (1.8e308): give I33 and {name} in units "
+                             "that keep their product finite", path=name)
 
 
 def _solve_p(pb, res, a, c, linear, pm):

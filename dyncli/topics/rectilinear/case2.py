@@ -190,7 +190,7 @@ def solve(p, ans, rtol: float, atol: float) -> str:
     vq, sq = {}, {}
     for i, q in enumerate(p.find):
         if q.kind == "t":
-            c.t_query(i, q.t)
+            ans.ask(i, c.t_query, q.t)
         elif q.kind == "v":
             vq[i] = q.v
         else:

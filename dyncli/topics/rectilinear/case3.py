@@ -41,7 +41,10 @@ class _Case3:
         self.v1 = p.v1
         self.a_v1 = float(p.a.evaluate(v=np.float64(p.v1)))
         self._warned = False
-        vals = [abs(p.v1)] + [abs(q.v) for q in p.find if q.kind == "v"]
+        # a target speed far beyond v1 (1e308) must not set the scale: the branches scan 15
+        # decades below it, so a terminal velocity of 31 m/s went unseen (a blow-up was reported)
+        cap = 1e12 * max(abs(p.v1), 1.0)
+        vals = [abs(p.v1)] + [min(abs(q.v), cap) for q in p.find if q.kind == "v"]
         self.scale = max(max(vals), 1e-300)
         if self.scale == 1e-300 or self.scale < 1e-3 * abs(self.a_v1):
             self.scale = max(self.scale, 1.0)
@@ -252,11 +255,11 @@ def solve(p, ans, rtol: float, atol: float) -> str:
     roots = False
     for i, q in enumerate(p.find):
         if q.kind == "t":
-            c.t_query(i, q.t)
+            ans.ask(i, c.t_query, q.t)
             roots = True
         elif q.kind == "v":
-            c.v_query(i, q.v)
+            ans.ask(i, c.v_query, q.v)
         else:
-            c.s_query(i, q.s)
+            ans.ask(i, c.s_query, q.s)
             roots = True
     return "quadrature+root" if roots else "quadrature"

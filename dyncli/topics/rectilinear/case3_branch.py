@@ -149,7 +149,8 @@ class Branch:
         else:
             self.D0 = self.v_end - self.v1
             dmin = max(8 * _EPS * abs(self.v_end), 1e-290)
-            umax = max(math.log(abs(self.D0) / dmin), 1e-3)
+            # D0 = 0 (v1 already at v* to the last bit, e.g. v1 = 1e-308 with v* = 0): no room
+            umax = max(math.log(max(abs(self.D0) / dmin, 1.0)), 1e-3)
         base = [0.0, 1 / 64, 1 / 16, 1 / 8, 1 / 4, 1 / 2]
         grid = np.unique(np.concatenate([base, np.arange(1.0, umax, 1.0), [umax]]))
         grid = grid[grid <= umax]

@@ -301,11 +301,11 @@ def solve(p, ans, rtol: float, atol: float) -> str:
         return "quadrature"
     for i, q in enumerate(p.find):
         if q.kind == "t":
-            c.t_query(i, q.t)
+            ans.ask(i, c.t_query, q.t)
         elif q.kind == "v":
-            c.v_query(i, q.v)
+            ans.ask(i, c.v_query, q.v)
         else:
-            c.s_query(i, q.s)
+            ans.ask(i, c.s_query, q.s)
     if c.periodic:
         ans.res.results["period"] = c.period
     return "quadrature+root"

@@ -103,6 +103,19 @@ class Answers:
                     self.reached(i, p.t1, p.s1, p.v1)
                     del queries[i]
 
+    def ask(self, i: int, query, target: float) -> None:
+        """Run one query (``query(i, target)``); integrals t = ∫ dv/a, s = ∫ v dv/a
+        (or t = ∫ ds/v) that overflow a double on the way to the target (a tiny a,
+        a target beyond the doubles) answer it as not reached, with the reason."""
+        from dyncli.topics.rectilinear._quad import NonFinite
+
+        try:
+            query(i, target)
+        except NonFinite as exc:
+            self.unreached(i, f"the integrals that lead to it are not finite in doubles on the way (at "
+                              f"{_fmt(exc.x)} of the integration variable): a is too small, or the target too "
+                              "far, for floating point")
+
     def unreached(self, i: int, reason: str) -> None:
         q = self.p.find[i]
         self.res.warn(f"{self.labels[i]} ({q.kind} = {_fmt(q.target)}): not reached — {reason}")

@@ -99,9 +99,12 @@ class Reduced:
         return [thd, thdd, psd, self.w3 - psd * c]
 
     def _energy(self, th, thd):
-        """(E − ½ I33 ω3²)/I11 = ½(θ̇² + ψ̇² sin²θ) + (mgL/I11) cosθ."""
+        """(E − ½ I33 ω3²)/I11 = ½(θ̇² + ψ̇² sin²θ) + (mgL/I11) cosθ.  On the
+        vertical (sinθ = 0: a top started upright) S = ψ̇ sinθ = (b − c cosθ)/sinθ
+        is 0/0; its value there is ψ̇0 sinθ0 = 0 (b − c cosθ = ψ̇0 sin²θ0)."""
         s, c = math.sin(th), math.cos(th)
-        S = (self.b - self.c * c) / s
+        num = self.b - self.c * c
+        S = num / s if s != 0 else (0.0 if num == 0 else math.inf)
         return 0.5 * (thd * thd + S * S) + self.top.kg * c
 
     def run(self, times, *, rtol, atol, method, max_step, max_steps):
