@@ -91,7 +91,7 @@ def _library_warnings(result: Result, caught) -> None:
 
 def _too_large(lp: LoadedProblem, exc: OverflowError) -> str:
     d = Diagnostic(lp.file, None, None, None,
-                   f"{lp.title}: a number overflowed a double while solving ({exc}): the problem's values are "
+                   f"{_named(lp)}a number overflowed a double while solving ({exc}): the problem's values are "
                    "too large for floating point (a sum, product or power beyond 1.8e308); give them in units "
                    "that keep the results below about 1e300")
     pos = lp.doc.locate(lp.prefix) if lp.doc else None

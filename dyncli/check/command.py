@@ -78,9 +78,10 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
 def _emit(text: str, output: str | None) -> None:
     if output:
         try:
+            from dyncli.stdio import write_file
+
             Path(output).parent.mkdir(parents=True, exist_ok=True)
-            with open(output, "w", encoding="utf-8") as fh:
-                fh.write(text)
+            write_file(output, text)            # atomic: a reader never sees half a report
         except OSError as exc:
             raise _OutputError(f"{output}: cannot write ({exc.strerror})") from None
     else:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from dyncli.check.safe import oneline, shown
+from dyncli.stdio import write_file
 
 MAX_ROSTER = 100_000
 MAX_ROSTER_BYTES = 20_000_000
@@ -29,6 +30,7 @@ class Roster:
     students: list[str] = field(default_factory=list)
     columns: list[str] = field(default_factory=list)           # the other columns, in file order
     extra: dict[str, dict[str, str]] = field(default_factory=dict)   # student -> {column: value}
+
 
 
 def read_roster(name: str) -> Roster:
@@ -126,7 +128,7 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
             return 2
         target = out / (file_stem(sid) + suffix)
         try:
-            target.write_text(text, encoding="utf-8")
+            write_file(str(target), text)
         except OSError as exc:
             _err(f"{target}: cannot write ({exc.strerror})")
             return 2
