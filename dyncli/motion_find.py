@@ -7,8 +7,10 @@ results are smooth (the pieces of a closed form, the steps of an ODE: see :mod:`
 for how they are searched), the accuracy of the values (``rtol``) and, where known, which result
 is the rate of which (``rates``: ``{"x": "v"}`` makes ``v.1`` the rate of ``x.1``; a callable
 ``(t, rest of the path) -> rate or None`` gives a rate the type does not report), so that a
-turning point is a root of the rate (Brent), never a sampled peak.  The answers are the :mod:`dyncli.queries` answers, each
-filled with the whole state at its time (``distance`` included when the type reports it).
+turning point is a root of the rate (Brent), never a sampled peak.  The answers are the
+:mod:`dyncli.queries` answers, each filled with the whole state at its time (``distance``
+included when the type reports it).  :func:`resolved` does all this for a type whose solver
+reports its motion at the times of ``at`` (declared by ``TypeSpec.motion``).
 
 :func:`search_end` extends the motion to the end of a ``within`` window; :class:`Odometer`
 is the ``distance`` result: ∫|v| dt over the breaks (Gauss–Legendre on each smooth piece), or

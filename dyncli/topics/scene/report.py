@@ -8,6 +8,7 @@ along the motion).
 """
 
 from __future__ import annotations
+from dyncli.motion_find import flatten  # noqa: F401 (the one flattening of an instant's results)
 
 
 def _v3(a) -> list:
@@ -78,15 +79,3 @@ def collect(instants: list) -> dict:
     return {k: build(template[k], lambda s, k=k: None if s is None else s.get(k)) for k in PER_TIME}
 
 
-def flatten(node, prefix="") -> dict:
-    """{dotted path: scalar} of one instant (vector components by index)."""
-    out = {}
-    if isinstance(node, dict):
-        for k, v in node.items():
-            out.update(flatten(v, f"{prefix}{k}."))
-    elif isinstance(node, list):
-        for i, v in enumerate(node):
-            out.update(flatten(v, f"{prefix}{i}."))
-    elif isinstance(node, (int, float)) and not isinstance(node, bool):
-        out[prefix[:-1]] = float(node)
-    return out
