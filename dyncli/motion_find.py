@@ -68,6 +68,14 @@ class StateMotion:
             got = self._cache[t] = flatten(self.state(float(t)))
         return got
 
+    def window(self, t_end: float) -> "StateMotion":
+        """The same motion from t0 to ``t_end`` (< its end), sharing the cache."""
+        w = StateMotion(self.state, self.t0, t_end, [b for b in self.breaks if b < t_end], self.rtol,
+                        self._rates, self.batch, self.subdivide)
+        w._cache = self._cache
+        w._limit = self._limit
+        return w
+
     def prefetch(self) -> None:
         """The states at every sample of the search grid in one ``batch`` call (when given)."""
         if self.batch is not None:
@@ -124,10 +132,8 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
     query not reached (``stopped``: why the motion ends early, said in that warning)."""
     qs = _q.parse_queries(raw, constant)
     full = full or motion.state
-    if any(not isinstance(q, _q.AtTime) for q in qs) and hasattr(motion, "prefetch"):
-        motion.prefetch()
     out = []
-    for k, ans in enumerate(_q.answer(qs, motion)):
+    for k, ans in enumerate(_answer(q, motion) for q in qs):
         entry = dict(ans)
         if ans.get("reached") and ans.get("t") is not None:
             entry.update(full(ans["t"]))
@@ -136,6 +142,29 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
                  + (f" ({stopped})" if stopped else "; raise t_end to search further"))
         out.append(entry)
     return out
+
+
+#: the windows a ``when`` query searches first, as fractions of the motion (an early crossing is
+#: found without sampling the whole motion; the search grid of a window is the motion's own)
+WINDOWS = (1 / 256, 1 / 32, 1 / 4, 1.0)
+
+
+def _answer(q: Any, motion: Any) -> dict:
+    """One query: a ``when`` in growing windows from the start (the occurrences are counted from
+    the start, so a window that holds the n-th is the answer of the whole motion), the others on
+    the whole motion; each window's grid fetched in one ``batch`` call where the motion has one."""
+    if isinstance(q, _q.When) and hasattr(motion, "window") and motion.t_end > motion.t0:
+        span = motion.t_end - motion.t0
+        for frac in WINDOWS:
+            sub = motion.window(motion.t0 + span * frac) if frac < 1 else motion
+            if getattr(sub, "batch", None) is not None:
+                sub.prefetch()
+            got = _q.answer([q], sub)[0]
+            if got["reached"] or frac == 1:
+                return got
+    if not isinstance(q, _q.AtTime) and hasattr(motion, "prefetch"):
+        motion.prefetch()
+    return _q.answer([q], motion)[0]
 
 
 class Odometer:

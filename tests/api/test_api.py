@@ -75,7 +75,7 @@ def test_input_error_lists_every_message():
 
 def test_solution_views():
     s = dyncli.solve(str(ROOT / "problems/vibration/underdamped.yaml"))[0]
-    assert repr(s) == "<Solution vibration 'Underdamped free vibration': 12 results, method closed-form>"   # 11 and t
+    assert repr(s) == "<Solution vibration 'Underdamped free vibration': 13 results, method closed-form>"   # 11 and t
     html = s._repr_html_()
     assert html.count("<table>") == 2 and "<th>t</th>" in html and "&lt;" not in s.title
     assert s.table(units="deg").splitlines()[0].startswith("Underdamped free vibration")

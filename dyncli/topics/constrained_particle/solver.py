@@ -51,6 +51,8 @@ def _check_curve(p, curve: Curve) -> None:
 def quadrature_applies(p, curve) -> bool:
     if curve.rotating or any(f.kind in ("friction", "damper", "drag") for f in p.forces):
         return False
+    if any(f.kind == "spring" and f.one_sided for f in p.forces):
+        return False          # a one-sided spring's kink in the force: the ODE route, stepped across it
     return not any(f.kind == "custom" and (set(v for e in f.F for v in e.variables) - {"x1", "x2", "x3"})
                    for f in p.forces)
 

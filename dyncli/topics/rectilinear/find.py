@@ -162,7 +162,9 @@ def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | No
 
 def answer(p, res, generic, items, sample, solve_one) -> None:
     """Fill ``items`` (the answers in the user's order) for the generic queries, then add
-    ``distance`` to every reached answer."""
+    ``distance`` to every reached answer.  The queries search growing windows from t1
+    (:data:`dyncli.motion_find.WINDOWS`): an early crossing costs a short stretch of the motion,
+    the turning points found only as far as the window."""
     params = resolve_params(p.params)
     const = lambda text: constant(text, params)      # noqa: E731
     if res.results.get("case") == 2 and str(res.method).startswith("quadrature"):
@@ -171,7 +173,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
-    t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
+    t_end = max(asked + [t1 + p.t_max])     # as far as the type's own {v}, {s} look: t1 + t_max (or a later t)
     raw = [x for _, x in generic]
     reached = [e["t"] for e in items if e and e.get("reached")]
     t_end = mf.search_end(t_end, raw, const) if generic else max(reached + [t1])
@@ -181,33 +183,61 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
 
         sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
     motion = _Motion(p, sample)
-    if generic:
-        t_end = dense.end if dense is not None else motion.reachable_end(t_end)
-    lo, hi = min(reached + [t1]), max(reached + [t1, t_end])
-    if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
-        turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
-        knots = [b for b in dense.breaks if t1 < b < t_end]
-    else:
-        turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
-    if generic:
-        def batch(ts) -> list[dict]:                 # the state with the distance travelled
-            return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
-                    for t, st in zip(ts, motion.batch(ts))]
+    if dense is not None:
+        t_end = dense.end
+    lo, hi = min(reached + [t1]), max(reached + [t1])
 
-        sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
-                            rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
-                            rates={"s": "v", "v": lambda t, _: motion.accel(t),
-                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch,
-                            subdivide=1 if dense is not None else None)
-        for (i, _), a in zip(generic, mf.answer_find(raw, sm, const, None, full=motion.state)):
-            if not a["reached"]:
-                res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"
-                         + (" (t1 + t_max)" if t_end >= t1 + p.t_max else ""))
-                a.update({"s": None, "v": None, "a": None})
-            items[i] = a
+    def structure(upto: float):
+        if dense is not None and lo >= t1:           # the general case: the roots of v on the steps
+            return (mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= upto], 1),
+                    [b for b in dense.breaks if t1 < b < upto])
+        return turning_points(p, res, lo, upto, motion, solve_one) if upto > lo else ([], [])
+
+    pending, upto, turns = list(generic), None, []
+    for frac in mf.WINDOWS:
+        w = t1 + (t_end - t1) * frac
+        if not pending or (frac < 1 and (w <= hi or not any("when" in x for _, x in pending))):
+            continue
+        if dense is None:
+            w = motion.reachable_end(w)              # where the motion ends first (a blow-up, a pole)
+        upto = max(w, hi)
+        turns, knots = structure(upto)
+        pending = _search(p, res, pending, items, motion, const, (turns, knots, dense), w, frac == 1)
+    last = max([e["t"] for e in items if e and e.get("reached")] + [hi])
+    if upto is None or last > upto:                  # the turning points as far as the answers reach
+        turns = structure(last)[0]
     for e in items:
         if e is not None:
             e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
+
+
+def _search(p, res, pending, items, motion, const, found, w, last) -> list:
+    """Answer the pending queries over [t1, w] (in a window before the last only ``when``
+    queries, and only those that are reached there); returns those still pending."""
+    turns, knots, dense = found
+    t1 = p.t1
+
+    def batch(ts) -> list[dict]:                     # the state with the distance travelled
+        return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
+                for t, st in zip(ts, motion.batch(ts))]
+
+    sm = mf.StateMotion(lambda t: batch([t])[0], t1, w, _breaks(t1, w, turns, knots),
+                        rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
+                        rates={"s": "v", "v": lambda t, _: motion.accel(t),
+                               "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch,
+                        subdivide=1 if dense is not None else None)
+    asked = [(i, x) for i, x in pending if last or "when" in x]
+    left = [(i, x) for i, x in pending if not (last or "when" in x)]
+    for (i, x), a in zip(asked, mf.answer_find([x for _, x in asked], sm, const, None, full=motion.state)):
+        if not a["reached"] and not last:
+            left.append((i, x))
+            continue
+        if not a["reached"]:
+            res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {w:.10g} s"
+                     + (" (t1 + t_max)" if w >= t1 + p.t_max else ""))
+            a.update({"s": None, "v": None, "a": None})
+        items[i] = a
+    return sorted(left)
 
 
 def _distance(p, e: dict, turns: list[float], motion) -> float:

@@ -143,10 +143,9 @@ def _odometer(resp: Response, t_end: float):
     """distance(t) for 0 <= t <= t_end."""
     if resp.fo is None and resp.s0 == 0.0:
         return _free_odometer(resp)
-    import numpy as np
-
     turns = _forced_turns(resp, t_end) if t_end > 0 else []
-    at_turns = dict(zip(turns, resp.arrays(np.asarray(turns, dtype=float))[0].tolist()))
+    at_turns = {t: resp.at(t)[0] for t in turns} if len(turns) <= SCALAR_GRID else \
+        dict(zip(turns, resp.arrays(__import__("numpy").asarray(turns, dtype=float))[0].tolist()))
 
     def x(u: float) -> float:
         return at_turns[u] if u in at_turns else resp.at(u)[0]
@@ -209,12 +208,19 @@ def _free_odometer(resp: Response):
     return _Odometer(lambda ts: [distance(t) for t in ts], distance)
 
 
+#: up to this many grid points the turning points are found in plain floats (no numpy import:
+#: a closed-form problem starts at the import floor), beyond it on arrays
+SCALAR_GRID = 2048
+
+
 def _forced_turns(resp: Response, t_end: float) -> list[float]:
     """The roots of v in (0, t_end) with a base motion or a force: sign changes on the grid of
     breaks, each refined by safeguarded Newton steps (the exact acceleration), all at once."""
+    breaks, _ = resp.breaks(t_end)
+    if len(breaks) <= SCALAR_GRID:
+        return _forced_turns_scalar(resp, breaks)
     import numpy as np
 
-    breaks, _ = resp.breaks(t_end)
     T = np.asarray(breaks, dtype=float)
     _, V = resp.arrays(T)
     k = np.nonzero(V[:-1] * V[1:] < 0)[0]
@@ -237,3 +243,14 @@ def _forced_turns(resp: Response, t_end: float) -> list[float]:
         if np.all(done):
             break
     return sorted(t.tolist() + zeros.tolist())
+
+
+def _forced_turns_scalar(resp: Response, breaks: list[float]) -> list[float]:
+    """:func:`_forced_turns` in plain floats: Brent on v inside each sign change of the grid."""
+    from dyncli.queries import _root
+
+    V = [resp.at(t)[1] for t in breaks]
+    out = [t for t, v in zip(breaks[1:-1], V[1:-1]) if v == 0.0]
+    v = lambda t: resp.at(t)[1]                      # noqa: E731
+    out += [_root(v, a, b) for a, b, va, vb in zip(breaks, breaks[1:], V, V[1:]) if va * vb < 0]
+    return sorted(out)
