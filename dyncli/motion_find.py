@@ -126,12 +126,16 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
     full = full or motion.state
     if any(not isinstance(q, _q.AtTime) for q in qs) and hasattr(motion, "prefetch"):
         motion.prefetch()
-    out = []
+    out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)
         if ans.get("reached") and ans.get("t") is not None:
             entry.update(full(ans["t"]))
-        elif warn is not None:
+            out.append(entry)
+            continue
+        names = list(full(motion.t0)) if names is None else names
+        entry.update({n: None for n in names if n not in entry})     # every other entry null (§11)
+        if warn is not None:
             warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
                  + (f" ({stopped})" if stopped else "; raise t_end to search further"))
         out.append(entry)
