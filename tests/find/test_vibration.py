@@ -16,47 +16,10 @@ import pytest
 
 from tests.conftest import error_of
 
-from .refs import crossings, entry, extreme, length, solve
+from .refs import Vib, crossings, entry, extreme, length, solve
 
 MPMATH_DPS = 30
 REL = 1e-12
-
-
-class Vib:
-    """The exact total response of the base-excited (s0 = 0: free) damped oscillator, in mpmath."""
-
-    def __init__(self, m, k, zeta, y0, v0, s0=0, Om=0):
-        wn = mp.sqrt(mp.mpf(k) / m)
-        sg = zeta * wn
-        self.wn, self.s0, self.Om = wn, mp.mpf(s0), mp.mpf(Om)
-        A = mp.matrix([[wn**2 - self.Om**2, 2 * sg * self.Om], [-2 * sg * self.Om, wn**2 - self.Om**2]])
-        self.P, self.Q = mp.lu_solve(A, mp.matrix([2 * sg * self.s0 * self.Om, wn**2 * self.s0])) if s0 else (0, 0)
-        h0, hv0 = mp.mpf(y0) - self.P, mp.mpf(v0) - self.Om * self.Q
-        self.crit = zeta == 1
-        if self.crit:
-            self.c = (h0, hv0 + wn * h0)
-        else:
-            d = mp.sqrt(mp.mpc(sg**2 - wn**2))
-            self.l1, self.l2 = -sg + d, -sg - d
-            c1 = (hv0 - self.l2 * h0) / (self.l1 - self.l2)
-            self.c = (c1, h0 - c1)
-
-    def y(self, t):
-        t = mp.mpf(t)
-        if self.crit:
-            h = (self.c[0] + self.c[1] * t) * mp.exp(-self.wn * t)
-        else:
-            h = mp.re(self.c[0] * mp.exp(self.l1 * t) + self.c[1] * mp.exp(self.l2 * t))
-        return h + self.P * mp.cos(self.Om * t) + self.Q * mp.sin(self.Om * t)
-
-    def v(self, t):
-        return mp.diff(self.y, t)
-
-    def w(self, t):                                  # x − s − L, the spring's stretch
-        return self.y(t) - self.s0 * mp.sin(self.Om * t)
-
-    def wdot(self, t):
-        return self.v(t) - self.s0 * self.Om * mp.cos(self.Om * t)
 
 
 def _t(e, ref):

@@ -15,7 +15,7 @@ import math
 
 from dyncli import motion_find as mf
 from dyncli import queries as _q
-from dyncli.errors import NumericalError
+from dyncli.errors import InputError, NumericalError
 from dyncli.expr import constant, resolve_params
 
 #: pieces of the search when the motion has no period; per period when it has one; at most
@@ -190,16 +190,23 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     else:
         turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
     if generic:
-        def batch(ts) -> list[dict]:                 # the state with the distance travelled
-            return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
-                    for t, st in zip(ts, motion.batch(ts))]
+        odo = _Odometer(p, turns, motion)
+
+        def batch(ts: list[float]) -> list[dict]:
+            return [dict(st, distance=odo.at(t, st["s"])) for t, st in zip(ts, motion.batch(ts))]
 
         sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
                             rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
                             rates={"s": "v", "v": lambda t, _: motion.accel(t),
-                                   "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch,
+                                   "distance": lambda t, _: abs(sm.value("v", t))}, batch=batch,
                             subdivide=1 if dense is not None else None)
-        for (i, _), a in zip(generic, mf.answer_find(raw, sm, const, None, full=motion.state)):
+        try:
+            found = mf.answer_find(raw, sm, const, None, full=motion.state)
+        except InputError as e:                     # find.k of the generic queries: the user's index
+            head, k, rest = (e.path or "").split(".", 2) + [""] * (2 - (e.path or "").count("."))
+            raise InputError(e.message, ".".join(x for x in (head, str(generic[int(k)][0]), rest) if x)) \
+                if head == "find" and k.isdigit() else e
+        for (i, _), a in zip(generic, found):
             if not a["reached"]:
                 res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"
                          + (" (t1 + t_max)" if t_end >= t1 + p.t_max else ""))
@@ -208,6 +215,25 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     for e in items:
         if e is not None:
             e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
+
+
+class _Odometer:
+    """∫|v| dt from t1 to a later time: the distances at the turning points accumulated once,
+    then |s(t) − s(last turn)| (the motion is monotonic between turns)."""
+
+    def __init__(self, p, turns: list[float], motion):
+        self.turns = [x for x in sorted(turns) if x > p.t1]
+        S = [p.s1] + [st["s"] for st in motion.batch(self.turns)] if self.turns else [p.s1]
+        self.knots, self.s = [p.t1] + self.turns, S
+        self.cum = [0.0]
+        for a, b in zip(S, S[1:]):
+            self.cum.append(self.cum[-1] + abs(b - a))
+
+    def at(self, t: float, s: float) -> float:
+        import bisect
+
+        j = max(bisect.bisect_left(self.knots, t) - 1, 0)
+        return self.cum[j] + abs(s - self.s[j]) + 0.0
 
 
 def _distance(p, e: dict, turns: list[float], motion) -> float:
