@@ -68,10 +68,12 @@ class StateMotion:
             got = self._cache[t] = flatten(self.state(float(t)))
         return got
 
-    def prefetch(self) -> None:
-        """The states at every sample of the search grid in one ``batch`` call (when given)."""
+    def prefetch(self, upto: float | None = None) -> None:
+        """The states at every sample of the search grid (up to ``upto``) in one ``batch`` call
+        (when given)."""
         if self.batch is not None:
-            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self)) if t not in self._cache]
+            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self))
+                 if t not in self._cache and (upto is None or t <= upto)]
             self._limit = 4096 + len(self._cache) + len(T)
             for t, st in zip(T, self.batch(T)):
                 self._cache[t] = flatten(st)
@@ -124,8 +126,8 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
     query not reached (``stopped``: why the motion ends early, said in that warning)."""
     qs = _q.parse_queries(raw, constant)
     full = full or motion.state
-    if any(not isinstance(q, _q.AtTime) for q in qs) and hasattr(motion, "prefetch"):
-        motion.prefetch()
+    if any(isinstance(q, _q.Extreme) for q in qs) and hasattr(motion, "prefetch"):
+        motion.prefetch()                           # (a when query fetches as far as it searches)
     out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)

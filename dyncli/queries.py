@@ -220,15 +220,32 @@ def _sign(x: float, tol: float) -> int:
 
 
 def _when(motion: Any, q: When) -> float | None:
-    """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None."""
+    """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None: the
+    grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
+    well inside it (a long search for an early event samples no further than it needs)."""
     path, V = q.path, q.value
     T = _grid(motion.breaks, float(motion.t0), float(motion.t_end), _pieces(motion))
-    F = [float(motion.value(path, t)) for t in T]
-    scan = _Crossings(lambda t: float(motion.value(path, t)) - V, _rate_fn(motion, path, motion.t0),
-                      T, [f - V for f in F], _tol(motion, max([abs(V)] + [abs(f) for f in F])))
-    want = {"up": 1, "down": -1}.get(q.direction)
-    hits = [t for t, d in scan.events() if want is None or d == want]
-    return hits[q.occurrence - 1] if len(hits) >= q.occurrence else None
+    want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
+    ahead = getattr(motion, "prefetch", None)
+    F: list[float] = []
+    m = min(len(T), FIRST_PREFIX)
+    while True:
+        if callable(ahead) and m < len(T):
+            ahead(T[m - 1])
+        F += [float(motion.value(path, t)) for t in T[len(F):m]]
+        scan = _Crossings(lambda t: float(motion.value(path, t)) - V, rate, T[:m], [f - V for f in F],
+                          _tol(motion, max([abs(V)] + [abs(f) for f in F])))
+        safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
+        hits = [t for t, d in scan.events() if (want is None or d == want) and t <= safe]
+        if len(hits) >= q.occurrence:
+            return hits[q.occurrence - 1]
+        if m == len(T):
+            return None
+        m = min(len(T), 2 * m)
+
+
+#: samples of a ``when`` search's first prefix (then doubled until the answer or the end)
+FIRST_PREFIX = 256
 
 
 class _Crossings:

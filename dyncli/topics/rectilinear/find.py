@@ -5,7 +5,7 @@ events).  ``when``, ``max``, ``min`` — and a ``{v: V}`` or ``{s: S}`` equal to
 which counts only when the motion reaches it again (from rest, ``{v: 0}`` is the next turning
 point, not the release) — are answered by :mod:`dyncli.motion_find` on the motion the route
 gives at any time (one batched run per search: :func:`solver.sample`), with the exact rates
-(v of s, a(t, s, v) of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
+(v of s, a of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
 since t1) is Σ|Δs| between the turning points.
 """
 
@@ -60,10 +60,6 @@ class _Motion:
         if not e or not e.get("reached"):
             raise NumericalError("the motion is not defined there")
         return {"s": e["s"], "v": e["v"], "a": e["a"]}
-
-    def accel(self, t: float) -> float:
-        st = self.state(t)
-        return float(self.p.a(t=t, s=st["s"], v=st["v"]))
 
     def reachable_end(self, t_end: float) -> float:
         """t_end, or the last time before it the motion reaches (it ends early: a blow-up)."""
@@ -197,8 +193,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
 
         sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
                             rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
-                            rates={"s": "v", "v": lambda t, _: motion.accel(t),
-                                   "distance": lambda t, _: abs(sm.value("v", t))}, batch=batch,
+                            rates={"s": "v", "v": "a", "distance": lambda t, _: abs(sm.value("v", t))}, batch=batch,
                             subdivide=1 if dense is not None else None)
         try:
             found = mf.answer_find(raw, sm, const, None, full=motion.state)
@@ -218,20 +213,23 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
 
 
 class _Odometer:
-    """∫|v| dt from t1 to a later time: the distances at the turning points accumulated once,
-    then |s(t) − s(last turn)| (the motion is monotonic between turns)."""
+    """∫|v| dt from t1 to a later time: the distances at the turning points accumulated as far
+    as asked (s at the turns fetched in growing batches), then |s(t) − s(last turn)| (the
+    motion is monotonic between turns)."""
 
     def __init__(self, p, turns: list[float], motion):
-        self.turns = [x for x in sorted(turns) if x > p.t1]
-        S = [p.s1] + [st["s"] for st in motion.batch(self.turns)] if self.turns else [p.s1]
-        self.knots, self.s = [p.t1] + self.turns, S
-        self.cum = [0.0]
-        for a, b in zip(S, S[1:]):
-            self.cum.append(self.cum[-1] + abs(b - a))
+        self.turns, self.motion = [x for x in sorted(turns) if x > p.t1], motion
+        self.knots, self.s, self.cum = [p.t1], [p.s1], [0.0]
 
     def at(self, t: float, s: float) -> float:
         import bisect
 
+        while len(self.knots) <= len(self.turns) and self.knots[-1] < t:     # the turns before t, in batches
+            new = self.turns[len(self.knots) - 1:2 * len(self.knots) + 16]
+            for x, st in zip(new, self.motion.batch(new)):
+                self.knots.append(x)
+                self.cum.append(self.cum[-1] + abs(st["s"] - self.s[-1]))
+                self.s.append(st["s"])
         j = max(bisect.bisect_left(self.knots, t) - 1, 0)
         return self.cum[j] + abs(s - self.s[j]) + 0.0
 
