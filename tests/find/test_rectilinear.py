@@ -209,3 +209,19 @@ def test_invalid_generic_query_names_the_users_index():
     assert " find.2.when:" in msg and "'xx'" in msg, msg
     msg = error_of("type: rectilinear\na: -1\nfind:\n  - {t: 1}\n  - {max: s, within: [3, 1]}\n")
     assert " find.1.within:" in msg and "reversed" in msg, msg
+
+
+def test_gallery_block_on_spring_with_the_default_t_max():
+    """The gallery's block asks only `when`-type queries and no time: the search runs to
+    t1 + t_max = 1000 s (about 1230 periods) and must stop at each answer."""
+    from tests.conftest import PROBLEMS, solve_path
+
+    rec, = solve_path(PROBLEMS / "rectilinear" / "block-on-spring.yaml")
+    assert rec.get("error") is None, rec.get("error")
+    b = Block()
+    f = rec["results"]["find"]
+    assert f[0]["t"] == pytest.approx(float(b.tc + b.tau(mp.pi / 2)), rel=1e-6)      # default rtol 1e-6
+    assert f[0]["s"] - 0.5 == pytest.approx(float(b.delta), rel=1e-6)
+    assert f[1]["t"] == pytest.approx(float(b.tc + b.tau(mp.pi + b.phi)), rel=1e-6)
+    assert f[1]["distance"] == pytest.approx(float(H + 2 * b.delta), rel=1e-6)
+    assert f[2]["t"] == pytest.approx(float(2 * (b.tc + b.tau(mp.pi / 2))), rel=1e-6)
