@@ -74,6 +74,8 @@ class StateMotion:
         if self.batch is not None:
             T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self))
                  if t not in self._cache and (upto is None or t <= upto)]
+            if not T:                               # (a batch of no times is no solve)
+                return
             self._limit = 4096 + len(self._cache) + len(T)
             for t, st in zip(T, self.batch(T)):
                 self._cache[t] = flatten(st)
