@@ -186,6 +186,8 @@ class Odometer:
         kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
         each piece whose node speeds dip below a quarter of their largest, by Brent's minimiser
         (an error δ in its place costs only ~|a| δ²)."""
+        from dyncli.rootfind import fminbound_unit
+
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
         out = []
@@ -195,7 +197,7 @@ class Odometer:
             def speed(u, a=a, b=b, c=c):
                 got = np.asarray(self.speeds([a + u * (b - a)]), dtype=float)
                 return float(got.reshape(-1)[c] if got.ndim > 1 else got[0])
-            t = a + _q._fminbound(speed, 1e-12) * (b - a)
+            t = a + fminbound_unit(speed, 1e-12) * (b - a)
             if a < t < b:
                 out.append(t)
         return out
