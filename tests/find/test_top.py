@@ -49,7 +49,7 @@ def test_top_nutation():
     real = sorted(x.real for x in roots if abs(x.imag) < 1e-20)
     u1 = max(x for x in real if -1 < x < u0 - mp.mpf("1e-20"))
     u3 = max(real)                                   # the root beyond u = 1
-    assert u3 > 1 and abs(f_cubic := beta * u0**3 - (alpha + a**2) * u0**2 + (2 * a * b - beta) * u0 + alpha - b**2) < 1e-25
+    assert u3 > 1 and abs(beta * u0**3 - (alpha + a**2) * u0**2 + (2 * a * b - beta) * u0 + alpha - b**2) < 1e-25
     f = lambda u: beta * (u - u1) * (u0 - u) * (u3 - u)      # noqa: E731  (factored: positive between the roots)
     half = mp.quad(lambda u: 1 / mp.sqrt(f(u)), [u1, u0])
     assert float(mp.acos(u1)) == pytest.approx(r["theta_max"], rel=A_REL)
