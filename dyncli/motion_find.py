@@ -68,18 +68,14 @@ class StateMotion:
             got = self._cache[t] = flatten(self.state(float(t)))
         return got
 
-    def window(self, t_end: float) -> "StateMotion":
-        """The same motion from t0 to ``t_end`` (< its end), sharing the cache."""
-        w = StateMotion(self.state, self.t0, t_end, [b for b in self.breaks if b < t_end], self.rtol,
-                        self._rates, self.batch, self.subdivide)
-        w._cache = self._cache
-        w._limit = self._limit
-        return w
-
-    def prefetch(self) -> None:
-        """The states at every sample of the search grid in one ``batch`` call (when given)."""
+    def prefetch(self, upto: float | None = None) -> None:
+        """The states at every sample of the search grid (up to ``upto``) in one ``batch`` call
+        (when given)."""
         if self.batch is not None:
-            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self)) if t not in self._cache]
+            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self))
+                 if t not in self._cache and (upto is None or t <= upto)]
+            if not T:                               # (a batch of no times is no solve)
+                return
             self._limit = 4096 + len(self._cache) + len(T)
             for t, st in zip(T, self.batch(T)):
                 self._cache[t] = flatten(st)
@@ -132,39 +128,22 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
     query not reached (``stopped``: why the motion ends early, said in that warning)."""
     qs = _q.parse_queries(raw, constant)
     full = full or motion.state
-    out = []
-    for k, ans in enumerate(_answer(q, motion) for q in qs):
+    if any(isinstance(q, _q.Extreme) for q in qs) and hasattr(motion, "prefetch"):
+        motion.prefetch()                           # (a when query fetches as far as it searches)
+    out, names = [], None
+    for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)
         if ans.get("reached") and ans.get("t") is not None:
             entry.update(full(ans["t"]))
-        elif warn is not None:
+            out.append(entry)
+            continue
+        names = list(full(motion.t0)) if names is None else names
+        entry.update({n: None for n in names if n not in entry})     # every other entry null (§11)
+        if warn is not None:
             warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
                  + (f" ({stopped})" if stopped else "; raise t_end to search further"))
         out.append(entry)
     return out
-
-
-#: the windows a ``when`` query searches first, as fractions of the motion (an early crossing is
-#: found without sampling the whole motion; the search grid of a window is the motion's own)
-WINDOWS = (1 / 256, 1 / 32, 1 / 4, 1.0)
-
-
-def _answer(q: Any, motion: Any) -> dict:
-    """One query: a ``when`` in growing windows from the start (the occurrences are counted from
-    the start, so a window that holds the n-th is the answer of the whole motion), the others on
-    the whole motion; each window's grid fetched in one ``batch`` call where the motion has one."""
-    if isinstance(q, _q.When) and hasattr(motion, "window") and motion.t_end > motion.t0:
-        span = motion.t_end - motion.t0
-        for frac in WINDOWS:
-            sub = motion.window(motion.t0 + span * frac) if frac < 1 else motion
-            if getattr(sub, "batch", None) is not None:
-                sub.prefetch()
-            got = _q.answer([q], sub)[0]
-            if got["reached"] or frac == 1:
-                return got
-    if not isinstance(q, _q.AtTime) and hasattr(motion, "prefetch"):
-        motion.prefetch()
-    return _q.answer([q], motion)[0]
 
 
 class Odometer:
@@ -180,16 +159,48 @@ class Odometer:
         self.speeds, self.np = speeds, np
         self.x, self.w = np.polynomial.legendre.leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
-        first = self._pieces(self.pts[:-1], self.pts[1:])
+        S = self._nodes(self.pts[:-1], self.pts[1:])
+        stops = self._stops(S)
+        if stops:                                   # |v| has a kink there: a break of its own
+            self.pts = np.array(sorted(set(self.pts.tolist()) | set(stops)))
+            S = self._nodes(self.pts[:-1], self.pts[1:])
+        first = self._sum(S, self.pts[:-1], self.pts[1:])
         self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
 
-    def _pieces(self, a, b):
+    def _nodes(self, a, b):
+        """The speeds at the Gauss–Legendre nodes of each piece [a, b]: (pieces, nodes[, k])."""
         np = self.np
         T = (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.x[None, :]
         S = np.asarray(self.speeds(T.ravel().tolist()), dtype=float)
-        S = S.reshape(T.shape + S.shape[1:])
+        return S.reshape(T.shape + S.shape[1:])
+
+    def _sum(self, S, a, b):
         half = (0.5 * (b - a)).reshape((-1,) + (1,) * (S.ndim - 2))
-        return half * np.tensordot(S, self.w, axes=([1], [0]))
+        return half * self.np.tensordot(S, self.w, axes=([1], [0]))
+
+    def _pieces(self, a, b):
+        return self._sum(self._nodes(a, b), a, b)
+
+    def _stops(self, S) -> list[float]:
+        """Where a speed comes (nearly) to rest inside a piece — a turning point, where |v| has a
+        kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
+        each piece whose node speeds dip below a quarter of their largest, by Brent's minimiser
+        (an error δ in its place costs only ~|a| δ²)."""
+        from dyncli.rootfind import fminbound_unit
+
+        np = self.np
+        S3 = S if S.ndim == 3 else S[:, :, None]
+        out = []
+        for i, c in zip(*np.nonzero(S3.min(axis=1) < 0.25 * S3.max(axis=1))):
+            a, b = float(self.pts[i]), float(self.pts[i + 1])
+
+            def speed(u, a=a, b=b, c=c):
+                got = np.asarray(self.speeds([a + u * (b - a)]), dtype=float)
+                return float(got.reshape(-1)[c] if got.ndim > 1 else got[0])
+            t = a + fminbound_unit(speed, 1e-12) * (b - a)
+            if a < t < b:
+                out.append(t)
+        return out
 
     def at(self, times: Iterable[float]) -> list:
         np = self.np

@@ -220,15 +220,32 @@ def _sign(x: float, tol: float) -> int:
 
 
 def _when(motion: Any, q: When) -> float | None:
-    """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None."""
+    """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None: the
+    grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
+    well inside it (a long search for an early event samples no further than it needs)."""
     path, V = q.path, q.value
     T = _grid(motion.breaks, float(motion.t0), float(motion.t_end), _pieces(motion))
-    F = [float(motion.value(path, t)) for t in T]
-    scan = _Crossings(lambda t: float(motion.value(path, t)) - V, _rate_fn(motion, path, motion.t0),
-                      T, [f - V for f in F], _tol(motion, max([abs(V)] + [abs(f) for f in F])))
-    want = {"up": 1, "down": -1}.get(q.direction)
-    hits = [t for t, d in scan.events() if want is None or d == want]
-    return hits[q.occurrence - 1] if len(hits) >= q.occurrence else None
+    want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
+    ahead = getattr(motion, "prefetch", None)
+    F: list[float] = []
+    m = min(len(T), FIRST_PREFIX)
+    while True:
+        if callable(ahead) and m < len(T):
+            ahead(T[m - 1])
+        F += [float(motion.value(path, t)) for t in T[len(F):m]]
+        scan = _Crossings(lambda t: float(motion.value(path, t)) - V, rate, T[:m], [f - V for f in F],
+                          _tol(motion, max([abs(V)] + [abs(f) for f in F])))
+        safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
+        hits = [t for t, d in scan.events() if (want is None or d == want) and t <= safe]
+        if len(hits) >= q.occurrence:
+            return hits[q.occurrence - 1]
+        if m == len(T):
+            return None
+        m = min(len(T), 2 * m)
+
+
+#: samples of a ``when`` search's first prefix (then doubled until the answer or the end)
+FIRST_PREFIX = 256
 
 
 class _Crossings:
@@ -363,42 +380,8 @@ def _peak(h, hr, a: float, b: float) -> tuple[float, float]:
     if hr is not None and hr(a) > 0 >= hr(b):
         t = _root(lambda t: _hr_psi(hr, t), a, b)
         return t, h(t)
-    u = _fminbound(lambda u: -h(a + u * (b - a)), 1e-12)
+    from dyncli.rootfind import fminbound_unit
+
+    u = fminbound_unit(lambda u: -h(a + u * (b - a)), 1e-12)
     t = min(max(a + u * (b - a), a), b)
     return t, h(t)
-
-
-def _fminbound(f: Callable[[float], float], xatol: float, maxfun: int = 500) -> float:
-    """Brent's minimiser on [0, 1] (golden section with parabolic steps; Brent 1973, ch. 5)."""
-    c, sqrt_eps = 0.5 * (3.0 - math.sqrt(5.0)), math.sqrt(_EPS)
-    a, b, v, w, x = 0.0, 1.0, c, c, c
-    fv = fw = fx = f(x)
-    d = e = 0.0
-    for _ in range(maxfun):
-        xm, tol1 = 0.5 * (a + b), sqrt_eps * abs(x) + xatol / 3.0
-        if abs(x - xm) <= 2 * tol1 - 0.5 * (b - a):
-            break
-        golden = True
-        if abs(e) > tol1:                             # a parabola through x, w, v
-            r, q = (x - w) * (fx - fv), (x - v) * (fx - fw)
-            p, q = (x - v) * q - (x - w) * r, 2.0 * (q - r)
-            p, q = (-p if q > 0 else p), abs(q)
-            r, e = e, d
-            if abs(p) < abs(0.5 * q * r) and q * (a - x) < p < q * (b - x):
-                d, golden = p / q, False
-                if (x + d - a) < 2 * tol1 or (b - x - d) < 2 * tol1:
-                    d = tol1 if xm >= x else -tol1
-        if golden:
-            d = c * (e := (a - x) if x >= xm else (b - x))
-        u = x + (d if abs(d) >= tol1 else (tol1 if d >= 0 else -tol1))
-        fu = f(u)
-        if fu <= fx:
-            a, b = (x, b) if u >= x else (a, x)
-            v, fv, w, fw, x, fx = w, fw, x, fx, u, fu
-        else:
-            a, b = (u, b) if u < x else (a, u)
-            if fu <= fw or w == x:
-                v, fv, w, fw = w, fw, u, fu
-            elif fu <= fv or v == x or v == w:
-                v, fv = u, fu
-    return x

@@ -293,3 +293,40 @@ def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-1
         if big <= tol:
             return x, True
     return x, False
+
+
+def fminbound_unit(f, xatol: float, maxfun: int = 500) -> float:
+    """Brent's minimiser on [0, 1] (golden section with parabolic steps; Brent 1973, ch. 5), in plain
+    floats: the ``find`` queries' extremes of a result with no rate, and the distance's stops."""
+    c, sqrt_eps = 0.5 * (3.0 - math.sqrt(5.0)), math.sqrt(2.220446049250313e-16)
+    a, b, v, w, x = 0.0, 1.0, c, c, c
+    fv = fw = fx = f(x)
+    d = e = 0.0
+    for _ in range(maxfun):
+        xm, tol1 = 0.5 * (a + b), sqrt_eps * abs(x) + xatol / 3.0
+        if abs(x - xm) <= 2 * tol1 - 0.5 * (b - a):
+            break
+        golden = True
+        if abs(e) > tol1:                             # a parabola through x, w, v
+            r, q = (x - w) * (fx - fv), (x - v) * (fx - fw)
+            p, q = (x - v) * q - (x - w) * r, 2.0 * (q - r)
+            p, q = (-p if q > 0 else p), abs(q)
+            r, e = e, d
+            if abs(p) < abs(0.5 * q * r) and q * (a - x) < p < q * (b - x):
+                d, golden = p / q, False
+                if (x + d - a) < 2 * tol1 or (b - x - d) < 2 * tol1:
+                    d = tol1 if xm >= x else -tol1
+        if golden:
+            d = c * (e := (a - x) if x >= xm else (b - x))
+        u = x + (d if abs(d) >= tol1 else (tol1 if d >= 0 else -tol1))
+        fu = f(u)
+        if fu <= fx:
+            a, b = (x, b) if u >= x else (a, x)
+            v, fv, w, fw, x, fx = w, fw, x, fx, u, fu
+        else:
+            a, b = (u, b) if u < x else (a, u)
+            if fu <= fw or w == x:
+                v, fv, w, fw = w, fw, u, fu
+            elif fu <= fv or v == x or v == w:
+                v, fv = u, fu
+    return x

@@ -122,8 +122,9 @@ def report(p, res, states, breaks, keys, subdivide=None) -> None:
         return dict(batch([t])[0], distance=distance(t))
 
     motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,
-                            rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a"},
-                            batch=lambda ts: [dict(e) for e in batch(ts)])
+                            rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a",
+                                   "distance": lambda t, _: abs(motion.flat(t)["s_dot"])},
+                            batch=lambda ts: [dict(e, distance=distance(float(t))) for t, e in zip(ts, batch(ts))])
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
 
 

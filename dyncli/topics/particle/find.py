@@ -3,8 +3,8 @@
 The motion is the integrated trajectory at any time (every step's dense output, the same steps
 as the reported times) or the exact conic of an orbit; its breaks are the accepted steps and the
 phase ends (a stop by friction, a rest), between which the state is one interpolating
-polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x
-and a of v, so a turning point of a coordinate is a root of its rate (Brent).  ``distance`` is
+polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x, a of v
+and m v·a of T, so a turning point of a coordinate or of T is a root of its rate (Brent).  ``distance`` is
 ∫|v| dt by Gauss–Legendre on every step (:class:`dyncli.motion_find.Odometer`).
 """
 
@@ -55,7 +55,11 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         st["distance"] = odo.at([t])[0]
         return st
 
+    def power(t: float) -> float:                   # Ṫ = m v·a: a turning point of T is a root of it
+        f = motion.flat(t)
+        return float(p.m) * sum(f[f"v.{i}"] * f[f"a.{i}"] for i in range(3))
+
     motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
-                            rates={"x": "v", "v": "a"},
+                            rates={"x": "v", "v": "a", "T": lambda t, _: power(t)},
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))])
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))

@@ -5,7 +5,7 @@ events).  ``when``, ``max``, ``min`` — and a ``{v: V}`` or ``{s: S}`` equal to
 which counts only when the motion reaches it again (from rest, ``{v: 0}`` is the next turning
 point, not the release) — are answered by :mod:`dyncli.motion_find` on the motion the route
 gives at any time (one batched run per search: :func:`solver.sample`), with the exact rates
-(v of s, a(t, s, v) of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
+(v of s, a of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
 since t1) is Σ|Δs| between the turning points.
 """
 
@@ -15,7 +15,7 @@ import math
 
 from dyncli import motion_find as mf
 from dyncli import queries as _q
-from dyncli.errors import NumericalError
+from dyncli.errors import InputError, NumericalError
 from dyncli.expr import constant, resolve_params
 
 #: pieces of the search when the motion has no period; per period when it has one; at most
@@ -60,10 +60,6 @@ class _Motion:
         if not e or not e.get("reached"):
             raise NumericalError("the motion is not defined there")
         return {"s": e["s"], "v": e["v"], "a": e["a"]}
-
-    def accel(self, t: float) -> float:
-        st = self.state(t)
-        return float(self.p.a(t=t, s=st["s"], v=st["v"]))
 
     def reachable_end(self, t_end: float) -> float:
         """t_end, or the last time before it the motion reaches (it ends early: a blow-up)."""
@@ -162,9 +158,7 @@ def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | No
 
 def answer(p, res, generic, items, sample, solve_one) -> None:
     """Fill ``items`` (the answers in the user's order) for the generic queries, then add
-    ``distance`` to every reached answer.  The queries search growing windows from t1
-    (:data:`dyncli.motion_find.WINDOWS`): an early crossing costs a short stretch of the motion,
-    the turning points found only as far as the window."""
+    ``distance`` to every reached answer."""
     params = resolve_params(p.params)
     const = lambda text: constant(text, params)      # noqa: E731
     if res.results.get("case") == 2 and str(res.method).startswith("quadrature"):
@@ -183,61 +177,61 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
 
         sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
     motion = _Motion(p, sample)
-    if dense is not None:
-        t_end = dense.end
-    lo, hi = min(reached + [t1]), max(reached + [t1])
+    if generic:
+        t_end = dense.end if dense is not None else motion.reachable_end(t_end)
+    lo, hi = min(reached + [t1]), max(reached + [t1, t_end])
+    if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
+        turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
+        knots = [b for b in dense.breaks if t1 < b < t_end]
+    else:
+        turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
+    if generic:
+        odo = _Odometer(p, turns, motion)
 
-    def structure(upto: float):
-        if dense is not None and lo >= t1:           # the general case: the roots of v on the steps
-            return (mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= upto], 1),
-                    [b for b in dense.breaks if t1 < b < upto])
-        return turning_points(p, res, lo, upto, motion, solve_one) if upto > lo else ([], [])
+        def batch(ts: list[float]) -> list[dict]:
+            return [dict(st, distance=odo.at(t, st["s"])) for t, st in zip(ts, motion.batch(ts))]
 
-    pending, upto, turns = list(generic), None, []
-    for frac in mf.WINDOWS:
-        w = t1 + (t_end - t1) * frac
-        if not pending or (frac < 1 and (w <= hi or not any("when" in x for _, x in pending))):
-            continue
-        if dense is None:
-            w = motion.reachable_end(w)              # where the motion ends first (a blow-up, a pole)
-        upto = max(w, hi)
-        turns, knots = structure(upto)
-        pending = _search(p, res, pending, items, motion, const, (turns, knots, dense), w, frac == 1)
-    last = max([e["t"] for e in items if e and e.get("reached")] + [hi])
-    if upto is None or last > upto:                  # the turning points as far as the answers reach
-        turns = structure(last)[0]
+        sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
+                            rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
+                            rates={"s": "v", "v": "a", "distance": lambda t, _: abs(sm.value("v", t))}, batch=batch,
+                            subdivide=1 if dense is not None else None)
+        try:
+            found = mf.answer_find(raw, sm, const, None, full=motion.state)
+        except InputError as e:                     # find.k of the generic queries: the user's index
+            head, k, rest = (e.path or "").split(".", 2) + [""] * (2 - (e.path or "").count("."))
+            raise InputError(e.message, ".".join(x for x in (head, str(generic[int(k)][0]), rest) if x)) \
+                if head == "find" and k.isdigit() else e
+        for (i, _), a in zip(generic, found):
+            if not a["reached"]:
+                res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {t_end:.10g} s"
+                         + (" (t1 + t_max)" if t_end >= t1 + p.t_max else ""))
+                a.update({"s": None, "v": None, "a": None})
+            items[i] = a
     for e in items:
         if e is not None:
             e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
 
 
-def _search(p, res, pending, items, motion, const, found, w, last) -> list:
-    """Answer the pending queries over [t1, w] (in a window before the last only ``when``
-    queries, and only those that are reached there); returns those still pending."""
-    turns, knots, dense = found
-    t1 = p.t1
+class _Odometer:
+    """∫|v| dt from t1 to a later time: the distances at the turning points accumulated as far
+    as asked (s at the turns fetched in growing batches), then |s(t) − s(last turn)| (the
+    motion is monotonic between turns)."""
 
-    def batch(ts) -> list[dict]:                     # the state with the distance travelled
-        return [dict(st, distance=_distance(p, {"t": t, "s": st["s"]}, turns, motion))
-                for t, st in zip(ts, motion.batch(ts))]
+    def __init__(self, p, turns: list[float], motion):
+        self.turns, self.motion = [x for x in sorted(turns) if x > p.t1], motion
+        self.knots, self.s, self.cum = [p.t1], [p.s1], [0.0]
 
-    sm = mf.StateMotion(lambda t: batch([t])[0], t1, w, _breaks(t1, w, turns, knots),
-                        rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
-                        rates={"s": "v", "v": lambda t, _: motion.accel(t),
-                               "distance": lambda t, _: abs(motion.state(t)["v"])}, batch=batch,
-                        subdivide=1 if dense is not None else None)
-    asked = [(i, x) for i, x in pending if last or "when" in x]
-    left = [(i, x) for i, x in pending if not (last or "when" in x)]
-    for (i, x), a in zip(asked, mf.answer_find([x for _, x in asked], sm, const, None, full=motion.state)):
-        if not a["reached"] and not last:
-            left.append((i, x))
-            continue
-        if not a["reached"]:
-            res.warn(f"find[{i}]: not reached between t1 = {t1:g} and t = {w:.10g} s"
-                     + (" (t1 + t_max)" if w >= t1 + p.t_max else ""))
-            a.update({"s": None, "v": None, "a": None})
-        items[i] = a
-    return sorted(left)
+    def at(self, t: float, s: float) -> float:
+        import bisect
+
+        while len(self.knots) <= len(self.turns) and self.knots[-1] < t:     # the turns before t, in batches
+            new = self.turns[len(self.knots) - 1:2 * len(self.knots) + 16]
+            for x, st in zip(new, self.motion.batch(new)):
+                self.knots.append(x)
+                self.cum.append(self.cum[-1] + abs(st["s"] - self.s[-1]))
+                self.s.append(st["s"])
+        j = max(bisect.bisect_left(self.knots, t) - 1, 0)
+        return self.cum[j] + abs(s - self.s[j]) + 0.0
 
 
 def _distance(p, e: dict, turns: list[float], motion) -> float:

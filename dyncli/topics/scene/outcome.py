@@ -68,7 +68,8 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
                  f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
                  "event)")
     if find_raw:
-        res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn)
+        res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn,
+                                             rtol=0.0 if str(traj.method or route).startswith("closed") else acc.rtol)
         for e in res.results["find"]:
             e["distance"] = ({k: v[0] for k, v in distance([e["t"]]).items()} if e.get("reached") else None)
     res.method = traj.method or route

@@ -11,8 +11,8 @@ from . import report
 
 
 class SceneMotion:
-    def __init__(self, traj, inst):
-        self.traj, self.inst = traj, inst
+    def __init__(self, traj, inst, rtol: float = 0.0):
+        self.traj, self.inst, self.rtol = traj, inst, float(rtol)   # rtol: equal extremes, touches
         self._coords = _coordinate_paths(traj.system)
         self.t0 = traj.t0
         self.t_end = traj.stopped if traj.stopped is not None else traj.t_end
@@ -74,10 +74,10 @@ def _coordinate_paths(system) -> dict:
     return out
 
 
-def answer(raw, scene, traj, inst, params, times, warn=None) -> list[dict]:
+def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0) -> list[dict]:
     qs = _q.parse_queries(raw, lambda text: constant(text, params))
-    motion = SceneMotion(traj, inst)
-    out = []
+    motion = SceneMotion(traj, inst, rtol)
+    out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)
         if not ans.get("reached") and warn is not None:
@@ -86,6 +86,9 @@ def answer(raw, scene, traj, inst, params, times, warn=None) -> list[dict]:
                     "; raise t_end to search further"))
         if ans.get("reached") and ans.get("t") is not None:
             entry.update(inst(ans["t"]))
+        else:                                         # every other entry null (§11)
+            names = list(inst(motion.t0)) if names is None else names
+            entry.update({n: None for n in names if n not in entry})
         out.append(entry)
     return out
 
