@@ -167,7 +167,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
-    t_end = max(asked + [t1 + p.t_max])     # as far as the type's own {v}, {s} look: t1 + t_max (or a later t)
+    t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
     raw = [x for _, x in generic]
     reached = [e["t"] for e in items if e and e.get("reached")]
     t_end = mf.search_end(t_end, raw, const) if generic else max(reached + [t1])
