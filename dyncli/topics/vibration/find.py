@@ -26,6 +26,8 @@ from dyncli.expr import constant, resolve_params
 from . import closed_form as cf
 from . import forced
 
+_EPS = 2.220446049250313e-16
+
 #: pieces per shortest period, and the most pieces a search takes (beyond: a coarser grid, warned)
 PER_PERIOD, MAX_PIECES = 8, 20_000
 
@@ -47,6 +49,31 @@ class Response:
                                   s0=self.s0, Omega=self.Om)
         return forced.response_at(t, m=p.m, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0,
                                   v0=p.v0, F0=self.fo[0], Om=self.fo[1])
+
+    def scalar(self):
+        """(x, v)(t) in plain floats: the steady state plus the free vibration that makes up the
+        initial conditions (the general closed form at an undamped resonance)."""
+        import cmath
+
+        P, Om = self._steady()
+        if P is None:
+            return lambda t: self.at(t)[:2]
+        iOP = 1j * Om * P
+        w0, wd0 = self.x0 - self.L - P.imag, self.p.v0 - iOP.imag
+        wn, z, L = self.omega_n, self.zeta, self.L
+
+        def xv(t: float):
+            e = cmath.exp(1j * Om * t)
+            wh, vh = cf.free_at(t, w0, wd0, wn, z)
+            return L + wh + (P * e).imag, vh + (iOP * e).imag
+        return xv
+
+    def acceleration_at(self, t: float, x: float, v: float) -> float:
+        """ẍ from (17.15a) at a known (x, v)."""
+        s, sd = self.s0 * math.sin(self.Om * t), self.s0 * self.Om * math.cos(self.Om * t)
+        f = 0.0 if self.fo is None else self.fo[0] * math.sin(self.fo[1] * t) / self.p.m
+        wn = self.omega_n
+        return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
     def acceleration(self, t: float) -> float:
         """ẍ from (17.15a): −ωₙ²(x − s − L) − 2ζωₙ(ẋ − ṡ) + F/m."""
@@ -246,11 +273,32 @@ def _forced_turns(resp: Response, t_end: float) -> list[float]:
 
 
 def _forced_turns_scalar(resp: Response, breaks: list[float]) -> list[float]:
-    """:func:`_forced_turns` in plain floats: Brent on v inside each sign change of the grid."""
-    from dyncli.queries import _root
-
-    V = [resp.at(t)[1] for t in breaks]
-    out = [t for t, v in zip(breaks[1:-1], V[1:-1]) if v == 0.0]
-    v = lambda t: resp.at(t)[1]                      # noqa: E731
-    out += [_root(v, a, b) for a, b, va, vb in zip(breaks, breaks[1:], V, V[1:]) if va * vb < 0]
+    """:func:`_forced_turns` in plain floats: the steady state plus the free part (a few floating
+    operations per time), Newton with the exact acceleration inside each sign change of v on the
+    grid (bisection when a step leaves the bracket)."""
+    xv = resp.scalar()
+    XV = [xv(t) for t in breaks]
+    out = [t for t, (_, v) in zip(breaks[1:-1], XV[1:-1]) if v == 0.0]
+    for a, b, (xa, va), (xb, vb) in zip(breaks, breaks[1:], XV, XV[1:]):
+        if va * vb < 0:
+            out.append(_newton(resp, xv, a, b, va, vb))
     return sorted(out)
+
+
+def _newton(resp, xv, a: float, b: float, va: float, vb: float) -> float:
+    t = a - va * (b - a) / (vb - va)
+    for _ in range(100):
+        x, v = xv(t)
+        if v == 0.0:
+            return t
+        if v * va < 0:
+            b, vb = t, v
+        else:
+            a, va = t, v
+        acc = resp.acceleration_at(t, x, v)
+        step = t - v / acc if acc else math.nan
+        t_new = step if a <= step <= b else 0.5 * (a + b)
+        if abs(t_new - t) <= 4 * _EPS * abs(t) or b - a <= 4 * _EPS * abs(b):
+            return t_new
+        t = t_new
+    return t
