@@ -52,6 +52,7 @@ class StateMotion:
                  batch: Callable[[list[float]], list[Mapping]] | None = None, subdivide: int | None = None):
         self.state, self.t0, self.t_end, self.rtol = state, float(t0), float(t_end), float(rtol)
         self.subdivide = subdivide                  # 1 when the breaks are an ODE's steps
+        self.period: float | None = None            # set when the motion repeats exactly (find's extremes)
         self.batch = batch                          # the states at many times in one run (optional)
         inner = sorted({float(b) for b in breaks if self.t0 < b < self.t_end})
         self.breaks = [self.t0] + inner + [self.t_end]
@@ -67,6 +68,13 @@ class StateMotion:
                 self._cache.clear()
             got = self._cache[t] = flatten(self.state(float(t)))
         return got
+
+    def clipped(self, t_end: float) -> "StateMotion":
+        """The same motion from t0 to ``t_end`` (before its end), sharing the cache."""
+        w = StateMotion(self.state, self.t0, t_end, [b for b in self.breaks if b < t_end], self.rtol,
+                        self._rates, self.batch, self.subdivide)
+        w._cache, w._limit = self._cache, self._limit
+        return w
 
     def prefetch(self, upto: float | None = None) -> None:
         """The states at every sample of the search grid (up to ``upto``) in one ``batch`` call
@@ -128,10 +136,15 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
     query not reached (``stopped``: why the motion ends early, said in that warning)."""
     qs = _q.parse_queries(raw, constant)
     full = full or motion.state
+    period = getattr(motion, "period", None)
+    one = motion.clipped(motion.t0 + period) if period and motion.t_end - motion.t0 > period else None
     if any(isinstance(q, _q.Extreme) for q in qs) and hasattr(motion, "prefetch"):
-        motion.prefetch()                           # (a when query fetches as far as it searches)
+        (one or motion).prefetch()                  # (a when query fetches as far as it searches)
     out, names = [], None
-    for k, ans in enumerate(_q.answer(qs, motion)):
+    # a periodic motion's extremes over the whole motion lie in its first period (the first of equal ones)
+    answers = [_q.answer([q], one)[0] if one is not None and isinstance(q, _q.Extreme) and q.within is None
+               else _q.answer([q], motion)[0] for q in qs]
+    for k, ans in enumerate(answers):
         entry = dict(ans)
         if ans.get("reached") and ans.get("t") is not None:
             entry.update(full(ans["t"]))

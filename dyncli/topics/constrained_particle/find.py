@@ -31,22 +31,23 @@ def quadrature_states(p, model):
 
     E = quadrature.Energy(p, model)
 
-    def legs(t_end: float) -> list[float]:
-        """The ends of the route's legs up to t_end: the turning points (and the legs' middles)."""
+    def legs(t_end: float, turning: bool = False) -> list[float]:
+        """The ends of the route's legs up to t_end: the turning points and the legs' middles
+        (``turning``: the turning points only, every one to t_end)."""
         quadrature.motion(E, [0.0])
         pl = E._plan
         if pl is None:
             return []
         first, cycle = pl[0], pl[1]
-        out, t = [], 0.0
+        out, t, cap = [], 0.0, (float("inf") if turning else MAX_PIECES)
         for s in first:
             t += s.dur
-            out.append(t)
-        while cycle and t < t_end and len(out) < MAX_PIECES:
+            out.append((t, s.x1 == 0.0 and s.p.kind == "turn"))
+        while cycle and t < t_end and len(out) < cap:
             for s in cycle:
                 t += s.dur
-                out.append(t)
-        return [x for x in out if 0.0 < x < t_end]
+                out.append((t, s.x1 == 0.0 and s.p.kind == "turn"))
+        return [x for x, turn in out if 0.0 < x < t_end and (turn or not turning)]
 
     def states(ts):
         ts = [float(t) for t in ts]
@@ -85,9 +86,9 @@ def uniform_breaks(t_end: float, period) -> list[float]:
     return [t_end * k / n for k in range(n + 1)]
 
 
-def report(p, res, states, breaks, keys, subdivide=None) -> None:
+def report(p, res, states, breaks, keys, subdivide=None, turn_times=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers (``subdivide``: 1 when the
-    breaks are the ODE's steps)."""
+    breaks are the ODE's steps; ``turn_times``: the turning points when the route knows them)."""
     t_end = float(p.t_end)
     B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
 
@@ -101,16 +102,8 @@ def report(p, res, states, breaks, keys, subdivide=None) -> None:
             memo.update(zip(new, _entries(states(new), len(new), keys)))
         return [memo[float(t)] for t in ts]
 
-    turns = [] if t_end <= 0 else _turns(batch, B, subdivide)
-    s = lambda t: batch([t])[0]["s"]                 # noqa: E731
-    s_at = {}
-
-    def distance(t: float) -> float:
-        knots = [0.0] + [x for x in turns if x < t] + [t]
-        for k in knots:
-            if k not in s_at:
-                s_at[k] = s(k)
-        return sum(abs(s_at[b] - s_at[a]) for a, b in zip(knots, knots[1:])) + 0.0
+    turns = turn_times if turn_times is not None else ([] if t_end <= 0 else _turns(batch, B, subdivide))
+    distance = _odometer(lambda t: batch([t])[0]["s"], turns, bool(turn_times))
 
     res.results["distance"] = [distance(float(t)) for t in p.at]
     if not p.find:
@@ -125,6 +118,9 @@ def report(p, res, states, breaks, keys, subdivide=None) -> None:
                             rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a",
                                    "distance": lambda t, _: abs(motion.flat(t)["s_dot"])},
                             batch=lambda ts: [dict(e, distance=distance(float(t))) for t, e in zip(ts, batch(ts))])
+    period = res.results.get("period")
+    if subdivide is None and isinstance(period, float) and period > 0:
+        motion.period = period                       # the energy route's motion repeats exactly
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
 
 
@@ -132,3 +128,26 @@ def _turns(batch, B, subdivide=None) -> list[float]:
     sm = mf.StateMotion(lambda t: batch([t])[0], B[0], B[-1], B, batch=batch, subdivide=subdivide)
     sm.prefetch()
     return mf.turns(lambda t: sm.value("s_dot", t), B, subdivide or mf._q.SUBDIVIDE)
+
+
+def _odometer(s, turns: list[float], periodic: bool):
+    """distance(t): Σ|Δs| between the turning points.  ``periodic``: an oscillation between two
+    turning points, s at the k-th turning point that of the (k − 2)-th (one evaluation each of
+    the first two, whatever the number of swings)."""
+    import bisect
+
+    turns = sorted(turns)
+    at_turn: list[float] = []
+    cum = [0.0]
+    prev = s(0.0)
+    for k, t in enumerate(turns):
+        v = at_turn[k - 2] if periodic and k >= 2 else s(t)
+        at_turn.append(v)
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
+
+    def distance(t: float) -> float:
+        k = bisect.bisect_left(turns, t)
+        last = at_turn[k - 1] if k else s(0.0)
+        return cum[k] + abs(s(t) - last) + 0.0
+    return distance

@@ -92,7 +92,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         if res is not None:
             states = find.quadrature_states(p, model)
             find.report(p, res, states, find.uniform_breaks(float(p.t_end), res.results.get("period"))
-                        + states.legs(float(p.t_end)), SERIES)
+                        + states.legs(float(p.t_end)), SERIES, turn_times=states.legs(float(p.t_end), turning=True))
     if res is None:
         res = _solve_ode(p, model, times)
         find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
