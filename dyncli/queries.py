@@ -164,7 +164,8 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
         raise InputError(f"occurrence must be a whole number 1, 2, 3 ... (the n-th crossing), got {_kind(n)}",
                          f"{base}.occurrence")
     if n < 1:
-        raise InputError(f"occurrence counts from 1 (the first crossing), got {n}", f"{base}.occurrence")
+        shown = str(n) if abs(n) < 10 ** 12 else f"{float(n):.3g}"
+        raise InputError(f"occurrence must be 1 or more (1: the first crossing), got {shown}", f"{base}.occurrence")
     return When(path, value, d, n, index=i)
 
 

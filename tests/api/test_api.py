@@ -77,7 +77,7 @@ def test_solution_views():
     s = dyncli.solve(str(ROOT / "problems/vibration/underdamped.yaml"))[0]
     assert repr(s) == "<Solution vibration 'Underdamped free vibration': 13 results, method closed-form>"   # 11 and t
     html = s._repr_html_()
-    assert html.count("<table>") == 2 and "<th>t</th>" in html and "&lt;" not in s.title
+    assert html.count("<table>") == 3 and "<th>t</th>" in html      # results, response over t, find and "&lt;" not in s.title
     assert s.table(units="deg").splitlines()[0].startswith("Underdamped free vibration")
     assert " deg" in s.table(units="deg")
     with pytest.raises(dyncli.InputError, match="unknown unit"):
