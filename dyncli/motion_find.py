@@ -340,20 +340,36 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
         turns = (t_end - t0) * fastest / (2 * _m.pi)
         if isinstance(period, (int, float)) and period and period > 0:
             turns = max(turns, (t_end - t0) / period)
-        if not _m.isfinite(turns):                  # a rate beyond a double: the finest grid allowed
-            turns = MAX_PIECES
-        n = int(min(max(64, _m.ceil(turns * PER_TURN)), MAX_PIECES))
+        if not turns * PER_TURN <= MAX_PIECES:      # (also a rate beyond a double)
+            _too_fast(problem, result, const, t_end, turns, batch)
+            return
+        n = int(max(64, _m.ceil(turns * PER_TURN)))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-        if turns * PER_TURN > MAX_PIECES:
-            result.warn(f"find: the motion to t = {t_end:g} s turns about {turns:.3g} times; the search grid is "
-                        f"capped at {MAX_PIECES} pieces, so extremes closer than that may be missed (use within)")
     motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks,
                          rtol=float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0,
                          rates=rates, batch=batch)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
 
 
-PER_TURN, MAX_PIECES = 8, 20_000
+PER_TURN, MAX_PIECES = 8, 4_096
+
+
+def _too_fast(problem: Any, result: Any, const, t_end: float, turns: float, batch) -> None:
+    """The search would need more pieces than MAX_PIECES: the motion is too fast to search to
+    t_end; ``{t}`` queries are answered, the others not reached, and a warning says why."""
+    qs = _q.parse_queries(problem.find, const)
+    why = (f"the motion turns about {turns:.3g} times before t = {t_end:g} s, more than a search of "
+           f"{MAX_PIECES // PER_TURN} turns resolves: narrow the window with within, or ask at times (at, {{t: T}})")
+    entries, names = [], None
+    for q in qs:
+        if isinstance(q, _q.AtTime):
+            entries.append(dict({"t": q.t, "reached": True, "at_end": None}, **batch([q.t])[0]))
+        else:
+            names = names if names is not None else list(batch([float(getattr(problem, "t0", 0.0) or 0.0)])[0])
+            entries.append(dict({n: None for n in names}, t=None, reached=False, at_end=None))
+            result.warn(f"find.{q.index}: not searched — {why}")
+    attach(result, problem.find, entries)
+
 
 
 def _leaves(x: Any) -> list[float]:

@@ -165,7 +165,8 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
                          f"{base}.occurrence")
     if n < 1:
         shown = str(n) if abs(n) < 10 ** 12 else f"{float(n):.3g}"
-        raise InputError(f"occurrence must be 1 or more (1: the first crossing), got {shown}", f"{base}.occurrence")
+        raise InputError(f"occurrence must be 1 or more: it counts from 1 (the first crossing), got {shown}",
+                         f"{base}.occurrence")
     return When(path, value, d, n, index=i)
 
 
