@@ -215,9 +215,9 @@ def add(res, p, F, traj, S) -> None:
     for name, title in (("force_terms", "Fᵢ (each force)"), ("power", "Pᵢ = Fᵢ·v"),
                         ("work", "Uᵢ = ∫ Pᵢ dt")):
         res.series.append(Series("t", list(times), [name], title=title))   # one column per force
-    for eq in ("18.1", "18.2", "18.7", "19.8"):
-        if eq not in res.equations:
-            res.equations.append(eq)
+    for number in ("18.1", "18.2", "18.7", "19.8"):
+        if number not in res.equations:
+            res.equations.append(number)
 
 
 def _works(p, traj, terms, F, times, X, W_nc):
