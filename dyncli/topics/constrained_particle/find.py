@@ -39,7 +39,7 @@ def quadrature_states(p, model):
         if pl is None:
             return []
         first, cycle = pl[0], pl[1]
-        out, t, cap = [], 0.0, (float("inf") if turning else MAX_PIECES)
+        out, t, cap = [], 0.0, (4 if turning else MAX_PIECES)   # turning: the first few (then periodic)
         for s in first:
             t += s.dur
             out.append((t, s.x1 == 0.0 and s.p.kind == "turn"))
@@ -103,7 +103,9 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None) -> Non
         return [memo[float(t)] for t in ts]
 
     turns = turn_times if turn_times is not None else ([] if t_end <= 0 else _turns(batch, B, subdivide))
-    distance = _odometer(lambda t: batch([t])[0]["s"], turns, bool(turn_times))
+    period = res.results.get("period")
+    distance = _odometer(lambda t: batch([t])[0]["s"], turns,
+                         0.5 * period if turn_times is not None and isinstance(period, float) and period > 0 else None)
 
     res.results["distance"] = [distance(float(t)) for t in p.at]
     if not p.find:
@@ -130,24 +132,35 @@ def _turns(batch, B, subdivide=None) -> list[float]:
     return mf.turns(lambda t: sm.value("s_dot", t), B, subdivide or mf._q.SUBDIVIDE)
 
 
-def _odometer(s, turns: list[float], periodic: bool):
-    """distance(t): Σ|Δs| between the turning points.  ``periodic``: an oscillation between two
-    turning points, s at the k-th turning point that of the (k − 2)-th (one evaluation each of
-    the first two, whatever the number of swings)."""
+def _odometer(s, turns: list[float], half: float | None):
+    """distance(t): Σ|Δs| between the turning points.  ``half``: the motion oscillates between
+    two turning points, the k-th at turns[0] + (k − 1)·half (a swing and its return take equal
+    times), s there alternating between its first two values: the distance at any t from those
+    two, whatever the number of swings (no list of them)."""
     import bisect
+    import math
 
     turns = sorted(turns)
-    at_turn: list[float] = []
-    cum = [0.0]
-    prev = s(0.0)
-    for k, t in enumerate(turns):
-        v = at_turn[k - 2] if periodic and k >= 2 else s(t)
+    s0 = s(0.0)
+    if half is not None and len(turns) >= 2:
+        t1, s1, s2 = turns[0], s(turns[0]), s(turns[1])
+
+        def periodic(t: float) -> float:
+            if t <= t1:
+                return abs(s(t) - s0) + 0.0
+            k = math.floor((t - t1) / half) + 1          # turning points at or before t
+            last = s1 if k % 2 else s2
+            return abs(s1 - s0) + (k - 1) * abs(s2 - s1) + abs(s(t) - last) + 0.0
+        return periodic
+    at_turn, cum, prev = [], [0.0], s0
+    for t in turns:
+        v = s(t)
         at_turn.append(v)
         cum.append(cum[-1] + abs(v - prev))
         prev = v
 
     def distance(t: float) -> float:
         k = bisect.bisect_left(turns, t)
-        last = at_turn[k - 1] if k else s(0.0)
+        last = at_turn[k - 1] if k else s0
         return cum[k] + abs(s(t) - last) + 0.0
     return distance

@@ -127,7 +127,17 @@ def _swings(p, res, lo, hi, solve_one) -> list[float]:
         return [first] if lo < first < hi else []
     n = min(math.floor((hi - first) / (0.5 * T)), MAX_PIECES)
     k0 = max(0, math.ceil((lo - first) / (0.5 * T))) if lo > first else 0
-    return [x for x in (first + 0.5 * T * k for k in range(k0, n + 1)) if lo < x < hi]
+    out = Swings(x for x in (first + 0.5 * T * k for k in range(k0, n + 1)) if lo < x < hi)
+    out.first, out.half = first, 0.5 * T
+    return out
+
+
+class Swings(list):
+    """The turning points of a periodic case 4 (as many as a search needs), with the first of
+    them and the half period: the k-th lies at first + k·half, for the distance at any time."""
+
+    first: float = 0.0
+    half: float = 0.0
 
 
 def _zeros_of_a(p, lo: float, hi: float, n: int = 4096) -> list[float]:
@@ -235,7 +245,14 @@ class _Odometer:
 
 
 def _distance(p, e: dict, turns: list[float], motion) -> float:
-    """∫|v| dt between t1 and the answer's time: Σ|Δs| between the turning points."""
+    """∫|v| dt between t1 and the answer's time: Σ|Δs| between the turning points (a periodic
+    swing: from its first two turning points, whatever the number of swings)."""
+    if isinstance(turns, Swings) and turns.half > 0 and e["t"] > turns.first >= p.t1:
+        f, h = turns.first, turns.half
+        k = math.floor((e["t"] - f) / h)                  # turning points after the first, up to t
+        s1, s2 = motion.state(f)["s"], motion.state(f + h)["s"]
+        last = s1 if k % 2 == 0 else s2
+        return abs(s1 - p.s1) + k * abs(s2 - s1) + abs(e["s"] - last) + 0.0
     a, b = sorted((p.t1, e["t"]))
     knots = [a] + [x for x in turns if a < x < b] + [b]
     s = {t: motion.state(t)["s"] for t in knots[1:-1]}
