@@ -194,7 +194,16 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
         knots = [b for b in dense.breaks if t1 < b < t_end]
     else:
-        turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
+        try:
+            turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
+        except NumericalError as exc:               # no search needs them: only the distance is lost
+            if generic:
+                raise
+            res.warn(f"distance not computed: the turning points between t = {lo:.10g} and {hi:.10g} s: {exc}")
+            for e in items:
+                if e is not None:
+                    e["distance"] = None
+            return
     if generic:
         odo = _Odometer(p, turns, motion)
 
@@ -219,7 +228,11 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
             items[i] = a
     for e in items:
         if e is not None:
-            e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
+            try:
+                e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
+            except NumericalError as exc:             # a state between t1 and t the route cannot give
+                e["distance"] = None
+                res.warn(f"distance at t = {e['t']:.10g} s not computed: {exc}")
 
 
 class _Odometer:
