@@ -200,9 +200,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
             if generic:
                 raise
             res.warn(f"distance not computed: the turning points between t = {lo:.10g} and {hi:.10g} s: {exc}")
-            for e in items:
-                if e is not None:
-                    e["distance"] = None
+            _distances(p, res, items, None, motion)
             return
     if generic:
         odo = _Odometer(p, turns, motion)
@@ -226,11 +224,17 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
                          + (" (t1 + t_max)" if t_end >= t1 + p.t_max else ""))
                 a.update({"s": None, "v": None, "a": None})
             items[i] = a
+    _distances(p, res, items, turns, motion)
+
+
+def _distances(p, res, items, turns, motion) -> None:
+    """``distance`` in every answer; null with a warning where a state between t1 and t is one
+    the route cannot give."""
     for e in items:
         if e is not None:
             try:
                 e["distance"] = _distance(p, e, turns, motion) if e.get("reached") else None
-            except NumericalError as exc:             # a state between t1 and t the route cannot give
+            except NumericalError as exc:
                 e["distance"] = None
                 res.warn(f"distance at t = {e['t']:.10g} s not computed: {exc}")
 
@@ -257,9 +261,11 @@ class _Odometer:
         return self.cum[j] + abs(s - self.s[j]) + 0.0
 
 
-def _distance(p, e: dict, turns: list[float], motion) -> float:
+def _distance(p, e: dict, turns: list[float] | None, motion) -> float | None:
     """∫|v| dt between t1 and the answer's time: Σ|Δs| between the turning points (a periodic
     swing: from its first two turning points, whatever the number of swings)."""
+    if turns is None:
+        return None
     if isinstance(turns, Swings) and turns.half > 0 and e["t"] > turns.first >= p.t1:
         f, h = turns.first, turns.half
         k = math.floor((e["t"] - f) / h)                  # turning points after the first, up to t
