@@ -67,21 +67,8 @@ def kepler_E(M, e: float, one_minus_e: float | None = None):
     E = np.where(e > 0.8, np.minimum(m + 0.85 * e, np.pi), m + e * np.sin(m))     # Danby's start
     E = np.clip(E, lo, hi)
 
-    def f(E):
-        return ome * E + e * e_minus_sin(E) - m
-
-    for _ in range(100):
-        fE = f(E)
-        lo, hi = np.where(fE < 0, E, lo), np.where(fE > 0, E, hi)
-        d = ome + e * (1 - np.cos(E))           # 1 − e cos E
-        step = np.where(d > 0, fE / np.where(d > 0, d, 1.0), 0.0)
-        En = E - step
-        bad = ~((En >= lo) & (En <= hi))
-        En = np.where(bad, 0.5 * (lo + hi), En)
-        done = np.abs(En - E) <= 4 * EPS * np.maximum(np.abs(En), 1e-300)
-        E = En
-        if np.all(done | (hi - lo <= 2 * EPS * np.maximum(hi, 1e-300))):
-            break
+    E = _newton(lambda E: ome * E + e * e_minus_sin(E) - m,
+                lambda E: ome + e * (1 - np.cos(E)), E, lo, hi, 100)        # 1 − e cos E
     return s * E + 2 * np.pi * k
 
 
@@ -99,22 +86,26 @@ def kepler_H(M, e: float, e_minus_one: float | None = None):
     lo, hi = np.arcsinh(m / e), np.arcsinh(m / emo)
     E = np.clip(np.log1p(2 * m / e) if e > 0 else m, lo, hi)
 
-    def f(H):
-        return emo * np.sinh(H) + sinh_minus(H) - m
+    E = _newton(lambda H: emo * np.sinh(H) + sinh_minus(H) - m,
+                lambda H: emo * np.cosh(H) + (np.cosh(H) - 1), E, lo, hi, 200)   # e cosh H − 1
+    return s * E
 
-    for _ in range(200):
-        fH = f(E)
-        lo, hi = np.where(fH < 0, E, lo), np.where(fH > 0, E, hi)
-        d = emo * np.cosh(E) + (np.cosh(E) - 1)     # e cosh H − 1
-        step = np.where(d > 0, fH / np.where(d > 0, d, 1.0), 0.0)
-        En = E - step
-        bad = ~((En >= lo) & (En <= hi))
-        En = np.where(bad, 0.5 * (lo + hi), En)
-        done = np.abs(En - E) <= 4 * EPS * np.maximum(np.abs(En), 1e-300)
-        E = En
+
+def _newton(f, df, x, lo, hi, maxit: int):
+    """The roots of an increasing ``f`` (arrays), each bracketed by [lo, hi]: Newton from ``x``,
+    a step that leaves the bracket replaced by bisection, until the step or the bracket is at
+    the rounding of x — the one safeguarded iteration of Kepler's and the hyperbolic equation."""
+    for _ in range(maxit):
+        fx = f(x)
+        lo, hi = np.where(fx < 0, x, lo), np.where(fx > 0, x, hi)
+        d = df(x)
+        xn = x - np.where(d > 0, fx / np.where(d > 0, d, 1.0), 0.0)
+        xn = np.where((xn >= lo) & (xn <= hi), xn, 0.5 * (lo + hi))
+        done = np.abs(xn - x) <= 4 * EPS * np.maximum(np.abs(xn), 1e-300)
+        x = xn
         if np.all(done | (hi - lo <= 2 * EPS * np.maximum(hi, 1e-300))):
             break
-    return s * E
+    return x
 
 
 def barker_D(B):

@@ -11,8 +11,9 @@ each harmonic.
 points in closed form (v ∝ e^(−ζωₙt) cos(ω*t + β) vanishes at ω*t + β = π/2 + kπ; at most one
 when ζ ≥ 1) and the sum over them as a geometric series (each |w| at a turning point is the last
 times e^(−ζωₙπ/ω*)) — O(1) at any time.  With a base motion or a force: the roots of v on the grid
-of breaks, all at once (numpy: the steady state plus the free vibration that makes up the initial
-conditions, and safeguarded Newton steps with the exact acceleration; an error δ in a turning
+of breaks, from the steady state plus the free vibration that makes up the initial conditions —
+in plain floats with Newton and the exact acceleration for a short grid (no numpy import), on
+arrays with :func:`dyncli.rootfind.roots_in_brackets` for a long one (an error δ in a turning
 point's time changes x there by ½|ẍ|δ² only).
 """
 
@@ -114,15 +115,6 @@ class Response:
         if self.fo is not None:
             return (self.fo[0] / (self.p.m * self.omega_n ** 2)) / D, Om
         return self.s0 * complex(1.0, 2.0 * self.zeta * r) / D, Om
-
-    def accel_array(self, t):
-        import numpy as np
-
-        x, v = self.arrays(t)
-        s, sd = self.s0 * np.sin(self.Om * t), self.s0 * self.Om * np.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo[0] * np.sin(self.fo[1] * t) / self.p.m
-        wn = self.omega_n
-        return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
     def w_rate(self, t: float) -> float:
         return self.at(t)[1] - self.s0 * self.Om * math.cos(self.Om * t)
@@ -242,34 +234,21 @@ SCALAR_GRID = 2048
 
 def _forced_turns(resp: Response, t_end: float) -> list[float]:
     """The roots of v in (0, t_end) with a base motion or a force: sign changes on the grid of
-    breaks, each refined by safeguarded Newton steps (the exact acceleration), all at once."""
+    breaks, all refined at once by the project's bracketed root search on arrays
+    (:func:`dyncli.rootfind.roots_in_brackets`)."""
     breaks, _ = resp.breaks(t_end)
     if len(breaks) <= SCALAR_GRID:
         return _forced_turns_scalar(resp, breaks)
     import numpy as np
 
+    from dyncli.rootfind import roots_in_brackets
+
     T = np.asarray(breaks, dtype=float)
     _, V = resp.arrays(T)
     k = np.nonzero(V[:-1] * V[1:] < 0)[0]
     zeros = T[1:-1][V[1:-1] == 0.0]
-    a, b, va, vb = T[k], T[k + 1], V[k], V[k + 1]
-    t = a - va * (b - a) / (vb - va)
-    eps = np.finfo(float).eps
-    for _ in range(100):                               # Newton (bisection when it leaves the bracket)
-        _, vt = resp.arrays(t)
-        if not np.any(vt):
-            break
-        neg = (vt * va) < 0                            # the root lies in [a, t]
-        b, vb = np.where(neg, t, b), np.where(neg, vt, vb)
-        a, va = np.where(neg, a, t), np.where(neg, va, vt)
-        step = t - vt / resp.accel_array(t)
-        bad = ~((step >= a) & (step <= b)) | ~np.isfinite(step)     # (t itself is a bracket end now)
-        t_new = np.where(bad, 0.5 * (a + b), step)
-        done = (np.abs(t_new - t) <= 4 * eps * np.abs(t)) | (b - a <= 4 * eps * np.abs(b)) | (vt == 0)
-        t = np.where(vt == 0, t, t_new)
-        if np.all(done):
-            break
-    return sorted(t.tolist() + zeros.tolist())
+    t = roots_in_brackets(lambda x, _: resp.arrays(x)[1], T[k], T[k + 1], V[k], V[k + 1]) if k.size else k
+    return sorted(np.asarray(t, dtype=float).tolist() + zeros.tolist())
 
 
 def _forced_turns_scalar(resp: Response, breaks: list[float]) -> list[float]:
