@@ -137,7 +137,6 @@ def _odometer(s, turns: list[float], half: float | None):
     two turning points, the k-th at turns[0] + (k − 1)·half (a swing and its return take equal
     times), s there alternating between its first two values: the distance at any t from those
     two, whatever the number of swings (no list of them)."""
-    import bisect
     import math
 
     turns = sorted(turns)
@@ -152,15 +151,4 @@ def _odometer(s, turns: list[float], half: float | None):
             last = s1 if k % 2 else s2
             return abs(s1 - s0) + (k - 1) * abs(s2 - s1) + abs(s(t) - last) + 0.0
         return periodic
-    at_turn, cum, prev = [], [0.0], s0
-    for t in turns:
-        v = s(t)
-        at_turn.append(v)
-        cum.append(cum[-1] + abs(v - prev))
-        prev = v
-
-    def distance(t: float) -> float:
-        k = bisect.bisect_left(turns, t)
-        last = at_turn[k - 1] if k else s0
-        return cum[k] + abs(s(t) - last) + 0.0
-    return distance
+    return lambda t: mf.turning_length(s, turns, [t])[0]
