@@ -205,6 +205,19 @@ def _place(fig, ax, grid: tuple[int, int, int], k: int, title_lines: int, legend
     return h
 
 
+def _line_style(n: int, ln, style: str, many: bool) -> dict:
+    """matplotlib keywords of curve ``n``: its colour, and its own marker
+    when the panel has more curves than colours are told apart (``many``)."""
+    colour, marker = series_style(n)
+    kw = dict(label=ln.label, linestyle=style if style else "none", color=colour, linewidth=1.4, markersize=5,
+              marker=ln.marker if ln.marker is not None or not many else marker)
+    if kw["marker"] == "*":
+        kw["markersize"] = 11      # a star has little ink at the size of a dot
+    if kw["marker"] is not None and ln.marker is None and len(ln.x) > 12:
+        kw["markevery"] = max(1, len(ln.x) // 8)
+    return kw
+
+
 def _draw_panel(fig, grid, k, ptitle, spec):
     plane = planar_axes(spec.lines) if spec.zlabel is not None else None
     three_d = spec.zlabel is not None and plane is None
@@ -221,13 +234,8 @@ def _draw_panel(fig, grid, k, ptitle, spec):
     banded = []
     for n, ln in enumerate(spec.lines):
         style = ln.style if ln.style is not None else _STYLES[n % len(_STYLES)]
-        colour, marker = series_style(n)
-        kw = dict(label=ln.label, linestyle=style if style else "none", color=colour, linewidth=1.4, markersize=5,
-                  marker=ln.marker if ln.marker is not None or not many else marker)
-        if kw["marker"] == "*":
-            kw["markersize"] = 11      # a star has little ink at the size of a dot
-        if kw["marker"] is not None and ln.marker is None and len(ln.x) > 12:
-            kw["markevery"] = max(1, len(ln.x) // 8)
+        kw = _line_style(n, ln, style, many)
+        colour = kw["color"]
         if three_d:
             ax.plot(ln.x, ln.y, ln.z or [0.0] * len(ln.x), **kw)
             continue

@@ -21,6 +21,7 @@ Skipped only when no Chromium (or Chrome) is installed.  Debian:
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
 import re
@@ -121,9 +122,7 @@ def _build_markdown(out: Path) -> None:
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("site")
-    try:
-        import mkdocs  # noqa: F401
-    except ImportError:
+    if importlib.util.find_spec("mkdocs") is None:
         _build_markdown(out)
     else:
         _build_mkdocs(out)
