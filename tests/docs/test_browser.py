@@ -10,6 +10,7 @@ page has loaded and KaTeX has typeset it:
   ``.katex`` element, none is a ``.katex-error``, every type page has
   equations, and no raw ``$$``, ``\\(``, ``\\[`` or TeX command is left in
   the text (code blocks aside);
+* every display equation fits the column (no scroll bar), its number clear of it;
 * **no image is scaled below its label size**: for each image, its displayed
   width over its natural width times its smallest text (the ``Label font px``
   text chunk that dyncli's plotting layer writes into a PNG, or the smallest
@@ -46,7 +47,7 @@ WINDOW = (1280, 900)
 MIN_TEXT_PX = 9 * 96 / 72
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars",
+         "--disable-component-update", "--disable-sync", "--no-first-run",
          "--allow-file-access-from-files", f"--window-size={WINDOW[0]},{WINDOW[1]}",
          "--virtual-time-budget=15000", "--dump-dom"]
 
@@ -62,6 +63,12 @@ window.addEventListener("load", function () { setTimeout(function () {
     katex: art.querySelectorAll(".katex").length,
     errors: Array.from(art.querySelectorAll(".katex-error")).map(function (e) { return e.title || e.textContent; }),
     text: plain.textContent,
+    crowded: Array.from(art.querySelectorAll(".katex-display")).filter(function (d) {
+      var tag = d.querySelector(".tag"), right = 0;
+      d.querySelectorAll(".katex-html > .base").forEach(function (b) {
+        right = Math.max(right, b.getBoundingClientRect().right); });
+      return d.scrollWidth > d.clientWidth + 1 || (tag && right > tag.getBoundingClientRect().left - 8);
+    }).map(function (d) { var a = d.querySelector("annotation"); return (a ? a.textContent : "").slice(0, 70); }),
     images: Array.from(art.querySelectorAll("img")).map(function (im) {
       return {src: im.currentSrc || im.src, shown: im.getBoundingClientRect().width,
               natural: im.naturalWidth, loaded: im.complete && im.naturalWidth > 0}; })
@@ -188,6 +195,13 @@ def test_katex_typeset_every_equation(rendered):
         raw = sorted({m.group(0) for m in RAW_TEX.finditer(r["text"])})
         if raw:
             bad.append(f"{page}: raw TeX left in the text: {raw}")
+    assert not bad, "\n".join(bad)
+
+
+def test_display_equations_fit_the_column(rendered):
+    """No display equation wider than the text column (a scroll bar) and no
+    equation number over its equation: a long one is split over lines."""
+    bad = [f"{page}: {r['crowded']}" for page, r in sorted(rendered.items()) if r["crowded"]]
     assert not bad, "\n".join(bad)
 
 
