@@ -104,6 +104,24 @@ def ellipj(u, m: float, m1: float | None = None):
     return sn, cn, dn
 
 
+def ellipj_half(r, m: float, m1: float, K: float):
+    """sn, cn, dn of |r| <= K (floats or arrays): past K/2 from the reflection ρ = K − |r|
+    (sn = cd ρ, cn = √m1 sd ρ, dn = √m1 nd ρ), so cn and dn keep their relative precision where
+    they are small (next to m = 1, where m1 is given exactly)."""
+    xp = FLOAT_OPS if isinstance(r, (float, int)) else array_ops()
+    a = abs(r) if xp is FLOAT_OPS else xp.abs(r)
+    far = a > 0.5 * K
+    s1, c1, d1 = ellipj(xp.where(far, K - a, a), m, m1)
+    q = math.sqrt(m1)
+    return xp.sign(r) * xp.where(far, c1 / d1, s1), xp.where(far, q * s1 / d1, c1), xp.where(far, q / d1, d1)
+
+
+def legendre_F(s, c, d2):
+    """F(φ | m) for |φ| <= π/2 from s = sin φ, c = cos φ >= 0 and d2 = 1 − m sin²φ (formed by the
+    caller without cancellation): s·R_F(c², d2, 1)."""
+    return s * elliprf(c * c, d2, 1.0)
+
+
 # ---------------------------------------------------------------- Carlson's duplication
 # Each step x ← (x + λ)/4 (λ = √x√y + √x√z + √y√z) leaves the integral unchanged and shrinks the
 # spread of the arguments about their mean A by 4; once 4^(−n) Q < A the degree-7 series in the
