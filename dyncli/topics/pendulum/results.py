@@ -5,10 +5,13 @@ from dyncli.declare import R, TypeSpec
 PENDULUM = TypeSpec(
     name="pendulum",
     title="simple pendulum at any amplitude: exact period, swing, rotation, separatrix",
-    sections="§7, §16, §20",
+    sections="§16, §20",
     model="model:Pendulum",
     solve="solver:solve",
     example="problems/particle/pendulum.yaml",
+    gallery="a pendulum released at 120°: the exact period 4√(l/g) K(k²) = 2.75409 s against the small-angle "
+            "2π√(l/g), θ(t) by Jacobi's sn, the rod's tension; the same pendulum over the top, and on the "
+            "separatrix (no period).",
     results=[
         R("omega_n", "ωₙ", "rad/s", "", "small-angle frequency √(g/l)", kind="number", contract=True),
         R("period_small", "T₀", "s", "", "small-angle period 2π√(l/g)", kind="number", contract=True),
