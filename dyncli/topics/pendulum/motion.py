@@ -29,7 +29,20 @@ from . import equations as eq
 
 #: periods beyond which the phase is reduced in double-double
 LONG = 64
+#: |1 − k²| below which it is formed at 40 digits from the inputs (as binary numbers): in doubles
+#: q = θ̇₀/2ωₙ carries ~ε, so 1 − k² = (c − q)(c + q) would carry ~ε/|1 − k²| relative
+NEAR = 1e-3
 TWO_PI = 2.0 * math.pi
+
+
+def _near_separatrix(l: float, g: float, theta0: float, theta_dot0: float) -> tuple[float, float]:
+    """(k², 1 − k²) at 40 digits from the inputs, rounded once."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        mp = mpmath.mp
+        m1 = mp.cos(mp.mpf(theta0) / 2) ** 2 - mp.mpf(theta_dot0) ** 2 * mp.mpf(l) / (4 * mp.mpf(g))
+        return float(1 - m1), float(m1)
 
 
 class Motion:
@@ -40,6 +53,8 @@ class Motion:
         self.l, self.g, self.theta0, self.theta_dot0 = l, g, theta0, theta_dot0
         self.omega0 = w = eq.natural_frequency(l, g)
         self.k2, self.m1, self.tol = eq.modulus(theta0, theta_dot0, w)
+        if abs(self.m1) < NEAR:
+            self.k2, self.m1 = _near_separatrix(l, g, theta0, theta_dot0)
         self.sigma = 1.0 if theta_dot0 >= 0 else -1.0
         self.j0 = round(theta0 / TWO_PI)             # whole turns of θ₀ (a swing about 2πj₀)
         self.phase: ReducedPhase | None = None
