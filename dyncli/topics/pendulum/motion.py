@@ -77,8 +77,9 @@ class Motion:
         k2, m1, w = self.k2, self.m1, self.omega0
         self.k = k = math.sqrt(k2)
         self.K = float(elliprf(0.0, m1, 1.0))
-        sn, cn = math.sin(0.5 * self.theta0) / k, self.theta_dot0 / (2.0 * w * k)
-        d2 = math.cos(0.5 * self.theta0) ** 2
+        half = 0.5 * self.theta0 - math.pi * self.j0         # about the bottom at 2πj₀
+        sn, cn = math.sin(half) / k, self.theta_dot0 / (2.0 * w * k)
+        d2 = math.cos(half) ** 2
         if cn >= 0.0:
             self.u0 = float(legendre_F(sn, cn, d2))
         else:                                        # F(φ) = ±2K − F(±π − φ) past a quarter
