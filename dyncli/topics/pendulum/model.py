@@ -25,7 +25,7 @@ class Pendulum(ProblemBase):
     theta_dot0: Num(dim="angular velocity", description="θ̇(0) [rad/s] (default 0: released from rest)") = 0.0  # type: ignore[valid-type]
     at: Times(description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance") = Field(default_factory=list)  # type: ignore[valid-type]
     find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta_dot}, {min: tension}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries, else one period)")] = None  # type: ignore[valid-type]
 
     @field_validator("at")
     @classmethod
@@ -44,6 +44,7 @@ class Pendulum(ProblemBase):
         if not (0.0 < w2 < math.inf):
             raise InputError(f"g/l = {self.g:g}/{self.l:g} gives a frequency √(g/l) that is not a finite positive "
                              "number", "l")
-        if not math.isfinite(self.theta_dot0 / math.sqrt(w2)) or not math.isfinite(self.theta_dot0 ** 2 * self.l):
-            raise InputError("θ̇₀/√(g/l) overflows", "theta_dot0")
+        q = self.theta_dot0 / math.sqrt(w2)
+        if not math.isfinite(q * q) or not math.isfinite(self.theta_dot0 * self.theta_dot0 * self.l * (self.m or 1.0)):
+            raise InputError("θ̇₀/√(g/l) overflows: give a rate whose square (and m l θ̇₀²) is a finite number", "theta_dot0")
         return self

@@ -33,6 +33,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     params = resolve_params(p.params)
     const = lambda text: constant(text, params)      # noqa: E731
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
+    if p.find and t_end == 0.0 and mo.period:         # nothing sets the end: one period (one turn)
+        t_end = mo.period
     mo.long(t_end)
 
     def state(t: float) -> dict:

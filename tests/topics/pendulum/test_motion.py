@@ -71,10 +71,11 @@ def test_separatrix(theta0, theta_dot0):
     check(mo, 1.0, 4.0, theta0, theta_dot0, [0.1, 1.0, 3.0, 10.0, 1e3, 1e6], reference=ref.separatrix)
 
 
+@pytest.mark.slow
 def test_second_formulation_taylor_integration():
     """The same states from mpmath's Taylor ODE solver (no elliptic function) at 30 digits."""
     for l, th0, thd0, times in [(1.0, 2.0, 0.0, [0.4, 1.7]), (1.0, 0.0, 7.0, [0.3, 1.1]),
-                                (1.0, math.pi - 1e-6, 0.0, [2.0, 6.5])]:
+                                (1.0, math.pi - 1e-6, 0.0, [3.0])]:
         mo = Motion(l, 9.81, th0, thd0)
         for t, (a, b) in zip(times, ref.taylor(l, 9.81, th0, thd0, times)):
             th, thd = mo.state(t)
