@@ -171,19 +171,3 @@ class Motion:
         first = base + (tm if j1 % 2 == 0 else -tm)
         last = base + (tm if jt % 2 == 0 else -tm)
         return abs(first - self.theta0) + 2.0 * tm * (turns - 1) + abs(th - last)
-
-    def turning_points(self, t_end: float) -> list[float]:
-        """The times in (0, t_end] where θ̇ = 0 (a swing: phase K + 2Kj), at most 10⁵."""
-        if self.regime != "swing":
-            return []
-        K, w = self.K, self.omega0
-        j = math.floor((self.u0 - K) / (2.0 * K)) + 1
-        out = []
-        while len(out) < 100_000:
-            t = (K + 2.0 * K * j - self.u0) / w
-            if t > t_end:
-                break
-            if t > 0:
-                out.append(t)
-            j += 1
-        return out
