@@ -6,12 +6,16 @@ from __future__ import annotations
 import math
 
 from dyncli import motion_find as mf
+from dyncli.errors import NumericalError
 from dyncli.expr import constant, resolve_params
 from dyncli.result import Result, Series, SolveOptions
 
 from . import equations as eq
 from .motion import Motion
 
+#: the most periods whose count a double holds exactly (2^52): the phase's whole periods beyond
+#: it cannot be told apart
+MAX_PERIODS = 2.0 ** 52
 #: pieces per period (or per 2π/ωₙ) of the find search, and the most it takes (beyond: warned)
 PER_PERIOD, MAX_PIECES = 8, 20_000
 
@@ -35,6 +39,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
     if p.find and t_end == 0.0 and mo.period:         # nothing sets the end: one period (one turn)
         t_end = mo.period
+    if mo.regime in ("swing", "rotating") and not t_end <= MAX_PERIODS * mo.period:
+        raise NumericalError(f"t = {t_end:g} s is {t_end / mo.period:.3g} periods: the whole periods of the "
+                             f"phase are counted exactly up to {MAX_PERIODS:.3g} of them only (ask at earlier times)")
     mo.long(t_end)
 
     def state(t: float) -> dict:

@@ -42,3 +42,10 @@ def test_invalid_via_cli_exit_2():
     assert rc == 2
     assert "<stdin>:2:1: l: must be > 0" in err
     assert "Traceback" not in err
+
+
+def test_times_beyond_countable_periods_exit_1():
+    """Past 2^52 periods the whole periods of the phase are no longer told apart: a numerical
+    limit (exit 1, saying where it lies), not a wrong angle."""
+    rc, out, err = run_cli("solve", "-", input=HEAD + "at: [1e150]\n")
+    assert rc == 1 and "counted exactly up to 4.5e+15" in err and "Traceback" not in err
