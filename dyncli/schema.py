@@ -148,6 +148,8 @@ def _unset_fields(type_name: str, given) -> list[str]:
             continue
         d = "" if f.is_required() else ("null" if f.default is None else f.default)
         d = [] if f.default_factory is not None else d
-        desc = f.description or props.get(name, {}).get("description")
+        prop = props.get(name, {})
+        desc = f.description or prop.get("description") or next(
+            (a["description"] for a in prop.get("anyOf", []) if "description" in a), None)
         out.append(f"# {name}: {d}" + (f"   # {desc}" if desc else ""))
     return ["# optional, with their defaults:"] + out if out else []
