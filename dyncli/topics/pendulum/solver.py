@@ -52,6 +52,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         out["distance"] = p.l * mo.turned(t)
         return out
 
+    res.extra["sample"] = lambda ts: [mo.state(float(t)) for t in ts]      # for the plots
     if p.at:
         rows = [state(float(t)) for t in p.at]
         for name in rows[0]:
