@@ -4,7 +4,8 @@
   ``accuracy.max_steps`` (default ``MAX_STEPS`` or the type's own); every ODE route
   counts through it (:func:`integrate`, or :func:`budgeted` solver classes for
   ``solve_ivp``), and a run is refused (:class:`OverBudget`) as soon as an
-  extrapolation shows it will not fit.
+  extrapolation shows it will not fit; the same projection of the solve's CPU against its
+  budget (``accuracy.max_cpu``, :mod:`dyncli.cputime`) refuses with :class:`OverCpu`.
 * Non-finite detection: :func:`finite` raises :class:`NonFiniteRate` on a rate that
   is inf or NaN (scipy's step-size control would loop on it).
 * Check solve: :func:`check_solve` — one divisor (``CHECK_DIV`` = 100: rtol and atol
@@ -21,15 +22,9 @@
   (:func:`dense_output`), never its private interpolant internals.
 * The error_estimate without a check solve: :func:`nominal_estimate`.
 
-Step-by-step integration with a work budget, shared by the topics that integrate:
-
-A thin loop over scipy's ``OdeSolver`` classes (the same loop ``solve_ivp``
-runs), which lets the caller
-
-* read the state at the requested times from each step's dense output,
-* look at every accepted step (``on_step``: invariants, angle unwrapping),
-* project the state back onto invariant manifolds after every step
-  (``project``; method "projected" = DOP853 + projection).
+The loop lets the caller read the state at the requested times from each step's dense
+output, look at every accepted step (``on_step``) and project the state back onto invariant
+manifolds after it (``project``; method "projected" = DOP853 + projection).
 
 scipy is imported lazily, only when a problem actually integrates.
 """
