@@ -57,8 +57,8 @@ class OverBudget(NumericalError):
     """A run refused by its :class:`Budget`; ``t``, ``y``, ``h``: the state and
     step size where it was refused (for hints such as stiffness)."""
 
-    def __init__(self, t_goal: float, need: float, limit: int, t: float, y=None, h: float = 0.0):
-        super().__init__(refusal(t_goal, need, limit))
+    def __init__(self, t_goal: float, need: float, limit: float, t: float, y=None, h: float = 0.0, message=None):
+        super().__init__(message or refusal(t_goal, need, limit))
         self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
         self.y = None if y is None else np.array(y, dtype=float)
 
@@ -115,12 +115,9 @@ class OverCpu(OverBudget):
     """A run refused by the CPU budget of its solve (:func:`dyncli.cputime.solve_budget`)."""
 
     def __init__(self, t_goal: float, cpu: float, limit: float, need: float, t: float, y=None, h: float = 0.0):
-        NumericalError.__init__(
-            self, f"the run to t = {t_goal:.6g} s would take about {cpu:.3g} s of CPU ({need:.3g} integrator "
-                  f"steps), more than the budget of {limit:g} s: shorten the time span, loosen accuracy.rtol, "
-                  "or raise accuracy.max_cpu")
-        self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
-        self.y = None if y is None else np.array(y, dtype=float)
+        super().__init__(t_goal, need, limit, t, y, h, message=(
+            f"the run to t = {t_goal:.6g} s would take about {cpu:.3g} s of CPU ({need:.3g} integrator steps), "
+            f"more than the budget of {limit:g} s: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_cpu"))
 
 
 class NonFiniteRate(NumericalError):
