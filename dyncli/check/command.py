@@ -8,13 +8,10 @@ import os
 import sys
 from pathlib import Path
 
+from dyncli.check.safe import say
+
 FORMATS = ("table", "json", "junit", "github", "gradescope")
 
-
-def _err(msg: object) -> None:
-    from dyncli.check.safe import oneline
-
-    print(oneline(msg), file=sys.stderr)
 
 
 def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output: str | None = None,
@@ -22,7 +19,7 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
     if write_key:
         return _write_key(files, output)
     if sum(1 for f in files if f == "-") > 1:
-        _err("'-' (stdin) can be given only once")
+        say("'-' (stdin) can be given only once")
         return 2
     from dyncli.check.engine import Checker
     from dyncli.check import formats
@@ -33,15 +30,15 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
     # diagnostics on stderr for every format
     for fr in report.files:
         for d in fr.diagnostics:
-            _err(str(d))
+            say(str(d))
         for cr in fr.checks:
             if cr.error is not None:
-                _err(f"{fr.file}: check #{cr.index} ({cr.title}): problem not solved: {cr.error}")
+                say(f"{fr.file}: check #{cr.index} ({cr.title}): problem not solved: {cr.error}")
                 if cr.trace and debug:
                     print(cr.trace, file=sys.stderr)   # our own traceback (--debug): several lines
             for a in cr.answers:
                 if a.status == "invalid":
-                    _err(f"{fr.file}:{a.line}:{a.col}: answers.{a.key}: {a.message}")
+                    say(f"{fr.file}:{a.line}:{a.col}: answers.{a.key}: {a.message}")
 
     if fmt == "table":
         from dyncli.render.emit import write_view
@@ -49,7 +46,7 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
         try:
             write_view(lambda console: formats.render_table(report, console), output)
         except OSError as exc:
-            _err(f"{output}: cannot write ({exc.strerror})")
+            say(f"{output}: cannot write ({exc.strerror})")
             return 2
     else:
         text = {
@@ -61,7 +58,7 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
         try:
             _emit(text, output)
         except _OutputError as exc:
-            _err(str(exc))
+            say(str(exc))
             return 2
         if fmt == "github":
             summary = os.environ.get("GITHUB_STEP_SUMMARY")
@@ -70,8 +67,8 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
                     with open(summary, "a", encoding="utf-8") as fh:
                         fh.write(formats.step_summary_markdown(report))
                 except OSError as exc:
-                    _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
-        _err(formats.summary_line(report))
+                    say(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
+        say(formats.summary_line(report))
     return report.exit_code
 
 
@@ -98,11 +95,11 @@ def _write_key(files: list[str], output: str | None) -> int:
     key_dir = Path(output).parent if output else Path.cwd()
     text, messages, code = write_key(files, key_dir)
     for m in messages:
-        _err(m)
+        say(m)
     if text:
         try:
             _emit(text, output)
         except _OutputError as exc:
-            _err(str(exc))
+            say(str(exc))
             return 2
     return code

@@ -240,7 +240,7 @@ class CourseOptions:
         self.summary = ""
 
     def load(self) -> bool:
-        from dyncli.check.keycommand import _err
+        from dyncli.check.safe import say
         from dyncli.check.roster import RosterError, read_roster
 
         try:
@@ -249,17 +249,17 @@ class CourseOptions:
             if self.compare is not None:
                 self.previous = read_previous(self.compare)
         except (RosterError, PreviousError) as exc:
-            _err(exc)
+            say(exc)
             return False
         return True
 
     def finish(self, report, files, key) -> bool:
-        from dyncli.check.keycommand import _err
+        from dyncli.check.safe import say
         from dyncli.check.keymode import KeyGrader
 
         if self.roster is not None:
             for msg in apply_roster(report, self.roster):
-                _err(f"warning: {msg}")
+                say(f"warning: {msg}")
         parts = []
         if self.stats:
             st = stats(report, KeyGrader(key, files))

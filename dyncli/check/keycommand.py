@@ -6,14 +6,10 @@ from __future__ import annotations
 
 import math
 import os
-import sys
 from pathlib import Path
 
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, say, shown
 
-
-def _err(msg: object) -> None:
-    print(oneline(msg), file=sys.stderr)
 
 
 def load_key(key_name: str, root: str | None):
@@ -24,7 +20,7 @@ def load_key(key_name: str, root: str | None):
     files = ProblemFiles(root=Path(root).resolve() if root else None)
     key = read_key(key_name, files)
     for d in key.diagnostics:
-        _err(d)
+        say(d)
     return (None, files) if key.diagnostics else (key, files)
 
 
@@ -35,10 +31,10 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     from dyncli.check import keyformats
     from dyncli.check.command import _emit, _OutputError
     if not names and (course is None or course.roster is None):
-        _err("give the submissions to grade (or --selftest to check the key)")
+        say("give the submissions to grade (or --selftest to check the key)")
         return 2
     if names.count("-") > 1:
-        _err("'-' (stdin) can be given only once")
+        say("'-' (stdin) can be given only once")
         return 2
     key, files = load_key(key_name, root)
     if key is None:
@@ -46,7 +42,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
             try:
                 _emit(_invalid_key_json(key_name, fmt), output)
             except _OutputError as exc:
-                _err(exc)
+                say(exc)
         return 2
     if course is not None and not course.load():
         return 2
@@ -54,7 +50,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     if course is not None:
         course.finish(report, files, key)
         if course.summary_only(output):
-            _err(keyformats.summary_line(report))
+            say(keyformats.summary_line(report))
             return report.exit_code
     if fmt == "table":
         from dyncli.render.emit import write_view
@@ -62,7 +58,7 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
         try:
             write_view(lambda console: keyformats.render_table(report, console), output)
         except OSError as exc:
-            _err(f"{output}: cannot write ({exc.strerror})")
+            say(f"{output}: cannot write ({exc.strerror})")
             return 2
         return report.exit_code
     render = {"json": keyformats.render_json, "junit": keyformats.render_junit, "csv": _csv,
@@ -70,15 +66,15 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     try:
         _emit(render(report), output)
     except _OutputError as exc:
-        _err(exc)
+        say(exc)
         return 2
     if fmt == "github" and os.environ.get("GITHUB_STEP_SUMMARY"):
         try:
             with open(os.environ["GITHUB_STEP_SUMMARY"], "a", encoding="utf-8") as fh:
                 fh.write(keyformats.step_summary_markdown(report))
         except OSError as exc:
-            _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
-    _err(keyformats.summary_line(report))
+            say(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
+    say(keyformats.summary_line(report))
     return report.exit_code
 
 
@@ -102,20 +98,20 @@ def grade_all(key, files, names: list[str], reveal: bool = False, student: str |
         if problem:
             report.submissions.append(SubmissionResult("upload", None, key.max_score,
                                                        diagnostics=[Diagnostic("upload", None, None, None, problem)]))
-            _err(f"upload: {problem}")
+            say(f"upload: {problem}")
     for name in names:
         sr = grader.grade(read_submission(name, student, id_from))
         report.submissions.append(sr)
         for d in sr.diagnostics:
-            _err(d)
+            say(d)
         for q in sr.questions:
             if q.status in ("invalid", "error"):
                 where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
-                _err(f"{where}: answers.{q.id}: {q.message}")
+                say(f"{where}: answers.{q.id}: {q.message}")
     report.solves = files.solves
     report.claims()
     for w in report.warnings:
-        _err(f"warning: {w['message']}")
+        say(f"warning: {w['message']}")
     return report
 
 
@@ -170,19 +166,19 @@ def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
     values: dict[str, list] = {q.id: [] for q in key.questions}
     problem = _unanswerable(grader)
     if problem:
-        _err(f"{key.file}: selftest failed: {problem}")
+        say(f"{key.file}: selftest failed: {problem}")
         return 1
     warned: set[str] = set()
     for sid in selftest_ids(n if key.variants is not None else 0):
         try:
             params = grader.params(sid)
         except VariantError as exc:
-            _err(f"{key.file}: variants.require: {exc}")
+            say(f"{key.file}: variants.require: {exc}")
             return 2
         failure = _selftest_variant(grader, sid, values, warned)
         if failure:
             shown_params = ", ".join(f"{k} = {v:g}" for k, v in params.items()) or "no variant parameters"
-            _err(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
+            say(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
             _print_ranges(key, values)
             return 1
     _print_ranges(key, values)
@@ -246,12 +242,12 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
         if q.carry is not None and warned is not None and q.id + "\x00carry" not in warned \
                 and _repeats_input(grader, q, sid, t):
             warned.add(q.id + "\x00carry")
-            _err(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
+            say(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
                  f"to {shown(q.carry[0])} it carries (variant '{shown(sid)}'): repeating that answer would be "
                  "correct, and no carried answer can earn credit (it would repeat its input)")
         if t.roundoff and warned is not None and q.id not in warned:
             warned.add(q.id)
-            _err(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
+            say(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
                  f"variant '{shown(sid)}': graded as exactly 0 (correct within {_zero_bound(q.tol)}), never "
                  "diagnosed; make the problem give 0 exactly or ask for another quantity")
         values[q.id].append(t.value)

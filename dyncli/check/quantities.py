@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-from dyncli.check.compare import GivenError
+from dyncli.check.tolerance import GivenError
 from dyncli.check.safe import shown
 
 __all__ = ["GivenError", "WrongDimension", "UnitSpec", "NO_UNIT", "unit_spec", "result_unit", "to_si", "convert"]

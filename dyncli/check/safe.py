@@ -36,6 +36,13 @@ def oneline(text: object) -> str:
     return _CTRL.sub(_esc, str(text))
 
 
+def say(msg: object) -> None:
+    """One diagnostic line of ``dyncli check`` on stderr, made printable by :func:`oneline`."""
+    import sys
+
+    print(oneline(msg), file=sys.stderr)
+
+
 def shown(text: object, limit: int = MAX_SHOWN) -> str:
     """A user string to quote in a message: one line, shortened to ``limit``."""
     s = oneline(text)

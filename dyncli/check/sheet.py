@@ -131,12 +131,13 @@ def render_template(key, grader, student: str, cache: dict | None = None) -> str
 
 def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool = False,
                 root: str | None = None) -> int:
-    from dyncli.check.keycommand import _err, load_key
+    from dyncli.check.keycommand import load_key
+    from dyncli.check.safe import say
     from dyncli.check.keymode import KeyGrader
     from dyncli.check.variants import VariantError
 
     if not student or oneline(student) != student or len(student) > 200:
-        _err("--student must be the student's id (printable text, at most 200 characters)")
+        say("--student must be the student's id (printable text, at most 200 characters)")
         return 2
     key, files = load_key(key_name, root)
     if key is None:
@@ -148,7 +149,7 @@ def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool =
             return 0
         doc = sheet(key, grader, student)
     except VariantError as exc:
-        _err(f"{key.file}: {exc}")
+        say(f"{key.file}: {exc}")
         return 2
     from dyncli.check.sheetview import render
 
