@@ -5,7 +5,6 @@ only the chosen format."""
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 from dyncli.check.safe import oneline, say, shown
@@ -28,8 +27,10 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
                   output: str | None = None, student: str | None = None, root: str | None = None,
                   id_from: str = "student", upload: bool = False, course=None) -> int:
     """``course``: a :class:`dyncli.check.gradebook.CourseOptions` (--roster, --stats, --compare) or None."""
-    from dyncli.check import keyformats
-    from dyncli.check.command import _emit, _OutputError
+    from dyncli.check import emit
+    from dyncli.check.command import emit_report
+    from dyncli.check.emit.common import summary_line
+
     if not names and (course is None or course.roster is None):
         say("give the submissions to grade (or --selftest to check the key)")
         return 2
@@ -40,8 +41,8 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     if key is None:
         if fmt in ("json", "gradescope"):     # stdout holds JSON whatever happens
             try:
-                _emit(_invalid_key_json(key_name, fmt), output)
-            except _OutputError as exc:
+                emit.write_text(_invalid_key_json(key_name, fmt), output)
+            except emit.OutputError as exc:
                 say(exc)
         return 2
     if course is not None and not course.load():
@@ -50,49 +51,21 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     if course is not None:
         course.finish(report, files, key)
         if course.summary_only(output):
-            say(keyformats.summary_line(report))
+            say(summary_line(report))
             return report.exit_code
-    if fmt == "table":
-        from dyncli.render.emit import write_view
-
-        try:
-            write_view(lambda console: keyformats.render_table(report, console), output)
-        except OSError as exc:
-            say(f"{output}: cannot write ({exc.strerror})")
-            return 2
-        return report.exit_code
-    render = {"json": keyformats.render_json, "junit": keyformats.render_junit, "csv": _csv,
-              "github": keyformats.render_github, "gradescope": keyformats.render_gradescope}[fmt]
-    try:
-        _emit(render(report), output)
-    except _OutputError as exc:
-        say(exc)
-        return 2
-    if fmt == "github" and os.environ.get("GITHUB_STEP_SUMMARY"):
-        try:
-            with open(os.environ["GITHUB_STEP_SUMMARY"], "a", encoding="utf-8") as fh:
-                fh.write(keyformats.step_summary_markdown(report))
-        except OSError as exc:
-            say(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
-    say(keyformats.summary_line(report))
-    return report.exit_code
-
-
-def _csv(report) -> str:
-    from dyncli.check.gradebook import render_csv
-
-    return render_csv(report)
+    return emit_report(report, fmt, output)
 
 
 def grade_all(key, files, names: list[str], reveal: bool = False, student: str | None = None,
               id_from: str = "student", upload: bool = False):
-    """Every submission graded (a :class:`KeyReport`); each problem on stderr."""
-    from dyncli.check.keymode import KeyGrader, KeyReport, SubmissionResult
+    """Every submission graded (a :class:`~dyncli.check.results.Report`); each problem on stderr."""
+    from dyncli.check.grader import Grader
+    from dyncli.check.results import Report, SubmissionResult
     from dyncli.check.submission import read_submission
     from dyncli.loader import Diagnostic
 
-    grader = KeyGrader(key, files, reveal)
-    report = KeyReport(key, reveal=reveal)
+    grader = Grader(key, files, reveal)
+    report = Report(key, reveal=reveal)
     if upload:
         names, problem = pick_upload(key, names)
         if problem:
@@ -135,7 +108,7 @@ def pick_upload(key, names: list[str]) -> tuple[list[str], str | None]:
 
 
 def _invalid_key_json(key_name: str, fmt: str) -> str:
-    from dyncli.check.formats import json_text
+    from dyncli.check.emit.common import json_text
 
     if fmt == "gradescope":   # students see this: no detail of the instructor's files
         return json_text({"score": 0, "output": "The autograder's key is invalid: please tell your instructor.",
@@ -156,13 +129,13 @@ def selftest_ids(n: int) -> list[str]:
 def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
     """Every variant solvable, every question defined and finite, the key
     grades itself 100 %; prints the per-question range of the true answers."""
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.grader import Grader
     from dyncli.check.variants import VariantError
 
     key, files = load_key(key_name, root)
     if key is None:
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     values: dict[str, list] = {q.id: [] for q in key.questions}
     problem = _unanswerable(grader)
     if problem:
@@ -224,7 +197,7 @@ def _first_record(x) -> dict:
 
 
 def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None) -> str | None:
-    from dyncli.check.keymode import scalar
+    from dyncli.check.grader import scalar
     from dyncli.check.submission import Submission
 
     key = grader.key
@@ -262,7 +235,7 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
 
 def _repeats_input(grader, q, sid: str, t) -> bool:
     from dyncli.check.compare import number_ok
-    from dyncli.check.keymode import scalar
+    from dyncli.check.grader import scalar
 
     src = grader.truth(grader.key.question(q.carry[0]), sid)
     y, c = scalar(t.value), scalar(src.value)

@@ -38,6 +38,27 @@ MAX_ID = 64
 MAX_QUESTIONS = 1000
 
 
+@dataclass(frozen=True)
+class Policy:
+    """Where graded work and self-study grade differently (docs/check.md), in
+    one place.  Graded work (the default): the key's problems are the
+    instructor's (a solver's message may quote a true answer: shown only with
+    --reveal), a result path not in the results is the key's error, a true
+    number zero up to round-off is graded as 0, and a null is no answer.
+    Self-study: the student's own problem and paths, graded as written."""
+
+    secret: bool = True              # a solver's message only with --reveal
+    not_solved: str = "the key's problem could not be solved for this variant"
+    unknown_path: bool = False       # a path not in the results: status 'unknown' with "did you mean"
+    snap_zeros: bool = True          # round-off zeros graded as 0 (dyncli.check.zeros)
+    null_is_answer: bool = False     # a null compares (matches an expected null), else 'not answered'
+
+
+GRADED = Policy()
+SELF_STUDY = Policy(secret=False, not_solved="the problem could not be solved", unknown_path=True,
+                    snap_zeros=False, null_is_answer=True)
+
+
 @dataclass
 class Question:
     id: str
@@ -56,6 +77,8 @@ class Question:
     text: Any = None                           # the statement: parsed pieces (dyncli.check.statement)
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
+    error: Diagnostic | None = None            # self-study: the problem could not be read
+    invalid: str | None = None                 # self-study: the answer's own entry cannot be read
 
 
 @dataclass
@@ -69,6 +92,7 @@ class Key:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     submission: str | None = None              # the file name a Gradescope upload must have
     texts: dict = field(default_factory=dict)  # (problem file, index) -> parsed statement of that problem
+    policy: Policy = GRADED
 
     def problem_text(self, lp) -> Any:
         return self.texts.get((lp.file, lp.index)) if lp is not None else None

@@ -98,7 +98,7 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
     """One sheet (or empty submission) per roster student in ``outdir``."""
     from dyncli.check.keycommand import load_key
     from dyncli.check.safe import say
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.grader import Grader
     from dyncli.check.sheet import render_template, sheet
     from dyncli.check.sheetview import render
     from dyncli.check.variants import VariantError
@@ -117,7 +117,7 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
     except OSError as exc:
         say(f"{outdir}: cannot create the folder ({exc.strerror})")
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     cache: dict = {}
     suffix = ".yaml" if template else SUFFIX[fmt]
     for sid in roster.students:

@@ -133,7 +133,7 @@ def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool =
                 root: str | None = None) -> int:
     from dyncli.check.keycommand import load_key
     from dyncli.check.safe import say
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.grader import Grader
     from dyncli.check.variants import VariantError
 
     if not student or oneline(student) != student or len(student) > 200:
@@ -142,7 +142,7 @@ def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool =
     key, files = load_key(key_name, root)
     if key is None:
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     try:
         if template:
             sys.stdout.write(render_template(key, grader, student))
