@@ -22,7 +22,7 @@ from typing import Any, Callable
 
 from dyncli.check.compare import compare
 from dyncli.check.slips import FACTORS, SLIPS, TEXT
-from dyncli.check.tolerance import Tolerance
+from dyncli.check.tolerance import Tolerance, number_ok
 
 __all__ = ["SLIPS", "TEXT", "diagnose"]
 
@@ -38,6 +38,10 @@ def _scaled(x: Any, f: float) -> Any:
     return x
 
 
+def _is_num(x: Any) -> bool:
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
+
+
 def _has_number(x: Any) -> bool:
     if isinstance(x, list):
         return any(_has_number(v) for v in x)
@@ -51,6 +55,8 @@ def diagnose(given: Any, true: Any, tol: Tolerance,
     """The slip that explains a wrong ``given`` (numbers in SI), or None."""
     if not _has_number(given) or not _has_number(true):
         return None
+    if ok is None and _is_num(given) and _is_num(true):     # one number: the scalar rule itself
+        ok = lambda g, t, tl: number_ok(float(g), float(t), tl)   # noqa: E731
     ok = ok or (lambda g, t, tl: compare(g, t, tl).correct)
     for name, f in FACTORS:
         if ok(_scaled(given, f), true, tol):

@@ -88,6 +88,7 @@ class Grader:
         self.key, self.files, self.reveal = key, files, reveal
         self._params: dict[str, dict] = {}
         self._truth: dict[tuple, Truth] = {}
+        self._outcomes: dict[tuple, Any] = {}
 
     # -- variants and references ------------------------------------------
     def params(self, student: str) -> dict[str, float]:
@@ -136,7 +137,10 @@ class Grader:
         return t
 
     def _solve(self, q: Question, values: dict, extra: dict) -> Truth:
-        outcome = self.files.solve(self.problem(q, values, extra), validated=False)
+        memo = (id(q.problem), tuple(sorted(values.items())), tuple(sorted(extra.items())))
+        outcome = self._outcomes.get(memo)      # the questions of one problem share its solve
+        if outcome is None:
+            outcome = self._outcomes[memo] = self.files.solve(self.problem(q, values, extra), validated=False)
         if outcome.exit_code != 0 or outcome.result is None:
             d = diagnostic_of(outcome.message or "")
             return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True, diag=d, trace=outcome.trace)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import os
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -89,5 +90,9 @@ def _canonical(lp: LoadedProblem) -> str | None:
         body = json.dumps(lp.raw, sort_keys=True, default=str, allow_nan=True)
     except (TypeError, ValueError):  # pragma: no cover - plain YAML data always dumps
         return None
-    base = str(Path(lp.base_dir).resolve()) if lp.base_dir is not None else ""
-    return base + "\n" + body
+    return (_resolved(str(lp.base_dir)) if lp.base_dir is not None else "") + "\n" + body
+
+
+@lru_cache(maxsize=256)
+def _resolved(folder: str) -> str:
+    return str(Path(folder).resolve())
