@@ -99,14 +99,6 @@ def _question(q, grader, student: str, cache, vals: dict) -> dict:
             **({"carry_from": q.carry[0]} if q.carry else {})}
 
 
-def render_yaml(doc: dict) -> str:
-    import yaml
-
-    from dyncli.check.key import plain
-
-    return yaml.safe_dump(plain(doc), sort_keys=False, allow_unicode=True, width=100)
-
-
 def _datum(v: Any, unit: str | None) -> str:
     if isinstance(v, dict) and "carried" in v:
         return f"your answer to {oneline(v['carried'])}"
