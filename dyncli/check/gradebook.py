@@ -10,7 +10,7 @@ import re
 from typing import Any
 
 from dyncli.check.emit.common import fmt_points
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, say, shown
 
 NO_SUBMISSION = "(no submission)"
 ORDER = ("correct", "carried", "partial", "wrong", "missing", "invalid", "error")
@@ -221,7 +221,6 @@ class CourseOptions:
         self.summary = ""
 
     def load(self) -> bool:
-        from dyncli.check.safe import say
         from dyncli.check.roster import RosterError, read_roster
 
         try:
@@ -235,7 +234,6 @@ class CourseOptions:
         return True
 
     def finish(self, report, files, key) -> bool:
-        from dyncli.check.safe import say
         from dyncli.check.grader import Grader
 
         if self.roster is not None:

@@ -65,11 +65,7 @@ def _answer_file(report: Report, s: SubmissionResult, suite) -> list[int]:
         n[2] += 1
     for g in s.groups:
         for q in g.questions:
-            tc = ET.SubElement(suite, "testcase", classname=xml_text(g.title), name=xml_text(q.answer),
-                               file=xml_text(s.file), time="0")
-            if q.line is not None:
-                tc.set("line", str(q.line))
-            n[0] += 1
+            tc = _case(suite, g.title, q.answer, s.file, q.line, n)
             if q.status == "correct":
                 continue
             text = after_status(q, report.reveal)
@@ -92,11 +88,7 @@ def _submission(report: Report, s: SubmissionResult, suite) -> list[int]:
         n[0] += 1
         n[2] += 1
     for q in s.questions:
-        tc = ET.SubElement(suite, "testcase", classname=xml_text(q.title), name=xml_text(q.id),
-                           file=xml_text(s.file), time="0")
-        if q.line is not None:
-            tc.set("line", str(q.line))
-        n[0] += 1
+        tc = _case(suite, q.title, q.id, s.file, q.line, n)
         if q.status in FULL:
             if q.message:           # carried, or the instructor's feedback for a correct answer
                 ET.SubElement(tc, "system-out").text = xml_text(q.message)
@@ -105,6 +97,18 @@ def _submission(report: Report, s: SubmissionResult, suite) -> list[int]:
         msg = f"{oneline(q.id)}: {STATUS_TEXT[q.status]} ({points(q)})" + (f": {text}" if text else "")
         _verdict(tc, q.status, msg, [msg] + ([f"given: {oneline(fmt_given(q.given))}"] if q.given is not None else []), n)
     return n
+
+
+def _case(suite, classname: str, name: str, file: str, line: int | None, n: list[int]):
+    """The ``<testcase>`` of one answer (counted in ``n``)."""
+    import xml.etree.ElementTree as ET
+
+    tc = ET.SubElement(suite, "testcase", classname=xml_text(classname), name=xml_text(name), file=xml_text(file),
+                       time="0")
+    if line is not None:
+        tc.set("line", str(line))
+    n[0] += 1
+    return tc
 
 
 def _verdict(tc, status: str, msg: str, body: list[str], n: list[int]) -> None:
