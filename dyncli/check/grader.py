@@ -27,7 +27,7 @@ from dyncli.check.compare import compare, has_unit_text, rel_text
 from dyncli.check.diagnose import TEXT, diagnose
 from dyncli.check.emit.common import fmt_given
 from dyncli.check.keyfile import Key, Question
-from dyncli.check.paths import PathIndex, available_paths, lookup, unknown_key_message
+from dyncli.check.paths import lookup, unknown_key_message
 from dyncli.check.quantities import NO_UNIT, UnitSpec, WrongDimension, convert, result_unit, unit_spec
 from dyncli.check.results import QuestionResult, SubmissionResult
 from dyncli.check.safe import shown
@@ -144,24 +144,15 @@ class Grader:
         if outcome.exit_code != 0 or outcome.result is None:
             d = diagnostic_of(outcome.message or "")
             return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True, diag=d, trace=outcome.trace)
-        results = getattr(outcome, "_plain", None)
-        if results is None:
-            from dyncli.render.jsonout import jsonable
-
-            results = outcome._plain = jsonable(outcome.result.results)
+        solved = self.files.results(outcome)
+        results = solved.results
         found, value, msg = lookup(results, q.answer)
         if not found and self.key.policy.unknown_path:
-            index = getattr(outcome, "_index", None)
-            if index is None:
-                index = outcome._index = PathIndex(available_paths(results))
-            return Truth(error=unknown_key_message(results, q.answer, index), code=1, unknown=True)
+            return Truth(error=unknown_key_message(results, q.answer, solved.index), code=1, unknown=True)
         if not found:
             return Truth(error=f"the key's answer path '{shown(q.answer)}' is not in the results"
                                + (f" ({msg})" if msg else ""), code=2)
-        scale = getattr(outcome, "_scale", None)
-        if scale is None:
-            scale = outcome._scale = zeros.scale_of(results)
-        value, roundoff = zeros.snap(value, scale) if self.key.policy.snap_zeros else (value, False)
+        value, roundoff = zeros.snap(value, solved.scale) if self.key.policy.snap_zeros else (value, False)
         return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer), roundoff=roundoff)
 
     def unit(self, q: Question, truth: Truth, given: Any = None) -> UnitSpec:
@@ -344,12 +335,12 @@ def _magnitude_ok(given: Any, true: Any, tol) -> bool:
     from dyncli import units
     from dyncli.check.compare import number_ok
 
-    m = units._QUANTITY.match(given) if isinstance(given, str) else None
+    m = units.QUANTITY.match(given) if isinstance(given, str) else None
     t = scalar(true)
     if not m or t is None:
         return False
     try:
-        q = units.registry().Quantity(float(m.group("num")), units.registry().parse_units(units._clean(m.group("unit"))))
+        q = units.registry().Quantity(float(m.group("num")), units.registry().parse_units(units.clean_unit(m.group("unit"))))
         return number_ok(float(q.to_base_units().magnitude), t, tol)
     except Exception:  # noqa: BLE001
         return False

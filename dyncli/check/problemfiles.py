@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 import os
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -36,6 +36,7 @@ class ProblemFiles:
         self.root = root
         self._files: dict[str, tuple[list[LoadedProblem], list[Diagnostic]]] = {}
         self._solved: dict[str, Any] = {}
+        self._plain: dict[int, tuple[Any, Solved]] = {}
         self.solves = 0
 
     def read(self, ref: str, base_dir: Path, where: Diagnostic) -> tuple[list[LoadedProblem], Diagnostic | None]:
@@ -83,6 +84,37 @@ class ProblemFiles:
         if key is not None:
             self._solved[key] = outcome
         return outcome
+
+
+    def results(self, outcome) -> Solved:
+        """The plain results of a successful solve, with what grading derives
+        from them, computed once per solve."""
+        hit = self._plain.get(id(outcome))
+        if hit is None:
+            from dyncli.render.jsonout import jsonable
+
+            hit = self._plain[id(outcome)] = (outcome, Solved(jsonable(outcome.result.results)))   # keeps its id
+        return hit[1]
+
+
+class Solved:
+    """A solve's results as plain data; ``scale`` (round-off zeros) and
+    ``index`` (the result paths, for "did you mean") on first use."""
+
+    def __init__(self, results: Any):
+        self.results = results
+
+    @cached_property
+    def scale(self) -> float:
+        from dyncli.check.zeros import scale_of
+
+        return scale_of(self.results)
+
+    @cached_property
+    def index(self):
+        from dyncli.check.paths import PathIndex, available_paths
+
+        return PathIndex(available_paths(self.results))
 
 
 def _canonical(lp: LoadedProblem) -> str | None:
