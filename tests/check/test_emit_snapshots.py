@@ -75,3 +75,23 @@ def test_every_format_has_a_snapshot_in_both_modes():
     formats = {f.value for f in CheckFormat}
     assert set(MODES["key"]) == formats
     assert set(MODES["study"]) == formats - {"csv"}
+
+
+def test_both_modes_grade_alike(monkeypatch):
+    """One grader: the same answers to the same problems get the same status,
+    points, diagnosis and feedback as graded work and as self-study."""
+    from dyncli.check.keycommand import grade_all, load_key
+    from dyncli.check.selfstudy import SelfStudy
+
+    monkeypatch.chdir(DATA)
+    key, files = load_key("same-key.yaml", None)
+    graded = grade_all(key, files, ["same-sub.yaml"]).submissions[0].questions
+    study = SelfStudy().check_paths(["same-study.yaml"]).submissions[0].questions
+    by_path = {(q.title, q.answer): q for q in study}
+    assert len(graded) == len(study) == 4
+    for g in graded:
+        s = by_path[(g.title, g.answer)]
+        assert (s.status, s.score, s.points, s.diagnosis, s.message, s.rel_error) == \
+            (g.status, g.score, g.points, g.diagnosis, g.message, g.rel_error), g.id
+    assert [q.status for q in graded] == ["wrong", "correct", "wrong", "invalid"]
+    assert [q.diagnosis for q in graded][:3] == ["sign", None, "power_of_ten"]
