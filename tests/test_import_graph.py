@@ -127,7 +127,7 @@ def test_the_graph_is_read():
     g = import_graph()
     assert "dyncli.check.compare" in g and "dyncli.run" in g
     assert "dyncli.loader" in g["dyncli.run"]                     # module level
-    assert "dyncli.render.jsonout" in g["dyncli.check.grader"]    # function level
+    assert "dyncli.run" in g["dyncli.check.problemfiles"]         # function level
 
 
 def test_a_circle_is_found():
