@@ -28,7 +28,8 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
             say(d)
         for g in s.groups:
             if g.error is not None:
-                say(f"{s.file}: check #{g.index} ({g.title}): problem not solved: {g.error}")
+                named = f" ({g.title})" if g.title != f"check #{g.index}" else ""
+                say(f"{s.file}: check #{g.index}{named}: problem not solved: {g.error}")
                 if g.trace and debug:
                     print(g.trace, file=sys.stderr)   # our own traceback (--debug): several lines
             for q in g.questions:
