@@ -95,3 +95,25 @@ def test_both_modes_grade_alike(monkeypatch):
             (g.status, g.score, g.points, g.diagnosis, g.message, g.rel_error), g.id
     assert [q.status for q in graded] == ["wrong", "correct", "wrong", "invalid"]
     assert [q.diagnosis for q in graded][:3] == ["sign", None, "power_of_ten"]
+
+
+def test_github_lists_the_annotations_beyond_ten_alike_in_both_modes(monkeypatch, tmp_path):
+    """GitHub shows 10 error annotations per step: the rest go to one notice,
+    one line each, in both modes."""
+    from dyncli.check.emit import github
+    from dyncli.check.keycommand import grade_all, load_key
+    from dyncli.check.selfstudy import SelfStudy
+
+    monkeypatch.chdir(DATA)
+    key, files = load_key("same-key.yaml", None)
+    subs = []
+    for i in range(4):                      # 3 annotations each: 12
+        p = tmp_path / f"s{i}.yaml"
+        p.write_text((DATA / "same-sub.yaml").read_text(encoding="utf-8"), encoding="utf-8")
+        subs.append(str(p))
+    graded = github.render(grade_all(key, files, subs)).splitlines()
+    study = github.render(SelfStudy().check_paths(["same-study.yaml"] * 4)).splitlines()
+    for lines in (graded, study):
+        assert sum(line.startswith("::error ") for line in lines) == 10
+        more = [line for line in lines if line.startswith("::notice title=dyncli check%3A 2 more::")]
+        assert len(more) == 1 and more[0].count("%0A") == 2 and "(GitHub shows at most 10" in more[0], more
