@@ -37,12 +37,15 @@ scipy is imported lazily, only when a problem actually integrates.
 from __future__ import annotations
 
 import math
+import time
 
 import numpy as np
 
+from dyncli import cputime
 from dyncli.errors import NumericalError
 
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
+CPU_PROBE = 32           # every this many steps, the solve's CPU is projected (dyncli.cputime.over_budget)
 PROBE_STEPS = 2_000      # every this many steps, project the run's total and refuse early
 
 
@@ -87,6 +90,7 @@ class Budget:
         self.t0, self.goal = float(t0), float(t_goal)
         self._n_leg = self._n_win = 0
         self._t_win = self.t0
+        self._cpu_leg0 = time.thread_time()
 
     def tick(self, t: float, t_old: float | None = None, y=None) -> None:
         self.n += 1
@@ -106,6 +110,22 @@ class Budget:
             self._n_win, self._t_win = 0, t
         if need is not None:
             raise OverBudget(self.goal, need, self.limit, t, y, h)
+        if self._n_leg % CPU_PROBE == 0:
+            cpu = cputime.over_budget(self._cpu_leg0, abs(t - self.t0), abs(self.goal - t))
+            if cpu is not None:
+                raise OverCpu(self.goal, *cpu, self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300), t, y, h)
+
+
+class OverCpu(OverBudget):
+    """A run refused by the CPU budget of its solve (:func:`dyncli.cputime.solve_budget`)."""
+
+    def __init__(self, t_goal: float, cpu: float, limit: float, need: float, t: float, y=None, h: float = 0.0):
+        NumericalError.__init__(
+            self, f"the run to t = {t_goal:.6g} s would take about {cpu:.3g} s of CPU ({need:.3g} integrator "
+                  f"steps), more than the budget of {limit:g} s: shorten the time span, loosen accuracy.rtol, "
+                  "or raise accuracy.max_cpu")
+        self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
+        self.y = None if y is None else np.array(y, dtype=float)
 
 
 class NonFiniteRate(NumericalError):
@@ -299,9 +319,11 @@ def tighter(rtol: float, atol: float, div: float | None = None) -> tuple[float, 
     return floor_rtol(rtol / div), max(atol / div, 1e-300)
 
 
-def fallback_warning(div: float) -> str:
-    """The warning of an error_estimate whose check solve at rtol/div exceeded the budget."""
-    return (f"error_estimate: the check solve at rtol/{div:g} exceeds the step budget (accuracy.max_steps); "
+def fallback_warning(div: float, cpu: bool = False) -> str:
+    """The warning of an error_estimate whose check solve at rtol/div exceeded the budget (of
+    steps, or with ``cpu`` of the solve's CPU)."""
+    what = "the CPU budget of the solve (accuracy.max_cpu)" if cpu else "the step budget (accuracy.max_steps)"
+    return (f"error_estimate: the check solve at rtol/{div:g} exceeds {what}; "
             "the estimate comes from a solve at 10·rtol instead (a conservative bound, typically ~10x the "
             "actual error)")
 
@@ -367,11 +389,12 @@ def check_solve(res, run, rtol: float, atol: float, *, fallback: bool = True):
     try:
         try:
             return run(r2, a2), "tighter"
-        except OverBudget:
+        except OverBudget as over:
             if not fallback:
                 raise
-            out = run(min(rtol * LOOSER_MUL, LOOSER_CAP), atol * LOOSER_MUL)
-            res.warn(fallback_warning(CHECK_DIV))
+            with cputime.extra(0.5 if isinstance(over, OverCpu) else 0.0):
+                out = run(min(rtol * LOOSER_MUL, LOOSER_CAP), atol * LOOSER_MUL)
+            res.warn(fallback_warning(CHECK_DIV, isinstance(over, OverCpu)))
             return out, "looser"
     except NumericalError as exc:
         res.error_estimate = None
