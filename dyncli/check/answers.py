@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from dyncli.check.tolerance import TOL_KEYS, FieldError, Tolerance, parse_tolerance, read_points, tolerance_from
-from dyncli.check.safe import shown
+from dyncli.check.safe import shown, yaml_diagnostic
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic
@@ -76,10 +76,7 @@ def read_answer_file(display: str, data: bytes | str, base_dir: Path) -> AnswerF
     try:
         doc = yaml_load(data)
     except YamlError as exc:
-        msg = exc.message
-        if msg.startswith("file is empty"):
-            msg = "file is empty: expected answers (a mapping with 'problem' and 'answers')"
-        af.diagnostics.append(Diagnostic(display, exc.line, exc.col, None, msg))
+        af.diagnostics.append(yaml_diagnostic(display, exc, "answers (a mapping with 'problem' and 'answers')"))
         return af
     af.doc = doc
     data = doc.data

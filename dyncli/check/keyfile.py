@@ -25,7 +25,7 @@ from typing import Any
 
 from dyncli.check.tolerance import FieldError, Tolerance, parse_tolerance, read_points
 from dyncli.check.diagnose import SLIPS
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, shown, yaml_diagnostic
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
@@ -118,10 +118,7 @@ def read_key(name: str, files) -> Key:
         display, data = read_source(name)
         doc = yaml_load(data)
     except YamlError as exc:
-        msg = exc.message
-        if msg.startswith("file is empty"):
-            msg = "file is empty: expected a key (a mapping with 'questions: [...]')"
-        key.diagnostics.append(Diagnostic(name, exc.line, exc.col, None, msg))
+        key.diagnostics.append(yaml_diagnostic(name, exc, "a key (a mapping with 'questions: [...]')"))
         return key
     except InputError as exc:
         key.diagnostics.append(Diagnostic(name, None, None, None, exc.message.removeprefix(f"{name}: ")))
