@@ -67,10 +67,17 @@ def same(path, value):
     return {"path": path, "value": value}
 
 
-def case(name, type_, problem, checks, note, same_=(), expect="solved"):
+def case(name, type_, problem, checks, note, same_=(), expect="solved", known_wrong=None, slow=False):
+    """``known_wrong``: what dyncli gets wrong on this case today (the test is an expected failure,
+    strict: it fails once fixed, to be removed then); ``slow``: marked ``slow``."""
     problem = {"type": type_, **problem}
-    return {"name": name, "type": type_, "note": note, "expect": expect, "problem": problem,
-            "checks": list(checks), "same": list(same_)}
+    out = {"name": name, "type": type_, "note": note, "expect": expect, "problem": problem,
+           "checks": list(checks), "same": list(same_)}
+    if known_wrong:
+        out["known_wrong"] = known_wrong
+    if slow:
+        out["slow"] = True
+    return out
 
 
 def vec(v):
@@ -93,3 +100,23 @@ def vclosed(path, v, cond=1, scale=None, reason=""):
     """closed() per component of a vector, each against the vector's norm as its scale."""
     sc = norm(v) if scale is None else scale
     return [closed(f"{path}.{i}", c, scale=sc, cond=cond, reason=reason) for i, c in enumerate(v)]
+
+
+def bisect(f, lo, hi, steps=200):
+    """The root of f in [lo, hi] (a sign change) by bisection to 2^-steps of the bracket: slow,
+    plain and sure — a reference, not a method under test."""
+    lo, hi = mp.mpf(lo), mp.mpf(hi)
+    flo = f(lo)
+    if flo == 0:
+        return lo
+    assert flo * f(hi) <= 0, "no sign change in the bracket"
+    for _ in range(steps):
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if fm == 0:
+            return mid
+        if (fm > 0) == (flo > 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return (lo + hi) / 2

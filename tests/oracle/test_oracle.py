@@ -34,6 +34,8 @@ def lookup(results, dotted: str):
 
 def _param(c):
     marks = [pytest.mark.slow] if c.get("slow") else []
+    if c.get("known_wrong"):
+        marks.append(pytest.mark.xfail(strict=True, reason=c["known_wrong"]))
     return pytest.param(c, id=f"{c['type']}:{c['name']}", marks=marks)
 
 
