@@ -120,3 +120,18 @@ def bisect(f, lo, hi, steps=200):
         else:
             hi = mid
     return (lo + hi) / 2
+
+
+def condition(f, args, h="1e-25"):
+    """The relative condition number of f at args: the largest |Δf/f| / h over relative
+    perturbations h of each argument (mpmath at DPS digits: h far below 1e-16, far above 1e-40)."""
+    h = mp.mpf(h)
+    f0 = f(*args)
+    out = mp.mpf(1)
+    for i, a in enumerate(args):
+        if a == 0:
+            continue
+        pert = list(args)
+        pert[i] = a * (1 + h)
+        out = max(out, abs(f(*pert) - f0) / (h * abs(f0)) if f0 != 0 else mp.mpf(1))
+    return out
