@@ -60,7 +60,7 @@ def _particles():
 
 
 def _atwood(name, m1, m2, note):
-    M, R, g = x(1), x(0.1), x(9.81)
+    M, g = x(1), x(9.81)
     A, B = x(m1), x(m2)
     a = g * (A - B) / (A + B + M / 2)            # A falls (disk pulley: I = M R²/2)
     T1, T2 = A * (g - a), B * (g + a)
