@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import mpmath as mp
 
-from tests.oracle.common import EPS, absolute, case, closed, estimated, ode, same, x
+from tests.oracle.common import EPS, absolute, bisect, case, closed, estimated, ode, same, x
 
 
 def _case1():
@@ -35,7 +35,39 @@ def _case2():
                  same_=[same("find.0.reached", True)])
     miss = case("v stays below zero", "rectilinear", {"a": "cos(t)", "v1": -1 - 1e-10, "t_max": 3, "find": [{"v": 0}]},
                 [], "a = cos t from v1 = −1 − 1e-10: v peaks at −1e-10, never 0", same_=[same("find.0.reached", False)])
-    return [graze, miss]
+    # a(t) = (t − 1)² − 1e-6 dips below 0 for 2e-3 s: v has a maximum and a minimum 2e-3 apart, and
+    # a target between them is crossed three times; the first crossing is the answer
+    d = x(1e-6)
+    v = lambda t: (t - 1) ** 3 / 3 + mp.mpf(1) / 3 - d * t         # noqa: E731
+    lo, hi = 1 - mp.sqrt(d), 1 + mp.sqrt(d)
+    V = x(float((v(lo) + v(hi)) / 2))
+    tf = bisect(lambda t: v(t) - V, 0, lo)
+    tol = 16 * EPS * abs(V) / ((tf - 1) ** 2 - d)
+    dip = case("a target inside a narrow dip of v", "rectilinear", {
+        "a": "(t-1)**2 - 1e-6", "v1": 0, "t_max": 10, "find": [{"v": float(V)}]},
+        [estimated("find.0.t", tf, tf, floor=tol, reason="plus 16 eps of v over a(t*) = 2e-6 (the root's condition)")],
+        "v rises to a maximum at 1 − 1e-3 s, falls 1.3e-9 until 1 + 1e-3 s and rises again: the target between "
+        "the two is first reached before the dip", same_=[same("find.0.reached", True)])
+    # a narrow pulse a = exp(−((t − 5.123)/1e-3)²) on [0, 10]: v jumps by 1e-3 √π within 4e-3 s
+    c, w = x(5.123), x(1e-3)
+    a = lambda t: mp.exp(-((t - c) / w) ** 2)                        # noqa: E731
+    pts = [0, c - 8 * w, c, c + 8 * w, 10]
+    v10, s10 = mp.quad(a, pts), mp.quad(lambda t: (10 - t) * a(t), pts)
+    pulse = case("a narrow pulse of a, t query", "rectilinear", {
+        "a": "exp(-((t-5.123)/1e-3)**2)", "v1": 0, "find": [{"t": 10}]},
+        [estimated("find.0.v", v10, v10), estimated("find.0.s", s10, s10)],
+        "a pulse 1e-3 s wide in 10 s: v(10) = 1e-3 √π, s(10) = v(10)(10 − 5.123) (one quadrature over [0, 10] saw "
+        "none of it: v(10) was 1e-293)")
+    vq = float(v10 / 2)
+    tq = c                                                              # by symmetry v = v(∞)/2 at the pulse's centre
+    pulse_v = case("a narrow pulse of a, v query", "rectilinear", {
+        "a": "exp(-((t-5.123)/1e-3)**2)", "v1": 0, "t_max": 10, "find": [{"v": vq}]},
+        [estimated("find.0.t", tq, tq, floor=16 * EPS * abs(vq) / a(tq) + 8 * EPS * tq)],
+        "the same pulse: v reaches half its jump at the pulse's centre, t = 5.123 s",
+        same_=[same("find.0.reached", True)],
+        known_wrong="case 2's scan integrates each monotone piece of v by one adaptive quadrature: a pulse "
+                    "narrower than its first nodes is missed and the query is reported not reached")
+    return [graze, miss, dip, pulse, pulse_v]
 
 
 def _case3():
