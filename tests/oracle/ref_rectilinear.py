@@ -85,7 +85,22 @@ def _case3():
                    reason="plus rounding of the target v over 1 − v/v_t = 1e-9"),
          estimated("find.0.s", s(tq), ssc, floor=8 * EPS * ssc / (1 - vq / vt)),
          estimated("find.1.s", s(T), ssc), estimated("find.1.v", v(T), vt)],
-        "quadratic drag from rest: v reaches v_t (1 − 1e-9) at t = 11 s; v and s at 50 s")]
+        "quadratic drag from rest: v reaches v_t (1 − 1e-9) at t = 11 s; v and s at 50 s"), _terminal_pair()]
+
+
+def _terminal_pair():
+    # a = (v − v*)(v − v* − 1e-6), v* = 3 + 1e-6: two roots 1e-6 apart; from rest v → v* as 1/t
+    r1, r2 = x(3) + x(1e-6), x(3) + 2 * x(1e-6)
+    d = r2 - r1
+    # t(v) = ∫ dv/((v − r1)(v − r2)) = ln(|v − r2| r1 / (|v − r1| r2)) / d from v = 0
+    tv = lambda v: mp.log((r2 - v) * r1 / ((r1 - v) * r2)) / d      # noqa: E731
+    T = x(100)
+    vT = bisect(lambda v: tv(v) - T, 0, r1 - mp.mpf("1e-30"))
+    return case("two terminal velocities 1e-6 apart", "rectilinear", {
+        "a": "(v - 3 - 1e-6)*(v - 3 - 2e-6)", "v1": 0, "find": [{"t": 100}, {"v": 3.5}]},
+        [estimated("find.0.v", vT, r1)],
+        "from rest v approaches v* = 3 + 1e-6 (the next root 1e-6 beyond): v = 3.5 is never reached "
+        "(it was, at t = −1e7 s)", same_=[same("find.1.reached", False)])
 
 
 def _case4():
