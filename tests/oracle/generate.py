@@ -15,7 +15,7 @@ HERE = Path(__file__).resolve().parent
 CASES = HERE / "cases"
 # one module per group of types; each has cases() -> list of case dicts (tests.oracle.common)
 MODULES = ["points", "rectilinear", "vibration", "particle", "constrained", "bodies", "systems",
-           "gyro", "euler_top"]
+           "gyro", "euler_top", "pendulum"]
 
 
 def build(only: str | None = None) -> dict[str, list[dict]]:
