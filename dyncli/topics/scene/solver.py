@@ -94,7 +94,20 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         _check_solve(res, plan, t_end, times, acc)
     if p.linearize:
         _linearize(res, plan, times)
+    if options is not None and options.symbolic:
+        _symbolic(res, p, plan)
     return res
+
+
+def _symbolic(res: Result, p, plan) -> None:
+    """``--symbolic``: the equations in the notes' form (sympy, imported only here), on a scene
+    set up afresh (the route may have changed the contacts' modes)."""
+    from . import symbolic, symbolic_view
+
+    exprs = {"drive": {n: j.value for n, j in p.joints.items() if j.kind == "drive"},
+             "load": {i: (f.F if f.kind == "force" else [f.M]) for i, f in enumerate(p.forces)
+                      if f.kind in ("force", "torque")}}
+    res.views.extend(symbolic_view.views(symbolic.derive(prepare.setup(plan), exprs)))
 
 
 def _linearize(res: Result, plan, times: list[float]) -> None:
