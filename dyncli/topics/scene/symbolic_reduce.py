@@ -43,27 +43,37 @@ def _preference(system, drives: dict) -> list[int]:
 
 
 def _linear_part(rows, dep, C, D, q0):
-    """Split the dependent coordinates into those the rows give linearly (solved exactly, in
-    the others) and the rest ``a`` (a closed loop's angles): (solution, a, rows left for a)."""
-    qs = [C.q[j] for j in dep]
-    lin = [q for q in qs if not any(sp.diff(r, q).has(q) for r in rows)]
-    a = [q for q in qs if q not in lin]
+    """Eliminate the dependent coordinates one row at a time, each from a row linear in it with
+    a coefficient free of the unsolved ones and non-zero at t = 0: (solution, the coordinates
+    left ``a`` (a closed loop's angles), the rows left for them)."""
+    num = {**D.S.values, **{q: float(x) for q, x in zip(C.q, q0)}}
+    left, todo, sol = list(rows), [C.q[j] for j in dep], {}
+    progress = True
+    while progress and todo:
+        progress = False
+        for i, r in enumerate(left):
+            q = next((x for x in todo if _solvable(r, x, todo, num)), None)
+            if q is None:
+                continue
+            c = sp.diff(r, q)
+            val = tidy(-(r - c * q).expand() / c)
+            sol = {k: tidy(v.subs(q, val)) for k, v in sol.items()}
+            sol[q] = val
+            todo.remove(q)
+            left = [tidy(x.subs(q, val)) for k, x in enumerate(left) if k != i]
+            progress = True
+            break
+    return sol, todo, left
+
+
+def _solvable(r, q, todo, num) -> bool:
+    c = sp.diff(r, q)
+    if c == 0 or c.has(*todo):
+        return False
     try:
-        A, b = sp.linear_eq_to_matrix(rows, lin) if lin else (sp.zeros(len(rows), 0), sp.Matrix(rows))
-    except Exception:  # noqa: BLE001 - sympy's NonlinearError: products of them
-        return None, qs, rows
-    sub = {**D.S.values, **{q: float(x) for q, x in zip(C.q, q0)}}
-    An = np.array(A.subs(sub).evalf(), dtype=float) if lin else np.zeros((len(rows), 0))
-    pick: list[int] = []
-    for i in range(len(rows)):          # rows that fix the linear ones (a nonsingular block)
-        if len(pick) < len(lin) and rank(An[pick + [i]]) == len(pick) + 1:
-            pick.append(i)
-    if len(pick) < len(lin):
-        return None, qs, rows
-    sol = A[pick, :].LUsolve(b[pick, :]) if lin else []
-    sol = {q: tidy(x) for q, x in zip(lin, sol)}
-    left = [tidy(r.subs(sol)) for i, r in enumerate(rows) if i not in pick]
-    return sol, a, left
+        return abs(float(c.subs(num))) > 1e-12
+    except (TypeError, ValueError):
+        return False
 
 
 def reduce(D, P, scene, t) -> None:
@@ -80,9 +90,6 @@ def reduce(D, P, scene, t) -> None:
     dep = [j for j in range(n) if j not in idx]
     s, sd, sdd = (sp.Matrix([v[j] for j in idx]) for v in (C.q, C.qd, C.qdd))
     sol, a, left = _linear_part(rows, dep, C, D, scene.q0)
-    if sol is None:
-        D.notes.append("no symbolic reduction: the joints' rows are not linear in any coordinate")
-        return
     D.explicit = sol
     qv = sp.Matrix([sol.get(q, q) for q in C.q])
     A_s = sp.zeros(0, k)
