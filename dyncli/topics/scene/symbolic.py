@@ -123,9 +123,10 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
     _loads(D, P, G, S, C, system, exprs.get("load", {}), t)
     _balance(D, P, system, C)
     for e, rows, _ in P.rows:
+        name = e.name if e.kind != "guide" else f"{e.name.split(':')[0]} guides {e.P.body.name}"
         for k, r in enumerate(rows):
             const = -r.as_independent(*C.q, as_Add=True)[0] if r.has(*C.q) else -r
-            D.constraints.append(Eq(e.name + (f" ({k + 1})" if len(rows) > 1 else ""), tidy(r + const), tidy(const)))
+            D.constraints.append(Eq(name + (f" ({k + 1})" if len(rows) > 1 else ""), tidy(r + const), tidy(const)))
     from .symbolic_reduce import reduce
 
     reduce(D, P, scene, t)
