@@ -75,7 +75,11 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict) -> SurfaceData:
+def surface_of(name: str, s: dict):
+    if s.get("curve") is not None:
+        from .curved import CurveData
+
+        return CurveData(name, *s["curve"], s.get("q_range"))
     d = np.array(s["direction"], float)
     d = d / math.hypot(d[0], d[1])
     return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
@@ -167,6 +171,14 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "contact":
             P = R.point(a[0], path + ".0")
             s = R.surface(a[1], path + ".1")
+            if getattr(s, "curved", False):
+                from .curved import contact_on
+
+                out.append(contact_on(name, kind, n, path, P, s, j, q))
+                continue
+            if j["at"] is not None:
+                raise InputError("`at` places a contact on a curved surface (the curve's q); on a straight one give "
+                                 "the point's position", f"joints.{name}.at")
             mu_s = j["mu"] if j["mu"] is not None else (j["mu_s"] or 0.0)
             mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j["mu_k"] is not None else mu_s)
             if j["mu_k"] is not None and j["mu_s"] is None:
@@ -179,6 +191,11 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             if b.radius <= 0:
                 raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
             s = R.surface(a[1], path + ".1")
+            if getattr(s, "curved", False):
+                from .curved import rolls_on
+
+                out.append(rolls_on(name, kind, n, path, Point(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+                continue
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,

@@ -28,7 +28,8 @@ def _plan(p) -> build.Plan:
         bodies[name] = {"shape": shape, "mass": b.mass, "length": b.length, "radius": b.radius, "size": b.size,
                         "I": b.I, "x": b.x, "angle": b.angle, "v": b.v, "omega": b.omega,
                         "points": {k: tuple(v) for k, v in b.points.items()}}
-    surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length} for k, s in p.surfaces.items()}
+    surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length, "q_range": s.q_range,
+                    "curve": (s.curve.x1, s.curve.x2) if s.curve is not None else None} for k, s in p.surfaces.items()}
     joints = {}
     for name, j in p.joints.items():
         val = getattr(j, j.kind)
@@ -104,10 +105,15 @@ def _symbolic(res: Result, p, plan) -> None:
     set up afresh (the route may have changed the contacts' modes)."""
     from . import symbolic, symbolic_view
 
+    scene = prepare.setup(plan)
+    if any(getattr(s, "curved", False) for s in scene.surfaces):
+        res.warn("--symbolic: the equations of a scene on a curved surface are not written out in this release "
+                 "(the numeric results are exact as always)")
+        return
     exprs = {"drive": {n: j.value for n, j in p.joints.items() if j.kind == "drive"},
              "load": {i: (f.F if f.kind == "force" else [f.M]) for i, f in enumerate(p.forces)
                       if f.kind in ("force", "torque")}}
-    res.views.extend(symbolic_view.views(symbolic.derive(prepare.setup(plan), exprs)))
+    res.views.extend(symbolic_view.views(symbolic.derive(scene, exprs)))
 
 
 def _linearize(res: Result, plan, times: list[float]) -> None:
