@@ -14,8 +14,8 @@ signed distance d(r) = n·(r − y(q*)); ∇d = n, and the foot moves at ṡ = t
 * :class:`CurveRolls` — a disk of radius R rolls on it: its centre on the offset curve,
   φ₁ = d(x) − R; and no slip, t̂·ẋ + R ω = 0, integrated exactly:
   φ₂ = ∫ |y′| (1 − R k) dq (from the foot of t = 0 to the foot now; the offset curve's arc
-  length) + R θ − c₀, J₂ = (1 − R k)/(1 − k d) t̂ᵀ on x and R on θ, γ₂ = −2 k (t̂·ẋ)(n·ẋ)/(1 − k d)
-  (zero on the motion, where n·ẋ = 0).  N along n, F along t̂ at the contact, as on a line.
+  length) + R θ − c₀, J₂ = (1 − R k)/(1 − k d) t̂ᵀ on x and R on θ (γ₂ with the curvature's
+  rate dk/ds from y‴).  N along n, F along t̂ at the contact, as on a line.
 """
 
 from __future__ import annotations
@@ -46,6 +46,7 @@ class CurveData:
         self.y0 = (x1, x2)
         self.y1 = tuple(derivative(e, "q") for e in self.y0)
         self.y2 = tuple(derivative(e, "q") for e in self.y1)
+        self.y3 = tuple(derivative(e, "q") for e in self.y2)
         self.q_range = tuple(q_range) if q_range is not None else None
 
     # ------------------------------------------------------------------ geometry at q
@@ -78,6 +79,14 @@ class CurveData:
             if abs(step) <= 4 * EPS * max(1.0, abs(q)):
                 return q
         return None
+
+    def dk_ds(self, q: float) -> float:
+        """The rate of the curvature along the arc, dk/ds = (dk/dq)/|y′|."""
+        d1, d2, d3 = self._ev(self.y1, q), self._ev(self.y2, q), self._ev(self.y3, q)
+        sp = math.hypot(d1[0], d1[1])
+        cross = d1[0] * d2[1] - d1[1] * d2[0]
+        dk = (d1[0] * d3[1] - d1[1] * d3[0]) / sp ** 3 - 3 * cross * float(d1 @ d2) / sp ** 5
+        return dk / sp
 
     def foot(self, r, guess: float) -> float:
         """q* with (r − y(q*))·y′(q*) = 0, a nearest point: Newton from ``guess``, else from the
@@ -225,11 +234,30 @@ class CurveRolls(Rolls):
         return J
 
     def gamma(self, q, v, t):
+        """−J̇ẋ: row 1 k a²/(1 − k d); row 2 −(ḟ a + f k a b/(1 − k d)) with a = t̂·ẋ, b = n·ẋ,
+        f = (1 − R k)/(1 − k d), ḟ = (k̇ (d − R) + (1 − R k) k b)/(1 − k d)², k̇ = dk/ds · a/(1 − k d)."""
         i = self.body_point.body.index
-        _, tt, n, k, d, _ = self.foot.at(self._centre(q))
+        qf, tt, n, k, d, _ = self.foot.at(self._centre(q))
         vc = np.array([v[i[0]], v[i[1]]], float)
         a, b = float(tt @ vc), float(n @ vc)
-        return np.array([k * a * a / (1 - k * d), -2 * k * a * b / (1 - k * d)])
+        w = 1 - k * d
+        kdot = self.surface.dk_ds(qf) * a / w
+        f = (1 - self.R * k) / w
+        fdot = (kdot * (d - self.R) + (1 - self.R * k) * k * b) / (w * w)
+        return np.array([k * a * a / w, -(fdot * a + f * k * a * b / w)])
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ w ∇²φ on the centre's block: −w₁ k/(1 − k d) t̂t̂ᵀ for the distance, and for the arc
+        row w₂ (t̂ ∇fᵀ + f k/(1 − k d) n t̂ᵀ), the derivatives of its Jacobian f t̂ (γ's terms)."""
+        i = self.body_point.body.index
+        qf, tt, nn, k, d, _ = self.foot.at(self._centre(q))
+        wd = 1 - k * d
+        f = (1 - self.R * k) / wd
+        grad_f = (self.surface.dk_ds(qf) * (d - self.R) / wd * tt + (1 - self.R * k) * k * nn) / (wd * wd)
+        Hx = -w[0] * k / wd * np.outer(tt, tt) + w[1] * (np.outer(tt, grad_f) + f * k / wd * np.outer(nn, tt))
+        H = np.zeros((n, n))
+        H[np.ix_([i[0], i[1]], [i[0], i[1]])] = Hx
+        return H
 
     def watch(self, lam, q, v, t):
         out = [("separates", float(lam[0]))]
