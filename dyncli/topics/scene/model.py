@@ -237,7 +237,7 @@ class Scene(ProblemBase):
     """A planar mechanism: bodies, joints, forces (docs/types/scene.md)."""
 
     type: Literal["scene"]
-    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines by name")
+    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines (or curves) by name")
     bodies: dict[str, Body] = Field(description="bodies by name (`ground` is reserved)")
     joints: dict[str, Joint] = Field(default_factory=dict, description="joints by name")
     forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")

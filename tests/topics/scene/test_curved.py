@@ -64,3 +64,95 @@ def test_curved_contact_hessian_against_differences():
             col = (el.jac(q + dq) - el.jac(q - dq)).T @ w / (2 * h)
             assert H[:, j] == pytest.approx(col, abs=1e-6), name
     assert curvature.rows_hessian(s, q, np.zeros(s.m)).shape == (s.n, s.n)
+
+
+BOWL = """\
+type: scene
+title: bowl
+surfaces:
+  bowl: {curve: {x1: "%(x1)s", x2: "%(x2)s"}}
+bodies:
+  b: {shape: %(shape)s, mass: 0.7%(size)s}
+joints:
+  j: {%(joint)s: [b, bowl], at: %(at)s}
+at: [0, 0.3]
+linearize: true
+"""
+
+
+@pytest.mark.parametrize("shape, joint, I_over_mr2", [("point", "contact", 0.0), ("disk", "rolls", 0.5),
+                                                      ("ring", "rolls", 1.0)])
+@pytest.mark.parametrize("curve, rho", [(("1.3*sin(q)", "-1.3*cos(q)"), 1.3),          # a circle of radius 1.3
+                                        (("q", "q**2/(2*0.8)"), 0.8)])                   # a parabola, ρ = 0.8 at its vertex
+def test_small_oscillations_in_a_bowl(shape, joint, I_over_mr2, curve, rho):
+    """ω² = g/((ρ − r)(1 + Ī/(m r²))) at the bottom (ρ the bowl's radius of curvature there; the
+    centre's path is the offset curve, radius ρ − r), from `linearize: true` (the rows' Hessians)."""
+    r = 0.1 if shape != "point" else 0.0
+    text = BOWL % {"x1": curve[0], "x2": curve[1], "shape": shape, "size": f", radius: {r}" if r else "",
+                   "joint": joint, "at": 0.2}
+    rec = solve_one_text(text)
+    eq = rec["results"]["equilibria"]
+    stable = [e for e in eq if e["stable"]]
+    assert len(stable) == 1
+    want = math.sqrt(9.81 / ((rho - r) * (1 + I_over_mr2)))
+    assert stable[0]["frequencies"][0] == pytest.approx(want, rel=1e-9)
+
+
+@pytest.mark.parametrize("v0_sq", [4.5, 3.0])
+def test_loop_separation_against_closed_form(v0_sq):
+    """N = m (v0² − 2gR + 3gR cos φ)/R vanishes at cos φ* = (2gR − v0²)/(3gR); the time is the
+    quadrature ∫ R dφ / v (mpmath at 30 digits)."""
+    mpmath = pytest.importorskip("mpmath")
+    R, g = 0.8, 9.81
+    text = f"""\
+type: scene
+surfaces:
+  loop: {{curve: {{x1: "{R}*sin(q)", x2: "{R} - {R}*cos(q)"}}}}
+bodies:
+  block: {{shape: point, mass: 0.3, v: ["sqrt({v0_sq}*9.81*{R})", 0]}}
+joints:
+  track: {{contact: [block, loop], at: 0}}
+at: [0, 2]
+"""
+    rec = solve_one_text(text)
+    ev = rec["results"]["events"]
+    assert len(ev) == 1 and ev[0]["what"] == "separates"
+    c = (2 - v0_sq) / 3
+    phi = math.acos(c)
+    x = ev[0]["state"]["x"]["block"]
+    assert x[0] == pytest.approx(R * math.sin(phi), abs=1e-8) and x[1] == pytest.approx(R - R * c, abs=1e-8)
+    with mpmath.workdps(30):
+        v0 = mpmath.sqrt(v0_sq * g * R)
+        t = mpmath.quad(lambda p: R / mpmath.sqrt(v0 ** 2 - 2 * g * R * (1 - mpmath.cos(p))), [0, phi])
+    assert ev[0]["t"] == pytest.approx(float(t), rel=1e-8)
+    assert rec["results"]["x"]["block"][1] is None
+
+
+def test_rolling_in_a_bowl_period_and_no_slip():
+    """A disk released at 40° in a circular bowl: the bottom at T/4 = sqrt(ℓ/g) K(sin²(φ0/2)),
+    ℓ = 1.5 (R − r); the contact point at rest (v̄ = −ω r along t̂ at every requested time)."""
+    mpmath = pytest.importorskip("mpmath")
+    R, r, phi0 = 0.6, 0.08, math.radians(40)
+    text = f"""\
+type: scene
+surfaces:
+  bowl: {{curve: {{x1: "{R}*sin(q)", x2: "-{R}*cos(q)"}}}}
+bodies:
+  d: {{shape: disk, mass: 1.2, radius: {r}, angle: 0}}
+joints:
+  j: {{rolls: [d, bowl], at: {phi0}}}
+at: [0.1, 0.3, 0.5]
+find: [{{when: {{x.d.0: 0}}}}]
+"""
+    rec = solve_one_text(text)
+    ell = 1.5 * (R - r)
+    with mpmath.workdps(30):
+        quarter = mpmath.sqrt(ell / 9.81) * mpmath.ellipk(mpmath.sin(phi0 / 2) ** 2)
+    assert rec["results"]["find"][0]["t"] == pytest.approx(float(quarter), rel=1e-8)
+    res = rec["results"]
+    for k in range(3):
+        x, v, w = res["x"]["d"][k], res["v"]["d"][k], res["omega"]["d"][k][2]
+        phi = math.atan2(x[0], -x[1])
+        tangent = (math.cos(phi), math.sin(phi))
+        assert v[0] * tangent[0] + v[1] * tangent[1] == pytest.approx(-w * r, abs=1e-8)
+        assert math.hypot(*x[:2]) == pytest.approx(R - r, abs=1e-10)
