@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from tests.conftest import ROOT, error_of, solve_one_text
+from tests.conftest import ROOT, solve_one_text
 from tests.topics.scene.test_engine import _fd_check
 
 ELLIPSE = """\
