@@ -156,3 +156,34 @@ find: [{{when: {{x.d.0: 0}}}}]
         tangent = (math.cos(phi), math.sin(phi))
         assert v[0] * tangent[0] + v[1] * tangent[1] == pytest.approx(-w * r, abs=1e-8)
         assert math.hypot(*x[:2]) == pytest.approx(R - r, abs=1e-10)
+
+
+def test_gallery_ball_in_bowl():
+    """problems/scenes/ball-in-bowl.yaml against its closed forms (a pendulum of length 1.5 (R − r))."""
+    mpmath = pytest.importorskip("mpmath")
+    from tests.topics.scene.common import gallery
+
+    res = gallery("ball-in-bowl.yaml")["results"]
+    m, r, R, phi0, g = 0.5, 0.05, 0.5, math.pi / 6, 9.81
+    ell = 1.5 * (R - r)
+    assert res["equilibria"][0]["frequencies"][0] == pytest.approx(math.sqrt(g / ell), rel=1e-9)
+    with mpmath.workdps(30):
+        quarter = float(mpmath.sqrt(ell / g) * mpmath.ellipk(mpmath.sin(phi0 / 2) ** 2))
+    f = res["find"][0]
+    assert f["t"] == pytest.approx(quarter, rel=1e-8)
+    assert f["reaction"]["roll"]["N"] == pytest.approx(m * g * (1 + 4 / 3 * (1 - math.cos(phi0))), rel=1e-7)
+    assert res["reaction"]["roll"]["F"][0] == pytest.approx(m * g * math.sin(phi0) / 3, rel=1e-9)
+
+
+def test_gallery_loop_the_loop():
+    """problems/scenes/loop-the-loop.yaml: N = 0 at cos φ* = −2/3, v² = 2gR/3 there."""
+    from tests.topics.scene.common import gallery
+
+    res = gallery("loop-the-loop.yaml")["results"]
+    R, g = 0.5, 9.81
+    ev = res["events"][0]
+    assert ev["what"] == "separates" and ev["joint"] == "track"
+    x, v = ev["state"]["x"]["block"], ev["state"]["v"]["block"]
+    assert x[1] == pytest.approx(R + 2 * R / 3, abs=1e-8)
+    assert v[0] ** 2 + v[1] ** 2 == pytest.approx(2 * g * R / 3, rel=1e-7)
+    assert res["x"]["block"][2] is None
