@@ -18,7 +18,7 @@ def text(x, S) -> str:
     out = sp.sstr(shown, full_prec=False)
     out = re.sub(r"\*\*(\d)\b", lambda m: _POW.get(m.group(1), "^" + m.group(1)), out)
     out = out.replace("**", "^").replace("*", " ")
-    return out
+    return re.sub(r"Abs\(([^()]*)\)", r"|\1|", out)
 
 
 def tex(x, S) -> str:
@@ -34,7 +34,7 @@ def _side(eq, S, fmt) -> str:
     parts = []
     for c, x in eq.terms:
         cs = fmt(c, S)
-        if c.is_Add:
+        if c.is_Add or re.search(r".[+-]", cs.replace("e-", "")):      # a sum, however sympy holds it
             cs = f"({cs})" if fmt is text else rf"\left({cs}\right)"
         parts.append(f"{cs} {fmt(x, S)}")
     return " + ".join(parts)

@@ -187,3 +187,25 @@ def test_gallery_loop_the_loop():
     assert x[1] == pytest.approx(R + 2 * R / 3, abs=1e-8)
     assert v[0] ** 2 + v[1] ** 2 == pytest.approx(2 * g * R / 3, rel=1e-7)
     assert res["x"]["block"][2] is None
+
+
+def test_leaves_at_the_end_of_a_curve():
+    """A block shot along a quarter-pipe (q_range ends at the top of the quarter circle) leaves it
+    there: the event `leaves` at q = π/2, with v² = v0² − 2 g R (energy)."""
+    R, v0 = 0.5, 4.0
+    text = f"""\
+type: scene
+surfaces:
+  pipe: {{curve: {{x1: "{R}*sin(q)", x2: "{R} - {R}*cos(q)"}}, q_range: [-0.1, "pi/2"]}}
+bodies:
+  block: {{shape: point, mass: 1, v: [{v0}, 0]}}
+joints:
+  c: {{contact: [block, pipe], at: 0}}
+at: [0, 1]
+"""
+    rec = solve_one_text(text)
+    ev = rec["results"]["events"][0]
+    assert ev["what"] == "leaves"
+    x, v = ev["state"]["x"]["block"], ev["state"]["v"]["block"]
+    assert x[0] == pytest.approx(R, abs=1e-8) and x[1] == pytest.approx(R, abs=1e-8)
+    assert v[1] == pytest.approx(math.sqrt(v0 ** 2 - 2 * 9.81 * R), rel=1e-7)
