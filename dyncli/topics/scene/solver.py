@@ -105,15 +105,15 @@ def _symbolic(res: Result, p, plan) -> None:
     set up afresh (the route may have changed the contacts' modes)."""
     from . import symbolic, symbolic_view
 
-    scene = prepare.setup(plan)
-    if any(getattr(s, "curved", False) for s in scene.surfaces):
-        res.warn("--symbolic: the equations of a scene on a curved surface are not written out in this release "
-                 "(the numeric results are exact as always)")
-        return
     exprs = {"drive": {n: j.value for n, j in p.joints.items() if j.kind == "drive"},
              "load": {i: (f.F if f.kind == "force" else [f.M]) for i, f in enumerate(p.forces)
                       if f.kind in ("force", "torque")}}
-    res.views.extend(symbolic_view.views(symbolic.derive(scene, exprs)))
+    try:
+        derived = symbolic.derive(prepare.setup(plan), exprs)
+    except ValueError as exc:           # a curve's arc without a closed form
+        res.warn(f"--symbolic: the equations are not written out: {exc} (the numeric results are exact as always)")
+        return
+    res.views.extend(symbolic_view.views(derived))
 
 
 def _linearize(res: Result, plan, times: list[float]) -> None:

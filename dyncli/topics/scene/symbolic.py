@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sp
 
-from . import energy
+from . import energy, symbolic_curves
 from .symbolic_rows import Coords, Geometry, Symbols, element_rows, exact
 
 #: entries with more operations than this skip trigsimp (seconds on long entries)
@@ -63,6 +63,8 @@ class Derivation:
     notes: list[str] = field(default_factory=list)
     drives: dict = field(default_factory=dict)       # drive force symbol -> coordinate index
     closure: list[Eq] = field(default_factory=list)  # the rows left for the coordinates kept as symbols
+    state: tuple = ()                                # (q, q̇) at t = 0, the curves' parameters included
+    curves: dict = field(default_factory=dict)       # a joint on a curve -> its parameter's index
 
 
 def tidy(x):
@@ -107,6 +109,10 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
         P.f[b.index[1]] -= m * g
         if b.rigid:
             P.M.append(S.param("Ī", r"\bar{I}", b.name, b.inertia))
+    D.state = (list(scene.q0), list(scene.v0))
+    for e in system.elements:
+        if getattr(getattr(e, "surface", None), "curved", False):
+            D.curves[e.name] = symbolic_curves.add_coordinate(e, S, C, P, D, *D.state)
     for e in system.elements:
         drive = None
         if e.kind == "drive":
@@ -114,7 +120,11 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
 
             drive = symbolic.sym(exprs["drive"][e.name]).subs(symbolic.symbol("t"), t) \
                 if e.name in exprs.get("drive", {}) else sp.Function(f"f_{e.name}")(t)
-        rows, lam, named, fric = element_rows(e, G, S, drive)
+        if e.name in D.curves:
+            rows, lam, named = symbolic_curves.rows(e, G, S, D.curves[e.name])
+            fric = None
+        else:
+            rows, lam, named, fric = element_rows(e, G, S, drive)
         P.rows.append((e, rows, lam))
         if e.kind == "drive":
             D.drives[lam[0]] = e.index
@@ -198,7 +208,7 @@ def _load_exprs(given, t, values, n):
 
 def _balance(D, P, system, C) -> None:
     """m ẍ = ΣF per body (16.7, 29.5) and Ī θ̈ = ΣM about the centre (32.15)."""
-    gen = [sp.Integer(0)] * system.n
+    gen = [sp.Integer(0)] * len(C.q)
     for _e, rows, lam in P.rows:
         for r, lm in zip(rows, lam):
             for j, q in enumerate(C.q):
@@ -231,7 +241,7 @@ def _energy(D, P, G, scene) -> None:
             V -= (sp.Matrix([[exact(x) for x in ld.F(0.0)]]) * G.pos(ld.P))[0]
         elif ld.kind == "torque":
             V -= exact(ld.M(0.0)) * C.q[ld.body.index[2]]
-    state = {**{q: exact(x) for q, x in zip(C.q, scene.q0)}, **{v: exact(x) for v, x in zip(C.qd, scene.v0)}}
+    state = {**{q: exact(x) for q, x in zip(C.q, D.state[0])}, **{v: exact(x) for v, x in zip(C.qd, D.state[1])}}
     T = tidy(T.subs(D.velocity).subs(D.explicit))
     V = tidy(V.subs(D.explicit))
     E0 = tidy((T + V).subs(state))
@@ -242,7 +252,7 @@ def _energy(D, P, G, scene) -> None:
 
 def _gravity(P, system):
     """The generalized force of gravity alone (−m g on every e2 coordinate)."""
-    g = [sp.Integer(0)] * system.n
+    g = [sp.Integer(0)] * len(P.M)
     for b in system.bodies:
         g[b.index[1]] = -P.M[b.index[0]] * P.g
     return g

@@ -35,10 +35,10 @@ def choose(J: np.ndarray, prefer: list[int], k: int) -> list[int]:
     return sorted(chosen, key=prefer.index)
 
 
-def _preference(system, drives: dict) -> list[int]:
-    driven = list(drives.values())
+def _preference(system, D) -> list[int]:
+    driven = list(D.drives.values()) + list(D.curves.values())
     angles = [b.index[2] for b in system.bodies if b.rigid and b.index[2] not in driven]
-    rest = [j for j in range(system.n) if j not in driven and j not in angles]
+    rest = [j for j in range(len(D.C.q)) if j not in driven and j not in angles]
     return driven + angles + rest
 
 
@@ -78,18 +78,18 @@ def _solvable(r, q, todo, num) -> bool:
 
 def reduce(D, P, scene, t) -> None:
     system, C = scene.system, D.C
-    n = system.n
+    n = len(C.q)
     rows = [r for e, rs, _ in P.rows if e.kind != "drive" for r in rs]
-    Jn = numeric_jacobian(rows, C, D.S.values, scene.q0)
+    Jn = numeric_jacobian(rows, C, D.S.values, D.state[0])
     k = n - (rank(Jn) if rows else 0)
     if k == 0:
         D.notes.append("no degree of freedom: the joints fix every coordinate (statics)")
         return
-    idx = choose(Jn, _preference(system, D.drives), k) if rows else list(range(n))
+    idx = choose(Jn, _preference(system, D), k) if rows else list(range(n))
     D.independent = idx
     dep = [j for j in range(n) if j not in idx]
     s, sd, sdd = (sp.Matrix([v[j] for j in idx]) for v in (C.q, C.qd, C.qdd))
-    sol, a, left = _linear_part(rows, dep, C, D, scene.q0)
+    sol, a, left = _linear_part(rows, dep, C, D, D.state[0])
     D.explicit = sol
     qv = sp.Matrix([sol.get(q, q) for q in C.q])
     A_s = sp.zeros(0, k)

@@ -34,7 +34,7 @@ def _side(eq, S, fmt) -> str:
     parts = []
     for c, x in eq.terms:
         cs = fmt(c, S)
-        if c.is_Add or re.search(r".[+-]", cs.replace("e-", "")):      # a sum, however sympy holds it
+        if c.is_Add or re.search(r".[+-]|/", cs.replace("e-", "")):    # a sum or a quotient, however sympy holds it
             cs = f"({cs})" if fmt is text else rf"\left({cs}\right)"
         parts.append(f"{cs} {fmt(x, S)}")
     return " + ".join(parts)

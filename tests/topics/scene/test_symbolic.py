@@ -7,6 +7,8 @@ numeric engine's acceleration (or drive couple) at a state of the motion.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -186,3 +188,35 @@ def test_cli_text_and_latex():
     code, tex, err = run_cli("solve", str(SCENES / "compound-pendulum.yaml"), "--symbolic", "--format", "latex")
     assert code == 0, err
     assert r"\ddot{\theta}_{\mathrm{bar}}" in tex and tex.isascii()
+
+
+def test_bowl_and_loop_in_the_curve_parameter():
+    """On a curve the contact point's parameter is the coordinate: a disk rolling in a bowl of
+    radius R, (R − r)² (m + Ī/r²) q̈ = −m g (R − r) sin q; a block in a loop, m R² q̈ = −m g R sin q
+    (the bead on a wire); each against the engine's tangential acceleration along the motion."""
+    for name, R, rad in (("ball-in-bowl.yaml", sp.Rational(1, 2), "r_ball"), ("loop-the-loop.yaml", sp.Rational(1, 2), None)):
+        D, scene = _derive(name)
+        (eq,) = D.reduced
+        body = "ball" if rad else "block"
+        joint = "roll" if rad else "track"
+        qc, qdd = _sym(D, f"q_{joint}"), _sym(D, f"q̈_{joint}")
+        m, g = _sym(D, f"m_{body}"), _sym(D, "g")
+        if rad:
+            r, I = _sym(D, rad), _sym(D, "Ī_ball")
+            hand = (R - r) ** 2 * (m + I / r ** 2) * qdd + m * g * (R - r) * sp.sin(qc)
+        else:
+            hand = m * R ** 2 * qdd + m * g * R * sp.sin(qc)
+        assert sp.simplify(eq.lhs - eq.rhs - hand) == 0, name
+        (lp,), _ = load_paths([str(SCENES / name)])
+        res = solver.solve(lp.model).results
+        for k in range(2):
+            x, a = res["x"][body][k], res["a"][body][k]
+            centre_y = 0.0 if rad else 0.5
+            phi = math.atan2(x[0], centre_y - x[1])
+            tangent = (math.cos(phi), math.sin(phi))
+            rho = math.hypot(x[0], centre_y - x[1])          # the path's radius: R − r, or R
+            sub = dict(D.S.values)
+            sub[qc] = phi
+            want = (a[0] * tangent[0] + a[1] * tangent[1]) / rho
+            got = float(sp.solve((eq.lhs - eq.rhs).subs(sub), qdd)[0])
+            assert got == pytest.approx(want, rel=1e-9, abs=1e-9)
