@@ -29,24 +29,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import numpy as np
 import sympy as sp
 
 from . import energy, symbolic_curves
-from .symbolic_rows import Coords, Geometry, Symbols, element_rows, exact
-
-#: entries with more operations than this skip trigsimp (seconds on long entries)
-SIMPLIFY_MAX_OPS = 80
-
-
-@dataclass
-class Eq:
-    label: str
-    lhs: object
-    rhs: object
-    rel: str = "="
-    terms: list | None = None       # the left side as (coefficient, symbol) pairs: printed coefficient first
-
+from .symbolic_rows import Coords, Eq, Geometry, Symbols, element_rows, exact, tidy
 
 @dataclass
 class Derivation:
@@ -65,21 +51,6 @@ class Derivation:
     closure: list[Eq] = field(default_factory=list)  # the rows left for the coordinates kept as symbols
     state: tuple = ()                                # (q, q̇) at t = 0, the curves' parameters included
     curves: dict = field(default_factory=dict)       # a joint on a curve -> its parameter's index
-
-
-def tidy(x):
-    """A bounded, readable simplification (expand + trigsimp for short entries)."""
-    x = sp.Integer(0) + x
-    if x.is_Number:
-        return x
-    try:
-        cands = [x, sp.factor_terms(x)]
-        if sp.count_ops(x) <= SIMPLIFY_MAX_OPS:
-            y = sp.trigsimp(sp.expand(x))
-            cands += [y, sp.factor_terms(y)]
-        return min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
-    except Exception:  # noqa: BLE001 - simplification is cosmetic
-        return x
 
 
 @dataclass
@@ -256,10 +227,3 @@ def _gravity(P, system):
     for b in system.bodies:
         g[b.index[1]] = -P.M[b.index[0]] * P.g
     return g
-
-
-def numeric_jacobian(rows, C, values: dict, q0) -> np.ndarray:
-    """J = ∂φ/∂q at the state q0 with the symbols' values (floats)."""
-    sub = {**values, **{q: float(x) for q, x in zip(C.q, q0)}}
-    J = sp.Matrix(rows).jacobian(C.q) if rows else sp.zeros(0, len(C.q))
-    return np.array(J.subs(sub).evalf(), dtype=float) if rows else np.zeros((0, len(C.q)))

@@ -18,7 +18,7 @@ import numpy as np
 import sympy as sp
 
 from .assembly import rank
-from .symbolic import Eq, numeric_jacobian, tidy
+from .symbolic_rows import Eq, numeric_jacobian, tidy
 
 
 def choose(J: np.ndarray, prefer: list[int], k: int) -> list[int]:

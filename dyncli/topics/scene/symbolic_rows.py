@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import numpy as np
 import sympy as sp
 
 
@@ -217,3 +218,38 @@ def element_rows(e, G: Geometry, S: Symbols, drive_expr=None):
         N = S.new(f"N_{owner}", f"N_{owner}", f"N_{{{_tex_name(e.name.split(':')[0])},{_tex_name(e.P.body.name)}}}")
         return [(vec(e.w).T * G.pos(e.P))[0] - exact(e.c0)], [N], [N], None
     raise ValueError(f"no symbolic form for a {k} joint")  # pragma: no cover - every engine element is above
+
+
+#: entries with more operations than this skip trigsimp (seconds on long entries)
+SIMPLIFY_MAX_OPS = 80
+
+
+@dataclass
+class Eq:
+    label: str
+    lhs: object
+    rhs: object
+    rel: str = "="
+    terms: list | None = None       # the left side as (coefficient, symbol) pairs: printed coefficient first
+
+
+def tidy(x):
+    """A bounded, readable simplification (expand + trigsimp for short entries)."""
+    x = sp.Integer(0) + x
+    if x.is_Number:
+        return x
+    try:
+        cands = [x, sp.factor_terms(x)]
+        if sp.count_ops(x) <= SIMPLIFY_MAX_OPS:
+            y = sp.trigsimp(sp.expand(x))
+            cands += [y, sp.factor_terms(y)]
+        return min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
+    except Exception:  # noqa: BLE001 - simplification is cosmetic
+        return x
+
+
+def numeric_jacobian(rows, C, values: dict, q0) -> np.ndarray:
+    """J = ∂φ/∂q at the state q0 with the symbols' values (floats)."""
+    sub = {**values, **{q: float(x) for q, x in zip(C.q, q0)}}
+    J = sp.Matrix(rows).jacobian(C.q) if rows else sp.zeros(0, len(C.q))
+    return np.array(J.subs(sub).evalf(), dtype=float) if rows else np.zeros((0, len(C.q)))
