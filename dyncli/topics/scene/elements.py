@@ -263,6 +263,10 @@ class Cord(Element):
     def gamma(self, q, v, t):
         return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut])
 
+    def run_rate(self, q, v, r: int) -> float:
+        """d/dt of run r's length (its row's rate): negative while a slack run takes up slack."""
+        return float(sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in self.runs[r]) @ v)
+
     def tensions(self, lam) -> list[float]:
         """T per run: −λ of a taut run, 0 of a slack one."""
         out, k = [], 0

@@ -125,12 +125,13 @@ class Transitions:
     def _strike(self, t, q, v, e, rest, run, what):
         s = self.s
         T1 = s.kinetic(v)
-        vn = 0.0 if isinstance(e, Cord) else e.normal_speed(q, v)
+        speed = (lambda w: -float(e.run_rate(q, w, run))) if isinstance(e, Cord) else (lambda w: e.normal_speed(q, w))
+        vn = speed(v)
         vp, N, F, released = impulse.strike(s, q, v, t, e, rest, run)
         self.event(t, e.name, what)
         for el, _r in released:
             self.event(t, el.name, "slack" if isinstance(el, Cord) else "separates")
-        vn2 = 0.0 if isinstance(e, Cord) else e.normal_speed(q, vp)
+        vn2 = speed(vp)
         hit = Impact(t, e.name, rest, N, T1 - s.kinetic(vp), F, (vn, vn2))
         self.traj.impacts.append(hit)
         if isinstance(e, Cord) or rest == 0:

@@ -78,8 +78,10 @@ def run(scene: Scene, t_end: float, acc):
 def _phase(scene, traj, t, q, v, t_end, acc, budget):
     """One phase from (t, q, v): its route and (t_b, q, v, hit) at its end."""
     s = scene.system
-    if _effective_dof(s, q) == 0 and _steady(s) and not np.any(v):
-        return "statics", _statics(s, traj, t, q, t_end)   # held by the joints, or by friction at rest
+    if _effective_dof(s, q) == 0 and not any(e.kind == "drive" for e in s.elements):
+        # held by the joints, or by friction at rest: under loads that change in time only the
+        # forces change (watched for the instant they slip or let go)
+        return "statics", _statics(s, traj, t, q, t_end)
     if acc.method in ("auto", "closed-form"):
         got = _closed_form(s, traj, t, q, v, t_end)
         if got is not None:
@@ -114,10 +116,12 @@ def _statics(s, traj, t, q, t_end):
     lam, *_ = np.linalg.lstsq(J.T, -f, rcond=None)
     if float(np.max(np.abs(J.T @ lam + f), initial=0.0)) > 1e-9 * max(float(np.max(np.abs(f), initial=0.0)), 1e-300):
         raise NumericalError("the joints cannot hold the loads in equilibrium")
-    fixed = (np.zeros(s.n), lam, 0.0)
+    fixed = (np.zeros(s.n), lam, 0.0) if _steady(s) else None
     traj.add(motion.Piece(t, t_end, lambda _t: (q, v, 0.0), motion.modes_of(s), "statics", fixed=fixed))
     traj.method = "statics"
-    return t_end, q, v, None
+    if fixed is not None:
+        return t_end, q, v, None
+    return _first_event(s, traj, len(traj.pieces) - 1, t_end)
 
 
 def _kinematics(scene: Scene, traj, acc):
@@ -315,6 +319,8 @@ def _gap_times(s, p) -> list[float]:
 def _samples(s, p) -> int:
     """64, or one sample per 0.05 rad that a body turns over the piece (a turning point's height
     is then sampled finely enough not to step over a touch)."""
+    if p.route == "statics":            # held at rest under loads that change in time
+        return 4096
     q0, v0, _ = p.fn(p.t_a)
     q1, v1, _ = p.fn(p.t_b)
     turn = 0.0
