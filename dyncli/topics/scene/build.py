@@ -15,6 +15,7 @@ import numpy as np
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
 
+from . import contacts
 from . import elements as el
 from .dynamics import Load, SceneSystem
 from .system import BodyData, Point, SurfaceData, perp
@@ -172,7 +173,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             if j.get("mu_k") is not None and j.get("mu_s") is None:
                 mu_s = mu_k
             mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
-            out.append(el.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
+            out.append(contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
                                   e=float(j.get("e") or 0.0), stop=kind == "stop"))
         elif kind == "rolls":
             b = R.body(a[0], path + ".0")
@@ -182,7 +183,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             s = R.surface(a[1], path + ".1")
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
-            out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+            out.append(contacts.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
                                 c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"]))
         elif kind == "drive":
             bname, _, coord = a.partition(".")

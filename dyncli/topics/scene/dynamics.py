@@ -18,7 +18,8 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
-from .elements import Contact, Element, Rolls
+from .contacts import Contact, Rolls
+from .elements import Element
 from .system import BodyData, Point
 
 EPS = float(np.finfo(float).eps)

@@ -317,6 +317,3 @@ def segment_tangents(Ca, ra, Cb, rb):
     u = np.array([math.cos(psi), math.sin(psi)])
     nrm = perp(u)
     return u, np.asarray(Ca, float) + ra * nrm, np.asarray(Cb, float) + rb * nrm
-
-
-from .contacts import Contact, Rolls  # noqa: E402,F401 (the one-sided contacts, with their phases)

@@ -24,7 +24,7 @@ from dyncli import ode
 from dyncli import runner
 from dyncli.rootfind import brent
 
-from .elements import Contact, Rolls
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 

@@ -10,7 +10,7 @@ from dyncli import ode
 from dyncli.result import Result, Series
 
 from . import assembly, motion, report
-from .elements import Contact
+from .contacts import Contact
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene

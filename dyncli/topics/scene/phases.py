@@ -33,7 +33,7 @@ from .contacts import Contact, Rolls
 from .elements import Cord
 
 #: the most phases one solve follows; the motion stops there with a warning
-MAX_PHASES = 1000
+MAX_PHASES = 2000
 
 
 @dataclass

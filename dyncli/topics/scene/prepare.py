@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build
 from .dynamics import SceneSystem
-from .elements import Contact, Rolls
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
