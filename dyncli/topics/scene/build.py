@@ -184,7 +184,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             out.append(contacts.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
-                                c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"]))
+                                c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
+                                      e=float(j.get("e") or 0.0)))
         elif kind == "drive":
             bname, _, coord = a.partition(".")
             b = R.body(bname, path)

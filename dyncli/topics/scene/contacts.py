@@ -15,7 +15,6 @@ back in the contract's terms (N along n, F along d̂) and lists the quantities t
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -149,6 +148,7 @@ class Rolls(Element):
     mu_k: float | None = None
     mode: str = "roll"
     sign: float = 0.0               # direction of the contact point's slip along d̂ ("slip")
+    e: float = 0.0                  # coefficient of restitution when it lands on the surface again
 
     @property
     def rows(self):
@@ -243,12 +243,3 @@ class Rolls(Element):
         elif self.mu_s is not None:
             out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out
-
-
-def contact_speeds(e, q, v) -> tuple[float, float]:
-    """(normal, tangential) speed of a contact's point (a rolling disk's contact point)."""
-    return e.normal_speed(q, v), e.slip_speed(q, v)
-
-
-def slide_sign(vt: float) -> float:
-    return math.copysign(1.0, vt)

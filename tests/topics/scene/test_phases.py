@@ -258,3 +258,31 @@ joints:
 at: [0, 1]
 """)
     assert code == 2 and "joints.bounce.e" in err and "coefficient of restitution" in err and "Traceback" not in err
+
+
+def test_rough_impact_slides_with_coulomb_friction_of_the_impulse():
+    """A ball landing on a rough stop (μ = 0.2, e = 0.5) with 3 m/s sideways: the normal impulse
+    is (1 + e) m v_n; holding the sideways speed would need 3m > μ N̂, so the friction impulse is
+    −μ N̂ and the sideways speed after is 3 − μ (1 + e) v_n; the energy lost is T⁻ − T⁺."""
+    text = """
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: point, mass: 1, x: [0, 1], v: [3, 0]}
+joints:
+  bounce: {stop: [ball, floor], e: 0.5, mu: 0.2}
+at: [0, 0.5]
+"""
+    r = solve_one_text(text)["results"]
+    vn = mp.sqrt(2 * G)
+    im = r["impacts"][0]
+    near(im["impulse"], mp.mpf(1.5) * vn, EXACT, vn, "normal impulse")
+    near(im["impulse_F"], -mp.mpf(0.2) * mp.mpf(1.5) * vn, EXACT, vn, "friction impulse")
+    vt = 3 - mp.mpf(0.2) * mp.mpf(1.5) * vn
+    near(r["v"]["ball"][1][0], vt, EXACT, 3, "sideways speed after")
+    near(im["energy_loss"], (9 + vn**2 - vt**2 - (vn / 2) ** 2) / 2, EXACT, vn**2, "energy lost")
+    near(r["energy_residual"][1], 0, EXACT, vn**2, "energy balance")
+    bad = text.replace("x: [0, 1]", "x: [0, -1]")
+    code, _, err = run_cli("solve", "-", input=bad)
+    assert code == 2 and "wrong side of the surface 'floor'" in err and "joints.bounce" in err
