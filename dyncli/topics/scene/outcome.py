@@ -88,7 +88,7 @@ def _present(res, scene, traj, inst, times) -> None:
     res.extra["scene_draw"] = _drawing(scene)
     res.views.extend(views.views(res))
     res.covered.extend(views.COVERED)
-    res.equations = ["16.7", "29.5", "32.15", "34.20"]
+    res.equations = ["16.7", "29.5", "32.15", "34.20"] + (["28.7", "28.16", "33.2"] if traj.impacts else [])
     res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
                                                  if k in res.results], index_result="t"))
 

@@ -320,7 +320,7 @@ def _samples(s, p) -> int:
     """64, or one sample per 0.05 rad that a body turns over the piece (a turning point's height
     is then sampled finely enough not to step over a touch)."""
     if p.route == "statics":            # held at rest under loads that change in time
-        return 4096
+        return 1024
     q0, v0, _ = p.fn(p.t_a)
     q1, v1, _ = p.fn(p.t_b)
     turn = 0.0

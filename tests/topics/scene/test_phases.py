@@ -286,3 +286,23 @@ at: [0, 0.5]
     bad = text.replace("x: [0, 1]", "x: [0, -1]")
     code, _, err = run_cli("solve", "-", input=bad)
     assert code == 2 and "wrong side of the surface 'floor'" in err and "joints.bounce" in err
+
+
+def test_the_cap_on_phases_stops_the_motion_with_a_warning(monkeypatch):
+    from dyncli.topics.scene import phases
+
+    monkeypatch.setattr(phases, "MAX_PHASES", 5)
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: point, mass: 1, x: [0, 1]}
+joints:
+  bounce: {stop: [ball, floor], e: 0.9}
+at: [0, 0.5, 10]
+""")
+    r = rec["results"]
+    assert len(r["phases"]) == 5 and len(r["impacts"]) == 4
+    assert r["x"]["ball"][1] is not None and r["x"]["ball"][2] is None
+    assert any("5 phases" in w and "stops there" in w for w in rec["warnings"])
