@@ -306,3 +306,33 @@ at: [0, 0.5, 10]
     assert len(r["phases"]) == 5 and len(r["impacts"]) == 4
     assert r["x"]["ball"][1] is not None and r["x"]["ball"][2] is None
     assert any("5 phases" in w and "stops there" in w for w in rec["warnings"])
+
+
+def test_pendulum_strikes_a_wall():
+    """A bob (m = 1 kg) on a light link (L = 1 m) released 45° from the vertical strikes a wall at
+    x1 = 0.5 m (30° on the other side; a stop, e = 0.7).  Energy (34.20): v² = 2 g L (cos 30° −
+    cos 45°); time: t = ∫ dφ / sqrt((2g/L)(cos φ − cos φ0)) from −45° to 30° (mpmath quadrature).
+    The link keeps the bob on its circle, so the velocity is tangent and the wall's impulse and
+    the link's impulsive tension together reverse only its normal part with e: the bob leaves at
+    e v along the circle, and the loss is (1 − e²) ½ m v² (28.16 with the circle's m* = m)."""
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  wall: {through: [0.5, 0], direction: [0, 1]}
+bodies:
+  bob: {shape: point, mass: 1, x: ["-sqrt(0.5)", "-sqrt(0.5)"]}
+joints:
+  arm: {link: [[0, 0], bob], length: 1}
+  hit: {stop: [bob, wall], e: 0.7}
+at: [0, 1]
+""")
+    r = rec["results"]
+    phi0, phi1, e = mp.pi / 4, mp.pi / 6, mp.mpf("0.7")
+    v = mp.sqrt(2 * G * (mp.cos(phi1) - mp.cos(phi0)))
+    t = mp.quad(lambda p: 1 / mp.sqrt(2 * G * (mp.cos(p) - mp.cos(phi0))), [-phi0, 0, phi1])
+    im = r["impacts"][0]
+    near(im["t"], t, ODE_TOL, 1, "impact time")
+    near(im["energy_loss"], (1 - e**2) * v**2 / 2, 10 * ODE_TOL, v**2, "energy loss")
+    near(im["v_n_after"], -e * im["v_n_before"], EXACT, v, "restitution")
+    st_after = math.hypot(*r["events"][0]["state"]["v"]["bob"][:2])
+    near(st_after, v, ODE_TOL, v, "speed just before")
