@@ -10,7 +10,7 @@ from dyncli import ode
 from dyncli.result import Result, Series
 
 from . import assembly, motion, report
-from .contacts import Contact
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -55,7 +55,7 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     res.results.update(report.collect(instants))
     res.results["events"] = [{"t": ev.t, "joint": ev.joint, "what": ev.what, "state": inst(ev.t)}
                              for ev in traj.events if t_stop is None or ev.t <= t_stop]
-    res.results["phases"] = [ph.as_dict() for ph in traj.phases]
+    res.results["phases"] = [dict(ph.as_dict(), integrals=_phase_integrals(scene, traj, ph)) for ph in traj.phases]
     res.results["impacts"] = [im.as_dict() for im in traj.impacts]
     # the first integrals of the first phase (a later phase has its own joint set), over its times
     first = [st for t, st in zip(times, instants) if t <= traj.phases[0].t_end]
@@ -76,6 +76,13 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     _estimate(res, scene, route, acc, traj)
     _present(res, scene, traj, inst, times)
     return res
+
+
+def _phase_integrals(scene, traj, ph) -> list[str]:
+    """The names of the first integrals that hold by structure through one phase (34.20, 36.10)."""
+    p = next((p for p in traj.pieces if p.t_a >= ph.t_start), traj.pieces[-1])
+    motion.set_modes(scene.system, p.modes)
+    return holding(scene.system, p.fn(p.t_a)[0])
 
 
 def _present(res, scene, traj, inst, times) -> None:
@@ -182,27 +189,19 @@ def _work(scene, traj, route):
     return W
 
 
-def _integrals(scene, traj, times, instants) -> list:
-    s = scene.system
+def holding(s, q) -> list[str]:
+    """The first integrals that hold by the structure of the current joint set: "E" (34.20)
+    when every load is conservative and no made joint dissipates or drives; "G.0", "G.1"
+    (36.10) where a translation of the whole scene along e_i is allowed by every made row (so
+    the joint forces have no net e_i component), gravity has none (e1, or g = 0), and no load or
+    friction ties the scene to the ground along e_i."""
+    made = [e for e in s.elements if e.rows]
     out = []
-    conservative = (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
-                    and not any(e.kind == "drive" or isinstance(e, Contact) and e.mode == "slide" and e.mu_k
-                                for e in s.elements))
-    Es = [st["E"] for st in instants if st is not None]
-    if conservative and Es:
-        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
-        out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
-    out += _momenta(scene, instants)
-    return out
-
-
-def _momenta(scene, instants) -> list:
-    """G·e_i = Σ m v̄·e_i (36.10) where it holds: a translation of the whole scene along e_i is
-    allowed by every joint row (so the joint forces have no net e_i component), gravity has
-    none (e1, or g = 0), and no load or friction ties the scene to the ground along e_i."""
-    s = scene.system
-    out = []
-    J = s.jac(scene.q0)
+    if (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
+            and not any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
+                        and e.mu_k for e in made)):
+        out.append("E")
+    J = s.jac(q)
     for axis, name in ((0, "G.0"), (1, "G.1")):
         if axis == 1 and s.g != 0:
             continue
@@ -214,7 +213,23 @@ def _momenta(scene, instants) -> list:
         if any(ld.kind in ("spring", "damper") and (ld.P.body is None or ld.Q.body is None)
                or ld.kind == "force" and not (ld.constant and ld.F(0.0)[axis] == 0) for ld in s.loads):
             continue
-        if any(isinstance(e, Contact) and e.mu_k and e.surface.d[axis] != 0 for e in s.elements):
+        if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0 for e in made):
+            continue
+        out.append(name)
+    return out
+
+
+def _integrals(scene, traj, times, instants) -> list:
+    """The integrals of the first phase, over its times, with their values and drifts."""
+    s = scene.system
+    names = holding(s, scene.q0)
+    out = []
+    Es = [st["E"] for st in instants if st is not None]
+    if "E" in names and Es:
+        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
+        out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
+    for axis, name in ((0, "G.0"), (1, "G.1")):
+        if name not in names:
             continue
         vals, scale = [], 0.0
         for st in instants:

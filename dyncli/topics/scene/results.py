@@ -44,7 +44,8 @@ SCENE = TypeSpec(
           kind="list", contract=True),
         R("events", "", "", "", "one-sided joints: {t, joint, what, state}, what = separates, slack, slips, sticks, "
           "leaves, impact, taut, rests", kind="list", contract=True),
-        R("phases", "", "", "", "the motion's phases in order: {t_start, t_end, joints (those made), route}",
+        R("phases", "", "", "", "the motion's phases in order: {t_start, t_end, joints (those made), route, integrals (the names of "
+          "the first integrals that hold through it: E, G.0, G.1)}",
           kind="list", contract=True),
         R("impacts", "", "", "28.7, 28.16, 33.2", "each impact: {t, joint, e, impulse (normal, or the cord's "
           "impulsive tension) [N·s], energy_loss [J], impulse_F, v_n_before, v_n_after}", kind="list",

@@ -144,6 +144,7 @@ def test_ladder_continues_past_the_wall_on_the_floor_alone():
     t_ev = r["events"][0]["t"]
     assert [(p["joints"], p["route"]) for p in r["phases"]] == [(["at_floor", "at_wall"], "ode"), (["at_floor"], "ode")]
     assert r["phases"][0]["t_end"] == r["phases"][1]["t_start"] == t_ev
+    assert [p["integrals"] for p in r["phases"]] == [["E"], ["E", "G.0"]]      # 34.20; 36.10 once the wall is gone
     st = r["events"][0]["state"]
     assert abs(st["reaction"]["at_wall"]["N"]) < 1e-6 * st["reaction"]["at_floor"]["N"]
     vx = st["v"]["rod"][0]
