@@ -22,6 +22,7 @@ import numpy as np
 
 from dyncli import ode
 from dyncli import runner
+from dyncli.errors import NumericalError
 from dyncli.rootfind import brent
 
 from .contacts import Contact, Rolls
@@ -114,6 +115,10 @@ def watches(system, q, v, t) -> list[tuple[str, str, float]]:
     for ld in system.loads:
         if ld.kind == "spring" and ld.one_sided:
             out.append(("", "switch", ld.stretch(q)))
+    if not all(math.isfinite(g) for _, _, g in out):
+        bad = next(f"{j or 'a one-sided spring'} ({w})" for j, w, g in out if not math.isfinite(g))
+        raise NumericalError(f"the forces of the scene are not finite at t = {t:.6g} s ({bad}): its numbers "
+                             "overflow the doubles; rescale the units")
     return out
 
 
@@ -151,9 +156,13 @@ class OdeRoute:
         ``traj`` and returns (t, q, v, W, hit) with hit = (t, joint, what) or None."""
         s, n = self.system, self.n
         y0 = self.project(np.concatenate([q0, v0, [W0]]), t0)
+        if not np.all(np.isfinite(y0)):
+            raise NumericalError(f"the state of the scene is not finite at t = {t0:.6g} s: its numbers overflow the "
+                                 "doubles; rescale the units")
         cls = runner.solver_class(self.method)
+        # the budget's leg is the whole motion (routes.run): its projection of the steps left spans
+        # the phases, so a motion of many short phases is refused as early as one long integration
         solver = cls(ode.finite(self.rhs), t0, y0.copy(), t_end, rtol=runner.floor_rtol(rtol), atol=atol)
-        budget.leg(t0, t_end)
         modes = modes_of(s)
         w_old = watches(s, y0[:n], y0[n:2 * n], t0)
         # a one-sided spring that switched at t0 sits at its free length to rounding: its

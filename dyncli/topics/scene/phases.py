@@ -34,6 +34,8 @@ from .elements import Cord
 
 #: the most phases one solve follows; the motion stops there with a warning
 MAX_PHASES = 2000
+#: the most changes at one instant (phases of no length) before the solve gives up (exit 1)
+MAX_INSTANT = 50
 
 
 @dataclass

@@ -52,15 +52,21 @@ def run(scene: Scene, t_end: float, acc):
             raise InputError(f"the quadrature route needs one degree of freedom and an energy integral: {why}; use "
                              "method auto", "accuracy.method")
     budget = ode.Budget(acc.max_steps)
+    budget.leg(0.0, t_end)
     change = phases.Transitions(s, traj, acc.rtol)
     t, q, v = 0.0, scene.q0, scene.v0
-    methods = []
+    methods, still = [], 0
     while True:
         route, (t_b, q, v, hit) = _phase(scene, traj, t, q, v, t_end, acc, budget)
         methods.append(traj.method or route)
         traj.phases.append(phases.Phase(t, t_b, phases.joints_of(s), route))
         if hit is None or t_b >= t_end:
             break
+        still = still + 1 if t_b == t else 0
+        if still >= phases.MAX_INSTANT:
+            raise NumericalError(f"the joints chatter at t = {t_b:.10g} s: {hit[1]!r} changes {phases.MAX_INSTANT} times "
+                                 "at that instant (made and released again); the scene has no consistent joint "
+                                 "set there")
         if len(traj.phases) >= phases.MAX_PHASES:
             traj.stopped = t_b
             scene.warnings.append(f"the motion has {phases.MAX_PHASES} phases by t = {t_b:.10g} s (the most one solve "
