@@ -142,7 +142,6 @@ def test_a_circle_is_found():
 KNOWN = {frozenset(c) for c in (
     ("dyncli.ode", "dyncli.runner"),
     ("dyncli.topics.constrained_particle.find", "dyncli.topics.constrained_particle.solver"),
-    ("dyncli.topics.particle.orbit", "dyncli.topics.particle.solver"),
     ("dyncli.topics.rectilinear.case2", "dyncli.topics.rectilinear.solver"),
 )}
 
