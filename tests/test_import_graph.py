@@ -141,7 +141,6 @@ def test_a_circle_is_found():
 #: listed here and on a listed one that is gone.
 KNOWN = {frozenset(c) for c in (
     ("dyncli.ode", "dyncli.runner"),
-    ("dyncli.topics.rectilinear.case2", "dyncli.topics.rectilinear.solver"),
 )}
 
 
