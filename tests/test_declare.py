@@ -197,7 +197,7 @@ def test_an_unknown_dimension_never_turns_the_unit_check_off():
 
 #: the hand lists the capability flags replaced (dyncli/run.py, tests/speed/test_imports.py), as they were
 FORMER_HAND_LISTS = {
-    "symbolic": ("kinematics", "rotating-frame", "top"),
+    "symbolic": ("kinematics", "rotating-frame", "scene", "top"),
     "numpy_free": ("angular-velocity", "bearing-forces", "contact", "euler", "gyroscope", "impact", "inertia",
                    "motor-bodies", "particles", "planar-moments", "precession", "rigid-energy", "rigid-impulse",
                    "rigid-velocity", "rotating-frame", "screw", "spin-change", "top", "vibration"),
