@@ -55,6 +55,10 @@ CONSTRAINED_PARTICLE = TypeSpec(
           "energy route only: the turning points of q (null when the motion is not periodic)", kind="list", contract=True),
         R("equilibria", "relative equilibria", "", "",
           "the relative equilibria on `q_range`: a list of `{q, x, stable}` (roots of G(q))", kind="list", contract=True),
+        R("steady", "steady motions", "", "16.7, 11.11",
+          "answers to the `steady` queries: a list of `{q, x, rho, omega, v, period, N, stable, omega_small, "
+          "omega_min, omega_max, v_min, v_max}`: the rate ω that holds the particle at rest at q on the turning "
+          "curve (with friction the range of rates)", kind="list"),
         R("t_rest", "t_rest", "s", "",
           "with friction only: when the particle comes to rest on the curve for good (null if it does not)", contract=True),
     ],
