@@ -10,7 +10,7 @@ import math
 import pytest
 import sympy as sp
 
-from tests.conftest import error_of, solve_one_text
+from tests.conftest import PROBLEMS, error_of, solve_one_text, solve_path
 
 G = 9.81
 REL = 1e-12          # closed forms evaluated in double precision: a few ulps
@@ -161,3 +161,17 @@ HOOP = '{x1: "sin(q)", x2: 0, x3: "-cos(q)"}'
 def test_invalid_steady_requests(text, where, message):
     msg = error_of(text)
     assert f": {where}: " in msg and message in msg, msg
+
+
+def test_gallery_steady_motions_against_the_closed_forms():
+    recs = solve_path(PROBLEMS / "particle" / "steady-motions.yaml")
+    cone, bank, steep, parabola = (r["results"]["steady"] for r in recs)
+    th = math.radians(30)
+    assert cone[0]["omega"] == pytest.approx(math.sqrt(G / (1.2 * math.cos(th))), rel=REL)
+    assert cone[0]["N"][1] == pytest.approx(0.4 * G / math.cos(th), rel=1e-11)
+    b, mu, r = math.radians(15), 0.25, 60
+    assert bank[0]["v_min"] ** 2 == pytest.approx(r * G * (math.sin(b) - mu * math.cos(b)) / (math.cos(b) + mu * math.sin(b)), rel=1e-12)
+    assert bank[0]["v_max"] ** 2 == pytest.approx(r * G * (math.sin(b) + mu * math.cos(b)) / (math.cos(b) - mu * math.sin(b)), rel=1e-12)
+    assert steep[0]["v_max"] is None and 0.4 >= 1 / math.tan(math.radians(75))
+    assert [e["omega"] for e in parabola] == pytest.approx([math.sqrt(4 * G)] * 2, rel=REL)
+    assert [len(r["warnings"]) for r in recs] == [0, 0, 1, 0]
