@@ -167,3 +167,18 @@ def test_validate_and_answer_files(tmp_path):
     (tmp_path / "a.yaml").write_text(f"problem: c.yaml\nindex: 1\nparams: {{mA: 0.03}}\nanswers:\n  find.0.q: {q3:.6f}\n")
     code, out, err = run_cli("check", str(tmp_path / "a.yaml"))
     assert code == 0, out + err
+
+
+def test_a_keys_variant_reaches_the_source_through_the_chained_problems_params(tmp_path):
+    text = FILE.replace("  - type: impact\n    mA: 0.01\n", "  - type: impact\n    params: {mA: 0.01}\n    mA: mA\n", 1)
+    text = text.replace("      L: 1.5\n", "      L: 1.5\n      mA: 0.01\n", 1)
+    (tmp_path / "bp.yaml").write_text(text)
+    (tmp_path / "key.yaml").write_text('variants:\n  salt: "s"\n  params:\n    mA: {choice: [0.02, 0.03]}\n'
+                                       'questions:\n  - {id: "1", problem: bp.yaml, index: 1, answer: find.0.q}\n')
+    code, out, err = run_cli("variant", str(tmp_path / "key.yaml"), "--student", "bob", "--format", "yaml")
+    assert code == 0, err
+    mA = float(out.split("mA:")[1].split()[0])
+    q = _swing(mA, 2, 400, 1.5)[1]
+    (tmp_path / "bob.yaml").write_text(f'student: bob\nanswers:\n  "1": {q:.6f}\n')
+    code, out, err = run_cli("check", "--key", str(tmp_path / "key.yaml"), str(tmp_path / "bob.yaml"))
+    assert code == 0, out + err

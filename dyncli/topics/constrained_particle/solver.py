@@ -72,6 +72,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         return _steady_only(p, curve)
     _check_curve(p, curve)
     model = dynamics.Model(p, curve)
+    steadies = steady.answers(p, model) if p.steady else None     # refused before the motion is solved
     meth = p.accuracy.method
     use_quad = meth == "quadrature" or (meth == "auto" and quadrature_applies(p, curve))
     if meth == "quadrature" and not quadrature_applies(p, curve):
@@ -100,8 +101,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
                     find.ode_breaks(res.extra.pop("breaks_of")), SERIES, subdivide=1)
     equilibria.add(res, p, model)
-    if p.steady:
-        steady.add(res, p, model)
+    if steadies is not None:
+        steady.add(res, steadies)
     _no_forces(res, p)
     return res
 
@@ -110,7 +111,7 @@ def _steady_only(p, curve) -> Result:
     """Only steady queries: the rates that hold the particle, no motion (steady.py)."""
     model = dynamics.Model(p, curve)
     res = Result({}, method="closed-form", equations=["16.7", "11.11", "18.4"] + (["19.27"] if model.mu else []))
-    steady.add(res, p, model)
+    steady.add(res, steady.answers(p, model))
     _no_forces(res, p)
     return res
 

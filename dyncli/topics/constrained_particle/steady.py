@@ -74,18 +74,24 @@ def check(p) -> None:
                              f"forces.{i}")
 
 
-def add(res, p, model) -> None:
-    """``steady``: one entry per query (see the module docstring), with the warnings a student can
-    act on; InputError (exit 2, naming ``steady.N.q``) where no steady motion exists, saying why."""
+def answers(p, model) -> tuple[list[dict], list[str]]:
+    """One entry per ``steady`` query (see the module docstring) and the warnings a student can act
+    on; InputError (exit 2, naming ``steady.N.q``) where no steady motion exists, saying why."""
     check(p)
     F = _forces(p, model)
-    entries = []
+    entries, warnings = [], []
     for i, s in enumerate(p.steady):
         entry, notes = _entry(p, model, F, float(s.q), f"steady.{i}.q")
         entries.append(entry)
-        for n in notes:
-            res.warn(f"steady.{i}: {n}")
+        warnings += [f"steady.{i}: {n}" for n in notes]
+    return entries, warnings
+
+
+def add(res, answered) -> None:
+    entries, warnings = answered
     res.results["steady"] = entries
+    for w in warnings:
+        res.warn(w)
 
 
 def _geometry(p, model, q: float, where: str):
