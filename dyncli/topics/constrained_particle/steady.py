@@ -143,7 +143,7 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
     lo, hi = ranges[0] if ranges else ((0.0, math.inf) if held_anyhow else (u, u))
     out.update(omega_min=math.sqrt(lo), omega_max=None if hi == math.inf else math.sqrt(hi))
     out.update(v_min=out["omega_min"] * r, v_max=None if out["omega_max"] is None else out["omega_max"] * r)
-    notes = []
+    notes = _degrees(model, q, x)
     if held_anyhow:
         notes.append(f"the particle stays at q = {q:g} at every rate (no force along the curve to balance "
                      "there); omega is null")
@@ -153,6 +153,17 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
     if len(ranges) > 1:
         notes.append(f"friction also holds the particle at every rate above {math.sqrt(ranges[1][0]):.6g} rad/s")
     return out, notes
+
+
+def _degrees(model, q: float, x) -> list[str]:
+    """``q: 30`` meant as degrees on a hoop: a q beyond a full turn on a curve that repeats every 2π."""
+    if abs(q) <= 2 * math.pi:
+        return []
+    back = model.curve.y(q - 2 * math.pi)[:, 0]
+    if not np.all(np.abs(back - x) <= 1e-9 * max(1.0, float(np.max(np.abs(x))))):
+        return []
+    return [f"q = {q:g} is read in radians ({math.degrees(q):.4g}°, more than a full turn of a curve that repeats "
+            f"every 2π); if you meant degrees, write {q:g}*deg"]
 
 
 def _friction_ranges(alpha, beta, A, B, mu, scale_f, scale_a):

@@ -146,6 +146,15 @@ def test_bottom_of_the_hoop_is_held_at_every_rate():
 HOOP = '{x1: "sin(q)", x2: 0, x3: "-cos(q)"}'
 
 
+def test_degrees_slip_on_a_hoop_is_said():
+    """q: 30 meant as 30°: solved in radians (cos 30 > 0), with a warning naming the field and 30*deg;
+    none for 30*deg, nor on a curve that does not repeat (q is then no angle)."""
+    (w,) = solve_one_text(_problem(HOOP, "[{q: 30}]"))["warnings"]
+    assert w.startswith("steady.0:") and "30*deg" in w
+    assert not solve_one_text(_problem(HOOP, '[{q: "30*deg"}]'))["warnings"]
+    assert not solve_one_text(_problem('{x1: q, x2: 0, x3: "0.1*q**2"}', "[{q: 30}]"))["warnings"]
+
+
 @pytest.mark.parametrize("text, where, message", [
     (_problem(HOOP, "[{q: 2}]"), "steady.0.q", "ω² = -"),
     (_problem(HOOP, "[{q: 0.3}, {q: 2}]"), "steady.1.q", "points away from the axis"),
