@@ -40,13 +40,16 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     from . import steady
 
     F = Forces(p)
-    entries = steady.answers(p, F) if p.steady else None      # refused before the motion is solved
+    notes: list[str] = []
+    entries = steady.answers(p, F, notes.append) if p.steady else None      # refused before the motion is solved
     if p.steady_only:
         res = Result({}, method="closed-form", equations=["16.7", "11.11"])
     else:
         res = _motion(p)
     if entries is not None:
         res.results["steady"] = entries
+    for n in notes:
+        res.warn(n)
     return res
 
 
