@@ -76,9 +76,7 @@ def _where(file: str, line: int | None, col: int | None) -> str:
 
 
 def render_table(report: Report, console) -> None:
-    from rich import box
-    from rich.table import Table
-    from rich.text import Text
+    from dyncli.render.plain import Table, Text, box
 
     utf = (console.encoding or "").lower().replace("-", "").startswith("utf")
     ok, bad = ("✓", "✗") if utf else ("+", "x")

@@ -56,9 +56,7 @@ def summary_line(report: KeyReport) -> str:
 
 
 def render_table(report: KeyReport, console) -> None:
-    from rich import box
-    from rich.table import Table
-    from rich.text import Text
+    from dyncli.render.plain import Table, Text, box
 
     utf = (console.encoding or "").lower().replace("-", "").startswith("utf")
     ok, bad = ("✓", "✗") if utf else ("+", "x")
