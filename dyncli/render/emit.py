@@ -35,10 +35,11 @@ def _out(file, width, terminal: bool):
 
 
 class TableWriter:
-    """The terminal view, problem by problem (streamed).  A sweep's points
-    go to :class:`dyncli.render.sweeptable.SweepTable` instead (one row each)."""
+    """The terminal view, problem by problem (streamed); with ``sweep``, one
+    wide table of rows per problem (:mod:`dyncli.render.sweeptable`),
+    printed by :meth:`close`."""
 
-    def __init__(self, digits: int, units: list[str] | None, wide: bool = False):
+    def __init__(self, digits: int, units: list[str] | None, wide: bool = False, sweep: bool = False):
         from dyncli import stdio
 
         self.digits, self.units = digits, units
@@ -46,18 +47,36 @@ class TableWriter:
         self.ascii = not stdio.is_utf(sys.stdout)
         self.buf = None if self.tty else _Buffer(getattr(sys.stdout, "encoding", None) or "utf-8")
         self.console = _out(sys.stdout if self.tty else self.buf, stdio.table_width(wide), self.tty)
+        self.sweep = None
+        if sweep:
+            from dyncli.render.sweeptable import SweepTable
+
+            self.sweep = SweepTable(self.console, digits, units)
 
     def write(self, lp, result) -> None:
         from dyncli import stdio
         from dyncli.render.table import render
 
+        if self.ascii:
+            lp, result = _titled(lp, stdio.ascii_text(lp.title)), stdio.ascii_copy(result)
+        if self.sweep is not None:
+            self.sweep.write(lp, result)
+            return
         if getattr(lp, "swept", None):
             from dyncli.render.view import swept_label
 
             lp = _titled(lp, lp.title + swept_label(lp.swept, self.digits))
-        if self.ascii:
-            lp, result = _titled(lp, stdio.ascii_text(lp.title)), stdio.ascii_copy(result)
         render(self.console, lp, result, self.digits, self.units)
+        self._flush()
+
+    def close(self) -> None:
+        if self.sweep is not None:
+            self.sweep.close()
+            self._flush()
+
+    def _flush(self) -> None:
+        from dyncli import stdio
+
         if self.buf is not None:
             stdio.write_lines(self.buf.getvalue())
             self.buf.seek(0)

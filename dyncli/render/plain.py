@@ -21,6 +21,7 @@ never wrapped; a line of text wider than the width is broken between words.
 
 from __future__ import annotations
 
+import re
 import unicodedata
 
 SIMPLE, SIMPLE_HEAD, SQUARE = "simple", "simple_head", "square"
@@ -73,7 +74,10 @@ class Table:
     header) or SQUARE (a frame, a rule between rows when ``show_lines``)."""
 
     def __init__(self, title=None, caption=None, box=SIMPLE_HEAD, header_style="bold", pad_edge=True,
-                 show_lines=False, show_edge=True, show_header=True):
+                 show_lines=False, show_edge=True, show_header=True, split=False):
+        #: ``split``: a table too wide continues in further tables (its first column repeated)
+        #: instead of breaking its cells (a table of records, a wide view)
+        self.split = split
         self.title, self.caption, self.box, self.header_style = title, caption, box, header_style
         self.pad_edge, self.show_lines, self.show_edge = pad_edge, show_lines, show_edge
         self.columns: list[Column] = []
@@ -122,13 +126,17 @@ def _breaks(text: str) -> list[int]:
 
 def wrap(text: str, width: int) -> str:
     """``text`` broken at allowed spaces into lines of at most ``width``
-    columns where it can (a piece that cannot be broken stays whole)."""
+    columns where it can (a piece that cannot be broken stays whole); a
+    value (``[...]``, ``name: value, ...``) only after its commas."""
     out = []
     for line in text.split("\n"):
         while cell_len(line) > width:
-            cuts = [i for i in _breaks(line) if cell_len(line[:i]) <= width]
+            allowed = _breaks(line)
+            if line.startswith("[") or _VALUE.match(line):
+                allowed = [i for i in allowed if line[i - 1] == ","]
+            cuts = [i for i in allowed if cell_len(line[:i]) <= width]
             if not cuts:
-                cuts = _breaks(line)[:1]
+                cuts = allowed[:1]
                 if not cuts:
                     break
             i = cuts[-1]
@@ -136,6 +144,9 @@ def wrap(text: str, width: int) -> str:
             line = line[i:].lstrip()
         out.append(line)
     return "\n".join(out)
+
+
+_VALUE = re.compile(r"^[^ ]+: [-\[\d]")
 
 
 def _min_width(text: str) -> int:
@@ -160,6 +171,8 @@ def fit(table: Table, width: int | None) -> list[Table]:
     widths = [_width(c, t) for c, t in zip(cols, texts)]
     if width is None or _total(table, widths) <= width or not cols:
         return [table]
+    if table.split and len(cols) > 2:
+        return _split_table(table, texts, widths, width)
     for k in sorted(range(len(cols)), key=lambda k: -widths[k]):
         excess = _total(table, widths) - width
         if excess <= 0:
@@ -171,13 +184,17 @@ def fit(table: Table, width: int | None) -> list[Table]:
         if target < widths[k]:
             texts[k] = [wrap(x, target) for x in texts[k]]
             widths[k] = _width(cols[k], texts[k])
-    fitted = _rebuilt(table, list(range(len(cols))), texts, table.title)
-    if _total(table, widths) <= width or len(cols) < 3:
-        return [fitted]
-    return _split(table, texts, widths, width)
+    return [_rebuilt(table, list(range(len(cols))), texts, table.title)]
 
 
-def _split(table: Table, texts, widths, width) -> list[Table]:
+def _split_table(table: Table, texts, widths, width) -> list[Table]:
+    """Columns too wide for a table of their own (with the first) broken,
+    then the columns packed into tables that fit ``width``."""
+    for k in range(1, len(widths)):
+        room = width - _total(table, [widths[0], 0])
+        if widths[k] > room and not table.columns[k].no_wrap:
+            texts[k] = [wrap(x, max(room, 8)) for x in texts[k]]
+            widths[k] = _width(table.columns[k], texts[k])
     groups: list[list[int]] = [[]]
     for k in range(1, len(widths)):
         trial = [0] + groups[-1] + [k]

@@ -10,6 +10,7 @@ a view it cannot convert is named in a note.
 
 from __future__ import annotations
 
+import math
 import os
 from typing import Any
 
@@ -138,7 +139,7 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
     in_series |= set(result.covered)
     deferred: list[tuple[str, Any]] = []
-    scalars, n_rows = _results_table(), 0
+    scalars, n_rows = _results_table("; ".join(printable(n) for n in result.notes) or None), 0
     for name, val in values.items():
         if name in in_series:
             continue
@@ -147,8 +148,8 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
         if is_deferred(val):
             deferred.append((name, val))
             continue
-        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), fmt_value(val, digits),
-                        escape(unit_names.get(name, "")))
+        cell, unit = relative(result, name, val, unit_names, digits) or (fmt_value(val, digits), unit_names.get(name, ""))
+        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell, escape(unit))
         n_rows += 1
     if n_rows:
         out.print(scalars)
@@ -171,6 +172,23 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     out.print("")
 
 
+def relative(result: Result, name: str, val, unit_names: dict, digits: int) -> tuple[str, str] | None:
+    """A result the tables show relative to its scale (``Result.scales``): the
+    value and unit cells (``8.7e-11``, ``relative to 2.5e10 J``), or None."""
+    scale = result.scales.get(name)
+    raw = result.results.get(name)
+    if not scale or not _is_scalar_num(raw) or raw is None or not math.isfinite(scale) or scale <= 0:
+        return None
+    unit = unit_names.get(name, "")
+    shown = scale
+    if unit and unit != result.units.get(name, ""):
+        from dyncli.units import display_factor
+
+        fac = display_factor(result.units.get(name, ""), [unit])
+        shown = scale * fac[0] if fac else scale
+    return fmt_num(float(raw) / scale, min(digits, 3)), f"relative to {fmt_num(shown, 3)} {unit}".rstrip()
+
+
 def _print_header(out, lp, result: Result) -> None:
     from dyncli import registry
     from dyncli.render.plain import Text
@@ -184,10 +202,10 @@ def _print_header(out, lp, result: Result) -> None:
     out.print(Text("   ".join(meta_parts(result)), style="dim"))
 
 
-def _results_table():
+def _results_table(title: str | None = None):
     from dyncli.render.plain import SIMPLE, Table
 
-    t = Table(box=SIMPLE, header_style="bold", pad_edge=False)
+    t = Table(title=title, box=SIMPLE, header_style="bold", pad_edge=False)
     t.add_column("result")
     t.add_column("symbol", style="cyan")
     t.add_column("value", justify="left")
@@ -223,7 +241,7 @@ def _nested_table(title: str, val, digits: int, unit_names: dict | None = None):
     from dyncli.render.plain import SIMPLE_HEAD, Table
 
     unit_names = unit_names or {}
-    t = Table(title=escape(title), box=SIMPLE_HEAD, header_style="bold", pad_edge=False)
+    t = Table(title=escape(title), box=SIMPLE_HEAD, header_style="bold", pad_edge=False, split=True)
     if isinstance(val, list):
         keys: list[str] = []
         for rec in val:
@@ -366,7 +384,7 @@ def render_view(view, digits: int = DEFAULT_DIGITS):
             t.add_row(e(label), *[e(c) if isinstance(c, str) else fmt_num(c, digits) for c in comps])
         return t
     if isinstance(view, Table):
-        t = PTable(title=e(view.title), caption=e(view.note), box=SIMPLE_HEAD, header_style="bold")
+        t = PTable(title=e(view.title), caption=e(view.note), box=SIMPLE_HEAD, header_style="bold", split=True)
         for c in view.columns:
             t.add_column(e(c), justify="right")
         for row in view.rows:

@@ -13,8 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, relative, series_columns
 from dyncli.render.tableviews import convert_view
-from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, series_columns
 from dyncli.result import FrameTable, Result, Table
 
 
@@ -55,8 +55,10 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
         if is_deferred(val):
             deferred.append((name, val))
         else:
-            rows.append([name, result.symbols.get(name, ""), fmt_value(val, digits), unit_names.get(name, "")])
-    grids = [Grid(None, ["result", "symbol", "value", "unit"], rows, ["l", "l", "l", "l"], unit_column=3)] if rows else []
+            cell, unit = relative(result, name, val, unit_names, digits) or (fmt_value(val, digits),
+                                                                             unit_names.get(name, ""))
+            rows.append([name, result.symbols.get(name, ""), cell, unit])
+    grids = [Grid("; ".join(result.notes) or None, ["result", "symbol", "value", "unit"], rows, ["l", "l", "l", "l"], unit_column=3)] if rows else []
     grids += [_series(s, values, unit_names, result.symbols, digits) for s in result.series]
     grids += [_deferred(result.symbols.get(n, n), v, digits, unit_names) for n, v in deferred]
     grids += [_view(convert_view(v, units)[0], digits) for v in result.views]

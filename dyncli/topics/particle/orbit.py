@@ -101,6 +101,7 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     resid, scale = sv._energy_residual(p, F, S)
     res = Result(sv._reported(S, resid), method="exact", equations=_equations(),
                  series=[Series("t", times, list(sv.REPORTED) + ["distance"])])
+    res.scales["energy_residual"] = scale
     sv._report_terms(res, p, F, traj, S)
     res.results["orbit"] = orbit_results(orb)
     _warn_surface(res, p, orb)

@@ -61,6 +61,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     S = _at_times(traj, F, times, steps=True)
     resid, scale = _energy_residual(p, F, S)
     res.results.update(_reported(S, resid))
+    res.scales["energy_residual"] = scale
     res.series.append(Series("t", times, list(REPORTED) + ["distance"]))
     _report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
