@@ -8,7 +8,7 @@ from rich import box as rbox
 from rich.table import Table as RTable
 from rich.text import Text as RText
 
-from dyncli.render.plain import SIMPLE, SQUARE, Table, Text, _clean, _text, parts
+from dyncli.render.plain import SIMPLE, SQUARE, Table, Text, _clean, _text, cell_len, parts
 
 _BOXES = {SIMPLE: rbox.SIMPLE, SQUARE: rbox.SQUARE}
 
@@ -35,7 +35,7 @@ def _cell(x, justify: str) -> RText:
 def table(console, t: Table) -> None:
     """Print ``t`` (fitted already) on a rich console: the title and caption
     as the lines of the plain layout, the table by rich."""
-    title, _, caption = parts(t)
+    title, body, caption = parts(t)
     rt = RTable(box=_BOXES.get(t.box, rbox.SIMPLE_HEAD), header_style=t.header_style or None, pad_edge=t.pad_edge,
                 show_lines=t.show_lines, show_edge=t.show_edge)
     for c in t.columns:
@@ -44,7 +44,15 @@ def table(console, t: Table) -> None:
         rt.add_row(*[_cell(c.cells[i], c.justify) for c in t.columns])
     for ln in title:
         line(console, RText(ln, style="italic"))
-    console.print(rt)
+    # a table that cannot fit (a vector wider than the screen) is drawn at its own width, as off a terminal
+    need = max(map(cell_len, body), default=0)
+    width = console.width
+    if need > width:
+        console.width = need
+    try:
+        console.print(rt, crop=False)
+    finally:
+        console.width = width
     for ln in caption:
         line(console, RText(ln, style="italic"))
 

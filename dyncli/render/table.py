@@ -206,10 +206,10 @@ def _results_table(title: str | None = None):
     from dyncli.render.plain import SIMPLE, Table
 
     t = Table(title=title, box=SIMPLE, header_style="bold", pad_edge=False)
-    t.add_column("result")
-    t.add_column("symbol", style="cyan")
+    t.add_column("result", no_wrap=True)
+    t.add_column("symbol", style="cyan", no_wrap=True)
     t.add_column("value", justify="left")
-    t.add_column("unit", style="dim")
+    t.add_column("unit", style="dim", no_wrap=True)
     return t
 
 
