@@ -99,7 +99,9 @@ def _text(x) -> str:
 
 
 def _clean(s: str) -> str:
-    return "\n".join(ln.rstrip() for ln in s.split("\n"))
+    """A cell's lines without trailing spaces (and without a last empty line), as rich draws them."""
+    s = "\n".join(ln.rstrip() for ln in s.split("\n"))
+    return s[:-1] if s.endswith("\n") else s
 
 
 # ------------------------------------------------------------------ fitting
@@ -154,7 +156,7 @@ def _min_width(text: str) -> int:
 
 
 def _width(col: Column, texts: list[str]) -> int:
-    return max([cell_len(ln) for x in [_text(col.header)] + texts for ln in x.split("\n")])
+    return max([cell_len(ln) for x in [_clean(_text(col.header))] + texts for ln in x.split("\n")])
 
 
 def _total(table: Table, widths: list[int]) -> int:
@@ -234,8 +236,9 @@ def parts(table: Table) -> tuple[list[str], list[str], list[str]]:
     """The title's, the table's and the caption's lines of a fitted table."""
     cols = table.columns
     cells = [[_clean(_text(x)).split("\n") for x in c.cells] for c in cols]
-    heads = [_text(c.header) for c in cols]
-    widths = [max([cell_len(h)] + [cell_len(ln) for cl in cc for ln in cl]) for h, cc in zip(heads, cells)]
+    heads = [_clean(_text(c.header)) for c in cols]
+    widths = [max([cell_len(ln) for ln in h.split("\n")] + [cell_len(ln) for cl in cc for ln in cl])
+              for h, cc in zip(heads, cells)]
     square = table.box == SQUARE
     edge = " " if table.pad_edge else ""
     v = "│" if square else " "
@@ -254,7 +257,11 @@ def parts(table: Table) -> tuple[list[str], list[str], list[str]]:
             "─" * total
 
     inner_rule = rule("├", "┼", "┤") if square else (" " + "─" * (total - 2) + " " if table.show_edge else "─" * total)
-    body = [row(heads), inner_rule]
+    hl = [h.split("\n") for h in heads]
+    n = max(map(len, hl), default=1)
+    hl = [[""] * (n - len(h)) + h for h in hl]            # a header sits at the bottom of its row
+    body = [row([h[k] for h in hl]) for k in range(n)]
+    body.append(inner_rule)
     for i in range(table.n_rows):
         if square and i and table.show_lines:
             body.append(inner_rule)

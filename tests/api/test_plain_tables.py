@@ -20,7 +20,7 @@ from dyncli.render import plain
 from tests.conftest import ROOT
 
 FILES = sorted(str(p) for p in (ROOT / "problems").rglob("*.yaml") if "course-example" not in p.parts)
-UNITS = ["mm", "deg", "ms", "kN", "kJ", "g", "kW"]
+UNITS = ["mm", "deg", "ms", "kN", "kJ", "g", "kW", "rpm"]
 
 
 @pytest.fixture(scope="module")
@@ -124,30 +124,34 @@ def test_random_cells_match_rich(title, head, rows, style, width):
 
 # ------------------------------------------------------------------ --units over every type
 
-_SI = re.compile(r"\[(m|s|N|J|W|kg|rad|rad/s|m/s)\]")
+_BRACKET = re.compile(r"\[([^\[\]]+)\]")
 
 
 def test_units_convert_every_table_or_say_so(outcomes):
-    """Every example with --units mm,deg,ms,kN,kJ,g,kW: no table column still
-    shows a convertible SI unit ([m], [rad], [s], [N], [J], [kg], [W]...)
-    unless the view is named in a '--units: not applied to' note; the
-    results' unit column likewise."""
+    """Every example with --units mm,deg,ms,kN,kJ,g,kW,rpm: no unit left in a
+    column header (``[m]``) or in the results' unit column that one of these
+    would convert, unless a '--units: not applied to' note names the view."""
     from dyncli.render.table import render
+    from dyncli.units import display_factor
 
     bad = []
     for o in outcomes:
         buf = io.StringIO()
         render(plain.Out(buf, None, no_color=True), o.problem, o.result, 6, UNITS)
         text = buf.getvalue()
-        noted = "--units: not applied to" in text
-        left = _SI.findall(text)
-        if left and not noted:
-            bad.append(f"{o.problem.file}#{o.problem.index}: {sorted(set(left))}")
-        for ln in text.splitlines():
+        if "--units: not applied to" in text:
+            continue
+        lines = text.splitlines()
+        heads = [ln for ln, nxt in zip(lines, lines[1:]) if nxt.strip().startswith("─")]   # header rows
+        shown = {u for ln in heads for u in _BRACKET.findall(ln)}
+        for ln in lines:
             cells = ln.split()
-            if len(cells) >= 3 and cells[-1] in ("m", "s", "N", "J", "rad", "rad/s", "m/s", "kg", "W") \
-                    and cells[0] in o.result.results:
-                bad.append(f"{o.problem.file}#{o.problem.index}: {ln.strip()}")
+            if len(cells) >= 2 and cells[0] in o.result.results and o.result.units.get(cells[0]):
+                shown.add(cells[-1])
+        left = sorted(u for u in shown if display_factor(u, UNITS) is not None
+                      and display_factor(u, UNITS)[1] != u)
+        if left:
+            bad.append(f"{o.problem.file}#{o.problem.index}: {left}")
     assert not bad, "\n".join(bad[:20])
 
 
