@@ -165,8 +165,8 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
         if not converted:
             unconverted.append(view.title)
     if unconverted:
-        out.print(Text(f"--units: not applied to {', '.join(printable(u) for u in unconverted)} "
-                       "(its values are in SI units)", style="yellow"))
+        out.print(Text(f"--units: not applied to {'; '.join(printable(u) for u in unconverted)} "
+                       "(units not named in the table: SI)", style="yellow"))
     for w in result.warnings:
         out.print(Text("warning: " + printable(w), style="yellow"))
     out.print("")

@@ -22,7 +22,9 @@ def _numeric(x: Any) -> bool:
         return any(_numeric(v) for v in x)
     if isinstance(x, dict):
         return any(_numeric(v) for v in x.values())
-    return isinstance(x, (int, float)) or hasattr(x, "__float__")
+    if isinstance(x, int):
+        return False                  # a count or an index (#, mode, equilibrium): no unit
+    return isinstance(x, float) or hasattr(x, "__float__")
 
 
 def _relabel(label: Any, wanted: list[str]) -> tuple[Any, float | None, bool]:
@@ -45,6 +47,15 @@ def convert_view(view, wanted: list[str] | None):
 
     if not wanted:
         return view, True
+    title, f, named = _relabel(view.title, wanted)
+    if named:                       # a title naming the unit of every number: "Ī [kg·m²]"
+        if f is None:
+            return view, True
+        if isinstance(view, Table):
+            return replace(view, title=title, rows=[[_scale(c, f) if _numeric(c) else c for c in r]
+                                                    for r in view.rows]), True
+        return replace(view, title=title, rows=[(lb, [_scale(c, f) if _numeric(c) else c for c in comps])
+                                                for lb, comps in view.rows]), True
     ok = True
     if isinstance(view, Table):
         columns, rows = list(view.columns), [list(r) for r in view.rows]
