@@ -11,7 +11,6 @@ the warnings.  The cells are the same strings (same digits, same units).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, relative, series_columns
 from dyncli.render.tableviews import convert_view
