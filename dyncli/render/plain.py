@@ -326,6 +326,9 @@ class Out:
         return self._rich
 
     def print(self, obj="") -> None:
+        if not isinstance(obj, (Table, Text, str)):          # a rich renderable (benchmarks of the former views)
+            self._console().print(obj)
+            return
         if isinstance(obj, Table):
             for t in fit(obj, self.width):
                 self._table(t)
