@@ -68,14 +68,23 @@ def main() -> None:
 
         # in-process: cache on vs off
         os.chdir(tmp)
-        from dyncli.check.engine import Checker
+        from dyncli.check.problemfiles import ProblemFiles
+        from dyncli.check.selfstudy import SelfStudy as Checker
 
-        class NoCache(Checker):
-            def _solve(self, lp):
+        class Uncached(ProblemFiles):
+            def solve(self, lp, validated=True):
+                from dyncli.loader import validate
                 from dyncli.run import solve_one
 
-                self.files.solves += 1
+                if not validated:
+                    validate(lp)
+                self.solves += 1
                 return solve_one(lp, self.options)
+
+        class NoCache(Checker):
+            def __init__(self):
+                super().__init__()
+                self.files = Uncached()
 
         Checker().check_paths(names)   # warm imports and caches of the OS
         best: dict[str, tuple[float, int]] = {}

@@ -16,6 +16,11 @@ quad, same rtol/atol) as the baseline, with the time ratio dyncli/scipy per
 route.  Writes docs/accuracy.png (error vs time) and docs/accuracy.md.
 
 Usage: python benchmarks/work_precision.py [--quick] [--no-write]
+       python benchmarks/work_precision.py --replot   # docs/accuracy.png again from docs/accuracy.md's tables
+
+The figure is sized for the docs' text column (640 px wide, every text 9 pt,
+shown at its own size) and tells its routes apart by colour AND marker
+(dyncli.render.plot.series_style: sixteen distinct pairs).
 """
 
 from __future__ import annotations
@@ -138,7 +143,12 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="three rtols, one repeat")
     ap.add_argument("--no-write", action="store_true", help="do not write docs/accuracy.{png,md}")
+    ap.add_argument("--replot", action="store_true", help="redraw docs/accuracy.png from docs/accuracy.md (no timing)")
     args = ap.parse_args()
+    if args.replot:
+        plot(rows_from_md(ROOT / "docs" / "accuracy.md"), ROOT / "docs" / "accuracy.png")
+        print("wrote docs/accuracy.png")
+        return
     warnings.simplefilter("ignore")
     from tests.accuracy.cases import available_cases
 
@@ -192,32 +202,69 @@ def route_summary(rows):
     return out
 
 
+def rows_from_md(path: Path) -> list[tuple]:
+    """The rows of the plot read back from the tables write_md wrote (the
+    measured times and errors, no new timing)."""
+    from types import SimpleNamespace
+
+    def num(cell: str):
+        cell = cell.strip().rstrip("*")
+        if cell in ("", "—"):
+            return None
+        return math.inf if cell == "missed" else float(cell)
+
+    rows, case = [], None
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("### "):
+            case = SimpleNamespace(name=line[4:].strip())
+        elif case is not None and line.startswith("| 1e"):
+            c = [x.strip() for x in line.strip("|").split("|")]
+            if c[1] == "failed":
+                continue
+            t, err, bt, berr = num(c[2]), num(c[3]), num(c[7]), num(c[8])
+            rows.append((case, float(c[0]), t / 1000, err, num(c[4]), None, "",
+                         bt / 1000 if bt is not None else None, berr, None, c[1]))
+    return rows
+
+
 def plot(rows, path: Path) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
 
-    fig, ax = plt.subplots(figsize=(9, 6))
+    from dyncli.render.plot import LABEL_PT, LABEL_PX_KEY, series_style, smallest_text_px
+
+    plt.rcParams.update({"font.size": LABEL_PT})
     names = []
     for r in rows:
         if r[0].name not in names:
             names.append(r[0].name)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig = plt.figure(figsize=(6.4, 4.75 + 0.2 * (len(names) + 2)), dpi=100)
+    ax = fig.add_axes([0.13, 1 - 4.0 / fig.get_figheight(), 0.84, 3.5 / fig.get_figheight()])
     for i, n in enumerate(names):
+        col, mk = series_style(i)
         rs = [r for r in rows if r[0].name == n and r[2] is not None]
-        col = colors[i % len(colors)]
-        ax.loglog([r[2] * 1000 for r in rs], [max(r[3], 1e-17) for r in rs], "o-", color=col, label=f"dyncli: {n}")
+        ax.loglog([r[2] * 1000 for r in rs], [max(r[3], 1e-17) for r in rs], "-", marker=mk, color=col,
+                  markersize=6, label=n)
         bs = [r for r in rs if r[7] is not None and math.isfinite(r[8])]
         if bs:
-            ax.loglog([r[7] * 1000 for r in bs], [max(r[8], 1e-17) for r in bs], "x--", color=col, alpha=0.6)
+            ax.loglog([r[7] * 1000 for r in bs], [max(r[8], 1e-17) for r in bs], "--", marker=mk, color=col,
+                      markersize=6, markerfacecolor="none", alpha=0.7)
     ax.set_xlabel("time per solver call [ms] (in-process)")
     ax.set_ylabel("true error (max abs vs 50-digit reference)")
-    ax.set_title("Work-precision: dyncli (solid, rtol 1e-3 … 1e-13) vs plain scipy (dashed)")
+    ax.set_title("Work-precision, rtol 1e-3 … 1e-13: dyncli (solid, filled)\nvs a plain scipy script "
+                 "(dashed, hollow; same colour and marker)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    handles, labels = ax.get_legend_handles_labels()
+    handles += [Line2D([], [], color="0.3", linestyle="-", marker="o"),
+                Line2D([], [], color="0.3", linestyle="--", marker="o", markerfacecolor="none")]
+    labels += ["dyncli", "plain scipy (solve_ivp DOP853 / quad)"]
+    fig.legend(handles, labels, loc="upper left", bbox_to_anchor=(0.02, 1 - 4.55 / fig.get_figheight()),
+               ncol=1, frameon=False, fontsize=LABEL_PT)
+    fig.savefig(path, dpi=100, metadata={"Software": None, LABEL_PX_KEY: f"{smallest_text_px(fig, 100):.2f}"})
+    plt.close(fig)
 
 
 def write_md(rows, summary, path: Path, rtols) -> None:

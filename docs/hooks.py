@@ -313,6 +313,21 @@ def types_index() -> str:
     return "\n".join(out)
 
 
+def gallery_rows(label: str) -> str:
+    """The gallery's table of the declared examples (``TypeSpec.gallery``) whose type falls in the
+    chapter ``label`` ("§16–§22"), one row each: the file, the sections, the declared line."""
+    _path()
+    from dyncli import registry
+
+    lo, hi = (int(n) for n in re.findall(r"\d+", label)[:2])
+    rows = []
+    for name, info in registry.TYPES.items():
+        nums = [int(n) for n in re.findall(r"§\s*(\d+)", info.section)]
+        if info.gallery and info.example and nums and lo <= min(nums) <= hi:
+            rows.append(f"| `{info.example}` | {info.section}: {info.gallery} |")
+    return "\n".join(["| file | what it shows |", "|---|---|"] + rows) if rows else ""
+
+
 _FIELDS = re.compile(r"<!--\s*fields:\s*([\w-]+)\s*-->")
 _INCLUDE = re.compile(r"<!--\s*include:\s*(\S+)\s*-->")
 
@@ -349,7 +364,7 @@ def on_config(config, **kwargs):
 # generated regions in the files
 
 
-_REGION = re.compile(r"<!--\s*(?P<kind>fields|include|types-index|results|results-reference)(?::\s*(?P<arg>\S+?))?\s*-->\n"
+_REGION = re.compile(r"<!--\s*(?P<kind>fields|include|types-index|results|results-reference|gallery)(?::\s*(?P<arg>\S+?))?\s*-->\n"
                      r"(?:(?P<body>.*?)<!--\s*/(?P=kind)\s*-->\n?)?", re.S)
 
 
@@ -384,6 +399,8 @@ def generate(kind: str, arg: str | None, listed: dict[str, set] | None = None) -
         text = reference(registry.TYPES)
     elif kind == "include":
         text = include(arg)
+    elif kind == "gallery":
+        text = gallery_rows(arg)
     else:
         text = types_index()
     return text.rstrip("\n") + "\n"

@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import Any, Mapping
 
 from dyncli.errors import InputError, NumericalError
-from dyncli.frames import Sweep
 from dyncli.results_map import results_of, units_of
 
 
@@ -208,5 +207,26 @@ def sweep(source: Any, values: Mapping[str, Any], **overrides: Any) -> Sweep:
     """Solve for every combination of ``values`` (``{"k": [100, 200],
     "zeta": numpy.linspace(0.1, 0.5, 5)}``): one :class:`Solution` per
     problem and point, each with ``swept``, in a list that also has
-    ``to_frame()`` (dyncli.frames.Sweep)."""
+    ``to_frame()`` (dyncli.api.Sweep)."""
     return Sweep(_solve(source, overrides, values))
+
+
+class Sweep(list):
+    """The solutions of ``dyncli.sweep``: a list (one :class:`~dyncli.api.Solution`
+    per problem and point) that also gives them as a table."""
+
+    def to_frame(self, long: bool = False):
+        """A pandas DataFrame: one row per sweep point (``long``: per point and
+        reported time), the swept paths then the flattened results as columns;
+        ``df.attrs["units"]`` maps each column to its SI unit."""
+        from dyncli.frames import frame
+
+        return frame(list(self), long)
+
+    def to_xarray(self, problem: int | None = None):
+        """An xarray Dataset on the grid of the swept values (one dimension per
+        swept path, plus ``t`` for the results over time) of one problem's
+        points (``problem``: its index, needed when the sweep holds several)."""
+        from dyncli.xarrays import dataset
+
+        return dataset(list(self), problem)

@@ -13,6 +13,8 @@ from typing import List, Optional
 import typer
 
 from dyncli import __version__
+from dyncli.check.emit import FORMATS as CHECK_FORMATS, GRADED_ONLY
+from dyncli.render.emit import FORMATS as SOLVE_FORMATS
 
 app = typer.Typer(
     name="dyncli",
@@ -26,13 +28,7 @@ app = typer.Typer(
 _state = {"debug": False}
 
 
-class Format(str, Enum):
-    table = "table"
-    json = "json"
-    yaml = "yaml"
-    csv = "csv"
-    markdown = "markdown"
-    latex = "latex"
+Format = Enum("Format", {f: f for f in SOLVE_FORMATS}, type=str)   # the renderer's one list of formats
 
 
 def _version(value: bool):
@@ -89,13 +85,7 @@ def validate(
     raise typer.Exit(validate_command(files, set_))
 
 
-class CheckFormat(str, Enum):
-    table = "table"
-    json = "json"
-    junit = "junit"
-    github = "github"
-    gradescope = "gradescope"
-    csv = "csv"
+CheckFormat = Enum("CheckFormat", {f: f for f in CHECK_FORMATS}, type=str)   # one emitter each (dyncli.check.emit)
 
 
 class IdFrom(str, Enum):
@@ -141,7 +131,8 @@ def check(
         raise typer.Exit(_graded(key, files, format, reveal, output, write_key, selftest, n, student, root, upload,
                                  id_from, roster, stats, compare))
     keyonly = [name for name, given in (("--upload", upload), ("--roster", roster is not None), ("--stats", stats),
-                                        ("--compare", compare is not None), ("--format csv", format is CheckFormat.csv),
+                                        ("--compare", compare is not None),
+                                        (f"--format {format.value}", format.value in GRADED_ONLY),
                                         ("--selftest", selftest), ("--student", student is not None),
                                         ("--id-from", id_from is not IdFrom.student)) if given]
     if keyonly:

@@ -41,3 +41,69 @@ def limit(seconds: float):
     finally:
         signal.setitimer(timer, 0)
         signal.signal(signal.SIGVTALRM, old)
+
+
+# ---------------------------------------------------------------------------
+# the CPU budget of one solve (issue #29: no document a student could write takes more than ~2 s
+# of CPU before it is answered or refused with what to change)
+
+import contextvars  # noqa: E402
+import time  # noqa: E402
+
+#: the CPU (seconds, this thread's) a solve may take when its file sets neither
+#: ``accuracy.max_cpu`` nor ``accuracy.max_steps``; a run projected beyond it is refused
+SOLVE_CPU = 2.0
+#: below this much CPU used no projection is made (one noisy probe must not refuse a cheap run)
+GRACE = 0.25
+
+_SOLVE: contextvars.ContextVar = contextvars.ContextVar("dyncli_solve_cpu", default=None)
+
+
+@contextlib.contextmanager
+def solve_budget(accuracy):
+    """The CPU budget of one solve, read by the work budgets of its routes
+    (:func:`over_budget`): ``accuracy.max_cpu`` when given; else :data:`SOLVE_CPU` unless
+    ``accuracy.max_steps`` is given (a user who sized the work in steps chose it); ``None``
+    for types without accuracy controls."""
+    limit = getattr(accuracy, "max_cpu", None)
+    if limit is None and accuracy is not None and getattr(accuracy, "max_steps", None) is None:
+        limit = SOLVE_CPU
+    token = _SOLVE.set(None if limit is None else (time.thread_time(), float(limit)))
+    try:
+        yield
+    finally:
+        _SOLVE.reset(token)
+
+
+@contextlib.contextmanager
+def extra(seconds: float):
+    """``seconds`` more CPU for the block (the looser check solve that replaces one refused by the
+    budget: the run's own estimate is worth a little more than the budget)."""
+    s = _SOLVE.get()
+    token = _SOLVE.set(s if s is None or not seconds else (s[0], s[1] + seconds))
+    try:
+        yield
+    finally:
+        _SOLVE.reset(token)
+
+
+def used() -> tuple[float, float] | None:
+    """(CPU seconds used by the solve in progress, its budget), or None without a budget."""
+    s = _SOLVE.get()
+    return None if s is None else (time.thread_time() - s[0], s[1])
+
+
+def over_budget(cpu_leg0: float, done: float, left: float) -> tuple[float, float] | None:
+    """(the projected CPU of the solve, its budget) when a run that has used ``thread_time() −
+    cpu_leg0`` for ``done`` of its span, with ``left`` to go, would end beyond the budget;
+    else None."""
+    s = used()
+    if s is None:
+        return None
+    spent, limit = s
+    if spent > limit:
+        return spent, limit
+    if spent < GRACE or left <= 0:
+        return None
+    projected = spent + (time.thread_time() - cpu_leg0) * left / max(done, 1e-300)
+    return (projected, limit) if projected > limit else None

@@ -103,19 +103,21 @@ class TypeSpec:
     test-only type); they are imported only when used (``plots`` may be
     None; a missing plots module means no extra plots).  ``template`` and
     ``example`` are paths relative to the repository root.  ``package`` is
-    filled by the registry ("dyncli.topics.rectilinear").
+    filled by the registry ("dyncli.topics.rectilinear").  ``gallery`` is the row of
+    docs/gallery.md for the example (what it shows, one line; the file and sections are added):
+    the gallery's generated regions list it, so the page is never edited by hand for a new type.
     """
 
     def __init__(self, name: str, title: str, sections: str, model: Any, solve: Any = "solver:solve",
                  results: list[ResultSpec] | None = None, plots: Any = "plots:plots", template: str = "",
-                 example: str = "", package: str = "", motion: dict | None = None):
+                 example: str = "", package: str = "", motion: dict | None = None, gallery: str = ""):
         self.name, self.title, self.sections, self.model, self.solve = name, title, sections, model, solve
         #: a type whose solver reports its motion at the times of ``at`` and answers ``find`` by
         #: solving at other times (dyncli.motion_find.resolved): ``{"rates": {result: its rate},
         #: "fast": [angular rates that set the search grid]}``; None: the solver answers find itself
         self.motion = motion
         self.results = list(results or [])
-        self.plots, self.example, self.package = plots, example, package
+        self.plots, self.example, self.package, self.gallery = plots, example, package, gallery
         self.template = template or f"dyncli/templates/{name}.yaml"
         self._exact: dict[str, ResultSpec] = {}
         self._patterns: list[ResultSpec] = []

@@ -104,6 +104,34 @@ def ellipj(u, m: float, m1: float | None = None):
     return sn, cn, dn
 
 
+def ellipj_half(r: float, m: float, m1: float, K: float):
+    """sn, cn, dn of a float |r| <= K, m1 = 1 − m exactly, each to a few ε relative even where
+    cn, dn are tiny next to m = 1: past K/2 from the reflection ρ = K − |r| (sn = cd ρ,
+    cn = √m1 sd ρ, dn = √m1 nd ρ), and on [0, K/2] by the descending Landen (Gauss)
+    transformation carried back up as products (DLMF 22.7.1-22.7.3; dn = √(m1 + m cn²) at
+    each level), from sin, cos of w <= π/4 (no cancellation anywhere)."""
+    a, far = abs(r), abs(r) > 0.5 * K
+    top, bot, ks, m1s = 1.0, math.sqrt(m1), [], [m1]
+    while top - bot > EPS * top:
+        ks.append((top - bot) / (top + bot))
+        top, bot = 0.5 * (top + bot), math.sqrt(top * bot)
+        m1s.append((bot / top) ** 2)
+    w = (K - a if far else a) * top
+    s1, c1, d1 = math.sin(w), math.cos(w), 1.0
+    for k, mc in zip(reversed(ks), reversed(m1s[:-1])):
+        d = 1.0 + k * s1 * s1
+        s1, c1 = (1.0 + k) * s1 / d, c1 * d1 / d
+        d1 = math.sqrt(mc + (m if mc is m1 else 1.0 - mc) * c1 * c1)
+    q = math.copysign(1.0, r)
+    return (q * c1 / d1, math.sqrt(m1) * s1 / d1, math.sqrt(m1) / d1) if far else (q * s1, c1, d1)
+
+
+def legendre_F(s, c, d2):
+    """F(φ | m) for |φ| <= π/2 from s = sin φ, c = cos φ >= 0 and d2 = 1 − m sin²φ (formed by the
+    caller without cancellation): s·R_F(c², d2, 1)."""
+    return s * elliprf(c * c, d2, 1.0)
+
+
 # ---------------------------------------------------------------- Carlson's duplication
 # Each step x ← (x + λ)/4 (λ = √x√y + √x√z + √y√z) leaves the integral unchanged and shrinks the
 # spread of the arguments about their mean A by 4; once 4^(−n) Q < A the degree-7 series in the

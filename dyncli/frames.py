@@ -183,22 +183,3 @@ def frame(sols: list, long: bool):
     df.attrs["units"] = {c: ("" if c == "problem" else
                              units[c] if c in units else column_unit(units, c)) for c in columns}
     return df
-
-
-class Sweep(list):
-    """The solutions of ``dyncli.sweep``: a list (one :class:`~dyncli.api.Solution`
-    per problem and point) that also gives them as a table."""
-
-    def to_frame(self, long: bool = False):
-        """A pandas DataFrame: one row per sweep point (``long``: per point and
-        reported time), the swept paths then the flattened results as columns;
-        ``df.attrs["units"]`` maps each column to its SI unit."""
-        return frame(list(self), long)
-
-    def to_xarray(self, problem: int | None = None):
-        """An xarray Dataset on the grid of the swept values (one dimension per
-        swept path, plus ``t`` for the results over time) of one problem's
-        points (``problem``: its index, needed when the sweep holds several)."""
-        from dyncli.xarrays import dataset
-
-        return dataset(list(self), problem)

@@ -4,7 +4,8 @@
   ``accuracy.max_steps`` (default ``MAX_STEPS`` or the type's own); every ODE route
   counts through it (:func:`integrate`, or :func:`budgeted` solver classes for
   ``solve_ivp``), and a run is refused (:class:`OverBudget`) as soon as an
-  extrapolation shows it will not fit.
+  extrapolation shows it will not fit; the same projection of the solve's CPU against its
+  budget (``accuracy.max_cpu``, :mod:`dyncli.cputime`) refuses with :class:`OverCpu`.
 * Non-finite detection: :func:`finite` raises :class:`NonFiniteRate` on a rate that
   is inf or NaN (scipy's step-size control would loop on it).
 * Check solve: :func:`check_solve` — one divisor (``CHECK_DIV`` = 100: rtol and atol
@@ -21,15 +22,9 @@
   (:func:`dense_output`), never its private interpolant internals.
 * The error_estimate without a check solve: :func:`nominal_estimate`.
 
-Step-by-step integration with a work budget, shared by the topics that integrate:
-
-A thin loop over scipy's ``OdeSolver`` classes (the same loop ``solve_ivp``
-runs), which lets the caller
-
-* read the state at the requested times from each step's dense output,
-* look at every accepted step (``on_step``: invariants, angle unwrapping),
-* project the state back onto invariant manifolds after every step
-  (``project``; method "projected" = DOP853 + projection).
+The loop lets the caller read the state at the requested times from each step's dense
+output, look at every accepted step (``on_step``) and project the state back onto invariant
+manifolds after it (``project``; method "projected" = DOP853 + projection).
 
 scipy is imported lazily, only when a problem actually integrates.
 """
@@ -37,12 +32,15 @@ scipy is imported lazily, only when a problem actually integrates.
 from __future__ import annotations
 
 import math
+import time
 
 import numpy as np
 
+from dyncli import cputime
 from dyncli.errors import NumericalError
 
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
+CPU_PROBE = 32           # every this many steps, the solve's CPU is projected (dyncli.cputime.over_budget)
 PROBE_STEPS = 2_000      # every this many steps, project the run's total and refuse early
 
 
@@ -59,8 +57,8 @@ class OverBudget(NumericalError):
     """A run refused by its :class:`Budget`; ``t``, ``y``, ``h``: the state and
     step size where it was refused (for hints such as stiffness)."""
 
-    def __init__(self, t_goal: float, need: float, limit: int, t: float, y=None, h: float = 0.0):
-        super().__init__(refusal(t_goal, need, limit))
+    def __init__(self, t_goal: float, need: float, limit: float, t: float, y=None, h: float = 0.0, message=None):
+        super().__init__(message or refusal(t_goal, need, limit))
         self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
         self.y = None if y is None else np.array(y, dtype=float)
 
@@ -87,6 +85,7 @@ class Budget:
         self.t0, self.goal = float(t0), float(t_goal)
         self._n_leg = self._n_win = 0
         self._t_win = self.t0
+        self._cpu_leg0 = time.thread_time()
 
     def tick(self, t: float, t_old: float | None = None, y=None) -> None:
         self.n += 1
@@ -106,6 +105,19 @@ class Budget:
             self._n_win, self._t_win = 0, t
         if need is not None:
             raise OverBudget(self.goal, need, self.limit, t, y, h)
+        if self._n_leg % CPU_PROBE == 0:
+            cpu = cputime.over_budget(self._cpu_leg0, abs(t - self.t0), abs(self.goal - t))
+            if cpu is not None:
+                raise OverCpu(self.goal, *cpu, self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300), t, y, h)
+
+
+class OverCpu(OverBudget):
+    """A run refused by the CPU budget of its solve (:func:`dyncli.cputime.solve_budget`)."""
+
+    def __init__(self, t_goal: float, cpu: float, limit: float, need: float, t: float, y=None, h: float = 0.0):
+        super().__init__(t_goal, need, limit, t, y, h, message=(
+            f"the run to t = {t_goal:.6g} s would take about {cpu:.3g} s of CPU ({need:.3g} integrator steps), "
+            f"more than the budget of {limit:g} s: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_cpu"))
 
 
 class NonFiniteRate(NumericalError):
@@ -299,9 +311,11 @@ def tighter(rtol: float, atol: float, div: float | None = None) -> tuple[float, 
     return floor_rtol(rtol / div), max(atol / div, 1e-300)
 
 
-def fallback_warning(div: float) -> str:
-    """The warning of an error_estimate whose check solve at rtol/div exceeded the budget."""
-    return (f"error_estimate: the check solve at rtol/{div:g} exceeds the step budget (accuracy.max_steps); "
+def fallback_warning(div: float, cpu: bool = False) -> str:
+    """The warning of an error_estimate whose check solve at rtol/div exceeded the budget (of
+    steps, or with ``cpu`` of the solve's CPU)."""
+    what = "the CPU budget of the solve (accuracy.max_cpu)" if cpu else "the step budget (accuracy.max_steps)"
+    return (f"error_estimate: the check solve at rtol/{div:g} exceeds {what}; "
             "the estimate comes from a solve at 10·rtol instead (a conservative bound, typically ~10x the "
             "actual error)")
 
@@ -367,11 +381,12 @@ def check_solve(res, run, rtol: float, atol: float, *, fallback: bool = True):
     try:
         try:
             return run(r2, a2), "tighter"
-        except OverBudget:
+        except OverBudget as over:
             if not fallback:
                 raise
-            out = run(min(rtol * LOOSER_MUL, LOOSER_CAP), atol * LOOSER_MUL)
-            res.warn(fallback_warning(CHECK_DIV))
+            with cputime.extra(0.5 if isinstance(over, OverCpu) else 0.0):
+                out = run(min(rtol * LOOSER_MUL, LOOSER_CAP), atol * LOOSER_MUL)
+            res.warn(fallback_warning(CHECK_DIV, isinstance(over, OverCpu)))
             return out, "looser"
     except NumericalError as exc:
         res.error_estimate = None

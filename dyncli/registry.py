@@ -115,11 +115,14 @@ def solver(name: str) -> Callable:
     fn = _load(info.ref(info.solve))
 
     def solve(model, options=None):
-        result = fn(model, options) if options is not None else fn(model)
-        if info.motion is not None and getattr(model, "find", None):
-            from dyncli.motion_find import resolved
+        from dyncli.cputime import solve_budget
 
-            resolved(model, result, fn, info.motion.get("rates", {}), info.motion.get("fast", ()))
+        with solve_budget(getattr(model, "accuracy", None)):
+            result = fn(model, options) if options is not None else fn(model)
+            if info.motion is not None and getattr(model, "find", None):
+                from dyncli.motion_find import resolved
+
+                resolved(model, result, fn, info.motion.get("rates", {}), info.motion.get("fast", ()))
         return info.attach(result)
 
     solve.__wrapped__ = fn  # type: ignore[attr-defined]

@@ -200,6 +200,45 @@ def roots_in_brackets(F, a, b, fa, fb, maxit: int = 200):
     return root
 
 
+def newton_in_brackets(FD, a, b, fa, fb, maxit: int = 100):
+    """Roots of ``f`` in many brackets ``[a_j, b_j]`` at once when its slope comes with it:
+    ``FD(x, k) -> (f, f')`` on the points ``x`` of the brackets ``k``.  Newton's step from the
+    bracket end where |f| is smaller (the secant of the ends while that end has no slope yet),
+    bisection when the step would leave the bracket that the signs maintain, to a step below
+    4 ulp: quadratic for simple roots, a few vectorised calls where :func:`roots_in_brackets`
+    needs about one per bit."""
+    import numpy as np
+
+    a, b = np.array(a, dtype=float), np.array(b, dtype=float)
+    ga, gb = np.array(fa, dtype=float), np.array(fb, dtype=float)
+    da, db = np.full(a.size, np.nan), np.full(b.size, np.nan)
+    root = np.where(np.abs(ga) <= np.abs(gb), a, b)
+    k = np.nonzero((ga != 0) & (gb != 0))[0]
+    for _ in range(maxit):
+        A, B, GA, GB = a[k], b[k], ga[k], gb[k]
+        at_a = np.abs(GA) <= np.abs(GB)
+        e, ge, de = np.where(at_a, A, B), np.where(at_a, GA, GB), np.where(at_a, da[k], db[k])
+        with np.errstate(all="ignore"):
+            step = np.where(np.isnan(de), (A * GB - B * GA) / (GB - GA), e - ge / de)
+        conv = np.abs(step - e) <= 4 * sys.float_info.epsilon * np.abs(e)    # the step is below rounding
+        root[k[conv]] = e[conv]
+        keep = ~conv
+        k, A, B, GA, GB, e, step = k[keep], A[keep], B[keep], GA[keep], GB[keep], e[keep], step[keep]
+        if not k.size:
+            break
+        lo, hi = np.minimum(A, B), np.maximum(A, B)
+        mid = lo + 0.5 * (hi - lo)
+        x = np.where((step > lo) & (step < hi), step, mid)
+        fx, dx = (np.broadcast_to(np.asarray(u, dtype=float), x.shape) for u in FD(x, k))
+        same = (fx > 0) == (GA > 0)
+        a[k], ga[k], da[k] = np.where(same, x, A), np.where(same, fx, GA), np.where(same, dx, da[k])
+        b[k], gb[k], db[k] = np.where(same, B, x), np.where(same, GB, fx), np.where(same, db[k], dx)
+        root[k] = x
+        stop = (fx == 0) | (mid == lo) | (mid == hi)
+        k = k[~stop]
+    return root
+
+
 def minimize_bounded(f, lo: float, hi: float, xatol: float):
     """The minimum of ``f`` on [lo, hi] by Brent's bounded method (scipy's
     ``minimize_scalar(method="bounded")``, imported here only, lazily): (x, f(x))."""

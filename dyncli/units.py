@@ -55,7 +55,7 @@ _ALIASES = {"angular_rate": "angular_velocity", "rate": "angular_velocity", "spi
 
 # a number, then a unit; the look-ahead keeps a number's exponent out of the
 # unit ("1e308*10" is an expression that overflows, not 1 of the unit "e308*10")
-_QUANTITY = re.compile(
+QUANTITY = re.compile(
     r"^\s*(?P<num>[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)(?![eE][-+]?\d)\s*(?P<unit>[A-Za-z°µΩ][A-Za-z0-9_°µΩ\s*/^().·²³-]*)$"
 )
 MAX_UNIT_TEXT = 80
@@ -76,7 +76,7 @@ def si_unit(dim: str | None) -> str:
 def looks_like_quantity(text: str) -> bool:
     if len(text) > 4000:       # the number may be long (a 401-digit integer is "too large"), not unbounded
         return False
-    m = _QUANTITY.match(text)
+    m = QUANTITY.match(text)
     return bool(m) and len(m.group("unit")) <= MAX_UNIT_TEXT
 
 
@@ -109,16 +109,20 @@ def is_angular(unit_text: str | None) -> bool:
     return bool(unit_text) and "rad" in unit_text
 
 
-def _clean(unit: str, angular: bool = False) -> str:
+def clean_unit(unit: str, angular: bool = False) -> str:
+    """A unit text as pint reads it (``m/s²`` -> ``m/s**2``; ``angular``: Hz as cycles per second)."""
     if angular:
         unit = _HZ.sub(r"(\1cycle/second)", unit)
     return (unit.replace("²", "**2").replace("³", "**3").replace("·", "*").replace("^", "**")
             .replace("°", "degree ").strip())
 
 
+_clean = clean_unit     # the name dyncli/run.py imports
+
+
 def parse_quantity(text: str, dim: str | None = None) -> float:
     """``"200 N/m"`` -> 200.0 (SI), checked against ``dim``.  Raises UnitError."""
-    m = _QUANTITY.match(text)
+    m = QUANTITY.match(text)
     if not m:
         raise UnitError(f"{text!r} is neither an expression nor a number with a unit")
     num = float(m.group("num"))
@@ -132,7 +136,7 @@ def parse_quantity(text: str, dim: str | None = None) -> float:
 
     d = normalise_dim(dim)
     try:
-        unit = ureg.parse_units(_clean(unit_text, angular=d in DIMENSIONS and is_angular(DIMENSIONS[d][1])))
+        unit = ureg.parse_units(clean_unit(unit_text, angular=d in DIMENSIONS and is_angular(DIMENSIONS[d][1])))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, SyntaxError, KeyError) as exc:
         name = getattr(exc, "unit_names", None) or unit_text
@@ -162,12 +166,12 @@ def display_factor(si_unit_text: str, wanted: list[str]) -> tuple[float, str] | 
         return None
     ureg = registry()
     try:
-        src = ureg.Quantity(1.0, ureg.parse_units(_clean(si_unit_text)))
+        src = ureg.Quantity(1.0, ureg.parse_units(clean_unit(si_unit_text)))
     except Exception:  # noqa: BLE001
         return None
     for w in wanted:
         try:
-            tgt = ureg.parse_units(_clean(w, angular=is_angular(si_unit_text)))
+            tgt = ureg.parse_units(clean_unit(w, angular=is_angular(si_unit_text)))
         except Exception:  # noqa: BLE001
             continue
         if src.dimensionality == ureg.Quantity(1.0, tgt).dimensionality:

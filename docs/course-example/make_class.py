@@ -47,14 +47,14 @@ def answer(rng: random.Random, x: float) -> object:
 
 def main() -> None:
     from dyncli.check.keyfile import read_key
-    from dyncli.check.keymode import KeyGrader, scalar
+    from dyncli.check.grader import Grader, scalar
     from dyncli.check.problemfiles import ProblemFiles
 
     files = ProblemFiles()
     key = read_key(str(HERE / "key.yaml"), files)
     if key.diagnostics:
         raise SystemExit("\n".join(map(str, key.diagnostics)))
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     ids = [f"{n}@example.edu" for n in NAMES]
     with open(HERE / "roster.csv", "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh, lineterminator="\n")

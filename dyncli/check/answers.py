@@ -19,13 +19,12 @@ a bad per-answer specification marks only that answer invalid.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from dyncli.check.compare import Tolerance
-from dyncli.check.safe import shown
+from dyncli.check.tolerance import TOL_KEYS, FieldError, Tolerance, parse_tolerance, read_points, tolerance_from
+from dyncli.check.safe import shown, yaml_diagnostic
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic
@@ -34,7 +33,6 @@ from dyncli.yamlsafe import Document, YamlError, load as yaml_load
 CHECK_KEYS = ("problem", "index", "params", "tolerance", "title", "answers")
 TOP_KEYS = ("checks", "tolerance", "title")
 ANSWER_KEYS = ("value", "rtol", "atol", "sigfigs", "points")
-TOL_KEYS = ("rtol", "atol", "sigfigs")
 
 
 @dataclass
@@ -73,94 +71,12 @@ class AnswerFile:
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
-class _Bad(Exception):
-    def __init__(self, path: tuple, message: str, key: bool = True):
-        super().__init__(message)
-        self.path = path
-        self.message = message
-        self.key = key
-
-
-MAX_POINTS = 1e6      # points of one answer; sums of thousands stay exact and finite
-MAX_RTOL = 1e6
-MAX_ATOL = 1e300
-
-
-def _num(x: Any) -> float:
-    """A tolerance/points number: YAML number or constant expression string."""
-    from dyncli.expr import constant
-
-    if isinstance(x, bool) or x is None or isinstance(x, (list, dict)):
-        raise ValueError("expected a number")
-    if isinstance(x, (int, float)):
-        try:
-            return float(x)
-        except OverflowError:
-            raise ValueError("number is too large") from None
-    try:
-        return constant(x)
-    except InputError as exc:
-        raise ValueError(exc.message) from None
-
-
-def read_points(x: Any) -> float:
-    """``points``: a number from 0 to MAX_POINTS; raises ValueError."""
-    try:
-        pts = _num(x)
-    except ValueError as exc:
-        raise ValueError(f"points: {exc}") from None
-    if not math.isfinite(pts) or not 0 <= pts <= MAX_POINTS:
-        raise ValueError(f"points must be a number from 0 to {MAX_POINTS:g}")
-    return pts
-
-
-def parse_tolerance(raw: Any, base: Tolerance, path: tuple) -> Tolerance:
-    """``{rtol, atol}`` or ``{sigfigs}`` on top of ``base``; raises _Bad."""
-    if not isinstance(raw, dict):
-        raise _Bad(path, "tolerance must be a mapping: {rtol: 0.01, atol: 1.0e-8} or {sigfigs: 3}")
-    return _tol_from(raw, base, path, TOL_KEYS)
-
-
-def _tol_from(raw: dict, base: Tolerance, path: tuple, allowed: tuple) -> Tolerance:
-    for k in raw:
-        if k not in allowed:
-            raise _Bad(path + (k,), f"unknown key '{shown(k)}'{did_you_mean(str(k), allowed)}; known: {', '.join(allowed)}")
-    has_sf = "sigfigs" in raw
-    has_ra = "rtol" in raw or "atol" in raw
-    if has_sf and has_ra:
-        raise _Bad(path + ("sigfigs",), "give either sigfigs or rtol/atol, not both")
-    if has_sf:
-        v = raw["sigfigs"]
-        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 17:
-            raise _Bad(path + ("sigfigs",), "sigfigs must be a whole number from 1 to 17", key=False)
-        return Tolerance(sigfigs=v)
-    if has_ra:
-        vals = {}
-        for k in ("rtol", "atol"):
-            if k in raw:
-                try:
-                    v = _num(raw[k])
-                except ValueError as exc:
-                    raise _Bad(path + (k,), f"{k}: {exc}", key=False) from None
-                top = MAX_RTOL if k == "rtol" else MAX_ATOL
-                if not math.isfinite(v) or not 0 <= v <= top:
-                    raise _Bad(path + (k,), f"{k} must be a number from 0 to {top:g}", key=False)
-                vals[k] = v
-        # relative/absolute on top of a sigfigs default starts from the defaults
-        start = base if base.sigfigs is None else Tolerance()
-        return Tolerance(vals.get("rtol", start.rtol), vals.get("atol", start.atol))
-    return base
-
-
 def read_answer_file(display: str, data: bytes | str, base_dir: Path) -> AnswerFile:
     af = AnswerFile(display, None, base_dir)
     try:
         doc = yaml_load(data)
     except YamlError as exc:
-        msg = exc.message
-        if msg.startswith("file is empty"):
-            msg = "file is empty: expected answers (a mapping with 'problem' and 'answers')"
-        af.diagnostics.append(Diagnostic(display, exc.line, exc.col, None, msg))
+        af.diagnostics.append(yaml_diagnostic(display, exc, "answers (a mapping with 'problem' and 'answers')"))
         return af
     af.doc = doc
     data = doc.data
@@ -183,7 +99,7 @@ def read_answer_file(display: str, data: bytes | str, base_dir: Path) -> AnswerF
         if "tolerance" in data:
             try:
                 base = parse_tolerance(data["tolerance"], base, ("tolerance",))
-            except _Bad as exc:
+            except FieldError as exc:
                 af.diagnostics.append(diag(exc.path, exc.message, exc.key))
         if isinstance(data.get("title"), str):
             af.title = data["title"]
@@ -220,7 +136,7 @@ def _read_check(af: AnswerFile, doc: Document, item: Any, prefix: tuple, index: 
     if "tolerance" in item:
         try:
             tol = parse_tolerance(item["tolerance"], base, prefix + ("tolerance",))
-        except _Bad as exc:
+        except FieldError as exc:
             af.diagnostics.append(diag(exc.path, exc.message, exc.key))
             ok = False
     if _missing(af, item, "answers", prefix, diag,
@@ -298,9 +214,9 @@ def _read_answer(doc: Document, path: tuple, key: str, v: Any, tol: Tolerance) -
         try:
             for k in v:
                 if k not in ANSWER_KEYS:
-                    raise _Bad(path + (k,), f"unknown key '{shown(k)}'{did_you_mean(str(k), ANSWER_KEYS)}; known: {', '.join(ANSWER_KEYS)}")
-            a.tol = _tol_from({k: x for k, x in v.items() if k not in ("value", "points")}, tol, path, TOL_KEYS)
-        except _Bad as exc:
+                    raise FieldError(path + (k,), f"unknown key '{shown(k)}'{did_you_mean(str(k), ANSWER_KEYS)}; known: {', '.join(ANSWER_KEYS)}")
+            a.tol = tolerance_from({k: x for k, x in v.items() if k not in ("value", "points")}, tol, path, TOL_KEYS)
+        except FieldError as exc:
             a.error = f"{exc.message}"
             pos = doc.locate(exc.path) if exc.key else doc.value_pos(exc.path)
             if pos:

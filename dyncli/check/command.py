@@ -1,20 +1,16 @@
-"""The body of ``dyncli check`` (the CLI only parses options and calls
-:func:`run_check`).  Diagnostics go to stderr; stdout (or ``--output``)
-holds only the chosen format."""
+"""The body of ``dyncli check`` in self-study (the CLI only parses options
+and calls :func:`run_check`) and ``--write-key``.  Diagnostics go to
+stderr; stdout (or ``--output``) holds only the chosen format, written by
+the emitters both modes share (:mod:`dyncli.check.emit`)."""
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 
-FORMATS = ("table", "json", "junit", "github", "gradescope")
+from dyncli.check.safe import say
 
-
-def _err(msg: object) -> None:
-    from dyncli.check.safe import oneline
-
-    print(oneline(msg), file=sys.stderr)
+FORMATS = ("table", "json", "junit", "github", "gradescope")   # self-study: every format but the gradebook
 
 
 def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output: str | None = None,
@@ -22,87 +18,54 @@ def run_check(files: list[str], fmt: str = "table", reveal: bool = False, output
     if write_key:
         return _write_key(files, output)
     if sum(1 for f in files if f == "-") > 1:
-        _err("'-' (stdin) can be given only once")
+        say("'-' (stdin) can be given only once")
         return 2
-    from dyncli.check.engine import Checker
-    from dyncli.check import formats
+    from dyncli.check.selfstudy import SelfStudy
 
-    checker = Checker(reveal=reveal, root=Path(root).resolve() if root else None)
-    report = checker.check_paths(files)
+    report = SelfStudy(reveal=reveal, root=Path(root).resolve() if root else None).check_paths(files)
+    for s in report.submissions:       # diagnostics on stderr for every format
+        for d in s.diagnostics:
+            say(d)
+        for g in s.groups:
+            if g.error is not None:
+                named = f" ({g.title})" if g.title != f"check #{g.index}" else ""
+                say(f"{s.file}: check #{g.index}{named}: problem not solved: {g.error}")
+                if g.trace and debug:
+                    print(g.trace, file=sys.stderr)   # our own traceback (--debug): several lines
+            for q in g.questions:
+                if q.status == "invalid":
+                    say(f"{s.file}:{q.line}:{q.col}: answers.{q.answer}: {q.message}")
+    return emit_report(report, fmt, output)
 
-    # diagnostics on stderr for every format
-    for fr in report.files:
-        for d in fr.diagnostics:
-            _err(str(d))
-        for cr in fr.checks:
-            if cr.error is not None:
-                _err(f"{fr.file}: check #{cr.index} ({cr.title}): problem not solved: {cr.error}")
-                if cr.trace and debug:
-                    print(cr.trace, file=sys.stderr)   # our own traceback (--debug): several lines
-            for a in cr.answers:
-                if a.status == "invalid":
-                    _err(f"{fr.file}:{a.line}:{a.col}: answers.{a.key}: {a.message}")
 
-    if fmt == "table":
-        from dyncli.render.emit import write_view
+def emit_report(report, fmt: str, output: str | None) -> int:
+    """The report in ``fmt`` (then, but for the table, the score on stderr): its exit code, 2 when it cannot be written."""
+    from dyncli.check import emit
+    from dyncli.check.emit.common import summary_line
 
-        try:
-            write_view(lambda console: formats.render_table(report, console), output)
-        except OSError as exc:
-            _err(f"{output}: cannot write ({exc.strerror})")
-            return 2
-    else:
-        text = {
-            "json": formats.render_json,
-            "junit": formats.render_junit,
-            "github": formats.render_github,
-            "gradescope": formats.render_gradescope,
-        }[fmt](report)
-        try:
-            _emit(text, output)
-        except _OutputError as exc:
-            _err(str(exc))
-            return 2
-        if fmt == "github":
-            summary = os.environ.get("GITHUB_STEP_SUMMARY")
-            if summary:
-                try:
-                    with open(summary, "a", encoding="utf-8") as fh:
-                        fh.write(formats.step_summary_markdown(report))
-                except OSError as exc:
-                    _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
-        _err(formats.summary_line(report))
+    try:
+        for w in emit.write(report, fmt, output):
+            say(w)
+    except emit.OutputError as exc:
+        say(exc)
+        return 2
+    if fmt != "table":
+        say(summary_line(report))
     return report.exit_code
 
 
-def _emit(text: str, output: str | None) -> None:
-    if output:
-        try:
-            from dyncli.stdio import write_file
-
-            Path(output).parent.mkdir(parents=True, exist_ok=True)
-            write_file(output, text)            # atomic: a reader never sees half a report
-        except OSError as exc:
-            raise _OutputError(f"{output}: cannot write ({exc.strerror})") from None
-    else:
-        sys.stdout.write(text)
-
-
-class _OutputError(Exception):
-    pass
-
-
 def _write_key(files: list[str], output: str | None) -> int:
+    from dyncli.check import emit
     from dyncli.check.key import write_key
 
     key_dir = Path(output).parent if output else Path.cwd()
     text, messages, code = write_key(files, key_dir)
     for m in messages:
-        _err(m)
+        say(m)
     if text:
         try:
-            _emit(text, output)
-        except _OutputError as exc:
-            _err(str(exc))
+            emit.write_text(text, output)
+        except emit.OutputError as exc:
+            say(exc)
             return 2
     return code

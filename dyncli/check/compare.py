@@ -20,33 +20,12 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-DEFAULT_RTOL = 1e-2
-DEFAULT_ATOL = 1e-8
+from dyncli.check.slips import TEXT, diagnose_ratios
+from dyncli.check.tolerance import (DEFAULT_ATOL, DEFAULT_RTOL, GivenError, Tolerance, number_ok, rel_text, round2,
+                                    sigfig_bound, to_number)
 
-
-@dataclass(frozen=True)
-class Tolerance:
-    rtol: float = DEFAULT_RTOL
-    atol: float = DEFAULT_ATOL
-    sigfigs: int | None = None
-
-    def describe(self) -> str:
-        if self.sigfigs is not None:
-            return f"{self.sigfigs} significant figure{'s' if self.sigfigs != 1 else ''}"
-        return f"rtol {_g(self.rtol)}, atol {_g(self.atol)}"
-
-    def as_dict(self) -> dict:
-        if self.sigfigs is not None:
-            return {"sigfigs": self.sigfigs}
-        return {"rtol": self.rtol, "atol": self.atol}
-
-
-def _g(x: float) -> str:
-    return f"{x:.3g}"
-
-
-class GivenError(ValueError):
-    """The given value cannot be read as an answer (invalid answer file)."""
+__all__ = ["DEFAULT_ATOL", "DEFAULT_RTOL", "GivenError", "Tolerance", "Verdict", "compare", "has_unit_text",
+           "number_ok", "rel_text", "round2", "sigfig_bound", "to_number"]
 
 
 @dataclass
@@ -68,58 +47,6 @@ class Verdict:
     @property
     def correct(self) -> bool:
         return self.status == "correct"
-
-
-# ---------------------------------------------------------------------------
-# scalar rules
-
-
-def sigfig_bound(true: float, n: int) -> float:
-    """Half-width of the acceptance interval of the significant-figure rule."""
-    a = abs(true)
-    if a == 0:
-        return 0.51 * 10.0 ** (1 - n)
-    e = math.floor(math.log10(a))
-    # guard log10 rounding just below/above a power of ten
-    if 10.0 ** e > a:
-        e -= 1
-    elif 10.0 ** (e + 1) <= a:
-        e += 1
-    return 0.51 * 10.0 ** (e - n + 1)
-
-
-def number_ok(given: float, true: float, tol: Tolerance) -> bool:
-    if not (math.isfinite(given) and math.isfinite(true)):
-        return False
-    d = abs(given - true)
-    if tol.sigfigs is not None:
-        return d < sigfig_bound(true, tol.sigfigs)
-    return d <= tol.atol + tol.rtol * abs(true)
-
-
-def to_number(given: Any) -> float | None:
-    """A given scalar as a float, or None when it is not numeric at all
-    (bool, list, mapping).  Strings are read as constant expressions;
-    unreadable strings raise :class:`GivenError`."""
-    if isinstance(given, bool) or given is None:
-        return None
-    if isinstance(given, (int, float)):
-        try:
-            return float(given)
-        except OverflowError:
-            return math.inf if given > 0 else -math.inf
-    if isinstance(given, str):
-        from dyncli.errors import InputError
-        from dyncli.expr import parse
-
-        try:
-            e = parse(given, (), {})
-            return float(e.value())
-        except InputError as exc:
-            raise GivenError(f"cannot read {given!r} as a number: {exc.message}") from None
-        except (ValueError, ArithmeticError) as exc:  # pragma: no cover - defensive
-            raise GivenError(f"cannot read {given!r} as a number: {exc}") from None
-    return None
 
 
 def _is_num(x: Any) -> bool:
@@ -222,36 +149,14 @@ class _Walk:
             if true != 0 and g != 0:
                 self.ratios.append(g / true)
             # never an absolute error: for a true 0 it would be the given value itself
-            err = f"relative error {_rel_text(rel)}" if rel is not None else "error"
+            err = f"relative error {rel_text(rel)}" if rel is not None else "error"
             self.exceeded = True
             self.fail(where, err)
-
-
-def round2(x: float) -> float:
-    """``x`` rounded to 2 significant figures (what feedback may say of an
-    error without revealing the expected value)."""
-    if x == 0 or not math.isfinite(x):
-        return x
-    return float(f"{x:.2g}")
-
-
-def _rel_text(rel: float) -> str:
-    """2 significant figures, a percentage up to 1,000 %, beyond it how many
-    times the correct value's size: ``0.0123 -> "1.2%"``, ``99 -> "×99"``,
-    ``3.7e7 -> "×3.7e+07"``."""
-    if rel < 10:
-        return f"{round2(rel) * 100:g}%"
-    return f"×{round2(rel):g}"
-
-
-rel_text = _rel_text
 
 
 def _hints(ratios: list[float], tol: Tolerance) -> tuple[str | None, list[str]]:
     """The common slip shared by every wrong element (sign, powers of ten,
     2π, degrees, 2), as (slip name, [hint text])."""
-    from dyncli.check.diagnose import TEXT, diagnose_ratios
-
     rt = max(tol.rtol if tol.sigfigs is None else 0.51 * 10.0 ** (1 - tol.sigfigs), 1e-9)
     hit = diagnose_ratios(ratios, rt)
     if hit is None:

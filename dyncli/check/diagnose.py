@@ -20,31 +20,11 @@ from __future__ import annotations
 import math
 from typing import Any, Callable
 
-from dyncli.check.compare import Tolerance, compare
+from dyncli.check.compare import compare
+from dyncli.check.slips import FACTORS, SLIPS, TEXT
+from dyncli.check.tolerance import Tolerance, number_ok
 
-SLIPS = ("sign", "power_of_ten", "degrees_radians", "two_pi", "factor_two", "wrong_dimension")
-
-TEXT = {
-    "sign": "the sign looks wrong",
-    "power_of_ten": "off by a power of ten (units? e.g. mm vs m, g vs kg)",
-    "degrees_radians": "off by a factor 180/π (degrees vs radians?)",
-    "two_pi": "off by a factor 2π (rad/s vs Hz or rev/s?)",
-    "factor_two": "off by a factor of 2",
-    "wrong_dimension": "the unit has the wrong dimension",
-}
-
-
-def _factors() -> list[tuple[str, float]]:
-    out = [("sign", -1.0)]
-    for k in range(1, 10):
-        out += [("power_of_ten", 10.0 ** k), ("power_of_ten", 10.0 ** -k)]
-    out += [("degrees_radians", 180 / math.pi), ("degrees_radians", math.pi / 180),
-            ("two_pi", 2 * math.pi), ("two_pi", 1 / (2 * math.pi)),
-            ("factor_two", 2.0), ("factor_two", 0.5)]
-    return out
-
-
-FACTORS = _factors()
+__all__ = ["SLIPS", "TEXT", "diagnose"]
 
 
 def _scaled(x: Any, f: float) -> Any:
@@ -56,6 +36,10 @@ def _scaled(x: Any, f: float) -> Any:
     if isinstance(x, (int, float)) and not isinstance(x, bool):
         return x / f
     return x
+
+
+def _is_num(x: Any) -> bool:
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
 
 
 def _has_number(x: Any) -> bool:
@@ -71,19 +55,10 @@ def diagnose(given: Any, true: Any, tol: Tolerance,
     """The slip that explains a wrong ``given`` (numbers in SI), or None."""
     if not _has_number(given) or not _has_number(true):
         return None
+    if ok is None and _is_num(given) and _is_num(true):     # one number: the scalar rule itself
+        ok = lambda g, t, tl: number_ok(float(g), float(t), tl)   # noqa: E731
     ok = ok or (lambda g, t, tl: compare(g, t, tl).correct)
     for name, f in FACTORS:
         if ok(_scaled(given, f), true, tol):
             return name
-    return None
-
-
-def diagnose_ratios(ratios: list[float], rtol: float) -> tuple[str, float] | None:
-    """The slip (name, factor) shared by every ratio given/true of the wrong
-    elements (the hint of §5 feedback), or None."""
-    if not ratios:
-        return None
-    for name, f in FACTORS:
-        if all(abs(r - f) <= rtol * abs(f) for r in ratios):
-            return name, f
     return None

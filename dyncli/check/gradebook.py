@@ -9,8 +9,8 @@ import math
 import re
 from typing import Any
 
-from dyncli.check.formats import fmt_points
-from dyncli.check.safe import oneline, shown
+from dyncli.check.emit.common import fmt_points
+from dyncli.check.safe import oneline, say, shown
 
 NO_SUBMISSION = "(no submission)"
 ORDER = ("correct", "carried", "partial", "wrong", "missing", "invalid", "error")
@@ -25,7 +25,7 @@ def apply_roster(report, roster) -> list[str]:
     """Students on the roster without a submission become a ``missing``
     submission (0 points); returns a message for every submission whose
     student is not on the roster (also added to the report's warnings)."""
-    from dyncli.check.keymode import QuestionResult, SubmissionResult
+    from dyncli.check.results import QuestionResult, SubmissionResult
 
     report.roster = roster
     on = set(roster.students)
@@ -80,26 +80,6 @@ def cell(x: Any) -> str:
     return s
 
 
-def render_csv(report) -> str:
-    """One row per student: student, one column per question id (points),
-    total, max_total, then the roster's other columns."""
-    import csv
-    import io
-
-    key = report.key
-    extra = list(report.roster.columns) if getattr(report, "roster", None) is not None else []
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow([cell(c) for c in ["student"] + [q.id for q in key.questions] + ["total", "max_total"] + extra])
-    for sid, s in rows(report):
-        scores = {q.id: q.score for q in s.questions} if s is not None else {}
-        total = s.score if s is not None else 0.0
-        more = [report.roster.extra.get(sid, {}).get(c, "") for c in extra] if extra else []
-        w.writerow([cell(sid)] + [fmt_points(scores.get(q.id, 0.0)) for q in key.questions]
-                   + [fmt_points(total), fmt_points(key.max_score)] + [cell(m) for m in more])
-    return buf.getvalue()
-
-
 # ---------------------------------------------------------------------------
 # statistics per question
 
@@ -108,7 +88,8 @@ def stats(report, grader) -> list[dict]:
     """Per question: mean score, % with full points, counts of each status
     and diagnosis, and the range of the true answers (over the students
     graded, the roster's missing students included)."""
-    from dyncli.check.keymode import FULL, scalar
+    from dyncli.check.grader import scalar
+    from dyncli.check.results import FULL
     from dyncli.check.variants import VariantError
 
     graded = [s for _, s in rows(report) if s is not None and s.questions]
@@ -240,7 +221,6 @@ class CourseOptions:
         self.summary = ""
 
     def load(self) -> bool:
-        from dyncli.check.keycommand import _err
         from dyncli.check.roster import RosterError, read_roster
 
         try:
@@ -249,20 +229,19 @@ class CourseOptions:
             if self.compare is not None:
                 self.previous = read_previous(self.compare)
         except (RosterError, PreviousError) as exc:
-            _err(exc)
+            say(exc)
             return False
         return True
 
     def finish(self, report, files, key) -> bool:
-        from dyncli.check.keycommand import _err
-        from dyncli.check.keymode import KeyGrader
+        from dyncli.check.grader import Grader
 
         if self.roster is not None:
             for msg in apply_roster(report, self.roster):
-                _err(f"warning: {msg}")
+                say(f"warning: {msg}")
         parts = []
         if self.stats:
-            st = stats(report, KeyGrader(key, files))
+            st = stats(report, Grader(key, files))
             report.course["stats"] = st
             parts.append(stats_table(st))
         if self.previous is not None:

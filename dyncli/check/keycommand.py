@@ -5,15 +5,10 @@ only the chosen format."""
 from __future__ import annotations
 
 import math
-import os
-import sys
 from pathlib import Path
 
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, say, shown
 
-
-def _err(msg: object) -> None:
-    print(oneline(msg), file=sys.stderr)
 
 
 def load_key(key_name: str, root: str | None):
@@ -24,7 +19,7 @@ def load_key(key_name: str, root: str | None):
     files = ProblemFiles(root=Path(root).resolve() if root else None)
     key = read_key(key_name, files)
     for d in key.diagnostics:
-        _err(d)
+        say(d)
     return (None, files) if key.diagnostics else (key, files)
 
 
@@ -32,21 +27,23 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
                   output: str | None = None, student: str | None = None, root: str | None = None,
                   id_from: str = "student", upload: bool = False, course=None) -> int:
     """``course``: a :class:`dyncli.check.gradebook.CourseOptions` (--roster, --stats, --compare) or None."""
-    from dyncli.check import keyformats
-    from dyncli.check.command import _emit, _OutputError
+    from dyncli.check import emit
+    from dyncli.check.command import emit_report
+    from dyncli.check.emit.common import summary_line
+
     if not names and (course is None or course.roster is None):
-        _err("give the submissions to grade (or --selftest to check the key)")
+        say("give the submissions to grade (or --selftest to check the key)")
         return 2
     if names.count("-") > 1:
-        _err("'-' (stdin) can be given only once")
+        say("'-' (stdin) can be given only once")
         return 2
     key, files = load_key(key_name, root)
     if key is None:
         if fmt in ("json", "gradescope"):     # stdout holds JSON whatever happens
             try:
-                _emit(_invalid_key_json(key_name, fmt), output)
-            except _OutputError as exc:
-                _err(exc)
+                emit.write_text(_invalid_key_json(key_name, fmt), output)
+            except emit.OutputError as exc:
+                say(exc)
         return 2
     if course is not None and not course.load():
         return 2
@@ -54,68 +51,40 @@ def run_key_check(key_name: str, names: list[str], fmt: str = "table", reveal: b
     if course is not None:
         course.finish(report, files, key)
         if course.summary_only(output):
-            _err(keyformats.summary_line(report))
+            say(summary_line(report))
             return report.exit_code
-    if fmt == "table":
-        from dyncli.render.emit import write_view
-
-        try:
-            write_view(lambda console: keyformats.render_table(report, console), output)
-        except OSError as exc:
-            _err(f"{output}: cannot write ({exc.strerror})")
-            return 2
-        return report.exit_code
-    render = {"json": keyformats.render_json, "junit": keyformats.render_junit, "csv": _csv,
-              "github": keyformats.render_github, "gradescope": keyformats.render_gradescope}[fmt]
-    try:
-        _emit(render(report), output)
-    except _OutputError as exc:
-        _err(exc)
-        return 2
-    if fmt == "github" and os.environ.get("GITHUB_STEP_SUMMARY"):
-        try:
-            with open(os.environ["GITHUB_STEP_SUMMARY"], "a", encoding="utf-8") as fh:
-                fh.write(keyformats.step_summary_markdown(report))
-        except OSError as exc:
-            _err(f"warning: cannot write GITHUB_STEP_SUMMARY ({exc.strerror})")
-    _err(keyformats.summary_line(report))
-    return report.exit_code
-
-
-def _csv(report) -> str:
-    from dyncli.check.gradebook import render_csv
-
-    return render_csv(report)
+    return emit_report(report, fmt, output)
 
 
 def grade_all(key, files, names: list[str], reveal: bool = False, student: str | None = None,
               id_from: str = "student", upload: bool = False):
-    """Every submission graded (a :class:`KeyReport`); each problem on stderr."""
-    from dyncli.check.keymode import KeyGrader, KeyReport, SubmissionResult
+    """Every submission graded (a :class:`~dyncli.check.results.Report`); each problem on stderr."""
+    from dyncli.check.grader import Grader
+    from dyncli.check.results import Report, SubmissionResult
     from dyncli.check.submission import read_submission
     from dyncli.loader import Diagnostic
 
-    grader = KeyGrader(key, files, reveal)
-    report = KeyReport(key, reveal=reveal)
+    grader = Grader(key, files, reveal)
+    report = Report(key, reveal=reveal)
     if upload:
         names, problem = pick_upload(key, names)
         if problem:
             report.submissions.append(SubmissionResult("upload", None, key.max_score,
                                                        diagnostics=[Diagnostic("upload", None, None, None, problem)]))
-            _err(f"upload: {problem}")
+            say(f"upload: {problem}")
     for name in names:
         sr = grader.grade(read_submission(name, student, id_from))
         report.submissions.append(sr)
         for d in sr.diagnostics:
-            _err(d)
+            say(d)
         for q in sr.questions:
             if q.status in ("invalid", "error"):
                 where = ":".join(str(x) for x in (sr.file, q.line, q.col) if x is not None)
-                _err(f"{where}: answers.{q.id}: {q.message}")
+                say(f"{where}: answers.{q.id}: {q.message}")
     report.solves = files.solves
     report.claims()
     for w in report.warnings:
-        _err(f"warning: {w['message']}")
+        say(f"warning: {w['message']}")
     return report
 
 
@@ -139,7 +108,7 @@ def pick_upload(key, names: list[str]) -> tuple[list[str], str | None]:
 
 
 def _invalid_key_json(key_name: str, fmt: str) -> str:
-    from dyncli.check.formats import json_text
+    from dyncli.check.emit.common import json_text
 
     if fmt == "gradescope":   # students see this: no detail of the instructor's files
         return json_text({"score": 0, "output": "The autograder's key is invalid: please tell your instructor.",
@@ -160,29 +129,29 @@ def selftest_ids(n: int) -> list[str]:
 def run_selftest(key_name: str, n: int = 100, root: str | None = None) -> int:
     """Every variant solvable, every question defined and finite, the key
     grades itself 100 %; prints the per-question range of the true answers."""
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.grader import Grader
     from dyncli.check.variants import VariantError
 
     key, files = load_key(key_name, root)
     if key is None:
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     values: dict[str, list] = {q.id: [] for q in key.questions}
     problem = _unanswerable(grader)
     if problem:
-        _err(f"{key.file}: selftest failed: {problem}")
+        say(f"{key.file}: selftest failed: {problem}")
         return 1
     warned: set[str] = set()
     for sid in selftest_ids(n if key.variants is not None else 0):
         try:
             params = grader.params(sid)
         except VariantError as exc:
-            _err(f"{key.file}: variants.require: {exc}")
+            say(f"{key.file}: variants.require: {exc}")
             return 2
         failure = _selftest_variant(grader, sid, values, warned)
         if failure:
             shown_params = ", ".join(f"{k} = {v:g}" for k, v in params.items()) or "no variant parameters"
-            _err(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
+            say(f"{key.file}: selftest failed for variant '{sid}' ({shown_params}): {failure}")
             _print_ranges(key, values)
             return 1
     _print_ranges(key, values)
@@ -228,7 +197,7 @@ def _first_record(x) -> dict:
 
 
 def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None) -> str | None:
-    from dyncli.check.keymode import scalar
+    from dyncli.check.grader import scalar
     from dyncli.check.submission import Submission
 
     key = grader.key
@@ -246,12 +215,12 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
         if q.carry is not None and warned is not None and q.id + "\x00carry" not in warned \
                 and _repeats_input(grader, q, sid, t):
             warned.add(q.id + "\x00carry")
-            _err(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
+            say(f"{key.file}: warning: question {shown(q.id)}'s true answer is within its tolerance of the answer "
                  f"to {shown(q.carry[0])} it carries (variant '{shown(sid)}'): repeating that answer would be "
                  "correct, and no carried answer can earn credit (it would repeat its input)")
         if t.roundoff and warned is not None and q.id not in warned:
             warned.add(q.id)
-            _err(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
+            say(f"{key.file}: warning: question {shown(q.id)} ({shown(q.answer)}) is zero up to round-off for "
                  f"variant '{shown(sid)}': graded as exactly 0 (correct within {_zero_bound(q.tol)}), never "
                  "diagnosed; make the problem give 0 exactly or ask for another quantity")
         values[q.id].append(t.value)
@@ -266,7 +235,7 @@ def _selftest_variant(grader, sid: str, values: dict, warned: set | None = None)
 
 def _repeats_input(grader, q, sid: str, t) -> bool:
     from dyncli.check.compare import number_ok
-    from dyncli.check.keymode import scalar
+    from dyncli.check.grader import scalar
 
     src = grader.truth(grader.key.question(q.carry[0]), sid)
     y, c = scalar(t.value), scalar(src.value)

@@ -23,10 +23,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from dyncli.check.answers import _Bad, parse_tolerance, read_points
-from dyncli.check.compare import Tolerance
+from dyncli.check.tolerance import FieldError, Tolerance, parse_tolerance, read_points
 from dyncli.check.diagnose import SLIPS
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, shown, yaml_diagnostic
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic, LoadedProblem, validate
 
@@ -37,6 +36,27 @@ FEEDBACK_KEYS = ("correct", "carried", "partial", "wrong", "missing", "invalid")
 MAX_FEEDBACK = 1000
 MAX_ID = 64
 MAX_QUESTIONS = 1000
+
+
+@dataclass(frozen=True)
+class Policy:
+    """Where graded work and self-study grade differently (docs/check.md), in
+    one place.  Graded work (the default): the key's problems are the
+    instructor's (a solver's message may quote a true answer: shown only with
+    --reveal), a result path not in the results is the key's error, a true
+    number zero up to round-off is graded as 0, and a null is no answer.
+    Self-study: the student's own problem and paths, graded as written."""
+
+    secret: bool = True              # a solver's message only with --reveal
+    not_solved: str = "the key's problem could not be solved for this variant"
+    unknown_path: bool = False       # a path not in the results: status 'unknown' with "did you mean"
+    snap_zeros: bool = True          # round-off zeros graded as 0 (dyncli.check.zeros)
+    null_is_answer: bool = False     # a null compares (matches an expected null), else 'not answered'
+
+
+GRADED = Policy()
+SELF_STUDY = Policy(secret=False, not_solved="the problem could not be solved", unknown_path=True,
+                    snap_zeros=False, null_is_answer=True)
 
 
 @dataclass
@@ -57,6 +77,8 @@ class Question:
     text: Any = None                           # the statement: parsed pieces (dyncli.check.statement)
     prefix: tuple = ()
     problem: LoadedProblem | None = None       # the key's problem (before variants)
+    error: Diagnostic | None = None            # self-study: the problem could not be read
+    invalid: str | None = None                 # self-study: the answer's own entry cannot be read
 
 
 @dataclass
@@ -70,6 +92,7 @@ class Key:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     submission: str | None = None              # the file name a Gradescope upload must have
     texts: dict = field(default_factory=dict)  # (problem file, index) -> parsed statement of that problem
+    policy: Policy = GRADED
 
     def problem_text(self, lp) -> Any:
         return self.texts.get((lp.file, lp.index)) if lp is not None else None
@@ -95,10 +118,7 @@ def read_key(name: str, files) -> Key:
         display, data = read_source(name)
         doc = yaml_load(data)
     except YamlError as exc:
-        msg = exc.message
-        if msg.startswith("file is empty"):
-            msg = "file is empty: expected a key (a mapping with 'questions: [...]')"
-        key.diagnostics.append(Diagnostic(name, exc.line, exc.col, None, msg))
+        key.diagnostics.append(yaml_diagnostic(name, exc, "a key (a mapping with 'questions: [...]')"))
         return key
     except InputError as exc:
         key.diagnostics.append(Diagnostic(name, None, None, None, exc.message.removeprefix(f"{name}: ")))
@@ -140,7 +160,7 @@ class _Reader:
         if "tolerance" in data:
             try:
                 self.key.tol = parse_tolerance(data["tolerance"], Tolerance(), ("tolerance",))
-            except _Bad as exc:
+            except FieldError as exc:
                 self.diag(exc.path, exc.message, exc.key)
         items = data["questions"]
         if not isinstance(items, list) or not items or len(items) > MAX_QUESTIONS:
@@ -177,7 +197,7 @@ class _Reader:
                 ok = False
         try:
             self.fields(q, item, path)
-        except _Bad as exc:
+        except FieldError as exc:
             self.diag(exc.path, exc.message, exc.key)
             ok = False
         if ok and q.problem is not None:
@@ -198,11 +218,11 @@ class _Reader:
         qid = as_written(self.doc, path + ("id",), item.get("id"))
         if isinstance(qid, bool) or not isinstance(qid, (str, int)) or not str(qid).strip() \
                 or len(str(qid)) > MAX_ID or oneline(qid) != str(qid):
-            raise _Bad(path + ("id",), f"id must be a short name (1 to {MAX_ID} printable characters)", key=False)
+            raise FieldError(path + ("id",), f"id must be a short name (1 to {MAX_ID} printable characters)", key=False)
         q.id = str(qid)
         ans = item.get("answer")
         if not isinstance(ans, str) or not ans.strip() or len(ans) > 200 or oneline(ans) != ans:
-            raise _Bad(path + ("answer",), "answer must be a dotted path into the problem's results, e.g. find.0.s",
+            raise FieldError(path + ("answer",), "answer must be a dotted path into the problem's results, e.g. find.0.s",
                        key=False)
         q.answer = ans.strip()
         self.problem(q, item, path)
@@ -210,7 +230,7 @@ class _Reader:
             try:
                 q.points = read_points(item["points"])
             except ValueError as exc:
-                raise _Bad(path + ("points",), str(exc), key=False) from None
+                raise FieldError(path + ("points",), str(exc), key=False) from None
         q.tol = parse_tolerance(item["tolerance"], self.key.tol, path + ("tolerance",)) if "tolerance" in item \
             else self.key.tol
         if "unit" in item:
@@ -224,13 +244,13 @@ class _Reader:
             q.carry = (str(as_written(self.doc, path + ("carry", "from"), item["carry"]["from"])), q.carry[1])
         if "visible" in item:
             if not isinstance(item["visible"], bool):
-                raise _Bad(path + ("visible",), "visible must be true or false", key=False)
+                raise FieldError(path + ("visible",), "visible must be true or false", key=False)
             q.visible = item["visible"]
         if "feedback" in item:
             q.feedback = self.feedback(item["feedback"], path + ("feedback",))
         if "title" in item:
             if not isinstance(item["title"], str):
-                raise _Bad(path + ("title",), "title must be text", key=False)
+                raise FieldError(path + ("title",), "title must be text", key=False)
             q.title = item["title"]
         if "text" in item:
             q.text = item["text"]      # checked against the problem's params in check_texts
@@ -240,7 +260,7 @@ class _Reader:
         if "index" in item:
             v = item["index"]
             if isinstance(v, bool) or not isinstance(v, int) or v < 0:
-                raise _Bad(path + ("index",), "index must be a whole number >= 0", key=False)
+                raise FieldError(path + ("index",), "index must be a whole number >= 0", key=False)
             q.index = v
         pos = self.doc.value_pos(path + ("problem",)) or (None, None)
         where = Diagnostic(self.key.file, pos[0], pos[1], ".".join(map(str, path + ("problem",))), "")
@@ -250,20 +270,20 @@ class _Reader:
             q.problem = LoadedProblem(self.key.file, 0, t if isinstance(t, str) else None, title, p, self.doc,
                                       path + ("problem",), base_dir=self.key.base_dir)
             if q.index not in (None, 0):
-                raise _Bad(path + ("index",), "an inline problem has only index 0", key=False)
+                raise FieldError(path + ("index",), "an inline problem has only index 0", key=False)
             return
         if not isinstance(p, str) or not p.strip():
-            raise _Bad(path + ("problem",), "problem must be a file path (relative to the key) or an inline "
+            raise FieldError(path + ("problem",), "problem must be a file path (relative to the key) or an inline "
                                             "problem mapping", key=False)
         ps, err = self.files.read(p.strip(), self.key.base_dir, where)
         if err is not None:
-            raise _Bad(path + ("problem",), err.message, key=False)
+            raise FieldError(path + ("problem",), err.message, key=False)
         if q.index is None and len(ps) > 1:
-            raise _Bad(path + ("problem",), f"'{shown(p)}' holds {len(ps)} problems: add 'index: N' "
+            raise FieldError(path + ("problem",), f"'{shown(p)}' holds {len(ps)} problems: add 'index: N' "
                                             f"(0-{len(ps) - 1})", key=False)
         idx = q.index or 0
         if idx >= len(ps):
-            raise _Bad(path + ("index",), f"'{shown(p)}' holds {len(ps)} problem(s): index must be 0-{len(ps) - 1}",
+            raise FieldError(path + ("index",), f"'{shown(p)}' holds {len(ps)} problem(s): index must be 0-{len(ps) - 1}",
                        key=False)
         q.problem = ps[idx]
 
@@ -271,37 +291,37 @@ class _Reader:
         from dyncli.check.quantities import unit_spec
 
         if not isinstance(u, str) or not u.strip() or len(u) > 40:
-            raise _Bad(path, "unit must be a unit such as m, m/s, kg*m^2, deg", key=False)
+            raise FieldError(path, "unit must be a unit such as m, m/s, kg*m^2, deg", key=False)
         try:
             unit_spec(u.strip())
         except ValueError as exc:
-            raise _Bad(path, str(exc), key=False) from None
+            raise FieldError(path, str(exc), key=False) from None
         q.unit = u.strip()
 
     def partial(self, raw: Any, path: tuple) -> dict[str, float]:
         if not isinstance(raw, dict):
-            raise _Bad(path, f"partial must be a mapping slip: fraction, slips: {', '.join(SLIPS)}", key=False)
+            raise FieldError(path, f"partial must be a mapping slip: fraction, slips: {', '.join(SLIPS)}", key=False)
         out = {}
         for k, v in raw.items():
             if k not in SLIPS:
-                raise _Bad(path + (k,), f"unknown slip '{shown(k)}'{did_you_mean(str(k), SLIPS)}; "
+                raise FieldError(path + (k,), f"unknown slip '{shown(k)}'{did_you_mean(str(k), SLIPS)}; "
                                         f"known: {', '.join(SLIPS)}")
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v <= 1:
-                raise _Bad(path + (k,), "a partial credit is a fraction from 0 to 1", key=False)
+                raise FieldError(path + (k,), "a partial credit is a fraction from 0 to 1", key=False)
             out[k] = float(v)
         return out
 
     def feedback(self, raw: Any, path: tuple) -> dict[str, str]:
         if not isinstance(raw, dict) or not raw:
-            raise _Bad(path, f"feedback must be a mapping status-or-slip: text ({', '.join(FEEDBACK_KEYS)})",
+            raise FieldError(path, f"feedback must be a mapping status-or-slip: text ({', '.join(FEEDBACK_KEYS)})",
                        key=False)
         out = {}
         for k, v in raw.items():
             if k not in FEEDBACK_KEYS:
-                raise _Bad(path + (k,), f"unknown feedback key '{shown(k)}'{did_you_mean(str(k), FEEDBACK_KEYS)}; "
+                raise FieldError(path + (k,), f"unknown feedback key '{shown(k)}'{did_you_mean(str(k), FEEDBACK_KEYS)}; "
                                         f"known: {', '.join(FEEDBACK_KEYS)}")
             if not isinstance(v, str) or not v.strip() or len(v) > MAX_FEEDBACK:
-                raise _Bad(path + (k,), f"feedback text must be 1 to {MAX_FEEDBACK} characters", key=False)
+                raise FieldError(path + (k,), f"feedback text must be 1 to {MAX_FEEDBACK} characters", key=False)
             out[k] = v.strip()
         return out
 
@@ -317,12 +337,12 @@ class _Reader:
 
     def carry(self, raw: Any, path: tuple) -> tuple[str, str]:
         if not isinstance(raw, dict) or set(raw) != {"from", "param"}:
-            raise _Bad(path, "carry must be {from: QUESTION-ID, param: PARAMS-NAME}", key=False)
+            raise FieldError(path, "carry must be {from: QUESTION-ID, param: PARAMS-NAME}", key=False)
         src, par = raw["from"], raw["param"]
         if isinstance(src, bool) or not isinstance(src, (str, int)):
-            raise _Bad(path + ("from",), "carry.from must be a question id", key=False)
+            raise FieldError(path + ("from",), "carry.from must be a question id", key=False)
         if not isinstance(par, str) or not par.isidentifier() or keyword.iskeyword(par):
-            raise _Bad(path + ("param",), "carry.param must be a params name of this question's problem", key=False)
+            raise FieldError(path + ("param",), "carry.param must be a params name of this question's problem", key=False)
         return str(src), par
 
     # -- across questions ---------------------------------------------------

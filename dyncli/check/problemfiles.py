@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import os
+from functools import cached_property, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -35,6 +36,7 @@ class ProblemFiles:
         self.root = root
         self._files: dict[str, tuple[list[LoadedProblem], list[Diagnostic]]] = {}
         self._solved: dict[str, Any] = {}
+        self._plain: dict[int, tuple[Any, Solved]] = {}
         self.solves = 0
 
     def read(self, ref: str, base_dir: Path, where: Diagnostic) -> tuple[list[LoadedProblem], Diagnostic | None]:
@@ -84,10 +86,45 @@ class ProblemFiles:
         return outcome
 
 
+    def results(self, outcome) -> Solved:
+        """The plain results of a successful solve, with what grading derives
+        from them, computed once per solve."""
+        hit = self._plain.get(id(outcome))
+        if hit is None:
+            from dyncli.render.jsonout import jsonable
+
+            hit = self._plain[id(outcome)] = (outcome, Solved(jsonable(outcome.result.results)))   # keeps its id
+        return hit[1]
+
+
+class Solved:
+    """A solve's results as plain data; ``scale`` (round-off zeros) and
+    ``index`` (the result paths, for "did you mean") on first use."""
+
+    def __init__(self, results: Any):
+        self.results = results
+
+    @cached_property
+    def scale(self) -> float:
+        from dyncli.check.zeros import scale_of
+
+        return scale_of(self.results)
+
+    @cached_property
+    def index(self):
+        from dyncli.check.paths import PathIndex, available_paths
+
+        return PathIndex(available_paths(self.results))
+
+
 def _canonical(lp: LoadedProblem) -> str | None:
     try:
         body = json.dumps(lp.raw, sort_keys=True, default=str, allow_nan=True)
     except (TypeError, ValueError):  # pragma: no cover - plain YAML data always dumps
         return None
-    base = str(Path(lp.base_dir).resolve()) if lp.base_dir is not None else ""
-    return base + "\n" + body
+    return (_resolved(str(lp.base_dir)) if lp.base_dir is not None else "") + "\n" + body
+
+
+@lru_cache(maxsize=256)
+def _resolved(folder: str) -> str:
+    return str(Path(folder).resolve())

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-from dyncli.check.compare import GivenError
+from dyncli.check.tolerance import GivenError
 from dyncli.check.safe import shown
 
 __all__ = ["GivenError", "WrongDimension", "UnitSpec", "NO_UNIT", "unit_spec", "result_unit", "to_si", "convert"]
@@ -52,7 +52,7 @@ def _ureg():
 def _parse_unit(text: str, angular: bool = False):
     from dyncli import units
 
-    return _ureg().parse_units(units._clean(text, angular))
+    return _ureg().parse_units(units.clean_unit(text, angular))
 
 
 @lru_cache(maxsize=512)
@@ -112,7 +112,7 @@ def to_si(given: Any, spec: UnitSpec = NO_UNIT) -> float | None:
 def _quantity(text: str, spec: UnitSpec) -> float:
     from dyncli import units
 
-    m = units._QUANTITY.match(text)
+    m = units.QUANTITY.match(text)
     unit_text = m.group("unit").strip() if m else ""
     if not m or len(unit_text) > units.MAX_UNIT_TEXT:
         raise GivenError(f"cannot read '{shown(text)}' as a number with a unit")

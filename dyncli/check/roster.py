@@ -96,8 +96,9 @@ SUFFIX = {"yaml": ".yaml", "markdown": ".md", "html": ".html"}
 def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml", template: bool = False,
                  root: str | None = None) -> int:
     """One sheet (or empty submission) per roster student in ``outdir``."""
-    from dyncli.check.keycommand import _err, load_key
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.keycommand import load_key
+    from dyncli.check.safe import say
+    from dyncli.check.grader import Grader
     from dyncli.check.sheet import render_template, sheet
     from dyncli.check.sheetview import render
     from dyncli.check.variants import VariantError
@@ -105,7 +106,7 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
     try:
         roster = read_roster(roster_name)
     except RosterError as exc:
-        _err(exc)
+        say(exc)
         return 2
     key, files = load_key(key_name, root)
     if key is None:
@@ -114,9 +115,9 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        _err(f"{outdir}: cannot create the folder ({exc.strerror})")
+        say(f"{outdir}: cannot create the folder ({exc.strerror})")
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     cache: dict = {}
     suffix = ".yaml" if template else SUFFIX[fmt]
     for sid in roster.students:
@@ -124,13 +125,13 @@ def write_sheets(key_name: str, roster_name: str, outdir: str, fmt: str = "yaml"
             text = render_template(key, grader, sid, cache) if template else render(key, sheet(key, grader, sid,
                                                                                                cache), fmt)
         except VariantError as exc:
-            _err(f"{key.file}: {exc}")
+            say(f"{key.file}: {exc}")
             return 2
         target = out / (file_stem(sid) + suffix)
         try:
             write_file(str(target), text)
         except OSError as exc:
-            _err(f"{target}: cannot write ({exc.strerror})")
+            say(f"{target}: cannot write ({exc.strerror})")
             return 2
     n = len(roster.students)
     print(f"wrote {n} {'submission template' if template else 'sheet'}{'s' if n != 1 else ''} to {oneline(outdir)} "

@@ -36,6 +36,24 @@ def oneline(text: object) -> str:
     return _CTRL.sub(_esc, str(text))
 
 
+def say(msg: object) -> None:
+    """One diagnostic line of ``dyncli check`` on stderr, made printable by :func:`oneline`."""
+    import sys
+
+    print(oneline(msg), file=sys.stderr)
+
+
+def yaml_diagnostic(file: str, exc, expected: str):
+    """A YAML error (:class:`dyncli.yamlsafe.YamlError`) of a key, submission or
+    answer file as its Diagnostic; an empty file says what it should hold."""
+    from dyncli.loader import Diagnostic
+
+    msg = exc.message
+    if msg.startswith("file is empty"):
+        msg = f"file is empty: expected {expected}"
+    return Diagnostic(file, exc.line, exc.col, None, msg)
+
+
 def shown(text: object, limit: int = MAX_SHOWN) -> str:
     """A user string to quote in a message: one line, shortened to ``limit``."""
     s = oneline(text)

@@ -99,14 +99,6 @@ def _question(q, grader, student: str, cache, vals: dict) -> dict:
             **({"carry_from": q.carry[0]} if q.carry else {})}
 
 
-def render_yaml(doc: dict) -> str:
-    import yaml
-
-    from dyncli.check.key import plain
-
-    return yaml.safe_dump(plain(doc), sort_keys=False, allow_unicode=True, width=100)
-
-
 def _datum(v: Any, unit: str | None) -> str:
     if isinstance(v, dict) and "carried" in v:
         return f"your answer to {oneline(v['carried'])}"
@@ -131,24 +123,25 @@ def render_template(key, grader, student: str, cache: dict | None = None) -> str
 
 def run_variant(key_name: str, student: str, fmt: str = "yaml", template: bool = False,
                 root: str | None = None) -> int:
-    from dyncli.check.keycommand import _err, load_key
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.keycommand import load_key
+    from dyncli.check.safe import say
+    from dyncli.check.grader import Grader
     from dyncli.check.variants import VariantError
 
     if not student or oneline(student) != student or len(student) > 200:
-        _err("--student must be the student's id (printable text, at most 200 characters)")
+        say("--student must be the student's id (printable text, at most 200 characters)")
         return 2
     key, files = load_key(key_name, root)
     if key is None:
         return 2
-    grader = KeyGrader(key, files)
+    grader = Grader(key, files)
     try:
         if template:
             sys.stdout.write(render_template(key, grader, student))
             return 0
         doc = sheet(key, grader, student)
     except VariantError as exc:
-        _err(f"{key.file}: {exc}")
+        say(f"{key.file}: {exc}")
         return 2
     from dyncli.check.sheetview import render
 

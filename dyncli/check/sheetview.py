@@ -15,10 +15,16 @@ from dyncli.check.safe import oneline
 
 def render(key, doc: dict, fmt: str) -> str:
     if fmt == "yaml":
-        from dyncli.check.sheet import render_yaml
-
         return render_yaml(doc)
     return render_html(key, doc) if fmt == "html" else render_markdown(key, doc)
+
+
+def render_yaml(doc: dict) -> str:
+    import yaml
+
+    from dyncli.check.key import plain
+
+    return yaml.safe_dump(plain(doc), sort_keys=False, allow_unicode=True, width=100)
 
 
 def _points(p: float) -> str:

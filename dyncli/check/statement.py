@@ -289,7 +289,7 @@ def _dim(node: Any, sch: dict, depth: int = 0) -> str | None:
 
 def read_problem_texts(self, raw: Any, Question) -> None:
     """``problems: [{problem: FILE, index: N, text: ...}]``: a statement per problem."""
-    from dyncli.check.answers import _Bad
+    from dyncli.check.tolerance import FieldError
 
     if not isinstance(raw, list) or len(raw) > 1000:
         self.diag(("problems",), "problems must be a list of {problem: FILE, index: N, text: STATEMENT}")
@@ -304,7 +304,7 @@ def read_problem_texts(self, raw: Any, Question) -> None:
         q = Question(f"problems.{i}", prefix=path)
         try:
             self.problem(q, item, path)
-        except _Bad as exc:
+        except FieldError as exc:
             self.diag(exc.path, exc.message, exc.key)
             continue
         self.key.texts[(q.problem.file, q.problem.index)] = (path + ("text",), item["text"], q.problem)

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from dyncli.check.safe import oneline, shown
+from dyncli.check.safe import oneline, shown, yaml_diagnostic
 from dyncli.expr import did_you_mean
 from dyncli.loader import Diagnostic
 
@@ -55,10 +55,7 @@ def read_submission(name: str, student_opt: str | None = None, id_from: str = "s
         sub.file, data = read_source(name)
         doc = yaml_load(data)
     except YamlError as exc:
-        msg = exc.message
-        if msg.startswith("file is empty"):
-            msg = "file is empty: expected a submission (a mapping with 'student' and 'answers')"
-        sub.diagnostics.append(Diagnostic(sub.file, exc.line, exc.col, None, msg))
+        sub.diagnostics.append(yaml_diagnostic(sub.file, exc, "a submission (a mapping with 'student' and 'answers')"))
         return sub
     except InputError as exc:
         sub.diagnostics.append(Diagnostic(name, None, None, None, exc.message.removeprefix(f"{name}: ")))

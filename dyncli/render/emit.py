@@ -13,8 +13,6 @@ import io
 import os
 import sys
 
-FORMATS = ("table", "json", "yaml", "csv", "markdown", "latex")
-
 
 class _Buffer(io.StringIO):
     """A StringIO that reports stdout's encoding."""
@@ -99,39 +97,63 @@ def _titled(lp, title: str):
 
 
 def records(outcomes) -> list[dict]:
-    from dyncli.run import outcome_record
+    """The JSON/YAML record of every outcome (problem, results, message, exit code)."""
+    from dyncli.render.jsonout import problem_record
 
-    return [outcome_record(o) for o in outcomes]
+    return [problem_record(o.problem, o.result, o.message, o.exit_code) for o in outcomes]
+
+
+def _views(outcomes, digits: int, units: list[str] | None) -> list:
+    from dyncli.render.view import build
+
+    return [build(o.problem, o.result, digits, units) for o in outcomes if o.result is not None]
+
+
+def _json(outcomes, digits, units, long) -> str:
+    from dyncli import stdio
+    from dyncli.render.jsonout import dumps as jdumps
+
+    return jdumps(records(outcomes), ascii_only=not stdio.is_utf(sys.stdout)) + "\n"
+
+
+def _yaml(outcomes, digits, units, long) -> str:
+    from dyncli import stdio
+    from dyncli.render.yamlout import dumps as ydumps
+
+    return ydumps(records(outcomes), allow_unicode=stdio.is_utf(sys.stdout))
+
+
+def _csv(outcomes, digits, units, long) -> str:
+    from dyncli.render.csvout import dumps as cdumps
+
+    return cdumps([(o.problem, o.result, o.message) for o in outcomes], long=long)
+
+
+def _markdown(outcomes, digits, units, long) -> str:
+    from dyncli.render.markdown import markdown
+
+    return markdown(_views(outcomes, digits, units))
+
+
+def _latex(outcomes, digits, units, long) -> str:
+    from dyncli.render.latex import latex
+
+    return latex(_views(outcomes, digits, units))
+
+
+#: every ``--format`` of ``solve`` with the writer of its whole output, the
+#: one list of formats (the CLI's choices are made from it); the table is
+#: streamed problem by problem instead (:class:`TableWriter`)
+WRITERS = {"table": None, "json": _json, "yaml": _yaml, "csv": _csv, "markdown": _markdown, "latex": _latex}
+FORMATS = tuple(WRITERS)
 
 
 def dumps(fmt: str, outcomes, digits: int = 6, units: list[str] | None = None, long: bool = False) -> str:
     """The whole output of a non-streamed format."""
-    from dyncli import stdio
-
-    if fmt == "json":
-        from dyncli.render.jsonout import dumps as jdumps
-
-        return jdumps(records(outcomes), ascii_only=not stdio.is_utf(sys.stdout)) + "\n"
-    if fmt == "yaml":
-        from dyncli.render.yamlout import dumps as ydumps
-
-        return ydumps(records(outcomes), allow_unicode=stdio.is_utf(sys.stdout))
-    if fmt == "csv":
-        from dyncli.render.csvout import dumps as cdumps
-
-        return cdumps([(o.problem, o.result, o.message) for o in outcomes], long=long)
-    from dyncli.render.view import build
-
-    views = [build(o.problem, o.result, digits, units) for o in outcomes if o.result is not None]
-    if fmt == "markdown":
-        from dyncli.render.markdown import markdown
-
-        return markdown(views)
-    if fmt == "latex":
-        from dyncli.render.latex import latex
-
-        return latex(views)
-    raise ValueError(fmt)  # pragma: no cover
+    write = WRITERS.get(fmt)
+    if write is None:
+        raise ValueError(fmt)
+    return write(outcomes, digits, units, long)
 
 
 def write_view(draw, output: str | None = None) -> None:

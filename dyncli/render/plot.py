@@ -5,7 +5,9 @@ their results; knows nothing of any topic.  matplotlib is imported lazily
 with the non-interactive Agg backend.  Output is deterministic (fixed DPI,
 no timestamps or random ids in the metadata) so tests can compare files.
 Readable in grayscale: each curve of a panel gets its own line style and
-marker as well as its own colour.
+marker as well as its own colour; beyond ten curves the colours go on past
+matplotlib's ten and every curve without a marker of its own gets a distinct
+one (:func:`series_style`, also used by the benchmarks' figures).
 
 What makes a panel readable rather than a picture to decode:
 
@@ -16,7 +18,12 @@ What makes a panel readable rather than a picture to decode:
   :data:`MAX_CYCLES`) is drawn as its band, the min and max over each pixel
   column, with a note in the title, instead of an aliased solid block
   (:func:`dense_band`);
-* legends sit below the axes, never over the curves.
+* legends sit below the axes, never over the curves;
+* every text is at least :data:`LABEL_PT` points at the figure's size, and a
+  PNG records its smallest text in pixels (``Label font px`` in its text
+  chunk), so a page that shows it scaled can be checked for legibility;
+* no empty slot: with two columns an odd last panel spans the whole row, and
+  ``columns=1`` stacks the panels for a narrow page (the docs' column).
 
 ``--plot DIR/`` writes one file per solved problem, ``DIR/<file-stem>-<index>.png``
 (:func:`save_each`); a file name puts every panel of the run in one figure.
@@ -38,6 +45,21 @@ MAX_CYCLES = 60
 BAND_BINS = 300
 #: a coordinate whose range is below this fraction of the path's size is constant
 PLANAR_RTOL = 1e-9
+#: the size of every text of a figure (titles, labels, ticks, legends), points
+LABEL_PT = 9
+#: the PNG text chunk holding the smallest text of the figure, pixels at its natural size
+LABEL_PX_KEY = "Label font px"
+#: sixteen colours told apart by eye: matplotlib's ten, then six more unlike any of them
+COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+           "#bcbd22", "#17becf", "#000000", "#000080", "#b8860b", "#00a86b", "#ff00ff", "#800000"]
+#: as many markers, each unlike the others in shape
+MARKERS = ["o", "s", "^", "v", "D", "P", "X", "*", "<", ">", "h", "p", "d", "8", "H", "x"]
+
+
+def series_style(n: int) -> tuple[str, str]:
+    """(colour, marker) of the n-th curve: sixteen pairs, all colours and all
+    markers different."""
+    return COLOURS[n % len(COLOURS)], MARKERS[n % len(MARKERS)]
 
 
 def is_dir_target(path: str) -> bool:
@@ -164,26 +186,43 @@ def dense_band(x, y, bins: int = BAND_BINS):
 CELL_W, CELL_H = 6.4, 5.2
 
 
-def _place(fig, ax, rows: int, cols: int, k: int, title_lines: int, legend_rows: int) -> float:
-    """Put panel ``k`` (0-based) in its cell with margins for its title
-    (above) and tick labels, axis label and legend (below): a fixed layout,
-    computed without drawing (tight or constrained layout would lay out
-    every text twice).  Returns the axes height in inches."""
+def _place(fig, ax, grid: tuple[int, int, int], k: int, title_lines: int, legend_rows: int) -> float:
+    """Put panel ``k`` (0-based) of ``grid`` = (rows, columns, panels) in its
+    cell with margins for its title (above) and tick labels, axis label and
+    legend (below): a fixed layout, computed without drawing (tight or
+    constrained layout would lay out every text twice).  An odd last panel
+    of two columns spans the row.  Returns the axes height in inches."""
+    rows, cols, n = grid
     r, c = divmod(k, cols)
+    span = cols if k == n - 1 and c == 0 else 1
     left, right = 0.85, 0.3
-    top = 0.2 + 0.16 * title_lines
-    bottom = 0.6 + (0.1 + 0.17 * legend_rows if legend_rows else 0.0)
-    w, h = CELL_W - left - right, CELL_H - top - bottom
+    top = 0.2 + 0.17 * title_lines
+    bottom = 0.62 + (0.1 + 0.18 * legend_rows if legend_rows else 0.0)
+    w, h = span * CELL_W - left - right, CELL_H - top - bottom
     W, H = cols * CELL_W, rows * CELL_H
     y0 = H - (r + 1) * CELL_H + bottom
     ax.set_position([(c * CELL_W + left) / W, y0 / H, w / W, h / H])
     return h
 
 
-def _draw_panel(fig, rows, cols, k, ptitle, spec):
+def _line_style(n: int, ln, style: str, many: bool) -> dict:
+    """matplotlib keywords of curve ``n``: its colour, and its own marker
+    when the panel has more curves than colours are told apart (``many``)."""
+    colour, marker = series_style(n)
+    kw = dict(label=ln.label, linestyle=style if style else "none", color=colour, linewidth=1.4, markersize=5,
+              marker=ln.marker if ln.marker is not None or not many else marker)
+    if kw["marker"] == "*":
+        kw["markersize"] = 11      # a star has little ink at the size of a dot
+    if kw["marker"] is not None and ln.marker is None and len(ln.x) > 12:
+        kw["markevery"] = max(1, len(ln.x) // 8)
+    return kw
+
+
+def _draw_panel(fig, grid, k, ptitle, spec):
     plane = planar_axes(spec.lines) if spec.zlabel is not None else None
     three_d = spec.zlabel is not None and plane is None
-    ax = fig.add_subplot(rows, cols, k, projection="3d" if three_d else None)
+    ax = fig.add_subplot(grid[0], grid[1], k, projection="3d" if three_d else None)
+    many = len(spec.lines) > 10
     title = spec.title
     xlabel, ylabel = spec.xlabel, spec.ylabel
     if plane is not None:
@@ -195,8 +234,8 @@ def _draw_panel(fig, rows, cols, k, ptitle, spec):
     banded = []
     for n, ln in enumerate(spec.lines):
         style = ln.style if ln.style is not None else _STYLES[n % len(_STYLES)]
-        kw = dict(label=ln.label, linestyle=style if style else "none", marker=ln.marker,
-                  color=f"C{n % 10}", linewidth=1.4, markersize=5)
+        kw = _line_style(n, ln, style, many)
+        colour = kw["color"]
         if three_d:
             ax.plot(ln.x, ln.y, ln.z or [0.0] * len(ln.x), **kw)
             continue
@@ -207,7 +246,7 @@ def _draw_panel(fig, rows, cols, k, ptitle, spec):
         if style and not spec.logx and len(x) > 4 * BAND_BINS and count_cycles(y) > MAX_CYCLES:
             cycles = count_cycles(y)
             c, lo, hi = dense_band(x, y, max(8, min(BAND_BINS, cycles // 2)))
-            ax.fill_between(c, lo, hi, color=f"C{n % 10}", alpha=0.35, linewidth=0,
+            ax.fill_between(c, lo, hi, color=colour, alpha=0.35, linewidth=0,
                             label=(ln.label or "") + " (band: min–max per column)")
             banded.append(cycles)
             continue
@@ -229,47 +268,65 @@ def _draw_panel(fig, rows, cols, k, ptitle, spec):
     if (spec.equal_aspect or plane is not None) and not three_d:
         ax.set_aspect("equal", adjustable="datalim")
     full = f"{printable(ptitle)}\n{title}" if ptitle else title
-    ax.set_title(full, fontsize=9, parse_math=False)   # a user's '$' is a dollar sign, not mathtext
+    ax.set_title(full, fontsize=LABEL_PT, parse_math=False)   # a user's '$' is a dollar sign, not mathtext
     labs = [lb for lb in ax.get_legend_handles_labels()[1] if lb and not lb.startswith("_")]
-    h = _place(fig, ax, rows, cols, k - 1, full.count("\n") + 1, (len(labs) + 1) // 2)
+    ncol = _legend_columns(labs)
+    h = _place(fig, ax, grid, k - 1, full.count("\n") + 1, (len(labs) + ncol - 1) // ncol)
     if labs:
-        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.5 / h), ncol=2, frameon=False)
+        ax.legend(fontsize=LABEL_PT, loc="upper center", bbox_to_anchor=(0.5, -0.52 / h), ncol=ncol, frameon=False)
     return ax
 
 
-def figure(panels: list[tuple[str, object]]):
-    """Build a matplotlib Figure with one panel per (problem title, Plot)."""
+def _legend_columns(labels: list[str]) -> int:
+    """2 when the longest label fits half a cell (a character is about 0.6 em
+    wide, the line sample and gaps about 0.5 in), else 1."""
+    longest = max((len(lb) for lb in labels), default=0)
+    return 2 if longest * 0.6 * LABEL_PT / 72 + 0.5 <= CELL_W / 2 else 1
+
+
+def figure(panels: list[tuple[str, object]], columns: int | None = None):
+    """Build a matplotlib Figure with one panel per (problem title, Plot),
+    in ``columns`` columns (default: 1 for one panel, else 2)."""
     import warnings
 
     _config_dir()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")   # no library warning reaches the user as raw text
-        return _figure(panels)
+        return _figure(panels, columns)
 
 
-def _figure(panels: list[tuple[str, object]]):
+def _figure(panels: list[tuple[str, object]], columns: int | None):
     import matplotlib
 
     matplotlib.use("Agg", force=True)
     import matplotlib.pyplot as plt
 
-    plt.rcParams.update({"svg.hashsalt": "dyncli", "font.size": 9, "axes.grid": True, "grid.alpha": 0.3})
+    plt.rcParams.update({"svg.hashsalt": "dyncli", "font.size": LABEL_PT, "axes.grid": True, "grid.alpha": 0.3})
     n = len(panels)
-    cols = 1 if n == 1 else 2
+    cols = max(1, min(columns or 2, n))
     rows = (n + cols - 1) // cols
     fig = plt.figure(figsize=(CELL_W * cols, CELL_H * rows), dpi=100)
     for k, (ptitle, spec) in enumerate(panels):
-        _draw_panel(fig, rows, cols, k + 1, ptitle, spec)
+        _draw_panel(fig, (rows, cols, n), k + 1, ptitle, spec)
     return fig
 
 
-def _write(panels, p: Path, label: str) -> None:
+def smallest_text_px(fig, dpi: float) -> float:
+    """The size of the smallest visible text of ``fig``, pixels at ``dpi``."""
+    from matplotlib.text import Text
+
+    sizes = [t.get_fontsize() for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()]
+    return min(sizes, default=LABEL_PT) * dpi / 72
+
+
+def _write(panels, p: Path, label: str, columns: int | None = None) -> None:
     _config_dir()          # before the first import of matplotlib
     import matplotlib.pyplot as plt
 
-    fig = figure(panels)
+    fig = figure(panels, columns)
     fmt = p.suffix.lower()[1:]
-    meta = {"png": {"Software": None}, "svg": {"Date": None, "Creator": None},
+    meta = {"png": {"Software": None, LABEL_PX_KEY: f"{smallest_text_px(fig, 100):.2f}"},
+            "svg": {"Date": None, "Creator": None},
             "pdf": {"CreationDate": None, "ModDate": None, "Producer": None, "Creator": None}}[fmt]
     import warnings
 
@@ -283,12 +340,13 @@ def _write(panels, p: Path, label: str) -> None:
         plt.close(fig)
 
 
-def save(panels: list[tuple[str, object]], path: str) -> int:
-    """Draw every panel into the file ``path``; returns the number of panels."""
+def save(panels: list[tuple[str, object]], path: str, columns: int | None = None) -> int:
+    """Draw every panel into the file ``path`` (in ``columns`` columns, see
+    :func:`figure`); returns the number of panels."""
     p = check_path(path)
     if not panels:
         return 0
-    _write(panels, p, path)
+    _write(panels, p, path, columns)
     return len(panels)
 
 

@@ -54,8 +54,9 @@ def test_plain_layout_is_what_rich_prints(outcomes, width, units):
 
 
 def test_check_report_is_what_rich_prints():
-    from dyncli.check import formats
-    from tests.check.test_formats import ALICE, grade
+    from dyncli.check.emit import table
+    from tests.check.helpers import grade
+    from tests.check.test_formats import ALICE
 
     out = []
     for fast in (True, False):
@@ -63,7 +64,7 @@ def test_check_report_is_what_rich_prints():
         plain.ENABLED = fast
         try:
             for width in (100, 60, None):
-                formats.render_table(grade(ALICE, reveal=True), plain.Out(buf, width, no_color=True))
+                table.draw(grade(ALICE, reveal=True), plain.Out(buf, width, no_color=True))
         finally:
             plain.ENABLED = True
         out.append(buf.getvalue())

@@ -28,7 +28,7 @@ def test_inline_problem_graded():
 
 
 def test_referenced_problem_relative_to_answer_file(tmp_path):
-    from dyncli.check.engine import Checker
+    from dyncli.check.selfstudy import SelfStudy
 
     sub = tmp_path / "students"
     sub.mkdir()
@@ -37,8 +37,8 @@ def test_referenced_problem_relative_to_answer_file(tmp_path):
     # outside the answer file's folder: refused, unless the instructor widens it with --root
     (tmp_path / "q.yaml").write_text((FIX / "brake.yaml").read_text())
     r = grade("problem: ../q.yaml\nanswers: {find.1.t: 5}\n", base=sub)
-    assert r.exit_code == 2 and "leads outside" in str(r.files[0].checks[0].error)
-    r = grade("problem: ../q.yaml\nanswers: {find.1.t: 5}\n", base=sub, checker=Checker(root=tmp_path))
+    assert r.exit_code == 2 and "leads outside" in str(r.submissions[0].groups[0].error)
+    r = grade("problem: ../q.yaml\nanswers: {find.1.t: 5}\n", base=sub, checker=SelfStudy(root=tmp_path))
     assert r.exit_code == 0
 
 
@@ -98,11 +98,11 @@ checks:
     answers: {find.0.s: 3, find.0.v: 4, find.1.t: 5, find.1.s: 17.01}
 """
     r = grade(text)
-    assert r.exit_code == 0, [a.message for _, a in r.files[0].answers()]
+    assert r.exit_code == 0, [a.message for a in r.submissions[0].questions]
     assert r.score == 6
-    c1 = r.files[0].checks[1]
+    c1 = r.submissions[0].groups[1]
     assert c1.title == "Set 1"
-    assert c1.answers[0].tolerance == Tolerance(rtol=0.001, atol=1e-8)
+    assert c1.questions[0].tolerance == Tolerance(rtol=0.001, atol=1e-8)
 
 
 def test_whole_record_answer():
@@ -119,7 +119,7 @@ def test_params_override_per_student():
 
 def test_params_override_error_points_at_answer_file():
     r = grade("problem: params.yaml\nparams:\n  v0: 2^3\nanswers: {find.0.s: 25}\n")
-    cr = r.files[0].checks[0]
+    cr = r.submissions[0].groups[0]
     assert r.exit_code == 2
     assert (cr.error.file, cr.error.line) == ("answers.yaml", 3)
     assert "**" in cr.error.message
@@ -169,7 +169,7 @@ def test_unknown_key_without_close_match_lists_results():
 def test_invalid_answer_files(text, line, col, fragment):
     r = grade(text)
     assert r.exit_code == 2
-    d = r.files[0].diagnostics[0]
+    d = r.submissions[0].diagnostics[0]
     assert fragment in d.message, str(d)
     assert (d.line, d.col) == (line, col), str(d)
     assert str(d).startswith(f"answers.yaml:{line}:{col}: ")
@@ -190,11 +190,11 @@ def test_invalid_answer_spec_marks_that_answer(spec, fragment):
 
 def test_problem_file_missing_or_invalid():
     r = grade("problem: nothere.yaml\nanswers: {case: 1}\n")
-    cr = r.files[0].checks[0]
+    cr = r.submissions[0].groups[0]
     assert r.exit_code == 2 and "not found" in cr.error.message and cr.error.line == 1
-    assert cr.answers[0].status == "error" and cr.answers[0].score == 0 and cr.max_score == 1
+    assert cr.questions[0].status == "error" and cr.questions[0].score == 0 and cr.max_score == 1
     r = grade("problem: bad-problem.yaml\nanswers: {case: 1}\n")
-    cr = r.files[0].checks[0]
+    cr = r.submissions[0].groups[0]
     assert r.exit_code == 2
     assert cr.error.file.endswith("bad-problem.yaml") and cr.error.line == 4
     assert "did you mean 'find'" in cr.error.message
@@ -202,15 +202,15 @@ def test_problem_file_missing_or_invalid():
 
 def test_inline_problem_error_points_into_answer_file():
     r = grade("problem:\n  type: rectilinear\n  a: -4\n  v1: [1, 2]\n  find: [{t: 1}]\nanswers: {case: 1}\n")
-    cr = r.files[0].checks[0]
+    cr = r.submissions[0].groups[0]
     assert r.exit_code == 2 and cr.error.file == "answers.yaml" and cr.error.line == 4
 
 
 def test_multi_problem_file_needs_index():
     r = grade("problem: set.yaml\nanswers: {case: 1}\n")
-    assert r.exit_code == 2 and "index: N" in r.files[0].checks[0].error.message
+    assert r.exit_code == 2 and "index: N" in r.submissions[0].groups[0].error.message
     r = grade("problem: set.yaml\nindex: 5\nanswers: {case: 1}\n")
-    assert r.exit_code == 2 and "index must be 0-1" in r.files[0].checks[0].error.message
+    assert r.exit_code == 2 and "index must be 0-1" in r.submissions[0].groups[0].error.message
 
 
 def test_answers_with_units_in_self_study():

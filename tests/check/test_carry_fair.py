@@ -183,7 +183,7 @@ def test_answers_from_the_sheet_score_full_points(v1, a, t, vb, ab, tb, ac, tc, 
         (p / "key.yaml").write_text(key)
         (p / "s.yaml").write_text(f"student: s\nanswers:\n  A: {A_typed!r}\n  B: {B_typed!r}\n"
                                   f"  C: {_round(C, n[2])!r}\n")
-        from dyncli.check.keymode import KeyGrader
+        from dyncli.check.grader import Grader
         from dyncli.check.keyfile import read_key
         from dyncli.check.problemfiles import ProblemFiles
         from dyncli.check.submission import read_submission
@@ -191,7 +191,7 @@ def test_answers_from_the_sheet_score_full_points(v1, a, t, vb, ab, tb, ac, tc, 
         files = ProblemFiles()
         k = read_key(str(p / "key.yaml"), files)
         assert not k.diagnostics
-        sr = KeyGrader(k, files).grade(read_submission(str(p / "s.yaml")))
+        sr = Grader(k, files).grade(read_submission(str(p / "s.yaml")))
     got = {q.id: (q.status, q.message) for q in sr.questions}
     assert got["B"][0] in ("correct", "carried") and got["C"][0] in ("correct", "carried"), got
     if slip == 1.0:

@@ -128,12 +128,12 @@ def test_solver_bug_is_exit_3(monkeypatch, capsys):
 
 def test_checker_bug_is_exit_3(monkeypatch, capsys):
     from dyncli import cli
-    from dyncli.check import engine
+    from dyncli.check import selfstudy
 
     def broken(self, names):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(engine.Checker, "check_paths", broken)
+    monkeypatch.setattr(selfstudy.SelfStudy, "check_paths", broken)
     monkeypatch.setattr(sys, "argv", ["dyncli", "check", str(FIX / "good.yaml")])
     with pytest.raises(SystemExit) as exc:
         cli.main()

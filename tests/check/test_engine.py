@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-from dyncli.check.engine import Checker, available_paths, lookup
+from dyncli.check.paths import available_paths, lookup
+from dyncli.check.selfstudy import SelfStudy
 from tests.check.helpers import FIX, grade
 
 
 def test_many_files_one_solve_per_problem():
-    c = Checker()
+    c = SelfStudy()
     for i in range(40):
         grade("problem: brake.yaml\nanswers: {find.0.s: 32}\n", name=f"s{i}.yaml", checker=c)
         grade(f"problem: set.yaml\nindex: {i % 2}\nanswers: {{case: 1}}\n", name=f"t{i}.yaml", checker=c)
@@ -15,7 +16,7 @@ def test_many_files_one_solve_per_problem():
 
 
 def test_same_problem_by_other_path_or_inline_shares_the_solve(tmp_path):
-    c = Checker()
+    c = SelfStudy()
     grade("problem: brake.yaml\nanswers: {find.0.s: 32}\n", checker=c)
     grade("problem: ./../fixtures/brake.yaml\nanswers: {find.0.s: 32}\n", checker=c)
     assert c.solves == 1
@@ -26,7 +27,7 @@ def test_same_problem_by_other_path_or_inline_shares_the_solve(tmp_path):
 
 
 def test_params_overrides_are_distinct_problems():
-    c = Checker()
+    c = SelfStudy()
     for v0, s in [(20, 15), (30, 25), (20, 15), (40, 35)]:
         r = grade(f"problem: params.yaml\nparams: {{v0: {v0}}}\nanswers: {{find.0.s: {s}}}\n", checker=c)
         assert r.exit_code == 0

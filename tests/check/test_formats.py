@@ -6,8 +6,9 @@ from __future__ import annotations
 import json
 import xml.etree.ElementTree as ET
 
-from dyncli.check import formats
-from dyncli.check.formats import gh_command, gh_escape_data, gh_escape_property
+from dyncli.check.emit import github, gradescope, junit, table
+from dyncli.check.emit import json as jsonfmt
+from dyncli.check.emit.common import gh_command, gh_escape_data, gh_escape_property
 from tests.check.helpers import grade
 
 ALICE = """\
@@ -22,7 +23,7 @@ answers:
 
 
 def _junit(report):
-    text = formats.render_junit(report)
+    text = junit.render(report)
     assert text.startswith('<?xml version="1.0" encoding="UTF-8"?>')
     return ET.fromstring(text.encode())
 
@@ -52,9 +53,9 @@ def test_junit_structure_and_gitlab_fields():
 
 
 def test_junit_hides_expected_unless_revealed():
-    hidden = formats.render_junit(grade(ALICE))
+    hidden = junit.render(grade(ALICE))
     assert "expected 12" not in hidden
-    shown = formats.render_junit(grade(ALICE, reveal=True))
+    shown = junit.render(grade(ALICE, reveal=True))
     assert "expected 12" in shown
 
 
@@ -79,11 +80,11 @@ def test_junit_failure_body_lines():
 
 
 def test_junit_several_files():
-    from dyncli.check.engine import Report
+    from dyncli.check.results import Report
 
     r = Report()
     for n in ("a.yaml", "b.yaml"):
-        r.files += grade("problem: brake.yaml\nanswers: {case: 1}\n", name=n).files
+        r.submissions += grade("problem: brake.yaml\nanswers: {case: 1}\n", name=n).submissions
     root = _junit(r)
     assert [s.get("name") for s in root.findall("testsuite")] == ["a.yaml", "b.yaml"]
     assert root.get("tests") == "2" and root.get("failures") == "0"
@@ -100,7 +101,7 @@ def test_github_escaping_matches_toolkit():
 
 
 def test_github_annotations_point_at_answer_lines():
-    out = formats.render_github(grade(ALICE)).splitlines()
+    out = github.render(grade(ALICE)).splitlines()
     errors = [l for l in out if l.startswith("::error ")]
     assert len(errors) == 3
     assert errors[0].startswith("::error file=answers.yaml,line=5,col=3,title=find.0.v%3A wrong (0/1)::")
@@ -110,7 +111,7 @@ def test_github_annotations_point_at_answer_lines():
 
 def test_github_limit_of_ten_errors():
     answers = "\n".join(f"  find.0.s{i}: 1" for i in range(14))
-    out = formats.render_github(grade(f"problem: brake.yaml\nanswers:\n{answers}\n")).splitlines()
+    out = github.render(grade(f"problem: brake.yaml\nanswers:\n{answers}\n")).splitlines()
     assert sum(l.startswith("::error ") for l in out) == 10
     notices = [l for l in out if l.startswith("::notice ")]
     assert len(notices) == 2
@@ -119,19 +120,19 @@ def test_github_limit_of_ten_errors():
 
 
 def test_github_stdin_has_no_file_property():
-    out = formats.render_github(grade(ALICE, name="<stdin>"))
+    out = github.render(grade(ALICE, name="<stdin>"))
     assert "file=" not in out and "::error title=" in out
 
 
 def test_step_summary_markdown():
-    md = formats.step_summary_markdown(grade(ALICE))
+    md = github.step_summary(grade(ALICE))
     assert "| answers.yaml:5 | `find.0.v` | wrong | 0/1 |" in md
 
 
 # -- Gradescope ------------------------------------------------------------------
 
 def test_gradescope_results_json():
-    doc = json.loads(formats.render_gradescope(grade(ALICE)))
+    doc = json.loads(gradescope.render(grade(ALICE)))
     assert set(doc) == {"score", "output", "tests"}
     assert doc["score"] == 2
     assert len(doc["tests"]) == 5
@@ -147,7 +148,7 @@ def test_gradescope_results_json():
 
 
 def test_gradescope_invalid_file_still_valid_json():
-    doc = json.loads(formats.render_gradescope(grade("answers: {case: 1}\n")))
+    doc = json.loads(gradescope.render(grade("answers: {case: 1}\n")))
     assert doc["score"] == 0 and doc["tests"][0]["status"] == "failed"
     assert "missing 'problem'" in doc["tests"][0]["output"]
 
@@ -155,13 +156,13 @@ def test_gradescope_invalid_file_still_valid_json():
 # -- JSON ---------------------------------------------------------------------------
 
 def test_json_report():
-    doc = json.loads(formats.render_json(grade(ALICE)))
+    doc = json.loads(jsonfmt.render(grade(ALICE)))
     assert doc["score"] == 2 and doc["max_score"] == 6 and doc["exit_code"] == 2 and doc["solves"] == 1
     ans = {a["key"]: a for a in doc["files"][0]["checks"][0]["answers"]}
     assert ans["find.0.v"]["relative_error"] == 2.0 and ans["find.0.v"]["line"] == 5
     assert ans["find.0.v"]["tolerance"] == {"rtol": 0.01, "atol": 1e-8}
     assert "expected" not in ans["find.0.v"]
-    doc = json.loads(formats.render_json(grade(ALICE, reveal=True)))
+    doc = json.loads(jsonfmt.render(grade(ALICE, reveal=True)))
     ans = {a["key"]: a for a in doc["files"][0]["checks"][0]["answers"]}
     assert ans["find.0.v"]["expected"] == 12.0
 
@@ -174,12 +175,12 @@ def test_table_renders_and_hides_expected():
     buf = io.StringIO()
     con = make_console(buf)
     con.width = 160
-    formats.render_table(grade(ALICE), con)
+    table.draw(grade(ALICE), con)
     out = buf.getvalue()
     assert "find.0.v" in out and "score 2/6" in out and "expected" not in out
     assert "(rtol 0.01, atol 1e-08)" in out
     buf = io.StringIO()
     con = make_console(buf)
     con.width = 160
-    formats.render_table(grade(ALICE, reveal=True), con)
+    table.draw(grade(ALICE, reveal=True), con)
     assert "expected" in buf.getvalue()

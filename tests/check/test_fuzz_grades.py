@@ -45,7 +45,7 @@ def _earned(x: float, t: float, rel: float) -> bool:
 
 def _grade(key: Path, student: str, text: str):
     from dyncli.check.keyfile import read_key
-    from dyncli.check.keymode import KeyGrader
+    from dyncli.check.grader import Grader
     from dyncli.check.problemfiles import ProblemFiles
     from dyncli.check.submission import read_submission
 
@@ -55,7 +55,7 @@ def _grade(key: Path, student: str, text: str):
     with tempfile.TemporaryDirectory() as d:
         p = Path(d) / "s.yaml"
         p.write_text(text)
-        return KeyGrader(k, files).grade(read_submission(str(p)))
+        return Grader(k, files).grade(read_submission(str(p)))
 
 
 def _all_one(ids_: list[str], value: str, student: str) -> str:

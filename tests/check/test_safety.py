@@ -17,8 +17,8 @@ BRAKE = (FIX / "brake.yaml").read_text()
 
 
 def _one_error(r) -> str:
-    errs = [str(c.error) for f in r.files for c in f.checks if c.error is not None] + \
-        [str(d) for f in r.files for d in f.diagnostics]
+    errs = [str(c.error) for f in r.submissions for c in f.groups if c.error is not None] + \
+        [str(d) for f in r.submissions for d in f.diagnostics]
     assert len(errs) == 1, errs
     assert "\n" not in errs[0]
     return errs[0]
@@ -88,7 +88,7 @@ def test_root_widens_the_fence(tmp_path):
 def test_bounded_numbers_section5(field, value):
     spec = f"{{value: 32, {field}: {value}}}"
     r = grade(f"problem: brake.yaml\nanswers:\n  find.0.s: {spec}\n")
-    a = next(a for f in r.files for _, a in f.answers())
+    a = next(a for f in r.submissions for a in f.questions)
     assert a.status == "invalid" and r.exit_code == 2 and "\n" not in a.message
 
 
@@ -118,7 +118,7 @@ def test_200_unknown_keys_are_cheap():
     t0 = time.perf_counter()
     r = grade(text)
     dt = time.perf_counter() - t0
-    assert sum(1 for f in r.files for _, a in f.answers() if a.status == "unknown") == 200
+    assert sum(1 for f in r.submissions for a in f.questions if a.status == "unknown") == 200
     assert dt < 2.0, f"{dt:.2f} s for 200 unknown keys"
 
 

@@ -140,7 +140,13 @@ find:
 """
 
 
-def test_base_excited():
+@pytest.mark.parametrize("arrays", [False, True], ids=["floats", "arrays"])
+def test_base_excited(arrays, monkeypatch):
+    """Both ways to the turning points (plain floats for a cold solve, vectorised Newton once numpy
+    is loaded) give the same roots of the closed form."""
+    from dyncli.topics.vibration import find
+
+    monkeypatch.setattr(find, "_on_arrays", lambda n: arrays)
     r, _ = solve(BASE)
     ref = Vib(1, 400, 0.05, 0, 0, s0="0.002", Om=30)
     _t(entry(r, 0), crossings(ref.y, 0, 2, direction=1)[2])

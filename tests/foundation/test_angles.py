@@ -20,7 +20,9 @@ IMPACT_ROUGH = {"eta": 0.5, "t": [0, 1, 0]}   # the general model (eta, phi) and
 
 
 def _template(t: str) -> dict:
-    return yaml.safe_load((ROOT / "dyncli" / "templates" / f"{t}.yaml").read_text(encoding="utf-8"))
+    from dyncli.schema import template
+
+    return yaml.safe_load(template(t))       # packaged, or derived from the declared example
 
 
 def _problem(t: str, path: str, value) -> dict:

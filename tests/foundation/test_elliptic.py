@@ -241,3 +241,28 @@ def test_no_scipy():
             "E.elliprf(1.0, 2.0, 3.0); E.elliprc(np.ones(50), 2.0)\nprint('scipy' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert out.stdout.strip() == "False", out.stderr
+
+
+# ---------------------------------------------------------------- sn, cn, dn next to m = 1
+
+@pytest.mark.parametrize("m1", [1.0, 0.5, 1e-3, 1e-6, 1e-10, 1e-17, 2.5e-25, 1e-40])
+def test_ellipj_half_keeps_relative_precision_next_to_m_1(m1):
+    """sn, cn, dn of |u| <= K by the Landen products: a few ε relative, also where cn and dn are
+    tiny (m1 → 0, u → K), against mpmath at 60 digits; the bound adds the conditioning of the
+    argument itself (a double u carries ε·u, and cn(u) next to K changes by K/(K − u) relative)."""
+    K = E.elliprf(0.0, m1, 1.0)
+    for f in (0.0, 0.1, 0.3, 0.49, 0.5, 0.51, 0.7, 0.9, 0.999, -0.6):
+        u = f * K
+        got = E.ellipj_half(u, 1.0 - m1, m1, K)
+        with mp.workdps(60):
+            want = [float(mp.ellipfun(w, u, m=1 - mp.mpf(m1))) for w in ("sn", "cn", "dn")]
+        bound = 32 * EPS * (1 + abs(u) + K / (K - abs(u)))
+        for g, w in zip(got, want):
+            assert abs(g - w) <= bound * abs(w) + 1e-50, (m1, f, g, w)     # (mpmath: sn(0) ~ 1e-64)
+
+
+def test_legendre_F_is_the_incomplete_integral():
+    for phi, m in ((0.3, 0.5), (1.5, 0.999999), (-1.2, 0.1)):
+        s, c = math.sin(phi), math.cos(phi)
+        got = E.legendre_F(s, c, c * c + (1 - m) * s * s)
+        assert got == pytest.approx(float(mp.ellipf(phi, m)), rel=8 * EPS)

@@ -5,7 +5,9 @@ writes ``tests/data/baseline-results.json``: per problem, its contract record (r
 equations, warnings) plus the ``rtol``/``atol`` it ran at. Run it on the code whose results are the
 reference (the baseline in the repository was recorded from ``main`` before the refactors of
 issue #19), and commit the file; ``python -m tests.tools.baseline add`` records only the files
-not recorded yet (a new example or type), leaving every other reference value as it is. ``tests/test_baseline_results.py`` compares the current code with
+not recorded yet, ``add FILE ...`` only those files and ``add TYPE`` only the files of
+``problems/`` that hold a problem of that type (a new type: its example), each of which must be
+new — leaving every other reference value as it is (nothing else is solved again). ``tests/test_baseline_results.py`` compares the current code with
 it through :func:`compare`.
 
 Tolerances (what each route guarantees, docs/accuracy.md):
@@ -141,6 +143,41 @@ def load() -> dict[str, list[dict]]:
     return json.loads(BASELINE.read_text())
 
 
+def type_files(name: str) -> list[str]:
+    """The files of ``problems/`` that hold a problem of type ``name`` (its declared example first)."""
+    import yaml
+
+    from dyncli import registry
+
+    spec = registry.TYPES[name]
+    out = [spec.example] if spec.example else []
+    for f in problem_files():
+        data = yaml.safe_load(f.read_text(encoding="utf-8"))
+        items = data.get("problems", [data]) if isinstance(data, dict) else []
+        rel = f.relative_to(ROOT).as_posix()
+        if rel not in out and any(isinstance(i, dict) and i.get("type") == name for i in items):
+            out.append(rel)
+    return out
+
+
+def expand(args: list[str]) -> list[str]:
+    """FILE arguments as they are; a registered type name as its files (:func:`type_files`)."""
+    from dyncli import registry
+
+    out: list[str] = []
+    for a in args:
+        if not a.endswith((".yaml", ".yml")) and a in registry.TYPES:
+            files = type_files(a)
+            if not files:
+                raise SystemExit(f"type {a!r} has no example in problems/ (declare TypeSpec.example)")
+            out += [str(ROOT / f) for f in files]
+        elif not a.endswith((".yaml", ".yml")):
+            raise SystemExit(f"{a!r} is neither a problem file nor a registered type")
+        else:
+            out.append(a)
+    return out
+
+
 def add(paths: list[str]) -> list[str]:
     """Record the files of ``problems/`` that the baseline does not hold yet (or only ``paths``,
     each of which must be new): a new type or example is added without re-recording, and so
@@ -159,12 +196,13 @@ def add(paths: list[str]) -> list[str]:
 
 
 USAGE = ("usage: python -m tests.tools.baseline record          (every file, after an intended change)\n"
-         "       python -m tests.tools.baseline add [FILE ...]   (only files not recorded yet)")
+         "       python -m tests.tools.baseline add [FILE ...]   (only files not recorded yet)\n"
+         "       python -m tests.tools.baseline add TYPE         (only the example files of a new type)")
 
 
 def main(argv: list[str]) -> int:
     if argv[:1] == ["add"]:
-        added = add(argv[1:])
+        added = add(expand(argv[1:]))
         print(f"added {len(added)} file(s) to {BASELINE.relative_to(ROOT)}: {', '.join(added) or 'none'}")
         return 0
     if argv[:1] != ["record"]:

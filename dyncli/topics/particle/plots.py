@@ -1,7 +1,8 @@
 """Plots of ``particle`` problems (``dyncli solve --plot``).
 
 * the trajectory x(t) in 3-D from x(0) to x(t_end), the requested ``at``
-  states marked;
+  states marked, and the attracting centre of every inverse-square force (the
+  focus of an orbit);
 * the energies over time: T, V, E = T + V and the work W̄ of the
   non-conservative forces, with the initial energy E₁ as a reference line
   (by (20.4) E − E₁ = W̄, so E falls below E₁ exactly as W̄ goes negative).
@@ -28,6 +29,16 @@ def _dense(problem, result):
     return grid, R
 
 
+def _centres(problem) -> list[tuple[float, float, float]]:
+    """The distinct centres of the problem's inverse-square forces."""
+    out: list[tuple[float, float, float]] = []
+    for f in problem.forces:
+        c = tuple(float(v) for v in f.center) if f.kind == "inverse-square" else None
+        if c is not None and c not in out:
+            out.append(c)
+    return out
+
+
 def plots(problem, result) -> list[Plot]:
     if "sample" not in result.extra:
         return []
@@ -41,6 +52,9 @@ def plots(problem, result) -> list[Plot]:
              marker="o", z=[p[2] for p in xa]),
         Line([xs[0][0]], [xs[0][1]], "start x(0)", style="", marker="s", z=[xs[0][2]]),
     ]
+    for c in _centres(problem):
+        traj.append(Line([c[0]], [c[1]], "attracting centre (inverse-square force)", style="", marker="*",
+                         z=[c[2]]))
     E1 = R["E"][0]
     energy = [
         Line(t, R["T"], "T, kinetic energy", style="-"),

@@ -33,12 +33,22 @@ class Steps:
             self.dense.append(dense)
 
     def y(self, ts) -> np.ndarray:
-        """States (len(ts), n) at the times (each within the run)."""
-        out = []
-        for t in ts:
-            k = min(bisect.bisect_left(self.t, float(t)), len(self.t) - 1)
-            out.append(self.dense[k](float(t)))
-        return np.array(out, dtype=float)
+        """States (len(ts), n) at the times (each within the run): one call of a step's
+        interpolant for all the times inside that step."""
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        if ts.size == 1:
+            k = min(bisect.bisect_left(self.t, float(ts[0])), len(self.t) - 1)
+            return np.asarray(self.dense[k](float(ts[0])), dtype=float)[None, :]
+        k = np.minimum(np.searchsorted(self.t, ts, side="left"), len(self.t) - 1)
+        order = np.argsort(k, kind="stable")
+        cuts = np.flatnonzero(np.diff(k[order])) + 1
+        out = None
+        for group in np.split(order, cuts):
+            Y = np.asarray(self.dense[int(k[group[0]])](ts[group]), dtype=float)
+            if out is None:
+                out = np.empty((ts.size, Y.shape[0]))
+            out[group] = Y.T
+        return out
 
 
 def report(p, res, steps: Steps, quantities, n: int) -> None:
@@ -48,18 +58,20 @@ def report(p, res, steps: Steps, quantities, n: int) -> None:
         return
     B = [0.0] + steps.t
 
-    def speeds_of(i):
-        return lambda ts: np.linalg.norm(steps.y(ts)[:, 3 * (n + i):3 * (n + i) + 3], axis=1)
+    def speeds(ts):                                  # every particle's speed: one column each
+        return np.linalg.norm(steps.y(ts)[:, 3 * n:6 * n].reshape(-1, n, 3), axis=2)
 
-    odos = [mf.Odometer(speeds_of(i), B) for i in range(n)]
-    res.results["distance"] = {str(i): odos[i].at(p.at) for i in range(n)}
+    odo = mf.Odometer(speeds, B)
+    D0 = odo.at(p.at)
+    res.results["distance"] = {str(i): [row[i] for row in D0] for i in range(n)}
     if not p.find:
         return
 
     def batch(ts) -> list[dict]:
         Y = steps.y(ts)
         X, G, H, T, com, Vint, Pint, W = quantities(Y)
-        D = [o.at(ts) for o in odos]
+        rows = odo.at(ts)
+        D = [[row[i] for row in rows] for i in range(n)]
         return [{"x_motion": {str(i): X[j, i].tolist() for i in range(n)}, "com_motion": com[j].tolist(),
                  "G_motion": G[j].tolist(), "H_O_motion": H[j].tolist(), "T_motion": float(T[j]),
                  "V_internal_motion": float(Vint[j]), "P_internal_motion": float(Pint[j]),

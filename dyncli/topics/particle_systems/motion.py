@@ -33,11 +33,12 @@ def _integrate(p, masses, X0, V0, rtol, atol, method, on_step=None):
     """The state rows at the times of ``at`` (and, with ``on_step``, every step's interpolant
     to t_end: the ``find`` queries' motion)."""
     n = len(masses)
+    pairs = pf.PairSet(p.pairs, n)
 
     def rhs(t, y):
         X = y[:3 * n].reshape(n, 3)
         V = y[3 * n:6 * n].reshape(n, 3)
-        A, P = pf.accelerations(p.pairs, masses, X, V)
+        A, P = pairs.accelerations(masses, X, V)
         return np.concatenate([V.ravel(), A.ravel(), [P]])
 
     y0 = np.concatenate([X0.ravel(), V0.ravel(), [0.0]])

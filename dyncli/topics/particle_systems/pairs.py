@@ -51,17 +51,63 @@ def pair_terms(pr, X: np.ndarray, V: np.ndarray):
     return f, power, pot, r, rdot
 
 
+class PairSet:
+    """Every pair of a system as plain arrays, built once per solve, so that one evaluation of the
+    internal forces is a few vectorised operations whatever the number of pairs (a loop over
+    pairs costs ~60 µs each per evaluation: 45 pairs made a step 15 ms)."""
+
+    def __init__(self, pairs, n: int):
+        self.n = n
+        self.I = np.array([pr.between[0] for pr in pairs], dtype=int)
+        self.J = np.array([pr.between[1] for pr in pairs], dtype=int)
+        kind = [pr.kind for pr in pairs]
+        num = lambda name, k: np.array([float(getattr(pr, name)) if pr.kind == k else 0.0 for pr in pairs], dtype=float)  # noqa: E731
+        self.k, self.L, self.c, self.K = num("k", "spring"), num("L", "spring"), num("c", "damper"), num("K", "inverse-square")
+        self.spring = np.array([k == "spring" for k in kind], dtype=bool)
+        self.damper = np.array([k == "damper" for k in kind], dtype=bool)
+        self.inverse = np.array([k == "inverse-square" for k in kind], dtype=bool)
+        self.can_vanish = bool(np.any(self.spring | self.damper))
+        self.B = np.zeros((n, len(kind)))           # F = B f: +f on i, −f on j (24.9)
+        self.B[self.I, np.arange(len(kind))] = 1.0
+        self.B[self.J, np.arange(len(kind))] = -1.0
+        self.BT = self.B.T.copy()
+        self.only = kind[0] if len(set(kind)) == 1 else None
+
+    def accelerations(self, masses: np.ndarray, X: np.ndarray, V: np.ndarray):
+        """(a (N, 3), P_int) under the pair forces alone (24.9: f_ji = −f_ij)."""
+        if not self.I.size:
+            return np.zeros_like(X), 0.0
+        d, dv = self.BT @ X, self.BT @ V          # x_i − x_j, v_i − v_j of every pair
+        r = np.sqrt((d * d).sum(axis=1))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            e = d / r[:, None]
+            rdot = (e * dv).sum(axis=1)
+            phi = self._phi(r, rdot)
+            f = -phi[:, None] * e
+            power = -phi * rdot
+        if self.can_vanish:
+            # r = 0: the direction is undefined; a damper or a spring of free length 0 exerts no force there
+            zero = (r == 0) & ~self.inverse
+            if zero.any():
+                f[zero] = 0.0
+                power = np.where(zero, 0.0, power)
+        return (self.B @ f) / masses[:, None], float(power.sum())
+
+    def _phi(self, r, rdot):
+        """φ of every pair (f_ij = −φ e): k (r − L), c ṙ or K/r² by its kind."""
+        if self.only == "spring":
+            return self.k * (r - self.L)
+        if self.only == "inverse-square":
+            return self.K / (r * r)
+        if self.only == "damper":
+            return self.c * rdot
+        return np.where(self.spring, self.k * (r - self.L), 0.0) + np.where(self.damper, self.c * rdot, 0.0) \
+            + np.where(self.inverse, self.K / (r * r), 0.0)
+
+
 def accelerations(pairs, masses: np.ndarray, X: np.ndarray, V: np.ndarray):
     """(a (N, 3), P_int) under the pair forces alone."""
-    F = np.zeros_like(X)
-    P = 0.0
-    for pr in pairs:
-        f, power, _, _, _ = pair_terms(pr, X, V)
-        i, j = pr.between
-        F[i] += f
-        F[j] -= f                          # (24.9)
-        P += power
-    return F / masses[:, None], P
+    return PairSet(pairs, len(masses)).accelerations(masses, X, V)
 
 
 def snapshot(pairs, masses, X, V, O):

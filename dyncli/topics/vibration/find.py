@@ -20,6 +20,7 @@ point's time changes x there by ½|ẍ|δ² only).
 from __future__ import annotations
 
 import math
+import sys
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
@@ -63,16 +64,37 @@ class Response:
         w0, wd0 = self.x0 - self.L - P.imag, self.p.v0 - iOP.imag
         wn, z, L = self.omega_n, self.zeta, self.L
 
-        def xv(t: float):
+        def slow(t: float):
             e = cmath.exp(1j * Om * t)
             wh, vh = cf.free_at(t, w0, wd0, wn, z)
             return L + wh + (P * e).imag, vh + (iOP * e).imag
-        return xv
+        if not 0.0 <= z < 1.0 or not all(map(math.isfinite, (w0, wd0, wn, Om))):
+            return slow
+        # the same arithmetic as cf.free_at and the complex products, with the constants hoisted
+        ws, sig = cf.roots(wn, z)[0], z * wn
+        b, K = wd0 + sig * w0, wn * (wn * w0) + sig * wd0
+        Pr, Pi, Qr, Qi = P.real, P.imag, iOP.real, iOP.imag
+        exp, cos, sin = math.exp, math.cos, math.sin
 
-    def acceleration_at(self, t: float, x: float, v: float) -> float:
-        """ẍ from (17.15a) at a known (x, v)."""
-        s, sd = self.s0 * math.sin(self.Om * t), self.s0 * self.Om * math.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo[0] * math.sin(self.fo[1] * t) / self.p.m
+        def fast(t: float):
+            try:
+                return _fast(t)
+            except ValueError:                     # sin/cos of an overflowed argument: nan as numpy gives
+                return slow(t)
+
+        def _fast(t: float):
+            y = ws * t
+            ex, c = exp(-sig * t), cos(y)
+            ts = t * (sin(y) / y) if y else t
+            u = Om * t
+            ec, es = cos(u), sin(u)
+            return L + ex * (w0 * c + b * ts) + (Pr * es + Pi * ec), ex * (wd0 * c - K * ts) + (Qr * es + Qi * ec)
+        return fast
+
+    def acceleration_at(self, t, x, v, X=math):
+        """ẍ from (17.15a) at a known (x, v) (plain floats, or arrays with ``X = numpy``)."""
+        s, sd = self.s0 * X.sin(self.Om * t), self.s0 * self.Om * X.cos(self.Om * t)
+        f = 0.0 if self.fo is None else self.fo[0] * X.sin(self.fo[1] * t) / self.p.m
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
@@ -163,8 +185,11 @@ def _odometer(resp: Response, t_end: float):
     if resp.fo is None and resp.s0 == 0.0:
         return _free_odometer(resp)
     turns = _forced_turns(resp, t_end) if t_end > 0 else []
-    at_turns = {t: resp.at(t)[0] for t in turns} if len(turns) <= SCALAR_GRID else \
-        dict(zip(turns, resp.arrays(__import__("numpy").asarray(turns, dtype=float))[0].tolist()))
+    if not _on_arrays(len(turns)):
+        xv = resp.scalar()
+        at_turns = {t: xv(t)[0] for t in turns}
+    else:
+        at_turns = dict(zip(turns, resp.arrays(__import__("numpy").asarray(turns, dtype=float))[0].tolist()))
 
     def x(u: float) -> float:
         return at_turns[u] if u in at_turns else resp.at(u)[0]
@@ -232,22 +257,34 @@ def _free_odometer(resp: Response):
 SCALAR_GRID = 2048
 
 
+def _on_arrays(n: int) -> bool:
+    """Whether n points go on numpy arrays: when they are many, or numpy is loaded already (a
+    sweep, the Python API), where one vectorised pass costs less than n calls in floats."""
+    return n > SCALAR_GRID or "numpy" in sys.modules
+
+
 def _forced_turns(resp: Response, t_end: float) -> list[float]:
     """The roots of v in (0, t_end) with a base motion or a force: sign changes on the grid of
-    breaks, all refined at once by the project's bracketed root search on arrays
-    (:func:`dyncli.rootfind.roots_in_brackets`)."""
+    breaks, all refined at once by the project's bracketed Newton on arrays
+    (:func:`dyncli.rootfind.newton_in_brackets`, the exact acceleration as the slope) when numpy
+    is loaded already or the grid is long; in plain floats otherwise (a cold closed-form solve
+    stays at the import floor)."""
     breaks, _ = resp.breaks(t_end)
-    if len(breaks) <= SCALAR_GRID:
+    if not _on_arrays(len(breaks)):
         return _forced_turns_scalar(resp, breaks)
     import numpy as np
 
-    from dyncli.rootfind import roots_in_brackets
+    from dyncli.rootfind import newton_in_brackets
 
     T = np.asarray(breaks, dtype=float)
     _, V = resp.arrays(T)
     k = np.nonzero(V[:-1] * V[1:] < 0)[0]
     zeros = T[1:-1][V[1:-1] == 0.0]
-    t = roots_in_brackets(lambda x, _: resp.arrays(x)[1], T[k], T[k + 1], V[k], V[k + 1]) if k.size else k
+
+    def v_and_a(t, _):
+        x, v = resp.arrays(t)
+        return v, resp.acceleration_at(t, x, v, np)
+    t = newton_in_brackets(v_and_a, T[k], T[k + 1], V[k], V[k + 1]) if k.size else k
     return sorted(np.asarray(t, dtype=float).tolist() + zeros.tolist())
 
 

@@ -1,4 +1,7 @@
-"""Graded work (docs/check.md): every submission graded against the key.
+"""The grader of ``dyncli check`` (docs/check.md): every submission graded
+against a key, in both modes — the instructor's key (graded work) or the key
+built from a self-study answer file (:mod:`dyncli.check.selfstudy`); where
+the two differ is the key's :class:`~dyncli.check.keyfile.Policy`.
 
 * A variant is the key's problems with the student's drawn ``params``
   substituted (only names a problem's ``params`` already has).
@@ -15,21 +18,23 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from dyncli.check import carry, zeros
-from dyncli.check.compare import compare, has_unit_text, rel_text as _pct
+from dyncli.check.compare import compare, has_unit_text, rel_text
 from dyncli.check.diagnose import TEXT, diagnose
-from dyncli.check.engine import _diag_from_message, lookup
+from dyncli.check.emit.common import fmt_given
 from dyncli.check.keyfile import Key, Question
+from dyncli.check.paths import lookup, unknown_key_message
 from dyncli.check.quantities import NO_UNIT, UnitSpec, WrongDimension, convert, result_unit, unit_spec
-from dyncli.check.formats import fmt_given
+from dyncli.check.results import QuestionResult, SubmissionResult
 from dyncli.check.safe import shown
 from dyncli.check.submission import Submission
 from dyncli.loader import Diagnostic, LoadedProblem
 
-FULL = ("correct", "carried")
+_DIAG_RE = re.compile(r"^(?P<file>.*?):(?P<line>\d+):(?P<col>\d+): (?P<msg>.*)$", re.S)
 
 
 @dataclass
@@ -43,95 +48,20 @@ class Truth:
     reached: bool = True
     roundoff: bool = False         # a number zero up to round-off, graded as 0 (dyncli.check.zeros)
     quotes_values: bool = False    # a solver's message: may quote values derived from true answers
+    unknown: bool = False          # self-study: the answer path is not in the results (error says why)
+    diag: Diagnostic | None = None  # where the problem failed (self-study reports it per check)
+    trace: str | None = None       # our own traceback (--debug)
 
 
-@dataclass
-class QuestionResult:
-    id: str
-    status: str          # correct | carried | partial | wrong | missing | invalid | error
-    score: float
-    points: float
-    given: Any = None
-    expected: Any = None           # shown only with --reveal
-    diagnosis: str | None = None
-    message: str = ""
-    rel_error: float | None = None
-    feedback: str | None = None              # the key's feedback text shown with this status or slip
-    carried_rel_error: float | None = None   # from the answer that follows from the student's carried input
-    line: int | None = None
-    col: int | None = None
-    visible: bool = True
-    title: str = ""
-    answer: str = ""
-
-    @property
-    def exit_code(self) -> int:
-        return 0 if self.status in FULL else 2 if self.status == "invalid" else 1
-
-
-@dataclass
-class SubmissionResult:
-    file: str
-    student: str | None
-    max_score: float
-    params: dict = field(default_factory=dict)
-    questions: list[QuestionResult] = field(default_factory=list)
-    unknown: list[dict] = field(default_factory=list)
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    error_code: int = 0
-
-    @property
-    def score(self) -> float:
-        return sum(q.score for q in self.questions)
-
-    @property
-    def exit_code(self) -> int:
-        codes = [self.error_code, 2 if self.diagnostics else 0, 1 if self.unknown else 0]
-        return max(codes + [q.exit_code for q in self.questions])
-
-
-@dataclass
-class KeyReport:
-    key: Key
-    submissions: list[SubmissionResult] = field(default_factory=list)
-    solves: int = 0
-    reveal: bool = False
-    warnings: list[dict] = field(default_factory=list)     # {student, files, message}
-    roster: Any = None                                    # --roster (dyncli.check.roster.Roster)
-    course: dict = field(default_factory=dict)            # --stats, --compare (dyncli.check.gradebook)
-
-    @property
-    def score(self) -> float:
-        return sum(s.score for s in self.submissions)
-
-    def claims(self) -> None:
-        """A warning for every student id that several submissions claim."""
-        by: dict[str, list[SubmissionResult]] = {}
-        for s in self.submissions:
-            if s.student is not None:
-                by.setdefault(s.student, []).append(s)
-        for sid, subs in by.items():
-            if len(subs) > 1:
-                files = [s.file for s in subs]
-                self.warnings.append({"student": sid, "files": files, "message":
-                                      f"{len(files)} submissions claim student '{shown(sid)}' ("
-                                      + ", ".join(shown(f) for f in files[:5]) + (", ..." if len(files) > 5 else "")
-                                      + "): each is graded with that student's numbers; check who wrote which"})
-
-    @property
-    def max_score(self) -> float:
-        return sum(s.max_score for s in self.submissions)
-
-    @property
-    def exit_code(self) -> int:
-        return max([2 if self.key.diagnostics else 0] + [s.exit_code for s in self.submissions])
-
-    def counts(self) -> dict[str, int]:
-        out: dict[str, int] = {}
-        for s in self.submissions:
-            for q in s.questions:
-                out[q.status] = out.get(q.status, 0) + 1
-        return out
+def diagnostic_of(msg: str) -> Diagnostic:
+    """A solver's one-line message (``file:line:col: text``) as a Diagnostic."""
+    m = _DIAG_RE.match(msg or "")
+    if m:
+        return Diagnostic(m["file"], int(m["line"]), int(m["col"]), None, m["msg"])
+    head, sep, rest = (msg or "").partition(": ")
+    if sep and not head.count(" "):
+        return Diagnostic(head, None, None, None, rest)
+    return Diagnostic("", None, None, None, msg or "unknown error")
 
 
 def not_reached(results: Any, path: str) -> bool:
@@ -153,11 +83,12 @@ def scalar(x: Any) -> float | None:
     return float(x) if isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) else None
 
 
-class KeyGrader:
+class Grader:
     def __init__(self, key: Key, files, reveal: bool = False):
         self.key, self.files, self.reveal = key, files, reveal
         self._params: dict[str, dict] = {}
         self._truth: dict[tuple, Truth] = {}
+        self._outcomes: dict[tuple, Any] = {}
 
     # -- variants and references ------------------------------------------
     def params(self, student: str) -> dict[str, float]:
@@ -200,28 +131,28 @@ class KeyGrader:
                     self._truth[memo] = t
                     return t
             extra[q.carry[1]] = carried
-        t = self._solve(q, self.params(student), extra)
+        t = self._solve(q, self.params(student), extra) if q.error is None else \
+            Truth(error=q.error.message, code=2, diag=q.error)
         self._truth[memo] = t
         return t
 
     def _solve(self, q: Question, values: dict, extra: dict) -> Truth:
-        outcome = self.files.solve(self.problem(q, values, extra), validated=False)
+        memo = (id(q.problem), tuple(sorted(values.items())), tuple(sorted(extra.items())))
+        outcome = self._outcomes.get(memo)      # the questions of one problem share its solve
+        if outcome is None:
+            outcome = self._outcomes[memo] = self.files.solve(self.problem(q, values, extra), validated=False)
         if outcome.exit_code != 0 or outcome.result is None:
-            d = _diag_from_message(outcome.message or "")
-            return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True)
-        results = getattr(outcome, "_plain", None)
-        if results is None:
-            from dyncli.render.jsonout import jsonable
-
-            results = outcome._plain = jsonable(outcome.result.results)
+            d = diagnostic_of(outcome.message or "")
+            return Truth(error=d.message, code=outcome.exit_code or 3, quotes_values=True, diag=d, trace=outcome.trace)
+        solved = self.files.results(outcome)
+        results = solved.results
         found, value, msg = lookup(results, q.answer)
+        if not found and self.key.policy.unknown_path:
+            return Truth(error=unknown_key_message(results, q.answer, solved.index), code=1, unknown=True)
         if not found:
             return Truth(error=f"the key's answer path '{shown(q.answer)}' is not in the results"
                                + (f" ({msg})" if msg else ""), code=2)
-        scale = getattr(outcome, "_scale", None)
-        if scale is None:
-            scale = outcome._scale = zeros.scale_of(results)
-        value, roundoff = zeros.snap(value, scale)
+        value, roundoff = zeros.snap(value, solved.scale) if self.key.policy.snap_zeros else (value, False)
         return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer), roundoff=roundoff)
 
     def unit(self, q: Question, truth: Truth, given: Any = None) -> UnitSpec:
@@ -239,6 +170,8 @@ class KeyGrader:
 
     # -- grading ----------------------------------------------------------
     def grade(self, sub: Submission) -> SubmissionResult:
+        """A submission of the key's students: nothing is graded for an
+        invalid submission or a student whose variant cannot be drawn."""
         from dyncli.check.variants import VariantError
 
         sr = SubmissionResult(sub.file, sub.student, self.key.max_score, diagnostics=list(sub.diagnostics))
@@ -249,6 +182,11 @@ class KeyGrader:
         except VariantError as exc:
             sr.diagnostics.append(Diagnostic(self.key.file, None, None, "variants.require", str(exc)))
             return sr
+        self.grade_into(sub, sr)
+        return sr
+
+    def grade_into(self, sub: Submission, sr: SubmissionResult) -> None:
+        """Every question of the key graded from ``sub`` into ``sr``."""
         for q in self.key.questions:
             r = self.grade_one(q, sub, sr)
             text = q.feedback.get(r.diagnosis or "") or q.feedback.get(r.status)
@@ -257,27 +195,30 @@ class KeyGrader:
             r.line, r.col = sub.positions.get(q.id, (None, None))
             sr.questions.append(r)
         self.unknown(sub, sr)
-        return sr
 
     def grade_one(self, q: Question, sub: Submission, sr: SubmissionResult) -> QuestionResult:
         title = q.title or (q.problem.title if q.problem is not None else "")
         r = QuestionResult(q.id, "missing", 0.0, q.points, sub.answers.get(q.id), visible=q.visible,
-                           title=title, answer=q.answer)
+                           title=title, answer=q.answer, tolerance=q.tol)
         t = self.truth(q, sub.student)
+        policy = self.key.policy
         r.expected = t.value
-        if t.error:   # the detail may quote values derived from true answers: only with --reveal
+        if t.error and not t.unknown:   # the detail may quote values derived from true answers: only with --reveal
             r.status = "error"
-            r.message = ("not graded: the key's problem could not be solved for this variant"
-                         + (f" ({t.error})" if self.reveal or not t.quotes_values
+            r.message = (f"not graded: {policy.not_solved}"
+                         + (f" ({t.error})" if self.reveal or not t.quotes_values or not policy.secret
                             else " (tell your instructor: --selftest shows why)"))
             sr.error_code = max(sr.error_code, t.code)
             return r
-        if r.given is None:
+        if q.invalid is not None or t.unknown:
+            r.status, r.message = ("invalid", q.invalid) if q.invalid is not None else ("unknown", t.error)
+            return r
+        if r.given is None and not policy.null_is_answer:
             r.message = "not answered"
             return r
         spec = self.unit(q, t, r.given)
         v = compare(r.given, t.value, q.tol, spec)
-        r.rel_error = v.rel_error
+        r.rel_error, r.abs_error = v.rel_error, v.abs_error
         if v.correct:
             r.status, r.score = "correct", q.points
             return r
@@ -327,7 +268,7 @@ class KeyGrader:
         rel = carry.nearest_rel(g, [scalar(v) for v in values])
         if not src_ok and rel is not None:
             r.carried_rel_error = rel
-            r.message = (f"relative error {_pct(rel)} from the answer that follows from your "
+            r.message = (f"relative error {rel_text(rel)} from the answer that follows from your "
                          f"{shown(src.id)} = {shown(fmt_given(sub.answers[src.id]), 24)} (carried forward) "
                          f"exceeds the tolerance ({q.tol.describe()})")
         return False
@@ -394,12 +335,12 @@ def _magnitude_ok(given: Any, true: Any, tol) -> bool:
     from dyncli import units
     from dyncli.check.compare import number_ok
 
-    m = units._QUANTITY.match(given) if isinstance(given, str) else None
+    m = units.QUANTITY.match(given) if isinstance(given, str) else None
     t = scalar(true)
     if not m or t is None:
         return False
     try:
-        q = units.registry().Quantity(float(m.group("num")), units.registry().parse_units(units._clean(m.group("unit"))))
+        q = units.registry().Quantity(float(m.group("num")), units.registry().parse_units(units.clean_unit(m.group("unit"))))
         return number_ok(float(q.to_base_units().magnitude), t, tol)
     except Exception:  # noqa: BLE001
         return False

@@ -1,0 +1,50 @@
+"""Input model of ``pendulum`` problems (docs/types/pendulum.md)."""
+
+from __future__ import annotations
+
+import math
+from typing import Literal, Optional
+
+from pydantic import Field, field_validator, model_validator
+
+from dyncli.errors import InputError
+from dyncli.fields import Find, Num, ProblemBase, Times
+
+#: |θ₀| beyond this many radians is no release angle (and its whole turns would lose the fraction)
+MAX_ANGLE = 1e6
+
+
+class Pendulum(ProblemBase):
+    """A bob of mass m on a light rod (or string) of length l swinging in a vertical plane."""
+
+    type: Literal["pendulum"]
+    l: Num(gt=0, dim="length", description="length of the pendulum (pivot to bob) [m]") = Field(...)  # type: ignore[valid-type]
+    g: Num(gt=0, dim="acceleration", description="gravitational acceleration [m/s²] (default 9.81)") = 9.81  # type: ignore[valid-type]
+    m: Optional[Num(gt=0, dim="mass", description="mass of the bob [kg]: gives the tension and the energy")] = None  # type: ignore[valid-type]
+    theta0: Num(dim="angle", description="θ(0), from the downward vertical [rad] (write 30*deg for degrees)") = Field(...)  # type: ignore[valid-type]
+    theta_dot0: Num(dim="angular velocity", description="θ̇(0) [rad/s] (default 0: released from rest)") = 0.0  # type: ignore[valid-type]
+    at: Times(description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance") = Field(default_factory=list)  # type: ignore[valid-type]
+    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta_dot}, {min: tension}")  # type: ignore[valid-type]
+    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries, else one period)")] = None  # type: ignore[valid-type]
+
+    @field_validator("at")
+    @classmethod
+    def _times(cls, v):
+        for i, t in enumerate(v):
+            if t < 0:
+                raise ValueError(f"entry {i}: times must be >= 0 (the initial conditions hold at t = 0), got {t:g}")
+        return v
+
+    @model_validator(mode="after")
+    def _check(self):
+        if not abs(self.theta0) <= MAX_ANGLE:
+            raise InputError(f"|theta0| must be <= {MAX_ANGLE:g} rad (got {self.theta0:g}); give the release "
+                             "angle itself (whole turns change nothing)", "theta0")
+        w2 = self.g / self.l
+        if not (0.0 < w2 < math.inf):
+            raise InputError(f"g/l = {self.g:g}/{self.l:g} gives a frequency √(g/l) that is not a finite positive "
+                             "number", "l")
+        q = self.theta_dot0 / math.sqrt(w2)
+        if not math.isfinite(q * q) or not math.isfinite(self.theta_dot0 * self.theta_dot0 * self.l * (self.m or 1.0)):
+            raise InputError("θ̇₀/√(g/l) overflows: give a rate whose square (and m l θ̇₀²) is a finite number", "theta_dot0")
+        return self

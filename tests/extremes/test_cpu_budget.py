@@ -1,0 +1,108 @@
+"""The CPU budget of one solve (issue #29: no document takes more than ~2 s of CPU on an ODE
+before it is answered or refused with what to change).  The clock is replaced by one that
+advances a fixed amount per reading, so each decision here is deterministic; no timing is
+asserted."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from dyncli import cputime
+from dyncli.topics.particle_systems import pairs as pf
+from tests.conftest import solve_text
+
+LONG = """
+type: particles
+particles:
+  - {m: 1, x: [-0.5, 0, 0], v: [0, -0.3, 0]}
+  - {m: 1, x: [0.5, 0, 0], v: [0, 0.3, 0]}
+pairs:
+  - {between: [0, 1], kind: inverse-square, K: 1}
+at: [30]
+"""
+
+
+class _Clock:
+    """thread_time that advances ``tick`` seconds per reading."""
+
+    def __init__(self, tick: float):
+        self.now, self.tick = 0.0, tick
+
+    def __call__(self) -> float:
+        self.now += self.tick
+        return self.now
+
+
+@pytest.fixture
+def slow_clock(monkeypatch):
+    monkeypatch.setattr(cputime.time, "thread_time", _Clock(0.2))
+
+
+def test_default_budget_refuses_a_run_projected_beyond_it(slow_clock):
+    rec = solve_text(LONG)[0]
+    assert rec["error"] and "s of CPU" in rec["error"] and "accuracy.max_cpu" in rec["error"]
+    assert "budget of 2 s" in rec["error"]
+
+
+def test_max_cpu_raises_the_budget(slow_clock):
+    rec = solve_text(LONG + "accuracy: {max_cpu: 1e6}\n")[0]
+    assert rec.get("error") is None
+    assert rec["results"]["x_motion"]["0"][0] is not None
+
+
+def test_max_steps_given_means_the_file_sized_the_work(slow_clock):
+    rec = solve_text(LONG + "accuracy: {max_steps: 1000000}\n")[0]
+    assert rec.get("error") is None
+
+
+def test_a_refused_check_solve_falls_back_to_the_looser_one(monkeypatch):
+    # the main run fits; the check solve (at rtol/100) is refused by the budget: the looser solve
+    # gives the estimate, and the warning names the CPU budget
+    from dyncli import ode
+
+    real = ode.Budget.tick
+    runs = {"n": 0}
+
+    def tick(self, t, t_old=None, y=None):
+        if self.n == 0 and self._n_leg == 0:
+            runs["n"] += 1
+        if runs["n"] == 2 and self.n >= 40:
+            raise ode.OverCpu(self.goal, 3.0, 2.0, 1e4, t, y)
+        return real(self, t, t_old, y)
+    monkeypatch.setattr(ode.Budget, "tick", tick)
+    rec = solve_text(LONG.replace("at: [30]", "at: [5]"))[0]
+    assert rec.get("error") is None
+    assert any("CPU budget of the solve (accuracy.max_cpu)" in w for w in rec["warnings"])
+    assert rec["error_estimate"] is not None
+
+
+def test_no_budget_outside_a_solve():
+    assert cputime.used() is None
+    assert cputime.over_budget(0.0, 1.0, 1.0) is None
+
+
+@pytest.mark.parametrize("kinds", [("spring",), ("inverse-square",), ("damper",),
+                                   ("spring", "damper", "inverse-square", "spring")])
+def test_vectorised_pair_forces_equal_the_sum_over_pairs(kinds):
+    """The pair set's one-pass forces against the sum of each pair's own terms (24.9, 27.10)."""
+    rng = np.random.default_rng(7)
+    n = 6
+
+    class Pr:
+        def __init__(self, i, j, kind):
+            self.between, self.kind = (i, j), kind
+            self.k, self.L, self.c, self.K = 3.0, 0.4, 0.7, -2.5
+
+    pairs = [Pr(i, j, kinds[(i + j) % len(kinds)]) for i in range(n) for j in range(i + 1, n)]
+    m = rng.uniform(0.5, 2.0, n)
+    X, V = rng.normal(size=(n, 3)), rng.normal(size=(n, 3))
+    A, P = pf.PairSet(pairs, n).accelerations(m, X, V)
+    F, P_ref = np.zeros((n, 3)), 0.0
+    for pr in pairs:
+        f, power, _, _, _ = pf.pair_terms(pr, X, V)
+        F[pr.between[0]] += f
+        F[pr.between[1]] -= f
+        P_ref += power
+    assert A == pytest.approx(F / m[:, None], rel=1e-13, abs=1e-13)
+    assert P == pytest.approx(P_ref, rel=1e-13, abs=1e-13)
