@@ -384,7 +384,7 @@ def render_view(view, digits: int = DEFAULT_DIGITS):
             t.add_row(e(label), *[e(c) if isinstance(c, str) else fmt_num(c, digits) for c in comps])
         return t
     if isinstance(view, Equations):
-        t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")
+        t = PTable(title=e(view.title), caption=e(view.note), box=SIMPLE_HEAD, header_style="bold")
         t.add_column("", style="cyan")
         t.add_column("equation", justify="left", overflow="fold")
         for label, text, _tex in view.rows:
