@@ -189,24 +189,35 @@ def fit(table: Table, width: int | None) -> list[Table]:
     return [_rebuilt(table, list(range(len(cols))), texts, table.title)]
 
 
+def _is_label(text: str) -> bool:
+    """A cell that names a row (a body, a point), not a number."""
+    try:
+        float(text.replace("−", "-"))
+        return False
+    except ValueError:
+        return text not in ("", "—", "⋮") and not text.startswith("[")
+
+
 def _split_table(table: Table, texts, widths, width) -> list[Table]:
     """Columns too wide for a table of their own (with the first) broken,
-    then the columns packed into tables that fit ``width``."""
-    for k in range(1, len(widths)):
-        room = width - _total(table, [widths[0], 0])
+    then the columns packed into tables that fit ``width``; each repeats
+    the first column (and the second when it names the rows: ``body``)."""
+    keys = [0, 1] if len(widths) > 3 and texts[1] and all(_is_label(x) for x in texts[1]) else [0]
+    for k in range(len(keys), len(widths)):
+        room = width - _total(table, [widths[i] for i in keys] + [0])
         if widths[k] > room and not table.columns[k].no_wrap:
             texts[k] = [wrap(x, max(room, 8)) for x in texts[k]]
             widths[k] = _width(table.columns[k], texts[k])
     groups: list[list[int]] = [[]]
-    for k in range(1, len(widths)):
-        trial = [0] + groups[-1] + [k]
+    for k in range(len(keys), len(widths)):
+        trial = keys + groups[-1] + [k]
         if groups[-1] and _total(table, [widths[i] for i in trial]) > width:
             groups.append([])
         groups[-1].append(k)
     out = []
     for g, ks in enumerate(groups):
         title = table.title if g == 0 else (f"{table.title} (continued)" if table.title else None)
-        out.append(_rebuilt(table, [0] + ks, texts, title, caption=g == len(groups) - 1))
+        out.append(_rebuilt(table, keys + ks, texts, title, caption=g == len(groups) - 1))
     return out
 
 
