@@ -80,6 +80,7 @@ def _motion(p) -> Result:
     S = at_times(traj, F, times, steps=True)
     resid, scale = energy_residual(p, F, S)
     res.results.update(reported(S, resid))
+    res.scales["energy_residual"] = scale
     res.series.append(Series("t", times, list(REPORTED) + ["distance"]))
     report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
