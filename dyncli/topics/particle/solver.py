@@ -31,6 +31,7 @@ from dyncli.topics.particle.forces import Forces
 from dyncli.topics.particle.report import REPORTED, at_times, energy_residual, report_terms, reported
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
+
 def _ode_method(p) -> str:
     return runner.scipy_method(p.accuracy.method)
 
