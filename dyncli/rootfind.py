@@ -287,7 +287,12 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
         if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor) and split:
             stack += [(m, v, depth + 1), (u, m, depth + 1)]
             continue
-        r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+        try:                                    # (coefficients of a huge f: the companion matrix overflows)
+            with np.errstate(all="ignore"):
+                r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+        except np.linalg.LinAlgError:
+            bad.append(m)
+            continue
         r = np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
         sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
         with np.errstate(all="ignore"):
