@@ -177,20 +177,21 @@ def parse_units(text: str | None) -> list[str] | None:
     return wanted
 
 
-def _symbolic_notes(fmt: str, problems: list[LoadedProblem]) -> None:
+def _symbolic_notes(fmt: str, types: list) -> None:
     if fmt in ("json", "yaml", "csv"):
         _err(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
         return
-    lacking = sorted({lp.type for lp in problems if lp.type and lp.type not in SYMBOLIC_TYPES})
+    lacking = sorted({t for t in types if t and t not in SYMBOLIC_TYPES})
     if lacking:
         _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(SYMBOLIC_TYPES)})")
 
 
-def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):
+def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], lazy: bool = False):
     """Parse the overrides, load and expand: (problems, exit codes so far)
-    or None after printing a usage error (exit 2)."""
+    or None after printing a usage error (exit 2); ``lazy``: (problems made
+    one at a time, codes, the problems' types)."""
     from dyncli.loader import load_paths
-    from dyncli.overrides import OverrideError, expand, parse_set, parse_sweep
+    from dyncli.overrides import OverrideError, expand, expand_lazily, parse_set, parse_sweep
 
     try:
         assigns = [parse_set(s) for s in sets] + [parse_sweep(s) for s in sweeps]
@@ -200,12 +201,13 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):
     problems, diags = load_paths(files)
     for d in diags:
         _err(str(d))
+    types = [lp.type for lp in problems]
     try:
-        problems = expand(problems, assigns)
+        problems = (expand_lazily if lazy else expand)(problems, assigns)
     except OverrideError as exc:
         _err(exc.message)
         return None
-    return problems, [2 for _ in diags]
+    return (problems, [2 for _ in diags], types) if lazy else (problems, [2 for _ in diags])
 
 
 def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot=None, sets=(), sweeps=(),
@@ -214,6 +216,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     import sys
 
     from dyncli.render import emit
+    from dyncli.render.stream import RecordStream
 
     try:
         wanted = parse_units(units)
@@ -223,40 +226,52 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         _err(exc.message)
         return 2
     with _no_gc(bool(sweeps)):
-        loaded = _options_and_problems(files, list(sets), list(sweeps))
+        loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
         if loaded is None:
             return 2
-        problems, codes = loaded
+        problems, codes, types = loaded
         if symbolic:
-            _symbolic_notes(fmt, problems)
+            _symbolic_notes(fmt, types)
+        stream = RecordStream(fmt, long) if fmt in ("json", "yaml", "csv") and not plot else None
+        notes: list[str] = []
         outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug,
-                              emit.TableWriter(digits, wanted) if fmt == "table" else None)
-        if fmt != "table":
+                              emit.TableWriter(digits, wanted) if fmt == "table" else stream, notes, keep=stream is None)
+        if stream is not None:
+            stream.close()
+        elif fmt != "table":
             sys.stdout.write(emit.dumps(fmt, outcomes, digits, wanted, long))
     if plot:
         codes.append(_plot(outcomes, plot))
     if fmt in ("json", "yaml", "csv"):
-        for o in outcomes:
-            for w in (o.result.warnings if o.result is not None else []):
-                _err(f"{o.problem.file}: {o.problem.title}: warning: {w}")
+        for w in notes:
+            _err(w)
     return worst(codes)
 
 
-def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) -> list[Outcome]:
+def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, notes=None, keep=True) -> list[Outcome]:
+    """Solve each problem, its messages to stderr, its output to ``writer``
+    (the table, or a :class:`~dyncli.render.stream.RecordStream` that takes
+    failures too) as it is solved; the outcomes kept when ``keep`` (else only
+    the results' warnings, in ``notes``: a streamed sweep holds one point)."""
     import sys
 
     outcomes = []
     for lp in problems:
         o = solve_one(lp, options)
-        outcomes.append(o)
         codes.append(o.exit_code)
+        if keep:
+            outcomes.append(o)
+        if notes is not None and o.result is not None:
+            notes += [f"{lp.file}: {lp.title}: warning: {w}" for w in o.result.warnings]
         if o.message:
             _err_lines(o.message)
             if o.trace and debug:
                 from dyncli.printable import lines
 
                 print(lines(o.trace), file=sys.stderr)
-        if writer is not None and o.result is not None:
+        if writer is not None and hasattr(writer, "add"):
+            writer.add(o)
+        elif writer is not None and o.result is not None:
             writer.write(lp, o.result)
     return outcomes
 
