@@ -37,10 +37,7 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
             # detect non-finite values and report them as results' warnings or
             # exit codes); any other (scipy's IntegrationWarning...) becomes one
             # line among the results' warnings
-            warnings.simplefilter("always")
-            for quiet in (RuntimeWarning, DeprecationWarning, PendingDeprecationWarning, FutureWarning,
-                          ImportWarning, ResourceWarning):  # the last four are for developers
-                warnings.simplefilter("ignore", quiet)
+            warnings.filters[:0] = _quiet_filters()     # entering cleared the registries already
             result = fn(lp.model, options)
         if isinstance(result, Result):
             _library_warnings(result, caught)
@@ -69,6 +66,24 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
     if not isinstance(result, Result):  # pragma: no cover - defensive
         return Outcome(lp, None, 3, _internal(lp, TypeError("solver returned no Result")))
     return Outcome(lp, result, 0)
+
+
+_QUIET: list = []
+
+
+def _quiet_filters() -> list:
+    """The filters of a solve, made once: "always" for every warning, and
+    "ignore" for RuntimeWarning and the four for developers (Deprecation,
+    PendingDeprecation, Future, Import, Resource)."""
+    if not _QUIET:
+        with warnings.catch_warnings():
+            warnings.resetwarnings()
+            warnings.simplefilter("always")
+            for quiet in (RuntimeWarning, DeprecationWarning, PendingDeprecationWarning, FutureWarning,
+                          ImportWarning, ResourceWarning):
+                warnings.simplefilter("ignore", quiet)
+            _QUIET.extend(warnings.filters)
+    return _QUIET
 
 
 def _named(lp: LoadedProblem) -> str:
