@@ -25,7 +25,10 @@ class Stop(Exception):
 
 
 class Events:
-    def __init__(self, text: str, loader):
+    """The events of ``text``; ``caps`` = (deepest nesting, most values,
+    the exception class raised at a cap, with the message, line, column)."""
+
+    def __init__(self, text: str, loader, caps: tuple):
         import yaml
 
         self._loader = loader(text)
@@ -40,9 +43,7 @@ class Events:
         self._recording: list[tuple[list, int]] = []   # (events of an anchored collection, its depth)
         self.composer_error: Exception | None = None
         self._done = False
-        from dyncli import yamlsafe
-
-        self._max_depth, self._max_values = yamlsafe.MAX_DEPTH, yamlsafe.MAX_NODES
+        self._max_depth, self._max_values, self._error = caps
 
     def is_node(self, ev) -> bool:
         return type(ev) in self._nodes
@@ -85,9 +86,7 @@ class Events:
         return ev
 
     def _cap(self, ev, message: str):
-        from dyncli.yamlsafe import YamlError
-
-        raise YamlError(message, ev.start_mark.line + 1, ev.start_mark.column + 1)
+        raise self._error(message, ev.start_mark.line + 1, ev.start_mark.column + 1)
 
     def _record(self, ev) -> None:
         for events, _ in self._recording:

@@ -121,7 +121,7 @@ def _one_pass(text: str, loader) -> Document:
     then the first document's own errors (kept until the stream is read)."""
     from dyncli.yamlevents import Events, Stop
 
-    events = Events(text, loader)
+    events = Events(text, loader, (MAX_DEPTH, MAX_NODES, YamlError))
     builder = _Builder(events)
     root_seen, second, late = False, None, None
     for ev in events:
