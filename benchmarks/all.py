@@ -38,10 +38,13 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 
 SWEEP = ("problems/impact/wall.yaml", "e")          # a closed-form type with vector results
 FORMATS = ("table", "json", "yaml", "csv")
-#: a child that runs dyncli and reports its own peak memory (KiB) on fd 3's file
+#: a child that runs dyncli and writes its own peak memory (KiB) to a file: VmHWM, the high-water
+#: mark of its own address space (ru_maxrss would include the forking parent's memory)
 _CHILD = ("import resource, runpy, sys, os\nsys.argv = ['dyncli'] + sys.argv[1:]\ntry:\n"
           "    runpy.run_module('dyncli', run_name='__main__')\nexcept SystemExit:\n    pass\nfinally:\n"
-          "    open(os.environ['DYNCLI_BENCH_RSS'], 'w').write(str(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss))\n")
+          "    hwm = [ln.split()[1] for ln in open('/proc/self/status') if ln.startswith('VmHWM:')]\n"
+          "    open(os.environ['DYNCLI_BENCH_RSS'], 'w').write(hwm[0] if hwm else "
+          "str(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss))\n")
 
 
 def _env() -> dict:
@@ -135,14 +138,14 @@ def cold(runs: int) -> None:
         print(f"   {name + ' (' + Path(f).name + ')':<60} wall/floor {w / bw:5.2f}  CPU/floor {c / bc:5.2f}")
 
 
-def sweeps(runs: int, big: bool) -> None:
+def sweeps(runs: int, big: bool, formats=FORMATS) -> None:
     """3. sweeps per format and size."""
     sizes = [100, 1000, 10_000] + ([100_000] if big else [])
     path, field = SWEEP
     print(f"3. sweeps of {path} over {field} (fresh process to /dev/null; median of {runs}; goals 2 s at 1e4, 150 MB at 1e5)")
     print(f"   {'format':<6} {'points':>7} {'CPU s':>7} {'wall s':>7} {'peak MB':>8} {'CPU/2 s':>8} {'MB/150':>7} "
           f"{'us/point CPU':>12}")
-    for fmt in FORMATS:
+    for fmt in formats:
         cmds = [(["solve", path, "-f", fmt, "--sweep", f"{field}=0:1:{n}"], ROOT) for n in sizes]
         res = rounds(cmds, runs if not big else 1)
         for n, (w, c, mb) in zip(sizes, res):
@@ -196,12 +199,13 @@ def main() -> None:
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--big", action="store_true", help="also 1e5-point sweeps and 3,000 submissions")
     ap.add_argument("--only", default="1,2,3,4,5", help="sections to run, e.g. 1,3")
+    ap.add_argument("--formats", default=",".join(FORMATS), help="the sweeps' formats, e.g. json,csv")
     args = ap.parse_args()
     only = {int(x) for x in args.only.split(",")}
     load = os.getloadavg()
     print(f"dyncli benchmarks (issue 31); load average {load[0]:.2f} on {os.cpu_count()} CPUs; "
           f"{time.strftime('%Y-%m-%d %H:%M:%S')}")
-    for k, section in ((1, lambda: warm(args.runs)), (2, lambda: cold(args.runs)), (3, lambda: sweeps(args.runs, args.big)),
+    for k, section in ((1, lambda: warm(args.runs)), (2, lambda: cold(args.runs)), (3, lambda: sweeps(args.runs, args.big, args.formats.split(","))),
                        (4, lambda: batches(args.runs)), (5, lambda: check(args.runs, args.big))):
         if k in only:
             section()
