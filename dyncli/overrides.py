@@ -30,6 +30,7 @@ import typing
 from dataclasses import dataclass, replace
 from typing import Any
 
+from dyncli.chain import link
 from dyncli.errors import InputError
 
 MAX_POINTS = 200_000
@@ -270,19 +271,19 @@ def put(raw: dict, path: tuple, value: Any) -> dict:
 FAST_EXCLUDED = ("type", "title", "params", "g", "accuracy")
 
 
-def expand(problems: list, assigns: list[Assign]) -> list:
-    """One validated problem per (problem, point of the sweeps' product), in
-    input order; ``--set`` values apply to every point.  A problem that has
-    none of the swept fields appears once.  Raises :class:`OverrideError`
-    for a path that no problem has, or a product beyond ``MAX_POINTS``."""
-    return list(expand_lazily(problems, assigns))
+def expand(problems: list, assigns: list[Assign], lazy: bool = False):
+    """One validated problem per (problem, point of the sweeps' product), in input order; ``--set``
+    values apply to every point.  A problem that has none of the swept fields appears once (a chained
+    one once per point of its source: dyncli.chain.link).  Raises :class:`OverrideError` for a path
+    that no problem has, or a product beyond ``MAX_POINTS``.  ``lazy``: an iterator making them one at
+    a time (a streamed output holds one point; not when a problem is chained: it needs its source's)."""
+    points = _points(problems, assigns)
+    if lazy and not any(getattr(lp, "chain", None) for lp in problems):
+        return points
+    return link(list(points))
 
 
-def expand_lazily(problems: list, assigns: list[Assign]):
-    """:func:`expand`'s problems made one at a time (a streamed output holds
-    one point at a time); the options' errors are raised at once."""
-    if not assigns:
-        return iter(problems)
+def _points(problems: list, assigns: list[Assign]):
     for a in assigns:
         if not any(target(lp, a) for lp in problems):
             raise _unknown(problems, a)
@@ -348,7 +349,7 @@ def _fast(lp, base, sweeps, hits, points):
 
     first = _validated(lp, _with(base, sweeps, points[0]), _swept(sweeps, points[0]), hits)
     yield first
-    if first.error is not None or len(points) == 1:
+    if first.error is not None or first.model is None or len(points) == 1:   # None: a chained problem
         yield from _full(lp, base, sweeps, hits, points[1:])
         return
     validator, names = type(first.model).__pydantic_validator__, [t[0] for _, t in sweeps]
@@ -395,8 +396,7 @@ def _validated(lp, raw: dict, swept: dict, hits):
 
 
 def _failed(lp, exc: InputError, hits, swept: dict | None = None):
-    new = replace(lp, model=None, swept=swept or {})
-    new.error = lp.diagnostic(exc.path, exc.message)
+    new = replace(lp, model=None, swept=swept or {}, error=lp.diagnostic(exc.path, exc.message))
     _blame(new.error, hits)
     return new
 

@@ -24,6 +24,24 @@ class Outcome:
 
 
 def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
+    """The outcome of ``lp``, kept on it for the problems that take a parameter from its results
+    (dyncli.chain); a chained problem is first given those values and validated."""
+    if lp.chain and lp.error is None:
+        from dyncli import chain
+
+        try:
+            ready = chain.resolve(lp, lambda src: solve_one(src, options))
+        except chain.Failure as exc:
+            outcome = Outcome(lp, None, exc.code, exc.message)
+        else:
+            outcome = _solve(ready, options)
+    else:
+        outcome = _solve(lp, options)
+    lp.outcome = (lp.raw, outcome)
+    return outcome
+
+
+def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
     from dyncli import registry
 
     options = options or SolveOptions()
@@ -147,7 +165,6 @@ def outcome_record(o: Outcome) -> dict[str, Any]:
 
 # ------------------------------------------------------------------ commands
 
-SYMBOLIC_TYPES = ("kinematics", "rotating-frame", "top")   # types with a --symbolic view (tested)
 COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "min", "h", "g", "kg", "N", "kN",
                 "J", "kJ", "W", "kW", "Hz", "m/s", "km/h", "mph", "N*m", "N/m", "lbf", "ft", "in")
 
@@ -196,9 +213,12 @@ def _symbolic_notes(fmt: str, types: list) -> None:
     if fmt in ("json", "yaml", "csv"):
         _err(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
         return
-    lacking = sorted({t for t in types if t and t not in SYMBOLIC_TYPES})
+    from dyncli import registry
+
+    with_view = registry.having("symbolic")
+    lacking = sorted({t for t in types if t and t not in with_view})
     if lacking:
-        _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(SYMBOLIC_TYPES)})")
+        _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(with_view)})")
 
 
 def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], lazy: bool = False):
@@ -206,7 +226,7 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], 
     or None after printing a usage error (exit 2); ``lazy``: (problems made
     one at a time, codes, the problems' types)."""
     from dyncli.loader import load_paths
-    from dyncli.overrides import OverrideError, expand, expand_lazily, parse_set, parse_sweep
+    from dyncli.overrides import OverrideError, expand, parse_set, parse_sweep
 
     try:
         assigns = [parse_set(s) for s in sets] + [parse_sweep(s) for s in sweeps]
@@ -218,7 +238,7 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], 
         _err(str(d))
     types = [lp.type for lp in problems]
     try:
-        problems = (expand_lazily if lazy else expand)(problems, assigns)
+        problems = expand(problems, assigns, lazy)
     except OverrideError as exc:
         _err(exc.message)
         return None
@@ -348,5 +368,6 @@ def validate_command(files, sets=()) -> int:
         else:
             from dyncli.printable import line
 
-            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok"))
+            taken = ", ".join(f"{n} from problem {ln.source}'s {ln.path}" for n, ln in lp.chain.items())
+            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok" + (f" (params {taken}: checked when solved)" if taken else "")))
     return worst(codes)

@@ -15,6 +15,7 @@ import numpy as np
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
 
+from . import contacts
 from . import elements as el
 from .dynamics import Load, SceneSystem
 from .system import BodyData, Point, SurfaceData, perp
@@ -75,7 +76,11 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict) -> SurfaceData:
+def surface_of(name: str, s: dict):
+    if s.get("curve") is not None:
+        from .curved import CurveData
+
+        return CurveData(name, *s["curve"], s.get("q_range"))
     d = np.array(s["direction"], float)
     d = d / math.hypot(d[0], d[1])
     return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
@@ -145,6 +150,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
     for name, j in plan.joints.items():
         kind, path = j["kind"], f"joints.{name}.{j['kind']}"
         a = j[kind]
+        if kind in ("contact", "rolls") and _on_curve(name, j, R, q, n, out):
+            continue
         if kind == "pin":
             P, Q = R.pair(a, path, q)
             out.append(el.Pin(name, kind, n, path, P=P, Q=Q))
@@ -164,15 +171,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
-        elif kind == "contact":
-            P = R.point(a[0], path + ".0")
-            s = R.surface(a[1], path + ".1")
-            mu_s = j["mu"] if j["mu"] is not None else (j["mu_s"] or 0.0)
-            mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j["mu_k"] is not None else mu_s)
-            if j["mu_k"] is not None and j["mu_s"] is None:
-                mu_s = mu_k
-            out.append(el.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k,
-                                  mode="slide" if (mu_s or mu_k) else "smooth", sign=0.0))
+        elif kind in ("contact", "stop"):
+            out.append(_contact(name, kind, j, R, path, n))
         elif kind == "rolls":
             b = R.body(a[0], path + ".0")
             _rigid(b, "rolling", path + ".0")
@@ -181,8 +181,9 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             s = R.surface(a[1], path + ".1")
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
-            out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
-                                c0=c0, mu_s=j["mu_s"]))
+            out.append(contacts.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+                                c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
+                                      e=float(j.get("e") or 0.0)))
         elif kind == "drive":
             bname, _, coord = a.partition(".")
             b = R.body(bname, path)
@@ -196,6 +197,45 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "cord":
             cords.append((name, j))
     return out, cords
+
+
+def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
+    """A contact (or a stop: made only at an impact) of a point on a straight surface, with its
+    friction coefficients (mu for both, or mu_s / mu_k; one given stands for the other)."""
+    a = j[kind]
+    P = R.point(a[0], path + ".0")
+    s = R.surface(a[1], path + ".1")
+    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+    if j.get("mu_k") is not None and j.get("mu_s") is None:
+        mu_s = mu_k
+    mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
+    return contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
+                            e=float(j.get("e") or 0.0), stop=kind == "stop")
+
+
+def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:
+    """A contact or rolling joint on a curved surface (dyncli/topics/scene/curved.py) appended
+    to ``out`` (True), or False on a straight one (where `at` of a contact is refused)."""
+    kind = j["kind"]
+    path = f"joints.{name}.{kind}"
+    s = R.surface(j[kind][1], path + ".1")
+    if not getattr(s, "curved", False):
+        if kind == "contact" and j["at"] is not None:
+            raise InputError("`at` places a contact on a curved surface (the curve's q); on a straight one give "
+                             "the point's position", f"joints.{name}.at")
+        return False
+    from . import curved
+
+    if kind == "contact":
+        out.append(curved.contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
+        return True
+    b = R.body(j[kind][0], path + ".0")
+    _rigid(b, "rolling", path + ".0")
+    if b.radius <= 0:
+        raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
+    out.append(curved.rolls_on(name, kind, n, path, Point(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    return True
 
 
 def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:

@@ -28,19 +28,42 @@ def _at(base: str, field: str | None) -> str:
 PointRef = Union[str, list[Num(dim="length")]]  # type: ignore[valid-type]
 
 
-class Surface(StrictModel):
-    """A fixed straight line through ``through`` along ``direction``; bodies are on its left
-    (the side of n = e3 × d̂)."""
+class SurfaceCurve(StrictModel):
+    """A curved surface r(q) = x1(q) e1 + x2(q) e2 (the constrained-particle curve language, in the plane)."""
 
-    through: list[Num(dim="length")] = Field(description="[x1, x2]: a point of the line [m]")  # type: ignore[valid-type]
-    direction: list[Num()] = Field(description="[d1, d2]: its direction (bodies on the left)")  # type: ignore[valid-type]
+    x1: ExprField(("q",), dim="length", description="x1(q) [m]: number or expression in q")  # type: ignore[valid-type]
+    x2: ExprField(("q",), dim="length", description="x2(q) [m]: number or expression in q")  # type: ignore[valid-type]
+
+
+class Surface(StrictModel):
+    """A fixed straight line through ``through`` along ``direction``, or a fixed ``curve``;
+    bodies are on its left (the side of n = e3 × d̂, d̂ the direction or the curve's tangent
+    in the sense of increasing q)."""
+
+    through: Optional[list[Num(dim="length")]] = Field(None, description="[x1, x2]: a point of the line [m]")  # type: ignore[valid-type]
+    direction: Optional[list[Num()]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")  # type: ignore[valid-type]
     length: Optional[Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")] = None  # type: ignore[valid-type]
-    curve: Optional[Any] = Field(None, description="curved surfaces: not in the first release (refused)")
+    curve: Optional[SurfaceCurve] = Field(None, description="a curved surface {x1, x2}: expressions in the parameter q [m] "
+                                          "(instead of through and direction); bodies on the left of increasing q")
+    q_range: Optional[list[Num()]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "  # type: ignore[valid-type]
+                                           "reaching an end leaves the surface (an event)")
 
     def check(self, base: str) -> None:
         if self.curve is not None:
-            raise InputError("curved surfaces have no syntax in this release: use a straight surface, or the "
-                             "constrained-particle type for a particle on a curve", _at(base, "curve"))
+            for name in ("through", "direction", "length"):
+                if getattr(self, name) is not None:
+                    raise InputError(f"a curved surface takes no {name}" + (" (give q_range for its ends)" if name == "length"
+                                                                             else ": its points are the curve's"),
+                                     _at(base, name))
+            if self.q_range is not None and (len(self.q_range) != 2 or not self.q_range[0] < self.q_range[1]):
+                raise InputError("q_range must be [q_min, q_max] with q_min < q_max", _at(base, "q_range"))
+            return
+        if self.q_range is not None:
+            raise InputError("q_range goes with a curve (a straight surface ends at `length`)", _at(base, "q_range"))
+        for name, example in (("through", "[0, 0]"), ("direction", "[1, 0]")):
+            if getattr(self, name) is None:
+                raise InputError(f"a straight surface needs {name}, e.g. {name}: {example} (or give a curve: {{x1, x2}} "
+                                 "in q)", _at(base, name))
         if len(self.through) != 2:
             raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", _at(base, "through"))
         if len(self.direction) != 2:
@@ -135,7 +158,7 @@ class _OneOf(StrictModel):
 
 
 class Joint(_OneOf):
-    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive."""
+    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive, stop."""
 
     pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
@@ -144,28 +167,33 @@ class Joint(_OneOf):
     cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
+    stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e)")
+    e: Optional[Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")] = None  # type: ignore[valid-type]
     value: Optional[ExprField(TIME, description="drive: the coordinate as an expression in t")] = None  # type: ignore[valid-type]
     mu: Optional[Num(ge=0, description="friction coefficient (static = kinetic)")] = None  # type: ignore[valid-type]
     mu_s: Optional[Num(ge=0, description="static friction coefficient")] = None  # type: ignore[valid-type]
     mu_k: Optional[Num(ge=0, description="kinetic friction coefficient")] = None  # type: ignore[valid-type]
-    at: Optional[Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]")] = None  # type: ignore[valid-type]
+    at: Optional[Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]; on a curved surface (rolls or contact): the curve's parameter q there")] = None  # type: ignore[valid-type]
     length: Optional[Num(gt=0, dim="length", description="cord or link length [m]")] = None  # type: ignore[valid-type]
     angle: Optional[Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")] = None  # type: ignore[valid-type]
 
-    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive")
+    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive", "stop")
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
-        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k"}, "rolls": {"at", "mu_s"},
-                   "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
-        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
+        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at", "e"},
+                   "rolls": {"at", "mu_s", "mu_k", "e"}, "cord": {"length"}, "link": {"length", "angle"},
+                   "drive": {"value"}, "stop": {"e", "mu"}}[kind]
+        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e"):
             if getattr(self, extra) is not None and extra not in allowed:
                 raise InputError(f"a {kind} joint takes no {extra}", _at(base, extra))
         if kind == "drive" and self.value is None:
             raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", _at(base, "value"))
+        if kind == "stop" and self.e is None:
+            raise InputError("a stop needs e, the coefficient of restitution (0 <= e <= 1), e.g. e: 0.8", _at(base, "e"))
         if kind == "contact" and self.mu is not None and (self.mu_s is not None or self.mu_k is not None):
             raise InputError("give mu, or mu_s and mu_k, not both", _at(base, "mu"))
-        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2}.get(kind)
+        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2, "stop": 2}.get(kind)
         if two and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
                              _at(base, kind))
@@ -214,7 +242,7 @@ class Scene(ProblemBase):
     """A planar mechanism: bodies, joints, forces (docs/types/scene.md)."""
 
     type: Literal["scene"]
-    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines by name")
+    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines (or curves) by name")
     bodies: dict[str, Body] = Field(description="bodies by name (`ground` is reserved)")
     joints: dict[str, Joint] = Field(default_factory=dict, description="joints by name")
     forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")

@@ -11,9 +11,9 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build
+from . import assembly, build, curved
 from .dynamics import SceneSystem
-from .elements import Contact, Rolls
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
@@ -100,8 +100,16 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
         if j["kind"] == "rolls" and j["at"] is not None:
             b, s = R.body(j["rolls"][0], ""), R.surface(j["rolls"][1], "")
             if b.rigid and free[b.index[0]]:
-                c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
+                if getattr(s, "curved", False):
+                    c = curved.place_on(s, j["at"], b.radius)
+                else:
+                    c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
                 q[b.index[0]], q[b.index[1]] = c
+        if j["kind"] == "contact" and j["at"] is not None:
+            P, s = R.point(j["contact"][0], ""), R.surface(j["contact"][1], "")
+            if getattr(s, "curved", False) and P.body is not None and free[P.body.index[0]]:
+                i = P.body.index
+                q[i[0]], q[i[1]] = curved.place_on(s, j["at"], 0.0) - P.arm(q)
 
 
 def _place_hanging(plan, cords, R, q, free, system) -> None:
@@ -189,7 +197,7 @@ def _initial_modes(system, q, v) -> None:
     refused naming the contacts."""
     at_rest = []
     for e in system.elements:
-        if isinstance(e, Contact) and e.rough:
+        if isinstance(e, Contact) and e.rough and e.mode != "off":       # a stop is open until it is struck
             vt = e.slip_speed(q, v)
             if vt != 0:
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
@@ -235,10 +243,17 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
                                  "release it from a position where it pushes, or join them with a two-sided joint",
                                  e.path)
+            if what == "leaves" and getattr(e.surface, "curved", False):
+                raise InputError(f"at t = 0 the contact point is beyond an end of the curve {e.surface.name!r} (q_range "
+                                 f"{list(e.surface.q_range)}): place it on the curve or widen q_range", e.path)
             if what == "leaves":
                 raise InputError(f"at t = 0 the contact point is {-g:.6g} m beyond an end of the surface "
                                  f"{e.surface.name!r} (length {e.surface.length:g} m from its `through` point): "
                                  "place it on the surface or lengthen it", e.path)
+            if what == "impact":
+                raise InputError(f"at t = 0 the point {e.P.label} is {-g:.6g} m on the wrong side of the surface "
+                                 f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
+                                 "n = e3 × d̂ (or reverse the surface's direction)", e.path)
             if what == "slack":
                 raise InputError(f"at t = 0 the cord {e.name!r} would have to push: T = {g:.6g} N; a cord only pulls "
                                  "(use a link for a rod that pushes)", e.path)
