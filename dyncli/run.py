@@ -260,14 +260,15 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     except InputError as exc:
         _err(exc.message)
         return 2
-    with _no_gc(bool(sweeps)):
+    streamed = fmt in ("json", "yaml", "csv") and not plot      # one point held at a time: collections stay cheap
+    with _no_gc(bool(sweeps) and not streamed):
         loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
         if loaded is None:
             return 2
         problems, codes, types = loaded
         if symbolic:
             _symbolic_notes(fmt, types)
-        stream = RecordStream(fmt, long) if fmt in ("json", "yaml", "csv") and not plot else None
+        stream = RecordStream(fmt, long) if streamed else None
         notes: list[str] = []
         outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug,
                               emit.TableWriter(digits, wanted) if fmt == "table" else stream, notes, keep=stream is None)
