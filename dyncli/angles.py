@@ -45,12 +45,11 @@ def angle_fields(model: Any, raw: Any, path: tuple = ()) -> Iterator[tuple[tuple
 
     if not isinstance(raw, dict):
         return
-    for name, info in type(model).model_fields.items():
-        key = info.alias or name
+    for name, key, angle in _fields(type(model)):
         if key not in raw:
             continue
         value, written, here = getattr(model, name, None), raw[key], path + (key,)
-        if is_angle(info):
+        if angle:
             yield here, written
         elif isinstance(value, BaseModel):
             yield from angle_fields(value, written, here)
@@ -62,6 +61,18 @@ def angle_fields(model: Any, raw: Any, path: tuple = ()) -> Iterator[tuple[tuple
             for k, v in value.items():
                 if isinstance(v, BaseModel) and k in written:
                     yield from angle_fields(v, written[k], here + (k,))
+
+
+_FIELDS: dict[type, list[tuple[str, str, bool]]] = {}
+
+
+def _fields(cls: type) -> list[tuple[str, str, bool]]:
+    """(name, key as written, is an angle) of every field of a model class,
+    worked out once per class (every solve asks)."""
+    out = _FIELDS.get(cls)
+    if out is None:
+        out = _FIELDS[cls] = [(name, info.alias or name, is_angle(info)) for name, info in cls.model_fields.items()]
+    return out
 
 
 def _bare(written: Any) -> float | None:

@@ -227,11 +227,25 @@ class TypeSpec:
         """Check a solver's :class:`~dyncli.result.Result` and fill its
         ``symbols``/``units`` from the declaration (a solver's own entries,
         e.g. a test type's, are kept)."""
-        self.check(result.results)
-        sym, uni = self.symbols_units(result.results)
+        sym, uni = self._checked(tuple(result.results))
         result.symbols = {**sym, **result.symbols}
         result.units = {**uni, **result.units}
         return result
+
+    def _checked(self, keys: tuple) -> tuple[dict[str, str], dict[str, str]]:
+        """:meth:`check` then :meth:`symbols_units` of ``keys``, remembered per
+        tuple of keys (a type's solves return the same keys: a sweep asks
+        thousands of times); fresh dicts each call."""
+        cache = getattr(self, "_keys_cache", None)
+        if cache is None or cache[0] != len(self.results):
+            cache = self._keys_cache = (len(self.results), {})
+        hit = cache[1].get(keys)
+        if hit is None:
+            self.check(dict.fromkeys(keys))
+            hit = self.symbols_units(keys)
+            if len(cache[1]) < 256:
+                cache[1][keys] = hit
+        return dict(hit[0]), dict(hit[1])
 
     def top_level(self) -> list[ResultSpec]:
         return [r for r in self.results if r.part_of is None]

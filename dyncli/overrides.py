@@ -14,8 +14,8 @@ has the field; a path that no problem has is an :class:`OverrideError`
 
 Sweeps of top-level numeric fields are validated once: each further point
 copies the validated model and validates only the swept fields
-(``validate_assignment``, which also runs the model's checks).  The first
-points are checked against a full validation; any difference (a field
+(``validate_assignment``, which also runs the model's checks).  The second
+and the last point are checked against a full validation first; any difference (a field
 derived from a swept one, an expression field) switches that problem back
 to validating every point in full.
 """
@@ -271,13 +271,19 @@ def put(raw: dict, path: tuple, value: Any) -> dict:
 FAST_EXCLUDED = ("type", "title", "params", "g", "accuracy")
 
 
-def expand(problems: list, assigns: list[Assign]) -> list:
+def expand(problems: list, assigns: list[Assign], lazy: bool = False):
     """One validated problem per (problem, point of the sweeps' product), in input order; ``--set``
     values apply to every point.  A problem that has none of the swept fields appears once (a chained
     one once per point of its source: dyncli.chain.link).  Raises :class:`OverrideError` for a path
-    that no problem has, or a product beyond ``MAX_POINTS``."""
-    if not assigns:
-        return link(list(problems))
+    that no problem has, or a product beyond ``MAX_POINTS``.  ``lazy``: an iterator making them one at
+    a time (a streamed output holds one point; not when a problem is chained: it needs its source's)."""
+    points = _points(problems, assigns)
+    if lazy and not any(getattr(lp, "chain", None) for lp in problems):
+        return points
+    return link(list(points))
+
+
+def _points(problems: list, assigns: list[Assign]):
     for a in assigns:
         if not any(target(lp, a) for lp in problems):
             raise _unknown(problems, a)
@@ -285,10 +291,7 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     n = math.prod(len(a.values) for a in assigns if a.sweep)
     if n > MAX_POINTS:
         raise OverrideError(f"--sweep: {n:,} combinations; at most {MAX_POINTS:,} per run")
-    out: list = []
-    for lp in problems:
-        out += _expand_one(lp, assigns)
-    return link(out)
+    return (p for lp in problems for p in _expand_one(lp, assigns))
 
 
 def _no_path_twice(problems, assigns: list[Assign]) -> None:
@@ -302,12 +305,12 @@ def _no_path_twice(problems, assigns: list[Assign]) -> None:
                                         "its values; give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
 
 
-def _expand_one(lp, assigns: list[Assign]) -> list:
+def _expand_one(lp, assigns: list[Assign]):
     from dyncli import registry
 
     hits = [(a, t) for a in assigns if (t := target(lp, a)) is not None]
     if not hits:
-        return [lp]
+        return (lp,)
     sets = [(a, t) for a, t in hits if not a.sweep]
     sweeps = [(a, t) for a, t in hits if a.sweep]
     base = lp.raw
@@ -315,10 +318,10 @@ def _expand_one(lp, assigns: list[Assign]) -> list:
         for a, t in sets:
             base = put(base, t, a.values[0])
     except InputError as exc:
-        return [_failed(lp, exc, hits)]
+        return (_failed(lp, exc, hits),)
     if not sweeps:
-        return [_validated(lp, base, {}, hits)]
-    points = itertools.product(*[a.values for a, _ in sweeps])
+        return (_validated(lp, base, {}, hits),)
+    points = list(itertools.product(*[a.values for a, _ in sweeps]))
     fast = all(len(t) == 1 and t[0] not in FAST_EXCLUDED for _, t in sweeps) and registry.available(lp.type or "")
     return (_fast if fast else _full)(lp, base, sweeps, hits, points)
 
@@ -327,51 +330,48 @@ def _swept(sweeps, point) -> dict:
     return {a.path: v for (a, _), v in zip(sweeps, point)}
 
 
-def _full(lp, base, sweeps, hits, points) -> list:
-    out = []
+def _full(lp, base, sweeps, hits, points):
     for point in points:
         try:
             raw = base
             for (_, t), v in zip(sweeps, point):
                 raw = put(raw, t, v)
         except InputError as exc:
-            out.append(_failed(lp, exc, hits, _swept(sweeps, point)))
+            yield _failed(lp, exc, hits, _swept(sweeps, point))
             continue
-        out.append(_validated(lp, raw, _swept(sweeps, point), hits))
-    return out
+        yield _validated(lp, raw, _swept(sweeps, point), hits)
 
 
-def _fast(lp, base, sweeps, hits, points) -> list:
-    """Validate the first point in full, then only the swept top-level fields
-    of a copy of its model.  Checked against full validation at the second
-    and the last point; on any difference every point is validated in full."""
+def _fast(lp, base, sweeps, hits, points):
+    """One point at a time, the fast route of the module's docstring (the
+    second and the last point checked first)."""
     from dyncli.loader import params_of
 
-    points = list(points)
     first = _validated(lp, _with(base, sweeps, points[0]), _swept(sweeps, points[0]), hits)
+    yield first
     if first.error is not None or first.model is None or len(points) == 1:   # None: a chained problem
-        return [first] + _full(lp, base, sweeps, hits, points[1:])
-    model = first.model
-    validator = type(model).__pydantic_validator__
+        yield from _full(lp, base, sweeps, hits, points[1:])
+        return
+    validator, names = type(first.model).__pydantic_validator__, [t[0] for _, t in sweeps]
     ctx = {"params": params_of(base), "base_dir": lp.base_dir}
-    names = [t[0] for _, t in sweeps]
-    out = [first]
-    for k, point in enumerate(points[1:], start=1):
-        raw = _with(base, sweeps, point)
-        swept = _swept(sweeps, point)
+
+    def quick(point):          # None when it fails: the full validation reports it
         try:
-            m = model.model_copy()
+            m = first.model.model_copy()
             for name, v in zip(names, point):
                 validator.validate_assignment(m, name, v, context=ctx)
-        except Exception:  # noqa: BLE001 - the full validation reports it
-            out.append(_validated(lp, raw, swept, hits))
-            continue
-        if k == 1 or k == len(points) - 1:
-            ref = _validated(lp, raw, swept, hits)
-            if ref.error is not None or ref.model.model_dump(warnings=False) != m.model_dump(warnings=False):
-                return out[:1] + _full(lp, base, sweeps, hits, points[1:])
-        out.append(replace(lp, raw=raw, model=m, error=None, swept=swept))
-    return out
+            return m
+        except Exception:  # noqa: BLE001
+            return None
+
+    for k in sorted({1, len(points) - 1}):
+        m, ref = quick(points[k]), _validated(lp, _with(base, sweeps, points[k]), _swept(sweeps, points[k]), hits)
+        if m is not None and (ref.error is not None or ref.model.model_dump(warnings=False) != m.model_dump(warnings=False)):
+            yield from _full(lp, base, sweeps, hits, points[1:])
+            return
+    for point in points[1:]:
+        raw, swept, m = _with(base, sweeps, point), _swept(sweeps, point), quick(point)
+        yield _validated(lp, raw, swept, hits) if m is None else replace(lp, raw=raw, model=m, error=None, swept=swept)
 
 
 def _with(base: dict, sweeps, point) -> dict:

@@ -90,11 +90,17 @@ def having(capability: str) -> tuple[str, ...]:
     return tuple(n for n, s in TYPES.items() if getattr(s, capability))
 
 
+_LOADED: dict[str, Any] = {}     # "module:attr" -> the object (looked up once: every solve asks)
+
+
 def _load(ref: Any) -> Any:
     if not isinstance(ref, str):
         return ref
-    mod, _, attr = ref.partition(":")
-    return getattr(importlib.import_module(mod), attr)
+    found = _LOADED.get(ref)
+    if found is None:
+        mod, _, attr = ref.partition(":")
+        found = _LOADED[ref] = getattr(importlib.import_module(mod), attr)
+    return found
 
 
 def available(name: str) -> bool:

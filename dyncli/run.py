@@ -55,10 +55,7 @@ def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
             # detect non-finite values and report them as results' warnings or
             # exit codes); any other (scipy's IntegrationWarning...) becomes one
             # line among the results' warnings
-            warnings.simplefilter("always")
-            for quiet in (RuntimeWarning, DeprecationWarning, PendingDeprecationWarning, FutureWarning,
-                          ImportWarning, ResourceWarning):  # the last four are for developers
-                warnings.simplefilter("ignore", quiet)
+            warnings.filters[:0] = _quiet_filters()     # entering cleared the registries already
             result = fn(lp.model, options)
         if isinstance(result, Result):
             _library_warnings(result, caught)
@@ -87,6 +84,24 @@ def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
     if not isinstance(result, Result):  # pragma: no cover - defensive
         return Outcome(lp, None, 3, _internal(lp, TypeError("solver returned no Result")))
     return Outcome(lp, result, 0)
+
+
+_QUIET: list = []
+
+
+def _quiet_filters() -> list:
+    """The filters of a solve, made once: "always" for every warning, and
+    "ignore" for RuntimeWarning and the four for developers (Deprecation,
+    PendingDeprecation, Future, Import, Resource)."""
+    if not _QUIET:
+        with warnings.catch_warnings():
+            warnings.resetwarnings()
+            warnings.simplefilter("always")
+            for quiet in (RuntimeWarning, DeprecationWarning, PendingDeprecationWarning, FutureWarning,
+                          ImportWarning, ResourceWarning):
+                warnings.simplefilter("ignore", quiet)
+            _QUIET.extend(warnings.filters)
+    return _QUIET
 
 
 def _named(lp: LoadedProblem) -> str:
@@ -194,21 +209,22 @@ def parse_units(text: str | None) -> list[str] | None:
     return wanted
 
 
-def _symbolic_notes(fmt: str, problems: list[LoadedProblem]) -> None:
+def _symbolic_notes(fmt: str, types: list) -> None:
     if fmt in ("json", "yaml", "csv"):
         _err(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
         return
     from dyncli import registry
 
     with_view = registry.having("symbolic")
-    lacking = sorted({lp.type for lp in problems if lp.type and lp.type not in with_view})
+    lacking = sorted({t for t in types if t and t not in with_view})
     if lacking:
         _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(with_view)})")
 
 
-def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):
+def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], lazy: bool = False):
     """Parse the overrides, load and expand: (problems, exit codes so far)
-    or None after printing a usage error (exit 2)."""
+    or None after printing a usage error (exit 2); ``lazy``: (problems made
+    one at a time, codes, the problems' types)."""
     from dyncli.loader import load_paths
     from dyncli.overrides import OverrideError, expand, parse_set, parse_sweep
 
@@ -220,12 +236,13 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):
     problems, diags = load_paths(files)
     for d in diags:
         _err(str(d))
+    types = [lp.type for lp in problems]
     try:
-        problems = expand(problems, assigns)
+        problems = expand(problems, assigns, lazy)
     except OverrideError as exc:
         _err(exc.message)
         return None
-    return problems, [2 for _ in diags]
+    return (problems, [2 for _ in diags], types) if lazy else (problems, [2 for _ in diags])
 
 
 def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot=None, sets=(), sweeps=(),
@@ -234,6 +251,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     import sys
 
     from dyncli.render import emit
+    from dyncli.render.stream import RecordStream
 
     try:
         wanted = parse_units(units)
@@ -242,43 +260,57 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     except InputError as exc:
         _err(exc.message)
         return 2
-    with _no_gc(bool(sweeps)):
-        loaded = _options_and_problems(files, list(sets), list(sweeps))
+    streamed = fmt in ("json", "yaml", "csv") and not plot      # one point held at a time: collections stay cheap
+    with _no_gc(bool(sweeps) and not streamed):
+        loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
         if loaded is None:
             return 2
-        problems, codes = loaded
+        problems, codes, types = loaded
         if symbolic:
-            _symbolic_notes(fmt, problems)
-        writer = emit.TableWriter(digits, wanted, wide, sweep=bool(sweeps)) if fmt == "table" else None
-        outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug, writer)
-        if writer is not None:
-            writer.close()
+            _symbolic_notes(fmt, types)
+        stream = RecordStream(fmt, long) if streamed else None
+        notes: list[str] = []
+        table = emit.TableWriter(digits, wanted, wide, sweep=bool(sweeps)) if fmt == "table" else None
+        outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug,
+                              table if table is not None else stream, notes, keep=stream is None)
+        if stream is not None:
+            stream.close()
+        elif table is not None:
+            table.close()
         else:
             sys.stdout.write(emit.dumps(fmt, outcomes, digits, wanted, long))
     if plot:
         codes.append(_plot(outcomes, plot))
     if fmt in ("json", "yaml", "csv") or (fmt == "table" and sweeps):      # a sweep's table: rows only
-        for o in outcomes:
-            for w in (o.result.warnings if o.result is not None else []):
-                _err(f"{o.problem.file}: {o.problem.title}: warning: {w}")
+        for w in notes:
+            _err(w)
     return worst(codes)
 
 
-def _solve_all(problems, options, codes: list[int], debug: bool, writer=None) -> list[Outcome]:
+def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, notes=None, keep=True) -> list[Outcome]:
+    """Solve each problem, its messages to stderr, its output to ``writer``
+    (the table, or a :class:`~dyncli.render.stream.RecordStream` that takes
+    failures too) as it is solved; the outcomes kept when ``keep`` (else only
+    the results' warnings, in ``notes``: a streamed sweep holds one point)."""
     import sys
 
     outcomes = []
     for lp in problems:
         o = solve_one(lp, options)
-        outcomes.append(o)
         codes.append(o.exit_code)
+        if keep:
+            outcomes.append(o)
+        if notes is not None and o.result is not None:
+            notes += [f"{lp.file}: {lp.title}: warning: {w}" for w in o.result.warnings]
         if o.message:
             _err_lines(o.message)
             if o.trace and debug:
                 from dyncli.printable import lines
 
                 print(lines(o.trace), file=sys.stderr)
-        if writer is not None and o.result is not None:
+        if writer is not None and hasattr(writer, "add"):
+            writer.add(o)
+        elif writer is not None and o.result is not None:
             writer.write(lp, o.result)
     return outcomes
 

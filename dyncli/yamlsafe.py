@@ -1,15 +1,16 @@
 """Safe YAML reading with source positions and hard caps.
 
-PyYAML's ``compose`` (the libyaml-based CSafeLoader when available, else
-SafeLoader) builds a node graph without constructing
-any Python object; we then construct plain data ourselves:
+One pass over PyYAML's parser events (the libyaml-based CSafeLoader when
+available, else SafeLoader; :mod:`dyncli.yamlevents`) builds plain data
+straight from the events, with no node graph and no Python object
+constructed by PyYAML:
 
 * only the standard tags (str, int, float, bool, null, map, seq) are allowed
   -- a ``!!python/...`` or any custom tag is invalid input;
 * the number of constructed nodes is capped, so alias expansion ("billion
   laughs") fails fast instead of exhausting memory;
 * nesting depth, node count and document size are capped (depth and node
-  count while parsing, before composing);
+  count while parsing, before anything is built);
 * duplicate mapping keys are an error;
 * every value's (line, col) is recorded under its path tuple.
 """
@@ -70,12 +71,13 @@ class Document:
             p = p[:-1]
 
 
-def _mark(node) -> tuple[int, int]:
-    return node.start_mark.line + 1, node.start_mark.column + 1
+def _mark(event) -> tuple[int, int]:
+    return event.start_mark.line + 1, event.start_mark.column + 1
 
 
 def load(text: str | bytes) -> Document:
-    """Parse one YAML document from ``text`` safely.  Raises YamlError."""
+    """Parse one YAML document from ``text`` safely, in one pass over the
+    parser's events (no node graph).  Raises YamlError."""
     import yaml
 
     if isinstance(text, bytes):
@@ -91,8 +93,7 @@ def load(text: str | bytes) -> Document:
         raise YamlError("file contains a NUL character (binary data?)")
     loader = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
     try:
-        _precheck(text, loader)
-        nodes = list(yaml.compose_all(text, Loader=loader))
+        return _one_pass(text, loader)
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
         tab = _tab_near(text, m.line if m is not None else None, m.column if m is not None else None)
@@ -110,16 +111,39 @@ def load(text: str | bytes) -> Document:
         raise YamlError(f"YAML error: {' '.join(str(exc).split())}") from None
     except RecursionError:
         raise YamlError("YAML is nested too deeply") from None
-    nodes = [n for n in nodes if n is not None]
-    if not nodes:
+
+
+def _one_pass(text: str, loader) -> Document:
+    """The first document built straight from the event stream, which is
+    read to its end.  The errors keep the order of a parse, then a compose,
+    then a construction: a syntax error or a cap (raised while parsing) comes
+    first, then an anchor error, then an empty file or several documents,
+    then the first document's own errors (kept until the stream is read)."""
+    from dyncli.yamlevents import Events, Stop
+
+    events = Events(text, loader, (MAX_DEPTH, MAX_NODES, YamlError))
+    builder = _Builder(events)
+    root_seen, second, late = False, None, None
+    for ev in events:
+        if not events.is_node(ev):
+            continue
+        if events.docs == 1 and not root_seen:
+            root_seen = True
+            try:
+                builder.doc.data = builder.value(ev, events, (), 0)
+            except Stop as stop:
+                late = stop.error
+        elif events.docs > 1 and second is None:
+            second = _mark(ev)
+    if events.composer_error is not None:
+        raise events.composer_error
+    if not root_seen:
         raise YamlError("file is empty: expected a problem (a mapping with 'type')", 1, 1)
-    if len(nodes) > 1:
-        line, col = _mark(nodes[1])
-        raise YamlError("file holds several YAML documents ('---'); use one document with 'problems: [...]'", line, col)
-    doc = Document(None)
-    counter = [0]
-    doc.data = _construct(nodes[0], (), doc, counter, 0)
-    return doc
+    if second is not None:
+        raise YamlError("file holds several YAML documents ('---'); use one document with 'problems: [...]'", *second)
+    if late is not None:
+        raise late
+    return builder.doc
 
 
 def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] | None:
@@ -139,92 +163,122 @@ def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] |
     return None
 
 
-def _precheck(text: str, loader) -> None:
-    """Stream the parser's events once and stop at the first one beyond the
-    depth or node caps, before anything is composed.  Scanning deeply nested
-    flow collections costs time quadratic in the depth (in PyYAML and in
-    libyaml), so the caps must bite while parsing, not after composing."""
-    import yaml
-
-    depth = nodes = 0
-    starts = (yaml.SequenceStartEvent, yaml.MappingStartEvent)
-    ends = (yaml.SequenceEndEvent, yaml.MappingEndEvent)
-    for ev in yaml.parse(text, Loader=loader):
-        if isinstance(ev, starts):
-            depth += 1
-            nodes += 1
-            if depth > MAX_DEPTH:
-                line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
-                raise YamlError(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
-        elif isinstance(ev, ends):
-            depth -= 1
-        elif isinstance(ev, (yaml.ScalarEvent, yaml.AliasEvent)):
-            nodes += 1
-        if nodes > MAX_NODES:
-            line, col = ev.start_mark.line + 1, ev.start_mark.column + 1
-            raise YamlError(f"document has more than {MAX_NODES} values", line, col)
+_TAGS: dict[tuple, str] = {}      # (plain scalar's text, implicit) -> its resolved tag
 
 
-def _construct(node, path: tuple, doc: Document, counter: list[int], depth: int) -> Any:
-    import yaml
+class _Builder:
+    """Plain data and its positions from the events of one document (the
+    standard tags only, the constructed values capped: aliases are built
+    again from their anchor's events, so an alias bomb stops at the cap)."""
 
-    counter[0] += 1
-    if counter[0] > MAX_NODES:
-        line, col = _mark(node)
-        raise YamlError(
-            f"document expands to more than {MAX_NODES} values (alias bomb?)", line, col
-        )
-    if depth > MAX_DEPTH:
-        line, col = _mark(node)
-        raise YamlError(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
-    line, col = _mark(node)
-    doc.pos.setdefault(path, (line, col))
-    tag = node.tag
-    if tag == _STD + "timestamp" and isinstance(node, yaml.ScalarNode):
-        raise YamlError(f"{node.value!r} reads as a date; write a number (or quote it for text)", line, col)
-    if tag not in _ALLOWED_TAGS:
-        raise YamlError(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
-    if isinstance(node, yaml.ScalarNode):
-        if tag != _STD + "str" and tag != _STD + "null":
-            doc.text[path] = node.value
-        try:
-            return _scalar(node)
-        except (ValueError, OverflowError):
-            shown = node.value if len(node.value) <= 40 else node.value[:37] + "..."
-            raise YamlError(f"cannot read value {shown!r} ({len(node.value)} characters)", line, col) from None
-    if isinstance(node, yaml.SequenceNode):
-        return [_construct(n, path + (i,), doc, counter, depth + 1) for i, n in enumerate(node.value)]
-    if isinstance(node, yaml.MappingNode):
+    def __init__(self, events):
+        import yaml
+
+        self.events, self.doc, self.count = events, Document(None), 0
+        self.resolver = yaml.resolver.Resolver()
+        self.y = yaml
+
+    def tag(self, ev) -> str:
+        """The event's tag, resolved as a composer would (plain scalars' tags
+        remembered by their text: a document repeats its keys and numbers)."""
+        y = self.y
+        tag = ev.tag
+        if tag is None or tag == "!":
+            if type(ev) is y.ScalarEvent:
+                key = (ev.value, ev.implicit)
+                tag = _TAGS.get(key)
+                if tag is None:
+                    tag = self.resolver.resolve(y.ScalarNode, ev.value, ev.implicit)
+                    if len(_TAGS) < 4096:
+                        _TAGS[key] = tag
+                return tag
+            kind = y.SequenceNode if type(ev) is y.SequenceStartEvent else y.MappingNode
+            tag = self.resolver.resolve(kind, None, ev.implicit)
+        return tag
+
+    def value(self, ev, it, path: tuple, depth: int) -> Any:
+        """The value that starts with event ``ev`` (its content read from ``it``)."""
+        y = self.y
+        if type(ev) is y.AliasEvent:
+            ev, it = self.replay(ev)
+        self.count += 1
+        line, col = _mark(ev)
+        if self.count > MAX_NODES:
+            raise _stop(f"document expands to more than {MAX_NODES} values (alias bomb?)", line, col)
+        if depth > MAX_DEPTH:
+            raise _stop(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
+        self.doc.pos.setdefault(path, (line, col))
+        tag, cls = self.tag(ev), type(ev)
+        if tag == _STD + "timestamp" and cls is y.ScalarEvent:
+            raise _stop(f"{ev.value!r} reads as a date; write a number (or quote it for text)", line, col)
+        if tag not in _ALLOWED_TAGS:
+            raise _stop(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
+        if cls is y.ScalarEvent:
+            if tag != _STD + "str" and tag != _STD + "null":
+                self.doc.text[path] = ev.value
+            try:
+                return _scalar(tag, ev.value)
+            except (ValueError, OverflowError, IndexError):     # IndexError: an empty "!!float"
+                shown = ev.value if len(ev.value) <= 40 else ev.value[:37] + "..."
+                raise _stop(f"cannot read value {shown!r} ({len(ev.value)} characters)", line, col) from None
+        if cls is y.SequenceStartEvent:
+            out = []
+            for child in it:
+                if type(child) is y.SequenceEndEvent:
+                    return out
+                out.append(self.value(child, it, path + (len(out),), depth + 1))
+            return out
+        return self.mapping(it, path, depth)
+
+    def mapping(self, it, path: tuple, depth: int) -> dict:
+        y, doc = self.y, self.doc
         out: dict = {}
-        for knode, vnode in node.value:
-            if knode.tag == _STD + "merge" or (isinstance(knode, yaml.ScalarNode) and knode.value == "<<" and knode.tag != _STD + "str"):
-                kl, kc = _mark(knode)
-                raise YamlError("YAML merge keys ('<<') are not supported", kl, kc)
-            if not isinstance(knode, yaml.ScalarNode):
-                kl, kc = _mark(knode)
-                raise YamlError("mapping keys must be plain names", kl, kc)
-            key = _construct(knode, path + ("<key>",), doc, counter, depth + 1)
+        for kev in it:
+            if type(kev) is y.MappingEndEvent:
+                return out
+            kit = it
+            if type(kev) is y.AliasEvent:
+                kev, kit = self.replay(kev)
+            kl, kc = _mark(kev)
+            ktag = self.tag(kev)
+            if ktag == _STD + "merge" or (type(kev) is y.ScalarEvent and kev.value == "<<" and ktag != _STD + "str"):
+                raise _stop("YAML merge keys ('<<') are not supported", kl, kc)
+            if type(kev) is not y.ScalarEvent:
+                raise _stop("mapping keys must be plain names", kl, kc)
+            key = self.value(kev, kit, path + ("<key>",), depth + 1)
             doc.pos.pop(path + ("<key>",), None)
             ktext = doc.text.pop(path + ("<key>",), None)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
-                key = str(knode.value)
+                key = str(kev.value)
             if key in out:
-                kl, kc = _mark(knode)
-                raise YamlError(f"duplicate key {key!r}", kl, kc)
-            doc.key_pos[path + (key,)] = _mark(knode)
+                raise _stop(f"duplicate key {key!r}", kl, kc)
+            doc.key_pos[path + (key,)] = (kl, kc)
             if ktext is not None:
                 doc.text[path + (key, "<key>")] = ktext
-            out[key] = _construct(vnode, path + (key,), doc, counter, depth + 1)
-        return out
-    raise YamlError("unsupported YAML node", line, col)  # pragma: no cover
+            out[key] = self.value(next(it), it, path + (key,), depth + 1)
+        return out  # pragma: no cover - the stream always closes a mapping
+
+    def replay(self, ev):
+        """The first event of the value an alias names, and its other events."""
+        from dyncli.yamlevents import Stop
+
+        events = self.events.alias(ev)
+        if events is None:
+            raise Stop(None)        # the stream keeps the composer's error
+        rest = iter(events)
+        return next(rest), rest
 
 
-def _scalar(node) -> Any:
+def _stop(message: str, line: int, col: int):
+    from dyncli.yamlevents import Stop
+
+    return Stop(YamlError(message, line, col))
+
+
+def _scalar(tag: str, val: str) -> Any:
     """Construct a plain scalar the way SafeLoader would, for the std tags."""
     import yaml
 
-    tag = node.tag
-    val = node.value
     if tag == _STD + "str":
         return val
     if tag == _STD + "null":
@@ -232,9 +286,9 @@ def _scalar(node) -> Any:
     if tag == _STD + "bool":
         return val.lower() in ("yes", "true", "on", "y")
     if tag == _STD + "int":
-        return yaml.SafeLoader.construct_yaml_int(_DUMMY, node)
+        return yaml.SafeLoader.construct_yaml_int(_DUMMY, val)
     if tag == _STD + "float":
-        return yaml.SafeLoader.construct_yaml_float(_DUMMY, node)
+        return yaml.SafeLoader.construct_yaml_float(_DUMMY, val)
     return val  # pragma: no cover
 
 
@@ -242,8 +296,8 @@ class _Dummy:
     inf_value = float("inf")
     nan_value = float("nan")
 
-    def construct_scalar(self, node):
-        return node.value
+    def construct_scalar(self, value):
+        return value         # the scalar's text itself stands for its node
 
 
 _DUMMY = _Dummy()

@@ -113,29 +113,78 @@ def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
 
 
 def _numeric(x: list) -> bool:
-    """A list of numbers, or of lists of numbers (vectors, tensors): no strings
-    or mappings, so it is safe and readable on one line."""
+    """A list of finite numbers, or of lists of them (vectors, tensors): no
+    strings or mappings, so it is safe and readable on one line."""
     for v in x:
         t = type(v)
-        if t is list:
+        if t is float:
+            if v - v != 0.0:     # nan or inf: left to json.dumps, which refuses it
+                return False
+        elif t is list:
             if not _numeric(v):
                 return False
-        elif t is not float and t is not int and v is not None:
+        elif t is not int and v is not None:
             return False
     return True
 
 
-def _encode(x: Any, indent: str, ascii_only: bool) -> str:
+def _leaves(x: Any, out: list) -> None:
+    """Every key and scalar of ``x`` in writing order (numeric lists are
+    written by ``repr``: the same text as ``json.dumps``)."""
+    if type(x) is dict:
+        for k, v in x.items():
+            out.append(str(k))
+            _leaves(v, out)
+    elif type(x) is list and x:
+        if not _numeric(x):
+            for v in x:
+                _leaves(v, out)
+    elif type(x) is not list:
+        out.append(x)
+
+
+def _layout(x: Any, indent: str, text, parts: list) -> None:
+    """``x`` indented by 2, its keys and scalars taken from ``text`` (their
+    JSON, in writing order)."""
     inner = indent + "  "
-    if isinstance(x, dict) and x:
-        items = (f"{inner}{json.dumps(str(k), ensure_ascii=ascii_only)}: {_encode(v, inner, ascii_only)}"
-                 for k, v in x.items())
-        return "{\n" + ",\n".join(items) + "\n" + indent + "}"
-    if isinstance(x, list) and x:
+    if type(x) is dict and x:
+        parts.append("{\n")
+        last = len(x) - 1
+        for i, v in enumerate(x.values()):
+            parts.append(f"{inner}{next(text)}: ")
+            _layout(v, inner, text, parts)
+            parts.append(",\n" if i < last else "\n")
+        parts.append(indent + "}")
+    elif type(x) is list and x:
         if _numeric(x):
-            return json.dumps(x, allow_nan=False)
-        return "[\n" + ",\n".join(inner + _encode(v, inner, ascii_only) for v in x) + "\n" + indent + "]"
-    return json.dumps(x, allow_nan=False, ensure_ascii=ascii_only)
+            parts.append(repr(x).replace("None", "null"))     # repr of ints, floats, None = their JSON
+            return
+        parts.append("[\n")
+        last = len(x) - 1
+        for i, v in enumerate(x):
+            parts.append(inner)
+            _layout(v, inner, text, parts)
+            parts.append(",\n" if i < last else "\n")
+        parts.append(indent + "]")
+    elif type(x) is dict:
+        parts.append("{}")
+    elif type(x) is list:
+        parts.append("[]")
+    else:
+        parts.append(next(text))
+
+
+def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
+    """One record (any JSON value) as :func:`dumps` writes it, its first line
+    not indented, the others by ``indent`` + 2: one ``json.dumps`` call for
+    all its keys and scalars (separated by newlines, which no JSON scalar
+    holds), numeric lists by ``repr``."""
+    leaves: list = []
+    _leaves(record, leaves)
+    text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
+    parts: list[str] = []
+    _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts)
+    return "".join(parts)
 
 
 def dumps(records: list[dict], ascii_only: bool = False) -> str:
@@ -144,4 +193,6 @@ def dumps(records: list[dict], ascii_only: bool = False) -> str:
     vectors) is written on one line, not one line per number; ``ascii_only``
     escapes non-ASCII characters (for a stdout that cannot encode them: the
     JSON is the same data)."""
-    return _encode(records, "", ascii_only)
+    if not records:
+        return "[]"
+    return "[\n" + ",\n".join("  " + encode(r, "  ", ascii_only) for r in records) + "\n]"

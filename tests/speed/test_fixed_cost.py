@@ -1,0 +1,153 @@
+"""The fixed cost per problem, by structure (no timing is asserted;
+``python -m benchmarks.all`` measures it):
+
+* a sweep streams: with ``--format json|yaml`` the first record reaches the
+  output before the last point is solved, and the output is the same bytes
+  as the whole-output writer's;
+* the YAML is read in one pass over the parser's events (no node graph, no
+  second parse), with the same data and positions as PyYAML's own loader;
+* a JSON record is written by one ``json.dumps`` call, the output equal to
+  an independent encoder (``json.dumps(indent=2)`` with every list of numbers
+  joined onto one line) for every example of problems/.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+import sys
+
+import pytest
+import yaml
+
+from tests.conftest import ROOT
+
+EXAMPLES = sorted((ROOT / "problems").rglob("*.yaml"))
+
+
+class _Watch(io.StringIO):
+    """stdout that notes how many points were solved at its first write."""
+
+    def __init__(self, solved: list):
+        super().__init__()
+        self.solved, self.first = solved, None
+
+    def write(self, s):
+        if self.first is None and s:
+            self.first = len(self.solved)
+        return super().write(s)
+
+
+@pytest.mark.parametrize("fmt", ["json", "yaml"])
+def test_a_sweep_streams(monkeypatch, fmt):
+    from dyncli import run
+    from dyncli.render import emit
+
+    solved: list = []
+    real = run.solve_one
+    monkeypatch.setattr(run, "solve_one", lambda lp, options=None: solved.append(lp) or real(lp, options))
+    out = _Watch(solved)
+    monkeypatch.setattr(sys, "stdout", out)
+    code = run.solve_command([str(ROOT / "problems/impact/wall.yaml")], fmt, sweeps=["e=0:1:40"])
+    assert code == 0 and len(solved) == 40
+    assert out.first is not None and out.first < 40          # written before the last point was solved
+    monkeypatch.setattr(sys, "stdout", io.StringIO())
+    outcomes = [real(lp) for lp in solved]
+    assert out.getvalue() == emit.dumps(fmt, outcomes)        # the same bytes as the whole-output writer
+
+
+def test_a_streamed_sweep_keeps_no_point(monkeypatch):
+    """The points are made one at a time: none is kept once written."""
+    import gc
+    import weakref
+
+    from dyncli import run
+
+    refs: list = []
+    real = run.solve_one
+
+    def solve(lp, options=None):
+        o = real(lp, options)
+        refs.append(weakref.ref(o.result))
+        return o
+
+    monkeypatch.setattr(run, "solve_one", solve)
+    monkeypatch.setattr(sys, "stdout", io.StringIO())
+    assert run.solve_command([str(ROOT / "problems/impact/wall.yaml")], "json", sweeps=["e=0:1:30"]) == 0
+    gc.collect()
+    assert sum(r() is not None for r in refs) <= 1
+
+
+def _positions(node, path=(), out=None):
+    """(path -> (line, col)) of every value, from PyYAML's node graph: the
+    independent route for the one-pass reader's positions."""
+    out = {} if out is None else out
+    out.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
+    if isinstance(node, yaml.SequenceNode):
+        for i, n in enumerate(node.value):
+            _positions(n, path + (i,), out)
+    elif isinstance(node, yaml.MappingNode):
+        for k, v in node.value:
+            _positions(v, path + (yaml.safe_load(k.value) if k.tag != "tag:yaml.org,2002:str" else k.value,), out)
+    return out
+
+
+@pytest.mark.parametrize("path", EXAMPLES[::3], ids=lambda p: p.name)
+def test_yaml_one_pass_matches_pyyaml(path, monkeypatch):
+    from dyncli import yamlsafe
+
+    text = path.read_text(encoding="utf-8")
+    calls = []
+    monkeypatch.setattr(yaml, "compose_all", lambda *a, **k: calls.append("compose") or [])
+    doc = yamlsafe.load(text)
+    assert not calls                                             # no node graph
+    assert doc.data == yaml.safe_load(text)
+    assert doc.pos == _positions(yaml.compose(text, Loader=yaml.SafeLoader))
+
+
+@pytest.mark.parametrize("text, message", [
+    ("a: &x 1\nb: &x 2\n", "second occurrence"),
+    ("a: *nowhere\n", "found undefined alias"),
+    ("a: &r [1, *r]\n", "nested more than"),
+    ("a: !!float ''\n", "cannot read value"),
+    ("a: 1\n---\nb: 2\n", "several YAML documents"),
+    ("a: 1\na: 2\nb: [\n", "YAML syntax error"),            # the syntax error before the duplicate key
+])
+def test_yaml_errors_in_parse_order(text, message):
+    from dyncli import yamlsafe
+
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load(text)
+    assert message in err.value.message
+
+
+def _reference(records) -> str:
+    """``json.dumps(indent=2)``, then every list of numbers joined onto one
+    line (from its innermost lists out)."""
+    text = json.dumps(records, indent=2, ensure_ascii=False)
+    num = r"[ \n0-9.eE+\-,nul]"
+    inner = r"\[(?:[ 0-9.eE+\-,nul]|\[(?:[ 0-9.eE+\-,nul]|\[[ 0-9.eE+\-,nul]*\])*\])*\]"
+    pattern = re.compile(r"\[\n(?:" + num + "|" + inner + r")*\]")
+    while True:
+        new = pattern.sub(lambda m: re.sub(r"\s", "", m.group(0)).replace(",", ", "), text)
+        if new == text:
+            return text
+        text = new
+
+
+def test_json_one_dumps_per_record_and_same_text(monkeypatch):
+    from dyncli.loader import load_paths
+    from dyncli.render import jsonout
+    from dyncli.run import outcome_record, solve_one
+
+    problems, _ = load_paths([str(p) for p in EXAMPLES])
+    records = [outcome_record(solve_one(p)) for p in problems]
+    calls = []
+    real = json.dumps
+    monkeypatch.setattr(jsonout.json, "dumps", lambda *a, **k: calls.append(1) or real(*a, **k))
+    text = jsonout.dumps(records)
+    monkeypatch.undo()
+    assert len(calls) == len(records)
+    assert text == _reference(records)
+    assert json.loads(text) == json.loads(json.dumps(records))
