@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import io
 import math
-from typing import Literal
+from typing import Annotated, Literal
 
 import pytest
 from pydantic import Field
@@ -23,8 +23,8 @@ from tests.conftest import solve_text
 
 class Toy(ProblemBase):
     type: Literal["toy-spring"]
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    k: Num(gt=0, description="spring constant [N/m]") = Field(...)  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    k: Annotated[float, Num(gt=0, description="spring constant [N/m]")] = Field(...)
     points: dict[str, float] = Field(default_factory=dict, description="name: amplitude [m]")
     bug: bool = False
 

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
+from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel, Times
 
 #: the coordinate names of each system, in basis order
 COORDINATES: dict[str, tuple[str, ...]] = {
@@ -40,7 +40,7 @@ INSTANT_REQUIRED: dict[str, tuple[str, ...]] = {
 
 
 def _n(dim: str, what: str, **kw):
-    return Optional[Num(dim=dim, description=what, **kw)]  # type: ignore[valid-type]
+    return Optional[Annotated[float, Num(dim=dim, description=what, **kw)]]
 
 
 class Instant(StrictModel):
@@ -86,16 +86,16 @@ class Kinematics(ProblemBase):
         "spherical (R, theta, phi; theta azimuth about e3, phi elevation from the e1-e2 plane), "
         "path (with instant: v, v_dot, rho)",
     )
-    position: Optional[dict[str, ExprField(("t",), description="coordinate as an expression in t")]] = Field(  # type: ignore[valid-type]
+    position: Optional[dict[str, Annotated[Expr, ExprField(("t",), description="coordinate as an expression in t")]]] = Field(
         None, description="coordinate name -> expression in t (lengths in m, angles in rad); not with instant"
     )
     instant: Optional[Instant] = Field(
         None, description="the state at one instant instead of position: the coordinates and their "
         "rates (polar, cylindrical, spherical) or v, v_dot, rho (path)"
     )
-    at: Times() = Field(default_factory=list)  # type: ignore[valid-type]
-    distance: Optional[Times(description="[t1, t2]: distance traveled between these times (4.5)")] = None  # type: ignore[valid-type]
-    m: Optional[Num(gt=0, dim="mass", description="mass: adds the force F = m a")] = None  # type: ignore[valid-type]
+    at: Annotated[list[float], Times()] = Field(default_factory=list)
+    distance: Optional[Annotated[list[float], Times(description="[t1, t2]: distance traveled between these times (4.5)")]] = None
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass: adds the force F = m a")]] = None
 
     accuracy_methods = ("auto", "quadrature")
 
