@@ -36,7 +36,7 @@ from pydantic_core import PydanticCustomError
 from dyncli import expr as _expr
 from dyncli.errors import InputError
 
-NUMBER_SCHEMA = {
+NUMBER_SCHEMA: dict[str, Any] = {
     "anyOf": [
         {"type": "number"},
         {"type": "string", "description": "constant expression, e.g. \"pi/6\" or \"sqrt(k/m)\""},
@@ -162,7 +162,7 @@ def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, d
     """A vector: list of 3 numbers/expressions -> tuple of 3 floats
     (``unit``: a direction, returned normalised)."""
 
-    def validate(value: Any, info: ValidationInfo) -> tuple[float, float, float]:
+    def validate(value: Any, info: ValidationInfo) -> tuple[float, ...]:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             raise _err("expected a vector: a list of 3 numbers, e.g. [1, 0, 0]")
         if not isinstance(value, (list, tuple)) or len(value) != 3:

@@ -47,7 +47,7 @@ PROBE_STEPS = 2_000      # every this many steps, project the run's total and re
 # ---------------------------------------------------------------------------
 # the work budget, shared by every route that integrates
 
-def refusal(t_goal: float, need: float, limit: int) -> str:
+def refusal(t_goal: float, need: float, limit: float) -> str:
     """The one message of a run refused by its step budget."""
     return (f"the run to t = {t_goal:.6g} s needs about {need:.3g} integrator steps, more than the budget of "
             f"{limit}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
@@ -178,7 +178,7 @@ def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check
 
     base = solver_class(method)
 
-    class Budgeted(base):
+    class Budgeted(base):  # type: ignore[misc, valid-type]  # scipy's class for the method, chosen at run time
         def __init__(self, fun, *args, **kw):
             super().__init__(finite(fun) if check_finite else fun, *args, **kw)
 

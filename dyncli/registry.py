@@ -45,6 +45,7 @@ def _declarations(entry: str, path: str):
     mod = sys.modules.get(name)
     if mod is None:
         spec = util.spec_from_file_location(name, path)
+        assert spec is not None and spec.loader is not None    # a .py file has a spec and a loader
         mod = util.module_from_spec(spec)
         sys.modules[name] = mod
         spec.loader.exec_module(mod)
@@ -161,4 +162,4 @@ def problem_union():
     models = tuple(model_class(n) for n in TYPES if available(n))
     if len(models) == 1:
         return models[0]
-    return Annotated[Union[models], Field(discriminator="type")]  # type: ignore[valid-type]
+    return Annotated[Union[models], Field(discriminator="type")]

@@ -246,6 +246,7 @@ class Lru:
         import threading
         from collections import OrderedDict
 
+        self._d: OrderedDict[Any, Any]
         self.size, self._d, self._lock = size, OrderedDict(), threading.Lock()
 
     def get(self, key):
