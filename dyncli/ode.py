@@ -55,11 +55,11 @@ def refusal(t_goal: float, need: float, limit: float) -> str:
 
 class OverBudget(NumericalError):
     """A run refused by its :class:`Budget`; ``t``, ``y``, ``h``: the state and
-    step size where it was refused (for hints such as stiffness)."""
+    step size where it was refused (for hints such as stiffness); ``stiff``: a route judged it stiff."""
 
     def __init__(self, t_goal: float, need: float, limit: float, t: float, y=None, h: float = 0.0, message=None):
         super().__init__(message or refusal(t_goal, need, limit))
-        self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
+        self.t_goal, self.need, self.limit, self.t, self.h, self.stiff = t_goal, need, limit, t, h, False
         self.y = None if y is None else np.array(y, dtype=float)
 
 

@@ -127,8 +127,7 @@ def _range(text: str, option: str, spec: str) -> tuple:
 
 def _top_level_split(text: str) -> list[str]:
     """Split at commas outside brackets and quotes: ``[1,0,0],[0,1,0]``."""
-    cur: list[str]
-    out, cur, depth, quote = [], [], 0, None
+    out, cur, depth, quote = [], list[str](), 0, None
     for ch in text:
         if quote:
             quote = None if ch == quote else quote

@@ -54,8 +54,9 @@ class Euler(ProblemBase):
 
     def moments(self) -> tuple[float, float, float]:
         if self.I is not None:
-            return tuple(self.I)
+            return self.I
         c = self.coin
+        assert c is not None                 # exactly one of I and coin (checked above)
         # (39.10): I1 = I2 = m R²/4 + m h²/12, I3 = m R²/2 (no division: R² may underflow)
         i1 = c.m * (c.R * c.R / 4.0 + c.h * c.h / 12.0)
         return (i1, i1, 0.5 * c.m * c.R * c.R)

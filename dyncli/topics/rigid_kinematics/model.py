@@ -84,6 +84,7 @@ class RigidVelocity(ProblemBase):
     def _check_rolling(self) -> None:
         from dyncli.topics.rigid_kinematics import equations as eq
 
+        assert self.rolling is not None      # called when rolling is given
         c = eq.unit(self.rolling.contact, "rolling.contact")
         vn = eq.dot(self.vB, c)
         if abs(vn) > ROLLING_TOL * eq.norm(self.vB):

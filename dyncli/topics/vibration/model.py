@@ -122,6 +122,7 @@ class Vibration(ProblemBase):
 
     def _check_unbalance(self, omega_n: float) -> None:
         u = self.unbalance
+        assert u is not None                 # called when unbalance is given
         for other in ("base", "force"):
             if getattr(self, other) is not None:
                 raise InputError(f"give one excitation: unbalance (a rotating unbalance) or {other}, not both; "
