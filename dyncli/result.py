@@ -14,7 +14,7 @@ nothing of any topic and draw it from these generic pieces:
   refuses a result key the type does not declare (a bug: exit 3);
 * ``series``: groups of list-valued results that share an index, e.g.
   ``Series("t", times, ["x", "v", "w"])`` -> one table with a row per time;
-* ``views``: extra tables (:class:`FrameTable`, :class:`Table`), e.g. the
+* ``views``: extra tables (:class:`FrameTable`, :class:`Table`, :class:`Equations`), e.g. the
   δ/δt table of rotating-frame kinematics; ``covered`` names the results a
   type's views present in readable form, so the tables skip their raw nesting.
 """
@@ -58,6 +58,16 @@ class Table:
 
 
 @dataclass
+class Equations:
+    """Equations as formulas (``--symbolic``): ``rows`` of (label, text, LaTeX); the terminal,
+    Markdown and HTML views print the text, ``--format latex`` the LaTeX in math mode."""
+
+    title: str
+    rows: list[tuple[str, str, str]]
+    note: str | None = None
+
+
+@dataclass
 class Line:
     """One curve of a :class:`Plot` (``z`` for 3-D plots)."""
 
@@ -97,7 +107,7 @@ class Result:
     symbols: dict[str, str] = field(default_factory=dict)
     units: dict[str, str] = field(default_factory=dict)
     series: list[Series] = field(default_factory=list)
-    views: list[FrameTable | Table] = field(default_factory=list)
+    views: list[FrameTable | Table | Equations] = field(default_factory=list)
     plots: list[Plot] = field(default_factory=list)
     # free-form extra data for plots etc. (never rendered as results)
     extra: dict[str, Any] = field(default_factory=dict)

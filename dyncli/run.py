@@ -133,7 +133,7 @@ def outcome_record(o: Outcome) -> dict[str, Any]:
 
 # ------------------------------------------------------------------ commands
 
-SYMBOLIC_TYPES = ("kinematics", "rotating-frame", "top")   # types with a --symbolic view (tested)
+SYMBOLIC_TYPES = ("kinematics", "rotating-frame", "scene", "top")   # types with a --symbolic view (tested)
 COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "min", "h", "g", "kg", "N", "kN",
                 "J", "kJ", "W", "kW", "Hz", "m/s", "km/h", "mph", "N*m", "N/m", "lbf", "ft", "in")
 

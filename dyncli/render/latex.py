@@ -136,10 +136,12 @@ def grid(g: Grid) -> list[str]:
     out.append(r"\toprule")
     out.append(" & ".join(_head(g, i) for i in range(len(g.columns))) + r" \\")
     out.append(r"\midrule")
-    for row in g.rows:
+    for k, row in enumerate(g.rows):
         cells = []
         for i, c in enumerate(row):
-            if i == g.unit_column:
+            if g.tex is not None and i == len(row) - 1:
+                cells.append(rf"$\displaystyle {g.tex[k]}$")
+            elif i == g.unit_column:
                 cells.append(tex_unit(c))
             elif g.unit_column is not None and i < 2:   # result name, symbol
                 cells.append(tex_text(c))

@@ -13,7 +13,7 @@ from typing import Any
 
 from dyncli.numfmt import DEFAULT_DIGITS, fmt_num  # noqa: F401  (re-exported: one number format)
 from dyncli.printable import printable
-from dyncli.result import FrameTable, Result, Table
+from dyncli.result import Equations, FrameTable, Result, Table
 
 
 def is_vector(x: Any) -> bool:
@@ -342,6 +342,13 @@ def render_view(view, digits: int = DEFAULT_DIGITS):
             t.add_column(e(b), justify="right")
         for label, comps in view.rows:
             t.add_row(e(label), *[e(c) if isinstance(c, str) else cell(fmt_num(c, digits)) for c in comps])
+        return t
+    if isinstance(view, Equations):
+        t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")
+        t.add_column("", style="cyan")
+        t.add_column("equation", justify="left", overflow="fold")
+        for label, text, _tex in view.rows:
+            t.add_row(e(label), e(text))
         return t
     if isinstance(view, Table):
         t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, series_columns
-from dyncli.result import FrameTable, Result, Table
+from dyncli.result import Equations, FrameTable, Result, Table
 
 
 @dataclass
@@ -26,6 +26,7 @@ class Grid:
     units: list[str | None] = field(default_factory=list)   # a column's unit (series headers)
     unit_column: int | None = None       # index of a column of unit names (the scalar table)
     note: str | None = None
+    tex: list[str] | None = None         # LaTeX of the last column per row (formulas: --symbolic)
 
 
 @dataclass
@@ -96,6 +97,9 @@ def _view(view, digits: int) -> Grid:
     if isinstance(view, FrameTable):
         rows = [[label] + [c if isinstance(c, str) else fmt_num(c, digits) for c in comps] for label, comps in view.rows]
         return Grid(view.title, ["", *view.basis], rows, ["l", "r", "r", "r"], note=view.note)
+    if isinstance(view, Equations):
+        return Grid(view.title, ["", "equation"], [[label, text] for label, text, _ in view.rows], ["l", "l"],
+                    note=view.note, tex=[tex for _, _, tex in view.rows])
     if isinstance(view, Table):
         rows = [[fmt_value(c, digits) for c in row] for row in view.rows]
         return Grid(view.title, list(view.columns), rows, ["r"] * len(view.columns), note=view.note)

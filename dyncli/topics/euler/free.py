@@ -12,8 +12,9 @@ no numpy import), or at an array of times with numpy (the same formulas on eithe
   with a², b², c², λ², m = k² and m₁ = 1 − m formed from the differences
   H² − 2T·I_i written as sums of the initial ω² (no cancellation), so the
   solution stays accurate near the separatrix (spin about the intermediate
-  axis).  u₀ is never formed: sn, cn, dn at u₀ are the initial data, and the
-  addition theorems carry them to u₀ + λt.  sn, cn, dn of λt come from the
+  axis).  u₀ = F(φ0 | m) comes from Carlson's R_F of cn(u₀)², dn(u₀)² (the initial
+  data, accurate next to the separatrix; the addition theorems from sn, cn, dn of λt
+  lost ~1e6 ε there to a difference of nearly equal terms).  sn, cn, dn of u₀ + λt come from the
   arithmetic-geometric mean in terms of m₁ directly (:mod:`dyncli.elliptic`,
   argument reduced modulo 4K); dn = √(m₁ + m cn²) avoids the 0/0 of the usual
   dn formula near u = K.
@@ -24,7 +25,7 @@ from __future__ import annotations
 import math
 
 from dyncli.backends import FLOAT_OPS, ops_for
-from dyncli.elliptic import ellipj, ellipK
+from dyncli.elliptic import ellipj, ellipK, elliprf
 
 EQUAL_TOL = 1e-13
 
@@ -99,6 +100,13 @@ class Asymmetric:
         c0 = min(max(wA / a, -1.0), 1.0)
         d0 = min(max(sigma * wC / c, 0.0), 1.0)
         self.s0, self.c0, self.d0 = s0, c0, d0
+        # u0 = F(am⁻¹ s0 | m) from cn(u0)², dn(u0)² as given (Carlson: no cancellation next to the
+        # separatrix, where s0 → 1 and the addition theorems lose ~1e6 ε to the difference
+        # c0 cv − s0 sv d0 dv of nearly equal terms); cn(u0) < 0 on the far half of the period
+        self.u0 = 0.0
+        if m1 > 0.0 and not on_separatrix:
+            u0 = s0 * elliprf(c0 * c0, d0 * d0, 1.0)
+            self.u0 = math.copysign(2.0 * ellipK(m, m1), s0) - u0 if c0 < 0 else u0
 
     @property
     def period(self) -> float | None:
@@ -126,7 +134,7 @@ class Asymmetric:
     def _components(self, xp, t):
         """(ω_A, ω_B, ω_C) at t, on the backend xp (floats or numpy)."""
         m = self.m
-        s0, c0, d0 = self.s0, self.c0, self.d0
+        s0, c0 = self.s0, self.c0
         if self.m1 == 0.0:
             # on the separatrix: sn = tanh, cn = dn = sech; u0 from sinh u0 = s0/|c0|
             # (cn >= 0 here, so a negative c0 uses the symmetry (ω_A, ω_C) -> (−ω_A, −ω_C), t -> t)
@@ -137,21 +145,7 @@ class Asymmetric:
                 sn, cn = xp.tanh(u), 1.0 / xp.cosh(u)
             cn, dn = flip * cn, cn
         else:
-            sv, cv, dv = ellipj(self.lam * t, m, self.m1)
-            # addition theorems, scaled so that nothing underflows when c0, d0 and cv, dv are tiny
-            mu = max(abs(c0), abs(d0))
-            if mu == 0.0:
-                mu = 1.0
-            c0h, d0h = c0 / mu, d0 / mu
-            nu = xp.maximum(xp.abs(cv), xp.abs(dv))
-            kappa = xp.maximum(nu, mu)
-            nuh = xp.where(nu > 0, nu, 1.0)
-            cvh, dvh = cv / nuh, dv / nuh
-            x, y = mu / kappa, nu / kappa
-            den = x * x * d0h * d0h + m * s0 * s0 * y * y * cvh * cvh      # = (1 − m s0² sv²)/κ²
-            sn = (y * y * s0 * cvh * dvh + x * x * sv * c0h * d0h) / den
-            cn = x * y * (c0h * cvh - s0 * sv * d0h * dvh) / den
-            dn = x * y * (d0h * dvh - m * s0 * sv * c0h * cvh) / den
+            sn, cn, dn = ellipj(self.lam * t + self.u0, m, self.m1)
         return self.a * cn, self.b * sn, self.sigma * self.c * dn
 
 

@@ -38,6 +38,9 @@ from dyncli.backends import FLOAT_OPS, ops_for
 from dyncli.elliptic import ellipj
 from dyncli.elliptic import elliprf as _rf
 
+#: π/2 − fl(π/2), the part of π/2 a double cannot hold
+_HALF_PI_LO = 6.123233995736766e-17
+
 
 def ellipj_any(u, m: float, m1: float):
     """sn, cn, dn for any parameter m < 1 (m1 = 1 − m exact); m < 0 by DLMF 22.17."""
@@ -97,7 +100,10 @@ class GyroTheta:
     def _setup(self, sgn, flip, theta0, thd0):
         """Coefficients about the centre θc = sgn·π/2 (flip: about the opposite one, the
         trigonometric values still taken from χ about the nearer centre, |χn| ≤ π/2)."""
-        chin = math.remainder(theta0 - sgn * math.pi / 2, 2 * math.pi)
+        # θ0 − θc with θc the true ±π/2: the subtraction of the double π/2 is exact next to it, and
+        # the rest of π/2 (_HALF_PI_LO) is added after, so that a start 1e-6 rad from the centre keeps
+        # its relative precision (the timing along a separatrix depends on it; issue 28's oracle)
+        chin = math.remainder(theta0 - sgn * math.pi / 2, 2 * math.pi) - sgn * _HALF_PI_LO
         sc, hs, hc = math.sin(chin), math.sin(chin / 2), math.cos(chin / 2)
         a, b, cc, chi0 = self.a, sgn * self.b, math.cos(chin), chin
         self.bsign = -sgn if flip else sgn      # G about the centre: a cos²χ + bsign·b cos χ + c0

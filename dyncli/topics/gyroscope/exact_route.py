@@ -4,8 +4,8 @@
 error_estimate (relative, docs/accuracy.md) bounds the round-off of the evaluation:
 
 * the phase u = λt + u0 is formed in floating point, so θ and θ̇ carry a relative
-  error of ~ε·(1 + λt) (the condition number of the phase at time t; the dominant
-  term at long times, e.g. 1e-9 at λt = 1e7);
+  error of ~ε·(1 + λt + |u0|) (the condition number of the phase at time t; the dominant
+  term at long times, e.g. 1e-9 at λt = 1e7), on the scale √(1 − m) of a negative parameter;
 * the residual of the first integral (37.15b), |θ̇² − G(θ)| at the reported times,
   relative to the scale of θ̇² (it catches a wrong root or a lost digit in θ, θ̇);
 
@@ -66,8 +66,11 @@ class ExactRun:
         resid = [abs(thd * thd - theta_dot_sq(I1, I2, p, q, th0, thd0, th)) for th, thd in states]
         self.drift = max(resid) / scale if t else 0.0
         self.lam_T = g.lam * T
-        # the phase reduced in double-double: as if λt were at most one period 4K (+ the offset u0)
-        phase = 1.0 + (4.0 * g.K + abs(g.u0) if self.extended else self.lam_T)
+        # the phase reduced in double-double: as if λt were at most one period 4K (+ the offset u0);
+        # for m < 0 the phase is scaled by √(1 − m) inside ellipj_any (next to a separatrix λ and u0
+        # are tiny there and the rate is λ√(1 − m)), so the rounding is measured on that scale
+        stretch = math.sqrt(g.m1) if getattr(g, "m", 0.0) < 0 else 1.0
+        phase = 1.0 + stretch * ((4.0 * g.K if self.extended else self.lam_T) + abs(getattr(g, "u0", 0.0)))
         self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * phase) if T > 0 else 0.0
 
     @property

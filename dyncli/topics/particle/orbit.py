@@ -22,8 +22,30 @@ from dyncli.topics.particle.kepler import EPS, Orbit, e_minus_sin, kepler_H, sin
 from dyncli.topics.particle.trajectory import OdePhase, Trajectory
 
 #: the error_estimate note of the exact route
-NOTE = ("round-off of the Kepler solution: 8 ε (1 + t_max v_p/r_p), the rounding of the time (and of the "
-        "mean motion) carried through the fastest rate of the orbit, relative to each quantity's scale")
+NOTE = ("round-off of the Kepler solution: 8 ε (1 + X) + 2 X (1.5 κ + 0.5) δ w, X = t_max v_p/r_p: the rounding "
+        "of the time, and δ of mu = g R0² through the mean motion (κ = (1 + e)/(1 − e), w = min(1, t/period) "
+        "revolutions), carried through the fastest rate of the orbit, relative to each quantity's scale")
+
+
+def kepler_estimate(orb: Orbit, t_max: float, mu_err: float = 0.0) -> float:
+    """8 ε (1 + X) + 2 X (1.5 κ + 0.5) δ w with X = t v_p/r_p: the rounding of the time carried
+    through the orbit's fastest rate, and that of mu = g R0² (δ, relative, :func:`mu_rounding`)
+    through the mean motion, δn/n = (1.5 κ + 0.5) δ with κ = (1 + e)/(1 − e) (1/a = 2/r − v²/mu
+    amplifies it), weighted by the revolutions run, w = min(1, t/period) (before a revolution the
+    motion next to a parabola hardly depends on a).  At e = 0.97 over five revolutions (g = 9.81,
+    R0 = 6371 km: δ = 0.23 ε) the true error is 4.4e-11 of scale, this 1.0e-10 (without δ: 1.5e-11)."""
+    X = t_max * (orb.h / orb.r_p) / orb.r_p
+    kappa = (1.0 + orb.e) / (1.0 - orb.e) if orb.period else 0.0
+    w = min(1.0, t_max / orb.period) if orb.period else 0.0
+    return 8 * EPS * (1.0 + X) + 2.0 * X * (1.5 * kappa + 0.5) * mu_err * w
+
+
+def mu_rounding(p, mu: float) -> float:
+    """|mu − Σ g R0²| / Σ g R0², the latter exact in rationals of the given doubles."""
+    from fractions import Fraction as Fr
+
+    exact = sum(Fr(float(p.g if f.g is None else f.g)) * Fr(float(f.R0)) ** 2 for f in p.forces)
+    return float(abs(Fr(mu) - exact) / exact) if exact else 0.0
 
 
 def kepler_field(p):
@@ -105,7 +127,7 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     res.results["orbit"] = orbit_results(orb)
     _warn_surface(res, p, orb)
     t_max = max(times) if times else 0.0
-    res.error_estimate = 8 * EPS * (1.0 + t_max * (orb.h / orb.r_p) / orb.r_p) if times else 0.0
+    res.error_estimate = kepler_estimate(orb, t_max, mu_rounding(p, orb.mu)) if times else 0.0
     res.extra["error_estimate_note"] = NOTE
     res.extra["energy_scale"] = scale
     res.extra["nfev"] = 0

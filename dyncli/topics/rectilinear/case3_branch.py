@@ -21,6 +21,26 @@ def _fmt(x: float) -> str:
     return f"{x:.10g}"
 
 
+def _first_zero(A, v1: float, e: int, c: float, g_hi: float):
+    """The smallest g in [1e-15, g_hi] where a(v1 + e c g) has a root or touches 0, decided by the
+    sign analysis of :func:`dyncli.rootfind.all_roots` (its critical points, not samples) on the
+    three stretches of the scan: g = 10^y to 1e-3, g itself to 4, g = 4·10^y beyond; None if none."""
+    from dyncli.rootfind import all_roots
+
+    pieces = [(lambda y: 10.0 ** y, -15.0, math.log10(min(1e-3, g_hi))),
+              (lambda y: y, 1e-3, min(4.0, g_hi)),
+              (lambda y: 4.0 * 10.0 ** y, 0.0, math.log10(g_hi / 4.0) if g_hi > 4.0 else 0.0)]
+    for gmap, lo, hi in pieces:
+        if not hi > lo:
+            continue
+        roots, touches, _ = all_roots(lambda y, gmap=gmap: A(v1 + e * c * gmap(np.asarray(y, dtype=float))),
+                                      lo, hi, limit=1)
+        found = sorted(roots + touches)
+        if found:
+            return float(gmap(found[0]))
+    return None
+
+
 class Branch:
     """v moving from v1 in direction e (+1/-1)."""
 
@@ -46,7 +66,16 @@ class Branch:
         stop = (np.sign(av) != s1) | bad
         self.kind = "inf"
         self.v_end = e * math.inf
-        if stop.any():
+        # the first root (or touch) of a decided exactly, not by the samples: two roots 1e-6 apart
+        # between samples (a = (v − 3 − 1e-6)(v − 3 − 2e-6) from v1 = 0) were passed through (issue 28)
+        g_hi = float(g[int(np.argmax(stop))]) if stop.any() else (float(g[-1]) if g.size else 0.0)
+        gz = _first_zero(c3.A, v1, e, c, g_hi) if g_hi > 0 else None
+        if gz is not None:
+            k = int(np.searchsorted(g, gz))
+            self.v_end = v1 + e * c * gz
+            self._end_kind(c3, av, k)
+            vs, av = vs[:k], av[:k]
+        elif stop.any():
             k = int(np.argmax(stop))
             lo = float(vs[k - 1]) if k > 0 else v1
             alo = float(av[k - 1]) if k > 0 else c3.a_v1
@@ -67,11 +96,7 @@ class Branch:
                 self.v_end = hi
             else:
                 self.v_end = root_in_bracket(c3.a1, lo, hi, alo, float(av[k]))
-            a_end = c3.a1(self.v_end)
-            amax = float(np.max(np.abs(av[:k]))) if k > 0 else abs(c3.a_v1)
-            amax = max(amax, abs(c3.a_v1))
-            self.kind = "zero" if (math.isfinite(a_end) and (abs(a_end) <= 1e-6 * amax
-                                                             or _grows_away(c3.a1, self.v_end, a_end))) else "pole"
+            self._end_kind(c3, av, k)
             vs, av = vs[:k], av[:k]
         # a double zero (a touches 0 without a sign change) before the end
         aa = np.abs(av)
@@ -86,6 +111,14 @@ class Branch:
                 if abs(fx) <= 1e-12 * max(abs(c3.a_v1), float(aa.max())):
                     self.v_end, self.kind = x, "zero"
                     break
+
+    def _end_kind(self, c3, av, k: int) -> None:
+        """A terminal velocity ("zero") or a singularity of a ("pole") at v_end."""
+        a_end = c3.a1(self.v_end)
+        amax = float(np.max(np.abs(av[:k]))) if k > 0 else abs(c3.a_v1)
+        amax = max(amax, abs(c3.a_v1))
+        self.kind = "zero" if (math.isfinite(a_end) and (abs(a_end) <= 1e-6 * amax
+                                                         or _grows_away(c3.a1, self.v_end, a_end))) else "pole"
 
     # -- parametrisation ---------------------------------------------------
     def v_of(self, u):

@@ -38,6 +38,7 @@ import numpy as np
 
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End, Energy, Leg, _fmt
+from dyncli.topics.rectilinear import case4_sens as sens
 from dyncli.topics.rectilinear.case4_scan import _Scan
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
@@ -125,6 +126,7 @@ class _Case4(_Scan):
         if self.endB.kind == "turn":
             self.bwd += [(B, True, -e), (F, False, -e)]
         self.period = 2 * (F.duration + B.duration) if self.periodic else math.inf
+        sens.setup(self)
         return True
 
     def _walk(self, legs, tau: float):
@@ -150,6 +152,7 @@ class _Case4(_Scan):
     def state(self, T: float):
         self.last_err = 0.0
         tau = T - self.p.t1
+        self.sens = sens.time_sens(self, self.fwd if tau >= 0 else self.bwd, abs(tau))
         if self.periodic:
             P = self.period
             r = math.fmod(tau, P)
@@ -186,15 +189,18 @@ class _Case4(_Scan):
             self.ans.unreached(i, self._reason_end(end, self.p.t1 + (t_end if forward else -t_end), forward))
             return
         # an error e of the time along the leg moves the state along the trajectory: s by |v| e, v by |a| e
-        e = self.last_err
-        self.ans.reached(i, T, s, v, err=(0.0, abs(v) * e, abs(self.a1(s)) * e))
+        dt, ds = self.sens           # next to a separatrix: the energy's rounding (case4_sens)
+        e = self.last_err + dt
+        self.ans.reached(i, T, s, v, err=(0.0, abs(v) * e + ds, abs(self.a1(s)) * e))
 
     def _time_on(self, k: int, s: float) -> float:
-        """Time after t1 at which leg k of the forward sequence passes s."""
+        """Time after t1 at which leg k of the forward sequence passes s (last_err counts the
+        turning points' sensitivity up to that leg's, case4_sens)."""
         t0 = sum(leg.duration for leg, _, _ in self.fwd[:k])
         leg, rev, _ = self.fwd[k]
         tl, err = leg.time_to(s)
-        self.last_err = err
+        dt, self.turn_ds = sens.time_sens(self, self.fwd, 0.0, upto=k)
+        self.last_err = err + dt
         return t0 + (leg.duration - tl if rev else tl)
 
     def s_query(self, i: int, S: float) -> None:
@@ -235,7 +241,7 @@ class _Case4(_Scan):
                 if not rev and leg.end.kind == "turn":
                     t = p.t1 + self._time_on(k, leg.B)
                     if not ans.beyond_t_max(i, t):
-                        ans.reached(i, t, leg.B, 0.0)
+                        ans.reached(i, t, leg.B, 0.0, err=(self.last_err, self.turn_ds, 0.0))
                     return
                 continue
             sc = self.scans[leg.e]
@@ -308,4 +314,5 @@ def solve(p, ans, rtol: float, atol: float) -> str:
             ans.ask(i, c.s_query, q.s)
     if c.periodic:
         ans.res.results["period"] = c.period
+    sens.warn(c, ans, rtol)
     return "quadrature+root"

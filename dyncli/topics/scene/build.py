@@ -75,7 +75,11 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict) -> SurfaceData:
+def surface_of(name: str, s: dict):
+    if s.get("curve") is not None:
+        from .curved import CurveData
+
+        return CurveData(name, *s["curve"], s.get("q_range"))
     d = np.array(s["direction"], float)
     d = d / math.hypot(d[0], d[1])
     return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
@@ -145,6 +149,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
     for name, j in plan.joints.items():
         kind, path = j["kind"], f"joints.{name}.{j['kind']}"
         a = j[kind]
+        if kind in ("contact", "rolls") and _on_curve(name, j, R, q, n, out):
+            continue
         if kind == "pin":
             P, Q = R.pair(a, path, q)
             out.append(el.Pin(name, kind, n, path, P=P, Q=Q))
@@ -196,6 +202,30 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "cord":
             cords.append((name, j))
     return out, cords
+
+
+def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:
+    """A contact or rolling joint on a curved surface (dyncli/topics/scene/curved.py) appended
+    to ``out`` (True), or False on a straight one (where `at` of a contact is refused)."""
+    kind = j["kind"]
+    path = f"joints.{name}.{kind}"
+    s = R.surface(j[kind][1], path + ".1")
+    if not getattr(s, "curved", False):
+        if kind == "contact" and j["at"] is not None:
+            raise InputError("`at` places a contact on a curved surface (the curve's q); on a straight one give "
+                             "the point's position", f"joints.{name}.at")
+        return False
+    from . import curved
+
+    if kind == "contact":
+        out.append(curved.contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
+        return True
+    b = R.body(j[kind][0], path + ".0")
+    _rigid(b, "rolling", path + ".0")
+    if b.radius <= 0:
+        raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
+    out.append(curved.rolls_on(name, kind, n, path, Point(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    return True
 
 
 def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:

@@ -44,6 +44,8 @@ def length_terms(P: Point, Q: Point, q, n: int):
 
 
 def _element_hessian(el, q, w, n: int) -> np.ndarray:
+    if hasattr(el, "hessian"):          # an element on a curve (dyncli/topics/scene/curved.py)
+        return el.hessian(q, w, n)
     kind = el.kind
     if kind == "pin":
         return point_hessian(el.P, q, w[:2], n) - point_hessian(el.Q, q, w[:2], n)

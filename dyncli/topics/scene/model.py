@@ -28,19 +28,42 @@ def _at(base: str, field: str | None) -> str:
 PointRef = Union[str, list[Annotated[float, Num(dim="length")]]]
 
 
-class Surface(StrictModel):
-    """A fixed straight line through ``through`` along ``direction``; bodies are on its left
-    (the side of n = e3 × d̂)."""
+class SurfaceCurve(StrictModel):
+    """A curved surface r(q) = x1(q) e1 + x2(q) e2 (the constrained-particle curve language, in the plane)."""
 
-    through: list[Annotated[float, Num(dim="length")]] = Field(description="[x1, x2]: a point of the line [m]")
-    direction: list[Annotated[float, Num()]] = Field(description="[d1, d2]: its direction (bodies on the left)")
+    x1: Annotated[Expr, ExprField(("q",), dim="length", description="x1(q) [m]: number or expression in q")]
+    x2: Annotated[Expr, ExprField(("q",), dim="length", description="x2(q) [m]: number or expression in q")]
+
+
+class Surface(StrictModel):
+    """A fixed straight line through ``through`` along ``direction``, or a fixed ``curve``;
+    bodies are on its left (the side of n = e3 × d̂, d̂ the direction or the curve's tangent
+    in the sense of increasing q)."""
+
+    through: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: a point of the line [m]")
+    direction: Optional[list[Annotated[float, Num()]]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")
     length: Optional[Annotated[float, Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")]] = None
-    curve: Optional[Any] = Field(None, description="curved surfaces: not in the first release (refused)")
+    curve: Optional[SurfaceCurve] = Field(None, description="a curved surface {x1, x2}: expressions in the parameter q [m] "
+                                          "(instead of through and direction); bodies on the left of increasing q")
+    q_range: Optional[list[Annotated[float, Num()]]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "
+                                           "reaching an end leaves the surface (an event)")
 
     def check(self, base: str) -> None:
         if self.curve is not None:
-            raise InputError("curved surfaces have no syntax in this release: use a straight surface, or the "
-                             "constrained-particle type for a particle on a curve", _at(base, "curve"))
+            for name in ("through", "direction", "length"):
+                if getattr(self, name) is not None:
+                    raise InputError(f"a curved surface takes no {name}" + (" (give q_range for its ends)" if name == "length"
+                                                                             else ": its points are the curve's"),
+                                     _at(base, name))
+            if self.q_range is not None and (len(self.q_range) != 2 or not self.q_range[0] < self.q_range[1]):
+                raise InputError("q_range must be [q_min, q_max] with q_min < q_max", _at(base, "q_range"))
+            return
+        if self.q_range is not None:
+            raise InputError("q_range goes with a curve (a straight surface ends at `length`)", _at(base, "q_range"))
+        for name, example in (("through", "[0, 0]"), ("direction", "[1, 0]")):
+            if getattr(self, name) is None:
+                raise InputError(f"a straight surface needs {name}, e.g. {name}: {example} (or give a curve: {{x1, x2}} "
+                                 "in q)", _at(base, name))
         if len(self.through) != 2:
             raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", _at(base, "through"))
         if len(self.direction) != 2:
@@ -148,7 +171,7 @@ class Joint(_OneOf):
     mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None
     mu_s: Optional[Annotated[float, Num(ge=0, description="static friction coefficient")]] = None
     mu_k: Optional[Annotated[float, Num(ge=0, description="kinetic friction coefficient")]] = None
-    at: Optional[Annotated[float, Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]")]] = None
+    at: Optional[Annotated[float, Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]; on a curved surface (rolls or contact): the curve's parameter q there")]] = None
     length: Optional[Annotated[float, Num(gt=0, dim="length", description="cord or link length [m]")]] = None
     angle: Optional[Annotated[float, Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")]] = None
 
@@ -156,7 +179,7 @@ class Joint(_OneOf):
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
-        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k"}, "rolls": {"at", "mu_s"},
+        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at"}, "rolls": {"at", "mu_s"},
                    "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
         for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
             if getattr(self, extra) is not None and extra not in allowed:
@@ -214,7 +237,7 @@ class Scene(ProblemBase):
     """A planar mechanism: bodies, joints, forces (docs/types/scene.md)."""
 
     type: Literal["scene"]
-    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines by name")
+    surfaces: dict[str, Surface] = Field(default_factory=dict, description="fixed straight lines (or curves) by name")
     bodies: dict[str, Body] = Field(description="bodies by name (`ground` is reserved)")
     joints: dict[str, Joint] = Field(default_factory=dict, description="joints by name")
     forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")

@@ -106,7 +106,8 @@ def _drawing(scene) -> dict:
                     for end in (seg.a, seg.b):
                         if end.fixed is not None:
                             pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
-    return {"bodies": bodies, "surfaces": [{"name": x.name, "origin": x.origin, "d": x.d} for x in scene.surfaces],
+    return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d}
+                                          for x in scene.surfaces],
             "pulleys": pulleys, "span": span}
 
 
@@ -220,6 +221,8 @@ def _momenta(scene, instants) -> list:
             continue
         if any(isinstance(e, Contact) and e.mu_k and e.surface.d[axis] != 0 for e in s.elements):
             continue
+        if any(getattr(getattr(e, "surface", None), "curved", False) for e in s.elements):
+            continue                    # a curve's normal turns: the check at t = 0 says nothing
         vals, scale = [], 0.0
         for st in instants:
             if st is None:

@@ -46,6 +46,10 @@ def _mechanism(result, draw) -> Plot:
     plot = Plot("the mechanism at the requested times", "x1 [m]", "x2 [m]", equal_aspect=True)
     span = draw["span"]
     for s in draw["surfaces"]:
+        if "points" in s:               # a curve: its polyline
+            plot.lines.append(Line([p[0] for p in s["points"]], [p[1] for p in s["points"]],
+                                   label=f"surface {s['name']}", style=":"))
+            continue
         (o1, o2), (d1, d2) = s["origin"], s["d"]
         plot.lines.append(Line([o1 - span * d1, o1 + span * d1], [o2 - span * d2, o2 + span * d2],
                                label=f"surface {s['name']}", style=":"))

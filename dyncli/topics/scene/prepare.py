@@ -11,7 +11,7 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build
+from . import assembly, build, curved
 from .dynamics import SceneSystem
 from .elements import Contact, Rolls
 
@@ -100,8 +100,16 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
         if j["kind"] == "rolls" and j["at"] is not None:
             b, s = R.body(j["rolls"][0], ""), R.surface(j["rolls"][1], "")
             if b.rigid and free[b.index[0]]:
-                c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
+                if getattr(s, "curved", False):
+                    c = curved.place_on(s, j["at"], b.radius)
+                else:
+                    c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
                 q[b.index[0]], q[b.index[1]] = c
+        if j["kind"] == "contact" and j["at"] is not None:
+            P, s = R.point(j["contact"][0], ""), R.surface(j["contact"][1], "")
+            if getattr(s, "curved", False) and P.body is not None and free[P.body.index[0]]:
+                i = P.body.index
+                q[i[0]], q[i[1]] = curved.place_on(s, j["at"], 0.0) - P.arm(q)
 
 
 def _place_hanging(plan, cords, R, q, free, system) -> None:
@@ -235,6 +243,9 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
                                  "release it from a position where it pushes, or join them with a two-sided joint",
                                  e.path)
+            if what == "leaves" and getattr(e.surface, "curved", False):
+                raise InputError(f"at t = 0 the contact point is beyond an end of the curve {e.surface.name!r} (q_range "
+                                 f"{list(e.surface.q_range)}): place it on the curve or widen q_range", e.path)
             if what == "leaves":
                 raise InputError(f"at t = 0 the contact point is {-g:.6g} m beyond an end of the surface "
                                  f"{e.surface.name!r} (length {e.surface.length:g} m from its `through` point): "

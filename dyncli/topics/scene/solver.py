@@ -28,7 +28,8 @@ def _plan(p) -> build.Plan:
         bodies[name] = {"shape": shape, "mass": b.mass, "length": b.length, "radius": b.radius, "size": b.size,
                         "I": b.I, "x": b.x, "angle": b.angle, "v": b.v, "omega": b.omega,
                         "points": {k: tuple(v) for k, v in b.points.items()}}
-    surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length} for k, s in p.surfaces.items()}
+    surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length, "q_range": s.q_range,
+                    "curve": (s.curve.x1, s.curve.x2) if s.curve is not None else None} for k, s in p.surfaces.items()}
     joints = {}
     for name, j in p.joints.items():
         val = getattr(j, j.kind)
@@ -94,7 +95,25 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         _check_solve(res, plan, t_end, times, acc)
     if p.linearize:
         _linearize(res, plan, times)
+    if options is not None and options.symbolic:
+        _symbolic(res, p, plan)
     return res
+
+
+def _symbolic(res: Result, p, plan) -> None:
+    """``--symbolic``: the equations in the notes' form (sympy, imported only here), on a scene
+    set up afresh (the route may have changed the contacts' modes)."""
+    from . import symbolic, symbolic_view
+
+    exprs = {"drive": {n: j.value for n, j in p.joints.items() if j.kind == "drive"},
+             "load": {i: (f.F if f.kind == "force" else [f.M]) for i, f in enumerate(p.forces)
+                      if f.kind in ("force", "torque")}}
+    try:
+        derived = symbolic.derive(prepare.setup(plan), exprs)
+    except ValueError as exc:           # a curve's arc without a closed form
+        res.warn(f"--symbolic: the equations are not written out: {exc} (the numeric results are exact as always)")
+        return
+    res.views.extend(symbolic_view.views(derived))
 
 
 def _linearize(res: Result, plan, times: list[float]) -> None:

@@ -385,30 +385,86 @@ at: [0, 1]
 
 # --- refused features ---------------------------------------------------------------------------------
 
-def test_curved_surface_refused_names_constrained_particle():
+def test_curve_as_text_refused_with_its_form():
     text = """\
 type: scene
 surfaces:
-  bowl: {through: [0, 0], direction: [1, 0], curve: "x2 = x1^2"}
+  bowl: {curve: "x2 = x1^2"}
 bodies:
   A: {shape: point, mass: 1, x: [0, 0]}
 joints:
   c: {contact: [A, bowl]}
 at: [0, 1]
 """
-    refusal(text, "surfaces.bowl", "curved", "constrained-particle")
+    refusal(text, "surfaces.bowl.curve")
 
 
-def test_curved_surface_refused_through_cli(tmp_path):
+def test_curve_with_through_refused(tmp_path):
     text = """\
 type: scene
 surfaces:
-  bowl: {through: [0, 0], direction: [1, 0], curve: "x2 = x1^2"}
+  bowl: {through: [0, 0], curve: {x1: q, x2: "q**2"}}
 bodies:
   A: {shape: point, mass: 1, x: [0, 0]}
 at: [0, 1]
 """
-    cli_refusal(tmp_path, text, "surfaces.bowl", "constrained-particle")
+    cli_refusal(tmp_path, text, "surfaces.bowl.through", "curved surface takes no through")
+
+
+def test_straight_surface_needs_direction():
+    text = """\
+type: scene
+surfaces:
+  floor: {through: [0, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+at: [0, 1]
+"""
+    refusal(text, "surfaces.floor.direction", "needs direction", "curve")
+
+
+def test_friction_on_a_curve_refused_names_constrained_particle():
+    text = """\
+type: scene
+surfaces:
+  bowl: {curve: {x1: "sin(q)", x2: "-cos(q)"}}
+bodies:
+  A: {shape: point, mass: 1}
+joints:
+  c: {contact: [A, bowl], at: 0.3, mu: 0.2}
+at: [0, 1]
+"""
+    refusal(text, "joints.c.mu", "friction on a curved surface", "constrained-particle")
+
+
+def test_at_on_a_straight_contact_refused():
+    text = """\
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints:
+  c: {contact: [A, floor], at: 0.3}
+at: [0, 1]
+"""
+    refusal(text, "joints.c.at", "curved surface")
+
+
+def test_curved_contact_that_would_pull_refused():
+    """Outside a circle (the curve run clockwise puts the bodies outside) at its bottom, gravity
+    pulls the block off: N < 0 at t = 0."""
+    text = """\
+type: scene
+surfaces:
+  ball: {curve: {x1: "-sin(q)", x2: "-cos(q)"}}
+bodies:
+  A: {shape: point, mass: 1}
+joints:
+  c: {contact: [A, ball], at: 0}
+at: [0, 1]
+"""
+    refusal(text, "joints.c", "would have to pull")
 
 
 def test_motion_out_of_plane_refused_names_types():

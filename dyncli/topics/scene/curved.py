@@ -1,0 +1,294 @@
+"""Curved surfaces of a scene: a contact and rolling on a curve y(q) (docs/types/scene.md).
+
+The curve is y(q) = x1(q) e1 + x2(q) e2 with exact derivatives y′, y″ (dyncli's own rules on the
+expression IR, as the ``constrained-particle`` type); its unit tangent t̂ = y′/|y′|, the normal
+n = e3 × t̂ (the bodies' side, as for a straight surface) and the signed curvature
+k = (y′₁y″₂ − y′₂y″₁)/|y′|³ (k > 0 where the curve turns towards n: inside a bowl or a loop),
+so that dt̂/ds = k n and dn/ds = −k t̂.
+
+A point r has its foot q*(r) on the curve ((r − y)·y′ = 0, Newton from the last foot) and the
+signed distance d(r) = n·(r − y(q*)); ∇d = n, and the foot moves at ṡ = t̂·ṙ/(1 − k d).
+
+* :class:`CurveContact` — P on the curve: φ = d(r_P) = 0, J = nᵀ J_P,
+  γ = k (t̂·v_P)²/(1 − k d) − n·(J̇_P v); N = λ along n (≥ 0).
+* :class:`CurveRolls` — a disk of radius R rolls on it: its centre on the offset curve,
+  φ₁ = d(x) − R; and no slip, t̂·ẋ + R ω = 0, integrated exactly:
+  φ₂ = ∫ |y′| (1 − R k) dq (from the foot of t = 0 to the foot now; the offset curve's arc
+  length) + R θ − c₀, J₂ = (1 − R k)/(1 − k d) t̂ᵀ on x and R on θ (γ₂ with the curvature's
+  rate dk/ds from y‴).  N along n, F along t̂ at the contact, as on a line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from dyncli.errors import InputError, NumericalError
+from dyncli.expr.derivative import derivative
+from dyncli.quadrature import gauss_kronrod
+
+from .elements import Contact, Rolls
+
+EPS = float(np.finfo(float).eps)
+SEARCH = 4001                      # samples of q for a first foot without `at`
+
+
+class CurveData:
+    """A fixed curve y(q); ``q_range`` its ends (None: none)."""
+
+    curved = True
+    length = None
+
+    def __init__(self, name: str, x1, x2, q_range=None):
+        self.name = name
+        self.y0 = (x1, x2)
+        self.y1 = tuple(derivative(e, "q") for e in self.y0)
+        self.y2 = tuple(derivative(e, "q") for e in self.y1)
+        self.y3 = tuple(derivative(e, "q") for e in self.y2)
+        self.q_range = tuple(q_range) if q_range is not None else None
+
+    # ------------------------------------------------------------------ geometry at q
+    @staticmethod
+    def _ev(es, q: float) -> np.ndarray:
+        return np.array([float(e.evaluate(q=np.array([q]))[0]) if e.variables else float(e.value()) for e in es])
+
+    def frame(self, q: float):
+        """(y, y′, t̂, n, k, |y′|) at q."""
+        y, d1, d2 = self._ev(self.y0, q), self._ev(self.y1, q), self._ev(self.y2, q)
+        sp = math.hypot(d1[0], d1[1])
+        if not sp > 0:
+            raise NumericalError(f"the curve {self.name!r} has no tangent at q = {q:.6g} (y′ = 0)")
+        t = d1 / sp
+        k = (d1[0] * d2[1] - d1[1] * d2[0]) / sp ** 3
+        return y, d1, t, np.array([-t[1], t[0]]), k, sp
+
+    def _newton(self, r, q: float):
+        """Newton on (r − y)·y′ = 0 from q: the foot q* when it converges to a nearest point
+        (|r − y|² a minimum there), else None."""
+        for _ in range(40):
+            y, d1, d2 = self._ev(self.y0, q), self._ev(self.y1, q), self._ev(self.y2, q)
+            w = np.asarray(r, float) - y
+            g = float(w @ d1)
+            gp = float(w @ d2) - float(d1 @ d1)
+            if not gp < 0:
+                return None
+            step = g / gp
+            q -= step
+            if abs(step) <= 4 * EPS * max(1.0, abs(q)):
+                return q
+        return None
+
+    def dk_ds(self, q: float) -> float:
+        """The rate of the curvature along the arc, dk/ds = (dk/dq)/|y′|."""
+        d1, d2, d3 = self._ev(self.y1, q), self._ev(self.y2, q), self._ev(self.y3, q)
+        sp = math.hypot(d1[0], d1[1])
+        cross = d1[0] * d2[1] - d1[1] * d2[0]
+        dk = (d1[0] * d3[1] - d1[1] * d3[0]) / sp ** 3 - 3 * cross * float(d1 @ d2) / sp ** 5
+        return dk / sp
+
+    def foot(self, r, guess: float) -> float:
+        """q* with (r − y(q*))·y′(q*) = 0, a nearest point: Newton from ``guess``, else from the
+        nearest of samples over q_range (or guess ± 10)."""
+        got = self._newton(r, float(guess))
+        if got is not None:
+            return got
+        a, b = self.q_range if self.q_range is not None else (guess - 10.0, guess + 10.0)
+        got = self._newton(r, self._nearest(r, a, b))
+        if got is None:
+            raise NumericalError(f"no nearest point on the curve {self.name!r} for the point {list(map(float, r))}")
+        return got
+
+    def _nearest(self, r, a: float, b: float) -> float:
+        qs = np.linspace(a, b, SEARCH)
+        ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(SEARCH, float(e.value())) for e in self.y0])
+        return float(qs[int(np.argmin((ys[0] - r[0]) ** 2 + (ys[1] - r[1]) ** 2))])
+
+    def first_foot(self, r, at: float | None) -> float:
+        """The foot of r at t = 0: from ``at``, else the nearest of samples over q_range (or
+        [−10, 10])."""
+        if at is not None:
+            return self.foot(r, at)
+        a, b = self.q_range if self.q_range is not None else (-10.0, 10.0)
+        return self.foot(r, self._nearest(r, a, b))
+
+    def ends_margin(self, q: float) -> float | None:
+        if self.q_range is None:
+            return None
+        return float(min(q - self.q_range[0], self.q_range[1] - q))
+
+    def drawing(self) -> dict:
+        return {"name": self.name, "points": self.polyline()}
+
+    def polyline(self, n: int = 200) -> list[tuple[float, float]]:
+        a, b = self.q_range if self.q_range is not None else (-math.pi, math.pi)
+        qs = np.linspace(a, b, n)
+        ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(n, float(e.value())) for e in self.y0])
+        return [(float(u), float(v)) for u, v in zip(ys[0], ys[1])]
+
+
+class _Foot:
+    """The foot of one point, cached for the last position asked."""
+
+    def __init__(self, curve: CurveData, q0: float):
+        self.curve, self.q, self._key = curve, q0, None
+
+    def at(self, r):
+        key = (float(r[0]), float(r[1]))
+        if key != self._key:
+            self.q = self.curve.foot(r, self.q)
+            self._key = key
+            self._frame = self.curve.frame(self.q)
+        y, _d1, t, n, k, sp = self._frame
+        d = float(n @ (np.asarray(r, float) - y))
+        return self.q, t, n, k, d, sp
+
+
+@dataclass
+class CurveContact(Contact):
+    """P on a curve, pushing only (smooth)."""
+
+    foot: _Foot = None
+
+    @property
+    def linear(self):
+        return False
+
+    def phi(self, q, t):
+        return np.array([self.foot.at(self.P.pos(q))[4]])
+
+    def jac(self, q):
+        n = self.foot.at(self.P.pos(q))[2]
+        return (n @ self.P.jac(q, self.n))[None, :]
+
+    def gamma(self, q, v, t):
+        _, tt, n, k, d, _ = self.foot.at(self.P.pos(q))
+        vp = self.P.vel(q, v)
+        return np.array([k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ self.P.bias(q, v))])
+
+    def friction_column(self, q):
+        return None
+
+    def slip_speed(self, q, v) -> float:
+        return float(self.foot.at(self.P.pos(q))[1] @ self.P.vel(q, v))
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """∇²(w d(r_P)): the distance's own −k/(1 − k d) t̂t̂ᵀ through J_P, plus n's turn of P's arm."""
+        from .curvature import point_hessian
+
+        _, tt, nn, k, d, _ = self.foot.at(self.P.pos(q))
+        JP = self.P.jac(q, n)
+        Hr = -k / (1 - k * d) * np.outer(tt, tt)
+        return w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
+
+    def watch(self, lam, q, v, t):
+        out = [("separates", float(lam[0]))]
+        m = self.surface.ends_margin(self.foot.at(self.P.pos(q))[0])
+        if m is not None:
+            out.append(("leaves", m))
+        return out
+
+
+@dataclass
+class CurveRolls(Rolls):
+    """A disk of radius R rolling on a curve without slipping."""
+
+    foot: _Foot = None
+    q_ref: float = 0.0
+    linear = False
+
+    def _centre(self, q):
+        i = self.body_point.body.index
+        return np.array([q[i[0]], q[i[1]]], float)
+
+    def arc(self, qf: float) -> float:
+        """∫ |y′|(1 − R k) dq from the foot of t = 0 to qf: the offset curve's arc length."""
+        if qf == self.q_ref:
+            return 0.0
+        c = self.surface
+
+        def f(x):
+            out = np.empty(len(x))
+            for j, qq in enumerate(x):
+                _, d1, _, _, k, sp = c.frame(float(qq))
+                out[j] = sp * (1 - self.R * k)
+            return out
+
+        val, err, ok = gauss_kronrod(f, self.q_ref, qf, 1e-14, 1e-15)[:3]
+        return float(val)
+
+    def phi(self, q, t):
+        i = self.body_point.body.index
+        qf, _, _, _, d, _ = self.foot.at(self._centre(q))
+        return np.array([d - self.R, self.arc(qf) + self.R * float(q[i[2]]) - self.c0])
+
+    def jac(self, q):
+        i = self.body_point.body.index
+        _, tt, n, k, d, _ = self.foot.at(self._centre(q))
+        J = np.zeros((2, self.n))
+        J[0, i[0]], J[0, i[1]] = n
+        f = (1 - self.R * k) / (1 - k * d)
+        J[1, i[0]], J[1, i[1]] = f * tt
+        J[1, i[2]] = self.R
+        return J
+
+    def gamma(self, q, v, t):
+        """−J̇ẋ: row 1 k a²/(1 − k d); row 2 −(ḟ a + f k a b/(1 − k d)) with a = t̂·ẋ, b = n·ẋ,
+        f = (1 − R k)/(1 − k d), ḟ = (k̇ (d − R) + (1 − R k) k b)/(1 − k d)², k̇ = dk/ds · a/(1 − k d)."""
+        i = self.body_point.body.index
+        qf, tt, n, k, d, _ = self.foot.at(self._centre(q))
+        vc = np.array([v[i[0]], v[i[1]]], float)
+        a, b = float(tt @ vc), float(n @ vc)
+        w = 1 - k * d
+        kdot = self.surface.dk_ds(qf) * a / w
+        f = (1 - self.R * k) / w
+        fdot = (kdot * (d - self.R) + (1 - self.R * k) * k * b) / (w * w)
+        return np.array([k * a * a / w, -(fdot * a + f * k * a * b / w)])
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ w ∇²φ on the centre's block: −w₁ k/(1 − k d) t̂t̂ᵀ for the distance, and for the arc
+        row w₂ (t̂ ∇fᵀ + f k/(1 − k d) n t̂ᵀ), the derivatives of its Jacobian f t̂ (γ's terms)."""
+        i = self.body_point.body.index
+        qf, tt, nn, k, d, _ = self.foot.at(self._centre(q))
+        wd = 1 - k * d
+        f = (1 - self.R * k) / wd
+        grad_f = (self.surface.dk_ds(qf) * (d - self.R) / wd * tt + (1 - self.R * k) * k * nn) / (wd * wd)
+        Hx = -w[0] * k / wd * np.outer(tt, tt) + w[1] * (np.outer(tt, grad_f) + f * k / wd * np.outer(nn, tt))
+        H = np.zeros((n, n))
+        H[np.ix_([i[0], i[1]], [i[0], i[1]])] = Hx
+        return H
+
+    def watch(self, lam, q, v, t):
+        out = [("separates", float(lam[0]))]
+        m = self.surface.ends_margin(self.foot.at(self._centre(q))[0])
+        if m is not None:
+            out.append(("leaves", m))
+        if self.mu_s is not None:
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+        return out
+
+
+def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q) -> CurveContact:
+    if j["mu"] or j["mu_s"] or j["mu_k"]:
+        raise InputError("friction on a curved surface is not in this release: make the contact smooth (leave out "
+                         "mu), or use the constrained-particle type for a particle on a rough curve",
+                         path.rsplit(".", 1)[0] + ".mu")
+    foot = _Foot(curve, curve.first_foot(P.pos(q), j["at"]))
+    return CurveContact(name, kind, n, path, P=P, surface=curve, mode="smooth", foot=foot)
+
+
+def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:
+    i = body_point.body.index
+    x = np.array([q[i[0]], q[i[1]]], float)
+    q0 = curve.first_foot(x, j["at"])
+    el = CurveRolls(name, kind, n, path, body_point=body_point, surface=curve, R=R, c0=0.0, mu_s=j["mu_s"],
+                    foot=_Foot(curve, q0), q_ref=q0)
+    el.c0 = R * float(q[i[2]])
+    return el
+
+
+def place_on(curve: CurveData, at: float, offset: float) -> np.ndarray:
+    """The point at distance ``offset`` on the bodies' side of the curve at q = at."""
+    y, _, _, n, _, _ = curve.frame(at)
+    return y + offset * n

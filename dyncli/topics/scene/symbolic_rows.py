@@ -1,0 +1,255 @@
+"""A scene's elements as sympy objects (``--symbolic`` only; sympy is imported by the caller).
+
+The same bodies, points and joints as the numeric engine (:mod:`.elements`), written with
+symbols: every coordinate q_i, its rate and its acceleration is a plain symbol (``x_A1``,
+``θ̇_rod``, ``θ̈_rod``; time derivatives by the chain rule), every mass ``m_A``, central moment
+``Ī_rod``, rod length ``L_rod``, rolling or pulley radius ``r_disk``, spring constant ``k_s``
+and free length ``L_s``, damping ``c_d`` and ``g`` is a symbol with its value kept beside it,
+and the rest of the geometry (surfaces' directions, named points, the cords' directions of
+t = 0) is exact where a short fraction or a square root of 2 or 3 gives it, else a decimal.
+
+Each joint gives its rows φ(q, t) and its multipliers λ written with the joint forces by
+name, the contract's signs (pin ``R``, slider ``N``, ``M``, contact ``N``, rolling ``N``,
+``F``, cord and link ``T`` = −λ, drive the driver's force or couple).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+
+
+#: a float within this relative distance of a short exact form is shown as that form (the
+#: rounding of the sums that made it: a cord's constant 0.0999999999999999 is 1/10)
+TOL = 1e-13
+
+
+def exact(x: float):
+    """A float as an exact number where a short form gives it to rounding (0.3 -> 3/10,
+    0.8660254037844386 -> √3/2), else a sympy Float."""
+    x = float(x)
+    if x == 0 or x.is_integer() and abs(x) < 1e15:
+        return sp.Integer(int(x))
+    f = Fraction(x).limit_denominator(1000)
+    if abs(float(f) - x) <= TOL * abs(x):
+        return sp.Rational(f.numerator, f.denominator)
+    h = Fraction(x / math.pi).limit_denominator(360)         # an angle: a fraction of π
+    if h and abs(float(h) * math.pi - x) <= TOL * abs(x):
+        return sp.Rational(h.numerator, h.denominator) * sp.pi
+    for root in (2, 3, 6):
+        g = Fraction(x / math.sqrt(root)).limit_denominator(100)
+        if g and abs(float(g) * math.sqrt(root) - x) <= TOL * abs(x):
+            return sp.Rational(g.numerator, g.denominator) * sp.sqrt(root)
+    return sp.Float(x, 15)
+
+
+def _tex_name(name: str) -> str:
+    return name if len(name) == 1 else r"\mathrm{" + name.replace("_", r"\_") + "}"
+
+
+@dataclass
+class Symbols:
+    """Every symbol with its text (the notes' letters), its LaTeX and its value."""
+
+    text: dict = field(default_factory=dict)
+    tex: dict = field(default_factory=dict)
+    values: dict = field(default_factory=dict)
+
+    def new(self, key: str, text: str, tex: str, value=None, positive=False):
+        s = sp.Symbol(key, positive=True) if positive else sp.Symbol(key, real=True)
+        self.text[s], self.tex[s] = text, tex
+        if value is not None:
+            self.values[s] = float(value)
+        return s
+
+    def param(self, letter: str, tex_letter: str, owner: str, value: float):
+        """m_A, Ī_rod, L_rod, k_s: a positive constant named after its owner."""
+        return self.new(f"{letter}_{owner}", f"{letter}_{owner}", f"{tex_letter}_{{{_tex_name(owner)}}}", value,
+                        positive=True)
+
+    def force(self, letter: str, owner: str, comp: str = ""):
+        sub = owner + ("," + comp if comp else "")
+        return self.new(f"{letter}_{owner}{comp}", f"{letter}_{sub}", f"{letter}_{{{_tex_name(owner)}"
+                        + (f",{comp}" if comp else "") + "}")
+
+
+@dataclass
+class Coords:
+    """q, q̇, q̈ as symbols, named after the engine's coordinates (x.A.0 -> x_A1, angle.rod -> θ_rod)."""
+
+    q: list
+    qd: list
+    qdd: list
+
+    @classmethod
+    def of(cls, names: list[str], S: Symbols) -> "Coords":
+        q, qd, qdd = [], [], []
+        for nm in names:
+            head, body, *comp = nm.split(".")
+            if head == "x":
+                k = str(int(comp[0]) + 1)
+                base, tb, sub, tsub = "x", "x", f"{body}{k}", f"{_tex_name(body)},{k}"
+            else:
+                base, tb, sub, tsub = "θ", r"\theta", body, _tex_name(body)
+            for dots, out, tdot in (("", q, ""), ("\u0307", qd, r"\dot"), ("\u0308", qdd, r"\ddot")):
+                text = f"{base}{dots}_{sub}"
+                tex = (f"{tdot}{{{tb}}}" if tdot else tb) + f"_{{{tsub}}}"
+                out.append(S.new(f"{base}{dots}_{sub}", text, tex))
+        return cls(q, qd, qdd)
+
+    def dt(self, expr):
+        """d/dt of an expression in q and q̇ (the chain rule)."""
+        return sum((sp.diff(expr, a) * b for a, b in zip(self.q, self.qd)), sp.Integer(0)) + \
+            sum((sp.diff(expr, a) * b for a, b in zip(self.qd, self.qdd)), sp.Integer(0))
+
+
+class Geometry:
+    """Symbolic positions of the engine's points."""
+
+    def __init__(self, S: Symbols, C: Coords, bodies: list):
+        self.S, self.C, self.bodies = S, C, bodies
+        self.lengths: dict = {}
+        self.radii: dict = {}
+
+    def rod_length(self, b):
+        if b.name not in self.lengths:
+            self.lengths[b.name] = self.S.param("L", "L", b.name, b.length)
+        return self.lengths[b.name]
+
+    def radius(self, b):
+        if b.name not in self.radii:
+            self.radii[b.name] = self.S.param("r", "r", b.name, b.radius)
+        return self.radii[b.name]
+
+    def offset(self, P):
+        """p on the body's e'1, e'2: a rod's ends ±L/2, a named point exactly."""
+        b = P.body
+        if b.shape == "rod" and P.p[1] == 0 and abs(abs(P.p[0]) - b.length / 2) <= 1e-15 * b.length:
+            return (sp.sign(P.p[0]) * self.rod_length(b) / 2, sp.Integer(0))
+        return (exact(P.p[0]), exact(P.p[1]))
+
+    def pos(self, P):
+        if P.body is None:
+            return sp.Matrix([exact(P.p[0]), exact(P.p[1])])
+        i = P.body.index
+        x = sp.Matrix([self.C.q[i[0]], self.C.q[i[1]]])
+        if not P.turns_with_body:
+            return x
+        p1, p2 = self.offset(P)
+        th = self.C.q[i[2]]
+        return x + sp.Matrix([sp.cos(th) * p1 - sp.sin(th) * p2, sp.sin(th) * p1 + sp.cos(th) * p2])
+
+    def centre(self, b):
+        i = b.index
+        return sp.Matrix([self.C.q[i[0]], self.C.q[i[1]]])
+
+
+def vec(a) -> "sp.Matrix":
+    """A direction or point: a component that is rounding beside the other (cos 90°) is 0."""
+    big = max(abs(float(a[0])), abs(float(a[1])))
+    return sp.Matrix([exact(c) if abs(float(c)) > 1e-14 * big else sp.Integer(0) for c in (a[0], a[1])])
+
+
+def _signed_radius(G: Geometry, b, k: float):
+    return G.radius(b) * (1 if k > 0 else -1) if abs(abs(k) - b.radius) <= 1e-12 * b.radius else exact(k)
+
+
+def _cord(e, G: Geometry, S: Symbols):
+    """Rows Σ u·(X_b − X_a) = const per run; λ = −T per run."""
+    phis, tens = [], []
+    for r, run in enumerate(e.runs):
+        total = sp.Integer(0)
+        for seg in run:
+            u = vec(seg.u)
+            for end, sgn in ((seg.b, 1), (seg.a, -1)):
+                if end.point is not None:
+                    total += sgn * (u.T * G.pos(end.point))[0]
+                elif end.centre is not None:
+                    b = end.centre.body
+                    total += sgn * ((u.T * G.centre(b))[0] + _signed_radius(G, b, end.k) * G.C.q[b.index[2]])
+        phis.append(total - exact(e.consts[r]))
+        tens.append(S.force("T", e.name, str(r + 1) if len(e.runs) > 1 else ""))
+    return phis, [-T for T in tens], tens
+
+
+def element_rows(e, G: Geometry, S: Symbols, drive_expr=None):
+    """(rows φ, multipliers λ in the joint forces, the force symbols, friction load or None)."""
+    k, C = e.kind, G.C
+    if k == "pin":
+        R1, R2 = S.force("R", e.name, "1"), S.force("R", e.name, "2")
+        return list(G.pos(e.P) - G.pos(e.Q)), [R1, R2], [R1, R2], None
+    if k == "slider":
+        N = S.force("N", e.name)
+        rows = [(vec(e.surface.n).T * G.pos(e.body_point))[0] - exact(e.c0)]
+        if e.theta0 is None:
+            return rows, [N], [N], None
+        M = S.force("M", e.name)
+        return rows + [C.q[e.body_point.body.index[2]] - exact(e.theta0)], [N, M], [N, M], None
+    if k == "contact":
+        N = S.force("N", e.name)
+        rows = [(vec(e.surface.n).T * (G.pos(e.P) - vec(e.surface.origin)))[0]]
+        if not e.rough:
+            return rows, [N], [N], None
+        F = S.force("F", e.name)
+        return rows, [N], [N, F], (F, N, e)
+    if k == "rolls":
+        N, F = S.force("N", e.name), S.force("F", e.name)
+        b = e.body_point.body
+        x = G.centre(b)
+        return [(vec(e.surface.n).T * (x - vec(e.surface.origin)))[0] - G.radius(b),
+                (vec(e.surface.d).T * x)[0] + G.radius(b) * C.q[b.index[2]] - exact(e.c0)], [N, F], [N, F], None
+    if k == "link":
+        T = S.force("T", e.name)
+        d = G.pos(e.P) - G.pos(e.Q)
+        return [sp.sqrt(d[0] ** 2 + d[1] ** 2) - exact(e.L)], [-T], [T], None
+    if k == "drive":
+        letter = "M" if any(b.rigid and b.index[2] == e.index for b in G.bodies) else "F"
+        D = S.force(letter, e.name)
+        return [C.q[e.index] - drive_expr], [D], [D], None
+    if k == "cord":
+        phis, lams, tens = _cord(e, G, S)
+        return phis, lams, tens, None
+    if k == "guide":
+        owner = e.name.split(":")[0] + "," + e.P.body.name
+        N = S.new(f"N_{owner}", f"N_{owner}", f"N_{{{_tex_name(e.name.split(':')[0])},{_tex_name(e.P.body.name)}}}")
+        return [(vec(e.w).T * G.pos(e.P))[0] - exact(e.c0)], [N], [N], None
+    raise ValueError(f"no symbolic form for a {k} joint")  # pragma: no cover - every engine element is above
+
+
+#: entries with more operations than this skip trigsimp (seconds on long entries)
+SIMPLIFY_MAX_OPS = 80
+
+
+@dataclass
+class Eq:
+    label: str
+    lhs: object
+    rhs: object
+    rel: str = "="
+    terms: list | None = None       # the left side as (coefficient, symbol) pairs: printed coefficient first
+
+
+def tidy(x):
+    """A bounded, readable simplification (expand + trigsimp for short entries)."""
+    x = sp.Integer(0) + x
+    if x.is_Number:
+        return x
+    try:
+        cands = [x, sp.factor_terms(x)]
+        if sp.count_ops(x) <= SIMPLIFY_MAX_OPS:
+            y = sp.trigsimp(sp.expand(x))
+            cands += [y, sp.factor_terms(y)]
+        return min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
+    except Exception:  # noqa: BLE001 - simplification is cosmetic
+        return x
+
+
+def numeric_jacobian(rows, C, values: dict, q0) -> np.ndarray:
+    """J = ∂φ/∂q at the state q0 with the symbols' values (floats)."""
+    sub = {**values, **{q: float(x) for q, x in zip(C.q, q0)}}
+    J = sp.Matrix(rows).jacobian(C.q) if rows else sp.zeros(0, len(C.q))
+    return np.array(J.subs(sub).evalf(), dtype=float) if rows else np.zeros((0, len(C.q)))
