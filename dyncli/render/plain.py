@@ -75,10 +75,10 @@ def _columns(table, cell_len) -> list | None:
     cols = []
     for c in table.columns:
         head = _plain(c.header)
-        cells = [_plain(x) for x in c._cells]
-        if head is None or "\n" in head or any(x is None for x in cells):
+        texts = [_plain(x) for x in c._cells]
+        if head is None or "\n" in head or any(x is None for x in texts):
             return None
-        cells = [x.split("\n") for x in cells]
+        cells = [x.split("\n") for x in texts if x is not None]
         width = max([cell_len(head)] + [cell_len(ln) for lines in cells for ln in lines])
         if width == 0:
             return None                       # rich keeps a column of width 0 its own way
@@ -122,19 +122,19 @@ def layout(table, console) -> list[str] | None:
         body += [line([cells[i][k] if k < len(cells[i]) else "" for _, cells, _, _ in cols]) for k in range(height)]
     top, bottom = (rule("┌", "┬", "┐"), rule("└", "┴", "┘")) if square else (" " * total, " " * total)
     title, caption = _label(table.title, total, cell_len), _label(table.caption, total, cell_len)
-    if title is False or caption is False:
+    if title is None or caption is None:
         return None
     return title + [top] + body + [bottom] + caption
 
 
-def _label(label, total: int, cell_len) -> list[str] | bool:
-    """A title or caption centred over the table ([] for none), False when
+def _label(label, total: int, cell_len) -> list[str] | None:
+    """A title or caption centred over the table ([] for none), None when
     rich would wrap it."""
     if not label:
         return []
     text = _plain(label)
     if text is None or "\n" in text or cell_len(text) > total:
-        return False
+        return None
     return [_centred(text, total, cell_len)]
 
 

@@ -309,7 +309,7 @@ def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int,
         used += c[2] + 3
     if cur:
         groups.append(cur)
-    tables = []
+    tables: list[Any] = []                   # rich Tables, and a Text for the omitted rows
     for gi, group in enumerate(groups):
         title = s.title if gi == 0 else (f"{s.title} (continued)" if s.title else None)
         t = RTable(title=escape(title) if title else None, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
