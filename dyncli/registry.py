@@ -126,7 +126,7 @@ def solver(name: str) -> Callable:
                 resolved(model, result, fn, info.motion.get("rates", {}), info.motion.get("fast", ()))
         return info.attach(result)
 
-    solve.__wrapped__ = fn  # type: ignore[attr-defined]
+    solve.__wrapped__ = fn  # type: ignore[attr-defined]  # functools' convention; mypy knows no attributes of a function
     solve.__name__ = getattr(fn, "__name__", "solve")
     return solve
 
