@@ -86,7 +86,7 @@ def types_by_chapter() -> list[tuple[str, list[str]]]:
 
     groups: dict[str, list[str]] = {t: [] for t, _, _ in CHAPTERS}
     for name, info in registry.TYPES.items():
-        groups.setdefault(chapter_of(info.section), []).append(name)
+        groups.setdefault(chapter_of(info.sections), []).append(name)
     return [(t, names) for t, names in groups.items() if names]
 
 
@@ -308,7 +308,7 @@ def types_index() -> str:
         for name in names:
             info = registry.TYPES[name]
             link = f"[`{name}`]({name}.md)" if type_page(name).exists() else f"`{name}` (page to come)"
-            out.append(f"| {link} | {info.section} | {info.summary} |")
+            out.append(f"| {link} | {info.sections} | {info.title} |")
         out.append("")
     return "\n".join(out)
 
@@ -322,9 +322,9 @@ def gallery_rows(label: str) -> str:
     lo, hi = (int(n) for n in re.findall(r"\d+", label)[:2])
     rows = []
     for name, info in registry.TYPES.items():
-        nums = [int(n) for n in re.findall(r"§\s*(\d+)", info.section)]
+        nums = [int(n) for n in re.findall(r"§\s*(\d+)", info.sections)]
         if info.gallery and info.example and nums and lo <= min(nums) <= hi:
-            rows.append(f"| `{info.example}` | {info.section}: {info.gallery} |")
+            rows.append(f"| `{info.example}` | {info.sections}: {info.gallery} |")
     return "\n".join(["| file | what it shows |", "|---|---|"] + rows) if rows else ""
 
 

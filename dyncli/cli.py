@@ -212,9 +212,9 @@ def types():
     from dyncli import registry
 
     wn = max(len(n) for n in registry.TYPES)
-    ws = max(len(i.section) for i in registry.TYPES.values())
+    ws = max(len(i.sections) for i in registry.TYPES.values())
     for name, info in registry.TYPES.items():
-        print(f"{name:<{wn}}  {info.section:<{ws}}  {info.summary}")
+        print(f"{name:<{wn}}  {info.sections:<{ws}}  {info.title}")
 
 
 @app.command()

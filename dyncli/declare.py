@@ -30,6 +30,10 @@ from typing import Any
 KINDS = ("number", "vector", "tensor", "string", "bool", "list", "mapping", "any")
 
 
+#: the capabilities a :class:`TypeSpec` declares as flags (``plots``: a plots module, not None)
+CAPABILITIES = ("numpy_free", "symbolic", "exact", "plots")
+
+
 class UndeclaredResult(RuntimeError):
     """A solver produced a result key its type does not declare (a bug)."""
 
@@ -93,6 +97,24 @@ def R(name: str, symbol: str = "", unit: str = "", equations: str = "", meaning:
     return ResultSpec(name, symbol, unit, tuple(equations.replace(",", " ").split()), meaning, **kw)
 
 
+class DeclarationError(ValueError):
+    """A declaration is wrong (an unknown result kind, a result declared twice): raised when the
+    declaration is built, at import, naming the type and the result."""
+
+
+def check_kind(kind: str) -> str | None:
+    """None for a known kind (one of :data:`KINDS`, or a union ``"list|number"`` of them), else
+    what is wrong with it."""
+    bad = [k for k in kind.split("|") if k not in KINDS]
+    if not bad:
+        return None
+    import difflib
+
+    near = difflib.get_close_matches(bad[0], KINDS, n=1)
+    hint = f" (did you mean {near[0]!r}?)" if near else ""
+    return f"unknown kind {bad[0]!r}{hint}; kinds: {', '.join(KINDS)}, or a union such as 'list|number'"
+
+
 class TypeSpec:
     """A problem type: everything the project needs to know about it.
 
@@ -100,17 +122,29 @@ class TypeSpec:
     ``sections`` the notes' sections ("§6", "§28, §23").  ``model``,
     ``solve`` and ``plots`` are ``"module:attr"`` references relative to the
     topic package (``"model:Rectilinear"``) or the objects themselves (a
-    test-only type); they are imported only when used (``plots`` may be
-    None; a missing plots module means no extra plots).  ``template`` and
+    test-only type); they are imported only when used (``plots`` is None for
+    a type that draws no plot of its own).  ``template`` and
     ``example`` are paths relative to the repository root.  ``package`` is
     filled by the registry ("dyncli.topics.rectilinear").  ``gallery`` is the row of
     docs/gallery.md for the example (what it shows, one line; the file and sections are added):
     the gallery's generated regions list it, so the page is never edited by hand for a new type.
+
+    Capabilities, as flags (every list of types with a capability is derived from them, and the
+    tests check each flag against what the type does):
+
+    * ``numpy_free``: its example is solved in plain floats, without importing numpy (cold start);
+    * ``symbolic``: it has a ``--symbolic`` view (formulas in the tables);
+    * ``exact``: it has an exact route (``accuracy.method: exact``: elliptic functions, Kepler);
+    * ``plots`` (not None): it draws plots of its own for ``--plot``.
+
+    Each result's ``kind`` is checked here: a misspelt kind is a :class:`DeclarationError` at
+    import, naming the type and the result (it would otherwise drop the result from the schema).
     """
 
     def __init__(self, name: str, title: str, sections: str, model: Any, solve: Any = "solver:solve",
-                 results: list[ResultSpec] | None = None, plots: Any = "plots:plots", template: str = "",
-                 example: str = "", package: str = "", motion: dict | None = None, gallery: str = ""):
+                 results: list[ResultSpec] | None = None, plots: Any = None, template: str = "",
+                 example: str = "", package: str = "", motion: dict | None = None, gallery: str = "",
+                 numpy_free: bool = False, symbolic: bool = False, exact: bool = False):
         self.name, self.title, self.sections, self.model, self.solve = name, title, sections, model, solve
         #: a type whose solver reports its motion at the times of ``at`` and answers ``find`` by
         #: solving at other times (dyncli.motion_find.resolved): ``{"rates": {result: its rate},
@@ -118,39 +152,25 @@ class TypeSpec:
         self.motion = motion
         self.results = list(results or [])
         self.plots, self.example, self.package, self.gallery = plots, example, package, gallery
+        self.numpy_free, self.symbolic, self.exact = numpy_free, symbolic, exact
         self.template = template or f"dyncli/templates/{name}.yaml"
-        self._exact: dict[str, ResultSpec] = {}
+        self._by_name: dict[str, ResultSpec] = {}
         self._patterns: list[ResultSpec] = []
         for r in self.results:
+            wrong = check_kind(r.kind)
+            if wrong:
+                raise DeclarationError(f"type {name!r}, result {r.name!r}: {wrong}")
             if r.part_of is not None:
                 continue
-            if r.name in self._exact or any(p.name == r.name for p in self._patterns):
-                raise ValueError(f"{name}: result {r.name!r} declared twice")
+            if r.name in self._by_name or any(p.name == r.name for p in self._patterns):
+                raise DeclarationError(f"type {name!r}, result {r.name!r}: declared twice")
             if r.is_pattern:
                 self._patterns.append(r)
             else:
-                self._exact[r.name] = r
+                self._by_name[r.name] = r
 
     def __repr__(self) -> str:
         return f"TypeSpec({self.name!r}, {len(self.results)} results)"
-
-    # --- compatibility with the former registry.TypeInfo --------------------
-    @property
-    def section(self) -> str:
-        return self.sections
-
-    @property
-    def summary(self) -> str:
-        return self.title
-
-    @property
-    def topic(self) -> str:
-        return self.package
-
-    @property
-    def solver(self) -> Any:
-        """The solver's absolute ``"package.module:function"`` reference."""
-        return self.ref(self.solve)
 
     def ref(self, what: Any) -> Any:
         """``"module:attr"`` made absolute (``package.module:attr``)."""
@@ -160,7 +180,7 @@ class TypeSpec:
 
     # --- results -------------------------------------------------------------
     def spec_of(self, key: str) -> ResultSpec | None:
-        r = self._exact.get(key)
+        r = self._by_name.get(key)
         if r is not None:
             return r
         return next((p for p in self._patterns if p.matches(key)), None)

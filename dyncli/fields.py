@@ -68,9 +68,48 @@ class FieldSpec(GroupedMetadata):
 
 
 class StrictModel(BaseModel):
-    """Base for every input model: unknown fields are errors."""
+    """Base for every input model: unknown fields are errors.  A field's declared ``dim`` is checked
+    when the class is built: a misspelt dimension is an error naming the type and the field (it
+    would otherwise turn the unit check off)."""
 
     model_config = ConfigDict(extra="forbid", frozen=False, arbitrary_types_allowed=True)
+
+    @classmethod
+    def __pydantic_init_subclass__(cls, **kwargs: Any) -> None:
+        super().__pydantic_init_subclass__(**kwargs)
+        from dyncli.units import UnknownDimension, normalise_dim
+
+        for name, info in cls.model_fields.items():
+            for dim in _declared_dims([info.annotation, *info.metadata]):
+                try:
+                    normalise_dim(dim)
+                except UnknownDimension as exc:
+                    raise UnknownDimension(f"{_model_label(cls)}, field {name!r}: {exc}") from None
+
+
+def _declared_dims(items: list[Any]) -> Iterable[str]:
+    """The ``x-dimension`` of every field type in ``items`` (annotations and their metadata, nested
+    in ``Optional[...]``, ``list[...]``, ``dict[...]``)."""
+    from typing import get_args
+
+    todo = list(items)
+    while todo:
+        item = todo.pop()
+        if isinstance(item, WithJsonSchema):
+            dim = item.json_schema.get("x-dimension") if isinstance(item.json_schema, dict) else None
+            if dim:
+                yield dim
+            continue
+        todo.extend(get_args(item))
+
+
+def _model_label(cls: type) -> str:
+    """``type 'rectilinear' (Rectilinear)`` for a problem model, the class name for a part of one."""
+    from typing import get_args
+
+    field = cls.model_fields.get("type")
+    names = get_args(field.annotation) if field is not None else ()
+    return f"type {names[0]!r} ({cls.__name__})" if names and isinstance(names[0], str) else f"model {cls.__name__}"
 
 
 def _params(info: ValidationInfo | None) -> dict[str, float]:
@@ -145,10 +184,13 @@ def Num(
     schema = dict(NUMBER_SCHEMA)
     extra = {}
     if dim:
-        from dyncli.units import si_unit
+        from dyncli.units import UnknownDimension, si_unit
 
         extra["x-dimension"] = dim
-        extra["x-unit"] = si_unit(dim)
+        try:
+            extra["x-unit"] = si_unit(dim)
+        except UnknownDimension:
+            pass        # the model's class (StrictModel.__pydantic_init_subclass__) names the field
     if description:
         schema["description"] = description
     return FieldSpec(validate, {**schema, **extra})

@@ -38,6 +38,7 @@ import numpy as np
 
 from dyncli import cputime
 from dyncli.errors import NumericalError
+from dyncli.integrators import METHODS, RTOL_FLOOR, floor_rtol, solver_class  # noqa: F401 (ode.RTOL_FLOOR)
 
 MAX_STEPS = 50_000       # default budget (~1-2 s of Python stepping); accuracy.max_steps overrides it
 CPU_PROBE = 32           # every this many steps, the solve's CPU is projected (dyncli.cputime.over_budget)
@@ -168,14 +169,12 @@ def steps(solver, budget: Budget | None, method: str):
 
 
 def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check_finite: bool = True):
-    """scipy's solver class for ``method`` (the runner's one method map,
-    :func:`dyncli.runner.solver_class`; for ``solve_ivp(method=...)``) with every accepted
+    """scipy's solver class for ``method`` (the one method map,
+    :func:`dyncli.integrators.solver_class`; for ``solve_ivp(method=...)``) with every accepted
     step counted by ``budget`` and a rate that is not finite raised as
     :class:`NonFiniteRate` (``check_finite=False``: the right-hand side checks its own).
     ``stop_nonfinite``: instead, a non-finite rate or state ends the integration as failed
     (status -1, with the reason) at the last good step."""
-    from dyncli.runner import solver_class
-
     base = solver_class(method)
 
     class Budgeted(base):  # type: ignore[misc, valid-type]  # scipy's class for the method, chosen at run time
@@ -217,8 +216,6 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     is clear that it needs more than ``max_steps`` steps (default MAX_STEPS):
     see :class:`Budget`.
     """
-    from dyncli.runner import solver_class
-
     budget = Budget(max_steps)
     cls = solver_class(method)
     times = np.asarray(times, dtype=float)
@@ -294,19 +291,12 @@ class _Projected:
         return out
 
 
-def __getattr__(name):
-    if name in ("RTOL_FLOOR", "ODE_METHODS"):     # the one rtol floor and method list are the runner's
-        from dyncli import runner
-
-        return runner.RTOL_FLOOR if name == "RTOL_FLOOR" else runner.METHODS
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+ODE_METHODS = METHODS       # the one method list (dyncli.integrators), by its former name here
 
 
 def tighter(rtol: float, atol: float, div: float | None = None) -> tuple[float, float]:
     """Tolerances of a check solve ``div`` times tighter than (rtol, atol)
     (the error_estimate of the ODE routes), rtol no smaller than scipy allows."""
-    from dyncli.runner import floor_rtol
-
     div = CHECK_DIV if div is None else div
     return floor_rtol(rtol / div), max(atol / div, 1e-300)
 

@@ -20,9 +20,7 @@ import os
 import re
 from typing import Any, Callable
 
-from dyncli.declare import TypeSpec
-
-TypeInfo = TypeSpec   # the former name
+from dyncli.declare import CAPABILITIES, TypeSpec
 
 _TOPICS = os.path.join(os.path.dirname(__file__), "topics")
 
@@ -84,6 +82,15 @@ def spec(name: str) -> TypeSpec:
     return TYPES[name]
 
 
+def having(capability: str) -> tuple[str, ...]:
+    """The names of the types that declare ``capability`` (one of
+    :data:`dyncli.declare.CAPABILITIES`), in the registry's order: every list
+    of types with a capability is this, never written by hand."""
+    if capability not in CAPABILITIES:
+        raise ValueError(f"unknown capability {capability!r}; capabilities: {', '.join(CAPABILITIES)}")
+    return tuple(n for n, s in TYPES.items() if getattr(s, capability))
+
+
 def _load(ref: Any) -> Any:
     if not isinstance(ref, str):
         return ref
@@ -133,24 +140,14 @@ def solver(name: str) -> Callable:
 
 def plots_for(name: str, problem, result) -> list:
     """Plot specs for a solved problem: ``result.plots`` plus whatever the
-    type's optional plots function draws (declared ``plots``, by default
-    ``dyncli.topics.<topic>.plots:plots(problem, result) -> list[Plot]``),
+    type's plots function draws (declared ``plots``, usually
+    ``"plots:plots"``: ``dyncli.topics.<topic>.plots:plots(problem, result) -> list[Plot]``),
     imported only for ``--plot``."""
     out = list(result.plots)
     info = TYPES[name]
-    ref = info.ref(info.plots)
-    if ref is None:
+    if info.plots is None:
         return out
-    if not isinstance(ref, str):
-        return out + list(ref(problem, result))
-    mod, _, attr = ref.partition(":")
-    try:
-        m = importlib.import_module(mod)
-    except ModuleNotFoundError as exc:
-        if exc.name != mod:
-            raise
-        return out
-    return out + list(getattr(m, attr)(problem, result))
+    return out + list(_load(info.ref(info.plots))(problem, result))
 
 
 def problem_union():

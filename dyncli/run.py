@@ -133,7 +133,6 @@ def outcome_record(o: Outcome) -> dict[str, Any]:
 
 # ------------------------------------------------------------------ commands
 
-SYMBOLIC_TYPES = ("kinematics", "rotating-frame", "scene", "top")   # types with a --symbolic view (tested)
 COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "min", "h", "g", "kg", "N", "kN",
                 "J", "kJ", "W", "kW", "Hz", "m/s", "km/h", "mph", "N*m", "N/m", "lbf", "ft", "in")
 
@@ -182,9 +181,12 @@ def _symbolic_notes(fmt: str, problems: list[LoadedProblem]) -> None:
     if fmt in ("json", "yaml", "csv"):
         _err(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
         return
-    lacking = sorted({lp.type for lp in problems if lp.type and lp.type not in SYMBOLIC_TYPES})
+    from dyncli import registry
+
+    with_view = registry.having("symbolic")
+    lacking = sorted({lp.type for lp in problems if lp.type and lp.type not in with_view})
     if lacking:
-        _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(SYMBOLIC_TYPES)})")
+        _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(with_view)})")
 
 
 def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):

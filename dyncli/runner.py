@@ -9,6 +9,7 @@ What lives here, once:
   ``OdeSolver`` class (``auto``, ``ode``, ``exact`` and ``projected`` step with DOP853);
 * :data:`RTOL_FLOOR` / :func:`floor_rtol` — the one rtol floor (scipy's smallest rtol,
   100 machine epsilons);
+  both defined in :mod:`dyncli.integrators` (which :mod:`dyncli.ode` uses too) and taken from here;
 * :func:`solve_ivp` and :func:`ode_solution` — scipy's driver and piecewise interpolant, with
   every accepted step counted by the work budget (:class:`dyncli.ode.Budget`);
 * :class:`Route` — the contract of a route (below), whose :meth:`Route.estimate_error` is the
@@ -23,36 +24,11 @@ scipy is imported lazily, only when a problem actually integrates.
 from __future__ import annotations
 
 import math
-import sys
 
 from dyncli import ode
-
-#: scipy's integrators an ``accuracy.method`` may name
-METHODS = ("DOP853", "RK45", "Radau", "LSODA")
-#: the names of ``accuracy.method`` that are not scipy's, and the integrator that steps them
-ALIASES = {"auto": "DOP853", "ode": "DOP853", "exact": "DOP853", "projected": "DOP853"}
-#: the one rtol floor: scipy's smallest rtol (100 machine epsilons; the model refuses below 2.3e-14)
-RTOL_FLOOR = 100 * sys.float_info.epsilon * 1.0001
-
-
-def floor_rtol(rtol: float) -> float:
-    """``rtol`` no smaller than scipy allows (:data:`RTOL_FLOOR`)."""
-    return max(rtol, RTOL_FLOOR)
-
-
-def scipy_method(method: str) -> str:
-    """The scipy integrator (one of :data:`METHODS`) that steps ``accuracy.method``."""
-    name = ALIASES.get(method, method)
-    if name not in METHODS:
-        raise ValueError(f"unknown integrator {method!r}: one of {', '.join(METHODS + tuple(ALIASES))}")
-    return name
-
-
-def solver_class(method: str):
-    """The one method map: scipy's ``OdeSolver`` class for ``accuracy.method``."""
-    from scipy import integrate as si
-
-    return getattr(si, scipy_method(method))
+# the method map and the rtol floor are defined below the runner, in dyncli.integrators (dyncli.ode
+# steps with them too); the runner is where the routes take them from
+from dyncli.integrators import ALIASES, METHODS, RTOL_FLOOR, floor_rtol, scipy_method, solver_class  # noqa: F401 (re-exported)
 
 
 def solve_ivp(fun, t_span, y0, *, method: str, budget, check_finite: bool = True, stop_nonfinite: bool = False,

@@ -78,7 +78,7 @@ def template(type_name: str) -> str:
     if derived is not None:
         return derived
     cls = registry.model_class(type_name)
-    lines = [f"# dyncli problem: {type_name} — {info.summary} (notes {info.section})", f"type: {type_name}", "title: my problem"]
+    lines = [f"# dyncli problem: {type_name} — {info.title} (notes {info.sections})", f"type: {type_name}", "title: my problem"]
     for name, f in cls.model_fields.items():
         if name in ("type", "title", "params", "accuracy", "g"):
             continue
@@ -123,7 +123,7 @@ def example_template(info) -> str | None:
         return None
     lines = path.read_text(encoding="utf-8").splitlines()
     data = yaml.safe_load("\n".join(lines))
-    head = [f"# dyncli problem: {info.name} — {info.summary} (notes {info.section})",
+    head = [f"# dyncli problem: {info.name} — {info.title} (notes {info.sections})",
             f"# Gallery: {info.example} (the same problem, with its answers)"]
     if isinstance(data, dict) and "problems" in data:
         comments = [ln for ln in lines[:lines.index("problems:")] if ln.startswith("#")]

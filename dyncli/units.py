@@ -61,16 +61,32 @@ QUANTITY = re.compile(
 MAX_UNIT_TEXT = 80
 
 
+class UnknownDimension(ValueError):
+    """A field declares a dimension this module does not know (a bug in a model: raised when the
+    model class is built, naming the type and the field; never a user's error)."""
+
+
 def normalise_dim(dim: str | None) -> str | None:
+    """The name of ``dim`` in :data:`DIMENSIONS` (``"angular velocity"`` -> ``"angular_velocity"``,
+    aliases resolved); None for no dimension.  Raises :class:`UnknownDimension` for a name that is
+    neither a dimension nor an alias: a misspelt dimension would otherwise turn the check off."""
     if not dim:
         return None
     d = dim.strip().lower().replace(" ", "_").replace("-", "_")
-    return _ALIASES.get(d, d)
+    d = _ALIASES.get(d, d)
+    if d not in DIMENSIONS:
+        import difflib
+
+        near = difflib.get_close_matches(d, list(DIMENSIONS) + list(_ALIASES), n=1)
+        hint = f" (did you mean {near[0]!r}?)" if near else ""
+        raise UnknownDimension(f"unknown dimension {dim!r}{hint}; known: {', '.join(DIMENSIONS)}")
+    return d
 
 
 def si_unit(dim: str | None) -> str:
+    """The SI unit users see for ``dim`` ("" for none or dimensionless); an unknown dimension raises."""
     d = normalise_dim(dim)
-    return DIMENSIONS[d][1] if d in DIMENSIONS else ""
+    return DIMENSIONS[d][1] if d else ""
 
 
 def looks_like_quantity(text: str) -> bool:
@@ -136,7 +152,7 @@ def parse_quantity(text: str, dim: str | None = None) -> float:
 
     d = normalise_dim(dim)
     try:
-        unit = ureg.parse_units(clean_unit(unit_text, angular=d in DIMENSIONS and is_angular(DIMENSIONS[d][1])))
+        unit = ureg.parse_units(clean_unit(unit_text, angular=d is not None and is_angular(DIMENSIONS[d][1])))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, SyntaxError, KeyError) as exc:
         name = getattr(exc, "unit_names", None) or unit_text
@@ -146,7 +162,7 @@ def parse_quantity(text: str, dim: str | None = None) -> float:
     except Exception:  # noqa: BLE001 - pint raises assorted errors on garbage
         raise UnitError(f"cannot read the unit {unit_text!r} in {text!r}") from None
     q = ureg.Quantity(num, unit)
-    if d in DIMENSIONS:
+    if d is not None:
         want, si, noun = DIMENSIONS[d]
         want_dim = ureg.get_dimensionality(want) if want else ureg.get_dimensionality("")
         if q.dimensionality != want_dim:

@@ -16,7 +16,7 @@ from pydantic import Field
 
 from dyncli import registry
 from dyncli.declare import R, TypeSpec, UndeclaredResult
-from dyncli.fields import Num, ProblemBase
+from dyncli.fields import Num, ProblemBase, Vector
 from dyncli.result import Result
 from tests.conftest import solve_text
 
@@ -144,3 +144,71 @@ def test_declarations_import_nothing_heavy():
             "or (m.startswith('dyncli.topics.') and not m.endswith('.results'))))")
     out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]", out.stdout
+
+
+# -- declarations that cannot be misspelt (issue #26 item 4) ------------------------------------------------
+
+
+def test_a_misspelt_kind_is_an_error_at_declaration_naming_type_and_result():
+    from dyncli.declare import DeclarationError
+
+    with pytest.raises(DeclarationError, match=r"type 'toy-typo', result 'period': unknown kind 'nmber' "
+                                                r"\(did you mean 'number'\?\)"):
+        TypeSpec(name="toy-typo", title="t", sections="§17", model=Toy, solve=toy_solve,
+                 results=[R("omega_n", "ωₙ", "rad/s", kind="number"), R("period", "T", "s", kind="nmber")])
+    with pytest.raises(DeclarationError, match=r"result 'x': unknown kind 'vectr'"):
+        TypeSpec(name="toy-typo", title="t", sections="§17", model=Toy, results=[R("x", kind="list|vectr")])
+    # a union of known kinds, and "any", are kinds
+    TypeSpec(name="toy-ok", title="t", sections="§17", model=Toy, results=[R("x", kind="list|number"), R("y")])
+
+
+def test_a_misspelt_dimension_is_an_error_when_the_model_is_built_naming_type_and_field():
+    from typing import Optional
+
+    from dyncli.fields import StrictModel, Vec3
+    from dyncli.units import UnknownDimension
+
+    with pytest.raises(UnknownDimension, match=r"type 'toy-typo' \(Typo\), field 'L': unknown dimension 'lenght' "
+                                               r"\(did you mean 'length'\?\)"):
+        class Typo(ProblemBase):
+            type: Literal["toy-typo"]
+            L: Optional[Annotated[float, Num(gt=0, dim="lenght")]] = None
+
+    with pytest.raises(UnknownDimension, match=r"model Part, field 'v': unknown dimension 'sped'"):
+        class Part(StrictModel):
+            v: dict[str, Annotated[Vector, Vec3(dim="sped")]]
+
+
+def test_an_unknown_dimension_never_turns_the_unit_check_off():
+    """Every dimension a model declares is known (checked when the model is built), so "3 s" is refused
+    for a length; asked for directly, an unknown dimension raises instead of meaning "no unit"."""
+    from dyncli import units
+
+    for name in registry.TYPES:
+        if registry.available(name):
+            registry.model_class(name)          # builds: every declared dimension is known
+    with pytest.raises(units.UnitError, match="expected a length"):
+        units.parse_quantity("3 s", "length")
+    for call in (units.si_unit, lambda d: units.parse_quantity("3 m", d)):
+        with pytest.raises(units.UnknownDimension, match="lenght"):
+            call("lenght")
+    assert units.si_unit("angular velocity") == "rad/s" and units.si_unit(None) == ""
+
+
+#: the hand lists the capability flags replaced (dyncli/run.py, tests/speed/test_imports.py), as they were
+FORMER_HAND_LISTS = {
+    "symbolic": ("kinematics", "rotating-frame", "scene", "top"),
+    "numpy_free": ("angular-velocity", "bearing-forces", "contact", "euler", "gyroscope", "impact", "inertia",
+                   "motor-bodies", "particles", "planar-moments", "precession", "rigid-energy", "rigid-impulse",
+                   "rigid-velocity", "rotating-frame", "screw", "spin-change", "top", "vibration"),
+}
+
+
+@pytest.mark.parametrize("capability", sorted(FORMER_HAND_LISTS))
+def test_derived_lists_equal_the_former_hand_lists(capability):
+    assert sorted(registry.having(capability)) == sorted(FORMER_HAND_LISTS[capability])
+
+
+def test_an_unknown_capability_is_an_error():
+    with pytest.raises(ValueError, match="unknown capability 'numpyfree'"):
+        registry.having("numpyfree")

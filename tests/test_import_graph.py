@@ -135,26 +135,11 @@ def test_a_circle_is_found():
     assert cycles(g) == [["a", "b", "c", "a"]]
 
 
-#: circles still to break, each owned by the work on its package (issue #26 items 1 and 3: one runner
-#: contract; a core of plain numbers): a topic's route module calls back into its solver, and the ODE
-#: driver and the runner import each other.  The list only shrinks: the test fails on a circle not
-#: listed here and on a listed one that is gone.
-KNOWN = {frozenset(c) for c in (
-    ("dyncli.ode", "dyncli.runner"),
-    ("dyncli.topics.constrained_particle.find", "dyncli.topics.constrained_particle.solver"),
-    ("dyncli.topics.force_field.coordinates", "dyncli.topics.force_field.solver"),
-    ("dyncli.topics.kinematics.instant", "dyncli.topics.kinematics.solver"),
-    ("dyncli.topics.particle.orbit", "dyncli.topics.particle.solver"),
-    ("dyncli.topics.rectilinear.case2", "dyncli.topics.rectilinear.solver"),
-)}
-
-
 def test_no_import_circle_in_dyncli():
+    """None at all: what two modules share lives in a module below both (a route's report, the
+    method map of dyncli.integrators), never in a solver its routes call back into."""
     found = cycles(import_graph())
-    new = [c for c in found if frozenset(c) not in KNOWN]
-    assert not new, "import circles in dyncli/:\n" + "\n".join(" -> ".join(c) for c in new)
-    gone = KNOWN - {frozenset(c) for c in found}
-    assert not gone, f"circles broken: remove them from KNOWN: {sorted(sorted(c) for c in gone)}"
+    assert not found, "import circles in dyncli/:\n" + "\n".join(" -> ".join(c) for c in found)
 
 
 def test_no_import_circle_in_check_render_or_run():

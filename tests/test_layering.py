@@ -20,7 +20,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 #: the numeric core: the equations modules plus the neutral helpers and the topics' pure numeric modules
 CORE = ["dyncli.numfmt", "dyncli.vec3", "dyncli.exact", "dyncli.errors", "dyncli.result", "dyncli.direction",
-        "dyncli.ode", "dyncli.runner", "dyncli.rootfind", "dyncli.quadrature", "dyncli.elliptic", "dyncli.backends", "dyncli.expr.jet", "dyncli.expr.floatmath",
+        "dyncli.ode", "dyncli.integrators", "dyncli.runner", "dyncli.rootfind", "dyncli.quadrature", "dyncli.elliptic", "dyncli.backends", "dyncli.expr.jet", "dyncli.expr.floatmath",
         "dyncli.expr.derivative",
         "dyncli.topics.vibration.closed_form", "dyncli.topics.vibration.backends", "dyncli.topics.euler.free",
         "dyncli.topics.inertia.rotations", "dyncli.topics.inertia.eigen3", "dyncli.topics.inertia.mat3",

@@ -63,9 +63,22 @@ def test_union_is_discriminated():
 
 def test_numeric_cores_do_not_import_pydantic():
     for info in registry.TYPES.values():
-        mod = info.solver.split(":")[0]
+        mod = info.ref(info.solve).split(":")[0]
         path = ROOT / (mod.replace(".", "/") + ".py")
         import re
 
         text = path.read_text()
         assert not re.search(r"^\s*(import pydantic|from pydantic)", text, re.M), f"{path} imports pydantic"
+
+
+def test_capability_flags_match_what_each_type_does():
+    """``plots``: the topic package has a plots module; ``exact``: the model accepts
+    ``accuracy.method: exact``.  (``symbolic`` and ``numpy_free`` are checked by running the
+    examples: tests/api/test_output.py, tests/speed/test_imports.py.)"""
+    import importlib.util
+
+    for name, info in registry.TYPES.items():
+        has_module = importlib.util.find_spec(info.package + ".plots") is not None
+        assert (info.plots is not None) == has_module, f"{name}: plots={info.plots!r} but plots module: {has_module}"
+        methods = registry.model_class(name).accuracy_methods
+        assert info.exact == ("exact" in methods), f"{name}: exact={info.exact} but accuracy methods {methods}"

@@ -152,7 +152,7 @@ def _print_header(console, lp, result: Result) -> None:
     from dyncli.render.plain import print_text
 
     info = registry.TYPES.get(lp.type)
-    section = f" ({info.section})" if info else ""
+    section = f" ({info.sections})" if info else ""
     head = Text()
     head.append(printable(lp.title), style="bold")
     head.append(f"  ·  {lp.type}{section}", style="dim")

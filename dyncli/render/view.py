@@ -42,7 +42,7 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
     from dyncli import registry
 
     info = registry.TYPES.get(lp.type)
-    kind = f"{lp.type} ({info.section})" if info else str(lp.type)
+    kind = f"{lp.type} ({info.sections})" if info else str(lp.type)
     meta = meta_parts(result)
     values, unit_names = display_units(result, units)
     values = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in values.items()}

@@ -153,3 +153,12 @@ def test_readme_says_how_to_put_dyncli_on_path():
     module, func = scripts["dyncli"].split(":")
     assert callable(getattr(importlib.import_module(module), func))
     assert re.search(r"\.venv/bin/dyncli solve", readme)   # the Quick start runs it from the venv
+
+
+def test_plots_page_lists_exactly_the_types_that_draw_plots():
+    """docs/plots.md's "Plots per type" table has one row per type declared with ``plots``
+    (dyncli/declare.py), and none for a type without."""
+    text = (DOCS / "plots.md").read_text(encoding="utf-8")
+    table = text.split("## Plots per type", 1)[1].split("\n\n", 2)[1]
+    listed = re.findall(r"^\| `([\w-]+)` \|", table, re.M)
+    assert sorted(listed) == sorted(registry.having("plots"))

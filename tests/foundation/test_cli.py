@@ -96,7 +96,7 @@ def test_types_lists_every_type_with_section():
     rc, out, err = run_cli("types")
     assert rc == 0
     for name, info in registry.TYPES.items():
-        assert name in out and info.section in out
+        assert name in out and info.sections in out
 
 
 def test_schema_all_and_one():

@@ -96,7 +96,7 @@ def test_plots_do_not_solve_again(rel, monkeypatch):
     lp = solved[0][0]
     from dyncli import registry
 
-    mod = importlib.import_module(registry.TYPES[lp.type].topic + ".solver")
+    mod = importlib.import_module(registry.TYPES[lp.type].package + ".solver")
 
     def boom(*a, **k):
         raise AssertionError("a plot solved the problem again")

@@ -98,7 +98,10 @@ def test_closed_forms_import_neither_scipy_nor_sympy(tmp_path):
     recs = _solve_each(files)
     closed = [r["file"] for r in recs
               if r["methods"] and all(m in FORMULA_ROUTES for _, m in r["methods"])]
-    assert {"top", "gyroscope"} <= {t for r in recs if r["file"] in closed for t, _ in r["methods"]}
+    from dyncli import registry
+
+    # every type with an exact route has an example solved by it here (particle: the Kepler orbit)
+    assert set(registry.having("exact")) <= {t for r in recs if r["file"] in closed for t, m in r["methods"] if m == "exact"}
     assert closed, "no closed-form example found"
     # second interpreter: only the closed-form files, so nothing else imported scipy first
     bad = []
@@ -112,10 +115,13 @@ def test_closed_forms_import_neither_scipy_nor_sympy(tmp_path):
 
 
 #: closed-form (or exact) types whose example problems are solved in plain floats (dyncli.vec3,
-#: dyncli.direction, dyncli.elliptic's float paths): solving them never imports numpy (issue 19, cold start)
-NUMPY_FREE = ("angular-velocity", "bearing-forces", "contact", "euler", "gyroscope", "impact", "inertia", "motor-bodies",
-              "particles", "planar-moments", "precession", "rigid-energy", "rigid-impulse", "rigid-velocity",
-              "rotating-frame", "screw", "spin-change", "top", "vibration")
+#: dyncli.direction, dyncli.elliptic's float paths): solving them never imports numpy (issue 19, cold start).
+#: Declared by the flag ``numpy_free`` of each type (dyncli/declare.py).
+def numpy_free() -> tuple[str, ...]:
+    from dyncli import registry
+
+    return registry.having("numpy_free")
+
 
 _SOLVE_NUMPY_FREE = """
 import json, sys
@@ -132,12 +138,12 @@ for f in sys.argv[1:]:
 
 
 def test_numpy_free_closed_forms_import_no_numpy():
-    """Every example of a NUMPY_FREE type, solved in one fresh interpreter, leaves numpy unimported
+    """Every example of a numpy_free type, solved in one fresh interpreter, leaves numpy unimported
     (the first file that imports it is named)."""
     from dyncli import registry
 
-    files = [registry.TYPES[t].example for t in NUMPY_FREE]
-    assert all(files), "every NUMPY_FREE type declares an example"
+    files = [registry.TYPES[t].example for t in numpy_free()]
+    assert all(files), "every numpy_free type declares an example"
     code = "import sys\nsys.argv = ['x'] + " + repr(files) + "\n" + _SOLVE_NUMPY_FREE
     recs = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
     assert recs and all(m in FORMULA_ROUTES for r in recs for _, m in r["methods"]), recs

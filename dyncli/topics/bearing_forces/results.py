@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 BEARING_FORCES = TypeSpec(
     name="bearing-forces",
+    numpy_free=True,
     title="bearing force and moment of spinning arms with a prescribed motion",
     sections="§36",
     model="model:BearingForces",

@@ -27,7 +27,7 @@ def _entries(r: dict, n: int, keys) -> list[dict]:
 def quadrature_states(p, model):
     """states(ts) on the energy-quadrature route (the same legs and nodes as its answers)."""
     from . import quadrature
-    from .solver import assemble
+    from .report import assemble
 
     E = quadrature.Energy(p, model)
 
@@ -62,7 +62,7 @@ def quadrature_states(p, model):
 
 def ode_states(p, model, phases):
     from . import dynamics
-    from .solver import assemble
+    from .report import assemble
 
     def states(ts):
         ts = [float(t) for t in ts]

@@ -28,6 +28,7 @@ from dyncli.quadrature import gauss_kronrod
 from dyncli.result import Result, Series
 from dyncli.rootfind import brent
 
+from .report import SERIES, assemble, equation_numbers
 from .turning import Energy, Skip
 
 RTOL = 1e-13            # above Gauss–Kronrod's rounding floor (50 ε ∫|f|)
@@ -219,8 +220,6 @@ def motion(E, times):
 
 
 def solve(p, model, times, fallback=True) -> Result | None:
-    from .solver import SERIES, _equations, assemble
-
     try:
         E = Energy(p, model)
         q, qd, period, turns, dt = motion(E, times)
@@ -232,7 +231,7 @@ def solve(p, model, times, fallback=True) -> Result | None:
     Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
     Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
     out = assemble(p, model, times, Y, [("slide", 1.0)] * n)
-    res = Result(out["results"], method="quadrature", equations=_equations(model) + ["19.4", "20.1"],
+    res = Result(out["results"], method="quadrature", equations=equation_numbers(model) + ["19.4", "20.1"],
                  series=[Series("t", times, SERIES + ["distance"])])
     r = res.results
     x0 = model.curve.state(0.0, p.q0, p.q_dot0, 0.0)

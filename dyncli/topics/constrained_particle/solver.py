@@ -26,12 +26,7 @@ from dyncli.result import Result, Series, SolveOptions
 
 from . import dynamics, equilibria
 from .curve import Curve
-
-SERIES = ["q", "q_dot", "s", "s_dot", "x", "v", "a", "N", "N_vec", "friction", "kappa", "T", "V", "E", "W_nc", "W_N"]
-
-
-def _vec(a) -> list[float]:
-    return [float(c) + 0.0 for c in np.asarray(a, float)]
+from .report import SERIES, assemble, equation_numbers
 
 
 def _check_curve(p, curve: Curve) -> None:
@@ -55,15 +50,6 @@ def quadrature_applies(p, curve) -> bool:
         return False          # a one-sided spring's kink in the force: the ODE route, stepped across it
     return not any(f.kind == "custom" and (set(v for e in f.F for v in e.variables) - {"x1", "x2", "x3"})
                    for f in p.forces)
-
-
-def arc_length(curve, q0, qs):
-    from dyncli.quadrature import quad
-
-    def sp(q):
-        return float(np.linalg.norm(curve.dy(q)[:, 0]))
-
-    return [quad(sp, q0, q, limit=200, epsabs=0, epsrel=1e-13)[0] + 0.0 if q != q0 else 0.0 for q in qs]
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
@@ -117,7 +103,7 @@ def _solve_ode(p, model, times) -> Result:
     modes = [dynamics.phase_at(phases, t).mode for t in times]
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
-    res = Result(out["results"], method=f"ode:{method}", equations=_equations(model),
+    res = Result(out["results"], method=f"ode:{method}", equations=equation_numbers(model),
                  series=[Series("t", times, SERIES + ["distance"])])
     res.results["energy_residual"] = resid
     res.extra["nsteps"] = nsteps
@@ -137,39 +123,6 @@ def _solve_ode(p, model, times) -> Result:
                           rerun=lambda r2, a2: dynamics.integrate(model, r2, a2, method, p.accuracy.max_steps)[0],
                           difference=difference, drifts=(drift,), steps=nsteps)
     return res
-
-
-def assemble(p, model, times, Y, modes) -> dict:
-    """The reported results at the states Y (5, n) (one mode per state)."""
-    n = Y.shape[1]
-    cols = []
-    for j in range(n):
-        cols.append(model.evaluate(times[j], Y[:, j:j + 1], modes[j]))
-    cat = {k: np.concatenate([c[k] for c in cols], axis=-1) for k in ("x", "v", "a", "N", "ft", "et", "speed", "Q")}
-    Q = np.concatenate([c["Q"] for c in cols], axis=0)
-    # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
-    et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
-    N = cat["N"]
-    m = model.m
-    T = 0.5 * m * np.sum(cat["v"] ** 2, axis=0)
-    V = model.potential(cat["x"])
-    qd = np.array([0.0 if md[0] == "stick" else Y[1, j] for j, md in enumerate(modes)])
-    r = {
-        "q": [float(v) + 0.0 for v in Y[0]],
-        "q_dot": [float(v) + 0.0 for v in qd],
-        "s": arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]]),
-        "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
-        "x": [_vec(cat["x"][:, j]) for j in range(n)],
-        "v": [_vec(cat["v"][:, j]) for j in range(n)],
-        "a": [_vec(cat["a"][:, j]) for j in range(n)],
-        "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],
-        "N_vec": [_vec(N[:, j] + cat["ft"][j] * cat["et"][:, j]) for j in range(n)],
-        "friction": [float(v) + 0.0 for v in cat["ft"]],
-        "kappa": [float(v) for v in kappa],
-        "T": [float(v) for v in T], "V": [float(v) + 0.0 for v in V], "E": [float(v) + 0.0 for v in T + V],
-        "W_nc": [float(v) + 0.0 for v in Y[3]], "W_N": [float(v) + 0.0 for v in Y[4]],
-    }
-    return {"results": r}
 
 
 def _residual(p, model, phases, out):
@@ -204,11 +157,3 @@ def _friction_notes(res, model, notes, phases) -> None:
             t_rest = None
             res.warn(f"friction: the particle breaks free at t = {t:.6g} s")
     res.results["t_rest"] = t_rest
-
-
-def _equations(model) -> list[str]:
-    eq = ["16.7", "11.11", "18.4", "18.6"]
-    if model.mu:
-        eq.append("19.27")
-    eq += ["20.3", "20.4", "20.5"]
-    return eq

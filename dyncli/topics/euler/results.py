@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 EULER = TypeSpec(
     name="euler",
+    plots="plots:plots", numpy_free=True,
     title="Euler's equations, the torque-free body",
     sections="§39",
     model="model:Euler",

@@ -250,7 +250,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 
     from dyncli import symbolic
 
-    from .solver import SYMBOLIC_SECONDS
+    from .symbolic_field import SYMBOLIC_SECONDS
 
     symbolic.warm()                  # the limit measures sympy's work, not its first import
     try:
@@ -285,7 +285,7 @@ def _symbolic(p):
             res.warn(f"the curl vanishes, but V = {_display(V, fld.decimals)} changes by going once around the axis "
                      "(θ → θ + 2π): no single-valued potential exists, the field is not conservative (19.6)")
             V = None
-    from .solver import report_verdict
+    from .symbolic_field import report_verdict
 
     report_verdict(res, cons, how, V, fld.decimals, curl_zero)
     return fld, res, V, cons

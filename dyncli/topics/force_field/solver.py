@@ -32,12 +32,11 @@ from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.force_field.checks import N_RANDOM, _random_points, box_of, numeric_verdict, real_somewhere, single_valued
 from dyncli.topics.force_field.path import path_work
-from dyncli.topics.force_field.symbolic_field import Field, _display, conservative_verdict, numeric_potential, potential
+from dyncli.topics.force_field.symbolic_field import (SYMBOLIC_SECONDS, Field, _display, conservative_verdict, numeric_potential,
+                                                      potential, report_verdict)
 
 if TYPE_CHECKING:
     from dyncli.topics.force_field.polynomial_field import PolynomialField
-
-SYMBOLIC_SECONDS = 1.0  # CPU for the exact derivatives, and again for the verdict and potential (dyncli.cputime)
 
 
 def _field(F) -> Field:
@@ -153,16 +152,3 @@ def _work(res: Result, p, fld: Field | PolynomialField, cons: bool, Vnum) -> Non
             res.results["work_check"] = None
             if cons:
                 res.warn("no potential to cross-check the work: work_check is null")
-
-
-def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_zero: bool | None = None) -> None:
-    """``conservative``, ``conservative_method`` and ``potential`` (V a sympy object, or already its
-    formula text); (19.7), (19.8) when the curl
-    vanishes (``curl_zero``, default ``cons``: a zero curl with a multi-valued V is not conservative)."""
-    if cons if curl_zero is None else curl_zero:
-        res.equations += ["19.7", "19.8"]
-    else:
-        res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
-    res.results["conservative"] = bool(cons)
-    res.results["conservative_method"] = how
-    res.results["potential"] = V if V is None or isinstance(V, str) else _display(V, decimals)

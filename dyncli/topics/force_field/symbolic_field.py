@@ -3,7 +3,8 @@
 * curl F (19.9) from exact derivatives: the field's expressions are turned
   into sympy objects node by node (``dyncli.symbolic``), differentiated, and
   converted back to dyncli expressions for evaluation at the points;
-* the conservative verdict: every curl component simplified to 0 (symbolic
+* the conservative verdict (and its report, :func:`report_verdict`, for Cartesian and curvilinear
+  fields alike, within :data:`SYMBOLIC_SECONDS` of CPU): every curl component simplified to 0 (symbolic
   proof) — if sympy cannot decide, the numeric check at random points
   (:mod:`dyncli.topics.force_field.checks`);
 * the potential V with F = -grad V (19.7) and V(0) = 0, integrated
@@ -22,6 +23,7 @@ from dyncli.topics.force_field.checks import N_RANDOM, _random_points, numeric_v
 
 VARS = ("x1", "x2", "x3")
 MAX_OPS = 400          # above this size, skip sympy's simplify (numeric check instead)
+SYMBOLIC_SECONDS = 1.0  # CPU for the exact derivatives, and again for the verdict and potential (dyncli.cputime)
 
 
 def _rationalize(obj):
@@ -233,3 +235,16 @@ def pin_at_origin(V, symbols, res, what: str = "V"):
     else:
         V = V - V0
     return _simplify(V)
+
+
+def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_zero: bool | None = None) -> None:
+    """``conservative``, ``conservative_method`` and ``potential`` (V a sympy object, or already its
+    formula text); (19.7), (19.8) when the curl
+    vanishes (``curl_zero``, default ``cons``: a zero curl with a multi-valued V is not conservative)."""
+    if cons if curl_zero is None else curl_zero:
+        res.equations += ["19.7", "19.8"]
+    else:
+        res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
+    res.results["conservative"] = bool(cons)
+    res.results["conservative_method"] = how
+    res.results["potential"] = V if V is None or isinstance(V, str) else _display(V, decimals)

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 GYROSCOPE = TypeSpec(
     name="gyroscope",
+    plots="plots:plots", numpy_free=True, exact=True,
     title="the gyroscope of §37: θ(t) and moments",
     sections="§37",
     model="model:Gyroscope",

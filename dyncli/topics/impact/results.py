@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 IMPACT = TypeSpec(
     name="impact",
+    plots="plots:plots", numpy_free=True,
     title="impact of two particles, smooth or with friction",
     sections="§28, §23",
     model="model:Impact",

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 INERTIA = TypeSpec(
     name="inertia",
+    numpy_free=True,
     title="inertia tensors, composite bodies, principal axes",
     sections="§30, §31, §35",
     model="model:Inertia",

@@ -3,7 +3,7 @@ the coordinates and their first and second rates (polar, cylindrical, spherical)
 its rate and the radius of curvature on the path (§5).
 
 The coordinate systems go through the same rotating-basis route as functions of t
-(:func:`dyncli.topics.kinematics.solver.motion_of_jets`: v = δx/δt + ω×x, a = δv/δt + ω×v, 11.4),
+(:func:`dyncli.topics.kinematics.motion.motion_of_jets`: v = δx/δt + ω×x, a = δv/δt + ω×v, 11.4),
 with (q, q̇, q̈) given instead of differentiated; every result is a single value instead of a list.
 On the path (5.14b): v = ṡ e_t, a = s̈ e_t + (ṡ²/ρ) e_n, components on (e_t, e_n, e_b).
 """
@@ -45,15 +45,15 @@ def solve(p, options: SolveOptions) -> Result:
 
 
 def _coordinates(p) -> Result:
-    from dyncli.topics.kinematics import solver
+    from dyncli.topics.kinematics import motion
 
     coords = p.coordinates
     J = {n: tuple(np.array([x], dtype=float) for x in q) for n, q in p.instant.jets(coords).items()}
     with np.errstate(all="ignore"):
-        rows = solver.motion_of_jets(coords, J, (1,))
-    out, rest, straight, undefined = solver._per_time(rows, [0.0])
+        rows = motion.motion_of_jets(coords, J, (1,))
+    out, rest, straight, undefined = motion.per_time(rows, [0.0])
     res = Result({k: v[0] for k, v in out.items()}, method="closed-form",
-                 equations=list(solver.EQUATIONS[coords]) + ["5.3", "5.5", "5.14b"])
+                 equations=list(motion.EQUATIONS[coords]) + ["5.3", "5.5", "5.14b"])
     if undefined:
         res.warn("the state is not finite at the instant (numbers beyond the floating-point range): "
                  "those entries are null")
@@ -61,11 +61,11 @@ def _coordinates(p) -> Result:
         res.warn("the point is at rest at the instant: the tangent e_t is undefined, so "
                  "e_t, e_n, a_t, a_n and rho are null")
     if straight:
-        res.warn(f"zero curvature at the instant (|v×a| <= {solver.STRAIGHT_TOL:g}·|v||a|: the "
+        res.warn(f"zero curvature at the instant (|v×a| <= {motion.STRAIGHT_TOL:g}·|v||a|: the "
                  "acceleration is along the velocity): rho and e_n are null and a_n = 0")
     _force(p, res, cartesian=True)
-    table = [(lab, [[float(rows[key][k][0]) for k in range(3)]]) for lab, key in solver.ROW_LABELS]
-    res.views = [*frame.numeric_tables(f"{coords} basis", [WHEN], table, solver.BASIS_LABELS[coords])]
+    table = [(lab, [[float(rows[key][k][0]) for k in range(3)]]) for lab, key in motion.ROW_LABELS]
+    res.views = [*frame.numeric_tables(f"{coords} basis", [WHEN], table, motion.BASIS_LABELS[coords])]
     return res
 
 

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 KINEMATICS = TypeSpec(
     name="kinematics",
+    symbolic=True,
     title="path, tangential-normal and curvilinear coordinates",
     sections="§4, §5, §7, §8, §12",
     model="model:Kinematics",

@@ -26,7 +26,7 @@ def breaks(traj) -> list[float]:
 
 def report(p, res, at_times, traj_of, pieces=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers.  ``at_times(ts)``: the
-    reported quantities at many times as arrays (solver._at_times on the dense trajectory);
+    reported quantities at many times as arrays (report.at_times on the dense trajectory);
     ``traj_of()``: the dense trajectory; ``pieces``: the breaks when they are not its steps (the
     exact orbit: equal steps of the eccentric anomaly)."""
     B = pieces if pieces is not None else breaks(traj_of())

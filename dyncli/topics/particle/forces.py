@@ -17,7 +17,7 @@ from dyncli.errors import InputError
 from dyncli.topics.particle import equations as eq
 
 
-class _NonFinite(Exception):
+class NonFiniteForce(Exception):
     """Raised by the right-hand side when the force is inf or NaN."""
 
     def __init__(self, t: float, x):
@@ -109,7 +109,7 @@ class Forces:
         as a tuple of 7 floats, in plain float arithmetic (the integrator calls it for one state at a
         time; the same forces as conservative() + nonconservative(), with
         the friction continuation -mu N sign(v.d) v/|v| of the phase).
-        A non-finite force raises _NonFinite at once."""
+        A non-finite force raises NonFiniteForce at once."""
         m, muN, weight = self.m, self.muN, self.weight
         u1, u2, u3 = self.uniform.tolist()
         c_lin, c_quad = self.c_lin, self.c_quad
@@ -146,7 +146,7 @@ class Forces:
                 R2 = r1 * r1 + r2 * r2 + r3 * r3
                 den = R2 * sqrt(R2)
                 if den == 0.0:
-                    raise _NonFinite(t, (x1, x2, x3))
+                    raise NonFiniteForce(t, (x1, x2, x3))
                 k = mu / den
                 g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
             for a1, a2, a3, ks, L, side in springs:
@@ -159,14 +159,14 @@ class Forces:
                     if side * (R - L) < 0.0:       # a one-sided spring that is slack
                         continue
                     if R == 0.0:
-                        raise _NonFinite(t, (x1, x2, x3))
+                        raise NonFiniteForce(t, (x1, x2, x3))
                     k = ks * (R - L) / R
                     g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
             a1, a2, a3 = (f1 + g1) / m, (f2 + g2) / m, (f3 + g3) / m
             w = f1 * v1 + f2 * v2 + f3 * v3
             if not isfinite(a1 + a2 + a3 + w) and not (isfinite(a1) and isfinite(a2) and isfinite(a3)
                                                      and isfinite(w)):
-                raise _NonFinite(t, (x1, x2, x3))
+                raise NonFiniteForce(t, (x1, x2, x3))
             return v1, v2, v3, a1, a2, a3, w         # a tuple: scipy makes it an array once
 
         return rhs

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from dyncli import ode
-from dyncli.topics.particle.forces import Forces, _NonFinite
+from dyncli.topics.particle.forces import Forces, NonFiniteForce
 
 
 def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
@@ -25,7 +25,7 @@ def _stiffness(rhs, t: float, y) -> tuple[float, bool]:
         if not np.all(np.isfinite(J)):
             return 0.0, False
         lam = np.linalg.eigvals(J)
-    except (_NonFinite, ArithmeticError, ValueError, np.linalg.LinAlgError):
+    except (NonFiniteForce, ArithmeticError, ValueError, np.linalg.LinAlgError):
         return 0.0, False
     k = int(np.argmax(np.abs(lam)))
     big = lam[k]

@@ -114,16 +114,16 @@ def _radial(p, orb: Orbit, res_warn) -> None:
 def solve_exact(p, F, orb: Orbit) -> Result:
     """The Kepler route's Result: the reported quantities at ``at`` from the conic, ``orbit``,
     the collision and surface warnings, a round-off error estimate."""
-    from . import solver as sv
+    from . import report
 
     c = np.asarray(next(iter(p.forces)).center, float)
     times = [float(t) for t in p.at]
     traj = _trajectory(orb, c, F, float(p.t_end), times)
-    S = sv._at_times(traj, F, times, steps=True)
-    resid, scale = sv._energy_residual(p, F, S)
-    res = Result(sv._reported(S, resid), method="exact", equations=_equations(),
-                 series=[Series("t", times, list(sv.REPORTED) + ["distance"])])
-    sv._report_terms(res, p, F, traj, S)
+    S = report.at_times(traj, F, times, steps=True)
+    resid, scale = report.energy_residual(p, F, S)
+    res = Result(report.reported(S, resid), method="exact", equations=_equations(),
+                 series=[Series("t", times, list(report.REPORTED) + ["distance"])])
+    report.report_terms(res, p, F, traj, S)
     res.results["orbit"] = orbit_results(orb)
     _warn_surface(res, p, orb)
     t_max = max(times) if times else 0.0
@@ -131,7 +131,7 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     res.extra["error_estimate_note"] = NOTE
     res.extra["energy_scale"] = scale
     res.extra["nfev"] = 0
-    res.extra["sample"] = lambda ts: sv._at_times(traj, F, ts)
+    res.extra["sample"] = lambda ts: report.at_times(traj, F, ts)
     res.extra["state"] = lambda t: state_at(traj, F, t)
     res.extra["orbit"] = orb
     res.extra["trajectory"] = traj
@@ -173,10 +173,10 @@ def breaks(orb: Orbit, t_end: float) -> list[float]:
 
 def state_at(traj, F, t: float) -> dict:
     """The reported results at one time t (single values): x, v, a, T, V, E, W_nc, H_O."""
-    from . import solver as sv
+    from . import report
 
-    S = sv._at_times(traj, F, [float(t)])
-    return {k: (S[k][:, 0].tolist() if S[k].ndim == 2 else float(S[k][0])) for k in sv.REPORTED}
+    S = report.at_times(traj, F, [float(t)])
+    return {k: (S[k][:, 0].tolist() if S[k].ndim == 2 else float(S[k][0])) for k in report.REPORTED}
 
 
 def _trajectory(orb: Orbit, c, F, t_end: float, times) -> Trajectory:

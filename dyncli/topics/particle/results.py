@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 PARTICLE = TypeSpec(
     name="particle",
+    plots="plots:plots", exact=True,
     title="a particle under forces: motion, work and energy",
     sections="§16, §18-§22",
     model="model:Particle",

@@ -27,7 +27,8 @@ from dyncli import motion_find
 from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
-from dyncli.topics.particle.forces import Forces, _NonFinite
+from dyncli.topics.particle.forces import Forces
+from dyncli.topics.particle.report import REPORTED, at_times, energy_residual, report_terms, reported
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
 def _ode_method(p) -> str:
@@ -58,11 +59,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     orb = orbit.conic(p)
     if orb is not None and not orb.radial:
         res.results["orbit"] = orbit.orbit_results(orb)
-    S = _at_times(traj, F, times, steps=True)
-    resid, scale = _energy_residual(p, F, S)
-    res.results.update(_reported(S, resid))
+    S = at_times(traj, F, times, steps=True)
+    resid, scale = energy_residual(p, F, S)
+    res.results.update(reported(S, resid))
     res.series.append(Series("t", times, list(REPORTED) + ["distance"]))
-    _report_terms(res, p, F, traj, S)
+    report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev
     res.extra["sample"] = sampler = _Sampler(p, F, traj, method, times)     # the dense output, for plots
     find.report(p, res, lambda ts: sampler(ts), sampler.dense)
@@ -108,30 +109,13 @@ def _to_promise(res, p, F, traj, method, rtol, atol, times, dense) -> Trajectory
                          dense=dense and ref is None, max_step=hmax)
 
     def difference(out, check):
-        S1, S2 = _at_times(out, F, times), _at_times(check, F, times)
+        S1, S2 = at_times(out, F, times), at_times(check, F, times)
         return ode.relative_difference([(S1[k], S2[k]) for k in REPORTED])
 
     out, _ = runner.solve_to_promise(res, run, difference, rtol, atol, out=traj)
     if res.error_estimate is not None and res.error_estimate > runner.PROMISE * rtol and orbit.kepler_field(p):
         res.warn("an inverse-square force alone is solved to rounding by the exact route (Kepler's "
                  "equation): leave accuracy.method at auto, or set it to exact")
-    return out
-
-
-#: the reported quantities at the requested times (each with its error in error_estimate)
-REPORTED = ("x", "v", "a", "T", "V", "E", "W_nc", "H_O")
-
-
-def _reported(S, resid) -> dict:
-    """The results at the requested times as lists (vectors as lists of 3, -0.0 as 0.0): one
-    array of every reported row, converted at once."""
-    rows = np.concatenate([S[k] if S[k].ndim == 2 else S[k][None] for k in REPORTED]) + 0.0
-    out, i = {}, 0
-    for k in REPORTED:
-        n = 3 if S[k].ndim == 2 else 1
-        out[k] = rows[i:i + 3].T.tolist() if n == 3 else rows[i].tolist()
-        i += n
-    out["energy_residual"] = resid
     return out
 
 
@@ -150,7 +134,7 @@ class _Sampler:
         return self.traj
 
     def __call__(self, ts) -> dict:
-        return _at_times(self.dense(), self.F, ts)
+        return at_times(self.dense(), self.F, ts)
 
     def state(self, t: float) -> dict:
         """The reported results at one time t (single values), from the dense output."""
@@ -193,19 +177,8 @@ def _check_estimate(res, p, F, traj, S, rtol, atol, method) -> None:
     check = ode.check_solve(res, run, rtol, atol)
     if check is None:
         return
-    S2 = _at_times(check[0], F, times)
+    S2 = at_times(check[0], F, times)
     res.error_estimate = ode.relative_difference([(S[k], S2[k]) for k in REPORTED])
-
-
-def _energy_residual(p, F, S):
-    """(max |E − E1 − W_nc| over every accepted step and the requested times (20.4), the energy
-    scale it is measured against: the largest |E1|, |T|, |V|, |W_nc| over them)."""
-    x0, v0 = np.asarray(p.x0, float), np.asarray(p.v0, float)
-    E1 = 0.5 * F.m * float(v0 @ v0) + float(F.potential(x0))
-    T, V, W = S["energies"]
-    if not T.size:
-        return 0.0, abs(E1)
-    return eq.energy_residual(T + V, E1, W), max(abs(E1), float(abs(np.concatenate(S["energies"])).max()))
 
 
 def _report_friction(res, F, traj) -> None:
@@ -244,43 +217,6 @@ def _report_inside_R0(res, F, traj) -> None:
                      f"(R_min = {Rmin:.6g} m): below the surface of the attracting body")
 
 
-def _at_times(traj: Trajectory, F: Forces, times, steps: bool = False) -> dict:
-    """The motion at every time of ``times`` at once, as arrays: x, v, a
-    (3 x N), T, V, E, W_nc (N), H_O (3 x N); with ``steps``, also T, V, W_nc over every accepted
-    step and the times (``energies``, for the energy residual).  Energies and angular momentum
-    on whole arrays; only a = f(t, y) is per time (the phase's own right-hand side, friction
-    continuation included)."""
-    times = [float(t) for t in times]
-    m = F.m
-    idx, Y = traj.state_array(times)
-    X, Vel = Y[0:3], Y[3:6]
-    rest = [isinstance(traj.phases[k], RestPhase) for k in idx.tolist()]
-    A = []
-    for t, y, k, r in zip(times, Y.T, idx.tolist(), rest):
-        try:
-            A.append(_ZERO3 if r else traj.phases[k].rhs(t, y)[3:6])
-        except _NonFinite as exc:
-            raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
-                                 f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m") from None
-    Z = np.concatenate([traj.steps()[1], Y], axis=1) if steps else Y
-    T = eq.kinetic_energy(m, Z[3:6])
-    V = F.potential(Z[0:3])
-    k = Z.shape[1] - len(times)
-    S = {"x": X, "v": Vel, "a": np.array(A, dtype=float).reshape(-1, 3).T, "T": T[k:], "V": V[k:],
-         "E": T[k:] + V[k:], "W_nc": Y[6], "H_O": eq.angular_momentum(m, X, Vel), "t": times, "Y": Y,
-         "rest": np.array(rest, dtype=bool)}
-    if steps:
-        S["energies"] = (T, V, Z[6])
-    return S
-
-
-_ZERO3 = (0.0, 0.0, 0.0)
-
-
-def _vec(a) -> list[float]:
-    return [float(c) + 0.0 for c in np.asarray(a, float)]
-
-
 def _equations(F: Forces) -> list[str]:
     eq = ["16.7", "18.6"]
     if F.weight:
@@ -295,12 +231,3 @@ def _equations(F: Forces) -> list[str]:
     return eq
 
 
-def _report_terms(res, p, F, traj, S) -> None:
-    """Power and work per force (work.py); the cylindrical basis (cylindrical.py)."""
-    from . import work
-
-    work.add(res, p, F, traj, S)
-    if getattr(p, "basis", "cartesian") == "cylindrical":
-        from . import cylindrical
-
-        cylindrical.add(res, p, traj, S, F.m)

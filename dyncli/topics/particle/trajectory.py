@@ -26,7 +26,7 @@ import numpy as np
 
 from dyncli import ode, runner
 from dyncli.errors import NumericalError
-from dyncli.topics.particle.forces import Forces, _NonFinite
+from dyncli.topics.particle.forces import Forces, NonFiniteForce
 from dyncli.topics.particle.hints import budget_message, singularity_hint
 
 EPS = np.finfo(float).eps
@@ -166,7 +166,7 @@ def _integrate(p, F, tol, method, max_steps, times, dense) -> Trajectory:
     run = _Run(F, (rtol, atol, max_step), method, budget, t_end, y, times, dense)
     try:
         run.phases_to_end()
-    except _NonFinite as exc:
+    except NonFiniteForce as exc:
         raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                              f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m" + singularity_hint(F, exc.x)) from None
     except ode.OverBudget as exc:
@@ -228,7 +228,7 @@ class _Run:
         Fo = F.other(t, y[0:3])
         nFo = float(np.linalg.norm(Fo))
         if not np.isfinite(nFo):
-            raise _NonFinite(t, y[0:3])
+            raise NonFiniteForce(t, y[0:3])
         # static condition |F_other| <= mu N, decided within the tolerance
         # (a marginal case would otherwise creep at roundoff level)
         if nFo <= F.muN * (1.0 + 10.0 * self.rtol):

@@ -193,7 +193,7 @@ def _quadrature_work(traj, terms, F, times):
 
 def add(res, p, F, traj, S) -> None:
     """Add ``force_terms``, ``power``, ``work`` and ``work_residual`` to res (``S``: the motion at
-    the requested times, solver._at_times)."""
+    the requested times, report.at_times)."""
     from dyncli.result import Series
 
     terms = [Term(f, p) for f in p.forces]

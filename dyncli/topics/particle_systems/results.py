@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 PARTICLES = TypeSpec(
     name="particles",
+    numpy_free=True,
     title="systems of particles: momentum, angular momentum, energy",
     sections="§24-§27",
     model="model:Particles",

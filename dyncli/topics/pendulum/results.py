@@ -4,6 +4,7 @@ from dyncli.declare import R, TypeSpec
 
 PENDULUM = TypeSpec(
     name="pendulum",
+    plots="plots:plots",
     title="simple pendulum at any amplitude: exact period, swing, rotation, separatrix",
     sections="§16, §20",
     model="model:Pendulum",

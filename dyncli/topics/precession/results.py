@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 PRECESSION = TypeSpec(
     name="precession",
+    numpy_free=True,
     title="steady precession of a top",
     sections="§38",
     model="model:Precession",

@@ -218,7 +218,7 @@ class States:
 
     def __init__(self, p, rtol: float, atol: float):
         from dyncli.result import Result
-        from dyncli.topics.rectilinear.solver import Answers
+        from dyncli.topics.rectilinear.answers import Answers
 
         self.p, self.rtol, self.atol = p, rtol, atol
         self.c = _Case2(p, Answers(p.model_copy(update={"find": []}), Result({})), rtol, atol)

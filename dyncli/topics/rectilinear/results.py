@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 RECTILINEAR = TypeSpec(
     name="rectilinear",
+    plots="plots:plots",
     title="straight-line motion, cases 1-4 (a const, a(t), a(v), a(s))",
     sections="§6",
     model="model:Rectilinear",

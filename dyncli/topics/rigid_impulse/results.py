@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 RIGID_IMPULSE = TypeSpec(
     name="rigid-impulse",
+    numpy_free=True,
     title="impulse on a rigid body, center of percussion",
     sections="§33",
     model="model:RigidImpulse",

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 RIGID_VELOCITY = TypeSpec(
     name="rigid-velocity",
+    numpy_free=True,
     title="velocity and acceleration of points of a rigid body",
     sections="§13",
     model="model:RigidVelocity",
@@ -26,6 +27,7 @@ RIGID_VELOCITY = TypeSpec(
 
 ANGULAR_VELOCITY = TypeSpec(
     name="angular-velocity",
+    numpy_free=True,
     title="angular velocity from the velocities of points",
     sections="§13",
     model="model:AngularVelocity",
@@ -47,6 +49,7 @@ ANGULAR_VELOCITY = TypeSpec(
 
 SCREW = TypeSpec(
     name="screw",
+    numpy_free=True,
     title="instantaneous screw axis of a rigid body",
     sections="§14",
     model="model:Screw",
@@ -70,6 +73,7 @@ SCREW = TypeSpec(
 
 CONTACT = TypeSpec(
     name="contact",
+    numpy_free=True,
     title="contact of two bodies: rolling, slipping, separating",
     sections="§15",
     model="model:Contact",

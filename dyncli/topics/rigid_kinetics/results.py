@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 PLANAR_MOMENTS = TypeSpec(
     name="planar-moments",
+    numpy_free=True,
     title="moments for planar motion of a rigid body",
     sections="§32",
     model="model:PlanarMoments",
@@ -30,6 +31,7 @@ PLANAR_MOMENTS = TypeSpec(
 
 RIGID_ENERGY = TypeSpec(
     name="rigid-energy",
+    numpy_free=True,
     title="kinetic energy and angular momentum of a rigid body",
     sections="§34",
     model="model:RigidEnergy",

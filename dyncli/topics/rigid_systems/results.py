@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 SPIN_CHANGE = TypeSpec(
     name="spin-change",
+    numpy_free=True,
     title="spin change of a body whose masses move (H conserved)",
     sections="§36",
     model="model:SpinChange",
@@ -30,6 +31,7 @@ SPIN_CHANGE = TypeSpec(
 
 MOTOR_BODIES = TypeSpec(
     name="motor-bodies",
+    numpy_free=True,
     title="motor-driven bodies (36.40)",
     sections="§36",
     model="model:MotorBodies",

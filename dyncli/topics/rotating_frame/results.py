@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 ROTATING_FRAME = TypeSpec(
     name="rotating-frame",
+    numpy_free=True, symbolic=True,
     title="general operator and the δ/δt table",
     sections="§10, §11",
     model="model:RotatingFrame",

@@ -15,6 +15,7 @@ import numpy as np
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
 
+from . import contacts
 from . import elements as el
 from .dynamics import Load, SceneSystem
 from .system import BodyData, Point, SurfaceData, perp
@@ -170,15 +171,16 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
-        elif kind == "contact":
+        elif kind in ("contact", "stop"):
             P = R.point(a[0], path + ".0")
             s = R.surface(a[1], path + ".1")
-            mu_s = j["mu"] if j["mu"] is not None else (j["mu_s"] or 0.0)
-            mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j["mu_k"] is not None else mu_s)
-            if j["mu_k"] is not None and j["mu_s"] is None:
+            mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+            mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+            if j.get("mu_k") is not None and j.get("mu_s") is None:
                 mu_s = mu_k
-            out.append(el.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k,
-                                  mode="slide" if (mu_s or mu_k) else "smooth", sign=0.0))
+            mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
+            out.append(contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
+                                  e=float(j.get("e") or 0.0), stop=kind == "stop"))
         elif kind == "rolls":
             b = R.body(a[0], path + ".0")
             _rigid(b, "rolling", path + ".0")
@@ -187,8 +189,9 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             s = R.surface(a[1], path + ".1")
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
-            out.append(el.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
-                                c0=c0, mu_s=j["mu_s"]))
+            out.append(contacts.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+                                c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
+                                      e=float(j.get("e") or 0.0)))
         elif kind == "drive":
             bname, _, coord = a.partition(".")
             b = R.body(bname, path)

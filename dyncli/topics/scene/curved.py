@@ -29,7 +29,7 @@ from dyncli.errors import InputError, NumericalError
 from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
 
-from .elements import Contact, Rolls
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 SEARCH = 4001                      # samples of q for a first foot without `at`
@@ -155,14 +155,24 @@ class CurveContact(Contact):
     def linear(self):
         return False
 
+    def gap(self, q) -> float:
+        return float(self.foot.at(self.P.pos(q))[4])
+
+    def normal(self, q) -> np.ndarray:
+        return self.foot.at(self.P.pos(q))[2]
+
     def phi(self, q, t):
-        return np.array([self.foot.at(self.P.pos(q))[4]])
+        return np.array([self.gap(q)])[:self.rows]
 
     def jac(self, q):
+        if not self.rows:                                   # released (a phase in flight): no row
+            return np.zeros((0, self.n))
         n = self.foot.at(self.P.pos(q))[2]
         return (n @ self.P.jac(q, self.n))[None, :]
 
     def gamma(self, q, v, t):
+        if not self.rows:
+            return np.zeros(0)
         _, tt, n, k, d, _ = self.foot.at(self.P.pos(q))
         vp = self.P.vel(q, v)
         return np.array([k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ self.P.bias(q, v))])
@@ -183,8 +193,10 @@ class CurveContact(Contact):
         return w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
 
     def watch(self, lam, q, v, t):
-        out = [("separates", float(lam[0]))]
         m = self.surface.ends_margin(self.foot.at(self.P.pos(q))[0])
+        if self.mode == "off":                              # in flight: it strikes the curve again
+            return [("impact", self.gap(q) if m is None or m >= 0 else abs(self.gap(q)) - m)]
+        out = [("separates", float(lam[0]))]
         if m is not None:
             out.append(("leaves", m))
         return out
@@ -197,6 +209,7 @@ class CurveRolls(Rolls):
     foot: _Foot = None
     q_ref: float = 0.0
     linear = False
+    first_event_ends = True          # slip and flight off a curve are not followed (the run stops there)
 
     def _centre(self, q):
         i = self.body_point.body.index

@@ -18,7 +18,8 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
-from .elements import Contact, Element
+from .contacts import Contact, Rolls
+from .elements import Element
 from .system import BodyData, Point
 
 EPS = float(np.finfo(float).eps)
@@ -152,7 +153,7 @@ class SceneSystem:
         A[:n, n:] = -J.T
         A[n:, :n] = J
         for i, e in enumerate(self.elements):
-            if isinstance(e, Contact):
+            if isinstance(e, (Contact, Rolls)):
                 col = e.friction_column(q)
                 if col is not None:
                     A[:n, n + self.offsets[i]] -= col
@@ -164,7 +165,7 @@ class SceneSystem:
                                  "free motion, or joints that lock each other)") from None
         a, lam = x[:n], x[n:]
         for i, e in enumerate(self.elements):
-            if isinstance(e, Contact) and e.mode == "slide" and e.mu_k:
+            if isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip") and e.mu_k:
                 power += e.friction(self.lam_of(lam, i)) * e.slip_speed(q, v)
         for i, e in enumerate(self.elements):
             if e.kind == "drive":

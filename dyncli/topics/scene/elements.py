@@ -49,6 +49,14 @@ class Element:
         """(what, g): the event ``what`` happens where g crosses zero from above."""
         return []
 
+    def phase(self):
+        """The element's state in the current phase (one-sided joints: made, released, sliding,
+        slack ...); None for a joint that never changes."""
+        return None
+
+    def set_phase(self, state) -> None:
+        pass
+
 
 def _two(P: Point, Q: Point, q, n):
     return P.jac(q, n) - Q.jac(q, n)
@@ -109,131 +117,6 @@ class Slider(Element):
         out = {"N": float(lam[0])}
         if self.theta0 is not None:
             out["M"] = [0.0, 0.0, float(lam[1])]
-        return out
-
-
-@dataclass
-class Contact(Element):
-    """P on the surface, pushing only; Coulomb friction with the computed N.  ``mode``:
-    "smooth" (no friction), "slide" (kinetic friction against ``sign``), "stick" (a second row
-    holds P's tangential position)."""
-
-    P: Point = None
-    surface: SurfaceData = None
-    mu_s: float = 0.0
-    mu_k: float = 0.0
-    mode: str = "smooth"
-    sign: float = 0.0               # direction of sliding along d̂ in mode "slide"
-    stick_at: float = 0.0           # d̂·r_P held in mode "stick"
-
-    @property
-    def rows(self):
-        return 2 if self.mode == "stick" else 1
-
-    @property
-    def linear(self):
-        return not self.P.turns_with_body
-
-    @property
-    def rough(self) -> bool:
-        return self.mu_s > 0 or self.mu_k > 0
-
-    def phi(self, q, t):
-        r = self.P.pos(q) - np.array(self.surface.origin)
-        out = [float(np.array(self.surface.n) @ r)]
-        if self.mode == "stick":
-            out.append(float(np.array(self.surface.d) @ self.P.pos(q)) - self.stick_at)
-        return np.array(out)
-
-    def jac(self, q):
-        JP = self.P.jac(q, self.n)
-        rows = [np.array(self.surface.n) @ JP]
-        if self.mode == "stick":
-            rows.append(np.array(self.surface.d) @ JP)
-        return np.array(rows)
-
-    def gamma(self, q, v, t):
-        b = self.P.bias(q, v)
-        out = [-float(np.array(self.surface.n) @ b)]
-        if self.mode == "stick":
-            out.append(-float(np.array(self.surface.d) @ b))
-        return np.array(out)
-
-    def friction_column(self, q):
-        """Generalized force per unit N of the kinetic friction −μ_k N sign d̂ at P."""
-        if self.mode != "slide" or self.mu_k == 0:
-            return None
-        return -self.mu_k * self.sign * (np.array(self.surface.d) @ self.P.jac(q, self.n))
-
-    def holds(self, N: float, F: float) -> bool:
-        """The static test |F| ≤ μ_s N; the boundary, within the rounding of the linear solve
-        that gave N and F (64 ε of the larger), holds: friction exactly at the limit sticks."""
-        return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
-
-    def slip_speed(self, q, v) -> float:
-        return float(np.array(self.surface.d) @ self.P.vel(q, v))
-
-    def friction(self, lam) -> float:
-        if self.mode == "stick":
-            return float(lam[1])
-        if self.mode == "slide":
-            return -self.mu_k * self.sign * float(lam[0])
-        return 0.0
-
-    def report(self, lam, q, v, t):
-        return {"N": float(lam[0]), "F": self.friction(lam)}
-
-    def watch(self, lam, q, v, t):
-        out = [("separates", float(lam[0]))]
-        m = self.surface.ends_margin(self.P.pos(q))
-        if m is not None:
-            out.append(("leaves", m))
-        if self.mode == "slide":
-            out.append(("sticks", self.sign * self.slip_speed(q, v)))
-        elif self.mode == "stick":
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
-        return out
-
-
-@dataclass
-class Rolls(Element):
-    """A disk or ring of radius R rolls on the surface without slipping (15.8):
-    n·(x − O) = R and d̂·x + R θ = const."""
-
-    body_point: Point = None
-    surface: SurfaceData = None
-    R: float = 0.0
-    c0: float = 0.0
-    mu_s: float | None = None
-    rows = 2
-
-    def phi(self, q, t):
-        i = self.body_point.body.index
-        x = np.array([q[i[0]], q[i[1]]])
-        nn, d = np.array(self.surface.n), np.array(self.surface.d)
-        return np.array([float(nn @ (x - np.array(self.surface.origin))) - self.R,
-                         float(d @ x) + self.R * float(q[i[2]]) - self.c0])
-
-    def jac(self, q):
-        i = self.body_point.body.index
-        J = np.zeros((2, self.n))
-        J[0, i[0]], J[0, i[1]] = self.surface.n
-        J[1, i[0]], J[1, i[1]] = self.surface.d
-        J[1, i[2]] = self.R
-        return J
-
-    def report(self, lam, q, v, t):
-        N, F = float(lam[0]), float(lam[1])
-        return {"N": N, "F": F, "slip_margin": None if self.mu_s is None else self.mu_s * N - abs(F)}
-
-    def watch(self, lam, q, v, t):
-        out = [("separates", float(lam[0]))]
-        i = self.body_point.body.index
-        m = self.surface.ends_margin((float(q[i[0]]), float(q[i[1]])))
-        if m is not None:
-            out.append(("leaves", m))
-        if self.mu_s is not None:
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out
 
 
@@ -342,36 +225,66 @@ class Segment:
 class Cord(Element):
     """A taut inextensible cord: one row per run between disk bodies (no slip on a disk: one
     tension per side), each the run's length Σ u·(X_b − X_a) = const; T = −λ ≥ 0 per run,
-    reported once per straight segment."""
+    reported once per straight segment.  A run that goes slack (``slack``) has no row until
+    its length is back to the cord's: then it is jerked taut (an impulse, motion.py)."""
 
     runs: list[list[Segment]] = field(default_factory=list)
     consts: list[float] = field(default_factory=list)
+    slack: frozenset = frozenset()
+
+    @property
+    def taut(self) -> list[int]:
+        return [r for r in range(len(self.runs)) if r not in self.slack]
 
     @property
     def rows(self):
-        return len(self.runs)
+        return len(self.runs) - len(self.slack)
 
     @property
     def linear(self):
         return not any(s.a.turns or s.b.turns for run in self.runs for s in run)
 
+    def phase(self):
+        return self.slack
+
+    def set_phase(self, state) -> None:
+        self.slack = state
+
     def lengths(self, q) -> np.ndarray:
         return np.array([sum(s.b.proj(s.u, q) - s.a.proj(s.u, q) for s in run) for run in self.runs])
 
     def phi(self, q, t):
-        return self.lengths(q) - np.array(self.consts)
+        return (self.lengths(q) - np.array(self.consts))[self.taut]
 
     def jac(self, q):
-        return np.array([sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in run) for run in self.runs])
+        J = np.array([sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in run) for run in self.runs])
+        return J[self.taut].reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
-        return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in run) for run in self.runs])
+        return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut])
+
+    def run_rate(self, q, v, r: int) -> float:
+        """d/dt of run r's length (its row's rate): negative while a slack run takes up slack."""
+        return float(sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in self.runs[r]) @ v)
+
+    def tensions(self, lam) -> list[float]:
+        """T per run: −λ of a taut run, 0 of a slack one."""
+        out, k = [], 0
+        for r in range(len(self.runs)):
+            if r in self.slack:
+                out.append(0.0)
+            else:
+                out.append(-float(lam[k]))
+                k += 1
+        return out
 
     def report(self, lam, q, v, t):
-        return {"T": [-float(lam[r]) for r, run in enumerate(self.runs) for _ in run]}
+        T = self.tensions(lam)
+        return {"T": [T[r] for r, run in enumerate(self.runs) for _ in run]}
 
     def watch(self, lam, q, v, t):
-        return [("slack", -float(lam[r])) for r in range(len(self.runs))]
+        T, gap = self.tensions(lam), np.array(self.consts) - self.lengths(q)
+        return [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
 
 
 @dataclass

@@ -158,7 +158,7 @@ class _OneOf(StrictModel):
 
 
 class Joint(_OneOf):
-    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive."""
+    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive, stop."""
 
     pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
@@ -167,6 +167,8 @@ class Joint(_OneOf):
     cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
+    stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e)")
+    e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
     value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
     mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None
     mu_s: Optional[Annotated[float, Num(ge=0, description="static friction coefficient")]] = None
@@ -175,20 +177,23 @@ class Joint(_OneOf):
     length: Optional[Annotated[float, Num(gt=0, dim="length", description="cord or link length [m]")]] = None
     angle: Optional[Annotated[float, Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")]] = None
 
-    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive")
+    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive", "stop")
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
-        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at"}, "rolls": {"at", "mu_s"},
-                   "cord": {"length"}, "link": {"length", "angle"}, "drive": {"value"}}[kind]
-        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle"):
+        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at", "e"},
+                   "rolls": {"at", "mu_s", "mu_k", "e"}, "cord": {"length"}, "link": {"length", "angle"},
+                   "drive": {"value"}, "stop": {"e", "mu"}}[kind]
+        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e"):
             if getattr(self, extra) is not None and extra not in allowed:
                 raise InputError(f"a {kind} joint takes no {extra}", _at(base, extra))
         if kind == "drive" and self.value is None:
             raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", _at(base, "value"))
+        if kind == "stop" and self.e is None:
+            raise InputError("a stop needs e, the coefficient of restitution (0 <= e <= 1), e.g. e: 0.8", _at(base, "e"))
         if kind == "contact" and self.mu is not None and (self.mu_s is not None or self.mu_k is not None):
             raise InputError("give mu, or mu_s and mu_k, not both", _at(base, "mu"))
-        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2}.get(kind)
+        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2, "stop": 2}.get(kind)
         if two and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
                              _at(base, kind))

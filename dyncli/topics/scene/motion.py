@@ -22,9 +22,10 @@ import numpy as np
 
 from dyncli import ode
 from dyncli import runner
+from dyncli.errors import NumericalError
 from dyncli.rootfind import brent
 
-from .elements import Contact
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
@@ -35,6 +36,9 @@ class Piece:
     t_b: float
     fn: object                     # t -> (q, v, W)
     modes: tuple
+    route: str = "ode"             # the route of its phase: how its forces and W_nc are read
+    along: tuple | None = None     # 1-DOF closed form: (N, i), the one direction of motion
+    fixed: tuple | None = None     # statics: the one solve (q̈ = 0, λ, power)
 
 
 @dataclass
@@ -52,11 +56,11 @@ class Trajectory:
     pieces: list[Piece] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     steps: int = 0
-    stopped: float | None = None    # the time of a stopping event
+    stopped: float | None = None    # where the motion stops (the cap on the phases reached)
     method: str = ""                # the route's method as reported (ode:DOP853, closed-form ...)
-    fixed: tuple | None = None      # statics: the one solve (q̈ = 0, λ, power) for every time
-    along: tuple | None = None      # closed form: (N, i), the one direction of motion
     energy: object = None           # quadrature: the EnergyMotion
+    phases: list = field(default_factory=list)    # phases.Phase, in order
+    impacts: list = field(default_factory=list)   # phases.Impact, in order
     _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
 
     def add(self, piece: Piece):
@@ -68,10 +72,13 @@ class Trajectory:
         return [self.pieces[0].t_a] + [p.t_b for p in self.pieces] if self.pieces else [self.t0]
 
 
-    def state(self, t: float):
+    def piece(self, t: float) -> Piece:
+        """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
         ends = [p.t_b for p in self.pieces]
-        i = min(bisect.bisect_left(ends, t), len(self.pieces) - 1)
-        p = self.pieces[i]
+        return self.pieces[min(bisect.bisect_left(ends, t), len(self.pieces) - 1)]
+
+    def state(self, t: float):
+        p = self.piece(t)
         set_modes(self.system, p.modes)
         memo = self._memo
         got = memo.get(t)
@@ -84,14 +91,14 @@ class Trajectory:
 
 
 def modes_of(system) -> tuple:
-    return tuple((e.mode, e.sign, e.stick_at) if isinstance(e, Contact) else None for e in system.elements)
+    return tuple(e.phase() for e in system.elements)
 
 
 def set_modes(system, modes) -> None:
     changed = False
     for e, m in zip(system.elements, modes):
-        if m is not None and (e.mode, e.sign, e.stick_at) != m:
-            e.mode, e.sign, e.stick_at = m
+        if m is not None and e.phase() != m:
+            e.set_phase(m)
             changed = True
     if changed:
         system.refresh()
@@ -108,13 +115,19 @@ def watches(system, q, v, t) -> list[tuple[str, str, float]]:
     for ld in system.loads:
         if ld.kind == "spring" and ld.one_sided:
             out.append(("", "switch", ld.stretch(q)))
+    if not all(math.isfinite(g) for _, _, g in out):
+        bad = next(f"{j or 'a one-sided spring'} ({w})" for j, w, g in out if not math.isfinite(g))
+        raise NumericalError(f"the forces of the scene are not finite at t = {t:.6g} s ({bad}): its numbers "
+                             "overflow the doubles; rescale the units")
     return out
 
 
 def _crossed(g0: float, g1: float, what: str) -> bool:
     if what == "switch":
         return (g0 > 0) != (g1 > 0) and g0 != 0
-    return g1 < 0 <= g0 and not (g0 == 0 and what != "sticks")
+    # a force at 0 is where the last phase ended (not a new crossing); a gap or a slip speed at 0
+    # that goes negative is one: the point returns to its surface, the sliding stops
+    return g1 < 0 <= g0 and not (g0 == 0 and what not in ("sticks", "impact", "taut"))
 
 
 # ----------------------------------------------------------------------------- the ODE route
@@ -138,24 +151,25 @@ class OdeRoute:
         v = s.project_velocity(q, y[n:2 * n], t)
         return np.concatenate([q, v, y[2 * n:]])
 
-    def run(self, q0, v0, t_end, budget, traj: Trajectory, rtol: float, atol: float, t0: float = 0.0, W0: float = 0.0):
-        """Integrate phase after phase until t_end or a stopping event; fills ``traj``."""
-        y = np.concatenate([q0, v0, [W0]])
-        t = t0
-        while t < t_end and traj.stopped is None:
-            t, y = self._phase(t, y, t_end, budget, traj, rtol, atol)
-
-    def _phase(self, t0, y0, t_end, budget, traj, rtol, atol):
+    def phase(self, t0, q0, v0, W0, t_end, budget, traj: Trajectory, rtol: float, atol: float):
+        """Integrate one phase from (t0, q0, v0) until t_end or the first located event; fills
+        ``traj`` and returns (t, q, v, W, hit) with hit = (t, joint, what) or None."""
         s, n = self.system, self.n
+        y0 = self.project(np.concatenate([q0, v0, [W0]]), t0)
+        if not np.all(np.isfinite(y0)):
+            raise NumericalError(f"the state of the scene is not finite at t = {t0:.6g} s: its numbers overflow the "
+                                 "doubles; rescale the units")
         cls = runner.solver_class(self.method)
+        # the budget's leg is the whole motion (routes.run): its projection of the steps left spans
+        # the phases, so a motion of many short phases is refused as early as one long integration
         solver = cls(ode.finite(self.rhs), t0, y0.copy(), t_end, rtol=runner.floor_rtol(rtol), atol=atol)
-        budget.leg(t0, t_end)
         modes = modes_of(s)
         w_old = watches(s, y0[:n], y0[n:2 * n], t0)
         # a one-sided spring that switched at t0 sits at its free length to rounding: its
         # stretch may still read on the old side there; the first step does not count it again
         size = max(1.0, float(np.max(np.abs(y0[:n]))))
         skip = {k for k, (_, what, g) in enumerate(w_old) if what == "switch" and abs(g) <= 1e-9 * size}
+        y = y0
         for _ in ode.steps(solver, budget, self.method):
             t_old, t_new = float(solver.t_old), float(solver.t)
             yp = self.project(solver.y, t_new)
@@ -166,17 +180,17 @@ class OdeRoute:
             w_new = watches(s, yp[:n], yp[n:2 * n], t_new)
             hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip)
             skip = set()
+            traj.steps += 1
             if hit is None:
                 traj.add(Piece(t_old, t_new, self._fn(dense), modes))
-                traj.steps += 1
-                w_old = w_new
+                w_old, y = w_new, yp
                 continue
-            tc, joint, what = hit
-            yc = dense(tc)
-            traj.add(Piece(t_old, tc, self._fn(dense), modes))
-            traj.steps += 1
-            return tc, self._after(tc, yc, joint, what, traj)
-        return float(solver.t), solver.y.copy()
+            y = dense(hit[0])
+            traj.add(Piece(t_old, hit[0], self._fn(dense), modes))
+            return hit[0], y[:n], y[n:2 * n], float(y[2 * n]), hit
+        if not traj.pieces or traj.pieces[-1].t_b < t0:
+            traj.add(Piece(t0, t0, lambda t, y=y0: (y[:n], y[n:2 * n], float(y[2 * n])), modes))
+        return float(solver.t), y[:n], y[n:2 * n], float(y[2 * n]), None
 
     def _fn(self, dense):
         n = self.n
@@ -198,24 +212,6 @@ class OdeRoute:
                 best = (tc, joint, what)
         return best
 
-    def _after(self, tc, yc, joint, what, traj):
-        """What happens at a located crossing: a new phase (a kink, a reversal) or the stop."""
-        s, n = self.system, self.n
-        if what == "switch":
-            return yc
-        if what == "sticks":
-            e = next(x for x in s.elements if x.name == joint)
-            q = yc[:n]
-            sticks, new_sign = stick_test(s, e, q, yc[n:2 * n], tc)
-            if not sticks:
-                e.mode, e.sign = "slide", new_sign
-                s.refresh()
-                v = s.project_velocity(q, yc[n:2 * n], tc)
-                return np.concatenate([q, v, yc[2 * n:]])
-        traj.events.append(Event(tc, joint, what))
-        traj.stopped = tc
-        return yc
-
 
 class _ProjectedStep:
     def __init__(self, dense, route, t_end, y_end):
@@ -230,9 +226,12 @@ class _ProjectedStep:
 def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
     """Hold the contact's point (a second row) and solve: it sticks when |F| ≤ μ_s N (the
     boundary, within the rounding of the solve, sticks); else it slides opposite to the
-    friction it would need.  Leaves the contact in mode "stick" (when it sticks)."""
-    e.mode, e.sign = "stick", 0.0
-    e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
+    friction it would need.  Leaves the contact in mode "stick" (a rolling body: "roll")."""
+    if isinstance(e, Rolls):
+        e.mode, e.sign, e.c0 = "roll", 0.0, e.roll_const(q)
+    else:
+        e.mode, e.sign = "stick", 0.0
+        e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
     system.refresh()
     v0 = np.array(v, float)
     v0 = system.project_velocity(q, v0, t)
@@ -277,7 +276,7 @@ class Linear1:
 def closed_form_reason(system, N: np.ndarray, q0) -> str | None:
     """None when the 1-DOF motion along N is affine (constant Jacobian, affine loads); else why not."""
     for e in system.elements:
-        if not e.linear:
+        if e.rows and not e.linear:
             return f"the {e.kind} {e.name!r} is not linear in the coordinates"
         if e.kind == "drive":
             return "a drive prescribes a motion in time"

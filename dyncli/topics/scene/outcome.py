@@ -9,8 +9,8 @@ import numpy as np
 from dyncli import ode
 from dyncli.result import Result, Series
 
-from . import assembly, report
-from .elements import Contact
+from . import assembly, motion, report
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -25,13 +25,14 @@ def instants_of(scene: Scene, traj, route: str):
 
     def state_at(t):
         q, v, W = traj.state(t)
-        solved = traj.fixed
-        if route == "kinematics":
+        p = traj.piece(t)
+        solved = p.fixed
+        if p.route == "kinematics":
             a, lam = _kin_forces(s, q, v, t)
             solved = (a, lam, 0.0)
-        elif route == "closed-form":
+        elif p.along is not None:
             a, lam, P = s.solve(q, v, t)
-            N, i = traj.along
+            N, i = p.along
             solved = (N * a[i], lam, P)           # the motion is along N: no rounding across it
         return q, v, W, solved
 
@@ -53,20 +54,19 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     res = Result({"dof": scene.dof, "coordinates": scene.coords, "route": route, "t": list(times)})
     res.results.update(report.collect(instants))
     res.results["events"] = [{"t": ev.t, "joint": ev.joint, "what": ev.what, "state": inst(ev.t)}
-                             for ev in traj.events]
-    res.results["integrals"] = _integrals(scene, traj, times, instants)
+                             for ev in traj.events if t_stop is None or ev.t <= t_stop]
+    res.results["phases"] = [dict(ph.as_dict(), integrals=_phase_integrals(scene, traj, ph)) for ph in traj.phases]
+    res.results["impacts"] = [im.as_dict() for im in traj.impacts]
+    # the first integrals of the first phase (a later phase has its own joint set), over its times
+    first = [st for t, st in zip(times, instants) if t <= traj.phases[0].t_end]
+    motion.set_modes(scene.system, traj.pieces[0].modes)
+    res.results["integrals"] = _integrals(scene, traj, times, first)
     from . import queries
 
     distance = queries.odometer(scene, traj)
     res.results["distance"] = distance(times)
     for w in scene.warnings:
         res.warn(w)
-    later = [t for t in times if t_stop is not None and t > t_stop]
-    if later:
-        ev = traj.events[-1]
-        res.warn(f"the motion stops at t = {t_stop:.10g} s where {ev.joint!r} {ev.what}: the results at the later "
-                 f"times ({', '.join(f'{t:g}' for t in later)}) are null (this release does not continue past an "
-                 "event)")
     if find_raw:
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn,
                                              rtol=0.0 if str(traj.method or route).startswith("closed") else acc.rtol)
@@ -76,6 +76,13 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     _estimate(res, scene, route, acc, traj)
     _present(res, scene, traj, inst, times)
     return res
+
+
+def _phase_integrals(scene, traj, ph) -> list[str]:
+    """The names of the first integrals that hold by structure through one phase (34.20, 36.10)."""
+    p = next((p for p in traj.pieces if p.t_a >= ph.t_start), traj.pieces[-1])
+    motion.set_modes(scene.system, p.modes)
+    return holding(scene.system, p.fn(p.t_a)[0])
 
 
 def _present(res, scene, traj, inst, times) -> None:
@@ -88,7 +95,7 @@ def _present(res, scene, traj, inst, times) -> None:
     res.extra["scene_draw"] = _drawing(scene)
     res.views.extend(views.views(res))
     res.covered.extend(views.COVERED)
-    res.equations = ["16.7", "29.5", "32.15", "34.20"]
+    res.equations = ["16.7", "29.5", "32.15", "34.20"] + (["28.7", "28.16", "33.2"] if traj.impacts else [])
     res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
                                                  if k in res.results], index_result="t"))
 
@@ -139,17 +146,16 @@ def _kin_forces(s, q, v, t):
 
 
 def _work(scene, traj, route):
-    """W_nc(t): integrated with the state on the ODE route; by quadrature of the power on the
-    others (exact motions)."""
-    if route == "ode":
-        return lambda t, W: W
+    """W_nc(t): on an ODE phase integrated with the state; on an exact phase by quadrature of
+    the power; each impact's energy loss counted from its instant on (the work of the
+    impulsive reactions)."""
     s = scene.system
-    if route == "quadrature" and not any(ld.kind in ("force", "torque") for ld in s.loads):
-        return lambda t, W: 0.0         # every load has its potential in V: no non-conservative work
+    free = not any(ld.kind in ("force", "torque") for ld in s.loads)
 
-    def power(t):
-        q, v, _ = traj.state(float(t))
-        if route == "kinematics":
+    def power(p, t):
+        motion.set_modes(s, p.modes)
+        q, v, _ = p.fn(float(t))
+        if p.route == "kinematics":
             a, lam = _kin_forces(s, q, v, float(t))
             P = sum(float(s.lam_of(lam, i)[0]) * float(v[e.index]) for i, e in enumerate(s.elements) if e.kind == "drive")
             return P + s.applied(q, v, float(t))[1]
@@ -157,59 +163,49 @@ def _work(scene, traj, route):
 
     from dyncli.quadrature import gauss_kronrod
 
-    done: dict[int, float] = {}         # ∫ of the power over whole pieces, computed once each
-
-    def piece(k: int, b: float) -> float:
-        p = traj.pieces[k]
-        if b <= p.t_a:
+    def piece(p, b: float) -> float:
+        if b <= p.t_a or p.route == "statics" or p.route == "quadrature" and free:
             return 0.0
+        if p.route == "ode":
+            return p.fn(b)[2] - p.fn(p.t_a)[2]
         mid = 0.5 * (p.t_a + b)
-        q, v, _ = traj.state(mid)
+        q, v, _ = p.fn(mid)
         # each piece to the rounding of the energies it moves (an exact motion: only the
         # quadrature's own error is left, well below the energy residual it is checked by)
-        scale = abs(power(mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
-        return gauss_kronrod(lambda x: np.array([power(xx) for xx in x]), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+        scale = abs(power(p, mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
+        return gauss_kronrod(lambda x: np.array([power(p, xx) for xx in x]), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+
+    cum = [0.0]                         # W_nc over the whole pieces before piece k, built as asked
 
     def W(t, _W):
-        if route == "statics" or t == 0:
+        if t == traj.t0:
             return 0.0
-        total = 0.0
-        for k, p in enumerate(traj.pieces):
-            if p.t_b <= t:
-                if k not in done:
-                    done[k] = piece(k, p.t_b)
-                total += done[k]
-            else:
-                total += piece(k, t)
-                break
-        return total
+        k = traj.pieces.index(traj.piece(t))
+        while len(cum) <= k:
+            cum.append(cum[-1] + piece(traj.pieces[len(cum) - 1], traj.pieces[len(cum) - 1].t_b))
+        total = cum[k] + piece(traj.pieces[k], t)
+        motion.set_modes(s, traj.pieces[k].modes)
+        return total - sum(im.energy_loss for im in traj.impacts if im.t < t)
 
     return W
 
 
-def _integrals(scene, traj, times, instants) -> list:
-    s = scene.system
+def holding(s, q) -> list[str]:
+    """The first integrals that hold by the structure of the current joint set: "E" (34.20)
+    when every load is conservative and no made joint dissipates or drives; "G.0", "G.1"
+    (36.10) where a translation of the whole scene along e_i is allowed by every made row (so
+    the joint forces have no net e_i component), gravity has none (e1, or g = 0), and no load or
+    friction ties the scene to the ground along e_i."""
+    made = [e for e in s.elements if e.rows]
     out = []
-    conservative = (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
-                    and not any(e.kind == "drive" or isinstance(e, Contact) and e.mode == "slide" and e.mu_k
-                                for e in s.elements))
-    Es = [st["E"] for st in instants if st is not None]
-    if conservative and Es:
-        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
-        out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
-    out += _momenta(scene, instants)
-    return out
-
-
-def _momenta(scene, instants) -> list:
-    """G·e_i = Σ m v̄·e_i (36.10) where it holds: a translation of the whole scene along e_i is
-    allowed by every joint row (so the joint forces have no net e_i component), gravity has
-    none (e1, or g = 0), and no load or friction ties the scene to the ground along e_i."""
-    s = scene.system
-    out = []
-    J = s.jac(scene.q0)
+    if (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
+            and not any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
+                        and e.mu_k for e in made)):
+        out.append("E")
+    J = s.jac(q)
+    on_curve = any(getattr(getattr(e, "surface", None), "curved", False) for e in made)
     for axis, name in ((0, "G.0"), (1, "G.1")):
-        if axis == 1 and s.g != 0:
+        if axis == 1 and s.g != 0 or on_curve:     # a curve's normal turns: J at one q says nothing
             continue
         T = np.zeros(s.n)
         for b in s.bodies:
@@ -219,7 +215,23 @@ def _momenta(scene, instants) -> list:
         if any(ld.kind in ("spring", "damper") and (ld.P.body is None or ld.Q.body is None)
                or ld.kind == "force" and not (ld.constant and ld.F(0.0)[axis] == 0) for ld in s.loads):
             continue
-        if any(isinstance(e, Contact) and e.mu_k and e.surface.d[axis] != 0 for e in s.elements):
+        if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0 for e in made):
+            continue
+        out.append(name)
+    return out
+
+
+def _integrals(scene, traj, times, instants) -> list:
+    """The integrals of the first phase, over its times, with their values and drifts."""
+    s = scene.system
+    names = holding(s, scene.q0)
+    out = []
+    Es = [st["E"] for st in instants if st is not None]
+    if "E" in names and Es:
+        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
+        out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
+    for axis, name in ((0, "G.0"), (1, "G.1")):
+        if name not in names:
             continue
         if any(getattr(getattr(e, "surface", None), "curved", False) for e in s.elements):
             continue                    # a curve's normal turns: the check at t = 0 says nothing

@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build, curved
 from .dynamics import SceneSystem
-from .elements import Contact, Rolls
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
@@ -197,7 +197,7 @@ def _initial_modes(system, q, v) -> None:
     refused naming the contacts."""
     at_rest = []
     for e in system.elements:
-        if isinstance(e, Contact) and e.rough:
+        if isinstance(e, Contact) and e.rough and e.mode != "off":       # a stop is open until it is struck
             vt = e.slip_speed(q, v)
             if vt != 0:
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
@@ -250,6 +250,10 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the contact point is {-g:.6g} m beyond an end of the surface "
                                  f"{e.surface.name!r} (length {e.surface.length:g} m from its `through` point): "
                                  "place it on the surface or lengthen it", e.path)
+            if what == "impact":
+                raise InputError(f"at t = 0 the point {e.P.label} is {-g:.6g} m on the wrong side of the surface "
+                                 f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
+                                 "n = e3 × d̂ (or reverse the surface's direction)", e.path)
             if what == "slack":
                 raise InputError(f"at t = 0 the cord {e.name!r} would have to push: T = {g:.6g} N; a cord only pulls "
                                  "(use a link for a rod that pushes)", e.path)

@@ -4,6 +4,7 @@ from dyncli.declare import R, TypeSpec
 
 SCENE = TypeSpec(
     name="scene",
+    plots="plots:plots", symbolic=True,
     title="a planar mechanism described, not derived: bodies, joints, cords, pulleys, with every joint force",
     sections="§16, §29, §32, §34, §36",
     model="model:Scene",
@@ -43,7 +44,13 @@ SCENE = TypeSpec(
         R("energy_residual", "E − E₁ − W_nc", "J", "34.20", "the energy balance's residual (an accuracy check)",
           kind="list", contract=True),
         R("events", "", "", "", "one-sided joints: {t, joint, what, state}, what = separates, slack, slips, sticks, "
-          "leaves", kind="list", contract=True),
+          "leaves, impact, taut, rests", kind="list", contract=True),
+        R("phases", "", "", "", "the motion's phases in order: {t_start, t_end, joints (those made), route, integrals (the names of "
+          "the first integrals that hold through it: E, G.0, G.1)}",
+          kind="list", contract=True),
+        R("impacts", "", "", "28.7, 28.16, 33.2", "each impact: {t, joint, e, impulse (normal, or the cord's "
+          "impulsive tension) [N·s], energy_loss [J], impulse_F, v_n_before, v_n_after}", kind="list",
+          contract=True),
         R("integrals", "", "", "34.20, 36.10", "first integrals that hold: {name, value, drift, equation}",
           kind="list", contract=True),
         R("equilibria", "", "", "", "`linearize: true`: each rest configuration {coordinates (names), values, x, "
@@ -51,7 +58,7 @@ SCENE = TypeSpec(
           "frequencies_hz, modes (first non-zero component 1), M, K (C, damped), response}", kind="list",
           contract=True),
         R("distance", "", "m", "", "each body's path length since t = 0 (its centre of mass), ∫|v| dt, per body over `at` "
-          "(null after the motion stops at an event)", kind="mapping", contract=True),
+          "(null after the motion stops at the cap on phases)", kind="mapping", contract=True),
         R("find", "", "", "", "answers to the `find` queries (§11): {t, reached, at_end, and the state}",
           kind="list", contract=True),
     ],

@@ -21,8 +21,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 
-from . import assembly, motion
-from .elements import Contact
+from . import assembly, motion, phases
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -30,39 +29,87 @@ from .prepare import Scene
 
 # ----------------------------------------------------------------------------- routes
 
+#: the generality of each route: a scene whose phases took several reports the most general
+ORDER = ("statics", "closed-form", "quadrature", "ode")
+
+
 def run(scene: Scene, t_end: float, acc):
+    """The motion phase after phase (phases.py): each phase on its own cheapest route, the
+    joint set changed at each event, until t_end (or the cap on the phases)."""
     s = scene.system
     traj = motion.Trajectory(s, 0.0, t_end)
-    drives = any(e.kind == "drive" for e in s.elements)
-    if scene.dof == 0 and drives:
+    if scene.dof == 0 and any(e.kind == "drive" for e in s.elements):
         return _kinematics(scene, traj, acc), "kinematics"
-    if _effective_dof(s, scene.q0) == 0 and _steady(s):
-        return _statics(scene, traj), "statics"     # held by the joints, or by friction at rest
-    if acc.method in ("auto", "closed-form"):
-        cf = _closed_form(scene, traj, t_end)
-        if cf is not None:
-            return cf, "closed-form"
-        if acc.method == "closed-form":
-            raise InputError("this scene has no closed form (it needs one degree of freedom, joints whose rows are "
-                             "affine in the positions and loads affine along the motion): use method auto",
-                             "accuracy.method")
+    if acc.method == "closed-form" and _closed_form_kind(s, scene.q0) is None:
+        raise InputError("this scene has no closed form (it needs one degree of freedom, joints whose rows are "
+                         "affine in the positions and loads affine along the motion): use method auto",
+                         "accuracy.method")
     if acc.method == "quadrature":      # on request only in this release: its cost is seconds (docs)
         from . import energy
 
         why = energy.applies(s) if scene.dof == 1 else "the scene has more than one degree of freedom"
-        if why is None:
-            energy.run(scene, traj, t_end, acc)
-            _one_sided_events(s, traj)
-            return traj, "quadrature"
-        if acc.method == "quadrature":
+        if why is not None:
             raise InputError(f"the quadrature route needs one degree of freedom and an energy integral: {why}; use "
                              "method auto", "accuracy.method")
-    method = "DOP853" if acc.method in ("auto", "ode") else acc.method
-    route = motion.OdeRoute(s, acc, method)
     budget = ode.Budget(acc.max_steps)
-    route.run(scene.q0, scene.v0, t_end, budget, traj, acc.rtol, acc.atol)
+    budget.leg(0.0, t_end)
+    change = phases.Transitions(s, traj, acc.rtol)
+    t, q, v = 0.0, scene.q0, scene.v0
+    methods, still = [], 0
+    while True:
+        route, (t_b, q, v, hit) = _phase(scene, traj, t, q, v, t_end, acc, budget)
+        methods.append(traj.method or route)
+        traj.phases.append(phases.Phase(t, t_b, phases.joints_of(s), route))
+        if hit is None or t_b >= t_end:
+            break
+        still = still + 1 if t_b == t else 0
+        if still >= phases.MAX_INSTANT:
+            raise NumericalError(f"the joints chatter at t = {t_b:.10g} s: {hit[1]!r} changes {phases.MAX_INSTANT} times "
+                                 "at that instant (made and released again); the scene has no consistent joint "
+                                 "set there")
+        if getattr(phases.element(s, hit[1]), "first_event_ends", False):
+            traj.stopped = t_b
+            traj.events.append(motion.Event(t_b, hit[1], hit[2]))
+            scene.warnings.append(f"{hit[1]!r} {hit[2]} at t = {t_b:.10g} s: rolling on a curve is followed to its "
+                                  "first event; the results at later times are null")
+            break
+        if len(traj.phases) >= phases.MAX_PHASES:
+            traj.stopped = t_b
+            scene.warnings.append(f"the motion has {phases.MAX_PHASES} phases by t = {t_b:.10g} s (the most one solve "
+                                  "follows): it stops there; the results at later times are null")
+            break
+        t = t_b
+        q, v = change.after(t, q, v, hit)
+    traj.events.sort(key=lambda ev: ev.t)
+    routes = [ph.route for ph in traj.phases]
+    route = max(routes, key=ORDER.index)
+    traj.method = next(m for m, r in zip(methods, routes) if r == route)
+    return traj, route
+
+
+def _phase(scene, traj, t, q, v, t_end, acc, budget):
+    """One phase from (t, q, v): its route and (t_b, q, v, hit) at its end."""
+    s = scene.system
+    if _effective_dof(s, q) == 0 and not any(e.kind == "drive" for e in s.elements):
+        # held by the joints, or by friction at rest: under loads that change in time only the
+        # forces change (watched for the instant they slip or let go)
+        return "statics", _statics(s, traj, t, q, t_end)
+    if acc.method in ("auto", "closed-form"):
+        got = _closed_form(s, traj, t, q, v, t_end)
+        if got is not None:
+            return "closed-form", got
+    if acc.method == "quadrature" and t == 0:
+        from . import energy
+
+        energy.run(scene, traj, t_end, acc)
+        for p in traj.pieces:
+            p.route = "quadrature"
+        return "quadrature", _first_event(s, traj, 0, t_end)
+    method = "DOP853" if acc.method in ("auto", "ode", "closed-form", "quadrature") else acc.method
     traj.method = f"ode:{method}"
-    return traj, "ode"
+    t_b, q, v, _W, hit = motion.OdeRoute(s, acc, method).phase(t, q, v, 0.0, t_end, budget, traj, acc.rtol,
+                                                                acc.atol)
+    return "ode", (t_b, q, v, hit)
 
 
 def _effective_dof(s, q) -> int:
@@ -74,20 +121,19 @@ def _steady(s) -> bool:
     return all(ld.constant and ld.kind != "damper" for ld in s.loads) and not any(e.kind == "drive" for e in s.elements)
 
 
-def _statics(scene: Scene, traj):
-    s, q = scene.system, scene.q0
+def _statics(s, traj, t, q, t_end):
     v = np.zeros(s.n)
-    f, _ = s.applied(q, v, 0.0)
+    f, _ = s.applied(q, v, t)
     J = s.jac(q)
     lam, *_ = np.linalg.lstsq(J.T, -f, rcond=None)
     if float(np.max(np.abs(J.T @ lam + f), initial=0.0)) > 1e-9 * max(float(np.max(np.abs(f), initial=0.0)), 1e-300):
         raise NumericalError("the joints cannot hold the loads in equilibrium")
-    a = np.zeros(s.n)
-    fixed = (a, lam, 0.0)
-    traj.add(motion.Piece(0.0, traj.t_end, lambda t: (q, v, 0.0), motion.modes_of(s)))
-    traj.fixed = fixed
+    fixed = (np.zeros(s.n), lam, 0.0) if _steady(s) else None
+    traj.add(motion.Piece(t, t_end, lambda _t: (q, v, 0.0), motion.modes_of(s), "statics", fixed=fixed))
     traj.method = "statics"
-    return traj
+    if fixed is not None:
+        return t_end, q, v, None
+    return _first_event(s, traj, len(traj.pieces) - 1, t_end)
 
 
 def _kinematics(scene: Scene, traj, acc):
@@ -104,9 +150,11 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         q_start, t_a, t_b = qs[k], grid[k], grid[k + 1]
-        traj.add(motion.Piece(t_a, t_b, lambda t, q_start=q_start: _kin_state(s, q_start, t), motion.modes_of(s)))
+        traj.add(motion.Piece(t_a, t_b, lambda t, q_start=q_start: _kin_state(s, q_start, t), motion.modes_of(s),
+                              "kinematics"))
     if len(grid) == 1:
-        traj.add(motion.Piece(0.0, 0.0, lambda t: _kin_state(s, scene.q0, t), motion.modes_of(s)))
+        traj.add(motion.Piece(0.0, 0.0, lambda t: _kin_state(s, scene.q0, t), motion.modes_of(s), "kinematics"))
+    traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
     traj.method = "kinematics"
     return traj
 
@@ -176,77 +224,120 @@ def _linear(s, q0, N, i, has_k: bool, has_c: bool) -> motion.Linear1:
     return motion.Linear1(q0, N, i, A0, A1, A2)
 
 
-def _closed_form(scene: Scene, traj, t_end):
-    s, q0, v0 = scene.system, scene.q0, scene.v0
+def _closed_form_kind(s, q0):
+    """How a phase from q0 has a closed form, decided from the structure: ("constant", None)
+    when every made row has a constant Jacobian and every load is constant (any number of
+    degrees of freedom: constant accelerations, free flight included); ("affine", (N, i)) for
+    one degree of freedom with loads affine along it (motion.Linear1); else None."""
     nd = _null_direction(s, q0)
-    if nd is None or motion.closed_form_reason(s, nd[0], q0) is not None:
-        return None
-    N, i = nd
-    has_k, has_c = motion.along(s, q0, N)
-    rough = [e for e in s.elements if isinstance(e, Contact) and e.mode == "slide" and e.mu_k]
-    if rough and (has_k or has_c):
-        return None
-    lin = _linear(s, q0, N, i, has_k, has_c)
-    A1, A2, sd0 = lin.A1, lin.A2, float(v0[i])
-    t_a, s_a, sd_a = 0.0, float(q0[i]), sd0
-    while True:
-        modes = motion.modes_of(s)
-        t_stop = None
-        if rough and A1 == 0 and A2 == 0 and sd_a != 0 and (sd_a > 0) != (lin.A0 > 0):
-            t_stop = t_a - sd_a / lin.A0
-        t_b = min(t_end, t_stop) if t_stop is not None else t_end
+    if nd is not None and motion.closed_form_reason(s, nd[0], q0) is None:
+        has_k, has_c = motion.along(s, q0, nd[0])
+        if not ((has_k or has_c) and any(e.rows and getattr(e, "mode", "") in ("slide", "slip") and e.mu_k
+                                         for e in s.elements)):
+            return "affine", nd
+    made = [e for e in s.elements if e.rows > 0]
+    if (all(e.linear and e.kind != "drive" for e in made)
+            and all(ld.kind in ("force", "torque") and ld.constant for ld in s.loads)
+            and not any(ld.kind == "force" and ld.P.turns_with_body for ld in s.loads)
+            and not any(getattr(e, "P", None) is not None and e.P.turns_with_body for e in made)):
+        return "constant", None
+    return None
 
-        def fn(t, t_a=t_a, s_a=s_a, sd_a=sd_a, lin=lin, qa=q0 + N * (s_a - float(q0[i]))):
-            sv, sdv = lin.motion(t - t_a, s_a, sd_a)
-            return qa + N * (sv - s_a), N * sdv, 0.0
 
-        traj.add(motion.Piece(t_a, t_b, fn, modes))
-        if t_stop is None or t_stop >= t_end:
-            break
-        qs, _, _ = fn(t_stop)
-        vs = N * 0.0
-        e = rough[0]
-        sticks, sign = motion.stick_test(s, e, qs, vs, t_stop)
-        if sticks:
-            traj.events.append(motion.Event(t_stop, e.name, "sticks"))
-            traj.stopped = t_stop
-            break
-        e.mode, e.sign = "slide", sign
-        s.refresh()
-        A0 = float(s.solve(qs, vs, t_stop)[0][i])
-        lin = motion.Linear1(qs, N, i, A0, 0.0, 0.0)
-        t_a, s_a, sd_a = t_stop, float(qs[i]), 0.0
-    _one_sided_events(s, traj)
+def _closed_form(s, traj, t0, q0, v0, t_end):
+    """A closed-form phase from (t0, q0, v0): one piece to t_end, cut at its first event."""
+    kind = _closed_form_kind(s, q0)
+    if kind is None:
+        return None
+    along = None
+    if kind[0] == "constant":
+        a = s.solve(q0, v0, t0)[0]
+
+        def fn(t):
+            tau = t - t0
+            return q0 + v0 * tau + 0.5 * a * tau * tau, v0 + a * tau, 0.0
+    else:
+        N, i = along = kind[1]
+        has_k, has_c = motion.along(s, q0, N)
+        lin = _linear(s, q0, N, i, has_k, has_c)
+        s_a, sd_a = float(q0[i]), float(v0[i])
+
+        def fn(t):
+            sv, sdv = lin.motion(t - t0, s_a, sd_a)
+            return q0 + N * (sv - s_a), N * sdv, 0.0
+    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along))
     traj.method = "closed-form"
-    traj.along = (N, i)
-    return traj
+    return _first_event(s, traj, len(traj.pieces) - 1, t_end)
 
 
-def _one_sided_events(s, traj) -> None:
-    """Contact forces and tensions along a closed-form motion: a sign change is located
-    (each piece scanned at 64 points, then Brent) and stops the motion there."""
+def _first_event(s, traj, k0: int, t_end: float):
+    """The first event on the exact pieces from index k0 (each piece scanned at 64 points or
+    more, one per 0.05 rad a body turns, then Brent to the double's resolution); the pieces are
+    cut there.  Returns (t, q, v, hit)."""
     from dyncli.rootfind import brent
 
-    for p in list(traj.pieces):
+    for k in range(k0, len(traj.pieces)):
+        p = traj.pieces[k]
         if p.t_b <= p.t_a:
             continue
         motion.set_modes(s, p.modes)
-        ts = np.linspace(p.t_a, p.t_b, 65)
 
-        def w(t):
+        def w(t, p=p):
             q, v, _ = p.fn(t)
             return motion.watches(s, q, v, t)
 
+        ts = np.union1d(np.linspace(p.t_a, p.t_b, _samples(s, p) + 1), _gap_times(s, p))
         prev = w(ts[0])
         for t0, t1 in zip(ts[:-1], ts[1:]):
             cur = w(t1)
-            for k, ((joint, what, g0), (_, _, g1)) in enumerate(zip(prev, cur)):
-                if what in ("sticks", "switch") or not motion._crossed(g0, g1, what):
+            best = None
+            for j, ((joint, what, g0), (_, _, g1)) in enumerate(zip(prev, cur)):
+                if what == "switch" or not motion._crossed(g0, g1, what):
                     continue
-                tc = brent(lambda t, k=k: w(t)[k][2], t0, t1, 4 * EPS * t1, 4 * EPS, 200)
-                traj.events.append(motion.Event(tc, joint, what))
-                traj.stopped = tc
-                return
+                tc = t1 if g1 == 0 else brent(lambda t, j=j: w(t)[j][2], t0, t1, 4 * EPS * t1, 4 * EPS, 200)
+                if best is None or tc < best[0]:
+                    best = (tc, joint, what)
+            if best is not None:
+                p.t_b = best[0]
+                del traj.pieces[k + 1:]
+                q, v, _ = p.fn(best[0])
+                return best[0], q, v, best
             prev = cur
+    q, v, _ = traj.pieces[-1].fn(t_end)
+    return t_end, q, v, None
 
 
+def _gap_times(s, p) -> list[float]:
+    """Where each released point's height over its surface, as the parabola of its start
+    (height, normal speed, normal acceleration), has its top or returns to 0: sampled too, so
+    that a short flight between two samples is not stepped over."""
+    from .contacts import Contact, Rolls
+    from .impulse import normal_acceleration
+
+    q, v, _ = p.fn(p.t_a)
+    out = []
+    for e in s.elements:
+        if isinstance(e, (Contact, Rolls)) and e.mode == "off":
+            g, gd, gdd = e.gap(q), e.normal_speed(q, v), normal_acceleration(s, q, v, p.t_a, e)
+            if gdd == 0:
+                roots = [-g / gd] if gd else []
+            else:
+                disc = gd * gd - 2 * gdd * g
+                roots = [-gd / gdd] + ([(-gd + r) / gdd for r in (disc ** 0.5, -disc ** 0.5)] if disc >= 0 else [])
+            out += [p.t_a + r for r in roots if 0 < r and p.t_a + r < p.t_b]
+    return out
+
+
+def _samples(s, p) -> int:
+    """64, or one sample per 0.05 rad that a body turns over the piece (a turning point's height
+    is then sampled finely enough not to step over a touch)."""
+    if p.route == "statics":            # held at rest under loads that change in time
+        return 1024
+    q0, v0, _ = p.fn(p.t_a)
+    q1, v1, _ = p.fn(p.t_b)
+    turn = 0.0
+    for b in s.bodies:
+        if b.rigid:
+            k = b.index[2]
+            turn = max(turn, abs(float(q1[k] - q0[k])), 0.5 * abs(float(v0[k]) + float(v1[k])) * (p.t_b - p.t_a))
+    return int(min(max(64, turn / 0.05), 20_000))

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from dyncli.result import Table
 
-COVERED = ["x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "drive", "force", "events", "find"]
+COVERED = ["x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "drive", "force", "events", "phases",
+           "impacts", "find"]
 
 
 def _xy(v):
@@ -33,6 +34,10 @@ def views(res) -> list[Table]:
         out.append(forces)
     if r.get("events"):
         out.append(_events(r))
+    if len(r.get("phases") or []) > 1:
+        out.append(_phases(r))
+    if r.get("impacts"):
+        out.append(_impacts(r))
     if r.get("find"):
         out.append(_find(r))
     return out
@@ -97,6 +102,18 @@ def _fmt(v) -> str:
 def _events(r) -> Table:
     rows = [[e["t"], e["joint"], e["what"], ", ".join(_coords(e["state"]))] for e in r["events"]]
     return Table("events", ["t [s]", "joint", "what", "state (events.N.state holds every result)"], rows)
+
+
+def _phases(r) -> Table:
+    rows = [[p["t_start"], p["t_end"], ", ".join(p["joints"]) or "—", p["route"]] for p in r["phases"]]
+    return Table("phases (the joints made in each)", ["from [s]", "to [s]", "joints", "route"], rows)
+
+
+def _impacts(r) -> Table:
+    rows = [[i["t"], i["joint"], i["e"], i["impulse"], i["impulse_F"], i["v_n_before"], i["v_n_after"],
+             i["energy_loss"]] for i in r["impacts"]]
+    return Table("impacts (28.7, 28.16, 33.2)", ["t [s]", "joint", "e", "impulse [N·s]", "friction [N·s]",
+                                                 "v_n before [m/s]", "v_n after [m/s]", "energy lost [J]"], rows)
 
 
 def _find(r) -> Table:

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 TOP = TypeSpec(
     name="top",
+    plots="plots:plots", numpy_free=True, symbolic=True, exact=True,
     title="the heavy symmetric top: nutation and reactions",
     sections="§38",
     model="model:Top",

@@ -5,6 +5,7 @@ from dyncli.declare import R, TypeSpec
 
 VIBRATION = TypeSpec(
     name="vibration",
+    plots="plots:plots", numpy_free=True,
     title="spring-mass-damper, free and base-excited",
     sections="§17",
     model="model:Vibration",

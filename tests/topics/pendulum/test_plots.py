@@ -13,7 +13,7 @@ def test_plots_read_the_sampler(monkeypatch):
     from tests.plots.util import solved_path, specs
 
     solved = solved_path("particle/pendulum.yaml")
-    mod = importlib.import_module(registry.TYPES["pendulum"].topic + ".solver")
+    mod = importlib.import_module(registry.TYPES["pendulum"].package + ".solver")
 
     def boom(*a, **k):
         raise AssertionError("a plot solved the problem again")

@@ -203,6 +203,31 @@ def ladder_release(theta0, L):
 
 
 @functools.lru_cache(maxsize=None)
+def ladder_floor_phase(theta0_deg, m, L):
+    """After the wall lets go, the rod on the smooth floor alone (a second, independent
+    formulation): no horizontal force, so ẋ̄1 = const (36.10); the foot on the floor gives
+    x̄2 = (L/2) sin θ, and Lagrange's equation in θ with M(θ) = m(L²/4) cos²θ + mL²/12,
+    V = m g (L/2) sin θ: M θ̈ − (mL²/4) cos θ sin θ θ̇² + m g (L/2) cos θ = 0, from the state at
+    the separation (θ*, θ̇* from the energy integral of the first phase).  Returns
+    (t*, ẋ̄1, θ(t), θ̇(t) as mpmath's Taylor ODE solver, N_f(θ, θ̇))."""
+    th0 = deg(theta0_deg)
+    ths, ts = ladder_release(th0, L)
+    thd_s = ladder_rates(ths, th0, L)[0]
+    vx = -L / 2 * mp.sin(ths) * thd_s
+    m, L = mpf(m), mpf(L)
+
+    def acc(th, thd):
+        M = m * L**2 / 4 * mp.cos(th) ** 2 + m * L**2 / 12
+        return (m * L**2 / 4 * mp.cos(th) * mp.sin(th) * thd**2 - m * g() * L / 2 * mp.cos(th)) / M
+
+    def floor(th, thd):          # N_f = m g + m ẍ̄2, x̄2 = (L/2) sin θ
+        return m * g() + m * L / 2 * (mp.cos(th) * acc(th, thd) - mp.sin(th) * thd**2)
+
+    sol = mp.odefun(lambda t, y: [y[1], acc(y[0], y[1])], ts, [ths, thd_s])
+    return ts, vx, sol, floor
+
+
+@functools.lru_cache(maxsize=None)
 def ladder_motion(theta0_deg, L):
     """θ(t), θ̇(t) by mpmath's Taylor ODE solver on θ̈ = −(3g/2L) cos θ (a second route beside the
     quadrature)."""

@@ -135,18 +135,26 @@ def test_multipliers_are_the_free_body_forces():
         _balance(r, k, bodies, joints)
 
 
-def test_event_nulls_every_later_result_and_warns():
+def test_ladder_continues_past_the_wall_on_the_floor_alone():
+    """Past the separation the ladder slides on the floor alone (a second phase): the later
+    times are reported, the wall's N is 0 there, the horizontal momentum (no horizontal force
+    once the wall lets go) and the energy (smooth floor) are kept."""
     rec = solve_path(PROBLEMS / "scenes" / "sliding-ladder.yaml")[0]
     r = rec["results"]
     t_ev = r["events"][0]["t"]
-    for k, t in enumerate(r["t"]):
-        later = t > t_ev
-        assert (r["x"]["rod"][k] is None) == later
-        assert (r["reaction"]["at_wall"]["N"][k] is None) == later
-    assert any("stops at t" in w for w in rec["warnings"])
-    # the event's state: the wall force is zero there (to the located time's accuracy)
+    assert [(p["joints"], p["route"]) for p in r["phases"]] == [(["at_floor", "at_wall"], "ode"), (["at_floor"], "ode")]
+    assert r["phases"][0]["t_end"] == r["phases"][1]["t_start"] == t_ev
+    assert [p["integrals"] for p in r["phases"]] == [["E"], ["E", "G.0"]]      # 34.20; 36.10 once the wall is gone
     st = r["events"][0]["state"]
     assert abs(st["reaction"]["at_wall"]["N"]) < 1e-6 * st["reaction"]["at_floor"]["N"]
+    vx = st["v"]["rod"][0]
+    for k, t in enumerate(r["t"]):
+        assert r["x"]["rod"][k] is not None
+        if t > t_ev:
+            assert r["reaction"]["at_wall"]["N"][k] == 0.0
+            assert abs(r["v"]["rod"][k][0] - vx) <= 1e-12 * abs(vx)
+            assert abs(r["E"][k] - r["E"][0]) <= 1e-8 * abs(r["E"][0])
+    assert not any("stops at t" in w for w in rec["warnings"])
 
 
 def test_check_solve_is_honest_on_the_ladder():
@@ -210,7 +218,7 @@ accuracy: {rtol: 1.0e-11}
 
 def test_a_block_held_by_friction_slips_when_the_push_exceeds_mu_s_N():
     """F = 5 t on a block at rest on a rough floor: it sticks (the static test) until
-    5 t = μ_s m g, then slips (an event: this release stops there)."""
+    5 t = μ_s m g, then slips (an event) and slides with kinetic friction μ_k N."""
     rec = solve_one_text("""
 type: scene
 surfaces:
@@ -228,4 +236,9 @@ at: [0, 1, 3]
     ev = r["events"]
     assert [(e["joint"], e["what"]) for e in ev] == [("f", "slips")]
     assert abs(ev[0]["t"] - 0.5 * 2 * 9.81 / 5) <= 1e-9
-    assert r["reaction"]["f"]["F"][1] == -5.0 and r["x"]["A"][2] is None
+    assert r["reaction"]["f"]["F"][1] == -5.0
+    # sliding from t_s: m ẍ = 5 t − μ_k m g, from rest at x = 0
+    ts, t = 0.5 * 2 * 9.81 / 5, 3.0
+    x = 1.25 * ((t**3 - ts**3) / 3 - ts**2 * (t - ts)) - 0.4 * 9.81 * (t - ts) ** 2 / 2
+    assert abs(r["x"]["A"][2][0] - x) <= 1e-7 * x
+    assert abs(r["reaction"]["f"]["F"][2] + 0.4 * 2 * 9.81) <= 1e-12 * 8

@@ -1,0 +1,67 @@
+"""A bead's motion along its curve reported at given states (notes §16 problem II, §18, §20), for
+every route that makes one: the energy quadrature (``quadrature.py``), the ODE (``solver.py``) and
+the ``find`` queries (``find.py``).
+
+:func:`assemble` turns the states (q, q̇, …) into the results named in :data:`SERIES` (the arc
+length by :func:`arc_length`); :func:`equation_numbers` lists the notes' equations they use.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+SERIES = ["q", "q_dot", "s", "s_dot", "x", "v", "a", "N", "N_vec", "friction", "kappa", "T", "V", "E", "W_nc", "W_N"]
+
+
+def _vec(a) -> list[float]:
+    return [float(c) + 0.0 for c in np.asarray(a, float)]
+
+
+def arc_length(curve, q0, qs):
+    from dyncli.quadrature import quad
+
+    def sp(q):
+        return float(np.linalg.norm(curve.dy(q)[:, 0]))
+
+    return [quad(sp, q0, q, limit=200, epsabs=0, epsrel=1e-13)[0] + 0.0 if q != q0 else 0.0 for q in qs]
+
+
+def assemble(p, model, times, Y, modes) -> dict:
+    """The reported results at the states Y (5, n) (one mode per state)."""
+    n = Y.shape[1]
+    cols = []
+    for j in range(n):
+        cols.append(model.evaluate(times[j], Y[:, j:j + 1], modes[j]))
+    cat = {k: np.concatenate([c[k] for c in cols], axis=-1) for k in ("x", "v", "a", "N", "ft", "et", "speed", "Q")}
+    Q = np.concatenate([c["Q"] for c in cols], axis=0)
+    # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
+    et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
+    N = cat["N"]
+    m = model.m
+    T = 0.5 * m * np.sum(cat["v"] ** 2, axis=0)
+    V = model.potential(cat["x"])
+    qd = np.array([0.0 if md[0] == "stick" else Y[1, j] for j, md in enumerate(modes)])
+    r = {
+        "q": [float(v) + 0.0 for v in Y[0]],
+        "q_dot": [float(v) + 0.0 for v in qd],
+        "s": arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]]),
+        "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
+        "x": [_vec(cat["x"][:, j]) for j in range(n)],
+        "v": [_vec(cat["v"][:, j]) for j in range(n)],
+        "a": [_vec(cat["a"][:, j]) for j in range(n)],
+        "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],
+        "N_vec": [_vec(N[:, j] + cat["ft"][j] * cat["et"][:, j]) for j in range(n)],
+        "friction": [float(v) + 0.0 for v in cat["ft"]],
+        "kappa": [float(v) for v in kappa],
+        "T": [float(v) for v in T], "V": [float(v) + 0.0 for v in V], "E": [float(v) + 0.0 for v in T + V],
+        "W_nc": [float(v) + 0.0 for v in Y[3]], "W_N": [float(v) + 0.0 for v in Y[4]],
+    }
+    return {"results": r}
+
+
+def equation_numbers(model) -> list[str]:
+    eq = ["16.7", "11.11", "18.4", "18.6"]
+    if model.mu:
+        eq.append("19.27")
+    eq += ["20.3", "20.4", "20.5"]
+    return eq

@@ -1,0 +1,249 @@
+"""The one-sided contacts of a scene and their phases (docs/types/scene.md: phases and impacts).
+
+A ``Contact`` (and a ``stop``, a contact made only at the instant of an impact) holds a body
+point on a surface while it pushes; its ``mode`` is the phase it is in:
+
+* "smooth" (made, no friction), "slide" (made, kinetic friction −μ_k N sign(v_t) d̂),
+  "stick" (made, a second row holds the point's place along d̂);
+* "off" (released: no row; watched for the point's return to the surface, an impact).
+
+A ``Rolls`` joint is "roll" (two rows, 15.8), "slip" (the normal row and kinetic friction at the
+contact point) or "off" (the disk has left the surface).  Each element reads its multipliers
+back in the contract's terms (N along n, F along d̂) and lists the quantities that must stay
+≥ 0 in its phase (``watch``): the event of that name happens where one crosses 0 downwards.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .elements import Element
+from .system import Point, SurfaceData
+
+EPS = float(np.finfo(float).eps)
+
+
+def _gap_watch(gap: float, margin: float | None) -> float:
+    """The released point's height over the surface, watched for an impact only over the
+    surface's extent (beyond an end the point passes it: the value stays positive)."""
+    if margin is None or margin >= 0:
+        return gap
+    return abs(gap) - margin
+
+
+@dataclass
+class Contact(Element):
+    """P on the surface, pushing only; Coulomb friction with the computed N."""
+
+    P: Point = None
+    surface: SurfaceData = None
+    mu_s: float = 0.0
+    mu_k: float = 0.0
+    mode: str = "smooth"
+    sign: float = 0.0               # direction of sliding along d̂ in mode "slide"
+    stick_at: float = 0.0           # d̂·r_P held in mode "stick"
+    e: float = 0.0                  # coefficient of restitution of an impact on this surface
+    stop: bool = False              # a stop: made only at the instant of an impact
+
+    @property
+    def rows(self):
+        return {"off": 0, "stick": 2}.get(self.mode, 1)
+
+    @property
+    def linear(self):
+        return not self.P.turns_with_body
+
+    @property
+    def rough(self) -> bool:
+        return self.mu_s > 0 or self.mu_k > 0
+
+    def phase(self):
+        return (self.mode, self.sign, self.stick_at)
+
+    def set_phase(self, state) -> None:
+        self.mode, self.sign, self.stick_at = state
+
+    def made(self) -> str:
+        """The mode of the contact once made: smooth, or (rough) stick until decided."""
+        return "stick" if self.rough else "smooth"
+
+    def gap(self, q) -> float:
+        return float(np.array(self.surface.n) @ (self.P.pos(q) - np.array(self.surface.origin)))
+
+    def normal(self, q) -> np.ndarray:
+        """The surface's unit normal at the contact (a plane's own; a curve's at the foot of P)."""
+        return np.array(self.surface.n)
+
+    def normal_speed(self, q, v) -> float:
+        return float(self.normal(q) @ self.P.vel(q, v))
+
+    def phi(self, q, t):
+        out = [self.gap(q)]
+        if self.mode == "stick":
+            out.append(float(np.array(self.surface.d) @ self.P.pos(q)) - self.stick_at)
+        return np.array(out[:self.rows])
+
+    def jac(self, q):
+        JP = self.P.jac(q, self.n)
+        rows = [np.array(self.surface.n) @ JP, np.array(self.surface.d) @ JP]
+        return np.array(rows[:self.rows]).reshape(self.rows, self.n)
+
+    def gamma(self, q, v, t):
+        b = self.P.bias(q, v)
+        out = [-float(np.array(self.surface.n) @ b), -float(np.array(self.surface.d) @ b)]
+        return np.array(out[:self.rows])
+
+    def tangent_jac(self, q) -> np.ndarray:
+        return np.array(self.surface.d) @ self.P.jac(q, self.n)
+
+    def friction_column(self, q):
+        """Generalized force per unit N of the kinetic friction −μ_k N sign d̂ at P."""
+        if self.mode != "slide" or self.mu_k == 0:
+            return None
+        return -self.mu_k * self.sign * self.tangent_jac(q)
+
+    def holds(self, N: float, F: float) -> bool:
+        """The static test |F| ≤ μ_s N; the boundary, within the rounding of the linear solve
+        that gave N and F (64 ε of the larger), holds: friction exactly at the limit sticks."""
+        return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
+
+    def slip_speed(self, q, v) -> float:
+        return float(np.array(self.surface.d) @ self.P.vel(q, v))
+
+    def friction(self, lam) -> float:
+        if self.mode == "stick":
+            return float(lam[1])
+        if self.mode == "slide":
+            return -self.mu_k * self.sign * float(lam[0])
+        return 0.0
+
+    def report(self, lam, q, v, t):
+        if self.mode == "off":
+            return {"N": 0.0, "F": 0.0}
+        return {"N": float(lam[0]), "F": self.friction(lam)}
+
+    def watch(self, lam, q, v, t):
+        m = self.surface.ends_margin(self.P.pos(q))
+        if self.mode == "off":
+            return [("impact", _gap_watch(self.gap(q), m))]
+        out = [("separates", float(lam[0]))]
+        if m is not None:
+            out.append(("leaves", m))
+        if self.mode == "slide":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mode == "stick":
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+        return out
+
+
+@dataclass
+class Rolls(Element):
+    """A disk or ring of radius R rolls on the surface without slipping (15.8):
+    n·(x − O) = R and d̂·x + R θ = const; it slips with kinetic friction μ_k N when rolling
+    would need more than μ_s N, and leaves the surface when N would turn negative."""
+
+    body_point: Point = None
+    surface: SurfaceData = None
+    R: float = 0.0
+    c0: float = 0.0
+    mu_s: float | None = None
+    mu_k: float | None = None
+    mode: str = "roll"
+    sign: float = 0.0               # direction of the contact point's slip along d̂ ("slip")
+    e: float = 0.0                  # coefficient of restitution when it lands on the surface again
+
+    @property
+    def rows(self):
+        return {"roll": 2, "slip": 1}.get(self.mode, 0)
+
+    @property
+    def rough(self) -> bool:
+        return True
+
+    def phase(self):
+        return (self.mode, self.sign, self.c0)
+
+    def set_phase(self, state) -> None:
+        self.mode, self.sign, self.c0 = state
+
+    def made(self) -> str:
+        return "roll"
+
+    def _x(self, q) -> np.ndarray:
+        i = self.body_point.body.index
+        return np.array([q[i[0]], q[i[1]]], dtype=float)
+
+    def gap(self, q) -> float:
+        return float(np.array(self.surface.n) @ (self._x(q) - np.array(self.surface.origin))) - self.R
+
+    def normal_speed(self, q, v) -> float:
+        i = self.body_point.body.index
+        return float(np.array(self.surface.n) @ np.array([v[i[0]], v[i[1]]]))
+
+    def slip_speed(self, q, v) -> float:
+        """d̂ · (velocity of the contact point) = d̂·ẋ + R ω."""
+        i = self.body_point.body.index
+        return float(np.array(self.surface.d) @ np.array([v[i[0]], v[i[1]]])) + self.R * float(v[i[2]])
+
+    def roll_const(self, q) -> float:
+        i = self.body_point.body.index
+        return float(np.array(self.surface.d) @ self._x(q)) + self.R * float(q[i[2]])
+
+    def phi(self, q, t):
+        return np.array([self.gap(q), self.roll_const(q) - self.c0][:self.rows])
+
+    def tangent_jac(self, q) -> np.ndarray:
+        i = self.body_point.body.index
+        J = np.zeros(self.n)
+        J[i[0]], J[i[1]] = self.surface.d
+        J[i[2]] = self.R
+        return J
+
+    def jac(self, q):
+        i = self.body_point.body.index
+        J = np.zeros((2, self.n))
+        J[0, i[0]], J[0, i[1]] = self.surface.n
+        J[1] = self.tangent_jac(q)
+        return J[:self.rows]
+
+    def gamma(self, q, v, t):
+        return np.zeros(self.rows)
+
+    def friction_column(self, q):
+        if self.mode != "slip" or not self.mu_k:
+            return None
+        return -self.mu_k * self.sign * self.tangent_jac(q)
+
+    def holds(self, N: float, F: float) -> bool:
+        if self.mu_s is None:
+            return True
+        return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
+
+    def friction(self, lam) -> float:
+        if self.mode == "roll":
+            return float(lam[1])
+        if self.mode == "slip":
+            return -(self.mu_k or 0.0) * self.sign * float(lam[0])
+        return 0.0
+
+    def report(self, lam, q, v, t):
+        if self.mode == "off":
+            return {"N": 0.0, "F": 0.0, "slip_margin": None}
+        N, F = float(lam[0]), self.friction(lam)
+        margin = None if self.mu_s is None or self.mode != "roll" else self.mu_s * N - abs(F)
+        return {"N": N, "F": F, "slip_margin": margin}
+
+    def watch(self, lam, q, v, t):
+        m = self.surface.ends_margin(self._x(q))
+        if self.mode == "off":
+            return [("impact", _gap_watch(self.gap(q), m))]
+        out = [("separates", float(lam[0]))]
+        if m is not None:
+            out.append(("leaves", m))
+        if self.mode == "slip":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mu_s is not None:
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+        return out

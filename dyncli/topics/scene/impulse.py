@@ -1,0 +1,130 @@
+"""Impacts in a scene: the impulse–momentum balance of every body with the joints' own rows.
+
+At the instant of an impact the positions are fixed and the velocities jump.  Integrating the
+balance laws over the impact (28.4, 33.2) with impulsive joint reactions only (the finite loads
+give no impulse) gives, in the scene's maximal coordinates,
+
+    [ M   −Jᵀ − Φ ] [ Δq̇ ]   [ 0 ]
+    [ J      0    ] [ Λ  ] = [ b ]
+
+with the same Jacobian J as the equations of motion: for every joint that stays made,
+b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for the impacting row,
+b = −(1 + e) (n·v⁻) (Newton's restitution, 28.7: the normal speed after is −e times the
+one before); for its tangential row (rough, sticking) b = −v_t⁻.  Φ holds the friction of the
+impact where it slides: −μ Λ_n sign(v_t⁻) along d̂ (Coulomb, as in 28.26 with the impulse at
+the friction angle).  A made contact or a taut cord whose impulse would pull is released and
+the system solved again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two
+particles: (1 − e²) ½ m* (n·Δv)²).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from dyncli.errors import NumericalError
+
+from .elements import Cord
+from .contacts import Contact, Rolls
+
+EPS = float(np.finfo(float).eps)
+
+
+def _kkt(s, q, v, t, target: dict):
+    """Solve the impulse system; ``target`` maps (element index, row) -> the velocity the row
+    must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
+    n, m = s.n, s.m
+    J = s.jac(q)
+    A = np.zeros((n + m, n + m))
+    A[:n, :n] = np.diag(s.mass)
+    A[:n, n:] = -J.T
+    A[n:, :n] = J
+    for i, e in enumerate(s.elements):
+        col = e.friction_column(q) if isinstance(e, (Contact, Rolls)) else None
+        if col is not None:
+            A[:n, n + s.offsets[i]] -= col
+    b = -(J @ v + s.phi_t(t)) if m else np.zeros(0)
+    for (i, r), want in target.items():
+        k = s.offsets[i] + r
+        b[k] = want - float(J[k] @ v)
+    try:
+        x = np.linalg.solve(A, np.concatenate([np.zeros(n), b]))
+    except np.linalg.LinAlgError:
+        raise NumericalError(f"the impact at t = {t:.6g} s is not determined: the joints made at that instant "
+                             "lock each other (redundant rows)") from None
+    return v + x[:n], x[n:]
+
+
+def _pulling(s, lam, skip) -> tuple | None:
+    """A made one-sided joint whose impulse would pull: (element, run) or None."""
+    scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+    for i, e in enumerate(s.elements):
+        if i == skip or e.rows == 0:
+            continue
+        lm = s.lam_of(lam, i)
+        if isinstance(e, (Contact, Rolls)) and float(lm[0]) < -1e-12 * scale:
+            return e, None
+        if isinstance(e, Cord):
+            for r, T in zip(e.taut, (-float(x) for x in lm)):
+                if T < -1e-12 * scale:
+                    return e, r
+    return None
+
+
+def release(e, run=None) -> None:
+    if isinstance(e, Cord):
+        e.slack = e.slack | {run}
+    else:
+        e.mode, e.sign = "off", 0.0
+
+
+def strike(s, q, v, t, e, rest: float, run: int | None = None):
+    """The impact of element ``e`` (a contact, stop or rolling body reaching its surface with
+    restitution ``rest``, or a cord run jerked taut: ``run``, restitution 0) at (t, q, v⁻).
+    Leaves ``e`` made; returns (v⁺, normal impulse, friction impulse, released joints)."""
+    i = s.elements.index(e)
+    released = []
+    if isinstance(e, Cord):
+        e.slack = e.slack - {run}
+        rows = {(i, e.taut.index(run)): 0.0}
+    else:
+        vn, vt = e.normal_speed(q, v), e.slip_speed(q, v)
+        e.mode, e.sign = e.made(), 0.0
+        if isinstance(e, Rolls):
+            e.c0 = e.roll_const(q)
+        elif e.mode == "stick":
+            e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
+    for _ in range(4 * len(s.elements) + 4):
+        s.refresh()
+        if not isinstance(e, Cord):
+            rows = {(i, 0): -rest * vn}
+            if e.rows == 2:
+                rows[(i, 1)] = 0.0
+        vp, lam = _kkt(s, q, v, t, rows)
+        lm = s.lam_of(lam, i)
+        if not isinstance(e, Cord) and e.rows == 2 and not e.holds(float(lm[0]), float(lm[1])):
+            e.mode = "slip" if isinstance(e, Rolls) else "slide"
+            e.sign = math.copysign(1.0, vt) if vt != 0 else -math.copysign(1.0, float(lm[1]))
+            continue
+        pull = _pulling(s, lam, i)
+        if pull is None:
+            break
+        release(*pull)
+        released.append(pull)
+    else:
+        raise NumericalError(f"the impact at t = {t:.6g} s could not be resolved (joints releasing each other)")
+    if isinstance(e, Cord):
+        return vp, -float(lm[0]), 0.0, released
+    F = e.friction(lm) if e.rows else 0.0
+    return vp, float(lm[0]), F, released
+
+
+def normal_acceleration(s, q, v, t, e) -> float:
+    """n·a of the contact point with the contact released (free flight towards the surface: < 0)."""
+    a, _, _ = s.solve(q, v, t)
+    if isinstance(e, Rolls):
+        i = e.body_point.body.index
+        return float(np.array(e.surface.n) @ np.array([a[i[0]], a[i[1]]]))
+    acc = e.P.jac(q, s.n) @ a + e.P.bias(q, v)
+    return float(e.normal(q) @ acc)

@@ -1,0 +1,182 @@
+"""What happens at an event: the joint set changes and the motion goes on (docs/types/scene.md).
+
+* ``separates``, ``leaves``: the contact (or rolling body) is released; its point is watched
+  for its return to the surface;
+* ``slack``: the cord's run has no row; its length is watched for the instant it is taut again;
+* ``slips``: a sticking contact slides (a rolling body slips) opposite to the friction it
+  would have needed, with kinetic friction μ_k N;
+* ``sticks``: a sliding contact (a slipping rolling body) whose slip speed reached 0 is held
+  and the static test |F| ≤ μ_s N decides: it sticks (rolls), or slides back (no event);
+* ``impact``: a released contact, a stop or a rolling body reaches its surface, ``taut``: a
+  slack cord is jerked taut (restitution 0, an inextensible cord): the velocities jump
+  (impulse.py); a contact with e = 0 stays made, one with e > 0 rebounds;
+* ``rests``: the accumulation rule of a bouncing point (Zeno: infinitely many impacts in a
+  finite time): when the rebound speed falls below √rtol × the first impact speed on that
+  joint (the bounce height below rtol × the first one), the remaining bounces are summed as
+  the geometric series of flight times, exact for a constant normal acceleration a_n:
+  t_rest = t + 2 v⁺ / (|a_n| (1 − e)), and the point is made to rest on the surface at once
+  (a plastic impact for the remaining normal speed).
+
+After each change the new joint set is made consistent at the same instant: a made contact
+that would pull is released, a cord that would push goes slack, friction past μ_s N slips.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import impulse, motion
+from .contacts import Contact, Rolls
+from .elements import Cord
+
+#: the most phases one solve follows; the motion stops there with a warning
+MAX_PHASES = 2000
+#: the most changes at one instant (phases of no length) before the solve gives up (exit 1)
+MAX_INSTANT = 50
+
+
+@dataclass
+class Phase:
+    t_start: float
+    t_end: float
+    joints: list
+    route: str
+
+    def as_dict(self) -> dict:
+        return {"t_start": self.t_start, "t_end": self.t_end, "joints": list(self.joints), "route": self.route}
+
+
+@dataclass
+class Impact:
+    t: float
+    joint: str
+    e: float
+    impulse: float                  # the normal impulse (N̂ ≥ 0), or a cord's impulsive tension
+    energy_loss: float              # T⁻ − T⁺
+    friction: float = 0.0           # the tangential impulse of a rough impact
+    v_normal: tuple = (0.0, 0.0)    # the normal speed of the point before and after
+
+    def as_dict(self) -> dict:
+        return {"t": self.t, "joint": self.joint, "e": self.e, "impulse": self.impulse,
+                "energy_loss": self.energy_loss, "impulse_F": self.friction,
+                "v_n_before": self.v_normal[0], "v_n_after": self.v_normal[1]}
+
+
+def joints_of(s) -> list[str]:
+    """The joints made in the current phase (a cord with at least one taut run)."""
+    return [e.name for e in s.elements if e.kind != "guide" and e.rows > 0]
+
+
+def element(s, name):
+    """The joint element called ``name``."""
+    return next((e for e in s.elements if e.name == name), None)
+
+
+class Transitions:
+    """The changes at the events of one solve (keeps the first impact speed of each joint for
+    the accumulation rule)."""
+
+    def __init__(self, system, traj, rtol: float):
+        self.s, self.traj, self.rtol = system, traj, rtol
+        self.first: dict[str, float] = {}
+
+    def event(self, t, joint, what) -> None:
+        self.traj.events.append(motion.Event(t, joint, what))
+
+    def after(self, t, q, v, hit):
+        """(q, v) after the event ``hit`` = (t, joint, what) and the changes it entails."""
+        s = self.s
+        _, joint, what = hit
+        if what != "switch":
+            v = self._change(t, q, v, element(s, joint), what)
+        s.refresh()
+        v = self.settle(t, q, v)
+        q = s.project_position(q, t)
+        return q, s.project_velocity(q, v, t)
+
+    def _change(self, t, q, v, e, what):
+        s = self.s
+        if what in ("separates", "leaves"):
+            impulse.release(e)
+            self.event(t, e.name, what)
+        elif what == "slack":
+            T = e.tensions(s.lam_of(s.solve(q, v, t)[1], s.elements.index(e)))
+            e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
+            self.event(t, e.name, what)
+        elif what == "slips":
+            F = e.friction(s.lam_of(s.solve(q, v, t)[1], s.elements.index(e)))
+            e.mode = "slip" if isinstance(e, Rolls) else "slide"
+            e.sign = -math.copysign(1.0, F)
+            self.event(t, e.name, what)
+        elif what == "sticks":
+            holds, sign = motion.stick_test(s, e, q, v, t)
+            if holds:
+                self.event(t, e.name, what)
+            else:
+                e.mode, e.sign = ("slip" if isinstance(e, Rolls) else "slide"), sign
+        elif what == "taut":
+            gaps = np.array(e.consts) - e.lengths(q)
+            run = min(e.slack, key=lambda r: abs(gaps[r]))
+            v = self._strike(t, q, v, e, 0.0, run, "taut")
+        elif what == "impact":
+            v = self._strike(t, q, v, e, e.e, None, "impact")
+        return v
+
+    def _strike(self, t, q, v, e, rest, run, what):
+        s = self.s
+        T1 = s.kinetic(v)
+        speed = (lambda w: -float(e.run_rate(q, w, run))) if isinstance(e, Cord) else (lambda w: e.normal_speed(q, w))
+        vn = speed(v)
+        vp, N, F, released = impulse.strike(s, q, v, t, e, rest, run)
+        self.event(t, e.name, what)
+        for el, _r in released:
+            self.event(t, el.name, "slack" if isinstance(el, Cord) else "separates")
+        vn2 = speed(vp)
+        hit = Impact(t, e.name, rest, N, T1 - s.kinetic(vp), F, (vn, vn2))
+        self.traj.impacts.append(hit)
+        if isinstance(e, Cord) or rest == 0:
+            return vp
+        first = self.first.setdefault(e.name, abs(vn))
+        if vn2 > math.sqrt(self.rtol) * first:
+            impulse.release(e)                          # it rebounds: the contact is open again
+            return vp
+        impulse.release(e)
+        s.refresh()
+        a_n = impulse.normal_acceleration(s, q, vp, t, e)
+        if not a_n < 0:                                 # not pressed back: it flies off slowly
+            return vp
+        t_rest = t + 2.0 * vn2 / (-a_n * (1.0 - rest)) if rest < 1 else math.inf
+        T2 = s.kinetic(vp)
+        vr, N2, F2, released = impulse.strike(s, q, vp, t, e, 0.0)
+        hit.impulse += N2
+        hit.friction += F2
+        hit.energy_loss += T2 - s.kinetic(vr)
+        self.event(t_rest, e.name, "rests")
+        return vr
+
+    def settle(self, t, q, v):
+        """Make the joint set consistent at t: release, slacken or slip what the new set would
+        make pull, push or exceed μ_s N (each an event), until nothing changes."""
+        s = self.s
+        for _ in range(4 * len(s.elements) + 4):
+            _, lam, _ = s.solve(q, v, t)
+            scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+            bad = None
+            for i, e in enumerate(s.elements):
+                if e.rows == 0 or not isinstance(e, (Contact, Rolls, Cord)):
+                    continue
+                for what, g in e.watch(s.lam_of(lam, i), q, v, t):
+                    if what in ("separates", "slack", "slips") and g < -1e-9 * scale:
+                        bad = (e, what)
+                        break
+                if bad:
+                    break
+            if bad is None:
+                return v
+            v = self._change(t, q, v, *bad)
+            s.refresh()
+            v = s.project_velocity(q, v, t)
+        return v
