@@ -4,10 +4,8 @@ Every numeric field takes a YAML number or a string holding a constant
 expression (``"pi/6"``, ``"sqrt(k/m)"``) evaluated with the problem's
 ``params`` (passed as validation context ``{"params": {...}}``).
 
-Declare a field as ``Annotated[<type>, <factory>(...)]`` (a form a type
-checker reads: the field is a plain ``float``, ``Vector``, ... to mypy, and
-the factory's :class:`FieldSpec` gives pydantic the validator and the JSON
-schema)::
+Declare a field as ``Annotated[<type>, <factory>(...)]``, a form mypy reads
+(the factory's :class:`dyncli.fieldspec.FieldSpec`: pydantic's validator and JSON schema)::
 
     m: Annotated[float, Num(gt=0, dim="mass")]            # float > 0
     e: Annotated[float, Num(ge=0, le=1)]                  # 0 <= e <= 1
@@ -17,7 +15,6 @@ schema)::
     a: Annotated[Expr, ExprField(("t", "s", "v"))]        # dyncli.expr.Expr
     omega: Annotated[ExprTriple, ExprVec3(("t",))]        # tuple of 3 Expr
     at: Annotated[list[float], Times()]                   # list of floats (may be empty)
-    find: Annotated[list[Any], Find()]
 
 ``dim`` is the physical dimension (used by docs, schema and units support).
 """
@@ -25,9 +22,8 @@ schema)::
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Callable, ClassVar, Iterable, Iterator, Optional
+from typing import Annotated, Any, ClassVar, Iterable, Optional
 
-from annotated_types import GroupedMetadata
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo
 from pydantic.functional_validators import PlainValidator
 from pydantic.json_schema import WithJsonSchema
@@ -35,6 +31,7 @@ from pydantic_core import PydanticCustomError
 
 from dyncli import expr as _expr
 from dyncli.errors import InputError
+from dyncli.fieldspec import FieldSpec
 
 NUMBER_SCHEMA: dict[str, Any] = {
     "anyOf": [
@@ -49,22 +46,6 @@ Vector = tuple[float, float, float]
 Matrix = tuple        # 3 rows, each a tuple of 3 floats (bare ``tuple``: the type pydantic has always been given)
 ExprTriple = tuple    # 3 :class:`dyncli.expr.Expr` (bare ``tuple``, as above)
 Expr = _expr.Expr
-
-
-class FieldSpec(GroupedMetadata):
-    """What a field factory returns: the validator and the JSON schema of one field, as the metadata
-    of ``Annotated[<type>, spec]``.  pydantic expands it (annotated-types' grouped metadata) into
-    ``PlainValidator(validate)`` and ``WithJsonSchema(json_schema)``; ``json_schema`` is also read
-    where the declarations are inspected (:mod:`dyncli.angles`, the loader's messages)."""
-
-    def __init__(self, validate: Callable[[Any, ValidationInfo], Any] | None, json_schema: dict[str, Any]) -> None:
-        self.validate = validate
-        self.json_schema = json_schema
-
-    def __iter__(self) -> Iterator[Any]:
-        if self.validate is not None:
-            yield PlainValidator(self.validate)
-        yield WithJsonSchema(self.json_schema)
 
 
 class StrictModel(BaseModel):
@@ -95,7 +76,7 @@ def _declared_dims(items: list[Any]) -> Iterable[str]:
     todo = list(items)
     while todo:
         item = todo.pop()
-        if isinstance(item, WithJsonSchema):
+        if isinstance(item, (FieldSpec, WithJsonSchema)):
             dim = item.json_schema.get("x-dimension") if isinstance(item.json_schema, dict) else None
             if dim:
                 yield dim
@@ -103,7 +84,7 @@ def _declared_dims(items: list[Any]) -> Iterable[str]:
         todo.extend(get_args(item))
 
 
-def _model_label(cls: type) -> str:
+def _model_label(cls: type[BaseModel]) -> str:
     """``type 'rectilinear' (Rectilinear)`` for a problem model, the class name for a part of one."""
     from typing import get_args
 

@@ -165,7 +165,7 @@ def test_a_misspelt_kind_is_an_error_at_declaration_naming_type_and_result():
 def test_a_misspelt_dimension_is_an_error_when_the_model_is_built_naming_type_and_field():
     from typing import Optional
 
-    from dyncli.fields import StrictModel, Vec3
+    from dyncli.fields import StrictModel, Vec3, Vector
     from dyncli.units import UnknownDimension
 
     with pytest.raises(UnknownDimension, match=r"type 'toy-typo' \(Typo\), field 'L': unknown dimension 'lenght' "
