@@ -59,6 +59,9 @@ class LoadedProblem:
     error: Diagnostic | None = None
     base_dir: Path | None = None
     swept: dict = field(default_factory=dict)     # path -> value of a --sweep point (dyncli.overrides)
+    chain: dict = field(default_factory=dict)     # params name -> dyncli.chain.Link: validated when solved
+    sources: dict = field(default_factory=dict)   # source index -> its LoadedProblem (dyncli.chain.link)
+    outcome: Any = field(default=None, repr=False, compare=False)   # (raw, Outcome) once solved (run.solve_one)
 
     def diagnostic(self, path: str | tuple | None, message: str) -> Diagnostic:
         """A diagnostic for a field path (dotted string or tuple) inside this problem."""
@@ -166,11 +169,24 @@ def validate(lp: LoadedProblem) -> None:
         return
     cls = registry.model_class(t)
     try:
+        if _pending(lp):
+            return
         params = params_of(raw)
     except InputError as exc:
         lp.error = lp.diagnostic(exc.path, exc.message)
         return
     lp.model, lp.error = validate_model(lp, cls, raw, params)
+
+
+def _pending(lp: LoadedProblem) -> bool:
+    """A problem with params taken from other problems' results (dyncli.chain): the chain is
+    checked now, the problem validated when solved.  Raises InputError."""
+    from dyncli import chain
+
+    found = chain.links(lp.raw)
+    chain.check(lp, found)
+    lp.chain, lp.model, lp.error = found, None, None
+    return bool(found)
 
 
 def _near_key(data: dict, word: str) -> Any:

@@ -30,6 +30,7 @@ import typing
 from dataclasses import dataclass, replace
 from typing import Any
 
+from dyncli.chain import link
 from dyncli.errors import InputError
 
 MAX_POINTS = 200_000
@@ -271,12 +272,12 @@ FAST_EXCLUDED = ("type", "title", "params", "g", "accuracy")
 
 
 def expand(problems: list, assigns: list[Assign]) -> list:
-    """One validated problem per (problem, point of the sweeps' product), in
-    input order; ``--set`` values apply to every point.  A problem that has
-    none of the swept fields appears once.  Raises :class:`OverrideError`
-    for a path that no problem has, or a product beyond ``MAX_POINTS``."""
+    """One validated problem per (problem, point of the sweeps' product), in input order; ``--set``
+    values apply to every point.  A problem that has none of the swept fields appears once (a chained
+    one once per point of its source: dyncli.chain.link).  Raises :class:`OverrideError` for a path
+    that no problem has, or a product beyond ``MAX_POINTS``."""
     if not assigns:
-        return list(problems)
+        return link(list(problems))
     for a in assigns:
         if not any(target(lp, a) for lp in problems):
             raise _unknown(problems, a)
@@ -287,7 +288,7 @@ def expand(problems: list, assigns: list[Assign]) -> list:
     out: list = []
     for lp in problems:
         out += _expand_one(lp, assigns)
-    return out
+    return link(out)
 
 
 def _no_path_twice(problems, assigns: list[Assign]) -> None:
@@ -348,7 +349,7 @@ def _fast(lp, base, sweeps, hits, points) -> list:
 
     points = list(points)
     first = _validated(lp, _with(base, sweeps, points[0]), _swept(sweeps, points[0]), hits)
-    if first.error is not None or len(points) == 1:
+    if first.error is not None or first.model is None or len(points) == 1:   # None: a chained problem
         return [first] + _full(lp, base, sweeps, hits, points[1:])
     model = first.model
     validator = type(model).__pydantic_validator__
@@ -395,8 +396,7 @@ def _validated(lp, raw: dict, swept: dict, hits):
 
 
 def _failed(lp, exc: InputError, hits, swept: dict | None = None):
-    new = replace(lp, model=None, swept=swept or {})
-    new.error = lp.diagnostic(exc.path, exc.message)
+    new = replace(lp, model=None, swept=swept or {}, error=lp.diagnostic(exc.path, exc.message))
     _blame(new.error, hits)
     return new
 

@@ -24,6 +24,24 @@ class Outcome:
 
 
 def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
+    """The outcome of ``lp``, kept on it for the problems that take a parameter from its results
+    (dyncli.chain); a chained problem is first given those values and validated."""
+    if lp.chain and lp.error is None:
+        from dyncli import chain
+
+        try:
+            ready = chain.resolve(lp, lambda src: solve_one(src, options))
+        except chain.Failure as exc:
+            outcome = Outcome(lp, None, exc.code, exc.message)
+        else:
+            outcome = _solve(ready, options)
+    else:
+        outcome = _solve(lp, options)
+    lp.outcome = (lp.raw, outcome)
+    return outcome
+
+
+def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
     from dyncli import registry
 
     options = options or SolveOptions()
@@ -321,5 +339,6 @@ def validate_command(files, sets=()) -> int:
         else:
             from dyncli.printable import line
 
-            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok"))
+            taken = ", ".join(f"{n} from problem {ln.source}'s {ln.path}" for n, ln in lp.chain.items())
+            print(line(f"{lp.file}: {lp.title} ({lp.type}): ok" + (f" (params {taken}: checked when solved)" if taken else "")))
     return worst(codes)

@@ -72,6 +72,9 @@ def seeds_by_type() -> dict[str, list[dict]]:
             continue
         items = data.get("problems") if isinstance(data, dict) and "problems" in data else [data]
         for item in items or []:
+            params = item.get("params") if isinstance(item, dict) else None
+            if isinstance(params, dict) and any(isinstance(v, dict) for v in params.values()):
+                continue        # a chained problem (a param from another problem's result): not standalone
             if isinstance(item, dict) and isinstance(item.get("type"), str):
                 out.setdefault(item["type"], []).append(item)
     return out

@@ -42,9 +42,11 @@ class Curve:
         self.y2 = tuple(derivative(e, "q") for e in self.y1)
         rot = p.rotation
         self.k = np.asarray(rot.axis, float) if rot else np.array([0.0, 0.0, 1.0])
+        # no omega: only steady queries, which find the rate (the curve's geometry is all they use)
         self.omega_expr = rot.omega if rot else None
         self.rotating = rot is not None
-        self.omega_const = None if rot is None or "t" in rot.omega.variables else float(rot.omega.value())
+        self.omega_const = (None if self.omega_expr is None or "t" in rot.omega.variables
+                            else float(rot.omega.value()))
         if self.omega_expr is not None and self.omega_const is None:
             self.omega_dot_expr = derivative(rot.omega, "t")
 

@@ -59,7 +59,15 @@ class Rotation(StrictModel):
     at the rate ω(t) (right-handed about ``axis``)."""
 
     axis: Annotated[Vector, Vec3(unit=True, description="direction of the fixed axis (unit vector)")] = (0.0, 0.0, 1.0)
-    omega: Annotated[Expr, ExprField(("t",), dim="angular_velocity", description="rate ω [rad/s]: number or expression in t")]
+    omega: Optional[Annotated[Expr, ExprField(("t",), dim="angular_velocity", description="rate ω [rad/s]: number or expression in t; "
+                                                                          "required unless the problem asks only steady queries")]] = None
+
+
+class SteadyQuery(StrictModel):
+    """A steady motion: the particle at rest relative to the curve at q, carried round the axis at the
+    constant rate ω that holds it there (with friction: the range of rates)."""
+
+    q: Annotated[float, Num(description="the parameter q where the particle stays")]
 
 
 class ConstrainedParticle(ProblemBase):
@@ -78,19 +86,37 @@ class ConstrainedParticle(ProblemBase):
     t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")]] = None
     at: Annotated[list[float], Times(description="times at which to report the state [s]; default [0, t_end]")] = Field(default_factory=list)
     find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {q: VALUE}}, {max: x.1}, {min: N.1}")
+    steady: list[SteadyQuery] = Field(
+        default_factory=list, max_length=1000,
+        description="steady motions solved for the rate that holds them: [{q: Q}, ...] on a curve turning about "
+                    "rotation.axis (the bead on a turning hoop, the conical pendulum, the banked curve)")
 
     accuracy_methods = ("auto", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
     @model_validator(mode="after")
     def _check(self):
-        check_times(self)
+        if self.steady_only:
+            if self.rotation is None:
+                raise InputError("steady motions need the axis the curve turns about: add rotation: {axis: [0, 0, 1]} "
+                                 "(the rate ω is what steady finds)", "steady")
+        else:
+            if self.rotation is not None and self.rotation.omega is None:
+                raise InputError("give the rate ω of the turning curve (a number or an expression in t); only a "
+                                 "problem that asks steady queries alone (no at, t_end or find) may leave it out",
+                                 "rotation.omega")
+            check_times(self)
         if self.q_range is not None:
             if len(self.q_range) != 2 or not self.q_range[0] < self.q_range[1]:
                 got = ", ".join(f"{v:g}" for v in self.q_range)
                 raise InputError(f"q_range must be [q_min, q_max] with q_min < q_max, got [{got}]", "q_range")
             if not all(math.isfinite(v) for v in self.q_range):
                 raise InputError("q_range must be finite: give the two ends of the wire as numbers", "q_range")
-            if not self.q_range[0] <= self.q0 <= self.q_range[1]:
+            if not self.steady_only and not self.q_range[0] <= self.q0 <= self.q_range[1]:
                 raise InputError(f"q0 = {self.q0:g} is outside q_range [{self.q_range[0]:g}, {self.q_range[1]:g}]: "
                                  "start on the wire, or widen q_range", "q0")
         return self
+
+    @property
+    def steady_only(self) -> bool:
+        """Only steady queries: no motion to solve (no at, t_end or find)."""
+        return bool(self.steady) and not self.at and self.t_end is None and not self.find

@@ -24,7 +24,7 @@ from dyncli import ode, runner
 from dyncli.errors import InputError
 from dyncli.result import Result, Series, SolveOptions
 
-from . import dynamics, equilibria
+from . import dynamics, equilibria, steady
 from .curve import Curve
 from .report import SERIES, assemble, equation_numbers
 
@@ -54,8 +54,11 @@ def quadrature_applies(p, curve) -> bool:
 
 def solve(p, options: SolveOptions | None = None) -> Result:
     curve = Curve(p)
+    if p.steady_only:
+        return _steady_only(p, curve)
     _check_curve(p, curve)
     model = dynamics.Model(p, curve)
+    steadies = steady.answers(p, model) if p.steady else None     # refused before the motion is solved
     meth = p.accuracy.method
     use_quad = meth == "quadrature" or (meth == "auto" and quadrature_applies(p, curve))
     if meth == "quadrature" and not quadrature_applies(p, curve):
@@ -84,11 +87,26 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
                     find.ode_breaks(res.extra.pop("breaks_of")), SERIES, subdivide=1)
     equilibria.add(res, p, model)
+    if steadies is not None:
+        steady.add(res, steadies)
+    _no_forces(res, p)
+    return res
+
+
+def _steady_only(p, curve) -> Result:
+    """Only steady queries: the rates that hold the particle, no motion (steady.py)."""
+    model = dynamics.Model(p, curve)
+    res = Result({}, method="closed-form", equations=["16.7", "11.11", "18.4"] + (["19.27"] if model.mu else []))
+    steady.add(res, steady.answers(p, model))
+    _no_forces(res, p)
+    return res
+
+
+def _no_forces(res, p) -> None:
     if not p.forces:
         res.warn("no forces: the particle moves under the curve's reaction alone (no gravity)"
                  + (", carried round by the turning curve" if p.rotation is not None else "")
                  + "; if it has weight, add {kind: gravity} to forces")
-    return res
 
 
 def _ode_method(p):

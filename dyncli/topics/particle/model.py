@@ -135,6 +135,12 @@ def check_times(p) -> None:
         p.at = [0.0, p.t_end]
 
 
+class SteadyAxis(StrictModel):
+    """A steady circular motion about the fixed axis through the origin along ``axis``, at x0."""
+
+    axis: Annotated[Vector, Vec3(unit=True, description="direction of the axis through the origin (unit vector)")] = (0.0, 0.0, 1.0)
+
+
 class Particle(ProblemBase):
     """A particle of mass m under the listed forces (problem II of §16)."""
 
@@ -151,9 +157,20 @@ class Particle(ProblemBase):
 
     accuracy_methods = ("auto", "exact", "ode", "DOP853", "RK45", "Radau", "LSODA")
 
+    steady: list[SteadyAxis] = Field(
+        default_factory=list, max_length=100,
+        description="steady circular motions at x0 solved for their rate: [{axis: [0, 0, 1]}] (the forces must be "
+                    "centripetal there: a circular orbit, a puck on a spring)")
+
+    @property
+    def steady_only(self) -> bool:
+        """Only steady queries: no motion to solve (no at, t_end or find)."""
+        return bool(self.steady) and not self.at and self.t_end is None and not self.find
+
     @model_validator(mode="after")
     def _check(self):
-        check_times(self)
+        if not self.steady_only:
+            check_times(self)
         for i, f in enumerate(self.forces):
             if isinstance(f, InverseSquare) and math.dist(f.center, self.x0) == 0:
                 raise InputError("x0 is at the centre of the inverse-square field (R = 0, infinite force): "

@@ -36,6 +36,21 @@ def _ode_method(p) -> str:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
+    """The motion, and the steady circular motions of ``steady`` (steady.py; alone: no motion)."""
+    from . import steady
+
+    F = Forces(p)
+    entries = steady.answers(p, F) if p.steady else None      # refused before the motion is solved
+    if p.steady_only:
+        res = Result({}, method="closed-form", equations=["16.7", "11.11"])
+    else:
+        res = _motion(p)
+    if entries is not None:
+        res.results["steady"] = entries
+    return res
+
+
+def _motion(p) -> Result:
     from . import find, orbit
 
     p = motion_find.extended(p)             # the motion runs to the end of every window searched (§11)

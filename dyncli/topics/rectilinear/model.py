@@ -6,7 +6,9 @@ from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
+from dyncli.errors import InputError
 from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel
+from dyncli.topics.rectilinear.springs import LineSpring
 
 
 class Query(StrictModel):
@@ -66,5 +68,15 @@ class Rectilinear(ProblemBase):
     v1: Annotated[float, Num(dim="velocity")] = 0.0
     find: list[Query] = Field(default_factory=list, description="queries: {t: T}, {v: V}, {s: S}, {when: {s: S}}, {max: s}, {min: v}")
     t_max: Annotated[float, Num(gt=0, dim="time")] = 1000.0
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass [kg]: needed with springs")]] = None
+    springs: list[LineSpring] = Field(
+        default_factory=list, max_length=100,
+        description="springs along the line, [{k, anchor, L, one_sided}]: their acceleration is added to a")
+
+    @model_validator(mode="after")
+    def _springs_need_m(self):
+        if self.springs and self.m is None:
+            raise InputError("springs need the body's mass m (their acceleration is the force over m): give m", "m")
+        return self
 
     accuracy_methods = ("auto", "closed-form", "quadrature", "ode", "DOP853", "RK45", "Radau", "LSODA")

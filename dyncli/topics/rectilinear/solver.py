@@ -103,6 +103,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     by :mod:`.find` on that route's motion."""
     from dyncli.topics.rectilinear import find
 
+    if p.springs:                     # the springs' acceleration joins a (springs.py); the input stays as given
+        from dyncli.topics.rectilinear.springs import with_springs
+
+        p = p.model_copy(update={"a": with_springs(p.a, p.springs, float(p.m))})
     legacy, generic = find.split(p)
     q, index = _distinct(p, legacy)
     res = _solve(q)

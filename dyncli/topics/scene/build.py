@@ -172,15 +172,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
         elif kind in ("contact", "stop"):
-            P = R.point(a[0], path + ".0")
-            s = R.surface(a[1], path + ".1")
-            mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
-            mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
-            if j.get("mu_k") is not None and j.get("mu_s") is None:
-                mu_s = mu_k
-            mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
-            out.append(contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
-                                  e=float(j.get("e") or 0.0), stop=kind == "stop"))
+            out.append(_contact(name, kind, j, R, path, n))
         elif kind == "rolls":
             b = R.body(a[0], path + ".0")
             _rigid(b, "rolling", path + ".0")
@@ -205,6 +197,21 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "cord":
             cords.append((name, j))
     return out, cords
+
+
+def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
+    """A contact (or a stop: made only at an impact) of a point on a straight surface, with its
+    friction coefficients (mu for both, or mu_s / mu_k; one given stands for the other)."""
+    a = j[kind]
+    P = R.point(a[0], path + ".0")
+    s = R.surface(a[1], path + ".1")
+    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+    if j.get("mu_k") is not None and j.get("mu_s") is None:
+        mu_s = mu_k
+    mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
+    return contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
+                            e=float(j.get("e") or 0.0), stop=kind == "stop")
 
 
 def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:
