@@ -58,7 +58,7 @@ def term(sp: LineSpring, m: float) -> tuple[tuple, str]:
     dt = f"(s - {sp.anchor:.17g})" if sp.anchor else "s"
     kt = f"{sp.k / m:.17g}"
     if sp.one_sided == "compression":
-        ir = ("mul", ("mul", km, _call("max", ("sub", _num(sp.L), length), _num(0))), sign)
+        ir: tuple = ("mul", ("mul", km, _call("max", ("sub", _num(sp.L), length), _num(0))), sign)
         return ir, f"{kt}*max({sp.L:.17g} - abs({dt}), 0)*sign({dt})"
     if sp.one_sided == "tension":
         ir = ("neg", ("mul", ("mul", km, _call("max", ("sub", length, _num(sp.L)), _num(0))), sign))
