@@ -66,12 +66,14 @@ def solve(
     sweep: List[str] = typer.Option([], "--sweep", metavar="PATH=LO:HI:N|V1,V2",
                                     help="Solve for each value (N points, ends included, or a list); several: their product."),
     long: bool = typer.Option(False, "--long", help="With --format csv: one row per time (a 't' column) for lists over 'at'."),
+    wide: bool = typer.Option(False, "--wide", help="Tables at their natural width (piped output is otherwise "
+                                                    "fitted to COLUMNS, or 100 columns)."),
 ):
     """Solve problem files and print the results."""
     from dyncli.run import solve_command
 
     raise typer.Exit(solve_command(files, format.value, symbolic=symbolic, digits=digits, units=units, plot=plot,
-                                   sets=set_, sweeps=sweep, long=long, debug=_state["debug"]))
+                                   sets=set_, sweeps=sweep, long=long, debug=_state["debug"], wide=wide))
 
 
 @app.command()

@@ -16,7 +16,10 @@ nothing of any topic and draw it from these generic pieces:
   ``Series("t", times, ["x", "v", "w"])`` -> one table with a row per time;
 * ``views``: extra tables (:class:`FrameTable`, :class:`Table`, :class:`Equations`), e.g. the
   δ/δt table of rotating-frame kinematics; ``covered`` names the results a
-  type's views present in readable form, so the tables skip their raw nesting.
+  type's views present in readable form, so the tables skip their raw nesting;
+* ``scales``: results the tables show relative to a scale (``energy_residual``
+  against the energies it balances); JSON, YAML and CSV keep the absolute value;
+* ``notes``: conventions stated in the title of the results table (the range of a phase).
 """
 
 from __future__ import annotations
@@ -114,6 +117,11 @@ class Result:
     # results the ``views`` present in the tables (the terminal and document views show the
     # views instead of the raw nesting; JSON, YAML and CSV hold every result as always)
     covered: list[str] = field(default_factory=list)
+    # results the tables show relative to a scale (name -> the scale, in the result's SI unit), e.g.
+    # an energy balance's residual against the energies it balances; JSON keeps the absolute value
+    scales: dict[str, float] = field(default_factory=dict)
+    # conventions the tables state above the results (one line each), e.g. the range of a phase
+    notes: list[str] = field(default_factory=list)
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:

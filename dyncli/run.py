@@ -230,7 +230,7 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str]):
 
 
 def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot=None, sets=(), sweeps=(),
-                  long=False, debug=False) -> int:
+                  long=False, debug=False, wide=False) -> int:
     """``dyncli solve``: the exit code."""
     import sys
 
@@ -250,13 +250,15 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         problems, codes = loaded
         if symbolic:
             _symbolic_notes(fmt, problems)
-        outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug,
-                              emit.TableWriter(digits, wanted) if fmt == "table" else None)
-        if fmt != "table":
+        writer = emit.TableWriter(digits, wanted, wide, sweep=bool(sweeps)) if fmt == "table" else None
+        outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug, writer)
+        if writer is not None:
+            writer.close()
+        else:
             sys.stdout.write(emit.dumps(fmt, outcomes, digits, wanted, long))
     if plot:
         codes.append(_plot(outcomes, plot))
-    if fmt in ("json", "yaml", "csv"):
+    if fmt in ("json", "yaml", "csv") or (fmt == "table" and sweeps):      # a sweep's table: rows only
         for o in outcomes:
             for w in (o.result.warnings if o.result is not None else []):
                 _err(f"{o.problem.file}: {o.problem.title}: warning: {w}")

@@ -8,10 +8,11 @@
   raises :class:`ClosedPipe` (the command then ends quietly with exit 0), any
   other failure (``> /dev/full``) :class:`OutputFailed` (one line, exit 2);
   :func:`finish` flushes and maps both;
-* :func:`table_width`: the terminal's width in a terminal, the tables'
-  natural width otherwise (never an assumed 80 columns); ``COLUMNS`` is
-  honoured when it holds a number of at least :data:`MIN_COLUMNS` (a
-  narrower width could show no value: it is treated as unknown);
+* :func:`table_width`: the terminal's width in a terminal, else
+  :data:`DEFAULT_WIDTH` (100) columns, or the tables' natural width with
+  ``--wide``; ``COLUMNS`` is honoured when it holds a number of at least
+  :data:`MIN_COLUMNS` (a narrower width could show no value: it is treated
+  as unknown);
 * :func:`write_file`: a whole output file (``-o FILE``) written atomically —
   a reader or a concurrent run sees the old file or the new one, never a
   part of one.
@@ -26,6 +27,8 @@ import sys
 import unicodedata
 
 NATURAL_WIDTH = 100_000
+#: the width of the tables off a terminal when ``COLUMNS`` does not say (``--wide``: natural width)
+DEFAULT_WIDTH = 100
 #: a COLUMNS (or terminal) narrower than this is unusable for the tables
 #: (values would be cut to "…"): treated as unknown
 MIN_COLUMNS = 40
@@ -182,9 +185,12 @@ def finish(code: int, exc: BaseException | None = None) -> int:
     return code
 
 
-def table_width() -> int:
-    """COLUMNS when it is a usable width; else the terminal's width (when at
-    least MIN_COLUMNS, else 80) in a terminal, the natural width elsewhere."""
+def table_width(wide: bool = False) -> int | None:
+    """The tables' width: None (their natural width) with ``--wide``; else
+    COLUMNS when it is a usable width; else the terminal's width (when at
+    least MIN_COLUMNS, else 80) in a terminal, DEFAULT_WIDTH elsewhere."""
+    if wide:
+        return None
     cols = os.environ.get("COLUMNS", "").strip()
     if cols.isdigit() and MIN_COLUMNS <= int(cols) < NATURAL_WIDTH:
         return int(cols)
@@ -194,7 +200,7 @@ def table_width() -> int:
         except (OSError, AttributeError, ValueError):
             return 80
         return width if width >= MIN_COLUMNS else 80
-    return NATURAL_WIDTH
+    return DEFAULT_WIDTH
 
 
 def write_file(path: str, text: str) -> None:

@@ -2,8 +2,9 @@
 the Python API share it).
 
 The table view goes straight to a terminal (colour, the terminal's width);
-anywhere else it is laid out at its natural width (``COLUMNS`` when set) and
-written without trailing spaces, so a pipe or a file holds the same rows.
+anywhere else it is laid out by dyncli's own tables (:mod:`dyncli.render.plain`,
+no rich) at ``COLUMNS`` or 100 columns (``--wide``: natural width) and written
+without trailing spaces, so a pipe or a file holds the same rows.
 """
 
 from __future__ import annotations
@@ -12,9 +13,9 @@ import io
 import os
 import sys
 
+
 class _Buffer(io.StringIO):
-    """A StringIO that reports stdout's encoding (rich picks box characters
-    the real stdout can show)."""
+    """A StringIO that reports stdout's encoding."""
 
     def __init__(self, encoding: str):
         super().__init__()
@@ -25,32 +26,55 @@ class _Buffer(io.StringIO):
         return self._encoding
 
 
+def _out(file, width, terminal: bool):
+    from dyncli.render.plain import Out
+
+    return Out(file, width, terminal, getattr(file, "encoding", None) or "utf-8", bool(os.environ.get("NO_COLOR")))
+
+
 class TableWriter:
-    """The terminal view, problem by problem (streamed)."""
+    """The terminal view, problem by problem (streamed); with ``sweep``, one
+    wide table of rows per problem (:mod:`dyncli.render.sweeptable`),
+    printed by :meth:`close`."""
 
-    def __init__(self, digits: int, units: list[str] | None):
-        from rich.console import Console
-
+    def __init__(self, digits: int, units: list[str] | None, wide: bool = False, sweep: bool = False):
         from dyncli import stdio
 
         self.digits, self.units = digits, units
         self.tty = stdio._isatty()
         self.ascii = not stdio.is_utf(sys.stdout)
         self.buf = None if self.tty else _Buffer(getattr(sys.stdout, "encoding", None) or "utf-8")
-        self.console = Console(file=self.buf, width=stdio.table_width(), no_color=bool(os.environ.get("NO_COLOR")),
-                               highlight=False, soft_wrap=False)
+        self.console = _out(sys.stdout if self.tty else self.buf, stdio.table_width(wide), self.tty)
+        self.sweep = None
+        if sweep:
+            from dyncli.render.sweeptable import SweepTable
+
+            self.sweep = SweepTable(self.console, digits, units)
 
     def write(self, lp, result) -> None:
         from dyncli import stdio
         from dyncli.render.table import render
 
+        if self.ascii:
+            lp, result = _titled(lp, stdio.ascii_text(lp.title)), stdio.ascii_copy(result)
+        if self.sweep is not None:
+            self.sweep.write(lp, result)
+            return
         if getattr(lp, "swept", None):
             from dyncli.render.view import swept_label
 
             lp = _titled(lp, lp.title + swept_label(lp.swept, self.digits))
-        if self.ascii:
-            lp, result = _titled(lp, stdio.ascii_text(lp.title)), stdio.ascii_copy(result)
         render(self.console, lp, result, self.digits, self.units)
+        self._flush()
+
+    def close(self) -> None:
+        if self.sweep is not None:
+            self.sweep.close()
+            self._flush()
+
+    def _flush(self) -> None:
+        from dyncli import stdio
+
         if self.buf is not None:
             stdio.write_lines(self.buf.getvalue())
             self.buf.seek(0)
@@ -59,14 +83,10 @@ class TableWriter:
 
 def table_text(lp, result, digits: int = 6, units: list[str] | None = None) -> str:
     """The terminal view of one problem as plain text at its natural width."""
-    from rich.console import Console
-
-    from dyncli import stdio
     from dyncli.render.table import render
 
     buf = io.StringIO()
-    render(Console(file=buf, width=stdio.NATURAL_WIDTH, no_color=True, highlight=False, soft_wrap=False),
-           lp, result, digits, units)
+    render(_out(buf, None, False), lp, result, digits, units)
     return "\n".join(line.rstrip() for line in buf.getvalue().split("\n"))
 
 
@@ -137,22 +157,18 @@ def dumps(fmt: str, outcomes, digits: int = 6, units: list[str] | None = None, l
 
 
 def write_view(draw, output: str | None = None) -> None:
-    """A rich view drawn by ``draw(console)`` (the ``check`` reports): straight
-    to a terminal; to a pipe, or to the file ``output``, laid out at its
-    natural width (``COLUMNS`` when set, for a pipe) and written without
-    trailing spaces, like the tables of ``solve``.  OSError from ``output``
-    propagates."""
-    from rich.console import Console
-
+    """A view drawn by ``draw(console)`` (the ``check`` reports): straight
+    to a terminal; to a pipe laid out at the tables' width
+    (:func:`dyncli.stdio.table_width`), to the file ``output`` at its
+    natural width, written without trailing spaces like the tables of
+    ``solve``.  OSError from ``output`` propagates."""
     from dyncli import stdio
-    from dyncli.render.table import make_console
 
     if output is None and stdio._isatty():
-        draw(make_console())
+        draw(_out(sys.stdout, stdio.table_width(), True))
         return
     buf = _Buffer("utf-8" if output else (getattr(sys.stdout, "encoding", None) or "utf-8"))
-    width = stdio.NATURAL_WIDTH if output else stdio.table_width()
-    draw(Console(file=buf, width=width, no_color=True, highlight=False, soft_wrap=False))
+    draw(_out(buf, None if output else stdio.table_width(), False))
     text = "\n".join(line.rstrip() for line in buf.getvalue().split("\n"))
     if output:
         stdio.write_file(output, text)

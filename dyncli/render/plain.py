@@ -1,166 +1,373 @@
-"""A fast, plain-text layout of the simple rich tables of the terminal view,
-character for character what rich prints without colour.
+"""dyncli's own tables: the terminal view's tables and lines, laid out
+without the table library.
 
-Laying out a table with rich measures every cell several times (about 7 ms
-for a typical problem); a batch of problems or a sweep piped to a file spends
-most of its time there.  When the output is not a terminal (no colour, no
-terminal width to fit), :func:`print_table` writes the same lines directly:
-the columns at the width of their widest cell, a space of padding on each
-side, the header rule of ``box.SIMPLE``/``box.SIMPLE_HEAD``, the title and
-caption centred.  Any table outside that subset (another box, row lines, a
-title wider than the table, a table wider than the console, a column with a
-fixed width, non-UTF output) is printed by rich as before;
-``tests/api/test_plain_tables.py`` checks the two agree on every example.
+The views (:mod:`dyncli.render.table`, the ``check`` reports) build
+:class:`Table` and :class:`Text` objects of this module (the small part of
+rich's API they use) and print them on an :class:`Out`:
+
+* off a terminal (a pipe, a file, ``-o``) :func:`lines` lays them out
+  directly — rich is never imported: a 10,000-point sweep or a batch prints
+  at the speed of JSON;
+* on a terminal each fitted table is drawn by rich (colour, styles) from the
+  same cells, so the characters are the same (``tests/api/test_plain_tables.py``
+  compares the two on every example).
+
+Every table is fitted to the output's width first (:func:`fit`): a cell too
+wide is broken at a space outside a vector (``[a, b, c]`` is never cut), a
+table still too wide is split into several whose first column repeats
+(``(continued)``); a title or caption is one line, centred over its table,
+never wrapped; a line of text wider than the width is broken between words.
 """
 
 from __future__ import annotations
 
-from typing import Any
+import re
+import unicodedata
 
+SIMPLE, SIMPLE_HEAD, SQUARE = "simple", "simple_head", "square"
 ENABLED = True     # the tests switch it off to compare with rich
-_SIMPLE = None
 
 
-def _simple_boxes():
-    global _SIMPLE
-    if _SIMPLE is None:
-        from rich import box
-
-        _SIMPLE = (box.SIMPLE, box.SIMPLE_HEAD, box.SQUARE)
-    return _SIMPLE
+class box:  # noqa: N801 - rich's spelling (``box.SIMPLE_HEAD``)
+    SIMPLE, SIMPLE_HEAD, SQUARE = SIMPLE, SIMPLE_HEAD, SQUARE
 
 
-def _square(table) -> bool:
-    return table.box is _simple_boxes()[2]
+def cell_len(text: str) -> int:
+    """Columns a string takes in a terminal: wide (East Asian) characters 2,
+    combining marks and control characters 0."""
+    if text.isascii():
+        return len(text)
+    n = 0
+    for ch in text:
+        o = ord(ch)
+        if o < 32 or 0x7F <= o < 0xA0 or unicodedata.combining(ch) or unicodedata.category(ch) in ("Mn", "Me"):
+            continue
+        n += 2 if unicodedata.east_asian_width(ch) in ("W", "F") else 1
+    return n
 
 
-def _plain(x: Any) -> str | None:
-    """The text a cell shows (rich markup rendered), None for a renderable
-    that is not a string or text that rich would lay out differently."""
-    from rich.cells import cell_len
+class Text:
+    """A line of styled text: ``plain`` and its (text, style) spans."""
 
-    if isinstance(x, str):
-        if "[" not in x and "\\" not in x:
-            text = x
-        else:
-            from rich.markup import render
+    __slots__ = ("plain", "spans", "style")
 
-            text = render(x).plain
-        if "\t" in text or "\r" in text:          # rich expands these itself
-            return None
-        # rich trims spaces at line ends and keeps zero-width marks its own way: leave those to it
-        if any(ln != ln.strip(" ") or (ln and cell_len(ln[0]) == 0) for ln in text.split("\n")):
-            return None
-        return text
-    return None
+    def __init__(self, text: str = "", style: str = ""):
+        self.plain, self.style = text, style
+        self.spans = [(text, style)] if text else []
+
+    def append(self, text: str, style: str = "") -> "Text":
+        self.plain += text
+        self.spans.append((text, style))
+        return self
 
 
-def _fits(table, console) -> bool:
-    if table.box not in _simple_boxes() or not table.show_header or table.show_footer:
+class Column:
+    __slots__ = ("header", "justify", "style", "no_wrap", "overflow", "cells")
+
+    def __init__(self, header, justify="left", style="", no_wrap=False, overflow="fold"):
+        self.header, self.justify, self.style = header, justify, style
+        self.no_wrap, self.overflow, self.cells = no_wrap, overflow, []
+
+
+class Table:
+    """A table with a header row: ``box`` SIMPLE/SIMPLE_HEAD (a rule under the
+    header) or SQUARE (a frame, a rule between rows when ``show_lines``)."""
+
+    def __init__(self, title=None, caption=None, box=SIMPLE_HEAD, header_style="bold", pad_edge=True,
+                 show_lines=False, show_edge=True, show_header=True, split=False):
+        #: ``split``: a table too wide continues in further tables (its first column repeated)
+        #: instead of breaking its cells (a table of records, a wide view)
+        self.split = split
+        self.title, self.caption, self.box, self.header_style = title, caption, box, header_style
+        self.pad_edge, self.show_lines, self.show_edge = pad_edge, show_lines, show_edge
+        self.columns: list[Column] = []
+        self.n_rows = 0
+
+    def add_column(self, header="", justify="left", style="", no_wrap=False, overflow="fold") -> None:
+        self.columns.append(Column(header, justify, style, no_wrap, overflow))
+
+    def add_row(self, *cells) -> None:
+        for c, x in zip(self.columns, cells):
+            c.cells.append(x)
+        for c in self.columns[len(cells):]:
+            c.cells.append("")
+        self.n_rows += 1
+
+
+def _text(x) -> str:
+    return x.plain if isinstance(x, Text) else ("" if x is None else str(x))
+
+
+def _clean(s: str) -> str:
+    """A cell's lines without trailing spaces (and without a last empty line), as rich draws them."""
+    s = "\n".join(ln.rstrip() for ln in s.split("\n"))
+    return s[:-1] if s.endswith("\n") else s
+
+
+# ------------------------------------------------------------------ fitting
+
+def _breaks(text: str) -> list[int]:
+    """Positions of the spaces a cell may break at: never inside an innermost
+    bracket pair (a vector, a tensor row)."""
+    out, depth, inner = [], 0, []
+    opened: list[int] = []
+    for i, ch in enumerate(text):
+        if ch in "[(":
+            opened.append(i)
+            depth += 1
+        elif ch in "])" and opened:
+            start = opened.pop()
+            inner.append((start, i))
+            depth -= 1
+        elif ch == " ":
+            out.append(i)
+    # an innermost pair holds no other pair
+    atoms = [(a, b) for a, b in inner if not any(a < c and d < b for c, d in inner)]
+    return [i for i in out if not any(a < i < b for a, b in atoms)]
+
+
+def wrap(text: str, width: int) -> str:
+    """``text`` broken at allowed spaces into lines of at most ``width``
+    columns where it can (a piece that cannot be broken stays whole); a
+    value (``[...]``, ``name: value, ...``) only after its commas."""
+    out = []
+    for line in text.split("\n"):
+        while cell_len(line) > width:
+            allowed = _breaks(line)
+            if line.startswith("[") or _VALUE.match(line):
+                allowed = [i for i in allowed if line[i - 1] == ","]
+            cuts = [i for i in allowed if cell_len(line[:i]) <= width]
+            if not cuts:
+                cuts = allowed[:1]
+                if not cuts:
+                    break
+            i = cuts[-1]
+            out.append(line[:i].rstrip())
+            line = line[i:].lstrip()
+        out.append(line)
+    return "\n".join(out)
+
+
+_VALUE = re.compile(r"^[^ ]+: [-\[\d]")
+
+
+def _min_width(text: str) -> int:
+    return max((cell_len(p) for ln in text.split("\n") for p in wrap(ln, 1).split("\n")), default=0)
+
+
+def _width(col: Column, texts: list[str]) -> int:
+    return max([cell_len(ln) for x in [_clean(_text(col.header))] + texts for ln in x.split("\n")])
+
+
+def _total(table: Table, widths: list[int]) -> int:
+    edge = 2 if table.pad_edge else 0
+    return sum(widths) + 3 * max(len(widths) - 1, 0) + edge + (2 if table.show_edge else 0)
+
+
+def fit(table: Table, width: int | None) -> list[Table]:
+    """The table fitted to ``width`` columns (None: natural width): cells
+    broken at spaces outside vectors, then the columns split into several
+    tables (the first column repeated) when it is still too wide."""
+    cols = table.columns
+    texts = [[_clean(_text(x)) for x in c.cells] for c in cols]
+    widths = [_width(c, t) for c, t in zip(cols, texts)]
+    if width is None or _total(table, widths) <= width or not cols:
+        return [table]
+    if table.split and len(cols) > 2:
+        return _split_table(table, texts, widths, width)
+    for k in sorted(range(len(cols)), key=lambda k: -widths[k]):
+        excess = _total(table, widths) - width
+        if excess <= 0:
+            break
+        if cols[k].no_wrap:
+            continue
+        floor = max([_min_width(_text(cols[k].header))] + [_min_width(x) for x in texts[k]])
+        target = max(floor, widths[k] - excess, 8)
+        if target < widths[k]:
+            texts[k] = [wrap(x, target) for x in texts[k]]
+            widths[k] = _width(cols[k], texts[k])
+    return [_rebuilt(table, list(range(len(cols))), texts, table.title)]
+
+
+def _is_label(text: str) -> bool:
+    """A cell that names a row (a body, a point), not a number."""
+    try:
+        float(text.replace("−", "-"))
         return False
-    if table.show_lines if not _square(table) else not table.pad_edge:     # SQUARE: the frame views
-        return False
-    if table.expand or table.width is not None or table.min_width or table.leading or table.row_styles:
-        return False
-    if tuple(table.padding) != (0, 1, 0, 1) or not table.show_edge or table.collapse_padding:
-        return False
-    if console.is_terminal or not (console.encoding or "").lower().replace("-", "").startswith("utf"):
-        return False
-    return all(c.width is None and c.min_width is None and c.max_width is None and c.ratio is None
-               and c.justify in ("left", "right") and c.vertical == "top" for c in table.columns)
+    except ValueError:
+        return text not in ("", "—", "⋮") and not text.startswith("[")
 
 
-def _columns(table, cell_len) -> list | None:
-    """(header, cell lines per row, width, justify) per column, or None."""
-    cols = []
-    for c in table.columns:
-        head = _plain(c.header)
-        texts = [_plain(x) for x in c._cells]
-        if head is None or "\n" in head or any(x is None for x in texts):
-            return None
-        cells = [x.split("\n") for x in texts if x is not None]
-        width = max([cell_len(head)] + [cell_len(ln) for lines in cells for ln in lines])
-        if width == 0:
-            return None                       # rich keeps a column of width 0 its own way
-        cols.append((head, cells, width, c.justify))
-    return cols
+def _split_table(table: Table, texts, widths, width) -> list[Table]:
+    """Columns too wide for a table of their own (with the first) broken,
+    then the columns packed into tables that fit ``width``; each repeats
+    the first column (and the second when it names the rows: ``body``)."""
+    keys = [0, 1] if len(widths) > 3 and texts[1] and all(_is_label(x) for x in texts[1]) else [0]
+    for k in range(len(keys), len(widths)):
+        room = width - _total(table, [widths[i] for i in keys] + [0])
+        if widths[k] > room and not table.columns[k].no_wrap:
+            texts[k] = [wrap(x, max(room, 8)) for x in texts[k]]
+            widths[k] = _width(table.columns[k], texts[k])
+    groups: list[list[int]] = [[]]
+    for k in range(len(keys), len(widths)):
+        trial = keys + groups[-1] + [k]
+        if groups[-1] and _total(table, [widths[i] for i in trial]) > width:
+            groups.append([])
+        groups[-1].append(k)
+    out = []
+    for g, ks in enumerate(groups):
+        title = table.title if g == 0 else (f"{table.title} (continued)" if table.title else None)
+        out.append(_rebuilt(table, keys + ks, texts, title, caption=g == len(groups) - 1))
+    return out
 
 
-def layout(table, console) -> list[str] | None:
-    """The lines rich prints for ``table`` on ``console``, or None when the
-    table is outside the supported subset."""
-    from rich.cells import cell_len
+def _rebuilt(table: Table, ks: list[int], texts, title, caption: bool = True) -> Table:
+    t = Table(title, table.caption if caption else None, table.box, table.header_style, table.pad_edge,
+              table.show_lines, table.show_edge)
+    for k in ks:
+        c = table.columns[k]
+        t.add_column(c.header, c.justify, c.style, c.no_wrap, c.overflow)
+        t.columns[-1].cells = [x if isinstance(x, Text) and _text(x) == s else
+                               (Text(s, x.style or (x.spans[0][1] if x.spans else "")) if isinstance(x, Text) else s)
+                               for x, s in zip(c.cells, texts[k])]
+    t.n_rows = table.n_rows
+    return t
 
-    if not _fits(table, console) or any(r.end_section for r in table.rows[:-1]):
-        return None
-    cols = _columns(table, cell_len)
-    if cols is None:
-        return None
-    square = _square(table)
+
+# ------------------------------------------------------------------ layout
+
+def lines(table: Table) -> list[str]:
+    """The lines of a fitted table (title and caption included), as rich
+    draws them without colour."""
+    title, body, caption = parts(table)
+    return title + body + caption
+
+
+def parts(table: Table) -> tuple[list[str], list[str], list[str]]:
+    """The title's, the table's and the caption's lines of a fitted table."""
+    cols = table.columns
+    cells = [[_clean(_text(x)).split("\n") for x in c.cells] for c in cols]
+    heads = [_clean(_text(c.header)) for c in cols]
+    widths = [max([cell_len(ln) for ln in h.split("\n")] + [cell_len(ln) for cl in cc for ln in cl])
+              for h, cc in zip(heads, cells)]
+    square = table.box == SQUARE
     edge = " " if table.pad_edge else ""
-    sep, left, right = ("│", "│" + edge, edge + "│") if square else (" ", " " + edge, edge + " ")
-    inner = sum(w for _, _, w, _ in cols) + 3 * max(len(cols) - 1, 0) + 2 * len(edge)
-    total = inner + 2
-    if total > console.width:
-        return None
+    v = "│" if square else " "
+    left, right = (v + edge, edge + v) if table.show_edge else (edge, edge)
+    total = _total(table, widths)
 
-    def line(texts: list[str]) -> str:
+    def row(texts: list[str]) -> str:
         parts = []
-        for text, (_, _, w, just) in zip(texts, cols):
+        for text, w, c in zip(texts, widths, cols):
             pad = " " * (w - cell_len(text))
-            parts.append(pad + text if just == "right" else text + pad)
-        return left + f" {sep} ".join(parts) + right
+            parts.append(pad + text if c.justify == "right" else text + pad)
+        return left + f" {v} ".join(parts) + right
 
     def rule(a: str, mid: str, b: str) -> str:
-        return a + mid.join("─" * (w + 2) for _, _, w, _ in cols) + b
+        return a + mid.join("─" * (w + 2) for w in widths) + b if table.show_edge else \
+            "─" * total
 
-    body = [line([h for h, _, _, _ in cols]), rule("├", "┼", "┤") if square else " " + "─" * inner + " "]
-    for i in range(len(table.rows)):
-        if square and i:
-            body.append(rule("├", "┼", "┤"))
-        height = max((len(cells[i]) for _, cells, _, _ in cols), default=1)
-        body += [line([cells[i][k] if k < len(cells[i]) else "" for _, cells, _, _ in cols]) for k in range(height)]
-    top, bottom = (rule("┌", "┬", "┐"), rule("└", "┴", "┘")) if square else (" " * total, " " * total)
-    title, caption = _label(table.title, total, cell_len), _label(table.caption, total, cell_len)
-    if title is None or caption is None:
-        return None
-    return title + [top] + body + [bottom] + caption
+    inner_rule = rule("├", "┼", "┤") if square else (" " + "─" * (total - 2) + " " if table.show_edge else "─" * total)
+    hl = [h.split("\n") for h in heads]
+    n = max(map(len, hl), default=1)
+    hl = [[""] * (n - len(h)) + h for h in hl]            # a header sits at the bottom of its row
+    body = [row([h[k] for h in hl]) for k in range(n)]
+    body.append(inner_rule)
+    for i in range(table.n_rows):
+        if square and i and table.show_lines:
+            body.append(inner_rule)
+        height = max((len(cc[i]) for cc in cells), default=1)
+        body += [row([cc[i][k] if k < len(cc[i]) else "" for cc in cells]) for k in range(height)]
+    if table.show_edge:
+        top, bottom = (rule("┌", "┬", "┐"), rule("└", "┴", "┘")) if square else (" " * total, " " * total)
+        body = [top] + body + [bottom]
+    return _label(table.title, total), body, _label(table.caption, total)
 
 
-def _label(label, total: int, cell_len) -> list[str] | None:
-    """A title or caption centred over the table ([] for none), None when
-    rich would wrap it."""
+def _label(label, total: int) -> list[str]:
+    """A title or caption: one line centred over the table, never wrapped."""
     if not label:
         return []
-    text = _plain(label)
-    if text is None or "\n" in text or cell_len(text) > total:
-        return None
-    return [_centred(text, total, cell_len)]
+    text = _text(label)
+    n = cell_len(text)
+    if n >= total:
+        return [text]
+    left = (total - n) // 2
+    return [" " * left + text + " " * (total - left - n)]
 
 
-def _centred(text: str, width: int, cell_len) -> str:
-    left = (width - cell_len(text)) // 2
-    return " " * left + text + " " * (width - left - cell_len(text))
+def text_lines(text: str, width: int | None) -> list[str]:
+    """A line of text broken between words to ``width`` (None: one line)."""
+    if width is None or cell_len(text) <= width or "\n" in text:
+        return text.split("\n")
+    out, cur = [], ""
+    for word in text.split(" "):
+        trial = f"{cur} {word}" if cur else word
+        if cur and cell_len(trial) > width:
+            out.append(cur)
+            cur = word
+        else:
+            cur = trial
+    return out + [cur]
 
 
-def print_text(console, text) -> None:
-    """``console.print(text)`` for a one-line rich Text (or str), written
-    directly when it is plain output that needs no wrapping."""
-    from rich.cells import cell_len
+# ------------------------------------------------------------------ output
 
-    plain = text if isinstance(text, str) else text.plain
-    if (ENABLED and not console.is_terminal and not any(c in plain for c in "\n\t\r")
-            and cell_len(plain) <= console.width
-            and (console.encoding or "").lower().replace("-", "").startswith("utf")):
-        console.file.write(plain + "\n")
-    else:
-        console.print(text)
+class Out:
+    """Where a view prints: ``file`` at ``width`` columns (None: natural
+    width).  Off a terminal the lines are written directly; on a terminal
+    (``terminal``), or when the tests switch :data:`ENABLED` off, through a
+    rich console (``rich``, made on first use)."""
+
+    def __init__(self, file, width: int | None, terminal: bool = False, encoding: str = "utf-8",
+                 no_color: bool = False, rich=None):
+        self.file, self.width, self.terminal, self.encoding = file, width, terminal, encoding
+        self.no_color, self._rich = no_color, rich
+
+    @property
+    def is_terminal(self) -> bool:
+        return self.terminal
+
+    def _console(self):
+        if self._rich is None:
+            from rich.console import Console
+
+            self._rich = Console(file=self.file, width=self.width or 100_000, no_color=self.no_color,
+                                 highlight=False, soft_wrap=False)
+        return self._rich
+
+    def print(self, obj="") -> None:
+        if not isinstance(obj, (Table, Text, str)):          # a rich renderable (benchmarks of the former views)
+            self._console().print(obj)
+            return
+        if isinstance(obj, Table):
+            for t in fit(obj, self.width):
+                self._table(t)
+            return
+        style = obj.style if isinstance(obj, Text) else ""
+        for ln in text_lines(_text(obj), self.width):
+            self._line(ln if not isinstance(obj, Text) or len(obj.spans) < 2 or ln != obj.plain else obj, style)
+
+    def _line(self, text, style: str = "") -> None:
+        if ENABLED and not self.terminal:
+            self.file.write(_text(text) + "\n")
+            return
+        from dyncli.render import richview
+
+        richview.line(self._console(), richview.text(text, style))
+
+    def _table(self, t: Table) -> None:
+        if ENABLED and not self.terminal:
+            self.file.write("\n".join(lines(t)) + "\n")
+            return
+        from dyncli.render import richview
+
+        richview.table(self._console(), t)
 
 
-def print_table(console, table) -> None:
-    """``console.print(table)``, laid out by :func:`layout` when it can."""
-    lines = layout(table, console) if ENABLED and type(table).__name__ == "Table" else None
-    if lines is None:
-        console.print(table)
-        return
-    console.file.write("\n".join(lines) + "\n")
+def as_out(console) -> Out:
+    """An :class:`Out` for ``console`` (an Out, or a rich Console of the tests)."""
+    if isinstance(console, Out):
+        return console
+    return Out(console.file, console.width, console.is_terminal, console.encoding or "utf-8",
+               bool(console.no_color), rich=console)

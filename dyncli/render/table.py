@@ -1,13 +1,16 @@
-"""Rich table output.  Generic: scalars, vectors, tensors, lists over an index
-(``Result.series``), mappings (one row per name), lists of records, and the
-views (:class:`~dyncli.result.FrameTable`, :class:`~dyncli.result.Table`).
+"""The terminal view (``--format table``).  Generic: scalars, vectors, tensors, lists over an
+index (``Result.series``), mappings (one row per name), lists of records, and the views
+(:class:`~dyncli.result.FrameTable`, :class:`~dyncli.result.Table`).
 
-Degrades cleanly when piped (no colour, plain box characters are kept ASCII
-when the terminal is not UTF-8) and honours ``NO_COLOR``.
+The tables are dyncli's own (:mod:`dyncli.render.plain`): laid out directly off a terminal
+(rich is not imported), drawn by rich in one; ``NO_COLOR`` is honoured.  ``--units`` converts
+every result with a unit, the fields of records and the views' columns that name their unit;
+a view it cannot convert is named in a note.
 """
 
 from __future__ import annotations
 
+import math
 import os
 from typing import Any
 
@@ -52,25 +55,30 @@ def fmt_value(x: Any, digits: int = DEFAULT_DIGITS) -> str:
 
 def escape(text: str) -> str:
     """A label in a table (a name, a title, a user's key): one line
-    (:func:`printable`), rich markup escaped."""
-    from rich.markup import escape as markup
-
-    return markup(printable(text))
+    (:func:`printable`).  dyncli's tables hold plain text (no markup)."""
+    return printable(text)
 
 
 def cell(text: str) -> str:
     """A value cell made by :func:`fmt_value` (printable already; a tensor
-    keeps its row breaks): rich markup escaped."""
-    from rich.markup import escape as markup
-
-    return markup(text)
+    keeps its row breaks)."""
+    return text
 
 
-def make_console(file=None):
-    from rich.console import Console
+def make_console(file=None, width: int | None = None):
+    """Where a view prints (:class:`dyncli.render.plain.Out`): stdout by
+    default (a terminal: rich, at its width; else plain text at
+    :func:`dyncli.stdio.table_width`), or ``file`` at ``width`` (100 unless given)."""
+    import sys
+
+    from dyncli import stdio
+    from dyncli.render.plain import Out
 
     no_color = bool(os.environ.get("NO_COLOR"))
-    return Console(file=file, no_color=no_color, highlight=False, soft_wrap=False)
+    if file is None:
+        return Out(sys.stdout, stdio.table_width(), stdio._isatty(), getattr(sys.stdout, "encoding", None) or "utf-8",
+                   no_color)
+    return Out(file, width or stdio.DEFAULT_WIDTH, False, getattr(file, "encoding", None) or "utf-8", no_color)
 
 
 def _scale(x: Any, f: float) -> Any:
@@ -87,35 +95,51 @@ def _scale(x: Any, f: float) -> Any:
 
 
 def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]:
-    """Apply ``--units`` preferences: returns (values, units) for display."""
+    """Apply ``--units`` preferences: returns (values, units) for display.
+    A result with a unit is converted whole; the fields of a list of records
+    or of a mapping (``find``'s ``t``, ``s``, ``v``) by their own units."""
     values = dict(result.results)
     units = dict(result.units)
     if not wanted:
         return values, units
     from dyncli.units import display_factor
 
+    factors = {}
     for name, si in result.units.items():
         fac = display_factor(si, wanted)
-        if fac is None or name not in values:
-            continue
-        f, u = fac
-        values[name] = _scale(values[name], f)
-        units[name] = u
+        if fac is not None:
+            factors[name] = fac[0]
+            units[name] = fac[1]
+    for name, val in values.items():
+        if name in factors:
+            values[name] = _scale(val, factors[name])
+        elif is_deferred(val):
+            values[name] = _scale_fields(val, factors)
     return values, units
+
+
+def _scale_fields(x: Any, factors: dict) -> Any:
+    if isinstance(x, dict):
+        return {k: _scale(v, factors[k]) if k in factors else _scale_fields(v, factors) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_scale_fields(v, factors) for v in x]
+    return x
 
 
 def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: list[str] | None = None) -> None:
     """The terminal view of one solved problem: a header (title, type, method, error estimate,
     equations), the table of scalar results, one table per series and per nested result, the
     frame views (δ/δt tables) and the warnings."""
-    from dyncli.render.plain import print_table, print_text
+    from dyncli.render.plain import Text, as_out
+    from dyncli.render.tableviews import convert_view
 
-    _print_header(console, lp, result)
+    out = as_out(console)
+    _print_header(out, lp, result)
     values, unit_names = display_units(result, units)
     in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
     in_series |= set(result.covered)
     deferred: list[tuple[str, Any]] = []
-    scalars, n_rows = _results_table(), 0
+    scalars, n_rows = _results_table("; ".join(printable(n) for n in result.notes) or None), 0
     for name, val in values.items():
         if name in in_series:
             continue
@@ -124,51 +148,68 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
         if is_deferred(val):
             deferred.append((name, val))
             continue
-        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell(fmt_value(val, digits)),
-                        escape(unit_names.get(name, "")))
+        cell, unit = relative(result, name, val, unit_names, digits) or (fmt_value(val, digits), unit_names.get(name, ""))
+        scalars.add_row(escape(name), escape(result.symbols.get(name, "")), cell, escape(unit))
         n_rows += 1
     if n_rows:
-        print_table(console, scalars)
-
-    width = max(40, getattr(console, "width", 80) or 80)
+        out.print(scalars)
     for s in result.series:
-        for t in series_tables(s, values, unit_names, result.symbols, digits, width):
-            print_table(console, t)
+        for t in series_tables(s, values, unit_names, result.symbols, digits, out.width):
+            out.print(t)
     for name, val in deferred:
-        print_table(console, _nested_table(result.symbols.get(name, name), val, digits))
+        out.print(_nested_table(result.symbols.get(name, name), val, digits, unit_names))
+    unconverted = []
     for view in result.views:
-        print_table(console, render_view(view, digits))
+        view, converted = convert_view(view, units)
+        out.print(render_view(view, digits))
+        if not converted:
+            unconverted.append(view.title)
+    if unconverted:
+        out.print(Text(f"--units: not applied to {'; '.join(printable(u) for u in unconverted)} "
+                       "(units not named in the table: SI)", style="yellow"))
     for w in result.warnings:
-        from rich.text import Text
-
-        print_text(console, Text("warning: " + printable(w), style="yellow"))
-    print_text(console, "")
+        out.print(Text("warning: " + printable(w), style="yellow"))
+    out.print("")
 
 
-def _print_header(console, lp, result: Result) -> None:
-    from rich.text import Text
+def relative(result: Result, name: str, val, unit_names: dict, digits: int) -> tuple[str, str] | None:
+    """A result the tables show relative to its scale (``Result.scales``): the
+    value and unit cells (``8.7e-11``, ``relative to 2.5e10 J``), or None."""
+    scale = result.scales.get(name)
+    raw = result.results.get(name)
+    if not scale or not _is_scalar_num(raw) or raw is None or not math.isfinite(scale) or scale <= 0:
+        return None
+    unit = unit_names.get(name, "")
+    shown = scale
+    if unit and unit != result.units.get(name, ""):
+        from dyncli.units import display_factor
 
+        fac = display_factor(result.units.get(name, ""), [unit])
+        shown = scale * fac[0] if fac else scale
+    return fmt_num(float(raw) / scale, min(digits, 3)), f"relative to {fmt_num(shown, 3)} {unit}".rstrip()
+
+
+def _print_header(out, lp, result: Result) -> None:
     from dyncli import registry
-    from dyncli.render.plain import print_text
+    from dyncli.render.plain import Text
 
     info = registry.TYPES.get(lp.type)
     section = f" ({info.sections})" if info else ""
     head = Text()
     head.append(printable(lp.title), style="bold")
     head.append(f"  ·  {lp.type}{section}", style="dim")
-    print_text(console, head)
-    print_text(console, Text("   ".join(meta_parts(result)), style="dim"))
+    out.print(head)
+    out.print(Text("   ".join(meta_parts(result)), style="dim"))
 
 
-def _results_table():
-    from rich import box
-    from rich.table import Table as RTable
+def _results_table(title: str | None = None):
+    from dyncli.render.plain import SIMPLE, Table
 
-    t = RTable(box=box.SIMPLE, show_header=True, header_style="bold", pad_edge=False)
-    t.add_column("result")
-    t.add_column("symbol", style="cyan")
+    t = Table(title=title, box=SIMPLE, header_style="bold", pad_edge=False)
+    t.add_column("result", no_wrap=True)
+    t.add_column("symbol", style="cyan", no_wrap=True)
     t.add_column("value", justify="left")
-    t.add_column("unit", style="dim")
+    t.add_column("unit", style="dim", no_wrap=True)
     return t
 
 
@@ -194,26 +235,28 @@ def meta_parts(result: Result) -> list[str]:
     return parts
 
 
-def _nested_table(title: str, val, digits: int):
-    """The table of a nested result: one row per record (a column per key) or per entry."""
-    from rich import box
-    from rich.table import Table as RTable
+def _nested_table(title: str, val, digits: int, unit_names: dict | None = None):
+    """The table of a nested result: one row per record (a column per key,
+    its unit in the header) or per entry."""
+    from dyncli.render.plain import SIMPLE_HEAD, Table
 
-    t = RTable(title=escape(title), box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+    unit_names = unit_names or {}
+    t = Table(title=escape(title), box=SIMPLE_HEAD, header_style="bold", pad_edge=False, split=True)
     if isinstance(val, list):
         keys: list[str] = []
         for rec in val:
             keys += [k for k in rec if k not in keys]
         t.add_column("#", justify="right", style="dim")
         for k in keys:
-            t.add_column(escape(str(k)), justify="right")
+            unit = unit_names.get(k) if isinstance(k, str) else None
+            t.add_column(escape(str(k) + (f" [{unit}]" if unit else "")), justify="right")
         for i, rec in enumerate(val):
-            t.add_row(str(i), *[cell(fmt_value(rec.get(k), digits)) for k in keys])
+            t.add_row(str(i), *[fmt_value(rec.get(k), digits) for k in keys])
     else:
         t.add_column("name")
         t.add_column("value")
         for k, v in val.items():
-            t.add_row(escape(str(k)), cell(fmt_value(v, digits)))
+            t.add_row(escape(str(k)), fmt_value(v, digits))
     return t
 
 
@@ -278,83 +321,80 @@ def _key_label(sym: str, key: str, alone: bool) -> str:
     return key if alone else f"{sym}: {key}"
 
 
-def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int, width: int) -> list:
-    """One or more rich tables for a Series: columns are packed greedily so
-    each table fits ``width`` (the index column repeats in each); cells never
-    wrap in the middle of a number.  A long series shows its head and tail
-    (:func:`shown_rows`) with a ``⋮`` row between them, and a note after the
-    last table (a rich Text, no_wrap)."""
-    from rich import box
-    from rich.table import Table as RTable
+def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int, width: int | None) -> list:
+    """One or more tables for a Series: columns are packed greedily so each
+    table fits ``width`` (None: one table; the index column repeats in
+    each); cells never wrap in the middle of a number.  A long series shows
+    its head and tail (:func:`shown_rows`) with a ``⋮`` row between them,
+    and a note after the last table."""
+    from dyncli.render.plain import SIMPLE_HEAD, Table, Text, cell_len
 
     n = len(s.index)
     rows, omitted = shown_rows(n)
     gap = SERIES_EDGE if omitted else -1          # position of the ⋮ row
     idx_cells = [fmt_num(s.index[i], digits) for i in rows]
-    idx_w = max([len(s.index_name)] + [len(c) for c in idx_cells])
+    idx_w = max([cell_len(escape(s.index_name))] + [len(c) for c in idx_cells])
     cols = []
     for label, unit, vals in series_columns(s, values, unit_names, symbols):
         head = escape(label + (f" [{unit}]" if unit else ""))
         cells = [fmt_value(vals[i], digits) if vals is not None and i < len(vals) else "" for i in rows]
-        w = max([len(head)] + [len(c) for c in cells])
+        w = max([cell_len(head)] + [cell_len(ln) for c in cells for ln in c.split("\n")])
         cols.append((head, cells, w))
     groups: list[list] = []
     cur: list = []
     used = idx_w + 2
     for c in cols:
-        if cur and used + c[2] + 3 > width:
+        if cur and width is not None and used + c[2] + 3 > width:
             groups.append(cur)
             cur, used = [], idx_w + 2
         cur.append(c)
         used += c[2] + 3
     if cur:
         groups.append(cur)
-    tables: list[Any] = []                   # rich Tables, and a Text for the omitted rows
+    tables: list = []
     for gi, group in enumerate(groups):
         title = s.title if gi == 0 else (f"{s.title} (continued)" if s.title else None)
-        t = RTable(title=escape(title) if title else None, box=box.SIMPLE_HEAD, header_style="bold", pad_edge=False)
+        t = Table(title=escape(title) if title else None, box=SIMPLE_HEAD, header_style="bold", pad_edge=False)
         t.add_column(escape(s.index_name), justify="right", no_wrap=True)
         for head, _, _ in group:
             t.add_column(head, justify="right", no_wrap=True)
         for k, ic in enumerate(idx_cells):
             if k == gap:
                 t.add_row("⋮", *["⋮" for _ in group])
-            t.add_row(cell(ic), *[cell(cells[k]) for _, cells, _ in group])
+            t.add_row(ic, *[cells[k] for _, cells, _ in group])
         tables.append(t)
     if omitted:
-        from rich.text import Text
-
         tables.append(Text(omitted_note(omitted, n), style="dim"))
     return tables
 
 
 def render_view(view, digits: int = DEFAULT_DIGITS):
-    from rich import box
-    from rich.table import Table as RTable
+    from dyncli.render.plain import SIMPLE_HEAD, SQUARE
+    from dyncli.render.plain import Table as PTable
 
     def e(x):
         return escape(x) if isinstance(x, str) else x
 
     if isinstance(view, FrameTable):
-        t = RTable(title=e(view.title), caption=e(view.note), box=box.SQUARE, header_style="bold", show_lines=True)
+        t = PTable(title=e(view.title), caption=e(view.note), box=SQUARE, header_style="bold", show_lines=True)
         t.add_column("", style="cyan")
         for b in view.basis:
             t.add_column(e(b), justify="right")
         for label, comps in view.rows:
-            t.add_row(e(label), *[e(c) if isinstance(c, str) else cell(fmt_num(c, digits)) for c in comps])
+            t.add_row(e(label), *[e(c) if isinstance(c, str) else fmt_num(c, digits) for c in comps])
         return t
     if isinstance(view, Equations):
-        t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")
+        t = PTable(title=e(view.title), caption=e(view.note), box=SIMPLE_HEAD, header_style="bold")
         t.add_column("", style="cyan")
         t.add_column("equation", justify="left", overflow="fold")
         for label, text, _tex in view.rows:
             t.add_row(e(label), e(text))
         return t
     if isinstance(view, Table):
-        t = RTable(title=e(view.title), caption=e(view.note), box=box.SIMPLE_HEAD, header_style="bold")
+        t = PTable(title=e(view.title), caption=e(view.note), box=SIMPLE_HEAD, header_style="bold", split=True)
         for c in view.columns:
             t.add_column(e(c), justify="right")
         for row in view.rows:
-            t.add_row(*[cell(fmt_value(c, digits)) for c in row])
+            t.add_row(*[fmt_value(c, digits) for c in row])
         return t
     raise TypeError(view)  # pragma: no cover

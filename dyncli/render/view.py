@@ -11,9 +11,9 @@ the warnings.  The cells are the same strings (same digits, same units).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
-from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, series_columns
+from dyncli.render.table import display_units, fmt_num, fmt_value, is_deferred, meta_parts, relative, series_columns
+from dyncli.render.tableviews import convert_view
 from dyncli.result import Equations, FrameTable, Result, Table
 
 
@@ -55,11 +55,13 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
         if is_deferred(val):
             deferred.append((name, val))
         else:
-            rows.append([name, result.symbols.get(name, ""), fmt_value(val, digits), unit_names.get(name, "")])
-    grids = [Grid(None, ["result", "symbol", "value", "unit"], rows, ["l", "l", "l", "l"], unit_column=3)] if rows else []
+            cell, unit = relative(result, name, val, unit_names, digits) or (fmt_value(val, digits),
+                                                                             unit_names.get(name, ""))
+            rows.append([name, result.symbols.get(name, ""), cell, unit])
+    grids = [Grid("; ".join(result.notes) or None, ["result", "symbol", "value", "unit"], rows, ["l", "l", "l", "l"], unit_column=3)] if rows else []
     grids += [_series(s, values, unit_names, result.symbols, digits) for s in result.series]
-    grids += [_deferred(result.symbols.get(n, n), v, digits) for n, v in deferred]
-    grids += [_view(v, digits) for v in result.views]
+    grids += [_deferred(result.symbols.get(n, n), v, digits, unit_names) for n, v in deferred]
+    grids += [_view(convert_view(v, units)[0], digits) for v in result.views]
     title = lp.title + swept_label(getattr(lp, "swept", None), digits)
     return View(title, kind, meta, grids, list(result.warnings))
 
@@ -84,13 +86,14 @@ def _series(s, values: dict, unit_names: dict, symbols: dict, digits: int) -> Gr
     return Grid(s.title, cols, rows, ["r"] * len(cols), units)
 
 
-def _deferred(title: str, val, digits: int) -> Grid:
+def _deferred(title: str, val, digits: int, unit_names: dict) -> Grid:
     if isinstance(val, list):
         keys: list[str] = []
         for rec in val:
             keys += [k for k in rec if k not in keys]
         rows = [[str(i)] + [fmt_value(rec.get(k), digits) for k in keys] for i, rec in enumerate(val)]
-        return Grid(title, ["#"] + [str(k) for k in keys], rows, ["r"] * (len(keys) + 1))
+        units = [None] + [(unit_names.get(k) or None) if isinstance(k, str) else None for k in keys]
+        return Grid(title, ["#"] + [str(k) for k in keys], rows, ["r"] * (len(keys) + 1), units)
     return Grid(title, ["name", "value"], [[str(k), fmt_value(v, digits)] for k, v in val.items()], ["l", "l"])
 
 

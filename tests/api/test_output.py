@@ -33,13 +33,31 @@ def _run(args, **extra):
     return p.returncode, p.stdout, p.stderr.decode("utf-8", "replace")
 
 
-def test_piped_tables_at_natural_width_without_trailing_spaces():
-    rc, out, err = _run(["solve", WIDE])
+def test_piped_tables_at_natural_width_with_wide_without_trailing_spaces():
+    rc, out, err = _run(["solve", WIDE, "--wide"])
     assert rc == 0, err
     text = out.decode()
     assert "(continued)" not in text
-    assert max(len(ln) for ln in text.splitlines()) > 80
+    assert max(len(ln) for ln in text.splitlines()) > 100
     assert not [ln for ln in text.splitlines() if ln != ln.rstrip()]
+
+
+@pytest.mark.parametrize("columns, width", [(None, 100), ("80", 80)])
+def test_piped_tables_fit_columns_or_100(columns, width):
+    """Piped: every table within COLUMNS, or 100 columns when it is not set (a wide series
+    continues below); vectors are never cut."""
+    extra = {"COLUMNS": columns} if columns else {}
+    files = [WIDE, "problems/inertia/coin.yaml"] if width == 100 else [WIDE]   # coin: vectors 80 wide
+    rc, out, err = _run(["solve", *files], **extra)
+    assert rc == 0, err
+    text = out.decode()
+    from dyncli.render.plain import cell_len
+
+    rows = [ln for ln in text.splitlines() if ln.startswith(" ")]      # a caption wider than its table is flush left
+    assert max(cell_len(ln) for ln in rows) <= width
+    assert max(cell_len(ln) for ln in text.splitlines() if ln.startswith("warning:")) <= width
+    for ln in text.splitlines():
+        assert ln.count("[") == ln.count("]"), ln              # a vector whole on its line
 
 
 def test_columns_zero_still_prints():
@@ -75,7 +93,7 @@ def _pty_output(args: list[str], cols: int) -> str:
 
 @pytest.mark.parametrize("path", [WIDE, BASE])
 def test_terminal_and_pipe_hold_the_same_rows(path):
-    rc, piped, _ = _run(["solve", path])
+    rc, piped, _ = _run(["solve", path], COLUMNS="200")
     assert rc == 0
     term = _pty_output(["solve", path], cols=200)
     strip = [ln.rstrip() for ln in term.splitlines()]

@@ -1,4 +1,5 @@
-"""``--format table`` (the default): a rich table per graded file, then the
+"""``--format table`` (the default): a table per graded file (dyncli's own,
+:mod:`dyncli.render.plain`: rich draws it only on a terminal), then the
 score.  Self-study: a table per check of an answer file (line, answer,
 status, points, given, [expected], feedback); graded work: a table per
 submission (question, status, points, given, [expected], feedback) with its
@@ -17,17 +18,15 @@ def render(report: Report) -> str:
     """The table as plain text at its natural width (what a pipe or a file holds)."""
     import io
 
-    from rich.console import Console
-
-    from dyncli import stdio
+    from dyncli.render.plain import Out
 
     buf = io.StringIO()
-    draw(report, Console(file=buf, width=stdio.NATURAL_WIDTH, no_color=True, highlight=False, soft_wrap=False))
+    draw(report, Out(buf, None, no_color=True))
     return "\n".join(line.rstrip() for line in buf.getvalue().split("\n"))
 
 
 def draw(report: Report, console) -> None:
-    from rich.text import Text
+    from dyncli.render.plain import Text
 
     utf = (console.encoding or "").lower().replace("-", "").startswith("utf")
     ok, bad = ("✓", "✗") if utf else ("+", "x")
@@ -42,9 +41,8 @@ def draw(report: Report, console) -> None:
                        style="bold"))
 
 
-def _table(columns: list[tuple[str, dict[str, Any]]]):
-    from rich import box
-    from rich.table import Table
+def _table(columns: list[tuple[str, dict]]):
+    from dyncli.render.plain import Table, box
 
     t = Table(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
     for name, opts in columns:
@@ -53,7 +51,7 @@ def _table(columns: list[tuple[str, dict[str, Any]]]):
 
 
 def _answer_file(report: Report, s: SubmissionResult, console, marks: dict) -> None:
-    from rich.text import Text
+    from dyncli.render.plain import Text
 
     for d in s.diagnostics:
         console.print(Text(oneline(d), style="magenta"))
@@ -85,7 +83,7 @@ def _answer_file(report: Report, s: SubmissionResult, console, marks: dict) -> N
 
 
 def _submission(report: Report, s: SubmissionResult, console, marks: dict) -> None:
-    from rich.text import Text
+    from dyncli.render.plain import Text
 
     console.print(Text(who(s), style="bold"))
     for d in s.diagnostics:

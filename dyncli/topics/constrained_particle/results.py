@@ -56,10 +56,12 @@ CONSTRAINED_PARTICLE = TypeSpec(
         R("equilibria", "relative equilibria", "", "",
           "the relative equilibria on `q_range`: a list of `{q, x, stable}` (roots of G(q))", kind="list", contract=True),
         R("steady", "steady motions", "", "16.7, 11.11",
-          "answers to the `steady` queries: a list of `{q, x, rho, omega, v, period, N, stable, omega_small, "
+          "answers to the `steady` queries: a list of `{q, x, rho, exists, omega, v, period, N, stable, omega_small, "
           "omega_min, omega_max, v_min, v_max}`: the rate ω that holds the particle at rest at q on the turning "
           "curve (with friction the range of rates)", kind="list"),
         R("rho", "ρ", "m", "", "`steady` entry: the distance from the axis", part_of="steady"),
+        R("exists", "", "", "", "`steady` entry: whether a steady motion exists at q (false: the rates null, a "
+          "warning says why)", kind="bool", part_of="steady"),
         R("omega", "ω", "rad/s", "", "`steady` entry: the rate that holds the particle without friction",
           part_of="steady"),
         R("omega_small", "", "rad/s", "", "angular frequency of small oscillations about the rest", part_of="steady"),

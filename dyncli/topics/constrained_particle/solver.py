@@ -125,7 +125,7 @@ def _solve_ode(p, model, times) -> Result:
                  series=[Series("t", times, SERIES + ["distance"])])
     res.results["energy_residual"] = resid
     res.extra["nsteps"] = nsteps
-    res.extra["energy_scale"] = scale
+    res.extra["energy_scale"] = res.scales["energy_residual"] = scale
     res.extra["phases"] = res.extra["breaks_of"] = phases
     _friction_notes(res, model, notes, phases)
     # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its

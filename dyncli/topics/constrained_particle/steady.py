@@ -78,7 +78,8 @@ def check(p) -> None:
 
 def answers(p, model) -> tuple[list[dict], list[str]]:
     """One entry per ``steady`` query (see the module docstring) and the warnings a student can act
-    on; InputError (exit 2, naming ``steady.N.q``) where no steady motion exists, saying why."""
+    on; where no steady motion exists, an entry with ``exists: false`` and a warning saying why (a
+    physical "no solution": exit 0)."""
     check(p)
     F = _forces(p, model)
     entries, warnings = [], []
@@ -131,18 +132,21 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
     if not held_anyhow and abs(alpha) > 64 * EPS * scale_a and -beta / alpha >= 0:
         u = -beta / alpha
     ranges = _friction_ranges(alpha, beta, A, B, mu, scale_f, scale_a)
-    if u is None and not held_anyhow and not ranges:
-        raise InputError(_why_not(q, alpha, beta, mu, scale_a), where)
-    out: dict[str, Any] = {"q": q + 0.0, "x": [float(c) + 0.0 for c in x], "rho": r,
+    out: dict[str, Any] = {"q": q + 0.0, "x": [float(c) + 0.0 for c in x], "rho": r, "exists": True,
            "omega": None if u is None else math.sqrt(u), "v": None, "period": None,
            "N": None, "stable": None, "omega_small": None}
+    if u is None and not held_anyhow and not ranges:       # a physical "no solution": exit 0, said why
+        out["exists"] = False
+        if mu:
+            out.update(omega_min=None, omega_max=None, v_min=None, v_max=None)
+        return out, [_why_not(q, alpha, beta, mu, scale_a)]
     if u is not None:
         w = math.sqrt(u)
         out.update(v=w * r, period=2 * math.pi / w if w > 0 else None,
                    N=_on_path_basis(model, q, u * A + B), **_stability(model, F, q, u))
     elif held_anyhow:
         out.update(N=_on_path_basis(model, q, B))
-    lo, hi = ranges[0] if ranges else ((0.0, math.inf) if held_anyhow or u is None else (u, u))   # (u None: refused above)
+    lo, hi = ranges[0] if ranges else ((0.0, math.inf) if held_anyhow or u is None else (u, u))   # (u None: returned above)
     out.update(omega_min=math.sqrt(lo), omega_max=None if hi == math.inf else math.sqrt(hi))
     out.update(v_min=out["omega_min"] * r, v_max=None if out["omega_max"] is None else out["omega_max"] * r)
     notes = _degrees(model, q, x)

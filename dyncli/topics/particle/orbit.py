@@ -123,6 +123,7 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     resid, scale = report.energy_residual(p, F, S)
     res = Result(report.reported(S, resid), method="exact", equations=_equations(),
                  series=[Series("t", times, list(report.REPORTED) + ["distance"])])
+    res.scales["energy_residual"] = scale
     report.report_terms(res, p, F, traj, S)
     res.results["orbit"] = orbit_results(orb)
     _warn_surface(res, p, orb)

@@ -70,9 +70,11 @@ PARTICLE = TypeSpec(
           "inverse-square central force alone: `{e, a, r_p, r_a, period, v_p, v_a, v_circular, v_escape}` of the conic from the initial state (r_a, period, v_a null when open; a < 0 on a hyperbola, null on a parabola)",
           kind="mapping", contract=True),
         R("steady", "steady motions", "", "16.7, 11.11",
-          "answers to the `steady` queries: a list of `{axis, x, rho, omega, v, period, F}`: the rate of the "
+          "answers to the `steady` queries: a list of `{axis, x, rho, exists, omega, v, period, F}`: the rate of the "
           "circular motion about the axis at x0 that the forces hold (F at x0 is the centripetal force)", kind="list"),
         R("rho", "ρ", "m", "", "`steady` entry: the distance of x0 from the axis", part_of="steady"),
+        R("exists", "", "", "", "`steady` entry: whether the forces at x0 hold a circular motion about the axis "
+          "(false: the other values null, a warning says why)", kind="bool", part_of="steady"),
         R("omega", "ω", "rad/s", "", "`steady` entry: the rate of the circular motion", part_of="steady"),
         R("period", "", "s", "", "`steady` entry: the period 2π/ω", part_of="steady"),
         R("F", "F", "N", "", "`steady` entry: the force at x0 (the centripetal force m ω² towards the axis)",

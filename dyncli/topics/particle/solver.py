@@ -31,6 +31,7 @@ from dyncli.topics.particle.forces import Forces
 from dyncli.topics.particle.report import REPORTED, at_times, energy_residual, report_terms, reported
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
+
 def _ode_method(p) -> str:
     return runner.scipy_method(p.accuracy.method)
 
@@ -40,13 +41,16 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     from . import steady
 
     F = Forces(p)
-    entries = steady.answers(p, F) if p.steady else None      # refused before the motion is solved
+    notes: list[str] = []
+    entries = steady.answers(p, F, notes.append) if p.steady else None      # refused before the motion is solved
     if p.steady_only:
         res = Result({}, method="closed-form", equations=["16.7", "11.11"])
     else:
         res = _motion(p)
     if entries is not None:
         res.results["steady"] = entries
+    for n in notes:
+        res.warn(n)
     return res
 
 
@@ -77,6 +81,7 @@ def _motion(p) -> Result:
     S = at_times(traj, F, times, steps=True)
     resid, scale = energy_residual(p, F, S)
     res.results.update(reported(S, resid))
+    res.scales["energy_residual"] = scale
     res.series.append(Series("t", times, list(REPORTED) + ["distance"]))
     report_terms(res, p, F, traj, S)
     res.extra["nfev"] = traj.nfev

@@ -20,9 +20,10 @@ from dyncli.errors import InputError
 REL = 1e-9          # an unbalanced part above this fraction of |F| refuses (typed numbers' rounding)
 
 
-def answers(p, F) -> list[dict]:
-    """One entry per query; InputError (exit 2, naming the field) where the forces at x0 do not hold
-    a circular motion about the axis, saying which part is unbalanced."""
+def answers(p, F, warn) -> list[dict]:
+    """One entry per query; where the forces at x0 do not hold a circular motion about the axis, an
+    entry with ``exists: false`` and a warning saying which part is unbalanced (a physical "no
+    solution": exit 0)."""
     for i, f in enumerate(p.forces):
         if f.kind in ("damper", "drag", "friction") or (
                 f.kind == "custom" and set(v for e in f.F for v in e.variables) - {"x1", "x2", "x3"}):
@@ -30,10 +31,10 @@ def answers(p, F) -> list[dict]:
                              "found for forces of the position only: leave it out of this problem", f"forces.{i}")
     x = np.asarray(p.x0, float)
     Fx = np.asarray(F.conservative(x) + F.nonconservative(0.0, x, np.zeros(3)), float)
-    return [_one(p, Fx, x, np.asarray(s.axis, float), f"steady.{i}") for i, s in enumerate(p.steady)]
+    return [_one(p, Fx, x, np.asarray(s.axis, float), f"steady.{i}", warn) for i, s in enumerate(p.steady)]
 
 
-def _one(p, Fx, x, k, where) -> dict:
+def _one(p, Fx, x, k, where, warn) -> dict:
     rho = x - (x @ k) * k
     r = float(np.linalg.norm(rho))
     if r == 0:
@@ -42,15 +43,22 @@ def _one(p, Fx, x, k, where) -> dict:
     e_th = np.cross(k, e_r)
     Fr, Fth, Fk = float(Fx @ e_r), float(Fx @ e_th), float(Fx @ k)
     size = float(np.linalg.norm(Fx))
+    base = {"axis": [float(c) + 0.0 for c in k], "x": [float(c) + 0.0 for c in x], "rho": r,
+            "F": [float(c) + 0.0 for c in Fx]}
     for part, value, name in ((Fk, "along the axis", "F·k"), (Fth, "along e_θ (round the axis)", "F·e_θ")):
         if abs(part) > REL * size:
-            raise InputError(f"no circular motion about this axis at x0: the forces there have a part {value} "
-                             f"({name} = {part:.6g} N) that nothing balances — a particle held by a string, a "
-                             "track or a road is a constrained-particle with steady (the conical pendulum is "
-                             "the bead on a hoop)", where)
+            return _none(base, f"{where}: no circular motion about this axis at x0: the forces there have a part "
+                               f"{value} ({name} = {part:.6g} N) that nothing balances — a particle held by a "
+                               "string, a track or a road is a constrained-particle with steady (the conical "
+                               "pendulum is the bead on a hoop)", warn)
     if not Fr < 0:
-        raise InputError(f"no circular motion about this axis at x0: the force there points away from the axis "
-                         f"(F·ρ̂ = {Fr:.6g} N), and the centripetal force must point towards it", where)
+        return _none(base, f"{where}: no circular motion about this axis at x0: the force there points away from "
+                           f"the axis (F·ρ̂ = {Fr:.6g} N), and the centripetal force must point towards it", warn)
     w = math.sqrt(-Fr / (float(p.m) * r))
-    return {"axis": [float(c) + 0.0 for c in k], "x": [float(c) + 0.0 for c in x], "rho": r, "omega": w,
-            "v": w * r, "period": 2 * math.pi / w, "F": [float(c) + 0.0 for c in Fx]}
+    return {**base, "exists": True, "omega": w, "v": w * r, "period": 2 * math.pi / w}
+
+
+def _none(base: dict, why: str, warn) -> dict:
+    """The entry of a query the forces cannot answer: a physical "no solution" (exit 0), said why."""
+    warn(why)
+    return {**base, "exists": False, "omega": None, "v": None, "period": None}

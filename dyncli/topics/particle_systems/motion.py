@@ -110,6 +110,8 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
         "H_drift": float(np.max(np.abs(H - H0))) / Hs if Hs > 1e-300 else 0.0,
         "energy_residual": float(np.max(np.abs(T - T0 - W))),
     })
+    # the energies the residual balances: T, its start T0 and the work W
+    res.scales["energy_residual"] = max(float(np.max(np.abs(T))), T0, float(np.max(np.abs(W))))
     res.series.append(Series("t", list(p.at), ["T_motion", "V_internal_motion", "P_internal_motion", "W_internal"],
                              title="energy under the internal forces: T − T(0) = W (27.10)"))
     find.report(p, res, steps, lambda Y: _quantities(p, masses, Y, O), len(masses))

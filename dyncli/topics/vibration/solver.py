@@ -63,6 +63,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     elif p.base is None:
         A, phi = _free_amplitude_phase(x0 - L, v0, omega_n, zeta, omega_d, regime, res)
         R.update(A=A, phi=phi)
+        if phi is not None and regime in ("undamped", "underdamped"):
+            res.notes.append(PHASE_NOTE)
     else:
         s0, Om = p.base.amplitude, p.base.omega
         r = _ratio(Om, k, m, omega_n)
@@ -124,6 +126,10 @@ def damping(p, omega_n):
     if not (math.isfinite(zeta) and math.isfinite(c)):
         raise InputError("the damping overflows", "c" if p.c is not None else "zeta")
     return zeta, c, regime
+
+
+#: the free phase's range, stated in the table (docs/types/vibration.md, "Phase convention")
+PHASE_NOTE = "φ in (−π, π]; the notes' φ in [0, 2π) is φ + 2π when φ < 0"
 
 
 def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):

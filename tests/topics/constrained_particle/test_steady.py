@@ -155,12 +155,24 @@ def test_degrees_slip_on_a_hoop_is_said():
     assert not solve_one_text(_problem('{x1: q, x2: 0, x3: "0.1*q**2"}', "[{q: 30}]"))["warnings"]
 
 
-@pytest.mark.parametrize("text, where, message", [
-    (_problem(HOOP, "[{q: 2}]"), "steady.0.q", "ω² = -"),
-    (_problem(HOOP, "[{q: 0.3}, {q: 2}]"), "steady.1.q", "points away from the axis"),
-    (_problem(HOOP, '[{q: "pi/2"}]'), "steady.0.q", "normal to the direction from the axis"),
-    (_problem(HOOP, "[{q: 2}]", forces="[{kind: gravity}, {kind: friction, mu: 0.1}]"), "steady.0.q",
+@pytest.mark.parametrize("text, index, message", [
+    (_problem(HOOP, "[{q: 2}]"), 0, "ω² = -"),
+    (_problem(HOOP, "[{q: 0.3}, {q: 2}]"), 1, "points away from the axis"),
+    (_problem(HOOP, '[{q: "pi/2"}]'), 0, "normal to the direction from the axis"),
+    (_problem(HOOP, "[{q: 2}]", forces="[{kind: gravity}, {kind: friction, mu: 0.1}]"), 0,
      "friction μ = 0.1 cannot hold it"),
+])
+def test_no_steady_motion_is_an_answer(text, index, message):
+    """No steady motion at q is the physics' answer (exit 0): the entry says exists: false, its rates
+    are null, and a warning names the query and says why."""
+    rec = solve_one_text(text)
+    e = rec["results"]["steady"][index]
+    assert e["exists"] is False and e["omega"] is None and e["v"] is None
+    assert any(w.startswith(f"steady.{index}:") and message in w for w in rec["warnings"]), rec["warnings"]
+    assert all(x["exists"] for i, x in enumerate(rec["results"]["steady"]) if i != index)
+
+
+@pytest.mark.parametrize("text, where, message", [
     (_problem(HOOP, "[{q: 1}]", forces="[{kind: gravity}, {kind: damper, c: 1}]"), "forces.1", "position only"),
     (_problem(HOOP, "[{q: 4}]", extra="q_range: [-pi, pi]\n"), "steady.0.q", "outside q_range"),
     (_problem(HOOP, "[{q: 1}]").replace("rotation: {axis: [0, 0, 1]}\n", ""), "steady", "rotation: {axis"),

@@ -62,10 +62,21 @@ def test_with_a_motion_both_are_reported():
 BASE = "type: particle\nm: 0.5\nx0: [0.4, 0, 0]\n"
 
 
+@pytest.mark.parametrize("extra, message", [
+    ("forces: [{kind: gravity}]\nsteady: [{}]", "along the axis"),
+    ("forces: [{kind: uniform, F: [0, 1, 0]}]\nsteady: [{}]", "along e_θ"),
+    ("forces: [{kind: uniform, F: [1, 0, 0]}]\nsteady: [{}]", "points away from the axis"),
+])
+def test_no_circular_motion_is_an_answer(extra, message):
+    """Forces that cannot hold a circular motion at x0 are the physics' answer (exit 0): exists:
+    false, the rates null, a warning naming the query and the unbalanced part."""
+    rec = solve_one_text(BASE + extra + "\n")
+    (e,) = rec["results"]["steady"]
+    assert e["exists"] is False and e["omega"] is None and e["period"] is None
+    assert any(w.startswith("steady.0:") and message in w for w in rec["warnings"]), rec["warnings"]
+
+
 @pytest.mark.parametrize("extra, where, message", [
-    ("forces: [{kind: gravity}]\nsteady: [{}]", "steady.0", "along the axis"),
-    ("forces: [{kind: uniform, F: [0, 1, 0]}]\nsteady: [{}]", "steady.0", "along e_θ"),
-    ("forces: [{kind: uniform, F: [1, 0, 0]}]\nsteady: [{}]", "steady.0", "points away from the axis"),
     ("forces: [{kind: spring, k: 1}]\nsteady: [{axis: [1, 0, 0]}]", "steady.0", "on the axis"),
     ("forces: [{kind: spring, k: 1}, {kind: damper, c: 1}]\nsteady: [{}]", "forces.1", "position only"),
     ("forces: [{kind: spring, k: 1}]\nsteady: [{axs: [0, 0, 1]}]", "steady.0.axs", "unknown field"),
