@@ -189,7 +189,7 @@ def _solve(source: Any, overrides: Mapping[str, Any], sweeps: Mapping[str, Any] 
         if o.exit_code == 1:
             raise NumericalError(o.message)
         if o.exit_code == 2:               # refused by the solver (values beyond a double ...)
-            raise _input_error(o.message.split("\n"))
+            raise _input_error((o.message or "").split("\n"))
         if o.result is None:               # exit 3: a bug in dyncli, never the input's fault
             raise RuntimeError(o.message)
         out.append(Solution(p, o.result))

@@ -202,6 +202,7 @@ def _check_unit(lp, ln: Link, have: str, name: str) -> None:
     from dyncli.units import _clean, registry
 
     where = f"params.{ln.name}.unit"
+    assert ln.unit is not None                      # (called when the link gives one)
     ureg = registry()
     try:
         given = ureg.Quantity(1.0, _clean(ln.unit))

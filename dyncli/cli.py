@@ -28,7 +28,8 @@ app = typer.Typer(
 _state = {"debug": False}
 
 
-Format = Enum("Format", {f: f for f in SOLVE_FORMATS}, type=str)   # the renderer's one list of formats
+# mypy cannot list the members of an Enum built from a list: the `ignore`s on Format and CheckFormat
+Format = Enum("Format", {f: f for f in SOLVE_FORMATS}, type=str)  # type: ignore[misc]  # the renderer's one list of formats
 
 
 def _version(value: bool):
@@ -54,7 +55,8 @@ def _err(msg: str) -> None:
 @app.command()
 def solve(
     files: List[str] = typer.Argument(..., help="Problem files (YAML); '-' reads stdin.", metavar="FILE..."),
-    format: Format = typer.Option(Format.table, "--format", "-f", help="Output format."),
+    format: Format = typer.Option(Format.table,  # type: ignore[attr-defined]  # a member mypy cannot see (above)
+                                  "--format", "-f", help="Output format."),
     symbolic: bool = typer.Option(False, "--symbolic", help="Print frame tables with formulas (types that support it)."),
     digits: int = typer.Option(6, "--digits", min=1, max=17, help="Significant digits in tables."),
     units: Optional[str] = typer.Option(None, "--units", help="Show table results in these units where compatible, e.g. 'deg,rpm,mm' (JSON stays SI)."),
@@ -85,7 +87,7 @@ def validate(
     raise typer.Exit(validate_command(files, set_))
 
 
-CheckFormat = Enum("CheckFormat", {f: f for f in CHECK_FORMATS}, type=str)   # one emitter each (dyncli.check.emit)
+CheckFormat = Enum("CheckFormat", {f: f for f in CHECK_FORMATS}, type=str)  # type: ignore[misc]  # one emitter each (dyncli.check.emit)
 
 
 class IdFrom(str, Enum):
@@ -99,7 +101,8 @@ def check(
         None, metavar="FILES...",
         help="Answer files (self-study, §5), or with --key the students' submissions; '-' reads stdin. "
              "With --write-key: problem files."),
-    format: CheckFormat = typer.Option(CheckFormat.table, "--format", "-f", help="Report format."),
+    format: CheckFormat = typer.Option(CheckFormat.table,  # type: ignore[attr-defined]  # a member mypy cannot see (Format)
+                                       "--format", "-f", help="Report format."),
     reveal: bool = typer.Option(False, "--reveal", help="Show the expected values."),
     output: Optional[str] = typer.Option(None, "--output", "-o", help="Write the report (or key) to this file."),
     write_key: bool = typer.Option(False, "--write-key", help="Solve the given PROBLEM files and print an answer key."),
@@ -201,6 +204,7 @@ def variant(
         raise typer.Exit(2)
     from dyncli.check.sheet import run_variant
 
+    assert student is not None        # given exactly one of --student and --roster (checked above)
     raise typer.Exit(run_variant(key, student, format.value, template, root))
 
 

@@ -265,7 +265,7 @@ def _fill(symbol: str, pattern: str, key: str) -> str:
     return symbol
 
 
-_JSON_KIND = {
+_JSON_KIND: dict[str, dict[str, Any]] = {
     "number": {"type": ["number", "null"]},
     "vector": {"type": ["array", "null"], "items": {"type": ["number", "string", "null"]}, "minItems": 3, "maxItems": 3},
     "tensor": {"type": ["array", "null"], "items": {"type": "array"}},
@@ -276,7 +276,7 @@ _JSON_KIND = {
 }
 
 
-def _json_kind(kind: str) -> dict:
+def _json_kind(kind: str) -> dict[str, Any]:
     """The JSON Schema of a result kind; of a union "a|b", its types (every value of either)."""
     if "|" not in kind:
         return dict(_JSON_KIND.get(kind, {}))

@@ -213,6 +213,7 @@ class EnergyMotion:
         if not (0 < float(rtol) < 1):
             raise InputError(f"rtol = {rtol!r} must lie in (0, 1)")
         self.rtol, self.max_steps, self._K, self.Kp = floor_rtol(float(rtol)), max_steps, K, K_prime
+        self.warnings: list[str]
         self.Kv, self.warnings, self.err_max, self.dpos, self._t_max = _vectorised(K, self.s0), [], 0.0, 0.0, 0.0
         k0 = self.K1(self.s0)
         if k0 < 0:
@@ -381,6 +382,7 @@ class EnergyMotion:
                 x = p.x_at(max(p.tau(x0) + sgn * min(tt, dur), 0.0))
                 return float(p.s(x)), p.speed(x) * p.sig * sgn
             tt -= dur
+        raise AssertionError("unreachable: the last leg returns")
 
     def breaks(self, t_end: float) -> list[float]:
         """The times up to t_end at which a leg ends: the turning points, the junctions of the

@@ -17,6 +17,7 @@ class InputError(DyncliError):
     (e.g. ``"find.0.v"``); the loader turns it into ``file:line:col``."""
 
     exit_code = 2
+    messages: list[str]    # the lines of an error about several fields (set by dyncli.api)
 
     def __init__(self, message: str, path: str | tuple | None = None):
         super().__init__(message)

@@ -43,10 +43,8 @@ def cmp_sqrt(x: float, square, rel: float = INPUT_ROUNDING) -> int:
     quick = _quick_cmp_sqrt(x, square, rel)
     if quick is not None:
         return quick
-    x = fr(x)
-    sq = fr(square)
-    r = fr(rel)
-    x2 = x * x
+    xq, sq, r = fr(x), fr(square), fr(rel)
+    x2 = xq * xq
     if x2 < (1 - r) ** 2 * sq:
         return -1
     if x2 > (1 + r) ** 2 * sq:

@@ -4,16 +4,17 @@ Every numeric field takes a YAML number or a string holding a constant
 expression (``"pi/6"``, ``"sqrt(k/m)"``) evaluated with the problem's
 ``params`` (passed as validation context ``{"params": {...}}``).
 
-Use the factories::
+Declare a field as ``Annotated[<type>, <factory>(...)]``, a form mypy reads
+(the factory's :class:`dyncli.fieldspec.FieldSpec`: pydantic's validator and JSON schema)::
 
-    m: Num(gt=0, dim="mass")                     # float > 0
-    e: Num(ge=0, le=1)                           # 0 <= e <= 1
-    mB: Num(gt=0, allow_inf=True)                # .inf allowed
-    vA1: Vec3()                                  # list of 3 floats
-    R: Tensor3()                                 # 3x3 list of floats
-    a: ExprField(("t", "s", "v"))                # dyncli.expr.Expr
-    omega: ExprVec3(("t",))                      # tuple of 3 Expr
-    at: Times()                                  # list of floats (may be empty)
+    m: Annotated[float, Num(gt=0, dim="mass")]            # float > 0
+    e: Annotated[float, Num(ge=0, le=1)]                  # 0 <= e <= 1
+    mB: Annotated[float, Num(gt=0, allow_inf=True)]       # .inf allowed
+    vA1: Annotated[Vector, Vec3()]                        # list of 3 -> tuple of 3 floats
+    R: Annotated[Matrix, Tensor3()]                       # 3x3 list -> tuple of 3 rows
+    a: Annotated[Expr, ExprField(("t", "s", "v"))]        # dyncli.expr.Expr
+    omega: Annotated[ExprTriple, ExprVec3(("t",))]        # tuple of 3 Expr
+    at: Annotated[list[float], Times()]                   # list of floats (may be empty)
 
 ``dim`` is the physical dimension (used by docs, schema and units support).
 """
@@ -30,13 +31,21 @@ from pydantic_core import PydanticCustomError
 
 from dyncli import expr as _expr
 from dyncli.errors import InputError
+from dyncli.fieldspec import FieldSpec
 
-NUMBER_SCHEMA = {
+NUMBER_SCHEMA: dict[str, Any] = {
     "anyOf": [
         {"type": "number"},
         {"type": "string", "description": "constant expression, e.g. \"pi/6\" or \"sqrt(k/m)\""},
     ]
 }
+
+
+#: the Python types of the fields the factories below validate (the first argument of ``Annotated``)
+Vector = tuple[float, float, float]
+Matrix = tuple        # 3 rows, each a tuple of 3 floats (bare ``tuple``: the type pydantic has always been given)
+ExprTriple = tuple    # 3 :class:`dyncli.expr.Expr` (bare ``tuple``, as above)
+Expr = _expr.Expr
 
 
 class StrictModel(BaseModel):
@@ -67,7 +76,7 @@ def _declared_dims(items: list[Any]) -> Iterable[str]:
     todo = list(items)
     while todo:
         item = todo.pop()
-        if isinstance(item, WithJsonSchema):
+        if isinstance(item, (FieldSpec, WithJsonSchema)):
             dim = item.json_schema.get("x-dimension") if isinstance(item.json_schema, dict) else None
             if dim:
                 yield dim
@@ -75,7 +84,7 @@ def _declared_dims(items: list[Any]) -> Iterable[str]:
         todo.extend(get_args(item))
 
 
-def _model_label(cls: type) -> str:
+def _model_label(cls: type[BaseModel]) -> str:
     """``type 'rectilinear' (Rectilinear)`` for a problem model, the class name for a part of one."""
     from typing import get_args
 
@@ -138,7 +147,7 @@ def Num(
     allow_inf: bool = False,
     dim: str | None = None,
     description: str | None = None,
-):
+) -> FieldSpec:
     """A float field accepting numbers and constant expressions."""
 
     def validate(value: Any, info: ValidationInfo) -> float:
@@ -165,18 +174,18 @@ def Num(
             pass        # the model's class (StrictModel.__pydantic_init_subclass__) names the field
     if description:
         schema["description"] = description
-    return Annotated[float, PlainValidator(validate), WithJsonSchema({**schema, **extra})]
+    return FieldSpec(validate, {**schema, **extra})
 
 
 def _fmt(v: float) -> str:
     return f"{v:.6g}"
 
 
-def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, description: str | None = None):
+def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, description: str | None = None) -> FieldSpec:
     """A vector: list of 3 numbers/expressions -> tuple of 3 floats
     (``unit``: a direction, returned normalised)."""
 
-    def validate(value: Any, info: ValidationInfo) -> tuple[float, float, float]:
+    def validate(value: Any, info: ValidationInfo) -> tuple[float, ...]:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             raise _err("expected a vector: a list of 3 numbers, e.g. [1, 0, 0]")
         if not isinstance(value, (list, tuple)) or len(value) != 3:
@@ -201,10 +210,10 @@ def Vec3(*, nonzero: bool = False, unit: bool = False, dim: str | None = None, d
         schema["x-dimension"] = dim
     if description:
         schema["description"] = description
-    return Annotated[tuple[float, float, float], PlainValidator(validate), WithJsonSchema(schema)]
+    return FieldSpec(validate, schema)
 
 
-def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str | None = None):
+def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str | None = None) -> FieldSpec:
     """A 3x3 list of rows -> tuple of 3 tuples of floats."""
 
     def validate(value: Any, info: ValidationInfo):
@@ -234,7 +243,7 @@ def Tensor3(*, symmetric: bool = False, dim: str | None = None, description: str
         schema["x-dimension"] = dim
     if description:
         schema["description"] = description
-    return Annotated[tuple, PlainValidator(validate), WithJsonSchema(schema)]
+    return FieldSpec(validate, schema)
 
 
 def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo | None, dim: str | None = None) -> _expr.Expr:
@@ -255,7 +264,7 @@ def parse_expr_value(value: Any, variables: Iterable[str], info: ValidationInfo 
         raise _err(exc.message) from None
 
 
-def ExprField(variables: Iterable[str], *, dim: str | None = None, description: str | None = None):
+def ExprField(variables: Iterable[str], *, dim: str | None = None, description: str | None = None) -> FieldSpec:
     """An expression in the given free variables -> :class:`dyncli.expr.Expr`."""
     variables = tuple(variables)
 
@@ -268,10 +277,10 @@ def ExprField(variables: Iterable[str], *, dim: str | None = None, description: 
     schema = {"anyOf": [{"type": "number"}, {"type": "string"}], "description": desc}
     if dim:
         schema["x-dimension"] = dim
-    return Annotated[_expr.Expr, PlainValidator(validate), WithJsonSchema(schema)]
+    return FieldSpec(validate, schema)
 
 
-def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: str | None = None):
+def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: str | None = None) -> FieldSpec:
     """Three expressions (components of a vector) -> tuple of 3 Expr."""
     variables = tuple(variables)
 
@@ -293,13 +302,13 @@ def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: s
     schema = {"type": "array", "items": {"anyOf": [{"type": "number"}, {"type": "string"}]}, "minItems": 3, "maxItems": 3, "description": desc}
     if dim:
         schema["x-dimension"] = dim
-    return Annotated[tuple, PlainValidator(validate), WithJsonSchema(schema)]
+    return FieldSpec(validate, schema)
 
 
 MAX_TIMES = 100_000
 
 
-def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to report the state"):
+def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to report the state") -> FieldSpec:
     """A list of time values (numbers or constant expressions); a single
     number is accepted as a one-element list."""
 
@@ -319,7 +328,7 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
         return out
 
     schema = {"type": "array", "items": NUMBER_SCHEMA, "description": description}
-    return Annotated[list[float], PlainValidator(validate), WithJsonSchema(schema)]
+    return FieldSpec(validate, schema)
 
 
 #: the ``find`` queries of a motion (§11), validated where they are answered (dyncli.queries), each
@@ -329,10 +338,10 @@ FIND_SCHEMA = {"type": "array", "items": {"type": "object"},
                               "{max: RESULT}, {min: RESULT} (optional within: [t1, t2])"}
 
 
-def Find():
+def Find() -> FieldSpec:
     """The ``find`` list of a type that reports a motion (§11); its entries are checked when they
     are answered, with their field paths."""
-    return Annotated[list[Any], WithJsonSchema(FIND_SCHEMA)]
+    return FieldSpec(None, FIND_SCHEMA)
 
 
 # ---------------------------------------------------------------------------
@@ -363,7 +372,7 @@ class Accuracy(StrictModel):
     """Accuracy controls for types with a numerical step (docs/getting-started.md, problem files)."""
 
     rtol: Annotated[float, PlainValidator(_rtol), WithJsonSchema({**NUMBER_SCHEMA, "exclusiveMaximum": 1, "minimum": RTOL_MIN})] = 1e-10
-    atol: Num(gt=0) = 1e-12  # type: ignore[valid-type]
+    atol: Annotated[float, Num(gt=0)] = 1e-12
     method: str = Field("auto", description="auto picks the cheapest exact route (closed form > quadrature > ODE)")
     estimate: bool = Field(False, description="also solve at a tighter tolerance and report the difference as error_estimate")
     max_steps: Optional[int] = Field(None, gt=0, description="cap on integrator steps (types that integrate; default set per type); a run that needs more fails fast with exit 1")
@@ -378,7 +387,7 @@ class ProblemBase(StrictModel):
 
     title: str | None = None
     params: dict[str, Any] = Field(default_factory=dict, description="name: number-or-expression, usable in every expression")
-    g: Num(ge=0, dim="acceleration") = 9.81  # type: ignore[valid-type]
+    g: Annotated[float, Num(ge=0, dim="acceleration")] = 9.81
     accuracy: Accuracy = Field(default_factory=Accuracy)
 
     accuracy_methods: ClassVar[tuple[str, ...]] = ACCURACY_METHODS_DEFAULT

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Mapping
 
 from dyncli.angles import degrees_hint
 from dyncli.errors import InputError
@@ -121,7 +121,7 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
         if not isinstance(items, list) or not items:
             line, col = doc.locate(("problems",)) or (None, None)
             return [], [Diagnostic(display, line, col, "problems", "expected a non-empty list of problems")]
-        prefixes = [("problems", i) for i in range(len(items))]
+        prefixes: list[tuple[Any, ...]] = [("problems", i) for i in range(len(items))]
     elif isinstance(data, dict) and "type" not in data and (near := _near_key(data, "problems")) is not None:
         line, col = doc.locate((near,)) or (None, None)
         return [], [Diagnostic(display, line, col, str(near),
@@ -263,7 +263,7 @@ def _strip_tags(raw: Any, loc) -> tuple:
     return tuple(out)
 
 
-def _message(cls, err: dict) -> str:
+def _message(cls, err: Mapping[str, Any]) -> str:
     t = err["type"]
     loc = tuple(err["loc"])
     if t == "extra_forbidden":
@@ -352,7 +352,7 @@ def _models_at(cls, loc: tuple) -> list:
         return out
 
     def tags(m) -> set:
-        out = set()
+        out: set[Any] = set()
         for f in getattr(m, "model_fields", {}).values():
             if typing.get_origin(f.annotation) is typing.Literal:
                 out.update(str(a) for a in typing.get_args(f.annotation))

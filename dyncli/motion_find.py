@@ -21,7 +21,7 @@ rounding).
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Iterable, Mapping
+from typing import Any, Callable, Iterable, Mapping, Sequence
 
 from dyncli import queries as _q
 from dyncli.errors import InputError
@@ -49,7 +49,7 @@ class StateMotion:
 
     def __init__(self, state: Callable[[float], Mapping], t0: float, t_end: float,
                  breaks: Iterable[float] = (), rtol: float = 0.0, rates: Mapping[str, Any] | None = None,
-                 batch: Callable[[list[float]], list[Mapping]] | None = None, subdivide: int | None = None):
+                 batch: Callable[[list[float]], Sequence[Mapping]] | None = None, subdivide: int | None = None):
         self.state, self.t0, self.t_end, self.rtol = state, float(t0), float(t_end), float(rtol)
         self.subdivide = subdivide                  # 1 when the breaks are an ODE's steps
         self.period: float | None = None            # set when the motion repeats exactly (find's extremes)
@@ -315,7 +315,7 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
 
     names = [n for s in result.series if s.index_name == "t" for n in s.names]
     acc = getattr(problem, "accuracy", None)
-    base = {"find": []}
+    base: dict[str, Any] = {"find": []}
     if acc is not None and getattr(acc, "estimate", False):
         base["accuracy"] = acc.model_copy(update={"estimate": False})
 

@@ -48,7 +48,7 @@ PROBE_STEPS = 2_000      # every this many steps, project the run's total and re
 # ---------------------------------------------------------------------------
 # the work budget, shared by every route that integrates
 
-def refusal(t_goal: float, need: float, limit: int) -> str:
+def refusal(t_goal: float, need: float, limit: float) -> str:
     """The one message of a run refused by its step budget."""
     return (f"the run to t = {t_goal:.6g} s needs about {need:.3g} integrator steps, more than the budget of "
             f"{limit}: shorten the time span, loosen accuracy.rtol, or raise accuracy.max_steps")
@@ -56,11 +56,11 @@ def refusal(t_goal: float, need: float, limit: int) -> str:
 
 class OverBudget(NumericalError):
     """A run refused by its :class:`Budget`; ``t``, ``y``, ``h``: the state and
-    step size where it was refused (for hints such as stiffness)."""
+    step size where it was refused (for hints such as stiffness); ``stiff``: a route judged it stiff."""
 
     def __init__(self, t_goal: float, need: float, limit: float, t: float, y=None, h: float = 0.0, message=None):
         super().__init__(message or refusal(t_goal, need, limit))
-        self.t_goal, self.need, self.limit, self.t, self.h = t_goal, need, limit, t, h
+        self.t_goal, self.need, self.limit, self.t, self.h, self.stiff = t_goal, need, limit, t, h, False
         self.y = None if y is None else np.array(y, dtype=float)
 
 
@@ -177,7 +177,7 @@ def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check
     (status -1, with the reason) at the last good step."""
     base = solver_class(method)
 
-    class Budgeted(base):
+    class Budgeted(base):  # type: ignore[misc, valid-type]  # scipy's class for the method, chosen at run time
         def __init__(self, fun, *args, **kw):
             super().__init__(finite(fun) if check_finite else fun, *args, **kw)
 

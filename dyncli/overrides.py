@@ -128,7 +128,7 @@ def _range(text: str, option: str, spec: str) -> tuple:
 
 def _top_level_split(text: str) -> list[str]:
     """Split at commas outside brackets and quotes: ``[1,0,0],[0,1,0]``."""
-    out, cur, depth, quote = [], [], 0, None
+    out, cur, depth, quote = [], list[str](), 0, None
     for ch in text:
         if quote:
             quote = None if ch == quote else quote
@@ -205,7 +205,7 @@ def field_path(cls, parts: tuple) -> tuple[bool, str]:
     return True, ""
 
 
-def target(lp, a: Assign) -> tuple | None:
+def target(lp, a: Assign) -> tuple[Any, ...] | None:
     """Where ``a`` lands in problem ``lp`` (a path tuple inside ``lp.raw``),
     or None when this problem has no such field or parameter."""
     from dyncli import registry
@@ -301,7 +301,7 @@ def _no_path_twice(problems, assigns: list[Assign]) -> None:
         for i, (a, t) in enumerate(hits):
             for b, u in hits[:i]:
                 if t[:len(u)] == u or u[:len(t)] == t:
-                    raise OverrideError(f"{b.label()} and {a.label()}: both give {'.'.join(map(str, min(t, u, key=len)))!r} "
+                    raise OverrideError(f"{b.label()} and {a.label()}: both give {'.'.join(map(str, (t if len(t) <= len(u) else u)))!r} "
                                         "its values; give each field once (a sweep of several values: one --sweep PATH=V1,V2,...)")
 
 

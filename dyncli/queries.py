@@ -98,7 +98,9 @@ def parse_queries(raw: list, constant: Callable[[Any], float] | None = None) -> 
     expression (``lambda x: dyncli.expr.constant(x, params)``; default: without params).  Raises
     :class:`InputError` at ``find.<i>.<field>`` with one message naming the field and the fix."""
     if constant is None:
-        from dyncli.expr import constant
+        from dyncli.expr import constant as default
+
+        constant = default
     if raw is None:
         return []
     if not isinstance(raw, (list, tuple)):
@@ -283,6 +285,7 @@ class _Crossings:
         """Spans of samples on one side closer to VALUE than their neighbours (with the rate: a
         rate turning toward VALUE and away again) may hide a touch or two crossings."""
         T, G, S = self.T, self.G, self.S
+        covered: set[int]
         n, covered = len(T), set()
         for j in range(1, n - 1):
             if S[j - 1] == S[j] == S[j + 1] != 0 and abs(G[j]) < abs(G[j - 1]) and abs(G[j]) <= abs(G[j + 1]):
@@ -301,7 +304,8 @@ class _Crossings:
     def _signs(self) -> None:
         """Sign changes between samples off VALUE, runs of samples on it (within tolerance)."""
         T, G, S = self.T, self.G, self.S
-        sp = ip = None                                # the last sample off VALUE: its side, index
+        sp: int | None = None                         # the last sample off VALUE: its side, index
+        ip = -1                                       # (read only once sp is set)
         for i, s in enumerate(S):
             if s != 0 and sp is not None and s != sp:     # crossed (possibly through samples on VALUE)
                 self.found.append((self.first_reach(T[ip], T[i], sp), -sp))
@@ -331,6 +335,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     HR = [hr(t) for t in T] if hr else []
     for k in range(len(HR) - 1):
         if HR[k] > 0 >= HR[k + 1]:                    # h turns from rising to not rising
+            assert hr is not None                     # (HR is empty without it)
             tm = _turn(hr, T[k], T[k + 1], T[k + 2] if k + 2 < len(T) and HR[k + 1] == 0 else None)
             cands.append((tm, h(tm)))
             rooted.add(k)

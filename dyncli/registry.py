@@ -43,6 +43,7 @@ def _declarations(entry: str, path: str):
     mod = sys.modules.get(name)
     if mod is None:
         spec = util.spec_from_file_location(name, path)
+        assert spec is not None and spec.loader is not None    # a .py file has a spec and a loader
         mod = util.module_from_spec(spec)
         sys.modules[name] = mod
         spec.loader.exec_module(mod)
@@ -138,7 +139,7 @@ def solver(name: str) -> Callable:
                 resolved(model, result, fn, info.motion.get("rates", {}), info.motion.get("fast", ()))
         return info.attach(result)
 
-    solve.__wrapped__ = fn  # type: ignore[attr-defined]
+    solve.__wrapped__ = fn  # type: ignore[attr-defined]  # functools' convention; mypy knows no attributes of a function
     solve.__name__ = getattr(fn, "__name__", "solve")
     return solve
 
@@ -164,4 +165,4 @@ def problem_union():
     models = tuple(model_class(n) for n in TYPES if available(n))
     if len(models) == 1:
         return models[0]
-    return Annotated[Union[models], Field(discriminator="type")]  # type: ignore[valid-type]
+    return Annotated[Union[models], Field(discriminator="type")]

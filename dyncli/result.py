@@ -25,7 +25,7 @@ nothing of any topic and draw it from these generic pieces:
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Sequence
 
 
 @dataclass
@@ -93,8 +93,8 @@ class Plot:
     ylabel: str
     lines: list[Line] = field(default_factory=list)
     zlabel: str | None = None         # set for 3-D plots
-    hlines: list[tuple[float, str]] = field(default_factory=list)   # (y, label)
-    vlines: list[tuple[float, str]] = field(default_factory=list)   # (x, label)
+    hlines: Sequence[tuple[float, str | None]] = field(default_factory=list)   # (y, label)
+    vlines: Sequence[tuple[float, str | None]] = field(default_factory=list)   # (x, label)
     logx: bool = False
     logy: bool = False
     equal_aspect: bool = False

@@ -7,6 +7,8 @@ Used by ``docs/hooks.py`` (``<!-- results: TYPE -->`` and
 
 from __future__ import annotations
 
+from collections.abc import Set as AbstractSet
+
 from dyncli.declare import ResultSpec, TypeSpec
 
 
@@ -24,7 +26,7 @@ def _name(r: ResultSpec) -> str:
     return f"`{r.name}`"
 
 
-def results_table(spec: TypeSpec, names: list[str] | None = None, exclude: set[str] = frozenset()) -> str:
+def results_table(spec: TypeSpec, names: list[str] | None = None, exclude: AbstractSet[str] = frozenset()) -> str:
     """The results table of a type: the declared results named in ``names``
     (in declaration order), or every result not in ``exclude``."""
     rows = ["| result | symbol | unit | meaning | equations |", "|---|---|---|---|---|"]

@@ -266,7 +266,7 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     eps, x1, V = sys.float_info.epsilon, C.chebpts1(deg + 1), C.chebvander(C.chebpts1(deg + 1), deg)
     edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
     stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
-    roots, touches, bad = [], [], []      # (the sign changes, the double roots, the unresolved cells)
+    roots, touches, bad = list[float](), list[float](), []      # (the sign changes, the double roots, the unresolved cells)
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
         if (budget := budget - 1) < 0:

@@ -7,7 +7,7 @@ import traceback
 import warnings
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from dyncli.errors import InputError, NumericalError
 from dyncli.loader import Diagnostic, LoadedProblem
@@ -48,6 +48,7 @@ def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
     if lp.error is not None:
         return Outcome(lp, None, 2, str(lp.error))
     try:
+        assert lp.type is not None     # read whenever the problem loaded without an error
         fn = registry.solver(lp.type)
         with warnings.catch_warnings(record=True) as caught:
             # no library warning reaches the user as raw text: floating-point
@@ -340,7 +341,7 @@ def _plot(outcomes: list[Outcome], path: str) -> int:
     from dyncli.render import plot as plotting
 
     groups = [(o.problem.file, o.problem.index,
-               [(o.problem.title, spec) for spec in registry.plots_for(o.problem.type, o.problem.model, o.result)])
+               [(o.problem.title, spec) for spec in registry.plots_for(cast(str, o.problem.type), o.problem.model, o.result)])
               for o in outcomes if o.result is not None]
     n = sum(len(g[2]) for g in groups)
     try:

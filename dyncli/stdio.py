@@ -152,11 +152,18 @@ def setup() -> None:
         sys.stdout = _Guard(sys.stdout)
 
 
+def _stdout_fd() -> int:
+    """The file descriptor of the interpreter's stdout (AttributeError when there is none)."""
+    if sys.__stdout__ is None:
+        raise AttributeError("sys.__stdout__ is None")
+    return sys.__stdout__.fileno()
+
+
 def _discard_stdout() -> None:
     """Point fd 1 at /dev/null so the interpreter's last flush cannot fail."""
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.__stdout__.fileno())
+        os.dup2(devnull, _stdout_fd())
     except (OSError, AttributeError, ValueError):  # pragma: no cover - defensive
         pass
 
@@ -189,7 +196,7 @@ def table_width(wide: bool = False) -> int | None:
         return int(cols)
     if _isatty():
         try:
-            width = os.get_terminal_size(sys.__stdout__.fileno()).columns
+            width = os.get_terminal_size(_stdout_fd()).columns
         except (OSError, AttributeError, ValueError):
             return 80
         return width if width >= MIN_COLUMNS else 80

@@ -75,6 +75,7 @@ def from_sympy(obj) -> tuple[tuple, set[str]]:
 
     def conv(x) -> tuple:
         # over 60 lines on purpose: one dispatch table over sympy's node types (see the docstring)
+        a: Any                                   # a converted argument, or a sympy one
         if isinstance(x, sp.Symbol):
             used.add(x.name)
             return ("var", x.name)
@@ -166,7 +167,7 @@ def simplify(obj):
     return out
 
 
-_WARM = []
+_WARM: list[bool] = []
 
 
 def warm() -> None:

@@ -93,7 +93,7 @@ def looks_like_quantity(text: str) -> bool:
     if len(text) > 4000:       # the number may be long (a 401-digit integer is "too large"), not unbounded
         return False
     m = QUANTITY.match(text)
-    return bool(m) and len(m.group("unit")) <= MAX_UNIT_TEXT
+    return m is not None and len(m.group("unit")) <= MAX_UNIT_TEXT
 
 
 class UnitError(ValueError):
@@ -122,7 +122,7 @@ _HZ = re.compile(r"(?<![A-Za-z])([kMGTmunµ]?)Hz(?![A-Za-z])")
 
 def is_angular(unit_text: str | None) -> bool:
     """True for an SI unit of an angular quantity (rad, rad/s, rad/s²)."""
-    return bool(unit_text) and "rad" in unit_text
+    return unit_text is not None and "rad" in unit_text
 
 
 def clean_unit(unit: str, angular: bool = False) -> str:

@@ -12,6 +12,7 @@ extra (``pip install 'dyncli[frames]'``), imported only here.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from dyncli.errors import InputError
 from dyncli.frames import _at, column_unit, field_unit, flat, need
@@ -45,7 +46,7 @@ def dataset(sols: list, problem: int | None = None):
     if math.prod(shape) != len(sols):
         raise InputError(f"to_xarray: the {len(sols)} points are not a grid of {' x '.join(map(str, shape))} values")
     over_t = _time_names(sols[0])
-    times = sols[0].results.get("t") if over_t else None
+    times: Any = sols[0].results.get("t") if over_t else None      # read only when over_t
     if over_t and any(list(s.results.get("t", [])) != list(times) for s in sols):
         raise InputError("to_xarray: the points report different times (a swept 'at'); use to_frame(long=True)")
     cols: dict[str, list] = {}

@@ -9,22 +9,22 @@ from __future__ import annotations
 
 import io
 import math
-from typing import Literal
+from typing import Annotated, Literal
 
 import pytest
 from pydantic import Field
 
 from dyncli import registry
 from dyncli.declare import R, TypeSpec, UndeclaredResult
-from dyncli.fields import Num, ProblemBase
+from dyncli.fields import Num, ProblemBase, Vector
 from dyncli.result import Result
 from tests.conftest import solve_text
 
 
 class Toy(ProblemBase):
     type: Literal["toy-spring"]
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    k: Num(gt=0, description="spring constant [N/m]") = Field(...)  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    k: Annotated[float, Num(gt=0, description="spring constant [N/m]")] = Field(...)
     points: dict[str, float] = Field(default_factory=dict, description="name: amplitude [m]")
     bug: bool = False
 
@@ -165,18 +165,18 @@ def test_a_misspelt_kind_is_an_error_at_declaration_naming_type_and_result():
 def test_a_misspelt_dimension_is_an_error_when_the_model_is_built_naming_type_and_field():
     from typing import Optional
 
-    from dyncli.fields import StrictModel, Vec3
+    from dyncli.fields import StrictModel, Vec3, Vector
     from dyncli.units import UnknownDimension
 
     with pytest.raises(UnknownDimension, match=r"type 'toy-typo' \(Typo\), field 'L': unknown dimension 'lenght' "
                                                r"\(did you mean 'length'\?\)"):
         class Typo(ProblemBase):
             type: Literal["toy-typo"]
-            L: Optional[Num(gt=0, dim="lenght")] = None  # type: ignore[valid-type]
+            L: Optional[Annotated[float, Num(gt=0, dim="lenght")]] = None
 
     with pytest.raises(UnknownDimension, match=r"model Part, field 'v': unknown dimension 'sped'"):
         class Part(StrictModel):
-            v: dict[str, Vec3(dim="sped")]  # type: ignore[valid-type]
+            v: dict[str, Annotated[Vector, Vec3(dim="sped")]]
 
 
 def test_an_unknown_dimension_never_turns_the_unit_check_off():

@@ -90,17 +90,19 @@ def repeats(g: float | None, c: float, tol) -> bool:
     return g is not None and number_ok(g, c, tol)
 
 
-def between(g: float | None, refs: list[float]) -> bool:
+def between(g: float | None, refs: list[float | None]) -> bool:
     """``g`` between the answers at the interval's ends, the three monotonic."""
-    if g is None or len(refs) != 3 or any(r is None for r in refs):
+    if g is None or len(refs) != 3:
         return False
     lo, mid, hi = refs
+    if lo is None or mid is None or hi is None:
+        return False
     if not (lo <= mid <= hi or lo >= mid >= hi):
         return False
     return min(lo, hi) <= g <= max(lo, hi)
 
 
-def nearest_rel(g: float | None, refs: list[float]) -> float | None:
+def nearest_rel(g: float | None, refs: list[float | None]) -> float | None:
     """The smallest relative error of ``g`` from the carried references."""
     rels = [abs(g - r) / abs(r) for r in refs if g is not None and r is not None and r != 0]
     return min(rels) if rels else None

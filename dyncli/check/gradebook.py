@@ -7,10 +7,13 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from dyncli.check.emit.common import fmt_points
 from dyncli.check.safe import oneline, say, shown
+
+if TYPE_CHECKING:
+    from dyncli.check.roster import Roster
 
 NO_SUBMISSION = "(no submission)"
 ORDER = ("correct", "carried", "partial", "wrong", "missing", "invalid", "error")
@@ -189,7 +192,7 @@ def regrade(report, previous: dict[str, float]) -> list[dict]:
     return out
 
 
-def regrade_table(changes: list[dict], previous_name: str) -> str:
+def regrade_table(changes: list[dict], previous_name: str | None) -> str:
     if not changes:
         return f"regrade: no student's score changed since {oneline(previous_name)}\n"
     lines = [f"regrade: {len(changes)} student{'s' if len(changes) != 1 else ''} with a changed score since "
@@ -216,7 +219,7 @@ class CourseOptions:
 
     def __init__(self, roster: str | None = None, stats: bool = False, compare: str | None = None):
         self.roster_name, self.stats, self.compare = roster, stats, compare
-        self.roster = None
+        self.roster: Roster | None = None
         self.previous: dict[str, float] | None = None
         self.summary = ""
 

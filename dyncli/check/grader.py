@@ -86,16 +86,17 @@ def scalar(x: Any) -> float | None:
 class Grader:
     def __init__(self, key: Key, files, reveal: bool = False):
         self.key, self.files, self.reveal = key, files, reveal
-        self._params: dict[str, dict] = {}
+        self._params: dict[str | None, dict] = {}
         self._truth: dict[tuple, Truth] = {}
         self._outcomes: dict[tuple, Any] = {}
 
     # -- variants and references ------------------------------------------
-    def params(self, student: str) -> dict[str, float]:
-        """The student's drawn values (raises VariantError)."""
+    def params(self, student: str | None) -> dict[str, float]:
+        """The student's drawn values (raises VariantError); ``student`` None: self-study (no variants)."""
         if student not in self._params:
             v = self.key.variants
-            self._params[student] = v.draw(student) if v is not None else {}
+            assert v is None or student is not None          # variants are drawn for a student id
+            self._params[student] = v.draw(student) if v is not None and student is not None else {}
         return self._params[student]
 
     def problem(self, q: Question, values: dict[str, Any], extra: dict[str, float]) -> LoadedProblem:
@@ -103,15 +104,16 @@ class Grader:
         in its ``params`` (not validated: :meth:`ProblemFiles.solve` does it
         once per distinct content)."""
         base = q.problem
+        assert base is not None              # solved only when the question has its problem (q.error None)
         raw = base.raw
         if isinstance(raw, dict) and (values or extra):
-            own = raw.get("params") if isinstance(raw.get("params"), dict) else {}
+            own = op if isinstance(op := raw.get("params"), dict) else {}
             sub = self.key.variants.substitution(values) if self.key.variants is not None else {}
             raw = {**raw, "params": {**own, **{n: v for n, v in sub.items() if n in own}, **extra}}
         return LoadedProblem(base.file, base.index, base.type, base.title, raw, base.doc, base.prefix,
                              base_dir=base.base_dir)
 
-    def truth(self, q: Question, student: str, carried: float | None = None) -> Truth:
+    def truth(self, q: Question, student: str | None, carried: float | None = None) -> Truth:
         """Q's reference for this student; ``carried``: the value of the
         carry parameter (default: the true answer of the question it comes from)."""
         memo = (q.id, student, carried)
@@ -121,7 +123,7 @@ class Grader:
         extra: dict[str, float] = {}
         if q.carry is not None:
             if carried is None:
-                src = self.truth(self.key.question(q.carry[0]), student)
+                src = self.truth(self._source(q), student)
                 carried = scalar(src.value)
                 if src.error or carried is None:
                     t = Truth(error=src.error or f"the true answer to '{shown(q.carry[0])}' (carried forward) "
@@ -211,7 +213,7 @@ class Grader:
             sr.error_code = max(sr.error_code, t.code)
             return r
         if q.invalid is not None or t.unknown:
-            r.status, r.message = ("invalid", q.invalid) if q.invalid is not None else ("unknown", t.error)
+            r.status, r.message = ("invalid", q.invalid) if q.invalid is not None else ("unknown", t.error or "")
             return r
         if r.given is None and not policy.null_is_answer:
             r.message = "not answered"
@@ -236,7 +238,7 @@ class Grader:
         the question this one carries from (:mod:`dyncli.check.carry`)."""
         if q.carry is None or sub.answers.get(q.carry[0]) is None:
             return False
-        src = self.key.question(q.carry[0])
+        src = self._source(q)
         true_src = self.truth(src, sub.student)
         if true_src.error:
             return False
@@ -273,6 +275,13 @@ class Grader:
                          f"exceeds the tolerance ({q.tol.describe()})")
         return False
 
+    def _source(self, q: Question) -> Question:
+        """The question ``q`` carries its input from (the key's reader checked that it exists)."""
+        assert q.carry is not None
+        src = self.key.question(q.carry[0])
+        assert src is not None
+        return src
+
     def plausible(self, src: Question, c: float, sub: Submission) -> bool:
         """Whether ``c`` is a value the question ``src`` can carry forward:
         within :data:`~dyncli.check.carry.WINDOW` of its true answer, or of the
@@ -281,7 +290,7 @@ class Grader:
             return True
         if src.carry is None or sub.answers.get(src.carry[0]) is None:
             return False
-        up = self.key.question(src.carry[0])
+        up = self._source(src)
         t_up = self.truth(up, sub.student)
         m = None if t_up.error else _si_scalar(sub.answers[up.id], self.unit(up, t_up, sub.answers[up.id]))
         if m is None or not self.plausible(up, m, sub):

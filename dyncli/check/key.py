@@ -14,6 +14,7 @@ the problems and prints an answer file holding every result, which
 from __future__ import annotations
 
 import os
+from collections.abc import Set as AbstractSet
 from pathlib import Path
 from typing import Any
 
@@ -50,7 +51,7 @@ def plain(x: Any) -> Any:
     return x
 
 
-def flatten_results(results: dict, series_names: set[str] = frozenset()) -> dict[str, Any]:
+def flatten_results(results: dict, series_names: AbstractSet[str] = frozenset()) -> dict[str, Any]:
     """Results -> {dotted key: value} as the key file lists them."""
     results = plain(results)
     out: dict[str, Any] = {}

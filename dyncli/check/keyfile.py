@@ -266,7 +266,7 @@ class _Reader:
         where = Diagnostic(self.key.file, pos[0], pos[1], ".".join(map(str, path + ("problem",))), "")
         if isinstance(p, dict):
             t = p.get("type")
-            title = p.get("title") if isinstance(p.get("title"), str) else f"question {q.id}"
+            title = tt if isinstance(tt := p.get("title"), str) else f"question {q.id}"
             q.problem = LoadedProblem(self.key.file, 0, t if isinstance(t, str) else None, title, p, self.doc,
                                       path + ("problem",), base_dir=self.key.base_dir)
             if q.index not in (None, 0):

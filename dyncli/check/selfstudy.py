@@ -91,7 +91,7 @@ class SelfStudy:
         if spec.problem_inline is not None:
             raw = spec.problem_inline
             t = raw.get("type")
-            title = raw.get("title") if isinstance(raw.get("title"), str) else f"{af.file}: inline problem"
+            title = tt if isinstance(tt := raw.get("title"), str) else f"{af.file}: inline problem"
             lp = LoadedProblem(af.file, spec.index, t if isinstance(t, str) else None, title, raw, af.doc,
                                spec.prefix + ("problem",), base_dir=af.base_dir)
             if spec.problem_index not in (None, 0):
@@ -116,7 +116,7 @@ class SelfStudy:
             raw = dict(lp.raw) if isinstance(lp.raw, dict) else lp.raw
             lp = LoadedProblem(lp.file, lp.index, lp.type, lp.title, raw, lp.doc, lp.prefix, base_dir=lp.base_dir)
         if spec.params is not None and isinstance(lp.raw, dict):
-            base = lp.raw.get("params") if isinstance(lp.raw.get("params"), dict) else {}
+            base = bp if isinstance(bp := lp.raw.get("params"), dict) else {}
             lp.raw = dict(lp.raw)
             lp.raw["params"] = {**base, **spec.params}
         validate(lp)

@@ -73,7 +73,7 @@ def sheet(key, grader, student: str, cache: dict | None = None) -> dict:
     for lp, qs in _groups(key):
         raw = grader.problem(qs[0], values, {}).raw
         carried = {q.carry[1]: q.carry[0] for q in qs if q.carry is not None}
-        own = lp.raw.get("params") if isinstance(lp.raw, dict) and isinstance(lp.raw.get("params"), dict) else {}
+        own = op if isinstance(lp.raw, dict) and isinstance(op := lp.raw.get("params"), dict) else {}
         vals, punits = param_values(own, values, var_units, carried)
         punits = {**param_units(lp.type, lp.raw, own), **punits}
         if carried and isinstance(raw, dict) and isinstance(raw.get("params"), dict):

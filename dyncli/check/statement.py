@@ -118,8 +118,8 @@ def param_values(raw_params: dict, drawn: dict[str, float], units: dict[str, str
             vals[n] = f"your answer to {carried[n]}"
         elif n in drawn:
             vals[n] = drawn[n]
-            if units.get(n):
-                shown_units[n] = units[n]
+            if u := units.get(n):
+                shown_units[n] = u
         elif isinstance(v, (int, float)) and not isinstance(v, bool):
             vals[n] = v
         elif isinstance(v, str) and (m := _QTY.match(v)) and m.group(2).strip():

@@ -37,7 +37,7 @@ class Submission:
     file: str
     student: str | None = None
     answers: dict[str, Any] = field(default_factory=dict)
-    positions: dict[str, tuple[int, int]] = field(default_factory=dict)
+    positions: dict[str, tuple[int | None, int | None]] = field(default_factory=dict)
     written: dict[str, str] = field(default_factory=dict)   # an answer's source text (numbers only)
     diagnostics: list[Diagnostic] = field(default_factory=list)
 

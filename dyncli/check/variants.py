@@ -130,8 +130,8 @@ def read_variants(raw: Any, path: tuple, diag) -> Variants | None:
         v = _read(raw, path, bad)
     except _Bad as exc:
         bad.append(exc)
-    for exc in bad:
-        diag(exc.path, exc.message)
+    for b in bad:
+        diag(b.path, b.message)
     return None if bad else v
 
 

@@ -39,8 +39,8 @@ def snap(value: Any, scale: float) -> tuple[Any, bool]:
         out = [snap(v, scale) for v in value]
         return [v for v, _ in out], any(f for _, f in out)
     if isinstance(value, dict):
-        out = {k: snap(v, scale) for k, v in value.items()}
-        return {k: v for k, (v, _) in out.items()}, any(f for _, f in out.values())
+        pairs = {k: snap(v, scale) for k, v in value.items()}
+        return {k: v for k, (v, _) in pairs.items()}, any(f for _, f in pairs.values())
     if isinstance(value, float) and value != 0 and math.isfinite(value) and abs(value) <= ROUNDOFF * scale:
         return 0.0, True
     return value, False

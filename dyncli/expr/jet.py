@@ -246,6 +246,7 @@ class Lru:
         import threading
         from collections import OrderedDict
 
+        self._d: OrderedDict[Any, Any]
         self.size, self._d, self._lock = size, OrderedDict(), threading.Lock()
 
     def get(self, key):
@@ -291,7 +292,7 @@ def jet(e: Expr, t, var: str = "t", **env: Any) -> tuple[np.ndarray, np.ndarray,
     t = np.asarray(t, dtype=float)
     with np.errstate(all="ignore"):
         out = fn({**env, var: t})
-    return tuple(np.broadcast_to(np.asarray(x, dtype=float), t.shape).copy() for x in out)  # type: ignore[return-value]
+    return tuple(np.broadcast_to(np.asarray(x, dtype=float), t.shape).copy() for x in out)  # type: ignore[return-value]  # 3 arrays: mypy reads tuple(generator) as variadic
 
 
 def jet_at(e: Expr, t: float, var: str = "t") -> tuple[float, float, float]:
@@ -303,7 +304,7 @@ def jet_at(e: Expr, t: float, var: str = "t") -> tuple[float, float, float]:
     (0.0, 1.0, 0.0)
     """
     out = _compiled(e, var, floatmath)({var: float(t)})
-    return tuple(float(x) for x in out)      # type: ignore[return-value]
+    return tuple(float(x) for x in out)  # type: ignore[return-value]  # 3 floats: mypy reads tuple(generator) as variadic
 
 
 def vec_jet_at(exprs, t: float, var: str = "t") -> tuple[tuple[float, ...], ...]:

@@ -78,7 +78,7 @@ def _same_index(series) -> list[tuple[str, list, list[str]]]:
     groups: dict = {}
     for s in series:
         index = s.index.tolist() if hasattr(s.index, "tolist") else list(s.index)
-        key = (s.index_name, tuple(index))
+        key: tuple | int = (s.index_name, tuple(index))
         try:
             hash(key)
         except TypeError:                  # an index of lists: a group of its own

@@ -22,7 +22,7 @@ class _Buffer(io.StringIO):
         self._encoding = encoding
 
     @property
-    def encoding(self):  # type: ignore[override]
+    def encoding(self):
         return self._encoding
 
 

@@ -34,7 +34,7 @@ def _array(x) -> Any:
         fin = np.isfinite(x)
         if fin.all():
             return x.tolist()
-        return np.where(fin, x, None).tolist()
+        return np.where(fin, x, None).tolist()  # type: ignore[attr-defined]  # numpy's stubs take where(c, x, None) for where(c)
     if x.dtype.kind in "iub":
         return x.tolist()
     return jsonable(x.tolist())

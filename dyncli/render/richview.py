@@ -5,6 +5,7 @@ is a terminal (or by the tests that compare the two layouts)."""
 from __future__ import annotations
 
 from rich import box as rbox
+from rich.console import JustifyMethod
 from rich.table import Table as RTable
 from rich.text import Text as RText
 
@@ -23,7 +24,7 @@ def text(x, style: str = "") -> RText:
     return RText(x, style=style or "")
 
 
-def _cell(x, justify: str) -> RText:
+def _cell(x, justify: JustifyMethod) -> RText:
     if isinstance(x, Text):
         out = RText(justify=justify)
         for part, st in x.spans:

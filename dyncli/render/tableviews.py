@@ -70,11 +70,11 @@ def convert_view(view, wanted: list[str] | None):
                         r[j] = _scale(r[j], f)
         return replace(view, columns=columns, rows=rows), ok
     if isinstance(view, FrameTable):
-        rows = []
+        frows = []
         for label, comps in view.rows:
             new, f, named = _relabel(label, wanted)
             ok = ok and (named or not _numeric(comps))
-            rows.append((new, [_scale(c, f) if not isinstance(c, str) else c for c in comps]) if f is not None
-                        else (label, comps))
-        return replace(view, rows=rows), ok
+            frows.append((new, [_scale(c, f) if not isinstance(c, str) else c for c in comps]) if f is not None
+                         else (label, comps))
+        return replace(view, rows=frows), ok
     return view, True

@@ -74,7 +74,8 @@ def swept_label(swept: dict | None, digits: int = 6) -> str:
 
 
 def _series(s, values: dict, unit_names: dict, symbols: dict, digits: int) -> Grid:
-    cols, units, data = [s.index_name], [None], []
+    cols, data = [s.index_name], []
+    units: list[str | None] = [None]
     for label, unit, vals in series_columns(s, values, unit_names, symbols):
         cols.append(label)
         units.append(unit)

@@ -18,7 +18,7 @@ def _said(d) -> str:
     return d.message if not d.path else f"{d.path}: {d.message}"
 
 
-def annotations(report: Report) -> list[tuple[str, int | None, int | None, str, str]]:
+def error_annotations(report: Report) -> list[tuple[str, int | None, int | None, str, str]]:
     """Everything to annotate: (file, line, col, title, message)."""
     out = []
     for s in report.submissions:
@@ -42,7 +42,7 @@ def annotations(report: Report) -> list[tuple[str, int | None, int | None, str, 
 
 def render(report: Report) -> str:
     lines = []
-    items = annotations(report)
+    items = error_annotations(report)
     for file, line, col, title, msg in items[:GITHUB_MAX_ERRORS]:
         f = oneline(file) if file not in ("<stdin>", "") else None
         lines.append(gh_command("error", msg, file=f, line=line if f else None, col=col if f else None, title=title))

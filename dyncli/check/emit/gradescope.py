@@ -13,6 +13,8 @@ the assignment's setting)."""
 
 from __future__ import annotations
 
+from typing import Any
+
 from dyncli.check.emit.common import FULL, STATUS_TEXT, after_status, fmt_given, json_text, summary_line, who
 from dyncli.check.results import Report
 from dyncli.check.safe import oneline
@@ -35,7 +37,7 @@ def _self_study(report: Report) -> dict:
                 if q.status != "correct":
                     text = after_status(q, report.reveal)
                     out += (f": {text}" if text else "") + (f"\nline {q.line} of {s.file}; given {fmt_given(q.given)}; "
-                                                            f"tolerance {q.tolerance.describe()}")
+                                                            f"tolerance {q.tolerance.describe() if q.tolerance else ''}")
                 tests.append({"name": (f"{s.file}: " if multi else "") + f"{g.title}: {q.answer}", "score": q.score,
                               "max_score": q.points, "status": "passed" if q.correct else "failed", "output": out})
     return {"score": report.score, "output": summary_line(report), "tests": tests}
@@ -80,7 +82,7 @@ def _graded(report: Report) -> dict:
     else:
         output = f"{full} of {len(visible)} visible answers with full points" + \
             (f"; {hidden} question{'s' if hidden != 1 else ''} graded after release" if hidden else "")
-    doc = {"output": output, "tests": tests}
+    doc: dict[str, Any] = {"output": output, "tests": tests}
     if not hidden or (bad and not multi):
         doc = {"score": report.score, **doc}
     return doc

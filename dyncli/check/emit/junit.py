@@ -71,7 +71,7 @@ def _answer_file(report: Report, s: SubmissionResult, suite) -> list[int]:
             text = after_status(q, report.reveal)
             msg = f"{q.answer}: {STATUS_TEXT[q.status]}" + (f": {text}" if text else "")
             body = [f"{where(s.file, q.line, q.col)}: {msg}", f"points: {points(q)}", f"given: {fmt_given(q.given)}",
-                    f"tolerance: {q.tolerance.describe()}"]
+                    f"tolerance: {q.tolerance.describe() if q.tolerance else ''}"]
             _verdict(tc, q.status, msg, body, n)
     return n
 

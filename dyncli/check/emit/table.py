@@ -7,6 +7,8 @@ answers to no question listed as ``unknown``."""
 
 from __future__ import annotations
 
+from typing import Any
+
 from dyncli.check.emit.common import MARKS, STATUS_TEXT, fmt_given, fmt_points, points, summary_line, who
 from dyncli.check.results import Report, SubmissionResult
 from dyncli.check.safe import oneline
@@ -54,7 +56,7 @@ def _answer_file(report: Report, s: SubmissionResult, console, marks: dict) -> N
     for d in s.diagnostics:
         console.print(Text(oneline(d), style="magenta"))
     fold = {"overflow": "fold"}
-    columns = [("line", {"justify": "right", "style": "dim"}), ("answer", {}), ("", {"no_wrap": True}),
+    columns: list[tuple[str, dict[str, Any]]] = [("line", {"justify": "right", "style": "dim"}), ("answer", {}), ("", {"no_wrap": True}),
                ("points", {"justify": "right"}), ("given", fold)]
     columns += [("expected", fold)] * report.reveal + [("feedback", fold)]
     for g in s.groups:

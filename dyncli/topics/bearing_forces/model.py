@@ -2,31 +2,31 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Find, Num, ProblemBase, StrictModel, Times
+from dyncli.fields import Expr, ExprField, Find, Num, ProblemBase, StrictModel, Times
 
 
 class ArmMass(StrictModel):
     """A point mass on a massless arm pivoted at O, in the plane e'1-e'2 that turns with the shaft:
     x = L (sin α e'1 + cos α e'2), α measured from the axis e'2 towards e'1."""
 
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    L: Num(ge=0, dim="length", description="arm length from O [m]") = Field(...)  # type: ignore[valid-type]
-    alpha: ExprField(("t",), dim="angle", description="α(t): angle of the arm from the axis e'2 towards e'1 [rad], a number or an expression in t (the notes' mass A has −α, B has +α)") = Field(...)  # type: ignore[valid-type]
-    y: Num(dim="length", description="axial position of the arm's pivot on the shaft, along e'2 from O [m]") = 0.0  # type: ignore[valid-type]
-    beta: Num(dim="angle", description="azimuth of the arm's plane about e'2: the arm swings in the plane of e'2 and cos β e'1 + sin β e'3 [rad]") = 0.0  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    L: Annotated[float, Num(ge=0, dim="length", description="arm length from O [m]")] = Field(...)
+    alpha: Annotated[Expr, ExprField(("t",), dim="angle", description="α(t): angle of the arm from the axis e'2 towards e'1 [rad], a number or an expression in t (the notes' mass A has −α, B has +α)")] = Field(...)
+    y: Annotated[float, Num(dim="length", description="axial position of the arm's pivot on the shaft, along e'2 from O [m]")] = 0.0
+    beta: Annotated[float, Num(dim="angle", description="azimuth of the arm's plane about e'2: the arm swings in the plane of e'2 and cos β e'1 + sin β e'3 [rad]")] = 0.0
 
 
 class Bearings(StrictModel):
     """Two bearings on the shaft, at axial positions along e'2 (from O): they share the load F = Ġ
     and carry the moment M_O between them as a pair of forces; A also takes the axial (thrust) load."""
 
-    A: Num(dim="length", description="axial position of bearing A (and the thrust bearing) along e'2 [m]") = Field(...)  # type: ignore[valid-type]
-    B: Num(dim="length", description="axial position of bearing B along e'2 [m]") = Field(...)  # type: ignore[valid-type]
+    A: Annotated[float, Num(dim="length", description="axial position of bearing A (and the thrust bearing) along e'2 [m]")] = Field(...)
+    B: Annotated[float, Num(dim="length", description="axial position of bearing B along e'2 [m]")] = Field(...)
 
     @model_validator(mode="after")
     def _apart(self):
@@ -43,14 +43,14 @@ class BearingForces(ProblemBase):
 
     type: Literal["bearing-forces"]
     masses: list[ArmMass] = Field(..., description="the masses on their arms (at least one)", json_schema_extra={"minItems": 1})
-    omega: Optional[ExprField(("t",), dim="angular velocity", description="ω(t): prescribed spin of the shaft about e'2 [rad/s] (a motor drives it); give omega or omega0")] = None  # type: ignore[valid-type]
-    omega0: Optional[Num(dim="angular velocity", description="ω at t = 0 for a shaft turning freely (M_O·e'2 = 0, H_O·e'2 conserved, 36.19-36.22); give omega or omega0")] = None  # type: ignore[valid-type]
-    h: Num(dim="length", description="the bearing is at x1 = −h e'2 (36.17) [m]") = 0.0  # type: ignore[valid-type]
+    omega: Optional[Annotated[Expr, ExprField(("t",), dim="angular velocity", description="ω(t): prescribed spin of the shaft about e'2 [rad/s] (a motor drives it); give omega or omega0")]] = None
+    omega0: Optional[Annotated[float, Num(dim="angular velocity", description="ω at t = 0 for a shaft turning freely (M_O·e'2 = 0, H_O·e'2 conserved, 36.19-36.22); give omega or omega0")]] = None
+    h: Annotated[float, Num(dim="length", description="the bearing is at x1 = −h e'2 (36.17) [m]")] = 0.0
     bearings: Optional[Bearings] = Field(None, description="two bearings A and B at axial positions along e'2 "
                                          "instead of the one bearing at −h e'2")
-    at: Times(description="times t [s] at which to report the loads") = Field(..., json_schema_extra={"minItems": 1})  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {max: F1.0}, {min: motor_torque}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
+    at: Annotated[list[float], Times(description="times t [s] at which to report the loads")] = Field(..., json_schema_extra={"minItems": 1})
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {max: F1.0}, {min: motor_torque}")
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")]] = None
 
     @field_validator("masses")
     @classmethod

@@ -116,6 +116,7 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None) -> Non
     def full(t: float) -> dict:
         return dict(batch([t])[0], distance=distance(t))
 
+    motion: mf.StateMotion
     motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,
                             rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a",
                                    "distance": lambda t, _: abs(motion.flat(t)["s_dot"])},

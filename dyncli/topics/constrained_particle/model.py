@@ -15,7 +15,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import Expr, ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
 from dyncli.topics.particle.model import Custom, Damper, Drag, Gravity, InverseSquare, Spring, Uniform
 from dyncli.topics.particle.model import _check_kind as _particle_check_kind
 from dyncli.topics.particle.model import check_times
@@ -29,7 +29,7 @@ class CurveFriction(StrictModel):
     and the other tangential force is at most μ|N|."""
 
     kind: Literal["friction"]
-    mu: Num(ge=0, description="friction coefficient (kinetic = static)")  # type: ignore[valid-type]
+    mu: Annotated[float, Num(ge=0, description="friction coefficient (kinetic = static)")]
 
 
 def _check_kind(value: Any) -> Any:
@@ -49,43 +49,43 @@ Force = Annotated[
 class Curve(StrictModel):
     """The curve y(q) = x1(q) e1 + x2(q) e2 + x3(q) e3 on the frame of the curve."""
 
-    x1: ExprField(CURVE_VARS, dim="length", description="x1(q) [m]: number or expression in q")  # type: ignore[valid-type]
-    x2: ExprField(CURVE_VARS, dim="length", description="x2(q) [m]: number or expression in q")  # type: ignore[valid-type]
-    x3: ExprField(CURVE_VARS, dim="length", description="x3(q) [m]: number or expression in q")  # type: ignore[valid-type]
+    x1: Annotated[Expr, ExprField(CURVE_VARS, dim="length", description="x1(q) [m]: number or expression in q")]
+    x2: Annotated[Expr, ExprField(CURVE_VARS, dim="length", description="x2(q) [m]: number or expression in q")]
+    x3: Annotated[Expr, ExprField(CURVE_VARS, dim="length", description="x3(q) [m]: number or expression in q")]
 
 
 class Rotation(StrictModel):
     """The curve turns about the fixed axis through the origin along ``axis``
     at the rate ω(t) (right-handed about ``axis``)."""
 
-    axis: Vec3(unit=True, description="direction of the fixed axis (unit vector)") = (0.0, 0.0, 1.0)  # type: ignore[valid-type]
-    omega: Optional[ExprField(("t",), dim="angular_velocity", description="rate ω [rad/s]: number or expression in t; "  # type: ignore[valid-type]
-                                                                          "required unless the problem asks only steady queries")] = None
+    axis: Annotated[Vector, Vec3(unit=True, description="direction of the fixed axis (unit vector)")] = (0.0, 0.0, 1.0)
+    omega: Optional[Annotated[Expr, ExprField(("t",), dim="angular_velocity", description="rate ω [rad/s]: number or expression in t; "
+                                                                          "required unless the problem asks only steady queries")]] = None
 
 
 class SteadyQuery(StrictModel):
     """A steady motion: the particle at rest relative to the curve at q, carried round the axis at the
     constant rate ω that holds it there (with friction: the range of rates)."""
 
-    q: Num(description="the parameter q where the particle stays")  # type: ignore[valid-type]
+    q: Annotated[float, Num(description="the parameter q where the particle stays")]
 
 
 class ConstrainedParticle(ProblemBase):
     """A particle of mass m that must stay on a curve (one degree of freedom q)."""
 
     type: Literal["constrained-particle"]
-    m: Num(gt=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")]
     curve: Curve = Field(description="the curve {x1, x2, x3}: expressions in the parameter q [m]")
-    q_range: Optional[list[Num()]] = Field(  # type: ignore[valid-type]
+    q_range: Optional[list[Annotated[float, Num()]]] = Field(
         None, description="[q_min, q_max]: the ends of the wire (a closed curve when y(q_min) = y(q_max)); "
                           "needed for the relative equilibria")
     rotation: Optional[Rotation] = Field(None, description="{axis, omega}: the curve turns about a fixed axis; none = fixed")
-    q0: Num(description="initial parameter q(0)") = 0.0  # type: ignore[valid-type]
-    q_dot0: Num(description="initial rate dq/dt at t = 0 [1/s] (relative to the curve)") = 0.0  # type: ignore[valid-type]
+    q0: Annotated[float, Num(description="initial parameter q(0)")] = 0.0
+    q_dot0: Annotated[float, Num(description="initial rate dq/dt at t = 0 [1/s] (relative to the curve)")] = 0.0
     forces: list[Force] = Field(default_factory=list, description="force terms (as for particle; friction: only mu)")
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")] = None  # type: ignore[valid-type]
-    at: Times(description="times at which to report the state [s]; default [0, t_end]") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {q: VALUE}}, {max: x.1}, {min: N.1}")  # type: ignore[valid-type]
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")]] = None
+    at: Annotated[list[float], Times(description="times at which to report the state [s]; default [0, t_end]")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {q: VALUE}}, {max: x.1}, {min: N.1}")
     steady: list[SteadyQuery] = Field(
         default_factory=list, max_length=1000,
         description="steady motions solved for the rate that holds them: [{q: Q}, ...] on a curve turning about "

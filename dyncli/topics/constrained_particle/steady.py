@@ -22,6 +22,8 @@ G(q) = F·e_t + u m ρ·e_t restoring about q*, small oscillations at sqrt(−G�
 from __future__ import annotations
 
 import math
+from typing import Any
+
 import numpy as np
 
 from dyncli.errors import InputError
@@ -130,7 +132,7 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
     if not held_anyhow and abs(alpha) > 64 * EPS * scale_a and -beta / alpha >= 0:
         u = -beta / alpha
     ranges = _friction_ranges(alpha, beta, A, B, mu, scale_f, scale_a)
-    out = {"q": q + 0.0, "x": [float(c) + 0.0 for c in x], "rho": r, "exists": True,
+    out: dict[str, Any] = {"q": q + 0.0, "x": [float(c) + 0.0 for c in x], "rho": r, "exists": True,
            "omega": None if u is None else math.sqrt(u), "v": None, "period": None,
            "N": None, "stable": None, "omega_small": None}
     if u is None and not held_anyhow and not ranges:       # a physical "no solution": exit 0, said why
@@ -144,7 +146,7 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
                    N=_on_path_basis(model, q, u * A + B), **_stability(model, F, q, u))
     elif held_anyhow:
         out.update(N=_on_path_basis(model, q, B))
-    lo, hi = ranges[0] if ranges else ((0.0, math.inf) if held_anyhow else (u, u))
+    lo, hi = ranges[0] if ranges else ((0.0, math.inf) if held_anyhow or u is None else (u, u))   # (u None: returned above)
     out.update(omega_min=math.sqrt(lo), omega_max=None if hi == math.inf else math.sqrt(hi))
     out.update(v_min=out["omega_min"] * r, v_max=None if out["omega_max"] is None else out["omega_max"] * r)
     notes = _degrees(model, q, x)

@@ -2,19 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
-from dyncli.fields import ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import ExprTriple, ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
 
 
 class Coin(StrictModel):
     """A homogeneous coin (disk) of radius R and thickness h: moments (39.10)."""
 
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    R: Num(gt=0, dim="length", description="radius [m]") = Field(...)  # type: ignore[valid-type]
-    h: Num(ge=0, dim="length", description="thickness [m]") = Field(...)  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    R: Annotated[float, Num(gt=0, dim="length", description="radius [m]")] = Field(...)
+    h: Annotated[float, Num(ge=0, dim="length", description="thickness [m]")] = Field(...)
 
 
 class Euler(ProblemBase):
@@ -23,13 +23,13 @@ class Euler(ProblemBase):
     functions otherwise)."""
 
     type: Literal["euler"]
-    I: Optional[Vec3(dim="moment of inertia", description="principal moments of inertia [I1, I2, I3] about the center of mass [kg m²]")] = None  # type: ignore[valid-type]
+    I: Optional[Annotated[Vector, Vec3(dim="moment of inertia", description="principal moments of inertia [I1, I2, I3] about the center of mass [kg m²]")]] = None
     coin: Optional[Coin] = Field(None, description="a coin {m, R, h}: I1 = I2 = mR²/4 + mh²/12, I3 = mR²/2 (39.10)")
-    omega0: Vec3(dim="angular velocity", description="initial angular velocity, body components ω'₀ᵢ [rad/s]") = Field(...)  # type: ignore[valid-type]
-    M: Optional[ExprVec3(("t",), dim="moment", description="applied moment about the center of mass, body components, expressions in t [N m]")] = None  # type: ignore[valid-type]
-    at: Times() = Field(default_factory=lambda: [0.0])  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {omega.2: VALUE}}, {max: omega.0}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
+    omega0: Annotated[Vector, Vec3(dim="angular velocity", description="initial angular velocity, body components ω'₀ᵢ [rad/s]")] = Field(...)
+    M: Optional[Annotated[ExprTriple, ExprVec3(("t",), dim="moment", description="applied moment about the center of mass, body components, expressions in t [N m]")]] = None
+    at: Annotated[list[float], Times()] = Field(default_factory=lambda: [0.0])
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {omega.2: VALUE}}, {max: omega.0}")
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")]] = None
 
     accuracy_methods = ("auto", "closed-form", "DOP853", "RK45", "Radau", "LSODA", "projected")
 
@@ -54,8 +54,9 @@ class Euler(ProblemBase):
 
     def moments(self) -> tuple[float, float, float]:
         if self.I is not None:
-            return tuple(self.I)
+            return self.I
         c = self.coin
+        assert c is not None                 # exactly one of I and coin (checked above)
         # (39.10): I1 = I2 = m R²/4 + m h²/12, I3 = m R²/2 (no division: R² may underflow)
         i1 = c.m * (c.R * c.R / 4.0 + c.h * c.h / 12.0)
         return (i1, i1, 0.5 * c.m * c.R * c.R)

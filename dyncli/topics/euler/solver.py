@@ -91,6 +91,7 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
     if pb.coin is not None:
         r["I"] = list(I)
     if torque_free and method in ("auto", "closed-form"):
+        assert exact is not None
         W = [exact.omega(t) for t in times]
         if not all(vec3.finite(w) for w in W):
             raise NumericalError("the exact torque-free solution is not representable in doubles at these "

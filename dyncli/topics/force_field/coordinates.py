@@ -161,7 +161,7 @@ def verdict(fld: CurvilinearField, box: float, res: Result):
         return True, "symbolic", simplified
     pts = fld.random_points(box)
     env = fld.env(pts)
-    worst, where = 0.0, None
+    worst, where = 0.0, [0.0, 0.0, 0.0]          # (where: read once worst > 0)
     checked = 0
     for A, B in fld.curl_parts:
         a, b = fld.num(A).evaluate(**env), fld.num(B).evaluate(**env)

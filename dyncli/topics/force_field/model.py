@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, ValidationInfo, model_validator
 
-from dyncli.fields import ExprField, ExprVec3, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import Expr, ExprField, ExprTriple, ExprVec3, ProblemBase, StrictModel, Times, Vec3, Vector
 
 FIELD_VARS = ("x1", "x2", "x3")
 
@@ -14,10 +14,10 @@ FIELD_VARS = ("x1", "x2", "x3")
 class Path(StrictModel):
     """A parametrised path x(t) = x1(t) e1 + x2(t) e2 + x3(t) e3, t from t1 to t2."""
 
-    x1: ExprField(("t",), dim="length", description="x1(t) [m]: number or expression in t")  # type: ignore[valid-type]
-    x2: ExprField(("t",), dim="length", description="x2(t) [m]: number or expression in t")  # type: ignore[valid-type]
-    x3: ExprField(("t",), dim="length", description="x3(t) [m]: number or expression in t")  # type: ignore[valid-type]
-    t_span: Times(max_len=2, description="[t1, t2]: the parameter runs from t1 to t2")  # type: ignore[valid-type]
+    x1: Annotated[Expr, ExprField(("t",), dim="length", description="x1(t) [m]: number or expression in t")]
+    x2: Annotated[Expr, ExprField(("t",), dim="length", description="x2(t) [m]: number or expression in t")]
+    x3: Annotated[Expr, ExprField(("t",), dim="length", description="x3(t) [m]: number or expression in t")]
+    t_span: Annotated[list[float], Times(max_len=2, description="[t1, t2]: the parameter runs from t1 to t2")]
 
     @model_validator(mode="after")
     def _two(self):
@@ -31,8 +31,8 @@ class ForceField(ProblemBase):
     work along a path."""
 
     type: Literal["force-field"]
-    F: ExprVec3(FIELD_VARS, dim="force", description="3 expressions in x1, x2, x3 [N]")  # type: ignore[valid-type]
-    points: list[Vec3(dim="length")] = Field(default_factory=list, description="points where the curl is evaluated [m]")  # type: ignore[valid-type]
+    F: Annotated[ExprTriple, ExprVec3(FIELD_VARS, dim="force", description="3 expressions in x1, x2, x3 [N]")]
+    points: list[Annotated[Vector, Vec3(dim="length")]] = Field(default_factory=list, description="points where the curl is evaluated [m]")
     path: Optional[Path] = Field(None, description="path for the work: {x1, x2, x3 (expressions in t), t_span: [t1, t2]}")
 
     coordinates: Literal["cartesian", "polar", "cylindrical", "spherical"] = Field(

@@ -25,6 +25,7 @@ the checks at random points in :mod:`dyncli.topics.force_field.checks`.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING, cast
 
 from dyncli import symbolic
 from dyncli.errors import InputError
@@ -34,6 +35,8 @@ from dyncli.topics.force_field.path import path_work
 from dyncli.topics.force_field.symbolic_field import (SYMBOLIC_SECONDS, Field, _display, conservative_verdict, numeric_potential,
                                                       potential, report_verdict)
 
+if TYPE_CHECKING:
+    from dyncli.topics.force_field.polynomial_field import PolynomialField
 
 
 def _field(F) -> Field:
@@ -103,7 +106,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     res = Result({}, method="closed-form", equations=["19.9"])
 
     # curl at the points
-    curls = []       # plain floats: a conservative polynomial field without a path imports no numpy
+    curls: list[list[float] | None] = []       # plain floats: a conservative polynomial field without a path imports no numpy
     for i, pt in enumerate(p.points):
         x = [float(v) for v in pt]
         c = [float(v) + 0.0 for v in fld.curl_at(x)]
@@ -114,7 +117,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             res.warn(f"curl at points[{i}] is undefined (F is singular there)")
     res.results["curl"] = curls
 
-    part = polynomial_field.exact_part(poly, box) if poly is not None else _symbolic_part(fld, box, res)
+    part = polynomial_field.exact_part(poly, box) if poly is not None else _symbolic_part(cast(Field, fld), box, res)   # (fld is _field's)
     cons, how, res.results["curl_formula"], V, Vnum = part
     report_verdict(res, cons, how, V, fld.decimals)
 
@@ -122,7 +125,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     return res
 
 
-def _work(res: Result, p, fld: Field, cons: bool, Vnum) -> None:
+def _work(res: Result, p, fld: Field | PolynomialField, cons: bool, Vnum) -> None:
     """The work along the path (19.4) and its check against V1 − V2 (19.8)."""
     if p.path is None:
         res.results["work"] = None

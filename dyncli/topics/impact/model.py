@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import math
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.direction import norm, unit
 from dyncli.errors import InputError
-from dyncli.fields import Num, ProblemBase, Vec3
+from dyncli.fields import Num, ProblemBase, Vec3, Vector
 
 UNIT_TOL = 1e-4   # how far a given tangent t may be from unit length / perpendicular to n
 
@@ -22,15 +22,15 @@ class Impact(ProblemBase):
     ``phi`` of the impulse direction f = -(cos(phi) n + sin(phi) t) (28.41)."""
 
     type: Literal["impact"]
-    mA: Num(gt=0, dim="mass", description="mass of particle A [kg]")  # type: ignore[valid-type]
-    mB: Num(gt=0, allow_inf=True, dim="mass", description="mass of particle B [kg]; .inf for a fixed massive body")  # type: ignore[valid-type]
-    vA1: Vec3(dim="velocity", description="velocity of A just before impact [m/s]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
-    vB1: Vec3(dim="velocity", description="velocity of B just before impact [m/s]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
-    n: Vec3(nonzero=True, description="outward normal of A at the contact, pointing from A toward B (normalised)") = Field(...)  # type: ignore[valid-type]
-    e: Optional[Num(ge=0, le=1, description="coefficient of restitution (smooth impact, 28.7)")] = None  # type: ignore[valid-type]
-    eta: Optional[Num(ge=0, le=1, description="restitution along the impulse direction f (28.26, 28.28)")] = None  # type: ignore[valid-type]
-    phi: Optional[Num(dim="angle", description="friction angle of the impulse [rad], -pi/2 <= phi <= pi/2 (28.41)")] = None  # type: ignore[valid-type]
-    t: Optional[Vec3(nonzero=True, description="unit tangent in the contact plane (needed only when vA1 - vB1 is parallel to n)")] = None  # type: ignore[valid-type]
+    mA: Annotated[float, Num(gt=0, dim="mass", description="mass of particle A [kg]")]
+    mB: Annotated[float, Num(gt=0, allow_inf=True, dim="mass", description="mass of particle B [kg]; .inf for a fixed massive body")]
+    vA1: Annotated[Vector, Vec3(dim="velocity", description="velocity of A just before impact [m/s]")] = (0.0, 0.0, 0.0)
+    vB1: Annotated[Vector, Vec3(dim="velocity", description="velocity of B just before impact [m/s]")] = (0.0, 0.0, 0.0)
+    n: Annotated[Vector, Vec3(nonzero=True, description="outward normal of A at the contact, pointing from A toward B (normalised)")] = Field(...)
+    e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution (smooth impact, 28.7)")]] = None
+    eta: Optional[Annotated[float, Num(ge=0, le=1, description="restitution along the impulse direction f (28.26, 28.28)")]] = None
+    phi: Optional[Annotated[float, Num(dim="angle", description="friction angle of the impulse [rad], -pi/2 <= phi <= pi/2 (28.41)")]] = None
+    t: Optional[Annotated[Vector, Vec3(nonzero=True, description="unit tangent in the contact plane (needed only when vA1 - vB1 is parallel to n)")]] = None
 
     @model_validator(mode="after")
     def _check(self):

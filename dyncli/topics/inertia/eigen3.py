@@ -25,7 +25,7 @@ def sym3(T) -> Matrix:
     >>> sym3([[1, 2, 0], [0, 1, 0], [0, 0, 1]])
     ((1.0, 1.0, 0.0), (1.0, 1.0, 0.0), (0.0, 0.0, 1.0))
     """
-    return tuple(tuple(0.5 * (float(T[i][j]) + float(T[j][i])) for j in range(3)) for i in range(3))  # type: ignore[return-value]
+    return tuple(tuple(0.5 * (float(T[i][j]) + float(T[j][i])) for j in range(3)) for i in range(3))  # type: ignore[return-value]  # 3 rows of 3: mypy reads tuple(generator) as tuple[float, ...]
 
 
 def _rotation(app: float, aqq: float, apq: float) -> tuple[float, float]:

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
-from dyncli.fields import Num, ProblemBase, StrictModel, Tensor3, Vec3
+from dyncli.fields import Matrix, Num, ProblemBase, StrictModel, Tensor3, Vec3, Vector
 from dyncli.topics.inertia.eigen3 import inertia_defect
 
 #: the fields each shape needs (all others are rejected)
@@ -38,10 +38,10 @@ class Orientation(StrictModel):
     (the notes' 3-1-3 sequence, §38) or {matrix: R} (columns = the rotated
     axes in body components; must be orthonormal with det +1)."""
 
-    axis: Optional[Vec3(nonzero=True, description="rotation axis (body components; normalised)")] = None  # type: ignore[valid-type]
-    angle: Optional[Num(dim="angle", description="rotation angle [rad], right-handed about axis")] = None  # type: ignore[valid-type]
-    euler313: Optional[Vec3(dim="angle", description="[psi, theta, phi] [rad]: psi about e3, theta about e'''1, phi about e''3")] = None  # type: ignore[valid-type]
-    matrix: Optional[Tensor3(description="3x3 rotation; its columns are the rotated axes in body components")] = None  # type: ignore[valid-type]
+    axis: Optional[Annotated[Vector, Vec3(nonzero=True, description="rotation axis (body components; normalised)")]] = None
+    angle: Optional[Annotated[float, Num(dim="angle", description="rotation angle [rad], right-handed about axis")]] = None
+    euler313: Optional[Annotated[Vector, Vec3(dim="angle", description="[psi, theta, phi] [rad]: psi about e3, theta about e'''1, phi about e''3")]] = None
+    matrix: Optional[Annotated[Matrix, Tensor3(description="3x3 rotation; its columns are the rotated axes in body components")]] = None
 
     @model_validator(mode="after")
     def _check(self):
@@ -56,15 +56,15 @@ class Part(StrictModel):
     of mass, placed at ``at`` and turned by ``orientation``."""
 
     shape: Literal["point", "rod", "box", "cylinder", "disk", "ring", "sphere", "shell", "tensor"]
-    mass: Num(gt=0, dim="mass", description="mass of the part [kg] (positive, also for a hole)")  # type: ignore[valid-type]
-    at: Vec3(dim="length", description="position of the part's center of mass [m] (body components)") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    mass: Annotated[float, Num(gt=0, dim="mass", description="mass of the part [kg] (positive, also for a hole)")]
+    at: Annotated[Vector, Vec3(dim="length", description="position of the part's center of mass [m] (body components)")] = (0.0, 0.0, 0.0)
     orientation: Optional[Orientation] = Field(None, description="orientation of the part's axes relative to the body axes")
     hole: bool = Field(False, description="true: subtract this part (a hole or cut-out)")
-    length: Optional[Num(ge=0, dim="length", description="rod: length along the part's e3 [m]")] = None  # type: ignore[valid-type]
-    size: Optional[Vec3(dim="length", description="box: edge lengths [a, b, c] along the part's e1, e2, e3 [m]")] = None  # type: ignore[valid-type]
-    radius: Optional[Num(ge=0, dim="length", description="cylinder, disk, ring, sphere, shell: radius [m]")] = None  # type: ignore[valid-type]
-    height: Optional[Num(ge=0, dim="length", description="cylinder: height along the part's e3 [m]")] = None  # type: ignore[valid-type]
-    inertia: Optional[Tensor3(symmetric=True, dim="moment of inertia", description="tensor: 3x3 inertia about the part's center of mass, part axes [kg m²]")] = None  # type: ignore[valid-type]
+    length: Optional[Annotated[float, Num(ge=0, dim="length", description="rod: length along the part's e3 [m]")]] = None
+    size: Optional[Annotated[Vector, Vec3(dim="length", description="box: edge lengths [a, b, c] along the part's e1, e2, e3 [m]")]] = None
+    radius: Optional[Annotated[float, Num(ge=0, dim="length", description="cylinder, disk, ring, sphere, shell: radius [m]")]] = None
+    height: Optional[Annotated[float, Num(ge=0, dim="length", description="cylinder: height along the part's e3 [m]")]] = None
+    inertia: Optional[Annotated[Matrix, Tensor3(symmetric=True, dim="moment of inertia", description="tensor: 3x3 inertia about the part's center of mass, part axes [kg m²]")]] = None
 
     @model_validator(mode="after")
     def _geometry(self):
@@ -93,6 +93,6 @@ class Inertia(ProblemBase):
 
     type: Literal["inertia"]
     parts: list[Part] = Field(..., min_length=1, description="the parts of the body")
-    about: Optional[Vec3(dim="length", description="point B [m] (body components) for I_about")] = None  # type: ignore[valid-type]
+    about: Optional[Annotated[Vector, Vec3(dim="length", description="point B [m] (body components) for I_about")]] = None
     basis: Optional[Orientation] = Field(None, description="express every result on this basis (columns = new axes e''_i in body components)")
-    omega: Optional[Vec3(dim="angular velocity", description="angular velocity ω'_i on the body axes e'_i [rad/s]: adds its components on the basis (35.6) and H̄ (35.3, 35.4)")] = None  # type: ignore[valid-type]
+    omega: Optional[Annotated[Vector, Vec3(dim="angular velocity", description="angular velocity ω'_i on the body axes e'_i [rad/s]: adds its components on the basis (35.6) and H̄ (35.3, 35.4)")]] = None

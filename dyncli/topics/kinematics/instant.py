@@ -65,7 +65,7 @@ def _coordinates(p) -> Result:
                  "acceleration is along the velocity): rho and e_n are null and a_n = 0")
     _force(p, res, cartesian=True)
     table = [(lab, [[float(rows[key][k][0]) for k in range(3)]]) for lab, key in motion.ROW_LABELS]
-    res.views = frame.numeric_tables(f"{coords} basis", [WHEN], table, motion.BASIS_LABELS[coords])
+    res.views = [*frame.numeric_tables(f"{coords} basis", [WHEN], table, motion.BASIS_LABELS[coords])]
     return res
 
 

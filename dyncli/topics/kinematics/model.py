@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.expr import did_you_mean
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
+from dyncli.fields import Expr, ExprField, FieldSpec, Num, ProblemBase, StrictModel, Times
 
 #: the coordinate names of each system, in basis order
 COORDINATES: dict[str, tuple[str, ...]] = {
@@ -39,32 +39,32 @@ INSTANT_REQUIRED: dict[str, tuple[str, ...]] = {
 }
 
 
-def _n(dim: str, what: str, **kw):
-    return Optional[Num(dim=dim, description=what, **kw)]  # type: ignore[valid-type]
+def _n(dim: str, what: str, **kw: Any) -> FieldSpec:
+    return Num(dim=dim, description=what, **kw)
 
 
 class Instant(StrictModel):
     """The state at one instant, as the textbooks give it (polar/cylindrical: r, θ, x3 and their
     first and second rates; spherical: R, θ, φ and their rates; path: v, v̇, ρ)."""
 
-    r: _n("length", "polar/cylindrical: r [m]") = None
-    r_dot: _n("velocity", "ṙ [m/s] (default 0)") = None
-    r_ddot: _n("acceleration", "r̈ [m/s²] (default 0)") = None
-    theta: _n("angle", "θ [rad] (polar, cylindrical; spherical: azimuth about e3)") = None
-    theta_dot: _n("angular_velocity", "θ̇ [rad/s] (default 0)") = None
-    theta_ddot: _n("angular_acceleration", "θ̈ [rad/s²] (default 0)") = None
-    x3: _n("length", "cylindrical: x3 [m] (default 0)") = None
-    x3_dot: _n("velocity", "cylindrical: ẋ3 [m/s] (default 0)") = None
-    x3_ddot: _n("acceleration", "cylindrical: ẍ3 [m/s²] (default 0)") = None
-    R: _n("length", "spherical: R [m]") = None
-    R_dot: _n("velocity", "spherical: Ṙ [m/s] (default 0)") = None
-    R_ddot: _n("acceleration", "spherical: R̈ [m/s²] (default 0)") = None
-    phi: _n("angle", "spherical: φ [rad], elevation from the e1-e2 plane") = None
-    phi_dot: _n("angular_velocity", "spherical: φ̇ [rad/s] (default 0)") = None
-    phi_ddot: _n("angular_acceleration", "spherical: φ̈ [rad/s²] (default 0)") = None
-    v: _n("velocity", "path: the speed v = ṡ [m/s], >= 0", ge=0) = None
-    v_dot: _n("acceleration", "path: the rate of change of speed v̇ = s̈ [m/s²] (default 0)") = None
-    rho: _n("length", "path: radius of curvature ρ [m], > 0 (default: a straight path)", gt=0, allow_inf=True) = None
+    r: Optional[Annotated[float, _n("length", "polar/cylindrical: r [m]")]] = None
+    r_dot: Optional[Annotated[float, _n("velocity", "ṙ [m/s] (default 0)")]] = None
+    r_ddot: Optional[Annotated[float, _n("acceleration", "r̈ [m/s²] (default 0)")]] = None
+    theta: Optional[Annotated[float, _n("angle", "θ [rad] (polar, cylindrical; spherical: azimuth about e3)")]] = None
+    theta_dot: Optional[Annotated[float, _n("angular_velocity", "θ̇ [rad/s] (default 0)")]] = None
+    theta_ddot: Optional[Annotated[float, _n("angular_acceleration", "θ̈ [rad/s²] (default 0)")]] = None
+    x3: Optional[Annotated[float, _n("length", "cylindrical: x3 [m] (default 0)")]] = None
+    x3_dot: Optional[Annotated[float, _n("velocity", "cylindrical: ẋ3 [m/s] (default 0)")]] = None
+    x3_ddot: Optional[Annotated[float, _n("acceleration", "cylindrical: ẍ3 [m/s²] (default 0)")]] = None
+    R: Optional[Annotated[float, _n("length", "spherical: R [m]")]] = None
+    R_dot: Optional[Annotated[float, _n("velocity", "spherical: Ṙ [m/s] (default 0)")]] = None
+    R_ddot: Optional[Annotated[float, _n("acceleration", "spherical: R̈ [m/s²] (default 0)")]] = None
+    phi: Optional[Annotated[float, _n("angle", "spherical: φ [rad], elevation from the e1-e2 plane")]] = None
+    phi_dot: Optional[Annotated[float, _n("angular_velocity", "spherical: φ̇ [rad/s] (default 0)")]] = None
+    phi_ddot: Optional[Annotated[float, _n("angular_acceleration", "spherical: φ̈ [rad/s²] (default 0)")]] = None
+    v: Optional[Annotated[float, _n("velocity", "path: the speed v = ṡ [m/s], >= 0", ge=0)]] = None
+    v_dot: Optional[Annotated[float, _n("acceleration", "path: the rate of change of speed v̇ = s̈ [m/s²] (default 0)")]] = None
+    rho: Optional[Annotated[float, _n("length", "path: radius of curvature ρ [m], > 0 (default: a straight path)", gt=0, allow_inf=True)]] = None
 
     def given(self) -> list[str]:
         return [k for k in type(self).model_fields if getattr(self, k) is not None]
@@ -86,16 +86,16 @@ class Kinematics(ProblemBase):
         "spherical (R, theta, phi; theta azimuth about e3, phi elevation from the e1-e2 plane), "
         "path (with instant: v, v_dot, rho)",
     )
-    position: Optional[dict[str, ExprField(("t",), description="coordinate as an expression in t")]] = Field(  # type: ignore[valid-type]
+    position: Optional[dict[str, Annotated[Expr, ExprField(("t",), description="coordinate as an expression in t")]]] = Field(
         None, description="coordinate name -> expression in t (lengths in m, angles in rad); not with instant"
     )
     instant: Optional[Instant] = Field(
         None, description="the state at one instant instead of position: the coordinates and their "
         "rates (polar, cylindrical, spherical) or v, v_dot, rho (path)"
     )
-    at: Times() = Field(default_factory=list)  # type: ignore[valid-type]
-    distance: Optional[Times(description="[t1, t2]: distance traveled between these times (4.5)")] = None  # type: ignore[valid-type]
-    m: Optional[Num(gt=0, dim="mass", description="mass: adds the force F = m a")] = None  # type: ignore[valid-type]
+    at: Annotated[list[float], Times()] = Field(default_factory=list)
+    distance: Optional[Annotated[list[float], Times(description="[t1, t2]: distance traveled between these times (4.5)")]] = None
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass: adds the force F = m a")]] = None
 
     accuracy_methods = ("auto", "quadrature")
 

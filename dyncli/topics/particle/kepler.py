@@ -189,7 +189,8 @@ class Orbit:
         alpha = inverse_a(mu, r, v)                      # 1/a (vis-viva)
         self.r_p = self.p / (1.0 + e)
         self.nu0 = math.atan2(self.esin, self.ecos)      # the true anomaly at t = 0
-        self.r_a = self.period = None
+        self.r_a: float | None = None                   # (an ellipse's)
+        self.period: float | None = None
         if abs(alpha) * R <= PARABOLIC * max(1.0, V2 * R / mu):
             self._parabola()
         elif alpha > 0:

@@ -13,7 +13,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import ExprTriple, ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
 
 CUSTOM_VARS = ("t", "x1", "x2", "x3", "v1", "v2", "v3")
 
@@ -22,7 +22,7 @@ class Uniform(StrictModel):
     """A constant force F (a constant force field, 19.14)."""
 
     kind: Literal["uniform"]
-    F: Vec3(dim="force", description="the constant force [N]")  # type: ignore[valid-type]
+    F: Annotated[Vector, Vec3(dim="force", description="the constant force [N]")]
 
 
 class Gravity(StrictModel):
@@ -36,18 +36,18 @@ class InverseSquare(StrictModel):
     potential -m g R0²/R (19.20b)."""
 
     kind: Literal["inverse-square"]
-    center: Vec3(dim="length", description="the attracting centre [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
-    R0: Num(gt=0, dim="length", description="radius where the attraction is m g [m]")  # type: ignore[valid-type]
-    g: Optional[Num(gt=0, dim="acceleration", description="attraction per unit mass at R = R0 [m/s²]; default: the problem's g")] = None  # type: ignore[valid-type]
+    center: Annotated[Vector, Vec3(dim="length", description="the attracting centre [m]")] = (0.0, 0.0, 0.0)
+    R0: Annotated[float, Num(gt=0, dim="length", description="radius where the attraction is m g [m]")]
+    g: Optional[Annotated[float, Num(gt=0, dim="acceleration", description="attraction per unit mass at R = R0 [m/s²]; default: the problem's g")]] = None
 
 
 class Spring(StrictModel):
     """Linear spring from a fixed ``anchor``: F_R = -k (R - L) (19.26a)."""
 
     kind: Literal["spring"]
-    anchor: Vec3(dim="length", description="fixed end of the spring [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
-    k: Num(gt=0, dim="stiffness", description="stiffness [N/m]")  # type: ignore[valid-type]
-    L: Num(ge=0, dim="length", description="free length [m]") = 0.0  # type: ignore[valid-type]
+    anchor: Annotated[Vector, Vec3(dim="length", description="fixed end of the spring [m]")] = (0.0, 0.0, 0.0)
+    k: Annotated[float, Num(gt=0, dim="stiffness", description="stiffness [N/m]")]
+    L: Annotated[float, Num(ge=0, dim="length", description="free length [m]")] = 0.0
     one_sided: Optional[Literal["compression", "tension"]] = Field(
         None, description="compression: only pushes (acts while R < L: a block dropped onto it); tension: only "
                           "pulls (R > L: an elastic cord); default two-sided")
@@ -64,7 +64,7 @@ class Damper(StrictModel):
     """Linear viscous damper to the fixed frame: F = -c v."""
 
     kind: Literal["damper"]
-    c: Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")  # type: ignore[valid-type]
+    c: Annotated[float, Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")]
 
 
 def _power(value: Any) -> Any:
@@ -77,7 +77,7 @@ class Drag(StrictModel):
     """Fluid drag opposing the velocity: F = -c |v|^(power-1) v."""
 
     kind: Literal["drag"]
-    c: Num(ge=0, description="drag coefficient [N·s/m] (power 1) or [N·s²/m²] (power 2)")  # type: ignore[valid-type]
+    c: Annotated[float, Num(ge=0, description="drag coefficient [N·s/m] (power 1) or [N·s²/m²] (power 2)")]
     power: Annotated[int, BeforeValidator(_power), Field(description="1 (linear) or 2 (quadratic)")] = 2
 
 
@@ -86,15 +86,15 @@ class Friction(StrictModel):
     the particle sticks when it stops and |other forces| <= mu N."""
 
     kind: Literal["friction"]
-    mu: Num(ge=0, description="friction coefficient (kinetic = static)")  # type: ignore[valid-type]
-    N: Num(ge=0, dim="force", description="magnitude of the normal force [N]")  # type: ignore[valid-type]
+    mu: Annotated[float, Num(ge=0, description="friction coefficient (kinetic = static)")]
+    N: Annotated[float, Num(ge=0, dim="force", description="magnitude of the normal force [N]")]
 
 
 class Custom(StrictModel):
     """Any force given as 3 expressions in t, x1, x2, x3, v1, v2, v3."""
 
     kind: Literal["custom"]
-    F: ExprVec3(CUSTOM_VARS, dim="force", description="3 expressions in t, x1, x2, x3, v1, v2, v3 [N]")  # type: ignore[valid-type]
+    F: Annotated[ExprTriple, ExprVec3(CUSTOM_VARS, dim="force", description="3 expressions in t, x1, x2, x3, v1, v2, v3 [N]")]
     name: Optional[str] = Field(None, description="label used in messages")
 
 
@@ -138,20 +138,20 @@ def check_times(p) -> None:
 class SteadyAxis(StrictModel):
     """A steady circular motion about the fixed axis through the origin along ``axis``, at x0."""
 
-    axis: Vec3(unit=True, description="direction of the axis through the origin (unit vector)") = (0.0, 0.0, 1.0)  # type: ignore[valid-type]
+    axis: Annotated[Vector, Vec3(unit=True, description="direction of the axis through the origin (unit vector)")] = (0.0, 0.0, 1.0)
 
 
 class Particle(ProblemBase):
     """A particle of mass m under the listed forces (problem II of §16)."""
 
     type: Literal["particle"]
-    m: Num(gt=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
-    x0: Vec3(dim="length", description="initial position x(0) [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
-    v0: Vec3(dim="velocity", description="initial velocity v(0) [m/s]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")]
+    x0: Annotated[Vector, Vec3(dim="length", description="initial position x(0) [m]")] = (0.0, 0.0, 0.0)
+    v0: Annotated[Vector, Vec3(dim="velocity", description="initial velocity v(0) [m/s]")] = (0.0, 0.0, 0.0)
     forces: list[Force] = Field(default_factory=list, description="force terms; none = a free particle")
-    t_end: Optional[Num(gt=0, dim="time", description="end of the integration [s]; default max(at)")] = None  # type: ignore[valid-type]
-    at: Times(description="times at which to report the state [s]; default [0, t_end]") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x.1: 0}}, {max: x.1}, {min: v.0}")  # type: ignore[valid-type]
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the integration [s]; default max(at)")]] = None
+    at: Annotated[list[float], Times(description="times at which to report the state [s]; default [0, t_end]")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x.1: 0}}, {max: x.1}, {min: v.0}")
     basis: Literal["cartesian", "cylindrical"] = Field(
         "cartesian", description="cylindrical: also report x, v, a, F, H_O on {e_r, e_θ, e3} and the drift of r²θ̇, ẋ3, H_O (§22)")
 

@@ -151,6 +151,7 @@ def breaks(orb: Orbit, t_end: float) -> list[float]:
     if t_end <= 0 or orb.radial:
         return [0.0, max(t_end, 0.0)]
     if orb.kind == "elliptic":
+        assert orb.period is not None          # an ellipse has one
         turns = t_end / orb.period
         n = int(min(max(PIECES_PER_TURN * math.ceil(turns + 1), 8), 200_000))
         dE = 2 * math.pi / PIECES_PER_TURN
@@ -201,11 +202,11 @@ def _trajectory(orb: Orbit, c, F, t_end: float, times) -> Trajectory:
 def orbit_results(orb: Orbit) -> dict:
     """``orbit``: e, a (null on a parabola, < 0 on a hyperbola), r_p, r_a and period (null when
     open), the speeds at the apsides (h/r), the circular and escape speeds at the start."""
-    closed = orb.kind == "elliptic"
+    r_a, period = (orb.r_a, orb.period) if orb.kind == "elliptic" else (None, None)    # (an ellipse has both)
     v_c = math.sqrt(orb.mu / orb.R0)
     return {"e": float(orb.e), "a": float(orb.a) if math.isfinite(orb.a) else None, "r_p": float(orb.r_p),
-            "r_a": float(orb.r_a) if closed else None, "period": float(orb.period) if closed else None,
-            "v_p": orb.h / orb.r_p, "v_a": orb.h / orb.r_a if closed else None,
+            "r_a": float(r_a) if r_a is not None else None, "period": float(period) if period is not None else None,
+            "v_p": orb.h / orb.r_p, "v_a": orb.h / r_a if r_a is not None else None,
             "v_circular": v_c, "v_escape": math.sqrt(2.0) * v_c}
 
 

@@ -33,7 +33,7 @@ def _centres(problem) -> list[tuple[float, float, float]]:
     """The distinct centres of the problem's inverse-square forces."""
     out: list[tuple[float, float, float]] = []
     for f in problem.forces:
-        c = tuple(float(v) for v in f.center) if f.kind == "inverse-square" else None
+        c = (float(f.center[0]), float(f.center[1]), float(f.center[2])) if f.kind == "inverse-square" else None
         if c is not None and c not in out:
             out.append(c)
     return out

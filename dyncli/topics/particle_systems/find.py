@@ -48,6 +48,7 @@ class Steps:
             if out is None:
                 out = np.empty((ts.size, Y.shape[0]))
             out[group] = Y.T
+        assert out is not None                        # (ts has one group at least)
         return out
 
 

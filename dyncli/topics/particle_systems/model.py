@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Find, Num, ProblemBase, StrictModel, Times, Vec3
+from dyncli.fields import Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
 
 #: the fields each pair kind needs (the others are rejected)
 PAIR_FIELDS = {"spring": ("k", "L"), "damper": ("c",), "inverse-square": ("K",)}
@@ -18,10 +18,10 @@ class Pair(StrictModel):
 
     between: tuple[int, int] = Field(..., description="the two particles [i, j] (0-based, as listed)")
     kind: Literal["spring", "damper", "inverse-square"] = Field(..., description="spring (k, L), damper (c) or inverse-square (K: attraction K/r²; K < 0 repels)")
-    k: Optional[Num(ge=0, dim="stiffness", description="spring: stiffness [N/m]")] = None  # type: ignore[valid-type]
-    L: Optional[Num(ge=0, dim="length", description="spring: free length [m]")] = None  # type: ignore[valid-type]
-    c: Optional[Num(ge=0, dim="damping", description="damper: coefficient [N·s/m] (force c·dr/dt along the line)")] = None  # type: ignore[valid-type]
-    K: Optional[Num(description="inverse-square: strength [N·m²], attraction K/r² (G mᵢ mⱼ for gravitation; negative repels)")] = None  # type: ignore[valid-type]
+    k: Optional[Annotated[float, Num(ge=0, dim="stiffness", description="spring: stiffness [N/m]")]] = None
+    L: Optional[Annotated[float, Num(ge=0, dim="length", description="spring: free length [m]")]] = None
+    c: Optional[Annotated[float, Num(ge=0, dim="damping", description="damper: coefficient [N·s/m] (force c·dr/dt along the line)")]] = None
+    K: Optional[Annotated[float, Num(description="inverse-square: strength [N·m²], attraction K/r² (G mᵢ mⱼ for gravitation; negative repels)")]] = None
 
     @model_validator(mode="after")
     def _fields(self):
@@ -41,9 +41,9 @@ class Pair(StrictModel):
 class Particle(StrictModel):
     """One particle of the system."""
 
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    x: Vec3(dim="length", description="position relative to the fixed origin [m]") = Field(...)  # type: ignore[valid-type]
-    v: Vec3(dim="velocity", description="velocity [m/s]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    x: Annotated[Vector, Vec3(dim="length", description="position relative to the fixed origin [m]")] = Field(...)
+    v: Annotated[Vector, Vec3(dim="velocity", description="velocity [m/s]")] = (0.0, 0.0, 0.0)
 
 
 class Particles(ProblemBase):
@@ -53,11 +53,11 @@ class Particles(ProblemBase):
     type: Literal["particles"]
     particles: list[Particle] = Field(..., description="the particles: list of {m, x, v} (at least one)",
                                       json_schema_extra={"minItems": 1})
-    about: Vec3(dim="length", description="the fixed point O for H_O [m]") = (0.0, 0.0, 0.0)  # type: ignore[valid-type]
+    about: Annotated[Vector, Vec3(dim="length", description="the fixed point O for H_O [m]")] = (0.0, 0.0, 0.0)
     pairs: list[Pair] = Field(default_factory=list, description="internal pair forces (springs, dampers, inverse-square attraction) between particles")
-    t_end: Optional[Num(gt=0, dim="time", description="integrate the motion under the pair forces to this time [s] (default max(at))")] = None  # type: ignore[valid-type]
-    at: Times(description="times [s] at which to report the motion (default [0, t_end])") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x_motion.0.0: 1}}, {min: V_internal_motion}")  # type: ignore[valid-type]
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="integrate the motion under the pair forces to this time [s] (default max(at))")]] = None
+    at: Annotated[list[float], Times(description="times [s] at which to report the motion (default [0, t_end])")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x_motion.0.0: 1}}, {min: V_internal_motion}")
 
     accuracy_methods = ("auto", "ode", "DOP853", "RK45", "Radau", "LSODA")
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
@@ -18,14 +18,14 @@ class Pendulum(ProblemBase):
     """A bob of mass m on a light rod (or string) of length l swinging in a vertical plane."""
 
     type: Literal["pendulum"]
-    l: Num(gt=0, dim="length", description="length of the pendulum (pivot to bob) [m]") = Field(...)  # type: ignore[valid-type]
-    g: Num(gt=0, dim="acceleration", description="gravitational acceleration [m/s²] (default 9.81)") = 9.81  # type: ignore[valid-type]
-    m: Optional[Num(gt=0, dim="mass", description="mass of the bob [kg]: gives the tension and the energy")] = None  # type: ignore[valid-type]
-    theta0: Num(dim="angle", description="θ(0), from the downward vertical [rad] (write 30*deg for degrees)") = Field(...)  # type: ignore[valid-type]
-    theta_dot0: Num(dim="angular velocity", description="θ̇(0) [rad/s] (default 0: released from rest)") = 0.0  # type: ignore[valid-type]
-    at: Times(description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta_dot}, {min: tension}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries, else one period)")] = None  # type: ignore[valid-type]
+    l: Annotated[float, Num(gt=0, dim="length", description="length of the pendulum (pivot to bob) [m]")] = Field(...)
+    g: Annotated[float, Num(gt=0, dim="acceleration", description="gravitational acceleration [m/s²] (default 9.81)")] = 9.81
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass of the bob [kg]: gives the tension and the energy")]] = None
+    theta0: Annotated[float, Num(dim="angle", description="θ(0), from the downward vertical [rad] (write 30*deg for degrees)")] = Field(...)
+    theta_dot0: Annotated[float, Num(dim="angular velocity", description="θ̇(0) [rad/s] (default 0: released from rest)")] = 0.0
+    at: Annotated[list[float], Times(description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta_dot}, {min: tension}")
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries, else one period)")]] = None
 
     @field_validator("at")
     @classmethod

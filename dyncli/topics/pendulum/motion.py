@@ -58,6 +58,7 @@ class Motion:
         self.sigma = 1.0 if theta_dot0 >= 0 else -1.0
         self.j0 = round(theta0 / TWO_PI)             # whole turns of θ₀ (a swing about 2πj₀)
         self.phase: ReducedPhase | None = None
+        self.period: float | None
         if self.k2 == 0.0:
             self.regime, self.period = "rest", eq.small_angle_period(l, g)
         elif abs(self.m1) <= self.tol:
@@ -103,7 +104,7 @@ class Motion:
 
     def long(self, horizon: float) -> None:
         """Reduce the phase in double-double when ``horizon`` spans more than :data:`LONG` periods."""
-        if self.regime in ("swing", "rotating") and horizon > LONG * self.period:
+        if self.regime in ("swing", "rotating") and self.period is not None and horizon > LONG * self.period:
             import mpmath
 
             with mpmath.workdps(40):

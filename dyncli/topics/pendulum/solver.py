@@ -39,7 +39,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
     if p.find and t_end == 0.0 and mo.period:         # nothing sets the end: one period (one turn)
         t_end = mo.period
-    if mo.regime in ("swing", "rotating") and not t_end <= MAX_PERIODS * mo.period:
+    if mo.regime in ("swing", "rotating") and mo.period is not None and not t_end <= MAX_PERIODS * mo.period:
         raise NumericalError(f"t = {t_end:g} s is {t_end / mo.period:.3g} periods: the whole periods of the "
                              f"phase are counted exactly up to {MAX_PERIODS:.3g} of them only (ask at earlier times)")
     mo.long(t_end)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
@@ -13,13 +13,13 @@ class Precession(ProblemBase):
     """Steady precession of a symmetric top about a fixed point O (notes §38)."""
 
     type: Literal["precession"]
-    m: Num(gt=0, dim="mass", description="mass of the top [kg]") = Field(...)  # type: ignore[valid-type]
-    L: Num(dim="length", description="distance from the fixed point O to the center of mass [m] (negative: center of mass below O)") = Field(...)  # type: ignore[valid-type]
-    I11: Num(gt=0, dim="moment of inertia", description="transverse moment of inertia about O [kg m²]") = Field(...)  # type: ignore[valid-type]
-    I33: Num(gt=0, dim="moment of inertia", description="axial moment of inertia about O [kg m²]") = Field(...)  # type: ignore[valid-type]
-    theta: Num(dim="angle", description="nutation angle θ of the axis from the upward vertical [rad]") = Field(...)  # type: ignore[valid-type]
-    p: Optional[Num(dim="angular velocity", description="spin rate φ̇ relative to e'' [rad/s]; give p or Omega")] = None  # type: ignore[valid-type]
-    Omega: Optional[Num(dim="angular velocity", description="precession rate ψ̇ [rad/s]; give p or Omega")] = None  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass of the top [kg]")] = Field(...)
+    L: Annotated[float, Num(dim="length", description="distance from the fixed point O to the center of mass [m] (negative: center of mass below O)")] = Field(...)
+    I11: Annotated[float, Num(gt=0, dim="moment of inertia", description="transverse moment of inertia about O [kg m²]")] = Field(...)
+    I33: Annotated[float, Num(gt=0, dim="moment of inertia", description="axial moment of inertia about O [kg m²]")] = Field(...)
+    theta: Annotated[float, Num(dim="angle", description="nutation angle θ of the axis from the upward vertical [rad]")] = Field(...)
+    p: Optional[Annotated[float, Num(dim="angular velocity", description="spin rate φ̇ relative to e'' [rad/s]; give p or Omega")]] = None
+    Omega: Optional[Annotated[float, Num(dim="angular velocity", description="precession rate ψ̇ [rad/s]; give p or Omega")]] = None
 
     @model_validator(mode="after")
     def _check(self):

@@ -30,6 +30,8 @@ scan that answers the v- and s-queries is :mod:`.case2_scan`.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from dyncli.rootfind import root_in_bracket
@@ -121,8 +123,8 @@ class _Case2(_Scan):
         # and at every 32nd sample and around the largest |a| sampled: one adaptive quadrature over
         # the whole span could miss a narrow feature the samples see (a = exp(−((t − 5)/0.01)²) on
         # [0, 10]: v(10) was 1e-293 instead of 0.0177, beside a v query that found it; issue 28)
-        k = int(np.argmax(np.abs(ax)))
-        grid = [float(v) for v in x[32:-1:32]] + [float(x[max(k - 1, 0)]), float(x[min(k + 1, x.size - 1)])]
+        km = int(np.argmax(np.abs(ax)))
+        grid = [float(v) for v in x[32:-1:32]] + [float(x[max(km - 1, 0)]), float(x[min(km + 1, x.size - 1)])]
         inner = {c for c in cuts + grid if min(tb, T) < c < max(tb, T)}
         B = np.array([tb] + sorted(inner, reverse=h < 0) + [T])
         lo, w = B[:-1], np.diff(B)
@@ -223,7 +225,8 @@ class States:
         self.known = [(p.t1, p.s1, p.v1)]
 
     def __call__(self, p, times) -> list[dict]:
-        c, t1, out = self.c, self.p.t1, {}
+        out: dict[float, dict[str, Any]] = {}
+        c, t1 = self.c, self.p.t1
         c.work = Work(self.p, 2)
         for T in sorted({float(t) for t in times}, key=lambda t: (t < t1, abs(t - t1))):
             tb, sb, vb = min(self.known, key=lambda k: abs(T - k[0]) if (T - k[0]) * (T - t1) >= 0 and

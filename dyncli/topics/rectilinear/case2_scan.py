@@ -11,6 +11,8 @@ estimates of the state at each chunk start are carried along.  A mixin of :class
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 import numpy as np
 
 from dyncli.rootfind import roots_in_brackets
@@ -31,6 +33,17 @@ def _what(exc: NonFinite) -> str:
 
 
 class _Scan:
+    # what the scan reads of its _Case2 (declared for the type checker)
+    p: Any
+    ans: Any
+    rtol: float
+    atol: float
+    A: Callable[..., Any]
+    a1: Callable[[float], float]
+    state: Callable[..., Any]
+    root: Callable[..., float]
+    vroot: Callable[..., float]
+
     def scan(self, vq: dict[int, float], sq: dict[int, float]) -> None:
         p, ans = self.p, self.ans
         t1, s1, v1 = p.t1, p.s1, p.v1

@@ -103,7 +103,7 @@ class Branch:
         if aa.size >= 3:
             cand = np.nonzero((aa[1:-1] <= aa[:-2]) & (aa[1:-1] <= aa[2:])
                               & (aa[1:-1] < 1e-3 * np.maximum(aa[:-2], aa[2:])))[0] + 1
-            for k in cand:
+            for k in cand.tolist():
                 from dyncli.rootfind import minimize_bounded
 
                 lo, hi = sorted((float(vs[k - 1]), float(vs[k + 1])))

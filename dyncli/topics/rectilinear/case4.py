@@ -33,6 +33,7 @@ v^2 references and legs :mod:`.case4_legs`.
 from __future__ import annotations
 
 import math
+from typing import Iterable
 
 import numpy as np
 
@@ -265,7 +266,7 @@ class _Case4(_Scan):
     def _first_on_cells(self, ss, v2, av, V2: float, rev: bool):
         """First position (in travel order) with v^2 = V2 on the scanned cells."""
         n = len(ss)
-        cells = range(n - 1)
+        cells: Iterable[int] = range(n - 1)
         if rev:
             cells = reversed(range(n - 1))
         for k in cells:
@@ -273,7 +274,7 @@ class _Case4(_Scan):
             s_a, s_b = float(ss[a_]), float(ss[b_])
             w_a, w_b = float(v2[a_]), float(v2[b_])
             tol = self.rtol * max(V2, abs(w_a), abs(w_b)) + self.atol * math.sqrt(max(V2, 1e-300))
-            pieces = [(s_a, w_a, s_b, w_b)]
+            pieces: list[tuple] = [(s_a, w_a, s_b, w_b)]
             if av[k] * av[k + 1] < 0:   # an extremum of v^2 inside the cell
                 sm = root_in_bracket(self.a1, float(ss[k]), float(ss[k + 1]), float(av[k]), float(av[k + 1]))
                 wm = float(self.energy.v2(sm, 0.0))

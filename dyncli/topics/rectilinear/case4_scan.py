@@ -5,6 +5,7 @@ nodes that become exact references of v^2.  A mixin of :class:`.case4._Case4`.""
 from __future__ import annotations
 
 import math
+from typing import Any, Callable
 
 import numpy as np
 
@@ -14,6 +15,17 @@ from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End
 
 
 class _Scan:
+    # what the scan reads of its _Case4 (declared for the type checker)
+    A: Callable[..., Any]
+    a1: Callable[[float], float]
+    scans: dict[int, dict]
+    energy: Any
+    s1: float
+    scale: float
+    scale_min: float
+    qr: float
+    amax: float
+
     # -- where does the body go from s1 in direction e? ------------------------
     def scan(self, e: int, v2start: float) -> End:
         ss = self._scan_nodes(e)

@@ -192,7 +192,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     lo, hi = min(reached + [t1]), max(reached + [t1, t_end])
     if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
         turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
-        knots = [b for b in dense.breaks if t1 < b < t_end]
+        knots: list[float] | None = [b for b in dense.breaks if t1 < b < t_end]   # (None: a uniform grid)
     else:
         try:
             turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])
@@ -208,6 +208,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         def batch(ts: list[float]) -> list[dict]:
             return [dict(st, distance=odo.at(t, st["s"])) for t, st in zip(ts, motion.batch(ts))]
 
+        sm: mf.StateMotion
         sm = mf.StateMotion(lambda t: batch([t])[0], t1, t_end, _breaks(t1, t_end, turns, knots),
                             rtol=p.accuracy.rtol if res.method != "closed-form" else 0.0,
                             rates={"s": "v", "v": "a", "distance": lambda t, _: abs(sm.value("v", t))}, batch=batch,

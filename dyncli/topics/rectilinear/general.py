@@ -27,6 +27,8 @@ naming the time where it blew up.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from dyncli import ode
@@ -86,8 +88,10 @@ class _Step:
         self.run, self.solver = run, solver
         self.tb, self.yb = solver.t, solver.y.copy()
         self.ab = run.acc(self.tb, *self.yb)
-        self.ta = self.ya = self.aa = None
-        self._dense = None
+        self.ta: float | None = None
+        self.ya: Any = None
+        self.aa: float | None = None
+        self._dense: Any = None
 
     def advance(self) -> None:
         sv = self.solver
@@ -266,7 +270,7 @@ class Dense:
 
         self._bisect = bisect.bisect_left
         self.p, self.run = p, _Run(p, method, rtol, atol)
-        self.breaks, self.steps = [float(p.t1)], []
+        self.breaks, self.steps = [float(p.t1)], list[Any]()
 
         def visit(step):
             step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
@@ -280,7 +284,7 @@ class Dense:
             self.end = self.breaks[-1]
 
     def __call__(self, p, times) -> list[dict]:
-        out = []
+        out: list[dict[str, Any]] = []
         for t in (float(x) for x in times):
             if t == self.p.t1 or not self.steps:
                 s, v = self.p.s1, self.p.v1

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel
+from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel
 from dyncli.topics.rectilinear.springs import LineSpring
 
 
@@ -17,9 +17,9 @@ class Query(StrictModel):
     (with within).  A v or s held at the start counts only when the motion reaches it again; the
     entries of when/max/min are checked where they are answered (dyncli.queries)."""
 
-    t: Optional[Num(dim="time")] = None  # type: ignore[valid-type]
-    v: Optional[Num(dim="velocity")] = None  # type: ignore[valid-type]
-    s: Optional[Num(dim="length")] = None  # type: ignore[valid-type]
+    t: Optional[Annotated[float, Num(dim="time")]] = None
+    v: Optional[Annotated[float, Num(dim="velocity")]] = None
+    s: Optional[Annotated[float, Num(dim="length")]] = None
     when: Optional[Any] = None
     direction: Optional[Any] = None
     occurrence: Optional[Any] = None
@@ -62,13 +62,13 @@ class Rectilinear(ProblemBase):
     """Straight-line motion with a = a(t, s, v) (notes §6)."""
 
     type: Literal["rectilinear"]
-    a: ExprField(("t", "s", "v"), dim="acceleration", description="acceleration: constant or expression in t, s, v") = Field(...)  # type: ignore[valid-type]
-    t1: Num(dim="time") = 0.0  # type: ignore[valid-type]
-    s1: Num(dim="length") = 0.0  # type: ignore[valid-type]
-    v1: Num(dim="velocity") = 0.0  # type: ignore[valid-type]
+    a: Annotated[Expr, ExprField(("t", "s", "v"), dim="acceleration", description="acceleration: constant or expression in t, s, v")] = Field(...)
+    t1: Annotated[float, Num(dim="time")] = 0.0
+    s1: Annotated[float, Num(dim="length")] = 0.0
+    v1: Annotated[float, Num(dim="velocity")] = 0.0
     find: list[Query] = Field(default_factory=list, description="queries: {t: T}, {v: V}, {s: S}, {when: {s: S}}, {max: s}, {min: v}")
-    t_max: Num(gt=0, dim="time") = 1000.0  # type: ignore[valid-type]
-    m: Optional[Num(gt=0, dim="mass", description="mass [kg]: needed with springs")] = None  # type: ignore[valid-type]
+    t_max: Annotated[float, Num(gt=0, dim="time")] = 1000.0
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass [kg]: needed with springs")]] = None
     springs: list[LineSpring] = Field(
         default_factory=list, max_length=100,
         description="springs along the line, [{k, anchor, L, one_sided}]: their acceleration is added to a")

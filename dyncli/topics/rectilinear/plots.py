@@ -36,7 +36,7 @@ def span(t1: float, times: list[float], period: float | None, t_max: float) -> t
     while it lies within FAR times the distance of the nearer kept ones (or
     within PERIODS periods of a periodic motion)."""
     base = PERIODS * period if period else 0.0
-    kept, far = [], []
+    kept, far = [], list[float]()
     reach = base
     for t in sorted(times, key=lambda x: abs(x - t1)):
         d = abs(t - t1)

@@ -177,9 +177,9 @@ def _run(p, case, route: str, rtol: float, atol: float):
         if case in (1, 2):
             from dyncli.topics.rectilinear import case2 as mod
         elif case == 3:
-            from dyncli.topics.rectilinear import case3 as mod
+            from dyncli.topics.rectilinear import case3 as mod  # type: ignore[no-redef]  # one of three modules with solve()
         else:
-            from dyncli.topics.rectilinear import case4 as mod
+            from dyncli.topics.rectilinear import case4 as mod  # type: ignore[no-redef]  # (as above)
         res_.method = mod.solve(p, ans_, rtol, atol)
         res_.equations = list(EQUATIONS[2 if case == 1 else case])
     else:

@@ -16,7 +16,7 @@ integral (6.14) with the kink at |d| = L).
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
@@ -27,9 +27,9 @@ from dyncli.fields import Num, StrictModel
 class LineSpring(StrictModel):
     """A linear spring along the line, fixed at ``anchor``: force −k (|d| − L) sign(d), d = s − anchor."""
 
-    k: Num(gt=0, dim="stiffness", description="stiffness [N/m]")  # type: ignore[valid-type]
-    anchor: Num(dim="length", description="position s of the spring's fixed end [m]") = 0.0  # type: ignore[valid-type]
-    L: Num(ge=0, dim="length", description="free length [m]") = 0.0  # type: ignore[valid-type]
+    k: Annotated[float, Num(gt=0, dim="stiffness", description="stiffness [N/m]")]
+    anchor: Annotated[float, Num(dim="length", description="position s of the spring's fixed end [m]")] = 0.0
+    L: Annotated[float, Num(ge=0, dim="length", description="free length [m]")] = 0.0
     one_sided: Optional[Literal["compression", "tension"]] = Field(
         None, description="compression: only pushes (acts while |s − anchor| < L: a block dropped onto it); "
                           "tension: only pulls (|s − anchor| > L: an elastic cord); default two-sided")
@@ -58,7 +58,7 @@ def term(sp: LineSpring, m: float) -> tuple[tuple, str]:
     dt = f"(s - {sp.anchor:.17g})" if sp.anchor else "s"
     kt = f"{sp.k / m:.17g}"
     if sp.one_sided == "compression":
-        ir = ("mul", ("mul", km, _call("max", ("sub", _num(sp.L), length), _num(0))), sign)
+        ir: tuple = ("mul", ("mul", km, _call("max", ("sub", _num(sp.L), length), _num(0))), sign)
         return ir, f"{kt}*max({sp.L:.17g} - abs({dt}), 0)*sign({dt})"
     if sp.one_sided == "tension":
         ir = ("neg", ("mul", ("mul", km, _call("max", ("sub", length, _num(sp.L)), _num(0))), sign))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field
 
@@ -14,8 +14,8 @@ class RigidImpulse(ProblemBase):
     the point −s e'_1 − h e'_2 relative to its center of mass (33.3, 33.4)."""
 
     type: Literal["rigid-impulse"]
-    m: Num(gt=0, dim="mass", description="mass of the body [kg]") = Field(...)  # type: ignore[valid-type]
-    k: Num(gt=0, dim="length", description="radius of gyration about the center of mass [m] (Ī = m k²)") = Field(...)  # type: ignore[valid-type]
-    R: Num(dim="impulse", description="impulse R̂ along e'_1 [N·s]") = Field(...)  # type: ignore[valid-type]
-    h: Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]") = Field(...)  # type: ignore[valid-type]
-    s: Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]") = 0.0  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass of the body [kg]")] = Field(...)
+    k: Annotated[float, Num(gt=0, dim="length", description="radius of gyration about the center of mass [m] (Ī = m k²)")] = Field(...)
+    R: Annotated[float, Num(dim="impulse", description="impulse R̂ along e'_1 [N·s]")] = Field(...)
+    h: Annotated[float, Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]")] = Field(...)
+    s: Annotated[float, Num(dim="length", description="point of application: −s e'_1 − h e'_2 [m]")] = 0.0

@@ -5,7 +5,7 @@ floats (plain Python: no numpy, no pydantic, no renderer).
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from typing import Sequence, cast
 
 Vec = tuple[float, float, float]
 
@@ -73,7 +73,7 @@ def unit(a: Sequence[float], path: str | None = None, what: str = "the direction
     """
     from dyncli.direction import unit as scaled_unit
 
-    return tuple(float(c) for c in scaled_unit(a, path, what))
+    return cast(Vec, tuple(float(c) for c in scaled_unit(a, path, what)))
 
 
 def rigid_velocity(vB, w, x) -> Vec:
@@ -102,7 +102,7 @@ def normal_angular_velocity(x, v) -> Vec:
     (0.0, 0.0, 2.0)
     """
     L = norm(x)                       # |x|² may underflow (points 1e-300 apart)
-    return tuple(c / L for c in cross(unit(x), v))
+    return cast(Vec, tuple(c / L for c in cross(unit(x), v)))
 
 
 def three_point_angular_velocity(xA, xC, vA, vC, N, nN: float) -> Vec:
@@ -125,7 +125,7 @@ def screw_axis_offset(e, vB, wn: float) -> Vec:
     >>> screw_axis_offset((0.0, 0.0, 1.0), (1.0, 0.0, 0.0), 2.0)
     (0.0, 0.5, 0.0)
     """
-    return tuple(c / wn for c in cross(e, vB))
+    return cast(Vec, tuple(c / wn for c in cross(e, vB)))
 
 
 def contact_split(vM1, vM2, n):

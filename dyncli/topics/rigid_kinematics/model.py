@@ -3,12 +3,12 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ProblemBase, StrictModel, Vec3
+from dyncli.fields import ProblemBase, StrictModel, Vec3, Vector
 
 ZERO = (0.0, 0.0, 0.0)
 
@@ -27,30 +27,30 @@ ROLLING_TOL = 1e-9
 class Rolling(StrictModel):
     """The body rolls without slip on a fixed surface, in plane motion: ω and ω̇ follow from vB, aB."""
 
-    contact: Vec3(nonzero=True, dim="length", description="x_C/B: the contact point C relative to B, B the centre of the rolling disk (of curvature of its rim) [m]") = Field(...)  # type: ignore[valid-type]
+    contact: Annotated[Vector, Vec3(nonzero=True, dim="length", description="x_C/B: the contact point C relative to B, B the centre of the rolling disk (of curvature of its rim) [m]")] = Field(...)
 
 
 class Rotation(StrictModel):
     """One rotation of a chain: a frame (or the body) turning relative to the one before."""
 
-    omega: Vec3(dim="angular velocity", description="its angular velocity relative to the frame before (the first: relative to the fixed frame) [rad/s]") = Field(...)  # type: ignore[valid-type]
-    omega_dot: Vec3(dim="angular acceleration", description="the rate of that omega as seen in the frame before (δ/δt; the first: its absolute rate) [rad/s²]") = ZERO  # type: ignore[valid-type]
+    omega: Annotated[Vector, Vec3(dim="angular velocity", description="its angular velocity relative to the frame before (the first: relative to the fixed frame) [rad/s]")] = Field(...)
+    omega_dot: Annotated[Vector, Vec3(dim="angular acceleration", description="the rate of that omega as seen in the frame before (δ/δt; the first: its absolute rate) [rad/s²]")] = ZERO
 
 
 class RigidVelocity(ProblemBase):
     """Velocity and acceleration of points of a rigid body (13.8, 13.9)."""
 
     type: Literal["rigid-velocity"]
-    vB: Vec3(dim="velocity", description="velocity of the reference point B [m/s]") = ZERO  # type: ignore[valid-type]
-    aB: Vec3(dim="acceleration", description="acceleration of B [m/s²]") = ZERO  # type: ignore[valid-type]
-    omega: Optional[Vec3(dim="angular velocity", description="angular velocity ω of the body [rad/s] (required unless rolling)")] = None  # type: ignore[valid-type]
-    alpha: Vec3(dim="angular acceleration", description="angular acceleration ω̇ [rad/s²]") = ZERO  # type: ignore[valid-type]
+    vB: Annotated[Vector, Vec3(dim="velocity", description="velocity of the reference point B [m/s]")] = ZERO
+    aB: Annotated[Vector, Vec3(dim="acceleration", description="acceleration of B [m/s²]")] = ZERO
+    omega: Optional[Annotated[Vector, Vec3(dim="angular velocity", description="angular velocity ω of the body [rad/s] (required unless rolling)")]] = None
+    alpha: Annotated[Vector, Vec3(dim="angular acceleration", description="angular acceleration ω̇ [rad/s²]")] = ZERO
     rolling: Optional[Rolling] = Field(None, description="rolling without slip on a fixed surface: omega and "
                                        "alpha from vB and aB (not with omega or alpha)")
     rotations: Optional[list[Rotation]] = Field(None, description="nested rotations, outermost first (an axle "
                                                 "turning at Omega, then the disk spinning on it): omega and alpha "
                                                 "of the last (not with omega, alpha or rolling)")
-    points: dict[str, Vec3(dim="length", description="x_P/B: position of the point relative to B [m]")] = Field(  # type: ignore[valid-type]
+    points: dict[str, Annotated[Vector, Vec3(dim="length", description="x_P/B: position of the point relative to B [m]")]] = Field(
         ..., description="point name -> x_P/B (position relative to B)")
 
     @model_validator(mode="after")
@@ -84,6 +84,7 @@ class RigidVelocity(ProblemBase):
     def _check_rolling(self) -> None:
         from dyncli.topics.rigid_kinematics import equations as eq
 
+        assert self.rolling is not None      # called when rolling is given
         c = eq.unit(self.rolling.contact, "rolling.contact")
         vn = eq.dot(self.vB, c)
         if abs(vn) > ROLLING_TOL * eq.norm(self.vB):
@@ -101,8 +102,8 @@ class RigidVelocity(ProblemBase):
 class PointState(StrictModel):
     """Position and velocity of a point of the body."""
 
-    x: Vec3(dim="length", description="position [m]") = Field(...)  # type: ignore[valid-type]
-    v: Vec3(dim="velocity", description="velocity [m/s]") = Field(...)  # type: ignore[valid-type]
+    x: Annotated[Vector, Vec3(dim="length", description="position [m]")] = Field(...)
+    v: Annotated[Vector, Vec3(dim="velocity", description="velocity [m/s]")] = Field(...)
 
 
 class AngularVelocity(ProblemBase):
@@ -125,18 +126,18 @@ class Screw(ProblemBase):
     """Instantaneous screw axis of a rigid body (14.1-14.9)."""
 
     type: Literal["screw"]
-    omega: Vec3(dim="angular velocity", description="angular velocity ω [rad/s]") = Field(...)  # type: ignore[valid-type]
-    vB: Vec3(dim="velocity", description="velocity of the point B [m/s]") = Field(...)  # type: ignore[valid-type]
-    xB: Vec3(dim="length", description="absolute position of B [m]") = ZERO  # type: ignore[valid-type]
+    omega: Annotated[Vector, Vec3(dim="angular velocity", description="angular velocity ω [rad/s]")] = Field(...)
+    vB: Annotated[Vector, Vec3(dim="velocity", description="velocity of the point B [m/s]")] = Field(...)
+    xB: Annotated[Vector, Vec3(dim="length", description="absolute position of B [m]")] = ZERO
 
 
 class Body(StrictModel):
     """One body at the contact: motion of a reference point and the material
     point M in contact."""
 
-    v: Vec3(dim="velocity", description="velocity of the body's reference point [m/s]") = ZERO  # type: ignore[valid-type]
-    omega: Vec3(dim="angular velocity", description="angular velocity of the body [rad/s]") = ZERO  # type: ignore[valid-type]
-    r: Vec3(dim="length", description="vector from the reference point to the contact material point M [m]") = ZERO  # type: ignore[valid-type]
+    v: Annotated[Vector, Vec3(dim="velocity", description="velocity of the body's reference point [m/s]")] = ZERO
+    omega: Annotated[Vector, Vec3(dim="angular velocity", description="angular velocity of the body [rad/s]")] = ZERO
+    r: Annotated[Vector, Vec3(dim="length", description="vector from the reference point to the contact material point M [m]")] = ZERO
 
 
 class Contact(ProblemBase):
@@ -145,4 +146,4 @@ class Contact(ProblemBase):
     type: Literal["contact"]
     body1: Body = Field(..., description="body B' (material point M')")
     body2: Body = Field(..., description="body B'' (material point M'')")
-    n: Vec3(nonzero=True, description="normal at the contact, from P' toward P'' (normalised by the tool)") = Field(...)  # type: ignore[valid-type]
+    n: Annotated[Vector, Vec3(nonzero=True, description="normal at the contact, from P' toward P'' (normalised by the tool)")] = Field(...)

@@ -2,28 +2,28 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprVec3, Num, ProblemBase, StrictModel, Tensor3, Times, Vec3
+from dyncli.fields import ExprTriple, ExprVec3, Matrix, Num, ProblemBase, StrictModel, Tensor3, Times, Vec3, Vector
 from dyncli.topics.inertia.model import check_psd
 
 
 class AppliedForce(StrictModel):
     """A force F applied at the material point x of the body."""
 
-    F: Vec3(dim="force", description="the force [N]") = Field(...)  # type: ignore[valid-type]
-    x: Optional[Vec3(dim="length", description="point of application [m] (rigid-energy: absolute position; planar-moments: relative to the center of mass, body axes); default the center of mass")] = None  # type: ignore[valid-type]
+    F: Annotated[Vector, Vec3(dim="force", description="the force [N]")] = Field(...)
+    x: Optional[Annotated[Vector, Vec3(dim="length", description="point of application [m] (rigid-energy: absolute position; planar-moments: relative to the center of mass, body axes); default the center of mass")]] = None
 
 
 class Motion(StrictModel):
     """A prescribed motion: v̄(t) and ω(t) on the body axes (where Ī is constant)."""
 
-    v: ExprVec3(("t",), dim="velocity", description="v̄(t): 3 expressions in t [m/s]")  # type: ignore[valid-type]
-    omega: ExprVec3(("t",), dim="angular velocity", description="ω(t): 3 expressions in t [rad/s]")  # type: ignore[valid-type]
-    at: Times(description="times [s] at which to report T, its rate and the work since the first time") = Field(..., json_schema_extra={"minItems": 1})  # type: ignore[valid-type]
+    v: Annotated[ExprTriple, ExprVec3(("t",), dim="velocity", description="v̄(t): 3 expressions in t [m/s]")]
+    omega: Annotated[ExprTriple, ExprVec3(("t",), dim="angular velocity", description="ω(t): 3 expressions in t [rad/s]")]
+    at: Annotated[list[float], Times(description="times [s] at which to report T, its rate and the work since the first time")] = Field(..., json_schema_extra={"minItems": 1})
 
     @field_validator("at")
     @classmethod
@@ -38,12 +38,12 @@ class PlanarMoments(ProblemBase):
     motion ω = ω e'3 (notes §32, 32.13)."""
 
     type: Literal["planar-moments"]
-    I13: Num(dim="moment of inertia", description="Ī'13 about the center of mass [kg m²] (minus the product of inertia)")  # type: ignore[valid-type]
-    I23: Num(dim="moment of inertia", description="Ī'23 about the center of mass [kg m²] (minus the product of inertia)")  # type: ignore[valid-type]
-    I33: Num(ge=0, dim="moment of inertia", description="Ī'33 about the center of mass [kg m²]")  # type: ignore[valid-type]
-    omega: Num(dim="angular velocity", description="ω [rad/s] about e'3 = e3")  # type: ignore[valid-type]
-    omega_dot: Num(dim="angular acceleration", description="ω̇ [rad/s²]") = 0.0  # type: ignore[valid-type]
-    m: Optional[Num(gt=0, dim="mass", description="mass [kg] (with forces: ā = F/m, 32.8)")] = None  # type: ignore[valid-type]
+    I13: Annotated[float, Num(dim="moment of inertia", description="Ī'13 about the center of mass [kg m²] (minus the product of inertia)")]
+    I23: Annotated[float, Num(dim="moment of inertia", description="Ī'23 about the center of mass [kg m²] (minus the product of inertia)")]
+    I33: Annotated[float, Num(ge=0, dim="moment of inertia", description="Ī'33 about the center of mass [kg m²]")]
+    omega: Annotated[float, Num(dim="angular velocity", description="ω [rad/s] about e'3 = e3")]
+    omega_dot: Annotated[float, Num(dim="angular acceleration", description="ω̇ [rad/s²]")] = 0.0
+    m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass [kg] (with forces: ā = F/m, 32.8)")]] = None
     forces: list[AppliedForce] = Field(default_factory=list, description="forces {F, x} on the body (components on e'_i, x relative to the center of mass): resultant, ā (32.6, 32.8), their moment about the center of mass")
 
     @model_validator(mode="after")
@@ -57,15 +57,15 @@ class RigidEnergy(ProblemBase):
     """Kinetic energy and angular momentum of a rigid body (notes §34, 34.6-34.7)."""
 
     type: Literal["rigid-energy"]
-    m: Num(gt=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
-    v: Optional[Vec3(dim="velocity", description="velocity of the center of mass [m/s] (required unless motion is given: then v̄ at its first time)")] = None  # type: ignore[valid-type]
-    omega: Optional[Vec3(dim="angular velocity", description="angular velocity [rad/s], same basis as I (required unless motion is given: then ω at its first time)")] = None  # type: ignore[valid-type]
-    I: Tensor3(symmetric=True, dim="moment of inertia", description="inertia tensor about the center of mass [kg m²], same basis as omega")  # type: ignore[valid-type]
-    x: Optional[Vec3(dim="length", description="position x̄ of the center of mass [m] (for H_O, 29.25, and the points of application)")] = None  # type: ignore[valid-type]
-    about: Optional[Vec3(dim="length", description="the point O for H_O [m] (default the origin; needs x)")] = None  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")]
+    v: Optional[Annotated[Vector, Vec3(dim="velocity", description="velocity of the center of mass [m/s] (required unless motion is given: then v̄ at its first time)")]] = None
+    omega: Optional[Annotated[Vector, Vec3(dim="angular velocity", description="angular velocity [rad/s], same basis as I (required unless motion is given: then ω at its first time)")]] = None
+    I: Annotated[Matrix, Tensor3(symmetric=True, dim="moment of inertia", description="inertia tensor about the center of mass [kg m²], same basis as omega")]
+    x: Optional[Annotated[Vector, Vec3(dim="length", description="position x̄ of the center of mass [m] (for H_O, 29.25, and the points of application)")]] = None
+    about: Optional[Annotated[Vector, Vec3(dim="length", description="the point O for H_O [m] (default the origin; needs x)")]] = None
     forces: list[AppliedForce] = Field(default_factory=list, description="external forces {F, x}: x is the absolute position of the point of application (default the center of mass)")
-    moments: list[Vec3(dim="moment", description="a couple [N m]")] = Field(default_factory=list, description="external couples M_i [N m]")  # type: ignore[valid-type]
-    b: Optional[Vec3(dim="acceleration", description="uniform body force per unit mass [m/s²] (e.g. gravity [0, 0, -9.81])")] = None  # type: ignore[valid-type]
+    moments: list[Annotated[Vector, Vec3(dim="moment", description="a couple [N m]")]] = Field(default_factory=list, description="external couples M_i [N m]")
+    b: Optional[Annotated[Vector, Vec3(dim="acceleration", description="uniform body force per unit mass [m/s²] (e.g. gravity [0, 0, -9.81])")]] = None
     motion: Optional[Motion] = Field(None, description="a prescribed motion {v, omega, at}: T, its rate (the power 34.16) and the work since the first time (34.20)")
 
     @model_validator(mode="after")

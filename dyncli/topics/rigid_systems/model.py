@@ -2,19 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field
 
-from dyncli.fields import Num, ProblemBase, StrictModel, Vec3
+from dyncli.fields import Num, ProblemBase, StrictModel, Vec3, Vector
 
 
 class MovingMass(StrictModel):
     """A point mass that the system's mechanism moves from ``before`` to ``after``."""
 
-    m: Num(gt=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
-    before: Vec3(dim="length", description="position before the change [m] (body components, origin on the axis)")  # type: ignore[valid-type]
-    after: Vec3(dim="length", description="position after the change [m]")  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")]
+    before: Annotated[Vector, Vec3(dim="length", description="position before the change [m] (body components, origin on the axis)")]
+    after: Annotated[Vector, Vec3(dim="length", description="position after the change [m]")]
 
 
 class SpinChange(ProblemBase):
@@ -23,9 +23,9 @@ class SpinChange(ProblemBase):
 
     type: Literal["spin-change"]
     masses: list[MovingMass] = Field(..., description="the moving point masses")
-    axis: Vec3(nonzero=True, description="direction of the fixed axis through the origin (normalised)")  # type: ignore[valid-type]
-    omega0: Num(dim="angular velocity", description="angular velocity about the axis before the change [rad/s]")  # type: ignore[valid-type]
-    I0: Num(ge=0, dim="moment of inertia", description="moment of inertia of the rigid rest about the axis [kg m²]") = 0.0  # type: ignore[valid-type]
+    axis: Annotated[Vector, Vec3(nonzero=True, description="direction of the fixed axis through the origin (normalised)")]
+    omega0: Annotated[float, Num(dim="angular velocity", description="angular velocity about the axis before the change [rad/s]")]
+    I0: Annotated[float, Num(ge=0, dim="moment of inertia", description="moment of inertia of the rigid rest about the axis [kg m²]")] = 0.0
 
 
 class MotorBodies(ProblemBase):
@@ -36,10 +36,10 @@ class MotorBodies(ProblemBase):
     system starts at rest, so H_O·e''2 = 0 and B turns at Ω (36.40)."""
 
     type: Literal["motor-bodies"]
-    IA1: Num(ge=0, dim="moment of inertia", description="body A: moment about its own symmetry axis (the shaft e'''1), about its center of mass [kg m²]")  # type: ignore[valid-type]
-    IA2: Num(ge=0, dim="moment of inertia", description="body A: transverse moment about its center of mass [kg m²]")  # type: ignore[valid-type]
-    mA: Num(ge=0, dim="mass", description="mass of body A [kg]")  # type: ignore[valid-type]
-    L: Num(ge=0, dim="length", description="distance from O (on the fixed axis) to A's center of mass along the shaft [m]")  # type: ignore[valid-type]
-    IB2: Num(ge=0, dim="moment of inertia", description="body B: moment about the fixed axis e''2 (its symmetry axis, through its center of mass) [kg m²]")  # type: ignore[valid-type]
-    alpha: Num(dim="angle", description="angle between the shaft and the plane normal to the fixed axis [rad]")  # type: ignore[valid-type]
-    p: Num(dim="angular velocity", description="spin rate of A relative to B about the shaft [rad/s]")  # type: ignore[valid-type]
+    IA1: Annotated[float, Num(ge=0, dim="moment of inertia", description="body A: moment about its own symmetry axis (the shaft e'''1), about its center of mass [kg m²]")]
+    IA2: Annotated[float, Num(ge=0, dim="moment of inertia", description="body A: transverse moment about its center of mass [kg m²]")]
+    mA: Annotated[float, Num(ge=0, dim="mass", description="mass of body A [kg]")]
+    L: Annotated[float, Num(ge=0, dim="length", description="distance from O (on the fixed axis) to A's center of mass along the shaft [m]")]
+    IB2: Annotated[float, Num(ge=0, dim="moment of inertia", description="body B: moment about the fixed axis e''2 (its symmetry axis, through its center of mass) [kg m²]")]
+    alpha: Annotated[float, Num(dim="angle", description="angle between the shaft and the plane normal to the fixed axis [rad]")]
+    p: Annotated[float, Num(dim="angular velocity", description="spin rate of A relative to B about the shaft [rad/s]")]

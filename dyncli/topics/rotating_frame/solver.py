@@ -70,13 +70,13 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     names = [n for _, n in TABLE_ROWS] + [n for _, n in EXTRA_ROWS if n in given]
     per_time: dict[str, list] = {}
     for name in names:
-        vals = []
+        vals: list[list[float] | None] = []
         for ti, T in zip(times, at):
             v = [float(c) + 0.0 for c in T[name]]
-            if not all(math.isfinite(c) for c in v):
-                v = None
+            finite = all(math.isfinite(c) for c in v)
+            if not finite:
                 bad.add(ti)
-            vals.append(v)
+            vals.append(v if finite else None)
         per_time[name] = vals
     for name in ["omega", "p", "dp_dt", "omega_x_p", "p_dot", "omega_dot", "d2p_dt2", "omega_dot_x_p",
                  "coriolis", "centripetal", "p_ddot", "vA", "aA"]:
@@ -98,7 +98,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             Series("t", times, ["omega_dot", "d2p_dt2", "omega_dot_x_p"], "ω̇ = δω/δt (11.10), δ²p/δt², ω̇×p"),
             Series("t", times, ["coriolis", "centripetal", "p_ddot"], "p̈ (11.11), components on e'_i"),
         ]
-        ab = [n for n in ("vA", "aA") if n in res.results]
+        ab: list[str] = [n for n in ("vA", "aA") if n in res.results]
         if ab:
             res.series.append(Series("t", times, ab, "point A (9.1), components on e'_i"))
         if fixed.wanted(p):              # each table again with the vectors on e_i

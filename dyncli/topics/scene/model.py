@@ -9,12 +9,12 @@ solver, which reports each refusal at the field it concerns.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Literal, Optional, Union
+from typing import Annotated, Any, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprField, Num, ProblemBase, StrictModel, Times
+from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel, Times
 from dyncli.topics.particle.model import check_times
 
 TIME = ("t",)
@@ -25,14 +25,14 @@ def _at(base: str, field: str | None) -> str:
     return f"{base}.{field}" if field else base
 
 #: a point: "BODY", "BODY.POINT", or [x1, x2] on the ground
-PointRef = Union[str, list[Num(dim="length")]]  # type: ignore[valid-type]
+PointRef = Union[str, list[Annotated[float, Num(dim="length")]]]
 
 
 class SurfaceCurve(StrictModel):
     """A curved surface r(q) = x1(q) e1 + x2(q) e2 (the constrained-particle curve language, in the plane)."""
 
-    x1: ExprField(("q",), dim="length", description="x1(q) [m]: number or expression in q")  # type: ignore[valid-type]
-    x2: ExprField(("q",), dim="length", description="x2(q) [m]: number or expression in q")  # type: ignore[valid-type]
+    x1: Annotated[Expr, ExprField(("q",), dim="length", description="x1(q) [m]: number or expression in q")]
+    x2: Annotated[Expr, ExprField(("q",), dim="length", description="x2(q) [m]: number or expression in q")]
 
 
 class Surface(StrictModel):
@@ -40,12 +40,12 @@ class Surface(StrictModel):
     bodies are on its left (the side of n = e3 × d̂, d̂ the direction or the curve's tangent
     in the sense of increasing q)."""
 
-    through: Optional[list[Num(dim="length")]] = Field(None, description="[x1, x2]: a point of the line [m]")  # type: ignore[valid-type]
-    direction: Optional[list[Num()]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")  # type: ignore[valid-type]
-    length: Optional[Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")] = None  # type: ignore[valid-type]
+    through: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: a point of the line [m]")
+    direction: Optional[list[Annotated[float, Num()]]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")
+    length: Optional[Annotated[float, Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")]] = None
     curve: Optional[SurfaceCurve] = Field(None, description="a curved surface {x1, x2}: expressions in the parameter q [m] "
                                           "(instead of through and direction); bodies on the left of increasing q")
-    q_range: Optional[list[Num()]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "  # type: ignore[valid-type]
+    q_range: Optional[list[Annotated[float, Num()]]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "
                                            "reaching an end leaves the surface (an event)")
 
     def check(self, base: str) -> None:
@@ -80,16 +80,16 @@ class Body(StrictModel):
 
     shape: Optional[Literal["point", "rod", "disk", "ring", "box"]] = Field(
         None, description="point, rod (along e'1), disk, ring, box; or give I instead")
-    mass: Num(ge=0, dim="mass", description="mass [kg]")  # type: ignore[valid-type]
-    length: Optional[Num(gt=0, dim="length", description="rod length [m]")] = None  # type: ignore[valid-type]
-    radius: Optional[Num(gt=0, dim="length", description="disk/ring radius [m]")] = None  # type: ignore[valid-type]
-    size: Optional[list[Num(gt=0, dim="length")]] = Field(None, description="box [a, b] along e'1, e'2 [m]")  # type: ignore[valid-type]
-    I: Optional[Num(ge=0, dim="moment_of_inertia", description="I33 about the centre [kg·m²]")] = None  # type: ignore[valid-type]
-    x: Optional[list[Num(dim="length")]] = Field(None, description="[x1, x2]: centre at t = 0 (left out: placed by the joints)")  # type: ignore[valid-type]
-    angle: Optional[Num(description="angle of e'1 from e1 at t = 0 [rad] (left out: placed by the joints)")] = None  # type: ignore[valid-type]
-    v: Optional[list[Num(dim="velocity")]] = Field(None, description="[v1, v2] of the centre at t = 0 (default rest, or what the drives and joints impose)")  # type: ignore[valid-type]
-    omega: Optional[Num(dim="angular_velocity", description="angular velocity at t = 0 [rad/s] (default rest, or what the drives and joints impose)")] = None  # type: ignore[valid-type]
-    points: dict[str, list[Num(dim="length")]] = Field(default_factory=dict, description="named points [p1, p2] on e'1, e'2 [m]")  # type: ignore[valid-type]
+    mass: Annotated[float, Num(ge=0, dim="mass", description="mass [kg]")]
+    length: Optional[Annotated[float, Num(gt=0, dim="length", description="rod length [m]")]] = None
+    radius: Optional[Annotated[float, Num(gt=0, dim="length", description="disk/ring radius [m]")]] = None
+    size: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="box [a, b] along e'1, e'2 [m]")
+    I: Optional[Annotated[float, Num(ge=0, dim="moment_of_inertia", description="I33 about the centre [kg·m²]")]] = None
+    x: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: centre at t = 0 (left out: placed by the joints)")
+    angle: Optional[Annotated[float, Num(description="angle of e'1 from e1 at t = 0 [rad] (left out: placed by the joints)")]] = None
+    v: Optional[list[Annotated[float, Num(dim="velocity")]]] = Field(None, description="[v1, v2] of the centre at t = 0 (default rest, or what the drives and joints impose)")
+    omega: Optional[Annotated[float, Num(dim="angular_velocity", description="angular velocity at t = 0 [rad/s] (default rest, or what the drives and joints impose)")]] = None
+    points: dict[str, list[Annotated[float, Num(dim="length")]]] = Field(default_factory=dict, description="named points [p1, p2] on e'1, e'2 [m]")
 
     def check(self, base: str) -> None:
         if self.shape is None and self.I is None:
@@ -121,8 +121,8 @@ class Body(StrictModel):
 class FixedPulley(StrictModel):
     """A light, smooth, fixed pulley the cord passes over."""
 
-    pulley: list[Num(dim="length")] = Field(description="[x1, x2]: its centre [m]")  # type: ignore[valid-type]
-    radius: Num(ge=0, dim="length", description="its radius [m] (default 0)") = 0.0  # type: ignore[valid-type]
+    pulley: list[Annotated[float, Num(dim="length")]] = Field(description="[x1, x2]: its centre [m]")
+    radius: Annotated[float, Num(ge=0, dim="length", description="its radius [m] (default 0)")] = 0.0
 
     def check(self, base: str) -> None:
         if len(self.pulley) != 2:
@@ -133,11 +133,11 @@ class Wound(StrictModel):
     """A cord end wound on a body: it unwinds at ``radius`` without slipping (a yo-yo, a spool)."""
 
     wound: str = Field(description="the body the cord is wound on")
-    radius: Optional[Num(gt=0, dim="length", description="the radius it unwinds from [m] (default the body's radius)")] = None  # type: ignore[valid-type]
+    radius: Optional[Annotated[float, Num(gt=0, dim="length", description="the radius it unwinds from [m] (default the body's radius)")]] = None
     side: Optional[Literal["left", "right"]] = Field(None, description="the side of the body the cord leaves from, seen from the other end (default: the drawing's: the free segment nearest vertical or horizontal)")
 
 
-CordEntry = Union[FixedPulley, Wound, str, list[Num(dim="length")]]  # type: ignore[valid-type]
+CordEntry = Union[FixedPulley, Wound, str, list[Annotated[float, Num(dim="length")]]]
 
 
 class _OneOf(StrictModel):
@@ -168,14 +168,14 @@ class Joint(_OneOf):
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e)")
-    e: Optional[Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")] = None  # type: ignore[valid-type]
-    value: Optional[ExprField(TIME, description="drive: the coordinate as an expression in t")] = None  # type: ignore[valid-type]
-    mu: Optional[Num(ge=0, description="friction coefficient (static = kinetic)")] = None  # type: ignore[valid-type]
-    mu_s: Optional[Num(ge=0, description="static friction coefficient")] = None  # type: ignore[valid-type]
-    mu_k: Optional[Num(ge=0, description="kinetic friction coefficient")] = None  # type: ignore[valid-type]
-    at: Optional[Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]; on a curved surface (rolls or contact): the curve's parameter q there")] = None  # type: ignore[valid-type]
-    length: Optional[Num(gt=0, dim="length", description="cord or link length [m]")] = None  # type: ignore[valid-type]
-    angle: Optional[Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")] = None  # type: ignore[valid-type]
+    e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
+    value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
+    mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None
+    mu_s: Optional[Annotated[float, Num(ge=0, description="static friction coefficient")]] = None
+    mu_k: Optional[Annotated[float, Num(ge=0, description="kinetic friction coefficient")]] = None
+    at: Optional[Annotated[float, Num(dim="length", description="rolls: the contact point along d̂ from the surface's `through` at t = 0 [m]; on a curved surface (rolls or contact): the curve's parameter q there")]] = None
+    length: Optional[Annotated[float, Num(gt=0, dim="length", description="cord or link length [m]")]] = None
+    angle: Optional[Annotated[float, Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")]] = None
 
     KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive", "stop")
 
@@ -212,13 +212,13 @@ class Force(_OneOf):
     damper: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear damper")
     force: Optional[PointRef] = Field(None, description="P: a force applied at P")
     torque: Optional[str] = Field(None, description="BODY: a couple on the body")
-    k: Optional[Num(ge=0, dim="stiffness", description="spring stiffness [N/m]")] = None  # type: ignore[valid-type]
-    L: Optional[Num(ge=0, dim="length", description="spring free length [m]")] = None  # type: ignore[valid-type]
+    k: Optional[Annotated[float, Num(ge=0, dim="stiffness", description="spring stiffness [N/m]")]] = None
+    L: Optional[Annotated[float, Num(ge=0, dim="length", description="spring free length [m]")]] = None
     one_sided: Optional[Literal["compression", "tension"]] = Field(
         None, description="compression: the spring only pushes; tension: it only pulls")
-    c: Optional[Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")] = None  # type: ignore[valid-type]
-    F: Optional[list[ExprField(TIME, dim="force")]] = Field(None, description="[F1, F2]: expressions in t [N]")  # type: ignore[valid-type]
-    M: Optional[ExprField(TIME, dim="moment", description="couple about e3 [N·m], expression in t")] = None  # type: ignore[valid-type]
+    c: Optional[Annotated[float, Num(ge=0, dim="damping", description="damping coefficient [N·s/m]")]] = None
+    F: Optional[list[Annotated[Expr, ExprField(TIME, dim="force")]]] = Field(None, description="[F1, F2]: expressions in t [N]")
+    M: Optional[Annotated[Expr, ExprField(TIME, dim="moment", description="couple about e3 [N·m], expression in t")]] = None
     name: Optional[str] = Field(None, description="reported as force.NAME")
 
     KINDS: ClassVar[tuple[str, ...]] = ("spring", "damper", "force", "torque")
@@ -246,8 +246,8 @@ class Scene(ProblemBase):
     bodies: dict[str, Body] = Field(description="bodies by name (`ground` is reserved)")
     joints: dict[str, Joint] = Field(default_factory=dict, description="joints by name")
     forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")] = None  # type: ignore[valid-type]
-    at: Times(description="times at which to report the state [s]") = Field(default_factory=list)  # type: ignore[valid-type]
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")]] = None
+    at: Annotated[list[float], Times(description="times at which to report the state [s]")] = Field(default_factory=list)
     find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}")
     motion: Optional[Any] = Field(None, description="out-of-plane motion is refused (use top, euler, gyroscope)")
     linearize: bool = Field(False, description="true: the equilibria (rest configurations) with their stability, "

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
 
@@ -20,19 +20,19 @@ class Top(ProblemBase):
     θ about e'''_1, φ about e''_3; rates ψ̇, θ̇, φ̇ (φ̇ is the spin p of (38.19e))."""
 
     type: Literal["top"]
-    m: Num(gt=0, dim="mass", description="mass of the top [kg]") = Field(...)  # type: ignore[valid-type]
-    L: Num(gt=0, dim="length", description="distance from O to the center of mass along the axis [m]") = Field(...)  # type: ignore[valid-type]
-    I11: Num(gt=0, dim="moment of inertia", description="transverse moment of inertia about O [kg·m²]") = Field(...)  # type: ignore[valid-type]
-    I33: Num(gt=0, dim="moment of inertia", description="axial moment of inertia about O [kg·m²]") = Field(...)  # type: ignore[valid-type]
-    psi: Num(dim="angle", description="initial precession angle ψ [rad]") = 0.0  # type: ignore[valid-type]
-    theta: Num(dim="angle", description="initial nutation angle θ [rad] (angle of the axis from e3)") = 0.0  # type: ignore[valid-type]
-    phi: Num(dim="angle", description="initial spin angle φ [rad]") = 0.0  # type: ignore[valid-type]
-    psi_dot: Num(dim="angular velocity", description="initial ψ̇ [rad/s]") = 0.0  # type: ignore[valid-type]
-    theta_dot: Num(dim="angular velocity", description="initial θ̇ [rad/s]") = 0.0  # type: ignore[valid-type]
-    phi_dot: Num(dim="angular velocity", description="initial φ̇ = spin p relative to e'' [rad/s]") = 0.0  # type: ignore[valid-type]
-    at: Times(description="times t >= 0 [s] at which to report the motion") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta}, {min: R.2}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass of the top [kg]")] = Field(...)
+    L: Annotated[float, Num(gt=0, dim="length", description="distance from O to the center of mass along the axis [m]")] = Field(...)
+    I11: Annotated[float, Num(gt=0, dim="moment of inertia", description="transverse moment of inertia about O [kg·m²]")] = Field(...)
+    I33: Annotated[float, Num(gt=0, dim="moment of inertia", description="axial moment of inertia about O [kg·m²]")] = Field(...)
+    psi: Annotated[float, Num(dim="angle", description="initial precession angle ψ [rad]")] = 0.0
+    theta: Annotated[float, Num(dim="angle", description="initial nutation angle θ [rad] (angle of the axis from e3)")] = 0.0
+    phi: Annotated[float, Num(dim="angle", description="initial spin angle φ [rad]")] = 0.0
+    psi_dot: Annotated[float, Num(dim="angular velocity", description="initial ψ̇ [rad/s]")] = 0.0
+    theta_dot: Annotated[float, Num(dim="angular velocity", description="initial θ̇ [rad/s]")] = 0.0
+    phi_dot: Annotated[float, Num(dim="angular velocity", description="initial φ̇ = spin p relative to e'' [rad/s]")] = 0.0
+    at: Annotated[list[float], Times(description="times t >= 0 [s] at which to report the motion")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta}, {min: R.2}")
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")]] = None
 
     accuracy_methods = METHODS
 

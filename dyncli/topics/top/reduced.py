@@ -127,7 +127,8 @@ class Reduced:
         x, thd, psi, phi = sol.y
         th = x + self.tc
         zero = ts == 0.0                      # the initial state as given
-        th[zero], thd[zero], psi[zero], phi[zero] = self.th0, *self.y0[1:]
+        th[zero] = self.th0
+        thd[zero], psi[zero], phi[zero] = self.y0[1:]
         return self.motion(psi, th, phi, thd), self.drift(th, thd)
 
     def motion(self, psi, th, phi, thd):

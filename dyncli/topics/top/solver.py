@@ -187,7 +187,7 @@ def _resample(p, ts):
 
 def _fastest_rate(th_dot, psi_dot, phi_dot) -> str:
     rates_ = {"theta_dot": abs(th_dot), "psi_dot": abs(psi_dot), "phi_dot": abs(phi_dot)}
-    return max(rates_, key=rates_.get)
+    return max(rates_, key=lambda k: rates_[k])
 
 
 def _overflow_message(A, C, W3, th_dot, psi_dot, phi_dot) -> str:

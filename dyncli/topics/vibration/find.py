@@ -223,7 +223,7 @@ def _free_odometer(resp: Response):
         t1, half = y1 / ws, math.pi / ws
         decay = z * wn * half                         # ln of the ratio of successive |w| at turning points
 
-        def distance(t: float) -> float:
+        def odometer(t: float) -> float:
             if (w0 == 0.0 and wd0 == 0.0) or t <= t1:
                 return abs(w(t) - w0)
             k = math.floor((t - t1) / half)           # turning points t1 + j·half, j = 0..k, at or before t
@@ -234,7 +234,7 @@ def _free_odometer(resp: Response):
             else:
                 inner = a1 * (1.0 + math.exp(-decay)) * math.expm1(-k * decay) / math.expm1(-decay)
             return abs(w(t1) - w0) + inner + abs(w(t) - w(tk))
-        return _Odometer(lambda ts: [distance(t) for t in ts], distance)
+        return _Odometer(lambda ts: [odometer(t) for t in ts], odometer)
     # ζ ≥ 1: v vanishes at most once (a sum of two decaying exponentials)
     v = lambda t: cf.free_at(t, w0, wd0, wn, z)[1]    # noqa: E731
     cache: dict[float, list[float]] = {}

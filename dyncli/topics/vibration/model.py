@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Literal, Optional
+from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
@@ -17,29 +17,29 @@ MAX_RATIO = 1e100   # frequency ratios and ζ beyond this are not physical (and 
 class Base(StrictModel):
     """Base motion s(t) = amplitude·sin(omega·t) (17.26)."""
 
-    amplitude: Num(dim="length", description="s0: base amplitude [m]") = Field(...)  # type: ignore[valid-type]
-    omega: Num(ge=0, dim="angular velocity", description="ω: base frequency [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
+    amplitude: Annotated[float, Num(dim="length", description="s0: base amplitude [m]")] = Field(...)
+    omega: Annotated[float, Num(ge=0, dim="angular velocity", description="ω: base frequency [rad/s], >= 0")] = Field(...)
 
 
 class Force(StrictModel):
     """Force on the mass F(t) = amplitude·sin(omega·t)."""
 
-    amplitude: Num(dim="force", description="F0: force amplitude [N]") = Field(...)  # type: ignore[valid-type]
-    omega: Num(ge=0, dim="angular velocity", description="ω: forcing frequency [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
+    amplitude: Annotated[float, Num(dim="force", description="F0: force amplitude [N]")] = Field(...)
+    omega: Annotated[float, Num(ge=0, dim="angular velocity", description="ω: forcing frequency [rad/s], >= 0")] = Field(...)
 
 
 class Unbalance(StrictModel):
     """A rotating unbalance: a mass m0 at eccentricity e turning at ω puts F = m0 e ω² sin(ωt) on the mass."""
 
-    m0: Num(gt=0, dim="mass", description="the unbalanced mass [kg] (part of m)") = Field(...)  # type: ignore[valid-type]
-    e: Num(gt=0, dim="length", description="its eccentricity (distance from the axis of rotation) [m]") = Field(...)  # type: ignore[valid-type]
-    omega: Num(ge=0, dim="angular velocity", description="ω: the rotation rate [rad/s], >= 0") = Field(...)  # type: ignore[valid-type]
+    m0: Annotated[float, Num(gt=0, dim="mass", description="the unbalanced mass [kg] (part of m)")] = Field(...)
+    e: Annotated[float, Num(gt=0, dim="length", description="its eccentricity (distance from the axis of rotation) [m]")] = Field(...)
+    omega: Annotated[float, Num(ge=0, dim="angular velocity", description="ω: the rotation rate [rad/s], >= 0")] = Field(...)
 
 
 class Sweep(StrictModel):
     """Frequency sweep of the amplification functions over r = ω/ωₙ."""
 
-    ratio: tuple[Num(ge=0, le=MAX_RATIO), Num(ge=0, le=MAX_RATIO)] = Field(..., description="[r_min, r_max], 0 <= r_min < r_max")  # type: ignore[valid-type]
+    ratio: tuple[Annotated[float, Num(ge=0, le=MAX_RATIO)], Annotated[float, Num(ge=0, le=MAX_RATIO)]] = Field(..., description="[r_min, r_max], 0 <= r_min < r_max")
     points: int = Field(50, ge=2, le=MAX_SWEEP_POINTS, description="number of ratios, endpoints included")
     spacing: Literal["linear", "log"] = "linear"
 
@@ -65,20 +65,20 @@ class Vibration(ProblemBase):
     """Spring–mass–damper with optional base excitation (notes §17)."""
 
     type: Literal["vibration"]
-    m: Num(gt=0, dim="mass", description="mass [kg]") = Field(...)  # type: ignore[valid-type]
-    k: Num(gt=0, dim="stiffness", description="spring constant [N/m]") = Field(...)  # type: ignore[valid-type]
-    c: Optional[Num(ge=0, dim="damping", description="damping coefficient [N·s/m] (default 0; not with zeta)")] = None  # type: ignore[valid-type]
-    zeta: Optional[Num(ge=0, le=MAX_RATIO, description="damping ratio ζ = c/(2mωₙ) (not with c)")] = None  # type: ignore[valid-type]
-    L: Num(dim="length", description="free length of the spring [m]") = 0.0  # type: ignore[valid-type]
-    x0: Optional[Num(dim="length", description="initial position of the mass [m] (default L)")] = None  # type: ignore[valid-type]
-    v0: Num(dim="velocity", description="initial velocity of the mass [m/s]") = 0.0  # type: ignore[valid-type]
+    m: Annotated[float, Num(gt=0, dim="mass", description="mass [kg]")] = Field(...)
+    k: Annotated[float, Num(gt=0, dim="stiffness", description="spring constant [N/m]")] = Field(...)
+    c: Optional[Annotated[float, Num(ge=0, dim="damping", description="damping coefficient [N·s/m] (default 0; not with zeta)")]] = None
+    zeta: Optional[Annotated[float, Num(ge=0, le=MAX_RATIO, description="damping ratio ζ = c/(2mωₙ) (not with c)")]] = None
+    L: Annotated[float, Num(dim="length", description="free length of the spring [m]")] = 0.0
+    x0: Optional[Annotated[float, Num(dim="length", description="initial position of the mass [m] (default L)")]] = None
+    v0: Annotated[float, Num(dim="velocity", description="initial velocity of the mass [m/s]")] = 0.0
     base: Optional[Base] = None
     force: Optional[Force] = Field(None, description="force on the mass F(t) = amplitude·sin(omega·t) (not with base)")
     unbalance: Optional[Unbalance] = Field(None, description="a rotating unbalance: F = m0·e·omega²·sin(omega·t) on "
                                            "the mass, m the total mass (m0 included); not with base or force")
-    at: Times(description="times t >= 0 [s] at which to report x, v, w") = Field(default_factory=list)  # type: ignore[valid-type]
-    find: Find() = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x: VALUE}}, {max: x}, {min: v}")  # type: ignore[valid-type]
-    t_end: Optional[Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")] = None  # type: ignore[valid-type]
+    at: Annotated[list[float], Times(description="times t >= 0 [s] at which to report x, v, w")] = Field(default_factory=list)
+    find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x: VALUE}}, {max: x}, {min: v}")
+    t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")]] = None
     sweep: Optional[Sweep] = None
 
     accuracy_methods = ("auto", "closed-form", "ode", "DOP853")
@@ -122,6 +122,7 @@ class Vibration(ProblemBase):
 
     def _check_unbalance(self, omega_n: float) -> None:
         u = self.unbalance
+        assert u is not None                 # called when unbalance is given
         for other in ("base", "force"):
             if getattr(self, other) is not None:
                 raise InputError(f"give one excitation: unbalance (a rotating unbalance) or {other}, not both; "

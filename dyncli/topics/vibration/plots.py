@@ -115,7 +115,7 @@ def _response(p, R) -> Plot:
     x = _x(p, R, t)
     ts = t.tolist()
     lines = [Line(ts, x.tolist(), "x(t), exact total response", style="-")]
-    hlines = []
+    hlines: list[tuple[float, str | None]] = []
     decays = np.exp(-zeta * wn * t)
     if forced.forcing(p) is not None:
         title = ("rotating-unbalance" if p.unbalance is not None else "force-excited") + " vibration x(t)"
