@@ -63,10 +63,10 @@ def angle_fields(model: Any, raw: Any, path: tuple = ()) -> Iterator[tuple[tuple
                     yield from angle_fields(v, written[k], here + (k,))
 
 
-_FIELDS: dict[type, list[tuple[str, str, bool]]] = {}
+_FIELDS: dict[Any, list[tuple[str, str, bool]]] = {}
 
 
-def _fields(cls: type) -> list[tuple[str, str, bool]]:
+def _fields(cls: Any) -> list[tuple[str, str, bool]]:
     """(name, key as written, is an angle) of every field of a model class,
     worked out once per class (every solve asks)."""
     out = _FIELDS.get(cls)

@@ -236,9 +236,10 @@ class TypeSpec:
         """:meth:`check` then :meth:`symbols_units` of ``keys``, remembered per
         tuple of keys (a type's solves return the same keys: a sweep asks
         thousands of times); fresh dicts each call."""
-        cache = getattr(self, "_keys_cache", None)
+        cache: tuple[int, dict] | None = getattr(self, "_keys_cache", None)
         if cache is None or cache[0] != len(self.results):
-            cache = self._keys_cache = (len(self.results), {})
+            cache = (len(self.results), {})
+            self._keys_cache = cache
         hit = cache[1].get(keys)
         if hit is None:
             self.check(dict.fromkeys(keys))

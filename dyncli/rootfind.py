@@ -248,6 +248,20 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
     return float(r.x), r.fun
 
 
+def _critical(c, deg: int):
+    """The real critical points in (−1, 1) of the Chebyshev series ``c`` (sorted), or None when
+    its derivative's companion matrix is not finite."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    try:
+        with np.errstate(all="ignore"):
+            r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+    except np.linalg.LinAlgError:
+        return None
+    return np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
+
+
 def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_depth: int = 48,
               limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
@@ -259,7 +273,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     changes).  A critical point where f is within its rounding of 0 without a sign change is a
     double root (``touches``) unless halving the cell around it decides its sign.  ``bad``: cells
     where f is not finite or not resolved (midpoints), or beyond ``budget`` cells; ``limit``:
-    stop once more than that many roots are found."""
+    stop once more than that many roots are found.  (One loop over a stack of cells, a little over
+    60 lines: its steps share the cell's state and read best in one place.)"""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
@@ -269,10 +284,10 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     roots, touches, bad = list[float](), list[float](), []      # (the sign changes, the double roots, the unresolved cells)
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
-        if (budget := budget - 1) < 0:
-            bad.append(0.5 * (u + v))
-            continue
         m, h = 0.5 * (u + v), 0.5 * (v - u)
+        if (budget := budget - 1) < 0:
+            bad.append(m)
+            continue
         with np.errstate(all="ignore"):
             y, split = np.asarray(f(m + h * x1), dtype=float), depth < max_depth and h > tiny
         if not np.all(np.isfinite(y)):          # (a cell with no finite value at all: not halved)
@@ -287,13 +302,9 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
         if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor) and split:
             stack += [(m, v, depth + 1), (u, m, depth + 1)]
             continue
-        try:                                    # (coefficients of a huge f: the companion matrix overflows)
-            with np.errstate(all="ignore"):
-                r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
-        except np.linalg.LinAlgError:
+        if (r := _critical(c, deg)) is None:    # (a huge f: its derivative's companion matrix overflows)
             bad.append(m)
             continue
-        r = np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
         sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
         with np.errstate(all="ignore"):
             fs = [float(w) for w in np.asarray(f(np.array(sep)), dtype=float)]

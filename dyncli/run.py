@@ -27,10 +27,10 @@ def solve_one(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome
     """The outcome of ``lp``, kept on it for the problems that take a parameter from its results
     (dyncli.chain); a chained problem is first given those values and validated."""
     if lp.chain and lp.error is None:
-        from dyncli import chain
+        from dyncli import chain, chain_solve
 
         try:
-            ready = chain.resolve(lp, lambda src: solve_one(src, options))
+            ready = chain_solve.resolve(lp, lambda src: solve_one(src, options))
         except chain.Failure as exc:
             outcome = Outcome(lp, None, exc.code, exc.message)
         else:
@@ -56,7 +56,7 @@ def _solve(lp: LoadedProblem, options: SolveOptions | None = None) -> Outcome:
             # detect non-finite values and report them as results' warnings or
             # exit codes); any other (scipy's IntegrationWarning...) becomes one
             # line among the results' warnings
-            warnings.filters[:0] = _quiet_filters()     # entering cleared the registries already
+            warnings.filters[:0] = _quiet_filters()  # type: ignore[index]  # typeshed: a Sequence; at run time the module's list
             result = fn(lp.model, options)
         if isinstance(result, Result):
             _library_warnings(result, caught)

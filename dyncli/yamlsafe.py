@@ -222,7 +222,7 @@ class _Builder:
                 shown = ev.value if len(ev.value) <= 40 else ev.value[:37] + "..."
                 raise _stop(f"cannot read value {shown!r} ({len(ev.value)} characters)", line, col) from None
         if cls is y.SequenceStartEvent:
-            out = []
+            out: list[Any] = []
             for child in it:
                 if type(child) is y.SequenceEndEvent:
                     return out

@@ -27,7 +27,7 @@ class _Buffer(io.StringIO):
 
 
 def _out(file, width, terminal: bool):
-    from dyncli.render.plain import Out
+    from dyncli.render.out import Out
 
     return Out(file, width, terminal, getattr(file, "encoding", None) or "utf-8", bool(os.environ.get("NO_COLOR")))
 

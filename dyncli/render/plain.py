@@ -94,7 +94,7 @@ class Table:
         self.n_rows += 1
 
 
-def _text(x) -> str:
+def text_of(x) -> str:
     return x.plain if isinstance(x, Text) else ("" if x is None else str(x))
 
 
@@ -156,7 +156,7 @@ def _min_width(text: str) -> int:
 
 
 def _width(col: Column, texts: list[str]) -> int:
-    return max([cell_len(ln) for x in [_clean(_text(col.header))] + texts for ln in x.split("\n")])
+    return max([cell_len(ln) for x in [_clean(text_of(col.header))] + texts for ln in x.split("\n")])
 
 
 def _total(table: Table, widths: list[int]) -> int:
@@ -169,7 +169,7 @@ def fit(table: Table, width: int | None) -> list[Table]:
     broken at spaces outside vectors, then the columns split into several
     tables (the first column repeated) when it is still too wide."""
     cols = table.columns
-    texts = [[_clean(_text(x)) for x in c.cells] for c in cols]
+    texts = [[_clean(text_of(x)) for x in c.cells] for c in cols]
     widths = [_width(c, t) for c, t in zip(cols, texts)]
     if width is None or _total(table, widths) <= width or not cols:
         return [table]
@@ -181,7 +181,7 @@ def fit(table: Table, width: int | None) -> list[Table]:
             break
         if cols[k].no_wrap:
             continue
-        floor = max([_min_width(_text(cols[k].header))] + [_min_width(x) for x in texts[k]])
+        floor = max([_min_width(text_of(cols[k].header))] + [_min_width(x) for x in texts[k]])
         target = max(floor, widths[k] - excess, 8)
         if target < widths[k]:
             texts[k] = [wrap(x, target) for x in texts[k]]
@@ -227,7 +227,7 @@ def _rebuilt(table: Table, ks: list[int], texts, title, caption: bool = True) ->
     for k in ks:
         c = table.columns[k]
         t.add_column(c.header, c.justify, c.style, c.no_wrap, c.overflow)
-        t.columns[-1].cells = [x if isinstance(x, Text) and _text(x) == s else
+        t.columns[-1].cells = [x if isinstance(x, Text) and text_of(x) == s else
                                (Text(s, x.style or (x.spans[0][1] if x.spans else "")) if isinstance(x, Text) else s)
                                for x, s in zip(c.cells, texts[k])]
     t.n_rows = table.n_rows
@@ -246,8 +246,8 @@ def lines(table: Table) -> list[str]:
 def parts(table: Table) -> tuple[list[str], list[str], list[str]]:
     """The title's, the table's and the caption's lines of a fitted table."""
     cols = table.columns
-    cells = [[_clean(_text(x)).split("\n") for x in c.cells] for c in cols]
-    heads = [_clean(_text(c.header)) for c in cols]
+    cells = [[_clean(text_of(x)).split("\n") for x in c.cells] for c in cols]
+    heads = [_clean(text_of(c.header)) for c in cols]
     widths = [max([cell_len(ln) for ln in h.split("\n")] + [cell_len(ln) for cl in cc for ln in cl])
               for h, cc in zip(heads, cells)]
     square = table.box == SQUARE
@@ -288,7 +288,7 @@ def _label(label, total: int) -> list[str]:
     """A title or caption: one line centred over the table, never wrapped."""
     if not label:
         return []
-    text = _text(label)
+    text = text_of(label)
     n = cell_len(text)
     if n >= total:
         return [text]
@@ -309,65 +309,3 @@ def text_lines(text: str, width: int | None) -> list[str]:
         else:
             cur = trial
     return out + [cur]
-
-
-# ------------------------------------------------------------------ output
-
-class Out:
-    """Where a view prints: ``file`` at ``width`` columns (None: natural
-    width).  Off a terminal the lines are written directly; on a terminal
-    (``terminal``), or when the tests switch :data:`ENABLED` off, through a
-    rich console (``rich``, made on first use)."""
-
-    def __init__(self, file, width: int | None, terminal: bool = False, encoding: str = "utf-8",
-                 no_color: bool = False, rich=None):
-        self.file, self.width, self.terminal, self.encoding = file, width, terminal, encoding
-        self.no_color, self._rich = no_color, rich
-
-    @property
-    def is_terminal(self) -> bool:
-        return self.terminal
-
-    def _console(self):
-        if self._rich is None:
-            from rich.console import Console
-
-            self._rich = Console(file=self.file, width=self.width or 100_000, no_color=self.no_color,
-                                 highlight=False, soft_wrap=False)
-        return self._rich
-
-    def print(self, obj="") -> None:
-        if not isinstance(obj, (Table, Text, str)):          # a rich renderable (benchmarks of the former views)
-            self._console().print(obj)
-            return
-        if isinstance(obj, Table):
-            for t in fit(obj, self.width):
-                self._table(t)
-            return
-        style = obj.style if isinstance(obj, Text) else ""
-        for ln in text_lines(_text(obj), self.width):
-            self._line(ln if not isinstance(obj, Text) or len(obj.spans) < 2 or ln != obj.plain else obj, style)
-
-    def _line(self, text, style: str = "") -> None:
-        if ENABLED and not self.terminal:
-            self.file.write(_text(text) + "\n")
-            return
-        from dyncli.render import richview
-
-        richview.line(self._console(), richview.text(text, style))
-
-    def _table(self, t: Table) -> None:
-        if ENABLED and not self.terminal:
-            self.file.write("\n".join(lines(t)) + "\n")
-            return
-        from dyncli.render import richview
-
-        richview.table(self._console(), t)
-
-
-def as_out(console) -> Out:
-    """An :class:`Out` for ``console`` (an Out, or a rich Console of the tests)."""
-    if isinstance(console, Out):
-        return console
-    return Out(console.file, console.width, console.is_terminal, console.encoding or "utf-8",
-               bool(console.no_color), rich=console)

@@ -14,6 +14,7 @@ import csv
 import json
 import sys
 import tempfile
+from typing import Any
 
 
 class RecordStream:
@@ -23,7 +24,7 @@ class RecordStream:
         self.fmt, self.long, self.n = fmt, long, 0
         self.utf = stdio.is_utf(sys.stdout)
         self.columns: dict[str, None] = {}
-        self.spill = tempfile.TemporaryFile("w+", encoding="utf-8") if fmt == "csv" else None
+        self.spill: Any = tempfile.TemporaryFile("w+", encoding="utf-8") if fmt == "csv" else None
         self.errors = False
 
     def add(self, o) -> None:

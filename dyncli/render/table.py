@@ -16,6 +16,7 @@ from typing import Any
 
 from dyncli.numfmt import DEFAULT_DIGITS, fmt_num  # noqa: F401  (re-exported: one number format)
 from dyncli.printable import printable
+from dyncli.render.tableviews import convert_view, scale
 from dyncli.result import Equations, FrameTable, Result, Table
 
 
@@ -72,26 +73,13 @@ def make_console(file=None, width: int | None = None):
     import sys
 
     from dyncli import stdio
-    from dyncli.render.plain import Out
+    from dyncli.render.out import Out
 
     no_color = bool(os.environ.get("NO_COLOR"))
     if file is None:
         return Out(sys.stdout, stdio.table_width(), stdio._isatty(), getattr(sys.stdout, "encoding", None) or "utf-8",
                    no_color)
     return Out(file, width or stdio.DEFAULT_WIDTH, False, getattr(file, "encoding", None) or "utf-8", no_color)
-
-
-def _scale(x: Any, f: float) -> Any:
-    if x is None or isinstance(x, (bool, str)):
-        return x
-    if isinstance(x, dict):
-        return {k: _scale(v, f) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_scale(v, f) for v in x]
-    try:
-        return float(x) * f
-    except (TypeError, ValueError):
-        return x
 
 
 def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]:
@@ -112,7 +100,7 @@ def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]
             units[name] = fac[1]
     for name, val in values.items():
         if name in factors:
-            values[name] = _scale(val, factors[name])
+            values[name] = scale(val, factors[name])
         elif is_deferred(val):
             values[name] = _scale_fields(val, factors)
     return values, units
@@ -120,7 +108,7 @@ def display_units(result: Result, wanted: list[str] | None) -> tuple[dict, dict]
 
 def _scale_fields(x: Any, factors: dict) -> Any:
     if isinstance(x, dict):
-        return {k: _scale(v, factors[k]) if k in factors else _scale_fields(v, factors) for k, v in x.items()}
+        return {k: scale(v, factors[k]) if k in factors else _scale_fields(v, factors) for k, v in x.items()}
     if isinstance(x, list):
         return [_scale_fields(v, factors) for v in x]
     return x
@@ -130,9 +118,9 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     """The terminal view of one solved problem: a header (title, type, method, error estimate,
     equations), the table of scalar results, one table per series and per nested result, the
     frame views (δ/δt tables) and the warnings."""
-    from dyncli.render.plain import Text, as_out
-    from dyncli.render.tableviews import convert_view
-
+    from dyncli.render.out import as_out
+    from dyncli.render.plain import Text
+    
     out = as_out(console)
     _print_header(out, lp, result)
     values, unit_names = display_units(result, units)

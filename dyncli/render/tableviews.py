@@ -12,6 +12,20 @@ from typing import Any
 
 from dyncli.result import FrameTable, Table
 
+
+def scale(x: Any, f: float) -> Any:
+    """Every number in ``x`` (nested lists and mappings) times ``f``; other values unchanged."""
+    if x is None or isinstance(x, (bool, str)):
+        return x
+    if isinstance(x, dict):
+        return {k: scale(v, f) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [scale(v, f) for v in x]
+    try:
+        return float(x) * f
+    except (TypeError, ValueError):
+        return x
+
 _UNIT = re.compile(r"^(?P<label>.*?)\s*\[(?P<unit>[^\[\]]+)\]$")
 
 
@@ -43,7 +57,6 @@ def _relabel(label: Any, wanted: list[str]) -> tuple[Any, float | None, bool]:
 def convert_view(view, wanted: list[str] | None):
     """(the view in the ``--units`` wanted, True unless it holds numbers of
     unnamed units)."""
-    from dyncli.render.table import _scale
 
     if not wanted:
         return view, True
@@ -52,9 +65,9 @@ def convert_view(view, wanted: list[str] | None):
         if f is None:
             return view, True
         if isinstance(view, Table):
-            return replace(view, title=title, rows=[[_scale(c, f) if _numeric(c) else c for c in r]
+            return replace(view, title=title, rows=[[scale(c, f) if _numeric(c) else c for c in r]
                                                     for r in view.rows]), True
-        return replace(view, title=title, rows=[(lb, [_scale(c, f) if _numeric(c) else c for c in comps])
+        return replace(view, title=title, rows=[(lb, [scale(c, f) if _numeric(c) else c for c in comps])
                                                 for lb, comps in view.rows]), True
     ok = True
     if isinstance(view, Table):
@@ -67,14 +80,14 @@ def convert_view(view, wanted: list[str] | None):
                 columns[j] = new
                 for r in rows:
                     if j < len(r):
-                        r[j] = _scale(r[j], f)
+                        r[j] = scale(r[j], f)
         return replace(view, columns=columns, rows=rows), ok
     if isinstance(view, FrameTable):
         frows = []
         for label, comps in view.rows:
             new, f, named = _relabel(label, wanted)
             ok = ok and (named or not _numeric(comps))
-            frows.append((new, [_scale(c, f) if not isinstance(c, str) else c for c in comps]) if f is not None
+            frows.append((new, [scale(c, f) if not isinstance(c, str) else c for c in comps]) if f is not None
                          else (label, comps))
         return replace(view, rows=frows), ok
     return view, True

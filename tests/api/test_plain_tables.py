@@ -16,7 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dyncli.render import plain
+from dyncli.render import out as out_mod, plain
 from tests.conftest import ROOT
 
 FILES = sorted(str(p) for p in (ROOT / "problems").rglob("*.yaml") if "course-example" not in p.parts)
@@ -38,7 +38,7 @@ def _text(outs, width, fast: bool, units=None) -> str:
     buf = io.StringIO()
     plain.ENABLED = fast
     try:
-        out = plain.Out(buf, width, no_color=True)
+        out = out_mod.Out(buf, width, no_color=True)
         for o in outs:
             render(out, o.problem, o.result, 6, units)
     finally:
@@ -64,7 +64,7 @@ def test_check_report_is_what_rich_prints():
         plain.ENABLED = fast
         try:
             for width in (100, 60, None):
-                table.draw(grade(ALICE, reveal=True), plain.Out(buf, width, no_color=True))
+                table.draw(grade(ALICE, reveal=True), out_mod.Out(buf, width, no_color=True))
         finally:
             plain.ENABLED = True
         out.append(buf.getvalue())
@@ -116,7 +116,7 @@ def test_random_cells_match_rich(title, head, rows, style, width):
         buf = io.StringIO()
         plain.ENABLED = fast
         try:
-            plain.Out(buf, width, no_color=True).print(table())
+            out_mod.Out(buf, width, no_color=True).print(table())
         finally:
             plain.ENABLED = True
         out.append(buf.getvalue())
@@ -138,7 +138,7 @@ def test_units_convert_every_table_or_say_so(outcomes):
     bad = []
     for o in outcomes:
         buf = io.StringIO()
-        render(plain.Out(buf, None, no_color=True), o.problem, o.result, 6, UNITS)
+        render(out_mod.Out(buf, None, no_color=True), o.problem, o.result, 6, UNITS)
         text = buf.getvalue()
         if "--units: not applied to" in text:
             continue
@@ -161,10 +161,10 @@ def test_rectilinear_find_has_units_and_converts(outcomes):
 
     o = next(o for o in outcomes if o.problem.file.endswith("case1-constant-acceleration.yaml"))
     buf = io.StringIO()
-    render(plain.Out(buf, 100, no_color=True), o.problem, o.result)
+    render(out_mod.Out(buf, 100, no_color=True), o.problem, o.result)
     assert "t [s]" in buf.getvalue() and "s [m]" in buf.getvalue() and "v [m/s]" in buf.getvalue()
     buf = io.StringIO()
-    render(plain.Out(buf, 100, no_color=True), o.problem, o.result, 6, ["mm"])
+    render(out_mod.Out(buf, 100, no_color=True), o.problem, o.result, 6, ["mm"])
     row = next(ln.split() for ln in buf.getvalue().splitlines() if ln.split()[:2] == ["0", "2"])
     assert "s [mm]" in buf.getvalue() and row[2] == "32000"          # s = 32 m at t = 2 s (6.5b)
 

@@ -8,7 +8,7 @@ import io
 import json
 import math
 
-from dyncli.render import plain
+from dyncli.render import out
 from tests.conftest import ROOT
 
 SATELLITE = "problems/particle/satellite-inverse-square.yaml"
@@ -26,7 +26,7 @@ def _table(o, units=None) -> str:
     from dyncli.render.table import render
 
     buf = io.StringIO()
-    render(plain.Out(buf, 100, no_color=True), o.problem, o.result, 6, units)
+    render(out.Out(buf, 100, no_color=True), o.problem, o.result, 6, units)
     return buf.getvalue()
 
 

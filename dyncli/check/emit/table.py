@@ -18,7 +18,7 @@ def render(report: Report) -> str:
     """The table as plain text at its natural width (what a pipe or a file holds)."""
     import io
 
-    from dyncli.render.plain import Out
+    from dyncli.render.out import Out
 
     buf = io.StringIO()
     draw(report, Out(buf, None, no_color=True))
