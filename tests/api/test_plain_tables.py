@@ -90,7 +90,10 @@ def test_a_caption_stays_on_one_line():
     assert lines[-1] == "a caption that is much wider than its table, in one phrase"
 
 
-_cells = st.text(alphabet="ab1.-[]/\\ \nωₙ̇全∞", max_size=12)
+# a combining dot only after a letter (as in θ̇): alone at the start of a line it has no cell
+# to sit on, and the two layouts are free to differ there
+_cells = st.text(alphabet="ab1.-[]/\\ \nωₙ̇全∞", max_size=12).filter(
+    lambda x: not any(line.startswith("\u0307") or " \u0307" in line for line in x.split("\n")))
 
 
 @settings(max_examples=150, deadline=None)

@@ -128,7 +128,8 @@ questions:
 @pytest.mark.parametrize("given,status,text", [
     (2.5, "correct", "Well done"), (-2.5, "partial", "Which way is positive?"), (7, "wrong", "notes 6.5a"),
     (None, "missing", "Try it")])
-def test_feedback_by_status_and_slip_in_every_format(tmp_path, capsys, given, status, text):
+def test_feedback_by_status_and_slip_in_every_format(tmp_path, capsys, monkeypatch, given, status, text):
+    monkeypatch.setenv("COLUMNS", "1000")         # the table unwrapped: the feedback stays on one line
     (tmp_path / "p.yaml").write_text(PROBLEMS)
     (tmp_path / "key.yaml").write_text(FEEDBACK_KEY)     # s = 2·1 + 1·1²/2 = 2.5 by hand
     sub = _sub(tmp_path, "s.yaml", "student: x\nanswers: {s: %s}\n" % ("null" if given is None else given))

@@ -106,3 +106,13 @@ def test_vectorised_pair_forces_equal_the_sum_over_pairs(kinds):
         P_ref += power
     assert A == pytest.approx(F / m[:, None], rel=1e-13, abs=1e-13)
     assert P == pytest.approx(P_ref, rel=1e-13, abs=1e-13)
+
+
+def test_quadrature_routes_share_the_budget(slow_clock):
+    """rectilinear's quadratures and root searches look at the solve's CPU as they count their
+    work: a run over the budget is refused naming accuracy.max_cpu (a block bouncing on a
+    one-sided spring, asked where it next leaves it)."""
+    text = ("type: rectilinear\nparams: {m: 2, k: 800, h: 0.5}\na: \"g - k/m*max(s - h, 0)\"\n"
+            "s1: 0\nv1: 1\nfind: [{when: {s: h}, direction: down}]\n")
+    rec = solve_text(text)[0]
+    assert rec["error"] and "CPU budget" in rec["error"] and "accuracy.max_cpu" in rec["error"]

@@ -125,7 +125,9 @@ def test_internal_error_exit_3(monkeypatch, tmp_path):
     ps, _ = split_problems("x.yaml", b"type: rectilinear\na: 1\n")
     validate(ps[0])
     import dyncli.topics.rectilinear.solver as s
+    from dyncli import registry
 
+    monkeypatch.setattr(registry, "_LOADED", {})          # the solver looked up again, not the one kept
     monkeypatch.setattr(s, "solve", lambda p, o=None: 1 / 0)
     o = solve_one(ps[0])
     assert o.exit_code == 3 and "internal error" in o.message and "ZeroDivisionError" in o.message

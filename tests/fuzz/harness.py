@@ -29,6 +29,7 @@ HANG_SECONDS = 10.0       # wall clock: a document still running then is reporte
 #: refused by the budget with exit 1 — so the default budget is capped here
 #: (a document's own accuracy.max_steps is left alone).
 FUZZ_MAX_STEPS = 4_000
+FUZZ_SOLVE_CPU = 1.0        # the CPU budget of one solve in the fuzz tests (dyncli.cputime.SOLVE_CPU)
 
 
 # Types whose solvers still hang or exit 3 on fuzzed input (reproductions in
@@ -164,13 +165,16 @@ def _run_document(data: bytes | str, name: str, render: bool) -> Report:
     import dyncli.ode
     import dyncli.topics.particle.trajectory as particle   # the module whose MAX_STEPS the integration reads
 
-    saved = dyncli.ode.MAX_STEPS, particle.MAX_STEPS
+    from dyncli import cputime
+
+    saved = dyncli.ode.MAX_STEPS, particle.MAX_STEPS, cputime.SOLVE_CPU
     dyncli.ode.MAX_STEPS = min(dyncli.ode.MAX_STEPS, FUZZ_MAX_STEPS)
     particle.MAX_STEPS = min(particle.MAX_STEPS, FUZZ_MAX_STEPS)
+    cputime.SOLVE_CPU = FUZZ_SOLVE_CPU      # a document's solve refused within MAX_SECONDS, rendering included
     try:
         return _solve_all(data, name, render, rep)
     finally:
-        dyncli.ode.MAX_STEPS, particle.MAX_STEPS = saved
+        dyncli.ode.MAX_STEPS, particle.MAX_STEPS, cputime.SOLVE_CPU = saved
 
 
 def _solve_all(data: bytes, name: str, render: bool, rep: Report) -> Report:

@@ -10,12 +10,13 @@ naming the budget (:class:`OverWork`, the runner's OverBudget): a few tenths of 
 
 from __future__ import annotations
 
-from dyncli import ode
+from dyncli import cputime, ode
 
 STEP = 60                   # evaluations of a per budget step (two 30-point quadrature panels)
 # the Python overhead of one call, in evaluations of a (vectorised evaluation ~0.1 µs a point;
 # a call of the expression ~20 µs, a scalar call ~5 µs, a quadrature call ~100 µs)
 CALL, SCALAR, QUAD = 200, 50, 1000
+CPU_EVERY = 20_000          # charged units between two looks at the solve's CPU (dyncli.cputime)
 # cases 3 and 4 evaluate a on long arrays (the substituted integrands, the energy inside
 # t(s)): measured, a point costs 0.01-0.06 µs there against ~60 µs a call, so a point counts
 # 1/32 of an evaluation and a step twice the work; the default budget is then ~0.3-0.7 s
@@ -47,6 +48,12 @@ class Work:
 
     def charge(self, n: int, where: str = "") -> None:
         self.n += n
+        if self.n // CPU_EVERY != (self.n - n) // CPU_EVERY:      # now and then: the solve's CPU budget
+            spent = cputime.used()
+            if spent is not None and spent[0] > spent[1]:
+                raise OverWork(f"case {self.case}: the quadratures and root searches{where} took more than the "
+                               f"CPU budget of {spent[1]:g} s: shorten the time span (t_max), loosen "
+                               "accuracy.rtol, or raise accuracy.max_cpu")
         if self.n > self.limit:
             raise OverWork(
                 f"case {self.case}: the quadratures and root searches need more than {self.steps} steps{where} "
