@@ -308,9 +308,10 @@ def ExprVec3(variables: Iterable[str], *, dim: str | None = None, description: s
 MAX_TIMES = 100_000
 
 
-def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to report the state") -> FieldSpec:
-    """A list of time values (numbers or constant expressions); a single
-    number is accepted as a one-element list."""
+def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to report the state",
+          from_zero: bool = False) -> FieldSpec:
+    """A list of time values (numbers or constant expressions); a single number is accepted as a
+    one-element list; with ``from_zero`` every time is >= 0 (a motion given at t = 0)."""
 
     def validate(value: Any, info: ValidationInfo) -> list[float]:
         if value is None:
@@ -325,6 +326,8 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
                 out.append(to_float(x, info, dim="time"))
             except PydanticCustomError as exc:
                 raise _err(f"entry {i}: {exc.message()}") from None
+            if from_zero and out[-1] < 0:
+                raise _err(f"entry {i}: times must be >= 0 (the initial conditions hold at t = 0), got {out[-1]:g}")
         return out
 
     schema = {"type": "array", "items": NUMBER_SCHEMA, "description": description}

@@ -167,6 +167,25 @@ def simplify(obj):
     return out
 
 
+def shortest(x, max_ops: int):
+    """A bounded, readable simplification of one entry: expand + trigsimp + factor_terms for
+    entries of at most ``max_ops`` operations, factor_terms alone for longer ones (trigsimp takes
+    seconds on them); the shortest form wins (operations, then characters)."""
+    import sympy as sp
+
+    x = sp.Integer(0) + x                   # plain python numbers -> sympy objects
+    if x.is_Number:
+        return x
+    try:
+        cands = [x, sp.factor_terms(x)]
+        if sp.count_ops(x) <= max_ops:
+            y = sp.trigsimp(sp.expand(x))
+            cands += [y, sp.factor_terms(y)]
+        return min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
+    except Exception:  # noqa: BLE001 - simplification is cosmetic
+        return x
+
+
 _WARM: list[bool] = []
 
 

@@ -115,4 +115,4 @@ def test_quadrature_routes_share_the_budget(slow_clock):
     text = ("type: rectilinear\nparams: {m: 2, k: 800, h: 0.5}\na: \"g - k/m*max(s - h, 0)\"\n"
             "s1: 0\nv1: 1\nfind: [{when: {s: h}, direction: down}]\n")
     rec = solve_text(text)[0]
-    assert rec["error"] and "CPU budget" in rec["error"] and "accuracy.max_cpu" in rec["error"]
+    assert rec["error"] and "× the CPU budget" in rec["error"] and "accuracy.max_cpu" in rec["error"]

@@ -29,7 +29,8 @@ HANG_SECONDS = 10.0       # wall clock: a document still running then is reporte
 #: refused by the budget with exit 1 — so the default budget is capped here
 #: (a document's own accuracy.max_steps is left alone).
 FUZZ_MAX_STEPS = 4_000
-FUZZ_SOLVE_CPU = 1.0        # the CPU budget of one solve in the fuzz tests (dyncli.cputime.SOLVE_CPU)
+FUZZ_SOLVE_CPU = 0.25       # the CPU budget of one solve in the fuzz tests (dyncli.cputime.SOLVE_CPU;
+                            # rectilinear's counted quadrature work stops at 4 × it)
 
 
 # Types whose solvers still hang or exit 3 on fuzzed input (reproductions in

@@ -87,23 +87,10 @@ SIMPLIFY_MAX_OPS = 40
 
 
 def simplify_entry(x):
-    """A bounded, readable simplification of one table entry: expand +
-    trigsimp + factor_terms for short entries, factor_terms alone for long
-    ones; the shortest form wins."""
-    import sympy as sp
+    """A bounded, readable simplification of one table entry (:func:`dyncli.symbolic.shortest`)."""
+    from dyncli.symbolic import shortest
 
-    x = sp.Integer(0) + x  # plain python numbers -> sympy objects
-    if x.is_Number:
-        return x
-    try:
-        cands = [x, sp.factor_terms(x)]
-        if sp.count_ops(x) <= SIMPLIFY_MAX_OPS:
-            y = sp.trigsimp(sp.expand(x))
-            cands += [y, sp.factor_terms(y)]
-        cand = min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
-    except Exception:  # noqa: BLE001 - simplification is cosmetic
-        cand = x
-    return cand
+    return shortest(x, SIMPLIFY_MAX_OPS)
 
 
 def _decimals(x):

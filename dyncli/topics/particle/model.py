@@ -14,6 +14,7 @@ from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.fields import ExprTriple, ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
+from dyncli.springs import one_sided_length
 
 CUSTOM_VARS = ("t", "x1", "x2", "x3", "v1", "v2", "v3")
 
@@ -54,9 +55,7 @@ class Spring(StrictModel):
 
     @model_validator(mode="after")
     def _one_sided_needs_length(self):
-        if self.one_sided == "compression" and self.L == 0:
-            raise ValueError("one_sided: compression needs a free length L > 0 (the spring acts while shorter "
-                             "than L): give L")
+        one_sided_length(self.one_sided, self.L)
         return self
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal, Optional
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.fields import Find, Num, ProblemBase, Times
@@ -23,17 +23,9 @@ class Pendulum(ProblemBase):
     m: Optional[Annotated[float, Num(gt=0, dim="mass", description="mass of the bob [kg]: gives the tension and the energy")]] = None
     theta0: Annotated[float, Num(dim="angle", description="θ(0), from the downward vertical [rad] (write 30*deg for degrees)")] = Field(...)
     theta_dot0: Annotated[float, Num(dim="angular velocity", description="θ̇(0) [rad/s] (default 0: released from rest)")] = 0.0
-    at: Annotated[list[float], Times(description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance")] = Field(default_factory=list)
+    at: Annotated[list[float], Times(from_zero=True, description="times t >= 0 [s] at which to report θ, θ̇, the tension and the distance")] = Field(default_factory=list)
     find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {theta: VALUE}}, {max: theta_dot}, {min: tension}")
     t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries, else one period)")]] = None
-
-    @field_validator("at")
-    @classmethod
-    def _times(cls, v):
-        for i, t in enumerate(v):
-            if t < 0:
-                raise ValueError(f"entry {i}: times must be >= 0 (the initial conditions hold at t = 0), got {t:g}")
-        return v
 
     @model_validator(mode="after")
     def _check(self):

@@ -22,6 +22,7 @@ from pydantic import Field, model_validator
 
 from dyncli.expr import Expr
 from dyncli.fields import Num, StrictModel
+from dyncli.springs import one_sided_length
 
 
 class LineSpring(StrictModel):
@@ -36,9 +37,7 @@ class LineSpring(StrictModel):
 
     @model_validator(mode="after")
     def _one_sided_needs_length(self):
-        if self.one_sided == "compression" and self.L == 0:
-            raise ValueError("one_sided: compression needs a free length L > 0 (the spring acts while shorter "
-                             "than L): give L")
+        one_sided_length(self.one_sided, self.L)
         return self
 
 

@@ -234,18 +234,10 @@ class Eq:
 
 
 def tidy(x):
-    """A bounded, readable simplification (expand + trigsimp for short entries)."""
-    x = sp.Integer(0) + x
-    if x.is_Number:
-        return x
-    try:
-        cands = [x, sp.factor_terms(x)]
-        if sp.count_ops(x) <= SIMPLIFY_MAX_OPS:
-            y = sp.trigsimp(sp.expand(x))
-            cands += [y, sp.factor_terms(y)]
-        return min(cands, key=lambda e: (sp.count_ops(e), len(sp.sstr(e))))
-    except Exception:  # noqa: BLE001 - simplification is cosmetic
-        return x
+    """A bounded, readable simplification (:func:`dyncli.symbolic.shortest`)."""
+    from dyncli.symbolic import shortest
+
+    return shortest(x, SIMPLIFY_MAX_OPS)
 
 
 def numeric_jacobian(rows, C, values: dict, q0) -> np.ndarray:

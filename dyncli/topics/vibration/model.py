@@ -76,20 +76,12 @@ class Vibration(ProblemBase):
     force: Optional[Force] = Field(None, description="force on the mass F(t) = amplitude·sin(omega·t) (not with base)")
     unbalance: Optional[Unbalance] = Field(None, description="a rotating unbalance: F = m0·e·omega²·sin(omega·t) on "
                                            "the mass, m the total mass (m0 included); not with base or force")
-    at: Annotated[list[float], Times(description="times t >= 0 [s] at which to report x, v, w")] = Field(default_factory=list)
+    at: Annotated[list[float], Times(from_zero=True, description="times t >= 0 [s] at which to report x, v, w")] = Field(default_factory=list)
     find: Annotated[list[Any], Find()] = Field(default_factory=list, description="queries about the motion (§11): {t: T}, {when: {x: VALUE}}, {max: x}, {min: v}")
     t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion `find` searches [s] (default the largest time of at and of the queries)")]] = None
     sweep: Optional[Sweep] = None
 
     accuracy_methods = ("auto", "closed-form", "ode", "DOP853")
-
-    @field_validator("at")
-    @classmethod
-    def _times(cls, v):
-        for i, t in enumerate(v):
-            if t < 0:
-                raise ValueError(f"entry {i}: times must be >= 0 (the initial conditions hold at t = 0), got {t:g}")
-        return v
 
     @model_validator(mode="after")
     def _check(self):
