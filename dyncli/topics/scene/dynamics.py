@@ -143,11 +143,10 @@ class SceneSystem:
         return f, power
 
     # ------------------------------------------------------------------ the solve
-    def solve(self, q, v, t) -> tuple[np.ndarray, np.ndarray, float]:
-        """(q̈, λ, power of the non-conservative loads incl. friction)."""
+    def kkt_matrix(self, q, J) -> np.ndarray:
+        """[[M, −Jᵀ − friction columns], [J, 0]]: the matrix of the accelerations and multipliers
+        (and, with velocity jumps and impulses for them, of an impact)."""
         n, m = self.n, self.m
-        f, power = self.applied(q, v, t)
-        J = self.jac(q)
         A = np.zeros((n + m, n + m))
         A[:n, :n] = np.diag(self.mass)
         A[:n, n:] = -J.T
@@ -157,6 +156,14 @@ class SceneSystem:
                 col = e.friction_column(q)
                 if col is not None:
                     A[:n, n + self.offsets[i]] -= col
+        return A
+
+    def solve(self, q, v, t) -> tuple[np.ndarray, np.ndarray, float]:
+        """(q̈, λ, power of the non-conservative loads incl. friction)."""
+        n = self.n
+        f, power = self.applied(q, v, t)
+        J = self.jac(q)
+        A = self.kkt_matrix(q, J)
         rhs = np.concatenate([f, self.gamma(q, v, t)])
         try:
             x = np.linalg.solve(A, rhs)

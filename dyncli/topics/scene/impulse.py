@@ -36,14 +36,7 @@ def _kkt(s, q, v, t, target: dict):
     must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
     n, m = s.n, s.m
     J = s.jac(q)
-    A = np.zeros((n + m, n + m))
-    A[:n, :n] = np.diag(s.mass)
-    A[:n, n:] = -J.T
-    A[n:, :n] = J
-    for i, e in enumerate(s.elements):
-        col = e.friction_column(q) if isinstance(e, (Contact, Rolls)) else None
-        if col is not None:
-            A[:n, n + s.offsets[i]] -= col
+    A = s.kkt_matrix(q, J)
     b = -(J @ v + s.phi_t(t)) if m else np.zeros(0)
     for (i, r), want in target.items():
         k = s.offsets[i] + r
