@@ -18,6 +18,10 @@ Read from the source of ``dyncli/`` with ``ast`` (nothing is imported, no text s
   least three words and not a placeholder ("Helpers.", "Utilities", "Misc", "the rest of ...",
   "part 2 of ...", "continued"), and the docstring gives no line count (a size is never why a
   module exists).
+* **Type names and package names agree**: a topic package holding one type is named after it
+  (``constrained-particle`` in ``dyncli/topics/constrained_particle``); a package named
+  otherwise is listed, with the reason, in ``dyncli.registry.PACKAGE_NAMES`` — exactly those,
+  each reason naming every type the package holds.
 * A smell, never a reason to split: a function over 150 lines says why in a comment or its
   docstring within its first lines (the words "on purpose").
 
@@ -269,3 +273,19 @@ def test_a_very_long_function_says_why():
     assert not long, (f"functions over {SMELL_FUNCTION_LINES} lines: say why in their first lines (\"... on purpose: "
                       "...\") or find the concepts inside them (never split just to meet a count):\n  "
                       + "\n  ".join(long))
+
+
+def test_type_names_and_package_names_agree_or_the_registry_says_why():
+    from dyncli import registry
+
+    held: dict[str, list[str]] = {}
+    for name, spec in registry.TYPES.items():
+        if spec.package.startswith("dyncli.topics."):
+            held.setdefault(spec.package.rsplit(".", 1)[1], []).append(name)
+    differ = {pkg for pkg, names in held.items() if names != [pkg.replace("_", "-")]}
+    listed = set(registry.PACKAGE_NAMES)
+    assert not differ - listed, ("packages not named after their one type (rename it, or say why in "
+                                 "dyncli.registry.PACKAGE_NAMES): " + ", ".join(f"{p} holds {held[p]}" for p in sorted(differ - listed)))
+    assert not listed - differ, f"named after their one type now: remove from PACKAGE_NAMES: {sorted(listed - differ)}"
+    unnamed = [f"{p}: {n}" for p in sorted(differ) for n in held[p] if n not in registry.PACKAGE_NAMES[p]]
+    assert not unnamed, "the reason in PACKAGE_NAMES names every type the package holds:\n  " + "\n  ".join(unnamed)
