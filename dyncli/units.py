@@ -133,8 +133,6 @@ def clean_unit(unit: str, angular: bool = False) -> str:
             .replace("°", "degree ").strip())
 
 
-_clean = clean_unit     # the name dyncli/run.py imports
-
 
 def parse_quantity(text: str, dim: str | None = None) -> float:
     """``"200 N/m"`` -> 200.0 (SI), checked against ``dim``.  Raises UnitError."""
