@@ -83,7 +83,7 @@ class Trajectory:
     def velocities(self, ts) -> np.ndarray:
         """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
         times (unprojected: off the joints by the step's local error only, for integrals over
-        the motion such as the distance); the other pieces time by time through :meth:`state`."""
+        the motion such as the distance); an exact piece time by time through its own function."""
         ts = np.asarray(ts, dtype=float)
         n = self.system.n
         if ts.size == 1:                    # one time (a minimiser's probe): no grouping
@@ -100,9 +100,10 @@ class Trajectory:
             if p.batch is not None:
                 y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
                 out[sel] = y[n:2 * n].T
-            else:
+            else:                           # an exact piece: its own function, the modes set once
+                set_modes(self.system, p.modes)
                 for i in sel:
-                    out[i] = self.state(float(ts[i]))[1]
+                    out[i] = p.fn(min(max(float(ts[i]), p.t_a), p.t_b))[1]
         return out
 
     def state(self, t: float):
