@@ -40,6 +40,7 @@ class Curve:
         # exact derivatives by the rules of calculus on the expression IR (sympy only for min/max)
         self.y1 = tuple(derivative(e, "q") for e in comps)
         self.y2 = tuple(derivative(e, "q") for e in self.y1)
+        self._speed = None
         rot = p.rotation
         self.k = np.asarray(rot.axis, float) if rot else np.array([0.0, 0.0, 1.0])
         # no omega: only steady queries, which find the rate (the curve's geometry is all they use)
@@ -49,6 +50,25 @@ class Curve:
                             else float(rot.omega.value()))
         if self.omega_expr is not None and self.omega_const is None:
             self.omega_dot_expr = derivative(rot.omega, "t")
+
+    def speed(self, q: float) -> float:
+        """|y'(q)| at one float q in plain floats (the arc length's integrand): the first
+        derivatives of one jet of each component (:func:`dyncli.expr.jet.compile_jet`)."""
+        fn = self._speed
+        if fn is None:
+            import math
+
+            from dyncli.expr import floatmath
+            from dyncli.expr.jet import compile_jet
+
+            j1, j2, j3 = (compile_jet(e.ir, "q", floatmath) for e in self.y0)
+
+            def fn(q):
+                env = {"q": q}
+                a, b, c = j1(env)[1], j2(env)[1], j3(env)[1]
+                return math.sqrt(a * a + b * b + c * c)
+            self._speed = fn
+        return fn(q)
 
     @staticmethod
     def _ev(es, q):

@@ -18,22 +18,29 @@ def _vec(a) -> list[float]:
 
 
 def arc_length(curve, q0, qs):
+    """s(q) = ∫ |y'| dq from q0 to each q (QUADPACK to 1e-13 of each, the speed in plain floats)."""
     from dyncli.quadrature import quad
 
-    def sp(q):
-        return float(np.linalg.norm(curve.dy(q)[:, 0]))
-
+    sp = curve.speed
     return [quad(sp, q0, q, limit=200, epsabs=0, epsrel=1e-13)[0] + 0.0 if q != q0 else 0.0 for q in qs]
 
 
 def assemble(p, model, times, Y, modes) -> dict:
     """The reported results at the states Y (5, n) (one mode per state)."""
     n = Y.shape[1]
-    cols = []
-    for j in range(n):
-        cols.append(model.evaluate(times[j], Y[:, j:j + 1], modes[j]))
-    cat = {k: np.concatenate([c[k] for c in cols], axis=-1) for k in ("x", "v", "a", "N", "ft", "et", "speed", "Q")}
-    Q = np.concatenate([c["Q"] for c in cols], axis=0)
+    groups: dict = {}                       # the states of each mode, evaluated together
+    for j, md in enumerate(modes):
+        groups.setdefault(tuple(md), []).append(j)
+    ts = np.asarray(times, float)
+    cat: dict = {}
+    Q = np.empty((n, 3, 3))
+    for md, idx in groups.items():
+        e = model.evaluate(ts[idx], Y[:, idx], md)
+        for k in ("x", "v", "a", "N", "ft", "et", "speed"):
+            if k not in cat:
+                cat[k] = np.empty(np.shape(e[k])[:-1] + (n,))
+            cat[k][..., idx] = e[k]
+        Q[idx] = e["Q"]
     # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
     et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
     N = cat["N"]

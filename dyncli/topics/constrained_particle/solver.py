@@ -84,8 +84,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
                         + states.legs(float(p.t_end)), SERIES, turn_times=states.legs(float(p.t_end), turning=True))
     if res is None:
         res = _solve_ode(p, model, times)
-        find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
-                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES, subdivide=1)
+        phases = res.extra.pop("phases")
+        find.report(p, res, find.ode_states(p, model, phases), find.ode_breaks(res.extra.pop("breaks_of")), SERIES,
+                    subdivide=1, turn_times=find.ode_turns(phases),
+                    s_of=find.ode_arc(model, phases, float(p.q0), zip(times, res.results["s"])))
     equilibria.add(res, p, model)
     if steadies is not None:
         steady.add(res, steadies)
