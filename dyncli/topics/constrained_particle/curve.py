@@ -33,6 +33,11 @@ def rotation(k, phi):
     return np.eye(3)[None] + s * K[None] + (1 - c) * (K @ K)[None]
 
 
+def _cross(a, b):
+    """a × b of columns (3, n) (a (3, 1) column broadcasts), as numpy's cross computes it."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
 class Curve:
     def __init__(self, p):
         comps = (p.curve.x1, p.curve.x2, p.curve.x3)
@@ -101,10 +106,10 @@ class Curve:
         tau = np.einsum("nij,jn->in", Q, y1)
         w, wd = self.omega(t)
         k = self.k[:, None]
-        kx = np.cross(k.T, x.T).T
+        kx = _cross(k, x)
         v = tau * qd + w * kx
-        ktau = np.cross(k.T, tau.T).T
-        kkx = np.cross(k.T, kx.T).T
+        ktau = _cross(k, tau)
+        kkx = _cross(k, kx)
         b = np.einsum("nij,jn->in", Q, y2) * qd ** 2 + 2 * w * ktau * qd + wd * kx + w ** 2 * kkx
         return x, v, tau, b, Q
 
@@ -113,7 +118,7 @@ class Curve:
         y1, y2 = self.dy(q), self.ddy(q)
         sp = norm_rows(y1.T)                      # lengths and directions scaled first (dyncli.direction)
         et = np.nan_to_num(unit_rows(y1.T).T)     # a zero tangent stays 0
-        c = np.cross(y1.T, y2.T).T
+        c = _cross(y1, y2)
         kappa = np.linalg.norm(c, axis=0) / np.where(sp > 0, sp, 1.0) ** 3
         n_raw = y2 - np.sum(y2 * et, axis=0) * et
         nn = norm_rows(n_raw.T)
@@ -125,6 +130,6 @@ class Curve:
                 if np.linalg.norm(w) > 1e-6:
                     en[:, j] = w / np.linalg.norm(w)
                     break
-        eb = np.cross(et.T, en.T).T
+        eb = _cross(et, en)
         turn = lambda e: np.einsum("nij,jn->in", Q, e)  # noqa: E731
         return turn(et), turn(en), turn(eb), np.where(straight, 0.0, kappa), bool(straight.any())

@@ -276,3 +276,16 @@ def phase_at(phases, t):
         if ph.t0 <= t <= ph.t1:
             return ph
     return phases[-1]
+
+
+def states_at(phases, times):
+    """The states (5, n) at ``times`` and the mode of each: every phase's dense output called
+    once on its times (as :func:`phase_at` assigns them)."""
+    last = len(phases) - 1
+    idx = [next((i for i, ph in enumerate(phases) if ph.t0 <= t <= ph.t1), last) if last else 0 for t in times]
+    Y = np.empty((5, len(times)))
+    for k, ph in enumerate(phases):
+        sel = [j for j, i in enumerate(idx) if i == k]
+        if sel:
+            Y[:, sel] = ph.state([times[j] for j in sel])
+    return Y, [phases[i].mode for i in idx]

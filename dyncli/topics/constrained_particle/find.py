@@ -66,8 +66,8 @@ def ode_states(p, model, phases):
 
     def states(ts):
         ts = [float(t) for t in ts]
-        Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in ts])
-        return assemble(p, model, ts, Y, [dynamics.phase_at(phases, t).mode for t in ts])["results"]
+        Y, modes = dynamics.states_at(phases, ts)
+        return assemble(p, model, ts, Y, modes)["results"]
     return states
 
 
@@ -101,7 +101,7 @@ def ode_arc(model, phases, q0: float, known):
     def s_of(ts) -> list[float]:
         new = sorted({float(t) for t in ts} - memo.keys())
         if new:
-            q = [float(dynamics.phase_at(phases, t).state(t)[0, 0]) for t in new]
+            q = dynamics.states_at(phases, new)[0][0].tolist()
             memo.update(zip(new, arc_length(model.curve, q0, q)))
         return [memo[float(t)] for t in ts]
     return s_of

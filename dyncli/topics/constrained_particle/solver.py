@@ -119,8 +119,7 @@ def _solve_ode(p, model, times) -> Result:
     method = _ode_method(p)
     rtol, atol = runner.floor_rtol(float(p.accuracy.rtol)), float(p.accuracy.atol)
     phases, notes, nsteps = dynamics.integrate(model, rtol, atol, method, p.accuracy.max_steps)
-    Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in times])
-    modes = [dynamics.phase_at(phases, t).mode for t in times]
+    Y, modes = dynamics.states_at(phases, times)
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
     res = Result(out["results"], method=f"ode:{method}", equations=equation_numbers(model),
@@ -133,7 +132,7 @@ def _solve_ode(p, model, times) -> Result:
     # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its
     # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
     def difference(_, phases2):
-        Y2 = np.column_stack([dynamics.phase_at(phases2, t).state(t) for t in times])
+        Y2 = dynamics.states_at(phases2, times)[0]
         x2, v2 = model.curve.state(np.array(times), Y2[0], Y2[1], Y2[2])[:2]
         return ode.relative_difference(
             [(np.array(out["results"]["x"], float).T, x2), (np.array(out["results"]["v"], float).T, v2)])
