@@ -40,7 +40,7 @@ def _cross(a, b):
 
 class Curve:
     def __init__(self, p):
-        comps = (p.curve.x1, p.curve.x2, p.curve.x3)
+        comps = tuple(p.curve)
         self.y0 = comps
         # exact derivatives by the rules of calculus on the expression IR (sympy only for min/max)
         self.y1 = tuple(derivative(e, "q") for e in comps)

@@ -40,12 +40,11 @@ class Model:
 
     def __init__(self, p, curve):
         self.p, self.curve, self.m = p, curve, float(p.m)
-        from types import SimpleNamespace
-
         from dyncli.topics.particle.forces import Forces
+        from dyncli.topics.particle.setup import Setup as ParticleSetup
 
         # particle's compiled forces (for the right-hand side); raises InputError for an overflowing field
-        self.compiled = Forces(SimpleNamespace(m=p.m, g=p.g, forces=[f for f in p.forces if f.kind != "friction"]))
+        self.compiled = Forces(ParticleSetup(m=p.m, g=p.g, forces=tuple(f for f in p.forces if f.kind != "friction")))
         self.terms = [Term(f, p) for f in p.forces if f.kind != "friction"]
         self.mu = sum(float(f.mu) for f in p.forces if f.kind == "friction")
         self.q_range = p.q_range

@@ -26,6 +26,7 @@ from dyncli.result import Result, Series, SolveOptions
 
 from . import dynamics, equilibria, steady
 from .curve import Curve
+from .setup import Rotation, Setup
 from .report import SERIES, assemble, equation_numbers
 
 
@@ -52,7 +53,20 @@ def quadrature_applies(p, curve) -> bool:
                    for f in p.forces)
 
 
+def plain(p) -> Setup:
+    """The validated problem as plain numbers (setup.py): everything below this module reads only it."""
+    from dyncli.topics.particle.solver import accuracy, force_term
+
+    rot = None if p.rotation is None else Rotation(tuple(p.rotation.axis), p.rotation.omega)
+    return Setup(m=p.m, curve=(p.curve.x1, p.curve.x2, p.curve.x3), rotation=rot, q0=p.q0, q_dot0=p.q_dot0,
+                 forces=tuple(force_term(f) for f in p.forces),
+                 q_range=None if p.q_range is None else tuple(p.q_range), t_end=p.t_end, at=tuple(p.at), g=p.g,
+                 find=tuple(p.find), params=p.params, steady=tuple(float(s.q) for s in p.steady),
+                 accuracy=accuracy(p.accuracy), steady_only=p.steady_only)
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
+    raw, p = p, plain(p)
     curve = Curve(p)
     if p.steady_only:
         return _steady_only(p, curve)
@@ -67,9 +81,10 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if p.find:                              # the motion runs to the end of every window searched (§11)
         from dyncli import motion_find
 
-        q = motion_find.extended(p)
-        if q is not p:
-            p, model = q, dynamics.Model(q, curve)
+        q = motion_find.extended(raw)
+        if q is not raw:
+            p = plain(q)
+            model = dynamics.Model(p, curve)
     times = [float(t) for t in p.at]
     res = None
     from . import find
