@@ -66,7 +66,12 @@ def plain(p) -> Setup:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
-    raw, p = p, plain(p)
+    return solve_setup(plain(p))
+
+
+def solve_setup(p: Setup) -> Result:
+    """:func:`solve` of a problem given in plain numbers (setup.py: a Setup built by hand needs
+    ``t_end`` and ``at`` unless it asks only ``steady``)."""
     curve = Curve(p)
     if p.steady_only:
         return _steady_only(p, curve)
@@ -79,12 +84,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         raise InputError("method quadrature needs a fixed curve, no friction, damper or drag, and forces of the "
                          "position only (the energy integral); use method ode", "accuracy.method")
     if p.find:                              # the motion runs to the end of every window searched (§11)
-        from dyncli import motion_find
+        from dyncli.topics.particle.setup import extended
 
-        q = motion_find.extended(raw)
-        if q is not raw:
-            p = plain(q)
-            model = dynamics.Model(p, curve)
+        q = extended(p)
+        if q is not p:
+            p, model = q, dynamics.Model(q, curve)
     times = [float(t) for t in p.at]
     res = None
     from . import find

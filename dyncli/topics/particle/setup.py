@@ -70,3 +70,19 @@ class Setup:
     basis: str = "cartesian"
     steady: tuple[tuple[float, float, float], ...] = ()
     accuracy: Accuracy = Accuracy()
+
+
+def extended(s):
+    """``s`` (any setup with ``t_end``, ``find`` and ``params``) with t_end extended to the end of
+    every ``within`` window and ``t`` query of its ``find`` (§11: the motion runs as far as the
+    queries search), else itself — :func:`dyncli.motion_find.extended` on plain numbers."""
+    if not s.find or s.t_end is None:
+        return s
+    from dataclasses import replace
+
+    from dyncli.expr import constant, resolve_params
+    from dyncli.motion_find import search_end
+
+    params = resolve_params(s.params or {})
+    end = search_end(float(s.t_end), s.find, lambda x: constant(x, params))
+    return replace(s, t_end=end) if end > s.t_end else s

@@ -23,12 +23,11 @@ import math
 import numpy as np
 
 from dyncli import ode, runner
-from dyncli import motion_find
 from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
 from dyncli.topics.particle.forces import Forces
-from dyncli.topics.particle.setup import FORCE_FIELDS, Accuracy, ForceTerm, Setup
+from dyncli.topics.particle.setup import FORCE_FIELDS, Accuracy, ForceTerm, Setup, extended
 from dyncli.topics.particle.report import REPORTED, at_times, energy_residual, report_terms, reported
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
@@ -61,10 +60,16 @@ def plain(p) -> Setup:
 
 def solve(p, options: SolveOptions | None = None) -> Result:
     """The motion, and the steady circular motions of ``steady`` (steady.py; alone: no motion)."""
+    return solve_setup(plain(p))
+
+
+def solve_setup(s: Setup) -> Result:
+    """:func:`solve` of a problem given in plain numbers (setup.py: a Setup built by hand needs
+    ``t_end`` and ``at`` unless it asks only ``steady``)."""
     from . import steady
 
-    steady_only = p.steady_only
-    s = plain(p if steady_only else motion_find.extended(p))   # the motion runs to the end of every window searched (§11)
+    steady_only = bool(s.steady) and not s.at and s.t_end is None and not s.find
+    s = extended(s)                     # the motion runs to the end of every window searched (§11)
     F = Forces(s)
     notes: list[str] = []
     entries = steady.answers(s, F, notes.append) if s.steady else None      # refused before the motion is solved
