@@ -17,6 +17,11 @@ def _vec(a) -> list[float]:
     return [float(c) + 0.0 for c in np.asarray(a, float)]
 
 
+def _cols(a) -> list[list[float]]:
+    """The columns of a (3, n) array as lists of floats (−0.0 as 0.0, as :func:`_vec`)."""
+    return (np.asarray(a, float).T + 0.0).tolist()
+
+
 def arc_length(curve, q0, qs):
     """s(q) = ∫ |y'| dq from q0 to each q (QUADPACK to 1e-13 of each, the speed in plain floats)."""
     from dyncli.quadrature import quad
@@ -53,11 +58,9 @@ def assemble(p, model, times, Y, modes) -> dict:
         "q_dot": [float(v) + 0.0 for v in qd],
         "s": arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]]),
         "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
-        "x": [_vec(cat["x"][:, j]) for j in range(n)],
-        "v": [_vec(cat["v"][:, j]) for j in range(n)],
-        "a": [_vec(cat["a"][:, j]) for j in range(n)],
+        "x": _cols(cat["x"]), "v": _cols(cat["v"]), "a": _cols(cat["a"]),
         "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],
-        "N_vec": [_vec(N[:, j] + cat["ft"][j] * cat["et"][:, j]) for j in range(n)],
+        "N_vec": _cols(N + cat["ft"] * cat["et"]),
         "friction": [float(v) + 0.0 for v in cat["ft"]],
         "kappa": [float(v) for v in kappa],
         "T": [float(v) for v in T], "V": [float(v) + 0.0 for v in V], "E": [float(v) + 0.0 for v in T + V],
