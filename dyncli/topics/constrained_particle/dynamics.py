@@ -220,6 +220,13 @@ def _start_mode(model, t, y, rtol):
 
 
 def integrate(model, rtol, atol, method, max_steps=None, max_step=math.inf):
+    """(phases, friction notes, accepted steps) of the motion to t_end, inside one numpy error state
+    (a custom force's numpy scalars overflow to inf quietly: the right-hand side checks its rate)."""
+    with np.errstate(all="ignore"):
+        return _integrate(model, rtol, atol, method, max_steps, max_step)
+
+
+def _integrate(model, rtol, atol, method, max_steps, max_step):
     p = model.p
     rtol = runner.floor_rtol(rtol)
     max_step = min(max_step, model.compiled.kink_step)     # no step over a one-sided spring's contact

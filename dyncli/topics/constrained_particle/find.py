@@ -75,6 +75,9 @@ def ode_turns(phases) -> list[float]:
     """The turning points of s on the ODE route: the roots of q̇ (ṡ = |τ| q̇ with |τ| > 0) where it
     changes sign between the steps of a sliding phase (Brent on the phase's dense output), and the
     start of every later phase (a stop, a stick or a slip: a turn at most, never a missed one)."""
+    from dyncli import rootfind
+
+    eps = float(np.finfo(float).eps)
     out = []
     for i, ph in enumerate(phases):
         if i:
@@ -86,7 +89,7 @@ def ode_turns(phases) -> list[float]:
             if R[k] == 0.0 and k > 0:
                 out.append(T[k])
             elif R[k] * R[k + 1] < 0:
-                out.append(mf._q._root(lambda t, ph=ph: float(ph.sol(t)[1]), T[k], T[k + 1]))
+                out.append(rootfind.brent(lambda t, ph=ph: float(ph.sol(t)[1]), T[k], T[k + 1], 1e-300, 4 * eps, 2000))
     return out
 
 

@@ -174,7 +174,8 @@ class Forces:
     def plain(self):
         """conservative() and nonconservative() of one state in plain floats, for a right-hand side
         called once per stage: ``f(t, x1, x2, x3, v1, v2, v3) -> (Fc1, Fc2, Fc3, Fn1, Fn2, Fn3)``
-        (the same formulas, 19.18 and 19.26a inlined; a singular force comes out inf or nan)."""
+        (the same formulas, 19.18 and 19.26a inlined; a singular force comes out inf or nan; a custom
+        term's expressions give numpy scalars: call it inside one ``np.errstate``)."""
         u1, u2, u3 = self.uniform.tolist()
         c_lin, c_quad, weight = self.c_lin, self.c_quad, self.weight
         inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
@@ -190,11 +191,10 @@ class Forces:
             if c_quad:
                 cs = c_quad * sqrt(v1 * v1 + v2 * v2 + v3 * v3)
                 f1, f2, f3 = f1 - cs * v1, f2 - cs * v2, f3 - cs * v3
-            if custom:
+            if custom:                           # numpy scalars: the caller runs inside one np.errstate
                 env = {"t": float(t), "x1": x1, "x2": x2, "x3": x3, "v1": v1, "v2": v2, "v3": v3}
-                with np.errstate(all="ignore"):
-                    for e1, e2, e3 in custom:
-                        f1, f2, f3 = f1 + float(e1(env)), f2 + float(e2(env)), f3 + float(e3(env))
+                for e1, e2, e3 in custom:
+                    f1, f2, f3 = f1 + float(e1(env)), f2 + float(e2(env)), f3 + float(e3(env))
             g1, g2, g3 = 0.0, 0.0, -weight if weight else 0.0
             for c1, c2, c3, mu in inv:
                 r1, r2, r3 = x1 - c1, x2 - c2, x3 - c3
