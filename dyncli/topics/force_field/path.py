@@ -12,6 +12,7 @@ import math
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result
 from dyncli.expr.derivative import derivative
+from dyncli.topics.force_field.setup import Path
 
 
 class _NotFinite(Exception):
@@ -51,7 +52,7 @@ def _integrand(fld, xs, dxs):
     return f
 
 
-def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int | None = None):
+def path_work(fld, path: Path, rtol: float, atol: float, res: Result, max_steps: int | None = None):
     """Work along the path by the quadrature runner (adaptive Gauss–Kronrod,
     :mod:`dyncli.quadrature`, panels counted against ``max_steps``): (U, error [J], x_start,
     x_end).  Sets ``res.method`` and ``res.error_estimate``: the error relative to the work's
@@ -65,7 +66,7 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
         dxs = [derivative(e, "t") for e in xs]
     except ValueError as exc:
         raise InputError(f"cannot differentiate the path exactly: {exc}", "path") from None
-    t1, t2 = (float(v) for v in path.t_span)
+    t1, t2 = path.t1, path.t2
 
     def pos(t):
         return np.array([float(e.evaluate(t=t)) for e in xs])

@@ -35,7 +35,12 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if p.instant is not None:
         from dyncli.topics.kinematics import instant
 
-        return instant.solve(p, options)
+        ins, c = p.instant, p.coordinates
+        if c == "path":
+            state = instant.Instant(c, v=ins.v, v_dot=ins.v_dot or 0.0, rho=ins.rho, m=p.m)
+        else:
+            state = instant.Instant(c, tuple(ins.jets(c).items()), m=p.m)
+        return instant.solve(state, options)
     coords = p.coordinates
     times = [float(t) for t in p.at]
     t = np.asarray(times, dtype=float)
