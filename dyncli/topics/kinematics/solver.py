@@ -90,16 +90,41 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 # distance traveled (4.5): the quadrature runner's adaptive Gauss–Kronrod (dyncli/quadrature.py)
 
 
+#: the speed is evaluated in chunks of this many times, the solve's CPU looked at before each
+#: (one pass of the quadrature may hold ~10⁵ times, a second of CPU for a long expression)
+CHUNK = 15 * 512
+
+
 def distance(coords: str, position: dict, t1: float, t2: float, rtol: float, atol: float, max_steps=None):
-    """D = ∫|v| dt (4.5): (D, error estimate, converged)."""
+    """D = ∫|v| dt (4.5): (D, error estimate, converged).  The work is bounded twice: by the
+    quadrature's panels (``max_steps``) and by the solve's CPU budget (:mod:`dyncli.cputime`,
+    ``accuracy.max_cpu``, default 2 s), refused with a NumericalError naming what to change."""
     from dyncli.quadrature import gauss_kronrod
 
     def speed(tt):
-        r = motion(coords, position, tt)
-        v = r["v"]   # components on an orthonormal basis: same length
-        return np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
+        parts = []
+        for k in range(0, max(len(tt), 1), CHUNK):
+            _within_cpu(t1, t2)
+            r = motion(coords, position, tt[k:k + CHUNK])
+            v = r["v"]   # components on an orthonormal basis: same length
+            parts.append(np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2))
+        return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
     return gauss_kronrod(speed, t1, t2, rtol, atol, max_steps=max_steps, what="the speed", path="distance")
+
+
+def _within_cpu(t1: float, t2: float) -> None:
+    """NumericalError once the solve has used more than its CPU budget (the quadrature's work is
+    adaptive, so it is not projected to its end as an ODE's is)."""
+    from dyncli import cputime
+    from dyncli.errors import NumericalError
+
+    spent = cputime.used()
+    if spent is not None and spent[0] > spent[1]:
+        raise NumericalError(
+            f"distance: the quadrature of the speed over [{t1:g}, {t2:g}] s took more than the CPU budget of "
+            f"{spent[1]:g} s (accuracy.max_cpu) before reaching accuracy.rtol (a path with many kinks or a singular "
+            "slope): shorten the interval of distance, loosen accuracy.rtol, or raise accuracy.max_cpu")
 
 
 # ---------------------------------------------------------------------------
