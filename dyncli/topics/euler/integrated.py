@@ -175,7 +175,7 @@ def _rhs(I, M, w0):
     m1, m2, m3 = (_moment_fn(e) for e in M)
 
     def fun(t, y):
-        w1, w2, w3 = y[:3].tolist()
+        w1, w2, w3, _, _ = y.tolist()
         t = float(t)                               # (scipy's may be numpy's float: plain-float rules)
         M1, M2, M3 = m1(t), m2(t), m3(t)
         h1, h2, h3 = I1 * w1, I2 * w2, I3 * w3
