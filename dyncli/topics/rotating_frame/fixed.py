@@ -55,14 +55,19 @@ def _integrated(p: Turning, Q0, times, res):
     """Q at the times by (10.4), Q̇ = Q [ω'(t)]× on the nine entries of Q row by row, through the
     runner (imported here: numpy and scipy only when a problem integrates)."""
     from dyncli import runner
+    from dyncli.expr.floateval import float_fn
+
+    w1, w2, w3 = (float_fn(e, "t") for e in p.omega)       # ω'(t) in plain floats (no jets, no numpy)
 
     class Poisson(runner.Route):
         def initial_state(self):
             return [x for row in Q0 for x in row]
 
         def rhs(self, t, y):
-            w = tuple(jet_at(e, t)[0] for e in p.omega)
-            Q = [list(y[0:3]), list(y[3:6]), list(y[6:9])]
+            t = float(t)
+            w = (w1(t), w2(t), w3(t))
+            v = y.tolist() if hasattr(y, "tolist") else list(y)
+            Q = [v[0:3], v[3:6], v[6:9]]
             return [x for row in skew_rate(Q, w) for x in row]
 
     route = Poisson(method="DOP853", rtol=p.rtol, atol=p.atol, max_steps=p.max_steps, estimate=p.estimate)
