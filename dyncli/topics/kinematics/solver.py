@@ -82,7 +82,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if times:
         res.series = [Series("t", times, n, title) for n, title in zip(names, titles)]
     if coords != "cartesian" and times:
-        res.views = _views(coords, p, times, rows, options)
+        res.views = _views(coords, p, times, rows, options, res)
     return res
 
 
@@ -130,12 +130,13 @@ def _within_cpu(t1: float, t2: float) -> None:
 # ---------------------------------------------------------------------------
 # frame tables (§12 layout): numeric per time, symbolic with --symbolic
 
-def _views(coords, p, times, rows, options):
+def _views(coords, p, times, rows, options, res):
     basis = BASIS_LABELS[coords]
     title = f"{coords} basis"
     views = []
     if options.symbolic:
-        views.append(symbolic_view(coords, p, title, basis))
+        view = frame.symbolic_within(lambda: symbolic_view(coords, p, title, basis), res, "the position")
+        views += [view] if view is not None else []
     views += frame.numeric_tables(title, times, [(lab, rows[key]) for lab, key in ROW_LABELS], basis)
     return views
 

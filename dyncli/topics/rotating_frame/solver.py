@@ -111,7 +111,8 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             res.series.append(Series("t", times, ["basis_fixed"], "e'_1, e'_2, e'_3 on the fixed basis e_i (10.4)"))
     rows = [(lab, per_time[n]) for lab, n in TABLE_ROWS] + [(lab, per_time[n]) for lab, n in EXTRA_ROWS if n in per_time]
     if options.symbolic:
-        res.views.append(symbolic_table(p))
+        view = frame.symbolic_within(lambda: symbolic_table(p), res, "the components")
+        res.views += [view] if view is not None else []
     if times:
         res.views += frame.numeric_tables("δ/δt table", times, rows, BASIS)
     return res

@@ -5,7 +5,9 @@ max_cpu makes the refusal certain whatever the machine."""
 
 from __future__ import annotations
 
-from tests.conftest import solve_one_text, solve_text
+import pytest
+
+from tests.conftest import ROOT, solve_one_text, solve_text
 
 #: a speed with a kink every ~3 ms over 100 s: far more panels than any budget
 KINKED = "type: kinematics\nposition: {x1: 'abs(sin(1000*t))', x2: 't'}\ndistance: [0, 100]\n"
@@ -29,3 +31,33 @@ def test_kinked_work_along_a_path_is_refused_by_the_cpu_budget():
                      "accuracy: {max_cpu: 0.001}\n")[0]
     assert rec["exit_code"] == 1
     assert "accuracy.max_cpu" in rec["error"] and "path" in rec["error"]
+
+
+@pytest.mark.parametrize("type_, text", [
+    ("kinematics", "type: kinematics\ncoordinates: spherical\nposition: {R: '2 + 0.5*sin(t)', theta: '0.3*t', "
+                   "phi: '0.1*t'}\nat: [1]\n"),
+    ("rotating-frame", "type: rotating-frame\nomega: [0, 0, '2*t']\np: ['t**2', 0, 0]\nat: [1]\n"),
+])
+def test_symbolic_table_beyond_its_cpu_limit_is_left_out_with_a_warning(monkeypatch, type_, text):
+    """--symbolic's sympy work is bounded (dyncli.cputime.limit): beyond it the formula table is left
+    out with one warning, the numeric results stay (forced here by a limit that has already expired)."""
+    import contextlib
+
+    from dyncli import cputime
+    from dyncli.loader import split_problems, validate
+    from dyncli.registry import solver
+    from dyncli.result import SolveOptions
+
+    @contextlib.contextmanager
+    def expired(seconds):
+        raise cputime.CpuTimeout(f"more than {seconds:g} s of CPU")
+        yield
+
+    monkeypatch.setattr(cputime, "limit", expired)
+    (lp,), _ = split_problems("s.yaml", text.encode(), ROOT)
+    validate(lp)
+    plain = solver(type_)(lp.model, SolveOptions())
+    res = solver(type_)(lp.model, SolveOptions(symbolic=True))
+    assert [w for w in res.warnings if "--symbolic" in w and "CPU" in w]
+    assert len(res.views) == len(plain.views)          # the numeric tables only
+    assert res.results == plain.results
