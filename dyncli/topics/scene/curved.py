@@ -145,11 +145,12 @@ class _Foot:
         return self.q, t, n, k, d, sp
 
 
-@dataclass
+@dataclass(kw_only=True)
 class CurveContact(Contact):
     """P on a curve, pushing only (smooth)."""
 
-    foot: _Foot = None
+    surface: CurveData  # type: ignore[assignment]  # a curve where Contact has a line: the geometry is all overridden here
+    foot: _Foot
 
     @property
     def linear(self):
@@ -202,11 +203,12 @@ class CurveContact(Contact):
         return out
 
 
-@dataclass
+@dataclass(kw_only=True)
 class CurveRolls(Rolls):
     """A disk of radius R rolling on a curve without slipping."""
 
-    foot: _Foot = None
+    surface: CurveData  # type: ignore[assignment]  # a curve where Rolls has a line: the geometry is all overridden here
+    foot: _Foot
     q_ref: float = 0.0
     linear = False
     first_event_ends = True          # slip and flight off a curve are not followed (the run stops there)

@@ -80,7 +80,7 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None):
     released = []
     if isinstance(e, Cord):
         e.slack = e.slack - {run}
-        rows = {(i, e.taut.index(run)): 0.0}
+        rows = {(i, e.taut.index(run)): 0.0}  # type: ignore[arg-type]  # run is given with every cord (strike's contract)
     else:
         vn, vt = e.normal_speed(q, v), e.slip_speed(q, v)
         e.mode, e.sign = e.made(), 0.0

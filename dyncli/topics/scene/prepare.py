@@ -260,7 +260,7 @@ def _refuse_at_start(system, q, v) -> None:
             if what == "slips" and isinstance(e, Rolls):
                 N, F = float(lm[0]), float(lm[1])
                 raise InputError(f"at t = 0 rolling needs |F| = {abs(F):.6g} N of friction, more than μ_s N = "
-                                 f"{e.mu_s * N:.6g} N: it slips at once (raise mu_s, or use a rough contact)",
+                                 f"{(e.mu_s or 0.0) * N:.6g} N: it slips at once (raise mu_s, or use a rough contact)",
                                  e.path)
 
 
