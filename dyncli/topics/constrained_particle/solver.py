@@ -99,8 +99,9 @@ def solve_setup(p: Setup) -> Result:
         res = quadrature.solve(p, model, times, fallback=(meth == "auto"))
         if res is not None:
             states = find.quadrature_states(p, model)
-            find.report(p, res, states, find.uniform_breaks(float(p.t_end), res.results.get("period"))
-                        + states.legs(float(p.t_end)), SERIES, turn_times=states.legs(float(p.t_end), turning=True))
+            t_end = float(p.t_end or 0.0)     # (set whenever the motion is asked for)
+            find.report(p, res, states, find.uniform_breaks(t_end, res.results.get("period"))
+                        + states.legs(t_end), SERIES, turn_times=states.legs(t_end, turning=True))
     if res is None:
         res = _solve_ode(p, model, times)
         phases = res.extra.pop("phases")

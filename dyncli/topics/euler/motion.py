@@ -31,8 +31,8 @@ class Body:
     route's controls (``method`` auto, closed-form, DOP853, RK45, Radau, LSODA or projected;
     rtol, atol, max_steps, estimate); ``coin``: the moments come from a coin (39.10)."""
 
-    I: tuple[float, float, float]
-    omega0: tuple[float, float, float]
+    I: tuple[float, ...]          # (I1, I2, I3)
+    omega0: tuple[float, ...]     # (ω'₁, ω'₂, ω'₃)
     M: tuple | None = None
     times: tuple[float, ...] = (0.0,)
     method: str = "auto"
@@ -129,7 +129,7 @@ def _torque_free_results(res, exact):
 
 def _moment(pb: Body, t):
     """The applied moment M(t) (body components, floats)."""
-    return tuple(float(e(t=t)) for e in pb.M)
+    return tuple(float(e(t=t)) for e in pb.M or ())
 
 
 def _table_39_1(I, w, M, t):

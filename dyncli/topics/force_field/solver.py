@@ -97,7 +97,7 @@ def plain(p) -> Setup:
         t1, t2 = (float(v) for v in p.path.t_span)
         path = Path(p.path.x1, p.path.x2, p.path.x3, t1, t2)
     a = p.accuracy
-    return Setup(tuple(p.F), tuple(tuple(float(v) for v in pt) for pt in p.points), path,
+    return Setup(tuple(p.F), tuple((float(pt[0]), float(pt[1]), float(pt[2])) for pt in p.points), path,
                  getattr(p, "coordinates", "cartesian"), float(a.rtol), float(a.atol), a.max_steps)
 
 

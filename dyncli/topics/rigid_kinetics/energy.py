@@ -82,7 +82,8 @@ def _sum(xs) -> float:
 
 def initial_state(p: Body):
     """(v̄, ω): as given, or the prescribed motion's values at its first time."""
-    v, w = p.v, p.omega
+    v: tuple[float, ...] | list[float] | None = p.v
+    w: tuple[float, ...] | list[float] | None = p.omega
     if p.motion is not None and (v is None or w is None):
         from dyncli.expr.jet import vec_jet_at     # plain floats: no numpy
 

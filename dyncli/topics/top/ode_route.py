@@ -67,7 +67,7 @@ def motion(top, run, inv, rates, reaction):
     return psi, theta, phi, psi_dot, th_dot, phi_dot, S, R
 
 
-def route(res, top, acc: Controls, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bounds):
+def route(res, top, acc: Controls, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bounds: tuple[float, float]):
     """The integrated motion at ``times`` (requested order) and its error estimate.
     ``state``: (ψ0, θ0, φ0, ψ̇0, θ̇0, φ̇0); ``bounds``: (θ_min, θ_max)."""
     ts, inv = _sorted_times(times)
