@@ -89,7 +89,7 @@ def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[lis
     v is monotonic — the one zero of v by its route; case 4 from its route (the first turning
     point, then every half period: a swing between two turning points takes half the period,
     (6.12)); case 2: v is monotonic between the zeros of a(t) (an explicit function of t, found
-    by Brent after a fine vectorised scan), so each piece holds at most one turning point;
+    decided exactly by the signs of a at its critical points), so each piece holds at most one turning point;
     the general case: the roots of v (Brent) on a uniform grid of the route's motion."""
     t1, case = p.t1, res.results.get("case")
     if case == 1:
@@ -140,20 +140,16 @@ class Swings(list):
     half: float = 0.0
 
 
-def _zeros_of_a(p, lo: float, hi: float, n: int = 4096) -> list[float]:
+def _zeros_of_a(p, lo: float, hi: float) -> list[float]:
+    """The sign changes of a(t) in (lo, hi), decided exactly (:class:`.case2_signs.SignTable`: the
+    signs of a at its critical points, never by sampling)."""
     import numpy as np
 
-    ts = np.linspace(lo, hi, n + 1)
-    with np.errstate(all="ignore"):
-        A = np.broadcast_to(np.asarray(p.a(t=ts), dtype=float), ts.shape)
-    f = lambda t: float(p.a(t=t))                    # noqa: E731
-    out = []
-    for k in range(n):
-        if A[k] * A[k + 1] < 0:
-            out.append(_q._root(f, float(ts[k]), float(ts[k + 1])))
-        elif A[k + 1] == 0 and k + 1 < n:
-            out.append(float(ts[k + 1]))
-    return out
+    from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives
+
+    dA, d2A = derivatives(p.a)
+    roots, _, _ = SignTable(lambda x: p.a.evaluate(t=np.asarray(x, dtype=float)), dA, d2A).get(lo, hi)
+    return [float(r) for r in roots]
 
 
 def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | None) -> list[float]:

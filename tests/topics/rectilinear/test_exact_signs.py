@@ -1,0 +1,61 @@
+"""Issue #28 for case 2 (a = a(t)): the extrema of v (the sign changes of a) and the quadrature
+panels are decided by the signs of a at its critical points (case2_signs), never by a grid of
+samples.  References by hand or mpmath at 30 digits, never from the code under test."""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_one_text
+
+mp.mp.dps = 30
+
+
+def solve(a: str, find: list[str], **kw) -> dict:
+    lines = ["type: rectilinear", f'a: "{a}"'] + [f"{k}: {v}" for k, v in kw.items()] + ["find:"]
+    return solve_one_text("\n".join(lines + [f"  - {q}" for q in find]) + "\n")
+
+
+def test_a_thousand_sign_changes_of_a():
+    # a = cos(100 t) + 1e-4 changes sign ~1000 times in 32 s; v = sin(100 t)/100 + 1e-4 t first
+    # reaches 0.0131 just before its peak at t_494 = (π/2 + 988π)/100 = 31.05 s
+    V = mp.mpf(0.0131)
+    v = lambda t: mp.sin(100 * t) / 100 + mp.mpf("1e-4") * t          # noqa: E731
+    peak = (mp.pi / 2 + 2 * mp.pi * 494) / 100
+    assert v(peak - 2 * mp.pi / 100) < V < v(peak)                     # the peak before stays below
+    t_ref = mp.findroot(lambda t: v(t) - V, (peak - mp.mpf("0.005"), peak), solver="anderson")
+    rec = solve("cos(100*t) + 1e-4", ["{v: 0.0131}"], v1=0, t_max=32)
+    f = rec["results"]["find"][0]
+    assert f["reached"]
+    # the root's condition: v's error (≤ estimate × scale) over |a(t*)|
+    a_star = abs(mp.cos(100 * t_ref) + mp.mpf("1e-4"))
+    assert abs(f["t"] - t_ref) <= 1e-9 * float(0.0131 / a_star) + 1e-12 * 31
+
+
+def test_a_double_root_of_a_is_an_inflection_of_v_not_an_extremum():
+    # a = −(t − 1)² touches 0 at t = 1: v = −((t − 1)³ + 1)/3 falls through −1/3 there and on
+    rec = solve("-(t-1)**2", ["{v: -0.3343333333333333}", "{v: -0.3333333333333333}", "{s: -0.5}"], v1=0, t_max=10)
+    f = rec["results"]["find"]
+    assert all(e["reached"] for e in f)
+    v = lambda t: -((t - 1) ** 3 + 1) / 3                              # noqa: E731
+    s = lambda t: -((t - 1) ** 4 / 4 + t - mp.mpf(1) / 4) / 3            # noqa: E731
+    t0 = 1 + mp.cbrt(3 * (mp.mpf(-0.3343333333333333) * -1) - 1)
+    assert abs(f[0]["t"] - t0) <= 1e-9 and abs(v(t0) - mp.mpf(-0.3343333333333333)) < 1e-25
+    # at the touch itself the root is ill-conditioned: δt ~ (3 δv)^(1/3) with δv ~ 1e-16
+    assert abs(f[1]["t"] - 1) <= 1e-4
+    t2 = mp.findroot(lambda t: s(t) + mp.mpf("0.5"), 1.5)
+    assert abs(f[2]["t"] - t2) <= 1e-9
+
+
+def test_two_roots_of_a_1e_10_apart_are_both_seen():
+    # a = (t − 1)² − 1e-20: v has a maximum at 1 − 1e-10 and a minimum at 1 + 1e-10, 1.3e-30 apart;
+    # the s-turning point at v = 0 (t = 3 (1/3 · 1e-20)…) — the scan must not fail on the pair
+    rec = solve("(t-1)**2 - 1e-20", ["{v: 0.5}", "{t: 2}"], v1=0, t_max=10)
+    f = rec["results"]["find"]
+    t_ref = 1 + mp.cbrt(mp.mpf(0.5) * 3 - 1 + 3 * mp.mpf("1e-20"))   # ≈ (t−1)³/3 + 1/3 − 1e-20 t = 0.5
+    t_ref = mp.findroot(lambda t: (t - 1) ** 3 / 3 + mp.mpf(1) / 3 - mp.mpf("1e-20") * t - mp.mpf(0.5), t_ref)
+    assert f[0]["reached"] and abs(f[0]["t"] - t_ref) <= 1e-9
+    assert f[1]["v"] == pytest.approx(2 / 3, rel=1e-12)
