@@ -38,7 +38,7 @@ import numpy as np
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case2_scan import _Scan, _fmt, _what
-from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives
+from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
 from dyncli.topics.rectilinear.work import CALL as _CALL, QUAD as _QUAD, SCALAR as _SCALAR, Work
 
 _EPS = float(np.finfo(float).eps)
@@ -60,7 +60,7 @@ class _Case2(_Scan):
         self._bad_xs: list[float] = []  # where quadratures failed to converge
         self._nbad = 0
         self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
-        self.signs = SignTable(self.A, *derivatives(p.a, self._charge))
+        self.signs = SignTable(self.A, *derivatives(p.a, self._charge), irs=irs(p.a))
         self.warned_signs = False
 
     def _charge(self, n: int) -> None:

@@ -27,10 +27,30 @@ from typing import Callable
 import numpy as np
 
 from dyncli.rootfind import all_roots, roots_in_brackets
+from dyncli.topics.rectilinear.enclose import hidden
 
 TABLE = 64                  # starting panels per analysed stretch (refined by the adaptive quadrature)
 BUDGET = 2000               # all_roots' cells per stretch (near a pole of a it halves without end)
 _EPS = float(np.finfo(float).eps)
+
+
+def _scale(f, lo: float, hi: float, cells: int) -> float:
+    """The largest finite |f| on the Chebyshev nodes of ``cells`` equal cells of [lo, hi]."""
+    nodes = (np.linspace(lo, hi, cells + 1)[:-1, None]
+             + (hi - lo) / cells * 0.5 * (1 + np.cos(np.pi * (np.arange(33) + 0.5) / 33))[None, :]).ravel()
+    with np.errstate(all="ignore"):
+        y = np.abs(f(nodes))
+    return float(np.max(y[np.isfinite(y)], initial=0.0))
+
+
+def irs(a) -> tuple:
+    """(the IR of a, of da/dt or None) for the enclosures."""
+    from dyncli.expr.derivative import d_ir
+
+    try:
+        return a.ir, d_ir(a.ir, "t")
+    except Exception:                # (no rule: min/max; a recursion too deep)
+        return a.ir, None
 
 
 def derivatives(a, charge: Callable[[int], None] | None = None) -> tuple[Callable | None, Callable | None]:
@@ -75,8 +95,9 @@ class SignTable:
     ``roots`` (sign changes of a), ``panels`` (quadrature cuts), ``stops`` (where a is not finite),
     ``unresolved`` (all_roots ran out of cells somewhere: a changes sign too often)."""
 
-    def __init__(self, A: Callable, dA: Callable | None, d2A: Callable | None):
+    def __init__(self, A: Callable, dA: Callable | None, d2A: Callable | None, irs: tuple = (None, None)):
         self.A, self.dA, self.d2A = A, dA, d2A
+        self.ir, self.dir = irs             # the IR of a and of a' (the enclosures), or None
         self.lo = self.hi = math.nan
         self.roots, self.panels, self.stops = np.zeros(0), np.zeros(0), np.zeros(0)
         self.cpts, self.cval = np.zeros(0), np.zeros(0)     # the critical points of a and a there
@@ -124,12 +145,16 @@ class SignTable:
         f = dA if dA is not None else A
         # the floor of rounding at 1e-15 of f's scale S (the largest |f| on the first cells' nodes):
         # where f underflows (the tails of a pulse) its cells are resolved as they are
-        nodes = (np.linspace(lo, hi, TABLE + 1)[:-1, None]
-                 + (hi - lo) / TABLE * 0.5 * (1 + np.cos(np.pi * (np.arange(33) + 0.5) / 33))[None, :]).ravel()
-        with np.errstate(all="ignore"):
-            y = np.abs(f(nodes))
-        S = float(np.max(y[np.isfinite(y)], initial=0.0))
-        crit, touch, bad = all_roots(f, lo, hi, floor=1e-15 * S, budget=BUDGET)
+        crit, touch, bad = all_roots(f, lo, hi, floor=1e-15 * _scale(f, lo, hi, TABLE), budget=BUDGET)
+        # where the enclosures of a exceed its samples (a feature narrower than all_roots' first
+        # nodes: a pulse 1e-6 of the span wide), all_roots again on the cells that locate it
+        leaves, spent = hidden(self.ir, self.dir, A, lo, hi) if self.ir is not None else ([], False)
+        self.unresolved = self.unresolved or spent
+        fine: list[float] = []      # a leaf's cells all_roots leaves unresolved (at the rounding of a
+        for u, v in leaves:         # pulse's tails): their midpoints join the sign analysis
+            c2, t2, b2 = all_roots(f, u, v, cells=2, floor=1e-15 * _scale(f, u, v, 2), budget=BUDGET // 10)
+            crit, touch, fine = crit + c2, touch + t2, fine + b2
+        crit, touch = sorted(set(crit)), sorted(set(touch + [x for x in fine if np.all(np.isfinite(A([x])))]))
         stops: list[float] = []
         spots: list[float] = []     # unresolved cells where a is finite (a pole of a: 1/(t - c), tan t)
         if bad:
@@ -146,7 +171,8 @@ class SignTable:
         self.cval = np.concatenate([self.cval, ap[1:-1]])[order]
         roots = self._roots(pts, ap, stops)
         table = np.linspace(lo, hi, TABLE + 1)[1:-1]
-        return roots, np.concatenate([table, roots, spots, self._graded(pts, ap)]), np.array(stops)
+        cuts = np.array([x for leaf in leaves for x in leaf], dtype=float)
+        return roots, np.concatenate([table, roots, spots, cuts, self._graded(pts, ap)]), np.array(stops)
 
     def _roots(self, pts, ap, stops) -> np.ndarray:
         """The roots of a between consecutive critical points (a monotone there: at most one each;

@@ -145,10 +145,10 @@ def _zeros_of_a(p, lo: float, hi: float) -> list[float]:
     signs of a at its critical points, never by sampling)."""
     import numpy as np
 
-    from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives
+    from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
 
     dA, d2A = derivatives(p.a)
-    roots, _, _ = SignTable(lambda x: p.a.evaluate(t=np.asarray(x, dtype=float)), dA, d2A).get(lo, hi)
+    roots, _, _ = SignTable(lambda x: p.a.evaluate(t=np.asarray(x, dtype=float)), dA, d2A, irs(p.a)).get(lo, hi)
     return [float(r) for r in roots]
 
 

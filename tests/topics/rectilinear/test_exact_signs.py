@@ -59,3 +59,27 @@ def test_two_roots_of_a_1e_10_apart_are_both_seen():
     t_ref = mp.findroot(lambda t: (t - 1) ** 3 / 3 + mp.mpf(1) / 3 - mp.mpf("1e-20") * t - mp.mpf(0.5), t_ref)
     assert f[0]["reached"] and abs(f[0]["t"] - t_ref) <= 1e-9
     assert f[1]["v"] == pytest.approx(2 / 3, rel=1e-12)
+
+
+@pytest.mark.parametrize("c, w, t_max", [(5.123, 1e-5, 10), (0.5123, 1e-5, 10), (987.654321, 1e-3, 1000), (3.3, 1e-3, 1000)])
+def test_a_pulse_1e_6_of_the_span_wide_is_found_wherever_it_lies(c, w, t_max):
+    # a = exp(−((t − c)/w)²), w = 1e-6 of the span: no grid sees it, the enclosures of a locate it;
+    # v jumps by w √π, half of it at the centre (by symmetry); s = jump · (t − c) after it
+    jump = w * math.sqrt(math.pi)
+    rec = solve(f"exp(-((t-{c!r})/{w!r})**2)", [f"{{v: {jump / 2!r}}}", f"{{t: {t_max}}}", f"{{s: {jump!r}}}"],
+                v1=0, t_max=t_max)
+    f = rec["results"]["find"]
+    assert f[0]["reached"] and abs(f[0]["t"] - c) <= 1e-9 * max(c, 1)
+    ref_v = mp.quad(lambda t: mp.exp(-((t - mp.mpf(c)) / mp.mpf(w)) ** 2), [c - 30 * w, c, c + 30 * w])
+    assert abs(f[1]["v"] - ref_v) <= rec["error_estimate"] * float(ref_v)
+    # s(t) = jump (t − c) once the pulse is past: s = jump a second after it
+    assert f[2]["reached"] and abs(f[2]["t"] - (c + 1)) <= 1e-6 * max(c, 1)
+
+
+def test_a_negative_a_with_a_hidden_positive_pulse():
+    # a = −1e-3 + exp(−((t − 0.5123)/1e-5)²): v falls to −5.1e-4, jumps by 1.77e-5 and falls on
+    rec = solve("-1e-3 + exp(-((t-0.5123)/1e-5)**2)", ["{t: 10}", "{v: 1.0e-6}"], v1=0, t_max=10)
+    f = rec["results"]["find"]
+    ref = -1e-2 + mp.sqrt(mp.pi) * mp.mpf("1e-5")
+    assert abs(f[0]["v"] - ref) <= max(rec["error_estimate"], 1e-10) * 1e-2
+    assert not f[1]["reached"]
