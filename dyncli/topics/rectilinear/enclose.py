@@ -125,21 +125,21 @@ def _call(name: str, args: list):
     return _mono(fn, a, dom)
 
 
-def enclose(n: tuple, t: tuple[float, float]) -> tuple[float, float]:
-    """Bounds of the expression ``n`` (IR) for every t in the interval ``t``."""
+def enclose(n: tuple, t: tuple[float, float], var: str = "t") -> tuple[float, float]:
+    """Bounds of the expression ``n`` (IR) for every value of its variable ``var`` in ``t``."""
     k = n[0]
     if k == "num":
         return (n[1], n[1])
     if k == "param":
         return (n[2], n[2])
     if k == "var":
-        return t if n[1] == "t" else WHOLE
+        return t if n[1] == var else WHOLE
     if k == "neg":
-        a = enclose(n[1], t)
+        a = enclose(n[1], t, var)
         return (-a[1], -a[0])
     if k == "call":
-        return _call(n[1], [enclose(x, t) for x in n[2]])
-    a, b = enclose(n[1], t), enclose(n[2], t)
+        return _call(n[1], [enclose(x, t, var) for x in n[2]])
+    a, b = enclose(n[1], t, var), enclose(n[2], t, var)
     if k == "add":
         return _out(a[0] + b[0], a[1] + b[1])
     if k == "sub":
@@ -151,21 +151,23 @@ def enclose(n: tuple, t: tuple[float, float]) -> tuple[float, float]:
     return _pow(a, b)
 
 
-def safe_enclose(ir: tuple, lo: float, hi: float) -> tuple[float, float]:
+def safe_enclose(ir: tuple, lo: float, hi: float, var: str = "t") -> tuple[float, float]:
     try:
-        r = enclose(ir, (lo, hi))
+        r = enclose(ir, (lo, hi), var)
     except (OverflowError, ZeroDivisionError, ValueError, RecursionError):
         return WHOLE
     return WHOLE if (math.isnan(r[0]) or math.isnan(r[1])) else r
 
 
-def hidden(ir: tuple, dir_: tuple | None, A, lo: float, hi: float, cells: int = 64, budget: int = 4000):
+def hidden(ir: tuple, dir_: tuple | None, A, lo: float, hi: float, cells: int = 64, budget: int = 4000,
+           var: str = "t"):
     """The cells of [lo, hi] where a (IR ``ir``, its derivative's IR ``dir_`` or None; ``A`` its
     evaluator on arrays) may hold what samples do not show: each of ``cells`` starting cells is
     halved while the enclosure of a over it (the narrower of the natural one and the mean-value
     form a(mid) + a'(cell)·[−h/2, h/2]) exceeds the range of 9 samples by more than 4 times that
     range (and 1e-12 of a's scale), to 40 halvings: ((u, v) leaves that were halved at least once, budget spent).
-    A cell the enclosure cannot bound (a pole, a domain's edge) is left to the sampling analysis."""
+    A cell the enclosure cannot bound (a pole, a domain's edge) is left to the sampling analysis.
+    ``var``: the expression's variable (t in case 2, s in case 4)."""
     k9 = np.linspace(0.0, 1.0, 9)
 
     def samples(us, vs):
@@ -185,9 +187,9 @@ def hidden(ir: tuple, dir_: tuple | None, A, lo: float, hi: float, cells: int = 
         u, v, y, depth = stack.pop()
         if not np.all(np.isfinite(y)):
             continue
-        m, M = safe_enclose(ir, u, v)
+        m, M = safe_enclose(ir, u, v, var)
         if dir_ is not None:
-            d = safe_enclose(dir_, u, v)
+            d = safe_enclose(dir_, u, v, var)
             h = 0.5 * (v - u)
             mid = float(y[4])
             if math.isfinite(d[0]) and math.isfinite(d[1]):
