@@ -52,6 +52,7 @@ class _Scan:
         if not vq and not sq:
             return
         H = p.t_max
+        # chunks (not samples: each is analysed whole by .case2_signs) doubling up to t1 + t_max
         edges = t1 + H * np.concatenate([[0.0], 2.0 ** -np.arange(12, -1, -1)])
         tc, sc, vc = t1, s1, v1
         vmin = vmax = v1

@@ -67,6 +67,8 @@ class _Scan:
     def _scan_nodes(self, e: int):
         """The scan positions s1 + e c g, |s| <= _BIG (g: geometric and linear offsets)."""
         s1, c = self.s1, self.scale
+        # cells of v² (a starting table: turning points and dips are decided inside the cells by
+        # root searches, and barriers between the nodes by the enclosures of a, _hidden_dips)
         g = np.unique(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:], 4.0 * np.logspace(0, 300, 3001)]))
         cm = self.scale_min
