@@ -313,6 +313,7 @@ class _Case4(_Scan):
 
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case4(p, ans, rtol, atol)
+    ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)
     if not c.setup():
         c.equilibrium()
         return "quadrature"

@@ -171,6 +171,10 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         from dyncli.topics.rectilinear.case2 import States
 
         sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
+    elif res.results.get("case") in (3, 4) and str(res.method).startswith("quadrature"):
+        from dyncli.topics.rectilinear.solver import Solved
+
+        sample = Solved(res.results["case"], res.extra.get("solved"))   # solved once, not once per try
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
     t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max

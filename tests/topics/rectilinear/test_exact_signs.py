@@ -83,3 +83,16 @@ def test_a_negative_a_with_a_hidden_positive_pulse():
     ref = -1e-2 + mp.sqrt(mp.pi) * mp.mpf("1e-5")
     assert abs(f[0]["v"] - ref) <= max(rec["error_estimate"], 1e-10) * 1e-2
     assert not f[1]["reached"]
+
+
+def test_find_on_a_case4_motion_solved_once():
+    # issue 29: find's searches evaluate the case-4 motion solved once (solver.Solved), each try
+    # was a new solve (34 s of CPU for this problem, refused at the default budget); s = 0.1 cos 5t
+    # + 0.2 sin 5t: the first maximum at atan(2)/5, s = 0.15 first at (asin(0.15/√0.05) − atan(1/2))/5
+    rec = solve("-25*s", ["{max: s}", "{when: {s: 0.15}}", "{min: v}", "{t: 3}"], s1=0.1, v1=1)
+    f = rec["results"]["find"]
+    amp = math.sqrt(0.05)
+    assert abs(f[0]["t"] - math.atan(2) / 5) <= 1e-7 and abs(f[0]["s"] - amp) <= 1e-9
+    assert abs(f[1]["t"] - (math.asin(0.15 / amp) - math.atan(0.5)) / 5) <= 1e-9
+    assert abs(f[2]["v"] + 5 * amp) <= 1e-8
+    assert abs(f[3]["s"] - (0.1 * math.cos(15) + 0.2 * math.sin(15))) <= 1e-9
