@@ -30,6 +30,7 @@ scan that answers the v- and s-queries is :mod:`.case2_scan`.
 
 from __future__ import annotations
 
+import bisect
 import math
 from typing import Any
 
@@ -228,7 +229,8 @@ class States:
 
         self.p, self.rtol, self.atol = p, rtol, atol
         self.c = _Case2(p, Answers(p.model_copy(update={"find": []}), Result({})), rtol, atol)
-        self.known = [(p.t1, p.s1, p.v1)]
+        self.kt = [p.t1]                        # the times where the state is known, ascending
+        self.known = {p.t1: (p.s1, p.v1)}
 
     def __call__(self, p, times) -> list[dict]:
         out: dict[float, dict[str, Any]] = {}
@@ -237,13 +239,16 @@ class States:
         span = [float(t) for t in times if math.isfinite(float(t))] + [t1]
         c.signs.get(min(span), max(span))       # one analysis of a over the whole span asked
         for T in sorted({float(t) for t in times}, key=lambda t: (t < t1, abs(t - t1))):
-            tb, sb, vb = min(self.known, key=lambda k: abs(T - k[0]) if (T - k[0]) * (T - t1) >= 0 and
-                             abs(k[0] - t1) <= abs(T - t1) else float("inf"))
+            # the nearest known time between t1 and T (t1 itself is known): a bisection, not a scan
+            tb = self.kt[bisect.bisect_right(self.kt, T) - 1] if T >= t1 else self.kt[bisect.bisect_left(self.kt, T)]
+            sb, vb = self.known[tb]
             try:
                 s, v, _, _ = c.state_split(T, tb, sb, vb)
             except NonFinite:
                 out[T] = {"reached": False}
                 continue
-            self.known.append((T, s, v))
+            if T not in self.known:
+                bisect.insort(self.kt, T)
+            self.known[T] = (s, v)
             out[T] = {"t": T, "s": s, "v": v, "a": c.a1(T), "reached": True}
         return [out[float(t)] for t in times]

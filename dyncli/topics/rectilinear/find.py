@@ -162,19 +162,27 @@ def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | No
     return sorted(out)
 
 
+def _sampler(p, res, sample):
+    """The motion at any times for the searches: case 2 one sweep of the span (not one quadrature
+    from t1 per time), cases 3 and 4 the motion solved once (not one solve per try, issue 29)."""
+    case, quad = res.results.get("case"), str(res.method).startswith("quadrature")
+    if case == 2 and quad:
+        from dyncli.topics.rectilinear.case2 import States
+
+        return States(p, p.accuracy.rtol, p.accuracy.atol)
+    if case in (3, 4) and quad:
+        from dyncli.topics.rectilinear.solver import Solved
+
+        return Solved(case, res.extra.get("solved"))
+    return sample
+
+
 def answer(p, res, generic, items, sample, solve_one) -> None:
     """Fill ``items`` (the answers in the user's order) for the generic queries, then add
     ``distance`` to every reached answer."""
     params = resolve_params(p.params)
     const = lambda text: constant(text, params)      # noqa: E731
-    if res.results.get("case") == 2 and str(res.method).startswith("quadrature"):
-        from dyncli.topics.rectilinear.case2 import States
-
-        sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
-    elif res.results.get("case") in (3, 4) and str(res.method).startswith("quadrature"):
-        from dyncli.topics.rectilinear.solver import Solved
-
-        sample = Solved(res.results["case"], res.extra.get("solved"))   # solved once, not once per try
+    sample = _sampler(p, res, sample)
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
     t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max
