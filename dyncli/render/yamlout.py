@@ -70,6 +70,14 @@ def dumper():
 
 
 def dumps(records: list[dict], allow_unicode: bool = True) -> str:
+    """The records as YAML: by :mod:`dyncli.render.yamlemit` (the same bytes, ~30 × faster) when it
+    lays them out, else by PyYAML."""
+    from dyncli.render import yamlemit
+
+    try:
+        return yamlemit.dumps(records, allow_unicode)
+    except yamlemit.Unsupported:
+        pass
     import yaml
 
     return yaml.dump(records, Dumper=dumper(), sort_keys=False, allow_unicode=allow_unicode,
