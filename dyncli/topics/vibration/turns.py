@@ -87,6 +87,47 @@ def jets(mo: Motion, t, d: int, X=None):
     return f, fd, bound, noise
 
 
+def _fast_jets(mo: Motion, d: int):
+    """:func:`jets` in plain floats with its constants hoisted (the steady state plus an
+    underdamped free part: no numpy, a few floating operations per time), or None where that
+    form does not apply (ζ ≥ 1, no excitation, near resonance)."""
+    wn, z, F, Om = mo.omega_n, mo.zeta, mo.F, mo.Om
+    r = Om / wn
+    D = complex((1.0 - r) * (1.0 + r), 2.0 * z * r)
+    if not (0.0 <= z < 1.0 and F != 0.0 and Om != 0.0 and abs(D) >= FAR):
+        return None
+    P = F / (wn * wn) / D
+    Pr, Pi = P.real, P.imag
+    a0, b0 = mo.w0 - Pi, mo.wd0 - Om * Pr
+    ws, sig = cf.roots(wn, z)[0], z * wn
+    q0, q1 = (b0 + sig * a0) / ws, (-2.0 * sig * b0 - wn * wn * a0 + sig * b0) / ws
+    if not all(map(math.isfinite, (a0, b0, q0, q1, Pr, Pi))):
+        return None
+    n, wn2, two = d + 2, wn * wn, 2.0 * z * wn
+    G, sn = abs(F) * Om ** (n - 1), abs(mo.s0) * Om ** n
+    base = 16 * _EPS * (abs(F) * Om ** max(d - 2, 0) + abs(mo.s0) * Om ** d + abs(P) * (Om ** d + wn ** d))
+    Fk = [F * Om ** (k - 1) for k in range(1, d + 2)]
+    sd, sd1 = mo.s0 * Om ** d, mo.s0 * Om ** (d + 1)
+    exp, cos, sin, sqrt = math.exp, math.cos, math.sin, math.sqrt
+
+    def jet(t: float):
+        ex, y, th = exp(-sig * t), ws * t, Om * t
+        cy, sy, c, s = cos(y), sin(y), cos(th), sin(th)
+        u = [ex * (a0 * cy + q0 * sy) + Pi * c + Pr * s, ex * (b0 * cy + q1 * sy) + Om * (Pr * c - Pi * s)]
+        trig = (s, c, -s, -c)
+        for k in range(1, d + 2):
+            u.append(Fk[k - 1] * trig[(k - 1) % 4] - two * u[k] - wn2 * u[k - 1])
+        f = u[d] + sd * trig[d % 4]
+        fd = u[d + 1] + sd1 * trig[(d + 1) % 4]
+        noise = 16 * _EPS * (abs(u[d]) + two * abs(u[d - 1]) + wn2 * abs(u[max(d - 2, 0)])) + base
+        root_e = sqrt(wn2 * u[n - 1] * u[n - 1] + u[n] * u[n])
+
+        def bound(h):
+            return ((root_e + G * h) * exp(two * h) + sn) * (1.0 + 1e-9)
+        return f, fd, bound, noise
+    return jet
+
+
 def roots(mo: Motion, breaks: list[float], d: int = 1, on_arrays: bool = False):
     """(the roots of x⁽ᵈ⁾ in [breaks[0], breaks[-1]], sorted; the touches; whether the cell
     budget ran out), decided by sign analysis on cells starting at the breaks."""
@@ -130,7 +171,8 @@ def _classify(f, fd, bound, noise, h):
 
 
 def _roots_floats(mo: Motion, breaks: list[float], d: int):
-    F = [jets(mo, t, d)[0] for t in breaks]
+    jet = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
+    F = [jet(t)[0] for t in breaks]
     span = breaks[-1] - breaks[0]           # cells below its rounding are not halved further
     out: list[float] = [t for t, f in zip(breaks[1:-1], F[1:-1]) if f == 0.0]
     touches: list[float] = []
@@ -140,11 +182,11 @@ def _roots_floats(mo: Motion, breaks: list[float], d: int):
         a, b, fa, fb = stack.pop()
         m, h = 0.5 * (a + b), 0.5 * (b - a)
         cells += 1
-        f, fd, bound, noise = jets(mo, m, d)
+        f, fd, bound, noise = jet(m)
         kind = _classify(f, fd, bound, noise, h) if cells < MAX_CELLS else 1
         if kind == 1 or (kind == -1 and (m <= a or m >= b or h <= 4 * _EPS * max(abs(m), span))):
             if fa * fb < 0:
-                out.append(_newton(mo, d, a, b, fa, fb))
+                out.append(_newton(jet, a, b, fa, fb))
             elif kind == -1 and abs(f) <= noise and breaks[0] < a and b < breaks[-1]:
                 touches.append(m)
         elif kind == -1:
@@ -154,12 +196,12 @@ def _roots_floats(mo: Motion, breaks: list[float], d: int):
     return sorted(set(out)), touches, cells >= MAX_CELLS
 
 
-def _newton(mo: Motion, d: int, a: float, b: float, fa: float, fb: float) -> float:
+def _newton(jet, a: float, b: float, fa: float, fb: float) -> float:
     """The one root of f = x⁽ᵈ⁾ in a proven bracket: Newton with the exact slope, bisection when
     a step leaves the bracket, to a step below 4 ulp."""
     t = a - fa * (b - a) / (fb - fa)
     for _ in range(200):
-        f, fd, _, _ = jets(mo, t, d)
+        f, fd, _, _ = jet(t)
         if f == 0.0:
             return t
         if (f > 0) == (fa > 0):
