@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import sys
+from dataclasses import dataclass
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
@@ -34,15 +35,34 @@ _EPS = 2.220446049250313e-16
 PER_PERIOD, MAX_PIECES = 8, 20_000
 
 
+@dataclass(frozen=True, slots=True)
+class Setup:
+    """What ``find`` and ``distance`` read of a vibration problem, in SI floats (built by the
+    solver from its input): the mass, the free length, the initial state, the base motion
+    s0 sin(Ωt) (0, 0 without one), the force (F0, ω) on the mass or None, the times of ``at``,
+    the ``find`` queries as written, ``t_end`` and the file's ``params`` (for the queries' numbers)."""
+    m: float
+    L: float
+    x0: float
+    v0: float
+    s0: float = 0.0
+    Om: float = 0.0
+    fo: tuple[float, float] | None = None
+    at: tuple[float, ...] = ()
+    find: tuple = ()
+    t_end: float | None = None
+    params: tuple = ()
+
+
 class Response:
     """x(t), v(t), w(t) and the acceleration of one vibration problem, exact."""
 
-    def __init__(self, p, omega_n, zeta):
+    def __init__(self, p: Setup, omega_n, zeta):
         self.p, self.omega_n, self.zeta = p, omega_n, zeta
         self.L = p.L
-        self.x0 = self.L if p.x0 is None else p.x0
-        self.s0, self.Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
-        self.fo = forced.forcing(p)      # (F0, ω) of a force on the mass or a rotating unbalance, or None
+        self.x0 = p.x0
+        self.s0, self.Om = p.s0, p.Om
+        self.fo = p.fo                   # (F0, ω) of a force on the mass or a rotating unbalance, or None
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -160,11 +180,11 @@ class Response:
         return [t_end * k / n for k in range(n + 1)], capped
 
 
-def report(p, res, omega_n, zeta) -> None:
+def report(p: Setup, res, omega_n, zeta) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers."""
     if not p.at and not p.find:
         return
-    params = resolve_params(p.params)
+    params = resolve_params(dict(p.params))
     const = lambda text: constant(text, params)      # noqa: E731
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
     resp = Response(p, omega_n, zeta)
@@ -174,7 +194,7 @@ def report(p, res, omega_n, zeta) -> None:
     if not p.find:
         return
     breaks, capped = resp.breaks(t_end)
-    exact = _exact_paths(p.find, resp)
+    exact = _exact_paths(list(p.find), resp)
     if exact and t_end > 0:         # every turning point of x and of v is a break: x, v monotone between
         tx, tv, capped = _turning_points(resp, breaks, t_end)
         breaks = sorted(set([0.0, t_end] + tx + tv))
@@ -187,7 +207,7 @@ def report(p, res, omega_n, zeta) -> None:
         return {"x": xx, "v": v, "w": w, "distance": odo(t)}
 
     motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None)
-    mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=state))
+    mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
 
 
 def _turning_points(resp: Response, breaks: list[float], t_end: float):
