@@ -14,6 +14,7 @@ more, an object met twice (PyYAML writes an anchor), a type of its own — raise
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import Any
 
 WIDTH = 100
 _STR = "tag:yaml.org,2002:str"
@@ -42,6 +43,25 @@ def _string(text: str, unicode: bool):
     if a.multiline or not (a.allow_single_quoted or (implicit and a.allow_block_plain)):
         raise Unsupported("multiline or double-quoted")
     return implicit and a.allow_flow_plain, implicit and a.allow_block_plain, a.allow_single_quoted, len(text), a.empty
+
+
+def plain(x: Any) -> Any:
+    """numpy scalars/arrays, float/int subclasses and tuples -> plain Python
+    values (anything else unchanged)."""
+    if type(x) in (int, float, bool, str) or x is None:
+        return x
+    if isinstance(x, bool):
+        return bool(x)
+    if isinstance(x, int):
+        return int(x)
+    if isinstance(x, float):
+        return float(x)
+    if isinstance(x, tuple):
+        return list(x)
+    tolist = getattr(x, "tolist", None)        # numpy.generic and numpy.ndarray
+    if callable(tolist) and type(x).__module__.startswith("numpy"):
+        return tolist()
+    return x
 
 
 def _float(x: float) -> str:
@@ -179,8 +199,6 @@ class _Writer:
         elif x is None or t in (str, int, float, bool):
             self.scalar(x, False)
         else:
-            from dyncli.render.yamlout import plain
-
             p = plain(x)
             if p is x:
                 raise Unsupported(f"type {t.__name__}")
