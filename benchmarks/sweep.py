@@ -37,7 +37,9 @@ CASES = [
     ("vibration, free (5 times)", "problems/vibration/underdamped.yaml", "k", 100.0, 1000.0),
     ("vibration, base-excited (6 times)", "problems/vibration/base-excitation.yaml", "k", 100.0, 1000.0),
     ("impact, oblique smooth", "problems/impact/oblique-smooth.yaml", "e", 0.1, 0.9),
+    ("vibration, free with find (2 queries)", "problems/vibration/underdamped.yaml", "k", 100.0, 1000.0),
 ]
+FORMATS = ("csv", "json", "yaml", "table")
 
 
 def _env() -> dict:
@@ -85,15 +87,28 @@ def in_process(path: str, field: str, lo: float, hi: float, n: int, fast: bool) 
     return {"validate": t1 - t0, "solve": t2 - t1, "csv": t3 - t2, "total": t3 - t0}
 
 
+def _formats(path: str, field: str, lo: float, hi: float, n: int) -> None:
+    """The whole command in every format: wall and CPU of a fresh process writing to /dev/null."""
+    for fmt in FORMATS:
+        _process(["solve", path, "--sweep", f"{field}={lo}:{hi}:10", "-f", fmt])   # warm .pyc
+        w, c = _process(["solve", path, "--sweep", f"{field}={lo}:{hi}:{n}", "-f", fmt])
+        print(f"{'':<36} {'dyncli --sweep -f ' + fmt:<30} {w:7.2f} {c:7.2f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--points", type=int, default=10_000)
     ap.add_argument("--loop-runs", type=int, default=10)
+    ap.add_argument("--formats-only", action="store_true", help="only the dyncli --sweep rows, every format")
     args = ap.parse_args()
     n = args.points
     print(f"{n:,}-point sweeps; times in seconds (CPU = user + sys of the process)\n")
     print(f"{'case':<36} {'route':<30} {'wall':>7} {'CPU':>7}   split (CPU)")
     for name, path, field, lo, hi in CASES:
+        if args.formats_only:
+            print(name)
+            _formats(path, field, lo, hi, n)
+            continue
         loop = [_process(["solve", path, "--set", f"{field}={lo + (hi - lo) * i / args.loop_runs}", "-f", "csv"])
                 for i in range(args.loop_runs)]
         scale = n / args.loop_runs
@@ -103,10 +118,7 @@ def main() -> None:
             r = in_process(str(ROOT / path), field, lo, hi, n, fast)
             print(f"{'':<36} {label:<30} {'':>7} {r['total']:7.2f}   validate {r['validate']:.2f}, "
                   f"solve {r['solve']:.2f}, csv {r['csv']:.2f}")
-        for fmt in ("csv", "json"):
-            _process(["solve", path, "--sweep", f"{field}={lo}:{hi}:10", "-f", fmt])   # warm .pyc
-            w, c = _process(["solve", path, "--sweep", f"{field}={lo}:{hi}:{n}", "-f", fmt])
-            print(f"{'':<36} {'dyncli --sweep -f ' + fmt:<30} {w:7.2f} {c:7.2f}")
+        _formats(path, field, lo, hi, n)
     print("\n(the rest of the CPU of the 'dyncli' rows is start-up, loading and JSON/CSV writing)")
 
 

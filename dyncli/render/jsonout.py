@@ -27,6 +27,25 @@ def _floats(x: list) -> list | None:
     return x
 
 
+def _flat_dict(x: dict) -> bool:
+    """Whether ``x`` is already plain JSON one level deep (str keys; values None, bool, str,
+    int, finite floats or flat lists of them): a series of 1e5 small records (force terms,
+    powers) then converts without a call per value."""
+    for k, v in x.items():
+        t = type(v)
+        if type(k) is not str:
+            return False
+        if t is float:
+            if v - v != 0.0:
+                return False
+        elif t is list:
+            if _floats(v) is None:
+                return False
+        elif not (v is None or t is int or t is str or t is bool):
+            return False
+    return True
+
+
 def _array(x) -> Any:
     import numpy as np
 
@@ -50,6 +69,8 @@ def jsonable(x: Any) -> Any:
     if isinstance(x, float):  # float(): numpy.float64 is a float subclass
         return float(x) if math.isfinite(x) else None
     if isinstance(x, dict):
+        if type(x) is dict and _flat_dict(x):
+            return x
         return {str(k): jsonable(v) for k, v in x.items()}
     if isinstance(x, list) and _floats(x) is not None:
         return x
@@ -134,7 +155,11 @@ def _leaves(x: Any, out: list) -> None:
     if type(x) is dict:
         for k, v in x.items():
             out.append(str(k))
-            _leaves(v, out)
+            t = type(v)
+            if t is dict or t is list:
+                _leaves(v, out)
+            else:
+                out.append(v)
     elif type(x) is list and x:
         if not _numeric(x):
             for v in x:
@@ -151,8 +176,14 @@ def _layout(x: Any, indent: str, text, parts: list) -> None:
         parts.append("{\n")
         last = len(x) - 1
         for i, v in enumerate(x.values()):
-            parts.append(f"{inner}{next(text)}: ")
-            _layout(v, inner, text, parts)
+            t = type(v)
+            if t is not dict and t is not list:      # a scalar: inline (a series of small records)
+                parts.append(f"{inner}{next(text)}: {next(text)}")
+            elif t is list and v and _numeric(v):
+                parts.append(f"{inner}{next(text)}: " + repr(v).replace("None", "null"))
+            else:
+                parts.append(f"{inner}{next(text)}: ")
+                _layout(v, inner, text, parts)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "}")
     elif type(x) is list and x:
@@ -161,9 +192,13 @@ def _layout(x: Any, indent: str, text, parts: list) -> None:
             return
         parts.append("[\n")
         last = len(x) - 1
+        nxt = text.__next__
         for i, v in enumerate(x):
             parts.append(inner)
-            _layout(v, inner, text, parts)
+            if type(v) is dict and v and _flat_dict(v):      # a series of small records: no call per value
+                parts.append(_flat_text(v, inner, nxt))
+            else:
+                _layout(v, inner, text, parts)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "]")
     elif type(x) is dict:
@@ -172,6 +207,18 @@ def _layout(x: Any, indent: str, text, parts: list) -> None:
         parts.append("[]")
     else:
         parts.append(next(text))
+
+
+def _flat_text(x: dict, indent: str, nxt) -> str:
+    """:func:`_layout` of a non-empty :func:`_flat_dict` (its keys and scalars from ``nxt``)."""
+    inner = indent + "  "
+    items = []
+    for v in x.values():
+        if type(v) is list:
+            items.append(f"{inner}{nxt()}: " + (repr(v).replace("None", "null") if v else "[]"))
+        else:
+            items.append(f"{inner}{nxt()}: {nxt()}")
+    return "{\n" + ",\n".join(items) + "\n" + indent + "}"
 
 
 def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:

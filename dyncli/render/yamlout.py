@@ -9,26 +9,8 @@ no result a solver returns can make the dump fail."""
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Any
 
-
-def plain(x: Any) -> Any:
-    """numpy scalars/arrays, float/int subclasses and tuples -> plain Python
-    values (anything else unchanged)."""
-    if type(x) in (int, float, bool, str) or x is None:
-        return x
-    if isinstance(x, bool):
-        return bool(x)
-    if isinstance(x, int):
-        return int(x)
-    if isinstance(x, float):
-        return float(x)
-    if isinstance(x, tuple):
-        return list(x)
-    tolist = getattr(x, "tolist", None)        # numpy.generic and numpy.ndarray
-    if callable(tolist) and type(x).__module__.startswith("numpy"):
-        return tolist()
-    return x
+from dyncli.render.yamlemit import plain  # (numpy values -> plain ones: defined once, with the writer)
 
 
 @lru_cache(maxsize=None)
@@ -70,6 +52,14 @@ def dumper():
 
 
 def dumps(records: list[dict], allow_unicode: bool = True) -> str:
+    """The records as YAML: by :mod:`dyncli.render.yamlemit` (the same bytes, ~30 × faster) when it
+    lays them out, else by PyYAML."""
+    from dyncli.render import yamlemit
+
+    try:
+        return yamlemit.dumps(records, allow_unicode)
+    except yamlemit.Unsupported:
+        pass
     import yaml
 
     return yaml.dump(records, Dumper=dumper(), sort_keys=False, allow_unicode=allow_unicode,

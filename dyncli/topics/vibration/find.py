@@ -21,12 +21,13 @@ from __future__ import annotations
 
 import math
 import sys
+from dataclasses import dataclass
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
 
 from . import closed_form as cf
-from . import forced
+from . import forced, turns
 
 _EPS = 2.220446049250313e-16
 
@@ -34,15 +35,34 @@ _EPS = 2.220446049250313e-16
 PER_PERIOD, MAX_PIECES = 8, 20_000
 
 
+@dataclass(frozen=True, slots=True)
+class Setup:
+    """What ``find`` and ``distance`` read of a vibration problem, in SI floats (built by the
+    solver from its input): the mass, the free length, the initial state, the base motion
+    s0 sin(Ωt) (0, 0 without one), the force (F0, ω) on the mass or None, the times of ``at``,
+    the ``find`` queries as written, ``t_end`` and the file's ``params`` (for the queries' numbers)."""
+    m: float
+    L: float
+    x0: float
+    v0: float
+    s0: float = 0.0
+    Om: float = 0.0
+    fo: tuple[float, float] | None = None
+    at: tuple[float, ...] = ()
+    find: tuple = ()
+    t_end: float | None = None
+    params: tuple = ()
+
+
 class Response:
     """x(t), v(t), w(t) and the acceleration of one vibration problem, exact."""
 
-    def __init__(self, p, omega_n, zeta):
+    def __init__(self, p: Setup, omega_n, zeta):
         self.p, self.omega_n, self.zeta = p, omega_n, zeta
         self.L = p.L
-        self.x0 = self.L if p.x0 is None else p.x0
-        self.s0, self.Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
-        self.fo = forced.forcing(p)      # (F0, ω) of a force on the mass or a rotating unbalance, or None
+        self.x0 = p.x0
+        self.s0, self.Om = p.s0, p.Om
+        self.fo = p.fo                   # (F0, ω) of a force on the mass or a rotating unbalance, or None
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -138,6 +158,14 @@ class Response:
             return (self.fo[0] / (self.p.m * self.omega_n ** 2)) / D, Om
         return self.s0 * complex(1.0, 2.0 * self.zeta * r) / D, Om
 
+    def motion(self) -> turns.Motion:
+        """The equation of motion and initial conditions of w = x − s − L (:mod:`.turns`)."""
+        p = self.p
+        if self.fo is not None:
+            return turns.Motion(self.omega_n, self.zeta, self.x0 - self.L, p.v0, self.fo[0] / p.m, self.fo[1])
+        s0, Om = self.s0, self.Om
+        return turns.Motion(self.omega_n, self.zeta, self.x0 - self.L, p.v0 - s0 * Om, s0 * Om * Om, Om, s0)
+
     def w_rate(self, t: float) -> float:
         return self.at(t)[1] - self.s0 * self.Om * math.cos(self.Om * t)
 
@@ -152,11 +180,11 @@ class Response:
         return [t_end * k / n for k in range(n + 1)], capped
 
 
-def report(p, res, omega_n, zeta) -> None:
+def report(p: Setup, res, omega_n, zeta) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers."""
     if not p.at and not p.find:
         return
-    params = resolve_params(p.params)
+    params = resolve_params(dict(p.params))
     const = lambda text: constant(text, params)      # noqa: E731
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
     resp = Response(p, omega_n, zeta)
@@ -166,6 +194,10 @@ def report(p, res, omega_n, zeta) -> None:
     if not p.find:
         return
     breaks, capped = resp.breaks(t_end)
+    exact = _exact_paths(list(p.find), resp)
+    if exact and t_end > 0:         # every turning point of x and of v is a break: x, v monotone between
+        tx, tv, capped = _turning_points(resp, breaks, t_end)
+        breaks = sorted(set([0.0, t_end] + tx + tv))
     if capped:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
@@ -174,26 +206,91 @@ def report(p, res, omega_n, zeta) -> None:
         xx, v, w = resp.at(t)
         return {"x": xx, "v": v, "w": w, "distance": odo(t)}
 
-    motion = mf.StateMotion(state, 0.0, t_end, breaks,
-                            rates={"x": "v", "v": lambda t, _: resp.acceleration(t), "w": lambda t, _: resp.w_rate(t),
-                                   "distance": lambda t, _: abs(resp.at(t)[1])})
-    mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn))
+    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None)
+    mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
+
+
+def _turning_points(resp: Response, breaks: list[float], t_end: float):
+    """(the turning points of x, of v in (0, t_end), whether a search ran out of cells): in closed
+    form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
+    mo, arrays = resp.motion(), _on_arrays(len(breaks))
+    out, capped = [], False
+    for d in (1, 2):
+        got = turns.free_roots(mo, d, t_end)
+        if got is None:
+            got, _, more = turns.roots(mo, breaks, d, arrays)
+            capped = capped or more
+        out.append(got)
+    return out[0], out[1], capped
+
+
+def _exact_paths(find, resp: Response) -> bool:
+    """Whether every query asks about x, v, distance (or w without a base motion, w = x − L):
+    quantities monotone between the turning points of x and of v, so that a search over those
+    points alone is exact."""
+    ok = {"x", "v", "distance"} | ({"w"} if resp.s0 == 0.0 else set())
+    for q in find if isinstance(find, (list, tuple)) else ():
+        if not isinstance(q, dict):
+            return False
+        when = q.get("when")
+        paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
+        if not all(isinstance(x, str) and x in ok for x in paths):
+            return False
+    return True
+
+
+class _Motion:
+    """The motion searched by ``find`` (:mod:`dyncli.queries`): each quantity and its exact rate
+    computed alone (a search asks for one at a time), no state dictionaries."""
+
+    t0 = 0.0
+    rtol = 0.0
+
+    def __init__(self, resp: Response, odo, t_end: float, breaks: list[float], subdivide: int | None):
+        self.resp, self.odo, self.t_end = resp, odo, float(t_end)
+        self.breaks = [0.0] + sorted({float(b) for b in breaks if 0.0 < b < t_end}) + [self.t_end]
+        self.subdivide = subdivide
+        self.period = None
+
+    def paths(self) -> list[str]:
+        return ["distance", "v", "w", "x"]
+
+    def value(self, path: str, t: float) -> float:
+        if path == "distance":
+            return self.odo(t)
+        i = ("x", "v", "w").index(path) if path in ("x", "v", "w") else None
+        if i is None:
+            raise KeyError(path)
+        return self.resp.at(t)[i]
+
+    def rate(self, path: str, t: float) -> float | None:
+        r = self.resp
+        if path == "x":
+            return r.at(t)[1]
+        if path == "v":
+            return r.acceleration(t)
+        if path == "w":
+            return r.w_rate(t)
+        return abs(r.at(t)[1]) if path == "distance" else None
+
+    def clipped(self, t_end: float) -> "_Motion":
+        return _Motion(self.resp, self.odo, t_end, self.breaks, self.subdivide)
 
 
 def _odometer(resp: Response, t_end: float):
     """distance(t) for 0 <= t <= t_end."""
     if resp.fo is None and resp.s0 == 0.0:
         return _free_odometer(resp)
-    turns = _forced_turns(resp, t_end) if t_end > 0 else []
-    if not _on_arrays(len(turns)):
+    tps = _forced_turns(resp, t_end) if t_end > 0 else []
+    if not _on_arrays(len(tps)):
         xv = resp.scalar()
-        at_turns = {t: xv(t)[0] for t in turns}
+        at_turns = {t: xv(t)[0] for t in tps}
     else:
-        at_turns = dict(zip(turns, resp.arrays(__import__("numpy").asarray(turns, dtype=float))[0].tolist()))
+        at_turns = dict(zip(tps, resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()))
 
     def x(u: float) -> float:
         return at_turns[u] if u in at_turns else resp.at(u)[0]
-    return _Odometer(lambda ts: mf.turning_length(x, turns, ts))
+    return _Odometer(lambda ts: mf.turning_length(x, tps, ts))
 
 
 class _Odometer:
@@ -264,57 +361,10 @@ def _on_arrays(n: int) -> bool:
 
 
 def _forced_turns(resp: Response, t_end: float) -> list[float]:
-    """The roots of v in (0, t_end) with a base motion or a force: sign changes on the grid of
-    breaks, all refined at once by the project's bracketed Newton on arrays
-    (:func:`dyncli.rootfind.newton_in_brackets`, the exact acceleration as the slope) when numpy
-    is loaded already or the grid is long; in plain floats otherwise (a cold closed-form solve
-    stays at the import floor)."""
+    """The roots of v in (0, t_end) with a base motion or a force, decided exactly by the sign
+    analysis of :mod:`.turns` on the grid of breaks (on arrays when numpy is loaded already or
+    the grid is long; in plain floats otherwise: a cold closed-form solve stays at the import
+    floor)."""
     breaks, _ = resp.breaks(t_end)
-    if not _on_arrays(len(breaks)):
-        return _forced_turns_scalar(resp, breaks)
-    import numpy as np
-
-    from dyncli.rootfind import newton_in_brackets
-
-    T = np.asarray(breaks, dtype=float)
-    _, V = resp.arrays(T)
-    k = np.nonzero(V[:-1] * V[1:] < 0)[0]
-    zeros = T[1:-1][V[1:-1] == 0.0]
-
-    def v_and_a(t, _):
-        x, v = resp.arrays(t)
-        return v, resp.acceleration_at(t, x, v, np)
-    t = newton_in_brackets(v_and_a, T[k], T[k + 1], V[k], V[k + 1]) if k.size else k
-    return sorted(np.asarray(t, dtype=float).tolist() + zeros.tolist())
-
-
-def _forced_turns_scalar(resp: Response, breaks: list[float]) -> list[float]:
-    """:func:`_forced_turns` in plain floats: the steady state plus the free part (a few floating
-    operations per time), Newton with the exact acceleration inside each sign change of v on the
-    grid (bisection when a step leaves the bracket)."""
-    xv = resp.scalar()
-    XV = [xv(t) for t in breaks]
-    out = [t for t, (_, v) in zip(breaks[1:-1], XV[1:-1]) if v == 0.0]
-    for a, b, (xa, va), (xb, vb) in zip(breaks, breaks[1:], XV, XV[1:]):
-        if va * vb < 0:
-            out.append(_newton(resp, xv, a, b, va, vb))
-    return sorted(out)
-
-
-def _newton(resp, xv, a: float, b: float, va: float, vb: float) -> float:
-    t = a - va * (b - a) / (vb - va)
-    for _ in range(100):
-        x, v = xv(t)
-        if v == 0.0:
-            return t
-        if v * va < 0:
-            b, vb = t, v
-        else:
-            a, va = t, v
-        acc = resp.acceleration_at(t, x, v)
-        step = t - v / acc if acc else math.nan
-        t_new = step if a <= step <= b else 0.5 * (a + b)
-        if abs(t_new - t) <= 4 * _EPS * abs(t) or b - a <= 4 * _EPS * abs(b):
-            return t_new
-        t = t_new
-    return t
+    found, _, _ = turns.roots(resp.motion(), breaks, 1, _on_arrays(len(breaks)))
+    return [t for t in found if 0.0 < t < t_end]

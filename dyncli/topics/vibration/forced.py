@@ -79,14 +79,18 @@ def unbalance_force(m0: float, e: float, omega: float) -> float:
     return m0 * e * omega * omega
 
 
-def forcing(p) -> tuple[float, float] | None:
-    """(F0, ω) of the harmonic force on the mass: ``force``, or a rotating ``unbalance``
-    (F0 = m0 e ω²); None without either."""
-    if p.force is not None:
-        return p.force.amplitude, p.force.omega
-    u = getattr(p, "unbalance", None)
-    if u is not None:
-        return unbalance_force(u.m0, u.e, u.omega), u.omega
+def forcing(force: tuple[float, float] | None, unbalance: tuple[float, float, float] | None) -> tuple[float, float] | None:
+    """(F0, ω) of the harmonic force on the mass: a ``force`` (amplitude, ω), or a rotating
+    ``unbalance`` (m0, e, ω: F0 = m0 e ω²); None without either.
+
+    >>> forcing(None, (0.5, 0.02, 100.0))
+    (100.0, 100.0)
+    """
+    if force is not None:
+        return force
+    if unbalance is not None:
+        m0, e, omega = unbalance
+        return unbalance_force(m0, e, omega), omega
     return None
 
 

@@ -26,6 +26,7 @@ import numpy as np
 from dyncli.result import Line, Plot
 from dyncli.topics.vibration import closed_form as cf
 from dyncli.topics.vibration import forced
+from dyncli.topics.vibration.solver import forcing as _forcing
 
 MIN_POINTS, MAX_POINTS, PER_PERIOD = 400, 40000, 40
 ENVELOPE_MAX = 20      # an envelope more than this many times the largest |x − L| is not drawn
@@ -38,7 +39,7 @@ def plots(problem, result) -> list[Plot]:
     out = []
     R = result.results
     moves = problem.at or problem.base is not None or (problem.x0 is not None and problem.x0 != problem.L) \
-        or problem.v0 != 0 or forced.forcing(problem) is not None
+        or problem.v0 != 0 or _forcing(problem) is not None
     if moves:
         out.append(_response(problem, R))
         zoom = _zoom(problem, R)
@@ -88,14 +89,14 @@ def _zoom(p, R) -> Plot | None:
 
 def _omega(p) -> float:
     """The excitation's frequency (base, force or unbalance; 0 for free vibration)."""
-    fo = forced.forcing(p)
+    fo = _forcing(p)
     return p.base.omega if p.base is not None else (fo[1] if fo is not None else 0.0)
 
 
 def _x(p, R, t):
     """The exact total response x(t) over an array of times (any excitation)."""
     x0 = p.L if p.x0 is None else p.x0
-    fo = forced.forcing(p)
+    fo = _forcing(p)
     with np.errstate(all="ignore"):
         if fo is not None:
             return forced.response(t, m=p.m, omega_n=R["omega_n"], zeta=R["zeta"], L=p.L, x0=x0, v0=p.v0,
@@ -117,7 +118,7 @@ def _response(p, R) -> Plot:
     lines = [Line(ts, x.tolist(), "x(t), exact total response", style="-")]
     hlines: list[tuple[float, str | None]] = []
     decays = np.exp(-zeta * wn * t)
-    if forced.forcing(p) is not None:
+    if _forcing(p) is not None:
         title = ("rotating-unbalance" if p.unbalance is not None else "force-excited") + " vibration x(t)"
         if R.get("X") is not None:
             hlines += [(L + R["X"], "steady state L ± X"), (L - R["X"], None)]

@@ -37,6 +37,22 @@ def _angle(y: float, x: float) -> float:
     return math.atan2(y + 0.0, x) + 0.0
 
 
+def forcing(p) -> tuple[float, float] | None:
+    """(F0, ω) of the model's ``force`` or rotating ``unbalance`` (:func:`forced.forcing`)."""
+    u = getattr(p, "unbalance", None)
+    return forced.forcing(None if p.force is None else (p.force.amplitude, p.force.omega),
+                          None if u is None else (u.m0, u.e, u.omega))
+
+
+def setup(p, fo):
+    """The plain inputs of ``find`` and ``distance`` (:class:`find.Setup`)."""
+    from dyncli.topics.vibration import find
+
+    s0, Om = (p.base.amplitude, p.base.omega) if p.base is not None else (0.0, 0.0)
+    return find.Setup(p.m, p.L, p.L if p.x0 is None else p.x0, p.v0, s0, Om, fo, tuple(p.at), tuple(p.find),
+                      p.t_end, tuple(p.params.items()))
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
     m, k = p.m, p.k
     omega_n = eq.natural_frequency(k, m)                 # (17.5b)
@@ -55,7 +71,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             "overdamped": ["17.24"]}[regime]
 
     s0 = Om = 0.0
-    fo = forced.forcing(p)          # a force on the mass, or a rotating unbalance's (F0 = m0 e ω²)
+    fo = forcing(p)                 # a force on the mass, or a rotating unbalance's (F0 = m0 e ω²)
     if fo is not None:
         eqs += forced.report(fo[0], res, _ratio(fo[1], k, m, omega_n), zeta, k)
         if p.unbalance is not None:
@@ -85,7 +101,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if p.at or p.find:
         from dyncli.topics.vibration import find
 
-        find.report(p, res, omega_n, zeta)
+        find.report(setup(p, fo), res, omega_n, zeta)
     if p.sweep is not None:
         _sweep(p.sweep, zeta, res, p.zeta is not None)
         if fo is not None:
@@ -165,7 +181,7 @@ def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
 
 def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
     times = [float(ti) for ti in p.at]
-    fo = forced.forcing(p)
+    fo = forcing(p)
     if fo is None:      # the exact response at each time, in plain floats (no numpy)
         rows = [cf.response_at(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om) for ti in times]
     else:
