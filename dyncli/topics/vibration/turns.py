@@ -225,7 +225,8 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     F = jets(mo, T, d, np)[0]
     found = [T[1:-1][F[1:-1] == 0.0]]
     a, b, fa, fb = T[:-1], T[1:], F[:-1], F[1:]
-    touches, ends = [], [[], [], [], []]
+    touches: list = []
+    ends: list[list] = [[], [], [], []]
     cells = 0
     while a.size:
         m, h = 0.5 * (a + b), 0.5 * (b - a)
