@@ -118,6 +118,7 @@ def normal_acceleration(s, q, v, t, e) -> float:
     a, _, _ = s.solve(q, v, t)
     if isinstance(e, Rolls):
         i = e.body_point.body.index
-        return float(np.array(e.surface.n) @ np.array([a[i[0]], a[i[1]]]))
+        n = e.normal(q) if hasattr(e, "normal") else np.array(e.surface.n)     # a curve's n at the foot
+        return float(n @ np.array([a[i[0]], a[i[1]]]))
     acc = e.P.jac(q, s.n) @ a + e.P.bias(q, v)
     return float(e.normal(q) @ acc)

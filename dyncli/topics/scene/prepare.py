@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build, curved, start
 from .dynamics import SceneSystem
-from .contacts import Contact, Rolls
+from .contacts import Contact
 
 EPS = float(np.finfo(float).eps)
 
@@ -257,10 +257,5 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the point {e.P.label} is {-g:.6g} m on the wrong side of the surface "
                                  f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
                                  "n = e3 × d̂ (or reverse the surface's direction)", e.path)
-            if what == "slips" and isinstance(e, Rolls):
-                N, F = float(lm[0]), float(lm[1])
-                raise InputError(f"at t = 0 rolling needs |F| = {abs(F):.6g} N of friction, more than μ_s N = "
-                                 f"{e.mu_s * N:.6g} N: it slips at once (raise mu_s, or use a rough contact)",
-                                 e.path)
 
 

@@ -67,12 +67,6 @@ def run(scene: Scene, t_end: float, acc):
             raise NumericalError(f"the joints chatter at t = {t_b:.10g} s: {hit[1]!r} changes {phases.MAX_INSTANT} times "
                                  "at that instant (made and released again); the scene has no consistent joint "
                                  "set there")
-        if getattr(phases.element(s, hit[1]), "first_event_ends", False):
-            traj.stopped = t_b
-            traj.events.append(motion.Event(t_b, hit[1], hit[2]))
-            scene.warnings.append(f"{hit[1]!r} {hit[2]} at t = {t_b:.10g} s: rolling on a curve is followed to its "
-                                  "first event; the results at later times are null")
-            break
         if len(traj.phases) >= phases.MAX_PHASES:
             traj.stopped = t_b
             scene.warnings.append(f"the motion has {phases.MAX_PHASES} phases by t = {t_b:.10g} s (the most one solve "

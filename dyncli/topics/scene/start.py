@@ -51,7 +51,7 @@ def slack_by_length(cord: Cord, length: float | None, taut_length: float, path: 
 
 
 def _can_slip(e) -> bool:
-    return isinstance(e, Rolls) and e.mu_k is not None and not getattr(e, "first_event_ends", False)
+    return isinstance(e, Rolls) and e.mu_k is not None
 
 
 def slipping_given(system, q, v, vgiven) -> None:
