@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dyncli.errors import InputError, NumericalError
+from dyncli.errors import NumericalError
 from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
 
@@ -159,9 +159,27 @@ class _Foot:
 
 @dataclass
 class CurveContact(Contact):
-    """P on a curve, pushing only (smooth)."""
+    """P on a curve, pushing only; Coulomb friction along t̂ at the foot (kinetic −μ_k N sign
+    while sliding; sticking holds P where it stopped: the second row t̂ₛ·r_P = const with the
+    tangent t̂ₛ of that point, exact while P stays there)."""
 
     foot: _Foot = None
+    stick_t: tuple = (1.0, 0.0)
+
+    def phase(self):
+        return (self.mode, self.sign, self.stick_at, self.stick_t)
+
+    def set_phase(self, state) -> None:
+        self.mode, self.sign, self.stick_at, self.stick_t = state
+
+    def stick_here(self, q) -> None:
+        r = self.P.pos(q)
+        tt = self.foot.at(r)[1]
+        self.stick_t = (float(tt[0]), float(tt[1]))
+        self.stick_at = float(tt @ r)
+
+    def tangent_jac(self, q) -> np.ndarray:
+        return self.foot.at(self.P.pos(q))[1] @ self.P.jac(q, self.n)
 
     @property
     def linear(self):
@@ -174,23 +192,26 @@ class CurveContact(Contact):
         return self.foot.at(self.P.pos(q))[2]
 
     def phi(self, q, t):
-        return np.array([self.gap(q)])[:self.rows]
+        out = [self.gap(q)]
+        if self.mode == "stick":
+            out.append(float(np.array(self.stick_t) @ self.P.pos(q)) - self.stick_at)
+        return np.array(out[:self.rows])
 
     def jac(self, q):
         if not self.rows:                                   # released (a phase in flight): no row
             return np.zeros((0, self.n))
         n = self.foot.at(self.P.pos(q))[2]
-        return (n @ self.P.jac(q, self.n))[None, :]
+        JP = self.P.jac(q, self.n)
+        return np.array([n @ JP, np.array(self.stick_t) @ JP][:self.rows])
 
     def gamma(self, q, v, t):
         if not self.rows:
             return np.zeros(0)
         _, tt, n, k, d, _ = self.foot.at(self.P.pos(q))
         vp = self.P.vel(q, v)
-        return np.array([k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ self.P.bias(q, v))])
-
-    def friction_column(self, q):
-        return None
+        b = self.P.bias(q, v)
+        out = [k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ b), -float(np.array(self.stick_t) @ b)]
+        return np.array(out[:self.rows])
 
     def slip_speed(self, q, v) -> float:
         return float(self.foot.at(self.P.pos(q))[1] @ self.P.vel(q, v))
@@ -202,7 +223,10 @@ class CurveContact(Contact):
         _, tt, nn, k, d, _ = self.foot.at(self.P.pos(q))
         JP = self.P.jac(q, n)
         Hr = -k / (1 - k * d) * np.outer(tt, tt)
-        return w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
+        H = w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
+        if len(w) > 1:                                      # sticking: the held row's arm
+            H = H + point_hessian(self.P, q, w[1] * np.array(self.stick_t), n)
+        return H
 
     def watch(self, lam, q, v, t):
         m = self.surface.ends_margin(self.foot.at(self.P.pos(q))[0])
@@ -211,6 +235,10 @@ class CurveContact(Contact):
         out = [("separates", float(lam[0]))]
         if m is not None:
             out.append(("leaves", m))
+        if self.mode == "slide":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mode == "stick":
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out
 
 
@@ -350,12 +378,15 @@ class CurveRolls(Rolls):
 
 
 def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q) -> CurveContact:
-    if j["mu"] or j["mu_s"] or j["mu_k"]:
-        raise InputError("friction on a curved surface is not in this release: make the contact smooth (leave out "
-                         "mu), or use the constrained-particle type for a particle on a rough curve",
-                         path.rsplit(".", 1)[0] + ".mu")
+    """A contact on a curve, with its friction coefficients (mu for both, or mu_s / mu_k; one
+    given stands for the other, as on a line)."""
+    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+    if j.get("mu_k") is not None and j.get("mu_s") is None:
+        mu_s = mu_k
     foot = _Foot(curve, curve.first_foot(P.pos(q), j["at"]))
-    return CurveContact(name, kind, n, path, P=P, surface=curve, mode="smooth", foot=foot)
+    return CurveContact(name, kind, n, path, P=P, surface=curve, mu_s=mu_s, mu_k=mu_k,
+                        mode="slide" if (mu_s or mu_k) else "smooth", foot=foot, e=float(j.get("e") or 0.0))
 
 
 def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:

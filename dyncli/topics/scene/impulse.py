@@ -78,7 +78,7 @@ def _make(e, q) -> None:
     if isinstance(e, Rolls):
         e.c0 = e.roll_const(q)
     elif e.mode == "stick":
-        e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
+        e.stick_here(q)
 
 
 def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: bool = False):

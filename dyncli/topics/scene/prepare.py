@@ -205,7 +205,8 @@ def _initial_modes(system, q, v) -> None:
             if vt != 0:
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
             else:
-                e.mode, e.sign, e.stick_at = "stick", 0.0, float(np.array(e.surface.d) @ e.P.pos(q))
+                e.mode, e.sign = "stick", 0.0
+                e.stick_here(q)
                 at_rest.append(e)
     system.refresh()
     if not at_rest:

@@ -132,3 +132,66 @@ at: [0, 2]
     n = [-x0[0] / 0.9, -(x0[1] - 1) / 0.9]
     vv = v0[0] ** 2 + v0[1] ** 2
     assert math.isclose(vv / 0.9, -9.81 * n[1], rel_tol=1e-7)      # the ODE route's speed, 100 × rtol, squared
+
+
+def _rough_bowl_reference(mu, phi0, g=mp.mpf("9.81"), rho=1):
+    """[(t, φ, holds)] at each stop of a block sliding in a rough circular bowl: W = φ̇² solves
+    dW/dφ + 2 μ s W = −2 (g/ρ)(sin φ + μ s cos φ) in closed form (W(φ) = C e^{−2μsφ} + A sin φ
+    + B cos φ), its zero the stop, the time ∫ dφ/√W (mpmath, 30 digits)."""
+    out = []
+    with mp.workdps(30):
+        phi, t, c = phi0, mp.mpf(0), g / rho
+        for _ in range(8):
+            s = -mp.sign(phi)
+            A, B = mp.lu_solve(mp.matrix([[1, 2 * mu * s], [2 * mu * s, -1]]), mp.matrix([-2 * c * mu * s, -2 * c]))
+            C = -(A * mp.sin(phi) + B * mp.cos(phi)) * mp.exp(2 * mu * s * phi)
+
+            def w(p, A=A, B=B, C=C, s=s):
+                return C * mp.exp(-2 * mu * s * p) + A * mp.sin(p) + B * mp.cos(p)
+
+            p1 = mp.findroot(w, -phi / 2)
+            t += mp.quad(lambda p: 1 / mp.sqrt(abs(w(p))), sorted([p1, phi]))    # W ≥ 0 there; abs: its rounding at the ends
+            holds = abs(mp.tan(p1)) <= mu
+            out.append((t, p1, holds))
+            phi = p1
+            if holds:
+                return out
+    raise AssertionError("no stop")
+
+
+def test_block_slides_in_a_rough_bowl_until_it_sticks():
+    r = gallery("block-in-rough-bowl.yaml")["results"]
+    stops = _rough_bowl_reference(mp.mpf("0.2"), mp.pi / 3)
+    assert [h for _, _, h in stops] == [False, True]
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("c", "sticks")]
+    assert [ph["route"] for ph in r["phases"]] == ["ode", "ode", "statics"]
+    near(r["phases"][0]["t_end"], stops[0][0], stops[0][0], "slides back t")
+    t2, p2, _ = stops[1]
+    near(r["events"][0]["t"], t2, t2, "sticks t")
+    near(r["events"][0]["state"]["x"]["block"][0], mp.sin(p2), 1, "x at rest")
+    # at rest: the static friction that holds it, and the energy friction took
+    near(r["reaction"]["c"]["N"][3], 9.81 * mp.cos(p2), 9.81, "N at rest")
+    near(r["reaction"]["c"]["F"][3], 9.81 * mp.sin(p2), 9.81, "F at rest")
+    near(r["W_nc"][3], -9.81 * (mp.cos(p2) - mp.cos(mp.pi / 3)), 9.81, "W_nc")
+
+
+def test_rough_contact_on_a_curve_that_holds_at_rest():
+    # released 10° up a bowl with μ = 0.3 (tan 10° < 0.3): it stays (statics), F = m g sin 10°
+    from tests.conftest import solve_one_text
+
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  bowl: {curve: {x1: "sin(q)", x2: "-cos(q)"}}
+bodies:
+  block: {shape: point, mass: 2}
+joints:
+  c: {contact: [block, bowl], at: "10*deg", mu: 0.3}
+at: [0, 1]
+""")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    assert r["route"] == "statics" and r["events"] == []
+    b = mp.radians(10)
+    near(r["reaction"]["c"]["F"][1], 2 * 9.81 * mp.sin(b), 20, "F", 1e-12)
+    near(r["reaction"]["c"]["N"][1], 2 * 9.81 * mp.cos(b), 20, "N", 1e-12)

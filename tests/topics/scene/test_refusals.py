@@ -389,20 +389,6 @@ at: [0, 1]
     refusal(text, "surfaces.floor.direction", "needs direction", "curve")
 
 
-def test_friction_on_a_curve_refused_names_constrained_particle():
-    text = """\
-type: scene
-surfaces:
-  bowl: {curve: {x1: "sin(q)", x2: "-cos(q)"}}
-bodies:
-  A: {shape: point, mass: 1}
-joints:
-  c: {contact: [A, bowl], at: 0.3, mu: 0.2}
-at: [0, 1]
-"""
-    refusal(text, "joints.c.mu", "friction on a curved surface", "constrained-particle")
-
-
 def test_at_on_a_straight_contact_refused():
     text = """\
 type: scene
