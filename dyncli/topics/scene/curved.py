@@ -113,6 +113,8 @@ class CurveData:
         return got
 
     def _nearest(self, r, a: float, b: float) -> float:
+        # a starting table only: its best sample is Newton's guess (foot), which then converges to the
+        # exact nearest point; a nearer branch between samples needs the curve to fold back within 1/4000 of q_range
         qs = np.linspace(a, b, SEARCH)
         ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(SEARCH, float(e.value())) for e in self.y0])
         return float(qs[int(np.argmin((ys[0] - r[0]) ** 2 + (ys[1] - r[1]) ** 2))])
@@ -135,7 +137,7 @@ class CurveData:
 
     def polyline(self, n: int = 200) -> list[tuple[float, float]]:
         a, b = self.q_range if self.q_range is not None else (-math.pi, math.pi)
-        qs = np.linspace(a, b, n)
+        qs = np.linspace(a, b, n)           # the drawing's points (plots), never a decision
         ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(n, float(e.value())) for e in self.y0])
         return [(float(u), float(v)) for u, v in zip(ys[0], ys[1])]
 
