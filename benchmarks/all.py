@@ -15,7 +15,9 @@ medians).
 4. batches of 1, 10, 100 and 1,000 closed-form files (benchmarks/batch.py's
    problems) in table and JSON: CPU, wall, per problem, growth exponent;
 5. ``dyncli check --key`` at 30 and 300 submissions (3,000 with ``--big``;
-   benchmarks/check_key_batch.py's class): CPU, wall, growth exponent.
+   benchmarks/check_key_batch.py's class): CPU, wall, growth exponent;
+6. cold start of the integrating types over a student's scipy script of the
+   same problem (goal: <= 1.15), as benchmarks/cold_integrating.py.
 
 Usage: python -m benchmarks.all [--runs 3] [--big] [--only 1,3]
 """
@@ -194,11 +196,19 @@ def check(runs: int, big: bool) -> None:
     print(f"   growth {sizes[-2]}->{sizes[-1]}: CPU ~ N^{exponent(sizes[-2], res[-2][1], sizes[-1], res[-1][1]):.2f}")
 
 
+def cold_integrating(runs: int) -> None:
+    """6. cold start of the integrating types over a student's scipy script."""
+    from cold_integrating import report
+
+    print("\n6. ", end="")
+    report(max(runs, 5))
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--big", action="store_true", help="also 1e5-point sweeps and 3,000 submissions")
-    ap.add_argument("--only", default="1,2,3,4,5", help="sections to run, e.g. 1,3")
+    ap.add_argument("--only", default="1,2,3,4,5,6", help="sections to run, e.g. 1,3")
     ap.add_argument("--formats", default=",".join(FORMATS), help="the sweeps' formats, e.g. json,csv")
     args = ap.parse_args()
     only = {int(x) for x in args.only.split(",")}
@@ -206,7 +216,8 @@ def main() -> None:
     print(f"dyncli benchmarks (issue 31); load average {load[0]:.2f} on {os.cpu_count()} CPUs; "
           f"{time.strftime('%Y-%m-%d %H:%M:%S')}")
     for k, section in ((1, lambda: warm(args.runs)), (2, lambda: cold(args.runs)), (3, lambda: sweeps(args.runs, args.big, args.formats.split(","))),
-                       (4, lambda: batches(args.runs)), (5, lambda: check(args.runs, args.big))):
+                       (4, lambda: batches(args.runs)), (5, lambda: check(args.runs, args.big)),
+                       (6, lambda: cold_integrating(args.runs))):
         if k in only:
             section()
 

@@ -10,11 +10,11 @@
    * ode: a plain ``python -c "import numpy, scipy.integrate"``, and (the goal's own floor, when
      the scene has a hand-written script below) a cold plain scipy script that imports numpy and
      scipy.integrate and integrates the same equations in minimal coordinates at the file's
-     rtol; goal <= 1.2x that script.
+     rtol; goal <= 1.2x that script (the script's column is printed for a closed-form scene too).
 
-2. **Warm, at equal error** (as benchmarks/runner_cost.py): for the ODE scenes with a
-   hand-written script here (the double pendulum and the cart-pendulum when their files exist,
-   the sliding ladder and the pulled spool), the scene solver in process (the validated model
+2. **Warm, at equal error** (as benchmarks/runner_cost.py): for the scenes with a hand-written
+   script here (``SCRIPTS``: the double pendulum, the pendulum on a cart, the sliding ladder
+   through the wall's release, the Atwood machine, the pulled spool), the scene solver in process (the validated model
    reused: no YAML, no validation in the time) at a few rtols (atol = 1e-3 rtol); its error is
    the largest difference of the bodies' positions at the requested times from a tight
    reference (the script at rtol 1e-13), relative to the largest position.  The script
@@ -63,8 +63,10 @@ REF_RTOL = 1e-13
 # (P, at, t_end, rtol, atol) -> {body: [[x1, x2] or None per requested time]}; P: the file's params.
 
 def ladder_script(P, at, t_end, rtol, atol):
-    """θ from the floor: θ̈ = −(3g/2L) cos θ; the wall lets go where 3 sin θ = 2 sin θ0 (the
-    motion stops); find: the rod's angle π − θ = 130°."""
+    """θ from the floor: θ̈ = −(3g/2L) cos θ while both contacts hold; the wall lets go where
+    3 sin θ = 2 sin θ0; then on the floor alone ẍ = 0 (no horizontal force) and
+    (L²/4 cos²θ + L²/12) θ̈ = L²/4 cos θ sin θ θ̇² − g L/2 cos θ (Lagrange, by hand);
+    find: the rod's angle π − θ = 130°."""
     import math
 
     from scipy.integrate import solve_ivp
@@ -82,11 +84,43 @@ def ladder_script(P, at, t_end, rtol, atol):
     def find(t, y):
         return y[0] - 50 * math.pi / 180
 
+    def rhs2(t, y):                      # x, θ, ẋ, θ̇ on the floor alone
+        c, s = math.cos(y[1]), math.sin(y[1])
+        return [y[2], y[3], 0.0, (0.25 * L * L * c * s * y[3] * y[3] - 0.5 * g * L * c) / (L * L * (0.25 * c * c + 1 / 12))]
+
+    def find2(t, y):
+        return y[1] - 50 * math.pi / 180
+
     ts = [t for t in at if t <= t_end]
     sol = solve_ivp(rhs, (0.0, t_end), [th0, 0.0], method="DOP853", rtol=rtol, atol=atol, t_eval=ts,
                     events=[wall, find])
     out = [[L / 2 * math.cos(th), L / 2 * math.sin(th)] for th in sol.y[0]]
+    if sol.status == 1:                  # the wall let go: the second phase
+        t1, (th, w) = float(sol.t_events[0][0]), sol.y_events[0][0]
+        y1 = [L / 2 * math.cos(th), th, -L / 2 * math.sin(th) * w, w]
+        sol2 = solve_ivp(rhs2, (t1, t_end), y1, method="DOP853", rtol=rtol, atol=atol,
+                         t_eval=[t for t in ts if t > t1], events=[find2])
+        out += [[x, L / 2 * math.sin(th)] for x, th in zip(sol2.y[0], sol2.y[1])]
     return {"rod": out + [None] * (len(at) - len(out))}
+
+
+def atwood_script(P, at, t_end, rtol, atol):
+    """The fall of A: (m1 + m2 + Ī/R²) ÿ = −(m1 − m2) g with Ī = M R²/2 (a uniform disk), B rising
+    as A falls; find: A at x2 = −2."""
+    from scipy.integrate import solve_ivp
+
+    g, m1, m2, M, R = 9.81, P["m1"], P["m2"], P["M"], P["R"]
+    a = (m1 - m2) * g / (m1 + m2 + 0.5 * M)
+
+    def rhs(t, y):
+        return [y[1], -a]
+
+    def find(t, y):
+        return y[0] + 2.0
+
+    sol = solve_ivp(rhs, (0.0, t_end), [-1.0, 0.0], method="DOP853", rtol=rtol, atol=atol, t_eval=at,
+                    events=[find])
+    return {"A": [[-R, y] for y in sol.y[0]], "B": [[R, -2.5 - y] for y in sol.y[0]]}
 
 
 def spool_script(P, at, t_end, rtol, atol):
@@ -181,6 +215,7 @@ SCRIPTS = {   # file -> (script, defaults of its params: the gallery's values, t
                                                       "p1": math.pi / 3, "p2": math.pi / 9}),
     "cart-pendulum.yaml": (cart_pendulum_script, {"M": 2, "m": 0.5, "l": 0.6, "k": 40, "p0": 40 * math.pi / 180}),
     "sliding-ladder.yaml": (ladder_script, {"m": 10, "L": 5, "theta0": math.pi / 3}),
+    "atwood-massive-pulley.yaml": (atwood_script, {"m1": 3, "m2": 2, "M": 1, "R": 0.1}),
     "pulled-spool.yaml": (spool_script, {"m": 5, "I0": 0.2, "R": 0.3, "r": 0.15, "P": 20}),
 }
 
@@ -260,7 +295,7 @@ def cold(runs: int) -> None:
     cmds = [[py, "-c", "import numpy, pydantic, yaml, typer, rich"], [py, "-c", "import numpy, scipy.integrate"]]
     plain = {}
     for f in files:
-        if routes[f] == "ode" and f.name in SCRIPTS:
+        if f.name in SCRIPTS:
             data = file_data(f)
             fn, defaults = SCRIPTS[f.name]
             acc = data.get("accuracy") or {}
@@ -289,7 +324,8 @@ def cold(runs: int) -> None:
             s = f"{c / times[plain[f]][1]:10.2f}" if f in plain else f"{'-':>10}"
             judged = c / times[plain[f]][1] if f in plain else c / floor
         else:
-            floor, goal, s = cf_floor, CF_GOAL, f"{'':>10}"
+            floor, goal = cf_floor, CF_GOAL
+            s = f"{c / times[plain[f]][1]:10.2f}" if f in plain else f"{'':>10}"
             judged = c / floor
         flag = "  > goal" if judged > goal else ""
         if flag:
@@ -320,8 +356,7 @@ def scene_at(path: Path, rtol: float):
 
 
 def warm(rtols, repeats: int) -> list[Path]:
-    names = [n for n in ("double-pendulum.yaml", "cart-pendulum.yaml") if (SCENES / n).exists()]
-    names += [n for n in ("sliding-ladder.yaml", "pulled-spool.yaml") if (SCENES / n).exists()]
+    names = [n for n in SCRIPTS if (SCENES / n).exists()]
     print()
     print(f"2. warm at equal error: the scene solver (in process, solver only) over a plain solve_ivp DOP853 "
           f"script in minimal coordinates, CPU time, median of {repeats}; {load_line()}")
@@ -339,13 +374,14 @@ def warm(rtols, repeats: int) -> list[Path]:
         t_end = float(data.get("t_end", max(at)))
         ref = fn(P, at, t_end, REF_RTOL, REF_RTOL * 1e-3)
         rec, _ = scene_at(path, REF_RTOL)
-        if rec.get("error") or rec["results"].get("route") != "ode" or not set(ref) <= set(rec["results"]["x"]):
-            print(f"   {path.stem:<18} skipped: {rec.get('error') or 'not the ode route or other bodies'}")
+        if rec.get("error") or not set(ref) <= set(rec["results"]["x"]):
+            print(f"   {path.stem:<18} skipped: {rec.get('error') or 'other bodies'}")
             continue
         got = positions(rec, ref)
         offset = {b: [g - r for g, r in zip(got[b][0], ref[b][0])] for b in ref}
         agree = error(got, ref, offset)
-        print(f"   {path.stem:<18} scene at rtol {REF_RTOL:g} vs the script's reference: {agree:.1e}")
+        print(f"   {path.stem:<18} scene at rtol {REF_RTOL:g} vs the script's reference: {agree:.1e} "
+              f"(route {rec['results'].get('route')})")
         if not agree < 1e-8:
             print(f"   {'':<18} skipped: the file's scene is not the script's (another geometry or data)")
             continue

@@ -90,18 +90,18 @@ def _value(lp, ln: Link, src, outcome) -> float:
 
 
 def _check_unit(lp, ln: Link, have: str, name: str) -> None:
-    from dyncli.units import _clean, registry
+    from dyncli.units import clean_unit, registry
 
     where = f"params.{ln.name}.unit"
     assert ln.unit is not None                      # (called when the link gives one)
     ureg = registry()
     try:
-        given = ureg.Quantity(1.0, _clean(ln.unit))
+        given = ureg.Quantity(1.0, clean_unit(ln.unit))
     except Exception:  # noqa: BLE001 - pint's errors vary by version
         raise Failure(2, str(lp.diagnostic(where, f"unknown unit {ln.unit!r}"))) from None
     shown = have or "dimensionless"
     try:
-        factor = float(given.to(_clean(have) if have else "dimensionless").magnitude)
+        factor = float(given.to(clean_unit(have) if have else "dimensionless").magnitude)
     except Exception:  # noqa: BLE001 - a DimensionalityError: not the same kind of quantity
         raise Failure(2, str(lp.diagnostic(where, f"{name}'s {ln.path} is in {shown}, not {ln.unit}: a different "
                                                   "kind of quantity (take another result)"))) from None

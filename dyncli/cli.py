@@ -47,9 +47,9 @@ def _main(
 
 
 def _err(msg: str) -> None:
-    from dyncli.run import _err as say
+    from dyncli.run import print_error
 
-    say(msg)
+    print_error(msg)
 
 
 @app.command()

@@ -53,7 +53,8 @@ import time  # noqa: E402
 #: the CPU (seconds, this thread's) a solve may take when its file sets neither
 #: ``accuracy.max_cpu`` nor ``accuracy.max_steps``; a run projected beyond it is refused
 SOLVE_CPU = 2.0
-#: below this much CPU used no projection is made (one noisy probe must not refuse a cheap run)
+#: below this much CPU used, by the solve or by the run being projected, no projection is made
+#: (one noisy probe must not refuse a cheap run, nor a retry's first small steps)
 GRACE = 0.25
 
 _SOLVE: contextvars.ContextVar = contextvars.ContextVar("dyncli_solve_cpu", default=None)
@@ -103,7 +104,8 @@ def over_budget(cpu_leg0: float, done: float, left: float) -> tuple[float, float
     spent, limit = s
     if spent > limit:
         return spent, limit
-    if spent < GRACE or left <= 0:
-        return None
-    projected = spent + (time.thread_time() - cpu_leg0) * left / max(done, 1e-300)
+    leg = time.thread_time() - cpu_leg0
+    if spent < GRACE or leg < GRACE or left <= 0:    # (a leg's own first steps, e.g. a retry with
+        return None                                  # another method, do not project it: its rate settles)
+    projected = spent + leg * left / max(done, 1e-300)
     return (projected, limit) if projected > limit else None

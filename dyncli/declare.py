@@ -98,8 +98,23 @@ def R(name: str, symbol: str = "", unit: str = "", equations: str = "", meaning:
 
 
 class DeclarationError(ValueError):
-    """A declaration is wrong (an unknown result kind, a result declared twice): raised when the
+    """A declaration is wrong (an unknown result kind or unit, a result declared twice): raised when the
     declaration is built, at import, naming the type and the result."""
+
+
+def check_unit(unit: str) -> str | None:
+    """None for a result unit dyncli knows (``""``, or one of :data:`dyncli.units.RESULT_UNITS`),
+    else what is wrong with it."""
+    from dyncli.units import RESULT_UNITS
+
+    if not unit or unit in RESULT_UNITS:
+        return None
+    import difflib
+
+    near = difflib.get_close_matches(unit, sorted(RESULT_UNITS), n=1)
+    hint = f" (did you mean {near[0]!r}?)" if near else ""
+    return (f"unknown unit {unit!r}{hint}; a result's unit is an SI unit of dyncli.units.DIMENSIONS or one of "
+            "dyncli.units.EXTRA_RESULT_UNITS (add it there with what it measures)")
 
 
 def check_kind(kind: str) -> str | None:
@@ -137,8 +152,9 @@ class TypeSpec:
     * ``exact``: it has an exact route (``accuracy.method: exact``: elliptic functions, Kepler);
     * ``plots`` (not None): it draws plots of its own for ``--plot``.
 
-    Each result's ``kind`` is checked here: a misspelt kind is a :class:`DeclarationError` at
-    import, naming the type and the result (it would otherwise drop the result from the schema).
+    Each result's ``kind`` and ``unit`` are checked here: a misspelt kind or an unknown unit is a
+    :class:`DeclarationError` at import, naming the type and the result (a kind would otherwise drop
+    the result from the schema; a unit would print unchecked and escape ``--units``).
     """
 
     def __init__(self, name: str, title: str, sections: str, model: Any, solve: Any = "solver:solve",
@@ -157,7 +173,7 @@ class TypeSpec:
         self._by_name: dict[str, ResultSpec] = {}
         self._patterns: list[ResultSpec] = []
         for r in self.results:
-            wrong = check_kind(r.kind)
+            wrong = check_kind(r.kind) or check_unit(r.unit)
             if wrong:
                 raise DeclarationError(f"type {name!r}, result {r.name!r}: {wrong}")
             if r.part_of is not None:

@@ -76,14 +76,14 @@ def _over_index(result) -> list[tuple[str, list, list[str]]]:
     return list(groups.values())
 
 
-def _at(value: Any, i: int) -> Any:
+def element_at(value: Any, i: int) -> Any:
     """Element ``i`` of a list over the index (or of each list of a mapping of them)."""
     if hasattr(value, "tolist"):
         value = value.tolist()
     if isinstance(value, (list, tuple)):
         return value[i] if i < len(value) else None
     if isinstance(value, Mapping):
-        return {k: _at(v, i) for k, v in value.items()}
+        return {k: element_at(v, i) for k, v in value.items()}
     return value
 
 
@@ -103,7 +103,7 @@ def rows(sol, long: bool) -> list[dict]:
         for i, iv in enumerate(index):
             row = flat(iv, index_name, dict(head))
             for n in names:
-                flat(_at(results[n], i), n, row)
+                flat(element_at(results[n], i), n, row)
             row.update(rest)
             out.append(row)
     return out

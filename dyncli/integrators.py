@@ -1,7 +1,12 @@
-"""scipy's integrators as dyncli names them: the one method map (``accuracy.method`` -> scipy's
-``OdeSolver`` class) and the one rtol floor.  Below both :mod:`dyncli.ode` (the stepping loop and
-the budget step with them) and :mod:`dyncli.runner` (the contract the routes call, which
-re-exports them); scipy is imported only when a class is asked for.
+"""The integrators as dyncli names them: the one method map (``accuracy.method`` -> the stepper
+class) and the one rtol floor.  Below both :mod:`dyncli.ode` (the stepping loop and the budget
+step with them) and :mod:`dyncli.runner` (the contract the routes call, which re-exports them).
+
+DOP853 (the default, and ``auto``/``ode``/``exact``/``projected``) steps with dyncli's own copy of
+scipy's stepper (:mod:`dyncli.dop853`, bit-identical to scipy's), so that a route that steps
+explicitly never imports ``scipy.integrate`` (about 0.3 s of a cold start); RK45, Radau and
+LSODA, and every class handed to scipy's ``solve_ivp`` driver (``scipy=True``), are scipy's own,
+imported only when asked for.
 """
 
 from __future__ import annotations
@@ -29,8 +34,15 @@ def scipy_method(method: str) -> str:
     return name
 
 
-def solver_class(method: str):
-    """The one method map: scipy's ``OdeSolver`` class for ``accuracy.method``."""
+def solver_class(method: str, *, scipy: bool = False):
+    """The one method map: the stepper class for ``accuracy.method`` — dyncli's DOP853
+    (:mod:`dyncli.dop853`) or scipy's ``OdeSolver`` class (always with ``scipy=True``: scipy's
+    ``solve_ivp`` driver takes its own classes only)."""
+    name = scipy_method(method)
+    if name == "DOP853" and not scipy:
+        from dyncli.dop853 import DOP853
+
+        return DOP853
     from scipy import integrate as si
 
-    return getattr(si, scipy_method(method))
+    return getattr(si, name)

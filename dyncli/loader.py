@@ -291,9 +291,9 @@ def _message(cls, err: Mapping[str, Any]) -> str:
 
 
 def _shown(x: Any) -> str:
-    from dyncli.expr import _kind
+    from dyncli.expr import kind_of
 
-    return repr(x) if isinstance(x, (str, int, float)) and not isinstance(x, bool) and len(repr(x)) <= 40 else _kind(x)
+    return repr(x) if isinstance(x, (str, int, float)) and not isinstance(x, bool) and len(repr(x)) <= 40 else kind_of(x)
 
 
 def _entries(n: Any) -> str:

@@ -80,7 +80,7 @@ class StateMotion:
         """The states at every sample of the search grid (up to ``upto``) in one ``batch`` call
         (when given)."""
         if self.batch is not None:
-            T = [t for t in _q._grid(self.breaks, self.t0, self.t_end, _q._pieces(self))
+            T = [t for t in _q.sample_grid(self.breaks, self.t0, self.t_end, _q.subdivisions(self))
                  if t not in self._cache and (upto is None or t <= upto)]
             if not T:                               # (a batch of no times is no solve)
                 return
@@ -170,7 +170,7 @@ class Odometer:
         import numpy as np
 
         self.speeds, self.np = speeds, np
-        self.x, self.w = np.polynomial.legendre.leggauss(nodes)
+        self.x, self.w = _leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
         S = self._nodes(self.pts[:-1], self.pts[1:])
         stops = self._stops(S)
@@ -227,6 +227,19 @@ class Odometer:
         if np.any(inside):
             part[inside] = self._pieces(lo[inside], t[inside])
         return (self.cum[k] + part + 0.0).tolist()
+
+
+def _leggauss(nodes: int):
+    """Gauss–Legendre nodes and weights on [-1, 1], computed once per count (~0.1 ms each)."""
+    got = _LEGGAUSS.get(nodes)
+    if got is None:
+        import numpy as np
+
+        got = _LEGGAUSS[nodes] = np.polynomial.legendre.leggauss(nodes)
+    return got
+
+
+_LEGGAUSS: dict = {}
 
 
 def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float],
@@ -292,14 +305,14 @@ def turns(rate: Callable[[float], float], breaks: Iterable[float], subdivide: in
     """The roots of ``rate`` where it changes sign (Brent), over the :mod:`dyncli.queries` grid of
     the breaks: the turning points of the coordinate whose rate it is."""
     b = sorted(float(x) for x in breaks)
-    T = _q._grid(b, b[0], b[-1], subdivide)
+    T = _q.sample_grid(b, b[0], b[-1], subdivide)
     R = [rate(t) for t in T]
     out = []
     for k in range(len(T) - 1):
         if R[k] == 0.0 and k > 0:
             out.append(T[k])
         elif R[k] * R[k + 1] < 0:
-            out.append(_q._root(rate, T[k], T[k + 1]))
+            out.append(_q.root(rate, T[k], T[k + 1]))
     return out
 
 

@@ -15,10 +15,11 @@
 * ``error_estimate``: :func:`relative_difference`, the largest difference between the
   reported and the check run of every reported quantity, each relative to its own scale
   over the run.
-* Stepping: :func:`steps`, the one loop over scipy's public ``OdeSolver.step`` (every route's
+* Stepping: :func:`steps`, the one loop over the stepper's ``step`` (scipy's ``OdeSolver`` interface,
+  which dyncli's own DOP853 of :mod:`dyncli.dop853` has too; every route's
   own loop — :func:`integrate`, the particle's phases, the top's tracker, rectilinear's event
   march — iterates it), each step counted, a failed step :class:`StepFailed`.
-* Dense output only through scipy's public ``OdeSolver.dense_output()``
+* Dense output only through the public ``dense_output()`` of the stepper
   (:func:`dense_output`), never its private interpolant internals.
 * The error_estimate without a check solve: :func:`nominal_estimate`.
 
@@ -26,7 +27,7 @@ The loop lets the caller read the state at the requested times from each step's 
 output, look at every accepted step (``on_step``) and project the state back onto invariant
 manifolds after it (``project``; method "projected" = DOP853 + projection).
 
-scipy is imported lazily, only when a problem actually integrates.
+scipy is imported lazily, only when a route asks for one of its integrators.
 """
 
 from __future__ import annotations
@@ -85,12 +86,14 @@ class Budget:
     def leg(self, t0: float, t_goal: float) -> None:
         self.t0, self.goal = float(t0), float(t_goal)
         self._n_leg = self._n_win = 0
-        self._t_win = self.t0
+        self._t_win = self._t_cpu0 = self.t0
         self._cpu_leg0 = time.thread_time()
 
     def tick(self, t: float, t_old: float | None = None, y=None) -> None:
         self.n += 1
         self._n_leg += 1
+        if self._n_leg == 1:     # the leg's CPU rate is timed from its first step on: what came before
+            self._cpu_leg0, self._t_cpu0 = time.thread_time(), float(t)   # (an integrator's import) is not its rate
         self._n_win += 1
         h = abs(t - t_old) if t_old is not None else 0.0
         self.hmax = max(self.hmax, h)
@@ -107,7 +110,7 @@ class Budget:
         if need is not None:
             raise OverBudget(self.goal, need, self.limit, t, y, h)
         if self._n_leg % CPU_PROBE == 0:
-            cpu = cputime.over_budget(self._cpu_leg0, abs(t - self.t0), abs(self.goal - t))
+            cpu = cputime.over_budget(self._cpu_leg0, abs(t - self._t_cpu0), abs(self.goal - t))
             if cpu is not None:
                 raise OverCpu(self.goal, *cpu, self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300), t, y, h)
 
@@ -168,16 +171,17 @@ def steps(solver, budget: Budget | None, method: str):
         yield solver
 
 
-def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check_finite: bool = True):
-    """scipy's solver class for ``method`` (the one method map,
-    :func:`dyncli.integrators.solver_class`; for ``solve_ivp(method=...)``) with every accepted
+def budgeted(method: str, budget: Budget, *, stop_nonfinite: bool = False, check_finite: bool = True,
+             scipy: bool = False):
+    """The stepper class for ``method`` (the one method map, :func:`dyncli.integrators.solver_class`;
+    ``scipy=True``: scipy's own, for ``solve_ivp(method=...)``) with every accepted
     step counted by ``budget`` and a rate that is not finite raised as
     :class:`NonFiniteRate` (``check_finite=False``: the right-hand side checks its own).
     ``stop_nonfinite``: instead, a non-finite rate or state ends the integration as failed
     (status -1, with the reason) at the last good step."""
-    base = solver_class(method)
+    base = solver_class(method, scipy=scipy)
 
-    class Budgeted(base):  # type: ignore[misc, valid-type]  # scipy's class for the method, chosen at run time
+    class Budgeted(base):  # type: ignore[misc, valid-type]  # the method's class, chosen at run time
         def __init__(self, fun, *args, **kw):
             super().__init__(finite(fun) if check_finite else fun, *args, **kw)
 
@@ -385,8 +389,8 @@ def check_solve(res, run, rtol: float, atol: float, *, fallback: bool = True):
 
 
 def dense_output(solver):
-    """The interpolant of ``solver``'s last accepted step, through scipy's public API only
-    (``OdeSolver.dense_output()``: a ``DenseOutput`` callable on a float or an array of times)."""
+    """The interpolant of ``solver``'s last accepted step, through the public ``dense_output()``
+    of scipy's ``OdeSolver`` interface (a callable on a float or an array of times)."""
     return solver.dense_output()
 
 

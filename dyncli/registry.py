@@ -24,6 +24,20 @@ from dyncli.declare import CAPABILITIES, TypeSpec
 
 _TOPICS = os.path.join(os.path.dirname(__file__), "topics")
 
+#: A topic package holding one type is named after it (``constrained-particle`` in
+#: ``dyncli/topics/constrained_particle``).  The packages named otherwise, and why; exactly these
+#: (tests/test_code_shape.py): a new package is named after its type, or gets its line here.
+PACKAGE_NAMES: dict[str, str] = {
+    "particle_systems": "holds `particles` (§24-§27, systems of particles); `particles` beside the "
+                        "`particle` package would differ by one letter from a different topic",
+    "rigid_kinematics": "one chapter's four types: rigid-velocity, angular-velocity (§13), screw (§14) "
+                        "and contact (§15), one model module of rigid-body kinematics",
+    "rigid_kinetics": "rigid-body kinetics, two types on one model and one set of equations: "
+                      "planar-moments (§32) and rigid-energy (§34)",
+    "rigid_systems": "§36's systems of rigid bodies and point masses, two types on one model: "
+                     "spin-change (H conserved) and motor-bodies (36.40)",
+}
+
 
 def _first_section(spec: TypeSpec) -> int:
     nums = [int(n) for n in re.findall(r"§\s*(\d+)", spec.sections)]

@@ -170,7 +170,7 @@ COMMON_UNITS = ("deg", "rad", "rev", "rpm", "mm", "cm", "m", "km", "s", "ms", "m
                 "J", "kJ", "W", "kW", "Hz", "m/s", "km/h", "mph", "N*m", "N/m", "lbf", "ft", "in")
 
 
-def _err(msg: str) -> None:
+def print_error(msg: str) -> None:
     """One message on stderr, always through the escaper: control characters
     visible (a --set path or a title cannot forge a second line or drive the
     terminal), a very long line shortened (:func:`dyncli.printable.line`)."""
@@ -199,12 +199,12 @@ def parse_units(text: str | None) -> list[str] | None:
     if not wanted:
         raise InputError("--units: give one or more unit names, e.g. --units deg,rpm,mm")
     from dyncli.expr import did_you_mean
-    from dyncli.units import _clean, registry
+    from dyncli.units import clean_unit, registry
 
     ureg = registry()
     for w in wanted:
         try:
-            ureg.parse_units(_clean(w))
+            ureg.parse_units(clean_unit(w))
         except Exception:  # noqa: BLE001 - pint's errors vary by version
             raise InputError(f"--units: unknown unit {w!r}{did_you_mean(w, COMMON_UNITS)}") from None
     return wanted
@@ -212,14 +212,14 @@ def parse_units(text: str | None) -> list[str] | None:
 
 def _symbolic_notes(fmt: str, types: list) -> None:
     if fmt in ("json", "yaml", "csv"):
-        _err(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
+        print_error(f"--symbolic: formulas appear only in the table, markdown and latex views, not in --format {fmt}")
         return
     from dyncli import registry
 
     with_view = registry.having("symbolic")
     lacking = sorted({t for t in types if t and t not in with_view})
     if lacking:
-        _err(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(with_view)})")
+        print_error(f"--symbolic: no symbolic view for {', '.join(lacking)} (types with one: {', '.join(with_view)})")
 
 
 def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], lazy: bool = False):
@@ -232,16 +232,16 @@ def _options_and_problems(files: list[str], sets: list[str], sweeps: list[str], 
     try:
         assigns = [parse_set(s) for s in sets] + [parse_sweep(s) for s in sweeps]
     except OverrideError as exc:
-        _err(exc.message)
+        print_error(exc.message)
         return None
     problems, diags = load_paths(files)
     for d in diags:
-        _err(str(d))
+        print_error(str(d))
     types = [lp.type for lp in problems]
     try:
         problems = expand(problems, assigns, lazy)
     except OverrideError as exc:
-        _err(exc.message)
+        print_error(exc.message)
         return None
     return (problems, [2 for _ in diags], types) if lazy else (problems, [2 for _ in diags])
 
@@ -259,7 +259,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         if long and fmt != "csv":
             raise InputError("--long works only with --format csv (one row per time): add --format csv")
     except InputError as exc:
-        _err(exc.message)
+        print_error(exc.message)
         return 2
     streamed = fmt in ("json", "yaml", "csv") and not plot      # one point held at a time: collections stay cheap
     with _no_gc(bool(sweeps) and not streamed):
@@ -284,7 +284,7 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         codes.append(_plot(outcomes, plot))
     if fmt in ("json", "yaml", "csv") or (fmt == "table" and sweeps):      # a sweep's table: rows only
         for w in notes:
-            _err(w)
+            print_error(w)
     return worst(codes)
 
 
@@ -347,15 +347,15 @@ def _plot(outcomes: list[Outcome], path: str) -> int:
     try:
         plotting.check_path(path)
         if not n:
-            _err("--plot: none of these problem types draws a plot")
+            print_error("--plot: none of these problem types draws a plot")
         elif plotting.is_dir_target(path):
             written = plotting.save_each(groups, path)
-            _err(f"wrote {n} plot panel(s) to {len(written)} file(s) in {path}")
+            print_error(f"wrote {n} plot panel(s) to {len(written)} file(s) in {path}")
         else:
             plotting.save([pan for g in groups for pan in g[2]], path)
-            _err(f"wrote {n} plot panel(s) to {path}")
+            print_error(f"wrote {n} plot panel(s) to {path}")
     except InputError as exc:
-        _err(exc.message)
+        print_error(exc.message)
         return 2
     return 0
 

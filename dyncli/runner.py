@@ -5,12 +5,14 @@ hooks of :class:`Route` (or the functions below), and this module owns the polic
 
 What lives here, once:
 
-* :data:`METHODS` / :func:`solver_class` — the one map from ``accuracy.method`` to scipy's
-  ``OdeSolver`` class (``auto``, ``ode``, ``exact`` and ``projected`` step with DOP853);
+* :data:`METHODS` / :func:`solver_class` — the one map from ``accuracy.method`` to the stepper
+  class (``auto``, ``ode``, ``exact`` and ``projected`` step with DOP853: dyncli's own copy of
+  scipy's, :mod:`dyncli.dop853`, so an explicit route never imports ``scipy.integrate``);
 * :data:`RTOL_FLOOR` / :func:`floor_rtol` — the one rtol floor (scipy's smallest rtol,
   100 machine epsilons);
   both defined in :mod:`dyncli.integrators` (which :mod:`dyncli.ode` uses too) and taken from here;
-* :func:`solve_ivp` and :func:`ode_solution` — scipy's driver and piecewise interpolant, with
+* :func:`solve_ivp` and :func:`ode_solution` — scipy's driver (with scipy's classes) and the
+  piecewise interpolant, with
   every accepted step counted by the work budget (:class:`dyncli.ode.Budget`);
 * :class:`Route` — the contract of a route (below), whose :meth:`Route.estimate_error` is the
   check-solve and fallback policy (:func:`dyncli.ode.check_solve`,
@@ -38,13 +40,13 @@ def solve_ivp(fun, t_span, y0, *, method: str, budget, check_finite: bool = True
     ending the run as failed; ``check_finite=False``: ``fun`` checks its own rates)."""
     from scipy.integrate import solve_ivp as scipy_solve_ivp
 
-    cls = ode.budgeted(method, budget, stop_nonfinite=stop_nonfinite, check_finite=check_finite)
+    cls = ode.budgeted(method, budget, stop_nonfinite=stop_nonfinite, check_finite=check_finite, scipy=True)
     return scipy_solve_ivp(fun, t_span, y0, method=cls, **kw)
 
 
 def ode_solution(ts, interpolants):
-    """One interpolant over consecutive steps (scipy's ``OdeSolution``)."""
-    from scipy.integrate import OdeSolution
+    """One interpolant over consecutive steps (scipy's ``OdeSolution``, as :mod:`dyncli.dop853` has it)."""
+    from dyncli.dop853 import OdeSolution
 
     return OdeSolution(ts, interpolants)
 

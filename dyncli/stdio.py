@@ -194,7 +194,7 @@ def table_width(wide: bool = False) -> int | None:
     cols = os.environ.get("COLUMNS", "").strip()
     if cols.isdigit() and MIN_COLUMNS <= int(cols) < NATURAL_WIDTH:
         return int(cols)
-    if _isatty():
+    if stdout_is_terminal():
         try:
             width = os.get_terminal_size(_stdout_fd()).columns
         except (OSError, AttributeError, ValueError):
@@ -235,7 +235,8 @@ def _umask() -> int:
     return mask
 
 
-def _isatty() -> bool:
+def stdout_is_terminal() -> bool:
+    """Whether stdout is a terminal (False for a pipe, a file, or a stream that cannot say)."""
     try:
         return bool(sys.stdout.isatty())
     except (AttributeError, ValueError):

@@ -49,6 +49,17 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "pressure": ("[mass]/[length]/[time]**2", "Pa", "a pressure"),
 }
 
+#: units a result may be declared in besides the SI units of :data:`DIMENSIONS` (composites that
+#: name no field dimension); every declared result unit is one of :data:`RESULT_UNITS`, checked when
+#: the declaration is built (:class:`dyncli.declare.TypeSpec`), so ``--units`` can convert it
+EXTRA_RESULT_UNITS: dict[str, str] = {
+    "m/rad": "a screw's pitch (length per radian)",
+    "1/m": "a curvature",
+    "m²/s": "an angular momentum per unit mass (r² θ̇)",
+    "kg·m/s": "a linear momentum (= N·s)",
+}
+RESULT_UNITS = frozenset({v[1] for v in DIMENSIONS.values() if v[1]} | set(EXTRA_RESULT_UNITS))
+
 _ALIASES = {"angular_rate": "angular_velocity", "rate": "angular_velocity", "spin": "angular_velocity",
             "moment_of_inertia": "inertia", "rotational_inertia": "inertia", "distance": "length",
             "position": "length", "speed": "velocity", "ratio": "dimensionless", "coefficient": "dimensionless"}
@@ -132,8 +143,6 @@ def clean_unit(unit: str, angular: bool = False) -> str:
     return (unit.replace("²", "**2").replace("³", "**3").replace("·", "*").replace("^", "**")
             .replace("°", "degree ").strip())
 
-
-_clean = clean_unit     # the name dyncli/run.py imports
 
 
 def parse_quantity(text: str, dim: str | None = None) -> float:

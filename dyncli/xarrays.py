@@ -15,7 +15,7 @@ import math
 from typing import Any
 
 from dyncli.errors import InputError
-from dyncli.frames import _at, column_unit, field_unit, flat, need
+from dyncli.frames import column_unit, element_at, field_unit, flat, need
 
 
 def _one_problem(sols: list, problem: int | None) -> list:
@@ -72,7 +72,7 @@ def _series_columns(sols: list, names: list[str], nt: int) -> dict[str, list]:
     cols: dict[str, list] = {}
     for k, s in enumerate(sols):
         for i in range(nt):
-            for c, v in flat({n: _at(s.results[n], i) for n in names}, "", {}).items():
+            for c, v in flat({n: element_at(s.results[n], i) for n in names}, "", {}).items():
                 cols.setdefault(c, [[None] * nt for _ in sols])[k][i] = v
     return cols
 

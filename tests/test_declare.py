@@ -162,6 +162,20 @@ def test_a_misspelt_kind_is_an_error_at_declaration_naming_type_and_result():
     TypeSpec(name="toy-ok", title="t", sections="§17", model=Toy, results=[R("x", kind="list|number"), R("y")])
 
 
+def test_an_unknown_result_unit_is_an_error_at_declaration_naming_type_and_result():
+    from dyncli.declare import DeclarationError
+    from dyncli.units import RESULT_UNITS, display_factor
+
+    with pytest.raises(DeclarationError, match=r"type 'toy-typo', result 'omega_n': unknown unit 'rad/sec' "
+                                                r"\(did you mean 'rad/s'\?\)"):
+        TypeSpec(name="toy-typo", title="t", sections="§17", model=Toy, results=[R("omega_n", "ωₙ", "rad/sec")])
+    with pytest.raises(DeclarationError, match=r"result 'F': unknown unit 'newton'"):
+        TypeSpec(name="toy-typo", title="t", sections="§17", model=Toy, results=[R("F", "F", "newton")])
+    # every unit a result may be declared in is one pint reads (so --units can convert it)
+    for unit in RESULT_UNITS:
+        assert display_factor(unit, [unit]) is not None, unit
+
+
 def test_a_misspelt_dimension_is_an_error_when_the_model_is_built_naming_type_and_field():
     from typing import Optional
 

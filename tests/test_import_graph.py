@@ -146,15 +146,3 @@ def test_no_import_circle_in_check_render_or_run():
     """The circles issue #26 names are gone for good: none in dyncli/check, none through render and run.py."""
     for c in cycles(import_graph()):
         assert not any(m.startswith(("dyncli.check", "dyncli.render")) or m == "dyncli.run" for m in c), c
-
-
-def test_no_private_name_imported_across_modules_in_check():
-    """dyncli/check shares no private name (``_x``) between its modules: what
-    two modules share is public (issue #26, "modules along concepts")."""
-    found = []
-    for path in sorted((PKG / "check").rglob("*.py")):
-        for node in _imports(ast.parse(path.read_text(encoding="utf-8"), str(path))):
-            if isinstance(node, ast.ImportFrom) and ((node.module or "").startswith("dyncli") or node.level):
-                found += [f"{path.relative_to(ROOT)}:{node.lineno}: {a.name}" for a in node.names
-                          if a.name.startswith("_") and not a.name.startswith("__")]
-    assert not found, "private names imported across modules:\n" + "\n".join(found)

@@ -28,10 +28,13 @@ class Oscillator(runner.Route):
 def test_one_method_map_and_floor():
     from scipy import integrate as si
 
+    from dyncli.dop853 import DOP853
+
     for name in runner.METHODS:
-        assert runner.solver_class(name) is getattr(si, name)
+        assert runner.solver_class(name, scipy=True) is getattr(si, name)
+        assert runner.solver_class(name) is (DOP853 if name == "DOP853" else getattr(si, name))
     for alias in ("auto", "ode", "exact", "projected"):
-        assert runner.solver_class(alias) is si.DOP853
+        assert runner.solver_class(alias) is DOP853 and runner.solver_class(alias, scipy=True) is si.DOP853
     with pytest.raises(ValueError):
         runner.solver_class("Euler")
     assert ode.RTOL_FLOOR == runner.RTOL_FLOOR == 100 * np.finfo(float).eps * 1.0001

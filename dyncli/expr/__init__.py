@@ -28,12 +28,18 @@ IR nodes::
 
 from __future__ import annotations
 
-from dyncli.expr.language import (  # noqa: F401
+from dyncli.expr.language import (
     CONSTANTS, FUNCTIONS, MAX_CHAIN, MAX_DEPTH, MAX_LENGTH, MAX_NODES, MAX_PARAMS, RESERVED,
-    ExpressionError, _kind, did_you_mean,
+    ExpressionError, did_you_mean, kind_of,
 )
-from dyncli.expr.evaluate import _compile, _fold, _funcs, _np_funcs  # noqa: F401
-from dyncli.expr.sympy_bridge import to_sympy  # noqa: F401
-from dyncli.expr.node import Expr  # noqa: F401
-from dyncli.expr.parser import _BINOPS, _FORBIDDEN_NAMES, _Converter, constant, parse  # noqa: F401
-from dyncli.expr.params import resolve_params  # noqa: F401
+from dyncli.expr.evaluate import compile_ir, fold
+from dyncli.expr.sympy_bridge import to_sympy
+from dyncli.expr.node import Expr
+from dyncli.expr.parser import constant, parse
+from dyncli.expr.params import resolve_params
+
+__all__ = [
+    "CONSTANTS", "FUNCTIONS", "MAX_CHAIN", "MAX_DEPTH", "MAX_LENGTH", "MAX_NODES", "MAX_PARAMS", "RESERVED",
+    "ExpressionError", "Expr", "compile_ir", "constant", "did_you_mean", "fold", "kind_of", "parse",
+    "resolve_params", "to_sympy",
+]

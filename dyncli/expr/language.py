@@ -44,7 +44,9 @@ def did_you_mean(word: str, candidates: Iterable[str]) -> str:
     return f" (did you mean '{close[0]}'?)" if close else ""
 
 
-def _kind(x: Any) -> str:
+def kind_of(x: Any) -> str:
+    """What a value of the wrong kind is, for an error message: "a mapping", "a list",
+    "nothing (null)" or its type's name."""
     if isinstance(x, dict):
         return "a mapping"
     if isinstance(x, list):

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
-from dyncli.expr.evaluate import _compile, _fold
+from dyncli.expr.evaluate import compile_ir, fold
 from dyncli.expr.sympy_bridge import to_sympy
 
 
@@ -34,7 +34,7 @@ class Expr:
         keyword packing and no per-call ``np.errstate`` (the caller runs inside one)."""
         fn = self._fn
         if fn is None:
-            fn = _compile(self.ir)
+            fn = compile_ir(self.ir)
             object.__setattr__(self, "_fn", fn)
         return fn
 
@@ -62,7 +62,7 @@ class Expr:
         """The value of a constant expression."""
         if self.variables:
             raise ValueError("not a constant expression")
-        return _fold(self.ir)
+        return fold(self.ir)
 
     # -- symbolic ---------------------------------------------------------
     def to_sympy(self, symbols: Mapping[str, Any] | None = None, keep_params: bool = False):

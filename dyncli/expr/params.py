@@ -7,7 +7,7 @@ import math
 from typing import Any, Mapping
 
 from dyncli.errors import InputError
-from dyncli.expr.language import MAX_PARAMS, RESERVED, _kind
+from dyncli.expr.language import MAX_PARAMS, RESERVED, kind_of
 from dyncli.expr.node import Expr
 from dyncli.expr.parser import parse
 
@@ -18,7 +18,7 @@ def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
     import keyword
 
     if not isinstance(raw, Mapping):
-        raise InputError(f"params must be a mapping name: value, got {_kind(raw)}", "params")
+        raise InputError(f"params must be a mapping name: value, got {kind_of(raw)}", "params")
     names = list(raw)
     if len(names) > MAX_PARAMS:
         raise InputError(f"too many params ({len(names)}, at most {MAX_PARAMS})", "params")

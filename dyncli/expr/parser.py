@@ -7,9 +7,9 @@ import math
 import re
 from typing import Any, Iterable, Mapping
 
-from dyncli.expr.evaluate import _fold
+from dyncli.expr.evaluate import fold
 from dyncli.expr.language import (
-    CONSTANTS, FUNCTIONS, MAX_CHAIN, MAX_DEPTH, MAX_LENGTH, MAX_NODES, ExpressionError, _kind, did_you_mean,
+    CONSTANTS, FUNCTIONS, MAX_CHAIN, MAX_DEPTH, MAX_LENGTH, MAX_NODES, ExpressionError, kind_of, did_you_mean,
 )
 from dyncli.expr.node import Expr
 
@@ -61,7 +61,7 @@ def parse(
         return Expr(str(text), ("num", v), allowed)
     if not isinstance(text, str):
         raise ExpressionError(
-            f"expected a number or an expression string, got {_kind(text)}"
+            f"expected a number or an expression string, got {kind_of(text)}"
         )
     src = text.strip()
     if not src:
@@ -96,7 +96,7 @@ def parse(
     expr = Expr(src, ir, allowed, frozenset(conv.used_vars), frozenset(conv.used_params))
     if expr.is_constant:
         # fold now: catches overflow (9**9**9) and domain errors early
-        _fold(ir, src)
+        fold(ir, src)
     return expr
 
 

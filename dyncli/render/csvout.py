@@ -47,7 +47,10 @@ def flatten(value: Any, prefix: str, out: dict) -> dict:
     return out
 
 
-def _rows_of(lp, result, error: str | None, long: bool) -> Iterable[dict]:
+def rows_of(lp, result, error: str | None, long: bool) -> Iterable[dict]:
+    """The CSV rows of one outcome as flat mappings column -> text: one row of its results, or with
+    ``long`` one per time of its series (the other results repeated); a failed problem one row
+    with its ``error``."""
     head = flatten(getattr(lp, "swept", None) or {}, "", {"file": lp.file, "index": str(lp.index), "type": lp.type})
     if result is None:
         yield {**head, "error": (error or "").replace("\n", "; ")}
@@ -96,7 +99,7 @@ def _plain(v):
     return v
 
 
-def _cell(text: str) -> str:
+def cell(text: str) -> str:
     """Every cell (file names, titles, swept text, messages are user text):
     printable, and never read as a formula by a spreadsheet."""
     return csv_cell(printable(text))
@@ -104,7 +107,7 @@ def _cell(text: str) -> str:
 
 def dumps(outcomes: Iterable[tuple], long: bool = False) -> str:
     """``outcomes``: (loaded problem, Result or None, error message or None)."""
-    rows = [r for lp, res, err in outcomes for r in _rows_of(lp, res, err, long)]
+    rows = [r for lp, res, err in outcomes for r in rows_of(lp, res, err, long)]
     columns: dict[str, None] = {}
     for r in rows:
         for k in r:
@@ -114,7 +117,7 @@ def dumps(outcomes: Iterable[tuple], long: bool = False) -> str:
         columns["error"] = None
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow([_cell(c) for c in columns])
+    w.writerow([cell(c) for c in columns])
     for r in rows:
-        w.writerow([_cell(r.get(c, "")) for c in columns])
+        w.writerow([cell(r.get(c, "")) for c in columns])
     return buf.getvalue()

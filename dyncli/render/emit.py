@@ -41,7 +41,7 @@ class TableWriter:
         from dyncli import stdio
 
         self.digits, self.units = digits, units
-        self.tty = stdio._isatty()
+        self.tty = stdio.stdout_is_terminal()
         self.ascii = not stdio.is_utf(sys.stdout)
         self.buf = None if self.tty else _Buffer(getattr(sys.stdout, "encoding", None) or "utf-8")
         self.console = _out(sys.stdout if self.tty else self.buf, stdio.table_width(wide), self.tty)
@@ -164,7 +164,7 @@ def write_view(draw, output: str | None = None) -> None:
     ``solve``.  OSError from ``output`` propagates."""
     from dyncli import stdio
 
-    if output is None and stdio._isatty():
+    if output is None and stdio.stdout_is_terminal():
         draw(_out(sys.stdout, stdio.table_width(), True))
         return
     buf = _Buffer("utf-8" if output else (getattr(sys.stdout, "encoding", None) or "utf-8"))

@@ -98,7 +98,7 @@ def text_of(x) -> str:
     return x.plain if isinstance(x, Text) else ("" if x is None else str(x))
 
 
-def _clean(s: str) -> str:
+def cell_lines(s: str) -> str:
     """A cell's lines without trailing spaces (and without a last empty line), as rich draws them."""
     s = "\n".join(ln.rstrip() for ln in s.split("\n"))
     return s[:-1] if s.endswith("\n") else s
@@ -156,7 +156,7 @@ def _min_width(text: str) -> int:
 
 
 def _width(col: Column, texts: list[str]) -> int:
-    return max([cell_len(ln) for x in [_clean(text_of(col.header))] + texts for ln in x.split("\n")])
+    return max([cell_len(ln) for x in [cell_lines(text_of(col.header))] + texts for ln in x.split("\n")])
 
 
 def _total(table: Table, widths: list[int]) -> int:
@@ -169,7 +169,7 @@ def fit(table: Table, width: int | None) -> list[Table]:
     broken at spaces outside vectors, then the columns split into several
     tables (the first column repeated) when it is still too wide."""
     cols = table.columns
-    texts = [[_clean(text_of(x)) for x in c.cells] for c in cols]
+    texts = [[cell_lines(text_of(x)) for x in c.cells] for c in cols]
     widths = [_width(c, t) for c, t in zip(cols, texts)]
     if width is None or _total(table, widths) <= width or not cols:
         return [table]
@@ -246,8 +246,8 @@ def lines(table: Table) -> list[str]:
 def parts(table: Table) -> tuple[list[str], list[str], list[str]]:
     """The title's, the table's and the caption's lines of a fitted table."""
     cols = table.columns
-    cells = [[_clean(text_of(x)).split("\n") for x in c.cells] for c in cols]
-    heads = [_clean(text_of(c.header)) for c in cols]
+    cells = [[cell_lines(text_of(x)).split("\n") for x in c.cells] for c in cols]
+    heads = [cell_lines(text_of(c.header)) for c in cols]
     widths = [max([cell_len(ln) for ln in h.split("\n")] + [cell_len(ln) for cl in cc for ln in cl])
               for h, cc in zip(heads, cells)]
     square = table.box == SQUARE

@@ -9,7 +9,7 @@ from rich.console import JustifyMethod
 from rich.table import Table as RTable
 from rich.text import Text as RText
 
-from dyncli.render.plain import SIMPLE, SQUARE, Table, Text, _clean, text_of, cell_len, parts
+from dyncli.render.plain import SIMPLE, SQUARE, Table, Text, cell_lines, text_of, cell_len, parts
 
 _BOXES = {SIMPLE: rbox.SIMPLE, SQUARE: rbox.SQUARE}
 
@@ -28,9 +28,9 @@ def _cell(x, justify: JustifyMethod) -> RText:
     if isinstance(x, Text):
         out = RText(justify=justify)
         for part, st in x.spans:
-            out.append(_clean(part), style=st or None)
+            out.append(cell_lines(part), style=st or None)
         return out
-    return RText(_clean(text_of(x)), justify=justify)
+    return RText(cell_lines(text_of(x)), justify=justify)
 
 
 def table(console, t: Table) -> None:

@@ -30,9 +30,9 @@ class RecordStream:
     def add(self, o) -> None:
         """One outcome (problem, result or None, message, exit code)."""
         if self.fmt == "csv":
-            from dyncli.render.csvout import _rows_of
+            from dyncli.render.csvout import rows_of
 
-            for row in _rows_of(o.problem, o.result, o.message, self.long):
+            for row in rows_of(o.problem, o.result, o.message, self.long):
                 for k in row:
                     if k != "error":
                         self.columns.setdefault(k, None)
@@ -61,14 +61,14 @@ class RecordStream:
             self._csv()
 
     def _csv(self) -> None:
-        from dyncli.render.csvout import _cell
+        from dyncli.render.csvout import cell
 
         if self.errors:
             self.columns["error"] = None
         w = csv.writer(sys.stdout, lineterminator="\n")
-        w.writerow([_cell(c) for c in self.columns])
+        w.writerow([cell(c) for c in self.columns])
         self.spill.seek(0)
         for line in self.spill:
             r = json.loads(line)
-            w.writerow([_cell(r.get(c, "")) for c in self.columns])
+            w.writerow([cell(r.get(c, "")) for c in self.columns])
         self.spill.close()

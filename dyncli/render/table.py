@@ -77,7 +77,7 @@ def make_console(file=None, width: int | None = None):
 
     no_color = bool(os.environ.get("NO_COLOR"))
     if file is None:
-        return Out(sys.stdout, stdio.table_width(), stdio._isatty(), getattr(sys.stdout, "encoding", None) or "utf-8",
+        return Out(sys.stdout, stdio.table_width(), stdio.stdout_is_terminal(), getattr(sys.stdout, "encoding", None) or "utf-8",
                    no_color)
     return Out(file, width or stdio.DEFAULT_WIDTH, False, getattr(file, "encoding", None) or "utf-8", no_color)
 

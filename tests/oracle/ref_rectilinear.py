@@ -64,9 +64,7 @@ def _case2():
         "a": "exp(-((t-5.123)/1e-3)**2)", "v1": 0, "t_max": 10, "find": [{"v": vq}]},
         [estimated("find.0.t", tq, tq, floor=16 * EPS * abs(vq) / a(tq) + 8 * EPS * tq)],
         "the same pulse: v reaches half its jump at the pulse's centre, t = 5.123 s",
-        same_=[same("find.0.reached", True)],
-        known_wrong="case 2's scan integrates each monotone piece of v by one adaptive quadrature: a pulse "
-                    "narrower than its first nodes is missed and the query is reported not reached")
+        same_=[same("find.0.reached", True)])
     return [graze, miss, dip, pulse, pulse_v]
 
 

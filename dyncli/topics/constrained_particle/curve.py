@@ -33,13 +33,19 @@ def rotation(k, phi):
     return np.eye(3)[None] + s * K[None] + (1 - c) * (K @ K)[None]
 
 
+def _cross(a, b):
+    """a × b of columns (3, n) (a (3, 1) column broadcasts), as numpy's cross computes it."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
 class Curve:
     def __init__(self, p):
-        comps = (p.curve.x1, p.curve.x2, p.curve.x3)
+        comps = tuple(p.curve)
         self.y0 = comps
         # exact derivatives by the rules of calculus on the expression IR (sympy only for min/max)
         self.y1 = tuple(derivative(e, "q") for e in comps)
         self.y2 = tuple(derivative(e, "q") for e in self.y1)
+        self._speed = None
         rot = p.rotation
         self.k = np.asarray(rot.axis, float) if rot else np.array([0.0, 0.0, 1.0])
         # no omega: only steady queries, which find the rate (the curve's geometry is all they use)
@@ -49,6 +55,25 @@ class Curve:
                             else float(rot.omega.value()))
         if self.omega_expr is not None and self.omega_const is None:
             self.omega_dot_expr = derivative(rot.omega, "t")
+
+    def speed(self, q: float) -> float:
+        """|y'(q)| at one float q in plain floats (the arc length's integrand): the first
+        derivatives of one jet of each component (:func:`dyncli.expr.jet.compile_jet`)."""
+        fn = self._speed
+        if fn is None:
+            import math
+
+            from dyncli.expr import floatmath
+            from dyncli.expr.jet import compile_jet
+
+            j1, j2, j3 = (compile_jet(e.ir, "q", floatmath) for e in self.y0)
+
+            def fn(q):
+                env = {"q": q}
+                a, b, c = j1(env)[1], j2(env)[1], j3(env)[1]
+                return math.sqrt(a * a + b * b + c * c)
+            self._speed = fn
+        return fn(q)
 
     @staticmethod
     def _ev(es, q):
@@ -81,10 +106,10 @@ class Curve:
         tau = np.einsum("nij,jn->in", Q, y1)
         w, wd = self.omega(t)
         k = self.k[:, None]
-        kx = np.cross(k.T, x.T).T
+        kx = _cross(k, x)
         v = tau * qd + w * kx
-        ktau = np.cross(k.T, tau.T).T
-        kkx = np.cross(k.T, kx.T).T
+        ktau = _cross(k, tau)
+        kkx = _cross(k, kx)
         b = np.einsum("nij,jn->in", Q, y2) * qd ** 2 + 2 * w * ktau * qd + wd * kx + w ** 2 * kkx
         return x, v, tau, b, Q
 
@@ -93,7 +118,7 @@ class Curve:
         y1, y2 = self.dy(q), self.ddy(q)
         sp = norm_rows(y1.T)                      # lengths and directions scaled first (dyncli.direction)
         et = np.nan_to_num(unit_rows(y1.T).T)     # a zero tangent stays 0
-        c = np.cross(y1.T, y2.T).T
+        c = _cross(y1, y2)
         kappa = np.linalg.norm(c, axis=0) / np.where(sp > 0, sp, 1.0) ** 3
         n_raw = y2 - np.sum(y2 * et, axis=0) * et
         nn = norm_rows(n_raw.T)
@@ -105,6 +130,6 @@ class Curve:
                 if np.linalg.norm(w) > 1e-6:
                     en[:, j] = w / np.linalg.norm(w)
                     break
-        eb = np.cross(et.T, en.T).T
+        eb = _cross(et, en)
         turn = lambda e: np.einsum("nij,jn->in", Q, e)  # noqa: E731
         return turn(et), turn(en), turn(eb), np.where(straight, 0.0, kappa), bool(straight.any())

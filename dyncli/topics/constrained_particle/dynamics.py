@@ -28,7 +28,6 @@ from dyncli.direction import norm_rows, unit_rows
 from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.topics.constrained_particle import equations as eq
-from dyncli.vec3 import cross as _cross
 from dyncli.topics.particle.work import Term
 
 POTENTIAL = ("gravity", "inverse-square", "spring")
@@ -41,12 +40,11 @@ class Model:
 
     def __init__(self, p, curve):
         self.p, self.curve, self.m = p, curve, float(p.m)
-        from types import SimpleNamespace
-
         from dyncli.topics.particle.forces import Forces
+        from dyncli.topics.particle.setup import Setup as ParticleSetup
 
         # particle's compiled forces (for the right-hand side); raises InputError for an overflowing field
-        self.compiled = Forces(SimpleNamespace(m=p.m, g=p.g, forces=[f for f in p.forces if f.kind != "friction"]))
+        self.compiled = Forces(ParticleSetup(m=p.m, g=p.g, forces=tuple(f for f in p.forces if f.kind != "friction")))
         self.terms = [Term(f, p) for f in p.forces if f.kind != "friction"]
         self.mu = sum(float(f.mu) for f in p.forces if f.kind == "friction")
         self.q_range = p.q_range
@@ -100,60 +98,74 @@ class Model:
         return {"x": x, "v": v, "a": a, "tau": tau, "speed": sp, "et": et, "N": N, "Nmag": Nmag, "G": G,
                 "ft": ft, "qdd": qdd, "F": F, "Fc": Fc, "Fn": Fn, "Q": Q, "q": q, "qd": qd}
 
-    def rhs_for(self, mode):
-        """y' = f(t, y) for one state, in plain float arithmetic (the
-        integrator calls it one state at a time; the same equations as
-        evaluate())."""
+    def rhs_for(self, mode):  # over 60 lines: the integrator's hot loop, inlined in plain floats on purpose
+        """y' = f(t, y) for one state, in plain float arithmetic (the integrator calls it one state
+        at a time; the same equations as evaluate()): the curve's y, y', y'' from one jet of each
+        component (:func:`dyncli.expr.jet.compile_jet` on floats), the turning frame Q(φ) as one
+        matrix, the forces from :meth:`Forces.plain`."""
+        from dyncli.expr import floatmath
+        from dyncli.expr.jet import compile_jet
 
-        p, curve, m, mu = self.p, self.curve, self.m, self.mu
-        Fp = self.compiled
-        fy = [e.scalar_fn() for e in curve.y0]
-        f1 = [e.scalar_fn() for e in curve.y1]
-        f2 = [e.scalar_fn() for e in curve.y2]
-        k = tuple(float(c) for c in curve.k)
+        curve, m, mu = self.curve, self.m, self.mu
+        j1, j2, j3 = (compile_jet(e.ir, "q", floatmath) for e in curve.y0)
+        forces = self.compiled.plain()
+        k1, k2, k3 = (float(c) for c in curve.k)
         rotating, w_const = curve.rotating, curve.omega_const
+        omega = compile_jet(curve.omega_expr.ir, "t", floatmath) if rotating and w_const is None else None
         stick, s = mode[0] == "stick", float(mode[1])
-        sqrt, cos, sin = math.sqrt, math.cos, math.sin
-        turn = eq.rodrigues
+        sqrt, cos, sin, isfinite = math.sqrt, math.cos, math.sin, math.isfinite
 
         def rhs(t, y):
-            q, qd, phi = float(y[0]), (0.0 if stick else float(y[1])), float(y[2])
+            q, qd, phi, _, _ = y.tolist()
+            if stick:
+                qd = 0.0
             env = {"q": q}
-            Y, Y1, Y2 = tuple(float(f(env)) for f in fy), tuple(float(f(env)) for f in f1), tuple(float(f(env)) for f in f2)
-            if rotating:
+            (x1, a1, b1), (x2, a2, b2), (x3, a3, b3) = j1(env), j2(env), j3(env)
+            if rotating:                          # x = Q y, τ = Q y', Q y'' (Rodrigues: c I + s K + (1 − c) k kᵀ)
                 c, sn = cos(phi), sin(phi)
-                Y, Y1, Y2 = turn(Y, k, c, sn), turn(Y1, k, c, sn), turn(Y2, k, c, sn)
-                if w_const is not None:
+                d = 1.0 - c
+                Q11, Q12, Q13 = c + d * k1 * k1, -sn * k3 + d * k1 * k2, sn * k2 + d * k1 * k3
+                Q21, Q22, Q23 = sn * k3 + d * k2 * k1, c + d * k2 * k2, -sn * k1 + d * k2 * k3
+                Q31, Q32, Q33 = -sn * k2 + d * k3 * k1, sn * k1 + d * k3 * k2, c + d * k3 * k3
+                x1, x2, x3 = Q11 * x1 + Q12 * x2 + Q13 * x3, Q21 * x1 + Q22 * x2 + Q23 * x3, Q31 * x1 + Q32 * x2 + Q33 * x3
+                a1, a2, a3 = Q11 * a1 + Q12 * a2 + Q13 * a3, Q21 * a1 + Q22 * a2 + Q23 * a3, Q31 * a1 + Q32 * a2 + Q33 * a3
+                b1, b2, b3 = Q11 * b1 + Q12 * b2 + Q13 * b3, Q21 * b1 + Q22 * b2 + Q23 * b3, Q31 * b1 + Q32 * b2 + Q33 * b3
+                if omega is None:
                     w, wd = w_const, 0.0
                 else:
-                    w, wd = (float(a[0]) for a in curve.omega(t))
+                    w, wd, _ = omega({"t": float(t)})
+                kx1, kx2, kx3 = k2 * x3 - k3 * x2, k3 * x1 - k1 * x3, k1 * x2 - k2 * x1          # k × x
+                kt1, kt2, kt3 = k2 * a3 - k3 * a2, k3 * a1 - k1 * a3, k1 * a2 - k2 * a1          # k × τ
+                kk1, kk2, kk3 = k2 * kx3 - k3 * kx2, k3 * kx1 - k1 * kx3, k1 * kx2 - k2 * kx1    # k × (k × x)
+                v1, v2, v3 = a1 * qd + w * kx1, a2 * qd + w * kx2, a3 * qd + w * kx3
+                qq, w2 = qd * qd, 2 * w * qd
+                ww = w * w
+                B1 = b1 * qq + w2 * kt1 + wd * kx1 + ww * kk1
+                B2 = b2 * qq + w2 * kt2 + wd * kx2 + ww * kk2
+                B3 = b3 * qq + w2 * kt3 + wd * kx3 + ww * kk3
             else:
-                w = wd = 0.0
-            kx = _cross(k, Y)
-            kt = _cross(k, Y1)
-            kkx = _cross(k, kx)
-            v = tuple(Y1[i] * qd + w * kx[i] for i in range(3))
-            b = tuple(Y2[i] * qd * qd + 2 * w * kt[i] * qd + wd * kx[i] + w * w * kkx[i] for i in range(3))
-            xa, va = np.array(Y), np.array(v)
-            Fc = Fp.conservative(xa)
-            Fn = Fp.nonconservative(t, xa, va)
-            sp = sqrt(Y1[0] ** 2 + Y1[1] ** 2 + Y1[2] ** 2)
-            et = tuple(c / sp for c in Y1)
-            R = [m * b[i] - float(Fc[i]) - float(Fn[i]) for i in range(3)]
-            Rt = R[0] * et[0] + R[1] * et[1] + R[2] * et[2]
-            N = [R[i] - Rt * et[i] for i in range(3)]
+                w = 0.0
+                v1, v2, v3 = a1 * qd, a2 * qd, a3 * qd
+                qq = qd * qd
+                B1, B2, B3 = b1 * qq, b2 * qq, b3 * qq
+            c1, c2, c3, n1, n2, n3 = forces(t, x1, x2, x3, v1, v2, v3)
+            sp = sqrt(a1 * a1 + a2 * a2 + a3 * a3) or math.nan     # a vanishing tangent: the not-finite error below
+            e1, e2, e3 = a1 / sp, a2 / sp, a3 / sp
+            R1, R2, R3 = m * B1 - c1 - n1, m * B2 - c2 - n2, m * B3 - c3 - n3
+            Rt = R1 * e1 + R2 * e2 + R3 * e3
+            N1, N2, N3 = R1 - Rt * e1, R2 - Rt * e2, R3 - Rt * e3
             if stick:
                 ft, qdd = Rt, 0.0
             else:
-                ft = eq.sliding_friction(mu, sqrt(N[0] ** 2 + N[1] ** 2 + N[2] ** 2), s) if mu else 0.0
+                ft = eq.sliding_friction(mu, sqrt(N1 * N1 + N2 * N2 + N3 * N3), s) if mu else 0.0
                 qdd = eq.parameter_acceleration(-Rt, ft, m, sp)
-            P_nc = sum((float(Fn[i]) + ft * et[i]) * v[i] for i in range(3))
-            P_N = N[0] * v[0] + N[1] * v[1] + N[2] * v[2]
-            out = [qd, qdd, w, P_nc, P_N]
-            if not all(map(math.isfinite, out)):      # the rate checked here (the runner's check_finite off)
+            P_nc = (n1 + ft * e1) * v1 + (n2 + ft * e2) * v2 + (n3 + ft * e3) * v3
+            P_N = N1 * v1 + N2 * v2 + N3 * v3
+            if not isfinite(qdd + P_nc + P_N) and not (isfinite(qdd) and isfinite(P_nc) and isfinite(P_N)):
+                # the rate checked here (the runner's check_finite off)
                 raise NumericalError(f"the motion is not finite at t = {t:.6g} s, q = {q:.6g} "
                                      "(the curve's tangent vanishes, a force is singular there, or the accelerations overflow)")
-            return out
+            return [qd, qdd, w, P_nc, P_N]
 
         return rhs
 
@@ -208,6 +220,13 @@ def _start_mode(model, t, y, rtol):
 
 
 def integrate(model, rtol, atol, method, max_steps=None, max_step=math.inf):
+    """(phases, friction notes, accepted steps) of the motion to t_end, inside one numpy error state
+    (a custom force's numpy scalars overflow to inf quietly: the right-hand side checks its rate)."""
+    with np.errstate(all="ignore"):
+        return _integrate(model, rtol, atol, method, max_steps, max_step)
+
+
+def _integrate(model, rtol, atol, method, max_steps, max_step):
     p = model.p
     rtol = runner.floor_rtol(rtol)
     max_step = min(max_step, model.compiled.kink_step)     # no step over a one-sided spring's contact
@@ -263,3 +282,16 @@ def phase_at(phases, t):
         if ph.t0 <= t <= ph.t1:
             return ph
     return phases[-1]
+
+
+def states_at(phases, times):
+    """The states (5, n) at ``times`` and the mode of each: every phase's dense output called
+    once on its times (as :func:`phase_at` assigns them)."""
+    last = len(phases) - 1
+    idx = [next((i for i, ph in enumerate(phases) if ph.t0 <= t <= ph.t1), last) if last else 0 for t in times]
+    Y = np.empty((5, len(times)))
+    for k, ph in enumerate(phases):
+        sel = [j for j, i in enumerate(idx) if i == k]
+        if sel:
+            Y[:, sel] = ph.state([times[j] for j in sel])
+    return Y, [phases[i].mode for i in idx]

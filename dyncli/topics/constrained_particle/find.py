@@ -66,9 +66,48 @@ def ode_states(p, model, phases):
 
     def states(ts):
         ts = [float(t) for t in ts]
-        Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in ts])
-        return assemble(p, model, ts, Y, [dynamics.phase_at(phases, t).mode for t in ts])["results"]
+        Y, modes = dynamics.states_at(phases, ts)
+        return assemble(p, model, ts, Y, modes)["results"]
     return states
+
+
+def ode_turns(phases) -> list[float]:
+    """The turning points of s on the ODE route: the roots of q̇ (ṡ = |τ| q̇ with |τ| > 0) where it
+    changes sign between the steps of a sliding phase (Brent on the phase's dense output), and the
+    start of every later phase (a stop, a stick or a slip: a turn at most, never a missed one)."""
+    from dyncli import rootfind
+
+    eps = float(np.finfo(float).eps)
+    out = []
+    for i, ph in enumerate(phases):
+        if i:
+            out.append(float(ph.t0))
+        if ph.mode[0] == "stick" or not ph.t1 > ph.t0:
+            continue
+        T, R = [float(t) for t in ph.steps_t], [float(v) for v in ph.steps_y[1]]
+        for k in range(len(T) - 1):
+            if R[k] == 0.0 and k > 0:
+                out.append(T[k])
+            elif R[k] * R[k + 1] < 0:
+                out.append(rootfind.brent(lambda t, ph=ph: float(ph.sol(t)[1]), T[k], T[k + 1], 1e-300, 4 * eps, 2000))
+    return out
+
+
+def ode_arc(model, phases, q0: float, known):
+    """s at any times on the ODE route: the arc length to the dense output's q(t) (``known``: the
+    (t, s) pairs already reported)."""
+    from . import dynamics
+    from .report import arc_length
+
+    memo = {float(t): s for t, s in known}
+
+    def s_of(ts) -> list[float]:
+        new = sorted({float(t) for t in ts} - memo.keys())
+        if new:
+            q = dynamics.states_at(phases, new)[0][0].tolist()
+            memo.update(zip(new, arc_length(model.curve, q0, q)))
+        return [memo[float(t)] for t in ts]
+    return s_of
 
 
 def ode_breaks(phases) -> list[float]:
@@ -86,9 +125,10 @@ def uniform_breaks(t_end: float, period) -> list[float]:
     return [t_end * k / n for k in range(n + 1)]
 
 
-def report(p, res, states, breaks, keys, subdivide=None, turn_times=None) -> None:
+def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers (``subdivide``: 1 when the
-    breaks are the ODE's steps; ``turn_times``: the turning points when the route knows them)."""
+    breaks are the ODE's steps; ``turn_times``: the turning points when the route knows them;
+    ``s_of``: s at a list of times, cheaper than the whole state)."""
     t_end = float(p.t_end)
     B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
 
@@ -104,9 +144,12 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None) -> Non
 
     turns = turn_times if turn_times is not None else ([] if t_end <= 0 else _turns(batch, B, subdivide))
     period = res.results.get("period")
-    distance = _odometer(lambda t: batch([t])[0]["s"], turns,
+    s_at = (lambda t: s_of([t])[0]) if s_of is not None else (lambda t: batch([t])[0]["s"])
+    distance = _odometer(s_at, turns,
                          0.5 * period if turn_times is not None and isinstance(period, float) and period > 0 else None)
 
+    if s_of is not None:            # every s the distances need, in one call
+        s_of([0.0] + [float(t) for t in turns if t > 0] + [float(t) for t in p.at])
     res.results["distance"] = [distance(float(t)) for t in p.at]
     if not p.find:
         return

@@ -17,23 +17,35 @@ def _vec(a) -> list[float]:
     return [float(c) + 0.0 for c in np.asarray(a, float)]
 
 
+def _cols(a) -> list[list[float]]:
+    """The columns of a (3, n) array as lists of floats (−0.0 as 0.0, as :func:`_vec`)."""
+    return (np.asarray(a, float).T + 0.0).tolist()
+
+
 def arc_length(curve, q0, qs):
+    """s(q) = ∫ |y'| dq from q0 to each q (QUADPACK to 1e-13 of each, the speed in plain floats)."""
     from dyncli.quadrature import quad
 
-    def sp(q):
-        return float(np.linalg.norm(curve.dy(q)[:, 0]))
-
+    sp = curve.speed
     return [quad(sp, q0, q, limit=200, epsabs=0, epsrel=1e-13)[0] + 0.0 if q != q0 else 0.0 for q in qs]
 
 
 def assemble(p, model, times, Y, modes) -> dict:
     """The reported results at the states Y (5, n) (one mode per state)."""
     n = Y.shape[1]
-    cols = []
-    for j in range(n):
-        cols.append(model.evaluate(times[j], Y[:, j:j + 1], modes[j]))
-    cat = {k: np.concatenate([c[k] for c in cols], axis=-1) for k in ("x", "v", "a", "N", "ft", "et", "speed", "Q")}
-    Q = np.concatenate([c["Q"] for c in cols], axis=0)
+    groups: dict = {}                       # the states of each mode, evaluated together
+    for j, md in enumerate(modes):
+        groups.setdefault(tuple(md), []).append(j)
+    ts = np.asarray(times, float)
+    cat: dict = {}
+    Q = np.empty((n, 3, 3))
+    for md, idx in groups.items():
+        e = model.evaluate(ts[idx], Y[:, idx], md)
+        for k in ("x", "v", "a", "N", "ft", "et", "speed"):
+            if k not in cat:
+                cat[k] = np.empty(np.shape(e[k])[:-1] + (n,))
+            cat[k][..., idx] = e[k]
+        Q[idx] = e["Q"]
     # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
     et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
     N = cat["N"]
@@ -46,11 +58,9 @@ def assemble(p, model, times, Y, modes) -> dict:
         "q_dot": [float(v) + 0.0 for v in qd],
         "s": arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]]),
         "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
-        "x": [_vec(cat["x"][:, j]) for j in range(n)],
-        "v": [_vec(cat["v"][:, j]) for j in range(n)],
-        "a": [_vec(cat["a"][:, j]) for j in range(n)],
+        "x": _cols(cat["x"]), "v": _cols(cat["v"]), "a": _cols(cat["a"]),
         "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],
-        "N_vec": [_vec(N[:, j] + cat["ft"][j] * cat["et"][:, j]) for j in range(n)],
+        "N_vec": _cols(N + cat["ft"] * cat["et"]),
         "friction": [float(v) + 0.0 for v in cat["ft"]],
         "kappa": [float(v) for v in kappa],
         "T": [float(v) for v in T], "V": [float(v) + 0.0 for v in V], "E": [float(v) + 0.0 for v in T + V],

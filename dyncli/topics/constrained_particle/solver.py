@@ -26,6 +26,7 @@ from dyncli.result import Result, Series, SolveOptions
 
 from . import dynamics, equilibria, steady
 from .curve import Curve
+from .setup import Rotation, Setup
 from .report import SERIES, assemble, equation_numbers
 
 
@@ -52,7 +53,25 @@ def quadrature_applies(p, curve) -> bool:
                    for f in p.forces)
 
 
+def plain(p) -> Setup:
+    """The validated problem as plain numbers (setup.py): everything below this module reads only it."""
+    from dyncli.topics.particle.solver import accuracy, force_term
+
+    rot = None if p.rotation is None else Rotation(tuple(p.rotation.axis), p.rotation.omega)
+    return Setup(m=p.m, curve=(p.curve.x1, p.curve.x2, p.curve.x3), rotation=rot, q0=p.q0, q_dot0=p.q_dot0,
+                 forces=tuple(force_term(f) for f in p.forces),
+                 q_range=None if p.q_range is None else tuple(p.q_range), t_end=p.t_end, at=tuple(p.at), g=p.g,
+                 find=tuple(p.find), params=p.params, steady=tuple(float(s.q) for s in p.steady),
+                 accuracy=accuracy(p.accuracy), steady_only=p.steady_only)
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
+    return solve_setup(plain(p))
+
+
+def solve_setup(p: Setup) -> Result:
+    """:func:`solve` of a problem given in plain numbers (setup.py: a Setup built by hand needs
+    ``t_end`` and ``at`` unless it asks only ``steady``)."""
     curve = Curve(p)
     if p.steady_only:
         return _steady_only(p, curve)
@@ -65,9 +84,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         raise InputError("method quadrature needs a fixed curve, no friction, damper or drag, and forces of the "
                          "position only (the energy integral); use method ode", "accuracy.method")
     if p.find:                              # the motion runs to the end of every window searched (§11)
-        from dyncli import motion_find
+        from dyncli.topics.particle.setup import extended
 
-        q = motion_find.extended(p)
+        q = extended(p)
         if q is not p:
             p, model = q, dynamics.Model(q, curve)
     times = [float(t) for t in p.at]
@@ -80,12 +99,15 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         res = quadrature.solve(p, model, times, fallback=(meth == "auto"))
         if res is not None:
             states = find.quadrature_states(p, model)
-            find.report(p, res, states, find.uniform_breaks(float(p.t_end), res.results.get("period"))
-                        + states.legs(float(p.t_end)), SERIES, turn_times=states.legs(float(p.t_end), turning=True))
+            t_end = float(p.t_end or 0.0)     # (set whenever the motion is asked for)
+            find.report(p, res, states, find.uniform_breaks(t_end, res.results.get("period"))
+                        + states.legs(t_end), SERIES, turn_times=states.legs(t_end, turning=True))
     if res is None:
         res = _solve_ode(p, model, times)
-        find.report(p, res, find.ode_states(p, model, res.extra.pop("phases")),
-                    find.ode_breaks(res.extra.pop("breaks_of")), SERIES, subdivide=1)
+        phases = res.extra.pop("phases")
+        find.report(p, res, find.ode_states(p, model, phases), find.ode_breaks(res.extra.pop("breaks_of")), SERIES,
+                    subdivide=1, turn_times=find.ode_turns(phases),
+                    s_of=find.ode_arc(model, phases, float(p.q0), zip(times, res.results["s"])))
     equilibria.add(res, p, model)
     if steadies is not None:
         steady.add(res, steadies)
@@ -117,8 +139,7 @@ def _solve_ode(p, model, times) -> Result:
     method = _ode_method(p)
     rtol, atol = runner.floor_rtol(float(p.accuracy.rtol)), float(p.accuracy.atol)
     phases, notes, nsteps = dynamics.integrate(model, rtol, atol, method, p.accuracy.max_steps)
-    Y = np.column_stack([dynamics.phase_at(phases, t).state(t) for t in times])
-    modes = [dynamics.phase_at(phases, t).mode for t in times]
+    Y, modes = dynamics.states_at(phases, times)
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
     res = Result(out["results"], method=f"ode:{method}", equations=equation_numbers(model),
@@ -131,7 +152,7 @@ def _solve_ode(p, model, times) -> Result:
     # the runner's policy: a check solve only with accuracy.estimate (x and v each relative to its
     # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
     def difference(_, phases2):
-        Y2 = np.column_stack([dynamics.phase_at(phases2, t).state(t) for t in times])
+        Y2 = dynamics.states_at(phases2, times)[0]
         x2, v2 = model.curve.state(np.array(times), Y2[0], Y2[1], Y2[2])[:2]
         return ode.relative_difference(
             [(np.array(out["results"]["x"], float).T, x2), (np.array(out["results"]["v"], float).T, v2)])

@@ -84,7 +84,7 @@ def answers(p, model) -> tuple[list[dict], list[str]]:
     F = _forces(p, model)
     entries, warnings = [], []
     for i, s in enumerate(p.steady):
-        entry, notes = _entry(p, model, F, float(s.q), f"steady.{i}.q")
+        entry, notes = _entry(p, model, F, float(s), f"steady.{i}.q")
         entries.append(entry)
         warnings += [f"steady.{i}: {n}" for n in notes]
     return entries, warnings

@@ -30,9 +30,10 @@ import math
 from typing import Any
 
 from dyncli import symbolic
-from dyncli.errors import InputError, NumericalError
+from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.force_field.checks import box_of, real_somewhere
+from dyncli.topics.force_field.setup import Path, Setup
 
 SYSTEMS = {
     "polar": (("r", "theta"), ("e_r", "e_θ", "e₃"), "Table 19.1"),
@@ -94,17 +95,17 @@ def prepare(data: Any, info) -> Any:
 
 
 class CurvilinearField:
-    def __init__(self, p):
+    def __init__(self, F, coords: str):
         import sympy as sp
 
-        self.coords = p.coordinates
-        self.names, self.basis, self.table = SYSTEMS[p.coordinates]
+        self.coords = coords
+        self.names, self.basis, self.table = SYSTEMS[coords]
         pos = {"r", "R"}
         self.Q = [sp.Symbol(n, positive=True) if n in pos else symbolic.symbol(n) for n in self._all_names()]
         rep = {symbolic.symbol(n): q for n, q in zip(self._all_names(), self.Q)}
         from .symbolic_field import _rationalize, finite_real
 
-        raw = [symbolic.sym(e).xreplace(rep) for e in p.F]
+        raw = [symbolic.sym(e).xreplace(rep) for e in F]
         finite_real(raw)
         self.decimals = any(r.atoms(sp.Float) for r in raw)
         self.S = [_rationalize(r) for r in raw]
@@ -221,19 +222,19 @@ class _ScaledField:
         return np.array([float(g.evaluate(**env)) for g in self.G])
 
 
-def path_work(fld: CurvilinearField, path, rtol, atol, res, max_steps=None):
+def path_work(fld: CurvilinearField, path: Path, rtol, atol, res, max_steps=None):
     """∫ Σ F_i h_i q̇_i dt along q(t) (19.4): (U, error, q_start, q_end)."""
     from .path import path_work as cartesian_path_work
 
     return cartesian_path_work(_ScaledField(fld), path, rtol, atol, res, max_steps)
 
 
-def _curl_at_points(fld, p, formulas, res):
+def _curl_at_points(fld, points, formulas, res):
     import numpy as np
 
     exprs = [fld.num(c) for c in formulas]
     out = []
-    for i, pt in enumerate(p.points):
+    for i, pt in enumerate(points):
         env = fld.env([float(v) for v in pt])
         c = np.array([float(e.evaluate(**env)) for e in exprs])
         F = np.array([float(e.evaluate(**env)) for e in fld.exprs])
@@ -245,7 +246,7 @@ def _curl_at_points(fld, p, formulas, res):
     return out
 
 
-def solve(p, options: SolveOptions | None = None) -> Result:
+def solve(p: Setup, options: SolveOptions | None = None) -> Result:
     from dyncli import cputime
 
     from dyncli import symbolic
@@ -264,17 +265,17 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     return res
 
 
-def _symbolic(p):
+def _symbolic(p: Setup):
     from .symbolic_field import _display
 
-    fld = CurvilinearField(p)
+    fld = CurvilinearField(p.F, p.coordinates)
     res = Result({}, method="closed-form", equations=["19.9", fld.table])
     res.results["basis"] = ", ".join(fld.basis)
     box = box_of(pt[0] for pt in p.points)
     names = fld._all_names()
     real_somewhere(fld.exprs, [dict(zip(names, fld.random_points(box)))] + [fld.env(pt) for pt in p.points])
     cons, how, simplified = verdict(fld, box, res)
-    res.results["curl"] = _curl_at_points(fld, p, simplified, res)
+    res.results["curl"] = _curl_at_points(fld, p.points, simplified, res)
     res.results["curl_formula"] = [_display(c, fld.decimals) for c in simplified]
     V = None
     curl_zero = cons
@@ -291,13 +292,13 @@ def _symbolic(p):
     return fld, res, V, cons
 
 
-def _work(fld, p, V, cons, res) -> None:
+def _work(fld, p: Setup, V, cons, res) -> None:
     r = res.results
     if p.path is None:
         r["work"] = None
         res.warn("no path given: work is null")
         return
-    U, err, qa, qb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res, p.accuracy.max_steps)
+    U, err, qa, qb = path_work(fld, p.path, p.rtol, p.atol, res, p.max_steps)
     res.equations.append("19.4")
     r.update(work=U, work_error=err, x_start=[v + 0.0 for v in fld.cartesian(qa)],
              x_end=[v + 0.0 for v in fld.cartesian(qb)], work_from_potential=None, work_check=None)

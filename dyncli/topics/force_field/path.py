@@ -12,6 +12,7 @@ import math
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Result
 from dyncli.expr.derivative import derivative
+from dyncli.topics.force_field.setup import Path
 
 
 class _NotFinite(Exception):
@@ -51,7 +52,7 @@ def _integrand(fld, xs, dxs):
     return f
 
 
-def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int | None = None):
+def path_work(fld, path: Path, rtol: float, atol: float, res: Result, max_steps: int | None = None):
     """Work along the path by the quadrature runner (adaptive Gauss–Kronrod,
     :mod:`dyncli.quadrature`, panels counted against ``max_steps``): (U, error [J], x_start,
     x_end).  Sets ``res.method`` and ``res.error_estimate``: the error relative to the work's
@@ -65,7 +66,7 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
         dxs = [derivative(e, "t") for e in xs]
     except ValueError as exc:
         raise InputError(f"cannot differentiate the path exactly: {exc}", "path") from None
-    t1, t2 = (float(v) for v in path.t_span)
+    t1, t2 = path.t1, path.t2
 
     def pos(t):
         return np.array([float(e.evaluate(t=t)) for e in xs])
@@ -82,7 +83,11 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
     fmax = [0.0]
 
     def fv(ts):
-        out = np.array([f(float(t)) for t in ts])
+        out = np.empty(len(ts))
+        for k, t in enumerate(ts):
+            if k % CPU_EVERY == 0:
+                _within_cpu(t1, t2)
+            out[k] = f(float(t))
         fmax[0] = max(fmax[0], float(np.max(np.abs(out))))
         return out
 
@@ -101,6 +106,23 @@ def path_work(fld, path, rtol: float, atol: float, res: Result, max_steps: int |
     scale = max(abs(U), fmax[0] * abs(t2 - t1))
     res.error_estimate = float(err) / scale if scale > 0 else float(err)
     return float(U), float(err), x_start, x_end
+
+
+#: the integrand's nodes between two looks at the solve's CPU (:mod:`dyncli.cputime`)
+CPU_EVERY = 1024
+
+
+def _within_cpu(t1: float, t2: float) -> None:
+    """NumericalError once the solve has used more than its CPU budget (``accuracy.max_cpu``,
+    default 2 s: the quadrature's work is adaptive, so it is not projected to its end)."""
+    from dyncli import cputime
+
+    spent = cputime.used()
+    if spent is not None and spent[0] > spent[1]:
+        raise NumericalError(
+            f"the work along the path over t in [{t1:g}, {t2:g}] took more than the CPU budget of {spent[1]:g} s "
+            "(accuracy.max_cpu) before reaching accuracy.rtol (F·dx/dt with many kinks or a singularity on the "
+            "path): shorten path.t_span, loosen accuracy.rtol, or raise accuracy.max_cpu")
 
 
 def segment_work(fld, a, b, panels: int = 8, order: int = 16) -> tuple[float, float]:

@@ -32,6 +32,7 @@ from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.force_field.checks import N_RANDOM, _random_points, box_of, numeric_verdict, real_somewhere, single_valued
 from dyncli.topics.force_field.path import path_work
+from dyncli.topics.force_field.setup import Path, Setup
 from dyncli.topics.force_field.symbolic_field import (SYMBOLIC_SECONDS, Field, _display, conservative_verdict, numeric_potential,
                                                       potential, report_verdict)
 
@@ -89,8 +90,24 @@ def _single_valued(fld, V, Vnum, box, res, how):
     return True, how, V, Vnum
 
 
+def plain(p) -> Setup:
+    """The validated model as plain inputs (expressions and SI floats)."""
+    path = None
+    if p.path is not None:
+        t1, t2 = (float(v) for v in p.path.t_span)
+        path = Path(p.path.x1, p.path.x2, p.path.x3, t1, t2)
+    a = p.accuracy
+    return Setup(tuple(p.F), tuple((float(pt[0]), float(pt[1]), float(pt[2])) for pt in p.points), path,
+                 getattr(p, "coordinates", "cartesian"), float(a.rtol), float(a.atol), a.max_steps)
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
-    if getattr(p, "coordinates", "cartesian") != "cartesian":     # Tables 19.1-19.2: coordinates.py
+    return solve_setup(plain(p), options)
+
+
+def solve_setup(p: Setup, options: SolveOptions | None = None) -> Result:
+    """curl, verdict, potential and work of the field ``p`` (plain inputs: :func:`plain`)."""
+    if p.coordinates != "cartesian":     # Tables 19.1-19.2: coordinates.py
         from .coordinates import solve as solve_curvilinear
 
         return solve_curvilinear(p, options)
@@ -125,14 +142,13 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     return res
 
 
-def _work(res: Result, p, fld: Field | PolynomialField, cons: bool, Vnum) -> None:
+def _work(res: Result, p: Setup, fld: Field | PolynomialField, cons: bool, Vnum) -> None:
     """The work along the path (19.4) and its check against V1 − V2 (19.8)."""
     if p.path is None:
         res.results["work"] = None
         res.warn("no path given: work is null")
     else:
-        U, err, xa, xb = path_work(fld, p.path, float(p.accuracy.rtol), float(p.accuracy.atol), res,
-                                   p.accuracy.max_steps)
+        U, err, xa, xb = path_work(fld, p.path, p.rtol, p.atol, res, p.max_steps)
         res.equations.append("19.4")
         res.results["work"] = U
         res.results["work_error"] = err

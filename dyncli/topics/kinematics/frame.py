@@ -17,6 +17,23 @@ Vec = tuple  # (c1, c2, c3)
 
 #: at most this many per-time tables are printed (the results hold every time)
 MAX_TABLES = 12
+#: CPU seconds sympy may take for the formula table of ``--symbolic`` (:mod:`dyncli.cputime`)
+SYMBOLIC_SECONDS = 2.0
+
+
+def symbolic_within(build, res, what: str):
+    """``build()`` (the formula table: sympy's derivatives and printing) within SYMBOLIC_SECONDS of
+    CPU; beyond it None, with a warning on ``res`` (the numeric tables and results are complete)."""
+    from dyncli import cputime, symbolic
+
+    symbolic.warm()                  # the limit measures sympy's work, not its first import
+    try:
+        with cputime.limit(SYMBOLIC_SECONDS):
+            return build()
+    except (cputime.CpuTimeout, RecursionError):
+        res.warn(f"--symbolic: the formulas of {what} need more than {SYMBOLIC_SECONDS:g} s of CPU (sympy): "
+                 "the formula table is left out; the numeric results and tables are complete")
+        return None
 
 
 def cross(a: Sequence, b: Sequence) -> Vec:

@@ -11,6 +11,7 @@ On the path (5.14b): v = ṡ e_t, a = s̈ e_t + (ṡ²/ρ) e_n, components on (e
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -19,6 +20,21 @@ from dyncli.topics.kinematics import frame
 
 #: what the frame table and the warnings call the instant
 WHEN = "at the instant"
+
+
+@dataclass(frozen=True, slots=True)
+class Instant:
+    """The state at one instant as a textbook gives it, in SI floats: ``coordinates`` polar,
+    cylindrical or spherical with ``jets`` ((name, (q, q̇, q̈)) per coordinate, absent rates 0),
+    or ``path`` with the speed ``v``, its rate ``v_dot`` and the radius of curvature ``rho``
+    (None: a straight path); ``m`` the mass (None: no force)."""
+
+    coordinates: str
+    jets: tuple[tuple[str, tuple[float, float, float]], ...] = ()
+    v: float = 0.0
+    v_dot: float = 0.0
+    rho: float | None = None
+    m: float | None = None
 
 
 def path_state(v: float, v_dot: float, rho: float | None) -> tuple[float, float, float | None]:
@@ -36,7 +52,7 @@ def path_state(v: float, v_dot: float, rho: float | None) -> tuple[float, float,
     return v_dot, (v / rho) * v, rho
 
 
-def solve(p, options: SolveOptions) -> Result:
+def solve(p: Instant, options: SolveOptions) -> Result:
     res = _path(p) if p.coordinates == "path" else _coordinates(p)
     if options.symbolic:
         res.warn("--symbolic: no formulas at one instant (the state is given as numbers)"
@@ -44,11 +60,11 @@ def solve(p, options: SolveOptions) -> Result:
     return res
 
 
-def _coordinates(p) -> Result:
+def _coordinates(p: Instant) -> Result:
     from dyncli.topics.kinematics import motion
 
     coords = p.coordinates
-    J = {n: tuple(np.array([x], dtype=float) for x in q) for n, q in p.instant.jets(coords).items()}
+    J = {n: tuple(np.array([x], dtype=float) for x in q) for n, q in p.jets}
     with np.errstate(all="ignore"):
         rows = motion.motion_of_jets(coords, J, (1,))
     out, rest, straight, undefined = motion.per_time(rows, [0.0])
@@ -69,10 +85,9 @@ def _coordinates(p) -> Result:
     return res
 
 
-def _path(p) -> Result:
-    ins = p.instant
-    v, v_dot = ins.v, ins.v_dot or 0.0
-    a_t, a_n, rho = path_state(v, v_dot, ins.rho)
+def _path(p: Instant) -> Result:
+    v, v_dot = p.v, p.v_dot
+    a_t, a_n, rho = path_state(v, v_dot, p.rho)
     R = {"speed": v, "a_t": a_t, "a_n": a_n, "rho": rho,
          "v_basis": [v, 0.0, 0.0], "a_basis": [a_t, a_n, 0.0]}
     if not math.isfinite(a_n):
@@ -84,7 +99,7 @@ def _path(p) -> Result:
     return res
 
 
-def _force(p, res, cartesian: bool) -> None:
+def _force(p: Instant, res, cartesian: bool) -> None:
     """F = m a (16.1) with a mass: on the own basis, and in Cartesian components when the
     coordinates give them."""
     if p.m is None:

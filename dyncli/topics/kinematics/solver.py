@@ -35,7 +35,12 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if p.instant is not None:
         from dyncli.topics.kinematics import instant
 
-        return instant.solve(p, options)
+        ins, c = p.instant, p.coordinates
+        if c == "path":
+            state = instant.Instant(c, v=ins.v, v_dot=ins.v_dot or 0.0, rho=ins.rho, m=p.m)
+        else:
+            state = instant.Instant(c, tuple(ins.jets(c).items()), m=p.m)
+        return instant.solve(state, options)
     coords = p.coordinates
     times = [float(t) for t in p.at]
     t = np.asarray(times, dtype=float)
@@ -77,7 +82,7 @@ def solve(p, options: SolveOptions | None = None) -> Result:
     if times:
         res.series = [Series("t", times, n, title) for n, title in zip(names, titles)]
     if coords != "cartesian" and times:
-        res.views = _views(coords, p, times, rows, options)
+        res.views = _views(coords, p, times, rows, options, res)
     return res
 
 
@@ -85,27 +90,53 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 # distance traveled (4.5): the quadrature runner's adaptive Gauss–Kronrod (dyncli/quadrature.py)
 
 
+#: the speed is evaluated in chunks of this many times, the solve's CPU looked at before each
+#: (one pass of the quadrature may hold ~10⁵ times, a second of CPU for a long expression)
+CHUNK = 15 * 512
+
+
 def distance(coords: str, position: dict, t1: float, t2: float, rtol: float, atol: float, max_steps=None):
-    """D = ∫|v| dt (4.5): (D, error estimate, converged)."""
+    """D = ∫|v| dt (4.5): (D, error estimate, converged).  The work is bounded twice: by the
+    quadrature's panels (``max_steps``) and by the solve's CPU budget (:mod:`dyncli.cputime`,
+    ``accuracy.max_cpu``, default 2 s), refused with a NumericalError naming what to change."""
     from dyncli.quadrature import gauss_kronrod
 
     def speed(tt):
-        r = motion(coords, position, tt)
-        v = r["v"]   # components on an orthonormal basis: same length
-        return np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
+        parts = []
+        for k in range(0, max(len(tt), 1), CHUNK):
+            _within_cpu(t1, t2)
+            r = motion(coords, position, tt[k:k + CHUNK])
+            v = r["v"]   # components on an orthonormal basis: same length
+            parts.append(np.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2))
+        return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
     return gauss_kronrod(speed, t1, t2, rtol, atol, max_steps=max_steps, what="the speed", path="distance")
+
+
+def _within_cpu(t1: float, t2: float) -> None:
+    """NumericalError once the solve has used more than its CPU budget (the quadrature's work is
+    adaptive, so it is not projected to its end as an ODE's is)."""
+    from dyncli import cputime
+    from dyncli.errors import NumericalError
+
+    spent = cputime.used()
+    if spent is not None and spent[0] > spent[1]:
+        raise NumericalError(
+            f"distance: the quadrature of the speed over [{t1:g}, {t2:g}] s took more than the CPU budget of "
+            f"{spent[1]:g} s (accuracy.max_cpu) before reaching accuracy.rtol (a path with many kinks or a singular "
+            "slope): shorten the interval of distance, loosen accuracy.rtol, or raise accuracy.max_cpu")
 
 
 # ---------------------------------------------------------------------------
 # frame tables (§12 layout): numeric per time, symbolic with --symbolic
 
-def _views(coords, p, times, rows, options):
+def _views(coords, p, times, rows, options, res):
     basis = BASIS_LABELS[coords]
     title = f"{coords} basis"
     views = []
     if options.symbolic:
-        views.append(symbolic_view(coords, p, title, basis))
+        view = frame.symbolic_within(lambda: symbolic_view(coords, p, title, basis), res, "the position")
+        views += [view] if view is not None else []
     views += frame.numeric_tables(title, times, [(lab, rows[key]) for lab, key in ROW_LABELS], basis)
     return views
 

@@ -171,6 +171,48 @@ class Forces:
 
         return rhs
 
+    def plain(self):
+        """conservative() and nonconservative() of one state in plain floats, for a right-hand side
+        called once per stage: ``f(t, x1, x2, x3, v1, v2, v3) -> (Fc1, Fc2, Fc3, Fn1, Fn2, Fn3)``
+        (the same formulas, 19.18 and 19.26a inlined; a singular force comes out inf or nan; a custom
+        term's expressions give numpy scalars: call it inside one ``np.errstate``)."""
+        u1, u2, u3 = self.uniform.tolist()
+        c_lin, c_quad, weight = self.c_lin, self.c_quad, self.weight
+        inv = [(float(c[0]), float(c[1]), float(c[2]), mu) for c, mu, _ in self.inv]
+        springs = [(float(a[0]), float(a[1]), float(a[2]), k, L, {None: 0, "compression": -1, "tension": 1}[side])
+                   for a, k, L, side in self.springs]
+        custom = [tuple(e.scalar_fn() for e in comps) for comps in self.custom]
+        sqrt, inf = math.sqrt, math.inf
+
+        def forces(t, x1, x2, x3, v1, v2, v3):
+            f1, f2, f3 = u1, u2, u3
+            if c_lin:
+                f1, f2, f3 = f1 - c_lin * v1, f2 - c_lin * v2, f3 - c_lin * v3
+            if c_quad:
+                cs = c_quad * sqrt(v1 * v1 + v2 * v2 + v3 * v3)
+                f1, f2, f3 = f1 - cs * v1, f2 - cs * v2, f3 - cs * v3
+            if custom:                           # numpy scalars: the caller runs inside one np.errstate
+                env = {"t": float(t), "x1": x1, "x2": x2, "x3": x3, "v1": v1, "v2": v2, "v3": v3}
+                for e1, e2, e3 in custom:
+                    f1, f2, f3 = f1 + float(e1(env)), f2 + float(e2(env)), f3 + float(e3(env))
+            g1, g2, g3 = 0.0, 0.0, -weight if weight else 0.0
+            for c1, c2, c3, mu in inv:
+                r1, r2, r3 = x1 - c1, x2 - c2, x3 - c3
+                R2 = r1 * r1 + r2 * r2 + r3 * r3
+                k = mu / (R2 * sqrt(R2)) if R2 else inf
+                g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
+            for a1, a2, a3, ks, L, side in springs:
+                r1, r2, r3 = x1 - a1, x2 - a2, x3 - a3
+                if L == 0.0:
+                    k = ks                          # -k r (a one-sided spring at L = 0 is refused or acts for R > 0)
+                else:
+                    R = sqrt(r1 * r1 + r2 * r2 + r3 * r3)
+                    k = 0.0 if side * (R - L) < 0.0 else (ks * (R - L) / R if R else inf)
+                g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
+            return g1, g2, g3, f1, f2, f3
+
+        return forces
+
     def other(self, t, x):
         """All forces except friction, at rest (v = 0): the static condition."""
         v = np.zeros_like(x)

@@ -23,11 +23,11 @@ import math
 import numpy as np
 
 from dyncli import ode, runner
-from dyncli import motion_find
 from dyncli.errors import NumericalError
 from dyncli.result import Result, Series, SolveOptions
 from dyncli.topics.particle import equations as eq
 from dyncli.topics.particle.forces import Forces
+from dyncli.topics.particle.setup import FORCE_FIELDS, Accuracy, ForceTerm, Setup, extended
 from dyncli.topics.particle.report import REPORTED, at_times, energy_residual, report_terms, reported
 from dyncli.topics.particle.trajectory import MAX_STEPS, OdePhase, RestPhase, Trajectory, integrate  # noqa: F401 (re-exported)
 
@@ -36,17 +36,47 @@ def _ode_method(p) -> str:
     return runner.scipy_method(p.accuracy.method)
 
 
+def force_term(f) -> ForceTerm:
+    """The plain copy of a validated force entry (of ``particle`` or ``constrained-particle``): its
+    kind and the fields it has (vectors as tuples of floats; a custom term's compiled expressions)."""
+    kw = {n: getattr(f, n) for n in FORCE_FIELDS if hasattr(f, n)}
+    for n in ("F", "center", "anchor"):
+        if n in kw and kw[n] is not None:
+            kw[n] = tuple(kw[n])
+    return ForceTerm(f.kind, **kw)
+
+
+def accuracy(a) -> Accuracy:
+    """The plain copy of the validated ``accuracy`` block."""
+    return Accuracy(a.rtol, a.atol, a.method, a.estimate, a.max_steps, a.max_cpu)
+
+
+def plain(p) -> Setup:
+    """The validated problem as plain numbers (setup.py): everything below this module reads only it."""
+    return Setup(m=p.m, x0=tuple(p.x0), v0=tuple(p.v0), forces=tuple(force_term(f) for f in p.forces), t_end=p.t_end,
+                 at=tuple(p.at), g=p.g, find=tuple(p.find), params=p.params, basis=p.basis,
+                 steady=tuple(tuple(q.axis) for q in p.steady), accuracy=accuracy(p.accuracy))
+
+
 def solve(p, options: SolveOptions | None = None) -> Result:
     """The motion, and the steady circular motions of ``steady`` (steady.py; alone: no motion)."""
+    return solve_setup(plain(p))
+
+
+def solve_setup(s: Setup) -> Result:
+    """:func:`solve` of a problem given in plain numbers (setup.py: a Setup built by hand needs
+    ``t_end`` and ``at`` unless it asks only ``steady``)."""
     from . import steady
 
-    F = Forces(p)
+    steady_only = bool(s.steady) and not s.at and s.t_end is None and not s.find
+    s = extended(s)                     # the motion runs to the end of every window searched (§11)
+    F = Forces(s)
     notes: list[str] = []
-    entries = steady.answers(p, F, notes.append) if p.steady else None      # refused before the motion is solved
-    if p.steady_only:
+    entries = steady.answers(s, F, notes.append) if s.steady else None      # refused before the motion is solved
+    if steady_only:
         res = Result({}, method="closed-form", equations=["16.7", "11.11"])
     else:
-        res = _motion(p)
+        res = _motion(s)
     if entries is not None:
         res.results["steady"] = entries
     for n in notes:
@@ -57,7 +87,6 @@ def solve(p, options: SolveOptions | None = None) -> Result:
 def _motion(p) -> Result:
     from . import find, orbit
 
-    p = motion_find.extended(p)             # the motion runs to the end of every window searched (§11)
     F = Forces(p)
     notes: list[str] = []
     orb = orbit.choose(p, notes)

@@ -31,7 +31,7 @@ def answers(p, F, warn) -> list[dict]:
                              "found for forces of the position only: leave it out of this problem", f"forces.{i}")
     x = np.asarray(p.x0, float)
     Fx = np.asarray(F.conservative(x) + F.nonconservative(0.0, x, np.zeros(3)), float)
-    return [_one(p, Fx, x, np.asarray(s.axis, float), f"steady.{i}", warn) for i, s in enumerate(p.steady)]
+    return [_one(p, Fx, x, np.asarray(s, float), f"steady.{i}", warn) for i, s in enumerate(p.steady)]
 
 
 def _one(p, Fx, x, k, where, warn) -> dict:

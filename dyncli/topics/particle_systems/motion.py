@@ -18,15 +18,31 @@ to its own scale over the run (:func:`dyncli.ode.relative_difference`).
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
+from typing import Any, Mapping
 
 import numpy as np
 
 from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.result import Series
+from dyncli.topics.particle.setup import Accuracy
 from dyncli.topics.particle_systems import pairs as pf
 
 MAX_STEPS = 200_000
+
+
+@dataclass(frozen=True, slots=True)
+class Motion:
+    """The motion asked of a system (§24): under its ``pairs`` alone, reported at ``at`` [s] up to
+    ``t_end``; the §11 ``find`` queries as given, with the problem's ``params``."""
+
+    pairs: tuple[pf.Pair, ...]
+    at: tuple[float, ...]
+    t_end: float
+    accuracy: Accuracy = Accuracy()
+    find: tuple = ()
+    params: Mapping[str, Any] = field(default_factory=dict)
 
 
 def _integrate(p, masses, X0, V0, rtol, atol, method, on_step=None):
@@ -74,7 +90,6 @@ def solve_motion(p, res, masses, X0, V0, O) -> None:
     """Fill the ``*_motion`` results, the checks and ``error_estimate``."""
     from dyncli.topics.particle_systems import find
 
-    p = find.mf.extended(p)                 # the motion runs to the end of every window searched (§11)
     acc = p.accuracy
     method = runner.scipy_method(acc.method)
 

@@ -17,8 +17,22 @@ which for the conservative kinds is −dV_int/dt (27.11-27.14, with
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
+
+
+@dataclass(frozen=True, slots=True)
+class Pair:
+    """A central pair force between the particles ``between`` = (i, j) (24.15): a spring (k [N/m],
+    free length L [m]), a damper (c [N·s/m]) or an inverse-square attraction (K [N·m²])."""
+
+    kind: str
+    between: tuple[int, int]
+    k: float | None = None
+    L: float | None = None
+    c: float | None = None
+    K: float | None = None
 
 
 def pair_terms(pr, X: np.ndarray, V: np.ndarray):

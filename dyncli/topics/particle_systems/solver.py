@@ -74,9 +74,10 @@ def _internal(p, res, ms, xs, vs, O) -> None:
     from dyncli.topics.particle_systems import motion, pairs
 
     masses, X, V, Ov = (np.array(a, dtype=float) for a in (ms, xs, vs, O))
+    plain_pairs = tuple(pairs.Pair(pr.kind, tuple(pr.between), pr.k, pr.L, pr.c, pr.K) for pr in p.pairs)
     if p.pairs:
         with np.errstate(all="ignore"):
-            vals, rows = pairs.snapshot(p.pairs, masses, X, V, Ov)
+            vals, rows = pairs.snapshot(plain_pairs, masses, X, V, Ov)
         if not all(_finite(v) for v in (vals["f_internal"], vals["m_internal"], vals["P_internal"], vals["V_internal"])):
             raise InputError("the pair forces overflow a double (values beyond ~1e308)", "pairs")
         res.results.update(vals)
@@ -85,7 +86,12 @@ def _internal(p, res, ms, xs, vs, O) -> None:
                                ["#", "pair", "kind", "r", "ṙ", "f", "f·(vᵢ − vⱼ)", "potential"], rows,
                                note="P_int = Σ f·(vᵢ − vⱼ) (27.10); Σ f = 0 and Σ x × f = 0 (24.10, central forces)"))
     if p.t_end is not None:
-        motion.solve_motion(p, res, masses, X, V, Ov)
+        from dyncli import motion_find
+        from dyncli.topics.particle.solver import accuracy
+
+        q = motion_find.extended(p)         # the motion runs to the end of every window searched (§11)
+        setup = motion.Motion(plain_pairs, tuple(q.at), float(q.t_end), accuracy(q.accuracy), tuple(q.find), q.params)
+        motion.solve_motion(setup, res, masses, X, V, Ov)
         res.equations += ["24.1", "24.11", "24.18", "27.14"]
 
 

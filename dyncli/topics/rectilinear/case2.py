@@ -30,15 +30,19 @@ scan that answers the v- and s-queries is :mod:`.case2_scan`.
 
 from __future__ import annotations
 
+import bisect
+import math
 from typing import Any
 
 import numpy as np
 
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
-from dyncli.topics.rectilinear.case2_scan import _N0, _Scan, _fmt, _what
+from dyncli.topics.rectilinear.case2_scan import _Scan, _fmt, _what
+from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
 from dyncli.topics.rectilinear.work import CALL as _CALL, QUAD as _QUAD, SCALAR as _SCALAR, Work
 
+_EPS = float(np.finfo(float).eps)
 _MAX_PANELS = 4000          # panels one quadrature may evaluate before it gives up refining
 
 
@@ -57,6 +61,8 @@ class _Case2(_Scan):
         self._bad_xs: list[float] = []  # where quadratures failed to converge
         self._nbad = 0
         self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
+        self.signs = SignTable(self.A, *derivatives(p.a, self._charge), irs=irs(p.a))
+        self.warned_signs = False
 
     def _charge(self, n: int) -> None:
         self.work.charge(n, f" (hardest near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else "")
@@ -100,33 +106,34 @@ class _Case2(_Scan):
         return sb + vb * h + vals[1], vb + vals[0], errs[1], errs[0]
 
     def state_split(self, T: float, tb: float, sb: float, vb: float):
-        """As :meth:`state`, with the integrals split at the sign changes of a
-        (sampled): a pole where a changes sign (1/(t - c), tan t) then lies at
-        the end of a piece, where the quadrature sees that the integral does
-        not exist, instead of cancelling symmetrically to a principal value;
-        and on the samples' grid (below)."""
+        """As :meth:`state`, with the integrals split at the sign changes of a and at the panels of
+        its exact analysis (:mod:`.case2_signs`): a pole where a changes sign (1/(t - c), tan t)
+        then lies at the end of a piece, where the quadrature sees that the integral does not
+        exist, instead of cancelling symmetrically to a principal value; a narrow pulse of a peaks
+        at a panel end (one adaptive quadrature over [0, 10] saw none of a = exp(−((t − 5)/0.01)²):
+        v(10) was 1e-293 instead of 0.0177; issue 28).  NonFinite where a is not finite."""
+        if T == tb:
+            return sb, vb, 0.0, 0.0
+        roots, panels, stops = self.signs.get(tb, T)
+        if stops.size:
+            raise NonFinite(float(stops[0] if T > tb else stops[-1]), 0)
+        s, v, es, ev = self.state_on(T, tb, sb, vb, np.concatenate([roots, panels]))
+        r = self.rounding(tb, T)
+        return s, v, es + r * abs(T - tb), ev + r
+
+    def rounding(self, lo: float, hi: float) -> float:
+        """The error of v's quadratures over [lo, hi] from the rounding of their abscissae (t known
+        to eps |t|: eps |t| times the total variation of a; a narrow pulse far from t = 0)."""
+        return _EPS * max(abs(lo), abs(hi)) * self.signs.variation(lo, hi)
+
+    def state_on(self, T: float, tb: float, sb: float, vb: float, cuts):
+        """The state at T from (tb, sb, vb), the integrals split at the ``cuts`` between them."""
         h = T - tb
         if h == 0:
             return sb, vb, 0.0, 0.0
-        x = np.linspace(tb, T, _N0 + 1)
-        ax = self.A(x)
-        bad = ~np.isfinite(ax)
-        if bad.any():
-            raise NonFinite(float(x[int(np.argmax(bad))]), 0)
-        sg = np.signbit(ax)
-        idx = np.nonzero(sg[:-1] != sg[1:])[0]
-        cuts = []
-        if 0 < idx.size <= 64:
-            for k in idx:
-                if ax[k] != 0 and ax[k + 1] != 0:
-                    cuts.append(root_in_bracket(self.a1, float(x[k]), float(x[k + 1]), float(ax[k]), float(ax[k + 1])))
-        # and at every 32nd sample and around the largest |a| sampled: one adaptive quadrature over
-        # the whole span could miss a narrow feature the samples see (a = exp(−((t − 5)/0.01)²) on
-        # [0, 10]: v(10) was 1e-293 instead of 0.0177, beside a v query that found it; issue 28)
-        km = int(np.argmax(np.abs(ax)))
-        grid = [float(v) for v in x[32:-1:32]] + [float(x[max(km - 1, 0)]), float(x[min(km + 1, x.size - 1)])]
-        inner = {c for c in cuts + grid if min(tb, T) < c < max(tb, T)}
-        B = np.array([tb] + sorted(inner, reverse=h < 0) + [T])
+        cuts = np.asarray(cuts, dtype=float)
+        inner = np.unique(cuts[(cuts > min(tb, T)) & (cuts < max(tb, T))])
+        B = np.concatenate([[tb], inner[::-1] if h < 0 else inner, [T]])
         lo, w = B[:-1], np.diff(B)
         n = lo.size
 
@@ -222,20 +229,26 @@ class States:
 
         self.p, self.rtol, self.atol = p, rtol, atol
         self.c = _Case2(p, Answers(p.model_copy(update={"find": []}), Result({})), rtol, atol)
-        self.known = [(p.t1, p.s1, p.v1)]
+        self.kt = [p.t1]                        # the times where the state is known, ascending
+        self.known = {p.t1: (p.s1, p.v1)}
 
     def __call__(self, p, times) -> list[dict]:
         out: dict[float, dict[str, Any]] = {}
         c, t1 = self.c, self.p.t1
         c.work = Work(self.p, 2)
+        span = [float(t) for t in times if math.isfinite(float(t))] + [t1]
+        c.signs.get(min(span), max(span))       # one analysis of a over the whole span asked
         for T in sorted({float(t) for t in times}, key=lambda t: (t < t1, abs(t - t1))):
-            tb, sb, vb = min(self.known, key=lambda k: abs(T - k[0]) if (T - k[0]) * (T - t1) >= 0 and
-                             abs(k[0] - t1) <= abs(T - t1) else float("inf"))
+            # the nearest known time between t1 and T (t1 itself is known): a bisection, not a scan
+            tb = self.kt[bisect.bisect_right(self.kt, T) - 1] if T >= t1 else self.kt[bisect.bisect_left(self.kt, T)]
+            sb, vb = self.known[tb]
             try:
                 s, v, _, _ = c.state_split(T, tb, sb, vb)
             except NonFinite:
                 out[T] = {"reached": False}
                 continue
-            self.known.append((T, s, v))
+            if T not in self.known:
+                bisect.insort(self.kt, T)
+            self.known[T] = (s, v)
             out[T] = {"t": T, "s": s, "v": v, "a": c.a1(T), "reached": True}
         return [out[float(t)] for t in times]

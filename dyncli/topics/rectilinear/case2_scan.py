@@ -1,8 +1,9 @@
 """Case 2, a = a(t): the forward scan that answers the v- and s-queries (6.6a,b).
 
 The time axis from t1 is scanned in chunks that double in length up to t1 + t_max.  In each
-chunk a is sampled, its sign changes (the extrema of v) polished by root searches, v integrated
-over the monotone pieces between them; the zeros of v inside those pieces (the extrema of s)
+chunk the sign changes of a (the extrema of v) are decided exactly (:mod:`.case2_signs`: the
+sign of a at its critical points, never by sampling), v integrated over the monotone pieces
+between them (cut into the quadrature panels that analysis gives); the zeros of v inside those pieces (the extrema of s)
 split s into monotone pieces in turn.  A target inside a piece is crossed there (a bracketed
 root search), a target equal to an extremum is answered at the extremum (grazing).  The error
 estimates of the state at each chunk start are carried along.  A mixin of :class:`.case2._Case2`
@@ -17,10 +18,6 @@ import numpy as np
 
 from dyncli.rootfind import roots_in_brackets
 from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable
-
-_N0 = 2048
-_NMAX = 1 << 16
-
 
 def _fmt(x: float) -> str:
     return f"{x:.10g}"
@@ -41,6 +38,10 @@ class _Scan:
     A: Callable[..., Any]
     a1: Callable[[float], float]
     state: Callable[..., Any]
+    state_on: Callable[..., Any]
+    rounding: Callable[[float, float], float]
+    signs: Any
+    warned_signs: bool
     root: Callable[..., float]
     vroot: Callable[..., float]
 
@@ -51,6 +52,7 @@ class _Scan:
         if not vq and not sq:
             return
         H = p.t_max
+        # chunks (not samples: each is analysed whole by .case2_signs) doubling up to t1 + t_max
         edges = t1 + H * np.concatenate([[0.0], 2.0 ** -np.arange(12, -1, -1)])
         tc, sc, vc = t1, s1, v1
         vmin = vmax = v1
@@ -84,44 +86,29 @@ class _Scan:
         for i, S in sq.items():
             ans.unreached(i, f"s stays within [{_fmt(smin)}, {_fmt(smax)}] for t1 <= t <= {_fmt(tc)} ({horizon})")
 
-    def _samples(self, ca: float, cb: float):
-        n = _N0
-        while True:
-            x = np.linspace(ca, cb, n + 1)
-            ax = self.A(x)
-            bad = ~np.isfinite(ax)
-            changes = int(np.count_nonzero(np.signbit(ax[:-1]) != np.signbit(ax[1:])))
-            if bad.any() or changes <= n // 16 or n >= _NMAX:
-                if changes > n // 16 and not bad.any():
-                    self.ans.res.warn("a changes sign very often; crossings closer than the sampling step "
-                                      f"{_fmt((cb - ca) / n)} s may be missed")
-                return x, ax
-            n *= 4
-
     def _chunk(self, ca, cb, sc, vc, vq, sq):
         """Scan [ca, cb] starting from the state (sc, vc); answer what is crossed."""
-        x, ax = self._samples(ca, cb)
+        roots, panels, stops = self.signs.get(ca, cb)
         stop = None
-        bad = ~np.isfinite(ax)
-        if bad.any():
-            k = int(np.argmax(bad))
-            stop = f"a is not finite at t = {_fmt(x[k])}"
-            if k <= 1:
+        if stops.size:
+            x = float(stops[0])
+            stop = f"a is not finite at t = {_fmt(x)}"
+            cb = ca + (x - ca) * (1 - 1e-9)
+            roots, panels = roots[roots < cb], panels[panels < cb]
+            if not cb > ca:
                 return ca, sc, vc, vc, vc, sc, sc, stop
-            x, ax = x[:k], ax[:k]
-            cb = float(x[-1])
-        # extrema of v: sign changes of a
-        sb = np.signbit(ax)
-        ks = np.nonzero(sb[:-1] != sb[1:])[0]
-        ks = ks[ax[ks + 1] != 0]              # a zero sample is itself the root (ax[k] == 0: root x[k])
-        rts = roots_in_brackets(lambda t, j: self.A(t), x[ks], x[ks + 1], ax[ks], ax[ks + 1]) if ks.size else np.zeros(0)
-        rts = rts[(rts > ca) & (rts < cb)]
-        Bv = np.unique(np.concatenate([[ca], rts, [cb]]))
+        if self.signs.unresolved and not self.warned_signs:
+            self.warned_signs = True
+            self.ans.res.warn("a varies too fast somewhere (a pole, or sign changes closer than the rounding) "
+                              "for its sign changes to be decided there; see error_estimate")
+        # the extrema of v (the roots of a: ext) and the quadrature panels between them
+        Bv = np.unique(np.concatenate([[ca], roots, panels, [cb]]))
+        ext = np.isin(Bv, roots)
         vals, errs, conv = self.integrate(lambda t, j: self.A(t), Bv[:-1], np.diff(Bv))
         self._check(conv)
         vB = vc + np.concatenate([[0.0], np.cumsum(vals)])
-        evB = self.ev_c + np.concatenate([[0.0], np.cumsum(errs)])
-        self._v_queries(vq, Bv, vB, ca, sc, vc)
+        evB = self.ev_c + np.concatenate([[0.0], np.cumsum(errs)]) + self.rounding(ca, cb)
+        self._v_queries(vq, Bv, vB, ext, ca, sc, vc)
         if not sq:
             # no position queries left: s only at the chunk end (for the next chunk and the range)
             h = float(cb - ca)
@@ -130,50 +117,50 @@ class _Scan:
             self.ev_c = float(evB[-1])
             return (cb, float(s_end), float(vB[-1]), float(vB.min()), float(vB.max()),
                     float(min(sc, s_end)), float(max(sc, s_end)), stop)
-        Bs, vs = self._s_breaks(Bv, vB, ca, cb, vc)
+        Bs, vs, turn = self._s_breaks(Bv, vB, ext, ca, cb)
         h = np.diff(Bs)
         ends = Bs[1:]
         vals2, errs2, conv2 = self.integrate(lambda t, j: (ends[j] - t) * self.A(t), Bs[:-1], h)
         self._check(conv2)
         sB = sc + np.concatenate([[0.0], np.cumsum(vs[:-1] * h + vals2)])
         esB = self.es_c + self.ev_c * (Bs - ca) + np.concatenate([[0.0], np.cumsum(errs2 + float(evB.max()) * h)])
-        self._s_queries(sq, Bs, sB, vs, esB, evB)
+        self._s_queries(sq, Bs, sB, vs, turn, esB, evB)
         self.es_c = float(esB[-1])
         self.ev_c = float(evB[-1])
         return (cb, float(sB[-1]), float(vB[-1]), float(vB.min()), float(vB.max()),
                 float(sB.min()), float(sB.max()), stop)
 
-    def _v_queries(self, vq, Bv, vB, ca, sc, vc) -> None:
+    def _v_queries(self, vq, Bv, vB, ext, ca, sc, vc) -> None:
         """Answer (and remove from ``vq``) the v queries crossed on the pieces Bv of the chunk
-        (interior breakpoints are extrema of v)."""
+        (v monotone on each; ``ext``: the breakpoints that are extrema of v)."""
         ans = self.ans
         for i, V in list(vq.items()):
             for k in range(len(Bv) - 1):
                 lo, hi = min(vB[k], vB[k + 1]), max(vB[k], vB[k + 1])
                 tol = self.rtol * max(abs(V), abs(lo), abs(hi)) + self.atol
                 tb, vb = float(Bv[k]), float(vB[k])
-                ext = k + 1 < len(Bv) - 1
-                if ext and abs(V - vB[k + 1]) <= tol:
+                if ext[k + 1] and k + 1 < len(Bv) - 1 and abs(V - vB[k + 1]) <= tol:
                     t, graze = float(Bv[k + 1]), True     # target = extremum (grazing)
                 elif lo <= V <= hi:
                     t, graze = self.vroot(tb, vb, float(Bv[k + 1]), float(vB[k + 1]), V), False
                 else:
                     continue
                 if not ans.beyond_t_max(i, t):
-                    s, v, es, ev = self.state(t, ca, sc, vc)
-                    es += self.es_c + self.ev_c * abs(t - ca)
-                    ev += self.ev_c
+                    s, v, es, ev = self.state_on(t, ca, sc, vc, Bv)
+                    r = self.rounding(ca, t)
+                    es += self.es_c + (self.ev_c + r) * abs(t - ca)
+                    ev += self.ev_c + r
                     at = abs(self.a1(t))
                     # t is off by the error of v over |a| (at a grazing extremum: the root search on a)
                     ans.reached(i, t, s, v, err=(ev / at if (at > 0 and not graze) else 0.0, es, ev))
                 del vq[i]
                 break
 
-    def _s_breaks(self, Bv, vB, ca, cb, vc):
-        """The breakpoints of s on the chunk (its ends and the zeros of v inside the monotone
-        pieces of v, i.e. the extrema of s) and v there: (Bs, vs) arrays."""
-        Bs, vs = [ca], [vc]
+    def _s_breaks(self, Bv, vB, ext, ca, cb):
+        """The breakpoints of s on the chunk (the pieces of v and the zeros of v inside them, i.e.
+        the extrema of s), v there and which are turning points: (Bs, vs, turn) arrays."""
         last = len(Bv) - 1
+        zero = np.zeros(len(Bv), dtype=bool)    # breakpoints where v is zero (turning points)
         pend = []                       # pieces with a sign change of v: one vectorised root search
         for k in range(last):
             va, vb_ = vB[k], vB[k + 1]
@@ -182,14 +169,15 @@ class _Scan:
                 # sign change is quadrature noise within the tolerance; the zero is the extremum
                 # itself (a root search there converges only slowly on the noise)
                 tolz = self.rtol * max(abs(va), abs(vb_)) + self.atol
-                if 0 < k + 1 < last and abs(vb_) <= tolz:
-                    Bs.append(float(Bv[k + 1]))
+                if 0 < k + 1 < last and ext[k + 1] and abs(vb_) <= tolz:
+                    zero[k + 1] = True
                     continue
-                if 0 < k and abs(va) <= tolz:
+                if 0 < k and ext[k] and abs(va) <= tolz:
                     continue
                 pend.append(k)
-            elif vb_ == 0 and 0 < k + 1 < len(Bv) - 1:
-                Bs.append(float(Bv[k + 1]))
+            elif vb_ == 0 and 0 < k + 1 < last:
+                zero[k + 1] = True
+        roots: list[float] = []
         if pend:
             pk = np.array(pend)
             t0, v0 = Bv[pk], vB[pk]
@@ -199,25 +187,24 @@ class _Scan:
                 self._check(conv)
                 return v0[j] + vals
 
-            Bs.extend(float(r) for r in roots_in_brackets(fv, t0, Bv[pk + 1], v0, vB[pk + 1]))
-        Bs = sorted(set(b for b in Bs[1:] if ca < b < cb))
-        Bs = [ca] + Bs
-        vs = [vc] + [0.0] * (len(Bs) - 1)
-        Bs.append(cb)
-        vs.append(float(vB[-1]))
-        return np.array(Bs), np.array(vs)
+            roots = [float(r) for r in roots_in_brackets(fv, t0, Bv[pk + 1], v0, vB[pk + 1])]
+        rts = np.array(sorted(set(r for r in roots if ca < r < cb) - set(Bv.tolist())), dtype=float)
+        Bs = np.concatenate([Bv, rts])
+        vs = np.concatenate([np.where(zero, 0.0, vB), np.zeros(rts.size)])
+        turn = np.concatenate([zero, np.ones(rts.size, dtype=bool)])
+        order = np.argsort(Bs, kind="stable")
+        return Bs[order], vs[order], turn[order]
 
-    def _s_queries(self, sq, Bs, sB, vs, esB, evB) -> None:
+    def _s_queries(self, sq, Bs, sB, vs, turn, esB, evB) -> None:
         """Answer (and remove from ``sq``) the s queries crossed on the pieces Bs of the chunk
-        (interior breakpoints are turning points)."""
+        (s monotone on each; ``turn``: the breakpoints that are turning points)."""
         ans = self.ans
         for i, S in list(sq.items()):
             for k in range(len(Bs) - 1):
                 lo, hi = min(sB[k], sB[k + 1]), max(sB[k], sB[k + 1])
                 tol = self.rtol * max(abs(S), abs(lo), abs(hi)) + self.atol
                 tb, sb_, vb = float(Bs[k]), float(sB[k]), float(vs[k])
-                ext = k + 1 < len(Bs) - 1
-                if ext and abs(S - sB[k + 1]) <= tol:
+                if turn[k + 1] and k + 1 < len(Bs) - 1 and abs(S - sB[k + 1]) <= tol:
                     t, graze = float(Bs[k + 1]), True      # target = turning point
                 elif lo <= S <= hi:
                     t, graze = self.root("s", S, tb, sb_, vb, float(Bs[k + 1]), float(sB[k + 1]), float(vs[k + 1])), False

@@ -249,6 +249,7 @@ def _at_rest_within_input(c) -> bool:
 
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case3(p, ans, rtol, atol)
+    ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)
     if c.a_v1 == 0 or _at_rest_within_input(c):
         c.equilibrium()
         return "quadrature"

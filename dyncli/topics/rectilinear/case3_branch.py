@@ -55,6 +55,8 @@ class Branch:
     # -- where does v go? -------------------------------------------------
     def _find_end(self) -> None:
         c3, e, v1, c = self.c3, self.e, self.v1, self.c
+        # a starting table (issue 28 audit): it only bounds the search; the first root of a is
+        # decided by all_roots below (_first_zero), non-finite a by the quadratures' NonFinite
         g = np.unique(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:],
             4.0 * np.logspace(0, 300, 3001)]))
@@ -185,6 +187,7 @@ class Branch:
             # D0 = 0 (v1 already at v* to the last bit, e.g. v1 = 1e-308 with v* = 0): no room
             umax = max(math.log(max(abs(self.D0) / dmin, 1.0)), 1e-3)
         base = [0.0, 1 / 64, 1 / 16, 1 / 8, 1 / 4, 1 / 2]
+        # quadrature panels in u (a starting table the adaptive quadrature refines; no decision)
         grid = np.unique(np.concatenate([base, np.arange(1.0, umax, 1.0), [umax]]))
         grid = grid[grid <= umax]
         # the turning point of s (v = 0) on this branch is a grid node

@@ -44,10 +44,20 @@ from dyncli.topics.rectilinear.case4_scan import _Scan
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
 
+def _irs(a) -> tuple:
+    from dyncli.expr.derivative import d_ir
+
+    try:
+        return a.ir, d_ir(a.ir, "s")
+    except Exception:                # (no rule: min/max; a recursion too deep)
+        return a.ir, None
+
+
 class _Case4(_Scan):
     def __init__(self, p, ans, rtol, atol):
         self.p, self.ans = p, ans
         self._fn = p.a.scalar_fn()
+        self.irs = _irs(p.a)            # a and da/ds as IR (the enclosures of the scan, .enclose)
         self.work = Work(p, 4)          # accuracy.max_steps (.work)
         self.rtol, self.atol = rtol, atol
         # the quadratures' rtol: 100 x tighter, but not below what their error estimate can
@@ -303,6 +313,7 @@ class _Case4(_Scan):
 
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case4(p, ans, rtol, atol)
+    ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)
     if not c.setup():
         c.equilibrium()
         return "quadrature"

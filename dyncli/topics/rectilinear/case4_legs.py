@@ -180,6 +180,8 @@ class Leg:
         return vals, errs
 
     def _grid(self, part: int, X: float, kind: str):
+        # quadrature panels of the leg's t(s) table (issue 28 audit): a starting table the adaptive
+        # quadrature refines; the leg is monotone, no decision is made on these nodes
         if X <= 0:
             return np.array([0.0])
         if kind in ("exp", "geo"):

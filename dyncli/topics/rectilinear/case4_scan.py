@@ -12,6 +12,7 @@ import numpy as np
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End
+from dyncli.topics.rectilinear.enclose import hidden, safe_enclose
 
 
 class _Scan:
@@ -25,6 +26,7 @@ class _Scan:
     scale_min: float
     qr: float
     amax: float
+    irs: tuple
 
     # -- where does the body go from s1 in direction e? ------------------------
     def scan(self, e: int, v2start: float) -> End:
@@ -65,6 +67,8 @@ class _Scan:
     def _scan_nodes(self, e: int):
         """The scan positions s1 + e c g, |s| <= _BIG (g: geometric and linear offsets)."""
         s1, c = self.s1, self.scale
+        # cells of v² (a starting table: turning points and dips are decided inside the cells by
+        # root searches, and barriers between the nodes by the enclosures of a, _hidden_dips)
         g = np.unique(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:], 4.0 * np.logspace(0, 300, 3001)]))
         cm = self.scale_min
@@ -127,7 +131,10 @@ class _Scan:
         # every local minimum of v² between nodes (a from −e to +e) is examined (issue #28: a narrow
         # barrier's dip below 0 is not announced by v² at the nodes; no threshold on them)
         dips = np.nonzero((av[:-1] * e < 0) & (av[1:] * e > 0))[0]
-        for k in sorted(set([first_neg] + [int(d) for d in dips if d < first_neg])):
+        # and where a barrier hides between two nodes (a from −e to +e and back, a at the nodes of
+        # one sign or underflowing to 0), located by the enclosures of a (.enclose)
+        inner = self._hidden_dips(e, ss, v2, av, first_neg)
+        for k in sorted(set([first_neg] + [int(d) for d in dips if d < first_neg] + list(inner))):
             if k >= n - 1:
                 break
             lo, hi = float(ss[k]), float(ss[k + 1])
@@ -144,13 +151,42 @@ class _Scan:
                     sT = root_in_bracket(E, lo, hi, v2lo, float(v2[k + 1]))
                 # a dip inside the cell before the crossing is a turning point as well
                 return self._classify(sT, e, tolsep)
-            sm = root_in_bracket(self.a1, lo, hi, float(av[k]), float(av[k + 1]))
+            bl, bh, al, ah = inner.get(k, (lo, hi, float(av[k]), float(av[k + 1])))
+            sm = root_in_bracket(self.a1, bl, bh, al, ah)
             v2m = E(sm)
             if v2m < -tolsep:
                 return self._classify(root_in_bracket(E, lo, sm, v2lo, v2m), e, tolsep)
             if v2m <= tolsep:
                 return End("asym", sm)
         return None
+
+    def _hidden_dips(self, e: int, ss, v2, av, upto: int) -> dict:
+        """{cell k: (s_lo, s_hi, a there)}: a bracket where a goes from −e to +e inside a cell whose
+        nodes do not show it, in the cells before ``upto`` where the enclosure of a allows v² to reach
+        0 (2 |Δs| max(−a e) ≥ v² at the cell's start); the points examined: the cell's ends and 9
+        samples of each cell where its enclosure exceeds its samples (.enclose.hidden)."""
+        ir, dir_ = self.irs
+        out: dict[int, tuple] = {}
+        if ir is None:
+            return out
+        for k in range(min(upto, len(ss) - 1)):
+            lo, hi = float(ss[k]), float(ss[k + 1])
+            if av[k] * e < 0 < av[k + 1] * e:
+                continue                                # a dip the nodes show
+            m, M = safe_enclose(ir, min(lo, hi), max(lo, hi), "s")
+            worst = -m if e > 0 else M                  # the largest −a e the cell may hold
+            if not 2 * max(worst, 0.0) * abs(hi - lo) >= v2[k]:
+                continue
+            leaves, _ = hidden(ir, dir_, self.A, min(lo, hi), max(lo, hi), cells=1, budget=200, var="s")
+            k9 = np.linspace(0.0, 1.0, 9)
+            pts = np.unique(np.concatenate([[lo, hi]] + [u + (v - u) * k9 for u, v in leaves or [(lo, hi)]]))
+            pts = pts if e > 0 else pts[::-1]
+            y = self.A(pts) * e
+            j = np.nonzero((y[:-1] < 0) & (y[1:] > 0))[0]
+            if j.size:
+                i = int(j[0])
+                out[k] = (float(pts[i]), float(pts[i + 1]), float(y[i] * e), float(y[i + 1] * e))
+        return out
 
     def _cut_singular(self, ss, vals, k):
         lo, hi = float(ss[k]), float(ss[k + 1])

@@ -89,7 +89,7 @@ def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[lis
     v is monotonic — the one zero of v by its route; case 4 from its route (the first turning
     point, then every half period: a swing between two turning points takes half the period,
     (6.12)); case 2: v is monotonic between the zeros of a(t) (an explicit function of t, found
-    by Brent after a fine vectorised scan), so each piece holds at most one turning point;
+    decided exactly by the signs of a at its critical points), so each piece holds at most one turning point;
     the general case: the roots of v (Brent) on a uniform grid of the route's motion."""
     t1, case = p.t1, res.results.get("case")
     if case == 1:
@@ -140,20 +140,16 @@ class Swings(list):
     half: float = 0.0
 
 
-def _zeros_of_a(p, lo: float, hi: float, n: int = 4096) -> list[float]:
+def _zeros_of_a(p, lo: float, hi: float) -> list[float]:
+    """The sign changes of a(t) in (lo, hi), decided exactly (:class:`.case2_signs.SignTable`: the
+    signs of a at its critical points, never by sampling)."""
     import numpy as np
 
-    ts = np.linspace(lo, hi, n + 1)
-    with np.errstate(all="ignore"):
-        A = np.broadcast_to(np.asarray(p.a(t=ts), dtype=float), ts.shape)
-    f = lambda t: float(p.a(t=t))                    # noqa: E731
-    out = []
-    for k in range(n):
-        if A[k] * A[k + 1] < 0:
-            out.append(_q._root(f, float(ts[k]), float(ts[k + 1])))
-        elif A[k + 1] == 0 and k + 1 < n:
-            out.append(float(ts[k + 1]))
-    return out
+    from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
+
+    dA, d2A = derivatives(p.a)
+    roots, _, _ = SignTable(lambda x: p.a.evaluate(t=np.asarray(x, dtype=float)), dA, d2A, irs(p.a)).get(lo, hi)
+    return [float(r) for r in roots]
 
 
 def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | None) -> list[float]:
@@ -166,15 +162,27 @@ def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | No
     return sorted(out)
 
 
+def _sampler(p, res, sample):
+    """The motion at any times for the searches: case 2 one sweep of the span (not one quadrature
+    from t1 per time), cases 3 and 4 the motion solved once (not one solve per try, issue 29)."""
+    case, quad = res.results.get("case"), str(res.method).startswith("quadrature")
+    if case == 2 and quad:
+        from dyncli.topics.rectilinear.case2 import States
+
+        return States(p, p.accuracy.rtol, p.accuracy.atol)
+    if case in (3, 4) and quad:
+        from dyncli.topics.rectilinear.solver import Solved
+
+        return Solved(case, res.extra.get("solved"))
+    return sample
+
+
 def answer(p, res, generic, items, sample, solve_one) -> None:
     """Fill ``items`` (the answers in the user's order) for the generic queries, then add
     ``distance`` to every reached answer."""
     params = resolve_params(p.params)
     const = lambda text: constant(text, params)      # noqa: E731
-    if res.results.get("case") == 2 and str(res.method).startswith("quadrature"):
-        from dyncli.topics.rectilinear.case2 import States
-
-        sample = States(p, p.accuracy.rtol, p.accuracy.atol)     # one sweep of the span, not one per time
+    sample = _sampler(p, res, sample)
     t1 = p.t1
     asked = [q.t for q in p.find if q.kind == "t"]
     t_end = max(asked) if asked and max(asked) > t1 else t1 + p.t_max     # the largest requested time, else t_max

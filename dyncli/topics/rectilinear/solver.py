@@ -181,6 +181,8 @@ def _run(p, case, route: str, rtol: float, atol: float):
         else:
             from dyncli.topics.rectilinear import case4 as mod  # type: ignore[no-redef]  # (as above)
         res_.method = mod.solve(p, ans_, rtol, atol)
+        if res_.extra.get("solved") is not None and res_.extra["solved"].rtol != p.accuracy.rtol:
+            res_.extra.pop("solved")    # (a check run at another rtol: not the motion reported)
         res_.equations = list(EQUATIONS[2 if case == 1 else case])
     else:
         from dyncli.topics.rectilinear import general
@@ -214,6 +216,53 @@ def sample(p, times) -> list[dict]:
     with np.errstate(all="ignore"):
         _, ans = _run(q, case, route, q.accuracy.rtol, q.accuracy.atol)
     return ans.items
+
+
+class Solved:
+    """The motion of one problem solved once by its quadrature route (case 3: the branches of v,
+    case 4: the scans and legs, built at the first call and kept), its state at any times per
+    call: a search of ``find`` tries many times, each of which was a new solve (issue 29).  The
+    same states as :func:`sample` (the same model with ``{t: T}`` queries only)."""
+
+    def __init__(self, case: int, seed=None):
+        """``seed``: the case object of the problem's own run (its scans and legs reused)."""
+        self.case, self.c, self.ready = case, None, False
+        if seed is not None:
+            from dyncli.topics.rectilinear import case3
+
+            self.c = seed
+            self.ready = (not (seed.a_v1 == 0 or case3._at_rest_within_input(seed)) if case == 3
+                          else hasattr(seed, "fwd"))
+
+    def __call__(self, p, times) -> list[dict]:
+        import numpy as np
+
+        from dyncli.topics.rectilinear.model import Query
+        from dyncli.topics.rectilinear.work import Work
+
+        q = p.model_copy(update={"find": [Query(t=float(t)) for t in times]})
+        ans = Answers(q, Result({"case": self.case, "find": []}))
+        with np.errstate(all="ignore"):
+            if self.c is None:
+                rtol, atol = q.accuracy.rtol, q.accuracy.atol
+                if self.case == 3:
+                    from dyncli.topics.rectilinear import case3
+
+                    self.c = case3._Case3(q, ans, rtol, atol)
+                    self.ready = not (self.c.a_v1 == 0 or case3._at_rest_within_input(self.c))
+                else:
+                    from dyncli.topics.rectilinear import case4
+
+                    self.c = case4._Case4(q, ans, rtol, atol)
+                    self.ready = self.c.setup()
+            c = self.c
+            c.p, c.ans, c.work = q, ans, Work(q, self.case)     # each call its own work budget
+            if not self.ready:
+                c.equilibrium()
+            else:
+                for i, T in enumerate(times):
+                    ans.ask(i, c.t_query, float(T))
+        return ans.items
 
 
 def _difference(p, a: list, b: list) -> float:

@@ -18,11 +18,48 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from dyncli.errors import InputError, NumericalError
 from dyncli.result import Series, Table
 from dyncli.topics.rigid_kinetics import equations as eq
 from dyncli.vec3 import cross
+
+Vec = tuple[float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Force:
+    """A force F [N] applied at the point x [m] (None: the center of mass)."""
+
+    F: Vec
+    x: Vec | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Motion:
+    """A prescribed motion v̄(t), ω(t) on the body axes (expressions in t), reported at ``at`` [s]."""
+
+    v: tuple
+    omega: tuple
+    at: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Body:
+    """What rigid-energy knows beyond Ī, in SI floats: the mass, v̄ and ω (None: from the
+    motion's first time), the position x̄ of the center of mass and the point O of H_O (None:
+    not given), the forces, couples and body force per unit mass b, the prescribed motion."""
+
+    m: float
+    v: Vec | None = None
+    omega: Vec | None = None
+    x: Vec | None = None
+    about: Vec | None = None
+    forces: tuple[Force, ...] = ()
+    moments: tuple[Vec, ...] = ()
+    b: Vec | None = None
+    motion: Motion | None = None
 
 
 def _finite(name: str, *arrays) -> None:
@@ -43,9 +80,10 @@ def _sum(xs) -> float:
         return sum(xs)
 
 
-def initial_state(p):
+def initial_state(p: Body):
     """(v̄, ω): as given, or the prescribed motion's values at its first time."""
-    v, w = p.v, p.omega
+    v: tuple[float, ...] | list[float] | None = p.v
+    w: tuple[float, ...] | list[float] | None = p.omega
     if p.motion is not None and (v is None or w is None):
         from dyncli.expr.jet import vec_jet_at     # plain floats: no numpy
 
@@ -58,7 +96,7 @@ def initial_state(p):
     return v, w
 
 
-def momentum_about(res, p, v, H) -> None:
+def momentum_about(res, p: Body, v, H) -> None:
     """``H_O`` (29.25) and ``x``-dependent views when the position is given."""
     if p.x is None:
         return
@@ -70,7 +108,7 @@ def momentum_about(res, p, v, H) -> None:
     res.equations.append("29.25")
 
 
-def power(res, p, v, w) -> None:
+def power(res, p: Body, v, w) -> None:
     """``power`` and its terms (34.17-34.19) when forces, moments or b are given."""
     if not (p.forces or p.moments or p.b is not None):
         return
@@ -96,7 +134,7 @@ def power(res, p, v, w) -> None:
                            note=f"P = {P:.6g} W = dT/dt (34.16)"))
 
 
-def motion(res, p, I) -> None:
+def motion(res, p: Body, I) -> None:
     """``T_motion``, ``T_rate``, ``work`` over a prescribed motion (34.13-34.16, 34.20), evaluated
     at each time in plain floats (exact derivatives: :func:`dyncli.expr.jet.vec_jet_at`)."""
     mo = p.motion
@@ -121,14 +159,15 @@ def motion(res, p, I) -> None:
     res.series.append(Series("t", list(mo.at), ["v_motion", "omega_motion"], title="the prescribed motion (on e'ᵢ)"))
 
 
-def translation(res, p) -> None:
+def translation(res, forces: tuple[Force, ...], m: float | None) -> None:
     """planar-moments with forces: F, ā (32.6, 32.8), Σ p×F and the couple still needed."""
-    if not p.forces:
+    if not forces:
         return
-    Fs = [f.F for f in p.forces]
-    ps = [(0.0, 0.0, 0.0) if f.x is None else f.x for f in p.forces]
+    assert m is not None                      # the model asks for m with forces
+    Fs = [f.F for f in forces]
+    ps = [(0.0, 0.0, 0.0) if f.x is None else f.x for f in forces]
     F = [_sum(f[i] for f in Fs) for i in range(3)]                          # (32.6)
-    a = [c / p.m for c in F]                                                # (32.8)
+    a = [c / m for c in F]                                                  # (32.8)
     MF = [_sum(c[i] for c in [cross(q, f) for q, f in zip(ps, Fs)]) for i in range(3)]
     couple = [M - c for M, c in zip(res.results["M"], MF)]
     _finite("forces (their resultant or moment)", F, a, MF, couple)

@@ -31,13 +31,25 @@ def solve_planar_moments(p, options: SolveOptions | None = None) -> Result:
         "angular momentum balance about the center of mass (32.10-32.13)",
         [("ω", [0.0, 0.0, w]), ("H̄", H), ("δH̄/δt", dH), ("ω×H̄", wxH), ("M̄ = dH̄/dt", M)],
     ))
-    energy.translation(res, p)
+    energy.translation(res, _forces(p.forces), p.m)
     return res
+
+
+def _forces(forces) -> tuple[energy.Force, ...]:
+    return tuple(energy.Force(f.F, f.x) for f in forces)
+
+
+def body(p) -> energy.Body:
+    """The validated rigid-energy model as plain inputs (SI floats, expressions)."""
+    mo = p.motion
+    motion = None if mo is None else energy.Motion(tuple(mo.v), tuple(mo.omega), tuple(mo.at))
+    return energy.Body(p.m, p.v, p.omega, p.x, p.about, _forces(p.forces), tuple(p.moments), p.b, motion)
 
 
 def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
     m = p.m
-    v0, w0 = energy.initial_state(p)
+    bd = body(p)
+    v0, w0 = energy.initial_state(bd)
     v = tuple(float(c) for c in v0)
     w = tuple(float(c) for c in w0)
     I = sym3(p.I)
@@ -64,7 +76,7 @@ def solve_rigid_energy(p, options: SolveOptions | None = None) -> Result:
         res.warn("angle_omega_H is undefined: ω = 0 or H̄ = 0" if nw == 0 or nH == 0
                  else "angle_omega_H is undefined: |ω| or |H̄| overflows a double")
     res.views.append(FrameTable("vectors on the basis of I", [("v̄", list(v)), ("ω", list(w)), ("H̄ = Īω", list(H)), ("G = m v̄", G)]))
-    energy.momentum_about(res, p, v, H)
-    energy.power(res, p, v, w)
-    energy.motion(res, p, I)
+    energy.momentum_about(res, bd, v, H)
+    energy.power(res, bd, v, w)
+    energy.motion(res, bd, I)
     return res

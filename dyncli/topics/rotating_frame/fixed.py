@@ -15,6 +15,7 @@ with components c' on e'_i has the fixed components Q c'.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from dyncli.expr.jet import jet_at
 from dyncli.topics.inertia import mat3, rotations
@@ -24,14 +25,20 @@ VECTORS = ("omega", "p", "dp_dt", "omega_x_p", "p_dot", "omega_dot", "d2p_dt2", 
            "centripetal", "p_ddot", "vA", "aA")
 
 
-def wanted(p) -> bool:
-    return p.fixed or p.basis0 is not None
+@dataclass(frozen=True, slots=True)
+class Turning:
+    """How e'_i turns (10.4): ω' (components on e'_i, expressions in t), Q0 (rows of the matrix whose
+    columns are e'_i at t = 0 in fixed components), and the route's controls (``method`` "ode"
+    integrates even a constant ω'; the runner's rtol, atol, max_steps, estimate)."""
 
+    omega: tuple
+    Q0: tuple[tuple[float, float, float], ...]
+    method: str = "auto"
+    rtol: float = 1e-10
+    atol: float = 1e-12
+    max_steps: int | None = None
+    estimate: bool = False
 
-def initial(p):
-    """Q0: the columns are e'_i at t = 0 in fixed components (``basis0``, else the identity)."""
-    b = p.basis0
-    return mat3.eye() if b is None else rotations.from_fields(b.axis, b.angle, b.euler313, b.matrix)
 
 
 def skew_rate(Q, w):
@@ -44,32 +51,36 @@ def skew_rate(Q, w):
     return [[sum(Q[i][k] * W[k][j] for k in range(3)) + 0.0 for j in range(3)] for i in range(3)]
 
 
-def _integrated(p, Q0, times, res):
+def _integrated(p: Turning, Q0, times, res):
     """Q at the times by (10.4), Q̇ = Q [ω'(t)]× on the nine entries of Q row by row, through the
     runner (imported here: numpy and scipy only when a problem integrates)."""
     from dyncli import runner
+    from dyncli.expr.floateval import float_fn
+
+    w1, w2, w3 = (float_fn(e, "t") for e in p.omega)       # ω'(t) in plain floats (no jets, no numpy)
 
     class Poisson(runner.Route):
         def initial_state(self):
             return [x for row in Q0 for x in row]
 
         def rhs(self, t, y):
-            w = tuple(jet_at(e, t)[0] for e in p.omega)
-            Q = [list(y[0:3]), list(y[3:6]), list(y[6:9])]
+            t = float(t)
+            w = (w1(t), w2(t), w3(t))
+            v = y.tolist() if hasattr(y, "tolist") else list(y)
+            Q = [v[0:3], v[3:6], v[6:9]]
             return [x for row in skew_rate(Q, w) for x in row]
 
-    a = p.accuracy
-    route = Poisson(method="DOP853", rtol=a.rtol, atol=a.atol, max_steps=a.max_steps, estimate=a.estimate)
+    route = Poisson(method="DOP853", rtol=p.rtol, atol=p.atol, max_steps=p.max_steps, estimate=p.estimate)
     route.times = list(times)
     out = route.run(res)
     res.method = "ode:DOP853"
     return [[[float(out[k, 3 * i + j]) for j in range(3)] for i in range(3)] for k in range(len(times))]
 
 
-def orientations(p, times, res) -> list:
-    """Q(t) at each time (the route by ω' and ``accuracy.method``; sets ``res.method``)."""
-    Q0 = initial(p)
-    if p.accuracy.method != "ode" and all(e.is_constant for e in p.omega):
+def orientations(p: Turning, times, res) -> list:
+    """Q(t) at each time (the route by ω' and ``method``; sets ``res.method``)."""
+    Q0 = p.Q0
+    if p.method != "ode" and all(e.is_constant for e in p.omega):
         w = [jet_at(e, 0.0)[0] for e in p.omega]
         rate = math.hypot(*w)
         if rate == 0.0:
@@ -78,7 +89,7 @@ def orientations(p, times, res) -> list:
     return _integrated(p, Q0, times, res) if times else []
 
 
-def report(p, res, times) -> None:
+def report(p: Turning, res, times) -> None:
     """NAME_fixed for every vector result, and ``basis_fixed`` (e'_1, e'_2, e'_3 in fixed
     components) at each time."""
     Qs = orientations(p, times, res)

@@ -84,8 +84,11 @@ def solve(p, options: SolveOptions | None = None) -> Result:
             res.results[name] = per_time[name]
     if p.vB is not None or p.aB is not None:
         res.equations += ["9.1"]
-    if fixed.wanted(p):                  # e'_i turned by (10.4) from basis0: every vector on e_i too
-        fixed.report(p, res, times)
+    wanted = p.fixed or p.basis0 is not None
+    if wanted:                           # e'_i turned by (10.4) from basis0: every vector on e_i too
+        a = p.accuracy
+        fixed.report(fixed.Turning(tuple(p.omega), _basis0(p.basis0), a.method, a.rtol, a.atol, a.max_steps,
+                                   a.estimate), res, times)
     if p.vB is not None and p.aB is None:
         res.warn("aB not given: a_B is taken as the derivative of the given v_B, δv_B/δt + ω×v_B (11.4)")
     if bad:
@@ -101,17 +104,27 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         ab: list[str] = [n for n in ("vA", "aA") if n in res.results]
         if ab:
             res.series.append(Series("t", times, ab, "point A (9.1), components on e'_i"))
-        if fixed.wanted(p):              # each table again with the vectors on e_i
+        if wanted:                       # each table again with the vectors on e_i
             res.series += [Series("t", times, [n + "_fixed" for n in s.names],
                                   (s.title or "").replace("components on e'_i", "") + " — on the fixed basis e_i")
                            for s in list(res.series)]
             res.series.append(Series("t", times, ["basis_fixed"], "e'_1, e'_2, e'_3 on the fixed basis e_i (10.4)"))
     rows = [(lab, per_time[n]) for lab, n in TABLE_ROWS] + [(lab, per_time[n]) for lab, n in EXTRA_ROWS if n in per_time]
     if options.symbolic:
-        res.views.append(symbolic_table(p))
+        view = frame.symbolic_within(lambda: symbolic_table(p), res, "the components")
+        res.views += [view] if view is not None else []
     if times:
         res.views += frame.numeric_tables("δ/δt table", times, rows, BASIS)
     return res
+
+
+def _basis0(b):
+    """Q0 of a ``basis0`` orientation (None: the identity), rows of floats: the columns are e'_i at
+    t = 0 in fixed components."""
+    from dyncli.topics.inertia import mat3, rotations
+
+    Q = mat3.eye() if b is None else rotations.from_fields(b.axis, b.angle, b.euler313, b.matrix)
+    return tuple(tuple(float(x) for x in row) for row in Q)
 
 
 def symbolic_table(p):

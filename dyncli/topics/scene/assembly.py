@@ -15,6 +15,8 @@ import numpy as np
 
 from dyncli.errors import InputError
 
+from .elements import Drive, Element
+
 EPS = float(np.finfo(float).eps)
 
 
@@ -68,7 +70,7 @@ def other_branch(system, q, free, t: float = 0.0):
     return None
 
 
-def gaps(system, q, t: float = 0.0) -> list[tuple[object, float]]:
+def gaps(system, q, t: float = 0.0) -> list[tuple[Element, float]]:
     """(element, largest |φ| of its rows) for every element not satisfied to rounding."""
     out = []
     tol = 1e-9 * length_scale(q, system)
@@ -85,7 +87,7 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
         return
     e, g = bad[0]
     placed = "" if not np.any(free) else " (the joints could not place the positions left out either)"
-    unit = "rad" if e.kind == "drive" and system.names[e.index].startswith("angle") else "m"
+    unit = "rad" if isinstance(e, Drive) and system.names[e.index].startswith("angle") else "m"
     raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {g:.6g} {unit}{placed}; "
                      "fix the positions, or leave one out (x or angle) so that the joints place it", e.path)
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -18,7 +19,10 @@ from dyncli.expr import did_you_mean
 from . import contacts
 from . import elements as el
 from .dynamics import Load, SceneSystem
-from .system import BodyData, Point, SurfaceData, perp
+from .system import BodyData, BodyPoint, Point, SurfaceData, perp
+
+if TYPE_CHECKING:
+    from .curved import CurveData
 
 SHAPE_I = {"rod": lambda b: b["mass"] * b["length"] ** 2 / 12, "disk": lambda b: b["mass"] * b["radius"] ** 2 / 2,
            "ring": lambda b: b["mass"] * b["radius"] ** 2,
@@ -44,12 +48,16 @@ class Built:
     v: np.ndarray
     bodies: dict[str, BodyData]
     cords: list[tuple[str, dict]] = field(default_factory=list)   # placed after a first assembly
-    surfaces: dict[str, SurfaceData] = field(default_factory=dict)
+    surfaces: dict[str, SurfaceData | CurveData] = field(default_factory=dict)
 
 
 def bodies_of(plan: Plan) -> tuple:
     out: dict[str, BodyData] = {}
-    q, free, v, names, vgiven = [], [], [], [], []
+    q: list[float] = []
+    free: list[bool] = []
+    v: list[float] = []
+    names: list[str] = []
+    vgiven: list[bool] = []
     for name, b in plan.bodies.items():
         rigid = b["shape"] != "point"
         I = b["I"] if b["I"] is not None else (SHAPE_I[b["shape"]](b) if rigid else None)
@@ -76,11 +84,12 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict):
+def surface_of(name: str, s: dict) -> SurfaceData | CurveData:
     if s.get("curve") is not None:
         from .curved import CurveData
 
-        return CurveData(name, *s["curve"], s.get("q_range"))
+        x1, x2 = s["curve"]
+        return CurveData(name, x1, x2, s.get("q_range"))
     d = np.array(s["direction"], float)
     d = d / math.hypot(d[0], d[1])
     return SurfaceData(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
@@ -88,7 +97,7 @@ def surface_of(name: str, s: dict):
 
 
 class Resolver:
-    def __init__(self, bodies: dict[str, BodyData], surfaces: dict[str, SurfaceData]):
+    def __init__(self, bodies: dict[str, BodyData], surfaces: dict[str, SurfaceData | CurveData]):
         self.bodies, self.surfaces = bodies, surfaces
 
     def body(self, name, path) -> BodyData:
@@ -97,12 +106,19 @@ class Resolver:
             raise InputError(f"unknown body {name!r}{hint}; bodies: {', '.join(self.bodies)}", path)
         return self.bodies[name]
 
-    def surface(self, name, path) -> SurfaceData:
+    def surface(self, name, path) -> SurfaceData | CurveData:
         if not isinstance(name, str) or name not in self.surfaces:
             hint = did_you_mean(name, self.surfaces) if isinstance(name, str) else ""
             known = ", ".join(self.surfaces) or "none: add a `surfaces:` entry"
             raise InputError(f"unknown surface {name!r}{hint}; surfaces: {known}", path)
         return self.surfaces[name]
+
+    def line(self, name, path, what: str) -> SurfaceData:
+        """A straight surface (``what`` runs along lines only: a curve is refused)."""
+        s = self.surface(name, path)
+        if not isinstance(s, SurfaceData):
+            raise InputError(f"{what} runs along a straight surface; {name!r} is a curve", path)
+        return s
 
     def pair(self, refs, path, q) -> tuple[Point, Point]:
         """Two points; `ground` alone is the ground point where the other one is at t = 0."""
@@ -110,10 +126,10 @@ class Resolver:
             raise InputError("join a body to the ground, not the ground to itself", path)
         if refs[1] == "ground":
             P = self.point(refs[0], path + ".0")
-            return P, Point("ground", None, tuple(float(x) for x in P.pos(q)))
+            return P, Point("ground", None, P.xy(q))
         if refs[0] == "ground":
             Q = self.point(refs[1], path + ".1")
-            return Point("ground", None, tuple(float(x) for x in Q.pos(q))), Q
+            return Point("ground", None, Q.xy(q)), Q
         return self.point(refs[0], path + ".0"), self.point(refs[1], path + ".1")
 
     def point(self, ref, path) -> Point:
@@ -146,7 +162,8 @@ def _rigid(b: BodyData, what: str, path: str) -> None:
 def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list, list]:
     """Every joint but the cords (placed after a first assembly) as elements; the cords as
     (name, spec) to build later."""
-    out, cords = [], []
+    out: list[el.Element] = []
+    cords: list[tuple[str, dict]] = []
     for name, j in plan.joints.items():
         kind, path = j["kind"], f"joints.{name}.{j['kind']}"
         a = j[kind]
@@ -166,8 +183,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
-            s = R.surface(a[1], path + ".1")
-            P = Point(b.name, b, (0.0, 0.0))
+            s = R.line(a[1], path + ".1", "a slider")
+            P = BodyPoint(b.name, b, (0.0, 0.0))
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
@@ -178,10 +195,11 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             _rigid(b, "rolling", path + ".0")
             if b.radius <= 0:
                 raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-            s = R.surface(a[1], path + ".1")
+            s = R.line(a[1], path + ".1", "rolling")
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
-            out.append(contacts.Rolls(name, kind, n, path, body_point=Point(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+            centre = BodyPoint(b.name, b, (0.0, 0.0))
+            out.append(contacts.Rolls(name, kind, n, path, body_point=centre, surface=s, R=b.radius,
                                 c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
                                       e=float(j.get("e") or 0.0)))
         elif kind == "drive":
@@ -204,7 +222,7 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
     friction coefficients (mu for both, or mu_s / mu_k; one given stands for the other)."""
     a = j[kind]
     P = R.point(a[0], path + ".0")
-    s = R.surface(a[1], path + ".1")
+    s = R.line(a[1], path + ".1", "a contact")
     mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
     mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
     if j.get("mu_k") is not None and j.get("mu_s") is None:
@@ -220,7 +238,7 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     kind = j["kind"]
     path = f"joints.{name}.{kind}"
     s = R.surface(j[kind][1], path + ".1")
-    if not getattr(s, "curved", False):
+    if isinstance(s, SurfaceData):
         if kind == "contact" and j["at"] is not None:
             raise InputError("`at` places a contact on a curved surface (the curve's q); on a straight one give "
                              "the point's position", f"joints.{name}.at")
@@ -234,7 +252,7 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     _rigid(b, "rolling", path + ".0")
     if b.radius <= 0:
         raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-    out.append(curved.rolls_on(name, kind, n, path, Point(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    out.append(curved.rolls_on(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
     return True
 
 
@@ -263,7 +281,7 @@ def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
 
 def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
     """The cord's entries resolved: (kind, data, field path), kind point, disk, pulley, wound."""
-    nodes = []
+    nodes: list[tuple[str, Any, str]] = []
     for i, it in enumerate(items):
         p = f"{path}.{i}"
         end = i in (0, len(items) - 1)
@@ -383,4 +401,4 @@ def _end(nd, T, C, u) -> el.CordEnd:
         return el.CordEnd(fixed=T)
     b = data if kind == "disk" else data[0]
     k = float(u @ perp(T - C))
-    return el.CordEnd(centre=Point(b.name, b, (0.0, 0.0)), k=k)
+    return el.CordEnd(centre=BodyPoint(b.name, b, (0.0, 0.0)), k=k)

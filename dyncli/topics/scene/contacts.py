@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .elements import Element
-from .system import Point, SurfaceData
+from .system import BodyPoint, Point, SurfaceData
 
 EPS = float(np.finfo(float).eps)
 
@@ -33,12 +33,12 @@ def _gap_watch(gap: float, margin: float | None) -> float:
     return abs(gap) - margin
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Contact(Element):
     """P on the surface, pushing only; Coulomb friction with the computed N."""
 
-    P: Point = None
-    surface: SurfaceData = None
+    P: Point
+    surface: SurfaceData
     mu_s: float = 0.0
     mu_k: float = 0.0
     mode: str = "smooth"
@@ -142,14 +142,14 @@ class Contact(Element):
         return out
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Rolls(Element):
     """A disk or ring of radius R rolls on the surface without slipping (15.8):
     n·(x − O) = R and d̂·x + R θ = const; it slips with kinetic friction μ_k N when rolling
     would need more than μ_s N, and leaves the surface when N would turn negative."""
 
-    body_point: Point = None
-    surface: SurfaceData = None
+    body_point: BodyPoint
+    surface: SurfaceData
     R: float = 0.0
     c0: float = 0.0
     mu_s: float | None = None

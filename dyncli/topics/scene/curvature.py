@@ -25,7 +25,7 @@ from .system import Point
 def point_hessian(P: Point, q, c, n: int) -> np.ndarray:
     """∇²(c·r_P) for a constant 2-vector c: only the body angle's diagonal entry, −c·Q(θ)p."""
     H = np.zeros((n, n))
-    if P.turns_with_body:
+    if P.body is not None and P.turns_with_body:
         k = P.body.index[2]
         H[k, k] = -float(np.asarray(c, float) @ P.arm(q))
     return H

@@ -159,13 +159,14 @@ class _Foot:
         return self.q, t, n, k, d, sp
 
 
-@dataclass
+@dataclass(kw_only=True)
 class CurveContact(Contact):
     """P on a curve, pushing only; Coulomb friction along t̂ at the foot (kinetic −μ_k N sign
     while sliding; sticking holds P where it stopped: the second row t̂ₛ·r_P = const with the
     tangent t̂ₛ of that point, exact while P stays there)."""
 
-    foot: _Foot = None
+    surface: CurveData  # type: ignore[assignment]  # a curve where Contact has a line: the geometry is all overridden here
+    foot: _Foot
     stick_t: tuple = (1.0, 0.0)
 
     def phase(self):
@@ -244,11 +245,12 @@ class CurveContact(Contact):
         return out
 
 
-@dataclass
+@dataclass(kw_only=True)
 class CurveRolls(Rolls):
     """A disk of radius R rolling on a curve without slipping."""
 
-    foot: _Foot = None
+    surface: CurveData  # type: ignore[assignment]  # a curve where Rolls has a line: the geometry is all overridden here
+    foot: _Foot
     q_ref: float = 0.0
     linear = False
 

@@ -12,6 +12,7 @@ proportional to that contact's own multiplier).  The multipliers λ are the join
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,43 +38,58 @@ class Load:
     L: float = 0.0
     one_sided: str | None = None
     c: float = 0.0
-    F: object = None        # t -> (F1, F2)
-    M: object = None        # t -> M
+    F: Callable[[float], tuple[float, float]] | None = None    # t -> (F1, F2)
+    M: Callable[[float], float] | None = None                  # t -> M
     body: BodyData | None = None
     constant: bool = True   # F or M does not depend on t
 
+    def _ends(self) -> tuple[Point, Point]:
+        assert self.P is not None and self.Q is not None, "a spring or damper has two ends"
+        return self.P, self.Q
+
+    def _d(self, q) -> tuple[float, float, float]:
+        P, Q = self._ends()
+        (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
+        d1, d2 = p1 - q1, p2 - q2
+        return d1, d2, math.hypot(d1, d2)
+
     def spring_tension(self, q) -> float:
-        d = self.P.pos(q) - self.Q.pos(q)
-        T = self.k * (math.hypot(d[0], d[1]) - self.L)
+        return self._tension(self._d(q)[2])
+
+    def _tension(self, ln: float) -> float:
+        T = self.k * (ln - self.L)
         if self.one_sided == "compression" and T > 0 or self.one_sided == "tension" and T < 0:
             return 0.0
         return T
 
     def stretch(self, q) -> float:
-        d = self.P.pos(q) - self.Q.pos(q)
-        return math.hypot(d[0], d[1]) - self.L
+        return self._d(q)[2] - self.L
 
     def generalized(self, q, v, t, n: int) -> tuple[np.ndarray, float, object]:
         """(generalized force, its power if non-conservative else 0, the reported value)."""
         if self.kind in ("spring", "damper"):
-            d = self.P.pos(q) - self.Q.pos(q)
-            ln = math.hypot(d[0], d[1])
+            d1, d2, ln = self._d(q)
             if ln == 0:
                 raise NumericalError(f"the ends of {self.label} coincide: its direction is undefined")
-            e = d / ln
-            JPQ = self.P.jac(q, n) - self.Q.jac(q, n)
+            e1, e2 = d1 / ln, d2 / ln
+            P, Q = self._ends()
             if self.kind == "spring":
-                T = self.spring_tension(q)
-                return -T * (e @ JPQ), 0.0, T
-            T = self.c * float(e @ (self.P.vel(q, v) - self.Q.vel(q, v)))
-            g = -T * (e @ JPQ)
-            return g, float(g @ v), T
-        if self.kind == "force":
-            F = np.array(self.F(t), dtype=float)
-            g = F @ self.P.jac(q, n)
-            return g, float(g @ v), [float(F[0]), float(F[1]), 0.0]
-        M = float(self.M(t))
+                T = self._tension(ln)
+            else:
+                (pv1, pv2), (qv1, qv2) = P.vel_xy(q, v), Q.vel_xy(q, v)
+                T = self.c * (e1 * (pv1 - qv1) + e2 * (pv2 - qv2))
+            g = np.zeros(n)                       # −T e·∂(r_P − r_Q)/∂q
+            P.add_jac(g, q, -T * e1, -T * e2)
+            Q.add_jac(g, q, T * e1, T * e2)
+            return g, (0.0 if self.kind == "spring" else float(g @ v)), T
         g = np.zeros(n)
+        if self.kind == "force":
+            assert self.P is not None and self.F is not None, "a force has its point and its F(t)"
+            F1, F2 = (float(c) for c in self.F(t))
+            self.P.add_jac(g, q, F1, F2)
+            return g, float(g @ v), [F1, F2, 0.0]
+        assert self.body is not None and self.M is not None, "a torque has its body and its M(t)"
+        M = float(self.M(t))
         g[self.body.index[2]] = M
         return g, M * float(v[self.body.index[2]]), M
 
@@ -98,10 +114,24 @@ class SceneSystem:
             if b.rigid:
                 m[b.index[2]] = b.inertia
         self.mass = m
+        self.linsolve = np.linalg.solve
         self.grav = np.zeros(self.n)
         for b in self.bodies:
             self.grav[b.index[1]] = -b.mass * self.g
         self._offsets()
+
+    def use_lapack(self) -> None:
+        """Solve the KKT systems by LAPACK's dgesv directly (the same LU with partial pivoting as
+        ``numpy.linalg.solve``, without its wrapper's cost: a quarter of a small solve): for the
+        ODE route, which has scipy loaded already (the closed forms stay numpy-only)."""
+        from scipy.linalg.lapack import dgesv
+
+        def linsolve(A, b):
+            x, info = dgesv(A, b)[2:]
+            if info != 0:
+                raise np.linalg.LinAlgError("singular matrix")
+            return x
+        self.linsolve = linsolve
 
     def _offsets(self):
         self.offsets, k = [], 0
@@ -109,6 +139,13 @@ class SceneSystem:
             self.offsets.append(k)
             k += e.rows
         self.m = k
+        # the solve's fixed parts, rebuilt with the rows: the matrix with M on its diagonal (copied
+        # per solve), the elements with friction columns, the drives (their power)
+        n = self.n
+        self._template = np.zeros((n + k, n + k))
+        self._template[:n, :n] = np.diag(self.mass)
+        self._friction = [i for i, e in enumerate(self.elements) if isinstance(e, (Contact, Rolls))]
+        self._drives = [i for i, e in enumerate(self.elements) if e.kind == "drive"]
 
     def refresh(self):
         """Recompute the row offsets after an element changed its rows (a contact's mode)."""
@@ -119,7 +156,9 @@ class SceneSystem:
         return np.concatenate([e.phi(q, t) for e in self.elements]) if self.elements else np.zeros(0)
 
     def jac(self, q) -> np.ndarray:
-        return np.vstack([e.jac(q) for e in self.elements]) if self.elements else np.zeros((0, self.n))
+        if not self.elements:
+            return np.zeros((0, self.n))
+        return np.concatenate([e.jac(q) for e in self.elements], axis=0)
 
     def gamma(self, q, v, t) -> np.ndarray:
         return np.concatenate([e.gamma(q, v, t) for e in self.elements]) if self.elements else np.zeros(0)
@@ -136,6 +175,8 @@ class SceneSystem:
         """Generalized applied force and the power of the non-conservative loads."""
         f = self.grav.copy()
         power = 0.0
+        if not self.loads:
+            return f, power
         for ld in self.loads:
             g, p, _ = ld.generalized(q, v, t, self.n)
             f += g
@@ -146,37 +187,36 @@ class SceneSystem:
     def kkt_matrix(self, q, J) -> np.ndarray:
         """[[M, −Jᵀ − friction columns], [J, 0]]: the matrix of the accelerations and multipliers
         (and, with velocity jumps and impulses for them, of an impact)."""
-        n, m = self.n, self.m
-        A = np.zeros((n + m, n + m))
-        A[:n, :n] = np.diag(self.mass)
+        n = self.n
+        if self._template.shape[0] != n + J.shape[0]:     # an element changed its rows without a refresh
+            self._offsets()
+        A = self._template.copy()
         A[:n, n:] = -J.T
         A[n:, :n] = J
-        for i, e in enumerate(self.elements):
-            if isinstance(e, (Contact, Rolls)):
-                col = e.friction_column(q)
-                if col is not None:
-                    A[:n, n + self.offsets[i]] -= col
+        for i in self._friction:
+            col = self.elements[i].friction_column(q)
+            if col is not None:
+                A[:n, n + self.offsets[i]] -= col
         return A
 
     def solve(self, q, v, t) -> tuple[np.ndarray, np.ndarray, float]:
         """(q̈, λ, power of the non-conservative loads incl. friction)."""
         n = self.n
         f, power = self.applied(q, v, t)
-        J = self.jac(q)
-        A = self.kkt_matrix(q, J)
+        A = self.kkt_matrix(q, self.jac(q))
         rhs = np.concatenate([f, self.gamma(q, v, t)])
         try:
-            x = np.linalg.solve(A, rhs)
+            x = self.linsolve(A, rhs)
         except np.linalg.LinAlgError:
             raise NumericalError(f"the equations of motion are singular at t = {t:.6g} s (a massless body with a "
                                  "free motion, or joints that lock each other)") from None
         a, lam = x[:n], x[n:]
-        for i, e in enumerate(self.elements):
-            if isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip") and e.mu_k:
+        for i in self._friction:
+            e = self.elements[i]
+            if e.mode in ("slide", "slip") and e.mu_k:
                 power += e.friction(self.lam_of(lam, i)) * e.slip_speed(q, v)
-        for i, e in enumerate(self.elements):
-            if e.kind == "drive":
-                power += float(self.lam_of(lam, i)[0]) * float(v[e.index])
+        for i in self._drives:
+            power += float(self.lam_of(lam, i)[0]) * float(v[self.elements[i].index])
         return a, lam, power
 
     # ------------------------------------------------------------------ energy

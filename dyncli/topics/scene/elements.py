@@ -11,11 +11,12 @@ list the quantities that must stay ≥ 0 (``watch``).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .system import Point, SurfaceData, perp
+from .system import BodyPoint, Point, SurfaceData, perp
 
 EPS = float(np.finfo(float).eps)
 
@@ -62,10 +63,10 @@ def _two(P: Point, Q: Point, q, n):
     return P.jac(q, n) - Q.jac(q, n)
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Pin(Element):
-    P: Point = None
-    Q: Point = None
+    P: Point
+    Q: Point
     rows = 2
 
     @property
@@ -73,25 +74,30 @@ class Pin(Element):
         return not (self.P.turns_with_body or self.Q.turns_with_body)
 
     def phi(self, q, t):
-        return self.P.pos(q) - self.Q.pos(q)
+        (p1, p2), (q1, q2) = self.P.xy(q), self.Q.xy(q)
+        return np.array((p1 - q1, p2 - q2))
 
     def jac(self, q):
-        return _two(self.P, self.Q, q, self.n)
+        J = np.zeros((2, self.n))
+        self.P.add_jac2(J, q, 1.0)
+        self.Q.add_jac2(J, q, -1.0)
+        return J
 
     def gamma(self, q, v, t):
-        return -(self.P.bias(q, v) - self.Q.bias(q, v))
+        (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
+        return np.array((q1 - p1, q2 - p2))
 
     def report(self, lam, q, v, t):
         return {"R": [float(lam[0]), float(lam[1]), 0.0]}
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Slider(Element):
     """The body's centre stays on the line through its position at t = 0 parallel to the
     surface; a rigid body keeps its angle."""
 
-    body_point: Point = None
-    surface: SurfaceData = None
+    body_point: BodyPoint
+    surface: SurfaceData
     c0: float = 0.0
     theta0: float | None = None
 
@@ -120,49 +126,62 @@ class Slider(Element):
         return out
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Link(Element):
     """A massless rigid link (36): |r_P − r_Q| = L; T tension positive."""
 
-    P: Point = None
-    Q: Point = None
+    P: Point
+    Q: Point
     L: float = 1.0
     rows = 1
     linear = False
 
     def _d(self, q):
-        d = self.P.pos(q) - self.Q.pos(q)
-        return d, math.hypot(d[0], d[1])
+        (p1, p2), (q1, q2) = self.P.xy(q), self.Q.xy(q)
+        d1, d2 = p1 - q1, p2 - q2
+        return (d1, d2), math.hypot(d1, d2)
 
     def phi(self, q, t):
         _, ln = self._d(q)
         return np.array([ln - self.L])
 
     def jac(self, q):
-        d, ln = self._d(q)
-        return ((d / ln) @ _two(self.P, self.Q, q, self.n))[None, :]
+        (d1, d2), ln = self._d(q)
+        e1, e2 = d1 / ln, d2 / ln
+        J = np.zeros((1, self.n))
+        self.P.add_jac(J[0], q, e1, e2)
+        self.Q.add_jac(J[0], q, -e1, -e2)
+        return J
 
     def gamma(self, q, v, t):
-        d, ln = self._d(q)
-        e = d / ln
-        dv = self.P.vel(q, v) - self.Q.vel(q, v)
-        db = self.P.bias(q, v) - self.Q.bias(q, v)
-        return np.array([-(float(e @ db) + (float(dv @ dv) - float(e @ dv) ** 2) / ln)])
+        (d1, d2), ln = self._d(q)
+        e1, e2 = d1 / ln, d2 / ln
+        (pv1, pv2), (qv1, qv2) = self.P.vel_xy(q, v), self.Q.vel_xy(q, v)
+        (pb1, pb2), (qb1, qb2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
+        dv1, dv2 = pv1 - qv1, pv2 - qv2
+        ev = e1 * dv1 + e2 * dv2
+        return np.array([-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)])
 
     def report(self, lam, q, v, t):
         return {"T": -float(lam[0])}
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Drive(Element):
     """A prescribed coordinate q_i = f(t); λ is the force or couple the driver applies."""
 
     index: int = 0
-    f: object = None                # f(t) -> (value, rate, second rate)
+    f: Callable[[float], tuple[float, float, float]]     # f(t) -> (value, rate, second rate)
     rows = 1
+    _last: tuple = field(default=(None, None), repr=False, compare=False)   # (t, f(t)): φ, φ_t, γ asked at one t
+
+    def _at(self, t):
+        if self._last[0] != t:
+            self._last = (t, self.f(t))
+        return self._last[1]
 
     def phi(self, q, t):
-        return np.array([float(q[self.index]) - self.f(t)[0]])
+        return np.array([float(q[self.index]) - self._at(t)[0]])
 
     def jac(self, q):
         J = np.zeros((1, self.n))
@@ -170,10 +189,10 @@ class Drive(Element):
         return J
 
     def phi_t(self, t):
-        return np.array([-self.f(t)[1]])
+        return np.array([-self._at(t)[1]])
 
     def gamma(self, q, v, t):
-        return np.array([self.f(t)[2]])
+        return np.array([self._at(t)[2]])
 
     def report(self, lam, q, v, t):
         return {"drive": float(lam[0])}
@@ -186,28 +205,39 @@ class CordEnd:
     fixed light pulley (``fixed``: a constant)."""
 
     point: Point | None = None
-    centre: Point | None = None     # disk body centre (tangent ends)
+    centre: BodyPoint | None = None   # disk body centre (tangent ends)
     k: float = 0.0
     fixed: np.ndarray | None = None
 
     def proj(self, u, q) -> float:
+        u1, u2 = float(u[0]), float(u[1])
         if self.point is not None:
-            return float(u @ self.point.pos(q))
+            x1, x2 = self.point.xy(q)
+            return u1 * x1 + u2 * x2
         if self.centre is not None:
-            return float(u @ self.centre.pos(q)) + self.k * float(q[self.centre.body.index[2]])
-        return float(u @ self.fixed)
+            x1, x2 = self.centre.xy(q)
+            return u1 * x1 + u2 * x2 + self.k * float(q[self.centre.angle_index])
+        assert self.fixed is not None, "a cord end is a point, a disk or a fixed pulley"
+        return u1 * float(self.fixed[0]) + u2 * float(self.fixed[1])
 
     def jac(self, u, q, n) -> np.ndarray:
-        if self.point is not None:
-            return u @ self.point.jac(q, n)
         J = np.zeros(n)
-        if self.centre is not None:
-            J += u @ self.centre.jac(q, n)
-            J[self.centre.body.index[2]] += self.k
+        self.add_jac(J, u, q, 1.0)
         return J
 
+    def add_jac(self, row, u, q, sign: float) -> None:
+        """row += sign · ∂(u·X)/∂q, in place."""
+        if self.point is not None:
+            self.point.add_jac(row, q, sign * float(u[0]), sign * float(u[1]))
+        elif self.centre is not None:
+            self.centre.add_jac(row, q, sign * float(u[0]), sign * float(u[1]))
+            row[self.centre.angle_index] += sign * self.k
+
     def bias(self, u, q, v) -> float:
-        return float(u @ self.point.bias(q, v)) if self.point is not None else 0.0
+        if self.point is None:
+            return 0.0
+        b1, b2 = self.point.bias_xy(q, v)
+        return float(u[0]) * b1 + float(u[1]) * b2
 
     @property
     def turns(self) -> bool:
@@ -257,8 +287,12 @@ class Cord(Element):
         return (self.lengths(q) - np.array(self.consts))[self.taut]
 
     def jac(self, q):
-        J = np.array([sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in run) for run in self.runs])
-        return J[self.taut].reshape(self.rows, self.n)
+        J = np.zeros((self.rows, self.n))
+        for k, r in enumerate(self.taut):
+            for s in self.runs[r]:
+                s.b.add_jac(J[k], s.u, q, 1.0)
+                s.a.add_jac(J[k], s.u, q, -1.0)
+        return J
 
     def gamma(self, q, v, t):
         return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut])
@@ -287,12 +321,12 @@ class Cord(Element):
         return [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
 
 
-@dataclass
+@dataclass(kw_only=True)
 class Guide(Element):
     """A point mass at a cord segment's end moves along the segment (its direction of t = 0)."""
 
-    P: Point = None
-    w: np.ndarray = None            # unit normal of the segment
+    P: Point
+    w: np.ndarray                   # unit normal of the segment
     c0: float = 0.0
     rows = 1
 

@@ -124,7 +124,7 @@ class Work:
     def __init__(self, man, system, s0: float):
         self.man, self.s, self.s0, self.h = man, system, s0, man.step
         self.x, self.w = np.polynomial.legendre.leggauss(8)
-        self.cells: dict[int, float] = {}
+        self.cells: dict[int, tuple[float, np.ndarray, float, float]] = {}   # ∫, antiderivative, centre, half-width
 
     def Q(self, x: float) -> float:
         q = self.man.q(x)

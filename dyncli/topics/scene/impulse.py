@@ -95,7 +95,7 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     released = []
     if isinstance(e, Cord):
         e.slack = e.slack - {run}
-        rows = {(i, e.taut.index(run)): 0.0}
+        rows = {(i, e.taut.index(run)): 0.0}  # type: ignore[arg-type]  # run is given with every cord (strike's contract)
         struck = []
     else:
         struck = [(e, rest)] + list(others)

@@ -64,11 +64,12 @@ class Surface(StrictModel):
             if getattr(self, name) is None:
                 raise InputError(f"a straight surface needs {name}, e.g. {name}: {example} (or give a curve: {{x1, x2}} "
                                  "in q)", _at(base, name))
-        if len(self.through) != 2:
-            raise InputError(f"expected [x1, x2], got {len(self.through)} numbers", _at(base, "through"))
-        if len(self.direction) != 2:
-            raise InputError(f"expected [d1, d2], got {len(self.direction)} numbers", _at(base, "direction"))
-        if self.direction[0] == 0 and self.direction[1] == 0:
+        through, direction = self.through or [], self.direction or []      # both given (just checked)
+        if len(through) != 2:
+            raise InputError(f"expected [x1, x2], got {len(through)} numbers", _at(base, "through"))
+        if len(direction) != 2:
+            raise InputError(f"expected [d1, d2], got {len(direction)} numbers", _at(base, "direction"))
+        if direction[0] == 0 and direction[1] == 0:
             raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", _at(base, "direction"))
 
 
@@ -197,11 +198,12 @@ class Joint(_OneOf):
         if two and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
                              _at(base, kind))
+        cord = self.cord or []                  # set when kind is "cord"
         if kind == "cord":
-            for i, it in enumerate(self.cord):
+            for i, it in enumerate(cord):
                 if isinstance(it, FixedPulley):
                     it.check(_at(base, f"cord.{i}"))
-        if kind == "cord" and len(self.cord) < 2:
+        if kind == "cord" and len(cord) < 2:
             raise InputError("a cord needs two ends: [END, PULLEY..., END]", _at(base, "cord"))
 
 
@@ -234,7 +236,7 @@ class Force(_OneOf):
                 raise InputError(f"a {kind} takes no {extra}", _at(base, extra))
         if kind in ("spring", "damper") and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two points: [P, Q]", _at(base, kind))
-        if kind == "force" and len(self.F) != 2:
+        if kind == "force" and len(self.F or []) != 2:
             raise InputError("expected [F1, F2] (a planar force)", _at(base, "F"))
 
 

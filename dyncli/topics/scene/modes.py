@@ -109,7 +109,7 @@ def _damped(M, C, K) -> dict:
     lam, V = np.linalg.eig(_state_matrix(M, C, K))
     keep = [k for k in range(2 * d) if lam[k].imag > 0 or (lam[k].imag == 0)]
     keep = sorted(keep, key=lambda k: (abs(lam[k]), lam[k].real))
-    out = {"eigenvalues": [], "modes": [], "frequencies": [], "damping_ratios": []}
+    out: dict[str, list] = {"eigenvalues": [], "modes": [], "frequencies": [], "damping_ratios": []}
     for k in keep:
         z = lam[k]
         out["eigenvalues"].append(_pair(z))

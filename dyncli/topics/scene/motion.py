@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import bisect
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -26,6 +27,7 @@ from dyncli.errors import NumericalError
 from dyncli.rootfind import brent
 
 from .contacts import Contact, Rolls
+from .dynamics import SceneSystem
 
 EPS = float(np.finfo(float).eps)
 
@@ -34,11 +36,12 @@ EPS = float(np.finfo(float).eps)
 class Piece:
     t_a: float
     t_b: float
-    fn: object                     # t -> (q, v, W)
+    fn: Callable[..., tuple]       # t -> (q, v, W)
     modes: tuple
     route: str = "ode"             # the route of its phase: how its forces and W_nc are read
     along: tuple | None = None     # 1-DOF closed form: (N, i), the one direction of motion
     fixed: tuple | None = None     # statics: the one solve (q̈ = 0, λ, power)
+    batch: Callable | None = None  # ode: the step's interpolant, unprojected, on an array of times -> (dim, k)
 
 
 @dataclass
@@ -50,7 +53,7 @@ class Event:
 
 @dataclass
 class Trajectory:
-    system: object
+    system: SceneSystem
     t0: float
     t_end: float
     pieces: list[Piece] = field(default_factory=list)
@@ -76,6 +79,32 @@ class Trajectory:
         """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
         ends = [p.t_b for p in self.pieces]
         return self.pieces[min(bisect.bisect_left(ends, t), len(self.pieces) - 1)]
+
+    def velocities(self, ts) -> np.ndarray:
+        """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
+        times (unprojected: off the joints by the step's local error only, for integrals over
+        the motion such as the distance); an exact piece time by time through its own function."""
+        ts = np.asarray(ts, dtype=float)
+        n = self.system.n
+        if ts.size == 1:                    # one time (a minimiser's probe): no grouping
+            p = self.piece(float(ts[0]))
+            if p.batch is not None:
+                return np.asarray(p.batch(min(max(float(ts[0]), p.t_a), p.t_b)), dtype=float)[n:2 * n].reshape(1, n)
+            return np.asarray(self.state(float(ts[0]))[1], dtype=float).reshape(1, n)
+        out = np.empty((ts.size, n))
+        ends = np.array([p.t_b for p in self.pieces])
+        which = np.minimum(np.searchsorted(ends, ts, side="left"), len(self.pieces) - 1)
+        for k in np.unique(which):
+            sel = np.nonzero(which == k)[0]
+            p = self.pieces[k]
+            if p.batch is not None:
+                y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
+                out[sel] = y[n:2 * n].T
+            else:                           # an exact piece: its own function, the modes set once
+                set_modes(self.system, p.modes)
+                for i in sel:
+                    out[i] = p.fn(min(max(float(ts[i]), p.t_a), p.t_b))[1]
+        return out
 
     def state(self, t: float):
         p = self.piece(t)
@@ -104,10 +133,12 @@ def set_modes(system, modes) -> None:
         system.refresh()
 
 
-def watches(system, q, v, t) -> list[tuple[str, str, float]]:
+def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     """(joint, what, g) of every one-sided quantity (event where g crosses 0 downwards), and
-    ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event)."""
-    _, lam, _ = system.solve(q, v, t)
+    ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event);
+    ``lam``: the multipliers at (q, v, t) when already solved for."""
+    if lam is None:
+        _, lam, _ = system.solve(q, v, t)
     out = []
     for i, e in enumerate(system.elements):
         for what, g in e.watch(system.lam_of(lam, i), q, v, t):
@@ -135,15 +166,18 @@ def _crossed(g0: float, g1: float, what: str) -> bool:
 class OdeRoute:
     def __init__(self, system, acc, method: str):
         self.system, self.method = system, method
+        system.use_lapack()
         n = system.n
         self.n = n
 
         def rhs(t, y):
             q, v = y[:n], y[n:2 * n]
-            a, _, P = system.solve(q, v, t)
-            return np.concatenate([v, a, [P]])
+            a, lam, P = system.solve(q, v, t)
+            self.lam = lam                  # the multipliers of the last evaluation (the step's end)
+            return np.concatenate([v, a, (P,)])
 
         self.rhs = rhs
+        self.lam = None
 
     def project(self, y, t):
         n, s = self.n, self.system
@@ -174,19 +208,21 @@ class OdeRoute:
             t_old, t_new = float(solver.t_old), float(solver.t)
             yp = self.project(solver.y, t_new)
             solver.y = yp
+            lam = None
             if hasattr(solver, "f"):
                 solver.f = self.rhs(t_new, yp)
+                lam = self.lam
             dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
-            w_new = watches(s, yp[:n], yp[n:2 * n], t_new)
+            w_new = watches(s, yp[:n], yp[n:2 * n], t_new, lam)
             hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip)
             skip = set()
             traj.steps += 1
             if hit is None:
-                traj.add(Piece(t_old, t_new, self._fn(dense), modes))
+                traj.add(Piece(t_old, t_new, self._fn(dense), modes, batch=dense.dense))
                 w_old, y = w_new, yp
                 continue
             y = dense(hit[0])
-            traj.add(Piece(t_old, hit[0], self._fn(dense), modes))
+            traj.add(Piece(t_old, hit[0], self._fn(dense), modes, batch=dense.dense))
             return hit[0], y[:n], y[n:2 * n], float(y[2 * n]), hit
         if not traj.pieces or traj.pieces[-1].t_b < t0:
             traj.add(Piece(t0, t0, lambda t, y=y0: (y[:n], y[n:2 * n], float(y[2 * n])), modes))

@@ -166,7 +166,9 @@ def _work(scene, traj, route):
     def piece(p, b: float) -> float:
         if b <= p.t_a or p.route == "statics" or p.route == "quadrature" and free:
             return 0.0
-        if p.route == "ode":
+        if p.route == "ode":          # W_nc is a component of the state (never projected): the raw step
+            if p.batch is not None:
+                return float(p.batch(b)[2 * s.n]) - float(p.batch(p.t_a)[2 * s.n])
             return p.fn(b)[2] - p.fn(p.t_a)[2]
         mid = 0.5 * (p.t_a + b)
         q, v, _ = p.fn(mid)

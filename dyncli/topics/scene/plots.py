@@ -92,8 +92,7 @@ def _forces(result, sample) -> Plot | None:
     plot = Plot("joint forces over time", "t [s]", "force [N]")
     for label, pts in series.items():
         plot.lines.append(Line([p[0] for p in pts], [p[1] for p in pts], label=label))
-    for ev in r.get("events", []):
-        plot.vlines.append((ev["t"], f"{ev['joint']} {ev['what']}"))
+    plot.vlines = [(ev["t"], f"{ev['joint']} {ev['what']}") for ev in r.get("events", [])]
     return plot
 
 

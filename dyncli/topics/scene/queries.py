@@ -4,6 +4,8 @@ closed form), each answer filled with the whole state at its time."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from dyncli import queries as _q
 from dyncli.expr import constant
 
@@ -109,12 +111,12 @@ def odometer(scene, traj):
     pts = {t for t in traj.breaks if t0 <= t <= t_end} | {t0 + (t_end - t0) * k / DISTANCE_PIECES
                                                           for k in range(DISTANCE_PIECES + 1)}
 
+    i1 = [b.index[0] for b in bodies]
+    i2 = [b.index[1] for b in bodies]
+
     def speeds(ts):
-        rows = []
-        for t in ts:
-            _, v, _ = traj.state(float(t))
-            rows.append([(float(v[b.index[0]]) ** 2 + float(v[b.index[1]]) ** 2) ** 0.5 for b in bodies])
-        return rows
+        V = traj.velocities(ts)
+        return np.hypot(V[:, i1], V[:, i2])
 
     odo = Odometer(speeds, pts) if t_end > t0 else None
 

@@ -87,7 +87,9 @@ class Coords:
 
     @classmethod
     def of(cls, names: list[str], S: Symbols) -> "Coords":
-        q, qd, qdd = [], [], []
+        q: list = []
+        qd: list = []
+        qdd: list = []
         for nm in names:
             head, body, *comp = nm.split(".")
             if head == "x":

@@ -39,15 +39,20 @@ class Point:
     body: BodyData | None
     p: tuple[float, float]
 
-    def pos(self, q) -> np.ndarray:
-        if self.body is None:
-            return np.array(self.p, dtype=float)
-        i = self.body.index
+    def xy(self, q) -> tuple[float, float]:
+        """r as two floats (the position without an array: the inner loop's form)."""
+        b = self.body
+        if b is None:
+            return float(self.p[0]), float(self.p[1])
+        i = b.index
         x1, x2 = float(q[i[0]]), float(q[i[1]])
-        if self.body.rigid and (self.p[0] or self.p[1]):
+        if b.inertia is not None and (self.p[0] or self.p[1]):
             a1, a2 = self._arm(float(q[i[2]]))
-            return np.array((x1 + a1, x2 + a2))
-        return np.array((x1, x2))
+            return x1 + a1, x2 + a2
+        return x1, x2
+
+    def pos(self, q) -> np.ndarray:
+        return np.array(self.xy(q), dtype=float)
 
     def _arm(self, th: float) -> tuple[float, float]:
         c, s = math.cos(th), math.sin(th)
@@ -63,39 +68,82 @@ class Point:
     def jac(self, q, n: int) -> np.ndarray:
         """∂r/∂q, 2 × n."""
         J = np.zeros((2, n))
-        if self.body is None:
-            return J
-        i = self.body.index
-        J[0, i[0]] = J[1, i[1]] = 1.0
-        if self.body.rigid and (self.p[0] or self.p[1]):
-            a1, a2 = self._arm(float(q[i[2]]))
-            J[0, i[2]], J[1, i[2]] = -a2, a1          # e3 × Q p
+        if self.body is not None:
+            self.add_jac(J[0], q, 1.0, 0.0)
+            self.add_jac(J[1], q, 0.0, 1.0)
         return J
 
-    def vel(self, q, v) -> np.ndarray:
-        if self.body is None:
-            return np.zeros(2)
-        i = self.body.index
+    def add_jac(self, row, q, w1: float, w2: float) -> None:
+        """row += w·∂r/∂q for the fixed vector w = (w1, w2), in place (no array built: one row of
+        a joint's Jacobian from the points it joins)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        row[i[0]] += w1
+        row[i[1]] += w2
+        if b.inertia is not None and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            row[i[2]] += a1 * w2 - a2 * w1          # w·(e3 × Q p)
+
+    def add_jac2(self, J, q, sign: float) -> None:
+        """J[:2] += sign · ∂r/∂q, in place (a pin's two rows)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        J[0, i[0]] += sign
+        J[1, i[1]] += sign
+        if b.inertia is not None and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            J[0, i[2]] -= sign * a2
+            J[1, i[2]] += sign * a1
+
+    def vel_xy(self, q, v) -> tuple[float, float]:
+        b = self.body
+        if b is None:
+            return 0.0, 0.0
+        i = b.index
         v1, v2 = float(v[i[0]]), float(v[i[1]])
-        if self.body.rigid and (self.p[0] or self.p[1]):
+        if b.inertia is not None and (self.p[0] or self.p[1]):
             a1, a2 = self._arm(float(q[i[2]]))
             w = float(v[i[2]])
-            return np.array((v1 - w * a2, v2 + w * a1))
-        return np.array((v1, v2))
+            return v1 - w * a2, v2 + w * a1
+        return v1, v2
 
-    def bias(self, q, v) -> np.ndarray:
+    def vel(self, q, v) -> np.ndarray:
+        return np.array(self.vel_xy(q, v), dtype=float)
+
+    def bias_xy(self, q, v) -> tuple[float, float]:
         """J̇ v: the part of the acceleration not linear in q̈ (−ω² Q p, 14.8)."""
-        if self.body is None or not self.body.rigid or not (self.p[0] or self.p[1]):
-            return np.zeros(2)
-        i = self.body.index
+        b = self.body
+        if b is None or b.inertia is None or not (self.p[0] or self.p[1]):
+            return 0.0, 0.0
+        i = b.index
         w = float(v[i[2]])
         a1, a2 = self._arm(float(q[i[2]]))
-        return np.array((-w * w * a1, -w * w * a2))
+        return -w * w * a1, -w * w * a2
+
+    def bias(self, q, v) -> np.ndarray:
+        return np.array(self.bias_xy(q, v), dtype=float)
 
     @property
     def turns_with_body(self) -> bool:
         """True when r depends on the body's angle (a rigid body's point off its centre)."""
         return self.body is not None and self.body.rigid and (self.p[0] != 0 or self.p[1] != 0)
+
+
+@dataclass(frozen=True)
+class BodyPoint(Point):
+    """A point of a body (never of the ground): a body's centre held by a slider, a rolling
+    disk's centre, a cord's disk."""
+
+    body: BodyData
+
+    @property
+    def angle_index(self) -> int:
+        """The index of its body's angle in q (a rigid body)."""
+        return self.body.index[2]
 
 
 @dataclass(frozen=True)

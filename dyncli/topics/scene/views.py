@@ -8,6 +8,9 @@ results stay in JSON, YAML and CSV.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from dyncli.result import Table
 
 COVERED = ["x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "drive", "force", "events", "phases",
@@ -65,7 +68,8 @@ def _points(r, times) -> Table:
 
 
 def _forces(r, times) -> Table:
-    cols, getters = [], []
+    cols: list[str] = []
+    getters: list[Callable[..., Any]] = []          # k -> the column's value at times[k]
     for j, rep in r["reaction"].items():
         for name in rep:
             unit = "N·m" if name == "M" else "N"

@@ -21,6 +21,7 @@ from dyncli.backends import FLOAT_OPS
 from dyncli.errors import NumericalError
 from dyncli.topics.top.derived import reaction_on
 from dyncli.topics.top.elliptic import EPS, ExactTop
+from dyncli.topics.top.kinematics import Controls
 
 #: safety factor on the phase round-off term ε (1 + λ t + periods)
 PHASE_FACTOR = 16.0
@@ -138,15 +139,15 @@ def nutation_period(ex: ExactTop) -> float:
     return math.inf if ex.steady else 2.0 * ex.K / ex.nut.lam
 
 
-def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
+def route(res, top, acc: Controls, psi0, th0, phi0, psd0, th_dot0, phi_dot0, times):
     """The elliptic solution at ``times``, or None when it is not representable in doubles
     (then the caller takes the ODE route; accuracy.method exact refuses instead)."""
-    ex = ExactRun(top, psi0, th0, phi0, psd0, th_dot0, p.phi_dot, times, rtol=p.accuracy.rtol)
+    ex = ExactRun(top, psi0, th0, phi0, psd0, th_dot0, phi_dot0, times, rtol=acc.rtol)
     if not ex.finite:
         msg = ("the elliptic solution of this top is not representable in doubles (its elliptic parameter "
                "1 − m underflows, or the roots of its nutation cubic are not separable: a top released "
                "within ~1e-30 rad of the vertical)")
-        if p.accuracy.method == "exact":
+        if acc.method == "exact":
             raise NumericalError(msg + ": use accuracy.method DOP853")
         res.warn(msg + "; solved by the ODE route (DOP853)")
         return None
@@ -158,10 +159,10 @@ def route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times):
         "round-off of the elliptic solution: the larger of ε·16(1 + λt + periods) (the phase λt + τ0 "
         "formed in floating point) and the residuals of the energy and H_O·e3 integrals at the reported times, "
         "each relative to its scale")
-    if ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > p.accuracy.rtol:
+    if ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > acc.rtol:
         from dyncli import runner       # (numpy: only when there is something to say)
 
-        runner.warn_unmet(res, p.accuracy.rtol, res.error_estimate,
+        runner.warn_unmet(res, acc.rtol, res.error_estimate,
                           what=f"error_estimate (the elliptic solution's round-off over λt = {ex.lam_T:.3g} rad)")
     th_min = min(ex.theta_min, th0)
     th_max = max(ex.theta_max, th0)

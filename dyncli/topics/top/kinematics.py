@@ -13,6 +13,8 @@ polished in v = 1 − u or w = 1 + u near the poles.  Plain floats except the ro
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import math
 import sys
 
@@ -59,6 +61,19 @@ def half_angles(q):
     n2 = n03 * n03 + n12 * n12
     return (2.0 * math.atan2(n12, n03), 2.0 * n03 * n12 / n2, (n03 - n12) * (n03 + n12) / n2,
             math.atan2(q3, q0), math.atan2(q2, q1))
+
+
+@dataclass(frozen=True, slots=True)
+class Controls:
+    """The solve's accuracy controls as plain values: ``method`` (auto, exact, DOP853, RK45,
+    Radau, LSODA, projected), the tolerances, the step budget (None: the runner's) and whether a
+    check solve estimates the error."""
+
+    method: str = "auto"
+    rtol: float = 1e-10
+    atol: float = 1e-12
+    max_steps: int | None = None
+    estimate: bool = False
 
 
 class Top:

@@ -33,6 +33,7 @@ from dyncli import ode, runner
 from dyncli.errors import NumericalError
 from dyncli.topics.top.derived import rates, reaction
 from dyncli.topics.top.integrator import integrate
+from dyncli.topics.top.kinematics import Controls
 from dyncli.topics.top.reduced import FLOOR, Reduced, usable
 
 EPS = sys.float_info.epsilon
@@ -42,11 +43,11 @@ TIGHT_RTOL = 1e-11
 PREDICT_MARGIN = 4.0
 
 
-def check_budget(p, T, Wfast, Wp, W3, C, A):
+def check_budget(acc: Controls, T, Wfast, Wp, W3, C, A):
     """Refuse at once a run clearly over the step budget (the estimate is 1.1-1.9 times the steps)."""
-    budget = int(p.accuracy.max_steps or ode.MAX_STEPS)
+    budget = int(acc.max_steps or ode.MAX_STEPS)
     work = T * (Wfast + Wp)
-    rtol_eff = runner.floor_rtol(min(p.accuracy.rtol, 1e-3))
+    rtol_eff = runner.floor_rtol(min(acc.rtol, 1e-3))
     steps = 0.3 * work * (1e-3 / rtol_eff) ** 0.125
     if not steps <= PREDICT_MARGIN * budget:
         raise NumericalError(
@@ -66,35 +67,35 @@ def motion(top, run, inv, rates, reaction):
     return psi, theta, phi, psi_dot, th_dot, phi_dot, S, R
 
 
-def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bounds):
+def route(res, top, acc: Controls, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bounds: tuple[float, float]):
     """The integrated motion at ``times`` (requested order) and its error estimate.
     ``state``: (ψ0, θ0, φ0, ψ̇0, θ̇0, φ̇0); ``bounds``: (θ_min, θ_max)."""
     ts, inv = _sorted_times(times)
-    method = p.accuracy.method           # "projected" stays: the integrator projects (DOP853 steps it)
+    method = acc.method           # "projected" stays: the integrator projects (DOP853 steps it)
     method = method if method == "projected" else runner.scipy_method(method)
-    rtol, atol = p.accuracy.rtol, p.accuracy.atol
+    rtol, atol = acc.rtol, acc.atol
     T = ts[-1] if ts else 0.0
     if ts:
         res.method = "ode:DOP853+projection" if method == "projected" else f"ode:{method}"
     if not T > 0:
         if ts:
             res.error_estimate = 0.0
-        return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, math.inf)[0]
-    check_budget(p, T, Wfast, Wp, float(y0[6]), top.C, top.A)
+        return _quaternion_run(top, acc, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, math.inf)[0]
+    check_budget(acc, T, Wfast, Wp, float(y0[6]), top.C, top.A)
     red = Reduced(top, state, bounds, Wp)
     quat = method == "projected" or not usable(top, *bounds, red.w3, red.b, Wp, Wfast, rtol)
 
     def run_at(r, a):
         h = step_cap(bounds, Wfast, method, r / rtol)
         if quat:
-            return _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, r, a, h)
-        return _reduced_run(red, p, ts, inv, method, scales, r, a, h)
+            return _quaternion_run(top, acc, y0, psi0, phi0, ts, inv, method, Wp, scales, r, a, h)
+        return _reduced_run(red, acc, ts, inv, method, scales, r, a, h)
 
     out, drifts, nsteps = run_at(rtol, atol)
     fl = FLOOR * Wp
     # below TIGHT_RTOL round-off floors, not rtol, bound the error (measured: 5-200 × rtol at 1e-12,
     # 13-2,000 × at 1e-13): the check solve runs by default there, and the larger figure is reported
-    check = p.accuracy.estimate or rtol < TIGHT_RTOL
+    check = acc.estimate or rtol < TIGHT_RTOL
     runner.estimate_error(           # the runner's policy: check solve (and fallback) or nominal
         res, out, estimate=check, rtol=rtol, atol=atol, rerun=lambda r, a: run_at(r, a)[0],
         difference=lambda a, b: ode.relative_difference(
@@ -103,10 +104,10 @@ def route(res, top, p, y0, psi0, phi0, times, Wfast, Wp, scales, *, state, bound
              "times, from a check solve at {how}", drifts=drifts, steps=nsteps)
     measured = res.error_estimate if check else None          # the check solve's difference
     nominal = max([rtol * max(nsteps, 1), *(d for d in drifts if d is not None)])
-    if check and not p.accuracy.estimate and measured is not None and nominal > measured:
+    if check and not acc.estimate and measured is not None and nominal > measured:
         res.error_estimate = nominal
         res.extra["error_estimate_note"] = ode.NOMINAL_NOTE
-    _floor_and_warning(res, rtol, drifts, bounds, measured, floor=not p.accuracy.estimate)
+    _floor_and_warning(res, rtol, drifts, bounds, measured, floor=not acc.estimate)
     return out
 
 
@@ -152,17 +153,17 @@ def step_cap(bounds, Wfast, method, ratio=1.0):
 REPORTED = (0, 1, 2, 3, 4, 5, 7)
 
 
-def _quaternion_run(top, p, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, cap):
+def _quaternion_run(top, acc: Controls, y0, psi0, phi0, ts, inv, method, Wp, scales, rtol, atol, cap):
     run = integrate(top, y0, psi0, phi0, ts, rtol=rtol, atol=atol, method=method, Wp=Wp, scales=scales,
-                    max_steps=p.accuracy.max_steps, max_step=cap)
+                    max_steps=acc.max_steps, max_step=cap)
     return motion(top, run, inv, rates, reaction) + (max(run.drift), run.ambiguous), run.drift, run.steps
 
 
-def _reduced_run(red, p, ts, inv, method, scales, rtol, atol, cap):
+def _reduced_run(red, acc: Controls, ts, inv, method, scales, rtol, atol, cap):
     """One run of the reduced form at the sorted times ``ts`` (requested order by ``inv``)."""
     uniq, back = np.unique(np.asarray(ts, dtype=float), return_inverse=True)
     arrays, dE = red.run(uniq, rtol=rtol, atol=atol, method=method, max_step=cap,
-                         max_steps=p.accuracy.max_steps)
+                         max_steps=acc.max_steps)
     drift = dE * red.top.A / scales[0] if scales[0] > 0 else 0.0
     idx = back[inv]
     return tuple(a[idx] for a in arrays) + (drift, []), (drift,), red.steps

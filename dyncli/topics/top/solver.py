@@ -17,7 +17,7 @@ import math
 from dyncli.errors import InputError
 from dyncli.result import FrameTable, Result, Series
 from dyncli.topics.top.derived import BASIS, TABLE_FORMULAS, table_381
-from dyncli.topics.top.kinematics import (S_TINY, TWO_PI, Top, body_omega, nutation_cubic, quat_from_euler,
+from dyncli.topics.top.kinematics import (S_TINY, TWO_PI, Controls, Top, body_omega, nutation_cubic, quat_from_euler,
                                           turning_points)
 
 #: closest approach to a pole that gets a warning (rad)
@@ -46,10 +46,12 @@ def solve(p, options=None) -> Result:
     times = list(p.at)
     n = len(times)
     out = None
-    if p.accuracy.method in ("auto", "exact"):
+    a = p.accuracy
+    acc = Controls(a.method, a.rtol, a.atol, a.max_steps, a.estimate)
+    if acc.method in ("auto", "exact"):
         from dyncli.topics.top import exact_route
 
-        out = exact_route.route(res, top, p, psi0, th0, phi0, psd0, th_dot0, times)
+        out = exact_route.route(res, top, acc, psi0, th0, phi0, psd0, th_dot0, p.phi_dot, times)
     if out is not None:
         th_min, th_max = res.results["theta_min"], res.results["theta_max"]
     else:
@@ -59,7 +61,7 @@ def solve(p, options=None) -> Result:
 
         th_min, th_max, Wp = _bounds(top, p, th0, th_dot0, psd0, W3)
         res.results.update(theta_min=th_min + 0.0, theta_max=th_max + 0.0)
-        out = ode_route.route(res, top, p, np.array(y0, dtype=float), psi0, phi0, times, Wfast, Wp, scales,
+        out = ode_route.route(res, top, acc, np.array(y0, dtype=float), psi0, phi0, times, Wfast, Wp, scales,
                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot), bounds=(th_min, th_max))
         res.extra["sample"] = lambda ts: _resample(p, ts)
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out

@@ -29,3 +29,14 @@ def test_a_narrow_barrier_between_the_scan_nodes_turns_the_body(b):
     assert f["v"] == pytest.approx(-1.414, rel=1e-12)          # came back
     # within the estimate relative to the scale |s| + |v| t (≈ 28 m), itself ~1e-14
     assert abs(f["s"] - reference(b)) <= rec["error_estimate"] * 28
+
+
+def test_a_barrier_hidden_between_two_scan_nodes_turns_the_body():
+    # w = 1e-5 midway between the scan nodes 1.000 and 1.002: a underflows to 0 at both, the nodes
+    # show no dip at all; the enclosures of a find it (the body went through at v = 1.414 before)
+    b, w = 1.0011, 1e-5
+    rec = solve_one_text(f"type: rectilinear\nparams: {{w: {w!r}, b: {b!r}}}\n"
+                         "a: \"2*(s-b)/w**2*exp(-((s-b)/w)**2)\"\ns1: 0\nv1: 1.414\nfind:\n  - {t: 10}\n")
+    f = rec["results"]["find"][0]
+    assert f["v"] == pytest.approx(-1.414, rel=1e-12)
+    assert abs(f["s"] - reference(b, w=w)) <= max(rec["error_estimate"], 1e-13) * 28

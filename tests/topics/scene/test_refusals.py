@@ -520,3 +520,18 @@ forces:
 at: [0, 1]
 """
     refusal(text, "forces.0.spring", "coincide")
+
+
+def test_slider_on_a_curve():
+    """A slider runs along a line: on a curved surface it is refused at its surface (was exit 3)."""
+    text = """\
+type: scene
+surfaces:
+  bowl: {curve: {x1: "q", x2: "q**2"}, q_range: [-1, 1]}
+bodies:
+  A: {shape: box, mass: 1, size: [0.2, 0.1], x: [0, 0.5], angle: 0}
+joints:
+  s: {slider: [A, bowl]}
+at: [0, 0.5]
+"""
+    refusal(text, "joints.s.slider.1", "straight surface", "'bowl' is a curve")

@@ -1,0 +1,310 @@
+"""dyncli's own DOP853 stepper: scipy's ``DOP853`` step for step, without importing scipy.
+
+A student's script that integrates one problem pays ``import scipy.integrate`` (about 0.3 s of
+CPU: it loads ``scipy.special``, ``scipy.optimize`` and more); dyncli's explicit routes use only
+the DOP853 stepper, its dense output and a piecewise interpolant.  This module is those three,
+the same algorithm as scipy's ``scipy/integrate/_ivp`` (``rk.py``, ``base.py``, ``common.py``;
+BSD-3-Clause, Copyright (c) the SciPy Developers) written with the same floating-point
+operations in the same order, so that a run is bit-identical to scipy's (``tests/
+test_dop853.py`` compares every step, state and interpolated value with the installed scipy):
+
+* :class:`DOP853` — the explicit Runge-Kutta 8(5,3) pair of Dormand and Prince with Hairer's
+  error estimator and step-size control (safety 0.9, factors 0.2 … 10, exponent −1/8), the
+  starting step of Hairer, Nørsett & Wanner (II.4) capped by the interval and ``max_step``;
+  the public interface of scipy's ``OdeSolver`` that :mod:`dyncli.ode` steps (``step``,
+  ``dense_output``, ``t``, ``y``, ``t_old``, ``f``, ``status``, ``nfev``, ``direction``, ``n``).
+* :class:`DenseOutput` — the 7th-degree interpolant of one step (3 extra stages).
+* :class:`OdeSolution` — consecutive steps' interpolants as one function of t.
+
+Only scipy's ``solve_ivp`` driver (event location, used by routes that ask it for events) still
+takes scipy's own classes (:func:`dyncli.integrators.solver_class` with ``scipy=True``).
+"""
+
+from __future__ import annotations
+
+from itertools import groupby
+
+import numpy as np
+
+from dyncli import dop853_coefficients as dc
+
+SAFETY = 0.9        # multiplies the step size the error's asymptotics suggest
+MIN_FACTOR = 0.2    # the smallest decrease of a step size
+MAX_FACTOR = 10     # the largest increase
+EPS = np.finfo(float).eps
+
+
+def norm(x):
+    """The RMS norm of the step-size control."""
+    return np.linalg.norm(x) / x.size ** 0.5
+
+
+def select_initial_step(fun, t0, y0, t_bound, max_step, f0, direction, order, rtol, atol):
+    """The starting step (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.4), no longer than the
+    interval or ``max_step``."""
+    interval_length = abs(t_bound - t0)
+    if interval_length == 0.0:
+        return 0.0
+    scale = atol + np.abs(y0) * rtol
+    d0 = norm(y0 / scale)
+    d1 = norm(f0 / scale)
+    h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
+    h0 = min(h0, interval_length)
+    y1 = y0 + h0 * direction * f0
+    f1 = fun(t0 + h0 * direction, y1)
+    d2 = norm((f1 - f0) / scale) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1 / (order + 1))
+    return min(100 * h0, h1, interval_length, max_step)
+
+
+class DOP853:
+    """Explicit Runge-Kutta 8(5,3) of Dormand and Prince (scipy's ``DOP853``, same steps)."""
+
+    n_stages = dc.N_STAGES
+    order = 8
+    error_estimator_order = 7
+    A = dc.A[:n_stages, :n_stages]
+    B = dc.B
+    C = dc.C[:n_stages]
+    E3 = dc.E3
+    E5 = dc.E5
+    D = dc.D
+    A_EXTRA = dc.A[n_stages + 1:]
+    C_EXTRA = dc.C[n_stages + 1:]
+    TOO_SMALL_STEP = "Required step size is less than spacing between numbers."
+
+    def __init__(self, fun, t0, y0, t_bound, max_step=np.inf, rtol=1e-3, atol=1e-6,
+                 vectorized=False, first_step=None):
+        if vectorized:
+            raise ValueError("dyncli's DOP853 steps one state at a time (vectorized=False)")
+        y0 = np.asarray(y0).astype(float, copy=False)
+        if y0.ndim != 1:
+            raise ValueError("`y0` must be 1-dimensional.")
+        if not np.isfinite(y0).all():
+            raise ValueError("All components of the initial state `y0` must be finite.")
+        self.t_old, self.t, self.y, self.t_bound = None, t0, y0, t_bound
+        self.fun_single = lambda t, y: np.asarray(fun(t, y), dtype=float)
+        self.direction = np.sign(t_bound - t0) if t_bound != t0 else 1
+        self.n, self.status, self.nfev, self.njev, self.nlu = y0.size, "running", 0, 0, 0
+        self.y_old = None
+        if max_step <= 0:
+            raise ValueError("`max_step` must be positive.")
+        self.max_step = max_step
+        self.rtol, self.atol = np.maximum(rtol, 100 * EPS) if np.any(rtol < 100 * EPS) else rtol, np.asarray(atol)
+        if self.atol.ndim > 0 and self.atol.shape != (self.n,):
+            raise ValueError("`atol` has wrong shape.")
+        if np.any(self.atol < 0):
+            raise ValueError("`atol` must be positive.")
+        self.f = self.fun(self.t, self.y)
+        if first_step is None:
+            self.h_abs = select_initial_step(self.fun, self.t, self.y, t_bound, max_step, self.f, self.direction,
+                                             self.error_estimator_order, self.rtol, self.atol)
+        elif first_step <= 0 or first_step > np.abs(t_bound - t0):
+            raise ValueError("`first_step` must be positive and within the interval.")
+        else:
+            self.h_abs = first_step
+        self.error_exponent = -1 / (self.error_estimator_order + 1)
+        self.h_previous = None
+        self.K_extended = np.empty((dc.N_STAGES_EXTENDED, self.n), dtype=self.y.dtype)
+        self.K = self.K_extended[:self.n_stages + 1]
+
+    def fun(self, t, y):
+        """The right-hand side, each call counted (``nfev``)."""
+        self.nfev += 1
+        return self.fun_single(t, y)
+
+    @property
+    def step_size(self):
+        return None if self.t_old is None else np.abs(self.t - self.t_old)
+
+    def step(self):
+        """One accepted step (or the solver fails: ``status`` "failed" and the message)."""
+        if self.status != "running":
+            raise RuntimeError("Attempt to step on a failed or finished solver.")
+        if self.n == 0 or self.t == self.t_bound:
+            self.t_old, self.t, self.status = self.t, self.t_bound, "finished"
+            return None
+        t = self.t
+        success, message = self._step_impl()
+        if not success:
+            self.status = "failed"
+        else:
+            self.t_old = t
+            if self.direction * (self.t - self.t_bound) >= 0:
+                self.status = "finished"
+        return message
+
+    def _rk_step(self, t, y, h):
+        """The stages of one step and its 8th-order result (scipy's ``rk_step``)."""
+        K, fun = self.K, self.fun
+        K[0] = self.f
+        for s, (a, c) in enumerate(zip(self.A[1:], self.C[1:]), start=1):
+            dy = np.dot(K[:s].T, a[:s]) * h
+            K[s] = fun(t + c * h, y + dy)
+        y_new = y + h * np.dot(K[:-1].T, self.B)
+        f_new = fun(t + h, y_new)
+        K[-1] = f_new
+        return y_new, f_new
+
+    def _error_norm(self, h, scale):
+        """Hairer's error norm of DOP853 (the 5th-order estimate corrected by the 3rd)."""
+        K = self.K
+        err5 = np.dot(K.T, self.E5) / scale
+        err3 = np.dot(K.T, self.E3) / scale
+        err5_norm_2 = np.linalg.norm(err5) ** 2
+        err3_norm_2 = np.linalg.norm(err3) ** 2
+        if err5_norm_2 == 0 and err3_norm_2 == 0:
+            return 0.0
+        denom = err5_norm_2 + 0.01 * err3_norm_2
+        return np.abs(h) * err5_norm_2 / np.sqrt(denom * len(scale))
+
+    def _step_impl(self):
+        t, y, rtol, atol = self.t, self.y, self.rtol, self.atol
+        min_step = 10 * np.abs(np.nextafter(t, self.direction * np.inf) - t)
+        if self.h_abs > self.max_step:
+            h_abs = self.max_step
+        elif self.h_abs < min_step:
+            h_abs = min_step
+        else:
+            h_abs = self.h_abs
+        accepted = rejected = False
+        while not accepted:
+            if h_abs < min_step:
+                return False, self.TOO_SMALL_STEP
+            h = h_abs * self.direction
+            t_new = t + h
+            if self.direction * (t_new - self.t_bound) > 0:
+                t_new = self.t_bound
+            h = t_new - t
+            h_abs = np.abs(h)
+            y_new, f_new = self._rk_step(t, y, h)
+            scale = atol + np.maximum(np.abs(y), np.abs(y_new)) * rtol
+            error_norm = self._error_norm(h, scale)
+            if error_norm < 1:
+                factor = MAX_FACTOR if error_norm == 0 else min(MAX_FACTOR, SAFETY * error_norm ** self.error_exponent)
+                h_abs *= min(1, factor) if rejected else factor
+                accepted = True
+            else:
+                h_abs *= max(MIN_FACTOR, SAFETY * error_norm ** self.error_exponent)
+                rejected = True
+        self.h_previous, self.y_old = h, y
+        self.t, self.y, self.h_abs, self.f = t_new, y_new, h_abs, f_new
+        return True, None
+
+    def dense_output(self):
+        """The interpolant of the last accepted step."""
+        if self.t_old is None:
+            raise RuntimeError("Dense output is available after a successful step was made.")
+        if self.n == 0 or self.t == self.t_old:
+            return ConstantOutput(self.t_old, self.t, self.y)
+        K, h = self.K_extended, self.h_previous
+        for s, (a, c) in enumerate(zip(self.A_EXTRA, self.C_EXTRA), start=self.n_stages + 1):
+            dy = np.dot(K[:s].T, a[:s]) * h
+            K[s] = self.fun(self.t_old + c * h, self.y_old + dy)
+        F = np.empty((dc.INTERPOLATOR_POWER, self.n), dtype=self.y_old.dtype)
+        f_old = K[0]
+        delta_y = self.y - self.y_old
+        F[0] = delta_y
+        F[1] = h * f_old - delta_y
+        F[2] = 2 * delta_y - h * (self.f + f_old)
+        F[3:] = h * np.dot(self.D, K)
+        return DenseOutput(self.t_old, self.t, self.y_old, F)
+
+
+class _Interpolant:
+    """What every step's interpolant shares: its interval, and a scalar or 1-D array of times."""
+
+    def __init__(self, t_old, t):
+        self.t_old, self.t = t_old, t
+        self.t_min, self.t_max = min(t, t_old), max(t, t_old)
+
+    def __call__(self, t):
+        t = np.asarray(t)
+        if t.ndim > 1:
+            raise ValueError("`t` must be a float or a 1-D array.")
+        return self._call_impl(t)
+
+
+class DenseOutput(_Interpolant):
+    """DOP853's 7th-degree interpolant of one step (scipy's ``Dop853DenseOutput``)."""
+
+    def __init__(self, t_old, t, y_old, F):
+        super().__init__(t_old, t)
+        self.h, self.F, self.y_old = t - t_old, F, y_old
+
+    def _call_impl(self, t):
+        x = (t - self.t_old) / self.h
+        if t.ndim == 0:
+            y = np.zeros_like(self.y_old)
+        else:
+            x = x[:, None]
+            y = np.zeros((len(x), len(self.y_old)), dtype=self.y_old.dtype)
+        for i, f in enumerate(reversed(self.F)):
+            y += f
+            if i % 2 == 0:
+                y *= x
+            else:
+                y *= 1 - x
+        y += self.y_old
+        return y.T
+
+
+class ConstantOutput(_Interpolant):
+    """The interpolant of a step of zero length."""
+
+    def __init__(self, t_old, t, value):
+        super().__init__(t_old, t)
+        self.value = value
+
+    def _call_impl(self, t):
+        if t.ndim == 0:
+            return self.value
+        ret = np.empty((self.value.shape[0], t.shape[0]))
+        ret[:] = self.value[:, None]
+        return ret
+
+
+class OdeSolution:
+    """Consecutive steps' interpolants as one function of t (scipy's ``OdeSolution``): at a step's
+    end the earlier step is used (in the direction of integration)."""
+
+    def __init__(self, ts, interpolants):
+        ts = np.asarray(ts)
+        d = np.diff(ts)
+        if not ((ts.size == 2 and ts[0] == ts[-1]) or np.all(d > 0) or np.all(d < 0)):
+            raise ValueError("`ts` must be strictly increasing or decreasing.")
+        self.n_segments = len(interpolants)
+        if ts.shape != (self.n_segments + 1,):
+            raise ValueError("Numbers of time stamps and interpolants don't match.")
+        self.ts, self.interpolants = ts, interpolants
+        self.ascending = bool(ts[-1] >= ts[0])
+        self.t_min, self.t_max = (ts[0], ts[-1]) if self.ascending else (ts[-1], ts[0])
+        self.side = "left" if self.ascending else "right"
+        self.ts_sorted = ts if self.ascending else ts[::-1]
+
+    def _segment(self, ind):
+        segment = min(max(ind - 1, 0), self.n_segments - 1)
+        return segment if self.ascending else self.n_segments - 1 - segment
+
+    def __call__(self, t):
+        t = np.asarray(t)
+        if t.ndim == 0:
+            return self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
+        order = np.argsort(t)
+        reverse = np.empty_like(order)
+        reverse[order] = np.arange(order.shape[0])
+        t_sorted = t[order]
+        segments = np.searchsorted(self.ts_sorted, t_sorted, side=self.side) - 1
+        segments[segments < 0] = 0
+        segments[segments > self.n_segments - 1] = self.n_segments - 1
+        if not self.ascending:
+            segments = self.n_segments - 1 - segments
+        ys, start = [], 0
+        for segment, group in groupby(segments):
+            end = start + len(list(group))
+            ys.append(self.interpolants[segment](t_sorted[start:end]))
+            start = end
+        return np.hstack(ys)[:, reverse]
