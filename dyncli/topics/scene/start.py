@@ -95,10 +95,10 @@ def settle(system, q, v) -> None:
         if bad is None:
             return
         e, what, lm = bad
-        if what == "slack":
+        if isinstance(e, Cord):                         # "slack"
             T = e.tensions(lm)
             e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
-        else:
+        elif isinstance(e, (Contact, Rolls)):           # "slips"
             F = e.friction(lm)
             e.mode = "slip" if isinstance(e, Rolls) else "slide"
             e.sign = -math.copysign(1.0, F)
