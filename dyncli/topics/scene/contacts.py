@@ -69,6 +69,10 @@ class Contact(Element):
         """The mode of the contact once made: smooth, or (rough) stick until decided."""
         return "stick" if self.rough else "smooth"
 
+    def stick_here(self, q) -> None:
+        """Hold the point where it is now (mode "stick"'s second row)."""
+        self.stick_at = float(np.array(self.surface.d) @ self.P.pos(q))
+
     def gap(self, q) -> float:
         return float(np.array(self.surface.n) @ (self.P.pos(q) - np.array(self.surface.origin)))
 

@@ -16,6 +16,10 @@ signed distance d(r) = n·(r − y(q*)); ∇d = n, and the foot moves at ṡ = t
   φ₂ = ∫ |y′| (1 − R k) dq (from the foot of t = 0 to the foot now; the offset curve's arc
   length) + R θ − c₀, J₂ = (1 − R k)/(1 − k d) t̂ᵀ on x and R on θ (γ₂ with the curvature's
   rate dk/ds from y‴).  N along n, F along t̂ at the contact, as on a line.
+  Its phases are those of rolling on a line (contacts.py): "roll" (both rows), "slip" (the
+  distance row and kinetic friction −μ_k N sign along t̂ at the contact point, whose speed is
+  t̂·ẋ + R ω: the generalized direction [t̂; R]), "off" (in flight: the gap d − R watched for
+  an impact); a return to rolling restarts φ₂'s constant at that instant.
 """
 
 from __future__ import annotations
@@ -25,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dyncli.errors import InputError, NumericalError
+from dyncli.errors import NumericalError
 from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
 
@@ -66,8 +70,11 @@ class CurveData:
 
     def _newton(self, r, q: float):
         """Newton on (r − y)·y′ = 0 from q: the foot q* when it converges to a nearest point
-        (|r − y|² a minimum there), else None."""
-        for _ in range(40):
+        (|r − y|² a minimum there), else None.  Each step moves the foot at most a quarter of
+        |r − y| + 1/|k| along the curve, so that from a guess far away (a state asked out of
+        order) it walks to the nearest foot on its side instead of jumping to another lap of a
+        closed curve (where the arc of rolling, φ₂, would be a lap off)."""
+        for _ in range(200):
             y, d1, d2 = self._ev(self.y0, q), self._ev(self.y1, q), self._ev(self.y2, q)
             w = np.asarray(r, float) - y
             g = float(w @ d1)
@@ -75,6 +82,10 @@ class CurveData:
             if not gp < 0:
                 return None
             step = g / gp
+            sp = math.sqrt(float(d1 @ d1))
+            cap = 0.25 * (math.sqrt(float(w @ w)) + sp ** 3 / max(abs(float(d1[0] * d2[1] - d1[1] * d2[0])), 1e-300))
+            if abs(step) * sp > cap:
+                step = math.copysign(cap / sp, step)
             q -= step
             if abs(step) <= 4 * EPS * max(1.0, abs(q)):
                 return q
@@ -92,8 +103,9 @@ class CurveData:
         """q* with (r − y(q*))·y′(q*) = 0, a nearest point: Newton from ``guess``, else from the
         nearest of samples over q_range (or guess ± 10)."""
         got = self._newton(r, float(guess))
-        if got is not None:
-            return got
+        if got is not None and (self.q_range is None or
+                                self.q_range[0] - 0.5 <= got <= self.q_range[1] + 0.5):
+            return got                  # (a foot well beyond the curve's ends is another lap: searched)
         a, b = self.q_range if self.q_range is not None else (guess - 10.0, guess + 10.0)
         got = self._newton(r, self._nearest(r, a, b))
         if got is None:
@@ -101,6 +113,8 @@ class CurveData:
         return got
 
     def _nearest(self, r, a: float, b: float) -> float:
+        # a starting table only: its best sample is Newton's guess (foot), which then converges to the
+        # exact nearest point; a nearer branch between samples needs the curve to fold back within 1/4000 of q_range
         qs = np.linspace(a, b, SEARCH)
         ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(SEARCH, float(e.value())) for e in self.y0])
         return float(qs[int(np.argmin((ys[0] - r[0]) ** 2 + (ys[1] - r[1]) ** 2))])
@@ -123,7 +137,7 @@ class CurveData:
 
     def polyline(self, n: int = 200) -> list[tuple[float, float]]:
         a, b = self.q_range if self.q_range is not None else (-math.pi, math.pi)
-        qs = np.linspace(a, b, n)
+        qs = np.linspace(a, b, n)           # the drawing's points (plots), never a decision
         ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(n, float(e.value())) for e in self.y0])
         return [(float(u), float(v)) for u, v in zip(ys[0], ys[1])]
 
@@ -147,10 +161,28 @@ class _Foot:
 
 @dataclass(kw_only=True)
 class CurveContact(Contact):
-    """P on a curve, pushing only (smooth)."""
+    """P on a curve, pushing only; Coulomb friction along t̂ at the foot (kinetic −μ_k N sign
+    while sliding; sticking holds P where it stopped: the second row t̂ₛ·r_P = const with the
+    tangent t̂ₛ of that point, exact while P stays there)."""
 
     surface: CurveData  # type: ignore[assignment]  # a curve where Contact has a line: the geometry is all overridden here
     foot: _Foot
+    stick_t: tuple = (1.0, 0.0)
+
+    def phase(self):
+        return (self.mode, self.sign, self.stick_at, self.stick_t)
+
+    def set_phase(self, state) -> None:
+        self.mode, self.sign, self.stick_at, self.stick_t = state
+
+    def stick_here(self, q) -> None:
+        r = self.P.pos(q)
+        tt = self.foot.at(r)[1]
+        self.stick_t = (float(tt[0]), float(tt[1]))
+        self.stick_at = float(tt @ r)
+
+    def tangent_jac(self, q) -> np.ndarray:
+        return self.foot.at(self.P.pos(q))[1] @ self.P.jac(q, self.n)
 
     @property
     def linear(self):
@@ -163,23 +195,26 @@ class CurveContact(Contact):
         return self.foot.at(self.P.pos(q))[2]
 
     def phi(self, q, t):
-        return np.array([self.gap(q)])[:self.rows]
+        out = [self.gap(q)]
+        if self.mode == "stick":
+            out.append(float(np.array(self.stick_t) @ self.P.pos(q)) - self.stick_at)
+        return np.array(out[:self.rows])
 
     def jac(self, q):
         if not self.rows:                                   # released (a phase in flight): no row
             return np.zeros((0, self.n))
         n = self.foot.at(self.P.pos(q))[2]
-        return (n @ self.P.jac(q, self.n))[None, :]
+        JP = self.P.jac(q, self.n)
+        return np.array([n @ JP, np.array(self.stick_t) @ JP][:self.rows])
 
     def gamma(self, q, v, t):
         if not self.rows:
             return np.zeros(0)
         _, tt, n, k, d, _ = self.foot.at(self.P.pos(q))
         vp = self.P.vel(q, v)
-        return np.array([k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ self.P.bias(q, v))])
-
-    def friction_column(self, q):
-        return None
+        b = self.P.bias(q, v)
+        out = [k * float(tt @ vp) ** 2 / (1 - k * d) - float(n @ b), -float(np.array(self.stick_t) @ b)]
+        return np.array(out[:self.rows])
 
     def slip_speed(self, q, v) -> float:
         return float(self.foot.at(self.P.pos(q))[1] @ self.P.vel(q, v))
@@ -191,7 +226,10 @@ class CurveContact(Contact):
         _, tt, nn, k, d, _ = self.foot.at(self.P.pos(q))
         JP = self.P.jac(q, n)
         Hr = -k / (1 - k * d) * np.outer(tt, tt)
-        return w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
+        H = w[0] * (JP.T @ Hr @ JP + point_hessian(self.P, q, nn, n))
+        if len(w) > 1:                                      # sticking: the held row's arm
+            H = H + point_hessian(self.P, q, w[1] * np.array(self.stick_t), n)
+        return H
 
     def watch(self, lam, q, v, t):
         m = self.surface.ends_margin(self.foot.at(self.P.pos(q))[0])
@@ -200,6 +238,10 @@ class CurveContact(Contact):
         out = [("separates", float(lam[0]))]
         if m is not None:
             out.append(("leaves", m))
+        if self.mode == "slide":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mode == "stick":
+            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out
 
 
@@ -211,7 +253,6 @@ class CurveRolls(Rolls):
     foot: _Foot
     q_ref: float = 0.0
     linear = False
-    first_event_ends = True          # slip and flight off a curve are not followed (the run stops there)
 
     def _centre(self, q):
         i = self.body_point.body.index
@@ -233,10 +274,59 @@ class CurveRolls(Rolls):
         val, err, ok = gauss_kronrod(f, self.q_ref, qf, 1e-14, 1e-15)[:3]
         return float(val)
 
+    def gap(self, q) -> float:
+        return float(self.foot.at(self._centre(q))[4]) - self.R
+
+    def normal(self, q) -> np.ndarray:
+        return self.foot.at(self._centre(q))[2]
+
+    def normal_speed(self, q, v) -> float:
+        i = self.body_point.body.index
+        return float(self.normal(q) @ np.array([v[i[0]], v[i[1]]], float))
+
+    def tangent_jac(self, q) -> np.ndarray:
+        """The contact point's speed along t̂ per unit rate: [t̂ on the centre; R on θ]."""
+        i = self.body_point.body.index
+        tt = self.foot.at(self._centre(q))[1]
+        J = np.zeros(self.n)
+        J[i[0]], J[i[1]] = tt
+        J[i[2]] = self.R
+        return J
+
+    def slip_speed(self, q, v) -> float:
+        return float(self.tangent_jac(q) @ np.asarray(v, float))
+
+    def roll_const(self, q) -> float:
+        i = self.body_point.body.index
+        return self.arc(self.foot.at(self._centre(q))[0]) + self.R * float(q[i[2]])
+
     def phi(self, q, t):
+        if not self.rows:
+            return np.zeros(0)
         i = self.body_point.body.index
         qf, _, _, _, d, _ = self.foot.at(self._centre(q))
-        return np.array([d - self.R, self.arc(qf) + self.R * float(q[i[2]]) - self.c0])
+        if self.rows == 1:
+            return np.array([d - self.R])
+        roll = self.arc(qf) + self.R * float(q[i[2]]) - self.c0
+        if abs(roll) > 0.5 * self.R:        # the foot on another lap of a closed curve: the one θ rolled to
+            qf, d = self._lap(q)
+            roll = self.arc(qf) + self.R * float(q[i[2]]) - self.c0
+        return np.array([d - self.R, roll])
+
+    def _lap(self, q):
+        """The foot on the lap the body has rolled to: Newton on arc(q) = c₀ − R θ (the arc
+        grows with q at |y′|(1 − R k) > 0), then the nearest point from there."""
+        i = self.body_point.body.index
+        want, qq = self.c0 - self.R * float(q[i[2]]), self.foot.q
+        for _ in range(60):
+            _, _, _, _, k, sp = self.surface.frame(qq)
+            step = (self.arc(qq) - want) / (sp * (1 - self.R * k))
+            qq -= step
+            if abs(step) <= 1e-12 * max(1.0, abs(qq)):
+                break
+        self.foot.q, self.foot._key = qq, None
+        got = self.foot.at(self._centre(q))
+        return got[0], got[4]
 
     def jac(self, q):
         i = self.body_point.body.index
@@ -246,7 +336,7 @@ class CurveRolls(Rolls):
         f = (1 - self.R * k) / (1 - k * d)
         J[1, i[0]], J[1, i[1]] = f * tt
         J[1, i[2]] = self.R
-        return J
+        return J[:self.rows]
 
     def gamma(self, q, v, t):
         """−J̇ẋ: row 1 k a²/(1 − k d); row 2 −(ḟ a + f k a b/(1 − k d)) with a = t̂·ẋ, b = n·ẋ,
@@ -259,46 +349,57 @@ class CurveRolls(Rolls):
         kdot = self.surface.dk_ds(qf) * a / w
         f = (1 - self.R * k) / w
         fdot = (kdot * (d - self.R) + (1 - self.R * k) * k * b) / (w * w)
-        return np.array([k * a * a / w, -(fdot * a + f * k * a * b / w)])
+        return np.array([k * a * a / w, -(fdot * a + f * k * a * b / w)])[:self.rows]
 
     def hessian(self, q, w, n: int) -> np.ndarray:
         """Σ w ∇²φ on the centre's block: −w₁ k/(1 − k d) t̂t̂ᵀ for the distance, and for the arc
         row w₂ (t̂ ∇fᵀ + f k/(1 − k d) n t̂ᵀ), the derivatives of its Jacobian f t̂ (γ's terms)."""
         i = self.body_point.body.index
+        H = np.zeros((n, n))
+        if not self.rows:
+            return H
+        w = list(w) + [0.0] * (2 - len(w))             # slipping: the distance row alone
         qf, tt, nn, k, d, _ = self.foot.at(self._centre(q))
         wd = 1 - k * d
         f = (1 - self.R * k) / wd
         grad_f = (self.surface.dk_ds(qf) * (d - self.R) / wd * tt + (1 - self.R * k) * k * nn) / (wd * wd)
         Hx = -w[0] * k / wd * np.outer(tt, tt) + w[1] * (np.outer(tt, grad_f) + f * k / wd * np.outer(nn, tt))
-        H = np.zeros((n, n))
         H[np.ix_([i[0], i[1]], [i[0], i[1]])] = Hx
         return H
 
     def watch(self, lam, q, v, t):
-        out = [("separates", float(lam[0]))]
         m = self.surface.ends_margin(self.foot.at(self._centre(q))[0])
+        if self.mode == "off":                              # in flight: it lands on the curve again
+            return [("impact", self.gap(q) if m is None or m >= 0 else abs(self.gap(q)) - m)]
+        out = [("separates", float(lam[0]))]
         if m is not None:
             out.append(("leaves", m))
-        if self.mu_s is not None:
+        if self.mode == "slip":
+            out.append(("sticks", self.sign * self.slip_speed(q, v)))
+        elif self.mu_s is not None:
             out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
         return out
 
 
 def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q) -> CurveContact:
-    if j["mu"] or j["mu_s"] or j["mu_k"]:
-        raise InputError("friction on a curved surface is not in this release: make the contact smooth (leave out "
-                         "mu), or use the constrained-particle type for a particle on a rough curve",
-                         path.rsplit(".", 1)[0] + ".mu")
+    """A contact on a curve, with its friction coefficients (mu for both, or mu_s / mu_k; one
+    given stands for the other, as on a line)."""
+    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+    if j.get("mu_k") is not None and j.get("mu_s") is None:
+        mu_s = mu_k
     foot = _Foot(curve, curve.first_foot(P.pos(q), j["at"]))
-    return CurveContact(name, kind, n, path, P=P, surface=curve, mode="smooth", foot=foot)
+    return CurveContact(name, kind, n, path, P=P, surface=curve, mu_s=mu_s, mu_k=mu_k,
+                        mode="slide" if (mu_s or mu_k) else "smooth", foot=foot, e=float(j.get("e") or 0.0))
 
 
 def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:
     i = body_point.body.index
     x = np.array([q[i[0]], q[i[1]]], float)
     q0 = curve.first_foot(x, j["at"])
+    mu_k = j["mu_k"] if j.get("mu_k") is not None else j["mu_s"]
     el = CurveRolls(name, kind, n, path, body_point=body_point, surface=curve, R=R, c0=0.0, mu_s=j["mu_s"],
-                    foot=_Foot(curve, q0), q_ref=q0)
+                    mu_k=mu_k, foot=_Foot(curve, q0), q_ref=q0, e=j.get("e") or 0.0)
     el.c0 = R * float(q[i[2]])
     return el
 

@@ -267,7 +267,7 @@ def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
         e.mode, e.sign, e.c0 = "roll", 0.0, e.roll_const(q)
     else:
         e.mode, e.sign = "stick", 0.0
-        e.stick_at = float(np.array(e.surface.d) @ e.P.pos(q))
+        e.stick_here(q)
     system.refresh()
     v0 = np.array(v, float)
     v0 = system.project_velocity(q, v0, t)

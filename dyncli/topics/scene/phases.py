@@ -10,6 +10,10 @@
 * ``impact``: a released contact, a stop or a rolling body reaches its surface, ``taut``: a
   slack cord is jerked taut (restitution 0, an inextensible cord): the velocities jump
   (impulse.py); a contact with e = 0 stays made, one with e > 0 rebounds;
+* simultaneous impacts: the released contacts and stops whose gap is 0 at the located impact's
+  instant (within 1e-9 of the scene's size) and that approach their surfaces strike together:
+  one impulse solve with Newton's law on every striking row (impulse.strike), each listed in
+  ``impacts`` (the energy lost, the impact's whole, on the located one's entry);
 * ``rests``: the accumulation rule of a bouncing point (Zeno: infinitely many impacts in a
   finite time): when the rebound speed falls below √rtol × the first impact speed on that
   joint (the bounce height below rtol × the first one), the remaining bounces are summed as
@@ -28,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import impulse, motion
+from . import assembly, impulse, motion
 from .contacts import Contact, Rolls
 from .elements import Cord
 
@@ -130,13 +134,27 @@ class Transitions:
         T1 = s.kinetic(v)
         speed = (lambda w: -float(e.run_rate(q, w, run))) if isinstance(e, Cord) else (lambda w: e.normal_speed(q, w))
         vn = speed(v)
-        vp, N, F, released = impulse.strike(s, q, v, t, e, rest, run)
-        self.event(t, e.name, what)
+        others = [] if isinstance(e, Cord) else self._together(t, q, v, e)
+        vns = [el.normal_speed(q, v) for el, _ in others]
+        vp, N, F, released, more = impulse.strike(s, q, v, t, e, rest, run, others)
+        vn2 = speed(vp)
+        hit = Impact(t, e.name, rest, N, 0.0, F, (vn, vn2))
+        hits = [(hit, what)] if N > 0 or not more else []      # a point struck with no impulse: none
+        for (el, N_o, F_o), vn_o in zip(more, vns):
+            if N_o > 0:
+                hits.append((Impact(t, el.name, el.e, N_o, 0.0, F_o, (vn_o, el.normal_speed(q, vp))), "impact"))
+        hits = hits or [(hit, what)]
+        hits[0][0].energy_loss = T1 - s.kinetic(vp)      # the whole impact's, on its first entry
+        for h, w in hits:
+            self.event(t, h.joint, w)
+            self.traj.impacts.append(h)
+        rebound = []
+        for el, _N, _F in more:
+            if el.rows and el.e > 0 and el.normal_speed(q, vp) > 0:
+                impulse.release(el)                     # it rebounds with the located point
+                rebound.append((el, 0.0))
         for el, _r in released:
             self.event(t, el.name, "slack" if isinstance(el, Cord) else "separates")
-        vn2 = speed(vp)
-        hit = Impact(t, e.name, rest, N, T1 - s.kinetic(vp), F, (vn, vn2))
-        self.traj.impacts.append(hit)
         if isinstance(e, Cord) or rest == 0:
             return vp
         first = self.first.setdefault(e.name, abs(vn))
@@ -150,12 +168,28 @@ class Transitions:
             return vp
         t_rest = t + 2.0 * vn2 / (-a_n * (1.0 - rest)) if rest < 1 else math.inf
         T2 = s.kinetic(vp)
-        vr, N2, F2, released = impulse.strike(s, q, vp, t, e, 0.0)
+        vr, N2, F2, released, more = impulse.strike(s, q, vp, t, e, 0.0, None, rebound, hold=True)
         hit.impulse += N2
         hit.friction += F2
         hit.energy_loss += T2 - s.kinetic(vr)
         self.event(t_rest, e.name, "rests")
+        for el, _N, _F in more:                         # those that struck with it rest with it
+            self.event(t_rest, el.name, "rests")
         return vr
+
+    def _together(self, t, q, v, e) -> list:
+        """[(element, e)] of the released contacts and stops other than ``e`` that reach their
+        surfaces at this instant too (gap within 1e-9 of the scene's size, over the surface's
+        extent) approaching it."""
+        s = self.s
+        tol = 1e-9 * assembly.length_scale(q, s)
+        out = []
+        for el in s.elements:
+            if el is e or not isinstance(el, (Contact, Rolls)) or el.mode != "off":
+                continue
+            if abs(el.watch((), q, v, t)[0][1]) <= tol and el.normal_speed(q, v) < 0:
+                out.append((el, el.e))
+        return out
 
     def settle(self, t, q, v):
         """Make the joint set consistent at t: release, slacken or slip what the new set would

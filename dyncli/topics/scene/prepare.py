@@ -11,9 +11,9 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build, curved
+from . import assembly, build, curved, start
 from .dynamics import SceneSystem
-from .contacts import Contact, Rolls
+from .contacts import Contact
 
 EPS = float(np.finfo(float).eps)
 
@@ -44,6 +44,7 @@ def setup(plan: build.Plan) -> Scene:
         _place_hanging(plan, cords, R, q, free, system)
         for name, spec in cords:
             cord, guides = build.cord_element(name, spec, R, q, n)
+            start.slack_by_length(cord, spec["length"], _cord_length(cord, spec, R, q), f"joints.{name}")
             system.elements.append(cord)
             system.refresh()
             for gd in guides:
@@ -66,6 +67,7 @@ def setup(plan: build.Plan) -> Scene:
                          "freedom the others already remove), so the joint forces are not unique (statically indeterminate); remove one of them",
                          f"joints.{red[0]}")
     v_in = v.copy()
+    start.slipping_given(system, q, v, vgiven)
     v, changed = assembly.project_velocity(system, q, v)
     moved = [k for k in range(n) if vgiven[k] and abs(v[k] - v_in[k]) > 1e-12 * max(abs(v_in[k]), abs(v[k]), 1e-300)]
     if changed and moved:
@@ -77,6 +79,7 @@ def setup(plan: build.Plan) -> Scene:
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
     _initial_modes(system, q, v)
+    start.settle(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
@@ -202,7 +205,8 @@ def _initial_modes(system, q, v) -> None:
             if vt != 0:
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
             else:
-                e.mode, e.sign, e.stick_at = "stick", 0.0, float(np.array(e.surface.d) @ e.P.pos(q))
+                e.mode, e.sign = "stick", 0.0
+                e.stick_here(q)
                 at_rest.append(e)
     system.refresh()
     if not at_rest:
@@ -254,13 +258,5 @@ def _refuse_at_start(system, q, v) -> None:
                 raise InputError(f"at t = 0 the point {e.P.label} is {-g:.6g} m on the wrong side of the surface "
                                  f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
                                  "n = e3 × d̂ (or reverse the surface's direction)", e.path)
-            if what == "slack":
-                raise InputError(f"at t = 0 the cord {e.name!r} would have to push: T = {g:.6g} N; a cord only pulls "
-                                 "(use a link for a rod that pushes)", e.path)
-            if what == "slips" and isinstance(e, Rolls):
-                N, F = float(lm[0]), float(lm[1])
-                raise InputError(f"at t = 0 rolling needs |F| = {abs(F):.6g} N of friction, more than μ_s N = "
-                                 f"{(e.mu_s or 0.0) * N:.6g} N: it slips at once (raise mu_s, or use a rough contact)",
-                                 e.path)
 
 

@@ -67,12 +67,6 @@ def run(scene: Scene, t_end: float, acc):
             raise NumericalError(f"the joints chatter at t = {t_b:.10g} s: {hit[1]!r} changes {phases.MAX_INSTANT} times "
                                  "at that instant (made and released again); the scene has no consistent joint "
                                  "set there")
-        if getattr(phases.element(s, hit[1]), "first_event_ends", False):
-            traj.stopped = t_b
-            traj.events.append(motion.Event(t_b, hit[1], hit[2]))
-            scene.warnings.append(f"{hit[1]!r} {hit[2]} at t = {t_b:.10g} s: rolling on a curve is followed to its "
-                                  "first event; the results at later times are null")
-            break
         if len(traj.phases) >= phases.MAX_PHASES:
             traj.stopped = t_b
             scene.warnings.append(f"the motion has {phases.MAX_PHASES} phases by t = {t_b:.10g} s (the most one solve "
@@ -165,7 +159,7 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
     coordinate) within one (Newton from the piece's start then stays on the branch)."""
     if not t_end > 0:
         return np.array([0.0])
-    fine = np.linspace(0.0, t_end, 1025)
+    fine = np.linspace(0.0, t_end, 1025)    # sizes the pieces only (each position is Newton's)
     size = max(assembly.length_scale(np.zeros(1), s), 1e-300)
     pieces = 64
     for e in s.elements:
@@ -286,6 +280,14 @@ def _first_event(s, traj, k0: int, t_end: float):
             q, v, _ = p.fn(t)
             return motion.watches(s, q, v, t)
 
+        if p.route == "statics":
+            got = _held_event(s, p, w)
+            if got is not None:
+                p.t_b = got[0]
+                del traj.pieces[k + 1:]
+                q, v, _ = p.fn(got[0])
+                return got[0], q, v, got
+            continue
         ts = np.union1d(np.linspace(p.t_a, p.t_b, _samples(s, p) + 1), _gap_times(s, p))
         prev = w(ts[0])
         for t0, t1 in zip(ts[:-1], ts[1:]):
@@ -305,6 +307,43 @@ def _first_event(s, traj, k0: int, t_end: float):
             prev = cur
     q, v, _ = traj.pieces[-1].fn(t_end)
     return t_end, q, v, None
+
+
+def _held_event(s, p, w):
+    """The first event of a phase held at rest under loads that change in time, decided
+    exactly: each watched force (N, μ_s N − |F|, T) is a smooth function of t there, and its
+    roots are every sign change found by the sign analysis of dyncli.rootfind.all_roots
+    (Chebyshev cells halved until resolved, not a grid).  Returns (t, joint, what) or None."""
+    from dyncli.rootfind import all_roots
+
+    cache: dict[float, list] = {}
+
+    def at(t):
+        got = cache.get(t)
+        if got is None:
+            got = cache[t] = w(t)
+        return got
+
+    first = at(p.t_a)
+    best = None
+    for j, (joint, what, g0) in enumerate(first):
+        if what == "switch":
+            continue
+        def f(ts, j=j):
+            return np.array([at(float(t))[j][2] for t in np.atleast_1d(ts)])
+
+        roots, touches, bad = all_roots(f, p.t_a, p.t_b)
+        if bad:
+            raise NumericalError(f"the forces of {joint!r} held at rest could not be resolved near t = {bad[0]:.6g} s")
+        prev = p.t_a
+        for r in sorted(roots):             # the first sign change downwards (from g > 0 before it)
+            if best is not None and r >= best[0]:
+                break
+            if r > p.t_a and at(0.5 * (prev + r))[j][2] > 0:
+                best = (r, joint, what)
+                break
+            prev = r
+    return best
 
 
 def _gap_times(s, p) -> list[float]:
@@ -331,8 +370,6 @@ def _gap_times(s, p) -> list[float]:
 def _samples(s, p) -> int:
     """64, or one sample per 0.05 rad that a body turns over the piece (a turning point's height
     is then sampled finely enough not to step over a touch)."""
-    if p.route == "statics":            # held at rest under loads that change in time
-        return 1024
     q0, v0, _ = p.fn(p.t_a)
     q1, v1, _ = p.fn(p.t_b)
     turn = 0.0

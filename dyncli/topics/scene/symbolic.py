@@ -82,7 +82,13 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
             P.M.append(S.param("Ī", r"\bar{I}", b.name, b.inertia))
     D.state = (list(scene.q0), list(scene.v0))
     for e in system.elements:
+        if e.kind == "rolls" and e.mode == "slip" or e.kind == "cord" and e.slack:
+            raise ValueError(f"{e.name!r} starts {'slack' if e.kind == 'cord' else 'slipping'}, a phase without a "
+                             "symbolic form in this release")
         if getattr(getattr(e, "surface", None), "curved", False):
+            if getattr(e, "mode", "") in ("slide", "stick", "slip"):
+                raise ValueError(f"the friction of {e.name!r} on the curve {e.surface.name!r} has no symbolic form in "
+                                 "this release")
             D.curves[e.name] = symbolic_curves.add_coordinate(e, S, C, P, D, *D.state)
     for e in system.elements:
         drive = None

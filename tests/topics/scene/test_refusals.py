@@ -349,40 +349,6 @@ at: [0, 1]
     cli_refusal(tmp_path, text, "joints.c", "pull")
 
 
-def test_cord_that_would_push():
-    # a 1 kg mass hanging 1 m under a ground point, pushed up by 20 N: T = 9.81 - 20 = -10.19 N
-    text = """\
-type: scene
-bodies:
-  A: {shape: point, mass: 1, x: [0, -1]}
-joints:
-  rope: {cord: [[0, 0], A]}
-forces:
-  - {force: A, F: [0, 20]}
-at: [0, 1]
-"""
-    msg = refusal(text, "joints.rope", "push", "T = ")
-    m = re.search(r"T = (-?[0-9.eE+-]+)", msg.replace("−", "-"))
-    assert m and math.isclose(float(m.group(1)), -10.19, rel_tol=1e-5), msg
-
-
-def test_rolling_that_would_slip_at_start():
-    # a uniform disk on a 30° incline needs |F| = m g sin β / 3 = 1.635 N (m = 1) of friction;
-    # mu_s = 0.1 gives only mu_s m g cos β = 0.8496 N: it slips at once
-    text = """\
-type: scene
-surfaces:
-  slope: {through: [0, 0], direction: ["cos(30*deg)", "-sin(30*deg)"]}
-bodies:
-  wheel: {shape: disk, mass: 1, radius: 0.2}
-joints:
-  r: {rolls: [wheel, slope], at: 0, mu_s: 0.1}
-at: [0, 1]
-"""
-    msg = refusal(text, "joints.r", "slip", "mu_s")
-    assert "1.635" in msg and "0.849" in msg, msg
-
-
 # --- refused features ---------------------------------------------------------------------------------
 
 def test_curve_as_text_refused_with_its_form():
@@ -421,20 +387,6 @@ bodies:
 at: [0, 1]
 """
     refusal(text, "surfaces.floor.direction", "needs direction", "curve")
-
-
-def test_friction_on_a_curve_refused_names_constrained_particle():
-    text = """\
-type: scene
-surfaces:
-  bowl: {curve: {x1: "sin(q)", x2: "-cos(q)"}}
-bodies:
-  A: {shape: point, mass: 1}
-joints:
-  c: {contact: [A, bowl], at: 0.3, mu: 0.2}
-at: [0, 1]
-"""
-    refusal(text, "joints.c.mu", "friction on a curved surface", "constrained-particle")
 
 
 def test_at_on_a_straight_contact_refused():
