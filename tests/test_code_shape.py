@@ -44,19 +44,6 @@ SMELL_FUNCTION_LINES = 150
 #: (importing file, module the private name lives in, name) found when the rule came; to be fixed
 #: (merged or made public) by the topics' owners; may only shrink.
 PRIVATE_IMPORTS_ALLOWED = {
-    # constrained-particle's kind check reuses particle's validator
-    ("dyncli/topics/constrained_particle/model.py", "dyncli.topics.particle.model", "_check_kind"),
-    # constrained-particle reads motion_find's private alias of dyncli.queries (for SUBDIVIDE)
-    ("dyncli/topics/constrained_particle/find.py", "dyncli.motion_find", "_q"),
-    # force-field: symbolic_field / checks / coordinates / polynomial_field were split from one solver by size
-    ("dyncli/topics/force_field/coordinates.py", "dyncli.topics.force_field.symbolic_field", "_display"),
-    ("dyncli/topics/force_field/coordinates.py", "dyncli.topics.force_field.symbolic_field", "_generic"),
-    ("dyncli/topics/force_field/coordinates.py", "dyncli.topics.force_field.symbolic_field", "_rationalize"),
-    ("dyncli/topics/force_field/coordinates.py", "dyncli.topics.force_field.symbolic_field", "_simplify"),
-    ("dyncli/topics/force_field/polynomial_field.py", "dyncli.topics.force_field.checks", "_random_points"),
-    ("dyncli/topics/force_field/solver.py", "dyncli.topics.force_field.checks", "_random_points"),
-    ("dyncli/topics/force_field/solver.py", "dyncli.topics.force_field.symbolic_field", "_display"),
-    ("dyncli/topics/force_field/symbolic_field.py", "dyncli.topics.force_field.checks", "_random_points"),
     # rectilinear: case2/case2_scan and case4/case4_legs/case4_scan/case4_sens, one case each, split by size
     ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_N0"),
     ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_Scan"),
@@ -78,8 +65,6 @@ PRIVATE_IMPORTS_ALLOWED = {
     ("dyncli/topics/vibration/find.py", "dyncli.queries", "_root"),
     # scene's routes read motion's crossing test
     ("dyncli/topics/scene/routes.py", "dyncli.topics.scene.motion", "_crossed"),
-    # top: the angle wrap of kinematics, used by the integrator split from the same solver by size
-    ("dyncli/topics/top/integrator.py", "dyncli.topics.top.kinematics", "_wrap"),
     # vibration's plots recompute the solver's free amplitude and phase
     ("dyncli/topics/vibration/plots.py", "dyncli.topics.vibration.solver", "_free_amplitude_phase"),
 }

@@ -16,6 +16,7 @@ import numpy as np
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
+from dyncli.queries import SUBDIVIDE
 
 PIECES, PER_PERIOD, MAX_PIECES = 64, 8, 20_000
 
@@ -173,7 +174,7 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=N
 def _turns(batch, B, subdivide=None) -> list[float]:
     sm = mf.StateMotion(lambda t: batch([t])[0], B[0], B[-1], B, batch=batch, subdivide=subdivide)
     sm.prefetch()
-    return mf.turns(lambda t: sm.value("s_dot", t), B, subdivide or mf._q.SUBDIVIDE)
+    return mf.turns(lambda t: sm.value("s_dot", t), B, subdivide or SUBDIVIDE)
 
 
 def _odometer(s, turns: list[float], half: float | None):

@@ -17,8 +17,7 @@ from pydantic import BeforeValidator, Field, model_validator
 from dyncli.errors import InputError
 from dyncli.fields import Expr, ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
 from dyncli.topics.particle.model import Custom, Damper, Drag, Gravity, InverseSquare, Spring, Uniform
-from dyncli.topics.particle.model import _check_kind as _particle_check_kind
-from dyncli.topics.particle.model import check_times
+from dyncli.topics.particle.model import check_force_kind, check_times
 
 CURVE_VARS = ("q",)
 
@@ -36,7 +35,7 @@ def _check_kind(value: Any) -> Any:
     """particle's checks of a force entry, and no N for friction here."""
     if isinstance(value, dict) and value.get("kind") == "friction" and "N" in value:
         raise ValueError("friction on a curve takes only mu: the normal force N is computed")
-    return _particle_check_kind(value)
+    return check_force_kind(value)
 
 
 Force = Annotated[

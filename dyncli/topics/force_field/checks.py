@@ -42,7 +42,10 @@ def real_somewhere(exprs, envs: list[dict], names=None) -> None:
                              "everywhere?): F must be a real field", f"F.{i}")
 
 
-def _random_points(n: int, scale: float, seed: int = 19):
+def random_points(n: int, scale: float, seed: int = 19):
+    """The random test points of the box: a (3, n) array uniform in [−scale, scale]³ from a
+    fixed ``seed``, so that every route (sympy's, the exact polynomial one, the potential's
+    check) draws the same points and reports the same counterexample on every run."""
     import numpy as np
 
     rng = np.random.default_rng(seed)
@@ -65,7 +68,7 @@ def numeric_verdict(fld, box: float, res: Result) -> tuple[bool, str]:
     """(conservative?, how): the curl at N_RANDOM random points of the box."""
     import numpy as np
 
-    pts = _random_points(N_RANDOM, box)
+    pts = random_points(N_RANDOM, box)
     curl = fld.curl_at(pts)
     scale = _derivative_scale(fld, pts)
     ok = np.all(np.isfinite(curl), axis=0)
@@ -85,7 +88,7 @@ def numeric_verdict(fld, box: float, res: Result) -> tuple[bool, str]:
 
 def single_valued(fld, Vnum, box: float) -> tuple[bool, str | None]:
     """Compare V(a) - V(b) with the work of F along random straight segments a -> b."""
-    pts = _random_points(2 * N_SEGMENTS, box, seed=23)
+    pts = random_points(2 * N_SEGMENTS, box, seed=23)
     checked = 0
     for k in range(N_SEGMENTS):
         a, b = pts[:, 2 * k], pts[:, 2 * k + 1]

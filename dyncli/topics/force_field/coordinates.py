@@ -103,12 +103,12 @@ class CurvilinearField:
         pos = {"r", "R"}
         self.Q = [sp.Symbol(n, positive=True) if n in pos else symbolic.symbol(n) for n in self._all_names()]
         rep = {symbolic.symbol(n): q for n, q in zip(self._all_names(), self.Q)}
-        from .symbolic_field import _rationalize, finite_real
+        from .symbolic_field import exact_rationals, finite_real
 
         raw = [symbolic.sym(e).xreplace(rep) for e in F]
         finite_real(raw)
         self.decimals = any(r.atoms(sp.Float) for r in raw)
-        self.S = [_rationalize(r) for r in raw]
+        self.S = [exact_rationals(r) for r in raw]
         q1, q2, q3 = self.Q
         self.h = [sp.Integer(1), q1 * sp.cos(q3), q1] if self.coords == "spherical" else [sp.Integer(1), q1, sp.Integer(1)]
         self.exprs = [symbolic.expr_from_sympy(s, self._all_names()) for s in self.S]
@@ -155,9 +155,9 @@ class CurvilinearField:
 def verdict(fld: CurvilinearField, box: float, res: Result):
     import numpy as np
 
-    from .symbolic_field import _simplify
+    from .symbolic_field import simplify_formula
 
-    simplified = [_simplify(c) for c in fld.curl_sym]
+    simplified = [simplify_formula(c) for c in fld.curl_sym]
     if all(c == 0 for c in simplified):
         return True, "symbolic", simplified
     pts = fld.random_points(box)
@@ -184,26 +184,26 @@ def potential(fld: CurvilinearField, res: Result):
     """V with ∂V/∂q_i = −h_i F_i (sympy) or None; also whether V is single-valued in θ."""
     import sympy as sp
 
-    from .symbolic_field import _generic, _simplify
+    from .symbolic_field import generic_branch, simplify_formula
 
     Q, G = fld.Q, [h * s for h, s in zip(fld.h, fld.S)]
     try:
-        V = -_generic(sp.integrate(G[0], Q[0]))
+        V = -generic_branch(sp.integrate(G[0], Q[0]))
         for i in (1, 2):
-            r = _simplify(-G[i] - sp.diff(V, Q[i]))
-            V = V + _generic(sp.integrate(r, Q[i]))
+            r = simplify_formula(-G[i] - sp.diff(V, Q[i]))
+            V = V + generic_branch(sp.integrate(r, Q[i]))
         if V.has(sp.Integral):
             raise ValueError("unevaluated integral")
     except Exception:  # noqa: BLE001 - sympy could not integrate
         res.warn("the field is conservative but sympy found no closed-form potential; potential is null")
         return None, True
-    if any(_simplify(g + sp.diff(V, q)) != 0 for g, q in zip(G, Q)):
+    if any(simplify_formula(g + sp.diff(V, q)) != 0 for g, q in zip(G, Q)):
         res.warn("sympy's antiderivative could not be verified as a potential: potential is null")
         return None, True
     from .symbolic_field import pin_at_origin
 
     V = pin_at_origin(V, Q, res)
-    jump = _simplify(V.subs(Q[1], Q[1] + 2 * sp.pi) - V)
+    jump = simplify_formula(V.subs(Q[1], Q[1] + 2 * sp.pi) - V)
     return V, jump == 0
 
 
@@ -266,7 +266,7 @@ def solve(p: Setup, options: SolveOptions | None = None) -> Result:
 
 
 def _symbolic(p: Setup):
-    from .symbolic_field import _display
+    from .symbolic_field import display_formula
 
     fld = CurvilinearField(p.F, p.coordinates)
     res = Result({}, method="closed-form", equations=["19.9", fld.table])
@@ -276,14 +276,14 @@ def _symbolic(p: Setup):
     real_somewhere(fld.exprs, [dict(zip(names, fld.random_points(box)))] + [fld.env(pt) for pt in p.points])
     cons, how, simplified = verdict(fld, box, res)
     res.results["curl"] = _curl_at_points(fld, p.points, simplified, res)
-    res.results["curl_formula"] = [_display(c, fld.decimals) for c in simplified]
+    res.results["curl_formula"] = [display_formula(c, fld.decimals) for c in simplified]
     V = None
     curl_zero = cons
     if cons:
         V, single = potential(fld, res)
         if V is not None and not single:
             cons, how = False, "curl = 0 where F is defined, but the potential is not single-valued in θ"
-            res.warn(f"the curl vanishes, but V = {_display(V, fld.decimals)} changes by going once around the axis "
+            res.warn(f"the curl vanishes, but V = {display_formula(V, fld.decimals)} changes by going once around the axis "
                      "(θ → θ + 2π): no single-valued potential exists, the field is not conservative (19.6)")
             V = None
     from .symbolic_field import report_verdict

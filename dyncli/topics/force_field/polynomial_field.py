@@ -68,9 +68,9 @@ def _counterexample(fld: PolynomialField, box: float) -> str:
     checks.numeric_verdict (so the point is the one the sympy route names), else exactly."""
     import numpy as np
 
-    from dyncli.topics.force_field.checks import CURL_RTOL, N_RANDOM, _random_points
+    from dyncli.topics.force_field.checks import CURL_RTOL, N_RANDOM, random_points
 
-    pts = _random_points(N_RANDOM, box)
+    pts = random_points(N_RANDOM, box)
     curl = np.array([P.values(c, pts) for c in fld.curl])
     scale = np.zeros(pts.shape[1])
     for d in fld.grad:

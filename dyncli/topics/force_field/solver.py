@@ -30,10 +30,10 @@ from typing import TYPE_CHECKING, cast
 from dyncli import symbolic
 from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
-from dyncli.topics.force_field.checks import N_RANDOM, _random_points, box_of, numeric_verdict, real_somewhere, single_valued
+from dyncli.topics.force_field.checks import N_RANDOM, box_of, numeric_verdict, random_points, real_somewhere, single_valued
 from dyncli.topics.force_field.path import path_work
 from dyncli.topics.force_field.setup import Path, Setup
-from dyncli.topics.force_field.symbolic_field import (SYMBOLIC_SECONDS, Field, _display, conservative_verdict, numeric_potential,
+from dyncli.topics.force_field.symbolic_field import (SYMBOLIC_SECONDS, Field, display_formula, conservative_verdict, numeric_potential,
                                                       potential, report_verdict)
 
 if TYPE_CHECKING:
@@ -63,7 +63,7 @@ def _symbolic_part(fld: Field, box: float, res: Result):
     try:
         with cputime.limit(SYMBOLIC_SECONDS):
             cons, how, curl_simpl = conservative_verdict(fld, box, res)
-            curl_formula = [_display(c, fld.decimals) for c in curl_simpl]
+            curl_formula = [display_formula(c, fld.decimals) for c in curl_simpl]
             V = Vnum = None
             if cons:
                 V = potential(fld, res)
@@ -117,7 +117,7 @@ def solve_setup(p: Setup, options: SolveOptions | None = None) -> Result:
     fld = poly if poly is not None else _field(p.F)
     box = box_of(v for pt in p.points for v in pt)   # the region of the random checks
     if poly is None:
-        pts = _random_points(N_RANDOM, box)
+        pts = random_points(N_RANDOM, box)
         real_somewhere(fld.exprs, [dict(x1=pts[0], x2=pts[1], x3=pts[2])]
                        + [dict(x1=float(a), x2=float(b), x3=float(c)) for a, b, c in p.points])
     res = Result({}, method="closed-form", equations=["19.9"])

@@ -10,6 +10,9 @@
 * the potential V with F = -grad V (19.7) and V(0) = 0, integrated
   symbolically one coordinate at a time and verified by differentiation;
 * the display of formulas (decimals where the user wrote decimals).
+
+The exact forms (:func:`exact_rationals`, :func:`simplify_formula`, :func:`generic_branch`) and
+:func:`display_formula` serve the curvilinear fields (:mod:`dyncli.topics.force_field.coordinates`) too.
 """
 
 from __future__ import annotations
@@ -19,16 +22,16 @@ from typing import Any
 
 from dyncli import symbolic
 from dyncli.result import Result
-from dyncli.topics.force_field.checks import N_RANDOM, _random_points, numeric_verdict
+from dyncli.topics.force_field.checks import N_RANDOM, numeric_verdict, random_points
 
 VARS = ("x1", "x2", "x3")
 MAX_OPS = 400          # above this size, skip sympy's simplify (numeric check instead)
 SYMBOLIC_SECONDS = 1.0  # CPU for the exact derivatives, and again for the verdict and potential (dyncli.cputime)
 
 
-def _rationalize(obj):
+def exact_rationals(obj):
     """Floats (from decimal literals) -> exact rationals, so that sympy's
-    integration and simplification work exactly."""
+    integration and simplification work exactly (Cartesian and curvilinear fields alike)."""
     import sympy as sp
 
     return obj.xreplace({f: sp.Rational(repr(float(f))) for f in obj.atoms(sp.Float)})
@@ -54,8 +57,9 @@ def _decimalize(obj):
     return obj.xreplace(rep) if rep else obj
 
 
-def _display(obj, decimals: bool) -> str:
-    """Shortest readable form (simplified or expanded) as one-line text."""
+def display_formula(obj, decimals: bool) -> str:
+    """A formula of the results (curl, potential) as one-line text: its shortest readable form
+    (simplified or expanded; a polynomial expanded), with decimals where the user wrote decimals."""
     import sympy as sp
 
     forms = [obj]
@@ -70,7 +74,11 @@ def _display(obj, decimals: bool) -> str:
     return symbolic.pretty(_decimalize(best) if decimals else best)
 
 
-def _simplify(obj):
+def simplify_formula(obj):
+    """The canonical form of a sympy expression, best effort: cancel over a common denominator,
+    then sympy's simplify unless the result is a polynomial or above MAX_OPS; the expression
+    unchanged when sympy fails.  A result of 0 is the symbolic proof that a curl (or the
+    residual of a potential) vanishes."""
     import sympy as sp
 
     if obj == 0:
@@ -86,9 +94,10 @@ def _simplify(obj):
         return obj
 
 
-def _generic(obj):
-    """Replace each Piecewise by its first (generic) branch: integration of
-    e.g. x2*cos(x1*x2) in x1 gives sin(x1*x2) 'for x2 != 0'."""
+def generic_branch(obj):
+    """An antiderivative's generic case: each Piecewise replaced by its first branch (integration of
+    e.g. x2*cos(x1*x2) in x1 gives sin(x1*x2) 'for x2 != 0'); the potential found with it
+    is verified by differentiation afterwards."""
     import sympy as sp
 
     return obj.replace(lambda e: isinstance(e, sp.Piecewise), lambda e: e.args[0].expr)
@@ -118,7 +127,7 @@ class Field:
         raw = [symbolic.sym(e) for e in F]
         finite_real(raw)
         self.decimals = any(r.atoms(sp.Float) for r in raw)
-        self.S = [_rationalize(r) for r in raw]
+        self.S = [exact_rationals(r) for r in raw]
         X, S = self.X, self.S
         D = [[sp.diff(S[i], X[j]) for j in range(3)] for i in range(3)]    # D[i][j] = ∂F_i/∂x_j
         self.curl_sym = [D[2][1] - D[1][2], D[0][2] - D[2][0], D[1][0] - D[0][1]]
@@ -140,9 +149,7 @@ class Field:
 
 def conservative_verdict(fld: Field, box: float, res: Result) -> tuple[bool, str, Any]:
     """(conservative?, how it was decided, curl formulas)."""
-    import numpy as np
-
-    simplified = [_simplify(c) for c in fld.curl_sym]
+    simplified = [simplify_formula(c) for c in fld.curl_sym]
     if all(c == 0 for c in simplified):
         return True, "symbolic", simplified
     cons, how = numeric_verdict(fld, box, res)
@@ -155,9 +162,9 @@ def potential(fld: Field, res: Result):
 
     X, S = fld.X, fld.S
     try:
-        V = -_generic(sp.integrate(S[0], X[0]))
+        V = -generic_branch(sp.integrate(S[0], X[0]))
         for i in (1, 2):
-            r = _simplify(-S[i] - sp.diff(V, X[i]))
+            r = simplify_formula(-S[i] - sp.diff(V, X[i]))
             for j in range(i):
                 if X[j] in r.free_symbols:
                     # mathematically independent of x_j (curl = 0): evaluate at a
@@ -167,7 +174,7 @@ def potential(fld: Field, res: Result):
                         if rr.is_finite is not False and not rr.has(sp.zoo, sp.nan):
                             r = rr
                             break
-            V = V + _generic(sp.integrate(r, X[i]))
+            V = V + generic_branch(sp.integrate(r, X[i]))
         if V.has(sp.Integral):
             raise ValueError("unevaluated integral")
     except Exception:  # noqa: BLE001 - sympy could not integrate
@@ -176,7 +183,7 @@ def potential(fld: Field, res: Result):
     V = pin_at_origin(V, X, res, "F (or V)")
     # verify F = -grad V
     for i in range(3):
-        if _simplify(S[i] + sp.diff(V, X[i])) != 0:
+        if simplify_formula(S[i] + sp.diff(V, X[i])) != 0:
             if not _numeric_gradient_ok(fld, V, i):
                 res.warn("sympy's antiderivative is not a potential everywhere (piecewise or singular), "
                          "so no closed-form potential is given: potential is null")
@@ -189,7 +196,7 @@ def _numeric_gradient_ok(fld: Field, V, i: int) -> bool:
     import sympy as sp
 
     d = symbolic.expr_from_sympy(sp.diff(V, fld.X[i]), VARS)
-    pts = _random_points(N_RANDOM, 2.0, seed=7)
+    pts = random_points(N_RANDOM, 2.0, seed=7)
     a = d.evaluate(x1=pts[0], x2=pts[1], x3=pts[2]) + fld.exprs[i].evaluate(x1=pts[0], x2=pts[1], x3=pts[2])
     ok = np.isfinite(a)
     return bool(np.any(ok)) and bool(np.all(np.abs(a[ok]) < 1e-8 * (1 + np.abs(d.evaluate(x1=pts[0], x2=pts[1], x3=pts[2])[ok]))))
@@ -199,7 +206,6 @@ def numeric_potential(V):
     """A float-valued function of a point for the sympy potential V: dyncli's
     own evaluator when V converts back to an expression, else sympy's evalf
     of V with the coordinates substituted (e.g. for erf)."""
-    import numpy as np
     import sympy as sp
 
     try:
@@ -234,7 +240,7 @@ def pin_at_origin(V, symbols, res, what: str = "V"):
                  "the additive constant of V is the one of the antiderivative")
     else:
         V = V - V0
-    return _simplify(V)
+    return simplify_formula(V)
 
 
 def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_zero: bool | None = None) -> None:
@@ -247,4 +253,4 @@ def report_verdict(res: Result, cons: bool, how: str, V, decimals: bool, curl_ze
         res.warn("F is not conservative (its curl is not zero), so it has no potential: potential is null")
     res.results["conservative"] = bool(cons)
     res.results["conservative_method"] = how
-    res.results["potential"] = V if V is None or isinstance(V, str) else _display(V, decimals)
+    res.results["potential"] = V if V is None or isinstance(V, str) else display_formula(V, decimals)

@@ -51,7 +51,7 @@ import numpy as np
 
 from dyncli import ode, runner
 from dyncli.errors import NumericalError
-from dyncli.topics.top.kinematics import S_TINY, Top, _wrap, half_angles
+from dyncli.topics.top.kinematics import S_TINY, Top, half_angles, wrap_angle
 
 #: deepest bisection of one step when tracking ψ near the poles
 MAX_DEPTH = 60
@@ -88,10 +88,10 @@ class _Tracker:
         else:
             if not (ell < 0.5 * smin) and sa >= S_TINY:
                 self.ambiguous.append(tb)
-            psi_b = psi_a + _wrap(ab + bb - psi_a)
+            psi_b = psi_a + wrap_angle(ab + bb - psi_a)
         pred = phi_a + self.W3 * (tb - ta) - (psi_b - psi_a) * 0.5 * (anga[2] + cb)
         phi_w = (2.0 * ab - psi_b) if cb >= 0 else (psi_b - 2.0 * bb)
-        return psi_b, pred + _wrap(phi_w - pred)
+        return psi_b, pred + wrap_angle(phi_w - pred)
 
     def advance(self, ta, tb, qb, dense):
         angb = half_angles(qb)

@@ -24,8 +24,9 @@ EPS = sys.float_info.epsilon
 S_TINY = 1e-12
 
 
-def _wrap(x: float) -> float:
-    """x reduced to (−π, π]."""
+def wrap_angle(x: float) -> float:
+    """The angle x reduced to (−π, π] (``math.remainder`` by 2π, −π sent to π): the step
+    between two angles taken the short way round."""
     r = math.remainder(x, TWO_PI)
     return math.pi if r == -math.pi else r
 

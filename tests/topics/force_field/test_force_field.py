@@ -30,7 +30,7 @@ points: [[1, 2, 3], [-0.5, 0.25, 2]]
 def test_numeric_fallback_when_sympy_cannot_decide(monkeypatch):
     from dyncli.topics.force_field import symbolic_field
 
-    monkeypatch.setattr(symbolic_field, "_simplify", lambda obj: obj)   # sympy "can't decide"
+    monkeypatch.setattr(symbolic_field, "simplify_formula", lambda obj: obj)   # sympy "can't decide"
     rec = solve_one_text("""
 type: force-field
 F: ["x2*cos(x1)**2 + x2*sin(x1)**2", "x1", "0"]
