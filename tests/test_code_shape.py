@@ -58,7 +58,6 @@ PRIVATE_IMPORTS_ALLOWED = {
     ("dyncli/topics/force_field/solver.py", "dyncli.topics.force_field.symbolic_field", "_display"),
     ("dyncli/topics/force_field/symbolic_field.py", "dyncli.topics.force_field.checks", "_random_points"),
     # rectilinear: case2/case2_scan and case4/case4_legs/case4_scan/case4_sens, one case each, split by size
-    ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_N0"),
     ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_Scan"),
     ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_fmt"),
     ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_what"),
