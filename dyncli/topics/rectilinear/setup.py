@@ -4,9 +4,10 @@ of SI floats — built from the validated input by :func:`dyncli.topics.rectilin
 or by hand in a notebook::
 
     from dyncli.expr import parse
+    from dyncli.topics.rectilinear import solver
     from dyncli.topics.rectilinear.setup import Query, Setup
     s = Setup(a=parse("-9.81", ("t", "s", "v"), {}), v1=20.0, find=(Query(t=1.0), Query(v=0.0)))
-    dyncli.topics.rectilinear.solver.solve_setup(s)
+    solver.solve_setup(s).results      # {'case': 1, 'find': [{'t': 1.0, 's': 15.095, ...}, ...]}
 
 The attribute names are the input's (``p.s1``, ``q.kind``, ``p.accuracy.rtol``), so the physics
 reads either.  ``a`` is a compiled expression of t, s, v (:class:`dyncli.expr.Expr`, not a model).
