@@ -25,7 +25,7 @@ class Answers:
         #: the absolute error bounds (t, s, v) of each reached answer (quadrature routes)
         self.errs: list[tuple] = []
         #: how a query is named in warnings (its index in the user's list; see _distinct)
-        self.labels = getattr(p, "_labels", None) or [f"find[{i}]" for i in range(len(p.find))]
+        self.labels = p.labels or [f"find[{i}]" for i in range(len(p.find))]
 
     def acc(self, t: float, s: float, v: float) -> float:
         val = self.p.a(t=t, s=s, v=v)

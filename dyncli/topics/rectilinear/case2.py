@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import bisect
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -228,7 +229,7 @@ class States:
         from dyncli.topics.rectilinear.answers import Answers
 
         self.p, self.rtol, self.atol = p, rtol, atol
-        self.c = _Case2(p, Answers(p.model_copy(update={"find": []}), Result({})), rtol, atol)
+        self.c = _Case2(p, Answers(replace(p, find=()), Result({})), rtol, atol)
         self.kt = [p.t1]                        # the times where the state is known, ascending
         self.known = {p.t1: (p.s1, p.v1)}
 

@@ -247,6 +247,16 @@ def _at_rest_within_input(c) -> bool:
     return bool(math.isfinite(lo) and math.isfinite(hi) and abs(c.a_v1) <= 0.5 * abs(hi - lo))
 
 
+def motion(p, ans, rtol: float, atol: float) -> _Case3:
+    """The case-3 motion of ``p`` (its branches of v built as the queries ask), answering into ``ans``."""
+    return _Case3(p, ans, rtol, atol)
+
+
+def moves(c: _Case3) -> bool:
+    """False when the motion ``c`` is the equilibrium: a(v1) = 0, or zero within the input's rounding."""
+    return not (c.a_v1 == 0 or _at_rest_within_input(c))
+
+
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case3(p, ans, rtol, atol)
     ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)

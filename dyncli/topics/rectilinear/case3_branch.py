@@ -175,7 +175,6 @@ class Branch:
         return vals[0::2], vals[1::2], errs[0::2], errs[1::2]
 
     def _build_grid(self) -> None:
-        c3 = self.c3
         if self.kind == "inf":
             room = _BIG - abs(self.v1)      # |v1| beyond the blow-up threshold already: no room
             ratio = room / self.c if room > 0 else 0.0

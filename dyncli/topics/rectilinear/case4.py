@@ -311,6 +311,11 @@ class _Case4(_Scan):
                 ans.unreached(i, f"v1 = 0 and a(s1) = 0: the body rests at s1 = {_fmt(p.s1)} (equilibrium)")
 
 
+def motion(p, ans, rtol: float, atol: float) -> _Case4:
+    """The case-4 motion of ``p`` (scans and legs built by its ``setup()``), answering into ``ans``."""
+    return _Case4(p, ans, rtol, atol)
+
+
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case4(p, ans, rtol, atol)
     ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)

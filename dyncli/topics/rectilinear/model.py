@@ -8,6 +8,7 @@ from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
 from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel
+from dyncli.topics.rectilinear.setup import KINDS
 from dyncli.topics.rectilinear.springs import LineSpring
 
 
@@ -52,10 +53,6 @@ class Query(StrictModel):
     def raw(self) -> dict:
         """The query as written, for dyncli.queries."""
         return {k: getattr(self, k) for k in KINDS + ("direction", "occurrence", "within") if getattr(self, k) is not None}
-
-
-#: the kinds of query; the last three are answered by the queries of every motion (§11)
-KINDS = ("t", "v", "s", "when", "max", "min")
 
 
 class Rectilinear(ProblemBase):

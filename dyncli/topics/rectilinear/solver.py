@@ -22,10 +22,12 @@ t1); ``reached: false`` with a warning when the state is never attained.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
-from dyncli.errors import InputError, NumericalError
+from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.rectilinear.answers import Answers
+from dyncli.topics.rectilinear.setup import QUERY_FIELDS, Accuracy, Query, Setup, Spring
 
 EQUATIONS = {
     1: ["6.5a", "6.5b"],
@@ -92,21 +94,36 @@ def _distinct(p, keep: list[int]):
     counts = [0] * len(where)
     for k in index:
         counts[k] += 1
-    q = p.model_copy(update={"find": [p.find[i] for i in firsts]})
-    object.__setattr__(q, "_labels", [f"find[{i}]" + (f" and {c - 1} identical quer{'y' if c == 2 else 'ies'}" if c > 1 else "")
-                                      for i, c in zip(firsts, counts)])
+    q = replace(p, find=tuple(p.find[i] for i in firsts),
+                labels=tuple(f"find[{i}]" + (f" and {c - 1} identical quer{'y' if c == 2 else 'ies'}" if c > 1 else "")
+                             for i, c in zip(firsts, counts)))
     return q, index
+
+
+def plain(p) -> Setup:
+    """The validated problem as plain numbers (setup.py): everything below this module reads only it."""
+    a = p.accuracy
+    return Setup(a=p.a, t1=p.t1, s1=p.s1, v1=p.v1, find=tuple(Query(**{n: getattr(q, n) for n in QUERY_FIELDS}) for q in p.find),
+                 t_max=p.t_max, m=p.m, springs=tuple(Spring(sp.k, sp.anchor, sp.L, sp.one_sided) for sp in p.springs),
+                 params=p.params, accuracy=Accuracy(a.rtol, a.atol, a.method, a.estimate, a.max_steps, a.max_cpu))
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
     """The type's own queries by its route; the queries of every motion (§11) and ``distance``
     by :mod:`.find` on that route's motion."""
+    return solve_setup(plain(p))
+
+
+def solve_setup(p: Setup) -> Result:
+    """:func:`solve` of a problem given in plain numbers (setup.py)."""
     from dyncli.topics.rectilinear import find
 
     if p.springs:                     # the springs' acceleration joins a (springs.py); the input stays as given
         from dyncli.topics.rectilinear.springs import with_springs
 
-        p = p.model_copy(update={"a": with_springs(p.a, p.springs, float(p.m))})
+        if p.m is None:               # (a Setup built by hand: the input model asks for m already)
+            raise InputError("springs need the body's mass m (their acceleration is the force over m): give m", "m")
+        p = replace(p, a=with_springs(p.a, p.springs, float(p.m)))
     legacy, generic = find.split(p)
     q, index = _distinct(p, legacy)
     res = _solve(q)
@@ -194,9 +211,7 @@ def _run(p, case, route: str, rtol: float, atol: float):
 
 def _solve_one(p, raw: dict) -> dict | None:
     """The answer of one of the type's own queries (``{"v": 0.0}``) by the problem's route."""
-    from dyncli.topics.rectilinear.model import Query
-
-    return _solve(p.model_copy(update={"find": [Query(**raw)]})).results["find"][0]
+    return _solve(replace(p, find=(Query(**raw),), labels=None)).results["find"][0]
 
 
 def sample(p, times) -> list[dict]:
@@ -206,9 +221,7 @@ def sample(p, times) -> list[dict]:
     cannot be reached (e.g. the motion blows up before it)."""
     import numpy as np
 
-    from dyncli.topics.rectilinear.model import Query
-
-    q = p.model_copy(update={"find": [Query(t=float(t)) for t in times]})
+    q = replace(p, find=tuple(Query(t=float(t)) for t in times), labels=None)
     case = case_of(q.a)
     route = _route(q, case)
     if route == "closed-form":
@@ -231,16 +244,15 @@ class Solved:
             from dyncli.topics.rectilinear import case3
 
             self.c = seed
-            self.ready = (not (seed.a_v1 == 0 or case3._at_rest_within_input(seed)) if case == 3
+            self.ready = (case3.moves(seed) if case == 3
                           else hasattr(seed, "fwd"))
 
-    def __call__(self, p, times) -> list[dict]:
+    def __call__(self, p, times) -> list[dict | None]:
         import numpy as np
 
-        from dyncli.topics.rectilinear.model import Query
         from dyncli.topics.rectilinear.work import Work
 
-        q = p.model_copy(update={"find": [Query(t=float(t)) for t in times]})
+        q = replace(p, find=tuple(Query(t=float(t)) for t in times), labels=None)
         ans = Answers(q, Result({"case": self.case, "find": []}))
         with np.errstate(all="ignore"):
             if self.c is None:
@@ -248,12 +260,12 @@ class Solved:
                 if self.case == 3:
                     from dyncli.topics.rectilinear import case3
 
-                    self.c = case3._Case3(q, ans, rtol, atol)
-                    self.ready = not (self.c.a_v1 == 0 or case3._at_rest_within_input(self.c))
+                    self.c = case3.motion(q, ans, rtol, atol)
+                    self.ready = case3.moves(self.c)
                 else:
                     from dyncli.topics.rectilinear import case4
 
-                    self.c = case4._Case4(q, ans, rtol, atol)
+                    self.c = case4.motion(q, ans, rtol, atol)
                     self.ready = self.c.setup()
             c = self.c
             c.p, c.ans, c.work = q, ans, Work(q, self.case)     # each call its own work budget

@@ -23,6 +23,7 @@ from pydantic import Field, model_validator
 from dyncli.expr import Expr
 from dyncli.fields import Num, StrictModel
 from dyncli.springs import one_sided_length
+from dyncli.topics.rectilinear.setup import Spring
 
 
 class LineSpring(StrictModel):
@@ -49,7 +50,7 @@ def _call(name: str, *args) -> tuple:
     return ("call", name, tuple(args))
 
 
-def term(sp: LineSpring, m: float) -> tuple[tuple, str]:
+def term(sp: Spring, m: float) -> tuple[tuple, str]:
     """The IR and the text of one spring's acceleration."""
     d = ("sub", ("var", "s"), _num(sp.anchor))
     km = _num(sp.k / m)
@@ -67,7 +68,7 @@ def term(sp: LineSpring, m: float) -> tuple[tuple, str]:
     return ("neg", ("mul", ("mul", km, ("sub", length, _num(sp.L))), sign)), f"-{kt}*(abs({dt}) - {sp.L:.17g})*sign({dt})"
 
 
-def with_springs(a: Expr, springs: list[LineSpring], m: float) -> Expr:
+def with_springs(a: Expr, springs: tuple[Spring, ...], m: float) -> Expr:
     """``a`` plus the springs' accelerations: one expression of t, s, v."""
     ir, text = a.ir, a.text
     for sp in springs:
