@@ -6,6 +6,11 @@
   every file of ``problems/`` (a wrapper around ``builtins.__import__`` records each import
   statement executed by a topic module, so a lazy import inside a function is caught too).
 
+* no function of a topic below its ``solver.py`` (and outside its input model, ``model.py``)
+  receives a pydantic object while every file of ``problems/`` is solved: the physics takes
+  plain numbers and the topics' own frozen dataclasses (issue #26, a core of plain numbers —
+  checked on the data, not only on the imports).
+
 Each check runs in a fresh interpreter, so what other tests imported does not matter.
 """
 
@@ -95,3 +100,47 @@ def test_topics_never_import_the_renderer():
     hits = _run(_TOPIC_PROBE)
     assert not hits, "a topic imports dyncli.render (move what it needs to a neutral module such as " \
                      f"dyncli.numfmt): {hits}"
+
+
+_DATA_PROBE = r"""
+import json, sys
+from pathlib import Path
+from pydantic import BaseModel
+from dyncli.loader import load_paths
+from dyncli.registry import solver
+from dyncli.result import SolveOptions
+hits = set()
+
+def prof(frame, event, arg):
+    if event != "call":
+        return
+    mod = frame.f_globals.get("__name__", "")
+    if not mod.startswith("dyncli.topics.") or mod.endswith((".solver", ".model")):
+        return
+    code = frame.f_code
+    for name in code.co_varnames[:code.co_argcount + code.co_kwonlyargcount]:
+        if isinstance(frame.f_locals.get(name), BaseModel):
+            hits.add(f"{mod}.{code.co_name}({name}: {type(frame.f_locals[name]).__name__})")
+
+problems, _ = load_paths([str(p) for p in sorted(Path("problems").rglob("*.yaml"))])
+for lp in problems:
+    sys.setprofile(prof)
+    try:
+        solver(lp.model.type)(lp.model, SolveOptions())
+    except Exception:   # an example that fails is another test's business
+        pass
+    finally:
+        sys.setprofile(None)
+print(json.dumps(sorted(hits)))
+"""
+
+
+def test_no_pydantic_object_below_the_solvers():
+    """A core of plain numbers, checked on the data (not only the imports): while every file of
+    ``problems/`` is solved, no function of a topic outside its ``solver.py`` (the adapter) and
+    ``model.py`` (the input model) receives a pydantic model as an argument — the solver hands the
+    physics plain floats, arrays and the topic's own frozen dataclasses, so a notebook can call it
+    with numbers."""
+    hits = _run(_DATA_PROBE)
+    assert not hits, "a function below a topic's solver.py receives the pydantic input model " \
+                     f"(hand it plain numbers or a frozen dataclass built in solver.py): {hits}"

@@ -259,7 +259,7 @@ def moves(c: _Case3) -> bool:
 
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case3(p, ans, rtol, atol)
-    ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)
+    ans.res.extra["solved"] = c         # the motion, for find's searches (solved.Solved)
     if c.a_v1 == 0 or _at_rest_within_input(c):
         c.equilibrium()
         return "quadrature"

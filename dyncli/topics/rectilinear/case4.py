@@ -318,7 +318,7 @@ def motion(p, ans, rtol: float, atol: float) -> _Case4:
 
 def solve(p, ans, rtol: float, atol: float) -> str:
     c = _Case4(p, ans, rtol, atol)
-    ans.res.extra["solved"] = c         # the motion, for find's searches (solver.Solved)
+    ans.res.extra["solved"] = c         # the motion, for find's searches (solved.Solved)
     if not c.setup():
         c.equilibrium()
         return "quadrature"

@@ -171,7 +171,7 @@ def _sampler(p, res, sample):
 
         return States(p, p.accuracy.rtol, p.accuracy.atol)
     if case in (3, 4) and quad:
-        from dyncli.topics.rectilinear.solver import Solved
+        from dyncli.topics.rectilinear.solved import Solved
 
         return Solved(case, res.extra.get("solved"))
     return sample

@@ -231,52 +231,6 @@ def sample(p, times) -> list[dict]:
     return ans.items
 
 
-class Solved:
-    """The motion of one problem solved once by its quadrature route (case 3: the branches of v,
-    case 4: the scans and legs, built at the first call and kept), its state at any times per
-    call: a search of ``find`` tries many times, each of which was a new solve (issue 29).  The
-    same states as :func:`sample` (the same model with ``{t: T}`` queries only)."""
-
-    def __init__(self, case: int, seed=None):
-        """``seed``: the case object of the problem's own run (its scans and legs reused)."""
-        self.case, self.c, self.ready = case, None, False
-        if seed is not None:
-            from dyncli.topics.rectilinear import case3
-
-            self.c = seed
-            self.ready = (case3.moves(seed) if case == 3
-                          else hasattr(seed, "fwd"))
-
-    def __call__(self, p, times) -> list[dict | None]:
-        import numpy as np
-
-        from dyncli.topics.rectilinear.work import Work
-
-        q = replace(p, find=tuple(Query(t=float(t)) for t in times), labels=None)
-        ans = Answers(q, Result({"case": self.case, "find": []}))
-        with np.errstate(all="ignore"):
-            if self.c is None:
-                rtol, atol = q.accuracy.rtol, q.accuracy.atol
-                if self.case == 3:
-                    from dyncli.topics.rectilinear import case3
-
-                    self.c = case3.motion(q, ans, rtol, atol)
-                    self.ready = case3.moves(self.c)
-                else:
-                    from dyncli.topics.rectilinear import case4
-
-                    self.c = case4.motion(q, ans, rtol, atol)
-                    self.ready = self.c.setup()
-            c = self.c
-            c.p, c.ans, c.work = q, ans, Work(q, self.case)     # each call its own work budget
-            if not self.ready:
-                c.equilibrium()
-            else:
-                for i, T in enumerate(times):
-                    ans.ask(i, c.t_query, float(T))
-        return ans.items
-
-
 def _difference(p, a: list, b: list) -> float:
     """ode.relative_difference over the answers reached in both runs: t (as the time elapsed
     since t1), s, v and a, each relative to its own scale (s, v, a: at least atol)."""

@@ -86,7 +86,7 @@ def test_a_negative_a_with_a_hidden_positive_pulse():
 
 
 def test_find_on_a_case4_motion_solved_once():
-    # issue 29: find's searches evaluate the case-4 motion solved once (solver.Solved), each try
+    # issue 29: find's searches evaluate the case-4 motion solved once (solved.Solved), each try
     # was a new solve (34 s of CPU for this problem, refused at the default budget); s = 0.1 cos 5t
     # + 0.2 sin 5t: the first maximum at atan(2)/5, s = 0.15 first at (asin(0.15/√0.05) − atan(1/2))/5
     rec = solve("-25*s", ["{max: s}", "{when: {s: 0.15}}", "{min: v}", "{t: 3}"], s1=0.1, v1=1)
