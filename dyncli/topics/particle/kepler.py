@@ -20,10 +20,14 @@ import math
 
 import numpy as np
 
+from dyncli.errors import NumericalError
+
 EPS = 2.220446049250313e-16
 #: |1 − e| below this is a parabola (Barker's equation): a few roundings of v0²r0/(2 mu)
 PARABOLIC = 16 * EPS
 _SERIES = 0.3       # below this |E|, E − sin E and sinh H − H by their series
+#: beyond this mean anomaly [rad] (1e15 revolutions) M mod 2π keeps no correct digit: no phase
+PHASE_LOST = 2 * math.pi * 1e15
 
 
 def e_minus_sin(E):
@@ -58,6 +62,9 @@ def kepler_E(M, e: float, one_minus_e: float | None = None):
     1.0
     """
     M = np.asarray(M, float)
+    if M.size and not float(np.max(np.abs(M))) < PHASE_LOST:
+        raise NumericalError(f"the orbit's phase is lost to rounding at a mean anomaly of {float(np.max(np.abs(M))):.3g} "
+                             "rad (more than 1e15 revolutions from its start): ask for earlier times")
     ome = 1.0 - e if one_minus_e is None else one_minus_e
     k = np.round(M / (2 * np.pi))
     m = M - 2 * np.pi * k

@@ -169,11 +169,21 @@ class Response:
     def w_rate(self, t: float) -> float:
         return self.at(t)[1] - self.s0 * self.Om * math.cos(self.Om * t)
 
-    def breaks(self, t_end: float) -> tuple[list[float], bool]:
-        """Every 1/PER_PERIOD of the shortest period over [0, t_end] (and whether capped)."""
+    def step(self) -> float:
+        """1/PER_PERIOD of the shortest period of the motion [s]."""
         _, _, lam2 = cf.roots(self.omega_n, self.zeta)
         rate = max(self.omega_n, lam2 if self.zeta >= 1 else 0.0, self.Om, self.fo[1] if self.fo else 0.0)
-        h = 2.0 * math.pi / rate / PER_PERIOD
+        return 2.0 * math.pi / rate / PER_PERIOD
+
+    def resolved_end(self, t_end: float) -> float:
+        """The end of the span whose turning points a grid of MAX_PIECES breaks resolves (t_end,
+        or MAX_PIECES eighths of the shortest period when the span is longer)."""
+        h = self.step()
+        return t_end if not h > 0 or t_end <= MAX_PIECES * h else MAX_PIECES * h
+
+    def breaks(self, t_end: float) -> tuple[list[float], bool]:
+        """Every 1/PER_PERIOD of the shortest period over [0, t_end] (and whether capped)."""
+        h = self.step()
         n = math.ceil(t_end / h) if h > 0 and t_end > 0 else 1
         capped = n > MAX_PIECES
         n = min(max(n, 1), MAX_PIECES)
@@ -188,13 +198,21 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     const = lambda text: constant(text, params)      # noqa: E731
     t_end = mf.search_end(max([p.t_end or 0.0] + list(p.at)), p.find, const)
     resp = Response(p, omega_n, zeta)
-    odo = _odometer(resp, t_end)
+    forced = not (resp.fo is None and resp.s0 == 0.0)
+    t_odo = resp.resolved_end(t_end) if forced else t_end
+    odo = _odometer(resp, t_odo)
+    if t_odo < t_end:           # a forced motion's turning points are found one by one: not that far
+        odo = _Odometer(lambda ts, many=odo.many: [None if t > t_odo else d
+                                                    for t, d in zip(ts, many([min(t, t_odo) for t in ts]))])
+        res.warn(f"distance is null after t = {t_odo:.6g} s: a forced motion's distance adds its turning "
+                 f"points one by one, and beyond {MAX_PIECES} eighths of a period ({t_end:.6g} s asked) "
+                 "they are not followed (ask for earlier times)")
     if p.at:
         res.results["distance"] = odo.many(list(p.at))
     if not p.find:
         return
     breaks, capped = resp.breaks(t_end)
-    exact = _exact_paths(list(p.find), resp)
+    exact = _exact_paths(list(p.find), resp) and not capped    # (a capped grid: far too many turning points)
     if exact and t_end > 0:         # every turning point of x and of v is a break: x, v monotone between
         tx, tv, capped = _turning_points(resp, breaks, t_end)
         breaks = sorted(set([0.0, t_end] + tx + tv))
