@@ -12,6 +12,20 @@ imported only when asked for.
 from __future__ import annotations
 
 import sys
+from dataclasses import dataclass
+
+@dataclass(frozen=True, slots=True)
+class Accuracy:
+    """A problem's ``accuracy`` controls as plain values (docs/accuracy.md), the one form the
+    topics' plain setups hand their routes: tolerances, method, check solve and work budgets."""
+
+    rtol: float = 1e-10
+    atol: float = 1e-12
+    method: str = "auto"
+    estimate: bool = False
+    max_steps: int | None = None
+    max_cpu: float | None = None
+
 
 #: scipy's integrators an ``accuracy.method`` may name
 METHODS = ("DOP853", "RK45", "Radau", "LSODA")

@@ -14,17 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Mapping
 
-
-@dataclass(frozen=True, slots=True)
-class Accuracy:
-    """The route's tolerances and budget (docs/accuracy.md)."""
-
-    rtol: float = 1e-10
-    atol: float = 1e-12
-    method: str = "auto"
-    estimate: bool = False
-    max_steps: int | None = None
-    max_cpu: float | None = None
+from dyncli.integrators import Accuracy      # the one form of the accuracy controls
 
 
 @dataclass(frozen=True, slots=True)

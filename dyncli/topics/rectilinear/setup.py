@@ -18,22 +18,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Mapping
 
+from dyncli.integrators import Accuracy      # the one form of the accuracy controls
+
 #: the kinds of query; the last three are answered by the queries of every motion (§11)
 KINDS = ("t", "v", "s", "when", "max", "min")
 #: the keys that go with a kind (when: direction, occurrence; max, min: within)
 QUALIFIERS = ("direction", "occurrence", "within")
-
-
-@dataclass(frozen=True, slots=True)
-class Accuracy:
-    """The route's tolerances and budget (docs/accuracy.md)."""
-
-    rtol: float = 1e-10
-    atol: float = 1e-12
-    method: str = "auto"
-    estimate: bool = False
-    max_steps: int | None = None
-    max_cpu: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

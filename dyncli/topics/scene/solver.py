@@ -10,12 +10,13 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from dyncli import ode
 from dyncli.errors import InputError
 from dyncli.expr import resolve_params
 from dyncli.expr.jet import jet_at
+from dyncli.integrators import Accuracy
 from dyncli.result import Result, SolveOptions
 
 from . import build, outcome, prepare, report, routes
@@ -70,15 +71,6 @@ def _search_end(t_end: float, find, params) -> float:
             except (InputError, ValueError, TypeError):     # reported by dyncli.queries with its field path
                 pass
     return t_end
-
-
-@dataclass(frozen=True)
-class Accuracy:
-    rtol: float
-    atol: float
-    method: str
-    estimate: bool
-    max_steps: int | None
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
