@@ -235,14 +235,7 @@ class CurveContact(Contact):
         m = self.surface.ends_margin(self.foot.at(self.P.pos(q))[0])
         if self.mode == "off":                              # in flight: it strikes the curve again
             return [("impact", self.gap(q) if m is None or m >= 0 else abs(self.gap(q)) - m)]
-        out = [("separates", float(lam[0]))]
-        if m is not None:
-            out.append(("leaves", m))
-        if self.mode == "slide":
-            out.append(("sticks", self.sign * self.slip_speed(q, v)))
-        elif self.mode == "stick":
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
-        return out
+        return self.touching_watches(lam, q, v, m)
 
 
 @dataclass(kw_only=True)
