@@ -42,18 +42,6 @@ class Query(StrictModel):
                              + f", not with {given[0]}")
         return self
 
-    @property
-    def kind(self) -> str:
-        return next(k for k in KINDS if getattr(self, k) is not None)
-
-    @property
-    def target(self):
-        return getattr(self, self.kind)
-
-    def raw(self) -> dict:
-        """The query as written, for dyncli.queries."""
-        return {k: getattr(self, k) for k in KINDS + ("direction", "occurrence", "within") if getattr(self, k) is not None}
-
 
 class Rectilinear(ProblemBase):
     """Straight-line motion with a = a(t, s, v) (notes §6)."""

@@ -249,6 +249,12 @@ class Rolls(Element):
         m = self.surface.ends_margin(self._x(q))
         if self.mode == "off":
             return [("impact", _gap_watch(self.gap(q), m))]
+        return self.touching_watches(lam, q, v, m)
+
+    def touching_watches(self, lam, q, v, m):
+        """The events watched while the body rolls or slips on the surface (a line or a curve): N
+        turning to pull, the surface's end (margin ``m``, None for none), slip that stops or rolling
+        that would need more than μ_s N."""
         out = [("separates", float(lam[0]))]
         if m is not None:
             out.append(("leaves", m))

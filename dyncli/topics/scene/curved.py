@@ -364,14 +364,7 @@ class CurveRolls(Rolls):
         m = self.surface.ends_margin(self.foot.at(self._centre(q))[0])
         if self.mode == "off":                              # in flight: it lands on the curve again
             return [("impact", self.gap(q) if m is None or m >= 0 else abs(self.gap(q)) - m)]
-        out = [("separates", float(lam[0]))]
-        if m is not None:
-            out.append(("leaves", m))
-        if self.mode == "slip":
-            out.append(("sticks", self.sign * self.slip_speed(q, v)))
-        elif self.mu_s is not None:
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
-        return out
+        return self.touching_watches(lam, q, v, m)
 
 
 def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q) -> CurveContact:
