@@ -272,7 +272,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     at the cell's ends and at those points decide every root, refined by Brent (``roots``: sign
     changes).  A critical point where f is within its rounding of 0 without a sign change is a
     double root (``touches``) unless halving the cell around it decides its sign.  ``bad``: cells
-    where f is not finite or not resolved (midpoints), or beyond ``budget`` cells; ``limit``:
+    where f is not finite or not resolved (midpoints; also a cell halved ``max_depth`` times and
+    still not resolved, wider than the rounding of x), or beyond ``budget`` cells; ``limit``:
     stop once more than that many roots are found.  (One loop over a stack of cells, a little over
     60 lines: its steps share the cell's state and read best in one place.)"""
     import numpy as np
@@ -299,9 +300,13 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
         c = V.T @ y / (deg + 1)
         c[1:] *= 2
         noise = 16 * eps * float(np.max(np.abs(y)))
-        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor) and split:
-            stack += [(m, v, depth + 1), (u, m, depth + 1)]
-            continue
+        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor):
+            if split:
+                stack += [(m, v, depth + 1), (u, m, depth + 1)]
+                continue
+            if h > tiny:                        # halved max_depth times and still not resolved: not decided
+                bad.append(m)
+                continue
         if (r := _critical(c, deg)) is None:    # (a huge f: its derivative's companion matrix overflows)
             bad.append(m)
             continue

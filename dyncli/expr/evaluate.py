@@ -73,6 +73,15 @@ def compile_ir(ir: tuple) -> Callable[[Mapping[str, Any]], Any]:
             return lambda env: a(env) * b(env)
         if kind == "div":
             return lambda env: np.true_divide(a(env), b(env))
+        if ir[2][0] in ("num", "param"):
+            # a constant exponent: numpy ≥ 2 takes x*x for 2 and the square root for 0.5 inside
+            # power; older numpy took C's pow (7× slower on arrays, and pow(−inf, 0.5) = +inf) —
+            # the same fast paths here make every numpy version give numpy 2's values
+            c = float(ir[2][-1])
+            if c == 2.0:
+                return lambda env: np.square(np.float64(1.0) * a(env))
+            if c == 0.5:
+                return lambda env: np.sqrt(np.float64(1.0) * a(env))
         return lambda env: np.power(np.float64(1.0) * a(env), b(env))
     if kind == "call":
         f = _funcs()[ir[1]]

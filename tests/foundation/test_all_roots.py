@@ -46,3 +46,17 @@ def test_non_finite_values_are_reported_not_guessed():
     with np.errstate(invalid="ignore"):
         roots, touches, bad = all_roots(lambda x: np.sqrt(x - 0.5) - 1.0, 0.0, 2.0)
     assert roots == pytest.approx([1.5], abs=4 * EPS) and bad and max(bad) < 0.5
+
+
+def test_a_cell_not_resolved_within_the_depth_limit_is_bad_not_guessed():
+    # sin(2π x) over [0, 1e30]: a cell 2^-48 of its starting width is still ~1e14 periods wide, so
+    # nothing is decided there; before, such a cell was read as resolved and gave roots of noise
+    roots, touches, bad = all_roots(lambda x: np.sin(2 * math.pi * x), 0.0, 1e30, cells=2, max_depth=8)
+    assert bad and not roots
+
+
+def test_limit_gives_the_first_roots_in_order():
+    # the cells are worked through from the left: stopping early keeps a sorted prefix of the roots
+    roots, _, bad = all_roots(lambda x: np.sin(x), 0.5, 1000.0, limit=3)
+    assert not bad and len(roots) >= 4
+    assert roots[:4] == pytest.approx([math.pi * k for k in (1, 2, 3, 4)], rel=4 * EPS)

@@ -144,8 +144,15 @@ class Contact(Element):
         if self.mode == "slide":
             out.append(("sticks", self.sign * self.slip_speed(q, v)))
         elif self.mode == "stick":
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+            out += _slip_watches(self.mu_s * float(lam[0]), float(lam[1]))
         return out
+
+
+def _slip_watches(muN: float, F: float) -> list[tuple[str, float]]:
+    """Sticking holds while |F| ≤ μ_s N: watched as the two smooth margins μ_s N ∓ F (their
+    minimum is μ_s N − |F|, whose kink where F changes sign would cost a root search that
+    assumes smoothness its finest cells)."""
+    return [("slips", muN - F), ("slips", muN + F)]
 
 
 @dataclass(kw_only=True)
@@ -261,5 +268,5 @@ class Rolls(Element):
         if self.mode == "slip":
             out.append(("sticks", self.sign * self.slip_speed(q, v)))
         elif self.mu_s is not None:
-            out.append(("slips", self.mu_s * float(lam[0]) - abs(float(lam[1]))))
+            out += _slip_watches(self.mu_s * float(lam[0]), float(lam[1]))
         return out

@@ -313,37 +313,72 @@ def _held_event(s, p, w):
     """The first event of a phase held at rest under loads that change in time, decided
     exactly: each watched force (N, μ_s N − |F|, T) is a smooth function of t there, and its
     roots are every sign change found by the sign analysis of dyncli.rootfind.all_roots
-    (Chebyshev cells halved until resolved, not a grid).  Returns (t, joint, what) or None."""
-    from dyncli.rootfind import all_roots
+    (Chebyshev cells halved until resolved, not a grid).  all_roots works through its cells from
+    the left, so it is asked for the first few roots only and resumed after them while none is
+    the event: a periodic load over a long span costs its first period, not its whole span; and
+    the span is searched in windows from 64 s, each 16 times wider (all_roots resolves a cell to
+    2^-48 of its width: a period of 1 s is not lost in a window of 1e300 s).  The
+    solve's CPU budget bounds the search (a span of 1e300 s of a periodic load is refused, not
+    followed).  Returns (t, joint, what) or None."""
+    from dyncli import cputime
 
     cache: dict[float, list] = {}
 
     def at(t):
         got = cache.get(t)
         if got is None:
+            spent = cputime.used()
+            if spent is not None and spent[0] > spent[1]:
+                raise NumericalError(
+                    f"the forces of the joints held at rest were followed to t = {t:.6g} s only within the CPU "
+                    f"budget of {spent[1]:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise "
+                    "accuracy.max_cpu")
             got = cache[t] = w(t)
         return got
 
-    first = at(p.t_a)
-    best = None
-    for j, (joint, what, g0) in enumerate(first):
-        if what == "switch":
-            continue
-        def f(ts, j=j):
-            return np.array([at(float(t))[j][2] for t in np.atleast_1d(ts)])
+    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(at(p.t_a)) if what != "switch"]
+    lo, width = p.t_a, _FIRST_WINDOW
+    while lo < p.t_b:                           # window by window, every watched force in each
+        hi = min(p.t_b, lo + width)
+        best = None
+        for j, joint, what in watched:
+            got = _first_down(lambda ts, j=j: np.array([at(float(t))[j][2] for t in np.atleast_1d(ts)]),
+                              lo, hi if best is None else best[0])
+            if got is not None:
+                best = (got, joint, what)
+        if best is not None:
+            return best
+        lo, width = hi, 16 * width
+    return None
 
-        roots, touches, bad = all_roots(f, p.t_a, p.t_b)
-        if bad:
-            raise NumericalError(f"the forces of {joint!r} held at rest could not be resolved near t = {bad[0]:.6g} s")
-        prev = p.t_a
-        for r in sorted(roots):             # the first sign change downwards (from g > 0 before it)
-            if best is not None and r >= best[0]:
-                break
-            if r > p.t_a and at(0.5 * (prev + r))[j][2] > 0:
-                best = (r, joint, what)
+
+def _first_down(f, a: float, b: float) -> float | None:
+    """The first root in (a, b] where ``f`` (on arrays; f > 0 at a) turns negative, or None;
+    all_roots asked for a few roots at a time, resumed after them while none is that root."""
+    from dyncli.rootfind import all_roots
+
+    lo = prev = a
+    while True:
+        roots, touches, bad = all_roots(f, lo, b, cells=16, limit=_FIRST_ROOTS)
+        best = None
+        for r in sorted(r for r in roots if r > lo):
+            if float(f(np.array([0.5 * (prev + r)]))[0]) > 0:
+                best = r
                 break
             prev = r
-    return best
+        if bad and (best is None or bad[0] < best):
+            raise NumericalError(f"the forces of the joints held at rest could not be resolved near t = {bad[0]:.6g} s")
+        done = max(roots + touches, default=lo)
+        if best is not None or len(roots) + len(touches) <= _FIRST_ROOTS or done <= lo:
+            return best
+        lo = done
+
+
+#: how many roots of a held force one call of all_roots finds before the event is looked for
+_FIRST_ROOTS = 8
+#: the first window (s) of that search, each next one 16 times wider: all_roots resolves a cell to
+#: 2^-48 of its starting width, so a load's period must not be lost in a window of 1e300 s
+_FIRST_WINDOW = 64.0
 
 
 def _gap_times(s, p) -> list[float]:
