@@ -381,11 +381,6 @@ def root(f: Callable[[float], float], xa: float, xb: float, xtol: float = 1e-300
     return brent(f, xa, xb, xtol, rtol, maxiter)
 
 
-#: the old private name, which dyncli/topics/rectilinear/find.py and vibration/find.py still use
-#: (allow-listed in tests/test_code_shape.py): goes when they call root
-_root = root
-
-
 def _peak(h, hr, a: float, b: float) -> tuple[float, float]:
     """The largest value of h inside [a, b] and its time: the root of its rate hr (Brent) when
     hr is given and turns from positive to not positive over [a, b], else Brent's minimiser."""

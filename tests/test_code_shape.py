@@ -57,15 +57,6 @@ PRIVATE_IMPORTS_ALLOWED = {
     ("dyncli/topics/rectilinear/case4_scan.py", "dyncli.topics.rectilinear.case4_legs", "_BIG"),
     ("dyncli/topics/rectilinear/case4_scan.py", "dyncli.topics.rectilinear.case4_legs", "_EPS"),
     ("dyncli/topics/rectilinear/case4_sens.py", "dyncli.topics.rectilinear.case4_legs", "_EPS"),
-    # rectilinear's Coulomb friction compiles an expression's IR (public now: compile_ir)
-    ("dyncli/topics/rectilinear/coulomb.py", "dyncli.expr.evaluate", "_compile"),
-    # the queries' Brent (public now: dyncli.queries.root)
-    ("dyncli/topics/rectilinear/find.py", "dyncli.queries", "_root"),
-    ("dyncli/topics/vibration/find.py", "dyncli.queries", "_root"),
-    # scene's routes read motion's crossing test
-    ("dyncli/topics/scene/routes.py", "dyncli.topics.scene.motion", "_crossed"),
-    # vibration's plots recompute the solver's free amplitude and phase
-    ("dyncli/topics/vibration/plots.py", "dyncli.topics.vibration.solver", "_free_amplitude_phase"),
 }
 
 #: (file of the class, class, file of its split-off base, base) found when the rule came; may only shrink.

@@ -119,11 +119,6 @@ def fold(ir: tuple, src: str = "") -> float:
     return float(v)
 
 
-#: the old private name, which dyncli/topics/rectilinear/coulomb.py still imports (allow-listed in
-#: tests/test_code_shape.py): goes when that import reads compile_ir
-_compile = compile_ir
-
-
 def _fold_arith(k: str, a, b, src: str):
     if k == "add":
         return a + b

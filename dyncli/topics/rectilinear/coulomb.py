@@ -29,10 +29,10 @@ def _uses(ir: tuple, name: str) -> bool:
 
 def _zero_at_rest(ir: tuple) -> bool:
     """Whether a sign() argument in v alone vanishes at v = 0 (sign(v), sign(-2*v), sign(v*abs(v)))."""
-    from dyncli.expr.evaluate import _compile
+    from dyncli.expr.evaluate import compile_ir
 
     try:
-        return _compile(ir)({"v": 0.0}) == 0.0
+        return compile_ir(ir)({"v": 0.0}) == 0.0
     except (ArithmeticError, ValueError, KeyError):
         return False
 

@@ -153,7 +153,9 @@ def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     return out
 
 
-def _crossed(g0: float, g1: float, what: str) -> bool:
+def crossed(g0: float, g1: float, what: str) -> bool:
+    """Whether a watched quantity went from g0 to g1 across its event (downwards through 0; a
+    one-sided spring's stretch, "switch", either way)."""
     if what == "switch":
         return (g0 > 0) != (g1 > 0) and g0 != 0
     # a force at 0 is where the last phase ended (not a new crossing); a gap or a slip speed at 0
@@ -236,7 +238,7 @@ class OdeRoute:
         best = None
         s, n = self.system, self.n
         for k, ((joint, what, g0), (_, _, g1)) in enumerate(zip(w_old, w_new)):
-            if k in skip or not _crossed(g0, g1, what):
+            if k in skip or not crossed(g0, g1, what):
                 continue
 
             def g(t, k=k):

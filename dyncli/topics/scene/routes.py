@@ -294,7 +294,7 @@ def _first_event(s, traj, k0: int, t_end: float):
             cur = w(t1)
             best = None
             for j, ((joint, what, g0), (_, _, g1)) in enumerate(zip(prev, cur)):
-                if what == "switch" or not motion._crossed(g0, g1, what):
+                if what == "switch" or not motion.crossed(g0, g1, what):
                     continue
                 tc = t1 if g1 == 0 else brent(lambda t, j=j: w(t)[j][2], t0, t1, 4 * EPS * t1, 4 * EPS, 200)
                 if best is None or tc < best[0]:

@@ -382,3 +382,38 @@ def peak_g(zeta: float):
     r = math.sqrt(2.0 / (1.0 + math.sqrt(1.0 + 8.0 * zeta * zeta)))
     _, _, g, _ = amplification_at(r, zeta)
     return r, g
+
+
+def angle(y: float, x: float) -> float:
+    """atan2 in (−π, π]: a −0.0 ordinate counts as +0.0 (the negative real
+    axis gives +π); values just above −π are kept."""
+    return math.atan2(y + 0.0, x) + 0.0
+
+
+def amplitude_phase(w0: float, wd0: float, omega_n: float, zeta: float, omega_d: float,
+                    regime: str) -> tuple[float | None, float | None, str | None]:
+    """(A, φ, why) of the free motion's amplitude–phase form (17.10)-(17.12), (17.22c-e),
+    (17.24c-e) from w(0) = w0, ẇ(0) = wd0: A or φ None where the form does not exist, ``why``
+    the warning that says so (None when both exist)."""
+    b = wd0 + zeta * omega_n * w0          # ξ'(0) of (17.21d)
+    if regime == "critical":
+        return None, None, "A and phi are null: the critically damped motion (17.23) has no amplitude–phase form"
+    if regime in ("undamped", "underdamped"):
+        q = b / omega_d
+        A = math.hypot(w0, q)
+        if A == 0.0:
+            return 0.0, None, "phi is null: the mass starts at rest in equilibrium (A = 0), so the phase is undefined"
+        return A, angle(w0, q), None
+    # overdamped: w = A e^{-ζωt} sinh(ω*t + φ) needs cosh φ = b/(Aω*) ≥ 1
+    q = b / omega_d
+    if math.isfinite(q) and abs(q) > abs(w0):
+        A = math.sqrt((abs(q) - abs(w0)) * (abs(q) + abs(w0)))
+        phi = math.atanh(w0 / q)
+        if q > 0:
+            return A, phi, None
+        return None, None, ("A and phi are null: the overdamped amplitude–phase form (17.24) needs "
+                            "v0 + ζωₙw0 > ω*|w0| (here v0 + ζωₙw0 < −ω*|w0|); the motion is "
+                            f"w = −{A:.6g} e^(−ζωₙt) sinh(ω*t {'−' if phi < 0 else '+'} {abs(phi):.6g})")
+    return None, None, ("A and phi are null: the overdamped amplitude–phase form (17.24) exists only when "
+                        "|v0 + ζωₙw0| > ω*|w0| (here it is not; the motion is "
+                        "w0 e^(−ζωₙt)cosh(ω*t) + ... , computed exactly)")

@@ -358,9 +358,9 @@ def _free_odometer(resp: Response):
         if t not in cache:
             turn = []
             if t > 0 and v(0.0) * v(t) < 0:
-                from dyncli.queries import _root
+                from dyncli.queries import root
 
-                turn = [_root(v, 0.0, t)]
+                turn = [root(v, 0.0, t)]
             cache[t] = turn
         knots = [0.0] + cache[t] + [t]
         return sum(abs(w(b) - w(a)) for a, b in zip(knots, knots[1:])) + 0.0

@@ -173,15 +173,14 @@ def _transient_amplitude(p, R, x0):
     (ζ ≥ 1)."""
     if R["regime"] not in ("undamped", "underdamped"):
         return None
-    from dyncli.result import Result
-    from dyncli.topics.vibration.solver import _free_amplitude_phase
+    from dyncli.topics.vibration.closed_form import amplitude_phase
 
     s0, Om = p.base.amplitude, p.base.omega
     G, phi = R["G"], R["phi"]
     wp0, wpd0 = G * s0 * math.sin(phi), G * s0 * Om * math.cos(phi)      # (17.28) at t = 0
     wh0 = x0 - p.L - wp0
     whd0 = p.v0 - s0 * Om - wpd0                                          # ẇ(0) = v0 − ṡ(0)
-    A, _ = _free_amplitude_phase(wh0, whd0, R["omega_n"], R["zeta"], R["omega_d"], R["regime"], Result({}))
+    A, _, _ = amplitude_phase(wh0, whd0, R["omega_n"], R["zeta"], R["omega_d"], R["regime"])
     return A
 
 

@@ -31,12 +31,6 @@ def _f(x) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def _angle(y: float, x: float) -> float:
-    """atan2 in (−π, π]: a −0.0 ordinate counts as +0.0 (the negative real
-    axis gives +π); values just above −π are kept."""
-    return math.atan2(y + 0.0, x) + 0.0
-
-
 def forcing(p) -> tuple[float, float] | None:
     """(F0, ω) of the model's ``force`` or rotating ``unbalance`` (:func:`forced.forcing`)."""
     u = getattr(p, "unbalance", None)
@@ -77,7 +71,9 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         if p.unbalance is not None:
             R["F0"] = fo[0]
     elif p.base is None:
-        A, phi = _free_amplitude_phase(x0 - L, v0, omega_n, zeta, omega_d, regime, res)
+        A, phi, why = cf.amplitude_phase(x0 - L, v0, omega_n, zeta, omega_d, regime)
+        if why is not None:
+            res.warn(why)
         R.update(A=A, phi=phi)
         if phi is not None and regime in ("undamped", "underdamped"):
             res.notes.append(PHASE_NOTE)
@@ -146,37 +142,6 @@ def damping(p, omega_n):
 
 #: the free phase's range, stated in the table (docs/types/vibration.md, "Phase convention")
 PHASE_NOTE = "φ in (−π, π]; the notes' φ in [0, 2π) is φ + 2π when φ < 0"
-
-
-def _free_amplitude_phase(w0, wd0, omega_n, zeta, omega_d, regime, res):
-    """A, φ of (17.10)-(17.12), (17.22c-e), (17.24c-e); None where the form
-    does not exist (warned)."""
-    b = wd0 + zeta * omega_n * w0          # ξ'(0) of (17.21d)
-    if regime == "critical":
-        res.warn("A and phi are null: the critically damped motion (17.23) has no amplitude–phase form")
-        return None, None
-    if regime in ("undamped", "underdamped"):
-        q = b / omega_d
-        A = math.hypot(w0, q)
-        if A == 0.0:
-            res.warn("phi is null: the mass starts at rest in equilibrium (A = 0), so the phase is undefined")
-            return 0.0, None
-        return A, _angle(w0, q)
-    # overdamped: w = A e^{-ζωt} sinh(ω*t + φ) needs cosh φ = b/(Aω*) ≥ 1
-    q = b / omega_d
-    if math.isfinite(q) and abs(q) > abs(w0):
-        A = math.sqrt((abs(q) - abs(w0)) * (abs(q) + abs(w0)))
-        phi = math.atanh(w0 / q)
-        if q > 0:
-            return A, phi
-        res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) needs "
-                 "v0 + ζωₙw0 > ω*|w0| (here v0 + ζωₙw0 < −ω*|w0|); the motion is "
-                 f"w = −{A:.6g} e^(−ζωₙt) sinh(ω*t {'−' if phi < 0 else '+'} {abs(phi):.6g})")
-        return None, None
-    res.warn("A and phi are null: the overdamped amplitude–phase form (17.24) exists only when "
-             "|v0 + ζωₙw0| > ω*|w0| (here it is not; the motion is "
-             "w0 e^(−ζωₙt)cosh(ω*t) + ... , computed exactly)")
-    return None, None
 
 
 def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
