@@ -239,6 +239,13 @@ def newton_in_brackets(FD, a, b, fa, fb, maxit: int = 100):
     return root
 
 
+def root(f, xa: float, xb: float, xtol: float = 1e-300, rtol: float = 4 * sys.float_info.epsilon,
+         maxiter: int = 2000) -> float:
+    """The root of ``f`` bracketed by [xa, xb] to full double accuracy (4 ε relative in x): the
+    project's one Brent (:func:`brent`) with the tolerances every ``find`` query uses."""
+    return brent(f, xa, xb, xtol, rtol, maxiter)
+
+
 def minimize_bounded(f, lo: float, hi: float, xatol: float):
     """The minimum of ``f`` on [lo, hi] by Brent's bounded method (scipy's
     ``minimize_scalar(method="bounded")``, imported here only, lazily): (x, f(x))."""

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from dyncli import motion_find as mf
-from dyncli import queries as _q
+from dyncli import rootfind
 from dyncli.errors import InputError, NumericalError
 from dyncli.expr import constant, resolve_params
 
@@ -106,7 +106,7 @@ def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[lis
         pts = [lo] + knots + [hi]
         V = [st["v"] for st in motion.batch(pts)]
         v = lambda t: motion.state(t)["v"]         # noqa: E731
-        turns = [_q.root(v, a, b) for a, b, va, vb in zip(pts, pts[1:], V, V[1:]) if va * vb < 0]
+        turns = [rootfind.root(v, a, b) for a, b, va, vb in zip(pts, pts[1:], V, V[1:]) if va * vb < 0]
         return sorted(turns + [a for a, va in zip(pts[1:-1], V[1:-1]) if va == 0]), knots
     grid = _uniform(lo, hi)
     sm = mf.StateMotion(motion.state, lo, hi, grid, batch=motion.batch)
