@@ -33,15 +33,12 @@ import numpy as np
 
 from dyncli import ode
 from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear.constants import fmt
 
 
 #: default accuracy.max_steps of one run of this route: ~65 us a step (DOP853, 12
 #: evaluations of the expression), so a solve stays near 0.7 s (its check solve has its own)
 DEFAULT_MAX_STEPS = 10_000
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
 
 
 class _Run:
@@ -138,7 +135,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
 def _stopped(ans, queries, failed, t_end: float) -> None:
     tf, msg = failed if failed else (t_end, "not reached")
     for i, _ in queries:
-        ans.unreached(i, f"the integration stopped at t = {_fmt(tf)} ({msg}); the solution probably blows up")
+        ans.unreached(i, f"the integration stopped at t = {fmt(tf)} ({msg}); the solution probably blows up")
 
 
 def _times(r, queries: list, direction: int, ans) -> None:
@@ -183,13 +180,13 @@ class _Forward:
         self.t_reached = p.t1
         failed = r.march(p.t1, [p.s1, p.v1], t_end, self.visit)
         _stopped(ans, self.todo, failed, self.t_reached)
-        why = (f"the integration stopped at t = {_fmt(failed[0])} ({failed[1]})" if failed
-               else f"search horizon t1 + t_max = {_fmt(self.horizon)}")
+        why = (f"the integration stopped at t = {fmt(failed[0])} ({failed[1]})" if failed
+               else f"search horizon t1 + t_max = {fmt(self.horizon)}")
         (smin, vmin), (smax, vmax) = self.lo, self.hi
         for i in self.vq:
-            ans.unreached(i, f"v stays within [{_fmt(vmin)}, {_fmt(vmax)}] for t >= t1 ({why})")
+            ans.unreached(i, f"v stays within [{fmt(vmin)}, {fmt(vmax)}] for t >= t1 ({why})")
         for i in self.sq:
-            ans.unreached(i, f"s stays within [{_fmt(smin)}, {_fmt(smax)}] for t >= t1 ({why})")
+            ans.unreached(i, f"s stays within [{fmt(smin)}, {fmt(smax)}] for t >= t1 ({why})")
 
     def visit(self, step) -> bool:
         todo, ans = self.todo, self.ans
