@@ -258,34 +258,52 @@ def _event(g, ta: float, tb: float, ga: float, gb: float):
 
 
 class Dense:
-    """The motion from t1 to t_end (or to where the integration fails: ``end``) as every accepted
-    step's interpolant: the queries of every motion (:mod:`.find`) search it without integrating
-    again; ``breaks`` are the steps' ends."""
+    """The motion from t_start (<= t1) to t_end (or to where an integration fails: ``start``,
+    ``end``) as every accepted step's interpolant, integrated from t1 each way: the queries of
+    every motion (:mod:`.find`) search it without integrating again.  ``breaks``: the steps' ends
+    (ascending); ``extremes``: the breaks with every critical point of s and of v inside each
+    step added — the interpolant of a step is a polynomial, whose extremes are decided exactly
+    (:func:`dyncli.rootfind.polynomial_extremes`), so s and v are monotone between two of them:
+    a target is crossed there exactly when it lies between the values at their ends, and no
+    excursion, however narrow, lies between two of them unseen."""
 
-    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float):
+    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float, t_start: float | None = None):
         import bisect
+
+        from dyncli.rootfind import polynomial_extremes
 
         self._bisect = bisect.bisect_left
         self.p, self.run = p, _Run(p, method, rtol, atol)
-        self.breaks, self.steps = [float(p.t1)], list[Any]()
+        t1 = float(p.t1)
+        sides = []                                  # (step ends from t1 outward, interpolants, where it ends)
+        for goal in (t_end, t1 if t_start is None else t_start):
+            ends, steps = [t1], list[Any]()
 
-        def visit(step):
-            step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
-            self.breaks.append(float(step.tb))
-            self.steps.append(step._dense)
-            return False
+            def visit(step, ends=ends, steps=steps):
+                step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
+                ends.append(float(step.tb))
+                steps.append(step._dense)
+                return False
 
-        failed = self.run.march(p.t1, [p.s1, p.v1], t_end, visit) if t_end > p.t1 else None
-        self.end = float(failed[0]) if failed else float(t_end)
-        if failed and self.breaks[-1] > self.end:
-            self.end = self.breaks[-1]
+            failed = self.run.march(t1, [p.s1, p.v1], goal, visit) if goal != t1 else None
+            reach = float(failed[0]) if failed else float(goal)
+            if failed and (ends[-1] - reach) * (goal - t1) > 0:
+                reach = ends[-1]
+            sides.append((ends, steps, reach))
+        (fe, fs, self.end), (be, bs, self.start) = sides
+        # ascending: the backward steps reversed, then the forward ones
+        self.breaks = be[:0:-1] + fe
+        self.steps = bs[::-1] + fs
+        self.extremes = sorted(set(self.breaks).union(
+            x for k, d in enumerate(self.steps) for comp in polynomial_extremes(d, self.breaks[k], self.breaks[k + 1])
+            for x in comp))
 
     def __call__(self, p, times) -> list[dict]:
         out: list[dict[str, Any]] = []
         for t in (float(x) for x in times):
             if t == self.p.t1 or not self.steps:
                 s, v = self.p.s1, self.p.v1
-            elif t > self.breaks[-1]:
+            elif t > self.breaks[-1] or t < self.breaks[0]:
                 out.append({"reached": False})
                 continue
             else:
