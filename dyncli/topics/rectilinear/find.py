@@ -5,7 +5,10 @@ events).  ``when``, ``max``, ``min`` — and a ``{v: V}`` or ``{s: S}`` equal to
 which counts only when the motion reaches it again (from rest, ``{v: 0}`` is the next turning
 point, not the release) — are answered by :mod:`dyncli.motion_find` on the motion the route
 gives at any time (one batched run per search: :func:`solver.sample`), with the exact rates
-(v of s, a of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
+(v of s, a of v) so that turning points are roots of v (Brent).  Where s and v are monotone is
+decided exactly, never by a grid: the closed form's and the quadratures' own pieces
+(:func:`turning_points`), and in the general case the ODE's steps both ways from t1, each cut at
+the extremes of s and v inside its interpolant (:class:`.general.Dense`).  ``distance`` (∫|v| dt
 since t1) is Σ|Δs| between the turning points.
 """
 

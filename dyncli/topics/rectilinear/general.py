@@ -294,9 +294,8 @@ class Dense:
         # ascending: the backward steps reversed, then the forward ones
         self.breaks = be[:0:-1] + fe
         self.steps = bs[::-1] + fs
-        self.extremes = sorted(set(self.breaks).union(
-            x for k, d in enumerate(self.steps) for comp in polynomial_extremes(d, self.breaks[k], self.breaks[k + 1])
-            for x in comp))
+        cuts = polynomial_extremes((d, self.breaks[k], self.breaks[k + 1]) for k, d in enumerate(self.steps))
+        self.extremes = sorted(set(self.breaks).union(x for piece in cuts for comp in piece for x in comp))
 
     def __call__(self, p, times) -> list[dict]:
         out: list[dict[str, Any]] = []
