@@ -204,6 +204,26 @@ find:
     assert entry(r, 4)["distance"] == pytest.approx(float(length(ref.y, turns, 0, 6)), rel=TOL)
 
 
+
+def test_general_distance_backward_in_time_with_a_search():
+    """A search of ``find`` and an answer before t1 in the general case: the motion before t1 is
+    integrated backward (it was the first forward step's interpolant extrapolated: the distance
+    to t = −3 read 0.395 where the body travels 2.766, with exit 0)."""
+    r, _ = solve("""
+type: rectilinear
+a: "-4*s - 0.4*v"
+s1: 0.5
+accuracy: {rtol: 1e-10}
+find:
+  - {when: {s: 0}}
+  - {t: -3}
+""")
+    ref = Vib(1, 4, 0.1, "0.5", 0)                   # s'' + 0.4 s' + 4 s = 0, backward too
+    assert entry(r, 0)["t"] == pytest.approx(float(crossings(ref.y, 0, 2)[0]), rel=TOL)
+    e = entry(r, 1)
+    assert e["s"] == pytest.approx(float(ref.y(-3)), rel=TOL)
+    assert e["distance"] == pytest.approx(float(length(ref.y, crossings(ref.v, -3, "-1e-9"), -3, 0)), rel=TOL)
+
 def test_invalid_generic_query_names_the_users_index():
     msg = error_of("type: rectilinear\na: -1\nfind:\n  - {t: 1}\n  - {v: -1}\n  - {when: {xx: 1}}\n")
     assert " find.2.when:" in msg and "'xx'" in msg, msg
