@@ -7,6 +7,7 @@ root finders directly (``tests/test_one_runner.py``)."""
 
 from __future__ import annotations
 
+import functools
 import math
 import struct
 import sys
@@ -331,6 +332,20 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     return sorted(set(roots)), sorted(touches), bad
 
 
+@functools.lru_cache(maxsize=8)
+def _derivative_series(deg: int):
+    """(the deg + 1 Chebyshev points of the first kind, the matrix taking a polynomial's values
+    there to the Chebyshev coefficients of its derivative): interpolation and differentiation
+    in one product."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    x = C.chebpts1(deg + 1)
+    to_series = C.chebvander(x, deg) / (deg + 1)
+    to_series[:, 1:] *= 2
+    return x, to_series @ C.chebder(np.eye(deg + 1), axis=0).T
+
+
 def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     """The critical points of polynomial curves, decided exactly, never by samples: for each
     piece ``(f, a, b)`` of ``pieces`` (an ODE step's dense output on its step: ``f`` on an array
@@ -351,18 +366,16 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     pieces = list(pieces)
     if not pieces:
         return []
-    x = C.chebpts1(deg + 1)
+    x, W = _derivative_series(deg)
     ab = np.array([(a, b) for _, a, b in pieces], dtype=float)
     m, h = 0.5 * (ab[:, 0] + ab[:, 1]), 0.5 * (ab[:, 1] - ab[:, 0])
     with np.errstate(all="ignore"):
         y = np.stack([np.atleast_2d(np.asarray(f(mk + hk * x), dtype=float)) for (f, _, _), mk, hk in zip(pieces, m, h)])
-        c = y @ C.chebvander(x, deg) / (deg + 1)         # (pieces, components, deg + 1)
-        c[..., 1:] *= 2
-        d = C.chebder(c, axis=-1)
+        d = y @ W                                       # (pieces, components, deg): the derivative's series
         noise = 4 * deg * deg * sys.float_info.epsilon * np.max(np.abs(y), axis=-1)   # the rounding of y, differentiated
         look = (np.all(np.isfinite(d), axis=-1) & (np.abs(d[..., 0]) <= np.sum(np.abs(d[..., 1:]), axis=-1))
                 & (np.max(np.abs(d), axis=-1) > noise))
-    out: list[list[list[float]]] = [[[] for _ in range(c.shape[1])] for _ in pieces]
+    out: list[list[list[float]]] = [[[] for _ in range(d.shape[1])] for _ in pieces]
     for i, j in zip(*np.nonzero(look)):
         try:
             with np.errstate(all="ignore"):

@@ -277,13 +277,15 @@ class Excursions:
 @pytest.mark.parametrize("backward", [True, False])
 def test_general_narrow_excursions_are_never_missed(backward):
     """A crossing between two samples cannot be missed (issue 28): the general route's searches
-    run on its own steps, cut at the exact extremes of s and v inside each step's interpolant.
+    and its own {s: S} queries run on its steps, cut at the exact extremes of s and v inside
+    each step's interpolant.
     Every excursion here (v < 0 for 3.2e-3 s, s back by 7e-6 m) is narrower than 1/256 (and
     1/1024) of the 10 s searched, and each level is crossed down and up again inside it: with a
     query before t1 the searches ran on a uniform grid of 256 pieces and answered all four
     down-crossings "not reached"; without one the turning points were roots of v between step
     ends only, so every distance was off by 1e-5 to 6e-5 relative and the time of a distance
-    1.2e-4 s late.  References: the closed form (mpmath, 30 digits)."""
+    1.2e-4 s late; and an {s: S} crossed up and down inside one step was answered at a later
+    window (22 of 177 levels, 5e-3 s late).  References: the closed form (mpmath, 30 digits)."""
     mp.mp.dps = MPMATH_DPS
     x = Excursions()
     levels = []
@@ -291,11 +293,17 @@ def test_general_narrow_excursions_are_never_missed(backward):
         tM, tm = x.window(k)
         X = x.s(tM) - (x.s(tM) - x.s(tm)) / 10
         levels.append((X, mp.findroot(lambda t: x.s(t) - X, (tM, tm), solver="anderson")))
+    firsts = []
+    for k, frac in ((4, 10), (23, 2)):              # {s: S}: first crossed on the way up to a maximum
+        tM, tm = x.window(k)
+        S = x.s(tM) - (x.s(tM) - x.s(tm)) / frac
+        firsts.append((S, mp.findroot(lambda t: x.s(t) - S, (tM - x.h, tM), solver="anderson")))
     t5 = mp.mpf(5)
     D5 = x.distance(0, t5)
     queries = "".join(f"  - {{when: {{s: {mp.nstr(X, 20)}}}, direction: down}}\n" for X, _ in levels)
     queries += ("  - {when: {v: 0}, direction: down, occurrence: 20}\n"
-                f"  - {{when: {{distance: {mp.nstr(D5, 20)}}}}}\n  - {{t: 10}}\n")
+                f"  - {{when: {{distance: {mp.nstr(D5, 20)}}}}}\n")
+    queries += "".join(f"  - {{s: {mp.nstr(S, 20)}}}\n" for S, _ in firsts) + "  - {t: 10}\n"
     queries += "  - {t: -0.5}\n" if backward else ""
     r, warns = solve(f"""
 type: rectilinear
@@ -317,8 +325,12 @@ find:
     assert e["t"] == pytest.approx(float(t20), rel=TOL)
     assert e["distance"] == pytest.approx(float(x.distance(0, t20)), rel=TOL)
     assert entry(r, 5)["t"] == pytest.approx(5.0, rel=TOL)          # the distance travelled by t = 5
-    assert entry(r, 6)["distance"] == pytest.approx(float(x.distance(0, 10)), rel=TOL)
+    for k, (S, up) in enumerate(firsts):
+        e = entry(r, 6 + k)
+        assert abs(e["t"] - float(up)) <= TOL * float(abs(S)) / float(abs(x.v(up))), (k, e["t"], up)
+        assert e["distance"] == pytest.approx(float(x.distance(0, up)), rel=TOL)
+    assert entry(r, 8)["distance"] == pytest.approx(float(x.distance(0, 10)), rel=TOL)
     if backward:
-        e = entry(r, 7)
+        e = entry(r, 9)
         assert e["s"] == pytest.approx(float(x.s(mp.mpf("-0.5"))), rel=TOL)
         assert e["distance"] == pytest.approx(float(x.distance(mp.mpf("-0.5"), 0)), rel=TOL)

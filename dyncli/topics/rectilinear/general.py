@@ -5,17 +5,17 @@
 integrated step by step with one of scipy's ``OdeSolver`` classes (DOP853 by
 default) at the user's rtol and atol.
 
-First crossings: after every accepted step the sign changes of v (extrema of s,
-turning points) and of a (extrema of v) over the step are located on the
-step's interpolant (the events).  Between consecutive events s (resp. v) is
-monotone, so a target is crossed inside such a piece exactly when it lies
-between the piece's end values, and the crossing is then polished by a
-bracketed root search on the interpolant.  A target equal to an extremum
-(grazing: no sign change, possibly within one step of the turning point) is
-detected at the extremum event and reported there.  The interpolant of a step
-is built only on the steps that hold an event, a crossing or a ``t`` query
-(DOP853's costs three more evaluations of a), and the integration stops as
-soon as every query is answered.
+First crossings: after every accepted step the extremes of s (turning points) and of v
+inside the step are the critical points of the step's interpolant, a polynomial, decided
+exactly (:func:`dyncli.rootfind.polynomial_extremes`, never by samples).  Between them s
+(resp. v) is monotone, so a target is crossed inside such a piece exactly when it lies
+between the piece's end values — an excursion narrower than the step, crossing the target
+twice inside it, included — and the crossing is then polished by a bracketed root search on
+the interpolant.  A target equal to an extremum (grazing: no sign change, possibly within one
+step of the turning point) is detected at the extremum and reported there.  While a v or s
+query is open every step builds its interpolant (DOP853's costs three more evaluations of a);
+otherwise only the steps that hold a ``t`` query do, and the integration stops as soon as
+every query is answered.
 
 Work budget: :class:`dyncli.ode.Budget` counts every accepted step of the
 solve; one that needs more than ``accuracy.max_steps`` steps (default
@@ -89,6 +89,7 @@ class _Step:
         self.ya: Any = None
         self.aa: float | None = None
         self._dense: Any = None
+        self._ext: list[list[float]] | None = None
 
     def advance(self) -> None:
         sv = self.solver
@@ -96,7 +97,7 @@ class _Step:
         self.tb, self.yb = float(sv.t), sv.y.copy()
         f = getattr(sv, "f", None)     # the rate at the step's end (explicit Runge-Kutta: FSAL)
         self.ab = float(f[1]) if f is not None else self.run.acc(self.tb, *self.yb)
-        self._dense = None
+        self._dense = self._ext = None
 
     def y(self, t: float):
         """The state at t inside the step."""
@@ -109,6 +110,17 @@ class _Step:
     def a(self, t: float) -> float:
         y = self.y(t)
         return self.run.acc(t, y[0], y[1])
+
+    def extremes(self, comp: int) -> list[float]:
+        """The critical points of s (``comp`` 0) or v (1) inside the step: of its interpolant, a
+        polynomial, decided exactly (:func:`dyncli.rootfind.polynomial_extremes`)."""
+        if self._ext is None:
+            from dyncli.rootfind import polynomial_extremes
+
+            if self._dense is None:
+                self._dense = ode.dense_output(self.solver)
+            (self._ext,) = polynomial_extremes([(self._dense, self.ta, self.tb)])
+        return self._ext[comp]
 
 
 def solve(p, ans, method: str, rtol: float, atol: float) -> str:
@@ -206,24 +218,22 @@ class _Forward:
     def _crossings(self, step, tb: float) -> None:
         """Answer the v/s queries first crossed in [step.ta, tb]."""
         ta = step.ta
-        # v queries: v is monotone between the zeros of a; s queries: s between the zeros of v
-        for queries, comp, ga, gb, g in ((self.vq, 1, step.aa, step.ab, step.a),
-                                         (self.sq, 0, step.ya[1], step.yb[1], lambda t: float(step.y(t)[1]))):
+        # the step cut at the extremes of v (v queries) or of s (s queries) of its interpolant:
+        # monotone between them, so a target is crossed in a piece exactly when it lies between
+        # the piece's end values (an excursion inside one step included)
+        for queries, comp in ((self.vq, 1), (self.sq, 0)):
             if not queries:
                 continue
             xa, xb = float(step.ya[comp]), float(step.yb[comp])
-            ev = _event(g, ta, step.tb, ga, gb)
-            if ev is None or ev > tb:
-                lo, hi = min(xa, xb), max(xa, xb)
-                if not any(lo <= X <= hi for X in queries.values()):
-                    continue          # the common case: nothing crossed on this step
-                bps, vals = [ta, tb], [xa, xb if tb == step.tb else float(step.y(tb)[comp])]
-            else:
-                xe = float(step.y(ev)[comp])
-                self.scale[comp] = max(self.scale[comp], abs(xe))
-                self.lo[comp], self.hi[comp] = min(self.lo[comp], xe), max(self.hi[comp], xe)
-                bps, vals = [ta, ev, tb], [xa, xe, xb if tb == step.tb else float(step.y(tb)[comp])]
-            self._pieces(step, queries, comp, bps, vals)
+            cuts = [x for x in step.extremes(comp) if x < tb]
+            xe = [float(step.y(x)[comp]) for x in cuts]
+            for x in xe:
+                self.scale[comp] = max(self.scale[comp], abs(x))
+                self.lo[comp], self.hi[comp] = min(self.lo[comp], x), max(self.hi[comp], x)
+            vals = [xa] + xe + [xb if tb == step.tb else float(step.y(tb)[comp])]
+            if not any(min(vals) <= X <= max(vals) for X in queries.values()):
+                continue              # the common case: nothing crossed on this step
+            self._pieces(step, queries, comp, [ta] + cuts + [tb], vals)
 
     def _pieces(self, step, queries: dict, comp: int, bps: list, vals: list) -> None:
         r, ans = self.r, self.ans
@@ -245,16 +255,6 @@ class _Forward:
                     ans.reached(i, t, y[0], y[1])
                 del queries[i]
                 break
-
-
-def _event(g, ta: float, tb: float, ga: float, gb: float):
-    """The zero of g in the step (ta, tb] when g changes sign over it (or reaches 0 at its
-    end), else None."""
-    if ga == 0 or (gb != 0 and (ga > 0) == (gb > 0)):
-        return None
-    if gb == 0:
-        return tb
-    return root_in_bracket(g, ta, tb, ga, gb)
 
 
 class Dense:
