@@ -220,19 +220,25 @@ class _Forward:
         ta = step.ta
         # the step cut at the extremes of v (v queries) or of s (s queries) of its interpolant:
         # monotone between them, so a target is crossed in a piece exactly when it lies between
-        # the piece's end values (an excursion inside one step included)
-        for queries, comp in ((self.vq, 1), (self.sq, 0)):
+        # the piece's end values (an excursion inside one step included); and at the zero of the
+        # true rate (a, resp. v) when it changes sign over the step: an extremum on a step's end
+        # that neither step's interpolant has inside it (two polynomials meet there)
+        for queries, comp, ga, gb, g in ((self.vq, 1, step.aa, step.ab, step.a),
+                                         (self.sq, 0, step.ya[1], step.yb[1], lambda t: float(step.y(t)[1]))):
             if not queries:
                 continue
             xa, xb = float(step.ya[comp]), float(step.yb[comp])
-            cuts = [x for x in step.extremes(comp) if x < tb]
+            ev = _event(g, ta, step.tb, ga, gb)
+            cuts = sorted({x for x in step.extremes(comp) + ([ev] if ev is not None else []) if x < tb})
             xe = [float(step.y(x)[comp]) for x in cuts]
             for x in xe:
                 self.scale[comp] = max(self.scale[comp], abs(x))
                 self.lo[comp], self.hi[comp] = min(self.lo[comp], x), max(self.hi[comp], x)
             vals = [xa] + xe + [xb if tb == step.tb else float(step.y(tb)[comp])]
-            if not any(min(vals) <= X <= max(vals) for X in queries.values()):
-                continue              # the common case: nothing crossed on this step
+            r, lo, hi = self.r, min(vals), max(vals)
+            if not any(lo - (r.rtol * max(abs(X), self.scale[comp]) + r.atol) <= X
+                       <= hi + r.rtol * max(abs(X), self.scale[comp]) + r.atol for X in queries.values()):
+                continue              # the common case: nothing crossed or grazed on this step
             self._pieces(step, queries, comp, [ta] + cuts + [tb], vals)
 
     def _pieces(self, step, queries: dict, comp: int, bps: list, vals: list) -> None:
@@ -255,6 +261,16 @@ class _Forward:
                     ans.reached(i, t, y[0], y[1])
                 del queries[i]
                 break
+
+
+def _event(g, ta: float, tb: float, ga: float, gb: float):
+    """The zero of g in the step (ta, tb] when g changes sign over it (or reaches 0 at its
+    end), else None."""
+    if ga == 0 or (gb != 0 and (ga > 0) == (gb > 0)):
+        return None
+    if gb == 0:
+        return tb
+    return root_in_bracket(g, ta, tb, ga, gb)
 
 
 class Dense:
