@@ -165,7 +165,7 @@ class _Case2:
 
         return min(known, key=key)
 
-    def root(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
+    def crossing(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
         """First t in [t0, t1] with v (kind 'v') or s (kind 's') = target; the
         state is known at both ends.  Each evaluation integrates from the
         nearest known state (ends and earlier iterates)."""
