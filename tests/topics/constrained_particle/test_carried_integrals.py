@@ -18,7 +18,7 @@ from tests.conftest import solve_text
 TIMES = [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0]
 RTOLS = [1e-6, 1e-8, 1e-10]
 #: a quadrature of the motion carries the error of the state it integrates, not more (measured:
-#: 0.4-1.5 × the larger of q's and q̇'s errors on these cases)
+#: 0.3-1.5 × the larger of q's and q̇'s errors on these cases)
 FACTOR = 3.0
 
 HOOP = """type: constrained-particle
