@@ -94,7 +94,7 @@ class Trajectory:
         out = np.empty((ts.size, n))
         ends = np.array([p.t_b for p in self.pieces])
         which = np.minimum(np.searchsorted(ends, ts, side="left"), len(self.pieces) - 1)
-        for k in np.unique(which):
+        for k in sorted(set(which.tolist())):     # (np.unique would import numpy.ma: 13 ms cold)
             sel = np.nonzero(which == k)[0]
             p = self.pieces[k]
             if p.batch is not None:
