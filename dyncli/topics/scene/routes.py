@@ -143,11 +143,10 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{conds[worst]:.3g} at t = {grid[worst]:.6g} s): its velocities and forces lose about "
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
-        q_start, t_a, t_b = qs[k], grid[k], grid[k + 1]
-        traj.add(motion.Piece(t_a, t_b, lambda t, q_start=q_start: _kin_state(s, q_start, t), motion.modes_of(s),
-                              "kinematics"))
+        fn = _KinPiece(s, qs[k], grid[k])
+        traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities))
     if len(grid) == 1:
-        traj.add(motion.Piece(0.0, 0.0, lambda t: _kin_state(s, scene.q0, t), motion.modes_of(s), "kinematics"))
+        traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
     traj.method = "kinematics"
     return traj
@@ -184,8 +183,67 @@ def _position(s, q, t, depth: int = 0):
                          "the joints lock (a toggle position)")
 
 
-def _kin_state(s, q_start, t):
-    q = _position(s, q_start, t)
+class _KinPiece:
+    """t -> (q, v, 0) on one piece of the kinematics route.  The position is Newton's on
+    φ(q, t) = 0 started from the piece start's Taylor polynomial q_a + v_a τ + ½ a_a τ² (off by
+    O(τ³), so Newton needs about two steps fewer than from q_a itself, the last skipped when
+    its size is foreseen below the rounding); where that does not converge, Newton from q_a as
+    the grid was placed (_position)."""
+
+    def __init__(self, s, q_a, t_a: float):
+        self.s, self.q_a, self.t_a = s, q_a, float(t_a)
+        self.start = None               # (v_a, a_a, the length scale), made when first asked
+
+    def position(self, t):
+        s = self.s
+        if self.start is None:
+            J = s.jac(self.q_a)
+            try:
+                v = np.linalg.solve(J, -s.phi_t(self.t_a))
+                a = np.linalg.solve(J, s.gamma(self.q_a, v, self.t_a))
+            except np.linalg.LinAlgError:
+                v = a = np.zeros(s.n)
+            self.start = (v, a, assembly.length_scale(self.q_a, s))
+        v, a, scale = self.start
+        tau = t - self.t_a
+        q = self.q_a + v * tau + 0.5 * a * (tau * tau)
+        if np.all(np.isfinite(q)):
+            last = None
+            for _ in range(6):
+                try:
+                    dq = np.linalg.solve(s.jac(q), s.phi(q, t))
+                except np.linalg.LinAlgError:
+                    break
+                q = q - dq
+                size = float(np.max(np.abs(dq)))
+                # converged: the correction at the rounding of the positions, or (well inside
+                # Newton's quadratic convergence, |dq| ≤ 1e-6 of the scale) the next one,
+                # |dq|³/|dq_prev|², below it: that step would not change q
+                if size <= 4 * EPS * scale or last is not None and size <= 1e-6 * scale and \
+                        size ** 3 <= EPS * scale * last * last:
+                    return q
+                last = size
+        return _position(s, self.q_a, t)
+
+    def __call__(self, t):
+        return _kin_state(self.s, self.position(t), t)
+
+    def velocities(self, ts) -> np.ndarray:
+        """q̇ at many times of the piece, (len(ts), n): the positions one by one, the condition
+        numbers and the velocities in one stacked call each (the same numbers as _kin_state)."""
+        s = self.s
+        qs = [self.position(float(t)) for t in ts]
+        Js = np.array([s.jac(q) for q in qs])
+        conds = np.linalg.cond(Js)
+        for t, cond in zip(ts, conds):
+            if cond > 1e12:
+                _kin_state(s, self.position(float(t)), float(t))      # raises its message
+        rhs = np.array([-s.phi_t(float(t)) for t in ts])
+        return np.linalg.solve(Js, rhs[:, :, None])[:, :, 0]
+
+
+def _kin_state(s, q, t):
+    """(q, v, 0) at a placed position q: the velocities from J q̇ = −φ_t."""
     J = s.jac(q)
     cond = np.linalg.cond(J)
     if cond > 1e12:
