@@ -4,8 +4,9 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 
 * ``statics``: no degree of freedom and no drive (or every contact sticking with constant
   loads): the reactions of equilibrium, Jᵀ λ = −f;
-* ``kinematics``: no degree of freedom with drives: positions by Newton on φ(q, t) = 0 from the
-  previous time, J q̇ = −φ_t, J q̈ = γ, and the forces from M q̈ − f = Jᵀ λ;
+* ``kinematics``: no degree of freedom with drives: positions by Newton on φ(q, t) = 0 (the
+  grid's from the previous grid time, a state between from its piece start's Taylor
+  polynomial), J q̇ = −φ_t, J q̈ = γ, and the forces from M q̈ − f = Jᵀ λ;
 * ``closed-form``: one DOF, rows affine in q and loads affine along the motion (motion.py);
 * ``quadrature`` (``accuracy.method: quadrature`` only, in this release: it costs seconds):
   one DOF with an energy integral (energy.py);
