@@ -188,8 +188,8 @@ class _KinPiece:
     """t -> (q, v, 0) on one piece of the kinematics route.  The position is Newton's on
     φ(q, t) = 0 started from the piece start's Taylor polynomial q_a + v_a τ + ½ a_a τ² (off by
     O(τ³), so Newton needs about two steps fewer than from q_a itself, the last skipped when
-    its size is foreseen below the rounding); where that does not converge, Newton from q_a as
-    the grid was placed (_position)."""
+    its size is foreseen below the rounding; near a toggle, cond(J) > 1e8 at q_a, from q_a
+    itself); where that does not converge, Newton from q_a as the grid was placed (_position)."""
 
     def __init__(self, s, q_a, t_a: float):
         self.s, self.q_a, self.t_a = s, q_a, float(t_a)
@@ -199,15 +199,14 @@ class _KinPiece:
         s = self.s
         if self.start is None:
             J = s.jac(self.q_a)
-            try:
+            v = a = None
+            if float(np.linalg.cond(J)) <= 1e8:     # near a toggle the rates are not to be trusted
                 v = np.linalg.solve(J, -s.phi_t(self.t_a))
                 a = np.linalg.solve(J, s.gamma(self.q_a, v, self.t_a))
-            except np.linalg.LinAlgError:
-                v = a = np.zeros(s.n)
             self.start = (v, a, assembly.length_scale(self.q_a, s))
         v, a, scale = self.start
         tau = t - self.t_a
-        q = self.q_a + v * tau + 0.5 * a * (tau * tau)
+        q = self.q_a + v * tau + 0.5 * a * (tau * tau) if v is not None else self.q_a
         if np.all(np.isfinite(q)):
             last = None
             for _ in range(6):
