@@ -164,12 +164,14 @@ class Odometer:
     consecutive breaks (the speed is smooth inside an ODE step or a closed-form piece: the rule
     is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
     at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
-    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns."""
+    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns.
+    ``arrays``: ``speeds`` takes a numpy array of times (no list of 1e6 floats made and read back)."""
 
-    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10):
+    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10,
+                 arrays: bool = False):
         import numpy as np
 
-        self.speeds, self.np = speeds, np
+        self.speeds, self.np, self.arrays = speeds, np, arrays
         self.x, self.w = _leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
         S = self._nodes(self.pts[:-1], self.pts[1:])
@@ -184,7 +186,7 @@ class Odometer:
         """The speeds at the Gauss–Legendre nodes of each piece [a, b]: (pieces, nodes[, k])."""
         np = self.np
         T = (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.x[None, :]
-        S = np.asarray(self.speeds(T.ravel().tolist()), dtype=float)
+        S = np.asarray(self.speeds(T.ravel() if self.arrays else T.ravel().tolist()), dtype=float)
         return S.reshape(T.shape + S.shape[1:])
 
     def _sum(self, S, a, b):
@@ -211,7 +213,8 @@ class Odometer:
         a, b = self.pts[piece], self.pts[piece + 1]
 
         def speed(u, k):
-            got = np.asarray(self.speeds((a[k] + u * (b[k] - a[k])).tolist()), dtype=float)
+            ts = a[k] + u * (b[k] - a[k])
+            got = np.asarray(self.speeds(ts if self.arrays else ts.tolist()), dtype=float)
             return got[np.arange(k.size), col[k]] if got.ndim > 1 else got
 
         xatol = 1e-12
