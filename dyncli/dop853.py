@@ -291,7 +291,7 @@ class OdeSolution:
         t = np.asarray(t)
         if t.ndim == 0:
             return self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
-        order = np.argsort(t)
+        order = np.argsort(t, kind="stable")     # (linear on times already in order)
         reverse = np.empty_like(order)
         reverse[order] = np.arange(order.shape[0])
         t_sorted = t[order]
