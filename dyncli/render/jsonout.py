@@ -289,9 +289,14 @@ def _records_text(x: list, indent: str, key) -> str:
     rest by ``json.dumps``."""
     inner, deeper = indent + "  ", indent + "    "
     open_, close, dump, rows = inner + "{\n", "\n" + inner + "}", key.dump, []
+    heads: dict = {}                            # each key's indented JSON and ": ", made once
+
+    def head(k) -> str:
+        got = heads[k] = f"{deeper}{key(k)}: "
+        return got
     for rec in x:
-        rows.append(open_ + ",\n".join([f"{deeper}{key(k)}: {v!r}" if type(v) in _REPR else
-                                        f"{deeper}{key(k)}: {dump(v)}" for k, v in rec.items()]) + close)
+        rows.append(open_ + ",\n".join([(heads.get(k) or head(k)) + (repr(v) if type(v) in _REPR else dump(v))
+                                        for k, v in rec.items()]) + close)
     return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
 
 
