@@ -263,7 +263,8 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         return 2
     streamed = fmt in ("json", "yaml", "csv") and not plot      # one point held at a time: collections stay cheap
     with _no_gc(bool(sweeps) and not streamed):
-        loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
+        with _no_gc(True):          # (a file of 1e5 times: every value's position recorded)
+            loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
         if loaded is None:
             return 2
         problems, codes, types = loaded

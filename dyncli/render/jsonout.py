@@ -322,13 +322,19 @@ def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
     not indented, the others by ``indent`` + 2: one ``json.dumps`` call for
     all its keys and scalars (separated by newlines, which no JSON scalar
     holds), numeric lists by ``repr``, series of flat records at once."""
+    return "".join(encode_parts(record, indent, ascii_only))
+
+
+def encode_parts(record: Any, indent: str = "", ascii_only: bool = False) -> list[str]:
+    """:func:`encode` as the list of its pieces, in order (a stream writes them one after the
+    other: a record of 1e5 times is ~70 MB, not joined and copied again)."""
     leaves: list = []
     marks: dict = {}
     _leaves(record, leaves, marks)
     text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
     parts: list[str] = []
     _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks, _Keys(ascii_only))
-    return "".join(parts)
+    return parts
 
 
 def dumps(records: list[dict], ascii_only: bool = False) -> str:
