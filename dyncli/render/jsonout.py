@@ -195,13 +195,14 @@ def _numeric(x: list) -> bool:
     return True
 
 
-_NUMBERS, _RECORDS = 1, 2      # the marks of a list: written by repr; a series of flat records
+_NUMBERS = 1        # the mark of a list written by repr (a series of flat records: its keys)
 
 
 def _leaves(x: Any, out: list, marks: dict) -> None:
     """Every key and scalar of ``x`` in writing order, but those of the lists marked in
     ``marks`` (by id): numeric lists (written by ``repr``: the same text as ``json.dumps``) and
-    series of flat records (:func:`_records_text`, which writes them itself)."""
+    series of flat records (:func:`_records_text`: their distinct keys once, then their values
+    that are not numbers or lists of numbers, in order)."""
     if type(x) is dict:
         for k, v in x.items():
             out.append(str(k))
@@ -214,7 +215,13 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
         if _numeric(x):
             marks[id(x)] = _NUMBERS
         elif _records(x):
-            marks[id(x)] = _RECORDS
+            from itertools import chain
+
+            keys = list(dict.fromkeys(chain.from_iterable(x)))     # each key once, in order of first use
+            marks[id(x)] = keys
+            out.extend(keys)
+            if not set(map(type, chain.from_iterable(map(dict.values, x)))) <= _REPR:
+                out.extend(v for rec in x for v in rec.values() if type(v) not in _REPR)
         else:
             for v in x:
                 _leaves(v, out, marks)
@@ -222,7 +229,7 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
         out.append(x)
 
 
-def _layout(x: Any, indent: str, text, parts: list, marks: dict, key) -> None:
+def _layout(x: Any, indent: str, text, parts: list, marks: dict) -> None:
     """``x`` indented by 2, its keys and scalars taken from ``text`` (their
     JSON, in writing order); the lists ``marks`` holds written at once."""
     inner = indent + "  "
@@ -237,7 +244,7 @@ def _layout(x: Any, indent: str, text, parts: list, marks: dict, key) -> None:
                 parts.append(f"{inner}{next(text)}: " + repr(v).replace("None", "null"))
             else:
                 parts.append(f"{inner}{next(text)}: ")
-                _layout(v, inner, text, parts, marks, key)
+                _layout(v, inner, text, parts, marks)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "}")
     elif type(x) is list and x:
@@ -245,8 +252,8 @@ def _layout(x: Any, indent: str, text, parts: list, marks: dict, key) -> None:
         if mark == _NUMBERS:
             parts.append(repr(x).replace("None", "null"))     # repr of ints, floats, None = their JSON
             return
-        if mark == _RECORDS:
-            parts.append(_records_text(x, indent, key))
+        if mark is not None:
+            parts.append(_records_text(x, indent, mark, text))
             return
         parts.append("[\n")
         last = len(x) - 1
@@ -256,7 +263,7 @@ def _layout(x: Any, indent: str, text, parts: list, marks: dict, key) -> None:
             if type(v) is dict and v and _flat_dict(v):      # a series of small records: no call per value
                 parts.append(_flat_text(v, inner, nxt))
             else:
-                _layout(v, inner, text, parts, marks, key)
+                _layout(v, inner, text, parts, marks)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "]")
     elif type(x) is dict:
@@ -282,39 +289,19 @@ def _flat_text(x: dict, indent: str, nxt) -> str:
 _REPR = frozenset((float, int, list))      # written by repr in a flat record: their JSON
 
 
-def _records_text(x: list, indent: str, key) -> str:
+def _records_text(x: list, indent: str, keys: list, text) -> str:
     """:func:`_layout` of a non-empty list of non-empty :func:`_flat_dict` records (a series of
-    1e5 force terms, powers, works), written here at once: each key's JSON made once
-    (``key``), numbers and lists of numbers by ``repr`` (their JSON: every one is finite), the
-    rest by ``json.dumps``."""
+    1e5 force terms, powers, works), written here at once: the JSON of each of its ``keys``
+    and of its values that are not numbers or lists of numbers from ``text`` (in the order
+    :func:`_leaves` put them), numbers and lists of numbers by ``repr`` (their JSON: every one
+    is finite)."""
     inner, deeper = indent + "  ", indent + "    "
-    open_, close, dump, rows = inner + "{\n", "\n" + inner + "}", key.dump, []
-    heads: dict = {}                            # each key's indented JSON and ": ", made once
-
-    def head(k) -> str:
-        got = heads[k] = f"{deeper}{key(k)}: "
-        return got
+    heads = {k: f"{deeper}{next(text)}: " for k in keys}
+    open_, close, rows = inner + "{\n", "\n" + inner + "}", []
     for rec in x:
-        rows.append(open_ + ",\n".join([(heads.get(k) or head(k)) + (repr(v) if type(v) in _REPR else dump(v))
+        rows.append(open_ + ",\n".join([heads[k] + (repr(v) if type(v) in _REPR else next(text))
                                         for k, v in rec.items()]) + close)
     return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
-
-
-class _Keys(dict):
-    """The JSON of each key, made once (a series of 1e5 records repeats a few keys)."""
-
-    def __init__(self, ascii_only: bool):
-        super().__init__()
-        self.ascii_only = ascii_only
-
-    def dump(self, s: str) -> str:
-        return json.dumps(s, ensure_ascii=self.ascii_only)
-
-    def __call__(self, k) -> str:
-        got = self.get(k)
-        if got is None:
-            got = self[k] = self.dump(str(k))
-        return got
 
 
 def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
@@ -333,7 +320,7 @@ def encode_parts(record: Any, indent: str = "", ascii_only: bool = False) -> lis
     _leaves(record, leaves, marks)
     text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
     parts: list[str] = []
-    _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks, _Keys(ascii_only))
+    _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks)
     return parts
 
 
