@@ -17,7 +17,9 @@ medians).
 5. ``dyncli check --key`` at 30 and 300 submissions (3,000 with ``--big``;
    benchmarks/check_key_batch.py's class): CPU, wall, growth exponent;
 6. cold start of the integrating types over a student's scipy script of the
-   same problem (goal: <= 1.15), as benchmarks/cold_integrating.py.
+   same problem (goal: <= 1.15), as benchmarks/cold_integrating.py;
+7. a particle at 1e3, 1e4, 1e5 requested times (goal: 2 s at 1e5) and the Coulomb
+   oscillator's stops (goal: < 1 s), CPU and growth, as benchmarks/many_times.py (issue 29).
 
 Usage: python -m benchmarks.all [--runs 3] [--big] [--only 1,3]
 """
@@ -204,11 +206,19 @@ def cold_integrating(runs: int) -> None:
     report(max(runs, 5))
 
 
+def many_times(runs: int) -> None:
+    """7. a particle at many times; the Coulomb oscillator."""
+    from many_times import report
+
+    print("7. ", end="")
+    report(runs, [1000, 10_000, 100_000])
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--big", action="store_true", help="also 1e5-point sweeps and 3,000 submissions")
-    ap.add_argument("--only", default="1,2,3,4,5,6", help="sections to run, e.g. 1,3")
+    ap.add_argument("--only", default="1,2,3,4,5,6,7", help="sections to run, e.g. 1,3")
     ap.add_argument("--formats", default=",".join(FORMATS), help="the sweeps' formats, e.g. json,csv")
     args = ap.parse_args()
     only = {int(x) for x in args.only.split(",")}
@@ -217,7 +227,7 @@ def main() -> None:
           f"{time.strftime('%Y-%m-%d %H:%M:%S')}")
     for k, section in ((1, lambda: warm(args.runs)), (2, lambda: cold(args.runs)), (3, lambda: sweeps(args.runs, args.big, args.formats.split(","))),
                        (4, lambda: batches(args.runs)), (5, lambda: check(args.runs, args.big)),
-                       (6, lambda: cold_integrating(args.runs))):
+                       (6, lambda: cold_integrating(args.runs)), (7, lambda: many_times(args.runs))):
         if k in only:
             section()
 

@@ -22,8 +22,6 @@ takes scipy's own classes (:func:`dyncli.integrators.solver_class` with ``scipy=
 
 from __future__ import annotations
 
-from itertools import groupby
-
 import numpy as np
 
 from dyncli import dop853_coefficients as dc
@@ -337,7 +335,7 @@ class OdeSolution:
         t = np.asarray(t)
         if t.ndim == 0:
             return self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
-        order = np.argsort(t)
+        order = np.argsort(t, kind="stable")     # (linear on times already in order)
         reverse = np.empty_like(order)
         reverse[order] = np.arange(order.shape[0])
         t_sorted = t[order]
@@ -346,9 +344,36 @@ class OdeSolution:
         segments[segments > self.n_segments - 1] = self.n_segments - 1
         if not self.ascending:
             segments = self.n_segments - 1 - segments
-        ys, start = [], 0
-        for segment, group in groupby(segments):
-            end = start + len(list(group))
-            ys.append(self.interpolants[segment](t_sorted[start:end]))
-            start = end
+        cuts = np.flatnonzero(np.diff(segments)) + 1
+        stack = self._stacked() if cuts.size and t.size < 32 * (cuts.size + 1) else None
+        if stack is not None:               # many steps, few times in each: every step's polynomial at once
+            return _evaluate(stack, segments, t_sorted)[:, reverse]
+        bounds = [0] + cuts.tolist() + [t.size]
+        ys = [self.interpolants[int(segments[i])](t_sorted[i:j]) for i, j in zip(bounds[:-1], bounds[1:])]
         return np.hstack(ys)[:, reverse]
+
+    def _stacked(self):
+        """(t_old, h, F, y_old) of every step stacked, when every step is a :class:`DenseOutput`
+        (else None); made once."""
+        if not hasattr(self, "_stack"):
+            its = self.interpolants
+            ok = all(type(i) is DenseOutput for i in its) and len({i.F.shape for i in its}) == 1
+            self._stack = (np.array([i.t_old for i in its], float), np.array([i.h for i in its], float),
+                           np.stack([i.F for i in its]), np.stack([i.y_old for i in its])) if ok else None
+        return self._stack
+
+
+def _evaluate(stack, segments, t):
+    """:meth:`DenseOutput._call_impl` of the steps ``segments`` at the times ``t`` in one
+    vectorised pass: the same operations on the same doubles, so the same values."""
+    t_old, h, F, y_old = stack
+    x = ((t - t_old[segments]) / h[segments])[:, None]
+    y = np.zeros((t.size, y_old.shape[1]), dtype=y_old.dtype)
+    for i in range(F.shape[1]):
+        y += F[segments, F.shape[1] - 1 - i]
+        if i % 2 == 0:
+            y *= x
+        else:
+            y *= 1 - x
+    y += y_old[segments]
+    return y.T

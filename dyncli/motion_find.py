@@ -164,12 +164,14 @@ class Odometer:
     consecutive breaks (the speed is smooth inside an ODE step or a closed-form piece: the rule
     is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
     at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
-    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns."""
+    ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns.
+    ``arrays``: ``speeds`` takes a numpy array of times (no list of 1e6 floats made and read back)."""
 
-    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10):
+    def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10,
+                 arrays: bool = False):
         import numpy as np
 
-        self.speeds, self.np = speeds, np
+        self.speeds, self.np, self.arrays = speeds, np, arrays
         self.x, self.w = _leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
         S = self._nodes(self.pts[:-1], self.pts[1:])
@@ -184,7 +186,7 @@ class Odometer:
         """The speeds at the Gauss–Legendre nodes of each piece [a, b]: (pieces, nodes[, k])."""
         np = self.np
         T = (0.5 * (a + b))[:, None] + (0.5 * (b - a))[:, None] * self.x[None, :]
-        S = np.asarray(self.speeds(T.ravel().tolist()), dtype=float)
+        S = np.asarray(self.speeds(T.ravel() if self.arrays else T.ravel().tolist()), dtype=float)
         return S.reshape(T.shape + S.shape[1:])
 
     def _sum(self, S, a, b):
@@ -197,23 +199,30 @@ class Odometer:
     def _stops(self, S) -> list[float]:
         """Where a speed comes (nearly) to rest inside a piece — a turning point, where |v| has a
         kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
-        each piece whose node speeds dip below a quarter of their largest, by Brent's minimiser
-        (an error δ in its place costs only ~|a| δ²)."""
-        from dyncli.rootfind import fminbound_unit
+        each piece whose node speeds dip below a quarter of their largest, by a golden-section
+        search over all those pieces at once (:func:`dyncli.rootfind.fminbound_many`: one call of
+        ``speeds`` per iteration; an error δ in its place costs only ~|a| δ²).  A least speed at
+        the piece's end (a stop that is a break already) adds nothing."""
+        from dyncli.rootfind import fminbound_many
 
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
-        out = []
-        for i, c in zip(*np.nonzero(S3.min(axis=1) < 0.25 * S3.max(axis=1))):
-            a, b = float(self.pts[i]), float(self.pts[i + 1])
+        piece, col = np.nonzero(S3.min(axis=1) < 0.25 * S3.max(axis=1))
+        if not piece.size:
+            return []
+        a, b = self.pts[piece], self.pts[piece + 1]
 
-            def speed(u, a=a, b=b, c=c):
-                got = np.asarray(self.speeds([a + u * (b - a)]), dtype=float)
-                return float(got.reshape(-1)[c] if got.ndim > 1 else got[0])
-            t = a + fminbound_unit(speed, 1e-12) * (b - a)
-            if a < t < b:
-                out.append(t)
-        return out
+        def speed(u, k):
+            ts = a[k] + u * (b[k] - a[k])
+            got = np.asarray(self.speeds(ts if self.arrays else ts.tolist()), dtype=float)
+            return got[np.arange(k.size), col[k]] if got.ndim > 1 else got
+
+        xatol = 1e-12
+        u = fminbound_many(speed, piece.size, xatol)
+        end = 2 * (np.sqrt(np.finfo(float).eps) * u + xatol)     # within the search's tolerance of an end
+        t = a + u * (b - a)
+        keep = (u > end) & (u < 1.0 - end) & (a < t) & (t < b)
+        return sorted(set(t[keep].tolist()))
 
     def at(self, times: Iterable[float]) -> list:
         np = self.np

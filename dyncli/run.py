@@ -263,7 +263,8 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         return 2
     streamed = fmt in ("json", "yaml", "csv") and not plot      # one point held at a time: collections stay cheap
     with _no_gc(bool(sweeps) and not streamed):
-        loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
+        with _no_gc(True):          # (a file of 1e5 times: every value's position recorded)
+            loaded = _options_and_problems(files, list(sets), list(sweeps), lazy=True)
         if loaded is None:
             return 2
         problems, codes, types = loaded
@@ -293,27 +294,33 @@ def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, no
     (the table, or a :class:`~dyncli.render.stream.RecordStream` that takes
     failures too) as it is solved; the outcomes kept when ``keep`` (else only
     the results' warnings, in ``notes``: a streamed sweep holds one point)."""
-    import sys
-
     outcomes = []
     for lp in problems:
-        o = solve_one(lp, options)
-        codes.append(o.exit_code)
-        if keep:
-            outcomes.append(o)
-        if notes is not None and o.result is not None:
-            notes += [f"{lp.file}: {lp.title}: warning: {w}" for w in o.result.warnings]
-        if o.message:
-            _err_lines(o.message)
-            if o.trace and debug:
-                from dyncli.printable import lines
-
-                print(lines(o.trace), file=sys.stderr)
-        if writer is not None and hasattr(writer, "add"):
-            writer.add(o)
-        elif writer is not None and o.result is not None:
-            writer.write(lp, o.result)
+        with _no_gc(True):          # one problem's results (1e5 times: millions of lists) built and written
+            _one(lp, options, codes, debug, writer, notes, keep, outcomes)      # without collections walking them
     return outcomes
+
+
+def _one(lp, options, codes, debug, writer, notes, keep, outcomes) -> None:
+    """:func:`_solve_all` of one problem."""
+    import sys
+
+    o = solve_one(lp, options)
+    codes.append(o.exit_code)
+    if keep:
+        outcomes.append(o)
+    if notes is not None and o.result is not None:
+        notes += [f"{lp.file}: {lp.title}: warning: {w}" for w in o.result.warnings]
+    if o.message:
+        _err_lines(o.message)
+        if o.trace and debug:
+            from dyncli.printable import lines
+
+            print(lines(o.trace), file=sys.stderr)
+    if writer is not None and hasattr(writer, "add"):
+        writer.add(o)
+    elif writer is not None and o.result is not None:
+        writer.write(lp, o.result)
 
 
 @contextmanager

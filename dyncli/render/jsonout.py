@@ -17,6 +17,8 @@ from typing import Any
 def _floats(x: list) -> list | None:
     """``x`` unchanged when it is a flat list of finite floats/ints (the common
     case, checked without recursion), else None."""
+    if len(x) > 16 and _finite_numbers(x):
+        return x
     for v in x:
         t = type(v)
         if t is float:
@@ -25,6 +27,30 @@ def _floats(x: list) -> list | None:
         elif t is not int:
             return None
     return x
+
+
+_NUMBER_TYPES = frozenset((float, int))
+
+
+def _finite_numbers(x) -> bool:
+    """Whether the items of the iterable ``x`` are all floats or ints and all finite, decided
+    at C speed: the set of their types, then their sum (a NaN or an infinity makes it
+    non-finite).  False also when the sum merely overflows: the callers then check one by one."""
+    if not set(map(type, x)) <= _NUMBER_TYPES:
+        return False
+    try:
+        s = sum(x)
+    except OverflowError:                        # (an int beyond a double)
+        return False
+    return s - s == 0
+
+
+def _number_rows(x: list) -> bool:
+    """Whether ``x`` is a non-empty list of lists of finite floats/ints (a series of vectors),
+    decided at C speed (:func:`_finite_numbers` over the chained rows)."""
+    from itertools import chain
+
+    return bool(x) and set(map(type, x)) == {list} and _finite_numbers(list(chain.from_iterable(x)))
 
 
 def _flat_dict(x: dict) -> bool:
@@ -44,6 +70,24 @@ def _flat_dict(x: dict) -> bool:
         elif not (v is None or t is int or t is str or t is bool):
             return False
     return True
+
+
+def _records(x: list) -> bool:
+    """Whether ``x`` is a non-empty list of non-empty :func:`_flat_dict` records (a series of
+    force terms, powers, works at 1e5 times), decided at C speed when every value is a list of
+    numbers or every value a number (else record by record)."""
+    from itertools import chain
+
+    if not x or set(map(type, x)) != {dict} or not all(x):
+        return False
+    if len(x) > 16 and set(map(type, chain.from_iterable(x))) == {str}:
+        values = list(chain.from_iterable(map(dict.values, x)))
+        kinds = set(map(type, values))
+        if kinds == {list} and _finite_numbers(list(chain.from_iterable(values))):
+            return True
+        if kinds <= _NUMBER_TYPES and _finite_numbers(values):
+            return True
+    return all(map(_flat_dict, x))
 
 
 def _array(x) -> Any:
@@ -72,7 +116,7 @@ def jsonable(x: Any) -> Any:
         if type(x) is dict and _flat_dict(x):
             return x
         return {str(k): jsonable(v) for k, v in x.items()}
-    if isinstance(x, list) and _floats(x) is not None:
+    if isinstance(x, list) and (_floats(x) is not None or _number_rows(x) or _records(x)):
         return x
     if isinstance(x, (list, tuple)):
         return [jsonable(v) for v in x]
@@ -136,6 +180,8 @@ def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
 def _numeric(x: list) -> bool:
     """A list of finite numbers, or of lists of them (vectors, tensors): no
     strings or mappings, so it is safe and readable on one line."""
+    if len(x) > 16 and (_finite_numbers(x) or _number_rows(x)):
+        return True
     for v in x:
         t = type(v)
         if t is float:
@@ -149,28 +195,43 @@ def _numeric(x: list) -> bool:
     return True
 
 
-def _leaves(x: Any, out: list) -> None:
-    """Every key and scalar of ``x`` in writing order (numeric lists are
-    written by ``repr``: the same text as ``json.dumps``)."""
+_NUMBERS = 1        # the mark of a list written by repr (a series of flat records: its keys)
+
+
+def _leaves(x: Any, out: list, marks: dict) -> None:
+    """Every key and scalar of ``x`` in writing order, but those of the lists marked in
+    ``marks`` (by id): numeric lists (written by ``repr``: the same text as ``json.dumps``) and
+    series of flat records (:func:`_records_text`: their distinct keys once, then their values
+    that are not numbers or lists of numbers, in order)."""
     if type(x) is dict:
         for k, v in x.items():
             out.append(str(k))
             t = type(v)
             if t is dict or t is list:
-                _leaves(v, out)
+                _leaves(v, out, marks)
             else:
                 out.append(v)
     elif type(x) is list and x:
-        if not _numeric(x):
+        if _numeric(x):
+            marks[id(x)] = _NUMBERS
+        elif _records(x):
+            from itertools import chain
+
+            keys = list(dict.fromkeys(chain.from_iterable(x)))     # each key once, in order of first use
+            marks[id(x)] = keys
+            out.extend(keys)
+            if not set(map(type, chain.from_iterable(map(dict.values, x)))) <= _REPR:
+                out.extend(v for rec in x for v in rec.values() if type(v) not in _REPR)
+        else:
             for v in x:
-                _leaves(v, out)
+                _leaves(v, out, marks)
     elif type(x) is not list:
         out.append(x)
 
 
-def _layout(x: Any, indent: str, text, parts: list) -> None:
+def _layout(x: Any, indent: str, text, parts: list, marks: dict) -> None:
     """``x`` indented by 2, its keys and scalars taken from ``text`` (their
-    JSON, in writing order)."""
+    JSON, in writing order); the lists ``marks`` holds written at once."""
     inner = indent + "  "
     if type(x) is dict and x:
         parts.append("{\n")
@@ -179,16 +240,20 @@ def _layout(x: Any, indent: str, text, parts: list) -> None:
             t = type(v)
             if t is not dict and t is not list:      # a scalar: inline (a series of small records)
                 parts.append(f"{inner}{next(text)}: {next(text)}")
-            elif t is list and v and _numeric(v):
+            elif t is list and marks.get(id(v)) == _NUMBERS:
                 parts.append(f"{inner}{next(text)}: " + repr(v).replace("None", "null"))
             else:
                 parts.append(f"{inner}{next(text)}: ")
-                _layout(v, inner, text, parts)
+                _layout(v, inner, text, parts, marks)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "}")
     elif type(x) is list and x:
-        if _numeric(x):
+        mark = marks.get(id(x))
+        if mark == _NUMBERS:
             parts.append(repr(x).replace("None", "null"))     # repr of ints, floats, None = their JSON
+            return
+        if mark is not None:
+            parts.append(_records_text(x, indent, mark, text))
             return
         parts.append("[\n")
         last = len(x) - 1
@@ -198,7 +263,7 @@ def _layout(x: Any, indent: str, text, parts: list) -> None:
             if type(v) is dict and v and _flat_dict(v):      # a series of small records: no call per value
                 parts.append(_flat_text(v, inner, nxt))
             else:
-                _layout(v, inner, text, parts)
+                _layout(v, inner, text, parts, marks)
             parts.append(",\n" if i < last else "\n")
         parts.append(indent + "]")
     elif type(x) is dict:
@@ -221,17 +286,42 @@ def _flat_text(x: dict, indent: str, nxt) -> str:
     return "{\n" + ",\n".join(items) + "\n" + indent + "}"
 
 
+_REPR = frozenset((float, int, list))      # written by repr in a flat record: their JSON
+
+
+def _records_text(x: list, indent: str, keys: list, text) -> str:
+    """:func:`_layout` of a non-empty list of non-empty :func:`_flat_dict` records (a series of
+    1e5 force terms, powers, works), written here at once: the JSON of each of its ``keys``
+    and of its values that are not numbers or lists of numbers from ``text`` (in the order
+    :func:`_leaves` put them), numbers and lists of numbers by ``repr`` (their JSON: every one
+    is finite)."""
+    inner, deeper = indent + "  ", indent + "    "
+    heads = {k: f"{deeper}{next(text)}: " for k in keys}
+    open_, close, rows = inner + "{\n", "\n" + inner + "}", []
+    for rec in x:
+        rows.append(open_ + ",\n".join([heads[k] + (repr(v) if type(v) in _REPR else next(text))
+                                        for k, v in rec.items()]) + close)
+    return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
+
+
 def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
     """One record (any JSON value) as :func:`dumps` writes it, its first line
     not indented, the others by ``indent`` + 2: one ``json.dumps`` call for
     all its keys and scalars (separated by newlines, which no JSON scalar
-    holds), numeric lists by ``repr``."""
+    holds), numeric lists by ``repr``, series of flat records at once."""
+    return "".join(encode_parts(record, indent, ascii_only))
+
+
+def encode_parts(record: Any, indent: str = "", ascii_only: bool = False) -> list[str]:
+    """:func:`encode` as the list of its pieces, in order (a stream writes them one after the
+    other: a record of 1e5 times is ~70 MB, not joined and copied again)."""
     leaves: list = []
-    _leaves(record, leaves)
+    marks: dict = {}
+    _leaves(record, leaves, marks)
     text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
     parts: list[str] = []
-    _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts)
-    return "".join(parts)
+    _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks)
+    return parts
 
 
 def dumps(records: list[dict], ascii_only: bool = False) -> str:

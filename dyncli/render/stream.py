@@ -43,9 +43,10 @@ class RecordStream:
 
         rec = problem_record(o.problem, o.result, o.message, o.exit_code)
         if self.fmt == "json":
-            from dyncli.render.jsonout import encode
+            from dyncli.render.jsonout import encode_parts
 
-            sys.stdout.write(("[\n  " if self.n == 0 else ",\n  ") + encode(rec, "  ", not self.utf))
+            sys.stdout.write("[\n  " if self.n == 0 else ",\n  ")
+            sys.stdout.writelines(encode_parts(rec, "  ", not self.utf))     # (not joined: 70 MB at 1e5 times)
         else:
             from dyncli.render.yamlout import dumps
 

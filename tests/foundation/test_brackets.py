@@ -47,3 +47,25 @@ def test_newton_keeps_roots_at_the_ends_and_tangent_slopes():
     r = newton_in_brackets(lambda x, k: (x ** 3, 0.0 * x), [0.0, -1.0], [1.0, 2.0], [0.0, -1.0], [1.0, 8.0])
     assert r[0] == 0.0
     assert abs(r[1]) < 1e-20                        # x³ has a triple root: bisection (100 halvings at most)
+
+
+def test_fminbound_many_finds_kinks_smooth_minima_and_ends_at_once():
+    """``fminbound_many`` (issue 29): the minimisers on [0, 1] of many unimodal functions in one
+    vectorised call per iteration — a kink |u − c| (a speed through a stop) to the search's
+    tolerance √eps·u + xatol, a smooth minimum (u − c)² + h to √eps (the values are flat within
+    rounding there, as for Brent's minimiser), a minimum at an end to the same tolerance of it."""
+    from dyncli.rootfind import fminbound_many
+
+    c = np.array([0.0, 1.0] + np.linspace(0.013, 0.987, 40).tolist())
+    smooth = np.arange(c.size) % 2 == 1
+    calls = []
+
+    def f(u, k):
+        calls.append(k.size)
+        return np.where(smooth[k], (u - c[k]) ** 2 + 0.25, np.abs(u - c[k]) * 3.0)
+    u = fminbound_many(f, c.size, 1e-12)
+    tol = np.sqrt(np.finfo(float).eps)
+    kink = ~smooth
+    assert np.all(np.abs(u[kink] - c[kink]) <= 2 * (tol * np.abs(c[kink]) + 1e-12 / 3) + 1e-15)
+    assert np.all(np.abs(u[smooth] - c[smooth]) <= 4 * tol)
+    assert len(calls) <= 60                                  # golden section: ~38 iterations to √eps

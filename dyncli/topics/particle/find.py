@@ -44,7 +44,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         V = traj_of().state_array(ts)[1][3:6]
         return np.sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2])
 
-    odo = mf.Odometer(speeds, B)
+    odo = mf.Odometer(speeds, B, arrays=True)
     res.results["distance"] = odo.at(p.at)
     if not p.find:
         return

@@ -171,6 +171,62 @@ class Forces:
 
         return rhs
 
+    def accelerations(self, d, t, X, V):
+        """The acceleration a = f(t, y)[3:6] of :meth:`make_rhs` (one phase, friction direction
+        ``d``) at many states at once, X and V (3, N): the same formulas with the same operations
+        in the same order on whole arrays (so the same doubles as the integrator's calls, a custom
+        term's expressions evaluated on the arrays).  A non-finite force raises NonFiniteForce at
+        the first state where it is."""
+        m, muN = self.m, self.muN
+        x1, x2, x3 = X
+        v1, v2, v3 = V
+        u1, u2, u3 = self.uniform.tolist()
+        n = X.shape[1]
+        with np.errstate(all="ignore"):
+            f1, f2, f3 = np.full(n, u1), np.full(n, u2), np.full(n, u3)
+            if self.c_lin:
+                c = self.c_lin
+                f1, f2, f3 = f1 - c * v1, f2 - c * v2, f3 - c * v3
+            if self.c_quad:
+                cs = self.c_quad * np.sqrt(v1 * v1 + v2 * v2 + v3 * v3)
+                f1, f2, f3 = f1 - cs * v1, f2 - cs * v2, f3 - cs * v3
+            if self.custom:
+                env = {"t": np.asarray(t, float), "x1": x1, "x2": x2, "x3": x3, "v1": v1, "v2": v2, "v3": v3}
+                for e1, e2, e3 in self.custom:
+                    f1, f2, f3 = f1 + e1.evaluate(**env), f2 + e2.evaluate(**env), f3 + e3.evaluate(**env)
+            if muN:
+                d1, d2, d3 = np.asarray(d, float).tolist()
+                sp = np.sqrt(v1 * v1 + v2 * v2 + v3 * v3)
+                k = np.where(v1 * d1 + v2 * d2 + v3 * d3 >= 0.0, muN / sp, -muN / sp)
+                moving = sp > 0.0
+                f1 = np.where(moving, f1 - k * v1, f1 - muN * d1)
+                f2 = np.where(moving, f2 - k * v2, f2 - muN * d2)
+                f3 = np.where(moving, f3 - k * v3, f3 - muN * d3)
+            g1, g2, g3 = np.zeros(n), np.zeros(n), np.full(n, -self.weight)
+            for c, mu, _ in self.inv:
+                r1, r2, r3 = x1 - float(c[0]), x2 - float(c[1]), x3 - float(c[2])
+                R2 = r1 * r1 + r2 * r2 + r3 * r3
+                k = mu / (R2 * np.sqrt(R2))             # den = 0: inf, refused below as the scalar call is
+                g1, g2, g3 = g1 - k * r1, g2 - k * r2, g3 - k * r3
+            for a, ks, L, side in self.springs:
+                side = {None: 0, "compression": -1, "tension": 1}[side]
+                r1, r2, r3 = x1 - float(a[0]), x2 - float(a[1]), x3 - float(a[2])
+                if L == 0.0:
+                    if side <= 0:
+                        g1, g2, g3 = g1 - ks * r1, g2 - ks * r2, g3 - ks * r3
+                    continue
+                R = np.sqrt(r1 * r1 + r2 * r2 + r3 * r3)
+                k = np.where(side * (R - L) < 0.0, 0.0, ks * (R - L) / R)
+                on = side * (R - L) >= 0.0                  # (a slack one-sided spring adds nothing)
+                g1, g2, g3 = np.where(on, g1 - k * r1, g1), np.where(on, g2 - k * r2, g2), np.where(on, g3 - k * r3, g3)
+            A = np.array([(f1 + g1) / m, (f2 + g2) / m, (f3 + g3) / m]).reshape(3, n)
+            w = f1 * v1 + f2 * v2 + f3 * v3
+        bad = ~(np.isfinite(A).all(axis=0) & np.isfinite(w))
+        if bad.any():
+            j = int(np.argmax(bad))
+            raise NonFiniteForce(float(np.asarray(t, float).reshape(-1)[j] if np.ndim(t) else t), X[:, j])
+        return A
+
     def plain(self):
         """conservative() and nonconservative() of one state in plain floats, for a right-hand side
         called once per stage: ``f(t, x1, x2, x3, v1, v2, v3) -> (Fc1, Fc2, Fc3, Fn1, Fn2, Fn3)``

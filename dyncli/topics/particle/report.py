@@ -48,18 +48,24 @@ def energy_residual(p, F, S):
 def at_times(traj: Trajectory, F: Forces, times, steps: bool = False) -> dict:
     """The motion at every time of ``times`` at once, as arrays: x, v, a
     (3 x N), T, V, E, W_nc (N), H_O (3 x N); with ``steps``, also T, V, W_nc over every accepted
-    step and the times (``energies``, for the energy residual).  Energies and angular momentum
-    on whole arrays; only a = f(t, y) is per time (the phase's own right-hand side, friction
-    continuation included)."""
+    step and the times (``energies``, for the energy residual).  Every quantity on whole arrays:
+    one evaluation of the states at all the times, a = f(t, y) by the phase's own right-hand side
+    on the arrays of its times (``Forces.accelerations``, friction continuation included)."""
     times = [float(t) for t in times]
     m = F.m
     idx, Y = traj.state_array(times)
     X, Vel = Y[0:3], Y[3:6]
-    rest = [isinstance(traj.phases[k], RestPhase) for k in idx.tolist()]
-    A = []
-    for t, y, k, r in zip(times, Y.T, idx.tolist(), rest):
+    kinds = np.array([isinstance(ph, RestPhase) for ph in traj.phases], dtype=bool)
+    rest = kinds[idx] if idx.size else np.zeros(0, dtype=bool)
+    A = np.zeros((3, len(times)))
+    t_arr = np.asarray(times, float)
+    order = np.argsort(idx, kind="stable")          # the times of each phase, one call each
+    for sel in np.split(order, np.flatnonzero(np.diff(idx[order])) + 1) if idx.size else ():
+        ph = traj.phases[int(idx[sel[0]])]
+        if isinstance(ph, RestPhase):
+            continue
         try:
-            A.append(_ZERO3 if r else traj.phases[k].rhs(t, y)[3:6])
+            A[:, sel] = F.accelerations(ph.d, t_arr[sel], X[:, sel], Vel[:, sel])
         except NonFiniteForce as exc:
             raise NumericalError(f"the force is not finite (inf or NaN) at t = {exc.t:.6g} s, x = "
                                  f"[{', '.join(f'{c:.6g}' for c in exc.x)}] m") from None
@@ -67,15 +73,12 @@ def at_times(traj: Trajectory, F: Forces, times, steps: bool = False) -> dict:
     T = eq.kinetic_energy(m, Z[3:6])
     V = F.potential(Z[0:3])
     k = Z.shape[1] - len(times)
-    S = {"x": X, "v": Vel, "a": np.array(A, dtype=float).reshape(-1, 3).T, "T": T[k:], "V": V[k:],
+    S = {"x": X, "v": Vel, "a": A, "T": T[k:], "V": V[k:],
          "E": T[k:] + V[k:], "W_nc": Y[6], "H_O": eq.angular_momentum(m, X, Vel), "t": times, "Y": Y,
-         "rest": np.array(rest, dtype=bool)}
+         "rest": rest}
     if steps:
         S["energies"] = (T, V, Z[6])
     return S
-
-
-_ZERO3 = (0.0, 0.0, 0.0)
 
 
 def report_terms(res, p, F, traj, S) -> None:

@@ -20,7 +20,9 @@ stop falls in it, or for every step when the trajectory must be evaluated anywhe
 
 from __future__ import annotations
 
+import bisect
 import math
+from itertools import repeat
 
 import numpy as np
 
@@ -36,11 +38,12 @@ MAX_PHASES = 20000
 class OdePhase:
     """One integrated phase on [t0, t1]: the accepted steps (``steps_t``, ``steps_y`` 7 x n), the
     phase's right-hand side, and ``sol`` (a scipy ``OdeSolution`` over its steps) when the run
-    kept every step's dense output (``dense=True``), else None."""
+    kept every step's dense output (``dense=True``), else None; ``d``: the friction reference
+    direction of the phase (its right-hand side on many states: ``Forces.accelerations``)."""
 
-    def __init__(self, t0, t1, sol, rhs, steps_t, steps_y):
+    def __init__(self, t0, t1, sol, rhs, steps_t, steps_y, d=None):
         self.t0, self.t1, self.sol, self.rhs = t0, t1, sol, rhs
-        self.steps_t, self.steps_y = steps_t, steps_y
+        self.steps_t, self.steps_y, self.d = steps_t, steps_y, (np.zeros(3) if d is None else np.asarray(d, float))
 
     def state(self, t):
         if self.t1 > self.t0 and self.sol is None:
@@ -99,11 +102,27 @@ class Trajectory:
     def state_array(self, times) -> tuple[np.ndarray, np.ndarray]:
         """The phase index of each time (as :meth:`phase_at`) and the states
         y (7 x N) at all ``times`` at once: a time recorded during the run takes its
-        recorded state; each phase's dense output is called once on the array of the others."""
-        got = [self.recorded.get(float(tt)) for tt in times]
-        if got and None not in got:
-            return np.array([k for k, _ in got], dtype=int), np.array([y for _, y in got], dtype=float).T
-        return self._dense_array(np.asarray(times, float))
+        recorded state; each phase's dense output is called once on the array of the others
+        (the recorded times looked up by one sorted search, not one at a time)."""
+        t = np.asarray(times, float).reshape(-1)
+        rt, ridx, rY = self._recorded_arrays()
+        pos = np.clip(np.searchsorted(rt, t), 0, max(rt.size - 1, 0))
+        hit = rt[pos] == t if rt.size else np.zeros(t.size, bool)
+        if hit.all():
+            return ridx[pos], rY[:, pos]
+        idx, Y = self._dense_array(t)
+        if hit.any():                           # the recorded states exactly (the same as the results)
+            idx[hit], Y[:, hit] = ridx[pos[hit]], rY[:, pos[hit]]
+        return idx, Y
+
+    def _recorded_arrays(self):
+        """(times sorted, phase indices, states 7 x R) of the recorded states, made once."""
+        if not hasattr(self, "_rec"):
+            ts = sorted(self.recorded)
+            got = [self.recorded[tt] for tt in ts]
+            self._rec = (np.array(ts, float), np.array([k for k, _ in got], dtype=int),
+                         np.array([y for _, y in got], dtype=float).reshape(-1, 7).T)
+        return self._rec
 
     def _dense_array(self, t):
         starts = np.array([ph.t0 for ph in self.phases])
@@ -115,19 +134,16 @@ class Trajectory:
         for j in np.flatnonzero(odd):
             idx[j] = self.phases.index(self.phase_at(float(t[j])))
         Y = np.empty((7, t.size))
-        for k, ph in enumerate(self.phases):
-            sel = np.flatnonzero(idx == k)
-            if sel.size == 0:
-                continue
+        order = np.argsort(idx, kind="stable")      # the times of each phase present, one slice each
+        cuts = np.flatnonzero(np.diff(idx[order])) + 1
+        for sel in np.split(order, cuts) if t.size else ():
+            ph = self.phases[int(idx[sel[0]])]
             if isinstance(ph, RestPhase):
                 Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[:, None]
             elif ph.t1 > ph.t0:
                 Y[:, sel] = ph.state(t[sel])
             else:
                 Y[:, sel] = ph.steps_y[:, :1]
-        for j, tt in enumerate(t.tolist()):     # the recorded states exactly (the same as the results)
-            if tt in self.recorded:
-                Y[:, j] = self.recorded[tt][1]
         return idx, Y
 
 
@@ -267,7 +283,7 @@ class _Run:
         sol = None
         if self.dense and sols:
             sol = runner.ode_solution(ts, sols)
-        self.phases.append(OdePhase(t0, ts[-1], sol, rhs, np.array(ts), Y))
+        self.phases.append(OdePhase(t0, ts[-1], sol, rhs, np.array(ts), Y, d))
         self.t, self.y = ts[-1], ys[-1]
         return not stop or ts[-1] >= self.t_end
 
@@ -298,12 +314,16 @@ class _Run:
                     t, y, sol = self._stop(solver, sol, d, t_old, t)
                     stop = True
                 g = g_new
-            while k < n_want and want[k] <= t:
-                tk = want[k]
-                if tk != t and sol is None:
-                    sol = solver.dense_output()
-                rec[tk] = (n_ph, y if tk == t else sol(tk))
-                k += 1
+            if k < n_want and want[k] <= t:         # the requested times in this step: one interpolation
+                j = bisect.bisect_right(want, t, k)
+                inner = want[k:j - 1] if want[j - 1] == t else want[k:j]
+                if inner:
+                    sol = sol or solver.dense_output()
+                    Yk = sol(np.array(inner)).T
+                    rec.update(zip(inner, zip(repeat(n_ph), Yk)))
+                if want[j - 1] == t:
+                    rec[t] = (n_ph, y)
+                k = j
             ts.append(t)
             ys.append(y)
             if dense:
