@@ -294,7 +294,7 @@ def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, no
     (the table, or a :class:`~dyncli.render.stream.RecordStream` that takes
     failures too) as it is solved; the outcomes kept when ``keep`` (else only
     the results' warnings, in ``notes``: a streamed sweep holds one point)."""
-    outcomes = []
+    outcomes: list[Outcome] = []
     for lp in problems:
         with _no_gc(True):          # one problem's results (1e5 times: millions of lists) built and written
             _one(lp, options, codes, debug, writer, notes, keep, outcomes)      # without collections walking them
