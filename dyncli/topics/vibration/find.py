@@ -3,9 +3,11 @@
 The motion is the closed-form total response at any time (:func:`closed_form.response_at`, or the
 force- or unbalance-excited :func:`forced.response_at`); its rates are exact (v is the rate of x, and the rates
 of v and w follow from the equation of motion (17.15a)), so a turning point is a root of the rate
-(Brent), never a sampled peak.  The breaks are an eighth of the shortest period present (the
-damped free vibration's, the excitation's), so every piece holds at most one turning point of
-each harmonic.
+(Brent), never a sampled peak.  The queries search between the exact turning points of the
+quantities they ask about (x: the roots of v; v: of the acceleration; w = x − s − L: of ẇ, the
+same equation of motion without the base's s), found by the sign analysis of :mod:`.turns` on
+the breaks (an eighth of the shortest period present, the damped free vibration's or the
+excitation's): each quantity is monotone between them, so no crossing or extremum can hide.
 
 ``distance`` is Σ|Δx| between the turning points (the roots of v).  Free vibration: the turning
 points in closed form (v ∝ e^(−ζωₙt) cos(ω*t + β) vanishes at ω*t + β = π/2 + kπ; at most one
@@ -21,7 +23,7 @@ from __future__ import annotations
 
 import math
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
@@ -212,10 +214,11 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     if not p.find:
         return
     breaks, capped = resp.breaks(t_end)
-    exact = _exact_paths(list(p.find), resp) and not capped    # (a capped grid: far too many turning points)
-    if exact and t_end > 0:         # every turning point of x and of v is a break: x, v monotone between
-        tx, tv, capped = _turning_points(resp, breaks, t_end)
-        breaks = sorted(set([0.0, t_end] + tx + tv))
+    asked = _asked_paths(list(p.find))
+    exact = asked is not None and not capped    # (a capped grid: far too many turning points)
+    if exact and t_end > 0:         # every turning point of each quantity asked is a break: monotone between
+        turns_at, capped = _turning_points(resp, breaks, t_end, asked)
+        breaks = sorted(set([0.0, t_end] + turns_at))
     if capped:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
@@ -228,33 +231,42 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
 
 
-def _turning_points(resp: Response, breaks: list[float], t_end: float):
-    """(the turning points of x, of v in (0, t_end), whether a search ran out of cells): in closed
-    form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
+def _turning_points(resp: Response, breaks: list[float], t_end: float, asked: set[str]):
+    """(the turning points in (0, t_end) of every quantity in ``asked``, whether a search ran out
+    of cells): of x (the roots of v; also the kinks of distance), of v (the roots of the
+    acceleration) and of w (the roots of ẇ; w = x − L without a base motion, so x's), each in
+    closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
     mo, arrays = resp.motion(), _on_arrays(len(breaks))
+    wants = [(mo, 1)] if asked & {"x", "distance"} else []
+    if "v" in asked:
+        wants.append((mo, 2))
+    wo = replace(mo, s0=0.0)        # w = x − s − L: the same equation of motion without the base's s
+    if "w" in asked and (wo, 1) not in wants:
+        wants.append((wo, 1))
     out, capped = [], False
-    for d in (1, 2):
-        got = turns.free_roots(mo, d, t_end)
+    for motion, d in wants:
+        got = turns.free_roots(motion, d, t_end)
         if got is None:
-            got, _, more = turns.roots(mo, breaks, d, arrays)
+            got, _, more = turns.roots(motion, breaks, d, arrays)
             capped = capped or more
-        out.append(got)
-    return out[0], out[1], capped
+        out += got
+    return out, capped
 
 
-def _exact_paths(find, resp: Response) -> bool:
-    """Whether every query asks about x, v, distance (or w without a base motion, w = x − L):
-    quantities monotone between the turning points of x and of v, so that a search over those
-    points alone is exact."""
-    ok = {"x", "v", "distance"} | ({"w"} if resp.s0 == 0.0 else set())
+def _asked_paths(find) -> set[str] | None:
+    """The quantities the queries ask about (x, v, w, distance), or None when a query is not one
+    of them (malformed: left to the queries' own messages).  Each is monotone between its
+    turning points (distance between those of x), so a search over those points alone is exact."""
+    ok, asked = {"x", "v", "w", "distance"}, set()
     for q in find if isinstance(find, (list, tuple)) else ():
         if not isinstance(q, dict):
-            return False
+            return None
         when = q.get("when")
         paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
         if not all(isinstance(x, str) and x in ok for x in paths):
-            return False
-    return True
+            return None
+        asked.update(paths)
+    return asked
 
 
 class _Motion:
