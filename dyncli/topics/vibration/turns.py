@@ -87,10 +87,11 @@ def jets(mo: Motion, t, d: int, X=None):
     return f, fd, bound, noise
 
 
-def _fast_jets(mo: Motion, d: int):
-    """:func:`jets` in plain floats with its constants hoisted (the steady state plus an
-    underdamped free part: no numpy, a few floating operations per time), or None where that
-    form does not apply (ζ ≥ 1, no excitation, near resonance)."""
+def _fast_jets(mo: Motion, d: int, X=math):
+    """:func:`jets` with its constants hoisted (the steady state plus an underdamped free part: a
+    few floating operations per time), or None where that form does not apply (ζ ≥ 1, no
+    excitation, near resonance): in plain floats (no numpy), or with ``X = numpy`` on arrays of
+    times (the same operations, element by element)."""
     wn, z, F, Om = mo.omega_n, mo.zeta, mo.F, mo.Om
     r = Om / wn
     D = complex((1.0 - r) * (1.0 + r), 2.0 * z * r)
@@ -108,7 +109,7 @@ def _fast_jets(mo: Motion, d: int):
     base = 16 * _EPS * (abs(F) * Om ** max(d - 2, 0) + abs(mo.s0) * Om ** d + abs(P) * (Om ** d + wn ** d))
     Fk = [F * Om ** (k - 1) for k in range(1, d + 2)]
     sd, sd1 = mo.s0 * Om ** d, mo.s0 * Om ** (d + 1)
-    exp, cos, sin, sqrt = math.exp, math.cos, math.sin, math.sqrt
+    exp, cos, sin, sqrt = X.exp, X.cos, X.sin, X.sqrt
 
     def jet(t: float):
         ex, y, th = exp(-sig * t), ws * t, Om * t
@@ -221,8 +222,9 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
 
     from dyncli.rootfind import newton_in_brackets
 
+    jet = _fast_jets(mo, d, np) or (lambda t: jets(mo, t, d, np))
     T = np.asarray(breaks, dtype=float)
-    F = jets(mo, T, d, np)[0]
+    F = jet(T)[0]
     found = [T[1:-1][F[1:-1] == 0.0]]
     a, b, fa, fb = T[:-1], T[1:], F[:-1], F[1:]
     touches: list = []
@@ -231,7 +233,7 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     while a.size:
         m, h = 0.5 * (a + b), 0.5 * (b - a)
         cells += a.size
-        f, fd, bound, noise = jets(mo, m, d, np)
+        f, fd, bound, noise = jet(m)
         J = bound(h)
         mono = np.abs(fd) > h * J
         und = ~mono & ~(np.abs(f) > h * np.abs(fd) + 0.5 * h * h * J + noise)
@@ -248,7 +250,7 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     k = FA * FB < 0
     if k.any():
         def FD(x, _):
-            r = jets(mo, x, d, np)
+            r = jet(x)
             return r[0], r[1]
         found.append(np.asarray(newton_in_brackets(FD, A[k], B[k], FA[k], FB[k]), dtype=float))
     return sorted(set(np.concatenate(found).tolist())), sorted(touches), cells >= MAX_CELLS
