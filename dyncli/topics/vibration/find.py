@@ -331,13 +331,34 @@ def _odometer(resp: Response, t_end: float):
     tps = _forced_turns(resp, t_end) if t_end > 0 else []
     if not _on_arrays(len(tps)):
         xv = resp.scalar()
-        at_turns = {t: xv(t)[0] for t in tps}
+        xs = [xv(t)[0] for t in tps]
     else:
-        at_turns = dict(zip(tps, resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()))
+        xs = resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()
+    return _Odometer(_turning_length(resp, tps, xs))
 
-    def x(u: float) -> float:
-        return at_turns[u] if u in at_turns else resp.at(u)[0]
-    return _Odometer(lambda ts: mf.turning_length(x, tps, ts))
+
+def _turning_length(resp: Response, tps: list[float], xs: list[float]):
+    """distance(times) of a motion whose x is monotone between the turning points ``tps`` (x
+    there ``xs``): Σ|Δx| accumulated once, then one evaluation of x per time asked
+    (:func:`dyncli.motion_find.turning_length`, the same sums, without a call per turning point)."""
+    import bisect
+
+    x0 = resp.at(0.0)[0]
+    cum, prev = [0.0], x0
+    for v in xs:
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
+    at_turns = dict(zip(tps, xs))
+
+    def many(times) -> list[float]:
+        out = []
+        for t in (float(u) for u in times):
+            k = bisect.bisect_left(tps, t)          # turning points strictly before t
+            last = xs[k - 1] if k else x0
+            x = at_turns[t] if t in at_turns else resp.at(t)[0]
+            out.append(cum[k] + abs(x - last) + 0.0)
+        return out
+    return many
 
 
 class _Odometer:
@@ -399,12 +420,21 @@ def _free_odometer(resp: Response):
 #: up to this many grid points the turning points are found in plain floats (no numpy import:
 #: a closed-form problem starts at the import floor), beyond it on arrays
 SCALAR_GRID = 2048
+#: grid points a process searches in plain floats before it imports numpy for the rest: about as
+#: much work as numpy's import (~0.1 s), so a single problem never pays it and a sweep or a batch
+#: of long searches (a forced motion's distance, every point) pays it once
+FLOAT_BUDGET = 20_000
+_spent = [0]
 
 
 def _on_arrays(n: int) -> bool:
-    """Whether n points go on numpy arrays: when they are many, or numpy is loaded already (a
-    sweep, the Python API), where one vectorised pass costs less than n calls in floats."""
-    return n > SCALAR_GRID or "numpy" in sys.modules
+    """Whether n points go on numpy arrays: when they are many, when numpy is loaded already (a
+    sweep through the Python API), or once this process has searched FLOAT_BUDGET points in plain
+    floats (a sweep from the command line) — one vectorised pass then costs less than n calls."""
+    if n > SCALAR_GRID or "numpy" in sys.modules or _spent[0] + n > FLOAT_BUDGET:
+        return True
+    _spent[0] += n
+    return False
 
 
 def _forced_turns(resp: Response, t_end: float) -> list[float]:
