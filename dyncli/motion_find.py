@@ -33,14 +33,15 @@ def flatten(node: Any, prefix: str = "") -> dict[str, float]:
     """{dotted path: number} of one instant (list items by their index from 0; booleans and
     text left out)."""
     out: dict[str, float] = {}
-    if isinstance(node, Mapping):
+    if isinstance(node, float) or (isinstance(node, int) and not isinstance(node, bool)):
+        if prefix:                                  # (numbers first: typing's Mapping check is slow)
+            out[prefix[:-1]] = float(node)
+    elif isinstance(node, (dict, Mapping)):
         for k, v in node.items():
             out.update(flatten(v, f"{prefix}{k}."))
     elif isinstance(node, (list, tuple)):
         for i, v in enumerate(node):
             out.update(flatten(v, f"{prefix}{i}."))
-    elif isinstance(node, (int, float)) and not isinstance(node, bool) and prefix:
-        out[prefix[:-1]] = float(node)
     return out
 
 

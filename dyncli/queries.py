@@ -201,6 +201,8 @@ def _check_path(motion: Any, path: str, where: str) -> None:
 def sample_grid(breaks: Iterable[float], lo: float, hi: float, n: int = SUBDIVIDE) -> list[float]:
     """lo, the breaks inside (lo, hi) and hi, each interval cut into n (SUBDIVIDE) equal pieces."""
     pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
+    if n == 1:                                        # the breaks themselves, without repeats
+        return [x for i, x in enumerate(pts) if i == 0 or x > pts[i - 1]]
     out = [lo]
     for a, b in zip(pts, pts[1:]):
         out += [x for x in (a + (b - a) * k / n for k in range(1, n)) if a < x < b] + [b]

@@ -75,28 +75,11 @@ class Response:
                                   v0=p.v0, F0=self.fo[0], Om=self.fo[1])
 
     def fast_at(self):
-        """:meth:`at` of a free vibration below critical damping with its constants hoisted, or
-        None for any other motion: the operations of :func:`closed_form.free_at` and
-        :func:`closed_form.response_at` one by one, so the same doubles at a fifth of the cost
-        (a ``find`` search evaluates the motion a few hundred times)."""
-        wn, z, L = self.omega_n, self.zeta, self.L
-        if self.fo is not None or self.s0 != 0.0 or not 0.0 <= z < 1.0:
+        """:meth:`at` of a free vibration below critical damping with its constants hoisted
+        (:func:`closed_form.free_response_fn`: the same doubles), or None for any other motion."""
+        if self.fo is not None or self.s0 != 0.0:
             return None
-        w0, wd0 = self.x0 - L, self.p.v0
-        ws = cf.roots(wn, z)[0]
-        a, b, K = -z * wn, wd0 + z * wn * w0, wn * (wn * w0) + z * wn * wd0
-        exp, cos, sin, slow = math.exp, math.cos, math.sin, self.at
-
-        def at(t: float) -> tuple[float, float, float]:
-            try:
-                y = ws * t
-                ex, c = exp(a * t), cos(y)
-                ts = t * (sin(y) / y) if y != 0 else t
-            except (ValueError, OverflowError):    # beyond the float range: numpy's conventions
-                return slow(t)
-            w = ex * (w0 * c + b * ts) + 0.0
-            return w + L, ex * (wd0 * c - K * ts) + 0.0, w
-        return at
+        return cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
 
     def scalar(self):
         """(x, v)(t) in plain floats: the steady state plus the free vibration that makes up the
@@ -387,18 +370,20 @@ def _free_odometer(resp: Response):
             y1 = math.pi
         t1, half = y1 / ws, math.pi / ws
         decay = z * wn * half                         # ln of the ratio of successive |w| at turning points
+        fast = resp.fast_at()                         # the same doubles as free_at, constants hoisted
+        if fast is not None:
+            w = lambda t: fast(t)[2]                  # noqa: E731
+        w1 = w(t1)
+        a1, first = abs(w1), abs(w1 - w0)
+        c1, em1 = a1 * (1.0 + math.exp(-decay)), math.expm1(-decay)     # (the series' constants)
 
         def odometer(t: float) -> float:
             if (w0 == 0.0 and wd0 == 0.0) or t <= t1:
                 return abs(w(t) - w0)
             k = math.floor((t - t1) / half)           # turning points t1 + j·half, j = 0..k, at or before t
             tk = t1 + k * half
-            a1 = abs(w(t1))
-            if decay == 0.0:
-                inner = 2.0 * a1 * k
-            else:
-                inner = a1 * (1.0 + math.exp(-decay)) * math.expm1(-k * decay) / math.expm1(-decay)
-            return abs(w(t1) - w0) + inner + abs(w(t) - w(tk))
+            inner = 2.0 * a1 * k if decay == 0.0 else c1 * math.expm1(-k * decay) / em1
+            return first + inner + abs(w(t) - w(tk))
         return _Odometer(lambda ts: [odometer(t) for t in ts], odometer)
     # ζ ≥ 1: v vanishes at most once (a sum of two decaying exponentials)
     v = lambda t: cf.free_at(t, w0, wd0, wn, z)[1]    # noqa: E731
