@@ -10,7 +10,8 @@ optional ``rtol`` (the values' relative accuracy, default 0: exact to rounding; 
 tolerance within which a value touches VALUE and two extremes are equal); optional ``monotone``
 (True when every result asked about is monotone between two breaks — the breaks hold all its
 turning points, decided exactly by the type — so that its extremes are samples and no touch or
-pair of crossings hides between two: no search inside a span).  Each answer is
+pair of crossings hides between two: no search inside a span); optional ``breaks_for(path)``
+(the breaks of one result when they differ by result, such as its own turning points).  Each answer is
 ``{"t", "reached", "at_end"}``; the caller adds the state at ``t``.
 
 Every break interval is cut into :data:`SUBDIVIDE` pieces and sampled at their ends.  ``when``:
@@ -233,7 +234,7 @@ def _when(motion: Any, q: When) -> float | None:
     grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
     well inside it (a long search for an early event samples no further than it needs)."""
     path, V = q.path, q.value
-    T = sample_grid(motion.breaks, float(motion.t0), float(motion.t_end), subdivisions(motion))
+    T = sample_grid(_breaks(motion, path), float(motion.t0), float(motion.t_end), subdivisions(motion))
     want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
     ahead = getattr(motion, "prefetch", None)
     F: list[float] = []
@@ -361,7 +362,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
     h = lambda t: sense * float(motion.value(path, t))     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
-    T = sample_grid(motion.breaks, w1, w2, subdivisions(motion))
+    T = sample_grid(_breaks(motion, path), w1, w2, subdivisions(motion))
     H = [h(t) for t in T]
     cands = [(T[0], H[0]), (T[-1], H[-1])]
     if _monotone(motion):                             # the turning points are samples: no search
@@ -394,6 +395,13 @@ def _turning(h, hr, T: list[float], H: list[float]) -> list[tuple[float, float]]
         cands += [_peak(h, None, a, b) for a, b, ha, hb in ((T[0], T[1], H[0], H[1]), (T[-2], T[-1], H[-1], H[-2]))
                   if ha >= hb]
     return cands
+
+
+def _breaks(motion: Any, path: str) -> list[float]:
+    """The breaks searched for ``path``: ``motion.breaks_for(path)`` when the motion has its own
+    for each result (the turning points of that result alone), else ``motion.breaks``."""
+    own = getattr(motion, "breaks_for", None)
+    return motion.breaks if own is None else own(path)
 
 
 def _monotone(motion: Any) -> bool:

@@ -213,8 +213,8 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     asked = _asked_paths(list(p.find))
     exact = asked is not None and not capped    # (a capped grid: far too many turning points)
     if exact and t_end > 0:         # every turning point of each quantity asked is a break: monotone between
-        turns_at, capped = _turning_points(resp, breaks, t_end, asked)
-        breaks = sorted(set([0.0, t_end] + turns_at))
+        own, capped = _turning_points(resp, breaks, t_end, asked)
+        breaks = sorted(set([0.0, t_end]).union(*own.values()))
     if capped:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
@@ -224,29 +224,31 @@ def report(p: Setup, res, omega_n, zeta) -> None:
         return {"x": xx, "v": v, "w": w, "distance": odo(t)}
 
     motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None, monotone=exact and not capped)
+    if exact and t_end > 0:
+        motion.own = {path: [0.0] + sorted(t for t in ts if 0.0 < t < t_end) + [motion.t_end]
+                      for path, ts in own.items()}
     mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
 
 
 def _turning_points(resp: Response, breaks: list[float], t_end: float, asked: set[str]):
-    """(the turning points in (0, t_end) of every quantity in ``asked``, whether a search ran out
-    of cells): of x (the roots of v; also the kinks of distance), of v (the roots of the
+    """({quantity: its turning points in (0, t_end)} for every quantity in ``asked``, whether a
+    search ran out of cells): of x (the roots of v; also the kinks of distance), of v (the roots of the
     acceleration) and of w (the roots of ẇ; w = x − L without a base motion, so x's), each in
     closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
     mo, arrays = resp.motion(), _on_arrays(len(breaks))
-    wants = [(mo, 1)] if asked & {"x", "distance"} else []
-    if "v" in asked:
-        wants.append((mo, 2))
-    if "w" in asked:                # w = x − s − L: the same equation of motion without the base's s
-        wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo
-        if (wo, 1) not in wants:
-            wants.append((wo, 1))
-    out, capped = [], False
-    for motion, d in wants:
-        got = turns.free_roots(motion, d, t_end)
-        if got is None:
-            got, _, more = turns.roots(motion, breaks, d, arrays)
-            capped = capped or more
-        out += got
+    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo   # w = x − s − L: the same equation without s
+    which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+    found: dict = {}
+    out, capped = {}, False
+    for path in sorted(asked):
+        key = which[path]
+        if key not in found:
+            got = turns.free_roots(key[0], key[1], t_end)
+            if got is None:
+                got, _, more = turns.roots(key[0], breaks, key[1], arrays)
+                capped = capped or more
+            found[key] = got
+        out[path] = found[key]
     return out, capped
 
 
@@ -277,6 +279,7 @@ class _Motion:
                  monotone: bool = False):
         self.resp, self.odo, self.t_end = resp, odo, float(t_end)
         self.monotone = monotone        # the breaks hold every turning point of each quantity asked
+        self.own: dict[str, list[float]] = {}     # each quantity's own breaks (its turning points)
         self.breaks = [0.0] + sorted({float(b) for b in breaks if 0.0 < b < t_end}) + [self.t_end]
         self.subdivide = subdivide
         self.period = None
@@ -284,6 +287,10 @@ class _Motion:
 
     def paths(self) -> list[str]:
         return ["distance", "v", "w", "x"]
+
+    def breaks_for(self, path: str) -> list[float]:
+        """The breaks searched for ``path``: its own turning points when known, else all."""
+        return self.own.get(path, self.breaks)
 
     def value(self, path: str, t: float) -> float:
         if path == "distance":
@@ -304,7 +311,9 @@ class _Motion:
         return abs(self.at(t)[1]) if path == "distance" else None
 
     def clipped(self, t_end: float) -> "_Motion":
-        return _Motion(self.resp, self.odo, t_end, self.breaks, self.subdivide, self.monotone)
+        out = _Motion(self.resp, self.odo, t_end, self.breaks, self.subdivide, self.monotone)
+        out.own = {k: [b for b in v if b < t_end] + [float(t_end)] for k, v in self.own.items()}
+        return out
 
 
 def _odometer(resp: Response, t_end: float):

@@ -174,11 +174,18 @@ def _classify(f, fd, bound, noise, h):
 def _roots_floats(mo: Motion, breaks: list[float], d: int):
     jet = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
     F = [jet(t)[0] for t in breaks]
-    span = breaks[-1] - breaks[0]           # cells below its rounding are not halved further
     out: list[float] = [t for t, f in zip(breaks[1:-1], F[1:-1]) if f == 0.0]
-    touches: list[float] = []
     stack = [(a, b, fa, fb) for a, b, fa, fb in zip(breaks, breaks[1:], F, F[1:])][::-1]
-    cells = 0
+    got, touches, cells = _cells_floats(jet, stack, breaks[0], breaks[-1], 0)
+    return sorted(set(out + got)), touches, cells >= MAX_CELLS
+
+
+def _cells_floats(jet, stack: list, lo: float, hi: float, cells: int):
+    """(the roots, the touches, the cells examined so far) of the cells (a, b, f(a), f(b)) on
+    ``stack`` (the last first) of the search over [lo, hi], in plain floats."""
+    span = hi - lo                          # cells below its rounding are not halved further
+    out: list[float] = []
+    touches: list[float] = []
     while stack:
         a, b, fa, fb = stack.pop()
         m, h = 0.5 * (a + b), 0.5 * (b - a)
@@ -188,13 +195,19 @@ def _roots_floats(mo: Motion, breaks: list[float], d: int):
         if kind == 1 or (kind == -1 and (m <= a or m >= b or h <= 4 * _EPS * max(abs(m), span))):
             if fa * fb < 0:
                 out.append(_newton(jet, a, b, fa, fb))
-            elif kind == -1 and abs(f) <= noise and breaks[0] < a and b < breaks[-1]:
+            elif kind == -1 and abs(f) <= noise and lo < a and b < hi:
                 touches.append(m)
         elif kind == -1:
             if f == 0.0:
                 out.append(m)
             stack += [(m, b, f, fb), (a, m, fa, f)]
-    return sorted(set(out)), touches, cells >= MAX_CELLS
+    return out, touches, cells
+
+
+#: when this few cells are left undecided, the array search finishes them in plain floats (a cell
+#: at a root of high order, such as a start from rest, is halved some 40 times: one float
+#: evaluation each instead of a round of array operations)
+FEW_CELLS = 8
 
 
 def _newton(jet, a: float, b: float, fa: float, fb: float) -> float:
@@ -231,6 +244,13 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     ends: list[list] = [[], [], [], []]
     cells = 0
     while a.size:
+        if a.size <= FEW_CELLS and cells:
+            jf = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
+            got, more, cells = _cells_floats(jf, list(zip(a.tolist(), b.tolist(), fa.tolist(), fb.tolist()))[::-1],
+                                             breaks[0], breaks[-1], cells)
+            found.append(np.asarray(got, dtype=float))
+            touches += more
+            break
         m, h = 0.5 * (a + b), 0.5 * (b - a)
         cells += a.size
         f, fd, bound, noise = jet(m)
