@@ -287,13 +287,22 @@ def attach(res: Any, raw: list, entries: list[dict]) -> None:
     rows = []
     for i, (q, e) in enumerate(zip(raw, entries)):
         text, path = _asked(q)
-        value = flatten(e).get(path) if (path and e.get("reached")) else None
+        value = _value_of(e, path) if (path and e.get("reached")) else None
         rows.append([i, text, e.get("t"), value if value is not None else "—",
                      "yes" if e.get("at_end") else ("no" if e.get("at_end") is False else "—")])
     res.results["find"] = entries
     res.views.append(_table(rows))
     if "find" not in res.covered:
         res.covered.append("find")
+
+
+def _value_of(entry: dict, path: str) -> float | None:
+    """The number at ``path`` of one answer (a top-level number read directly, else through
+    :func:`flatten`)."""
+    got = entry.get(path)
+    if isinstance(got, float) or (isinstance(got, int) and not isinstance(got, bool)):
+        return float(got)
+    return flatten(entry).get(path)
 
 
 def _table(rows):
