@@ -39,20 +39,22 @@ def norm(x):
     return np.linalg.norm(x) / x.size ** 0.5
 
 
-def select_initial_step(fun, t0, y0, t_bound, max_step, f0, direction, order, rtol, atol):
+def select_initial_step(fun, t0, y0, t_bound, max_step, f0, direction, order, rtol, atol, controlled=None):
     """The starting step (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.4), no longer than the
-    interval or ``max_step``."""
+    interval or ``max_step``; ``controlled``: the norms over the first that many components only
+    (None: all, as scipy)."""
     interval_length = abs(t_bound - t0)
     if interval_length == 0.0:
         return 0.0
-    scale = atol + np.abs(y0) * rtol
-    d0 = norm(y0 / scale)
-    d1 = norm(f0 / scale)
+    c = slice(controlled)
+    scale = atol + np.abs(y0[c]) * rtol
+    d0 = norm(y0[c] / scale)
+    d1 = norm(f0[c] / scale)
     h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
     h0 = min(h0, interval_length)
     y1 = y0 + h0 * direction * f0
     f1 = fun(t0 + h0 * direction, y1)
-    d2 = norm((f1 - f0) / scale) / h0
+    d2 = norm((f1[c] - f0[c]) / scale) / h0
     if d1 <= 1e-15 and d2 <= 1e-15:
         h1 = max(1e-6, h0 * 1e-3)
     else:
@@ -61,7 +63,15 @@ def select_initial_step(fun, t0, y0, t_bound, max_step, f0, direction, order, rt
 
 
 class DOP853:
-    """Explicit Runge-Kutta 8(5,3) of Dormand and Prince (scipy's ``DOP853``, same steps)."""
+    """Explicit Runge-Kutta 8(5,3) of Dormand and Prince (scipy's ``DOP853``, same steps).
+
+    ``controlled`` (dyncli's, not scipy's; None by default: scipy's steps): only the first that
+    many components of the state enter the error norm of the step-size control and of the
+    starting step.  The rest are carried by the same stages without steering the steps: for
+    integrals of the motion's own quantities such as a work ∫ P dt or an arc length ∫ ṡ dt,
+    which are quadratures of the controlled state (their error is of the order of the
+    controlled components' own), so that carrying them costs no extra steps (and a component
+    that is exact, such as φ = ω t, does not dilute the norm)."""
 
     n_stages = dc.N_STAGES
     order = 8
@@ -77,7 +87,7 @@ class DOP853:
     TOO_SMALL_STEP = "Required step size is less than spacing between numbers."
 
     def __init__(self, fun, t0, y0, t_bound, max_step=np.inf, rtol=1e-3, atol=1e-6,
-                 vectorized=False, first_step=None):
+                 vectorized=False, first_step=None, controlled=None):
         if vectorized:
             raise ValueError("dyncli's DOP853 steps one state at a time (vectorized=False)")
         y0 = np.asarray(y0).astype(float, copy=False)
@@ -98,10 +108,11 @@ class DOP853:
             raise ValueError("`atol` has wrong shape.")
         if np.any(self.atol < 0):
             raise ValueError("`atol` must be positive.")
+        self.controlled = None if controlled is None or controlled >= self.n else int(controlled)
         self.f = self.fun(self.t, self.y)
         if first_step is None:
             self.h_abs = select_initial_step(self.fun, self.t, self.y, t_bound, max_step, self.f, self.direction,
-                                             self.error_estimator_order, self.rtol, self.atol)
+                                             self.error_estimator_order, self.rtol, self.atol, self.controlled)
         elif first_step <= 0 or first_step > np.abs(t_bound - t0):
             raise ValueError("`first_step` must be positive and within the interval.")
         else:
@@ -152,6 +163,8 @@ class DOP853:
     def _error_norm(self, h, scale):
         """Hairer's error norm of DOP853 (the 5th-order estimate corrected by the 3rd)."""
         K = self.K
+        if self.controlled is not None:
+            K, scale = K[:, :self.controlled], scale[:self.controlled]
         err5 = np.dot(K.T, self.E5) / scale
         err3 = np.dot(K.T, self.E3) / scale
         err5_norm_2 = np.linalg.norm(err5) ** 2
@@ -200,18 +213,35 @@ class DOP853:
             raise RuntimeError("Dense output is available after a successful step was made.")
         if self.n == 0 or self.t == self.t_old:
             return ConstantOutput(self.t_old, self.t, self.y)
-        K, h = self.K_extended, self.h_previous
-        for s, (a, c) in enumerate(zip(self.A_EXTRA, self.C_EXTRA), start=self.n_stages + 1):
-            dy = np.dot(K[:s].T, a[:s]) * h
-            K[s] = self.fun(self.t_old + c * h, self.y_old + dy)
-        F = np.empty((dc.INTERPOLATOR_POWER, self.n), dtype=self.y_old.dtype)
-        f_old = K[0]
-        delta_y = self.y - self.y_old
-        F[0] = delta_y
-        F[1] = h * f_old - delta_y
-        F[2] = 2 * delta_y - h * (self.f + f_old)
-        F[3:] = h * np.dot(self.D, K)
-        return DenseOutput(self.t_old, self.t, self.y_old, F)
+        return _interpolant(self.fun, self.K_extended, self.t_old, self.t, self.y_old, self.y, self.f, self.h_previous)
+
+    def dense_later(self):
+        """The interpolant of the last accepted step, built on its first call (its three extra
+        stages evaluated then, the same values as :meth:`dense_output`'s): a run that keeps every
+        step's interpolant pays only for the steps it reads."""
+        if self.t_old is None:
+            raise RuntimeError("Dense output is available after a successful step was made.")
+        if self.n == 0 or self.t == self.t_old:
+            return ConstantOutput(self.t_old, self.t, self.y)
+        K = np.empty_like(self.K_extended)
+        K[:self.n_stages + 1] = self.K
+        return LazyDense(self.fun, K, self.t_old, self.t, self.y_old, self.y, self.f, self.h_previous)
+
+
+def _interpolant(fun, K, t_old, t, y_old, y, f, h):
+    """The :class:`DenseOutput` of a step from its stages ``K`` (the three extra ones filled in)."""
+    n = y_old.size
+    for s, (a, c) in enumerate(zip(DOP853.A_EXTRA, DOP853.C_EXTRA), start=DOP853.n_stages + 1):
+        dy = np.dot(K[:s].T, a[:s]) * h
+        K[s] = fun(t_old + c * h, y_old + dy)
+    F = np.empty((dc.INTERPOLATOR_POWER, n), dtype=y_old.dtype)
+    f_old = K[0]
+    delta_y = y - y_old
+    F[0] = delta_y
+    F[1] = h * f_old - delta_y
+    F[2] = 2 * delta_y - h * (f + f_old)
+    F[3:] = h * np.dot(DOP853.D, K)
+    return DenseOutput(t_old, t, y_old, F)
 
 
 class _Interpolant:
@@ -250,6 +280,20 @@ class DenseOutput(_Interpolant):
                 y *= 1 - x
         y += self.y_old
         return y.T
+
+
+class LazyDense(_Interpolant):
+    """A step's :class:`DenseOutput` made on its first call (:meth:`DOP853.dense_later`)."""
+
+    def __init__(self, fun, K, t_old, t, y_old, y, f, h):
+        super().__init__(t_old, t)
+        self._args, self._dense = (fun, K, t_old, t, y_old, y, f, h), None
+
+    def _call_impl(self, t):
+        if self._dense is None:
+            self._dense = _interpolant(*self._args)
+            self._args = None
+        return self._dense._call_impl(t)
 
 
 class ConstantOutput(_Interpolant):

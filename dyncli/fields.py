@@ -334,6 +334,20 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
     return FieldSpec(validate, schema)
 
 
+def check_times(p) -> None:
+    """A motion's report times, checked on its model ``p`` (fields ``t_end`` and ``at``): t_end
+    defaults to max(at); every time of at in [0, t_end]; at defaults to [0, t_end]."""
+    if p.t_end is None:
+        if not p.at:
+            raise InputError("give t_end or the times 'at' (t_end defaults to the largest time in 'at')", "t_end")
+        p.t_end = max(p.at)
+    for i, t in enumerate(p.at):
+        if t < 0 or t > p.t_end:
+            raise InputError(f"time {t:g} is outside [0, t_end = {p.t_end:g}]", f"at.{i}")
+    if not p.at:
+        p.at = [0.0, p.t_end]
+
+
 #: the ``find`` queries of a motion (§11), validated where they are answered (dyncli.queries), each
 #: error at its ``find.N.<field>``
 FIND_SCHEMA = {"type": "array", "items": {"type": "object"},

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Iterable, Union
 
 from dyncli.errors import InputError
+from dyncli.rootfind import root
 from dyncli.expr import did_you_mean
 
 __all__ = ["AtTime", "When", "Extreme", "Query", "parse_queries", "answer", "SUBDIVIDE"]
@@ -427,15 +428,6 @@ def _turn(hr: Callable[[float], float], a: float, b: float, c: float | None) -> 
 def _hr_psi(hr: Callable[[float], float], t: float) -> float:
     """hr(t), an exact zero counted as negative: a root is the first time hr stops being positive."""
     return y if (y := hr(t)) != 0 else -_TINY
-
-
-def root(f: Callable[[float], float], xa: float, xb: float, xtol: float = 1e-300, rtol: float = 4 * _EPS,
-          maxiter: int = 2000) -> float:
-    """The root of f bracketed by [xa, xb] to full double accuracy (4 eps relative in t): the
-    project's one Brent (:func:`dyncli.rootfind.brent`)."""
-    from dyncli.rootfind import brent
-
-    return brent(f, xa, xb, xtol, rtol, maxiter)
 
 
 def _peak(h, hr, a: float, b: float) -> tuple[float, float]:

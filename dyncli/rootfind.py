@@ -7,6 +7,7 @@ root finders directly (``tests/test_one_runner.py``)."""
 
 from __future__ import annotations
 
+import functools
 import math
 import struct
 import sys
@@ -239,6 +240,13 @@ def newton_in_brackets(FD, a, b, fa, fb, maxit: int = 100):
     return root
 
 
+def root(f, xa: float, xb: float, xtol: float = 1e-300, rtol: float = 4 * sys.float_info.epsilon,
+         maxiter: int = 2000) -> float:
+    """The root of ``f`` bracketed by [xa, xb] to full double accuracy (4 ε relative in x): the
+    project's one Brent (:func:`brent`) with the tolerances every ``find`` query uses."""
+    return brent(f, xa, xb, xtol, rtol, maxiter)
+
+
 def minimize_bounded(f, lo: float, hi: float, xatol: float):
     """The minimum of ``f`` on [lo, hi] by Brent's bounded method (scipy's
     ``minimize_scalar(method="bounded")``, imported here only, lazily): (x, f(x))."""
@@ -329,6 +337,62 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
                                    4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
         roots += [v] if fs[-1] == 0 and v == b else []
     return sorted(set(roots)), sorted(touches), bad
+
+
+@functools.lru_cache(maxsize=8)
+def _derivative_series(deg: int):
+    """(the deg + 1 Chebyshev points of the first kind, the matrix taking a polynomial's values
+    there to the Chebyshev coefficients of its derivative): interpolation and differentiation
+    in one product."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    x = C.chebpts1(deg + 1)
+    to_series = C.chebvander(x, deg) / (deg + 1)
+    to_series[:, 1:] *= 2
+    return x, to_series @ C.chebder(np.eye(deg + 1), axis=0).T
+
+
+def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
+    """The critical points of polynomial curves, decided exactly, never by samples: for each
+    piece ``(f, a, b)`` of ``pieces`` (an ODE step's dense output on its step: ``f`` on an array
+    of n times gives an array of shape (components, n), each component a polynomial of degree at
+    most ``deg``), the critical points inside (a, b) of each component.  Each component is
+    interpolated at deg + 1 Chebyshev points — its exact Chebyshev series, to rounding — and the
+    critical points are the real roots of that series' derivative (its companion matrix, as
+    :func:`all_roots` does on each cell).  A derivative whose constant coefficient exceeds the
+    sum of the others' magnitudes has no root on the interval (|T_k| <= 1): none is looked for
+    (all pieces at once, in arrays: only the few near an extreme find roots).  Roots of the
+    derivative with a small imaginary part (a near-double root, whose real pair the rounding may
+    have made complex) are kept too: between consecutive points returned each component is
+    monotone.  A component constant to its rounding (its derivative's coefficients within
+    4 deg² eps of its size) or not finite on the piece gives none."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    pieces = list(pieces)
+    if not pieces:
+        return []
+    x, W = _derivative_series(deg)
+    ab = np.array([(a, b) for _, a, b in pieces], dtype=float)
+    m, h = 0.5 * (ab[:, 0] + ab[:, 1]), 0.5 * (ab[:, 1] - ab[:, 0])
+    with np.errstate(all="ignore"):
+        y = np.stack([np.atleast_2d(np.asarray(f(mk + hk * x), dtype=float)) for (f, _, _), mk, hk in zip(pieces, m, h)])
+        d = y @ W                                       # (pieces, components, deg): the derivative's series
+        noise = 4 * deg * deg * sys.float_info.epsilon * np.max(np.abs(y), axis=-1)   # the rounding of y, differentiated
+        look = (np.all(np.isfinite(d), axis=-1) & (np.abs(d[..., 0]) <= np.sum(np.abs(d[..., 1:]), axis=-1))
+                & (np.max(np.abs(d), axis=-1) > noise))
+    out: list[list[list[float]]] = [[[] for _ in range(d.shape[1])] for _ in pieces]
+    for i, j in zip(*np.nonzero(look)):
+        try:
+            with np.errstate(all="ignore"):
+                r = C.chebroots(np.trim_zeros(d[i, j], "b"))
+        except np.linalg.LinAlgError:
+            continue
+        keep = (np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)
+        a, b = ab[i]
+        out[i][j] = sorted({float(m[i] + h[i] * t) for t in np.real(r[keep]) if a < m[i] + h[i] * t < b})
+    return out
 
 
 def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):

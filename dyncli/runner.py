@@ -14,6 +14,9 @@ What lives here, once:
 * :func:`solve_ivp` and :func:`ode_solution` — scipy's driver (with scipy's classes) and the
   piecewise interpolant, with
   every accepted step counted by the work budget (:class:`dyncli.ode.Budget`);
+* :func:`march` — the runner's own event driver (terminal events located as scipy's
+  ``solve_ivp`` locates them) over dyncli's DOP853, each step's interpolant made only when read,
+  and the step control over the state's leading components only (``controlled``);
 * :class:`Route` — the contract of a route (below), whose :meth:`Route.estimate_error` is the
   check-solve and fallback policy (:func:`dyncli.ode.check_solve`,
   :func:`dyncli.ode.nominal_estimate`, :func:`dyncli.ode.tighter`).
@@ -42,6 +45,68 @@ def solve_ivp(fun, t_span, y0, *, method: str, budget, check_finite: bool = True
 
     cls = ode.budgeted(method, budget, stop_nonfinite=stop_nonfinite, check_finite=check_finite, scipy=True)
     return scipy_solve_ivp(fun, t_span, y0, method=cls, **kw)
+
+
+class Marched:
+    """A :func:`march`: the accepted steps' times ``t`` and states ``y`` (n × steps), ``sol`` the
+    interpolant over them, ``status`` 0 (t_end reached) or 1 (a terminal event), and the event:
+    ``event`` (its index, or None), ``t_event``, ``y_event``."""
+
+    def __init__(self, t, y, sol, status, event=None, t_event=None, y_event=None):
+        self.t, self.y, self.sol, self.status = t, y, sol, status
+        self.event, self.t_event, self.y_event = event, t_event, y_event
+
+
+def march(fun, t0: float, y0, t_end: float, *, method: str, budget, rtol: float, atol: float, events=(),
+          max_step: float = math.inf, controlled: int | None = None) -> Marched:
+    """y' = fun(t, y) from (t0, y0) towards t_end, stopped by the first terminal event: scipy's
+    ``solve_ivp(..., dense_output=True, events=...)`` for terminal events, with the runner's own
+    loop (:func:`dyncli.ode.steps`, every accepted step counted by ``budget``).  An event
+    ``g(t, y)`` (scipy's convention: its ``direction``) is checked at every step's end and its
+    root located by Brent's method on the step's interpolant (``xtol = rtol = 4 ε``, as scipy);
+    the earliest root of the step ends the run.  With dyncli's DOP853 (``method`` DOP853) a
+    step's interpolant is made only when it is read (:meth:`dyncli.dop853.DOP853.dense_later`)
+    and ``controlled`` leading components alone steer the steps (the rest: quadratures of the
+    motion carried along, see :class:`dyncli.dop853.DOP853`); with another method every
+    component is controlled.  ``fun`` checks its own rates (a non-finite rate is its error)."""
+    import numpy as np
+
+    from dyncli.rootfind import brent
+
+    cls = solver_class(method)
+    kw = {"controlled": controlled} if controlled is not None and method == "DOP853" else {}
+    solver = cls(fun, t0, np.asarray(y0, dtype=float), t_end, rtol=rtol, atol=atol, max_step=max_step, **kw)
+    lazy = getattr(solver, "dense_later", None) or solver.dense_output
+    eps4 = 4 * float(np.finfo(float).eps)
+    dirs = [float(getattr(ev, "direction", 0.0)) for ev in events]
+    g = [float(ev(t0, solver.y)) for ev in events]
+    ts, ys, sols = [float(t0)], [solver.y.copy()], []
+    for _ in ode.steps(solver, budget, method):
+        t_old, t, y = float(solver.t_old), float(solver.t), solver.y
+        sol = lazy()
+        hit = None
+        if events:
+            g_new = [float(ev(t, y)) for ev in events]
+            for i, (a, b, d) in enumerate(zip(g, g_new, dirs)):
+                up, down = a <= 0 <= b, a >= 0 >= b
+                if (up and d > 0) or (down and d < 0) or ((up or down) and d == 0):
+                    root = brent(lambda s, ev=events[i]: ev(s, sol(s)), t_old, t, eps4, eps4, 100)
+                    if hit is None or root < hit[0]:
+                        hit = (root, i)
+            g = g_new
+        if hit is not None:
+            y = sol(hit[0])
+            t = hit[0]
+        ts.append(t)
+        ys.append(y if method != "LSODA" else y.copy())
+        sols.append(sol)
+        if hit is not None:
+            from dyncli.dop853 import OdeSolution
+
+            return Marched(np.array(ts), np.array(ys).T, OdeSolution(ts, sols), 1, hit[1], hit[0], np.array(y))
+    from dyncli.dop853 import OdeSolution
+
+    return Marched(np.array(ts), np.array(ys).T, OdeSolution(ts, sols) if sols else None, 0)
 
 
 def ode_solution(ts, interpolants):

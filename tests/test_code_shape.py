@@ -43,29 +43,10 @@ SMELL_FUNCTION_LINES = 150
 
 #: (importing file, module the private name lives in, name) found when the rule came; to be fixed
 #: (merged or made public) by the topics' owners; may only shrink.
-PRIVATE_IMPORTS_ALLOWED = {
-    # rectilinear: case2/case2_scan and case4/case4_legs/case4_scan/case4_sens, one case each, split by size
-    ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_Scan"),
-    ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_fmt"),
-    ("dyncli/topics/rectilinear/case2.py", "dyncli.topics.rectilinear.case2_scan", "_what"),
-    ("dyncli/topics/rectilinear/case3.py", "dyncli.topics.rectilinear.case3_branch", "_BIG"),
-    ("dyncli/topics/rectilinear/case3.py", "dyncli.topics.rectilinear.case3_branch", "_fmt"),
-    ("dyncli/topics/rectilinear/case4.py", "dyncli.topics.rectilinear.case4_legs", "_BIG"),
-    ("dyncli/topics/rectilinear/case4.py", "dyncli.topics.rectilinear.case4_legs", "_EPS"),
-    ("dyncli/topics/rectilinear/case4.py", "dyncli.topics.rectilinear.case4_legs", "_fmt"),
-    ("dyncli/topics/rectilinear/case4.py", "dyncli.topics.rectilinear.case4_scan", "_Scan"),
-    ("dyncli/topics/rectilinear/case4_scan.py", "dyncli.topics.rectilinear.case4_legs", "_BIG"),
-    ("dyncli/topics/rectilinear/case4_scan.py", "dyncli.topics.rectilinear.case4_legs", "_EPS"),
-    ("dyncli/topics/rectilinear/case4_sens.py", "dyncli.topics.rectilinear.case4_legs", "_EPS"),
-}
+PRIVATE_IMPORTS_ALLOWED: set[tuple[str, str, str]] = set()
 
 #: (file of the class, class, file of its split-off base, base) found when the rule came; may only shrink.
-SPLIT_CLASSES_ALLOWED = {
-    # rectilinear case 2's forward scan, a mixin of _Case2 in its own file (split by size)
-    ("dyncli/topics/rectilinear/case2.py", "_Case2", "dyncli/topics/rectilinear/case2_scan.py", "_Scan"),
-    # rectilinear case 4's scan, a mixin of _Case4 in its own file (split by size)
-    ("dyncli/topics/rectilinear/case4.py", "_Case4", "dyncli/topics/rectilinear/case4_scan.py", "_Scan"),
-}
+SPLIT_CLASSES_ALLOWED: set[tuple[str, str, str, str]] = set()
 
 
 def module_name(path: Path) -> str:

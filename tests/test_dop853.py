@@ -126,3 +126,40 @@ def test_an_explicit_route_does_not_import_scipy_integrate():
     rec = rec[0] if isinstance(rec, list) else rec
     assert rec["method"].startswith("ode") and rec.get("error") is None
     assert "MODS []" in out.stderr, out.stderr
+
+
+def test_an_interpolant_made_later_is_the_same():
+    """``dense_later`` (the interpolant built on its first call) gives dense_output's values."""
+    s = DOP853(kepler, 0.0, CASES[0][1], 5.0, rtol=1e-8, atol=1e-12)
+    while s.status == "running":
+        s.step()
+        now, later = s.dense_output(), s.dense_later()
+        ts = np.linspace(s.t_old, s.t, 5)
+        assert np.array_equal(now(ts), later(ts)) and np.array_equal(now(ts[2]), later(ts[2]))
+
+
+def test_uncontrolled_components_do_not_steer_the_steps():
+    """``controlled=2``: van der Pol with ∫ y0² dt carried along takes the 2-state run's steps (the
+    same number and times to rounding: the BLAS products of a 3-column state may round otherwise,
+    and the error estimate's cancellation magnifies that into the step sizes), not those of the
+    3-state run that controls the integral too; the carried integral matches a separate tight
+    quadrature of the same motion."""
+    def augmented(t, y):
+        return van_der_pol(t, y[:2]) + [y[0] * y[0]]
+
+    def run(s):
+        ts = []
+        while s.status == "running":
+            s.step()
+            ts.append(s.t)
+        return np.array(ts), s
+
+    t2, plain = run(DOP853(van_der_pol, 0.0, [2.0, 0.0], 10.0, rtol=1e-8, atol=1e-11))
+    tc, carried = run(DOP853(augmented, 0.0, [2.0, 0.0, 0.0], 10.0, rtol=1e-8, atol=1e-11, controlled=2))
+    t3, _ = run(DOP853(augmented, 0.0, [2.0, 0.0, 0.0], 10.0, rtol=1e-8, atol=1e-11))
+    assert len(tc) == len(t2) != len(t3) and carried.nfev == plain.nfev
+    assert np.allclose(tc, t2, rtol=1e-5, atol=0) and np.allclose(carried.y[:2], plain.y, rtol=1e-9, atol=1e-12)
+    tight = si.solve_ivp(augmented, (0.0, 10.0), [2.0, 0.0, 0.0], method="DOP853", rtol=1e-13, atol=1e-14)
+    assert abs(carried.y[2] - tight.y[2, -1]) <= 1e-6 * abs(tight.y[2, -1])
+    # every component controlled (controlled >= n) is the default: scipy's steps
+    assert DOP853(augmented, 0.0, [2.0, 0.0, 0.0], 1.0, controlled=3).controlled is None

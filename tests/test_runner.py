@@ -106,3 +106,34 @@ def test_constrained_particle_runs_no_check_solve_without_estimate(monkeypatch):
     calls.clear()
     solve_one_text(text + "accuracy: {estimate: true}\n")
     assert len(calls) == 2 and calls[1] == pytest.approx(calls[0] / ode.CHECK_DIV)
+
+
+def test_march_locates_a_terminal_event_as_solve_ivp():
+    """runner.march: the runner's own event driver finds the terminal event of scipy's
+    solve_ivp (a pendulum's first stop, q̇ = 0 downwards) at the same time to rounding, and its
+    interpolant reproduces the states."""
+    import math
+
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    from dyncli import ode, runner
+
+    def rhs(t, y):
+        return [y[1], -9.81 / 0.5 * math.sin(y[0])]
+
+    def stop(t, y):
+        return y[1]
+    stop.terminal, stop.direction = True, -1
+
+    run = runner.march(rhs, 0.0, [0.0, 3.0], 10.0, method="DOP853", budget=ode.Budget(), rtol=1e-10,
+                       atol=1e-12, events=[stop])
+    ref = solve_ivp(rhs, (0.0, 10.0), [0.0, 3.0], method="DOP853", rtol=1e-10, atol=1e-12, events=[stop],
+                    dense_output=True)
+    assert run.status == 1 and run.event == 0
+    assert abs(run.t_event - ref.t_events[0][0]) <= 1e-13
+    assert abs(run.y_event[1]) <= 1e-12
+    assert np.allclose(run.sol(np.linspace(0, run.t_event, 7)), ref.sol(np.linspace(0, run.t_event, 7)),
+                       rtol=0, atol=1e-13)
+    free = runner.march(rhs, 0.0, [0.0, 3.0], 1.0, method="DOP853", budget=ode.Budget(), rtol=1e-10, atol=1e-12)
+    assert free.status == 0 and free.t[-1] == 1.0 and free.event is None

@@ -60,6 +60,32 @@ def _const(v: float, X: Backend):
     return (lambda env: c), True
 
 
+def _folded(fn, const: bool, ir: tuple, X: Backend):
+    """(fn, const), with a constant of numbers alone (no variable at all) evaluated once, on the
+    float backend: the same jet, computed at compile time (a number's jet does not change)."""
+    if const and X is floatmath and _numbers_only(ir):
+        try:
+            c = fn({})
+        except (ArithmeticError, ValueError):     # evaluated per call, as before
+            return fn, const
+        return (lambda env: c), True
+    return fn, const
+
+
+def _numbers_only(ir: tuple) -> bool:
+    """The expression holds numbers (and parameters) only: no variable at all."""
+    k = ir[0]
+    if k in ("num", "param"):
+        return True
+    if k == "var":
+        return False
+    if k == "neg":
+        return _numbers_only(ir[1])
+    if k == "call":
+        return all(_numbers_only(a) for a in ir[2])
+    return _numbers_only(ir[1]) and _numbers_only(ir[2])
+
+
 def _is_const_ir(ir: tuple, var: str) -> bool:
     k = ir[0]
     if k in ("num", "param"):
@@ -200,6 +226,9 @@ def _compile(ir: tuple, var: str, X: Backend):
     if kind == "var":
         name = ir[1]
         if name == var:
+            if X is floatmath:              # one float: the unit seed as constants (no call per evaluation)
+                return (lambda env: (env[name], 1.0, 0.0)), False
+
             def v(env):
                 t = env[name]
                 return t, X.ones(t), X.zeros(t)
@@ -210,16 +239,26 @@ def _compile(ir: tuple, var: str, X: Backend):
         return other, True
     if kind == "neg":
         a, c = _compile(ir[1], var, X)
-        return (lambda env: tuple(-x for x in a(env))), c
+
+        def neg(env):
+            f = a(env)
+            return -f[0], -f[1], -f[2]
+        return _folded(neg, c, ir, X)
     if kind in ("add", "sub", "mul", "div", "pow"):
         a, ca = _compile(ir[1], var, X)
         b, cb = _compile(ir[2], var, X)
         if kind == "add":
-            return (lambda env: tuple(x + y for x, y in zip(a(env), b(env)))), ca and cb
+            def add(env):
+                f, g = a(env), b(env)
+                return f[0] + g[0], f[1] + g[1], f[2] + g[2]
+            return _folded(add, ca and cb, ir, X)
         if kind == "sub":
-            return (lambda env: tuple(x - y for x, y in zip(a(env), b(env)))), ca and cb
+            def sub(env):
+                f, g = a(env), b(env)
+                return f[0] - g[0], f[1] - g[1], f[2] - g[2]
+            return _folded(sub, ca and cb, ir, X)
         if kind == "mul":
-            return (lambda env: _mul(a(env), b(env))), ca and cb
+            return _folded(lambda env: _mul(a(env), b(env)), ca and cb, ir, X)
         if kind == "div":
             return (lambda env: _div(a(env), b(env), X)), ca and cb
         return (lambda env: _pow(a(env), b(env), cb, X)), ca and cb

@@ -204,6 +204,26 @@ find:
     assert entry(r, 4)["distance"] == pytest.approx(float(length(ref.y, turns, 0, 6)), rel=TOL)
 
 
+
+def test_general_distance_backward_in_time_with_a_search():
+    """A search of ``find`` and an answer before t1 in the general case: the motion before t1 is
+    integrated backward (it was the first forward step's interpolant extrapolated: the distance
+    to t = −3 read 0.395 where the body travels 2.766, with exit 0)."""
+    r, _ = solve("""
+type: rectilinear
+a: "-4*s - 0.4*v"
+s1: 0.5
+accuracy: {rtol: 1e-10}
+find:
+  - {when: {s: 0}}
+  - {t: -3}
+""")
+    ref = Vib(1, 4, 0.1, "0.5", 0)                   # s'' + 0.4 s' + 4 s = 0, backward too
+    assert entry(r, 0)["t"] == pytest.approx(float(crossings(ref.y, 0, 2)[0]), rel=TOL)
+    e = entry(r, 1)
+    assert e["s"] == pytest.approx(float(ref.y(-3)), rel=TOL)
+    assert e["distance"] == pytest.approx(float(length(ref.y, crossings(ref.v, -3, "-1e-9"), -3, 0)), rel=TOL)
+
 def test_invalid_generic_query_names_the_users_index():
     msg = error_of("type: rectilinear\na: -1\nfind:\n  - {t: 1}\n  - {v: -1}\n  - {when: {xx: 1}}\n")
     assert " find.2.when:" in msg and "'xx'" in msg, msg
@@ -225,3 +245,92 @@ def test_gallery_block_on_spring_with_the_default_t_max():
     assert f[1]["t"] == pytest.approx(float(b.tc + b.tau(mp.pi + b.phi)), rel=1e-6)
     assert f[1]["distance"] == pytest.approx(float(H + 2 * b.delta), rel=1e-6)
     assert f[2]["t"] == pytest.approx(float(2 * (b.tc + b.tau(mp.pi / 2))), rel=1e-6)
+
+
+class Excursions:
+    """s = c t + B sin ωt (B = −A/ω) solves a = −ω²(s − c t) from s1 = 0, v1 = c − A: with A just
+    above c, v = c − A cos ωt is negative only in narrow windows of half-width h = acos(c/A)/ω
+    around t_k = 2πk/ω, where s makes a narrow excursion back (issue 28)."""
+
+    c, w, A = mp.mpf(1), mp.mpf(40), mp.mpf("1.002")
+
+    def __init__(self):
+        self.B, self.h = -self.A / self.w, mp.acos(self.c / self.A) / self.w
+
+    def s(self, t):
+        return self.c * t + self.B * mp.sin(self.w * t)
+
+    def v(self, t):
+        return self.c - self.A * mp.cos(self.w * t)
+
+    def window(self, k):
+        tk = 2 * mp.pi * k / self.w
+        return tk - self.h, tk + self.h                  # the local maximum and minimum of s
+
+    def distance(self, a, b):
+        """∫|v| dt over [a, b]: Σ|Δs| between the zeros of v (the ends of the windows)."""
+        ks = range(int(mp.floor(a * self.w / (2 * mp.pi))) - 1, int(mp.ceil(b * self.w / (2 * mp.pi))) + 2)
+        knots = [a] + sorted(z for k in ks for z in self.window(k) if a < z < b) + [b]
+        return sum(abs(self.s(y) - self.s(x)) for x, y in zip(knots, knots[1:]))
+
+
+@pytest.mark.parametrize("backward", [True, False])
+def test_general_narrow_excursions_are_never_missed(backward):
+    """A crossing between two samples cannot be missed (issue 28): the general route's searches
+    and its own {s: S} queries run on its steps, cut at the exact extremes of s and v inside
+    each step's interpolant.
+    Every excursion here (v < 0 for 3.2e-3 s, s back by 7e-6 m) is narrower than 1/256 (and
+    1/1024) of the 10 s searched, and each level is crossed down and up again inside it: with a
+    query before t1 the searches ran on a uniform grid of 256 pieces and answered all four
+    down-crossings "not reached"; without one the turning points were roots of v between step
+    ends only, so every distance was off by 1e-5 to 6e-5 relative and the time of a distance
+    1.2e-4 s late; and an {s: S} crossed up and down inside one step was answered at a later
+    window (22 of 177 levels, 5e-3 s late).  References: the closed form (mpmath, 30 digits)."""
+    mp.mp.dps = MPMATH_DPS
+    x = Excursions()
+    levels = []
+    for k in (3, 11, 19, 27):                       # a level just below the k-th local maximum of s
+        tM, tm = x.window(k)
+        X = x.s(tM) - (x.s(tM) - x.s(tm)) / 10
+        levels.append((X, mp.findroot(lambda t: x.s(t) - X, (tM, tm), solver="anderson")))
+    firsts = []
+    for k, frac in ((4, 10), (23, 2)):              # {s: S}: first crossed on the way up to a maximum
+        tM, tm = x.window(k)
+        S = x.s(tM) - (x.s(tM) - x.s(tm)) / frac
+        firsts.append((S, mp.findroot(lambda t: x.s(t) - S, (tM - x.h, tM), solver="anderson")))
+    t5 = mp.mpf(5)
+    D5 = x.distance(0, t5)
+    queries = "".join(f"  - {{when: {{s: {mp.nstr(X, 20)}}}, direction: down}}\n" for X, _ in levels)
+    queries += ("  - {when: {v: 0}, direction: down, occurrence: 20}\n"
+                f"  - {{when: {{distance: {mp.nstr(D5, 20)}}}}}\n")
+    queries += "".join(f"  - {{s: {mp.nstr(S, 20)}}}\n" for S, _ in firsts) + "  - {t: 10}\n"
+    queries += "  - {t: -0.5}\n" if backward else ""
+    r, warns = solve(f"""
+type: rectilinear
+params: {{w: 40, c: 1}}
+a: "-w**2*(s - c*t)"
+v1: -0.002
+t_max: 10
+accuracy: {{rtol: {RTOL}}}
+find:
+{queries}""")
+    assert not warns, warns
+    for k, (X, down) in enumerate(levels):
+        e = entry(r, k)
+        # the first down-crossing (inside its window), its time to the error of s over |v| there
+        assert abs(e["t"] - float(down)) <= TOL * float(abs(X)) / float(abs(x.v(down))), (k, e["t"], down)
+        assert e["distance"] == pytest.approx(float(x.distance(0, down)), rel=TOL)
+    e = entry(r, 4)
+    t20 = 2 * mp.pi * 20 / x.w - x.h
+    assert e["t"] == pytest.approx(float(t20), rel=TOL)
+    assert e["distance"] == pytest.approx(float(x.distance(0, t20)), rel=TOL)
+    assert entry(r, 5)["t"] == pytest.approx(5.0, rel=TOL)          # the distance travelled by t = 5
+    for k, (S, up) in enumerate(firsts):
+        e = entry(r, 6 + k)
+        assert abs(e["t"] - float(up)) <= TOL * float(abs(S)) / float(abs(x.v(up))), (k, e["t"], up)
+        assert e["distance"] == pytest.approx(float(x.distance(0, up)), rel=TOL)
+    assert entry(r, 8)["distance"] == pytest.approx(float(x.distance(0, 10)), rel=TOL)
+    if backward:
+        e = entry(r, 9)
+        assert e["s"] == pytest.approx(float(x.s(mp.mpf("-0.5"))), rel=TOL)
+        assert e["distance"] == pytest.approx(float(x.distance(mp.mpf("-0.5"), 0)), rel=TOL)

@@ -52,7 +52,7 @@ print("MODS:" + json.dumps(mods))
 def test_no_matplotlib_without_plot():
     """Solving every example file without --plot imports neither matplotlib
     nor any topic's plots module (solvers never import them)."""
-    p = subprocess.run([sys.executable, "-c", _PROBE], cwd=ROOT, capture_output=True, text=True, timeout=300,
+    p = subprocess.run([sys.executable, "-c", _PROBE], cwd=ROOT, capture_output=True, text=True, timeout=900,
                        env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin", "NO_COLOR": "1"})
     line = [ln for ln in p.stdout.splitlines() if ln.startswith("MODS:")]
     assert line, p.stderr[-2000:]

@@ -1,10 +1,14 @@
 """The equation of motion along the curve, its constraint force and the ODE
 route (notes §16, §18, §19.27).
 
-State y = [q, q̇, φ, W_nc, W_N]: the parameter and its rate, the angle of the
+State y = [q, q̇, φ, W_nc, W_N, s]: the parameter and its rate, the angle of the
 turning curve, the work of the non-potential forces (uniform, damper, drag,
-custom, friction: W̄ of 20.3) and the work of the constraint force N (zero on
-a fixed curve, where N ⊥ v; not zero on a turning one, §18).
+custom, friction: W̄ of 20.3), the work of the constraint force N (zero on
+a fixed curve, where N ⊥ v; not zero on a turning one, §18) and the arc length
+s = ∫ |τ| q̇ dt from q0.  Only q, q̇ (and φ when ω varies in time) steer the
+integrator's steps: W̄, W_N and s are quadratures of the motion carried by the same
+stages (``controlled``, :func:`dyncli.runner.march`), and φ = ω t is exact at a
+constant rate, so the steps are those of q, q̇ alone.
 
 Along the unit tangent e_t (τ = Q y', see curve.py), with G = (F − m b)·e_t:
 
@@ -48,6 +52,8 @@ class Model:
         self.terms = [Term(f, p) for f in p.forces if f.kind != "friction"]
         self.mu = sum(float(f.mu) for f in p.forces if f.kind == "friction")
         self.q_range = p.q_range
+        # the components that steer the steps: q, q̇, and φ when ω varies in time (module docstring)
+        self.controlled = 3 if curve.rotating and curve.omega_const is None else 2
         self.closed = False
         if p.q_range is not None:
             ya, yb = curve.y(p.q_range[0])[:, 0], curve.y(p.q_range[1])[:, 0]
@@ -116,7 +122,8 @@ class Model:
         sqrt, cos, sin, isfinite = math.sqrt, math.cos, math.sin, math.isfinite
 
         def rhs(t, y):
-            q, qd, phi, _, _ = y.tolist()
+            yl = y.tolist()
+            q, qd, phi = yl[0], yl[1], yl[2]
             if stick:
                 qd = 0.0
             env = {"q": q}
@@ -165,7 +172,7 @@ class Model:
                 # the rate checked here (the runner's check_finite off)
                 raise NumericalError(f"the motion is not finite at t = {t:.6g} s, q = {q:.6g} "
                                      "(the curve's tangent vanishes, a force is singular there, or the accelerations overflow)")
-            return [qd, qdd, w, P_nc, P_N]
+            return [qd, qdd, w, P_nc, P_N, sp * qd]
 
         return rhs
 
@@ -231,7 +238,7 @@ def _integrate(model, rtol, atol, method, max_steps, max_step):
     rtol = runner.floor_rtol(rtol)
     max_step = min(max_step, model.compiled.kink_step)     # no step over a one-sided spring's contact
     t_end = float(p.t_end)
-    y = np.array([p.q0, p.q_dot0, 0.0, 0.0, 0.0], float)
+    y = np.array([p.q0, p.q_dot0, 0.0, 0.0, 0.0, 0.0], float)
     t = 0.0
     phases, notes = [], []
     budget = ode.Budget(max_steps, default=MAX_STEPS, probe=500)
@@ -243,22 +250,18 @@ def _integrate(model, rtol, atol, method, max_steps, max_step):
             notes.append(("stick", t))
         elif phases and model.mu > 0 and y[1] == 0:
             notes.append(("slip", t))
+        evs = _events(model, mode, rtol)
         try:
-            sol = runner.solve_ivp(model.rhs_for(mode), (t, t_end), y, method=method, budget=budget,
-                                   check_finite=False, rtol=rtol, atol=atol, dense_output=True, events=_events(model, mode, rtol) or None,
-                                   max_step=max_step)
+            run = runner.march(model.rhs_for(mode), t, y, t_end, method=method, budget=budget, rtol=rtol, atol=atol,
+                               events=evs, max_step=max_step, controlled=model.controlled)
+        except ode.StepFailed as exc:
+            raise NumericalError(f"the integrator ({method}) failed near t = {exc.t:g}: {exc.reason}") from None
         except (ValueError, ZeroDivisionError, FloatingPointError, OverflowError) as exc:
             raise NumericalError(f"the integrator ({method}) failed near t = {t:g}: {exc}") from None
-        if sol.status == -1:
-            raise NumericalError(f"the integrator ({method}) failed near t = {sol.t[-1]:g}: {sol.message}")
-        hit = [(float(te[0]), i) for i, te in enumerate(sol.t_events or []) if te.size]
-        if sol.status == 1 and hit:
-            te, i = min(hit)
-            ye = np.array(sol.y_events[i][0], float)
-            st = np.append(sol.t, te) if sol.t[-1] < te else sol.t
-            sy = np.column_stack([sol.y, ye]) if sol.t[-1] < te else sol.y
-            phases.append(Phase(t, te, sol.sol, mode, st, sy))
-            ev = _events(model, mode, rtol)[i]
+        if run.status == 1:
+            te, ye = run.t_event, run.y_event
+            phases.append(Phase(t, te, run.sol, mode, run.t, run.y))
+            ev = evs[run.event]
             if ev.__name__ == "end":
                 raise NumericalError(f"the particle reaches the end of the wire (q = {ye[0]:.6g}) at t = {te:.6g} s, "
                                      f"before t_end = {t_end:g} s")
@@ -270,7 +273,7 @@ def _integrate(model, rtol, atol, method, max_steps, max_step):
             if te >= t_end:
                 break
             continue
-        phases.append(Phase(t, float(sol.t[-1]), sol.sol, mode, sol.t, sol.y))
+        phases.append(Phase(t, float(run.t[-1]), run.sol, mode, run.t, run.y))
         break
     else:
         raise NumericalError(f"friction: more than {MAX_PHASES} stick/slip phases before t_end")
@@ -289,7 +292,7 @@ def states_at(phases, times):
     once on its times (as :func:`phase_at` assigns them)."""
     last = len(phases) - 1
     idx = [next((i for i, ph in enumerate(phases) if ph.t0 <= t <= ph.t1), last) if last else 0 for t in times]
-    Y = np.empty((5, len(times)))
+    Y = np.empty((phases[0].steps_y.shape[0], len(times)))
     for k, ph in enumerate(phases):
         sel = [j for j, i in enumerate(idx) if i == k]
         if sel:

@@ -95,18 +95,16 @@ def ode_turns(phases) -> list[float]:
 
 
 def ode_arc(model, phases, q0: float, known):
-    """s at any times on the ODE route: the arc length to the dense output's q(t) (``known``: the
-    (t, s) pairs already reported)."""
+    """s at any times on the ODE route: the arc length carried in the state (its 6th row), read
+    from the dense output (``known``: the (t, s) pairs already reported)."""
     from . import dynamics
-    from .report import arc_length
 
     memo = {float(t): s for t, s in known}
 
     def s_of(ts) -> list[float]:
         new = sorted({float(t) for t in ts} - memo.keys())
         if new:
-            q = dynamics.states_at(phases, new)[0][0].tolist()
-            memo.update(zip(new, arc_length(model.curve, q0, q)))
+            memo.update(zip(new, (dynamics.states_at(phases, new)[0][5] + 0.0).tolist()))
         return [memo[float(t)] for t in ts]
     return s_of
 

@@ -15,9 +15,9 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Expr, ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
+from dyncli.fields import Expr, ExprField, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector, check_times
 from dyncli.topics.particle.model import Custom, Damper, Drag, Gravity, InverseSquare, Spring, Uniform
-from dyncli.topics.particle.model import check_force_kind, check_times
+from dyncli.topics.particle.model import check_force_kind
 
 CURVE_VARS = ("q",)
 

@@ -31,7 +31,8 @@ def arc_length(curve, q0, qs):
 
 
 def assemble(p, model, times, Y, modes) -> dict:
-    """The reported results at the states Y (5, n) (one mode per state)."""
+    """The reported results at the states Y (one mode per state): q, q̇, φ, W̄, W_N and, when it
+    is carried (the ODE route's 6th row), the arc length s, else s by :func:`arc_length`."""
     n = Y.shape[1]
     groups: dict = {}                       # the states of each mode, evaluated together
     for j, md in enumerate(modes):
@@ -56,7 +57,8 @@ def assemble(p, model, times, Y, modes) -> dict:
     r = {
         "q": [float(v) + 0.0 for v in Y[0]],
         "q_dot": [float(v) + 0.0 for v in qd],
-        "s": arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]]),
+        "s": ([float(v) + 0.0 for v in Y[5]] if Y.shape[0] > 5 else
+              arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]])),
         "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
         "x": _cols(cat["x"]), "v": _cols(cat["v"]), "a": _cols(cat["a"]),
         "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],

@@ -13,7 +13,7 @@ from typing import Annotated, Any, Literal, Optional, Union
 from pydantic import BeforeValidator, Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import ExprTriple, ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector
+from dyncli.fields import ExprTriple, ExprVec3, Find, Num, ProblemBase, StrictModel, Times, Vec3, Vector, check_times
 from dyncli.springs import one_sided_length
 
 CUSTOM_VARS = ("t", "x1", "x2", "x3", "v1", "v2", "v3")
@@ -123,19 +123,6 @@ Force = Annotated[
     Annotated[Union[Uniform, Gravity, InverseSquare, Spring, Damper, Drag, Friction, Custom], Field(discriminator="kind")],
     BeforeValidator(check_force_kind),
 ]
-
-
-def check_times(p) -> None:
-    """t_end defaults to max(at); every time of at in [0, t_end]; at defaults to [0, t_end]."""
-    if p.t_end is None:
-        if not p.at:
-            raise InputError("give t_end or the times 'at' (t_end defaults to the largest time in 'at')", "t_end")
-        p.t_end = max(p.at)
-    for i, t in enumerate(p.at):
-        if t < 0 or t > p.t_end:
-            raise InputError(f"time {t:g} is outside [0, t_end = {p.t_end:g}]", f"at.{i}")
-    if not p.at:
-        p.at = [0.0, p.t_end]
 
 
 class SteadyAxis(StrictModel):

@@ -21,10 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from dyncli.topics.rectilinear.constants import EPS
+
 _X20, _W20 = np.polynomial.legendre.leggauss(20)
 _X10, _W10 = np.polynomial.legendre.leggauss(10)
 _XN = np.concatenate([_X20, _X10])
-_EPS = np.finfo(float).eps
 
 
 class NonFinite(Exception):
@@ -100,12 +101,12 @@ def integrate(f, lo, width, rtol=1e-12, atol=0.0, max_rounds: int = 60, max_pane
         g10 = half * (fx[:, 20:] @ _W10)
         absint = np.abs(half) * (np.abs(fx[:, :20]) @ _W20)
         e = np.abs(g20 - g10)
-        e = np.maximum(e, 50 * _EPS * absint)
+        e = np.maximum(e, 50 * EPS * absint)
         share = atol[task] * np.abs(h) / W[task]
         rt = rtol[task]
         ok = (e <= np.maximum(rt * absint, share))
         # cannot bisect further: accept (flag non-convergence if the error is large)
-        tiny = np.abs(h) <= 64 * _EPS * np.maximum(np.abs(a + off), np.abs(a + off + h)) + 1e-300
+        tiny = np.abs(h) <= 64 * EPS * np.maximum(np.abs(a + off), np.abs(a + off + h)) + 1e-300
         panels += task.size
         last = rnd == max_rounds or task.size > 20000 or (max_panels is not None and panels + 2 * np.count_nonzero(~(ok | tiny)) > max_panels)
         acc = ok | tiny | last
@@ -149,7 +150,7 @@ def _zoom(f, lo: float, h: float, task: int, levels: int = 60) -> None:
     hist = []
     for _ in range(levels):
         hh = 0.5 * h
-        if not (abs(hh) > 64 * _EPS * max(abs(lo), abs(lo + h)) + 1e-300):
+        if not (abs(hh) > 64 * EPS * max(abs(lo), abs(lo + h)) + 1e-300):
             break
         q = 0.5 * hh
         x = np.concatenate([lo + q + q * _X20, lo + hh + q + q * _X20])

@@ -9,10 +9,7 @@ from __future__ import annotations
 import math
 
 from dyncli.result import Result
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
+from dyncli.topics.rectilinear.constants import fmt
 
 
 class Answers:
@@ -79,18 +76,18 @@ class Answers:
             query(i, target)
         except NonFinite as exc:
             self.unreached(i, f"the integrals that lead to it are not finite in doubles on the way (at "
-                              f"{_fmt(exc.x)} of the integration variable): a is too small, or the target too "
+                              f"{fmt(exc.x)} of the integration variable): a is too small, or the target too "
                               "far, for floating point")
 
     def unreached(self, i: int, reason: str) -> None:
         q = self.p.find[i]
-        self.res.warn(f"{self.labels[i]} ({q.kind} = {_fmt(q.target)}): not reached — {reason}")
+        self.res.warn(f"{self.labels[i]} ({q.kind} = {fmt(q.target)}): not reached — {reason}")
         self.items[i] = {"t": None, "s": None, "v": None, "a": None, "reached": False}
 
     def beyond_t_max(self, i: int, t: float) -> bool:
         """True (and the query marked unreached) when t lies beyond t1 + t_max."""
         p = self.p
         if t - p.t1 > p.t_max:
-            self.unreached(i, f"first attained at t = {_fmt(t)}, beyond the search horizon t1 + t_max = {_fmt(p.t1 + p.t_max)}")
+            self.unreached(i, f"first attained at t = {fmt(t)}, beyond the search horizon t1 + t_max = {fmt(p.t1 + p.t_max)}")
             return True
         return False

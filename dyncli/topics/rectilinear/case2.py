@@ -24,8 +24,9 @@ oscillation without bound near a pole of tan inside a) is accepted with its
 error estimate and a warning, and a non-integrable pole (1/(t - c)) ends the
 motion there like a non-finite a.
 
-This module holds the quadratures of the state and the root searches; the forward
-scan that answers the v- and s-queries is :mod:`.case2_scan`.
+This module holds the quadratures of the state and the root searches (:class:`_Case2`); the
+forward scan that answers the v- and s-queries with them is its collaborator
+:class:`.case2_scan.Scan`.
 """
 
 from __future__ import annotations
@@ -39,15 +40,19 @@ import numpy as np
 
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
-from dyncli.topics.rectilinear.case2_scan import _Scan, _fmt, _what
+from dyncli.topics.rectilinear.case2_scan import Scan, nonfinite_reason
 from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
+from dyncli.topics.rectilinear.constants import EPS, fmt
 from dyncli.topics.rectilinear.work import CALL as _CALL, QUAD as _QUAD, SCALAR as _SCALAR, Work
 
-_EPS = float(np.finfo(float).eps)
 _MAX_PANELS = 4000          # panels one quadrature may evaluate before it gives up refining
 
 
-class _Case2(_Scan):
+class _Case2:
+    """The quadratures of one case-2 motion (the state at any time from a known one, the root
+    searches of s and v) and its t queries; the interface :class:`.case2_scan.Quadratures` that
+    its scan reads."""
+
     def __init__(self, p, ans, rtol, atol):
         self.p = p
         self.ans = ans
@@ -61,12 +66,10 @@ class _Case2(_Scan):
         self.info: dict = {}
         self._bad_xs: list[float] = []  # where quadratures failed to converge
         self._nbad = 0
-        self.es_c = self.ev_c = 0.0     # error estimates of the state at the current chunk start
         self.signs = SignTable(self.A, *derivatives(p.a, self._charge), irs=irs(p.a))
-        self.warned_signs = False
 
     def _charge(self, n: int) -> None:
-        self.work.charge(n, f" (hardest near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else "")
+        self.work.charge(n, f" (hardest near t = {fmt(self.info['x_bad'])})" if "x_bad" in self.info else "")
 
     def A(self, x):
         x = np.asarray(x, dtype=float)
@@ -81,14 +84,15 @@ class _Case2(_Scan):
         self._charge(_QUAD)
         return integrate(f, lo, width, self.qr, self.qa, max_panels=_MAX_PANELS, info=self.info)
 
-    def _check(self, conv) -> None:
+    def check(self, conv) -> None:
+        """Count a quadrature that did not converge (where), and warn about the first."""
         if not np.all(conv) and "x_bad" in self.info:
             self._nbad += 1
             if len(self._bad_xs) < 64:
                 self._bad_xs.append(self.info["x_bad"])
         if not np.all(conv) and not self.warned_conv:
             self.warned_conv = True
-            where = f" (near t = {_fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
+            where = f" (near t = {fmt(self.info['x_bad'])})" if "x_bad" in self.info else ""
             self.ans.res.warn(f"quadrature did not reach the requested tolerance everywhere{where}: a is not smooth "
                               "or oscillates faster than the quadrature resolves; see error_estimate")
 
@@ -103,7 +107,7 @@ class _Case2(_Scan):
             return np.where(j == 0, ax, (T - x) * ax)
 
         vals, errs, conv = self.integrate(f, [tb, tb], [h, h])
-        self._check(conv)
+        self.check(conv)
         return sb + vb * h + vals[1], vb + vals[0], errs[1], errs[0]
 
     def state_split(self, T: float, tb: float, sb: float, vb: float):
@@ -125,7 +129,7 @@ class _Case2(_Scan):
     def rounding(self, lo: float, hi: float) -> float:
         """The error of v's quadratures over [lo, hi] from the rounding of their abscissae (t known
         to eps |t|: eps |t| times the total variation of a; a narrow pulse far from t = 0)."""
-        return _EPS * max(abs(lo), abs(hi)) * self.signs.variation(lo, hi)
+        return EPS * max(abs(lo), abs(hi)) * self.signs.variation(lo, hi)
 
     def state_on(self, T: float, tb: float, sb: float, vb: float, cuts):
         """The state at T from (tb, sb, vb), the integrals split at the ``cuts`` between them."""
@@ -143,7 +147,7 @@ class _Case2(_Scan):
             return np.where(j < n, ax, (T - xx) * ax)
 
         vals, errs, conv = self.integrate(f, np.concatenate([lo, lo]), np.concatenate([w, w]))
-        self._check(conv)
+        self.check(conv)
         return (sb + vb * h + float(np.sum(vals[n:])), vb + float(np.sum(vals[:n])),
                 float(np.sum(errs[n:])), float(np.sum(errs[:n])))
 
@@ -161,7 +165,7 @@ class _Case2(_Scan):
 
         return min(known, key=key)
 
-    def root(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
+    def crossing(self, kind: str, target: float, t0: float, s0: float, v0: float, t1: float, s1: float, v1: float) -> float:
         """First t in [t0, t1] with v (kind 'v') or s (kind 's') = target; the
         state is known at both ends.  Each evaluation integrates from the
         nearest known state (ends and earlier iterates)."""
@@ -184,7 +188,7 @@ class _Case2(_Scan):
         def g(t):
             tb, vb, _ = self._nearest(known, t)
             vals, errs, conv = self.integrate(lambda x, j: self.A(x), [tb], [t - tb])
-            self._check(conv)
+            self.check(conv)
             v = vb + float(vals[0])
             known.append((t, v, bool(np.all(conv))))
             return v - target
@@ -197,7 +201,7 @@ class _Case2(_Scan):
         try:
             s, v, es, ev = self.state_split(T, p.t1, p.s1, p.v1)
         except NonFinite as exc:
-            self.ans.unreached(i, f"{_what(exc)}, between t1 and t")
+            self.ans.unreached(i, f"{nonfinite_reason(exc)}, between t1 and t")
             return
         self.ans.reached(i, T, s, v, err=(0.0, es, ev))
 
@@ -213,7 +217,7 @@ def solve(p, ans, rtol: float, atol: float) -> str:
         else:
             sq[i] = q.s
     if vq or sq:
-        c.scan(vq, sq)
+        Scan(c).run(vq, sq)
         return "quadrature+root"
     return "quadrature"
 

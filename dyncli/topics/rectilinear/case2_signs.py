@@ -27,11 +27,11 @@ from typing import Callable
 import numpy as np
 
 from dyncli.rootfind import all_roots, roots_in_brackets
+from dyncli.topics.rectilinear.constants import EPS
 from dyncli.topics.rectilinear.enclose import hidden
 
 TABLE = 64                  # starting panels per analysed stretch (refined by the adaptive quadrature)
 BUDGET = 2000               # all_roots' cells per stretch (near a pole of a it halves without end)
-_EPS = float(np.finfo(float).eps)
 
 
 def _scale(f, lo: float, hi: float, cells: int) -> float:
@@ -212,7 +212,7 @@ class SignTable:
             gap = min(x - pts[j - 1], pts[j + 1] - x)
             if not (wj < gap / 4):
                 continue
-            levels = min(int(math.ceil(math.log(gap / max(wj, 4 * _EPS * max(abs(x), gap)), 4))) + 1, 24)
+            levels = min(int(math.ceil(math.log(gap / max(wj, 4 * EPS * max(abs(x), gap)), 4))) + 1, 24)
             d = gap * 4.0 ** -np.arange(1, levels + 1)
             out += [float(x)] + list(x - d) + list(x + d)
         return np.array(out, dtype=float)

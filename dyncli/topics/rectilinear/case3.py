@@ -27,7 +27,8 @@ import math
 import numpy as np
 
 from dyncli.rootfind import root_in_bracket
-from dyncli.topics.rectilinear.case3_branch import _BIG, Branch, _fmt
+from dyncli.topics.rectilinear.case3_branch import Branch
+from dyncli.topics.rectilinear.constants import BIG, fmt
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
 
@@ -71,9 +72,9 @@ class _Case3:
 
     def _end_text(self, b: Branch) -> str:
         if b.kind == "zero":
-            return f"terminal velocity v* = {_fmt(b.v_end)} (a(v*) = 0)"
+            return f"terminal velocity v* = {fmt(b.v_end)} (a(v*) = 0)"
         if b.kind == "pole":
-            return f"a is singular at v = {_fmt(b.v_end)}"
+            return f"a is singular at v = {fmt(b.v_end)}"
         return "v grows without bound"
 
     # -- queries ------------------------------------------------------------
@@ -86,13 +87,13 @@ class _Case3:
                 if q.v == p.v1:
                     ans.reached(i, p.t1, p.s1, p.v1)
                 else:
-                    ans.unreached(i, f"a(v1) = 0: the velocity stays v1 = {_fmt(p.v1)} (equilibrium)")
+                    ans.unreached(i, f"a(v1) = 0: the velocity stays v1 = {fmt(p.v1)} (equilibrium)")
             else:
                 d = q.s - p.s1
                 if d == 0:
                     ans.reached(i, p.t1, p.s1, p.v1)
                 elif p.v1 == 0 or d / p.v1 < 0:
-                    ans.unreached(i, f"a(v1) = 0: the body moves uniformly with v1 = {_fmt(p.v1)} and never gets there")
+                    ans.unreached(i, f"a(v1) = 0: the body moves uniformly with v1 = {fmt(p.v1)} and never gets there")
                 elif not ans.beyond_t_max(i, p.t1 + d / p.v1):
                     ans.reached(i, p.t1 + d / p.v1, q.s, p.v1)
 
@@ -124,9 +125,9 @@ class _Case3:
             s = p.s1 + float(b.ds[-1]) + b.v_end * (tau - last)
             ans.reached(i, T, s, b.v_end)
         elif b.kind == "pole":
-            ans.unreached(i, f"{self._end_text(b)}, which is attained at t ≈ {_fmt(p.t1 + last)}; the motion is not defined {when} that")
+            ans.unreached(i, f"{self._end_text(b)}, which is attained at t ≈ {fmt(p.t1 + last)}; the motion is not defined {when} that")
         else:
-            ans.unreached(i, f"|v| exceeds {_BIG:g} (finite-time blow-up) at t ≈ {_fmt(p.t1 + last)}, {when} which nothing is defined")
+            ans.unreached(i, f"|v| exceeds {BIG:g} (finite-time blow-up) at t ≈ {fmt(p.t1 + last)}, {when} which nothing is defined")
 
     def v_query(self, i: int, V: float) -> None:
         p, ans = self.p, self.ans
@@ -135,7 +136,7 @@ class _Case3:
             return
         d = 1 if self.a_v1 > 0 else -1
         if (V - p.v1) * d < 0:
-            ans.unreached(i, f"a(v1) = {_fmt(self.a_v1)} drives v away from it")
+            ans.unreached(i, f"a(v1) = {fmt(self.a_v1)} drives v away from it")
             return
         b = self.branch(d)
         if b.kind != "inf" and (V - b.v_end) * d >= 0:
@@ -149,7 +150,7 @@ class _Case3:
                 extra = "; it is approached as t → ∞ but never reached" if V == b.v_end else ""
                 ans.unreached(i, f"the speed lies {what} the {self._end_text(b)}{extra}")
             else:
-                ans.unreached(i, f"it lies {what} v = {_fmt(b.v_end)}: {self._end_text(b)}")
+                ans.unreached(i, f"it lies {what} v = {fmt(b.v_end)}: {self._end_text(b)}")
             return
         u = b.u_of(V)
         if u > b.u[-1]:
@@ -161,7 +162,7 @@ class _Case3:
                     return
                 ans.unreached(i, f"it is within rounding of the {self._end_text(b)}, which is approached as t → ∞")
             else:
-                ans.unreached(i, f"it lies beyond v = {_fmt(b.v_of(np.float64(b.u[-1])))} where the motion ends ({self._end_text(b)})")
+                ans.unreached(i, f"it lies beyond v = {fmt(b.v_of(np.float64(b.u[-1])))} where the motion ends ({self._end_text(b)})")
             return
         tau, ds, v, (et, es) = b.at(u)
         t = p.t1 + tau
@@ -223,16 +224,16 @@ class _Case3:
         smin, smax = p.s1 + float(ds.min()), p.s1 + float(ds.max())
         if b.kind == "zero" and b.v_end == 0:
             if b.finite_time:
-                why = f"the body comes to rest at s = {_fmt(p.s1 + last_s)} (v reaches 0 at t = {_fmt(p.t1 + b.T_end)})"
+                why = f"the body comes to rest at s = {fmt(p.s1 + last_s)} (v reaches 0 at t = {fmt(p.t1 + b.T_end)})"
             else:
-                why = f"the body approaches s = {_fmt(p.s1 + last_s)} as t → ∞ (v → 0) and never passes it"
+                why = f"the body approaches s = {fmt(p.s1 + last_s)} as t → ∞ (v → 0) and never passes it"
         elif b.kind == "zero":
             ext = smin if b.v_end > 0 else smax
-            why = (f"after its extreme position s = {_fmt(ext)} the body moves towards "
-                   f"{'+' if b.v_end > 0 else '-'}∞ (terminal velocity {_fmt(b.v_end)})")
+            why = (f"after its extreme position s = {fmt(ext)} the body moves towards "
+                   f"{'+' if b.v_end > 0 else '-'}∞ (terminal velocity {fmt(b.v_end)})")
         else:
-            why = (f"the motion ends at t ≈ {_fmt(p.t1 + float(b.tau[-1]))} ({self._end_text(b)}) "
-                   f"with s within [{_fmt(smin)}, {_fmt(smax)}]")
+            why = (f"the motion ends at t ≈ {fmt(p.t1 + float(b.tau[-1]))} ({self._end_text(b)}) "
+                   f"with s within [{fmt(smin)}, {fmt(smax)}]")
         return why
 
 

@@ -11,14 +11,8 @@ import numpy as np
 
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
+from dyncli.topics.rectilinear.constants import BIG, EPS
 from dyncli.topics.rectilinear.work import QUAD
-
-_EPS = float(np.finfo(float).eps)
-_BIG = 1e100
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
 
 
 def _first_zero(A, v1: float, e: int, c: float, g_hi: float):
@@ -60,7 +54,7 @@ class Branch:
         g = np.unique(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:],
             4.0 * np.logspace(0, 300, 3001)]))
-        g = g[np.abs(v1) + c * g <= _BIG]
+        g = g[np.abs(v1) + c * g <= BIG]
         vs = v1 + e * c * g
         av = c3.A(vs)
         s1 = np.sign(c3.a_v1)
@@ -168,7 +162,7 @@ class Branch:
             # relative rounding noise of a near v* is ~ eps |v*| / |v* - v|; integrating
             # to that level moves the state by ~ eps |v*| only (see module docstring)
             d = abs(self.D0) * np.exp(-np.maximum(lo, lo + w))
-            rtol = np.maximum(rtol, 64 * _EPS * max(abs(self.v_end), abs(self.D0)) / np.maximum(d, 1e-300))
+            rtol = np.maximum(rtol, 64 * EPS * max(abs(self.v_end), abs(self.D0)) / np.maximum(d, 1e-300))
         self.c3.work.charge(QUAD)
         vals, errs, conv = integrate(self._f, lo, w, np.minimum(rtol, 0.5), 0.0)
         self.c3.check(conv)
@@ -176,13 +170,13 @@ class Branch:
 
     def _build_grid(self) -> None:
         if self.kind == "inf":
-            room = _BIG - abs(self.v1)      # |v1| beyond the blow-up threshold already: no room
+            room = BIG - abs(self.v1)      # |v1| beyond the blow-up threshold already: no room
             ratio = room / self.c if room > 0 else 0.0
             # room / c overflows for a tiny scale c (v1 ~ 1e-299): log(room) - log(c) then
             umax = math.log1p(ratio) if math.isfinite(ratio) else math.log(room) - math.log(self.c)
         else:
             self.D0 = self.v_end - self.v1
-            dmin = max(8 * _EPS * abs(self.v_end), 1e-290)
+            dmin = max(8 * EPS * abs(self.v_end), 1e-290)
             # D0 = 0 (v1 already at v* to the last bit, e.g. v1 = 1e-308 with v* = 0): no room
             umax = max(math.log(max(abs(self.D0) / dmin, 1.0)), 1e-3)
         base = [0.0, 1 / 64, 1 / 16, 1 / 8, 1 / 4, 1 / 2]

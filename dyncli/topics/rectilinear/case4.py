@@ -26,8 +26,8 @@ Accuracy measures:
   substitution; t-queries invert the leg times by a bracketed root search and
   periodic motion is reduced modulo the period.
 
-This module holds the orbit and the queries; the scan from s1 is :mod:`.case4_scan`, the ends,
-v^2 references and legs :mod:`.case4_legs`.
+This module holds the orbit and the queries (:class:`_Case4`); the scan from s1 is its
+collaborator :class:`.case4_scan.Scan`, the ends, v^2 references and legs :mod:`.case4_legs`.
 """
 
 from __future__ import annotations
@@ -38,9 +38,10 @@ from typing import Iterable
 import numpy as np
 
 from dyncli.rootfind import root_in_bracket
-from dyncli.topics.rectilinear.case4_legs import _BIG, _EPS, End, Energy, Leg, _fmt
+from dyncli.topics.rectilinear.case4_legs import End, Energy, Leg
 from dyncli.topics.rectilinear import case4_sens as sens
-from dyncli.topics.rectilinear.case4_scan import _Scan
+from dyncli.topics.rectilinear.case4_scan import Scan
+from dyncli.topics.rectilinear.constants import BIG, EPS, fmt
 from dyncli.topics.rectilinear.work import SCALAR, Work
 
 
@@ -53,7 +54,10 @@ def _irs(a) -> tuple:
         return a.ir, None
 
 
-class _Case4(_Scan):
+class _Case4:
+    """One case-4 motion: the orbit from s1 (its scans, legs and period, built by :meth:`setup`)
+    and its queries; the interface :class:`.case4_scan.Motion` that its scans read."""
+
     def __init__(self, p, ans, rtol, atol):
         self.p, self.ans = p, ans
         self._fn = p.a.scalar_fn()
@@ -63,27 +67,27 @@ class _Case4(_Scan):
         # the quadratures' rtol: 100 x tighter, but not below what their error estimate can
         # certify (_quad.integrate floors it at 50 eps x the integral of |f|: a tighter rtol never
         # converges and bisects until the work budget refuses the problem, e.g. at rtol 1e-12)
-        self.qr = max(rtol * 1e-2, 100 * _EPS)
+        self.qr = max(rtol * 1e-2, 100 * EPS)
         self.s1, self.v1 = p.s1, p.v1
-        if not abs(p.s1) <= 0.5 * _BIG:
+        if not abs(p.s1) <= 0.5 * BIG:
             from dyncli.errors import InputError
 
             raise InputError(f"|s1| = {abs(p.s1):.6g} m is beyond the positions case 4 (a = a(s)) tracks: the energy "
-                             f"route (6.14) follows the body up to |s| = {_BIG:g} m; use |s1| <= {0.5 * _BIG:g} m "
+                             f"route (6.14) follows the body up to |s| = {BIG:g} m; use |s1| <= {0.5 * BIG:g} m "
                              "(e.g. shift or rescale the coordinate)", "s1")
         self.a_s1 = self.a1(p.s1)
         self._warned = False
-        # positions beyond |s| = _BIG are never reached (escape): they must not set the scan scale,
-        # or the scan grid s1 + c g (|s| <= _BIG) would hold no cell at all
-        cands = [abs(p.s1)] + [abs(q.s - p.s1) for q in p.find if q.kind == "s" and abs(q.s) <= _BIG]
+        # positions beyond |s| = BIG are never reached (escape): they must not set the scan scale,
+        # or the scan grid s1 + c g (|s| <= BIG) would hold no cell at all
+        cands = [abs(p.s1)] + [abs(q.s - p.s1) for q in p.find if q.kind == "s" and abs(q.s) <= BIG]
         if self.a_s1 != 0 and p.v1 != 0:
             cands.append(p.v1 * p.v1 / abs(self.a_s1))
         cands = [c for c in cands if math.isfinite(c) and c > 0]
-        # (capped so that the scan s1 + c g, |s| <= _BIG, always has cells and the midpoint of an
-        # escaping leg lies inside |s| < _BIG)
-        self.scale = min(max(cands), 0.25 * _BIG) if cands else 1.0
+        # (capped so that the scan s1 + c g, |s| <= BIG, always has cells and the midpoint of an
+        # escaping leg lies inside |s| < BIG)
+        self.scale = min(max(cands), 0.25 * BIG) if cands else 1.0
         # the smallest of them (e.g. |s1| = 1e-151 next to v1^2/|a(s1)| = 4e133 for a = 25 s): the scan
-        # and the escaping legs resolve every scale between it and _BIG geometrically
+        # and the escaping legs resolve every scale between it and BIG geometrically
         self.scale_min = min(max(min(cands), 1e-290), self.scale) if cands else self.scale
         self.amax = max(abs(self.a_s1), 1e-300)
         self.energy = Energy(self)
@@ -104,6 +108,18 @@ class _Case4(_Scan):
             self.ans.res.warn("quadrature did not reach the requested tolerance everywhere (non-smooth or singular a?); "
                               "see error_estimate")
 
+
+    def scan(self, e: int, v2start: float) -> End:
+        """Where the body goes from s1 in direction ``e`` (v² = ``v2start`` there): the scan's
+        cells kept in ``scans[e]``, its nodes and stop made references of the energy."""
+        found = Scan(self).run(e, v2start)
+        if found.amax is not None:
+            self.amax = max(self.amax, found.amax)
+        self.scans[e] = {"s": found.s, "v2": found.v2, "a": found.a}
+        self.energy.add(found.ref_s, found.ref_v2)
+        if found.end.kind in ("turn", "asym"):
+            self.energy.add(found.end.pos, 0.0)
+        return found.end
 
     # -- the orbit --------------------------------------------------------------
     def setup(self) -> bool:
@@ -176,11 +192,11 @@ class _Case4(_Scan):
 
     def _reason_end(self, end: End, t_end: float, forward: bool) -> str:
         when = "after" if forward else "before"
-        at = f"at t ≈ {_fmt(t_end)}"
+        at = f"at t ≈ {fmt(t_end)}"
         if end.kind == "inf":
-            lead = f"|s| exceeds {_BIG:g}"
+            lead = f"|s| exceeds {BIG:g}"
             if math.isfinite(end.pos):
-                lead = f"the body passes s ≈ {_fmt(end.pos)}, beyond which v^2 exceeds the doubles,"
+                lead = f"the body passes s ≈ {fmt(end.pos)}, beyond which v^2 exceeds the doubles,"
             if end.finite_time:
                 if math.isfinite(end.pos):
                     return f"{lead} {at} (escape to infinity in finite time); nothing is defined {when} that"
@@ -189,7 +205,7 @@ class _Case4(_Scan):
                    else "|s| grows without bound")
             return f"{lead} {at} ({how}); the motion is not followed {when} that"
         if end.kind == "sing":
-            return f"the body reaches s ≈ {_fmt(end.pos)}, where a is singular, {at}; the motion is not defined {when} that"
+            return f"the body reaches s ≈ {fmt(end.pos)}, where a is singular, {at}; the motion is not defined {when} that"
         return end.describe()
 
     # -- queries ------------------------------------------------------------------
@@ -268,7 +284,7 @@ class _Case4(_Scan):
         if V == 0:
             ans.unreached(i, "the body never stops: " + "; ".join(dict.fromkeys(e.describe() for e in (self.endF, self.endB))))
         else:
-            where = f"for t >= t1 the speed stays within [{_fmt(lo)}, {_fmt(hi)}]"
+            where = f"for t >= t1 the speed stays within [{fmt(lo)}, {fmt(hi)}]"
             if lo <= abs(V) <= hi:
                 where += ", but never with this sign"
             ans.unreached(i, where)
@@ -308,7 +324,7 @@ class _Case4(_Scan):
             elif (q.kind == "v" and q.v == 0) or (q.kind == "s" and q.s == p.s1):
                 ans.reached(i, p.t1, p.s1, 0.0)
             else:
-                ans.unreached(i, f"v1 = 0 and a(s1) = 0: the body rests at s1 = {_fmt(p.s1)} (equilibrium)")
+                ans.unreached(i, f"v1 = 0 and a(s1) = 0: the body rests at s1 = {fmt(p.s1)} (equilibrium)")
 
 
 def motion(p, ans, rtol: float, atol: float) -> _Case4:

@@ -10,10 +10,8 @@ import numpy as np
 
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
+from dyncli.topics.rectilinear.constants import BIG, EPS, fmt
 from dyncli.topics.rectilinear.work import QUAD
-
-_EPS = float(np.finfo(float).eps)
-_BIG = 1e100
 
 
 def _log1p_ratio(d: float, c: float) -> float:
@@ -22,10 +20,6 @@ def _log1p_ratio(d: float, c: float) -> float:
     if math.isfinite(r):
         return math.log1p(r)
     return math.log(d) - math.log(c)
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
 
 
 class End:
@@ -37,11 +31,11 @@ class End:
 
     def describe(self) -> str:
         if self.kind == "inf" and math.isfinite(self.pos):
-            return f"|s| grows without bound; v^2 exceeds the doubles beyond s ≈ {_fmt(self.pos)}"
+            return f"|s| grows without bound; v^2 exceeds the doubles beyond s ≈ {fmt(self.pos)}"
         return {
-            "turn": f"turning point s = {_fmt(self.pos)}",
-            "asym": f"unstable equilibrium s = {_fmt(self.pos)}, approached as t → ∞",
-            "sing": f"a is singular at s ≈ {_fmt(self.pos)}",
+            "turn": f"turning point s = {fmt(self.pos)}",
+            "asym": f"unstable equilibrium s = {fmt(self.pos)}, approached as t → ∞",
+            "sing": f"a is singular at s ≈ {fmt(self.pos)}",
             "inf": "|s| grows without bound",
         }[self.kind]
 
@@ -83,7 +77,7 @@ class Energy:
         w = width.ravel()
         self.c4.work.charge(QUAD)
         vals, errs, conv = integrate(lambda x, j: self.c4.A(x), R.ravel(), w, self.c4.qr,
-                                     64 * _EPS * self.c4.amax * np.abs(w))
+                                     64 * EPS * self.c4.amax * np.abs(w))
         self.c4.check(conv)
         return self.V2[idx] + 2.0 * vals.reshape(s.shape)
 
@@ -103,7 +97,7 @@ class Leg:
         self.c4, self.A, self.e, self.end = c4, A, e, end
         self.B = end.pos
         # towards infinity: a short first part and then the geometric map s = M + e c (e^x - 1),
-        # c the smallest length of the problem, so every scale from c to _BIG gets cells of its own
+        # c the smallest length of the problem, so every scale from c to BIG gets cells of its own
         self.c = c4.scale_min
         if end.kind == "inf":
             if math.isfinite(self.B):
@@ -122,9 +116,9 @@ class Leg:
             self.X2 = L2
         elif self.k2 == "exp":
             # (difference of logarithms: the ratio overflows for L2 > ~1e18)
-            self.X2 = max(math.log(L2) - math.log(max(8 * _EPS * abs(self.B), 1e-290)), 0.0) if L2 > 0 else 0.0
+            self.X2 = max(math.log(L2) - math.log(max(8 * EPS * abs(self.B), 1e-290)), 0.0) if L2 > 0 else 0.0
         else:
-            self.X2 = _log1p_ratio(max(min(_BIG, e * self.B) - e * self.M, 0.0), self.c)
+            self.X2 = _log1p_ratio(max(min(BIG, e * self.B) - e * self.M, 0.0), self.c)
         self.degenerate = L1 == 0 and end.kind != "inf"
         self._build()
 
@@ -173,7 +167,7 @@ class Leg:
             # integrating dt/dx only to that level moves the state by about
             # |v| dt ~ eps |s_E| per cell — negligible
             d = abs(self.B - self.M) * np.exp(-np.maximum(lo, hi))
-            rtol = np.maximum(rtol, 64 * _EPS * max(abs(self.B), abs(self.M)) / np.maximum(d, 1e-300))
+            rtol = np.maximum(rtol, 64 * EPS * max(abs(self.B), abs(self.M)) / np.maximum(d, 1e-300))
         self.c4.work.charge(QUAD)
         vals, errs, conv = integrate(lambda x, j: self._dtdx(part, x), lo, hi - lo, np.minimum(rtol, 0.5), 0.0)
         self.c4.check(conv)

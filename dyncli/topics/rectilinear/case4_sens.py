@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from dyncli.topics.rectilinear.case4_legs import _EPS
+from dyncli.topics.rectilinear.constants import EPS
 
 
 def turn_sensitivity(c4, s: float, ds: float) -> tuple[float, float]:
@@ -33,7 +33,7 @@ def setup(c4) -> None:
     """c4.turns: {id(leg): (δs, δt)} for the legs that end at a turning point; c4.cycle_sens the
     time lost per period; c4.start_sens the start's when it is a turning point (v1 = 0)."""
     v2scale = max([c4.v1 * c4.v1] + [float(abs(sc["v2"]).max()) for sc in c4.scans.values() if len(sc["v2"])])
-    dv2 = 8 * _EPS * v2scale
+    dv2 = 8 * EPS * v2scale
     c4.turns = {}
     for leg in (c4.F, c4.B):
         if leg.end.kind == "turn" and leg.B != c4.s1:
@@ -41,7 +41,7 @@ def setup(c4) -> None:
             c4.turns[id(leg)] = turn_sensitivity(c4, leg.B, dv2 / (2 * aT) if aT > 0 else 0.0)
     c4.start_sens = (0.0, 0.0)
     if c4.v1 == 0:
-        c4.start_sens = turn_sensitivity(c4, c4.s1, 4 * _EPS * abs(c4.s1))
+        c4.start_sens = turn_sensitivity(c4, c4.s1, 4 * EPS * abs(c4.s1))
     c4.cycle_sens = 2 * (sum(dt for _, dt in c4.turns.values()) + c4.start_sens[1]) if c4.periodic else 0.0
     c4.sens_used = 0.0
 

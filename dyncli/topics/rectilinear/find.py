@@ -5,7 +5,10 @@ events).  ``when``, ``max``, ``min`` — and a ``{v: V}`` or ``{s: S}`` equal to
 which counts only when the motion reaches it again (from rest, ``{v: 0}`` is the next turning
 point, not the release) — are answered by :mod:`dyncli.motion_find` on the motion the route
 gives at any time (one batched run per search: :func:`solver.sample`), with the exact rates
-(v of s, a of v) so that turning points are roots of v (Brent).  ``distance`` (∫|v| dt
+(v of s, a of v) so that turning points are roots of v (Brent).  Where s and v are monotone is
+decided exactly, never by a grid: the closed form's and the quadratures' own pieces
+(:func:`turning_points`), and in the general case the ODE's steps both ways from t1, each cut at
+the extremes of s and v inside its interpolant (:class:`.general.Dense`).  ``distance`` (∫|v| dt
 since t1) is Σ|Δs| between the turning points.
 """
 
@@ -14,12 +17,12 @@ from __future__ import annotations
 import math
 
 from dyncli import motion_find as mf
-from dyncli import queries as _q
+from dyncli import rootfind
 from dyncli.errors import InputError, NumericalError
 from dyncli.expr import constant, resolve_params
 
-#: pieces of the search when the motion has no period; per period when it has one; at most
-PIECES, PER_PERIOD, MAX_PIECES = 256, 8, 20_000
+#: the most turning points of a periodic case 4 listed for one search (then the motion repeats)
+MAX_PIECES = 20_000
 GENERIC = ("when", "max", "min")
 
 
@@ -79,18 +82,14 @@ class _Motion:
         return lo
 
 
-def _uniform(t1: float, t_end: float, n: int = PIECES) -> list[float]:
-    return [t1 + (t_end - t1) * k / n for k in range(n + 1)]
-
-
-def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[list[float], list[float] | None]:
+def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[list[float], list[float]]:
     """(the times in (lo, hi) where v changes sign, the other times the results are smooth and
-    monotonic between, or None when only a uniform grid can tell): case 1 from (6.5a); case 3 —
+    monotonic between) of the quadrature and closed-form routes: case 1 from (6.5a); case 3 —
     v is monotonic — the one zero of v by its route; case 4 from its route (the first turning
     point, then every half period: a swing between two turning points takes half the period,
     (6.12)); case 2: v is monotonic between the zeros of a(t) (an explicit function of t, found
-    decided exactly by the signs of a at its critical points), so each piece holds at most one turning point;
-    the general case: the roots of v (Brent) on a uniform grid of the route's motion."""
+    decided exactly by the signs of a at its critical points), so each piece holds at most one turning point.
+    (The general case has its own: the extremes of its steps' interpolants, :class:`.general.Dense`.)"""
     t1, case = p.t1, res.results.get("case")
     if case == 1:
         a = p.a.value()
@@ -101,17 +100,12 @@ def turning_points(p, res, lo: float, hi: float, motion, solve_one) -> tuple[lis
         return ([e["t"]] if e and e.get("reached") and lo < e["t"] < hi else []), []
     if case == 4:
         return _swings(p, res, lo, hi, solve_one), []
-    if case == 2:
-        knots = _zeros_of_a(p, lo, hi)
-        pts = [lo] + knots + [hi]
-        V = [st["v"] for st in motion.batch(pts)]
-        v = lambda t: motion.state(t)["v"]         # noqa: E731
-        turns = [_q.root(v, a, b) for a, b, va, vb in zip(pts, pts[1:], V, V[1:]) if va * vb < 0]
-        return sorted(turns + [a for a, va in zip(pts[1:-1], V[1:-1]) if va == 0]), knots
-    grid = _uniform(lo, hi)
-    sm = mf.StateMotion(motion.state, lo, hi, grid, batch=motion.batch)
-    sm.prefetch()
-    return mf.turns(lambda t: sm.value("v", t), grid), None
+    knots = _zeros_of_a(p, lo, hi)          # case 2 (on any route: a(t) is known exactly)
+    pts = [lo] + knots + [hi]
+    V = [st["v"] for st in motion.batch(pts)]
+    v = lambda t: motion.state(t)["v"]         # noqa: E731
+    turns = [rootfind.root(v, a, b) for a, b, va, vb in zip(pts, pts[1:], V, V[1:]) if va * vb < 0]
+    return sorted(turns + [a for a, va in zip(pts[1:-1], V[1:-1]) if va == 0]), knots
 
 
 def _swings(p, res, lo, hi, solve_one) -> list[float]:
@@ -152,14 +146,11 @@ def _zeros_of_a(p, lo: float, hi: float) -> list[float]:
     return [float(r) for r in roots]
 
 
-def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float] | None) -> list[float]:
+def _breaks(t1: float, t_end: float, turns: list[float], knots: list[float]) -> list[float]:
     """The turning points and the knots (each piece monotonic in s and v), each piece cut in
-    half; a uniform grid too when those are not known (knots None)."""
-    pts = sorted({t1, t_end} | {x for x in turns + (knots or []) if t1 < x < t_end})
-    out = set(pts) | {0.5 * (a + b) for a, b in zip(pts, pts[1:])}
-    if knots is None:
-        out |= set(_uniform(t1, t_end))
-    return sorted(out)
+    half."""
+    pts = sorted({t1, t_end} | {x for x in turns + knots if t1 < x < t_end})
+    return sorted(set(pts) | {0.5 * (a + b) for a, b in zip(pts, pts[1:])})
 
 
 def _sampler(p, res, sample):
@@ -190,17 +181,19 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     reached = [e["t"] for e in items if e and e.get("reached")]
     t_end = mf.search_end(t_end, raw, const) if generic else max(reached + [t1])
     dense = None
-    if res.results.get("case") == "general" and t_end > t1:    # one run with every step's interpolant
+    lo = min(reached + [t1])
+    if res.results.get("case") == "general" and (t_end > t1 or lo < t1):    # one run each way, every step's interpolant
         from dyncli.topics.rectilinear.general import Dense
 
-        sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end)
+        sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end, lo)
     motion = _Motion(p, sample)
     if generic:
         t_end = dense.end if dense is not None else motion.reachable_end(t_end)
-    lo, hi = min(reached + [t1]), max(reached + [t1, t_end])
-    if dense is not None and lo >= t1:               # the general case: the roots of v on the steps
-        turns = mf.turns(lambda t: motion.state(t)["v"], [b for b in dense.breaks if b <= t_end], 1)
-        knots: list[float] | None = [b for b in dense.breaks if t1 < b < t_end]   # (None: a uniform grid)
+    hi = max(reached + [t1, t_end])
+    if dense is not None:       # the general case: s and v monotone between the steps' extremes
+        cuts = [b for b in dense.extremes if dense.start <= b <= max(dense.end, t1)]
+        turns = mf.turns(lambda t: motion.state(t)["v"], cuts, 1)
+        knots = [b for b in cuts if t1 < b < t_end]
     else:
         try:
             turns, knots = turning_points(p, res, lo, hi, motion, solve_one) if hi > lo else ([], [])

@@ -5,17 +5,17 @@
 integrated step by step with one of scipy's ``OdeSolver`` classes (DOP853 by
 default) at the user's rtol and atol.
 
-First crossings: after every accepted step the sign changes of v (extrema of s,
-turning points) and of a (extrema of v) over the step are located on the
-step's interpolant (the events).  Between consecutive events s (resp. v) is
-monotone, so a target is crossed inside such a piece exactly when it lies
-between the piece's end values, and the crossing is then polished by a
-bracketed root search on the interpolant.  A target equal to an extremum
-(grazing: no sign change, possibly within one step of the turning point) is
-detected at the extremum event and reported there.  The interpolant of a step
-is built only on the steps that hold an event, a crossing or a ``t`` query
-(DOP853's costs three more evaluations of a), and the integration stops as
-soon as every query is answered.
+First crossings: after every accepted step the extremes of s (turning points) and of v
+inside the step are the critical points of the step's interpolant, a polynomial, decided
+exactly (:func:`dyncli.rootfind.polynomial_extremes`, never by samples).  Between them s
+(resp. v) is monotone, so a target is crossed inside such a piece exactly when it lies
+between the piece's end values — an excursion narrower than the step, crossing the target
+twice inside it, included — and the crossing is then polished by a bracketed root search on
+the interpolant.  A target equal to an extremum (grazing: no sign change, possibly within one
+step of the turning point) is detected at the extremum and reported there.  While a v or s
+query is open every step builds its interpolant (DOP853's costs three more evaluations of a);
+otherwise only the steps that hold a ``t`` query do, and the integration stops as soon as
+every query is answered.
 
 Work budget: :class:`dyncli.ode.Budget` counts every accepted step of the
 solve; one that needs more than ``accuracy.max_steps`` steps (default
@@ -33,15 +33,12 @@ import numpy as np
 
 from dyncli import ode
 from dyncli.rootfind import root_in_bracket
+from dyncli.topics.rectilinear.constants import fmt
 
 
 #: default accuracy.max_steps of one run of this route: ~65 us a step (DOP853, 12
 #: evaluations of the expression), so a solve stays near 0.7 s (its check solve has its own)
 DEFAULT_MAX_STEPS = 10_000
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
 
 
 class _Run:
@@ -92,6 +89,7 @@ class _Step:
         self.ya: Any = None
         self.aa: float | None = None
         self._dense: Any = None
+        self._ext: list[list[float]] | None = None
 
     def advance(self) -> None:
         sv = self.solver
@@ -99,7 +97,7 @@ class _Step:
         self.tb, self.yb = float(sv.t), sv.y.copy()
         f = getattr(sv, "f", None)     # the rate at the step's end (explicit Runge-Kutta: FSAL)
         self.ab = float(f[1]) if f is not None else self.run.acc(self.tb, *self.yb)
-        self._dense = None
+        self._dense = self._ext = None
 
     def y(self, t: float):
         """The state at t inside the step."""
@@ -112,6 +110,17 @@ class _Step:
     def a(self, t: float) -> float:
         y = self.y(t)
         return self.run.acc(t, y[0], y[1])
+
+    def extremes(self, comp: int) -> list[float]:
+        """The critical points of s (``comp`` 0) or v (1) inside the step: of its interpolant, a
+        polynomial, decided exactly (:func:`dyncli.rootfind.polynomial_extremes`)."""
+        if self._ext is None:
+            from dyncli.rootfind import polynomial_extremes
+
+            if self._dense is None:
+                self._dense = ode.dense_output(self.solver)
+            (self._ext,) = polynomial_extremes([(self._dense, self.ta, self.tb)])
+        return self._ext[comp]
 
 
 def solve(p, ans, method: str, rtol: float, atol: float) -> str:
@@ -138,7 +147,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
 def _stopped(ans, queries, failed, t_end: float) -> None:
     tf, msg = failed if failed else (t_end, "not reached")
     for i, _ in queries:
-        ans.unreached(i, f"the integration stopped at t = {_fmt(tf)} ({msg}); the solution probably blows up")
+        ans.unreached(i, f"the integration stopped at t = {fmt(tf)} ({msg}); the solution probably blows up")
 
 
 def _times(r, queries: list, direction: int, ans) -> None:
@@ -183,13 +192,13 @@ class _Forward:
         self.t_reached = p.t1
         failed = r.march(p.t1, [p.s1, p.v1], t_end, self.visit)
         _stopped(ans, self.todo, failed, self.t_reached)
-        why = (f"the integration stopped at t = {_fmt(failed[0])} ({failed[1]})" if failed
-               else f"search horizon t1 + t_max = {_fmt(self.horizon)}")
+        why = (f"the integration stopped at t = {fmt(failed[0])} ({failed[1]})" if failed
+               else f"search horizon t1 + t_max = {fmt(self.horizon)}")
         (smin, vmin), (smax, vmax) = self.lo, self.hi
         for i in self.vq:
-            ans.unreached(i, f"v stays within [{_fmt(vmin)}, {_fmt(vmax)}] for t >= t1 ({why})")
+            ans.unreached(i, f"v stays within [{fmt(vmin)}, {fmt(vmax)}] for t >= t1 ({why})")
         for i in self.sq:
-            ans.unreached(i, f"s stays within [{_fmt(smin)}, {_fmt(smax)}] for t >= t1 ({why})")
+            ans.unreached(i, f"s stays within [{fmt(smin)}, {fmt(smax)}] for t >= t1 ({why})")
 
     def visit(self, step) -> bool:
         todo, ans = self.todo, self.ans
@@ -209,24 +218,28 @@ class _Forward:
     def _crossings(self, step, tb: float) -> None:
         """Answer the v/s queries first crossed in [step.ta, tb]."""
         ta = step.ta
-        # v queries: v is monotone between the zeros of a; s queries: s between the zeros of v
+        # the step cut at the extremes of v (v queries) or of s (s queries) of its interpolant:
+        # monotone between them, so a target is crossed in a piece exactly when it lies between
+        # the piece's end values (an excursion inside one step included); and at the zero of the
+        # true rate (a, resp. v) when it changes sign over the step: an extremum on a step's end
+        # that neither step's interpolant has inside it (two polynomials meet there)
         for queries, comp, ga, gb, g in ((self.vq, 1, step.aa, step.ab, step.a),
                                          (self.sq, 0, step.ya[1], step.yb[1], lambda t: float(step.y(t)[1]))):
             if not queries:
                 continue
             xa, xb = float(step.ya[comp]), float(step.yb[comp])
             ev = _event(g, ta, step.tb, ga, gb)
-            if ev is None or ev > tb:
-                lo, hi = min(xa, xb), max(xa, xb)
-                if not any(lo <= X <= hi for X in queries.values()):
-                    continue          # the common case: nothing crossed on this step
-                bps, vals = [ta, tb], [xa, xb if tb == step.tb else float(step.y(tb)[comp])]
-            else:
-                xe = float(step.y(ev)[comp])
-                self.scale[comp] = max(self.scale[comp], abs(xe))
-                self.lo[comp], self.hi[comp] = min(self.lo[comp], xe), max(self.hi[comp], xe)
-                bps, vals = [ta, ev, tb], [xa, xe, xb if tb == step.tb else float(step.y(tb)[comp])]
-            self._pieces(step, queries, comp, bps, vals)
+            cuts = sorted({x for x in step.extremes(comp) + ([ev] if ev is not None else []) if x < tb})
+            xe = [float(step.y(x)[comp]) for x in cuts]
+            for x in xe:
+                self.scale[comp] = max(self.scale[comp], abs(x))
+                self.lo[comp], self.hi[comp] = min(self.lo[comp], x), max(self.hi[comp], x)
+            vals = [xa] + xe + [xb if tb == step.tb else float(step.y(tb)[comp])]
+            r, lo, hi = self.r, min(vals), max(vals)
+            if not any(lo - (r.rtol * max(abs(X), self.scale[comp]) + r.atol) <= X
+                       <= hi + r.rtol * max(abs(X), self.scale[comp]) + r.atol for X in queries.values()):
+                continue              # the common case: nothing crossed or grazed on this step
+            self._pieces(step, queries, comp, [ta] + cuts + [tb], vals)
 
     def _pieces(self, step, queries: dict, comp: int, bps: list, vals: list) -> None:
         r, ans = self.r, self.ans
@@ -261,34 +274,51 @@ def _event(g, ta: float, tb: float, ga: float, gb: float):
 
 
 class Dense:
-    """The motion from t1 to t_end (or to where the integration fails: ``end``) as every accepted
-    step's interpolant: the queries of every motion (:mod:`.find`) search it without integrating
-    again; ``breaks`` are the steps' ends."""
+    """The motion from t_start (<= t1) to t_end (or to where an integration fails: ``start``,
+    ``end``) as every accepted step's interpolant, integrated from t1 each way: the queries of
+    every motion (:mod:`.find`) search it without integrating again.  ``breaks``: the steps' ends
+    (ascending); ``extremes``: the breaks with every critical point of s and of v inside each
+    step added — the interpolant of a step is a polynomial, whose extremes are decided exactly
+    (:func:`dyncli.rootfind.polynomial_extremes`), so s and v are monotone between two of them:
+    a target is crossed there exactly when it lies between the values at their ends, and no
+    excursion, however narrow, lies between two of them unseen."""
 
-    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float):
+    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float, t_start: float | None = None):
         import bisect
+
+        from dyncli.rootfind import polynomial_extremes
 
         self._bisect = bisect.bisect_left
         self.p, self.run = p, _Run(p, method, rtol, atol)
-        self.breaks, self.steps = [float(p.t1)], list[Any]()
+        t1 = float(p.t1)
+        sides = []                                  # (step ends from t1 outward, interpolants, where it ends)
+        for goal in (t_end, t1 if t_start is None else t_start):
+            ends, steps = [t1], list[Any]()
 
-        def visit(step):
-            step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
-            self.breaks.append(float(step.tb))
-            self.steps.append(step._dense)
-            return False
+            def visit(step, ends=ends, steps=steps):
+                step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
+                ends.append(float(step.tb))
+                steps.append(step._dense)
+                return False
 
-        failed = self.run.march(p.t1, [p.s1, p.v1], t_end, visit) if t_end > p.t1 else None
-        self.end = float(failed[0]) if failed else float(t_end)
-        if failed and self.breaks[-1] > self.end:
-            self.end = self.breaks[-1]
+            failed = self.run.march(t1, [p.s1, p.v1], goal, visit) if goal != t1 else None
+            reach = float(failed[0]) if failed else float(goal)
+            if failed and (ends[-1] - reach) * (goal - t1) > 0:
+                reach = ends[-1]
+            sides.append((ends, steps, reach))
+        (fe, fs, self.end), (be, bs, self.start) = sides
+        # ascending: the backward steps reversed, then the forward ones
+        self.breaks = be[:0:-1] + fe
+        self.steps = bs[::-1] + fs
+        cuts = polynomial_extremes((d, self.breaks[k], self.breaks[k + 1]) for k, d in enumerate(self.steps))
+        self.extremes = sorted(set(self.breaks).union(x for piece in cuts for comp in piece for x in comp))
 
     def __call__(self, p, times) -> list[dict]:
         out: list[dict[str, Any]] = []
         for t in (float(x) for x in times):
             if t == self.p.t1 or not self.steps:
                 s, v = self.p.s1, self.p.v1
-            elif t > self.breaks[-1]:
+            elif t > self.breaks[-1] or t < self.breaks[0]:
                 out.append({"reached": False})
                 continue
             else:

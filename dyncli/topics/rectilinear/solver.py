@@ -27,6 +27,7 @@ from dataclasses import replace
 from dyncli.errors import InputError
 from dyncli.result import Result, SolveOptions
 from dyncli.topics.rectilinear.answers import Answers
+from dyncli.topics.rectilinear.constants import EPS, fmt
 from dyncli.topics.rectilinear.setup import QUERY_FIELDS, Accuracy, Query, Setup, Spring
 
 EQUATIONS = {
@@ -36,7 +37,6 @@ EQUATIONS = {
     4: ["6.14", "6.15", "6.12"],
     "general": ["6.2c", "6.2e"],
 }
-_EPS = 2.220446049250313e-16
 
 
 def case_of(a) -> int | str:
@@ -46,10 +46,6 @@ def case_of(a) -> int | str:
     if len(used) > 1:
         return "general"
     return {"t": 2, "v": 3, "s": 4}[used.pop()]
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.10g}"
 
 
 def _route(p, case) -> str:
@@ -80,7 +76,7 @@ def _check_initial(p) -> None:
         a1 = math.nan
     if not math.isfinite(a1):
         raise InputError(
-            f"a = {p.a.text} is not finite at the initial state (t1 = {_fmt(p.t1)}, s1 = {_fmt(p.s1)}, v1 = {_fmt(p.v1)}): "
+            f"a = {p.a.text} is not finite at the initial state (t1 = {fmt(p.t1)}, s1 = {fmt(p.s1)}, v1 = {fmt(p.v1)}): "
             f"it evaluates to {a1!r}; start where a is defined (change t1, s1 or v1) or correct a", "a")
 
 
@@ -258,12 +254,12 @@ def _case1(p, a: float, i: int, q, ans: Answers) -> None:
         if dv == 0:
             tau = 0.0
         elif a == 0:
-            ans.unreached(i, f"a = 0: the velocity stays v1 = {_fmt(v1)}")
+            ans.unreached(i, f"a = 0: the velocity stays v1 = {fmt(v1)}")
             return
         else:
             tau = dv / a
             if tau < 0:
-                ans.unreached(i, f"the velocity moves away from it (v1 = {_fmt(v1)}, a = {_fmt(a)})")
+                ans.unreached(i, f"the velocity moves away from it (v1 = {fmt(v1)}, a = {fmt(a)})")
                 return
     else:
         tau = _case1_position(s1, v1, a, q.s, i, ans)
@@ -281,18 +277,18 @@ def _case1_position(s1: float, v1: float, a: float, S: float, i: int, ans: Answe
         return 0.0
     if a == 0:
         if v1 == 0:
-            ans.unreached(i, f"the body stays at rest at s1 = {_fmt(s1)}")
+            ans.unreached(i, f"the body stays at rest at s1 = {fmt(s1)}")
             return None
         tau = d / v1
         if tau < 0:
-            ans.unreached(i, f"the body moves away from it (v1 = {_fmt(v1)}, a = 0)")
+            ans.unreached(i, f"the body moves away from it (v1 = {fmt(v1)}, a = 0)")
             return None
         return tau
     disc = v1 * v1 + 2 * a * d
-    if disc < 0 and disc >= -8 * _EPS * (v1 * v1 + abs(2 * a * d)):
+    if disc < 0 and disc >= -8 * EPS * (v1 * v1 + abs(2 * a * d)):
         disc = 0.0  # the target is the turning point, up to rounding
     if disc < 0:
-        ans.unreached(i, f"it lies beyond the turning point s = {_fmt(s1 - v1 * v1 / (2 * a))}")
+        ans.unreached(i, f"it lies beyond the turning point s = {fmt(s1 - v1 * v1 / (2 * a))}")
         return None
     r = math.sqrt(disc)
     qq = -0.5 * (v1 + math.copysign(r, v1))  # a/2 tau^2 + v1 tau - d = 0, stable roots
@@ -301,6 +297,6 @@ def _case1_position(s1: float, v1: float, a: float, S: float, i: int, ans: Answe
         roots.append(-d / qq)
     pos = [x for x in roots if x > 0 and math.isfinite(x)]
     if not pos:
-        ans.unreached(i, f"the body moves away from it for t >= t1 (v1 = {_fmt(v1)}, a = {_fmt(a)})")
+        ans.unreached(i, f"the body moves away from it for t >= t1 (v1 = {fmt(v1)}, a = {fmt(a)})")
         return None
     return min(pos)

@@ -211,13 +211,46 @@ class SceneSystem:
             raise NumericalError(f"the equations of motion are singular at t = {t:.6g} s (a massless body with a "
                                  "free motion, or joints that lock each other)") from None
         a, lam = x[:n], x[n:]
+        return a, lam, self._power(power, lam, q, v)
+
+    def _power(self, power: float, lam, q, v) -> float:
+        """The applied loads' power plus the kinetic friction's and the drives'."""
         for i in self._friction:
             e = self.elements[i]
             if e.mode in ("slide", "slip") and e.mu_k:
                 power += e.friction(self.lam_of(lam, i)) * e.slip_speed(q, v)
         for i in self._drives:
             power += float(self.lam_of(lam, i)[0]) * float(v[self.elements[i].index])
-        return a, lam, power
+        return power
+
+    def constant_matrix(self) -> bool:
+        """Whether the matrix of :meth:`solve` is one over the current joint set (every made row
+        linear: a constant Jacobian and constant friction columns), for :meth:`solve_many`."""
+        return all(e.linear for e in self.elements if e.rows)
+
+    def solve_many(self, states) -> list[tuple[np.ndarray, np.ndarray, float]]:
+        """:meth:`solve` at many states [(q, v, t)] of a joint set whose matrix is the same at
+        all of them (:meth:`constant_matrix`, or one q held): the right-hand sides stacked and
+        solved in one call, each by the same LU as :meth:`solve` (equal to it bit for bit)."""
+        n = self.n
+        q0 = states[0][0]
+        A = self.kkt_matrix(q0, self.jac(q0))
+        R = np.empty((len(states), A.shape[0], 1))
+        powers = []
+        for k, (q, v, t) in enumerate(states):
+            f, power = self.applied(q, v, t)
+            R[k, :n, 0] = f
+            R[k, n:, 0] = self.gamma(q, v, t)
+            powers.append(power)
+        try:
+            if self.linsolve is np.linalg.solve:
+                X = np.linalg.solve(np.broadcast_to(A, (len(states),) + A.shape), R)[:, :, 0]
+            else:                       # LAPACK's own dgesv (the ODE route's): one call per state
+                X = [self.linsolve(A, R[k, :, 0]) for k in range(len(states))]
+        except np.linalg.LinAlgError:
+            raise NumericalError(f"the equations of motion are singular at t = {states[0][2]:.6g} s (a massless body "
+                                 "with a free motion, or joints that lock each other)") from None
+        return [(x[:n], x[n:], self._power(P, x[n:], q, v)) for (q, v, _t), x, P in zip(states, X, powers)]
 
     # ------------------------------------------------------------------ energy
     def kinetic(self, v) -> float:

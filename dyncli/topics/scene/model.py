@@ -14,8 +14,7 @@ from typing import Annotated, Any, ClassVar, Literal, Optional, Union
 from pydantic import Field, model_validator
 
 from dyncli.errors import InputError
-from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel, Times
-from dyncli.topics.particle.model import check_times
+from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel, Times, check_times
 
 TIME = ("t",)
 

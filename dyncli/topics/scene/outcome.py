@@ -175,7 +175,15 @@ def _work(scene, traj, route):
         # each piece to the rounding of the energies it moves (an exact motion: only the
         # quadrature's own error is left, well below the energy residual it is checked by)
         scale = abs(power(p, mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
-        return gauss_kronrod(lambda x: np.array([power(p, xx) for xx in x]), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+        return gauss_kronrod(lambda x: powers(p, x), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+
+    def powers(p, ts) -> np.ndarray:
+        """power(p, t) at the nodes ``ts``: one stacked solve when the piece's matrix is constant."""
+        motion.set_modes(s, p.modes)
+        if p.route == "kinematics" or not s.constant_matrix():
+            return np.array([power(p, t) for t in ts])
+        states = [p.fn(float(t))[:2] + (float(t),) for t in ts]
+        return np.array([P for _a, _lam, P in s.solve_many(states)])
 
     cum = [0.0]                         # W_nc over the whole pieces before piece k, built as asked
 

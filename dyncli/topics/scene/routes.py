@@ -4,8 +4,9 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 
 * ``statics``: no degree of freedom and no drive (or every contact sticking with constant
   loads): the reactions of equilibrium, Jᵀ λ = −f;
-* ``kinematics``: no degree of freedom with drives: positions by Newton on φ(q, t) = 0 from the
-  previous time, J q̇ = −φ_t, J q̈ = γ, and the forces from M q̈ − f = Jᵀ λ;
+* ``kinematics``: no degree of freedom with drives: positions by Newton on φ(q, t) = 0 (the
+  grid's from the previous grid time, a state between from its piece start's Taylor
+  polynomial), J q̇ = −φ_t, J q̈ = γ, and the forces from M q̈ − f = Jᵀ λ;
 * ``closed-form``: one DOF, rows affine in q and loads affine along the motion (motion.py);
 * ``quadrature`` (``accuracy.method: quadrature`` only, in this release: it costs seconds):
   one DOF with an energy integral (energy.py);
@@ -143,11 +144,10 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{conds[worst]:.3g} at t = {grid[worst]:.6g} s): its velocities and forces lose about "
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
-        q_start, t_a, t_b = qs[k], grid[k], grid[k + 1]
-        traj.add(motion.Piece(t_a, t_b, lambda t, q_start=q_start: _kin_state(s, q_start, t), motion.modes_of(s),
-                              "kinematics"))
+        fn = _KinPiece(s, qs[k], grid[k])
+        traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities))
     if len(grid) == 1:
-        traj.add(motion.Piece(0.0, 0.0, lambda t: _kin_state(s, scene.q0, t), motion.modes_of(s), "kinematics"))
+        traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
     traj.method = "kinematics"
     return traj
@@ -184,8 +184,66 @@ def _position(s, q, t, depth: int = 0):
                          "the joints lock (a toggle position)")
 
 
-def _kin_state(s, q_start, t):
-    q = _position(s, q_start, t)
+class _KinPiece:
+    """t -> (q, v, 0) on one piece of the kinematics route.  The position is Newton's on
+    φ(q, t) = 0 started from the piece start's Taylor polynomial q_a + v_a τ + ½ a_a τ² (off by
+    O(τ³), so Newton needs about two steps fewer than from q_a itself, the last skipped when
+    its size is foreseen below the rounding; near a toggle, cond(J) > 1e8 at q_a, from q_a
+    itself); where that does not converge, Newton from q_a as the grid was placed (_position)."""
+
+    def __init__(self, s, q_a, t_a: float):
+        self.s, self.q_a, self.t_a = s, q_a, float(t_a)
+        self.start = None               # (v_a, a_a, the length scale), made when first asked
+
+    def position(self, t):
+        s = self.s
+        if self.start is None:
+            J = s.jac(self.q_a)
+            v = a = None
+            if float(np.linalg.cond(J)) <= 1e8:     # near a toggle the rates are not to be trusted
+                v = np.linalg.solve(J, -s.phi_t(self.t_a))
+                a = np.linalg.solve(J, s.gamma(self.q_a, v, self.t_a))
+            self.start = (v, a, assembly.length_scale(self.q_a, s))
+        v, a, scale = self.start
+        tau = t - self.t_a
+        q = self.q_a + v * tau + 0.5 * a * (tau * tau) if v is not None else self.q_a
+        if np.all(np.isfinite(q)):
+            last = None
+            for _ in range(6):
+                try:
+                    dq = np.linalg.solve(s.jac(q), s.phi(q, t))
+                except np.linalg.LinAlgError:
+                    break
+                q = q - dq
+                size = float(np.max(np.abs(dq)))
+                # converged: the correction at the rounding of the positions, or (well inside
+                # Newton's quadratic convergence, |dq| ≤ 1e-6 of the scale) the next one,
+                # |dq|³/|dq_prev|², below it: that step would not change q
+                if size <= 4 * EPS * scale or last is not None and size <= 1e-6 * scale and \
+                        size ** 3 <= EPS * scale * last * last:
+                    return q
+                last = size
+        return _position(s, self.q_a, t)
+
+    def __call__(self, t):
+        return _kin_state(self.s, self.position(t), t)
+
+    def velocities(self, ts) -> np.ndarray:
+        """q̇ at many times of the piece, (len(ts), n): the positions one by one, the condition
+        numbers and the velocities in one stacked call each (the same numbers as _kin_state)."""
+        s = self.s
+        qs = [self.position(float(t)) for t in ts]
+        Js = np.array([s.jac(q) for q in qs])
+        conds = np.linalg.cond(Js)
+        for t, cond in zip(ts, conds):
+            if cond > 1e12:
+                _kin_state(s, self.position(float(t)), float(t))      # raises its message
+        rhs = np.array([-s.phi_t(float(t)) for t in ts])
+        return np.linalg.solve(Js, rhs[:, :, None])[:, :, 0]
+
+
+def _kin_state(s, q, t):
+    """(q, v, 0) at a placed position q: the velocities from J q̇ = −φ_t."""
     J = s.jac(q)
     cond = np.linalg.cond(J)
     if cond > 1e12:
@@ -288,10 +346,11 @@ def _first_event(s, traj, k0: int, t_end: float):
                 q, v, _ = p.fn(got[0])
                 return got[0], q, v, got
             continue
-        ts = np.union1d(np.linspace(p.t_a, p.t_b, _samples(s, p) + 1), _gap_times(s, p))
-        prev = w(ts[0])
-        for t0, t1 in zip(ts[:-1], ts[1:]):
-            cur = w(t1)
+        # sorted and unique (np.union1d's np.unique would import numpy.ma: 13 ms of a cold solve)
+        ts = np.array(sorted(set(np.linspace(p.t_a, p.t_b, _samples(s, p) + 1).tolist()) | set(_gap_times(s, p))))
+        scan = _watched(s, p, ts, w)
+        prev = next(scan)
+        for t0, t1, cur in zip(ts[:-1], ts[1:], scan):
             best = None
             for j, ((joint, what, g0), (_, _, g1)) in enumerate(zip(prev, cur)):
                 if what == "switch" or not motion.crossed(g0, g1, what):
@@ -307,6 +366,28 @@ def _first_event(s, traj, k0: int, t_end: float):
             prev = cur
     q, v, _ = traj.pieces[-1].fn(t_end)
     return t_end, q, v, None
+
+
+#: the samples of a scan whose multipliers are solved together: the first few, then twice as
+#: many each time up to the most (a scan stops at its first event, often within a few samples)
+_FIRST_CHUNK, _MOST_CHUNK = 4, 256
+
+
+def _watched(s, p, ts, w):
+    """The watched quantities at the times ``ts`` of piece ``p``, in order (a generator: the
+    scan stops at its first event).  When the joint rows have one Jacobian over the piece
+    (every made row linear), the multipliers of a chunk of samples are solved in one stacked
+    call (SceneSystem.solve_many: the same numbers as one solve per sample); else ``w``."""
+    if not s.constant_matrix():
+        for t in ts:
+            yield w(t)
+        return
+    lo, size = 0, _FIRST_CHUNK
+    while lo < len(ts):
+        states = [p.fn(t)[:2] + (t,) for t in ts[lo:lo + size]]
+        for (q, v, t), (_a, lam, _P) in zip(states, s.solve_many(states)):
+            yield motion.watches(s, q, v, t, lam)
+        lo, size = lo + size, min(2 * size, _MOST_CHUNK)
 
 
 def _held_event(s, p, w):

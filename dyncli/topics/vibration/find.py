@@ -402,7 +402,7 @@ def _free_odometer(resp: Response):
         if t not in cache:
             turn = []
             if t > 0 and v(0.0) * v(t) < 0:
-                from dyncli.queries import root
+                from dyncli.rootfind import root
 
                 turn = [root(v, 0.0, t)]
             cache[t] = turn

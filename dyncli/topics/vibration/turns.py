@@ -13,7 +13,8 @@ The roots of f = x⁽ᵈ⁾ (d = 1: the turning points of x; d = 2: of v) on a c
 middle m and half-width h are decided by the sign analysis of f' = x⁽ᵈ⁺¹⁾ with J ≥ |f''| on the
 cell: |f'(m)| > hJ proves f' has no root there, so f is monotone and its end values decide its
 one root (a proven bracket, refined by Newton with the exact slope); |f(m)| > h|f'(m)| + h²J/2
-proves f has no root; otherwise the cell is halved.  Two roots closer than the rounding of f
+proves f has no root (as does f = f' = J = 0: f ≡ 0, a mass at rest with nothing forcing it);
+otherwise the cell is halved.  Two roots closer than the rounding of f
 (a tangency: an inflection with a level tangent, or a pair of turning points that cancel to
 rounding) end in cells of a few ulp: they are reported as ``touches`` (they move x by nothing
 that a double can hold).  The cells start on the grid of breaks (a fraction of the shortest
@@ -134,6 +135,9 @@ def roots(mo: Motion, breaks: list[float], d: int = 1, on_arrays: bool = False):
     budget ran out), decided by sign analysis on cells starting at the breaks."""
     if len(breaks) < 2 or breaks[-1] <= breaks[0]:
         return [], [], False
+    f, fd, bound, _ = jets(mo, breaks[0], d)
+    if f == 0.0 and fd == 0.0 and bound(breaks[-1] - breaks[0]) == 0.0:
+        return [], [], False                     # x⁽ᵈ⁾ ≡ 0: at rest, nothing forcing it (no isolated root)
     if on_arrays:
         return _roots_arrays(mo, breaks, d)
     return _roots_floats(mo, breaks, d)
@@ -164,6 +168,8 @@ def free_roots(mo: Motion, d: int, t_end: float) -> list[float] | None:
 def _classify(f, fd, bound, noise, h):
     """+1 monotone (at most one root: the end signs decide it), 0 no root, -1 undecided."""
     J = bound(h)
+    if f == 0.0 and fd == 0.0 and J == 0.0:        # f ≡ 0 on the cell (at rest, nothing forcing it)
+        return 0
     if abs(fd) > h * J:
         return 1
     if abs(f) > h * abs(fd) + 0.5 * h * h * J + noise:
@@ -256,7 +262,7 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
         f, fd, bound, noise = jet(m)
         J = bound(h)
         mono = np.abs(fd) > h * J
-        und = ~mono & ~(np.abs(f) > h * np.abs(fd) + 0.5 * h * h * J + noise)
+        und = ~mono & ~(np.abs(f) > h * np.abs(fd) + 0.5 * h * h * J + noise) & ~((f == 0) & (fd == 0) & (J == 0))
         tiny = (m <= a) | (m >= b) | (h <= 4 * _EPS * np.maximum(np.abs(m), T[-1] - T[0])) | (cells >= MAX_CELLS)
         end = mono | (und & tiny)
         touches += m[und & tiny & (fa * fb >= 0) & (np.abs(f) <= noise) & (a > T[0]) & (b < T[-1])].tolist()

@@ -87,3 +87,13 @@ def test_tangency_is_reported_not_missed():
     mo = turns.Motion(1.0, 0.0, 0.0, 0.0, 1.0, 1.0)
     got, _, _ = turns.roots(mo, [0.25 * k for k in range(81)], 1, False)
     assert [round(t / math.pi, 12) for t in got if t > 0] == [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+
+
+@pytest.mark.parametrize("d", [1, 2])
+@pytest.mark.parametrize("arrays", [False, True])
+def test_a_mass_at_rest_with_nothing_forcing_it_has_no_turning_point(d, arrays):
+    # a force of frequency 0 is F sin(0) = 0: w ≡ 0, so x⁽ᵈ⁾ ≡ 0 — no isolated root, and the
+    # search ends at once (before, every cell was undecided and halved until the cell budget:
+    # a hang found by tests/fuzz at force.omega = 0)
+    mo = turns.Motion(20.0, 0.1, 0.0, 0.0, 5.0, 0.0)
+    assert turns.roots(mo, [0.0, 0.5, 1.0, 3.0], d, arrays) == ([], [], False)
