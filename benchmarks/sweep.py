@@ -1,7 +1,8 @@
 """10,000-point sweeps of closed-form types (``dyncli solve --sweep``, issue
 target: <= 2 s wall on 2 cores), against the ways to do it without a sweep.
 
-For each case (vibration free and base-excited, impact) it reports:
+For each case (vibration free and base-excited, with ``find``, a forced motion's ``distance`` over
+many turning points; impact) it reports (``--case TEXT``: only the cases whose name holds TEXT):
 
 * ``shell loop``: one ``dyncli solve FILE --set PATH=V -f csv`` process per
   point (``--loop-runs`` processes timed, scaled to N points);
@@ -38,6 +39,8 @@ CASES = [
     ("vibration, base-excited (6 times)", "problems/vibration/base-excitation.yaml", "k", 100.0, 1000.0),
     ("impact, oblique smooth", "problems/impact/oblique-smooth.yaml", "e", 0.1, 0.9),
     ("vibration, free with find (2 queries)", "problems/vibration/underdamped.yaml", "k", 100.0, 1000.0),
+    ("vibration, forced, distance to 20 s", "benchmarks/sweep_cases/forced-distance.yaml", "k", 100.0, 1000.0),
+    ("vibration, base, find on w, x, v", "benchmarks/sweep_cases/base-find-w.yaml", "k", 100.0, 1000.0),
 ]
 FORMATS = ("csv", "json", "yaml", "table")
 
@@ -100,11 +103,14 @@ def main() -> None:
     ap.add_argument("--points", type=int, default=10_000)
     ap.add_argument("--loop-runs", type=int, default=10)
     ap.add_argument("--formats-only", action="store_true", help="only the dyncli --sweep rows, every format")
+    ap.add_argument("--case", action="append", default=[], help="only the cases whose name holds this text")
     args = ap.parse_args()
     n = args.points
     print(f"{n:,}-point sweeps; times in seconds (CPU = user + sys of the process)\n")
     print(f"{'case':<36} {'route':<30} {'wall':>7} {'CPU':>7}   split (CPU)")
     for name, path, field, lo, hi in CASES:
+        if args.case and not any(c in name for c in args.case):
+            continue
         if args.formats_only:
             print(name)
             _formats(path, field, lo, hi, n)

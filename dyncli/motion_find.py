@@ -33,14 +33,15 @@ def flatten(node: Any, prefix: str = "") -> dict[str, float]:
     """{dotted path: number} of one instant (list items by their index from 0; booleans and
     text left out)."""
     out: dict[str, float] = {}
-    if isinstance(node, Mapping):
+    if isinstance(node, float) or (isinstance(node, int) and not isinstance(node, bool)):
+        if prefix:                                  # (numbers first: typing's Mapping check is slow)
+            out[prefix[:-1]] = float(node)
+    elif isinstance(node, (dict, Mapping)):
         for k, v in node.items():
             out.update(flatten(v, f"{prefix}{k}."))
     elif isinstance(node, (list, tuple)):
         for i, v in enumerate(node):
             out.update(flatten(v, f"{prefix}{i}."))
-    elif isinstance(node, (int, float)) and not isinstance(node, bool) and prefix:
-        out[prefix[:-1]] = float(node)
     return out
 
 
@@ -295,13 +296,22 @@ def attach(res: Any, raw: list, entries: list[dict]) -> None:
     rows = []
     for i, (q, e) in enumerate(zip(raw, entries)):
         text, path = _asked(q)
-        value = flatten(e).get(path) if (path and e.get("reached")) else None
+        value = _value_of(e, path) if (path and e.get("reached")) else None
         rows.append([i, text, e.get("t"), value if value is not None else "—",
                      "yes" if e.get("at_end") else ("no" if e.get("at_end") is False else "—")])
     res.results["find"] = entries
     res.views.append(_table(rows))
     if "find" not in res.covered:
         res.covered.append("find")
+
+
+def _value_of(entry: dict, path: str) -> float | None:
+    """The number at ``path`` of one answer (a top-level number read directly, else through
+    :func:`flatten`)."""
+    got = entry.get(path)
+    if isinstance(got, float) or (isinstance(got, int) and not isinstance(got, bool)):
+        return float(got)
+    return flatten(entry).get(path)
 
 
 def _table(rows):

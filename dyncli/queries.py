@@ -7,7 +7,11 @@ optional ``subdivide`` (the pieces each break interval is cut into, default SUBD
 ``paths()`` (the valid scalar result paths); ``value(path, t) -> float`` (KeyError for an
 unknown path); optional ``rate(path, t) -> float | None`` (the time derivative when known);
 optional ``rtol`` (the values' relative accuracy, default 0: exact to rounding; it widens the
-tolerance within which a value touches VALUE and two extremes are equal).  Each answer is
+tolerance within which a value touches VALUE and two extremes are equal); optional ``monotone``
+(True when every result asked about is monotone between two breaks — the breaks hold all its
+turning points, decided exactly by the type — so that its extremes are samples and no touch or
+pair of crossings hides between two: no search inside a span); optional ``breaks_for(path)``
+(the breaks of one result when they differ by result, such as its own turning points).  Each answer is
 ``{"t", "reached", "at_end"}``; the caller adds the state at ``t``.
 
 Every break interval is cut into :data:`SUBDIVIDE` pieces and sampled at their ends.  ``when``:
@@ -199,6 +203,8 @@ def _check_path(motion: Any, path: str, where: str) -> None:
 def sample_grid(breaks: Iterable[float], lo: float, hi: float, n: int = SUBDIVIDE) -> list[float]:
     """lo, the breaks inside (lo, hi) and hi, each interval cut into n (SUBDIVIDE) equal pieces."""
     pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
+    if n == 1:                                        # the breaks themselves, without repeats
+        return [x for i, x in enumerate(pts) if i == 0 or x > pts[i - 1]]
     out = [lo]
     for a, b in zip(pts, pts[1:]):
         out += [x for x in (a + (b - a) * k / n for k in range(1, n)) if a < x < b] + [b]
@@ -229,7 +235,7 @@ def _when(motion: Any, q: When) -> float | None:
     grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
     well inside it (a long search for an early event samples no further than it needs)."""
     path, V = q.path, q.value
-    T = sample_grid(motion.breaks, float(motion.t0), float(motion.t_end), subdivisions(motion))
+    T = sample_grid(_breaks(motion, path), float(motion.t0), float(motion.t_end), subdivisions(motion))
     want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
     ahead = getattr(motion, "prefetch", None)
     F: list[float] = []
@@ -241,7 +247,7 @@ def _when(motion: Any, q: When) -> float | None:
         scan = _Crossings(lambda t: float(motion.value(path, t)) - V, rate, T[:m], [f - V for f in F],
                           _tol(motion, max([abs(V)] + [abs(f) for f in F])))
         safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
-        hits = [t for t, d in scan.events() if (want is None or d == want) and t <= safe]
+        hits = [t for t, d in scan.events(want, q.occurrence, safe, _monotone(motion)) if (want is None or d == want) and t <= safe]
         if len(hits) >= q.occurrence:
             return hits[q.occurrence - 1]
         if m == len(T):
@@ -255,16 +261,38 @@ FIRST_PREFIX = 256
 
 class _Crossings:
     """The crossings and touches of g = value - VALUE = 0 over the samples G at the times T:
-    ``events()`` lists (time, +1 reaching from below / -1 from above) in time order."""
+    ``events()`` lists (time, +1 reaching from below / -1 from above) in time order.
+
+    The spans that may hold an event are listed first (from the samples alone); each is then
+    solved in the order of its start — an event lies at or after its span's start — so a search
+    for the n-th event stops once it has n and no span left starts before the n-th (the events
+    it returns up to there are those of the full scan)."""
 
     def __init__(self, g, rate, T, G, tol):
         self.g, self.rate, self.T, self.G, self.tol, self.S = g, rate, T, G, tol, [_sign(x, tol) for x in G]
         self.found: list[tuple[float, int]] = []
+        self.spans: list[tuple[float, int, Callable[[], None]]] = []
 
-    def events(self) -> list[tuple[float, int]]:
-        self._dips()
+    def events(self, want: int | None = None, occurrence: int | None = None,
+               safe: float = math.inf, monotone: bool = False) -> list[tuple[float, int]]:
+        """The events, all of them, or (``occurrence``) at least every one up to the
+        ``occurrence``-th in direction ``want`` at or before ``safe``; ``monotone``: g is monotone
+        between two samples (no dip to look for inside a span)."""
+        if not monotone:
+            self._dips()
         self._signs()
+        spans = sorted(self.spans, key=lambda s: (s[0], s[1]))
+        for i, (_, _, solve) in enumerate(spans):
+            solve()
+            if occurrence is not None and i + 1 < len(spans):
+                hits = sorted(t for t, d in self.found if (want is None or d == want) and t <= safe)
+                if len(hits) >= occurrence and spans[i + 1][0] > hits[occurrence - 1]:
+                    break
         return sorted(self.found)
+
+    def _later(self, start: float, solve: Callable[[], None]) -> None:
+        """A span from ``start`` that may hold events: ``solve`` finds them (when asked)."""
+        self.spans.append((start, len(self.spans), solve))
 
     def first_reach(self, a: float, b: float, s: int) -> float:
         """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b))."""
@@ -290,7 +318,7 @@ class _Crossings:
         n, covered = len(T), set()
         for j in range(1, n - 1):
             if S[j - 1] == S[j] == S[j + 1] != 0 and abs(G[j]) < abs(G[j - 1]) and abs(G[j]) <= abs(G[j + 1]):
-                self.dip(T[j - 1], T[j + 1], S[j])
+                self._later(T[j - 1], lambda a=T[j - 1], b=T[j + 1], s=S[j]: self.dip(a, b, s))
                 covered.update((j - 1, j))
         R = [self.rate(t) for t in T] if self.rate else None
         for k in range(n - 1):
@@ -298,27 +326,32 @@ class _Crossings:
             if k in covered or s == 0 or S[k + 1] != s:
                 continue
             if R is not None and s * R[k] < 0 < s * R[k + 1]:
-                self.dip(T[k], T[k + 1], s)
+                self._later(T[k], lambda a=T[k], b=T[k + 1], s=s: self.dip(a, b, s))
             elif R is None and ((k == 0 and abs(G[0]) <= abs(G[1])) or (k == n - 2 and abs(G[-1]) < abs(G[-2]))):
-                self.dip(T[k], T[k + 1], s)            # a dip just inside an end
+                self._later(T[k], lambda a=T[k], b=T[k + 1], s=s: self.dip(a, b, s))   # a dip just inside an end
 
     def _signs(self) -> None:
         """Sign changes between samples off VALUE, runs of samples on it (within tolerance)."""
-        T, G, S = self.T, self.G, self.S
+        T, S = self.T, self.S
         sp: int | None = None                         # the last sample off VALUE: its side, index
         ip = -1                                       # (read only once sp is set)
         for i, s in enumerate(S):
             if s != 0 and sp is not None and s != sp:     # crossed (possibly through samples on VALUE)
-                self.found.append((self.first_reach(T[ip], T[i], sp), -sp))
+                self._later(T[ip], lambda a=T[ip], b=T[i], sp=sp: self.found.append((self.first_reach(a, b, sp), -sp)))
             elif s != 0 and sp is not None and i - ip > 1:    # came to VALUE and went back: a touch
-                self.dip(T[ip], T[i], sp, range(ip + 1, i))
+                self._later(T[ip], lambda a=T[ip], b=T[i], sp=sp, run=range(ip + 1, i): self.dip(a, b, sp, run))
             if s != 0:
                 sp, ip = s, i                         # (sp None before: a value held at the start)
         if sp is not None and ip < len(T) - 1:        # reaches VALUE and stays on it to the end
-            j = next((j for j in range(ip + 1, len(T)) if sp * G[j] <= 0), None)
-            t = self.first_reach(T[ip], T[j], sp) if j is not None else \
-                root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance: its edge
-            self.found.append((t, -sp))
+            self._later(T[ip], lambda ip=ip, sp=sp: self._stays(ip, sp))
+
+    def _stays(self, ip: int, sp: int) -> None:
+        """The event of a motion that reaches VALUE after the sample ``ip`` and stays on it."""
+        T, G = self.T, self.G
+        j = next((j for j in range(ip + 1, len(T)) if sp * G[j] <= 0), None)
+        t = self.first_reach(T[ip], T[j], sp) if j is not None else \
+            root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance: its edge
+        self.found.append((t, -sp))
 
 
 def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
@@ -330,9 +363,24 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
     h = lambda t: sense * float(motion.value(path, t))     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
-    T = sample_grid(motion.breaks, w1, w2, subdivisions(motion))
-    H, n, rooted = [h(t) for t in T], len(T), set()
+    T = sample_grid(_breaks(motion, path), w1, w2, subdivisions(motion))
+    H = [h(t) for t in T]
     cands = [(T[0], H[0]), (T[-1], H[-1])]
+    if _monotone(motion):                             # the turning points are samples: no search
+        cands += [(T[j], H[j]) for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
+    else:
+        cands += _turning(h, hr, T, H)
+    best = max(c[1] for c in cands)
+    tol = _tol(motion, max(abs(x) for x in H + [best]))
+    t = min(c[0] for c in cands if c[1] >= best - tol)
+    return t, (t == w1 or t == w2)
+
+
+def _turning(h, hr, T: list[float], H: list[float]) -> list[tuple[float, float]]:
+    """(time, value) of each largest value of h inside the samples T (values H): the roots of its
+    rate hr where it turns from rising (Brent), else Brent's minimiser around each sample that
+    beats its neighbours (and just inside the ends)."""
+    n, rooted, cands = len(T), set(), []
     HR = [hr(t) for t in T] if hr else []
     for k in range(len(HR) - 1):
         if HR[k] > 0 >= HR[k + 1]:                    # h turns from rising to not rising
@@ -347,10 +395,19 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     if hr is None and n > 2:                          # a peak just inside an end
         cands += [_peak(h, None, a, b) for a, b, ha, hb in ((T[0], T[1], H[0], H[1]), (T[-2], T[-1], H[-1], H[-2]))
                   if ha >= hb]
-    best = max(c[1] for c in cands)
-    tol = _tol(motion, max(abs(x) for x in H + [best]))
-    t = min(c[0] for c in cands if c[1] >= best - tol)
-    return t, (t == w1 or t == w2)
+    return cands
+
+
+def _breaks(motion: Any, path: str) -> list[float]:
+    """The breaks searched for ``path``: ``motion.breaks_for(path)`` when the motion has its own
+    for each result (the turning points of that result alone), else ``motion.breaks``."""
+    own = getattr(motion, "breaks_for", None)
+    return motion.breaks if own is None else own(path)
+
+
+def _monotone(motion: Any) -> bool:
+    """Whether the motion's results asked about are monotone between its breaks (``monotone``)."""
+    return bool(getattr(motion, "monotone", False))
 
 
 def _turn(hr: Callable[[float], float], a: float, b: float, c: float | None) -> float:

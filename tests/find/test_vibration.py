@@ -180,3 +180,73 @@ def test_invalid_queries(query, field, words):
     assert f" {field}:" in msg, msg
     for w in words:
         assert w in msg, (w, msg)
+
+
+NARROW = """
+type: vibration
+m: 1
+k: 1
+zeta: 0.01
+x0: {x0}
+v0: {v0}
+base: {{amplitude: {s0}, omega: {Om}}}
+t_end: {t_end}
+find:
+  - {{when: {{w: {V}}}}}
+  - {{when: {{w: {V}}}, occurrence: 2}}
+  - {{when: {{w: {V}}}, occurrence: 3}}
+  - {{when: {{w: {V}}}, direction: down, occurrence: {down}}}
+  - {{max: w, within: [{w1}, {w2}]}}
+  - {{when: {{x: {X}}}}}
+"""
+
+
+@pytest.mark.parametrize("case", [
+    # r = Ω/ωₙ = 8: a fast base; w dips for ~6 ms near t = 2.3 (ẇ just below 0 there)
+    dict(x0="0.138803", v0="-0.26626", s0="0.01", Om="8", t_end="4", V="-0.27812163", w1="2", w2="2.3",
+         X="0", down=2),
+    # r = 1/8: a slow base; a level stretch of w near t = 9.1, ẇ just below 0 for ~50 ms
+    dict(x0="0.000469597", v0="0.127778", s0="1", Om="0.125", t_end="12", V="0.01418107405", w1="8",
+         w2="9.1", X="0.5", down=1),
+], ids=["r=8", "r=1/8"])
+def test_w_with_a_base_motion_between_eighths(case):
+    """w = x − s − L with a base motion, where ẇ dips just below zero between two samples of the
+    old search grid (an eighth of the shortest period, cut in four): w rises to a local maximum and
+    falls back by 1e-8–1e-7 within 6–50 ms, so a level between the two crosses three times there.  The
+    old grid saw one sign change (a down crossing and two later crossings lost); the search
+    between the exact turning points of w finds all of them, against the closed form at 30 digits."""
+    mp.mp.dps = MPMATH_DPS
+    c = dict(case)
+    down = c["down"]                                # the down crossing asked: the one in the dip
+    r, warns = solve(NARROW.format(**c))
+    ref = Vib(1, 1, mp.mpf("0.01"), mp.mpf(c["x0"]), mp.mpf(c["v0"]), s0=mp.mpf(c["s0"]), Om=mp.mpf(c["Om"]))
+    V, t_end = mp.mpf(c["V"]), mp.mpf(c["t_end"])
+    g = lambda t: ref.w(t) - V                      # noqa: E731
+    cross = crossings(g, 0, t_end, n=20000)         # samples 0.2–0.6 ms apart: finer than the dip
+    ups = crossings(g, 0, t_end, n=20000, direction=1)
+    downs = [t for t in cross if t not in ups]
+    # the premise: three crossings strictly between two samples of the old grid
+    h = 2 * mp.pi / max(1, mp.mpf(c["Om"])) / 8     # ωₙ = 1
+    n = int(mp.ceil(t_end / h)) * 4
+    grid = [t_end * k / n for k in range(n + 1)]
+    near = [t for t in cross if abs(t - cross[-1]) < mp.mpf("0.1")]
+    assert len(near) == 3
+    assert not any(near[0] <= t <= near[-1] for t in grid)
+    # a crossing near the dip is ill-conditioned: w's rounding (a few ulp of its terms' scale, here
+    # |x| + s0) over the slope |ẇ| there (down to ~1e-7) — the time to that, the value to a few ulp
+    scale = abs(float(ref.y(cross[0]))) + float(c["s0"])
+
+    def near_root(e, t_ref):
+        tol = 8 * 2.2e-16 * scale / abs(float(ref.wdot(t_ref)))
+        assert e["t"] == pytest.approx(float(t_ref), rel=REL, abs=tol)
+        assert e["w"] == pytest.approx(float(V), abs=8 * 2.2e-16 * scale)
+    for k in (0, 1, 2):
+        near_root(entry(r, k), cross[k])
+    near_root(entry(r, 3), downs[down - 1])
+    t, w, end = extreme(ref.w, ref.wdot, c["w1"], c["w2"])
+    e = entry(r, 4)
+    _t(e, t)
+    assert (e["at_end"], e["w"]) == (end, pytest.approx(float(w), abs=1e-15))
+    assert end is False
+    _t(entry(r, 5), crossings(lambda t: ref.y(t) - mp.mpf(c["X"]), 0, t_end, n=4000)[0])
+    assert not warns, warns

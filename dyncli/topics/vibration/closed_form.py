@@ -291,6 +291,36 @@ def response_at(t: float, *, omega_n: float, zeta: float, L: float, x0: float, v
     return _response(t, wh, vh, wf, vf, L, s0, Omega, _FLOATS)
 
 
+def free_response_fn(omega_n: float, zeta: float, L: float, x0: float, v0: float):
+    """t -> (x, v, w) of a free vibration (no base motion, no force) below critical damping, in
+    plain floats with its constants hoisted: the operations of :func:`free_at` and
+    :func:`response_at` one by one, so the same doubles at a fraction of the cost (a ``find``
+    search evaluates the motion a few hundred times, a sweep once per point and time); None for
+    ζ ≥ 1.
+
+    >>> free_response_fn(20.0, 0.05, 0.25, 0.5, 0.0)(0.3) == response_at(0.3, omega_n=20.0, zeta=0.05, L=0.25, x0=0.5, v0=0.0)
+    True
+    """
+    wn, z = omega_n, zeta
+    if not 0.0 <= z < 1.0:
+        return None
+    w0, wd0 = x0 - L, v0
+    ws = roots(wn, z)[0]
+    a, b, K = -z * wn, wd0 + z * wn * w0, wn * (wn * w0) + z * wn * wd0
+    exp, cos, sin = math.exp, math.cos, math.sin
+
+    def at(t: float) -> tuple[float, float, float]:
+        try:
+            y = ws * t
+            ex, c = exp(a * t), cos(y)
+            ts = t * (sin(y) / y) if y != 0 else t
+        except (ValueError, OverflowError):    # beyond the float range: numpy's conventions
+            return response_at(t, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0)
+        w = ex * (w0 * c + b * ts) + 0.0
+        return w + L, ex * (wd0 * c - K * ts) + 0.0, w
+    return at
+
+
 # ---------------------------------------------------------------------------
 # steady-state amplification functions (17.30), (17.33), (17.34)
 

@@ -3,9 +3,11 @@
 The motion is the closed-form total response at any time (:func:`closed_form.response_at`, or the
 force- or unbalance-excited :func:`forced.response_at`); its rates are exact (v is the rate of x, and the rates
 of v and w follow from the equation of motion (17.15a)), so a turning point is a root of the rate
-(Brent), never a sampled peak.  The breaks are an eighth of the shortest period present (the
-damped free vibration's, the excitation's), so every piece holds at most one turning point of
-each harmonic.
+(Brent), never a sampled peak.  The queries search between the exact turning points of the
+quantities they ask about (x: the roots of v; v: of the acceleration; w = x − s − L: of ẇ, the
+same equation of motion without the base's s), found by the sign analysis of :mod:`.turns` on
+the breaks (an eighth of the shortest period present, the damped free vibration's or the
+excitation's): each quantity is monotone between them, so no crossing or extremum can hide.
 
 ``distance`` is Σ|Δx| between the turning points (the roots of v).  Free vibration: the turning
 points in closed form (v ∝ e^(−ζωₙt) cos(ω*t + β) vanishes at ω*t + β = π/2 + kπ; at most one
@@ -21,7 +23,7 @@ from __future__ import annotations
 
 import math
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
@@ -72,6 +74,13 @@ class Response:
         return forced.response_at(t, m=p.m, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0,
                                   v0=p.v0, F0=self.fo[0], Om=self.fo[1])
 
+    def fast_at(self):
+        """:meth:`at` of a free vibration below critical damping with its constants hoisted
+        (:func:`closed_form.free_response_fn`: the same doubles), or None for any other motion."""
+        if self.fo is not None or self.s0 != 0.0:
+            return None
+        return cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
+
     def scalar(self):
         """(x, v)(t) in plain floats: the steady state plus the free vibration that makes up the
         initial conditions (the general closed form at an undamped resonance)."""
@@ -118,14 +127,6 @@ class Response:
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
 
-    def acceleration(self, t: float) -> float:
-        """ẍ from (17.15a): −ωₙ²(x − s − L) − 2ζωₙ(ẋ − ṡ) + F/m."""
-        x, v, _ = self.at(t)
-        s, sd = self.s0 * math.sin(self.Om * t), self.s0 * self.Om * math.cos(self.Om * t)
-        f = 0.0 if self.fo is None else self.fo[0] * math.sin(self.fo[1] * t) / self.p.m
-        wn = self.omega_n
-        return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
-
     def arrays(self, t):
         """(x, v) on an array of times (numpy): the steady state plus the free vibration that
         makes up the initial conditions (a few numpy operations per call); at an undamped
@@ -165,9 +166,6 @@ class Response:
             return turns.Motion(self.omega_n, self.zeta, self.x0 - self.L, p.v0, self.fo[0] / p.m, self.fo[1])
         s0, Om = self.s0, self.Om
         return turns.Motion(self.omega_n, self.zeta, self.x0 - self.L, p.v0 - s0 * Om, s0 * Om * Om, Om, s0)
-
-    def w_rate(self, t: float) -> float:
-        return self.at(t)[1] - self.s0 * self.Om * math.cos(self.Om * t)
 
     def step(self) -> float:
         """1/PER_PERIOD of the shortest period of the motion [s]."""
@@ -212,10 +210,11 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     if not p.find:
         return
     breaks, capped = resp.breaks(t_end)
-    exact = _exact_paths(list(p.find), resp) and not capped    # (a capped grid: far too many turning points)
-    if exact and t_end > 0:         # every turning point of x and of v is a break: x, v monotone between
-        tx, tv, capped = _turning_points(resp, breaks, t_end)
-        breaks = sorted(set([0.0, t_end] + tx + tv))
+    asked = _asked_paths(list(p.find))
+    exact = asked is not None and not capped    # (a capped grid: far too many turning points)
+    if exact and t_end > 0:         # every turning point of each quantity asked is a break: monotone between
+        own, capped = _turning_points(resp, breaks, t_end, asked)
+        breaks = sorted(set([0.0, t_end]).union(*own.values()))
     if capped:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
@@ -224,37 +223,49 @@ def report(p: Setup, res, omega_n, zeta) -> None:
         xx, v, w = resp.at(t)
         return {"x": xx, "v": v, "w": w, "distance": odo(t)}
 
-    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None)
+    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None, monotone=exact and not capped)
+    if exact and t_end > 0:
+        motion.own = {path: [0.0] + sorted(t for t in ts if 0.0 < t < t_end) + [motion.t_end]
+                      for path, ts in own.items()}
     mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
 
 
-def _turning_points(resp: Response, breaks: list[float], t_end: float):
-    """(the turning points of x, of v in (0, t_end), whether a search ran out of cells): in closed
-    form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
+def _turning_points(resp: Response, breaks: list[float], t_end: float, asked: set[str]):
+    """({quantity: its turning points in (0, t_end)} for every quantity in ``asked``, whether a
+    search ran out of cells): of x (the roots of v; also the kinks of distance), of v (the roots of the
+    acceleration) and of w (the roots of ẇ; w = x − L without a base motion, so x's), each in
+    closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
     mo, arrays = resp.motion(), _on_arrays(len(breaks))
-    out, capped = [], False
-    for d in (1, 2):
-        got = turns.free_roots(mo, d, t_end)
-        if got is None:
-            got, _, more = turns.roots(mo, breaks, d, arrays)
-            capped = capped or more
-        out.append(got)
-    return out[0], out[1], capped
+    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo   # w = x − s − L: the same equation without s
+    which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+    found: dict = {}
+    out, capped = {}, False
+    for path in sorted(asked):
+        key = which[path]
+        if key not in found:
+            got = turns.free_roots(key[0], key[1], t_end)
+            if got is None:
+                got, _, more = turns.roots(key[0], breaks, key[1], arrays)
+                capped = capped or more
+            found[key] = got
+        out[path] = found[key]
+    return out, capped
 
 
-def _exact_paths(find, resp: Response) -> bool:
-    """Whether every query asks about x, v, distance (or w without a base motion, w = x − L):
-    quantities monotone between the turning points of x and of v, so that a search over those
-    points alone is exact."""
-    ok = {"x", "v", "distance"} | ({"w"} if resp.s0 == 0.0 else set())
+def _asked_paths(find) -> set[str] | None:
+    """The quantities the queries ask about (x, v, w, distance), or None when a query is not one
+    of them (malformed: left to the queries' own messages).  Each is monotone between its
+    turning points (distance between those of x), so a search over those points alone is exact."""
+    ok, asked = {"x", "v", "w", "distance"}, set()
     for q in find if isinstance(find, (list, tuple)) else ():
         if not isinstance(q, dict):
-            return False
+            return None
         when = q.get("when")
         paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
         if not all(isinstance(x, str) and x in ok for x in paths):
-            return False
-    return True
+            return None
+        asked.update(paths)
+    return asked
 
 
 class _Motion:
@@ -264,14 +275,22 @@ class _Motion:
     t0 = 0.0
     rtol = 0.0
 
-    def __init__(self, resp: Response, odo, t_end: float, breaks: list[float], subdivide: int | None):
+    def __init__(self, resp: Response, odo, t_end: float, breaks: list[float], subdivide: int | None,
+                 monotone: bool = False):
         self.resp, self.odo, self.t_end = resp, odo, float(t_end)
+        self.monotone = monotone        # the breaks hold every turning point of each quantity asked
+        self.own: dict[str, list[float]] = {}     # each quantity's own breaks (its turning points)
         self.breaks = [0.0] + sorted({float(b) for b in breaks if 0.0 < b < t_end}) + [self.t_end]
         self.subdivide = subdivide
         self.period = None
+        self.at = resp.fast_at() or resp.at
 
     def paths(self) -> list[str]:
         return ["distance", "v", "w", "x"]
+
+    def breaks_for(self, path: str) -> list[float]:
+        """The breaks searched for ``path``: its own turning points when known, else all."""
+        return self.own.get(path, self.breaks)
 
     def value(self, path: str, t: float) -> float:
         if path == "distance":
@@ -279,20 +298,22 @@ class _Motion:
         i = ("x", "v", "w").index(path) if path in ("x", "v", "w") else None
         if i is None:
             raise KeyError(path)
-        return self.resp.at(t)[i]
+        return self.at(t)[i]
 
     def rate(self, path: str, t: float) -> float | None:
         r = self.resp
         if path == "x":
-            return r.at(t)[1]
+            return self.at(t)[1]
         if path == "v":
-            return r.acceleration(t)
+            return r.acceleration_at(t, *self.at(t)[:2])
         if path == "w":
-            return r.w_rate(t)
-        return abs(r.at(t)[1]) if path == "distance" else None
+            return self.at(t)[1] - r.s0 * r.Om * math.cos(r.Om * t)
+        return abs(self.at(t)[1]) if path == "distance" else None
 
     def clipped(self, t_end: float) -> "_Motion":
-        return _Motion(self.resp, self.odo, t_end, self.breaks, self.subdivide)
+        out = _Motion(self.resp, self.odo, t_end, self.breaks, self.subdivide, self.monotone)
+        out.own = {k: [b for b in v if b < t_end] + [float(t_end)] for k, v in self.own.items()}
+        return out
 
 
 def _odometer(resp: Response, t_end: float):
@@ -302,13 +323,34 @@ def _odometer(resp: Response, t_end: float):
     tps = _forced_turns(resp, t_end) if t_end > 0 else []
     if not _on_arrays(len(tps)):
         xv = resp.scalar()
-        at_turns = {t: xv(t)[0] for t in tps}
+        xs = [xv(t)[0] for t in tps]
     else:
-        at_turns = dict(zip(tps, resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()))
+        xs = resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()
+    return _Odometer(_turning_length(resp, tps, xs))
 
-    def x(u: float) -> float:
-        return at_turns[u] if u in at_turns else resp.at(u)[0]
-    return _Odometer(lambda ts: mf.turning_length(x, tps, ts))
+
+def _turning_length(resp: Response, tps: list[float], xs: list[float]):
+    """distance(times) of a motion whose x is monotone between the turning points ``tps`` (x
+    there ``xs``): Σ|Δx| accumulated once, then one evaluation of x per time asked
+    (:func:`dyncli.motion_find.turning_length`, the same sums, without a call per turning point)."""
+    import bisect
+
+    x0 = resp.at(0.0)[0]
+    cum, prev = [0.0], x0
+    for v in xs:
+        cum.append(cum[-1] + abs(v - prev))
+        prev = v
+    at_turns = dict(zip(tps, xs))
+
+    def many(times) -> list[float]:
+        out = []
+        for t in (float(u) for u in times):
+            k = bisect.bisect_left(tps, t)          # turning points strictly before t
+            last = xs[k - 1] if k else x0
+            x = at_turns[t] if t in at_turns else resp.at(t)[0]
+            out.append(cum[k] + abs(x - last) + 0.0)
+        return out
+    return many
 
 
 class _Odometer:
@@ -337,18 +379,20 @@ def _free_odometer(resp: Response):
             y1 = math.pi
         t1, half = y1 / ws, math.pi / ws
         decay = z * wn * half                         # ln of the ratio of successive |w| at turning points
+        fast = resp.fast_at()                         # the same doubles as free_at, constants hoisted
+        if fast is not None:
+            w = lambda t: fast(t)[2]                  # noqa: E731
+        w1 = w(t1)
+        a1, first = abs(w1), abs(w1 - w0)
+        c1, em1 = a1 * (1.0 + math.exp(-decay)), math.expm1(-decay)     # (the series' constants)
 
         def odometer(t: float) -> float:
             if (w0 == 0.0 and wd0 == 0.0) or t <= t1:
                 return abs(w(t) - w0)
             k = math.floor((t - t1) / half)           # turning points t1 + j·half, j = 0..k, at or before t
             tk = t1 + k * half
-            a1 = abs(w(t1))
-            if decay == 0.0:
-                inner = 2.0 * a1 * k
-            else:
-                inner = a1 * (1.0 + math.exp(-decay)) * math.expm1(-k * decay) / math.expm1(-decay)
-            return abs(w(t1) - w0) + inner + abs(w(t) - w(tk))
+            inner = 2.0 * a1 * k if decay == 0.0 else c1 * math.expm1(-k * decay) / em1
+            return first + inner + abs(w(t) - w(tk))
         return _Odometer(lambda ts: [odometer(t) for t in ts], odometer)
     # ζ ≥ 1: v vanishes at most once (a sum of two decaying exponentials)
     v = lambda t: cf.free_at(t, w0, wd0, wn, z)[1]    # noqa: E731
@@ -370,12 +414,21 @@ def _free_odometer(resp: Response):
 #: up to this many grid points the turning points are found in plain floats (no numpy import:
 #: a closed-form problem starts at the import floor), beyond it on arrays
 SCALAR_GRID = 2048
+#: grid points a process searches in plain floats before it imports numpy for the rest: about as
+#: much work as numpy's import (~0.1 s), so a single problem never pays it and a sweep or a batch
+#: of long searches (a forced motion's distance, every point) pays it once
+FLOAT_BUDGET = 20_000
+_spent = [0]
 
 
 def _on_arrays(n: int) -> bool:
-    """Whether n points go on numpy arrays: when they are many, or numpy is loaded already (a
-    sweep, the Python API), where one vectorised pass costs less than n calls in floats."""
-    return n > SCALAR_GRID or "numpy" in sys.modules
+    """Whether n points go on numpy arrays: when they are many, when numpy is loaded already (a
+    sweep through the Python API), or once this process has searched FLOAT_BUDGET points in plain
+    floats (a sweep from the command line) — one vectorised pass then costs less than n calls."""
+    if n > SCALAR_GRID or "numpy" in sys.modules or _spent[0] + n > FLOAT_BUDGET:
+        return True
+    _spent[0] += n
+    return False
 
 
 def _forced_turns(resp: Response, t_end: float) -> list[float]:

@@ -88,10 +88,11 @@ def jets(mo: Motion, t, d: int, X=None):
     return f, fd, bound, noise
 
 
-def _fast_jets(mo: Motion, d: int):
-    """:func:`jets` in plain floats with its constants hoisted (the steady state plus an
-    underdamped free part: no numpy, a few floating operations per time), or None where that
-    form does not apply (ζ ≥ 1, no excitation, near resonance)."""
+def _fast_jets(mo: Motion, d: int, X=math):
+    """:func:`jets` with its constants hoisted (the steady state plus an underdamped free part: a
+    few floating operations per time), or None where that form does not apply (ζ ≥ 1, no
+    excitation, near resonance): in plain floats (no numpy), or with ``X = numpy`` on arrays of
+    times (the same operations, element by element)."""
     wn, z, F, Om = mo.omega_n, mo.zeta, mo.F, mo.Om
     r = Om / wn
     D = complex((1.0 - r) * (1.0 + r), 2.0 * z * r)
@@ -109,7 +110,7 @@ def _fast_jets(mo: Motion, d: int):
     base = 16 * _EPS * (abs(F) * Om ** max(d - 2, 0) + abs(mo.s0) * Om ** d + abs(P) * (Om ** d + wn ** d))
     Fk = [F * Om ** (k - 1) for k in range(1, d + 2)]
     sd, sd1 = mo.s0 * Om ** d, mo.s0 * Om ** (d + 1)
-    exp, cos, sin, sqrt = math.exp, math.cos, math.sin, math.sqrt
+    exp, cos, sin, sqrt = X.exp, X.cos, X.sin, X.sqrt
 
     def jet(t: float):
         ex, y, th = exp(-sig * t), ws * t, Om * t
@@ -179,11 +180,18 @@ def _classify(f, fd, bound, noise, h):
 def _roots_floats(mo: Motion, breaks: list[float], d: int):
     jet = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
     F = [jet(t)[0] for t in breaks]
-    span = breaks[-1] - breaks[0]           # cells below its rounding are not halved further
     out: list[float] = [t for t, f in zip(breaks[1:-1], F[1:-1]) if f == 0.0]
-    touches: list[float] = []
     stack = [(a, b, fa, fb) for a, b, fa, fb in zip(breaks, breaks[1:], F, F[1:])][::-1]
-    cells = 0
+    got, touches, cells = _cells_floats(jet, stack, breaks[0], breaks[-1], 0)
+    return sorted(set(out + got)), touches, cells >= MAX_CELLS
+
+
+def _cells_floats(jet, stack: list, lo: float, hi: float, cells: int):
+    """(the roots, the touches, the cells examined so far) of the cells (a, b, f(a), f(b)) on
+    ``stack`` (the last first) of the search over [lo, hi], in plain floats."""
+    span = hi - lo                          # cells below its rounding are not halved further
+    out: list[float] = []
+    touches: list[float] = []
     while stack:
         a, b, fa, fb = stack.pop()
         m, h = 0.5 * (a + b), 0.5 * (b - a)
@@ -193,13 +201,19 @@ def _roots_floats(mo: Motion, breaks: list[float], d: int):
         if kind == 1 or (kind == -1 and (m <= a or m >= b or h <= 4 * _EPS * max(abs(m), span))):
             if fa * fb < 0:
                 out.append(_newton(jet, a, b, fa, fb))
-            elif kind == -1 and abs(f) <= noise and breaks[0] < a and b < breaks[-1]:
+            elif kind == -1 and abs(f) <= noise and lo < a and b < hi:
                 touches.append(m)
         elif kind == -1:
             if f == 0.0:
                 out.append(m)
             stack += [(m, b, f, fb), (a, m, fa, f)]
-    return sorted(set(out)), touches, cells >= MAX_CELLS
+    return out, touches, cells
+
+
+#: when this few cells are left undecided, the array search finishes them in plain floats (a cell
+#: at a root of high order, such as a start from rest, is halved some 40 times: one float
+#: evaluation each instead of a round of array operations)
+FEW_CELLS = 8
 
 
 def _newton(jet, a: float, b: float, fa: float, fb: float) -> float:
@@ -227,17 +241,25 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
 
     from dyncli.rootfind import newton_in_brackets
 
+    jet = _fast_jets(mo, d, np) or (lambda t: jets(mo, t, d, np))
     T = np.asarray(breaks, dtype=float)
-    F = jets(mo, T, d, np)[0]
+    F = jet(T)[0]
     found = [T[1:-1][F[1:-1] == 0.0]]
     a, b, fa, fb = T[:-1], T[1:], F[:-1], F[1:]
     touches: list = []
     ends: list[list] = [[], [], [], []]
     cells = 0
     while a.size:
+        if a.size <= FEW_CELLS and cells:
+            jf = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
+            got, more, cells = _cells_floats(jf, list(zip(a.tolist(), b.tolist(), fa.tolist(), fb.tolist()))[::-1],
+                                             breaks[0], breaks[-1], cells)
+            found.append(np.asarray(got, dtype=float))
+            touches += more
+            break
         m, h = 0.5 * (a + b), 0.5 * (b - a)
         cells += a.size
-        f, fd, bound, noise = jets(mo, m, d, np)
+        f, fd, bound, noise = jet(m)
         J = bound(h)
         mono = np.abs(fd) > h * J
         und = ~mono & ~(np.abs(f) > h * np.abs(fd) + 0.5 * h * h * J + noise) & ~((f == 0) & (fd == 0) & (J == 0))
@@ -254,7 +276,7 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     k = FA * FB < 0
     if k.any():
         def FD(x, _):
-            r = jets(mo, x, d, np)
+            r = jet(x)
             return r[0], r[1]
         found.append(np.asarray(newton_in_brackets(FD, A[k], B[k], FA[k], FB[k]), dtype=float))
     return sorted(set(np.concatenate(found).tolist())), sorted(touches), cells >= MAX_CELLS
