@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial
 from typing import Any, Callable, Iterable, Union
 
 from dyncli.errors import InputError
@@ -298,6 +299,10 @@ class _Crossings:
         """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b))."""
         return root(lambda t: _hr_psi(lambda t: s * self.g(t), t), a, b)
 
+    def crossing(self, a: float, b: float, s: int) -> None:
+        """The crossing from side s at a to the other side at b."""
+        self.found.append((self.first_reach(a, b, s), -s))
+
     def dip(self, a: float, b: float, s: int, run: Iterable[int] = ()) -> None:
         """g at a and b on side s (the samples ``run`` between on VALUE): a touch, two crossings?"""
         rate, g = self.rate, self.g
@@ -318,7 +323,7 @@ class _Crossings:
         n, covered = len(T), set()
         for j in range(1, n - 1):
             if S[j - 1] == S[j] == S[j + 1] != 0 and abs(G[j]) < abs(G[j - 1]) and abs(G[j]) <= abs(G[j + 1]):
-                self._later(T[j - 1], lambda a=T[j - 1], b=T[j + 1], s=S[j]: self.dip(a, b, s))
+                self._later(T[j - 1], partial(self.dip, T[j - 1], T[j + 1], S[j]))
                 covered.update((j - 1, j))
         R = [self.rate(t) for t in T] if self.rate else None
         for k in range(n - 1):
@@ -326,9 +331,9 @@ class _Crossings:
             if k in covered or s == 0 or S[k + 1] != s:
                 continue
             if R is not None and s * R[k] < 0 < s * R[k + 1]:
-                self._later(T[k], lambda a=T[k], b=T[k + 1], s=s: self.dip(a, b, s))
+                self._later(T[k], partial(self.dip, T[k], T[k + 1], s))
             elif R is None and ((k == 0 and abs(G[0]) <= abs(G[1])) or (k == n - 2 and abs(G[-1]) < abs(G[-2]))):
-                self._later(T[k], lambda a=T[k], b=T[k + 1], s=s: self.dip(a, b, s))   # a dip just inside an end
+                self._later(T[k], partial(self.dip, T[k], T[k + 1], s))   # a dip just inside an end
 
     def _signs(self) -> None:
         """Sign changes between samples off VALUE, runs of samples on it (within tolerance)."""
@@ -337,13 +342,13 @@ class _Crossings:
         ip = -1                                       # (read only once sp is set)
         for i, s in enumerate(S):
             if s != 0 and sp is not None and s != sp:     # crossed (possibly through samples on VALUE)
-                self._later(T[ip], lambda a=T[ip], b=T[i], sp=sp: self.found.append((self.first_reach(a, b, sp), -sp)))
+                self._later(T[ip], partial(self.crossing, T[ip], T[i], sp))
             elif s != 0 and sp is not None and i - ip > 1:    # came to VALUE and went back: a touch
-                self._later(T[ip], lambda a=T[ip], b=T[i], sp=sp, run=range(ip + 1, i): self.dip(a, b, sp, run))
+                self._later(T[ip], partial(self.dip, T[ip], T[i], sp, range(ip + 1, i)))
             if s != 0:
                 sp, ip = s, i                         # (sp None before: a value held at the start)
         if sp is not None and ip < len(T) - 1:        # reaches VALUE and stays on it to the end
-            self._later(T[ip], lambda ip=ip, sp=sp: self._stays(ip, sp))
+            self._later(T[ip], partial(self._stays, ip, sp))
 
     def _stays(self, ip: int, sp: int) -> None:
         """The event of a motion that reaches VALUE after the sample ``ip`` and stays on it."""

@@ -212,7 +212,7 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     breaks, capped = resp.breaks(t_end)
     asked = _asked_paths(list(p.find))
     exact = asked is not None and not capped    # (a capped grid: far too many turning points)
-    if exact and t_end > 0:         # every turning point of each quantity asked is a break: monotone between
+    if exact and asked is not None and t_end > 0:   # every turning point of each quantity asked is a break: monotone between
         own, capped = _turning_points(resp, breaks, t_end, asked)
         breaks = sorted(set([0.0, t_end]).union(*own.values()))
     if capped:
