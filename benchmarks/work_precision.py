@@ -219,7 +219,7 @@ def rows_from_md(path: Path) -> list[tuple]:
             case = SimpleNamespace(name=line[4:].strip())
         elif case is not None and line.startswith("| 1e"):
             c = [x.strip() for x in line.strip("|").split("|")]
-            if c[1] == "failed":
+            if len(c) < 9 or c[1] == "failed":         # (another table of the page: not this plot's)
                 continue
             t, err, bt, berr = num(c[2]), num(c[3]), num(c[7]), num(c[8])
             rows.append((case, float(c[0]), t / 1000, err, num(c[4]), None, "",
