@@ -1,0 +1,95 @@
+"""``distance`` (∫|v| dt) of the ODE route against independent references.
+
+The route integrates |v| by Gauss–Legendre on every step's interpolant, with the stops where
+|v| nearly vanishes located inside the steps; these tests hold it to ``tolerances.ode(rtol)``
+relative to the distance, whatever way it is computed:
+
+* a projectile with linear drag (m v' = −c v + m g): v(t) = v∞ + (v0 − v∞) e^(−kt), k = c/m,
+  v∞ = g/k downwards; the distance is that closed-form speed integrated by mpmath at 30 digits
+  (split at the apex, where |v| is least);
+* a spring oscillator from rest at x = A (x = A cos ωt): it passes through v = 0 at every half
+  period, where |v| has a kink; the distance is 2A per half period, exactly
+  (n half periods done: 2A n + A (1 − cos(ωt − nπ)));
+* the same oscillator with a small transverse velocity u (|v|² = A²ω² sin²ωt + u² cos²ωt): |v|
+  nearly vanishes without a kink; mpmath at 30 digits, split at each least speed.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_one_text
+from tests.tolerances import ode
+
+mp.mp.dps = 30
+
+RTOLS = (1e-6, 1e-8, 1e-10)
+
+
+def _distance(text: str) -> list[float]:
+    rec = solve_one_text(text)
+    return rec["results"]["distance"]
+
+
+def _drag_arc(t):
+    m, c, g = mp.mpf("0.5"), mp.mpf("0.1"), mp.mpf("9.81")
+    k = c / m
+    vinf = -g / k
+    vx = lambda s: 20 * mp.exp(-k * s)                               # noqa: E731
+    vz = lambda s: vinf + (20 - vinf) * mp.exp(-k * s)               # noqa: E731
+    apex = mp.log((20 - vinf) / -vinf) / k
+    pts = [0, apex, t] if t > apex else [0, t]
+    return mp.quad(lambda s: mp.sqrt(vx(s) ** 2 + vz(s) ** 2), pts)
+
+
+@pytest.mark.parametrize("rtol", RTOLS)
+@pytest.mark.parametrize("method", ["auto", "RK45"])
+def test_linear_drag_projectile_distance(rtol, method):
+    times = [0.3, 1.0, 1.7, 2.0, 3.0, 4.5]
+    got = _distance("type: particle\nm: 0.5\nv0: [20, 0, 20]\n"
+                    "forces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\n"
+                    f"t_end: 4.5\nat: {times}\naccuracy: {{rtol: {rtol}, method: {method}}}\n")
+    for t, d in zip(times, got):
+        assert d == pytest.approx(float(_drag_arc(mp.mpf(t))), rel=ode(rtol)), t
+
+
+def _osc_arc(A, w, t):
+    n = math.floor(w * t / math.pi)
+    return 2 * A * n + A * (1 - math.cos(w * t - n * math.pi))
+
+
+@pytest.mark.parametrize("rtol", RTOLS)
+def test_spring_oscillator_through_rest_many_times(rtol):
+    A, k, m = 0.3, 40.0, 0.9
+    w = math.sqrt(k / m)
+    times = [0.05 * j + 0.013 for j in range(0, 400, 7)]            # ~ 42 half periods
+    got = _distance(f"type: particle\nm: {m}\nx0: [{A}, 0, 0]\nforces: [{{kind: spring, k: {k}}}]\n"
+                    f"t_end: {times[-1]}\nat: {times}\naccuracy: {{rtol: {rtol}}}\n")
+    for t, d in zip(times, got):
+        assert d == pytest.approx(_osc_arc(A, w, t), rel=ode(rtol), abs=ode(rtol) * A), t
+
+
+@pytest.mark.parametrize("rtol", RTOLS)
+def test_oscillator_with_small_transverse_speed(rtol):
+    A, k, m, u = 0.3, 40.0, 0.9, 1e-4
+    times = [0.37, 1.0, 2.2, 3.9]
+    got = _distance(f"type: particle\nm: {m}\nx0: [{A}, 0, 0]\nv0: [0, {u}, 0]\nforces: [{{kind: spring, k: {k}}}]\n"
+                    f"t_end: 3.9\nat: {times}\naccuracy: {{rtol: {rtol}}}\n")
+    W, AA, U = mp.sqrt(mp.mpf(k) / mp.mpf(m)), mp.mpf(A), mp.mpf(u)
+    for t, d in zip(times, got):
+        T = mp.mpf(t)
+        pts = [0] + [j * mp.pi / W for j in range(1, int(T * W / mp.pi) + 1)] + [T]
+        ref = mp.quad(lambda s: mp.sqrt((AA * W * mp.sin(W * s)) ** 2 + (U * mp.cos(W * s)) ** 2), pts)
+        assert d == pytest.approx(float(ref), rel=ode(rtol)), t
+
+
+def test_distance_same_with_and_without_find():
+    """The run with ``find`` (every step's interpolant kept) reports the same distance."""
+    base = ("type: particle\nm: 0.5\nv0: [20, 0, 20]\nforces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\n"
+            "t_end: 3\nat: [1, 2, 3]\naccuracy: {rtol: 1e-8}\n")
+    plain = _distance(base)
+    with_find = _distance(base + "find: [{max: x.2}]\n")
+    assert with_find == pytest.approx(plain, rel=1e-14)
