@@ -207,3 +207,33 @@ def test_yaml_number_run_errors_and_caps_unchanged(monkeypatch):
     with pytest.raises(yamlsafe.YamlError) as err:
         yamlsafe.load("at: [" + ", ".join(["1"] * 60) + "]\n")
     assert "more than 50 values" in err.value.message
+
+
+@pytest.mark.parametrize("chunk", [1, 50, 1 << 20])
+def test_a_streamed_record_is_written_in_joined_chunks(monkeypatch, chunk):
+    """A record's pieces are joined into writes of about ``CHUNK`` characters: the same bytes
+    as the whole-output writer, in fewer writes than pieces (a tiny chunk: one per piece)."""
+    from dyncli import run
+    from dyncli.render import emit, jsonout, stream
+
+    monkeypatch.setattr(stream, "CHUNK", chunk)
+    writes: list[str] = []
+
+    class Out(io.StringIO):
+        def write(self, s):
+            writes.append(s)
+            return super().write(s)
+
+    out = Out()
+    monkeypatch.setattr(sys, "stdout", out)
+    assert run.solve_command([str(ROOT / "problems/vibration/underdamped.yaml")], "json", sweeps=["k=100,400,900"]) == 0
+    monkeypatch.setattr(sys, "stdout", io.StringIO())
+    from dyncli.loader import load_paths
+    from dyncli.overrides import expand, parse_sweep
+
+    lps, _ = load_paths([str(ROOT / "problems/vibration/underdamped.yaml")])
+    outcomes = [run.solve_one(lp) for lp in expand(lps, [parse_sweep("k=100,400,900")])]
+    assert out.getvalue() == emit.dumps("json", outcomes)
+    pieces = sum(len(jsonout.encode_parts(run.outcome_record(o), "  ")) + 1 for o in outcomes)
+    assert len(writes) == (pieces + 1 if chunk == 1 else 4 if chunk == 1 << 20 else len(writes))
+    assert len(writes) <= pieces + 1 and all(len(w) < chunk + 2000 for w in writes)
