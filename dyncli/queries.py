@@ -296,8 +296,15 @@ class _Crossings:
         self.spans.append((start, len(self.spans), solve))
 
     def first_reach(self, a: float, b: float, s: int) -> float:
-        """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b))."""
-        return root(lambda t: _hr_psi(lambda t: s * self.g(t), t), a, b)
+        """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b)): the root of s*g with
+        an exact zero counted as negative (:func:`_hr_psi`, written out: one call per value)."""
+        g = self.g
+
+        def psi(t: float) -> float:
+            y = s * g(t)
+            return y if y != 0 else -_TINY
+
+        return root(psi, a, b)
 
     def crossing(self, a: float, b: float, s: int) -> None:
         """The crossing from side s at a to the other side at b."""

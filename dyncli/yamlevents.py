@@ -54,7 +54,29 @@ class Events:
     def __next__(self):
         if self._done:
             raise StopIteration
-        ev = self._get()
+        return self._see(self._get())
+
+    def plain_scalars(self, take) -> Any:
+        """Read a run of plain scalars (no tag, no anchor, outside any
+        anchored value being recorded) straight from the parser, each counted
+        as :meth:`__next__` counts it and handed to ``take(event)``, while
+        ``take`` accepts them (returns True): the fast lane of a long list of
+        numbers.  Returns the first event not taken, seen as :meth:`__next__`
+        would return it."""
+        get, scalar, cap = self._get, self._y.ScalarEvent, self._max_values
+        while True:
+            ev = get()
+            if type(ev) is not scalar or ev.tag is not None or ev.anchor is not None \
+                    or not ev.implicit[0] or self._recording:
+                return self._see(ev)
+            self.values += 1
+            if self.values > cap:
+                self._cap(ev, f"document has more than {cap} values")
+            if not take(ev):
+                return ev
+
+    def _see(self, ev):
+        """``ev`` counted, capped, recorded and its anchor noted."""
         kind = self._kind.get(type(ev), 0)
         if kind == 3:                                   # a scalar or an alias
             self.values += 1

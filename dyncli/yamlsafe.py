@@ -12,11 +12,16 @@ constructed by PyYAML:
 * nesting depth, node count and document size are capped (depth and node
   count while parsing, before anything is built);
 * duplicate mapping keys are an error;
-* every value's (line, col) is recorded under its path tuple.
+* every value's (line, col) is recorded under its path tuple -- for a run of
+  plain numbers in a list (``at: [0.0, 0.01, ...]`` with 100,000 times), only
+  the run's packed marks and texts are kept, each turned into a position when
+  a message asks for it (:class:`PathTable`).
 """
 
 from __future__ import annotations
 
+import re
+from collections.abc import Iterator, MutableMapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -37,16 +42,81 @@ class YamlError(InputError):
         self.col = col
 
 
+_SHIFT = 32          # a packed mark: line << _SHIFT | column (0-based)
+
+
+def _unpack(mark: int) -> tuple[int, int]:
+    return (mark >> _SHIFT) + 1, (mark & ((1 << _SHIFT) - 1)) + 1
+
+
+class PathTable(MutableMapping):
+    """path tuple -> value: a plain dict (``eager``) and, for the leading run
+    of plain numbers of a list, one entry per list (``runs``: the list's path
+    -> the run's items, and how to turn an item into the value; None: the item
+    is the value), so that a list of 100,000 numbers costs no dict entry per
+    number.  A run covers indices ``0 .. len(items) - 1`` of its list; the
+    list's other items, if any, are in ``eager``."""
+
+    def __init__(self, eager: dict | None = None):
+        self.eager: dict = {} if eager is None else eager
+        self.runs: dict[tuple, tuple[list, Any]] = {}
+
+    def __getitem__(self, path):
+        try:
+            return self.eager[path]
+        except KeyError:
+            pass
+        if self.runs and path and type(path[-1]) is int:
+            run = self.runs.get(path[:-1])
+            if run is not None and 0 <= path[-1] < len(run[0]):
+                item = run[0][path[-1]]
+                return item if run[1] is None else run[1](item)
+        raise KeyError(path)
+
+    def __contains__(self, path) -> bool:
+        if path in self.eager:
+            return True
+        if self.runs and type(path) is tuple and path and type(path[-1]) is int:
+            run = self.runs.get(path[:-1])
+            return run is not None and 0 <= path[-1] < len(run[0])
+        return False
+
+    def __setitem__(self, path, value) -> None:
+        self.eager[path] = value
+
+    def __delitem__(self, path) -> None:
+        if path in self.eager:
+            del self.eager[path]
+            return
+        if path in self:                 # a run's item: the run ends before it, the rest kept one by one
+            items, to_value = self.runs.pop(path[:-1])
+            for i in range(path[-1] + 1, len(items)):
+                self.eager[path[:-1] + (i,)] = items[i] if to_value is None else to_value(items[i])
+            if path[-1]:
+                self.runs[path[:-1]] = (items[:path[-1]], to_value)
+            return
+        raise KeyError(path)
+
+    def __iter__(self) -> Iterator:
+        yield from self.eager
+        for prefix, (items, _) in self.runs.items():
+            for i in range(len(items)):
+                yield prefix + (i,)
+
+    def __len__(self) -> int:
+        return len(self.eager) + sum(len(items) for items, _ in self.runs.values())
+
+
 @dataclass
 class Document:
     data: Any
     # path tuple -> (line, col), 1-based.  ``key_pos`` points at the key of a
     # mapping entry, ``pos`` at the value.
-    pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
+    pos: PathTable = field(default_factory=PathTable)
     key_pos: dict[tuple, tuple[int, int]] = field(default_factory=dict)
     # the source text of scalars YAML read as numbers or booleans (``012345671``,
     # ``1:30``, ``1.50``), by value path; ``path + ("<key>",)`` for mapping keys
-    text: dict[tuple, str] = field(default_factory=dict)
+    text: PathTable = field(default_factory=PathTable)
 
     def locate(self, path: tuple) -> tuple[int, int] | None:
         """Best position for ``path``: the key of the entry if known, else the
@@ -165,6 +235,11 @@ def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] |
 
 _TAGS: dict[tuple, str] = {}      # (plain scalar's text, implicit) -> its resolved tag
 
+# the plain scalars YAML 1.1 reads as a decimal int (no "0" prefix: octal) or a
+# float with a dot (its exponent signed), with no "_": exactly Python's int()/float()
+# of the text, the int/float resolver's and constructor's value
+_NUMBER = re.compile(r"[-+]?(?:0|[1-9][0-9]*|[0-9]+\.[0-9]*(?:[eE][-+][0-9]+)?)").fullmatch
+
 
 class _Builder:
     """Plain data and its positions from the events of one document (the
@@ -175,6 +250,7 @@ class _Builder:
         import yaml
 
         self.events, self.doc, self.count = events, Document(None), 0
+        self.pos, self.text = self.doc.pos.eager, self.doc.text.eager
         self.resolver = yaml.resolver.Resolver()
         self.y = yaml
 
@@ -207,7 +283,7 @@ class _Builder:
             raise _stop(f"document expands to more than {MAX_NODES} values (alias bomb?)", line, col)
         if depth > MAX_DEPTH:
             raise _stop(f"document is nested more than {MAX_DEPTH} levels deep", line, col)
-        self.doc.pos.setdefault(path, (line, col))
+        self.pos.setdefault(path, (line, col))
         tag, cls = self.tag(ev), type(ev)
         if tag == _STD + "timestamp" and cls is y.ScalarEvent:
             raise _stop(f"{ev.value!r} reads as a date; write a number (or quote it for text)", line, col)
@@ -215,7 +291,7 @@ class _Builder:
             raise _stop(f"YAML tag {tag!r} is not allowed (only plain data: no tags)", line, col)
         if cls is y.ScalarEvent:
             if tag != _STD + "str" and tag != _STD + "null":
-                self.doc.text[path] = ev.value
+                self.text[path] = ev.value
             try:
                 return _scalar(tag, ev.value)
             except (ValueError, OverflowError, IndexError):     # IndexError: an empty "!!float"
@@ -223,12 +299,46 @@ class _Builder:
                 raise _stop(f"cannot read value {shown!r} ({len(ev.value)} characters)", line, col) from None
         if cls is y.SequenceStartEvent:
             out: list[Any] = []
+            if it is self.events and depth < MAX_DEPTH:
+                child = self.numbers(path, out)
+                if type(child) is y.SequenceEndEvent:
+                    return out
+                out.append(self.value(child, it, path + (len(out),), depth + 1))
             for child in it:
                 if type(child) is y.SequenceEndEvent:
                     return out
                 out.append(self.value(child, it, path + (len(out),), depth + 1))
             return out
         return self.mapping(it, path, depth)
+
+    def numbers(self, path: tuple, out: list) -> Any:
+        """The leading run of plain numbers of the list at ``path`` read into
+        ``out`` straight from the parser (the same values, counts and caps as
+        :meth:`value`), their marks and texts kept per run; returns the first
+        event after the run."""
+        marks: list[int] = []
+        texts: list[str] = []
+        number, shift = _NUMBER, _SHIFT
+
+        def take(ev) -> bool:
+            v = ev.value
+            if number(v) is None:
+                return False
+            self.count += 1
+            m = ev.start_mark
+            if self.count > MAX_NODES:
+                raise _stop(f"document expands to more than {MAX_NODES} values (alias bomb?)", m.line + 1, m.column + 1)
+            out.append(float(v) if "." in v else int(v))
+            marks.append(m.line << shift | m.column)
+            texts.append(v)
+            return True
+
+        try:
+            return self.events.plain_scalars(take)
+        finally:
+            if marks:
+                self.doc.pos.runs[path] = (marks, _unpack)
+                self.doc.text.runs[path] = (texts, None)
 
     def mapping(self, it, path: tuple, depth: int) -> dict:
         y, doc = self.y, self.doc
@@ -246,15 +356,15 @@ class _Builder:
             if type(kev) is not y.ScalarEvent:
                 raise _stop("mapping keys must be plain names", kl, kc)
             key = self.value(kev, kit, path + ("<key>",), depth + 1)
-            doc.pos.pop(path + ("<key>",), None)
-            ktext = doc.text.pop(path + ("<key>",), None)
+            self.pos.pop(path + ("<key>",), None)
+            ktext = self.text.pop(path + ("<key>",), None)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
                 key = str(kev.value)
             if key in out:
                 raise _stop(f"duplicate key {key!r}", kl, kc)
             doc.key_pos[path + (key,)] = (kl, kc)
             if ktext is not None:
-                doc.text[path + (key, "<key>")] = ktext
+                self.text[path + (key, "<key>")] = ktext
             out[key] = self.value(next(it), it, path + (key,), depth + 1)
         return out  # pragma: no cover - the stream always closes a mapping
 

@@ -14,7 +14,17 @@ from dyncli.expr.parser import parse
 
 def resolve_params(raw: Mapping[str, Any]) -> dict[str, float]:
     """Evaluate a ``params`` mapping; entries may refer to each other in any
-    order (cycles are an error).  Raises InputError with path ``params.NAME``."""
+    order (cycles are an error).  Raises InputError with path ``params.NAME``.
+    The values of a mapping already resolved are remembered (:mod:`dyncli.docmemo`:
+    the points of a sweep share their params)."""
+    from dyncli.docmemo import recall
+
+    if not raw:
+        return {} if isinstance(raw, Mapping) else _resolve(raw)
+    return dict(recall("params", raw, lambda: _resolve(raw)))
+
+
+def _resolve(raw: Mapping[str, Any]) -> dict[str, float]:
     import keyword
 
     if not isinstance(raw, Mapping):

@@ -151,3 +151,89 @@ def test_json_one_dumps_per_record_and_same_text(monkeypatch):
     assert len(calls) == len(records)
     assert text == _reference(records)
     assert json.loads(text) == json.loads(json.dumps(records))
+
+
+def _texts(node, path=(), out=None):
+    """(path -> source text) of every scalar PyYAML resolves to neither str nor null."""
+    out = {} if out is None else out
+    if isinstance(node, yaml.ScalarNode):
+        if node.tag not in ("tag:yaml.org,2002:str", "tag:yaml.org,2002:null"):
+            out[path] = node.value
+    elif isinstance(node, yaml.SequenceNode):
+        for i, n in enumerate(node.value):
+            _texts(n, path + (i,), out)
+    elif isinstance(node, yaml.MappingNode):
+        for k, v in node.value:
+            _texts(v, path + (k.value,), out)
+    return out
+
+
+@pytest.mark.parametrize("text", [
+    "at: [" + ", ".join(repr(k / 7) for k in range(3000)) + "]\n",
+    # every edge of the numbers' fast lane, over lines, with comments, then a break of the run
+    "at: [0, -0, +5, 12, -0.0, +1.5, 1., 3.25e+3, 1.0e-2, 00.5, 1.0e5, 1e5, 012, 0x1F, 1_000,\n"
+    "     # a comment\n     1:30, .5, .inf, -.inf, 7, 8.5, true, null, '9', 10, [1, 2.5], {a: 1}, 11]\n",
+    "a:\n  - 1\n  - 2.5\n  - 1e3\n  - -4\nb: [1, 2, 3]\nc: &r [1, 2]\nd: *r\ne: [&x 1, *x, 2]\n",
+])
+def test_yaml_number_runs_same_values_positions_and_texts(text):
+    from dyncli import yamlsafe
+
+    doc = yamlsafe.load(text)
+    node = yaml.compose(text, Loader=yaml.SafeLoader)
+    assert doc.data == yaml.safe_load(text)
+    assert [type(x) for x in doc.data["at" if "at" in doc.data else "a"]] == \
+        [type(x) for x in yaml.safe_load(text)["at" if "at" in doc.data else "a"]]
+    expected = _positions(node)
+    assert doc.pos == expected and dict(doc.pos) == expected and len(doc.pos) == len(expected)
+    for path, lc in expected.items():
+        assert path in doc.pos and doc.pos[path] == lc and doc.locate(path) is not None
+    assert ("at", 10**6) not in doc.pos and ("nowhere",) not in doc.pos
+    assert dict(doc.text) == _texts(node)
+
+
+def test_yaml_number_run_errors_and_caps_unchanged(monkeypatch):
+    from dyncli import yamlsafe
+
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load("at: [1, 2.5, 3, !!float '', 4]\n")
+    assert "cannot read value" in err.value.message and (err.value.line, err.value.col) == (1, 17)
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load("at: [1, 2, 2017-01-01]\n")
+    assert "reads as a date" in err.value.message and (err.value.line, err.value.col) == (1, 12)
+    monkeypatch.setattr(yamlsafe, "MAX_NODES", 50)
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load("a: &a [" + ", ".join(["1"] * 20) + "]\nb: [*a, *a, *a]\n")
+    assert "alias bomb" in err.value.message
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load("at: [" + ", ".join(["1"] * 60) + "]\n")
+    assert "more than 50 values" in err.value.message
+
+
+@pytest.mark.parametrize("chunk", [1, 50, 1 << 20])
+def test_a_streamed_record_is_written_in_joined_chunks(monkeypatch, chunk):
+    """A record's pieces are joined into writes of about ``CHUNK`` characters: the same bytes
+    as the whole-output writer, in fewer writes than pieces (a tiny chunk: one per piece)."""
+    from dyncli import run
+    from dyncli.render import emit, jsonout, stream
+
+    monkeypatch.setattr(stream, "CHUNK", chunk)
+    writes: list[str] = []
+
+    class Out(io.StringIO):
+        def write(self, s):
+            writes.append(s)
+            return super().write(s)
+
+    out = Out()
+    monkeypatch.setattr(sys, "stdout", out)
+    assert run.solve_command([str(ROOT / "problems/vibration/underdamped.yaml")], "json", sweeps=["k=100,400,900"]) == 0
+    monkeypatch.setattr(sys, "stdout", io.StringIO())
+    from dyncli.loader import load_paths
+    from dyncli.overrides import expand, parse_sweep
+
+    lps, _ = load_paths([str(ROOT / "problems/vibration/underdamped.yaml")])
+    outcomes = [run.solve_one(lp) for lp in expand(lps, [parse_sweep("k=100,400,900")])]
+    assert out.getvalue() == emit.dumps("json", outcomes)
+    pieces = sum(len(jsonout.encode_parts(run.outcome_record(o), "  ")) + 1 for o in outcomes)
+    assert len(writes) == (pieces + 1 if chunk == 1 else 4 if chunk == 1 << 20 else len(writes))
+    assert len(writes) <= pieces + 1 and all(len(w) < chunk + 2000 for w in writes)

@@ -268,6 +268,9 @@ def _asked_paths(find) -> set[str] | None:
     return asked
 
 
+_STATE = {"x": 0, "v": 1, "w": 2}        # the place of each quantity in Response.at's (x, v, w)
+
+
 class _Motion:
     """The motion searched by ``find`` (:mod:`dyncli.queries`): each quantity and its exact rate
     computed alone (a search asks for one at a time), no state dictionaries."""
@@ -295,7 +298,7 @@ class _Motion:
     def value(self, path: str, t: float) -> float:
         if path == "distance":
             return self.odo(t)
-        i = ("x", "v", "w").index(path) if path in ("x", "v", "w") else None
+        i = _STATE.get(path)
         if i is None:
             raise KeyError(path)
         return self.at(t)[i]
