@@ -50,8 +50,11 @@ class StateMotion:
 
     def __init__(self, state: Callable[[float], Mapping], t0: float, t_end: float,
                  breaks: Iterable[float] = (), rtol: float = 0.0, rates: Mapping[str, Any] | None = None,
-                 batch: Callable[[list[float]], Sequence[Mapping]] | None = None, subdivide: int | None = None):
+                 batch: Callable[[list[float]], Sequence[Mapping]] | None = None, subdivide: int | None = None,
+                 breaks_for: Callable[[str], list[float]] | None = None, monotone: bool = False):
         self.state, self.t0, self.t_end, self.rtol = state, float(t0), float(t_end), float(rtol)
+        self.breaks_for = breaks_for                # a result's own breaks (its turning points), else None
+        self.monotone = monotone                    # every result asked about monotone between its breaks
         self.subdivide = subdivide                  # 1 when the breaks are an ODE's steps
         self.period: float | None = None            # set when the motion repeats exactly (find's extremes)
         self.batch = batch                          # the states at many times in one run (optional)
@@ -72,8 +75,11 @@ class StateMotion:
 
     def clipped(self, t_end: float) -> "StateMotion":
         """The same motion from t0 to ``t_end`` (before its end), sharing the cache."""
+        own = self.breaks_for
         w = StateMotion(self.state, self.t0, t_end, [b for b in self.breaks if b < t_end], self.rtol,
-                        self._rates, self.batch, self.subdivide)
+                        self._rates, self.batch, self.subdivide,
+                        None if own is None else (lambda path: [b for b in own(path) if b < t_end] + [t_end]),
+                        self.monotone)
         w._cache, w._limit = self._cache, self._limit
         return w
 

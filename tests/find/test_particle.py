@@ -125,3 +125,39 @@ def test_orbit_apsides_crossings_perimeter(method, tol):
     assert e["t"] == pytest.approx(float(o.P / 2), rel=1e-7)
     assert e["V"] == pytest.approx(float(-1 / (o.a * (1 + o.e))), rel=tol)
     assert entry(r, 6)["t"] == pytest.approx(float(o.P + t_x0), rel=tol)
+
+
+@pytest.mark.parametrize("rtol", [1e-8, 1e-10])
+def test_a_backward_dip_inside_one_step_is_not_stepped_over(rtol):
+    # F = sin(2π t) on m = 1 from v0 = −ε (ε = 1e-5): v = −ε + (1 − cos 2πt)/(2π) is negative only for
+    # |t − 1| < 1.8e-3 s, so x.0 steps back by ~2e-8 m inside one ODE step (~0.05 s), the rate positive at
+    # both of its ends. The level X halfway through that dip is crossed up, down (t ≈ 1) and up again.
+    # Before, the step ends' samples and rates saw one crossing only ("not reached" for the others, exit 0);
+    # now the extremes of the step's polynomial are breaks. Reference: the closed form in mpmath (30 digits).
+    with mp.workdps(30):
+        eps, w = mp.mpf("1e-5"), 2 * mp.pi
+        x = lambda t: -eps * t + (t - mp.sin(w * t) / w) / w          # noqa: E731
+        v = lambda t: -eps + (1 - mp.cos(w * t)) / w                  # noqa: E731
+        r1, r2 = mp.findroot(v, 0.999), mp.findroot(v, 1.001)
+        X = (x(r1) + x(r2)) / 2
+        ups = [mp.findroot(lambda t: x(t) - X, (mp.mpf("0.9"), r1), solver="anderson"),
+               mp.findroot(lambda t: x(t) - X, (r2, mp.mpf("1.1")), solver="anderson")]
+        down = mp.findroot(lambda t: x(t) - X, (r1, r2), solver="anderson")
+        want = [(float(t), float(abs(v(t)))) for t in (ups[0], down, ups[1])]
+    R, _ = solve(f"""
+type: particle
+m: 1
+x0: [0, 0, 0]
+v0: [-1.0e-5, 0, 0]
+forces:
+  - {{kind: custom, F: ["sin(2*pi*t)", "0", "0"]}}
+t_end: 1.5
+find:
+  - {{when: {{x.0: {float(X)!r}}}}}
+  - {{when: {{x.0: {float(X)!r}}}, direction: down}}
+  - {{when: {{x.0: {float(X)!r}}}, occurrence: 3}}
+accuracy: {{rtol: {rtol!r}}}
+""")
+    for k, (t, speed) in enumerate(want):
+        # a crossing's time is off by the error of x (the route's, relative to x ~ 0.16 m) over |v| there
+        assert abs(entry(R, k)["t"] - t) * speed <= ode(rtol) * 0.16 + 1e-15, k

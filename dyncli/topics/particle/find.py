@@ -60,7 +60,49 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         f = motion.flat(t)
         return float(p.m) * sum(f[f"v.{i}"] * f[f"a.{i}"] for i in range(3))
 
+    own = None if pieces is not None else _coordinate_breaks(p.find, traj_of(), B)
     motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x": "v", "v": "a", "T": lambda t, _: power(t)},
-                            batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))])
+                            batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))],
+                            breaks_for=own, monotone=own is not None)
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
+
+
+#: the state component of each coordinate path a query may ask about
+_COMPONENT = {f"{q}.{i}": 3 * k + i for k, q in enumerate(("x", "v")) for i in range(3)}
+
+
+def _coordinate_breaks(find, traj, B: list[float]):
+    """``breaks_for(path)`` when every query asks about a coordinate of x or v (else None): the
+    breaks with every critical point of that coordinate inside each step added — a step's dense
+    output is a polynomial, whose extremes are decided exactly
+    (:func:`dyncli.rootfind.polynomial_extremes`), so the coordinate is monotone between two of
+    them and no excursion inside a step, however narrow, is stepped over."""
+    asked: set[str] = set()
+    for q in find if isinstance(find, (list, tuple)) else ():
+        if not isinstance(q, dict):
+            return None
+        if set(q) <= {"t"}:                             # a time query: no search
+            continue
+        when = q.get("when")
+        paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
+        if not paths or not all(isinstance(x, str) and x in _COMPONENT for x in paths):
+            return None
+        asked.update(str(x) for x in paths)
+    pieces = []
+    for ph in traj.phases:
+        sol = getattr(ph, "sol", None)
+        if sol is None:
+            if ph.t1 > ph.t0 and not hasattr(ph, "x"):      # an ODE phase without its steps' polynomials
+                return None
+            continue
+        pieces += [(f, float(a), float(b)) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:]) if b > a]
+    if not asked or not pieces:
+        return None
+    from dyncli.rootfind import polynomial_extremes
+
+    ext = polynomial_extremes(pieces)
+    t_end = B[-1]
+    own = {path: sorted(set(B).union(t for e in ext for t in e[_COMPONENT[path]] if B[0] < t < t_end))
+           for path in asked}
+    return lambda path: own[path] if path in own else B
