@@ -94,6 +94,13 @@ def used() -> tuple[float, float] | None:
     return None if s is None else (time.thread_time() - s[0], s[1])
 
 
+def over(margin: float = 1.0) -> float | None:
+    """The solve's CPU budget (s) once the solve has used more than ``margin`` times it (work
+    that is adaptive, not projected to its end, checks this now and then); else None."""
+    s = used()
+    return s[1] if s is not None and s[0] > margin * s[1] else None
+
+
 def over_budget(cpu_leg0: float, done: float, left: float) -> tuple[float, float] | None:
     """(the projected CPU of the solve, its budget) when a run that has used ``thread_time() −
     cpu_leg0`` for ``done`` of its span, with ``left`` to go, would end beyond the budget;

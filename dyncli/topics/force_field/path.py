@@ -117,10 +117,9 @@ def _within_cpu(t1: float, t2: float) -> None:
     default 2 s: the quadrature's work is adaptive, so it is not projected to its end)."""
     from dyncli import cputime
 
-    spent = cputime.used()
-    if spent is not None and spent[0] > spent[1]:
+    if (limit := cputime.over()) is not None:
         raise NumericalError(
-            f"the work along the path over t in [{t1:g}, {t2:g}] took more than the CPU budget of {spent[1]:g} s "
+            f"the work along the path over t in [{t1:g}, {t2:g}] took more than the CPU budget of {limit:g} s "
             "(accuracy.max_cpu) before reaching accuracy.rtol (F·dx/dt with many kinks or a singularity on the "
             "path): shorten path.t_span, loosen accuracy.rtol, or raise accuracy.max_cpu")
 

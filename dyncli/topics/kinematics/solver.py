@@ -119,11 +119,10 @@ def _within_cpu(t1: float, t2: float) -> None:
     from dyncli import cputime
     from dyncli.errors import NumericalError
 
-    spent = cputime.used()
-    if spent is not None and spent[0] > spent[1]:
+    if (limit := cputime.over()) is not None:
         raise NumericalError(
             f"distance: the quadrature of the speed over [{t1:g}, {t2:g}] s took more than the CPU budget of "
-            f"{spent[1]:g} s (accuracy.max_cpu) before reaching accuracy.rtol (a path with many kinks or a singular "
+            f"{limit:g} s (accuracy.max_cpu) before reaching accuracy.rtol (a path with many kinks or a singular "
             "slope): shorten the interval of distance, loosen accuracy.rtol, or raise accuracy.max_cpu")
 
 

@@ -52,10 +52,9 @@ class Work:
     def charge(self, n: int, where: str = "") -> None:
         self.n += n
         if self.n // CPU_EVERY != (self.n - n) // CPU_EVERY:      # now and then: the solve's CPU budget
-            spent = cputime.used()
-            if spent is not None and spent[0] > CPU_MARGIN * spent[1]:
+            if (limit := cputime.over(CPU_MARGIN)) is not None:
                 raise OverWork(f"case {self.case}: the quadratures and root searches{where} took more than "
-                               f"{CPU_MARGIN:g} × the CPU budget of {spent[1]:g} s: shorten the time span (t_max), "
+                               f"{CPU_MARGIN:g} × the CPU budget of {limit:g} s: shorten the time span (t_max), "
                                "loosen accuracy.rtol, or raise accuracy.max_cpu")
         if self.n > self.limit:
             raise OverWork(

@@ -408,11 +408,10 @@ def _held_event(s, p, w):
     def at(t):
         got = cache.get(t)
         if got is None:
-            spent = cputime.used()
-            if spent is not None and spent[0] > spent[1]:
+            if (limit := cputime.over()) is not None:
                 raise NumericalError(
                     f"the forces of the joints held at rest were followed to t = {t:.6g} s only within the CPU "
-                    f"budget of {spent[1]:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise "
+                    f"budget of {limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise "
                     "accuracy.max_cpu")
             got = cache[t] = w(t)
         return got
