@@ -271,6 +271,12 @@ def _linear(s, q0, N, i, has_k: bool, has_c: bool) -> motion.Linear1:
     coefficient whose load is absent is exactly 0)."""
     A0 = float(s.solve(q0, N * 0.0, 0.0)[0][i])
     L = assembly.length_scale(q0, s)
+    for ld in s.loads:          # a spring's pull is affine along N while its ends do not cross
+        if ld.kind == "spring":
+            d = ld.P.pos(q0) - ld.Q.pos(q0)
+            w = ld.P.jac(q0, s.n) @ N - ld.Q.jac(q0, s.n) @ N
+            if np.any(w != 0):
+                L = min(L, 0.5 * math.hypot(*d) / math.hypot(*w))
     A1 = (float(s.solve(q0 + L * N, N * 0.0, 0.0)[0][i]) - A0) / L if has_k else 0.0
     A2 = float(s.solve(q0, N, 0.0)[0][i]) - A0 if has_c else 0.0
     return motion.Linear1(q0, N, i, A0, A1, A2)

@@ -8,7 +8,8 @@ the lowest point, is reached for a few hundredths of each period only: first at
 t* = arccos(1 + y_f/d)/ω (mpmath, 30 digits).  With e = 1 the motion is then periodic, of period
 P = 2 t* (down to the floor, back up to y = 0): at t the ball is at phase τ = t mod P.  A scan of
 64 samples over 40 s (the route's grid before this rule) saw no bounce at all: the ball went
-through the floor with exit 0.
+through the floor with exit 0.  Also here: the closed form's stiffness probe, which must not move
+the ball onto a spring's anchor.
 """
 
 from __future__ import annotations
@@ -84,3 +85,28 @@ at: [0, 0.4]
     r = rec["results"]
     assert [e["what"] for e in r["events"]] == ["separates"]
     assert [p["route"] for p in r["phases"]][-1] == "closed-form"
+
+
+def test_a_spring_anchored_one_rest_length_above_is_a_closed_form():
+    """The closed form's stiffness is probed along the motion: a probe of the scene's size would
+    put the ball on the spring's anchor (1 m above, rest length 1 m) and was refused ("the ends of
+    the spring coincide"); y = −d (1 − cos ω t), d = m g/k, ω = √(k/m) (the notes' free vibration)."""
+    rec = solve_one_text("""
+type: scene
+params: {m: 1, k: 100}
+surfaces:
+  wall: {through: [0, 0], direction: [0, 1]}
+bodies:
+  ball: {shape: point, mass: m, x: [0, 0]}
+joints:
+  guide: {slider: [ball, wall]}
+forces:
+  - {spring: [[0, 1], ball], k: k, L: 1}
+at: [0, 0.3, 1]
+""")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    assert [p["route"] for p in r["phases"]] == ["closed-form"]
+    d = mp.mpf(G) / 100
+    for k, t in enumerate((0, mp.mpf("0.3"), 1)):
+        assert abs(r["x"]["ball"][k][1] - float(-d * (1 - mp.cos(10 * t)))) <= 1e-14
