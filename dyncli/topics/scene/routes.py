@@ -22,7 +22,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 
-from . import assembly, motion, phases
+from . import assembly, crossing, motion, phases
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -349,21 +349,15 @@ def _first_event(s, traj, k0: int, t_end: float):
 
 def _piece_event(s, p):
     """The first event on one exact piece (closed form, quadrature, or held at rest under loads
-    that change in time), decided exactly: each watched quantity g (a normal force, a friction
-    margin μ_s N ∓ F, a tension, a gap, a slip speed, a one-sided spring's stretch) is a smooth
-    function of t on the piece, and its roots are every sign change found by the sign analysis
-    of dyncli.rootfind.all_roots (Chebyshev cells halved until resolved, not a grid: a short
-    flight or a touch between two samples cannot be stepped over).  g is known to its rounding
-    (:func:`_rounding`) only, so an event is g passing below minus its rounding (then located
-    on g itself): a gap at 0 as a body leaves its surface is not read as a thousand impacts in
-    the noise.  The span is searched in windows: held at rest (loads that are the user's
-    functions of t), from 64 s, each in 16 starting cells; moving (constant loads), from 1/16 of
-    the span (64 s at most), each in one starting cell (an early event costs a few cells); each
-    window 16 times wider than the last.  all_roots resolves a cell to 2^-48 of its width: a period of 1 s is not lost in
-    a window of 1e300 s.
-    Where the joint rows have one matrix over the piece, the states of a cell are solved in one
-    stacked call (SceneSystem.solve_many: the same numbers as one solve each).  The solve's CPU
-    budget bounds the search.  Returns (t, joint, what) or None."""
+    that change in time): each watched quantity's first crossing (crossing.first_crossing, by
+    sign analysis, not samples).  The span is searched in windows: held at rest (loads that are
+    the user's functions of t), from 64 s, each in 16 starting cells; moving (constant loads),
+    from 1/16 of the span (64 s at most), each in one starting cell (an early event costs a few
+    cells); each window 16 times wider than the last (all_roots resolves a cell to 2^-48 of its
+    width: a period of 1 s is not lost in a window of 1e300 s).  Where the joint rows have one
+    matrix over the piece, the states of a cell are solved in one stacked call
+    (SceneSystem.solve_many: the same numbers as one solve each).  The solve's CPU budget bounds
+    the search.  Returns (t, joint, what) or None."""
     from dyncli import cputime
 
     cache: dict[float, list[float]] = {}
@@ -383,20 +377,20 @@ def _piece_event(s, p):
         return np.array([cache[t][j] for t in ts])
 
     q, v, _ = p.fn(p.t_a)
-    tol = _rounding(s, p)
+    tol = crossing.rounding(s, q, v, p.t_a, p.fn(p.t_b)[1])
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
     watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(motion.watches(s, q, v, p.t_a))
                if not (what == "switch" and p.route == "statics")]
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
-    lo, width = p.t_a, _FIRST_WINDOW if held else min(_FIRST_WINDOW, (p.t_b - p.t_a) / 16)
+    lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
     while lo < p.t_b:                           # window by window, every watched quantity in each
         hi = min(p.t_b, lo + width)
         best = None
         for j, joint, what in watched:
-            got = _first_crossing(lambda ts, j=j: column(j, ts), lo, hi if best is None else best[0], what,
-                                  tol[what], start=lo == p.t_a, cells=16 if held else 1)
+            got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, hi if best is None else best[0], what,
+                                          tol[what], start=lo == p.t_a, cells=16 if held else 1)
             if got is not None:
                 best = (got, joint, what)
         if best is not None:
@@ -405,91 +399,5 @@ def _piece_event(s, p):
     return None
 
 
-def _rounding(s, p) -> dict[str, float]:
-    """The rounding of each kind of watched quantity over a piece: 64 ε of the scene's lengths
-    (gaps, margins, stretches), of its forces (the applied loads and the multipliers at the
-    start) and of its speeds (at both ends of the piece)."""
-    q, v, _ = p.fn(p.t_a)
-    _q1, v1, _ = p.fn(p.t_b)
-    f, _P = s.applied(q, v, p.t_a)
-    lam = s.solve(q, v, p.t_a)[1]
-    big = lambda *xs: max([float(np.max(np.abs(x), initial=0.0)) for x in xs] + [1e-300])   # noqa: E731
-    L, F, V = assembly.length_scale(q, s), big(f, lam), big(v, v1)
-    lengths, speeds = ("impact", "leaves", "switch", "taut"), ("sticks",)
-    return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in _WATCHED}
-
-
-#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut), a speed
-#: (sticks) and forces (separates, slips, slack)
-_WATCHED = ("impact", "leaves", "switch", "taut", "sticks", "separates", "slips", "slack")
-
-
-def _first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, cells: int) -> float | None:
-    """The first time in [a, b] where ``g`` (on arrays; known to ``tol``) crosses its event, or
-    None: down through −tol, then located on g itself (a one-sided spring's stretch, "switch",
-    either way: off its band of rounding first).  A quantity that starts on its band goes off it
-    first, except that a gap or a slip speed at 0 at the piece's start (``start``) that goes
-    negative is an event there; a force at 0 that goes negative is where the last phase ended."""
-    from dyncli.rootfind import brent
-
-    g0 = float(g(np.array([a]))[0])
-    if what == "switch" or abs(g0) <= tol and not (start and what in ("sticks", "impact", "taut")):
-        if abs(g0) <= tol:          # off the band first: g² reaches (2 tol)²
-            off = _first_down(lambda ts: 4 * tol * tol - g(ts) ** 2, a, b, tol * tol, cells)
-            if off is None:
-                return None
-            a = off[0]
-            g0 = float(g(np.array([a]))[0])
-        sign = 1.0 if what != "switch" or g0 > 0 else -1.0
-    else:
-        sign = 1.0
-    got = _first_down(lambda ts: sign * g(ts) + tol, a, b, tol, cells)
-    if got is None:
-        return None
-    r, x = got                      # g's own root is the last before r: from x (g on the far side)
-    gr, gx = sign * float(g(np.array([r]))[0]), sign * float(g(np.array([x]))[0])
-    if not gr < 0 < gx:
-        return r
-    near = r - 2 * (r - x) * gr / (gr - gx)     # (the secant's root of g, twice as far: a tight bracket)
-    if x < near < r and sign * float(g(np.array([near]))[0]) > 0:
-        x = near
-    return brent(lambda t: sign * float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
-
-
-def _first_down(f, a: float, b: float, floor: float, cells: int) -> tuple[float, float] | None:
-    """The first root r in (a, b] where ``f`` (on arrays, smooth) turns negative, and a time
-    before it where f > 0 (the midpoint from the root before), or None; all_roots (``floor``:
-    the rounding of f) asked for the roots of its first cell that holds one, resumed after them
-    while none is r."""
-    from dyncli.rootfind import all_roots
-
-    lo = prev = a
-    while True:
-        roots, touches, bad = all_roots(f, lo, b, cells=cells, limit=_FIRST_ROOTS, floor=floor)
-        best = None
-        for r in sorted(r for r in roots if r > lo):
-            if float(f(np.array([0.5 * (prev + r)]))[0]) > 0:
-                best = (r, 0.5 * (prev + r))
-                break
-            prev = r
-        # a cell still unresolved at the depth limit (2^-48 of its window) is a kink of g (a gap
-        # watched as |gap| − margin past a surface's end): no root where g is far off its rounding
-        bad = [m for m in bad if not abs(float(f(np.array([m]))[0])) > 2.0 ** 20 * floor]
-        if bad and (best is None or bad[0] < best[0]):
-            raise NumericalError(f"the forces of the joints could not be resolved near t = {bad[0]:.6g} s")
-        done = max(roots + touches, default=lo)
-        if best is not None or len(roots) + len(touches) <= _FIRST_ROOTS or done <= lo:
-            return best
-        lo = done
-
-
-#: how many roots of a watched quantity one call of all_roots finds before the event is looked
-#: for: none beyond the first cell that holds one (cells are resolved from the left), since the
-#: first root is the event unless the quantity starts below it; resumed after it otherwise
-_FIRST_ROOTS = 0
-#: the first window (s) of that search (at most, in motion), each next one 16 times wider:
-#: all_roots resolves a cell to 2^-48 of its starting width, so a load's period must not be lost
-#: in a window of 1e300 s
-_FIRST_WINDOW = 64.0
 
 
