@@ -33,7 +33,7 @@ from dyncli import queries as _q
 from dyncli.errors import InputError
 
 __all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach",
-           "searched_paths", "exact_breaks", "series_values"]
+           "searched_paths", "exact_breaks", "series_values", "find_end"]
 
 
 def flatten(node: Any, prefix: str = "") -> dict[str, float]:
@@ -445,7 +445,10 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     route's own accuracy; its check solve off).  The results over time are the type's series
     over ``t``; ``rates`` names which is the rate of which; the search grid has at least
     :data:`PER_TURN` pieces per turn of the fastest of the ``fast`` rates (rad/s) seen on a first
-    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`."""
+    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`.  A
+    route that knows its motion as one run's dense output leaves ``(breaks, states)`` in
+    ``result.extra["dense_motion"]`` (:func:`_dense_find`: no solve again, every step cut at the
+    exact extremes of each result searched)."""
     import math as _m
 
     names = [n for s in result.series if s.index_name == "t" for n in s.names]
@@ -464,8 +467,12 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
 
     params = resolve_params(getattr(problem, "params", {}) or {})
     const = lambda x: constant(x, params)            # noqa: E731
-    at = [float(t) for t in getattr(problem, "at", []) or []]
-    t_end = search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find, const)
+    t_end = find_end(problem, t0)
+    rtol = float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0
+    dense = getattr(result, "extra", {}).pop("dense_motion", None)
+    if dense is not None and t_end > t0:
+        _dense_find(problem, result, dense, names, rates, t0, t_end, rtol, const)
+        return
     if t_end <= t0:
         breaks = [t0, t0]
     else:
@@ -480,9 +487,39 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
             return
         n = int(max(64, _m.ceil(turns * PER_TURN)))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks,
-                         rtol=float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0,
-                         rates=rates, batch=batch)
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch)
+    attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+
+
+def find_end(problem: Any, t0: float = 0.0) -> float:
+    """How far the ``find`` search of a type solved at the times of ``at`` runs: the largest of
+    ``at`` and ``t_end``, extended to every ``within`` window and ``t`` query (§11)."""
+    from dyncli.expr import constant, resolve_params
+
+    params = resolve_params(getattr(problem, "params", {}) or {})
+    at = [float(t) for t in getattr(problem, "at", []) or []]
+    return search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find,
+                      lambda x: constant(x, params))
+
+
+def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: Mapping[str, str], t0: float,
+                t_end: float, rtol: float, const) -> None:
+    """The ``find`` answers on the route's own motion, ``dense = (breaks, states)``: one run's steps
+    (its ends ``breaks``, covering [t0, t_end]) and ``states(ts)``, the results at many times as
+    ``{name: list}``, a smooth function of the step's polynomial between two breaks — each step
+    cut at the exact extremes of every result searched (:func:`exact_breaks`)."""
+    breaks, states = dense
+
+    def batch(ts) -> list[dict]:
+        ts = [float(t) for t in ts]
+        r = states(ts)
+        return [{n: r[n][j] for n in names if isinstance(r.get(n), list) and len(r[n]) == len(ts)}
+                for j in range(len(ts))]
+
+    B = sorted({t0, t_end} | {float(b) for b in breaks if t0 < b < t_end})
+    own = exact_breaks(problem.find, B, series_values(states))
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, B, rtol=rtol, rates=rates, batch=batch,
+                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
 
 
