@@ -32,7 +32,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from tests.find.refs import entry, solve
+from .refs import entry, solve
 from tests.tolerances import ode
 
 MPMATH_DPS = 30
