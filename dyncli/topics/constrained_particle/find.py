@@ -2,8 +2,10 @@
 
 The motion is the route's own at any time: the energy quadrature's q(t) (the legs between
 turning points, periodic when the motion is) or the ODE's dense output, each assembled into the
-reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends; on the quadrature
-route an eighth of the period (or 64 pieces of a motion that does not repeat).  Rates: q̇ of q,
+reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends, each step cut at
+the exact extremes of every result searched (:func:`dyncli.motion_find.exact_breaks`: monotone
+between two cuts); on the quadrature route an eighth of the period (or 64 pieces of a motion
+that does not repeat), sampled.  Rates: q̇ of q,
 ṡ of s, v of x, a of v, so turning points are roots of the rate (Brent).  ``distance`` is the
 arc length travelled, Σ|Δs| between the turning points of s (the roots of ṡ).
 """

@@ -4,7 +4,9 @@ The motion is the integrated trajectory at any time (every step's dense output, 
 as the reported times) or the exact conic of an orbit; its breaks are the accepted steps and the
 phase ends (a stop by friction, a rest), between which the state is one interpolating
 polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x, a of v
-and m v·a of T, so a turning point of a coordinate or of T is a root of its rate (Brent).  ``distance`` is
+and m v·a of T, so a turning point of a coordinate or of T is a root of its rate (Brent); on
+the ODE route every step is cut at the exact extremes of each result searched
+(:func:`exact_breaks`), between which the search takes it as monotone.  ``distance`` is
 ∫|v| dt by Gauss–Legendre on every step (:class:`dyncli.motion_find.Odometer`).
 """
 

@@ -4,7 +4,9 @@ The motion is the run's dense output (every accepted step's interpolant, the sam
 reported times, continued to t_end); the breaks are its steps.  The state at a time holds the
 results over time (``x_motion``, ``com_motion``, ``G_motion``, ``H_O_motion``, ``T_motion``,
 ``V_internal_motion``, ``P_internal_motion``, ``W_internal``, ``distance``); the velocities in
-the state are the rates of the positions, so a turning point is a root (Brent).  ``distance``:
+the state are the rates of the positions, so a turning point is a root (Brent); every step is
+cut at the exact extremes of each result searched (:func:`dyncli.motion_find.exact_breaks`),
+between which the search takes it as monotone.  ``distance``:
 each particle's path length ∫|vᵢ| dt (Gauss–Legendre on every step).
 """
 
