@@ -379,7 +379,16 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     H = [h(t) for t in T]
     cands = [(T[0], H[0]), (T[-1], H[-1])]
     if _monotone(motion):                             # the turning points are samples: no search
-        cands += [(T[j], H[j]) for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
+        peaks = [j for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
+        cands += [(T[j], H[j]) for j in peaks]
+        best = max(c[1] for c in cands)
+        tol = _tol(motion, max(abs(x) for x in H + [best]))
+        # the best peaks polished: h rises to T[j] and falls after it, so its largest value in
+        # [T[j-1], T[j+1]] is the one there (a root of the rate, else Brent's minimiser), kept
+        # when it is no lower than the sample's
+        for j in (j for j in peaks if H[j] >= best - tol):
+            tm, hm = _peak(h, hr, T[j - 1], T[j + 1])
+            cands += [(tm, hm)] if hm >= H[j] else []
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)

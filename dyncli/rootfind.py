@@ -457,7 +457,9 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
             except np.linalg.LinAlgError:
                 return [sorted(c) for c in cuts], False
             keep = (np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)
-            cuts[j].update(float(m[i] + h[i] * t) for t in np.real(r[keep]))
+            # (a critical point within 1e-8 of the cell's end is that end's: the cell is monotone
+            # to rounding up to it — its variation there ~1e-16 of h² q'' — and the end is a cut)
+            cuts[j].update(float(m[i] + h[i] * t) for t in _polished(d[j, i], np.real(r[keep])) if abs(t) < 1 - 1e-8)
         split = ~np.all(fine, axis=0)
         mid = m[split]
         for j, comp in enumerate(cuts):                  # a halved cell's middle: a cut of what is halved
@@ -469,6 +471,22 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
     inner = set(B.tolist())
     return [sorted(t for t in comp if lo < t < hi and t not in inner) for comp in cuts], True
 
+
+
+def _polished(d, r):
+    """The roots ``r`` in (−1, 1) of the Chebyshev series ``d`` after two Newton steps on the series
+    itself (the companion matrix's eigenvalues carry its conditioning: ~1e-11 of the interval at
+    a simple root), a step that would leave (−1, 1) or is not finite not taken."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    dd = C.chebder(d)
+    for _ in range(2):
+        with np.errstate(all="ignore"):
+            step = C.chebval(r, d) / C.chebval(r, dd)
+        new = r - step
+        r = np.where(np.isfinite(new) & (np.abs(new) < 1) & (np.abs(step) < 1e-3), new, r)
+    return r
 
 def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
     """A root of the square system F(x) = 0 by Newton's method with the analytic Jacobian

@@ -62,7 +62,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         f = motion.flat(t)
         return float(p.m) * sum(f[f"v.{i}"] * f[f"a.{i}"] for i in range(3))
 
-    own = None if pieces is not None else exact_breaks(p.find, traj_of(), B, at_times, odo)
+    own = exact_breaks(p.find, traj_of() if pieces is None else None, B, at_times, odo)
     motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x": "v", "v": "a", "T": lambda t, _: power(t)},
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))],
@@ -75,30 +75,31 @@ _COMPONENT = {f"{q}.{i}": 3 * k + i for k, q in enumerate(("x", "v")) for i in r
 
 
 def exact_breaks(find, traj, B: list[float], at_times, odo):
-    """``breaks_for(path)`` cutting every step at the exact extremes of each result searched (else
-    None: see :func:`dyncli.motion_find.exact_breaks`): a coordinate of x or v is a coordinate of
-    the step's dense output, a polynomial, whose critical points are decided exactly
-    (:func:`dyncli.rootfind.polynomial_extremes`); any other result (|v| through T, a, V, E,
-    H_O, W_nc, distance) is a smooth function of that polynomial inside the step, whose critical
-    points are the roots of its derivative (:func:`dyncli.rootfind.smooth_extremes`).  Between
-    two cuts each result is monotone, so no excursion inside a step, however narrow, is stepped
-    over."""
+    """``breaks_for(path)`` cutting every piece at the exact extremes of each result searched (else
+    None: see :func:`dyncli.motion_find.exact_breaks`).  On the ODE route (``traj``: the dense
+    trajectory) a coordinate of x or v is a coordinate of the step's dense output, a polynomial,
+    whose critical points are decided exactly (:func:`dyncli.rootfind.polynomial_extremes`); any
+    other result (|v| through T, a, V, E, H_O, W_nc, distance) is a smooth function of that
+    polynomial inside the step, whose critical points are the roots of its derivative
+    (:func:`dyncli.rootfind.smooth_extremes`); on the exact orbit (``traj`` None) every result
+    is such a function on each piece of the conic.  Between two cuts each result is monotone, so
+    no excursion inside a piece, however narrow, is stepped over."""
     import numpy as np
 
     pieces = []
-    for ph in traj.phases:
+    for ph in (traj.phases if traj is not None else ()):
         sol = getattr(ph, "sol", None)
         if sol is None:
             if ph.t1 > ph.t0 and not hasattr(ph, "x"):      # an ODE phase without its steps' polynomials
                 return None
             continue
         pieces += [(f, float(a), float(b)) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:]) if b > a]
-    if not pieces:
+    if traj is not None and not pieces:
         return None
     coordinates: dict[str, list[float]] = {}
 
     def known(path: str):
-        if path not in _COMPONENT:
+        if path not in _COMPONENT or not pieces:
             return None
         if not coordinates:
             from dyncli.rootfind import polynomial_extremes
