@@ -147,7 +147,7 @@ def dense_motion(top, acc: Controls, T: float, Wfast, Wp, *, state, bounds):
     search's times (:func:`dyncli.motion_find.resolved`)."""
     method = acc.method if acc.method == "projected" else runner.scipy_method(acc.method)
     red = Reduced(top, state, bounds, Wp)
-    if not T > 0 or method == "projected" or not usable(top, *bounds, red.w3, red.b, Wp, Wfast, acc.rtol):
+    if not T > 0 or method == "projected" or not usable(top, bounds[0], bounds[1], red.w3, red.b, Wp, Wfast, acc.rtol):
         return None
     return red.dense(T, rtol=acc.rtol, atol=acc.atol, method=method, max_step=step_cap(bounds, Wfast, method),
                      max_steps=acc.max_steps)
