@@ -166,6 +166,35 @@ class SceneSystem:
     def phi_t(self, t) -> np.ndarray:
         return np.concatenate([e.phi_t(t) for e in self.elements]) if self.elements else np.zeros(0)
 
+    # the rows at many states at once (X: a system.Stack of k states, V: (k, n), ``td``: from
+    # :meth:`at_times`): the same numbers as the one-state forms above, row by row
+    def at_times(self, T) -> list:
+        """Each element's data at the times T (a drive's f(t)): ``td`` of the forms below."""
+        return [e.at_times(T) for e in self.elements]
+
+    def phi_many(self, X, td) -> np.ndarray:
+        if not self.elements:
+            return np.zeros((X.k, 0))
+        return np.concatenate([e.phi_many(X, d) for e, d in zip(self.elements, td)], axis=1)
+
+    def jac_many(self, X) -> np.ndarray:
+        rows = [e.rows for e in self.elements]
+        J = np.zeros((X.k, sum(rows), self.n))
+        o = 0
+        for e, r in zip(self.elements, rows):
+            if r:
+                e.jac_many(X, J[:, o:o + r])
+                o += r
+        return J
+
+    def gamma_many(self, X, V, td) -> np.ndarray:
+        if not self.elements:
+            return np.zeros((X.k, 0))
+        return np.concatenate([e.gamma_many(X, V, d) for e, d in zip(self.elements, td)], axis=1)
+
+    def phi_t_many(self, td) -> np.ndarray:
+        return np.concatenate([e.phi_t_many(d) for e, d in zip(self.elements, td)], axis=1)
+
     def lam_of(self, lam, i: int) -> np.ndarray:
         o = self.offsets[i]
         return lam[o:o + self.elements[i].rows]

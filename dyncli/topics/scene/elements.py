@@ -43,6 +43,27 @@ class Element:
     def phi_t(self, t) -> np.ndarray:
         return np.zeros(self.rows)
 
+    # --- many states at once (X: a system.Stack of k states, V: (k, n); ``td``: the element's data at the
+    # states' times, from :meth:`at_times`).  These defaults call the one-state forms state by
+    # state; the common joints override them with column arithmetic (the same numbers).
+    def at_times(self, T) -> np.ndarray:
+        """What the rows need of the times T (k,): the times themselves (a drive: its f(t))."""
+        return T
+
+    def phi_many(self, X, td) -> np.ndarray:
+        return np.array([self.phi(q, float(t)) for q, t in zip(X.Q, td)]).reshape(X.k, self.rows)
+
+    def jac_many(self, X, J) -> None:
+        """J (k, rows, n), zero on entry: filled with the rows' Jacobian at every state."""
+        for k, q in enumerate(X.Q):
+            J[k] = self.jac(q)
+
+    def gamma_many(self, X, V, td) -> np.ndarray:
+        return np.array([self.gamma(q, v, float(t)) for q, v, t in zip(X.Q, V, td)]).reshape(X.k, self.rows)
+
+    def phi_t_many(self, td) -> np.ndarray:
+        return np.array([self.phi_t(float(t)) for t in td]).reshape(len(td), self.rows)
+
     def report(self, lam, q, v, t) -> dict:
         return {}
 
@@ -87,6 +108,21 @@ class Pin(Element):
         (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
         return np.array((q1 - p1, q2 - p2))
 
+    def phi_many(self, X, td):
+        (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
+        return np.stack((p1 - q1, p2 - q2), axis=1)
+
+    def jac_many(self, X, J):
+        self.P.add_jac2_many(J, X, 1.0)
+        self.Q.add_jac2_many(J, X, -1.0)
+
+    def gamma_many(self, X, V, td):
+        (p1, p2), (q1, q2) = self.P.bias_many(X, V), self.Q.bias_many(X, V)
+        return np.stack((q1 - p1, q2 - p2), axis=1)
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), 2))
+
     def report(self, lam, q, v, t):
         return {"R": [float(lam[0]), float(lam[1]), 0.0]}
 
@@ -106,18 +142,39 @@ class Slider(Element):
         return 1 if self.theta0 is None else 2
 
     def phi(self, q, t):
-        nn = np.array(self.surface.n)
-        out = [float(nn @ self.body_point.pos(q)) - self.c0]
+        n1, n2 = self.surface.n
+        x1, x2 = self.body_point.xy(q)
+        out = [n1 * x1 + n2 * x2 - self.c0]
         if self.theta0 is not None:
             out.append(float(q[self.body_point.body.index[2]]) - self.theta0)
         return np.array(out)
 
     def jac(self, q):
         J = np.zeros((self.rows, self.n))
-        J[0] = np.array(self.surface.n) @ self.body_point.jac(q, self.n)
+        self.body_point.add_jac(J[0], q, *self.surface.n)
         if self.theta0 is not None:
             J[1, self.body_point.body.index[2]] = 1.0
         return J
+
+    def phi_many(self, X, td):
+        n1, n2 = self.surface.n
+        x1, x2 = self.body_point.xy_many(X)
+        cols = [n1 * x1 + n2 * x2 - self.c0]
+        if self.theta0 is not None:
+            cols.append(X.Q[:, self.body_point.body.index[2]] - self.theta0)
+        return np.stack(cols, axis=1)
+
+    def jac_many(self, X, J):
+        n1, n2 = self.surface.n
+        self.body_point.add_jac_many(J[:, 0], X, n1, n2)
+        if self.theta0 is not None:
+            J[:, 1, self.body_point.body.index[2]] = 1.0
+
+    def gamma_many(self, X, V, td):
+        return np.zeros((X.k, self.rows))
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), self.rows))
 
     def report(self, lam, q, v, t):
         out = {"N": float(lam[0])}
@@ -162,6 +219,33 @@ class Link(Element):
         ev = e1 * dv1 + e2 * dv2
         return np.array([-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)])
 
+    def _d_many(self, X):
+        (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
+        d1, d2 = p1 - q1, p2 - q2
+        ln = np.fromiter(map(math.hypot, d1.tolist(), d2.tolist()), float, len(d1))
+        return d1, d2, ln
+
+    def phi_many(self, X, td):
+        return (self._d_many(X)[2] - self.L)[:, None]
+
+    def jac_many(self, X, J):
+        d1, d2, ln = self._d_many(X)
+        e1, e2 = d1 / ln, d2 / ln
+        self.P.add_jac_many(J[:, 0], X, e1, e2)
+        self.Q.add_jac_many(J[:, 0], X, -e1, -e2)
+
+    def gamma_many(self, X, V, td):
+        d1, d2, ln = self._d_many(X)
+        e1, e2 = d1 / ln, d2 / ln
+        (pv1, pv2), (qv1, qv2) = self.P.vel_many(X, V), self.Q.vel_many(X, V)
+        (pb1, pb2), (qb1, qb2) = self.P.bias_many(X, V), self.Q.bias_many(X, V)
+        dv1, dv2 = pv1 - qv1, pv2 - qv2
+        ev = e1 * dv1 + e2 * dv2
+        return (-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln))[:, None]
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), 1))
+
     def report(self, lam, q, v, t):
         return {"T": -float(lam[0])}
 
@@ -172,6 +256,7 @@ class Drive(Element):
 
     index: int = 0
     f: Callable[[float], tuple[float, float, float]]     # f(t) -> (value, rate, second rate)
+    f_many: Callable | None = None                       # f at an array of times -> 3 arrays (the same numbers)
     rows = 1
     _last: tuple = field(default=(None, None), repr=False, compare=False)   # (t, f(t)): φ, φ_t, γ asked at one t
 
@@ -193,6 +278,24 @@ class Drive(Element):
 
     def gamma(self, q, v, t):
         return np.array([self._at(t)[2]])
+
+    def at_times(self, T):
+        """f(t) at each time: (k, 3) rows (value, rate, second rate)."""
+        if self.f_many is not None:
+            return np.stack(self.f_many(T), axis=1)
+        return np.array([self.f(float(t)) for t in T], dtype=float).reshape(len(T), 3)
+
+    def phi_many(self, X, td):
+        return (X.Q[:, self.index] - td[:, 0])[:, None]
+
+    def jac_many(self, X, J):
+        J[:, 0, self.index] = 1.0
+
+    def gamma_many(self, X, V, td):
+        return td[:, 2:3].copy()
+
+    def phi_t_many(self, td):
+        return -td[:, 1:2]
 
     def report(self, lam, q, v, t):
         return {"drive": float(lam[0])}
@@ -331,10 +434,18 @@ class Guide(Element):
     rows = 1
 
     def phi(self, q, t):
-        return np.array([float(self.w @ self.P.pos(q)) - self.c0])
+        x1, x2 = self.P.xy(q)
+        return np.array([float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0])
 
     def jac(self, q):
         return (self.w @ self.P.jac(q, self.n))[None, :]
+
+    def phi_many(self, X, td):
+        x1, x2 = self.P.xy_many(X)
+        return (float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0)[:, None]
+
+    def jac_many(self, X, J):
+        self.P.add_jac_many(J[:, 0], X, float(self.w[0]), float(self.w[1]))
 
 
 def segment_tangents(Ca, ra, Cb, rb):

@@ -43,6 +43,8 @@ class Piece:
     fixed: tuple | None = None     # statics: the one solve (q̈ = 0, λ, power)
     batch: Callable | None = None  # ode: the step's interpolant, unprojected, on an array of times -> (dim, k)
     many: Callable | None = None   # an exact piece's q̇ at an array of times -> (k, n), as fn's one by one
+    powers: Callable | None = None  # kinematics: the power of the drives and loads at an array of times -> (k,)
+    stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
 
 
 @dataclass
@@ -95,10 +97,13 @@ class Trajectory:
         out = np.empty((ts.size, n))
         ends = np.array([p.t_b for p in self.pieces])
         which = np.minimum(np.searchsorted(ends, ts, side="left"), len(self.pieces) - 1)
+        stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
         for k in sorted(set(which.tolist())):     # (np.unique would import numpy.ma: 13 ms cold)
             sel = np.nonzero(which == k)[0]
             p = self.pieces[k]
-            if p.batch is not None:
+            if p.stack is not None:
+                stacked.setdefault((p.stack, p.modes), []).append((sel, p))
+            elif p.batch is not None:
                 y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
                 out[sel] = y[n:2 * n].T
             elif p.many is not None:
@@ -108,6 +113,11 @@ class Trajectory:
                 set_modes(self.system, p.modes)
                 for i in sel:
                     out[i] = p.fn(min(max(float(ts[i]), p.t_a), p.t_b))[1]
+        for (stack, modes), parts in stacked.items():
+            set_modes(self.system, modes)
+            sel = np.concatenate([sel for sel, _ in parts])
+            fns = [p.fn for part, p in parts for _ in part]
+            out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
 
     def state(self, t: float):

@@ -127,6 +127,79 @@ class Point:
     def bias(self, q, v) -> np.ndarray:
         return np.array(self.bias_xy(q, v), dtype=float)
 
+    # --- many states at once (X: a Stack of k states): the same operations in the same order as
+    # the one-state forms above, on columns (equal to them bit for bit)
+    def arms_many(self, X) -> tuple[np.ndarray, np.ndarray] | None:
+        """Q(θ) p at every state, two columns (None for a point that does not turn with a body)."""
+        b = self.body
+        if b is None or b.inertia is None or not (self.p[0] or self.p[1]):
+            return None
+        got = X.arms.get(id(self))
+        if got is None:
+            c, s = X.trig(b.index[2])
+            p1, p2 = self.p
+            got = X.arms[id(self)] = (c * p1 - s * p2, s * p1 + c * p2)
+        return got
+
+    def xy_many(self, X) -> tuple[np.ndarray, np.ndarray]:
+        """r at every state: two columns (a ground point's broadcast to the states)."""
+        b = self.body
+        if b is None:
+            return np.full(X.k, float(self.p[0])), np.full(X.k, float(self.p[1]))
+        i = b.index
+        x1, x2 = X.Q[:, i[0]], X.Q[:, i[1]]
+        a = self.arms_many(X)
+        if a is not None:
+            return x1 + a[0], x2 + a[1]
+        return x1, x2
+
+    def add_jac_many(self, rows, X, w1, w2) -> None:
+        """rows (k, n) += w·∂r/∂q at every state (w1, w2: numbers or columns)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        rows[:, i[0]] += w1
+        rows[:, i[1]] += w2
+        a = self.arms_many(X)
+        if a is not None:
+            rows[:, i[2]] += a[0] * w2 - a[1] * w1
+
+    def add_jac2_many(self, J, X, sign: float) -> None:
+        """J[:, :2] += sign · ∂r/∂q at every state (a pin's two rows; J is (k, 2, n))."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        J[:, 0, i[0]] += sign
+        J[:, 1, i[1]] += sign
+        a = self.arms_many(X)
+        if a is not None:
+            J[:, 0, i[2]] -= sign * a[1]
+            J[:, 1, i[2]] += sign * a[0]
+
+    def vel_many(self, X, V) -> tuple[np.ndarray, np.ndarray]:
+        b = self.body
+        if b is None:
+            z = np.zeros(X.k)
+            return z, z
+        i = b.index
+        v1, v2 = V[:, i[0]], V[:, i[1]]
+        a = self.arms_many(X)
+        if a is not None:
+            w = V[:, i[2]]
+            return v1 - w * a[1], v2 + w * a[0]
+        return v1, v2
+
+    def bias_many(self, X, V) -> tuple[np.ndarray, np.ndarray]:
+        """J̇ v at every state, two columns (zeros for a point not turning)."""
+        a = self.arms_many(X)
+        if a is None:
+            z = np.zeros(X.k)
+            return z, z
+        w = V[:, self.body.index[2]]
+        return -w * w * a[0], -w * w * a[1]
+
     @property
     def turns_with_body(self) -> bool:
         """True when r depends on the body's angle (a rigid body's point off its centre)."""
@@ -160,6 +233,25 @@ class SurfaceData:
             return None
         s = (r[0] - self.origin[0]) * self.d[0] + (r[1] - self.origin[1]) * self.d[1]
         return float(min(s, self.length - s))
+
+
+class Stack:
+    """Many states of a scene at once: Q (k, n), one state a row, with the cos and sin of each
+    body's angle and each point's arm Q(θ) p computed once for all the rows that use them."""
+
+    def __init__(self, Q):
+        self.Q = Q
+        self.k = len(Q)
+        self._trig: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self.arms: dict[int, tuple[np.ndarray, np.ndarray]] = {}    # by id of the Point
+
+    def trig(self, i: int) -> tuple[np.ndarray, np.ndarray]:
+        """(cos, sin) of the coordinate i (a body's angle) at every state."""
+        got = self._trig.get(i)
+        if got is None:
+            th = self.Q[:, i]
+            got = self._trig[i] = (np.cos(th), np.sin(th))
+        return got
 
 
 def perp(a) -> np.ndarray:
