@@ -114,6 +114,7 @@ class SceneSystem:
             if b.rigid:
                 m[b.index[2]] = b.inertia
         self.mass = m
+        self._weights = None
         self.linsolve = np.linalg.solve
         self.grav = np.zeros(self.n)
         for b in self.bodies:
@@ -152,19 +153,39 @@ class SceneSystem:
         self._offsets()
 
     # ------------------------------------------------------------------ rows
+    # φ, J and γ are built in plain floats element by element (Element.*_list: numpy's cost per
+    # small array would be most of the work) and made arrays once
     def phi(self, q, t) -> np.ndarray:
-        return np.concatenate([e.phi(q, t) for e in self.elements]) if self.elements else np.zeros(0)
+        ql, out = q.tolist(), []
+        for e in self.elements:
+            out += e.phi_list(ql, t)
+        return np.array(out, dtype=float)
 
     def jac(self, q) -> np.ndarray:
-        if not self.elements:
-            return np.zeros((0, self.n))
-        return np.concatenate([e.jac(q) for e in self.elements], axis=0)
+        return self._jac(q.tolist())
+
+    def _jac(self, ql) -> np.ndarray:
+        rows = []
+        for e in self.elements:
+            if e.rows:
+                rows += e.jac_list(ql)
+        return np.array(rows, dtype=float).reshape(len(rows), self.n)
 
     def gamma(self, q, v, t) -> np.ndarray:
-        return np.concatenate([e.gamma(q, v, t) for e in self.elements]) if self.elements else np.zeros(0)
+        return np.array(self._gamma(q.tolist(), v.tolist(), t), dtype=float)
+
+    def _gamma(self, ql, vl, t) -> list:
+        out = []
+        for e in self.elements:
+            if e.rows:
+                out += e.gamma_list(ql, vl, t)
+        return out
 
     def phi_t(self, t) -> np.ndarray:
-        return np.concatenate([e.phi_t(t) for e in self.elements]) if self.elements else np.zeros(0)
+        out = []
+        for e in self.elements:
+            out += e.phi_t_list(t)
+        return np.array(out, dtype=float)
 
     # the rows at many states at once (X: a system.Stack of k states, V: (k, n), ``td``: from
     # :meth:`at_times`): the same numbers as the one-state forms above, row by row
@@ -232,8 +253,9 @@ class SceneSystem:
         """(q̈, λ, power of the non-conservative loads incl. friction)."""
         n = self.n
         f, power = self.applied(q, v, t)
-        A = self.kkt_matrix(q, self.jac(q))
-        rhs = np.concatenate([f, self.gamma(q, v, t)])
+        ql, vl = q.tolist(), v.tolist()
+        A = self.kkt_matrix(q, self._jac(ql))
+        rhs = np.concatenate([f, self._gamma(ql, vl, t)])
         try:
             x = self.linsolve(A, rhs)
         except np.linalg.LinAlgError:
@@ -297,31 +319,38 @@ class SceneSystem:
 
     # ------------------------------------------------------------------ projection
     def weights(self) -> np.ndarray:
-        w = self.mass.copy()
-        floor = max(float(np.max(w)), 1e-300) * 1e-12
-        return np.maximum(w, floor)
+        """The masses, each at least 1e-12 of the largest (the projections' metric; fixed per scene)."""
+        if self._weights is None:
+            w = self.mass.copy()
+            floor = max(float(np.max(w)), 1e-300) * 1e-12
+            self._weights = np.maximum(w, floor)
+        return self._weights
 
     def project_position(self, q, t, iters: int = 4) -> np.ndarray:
         if self.m == 0:
             return q
         Winv = 1.0 / self.weights()
-        tol = 8 * EPS * max(1.0, float(np.max(np.abs(q))))
+        ql = q.tolist()
+        tol = 8 * EPS * max(1.0, *map(abs, ql))
         for _ in range(iters):
-            ph = self.phi(q, t)
-            if float(np.max(np.abs(ph))) <= tol:      # on the joints to rounding: Newton has converged
+            ph = []
+            for e in self.elements:
+                ph += e.phi_list(ql, t)
+            if all(abs(x) <= tol for x in ph):      # on the joints to rounding: Newton has converged
                 break
-            J = self.jac(q)
+            J = self._jac(ql)
             S = (J * Winv) @ J.T
-            q = q - Winv * (J.T @ np.linalg.solve(S, ph))
+            q = q - Winv * (J.T @ self.linsolve(S, np.array(ph)))
+            ql = q.tolist()
         return q
 
     def project_velocity(self, q, v, t) -> np.ndarray:
         if self.m == 0:
             return v
         Winv = 1.0 / self.weights()
-        J = self.jac(q)
+        J = self._jac(q.tolist())
         r = J @ v + self.phi_t(t)
         if not np.any(r):
             return v
         S = (J * Winv) @ J.T
-        return v - Winv * (J.T @ np.linalg.solve(S, r))
+        return v - Winv * (J.T @ self.linsolve(S, r))

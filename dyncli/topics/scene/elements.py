@@ -43,6 +43,24 @@ class Element:
     def phi_t(self, t) -> np.ndarray:
         return np.zeros(self.rows)
 
+    # --- the same rows in plain floats (q, v: lists; the right-hand side of the ODE route and the
+    # projections, where numpy's cost per small array is most of the work).  The common joints
+    # compute their arrays from these (the same numbers); these defaults go through the arrays.
+    def phi_list(self, q, t) -> list:
+        return self.phi(np.asarray(q, dtype=float), t).tolist()
+
+    def jac_list(self, q) -> list:
+        """The rows' Jacobian: a list of ``rows`` lists of n floats."""
+        return self.jac(np.asarray(q, dtype=float)).tolist()
+
+    def gamma_list(self, q, v, t) -> list:
+        return self.gamma(np.asarray(q, dtype=float), np.asarray(v, dtype=float), t).tolist()
+
+    def phi_t_list(self, t) -> list:
+        if type(self).phi_t is Element.phi_t:       # rows that do not move in time
+            return [0.0] * self.rows
+        return self.phi_t(t).tolist()
+
     # --- many states at once (X: a system.Stack of k states, V: (k, n); ``td``: the element's data at the
     # states' times, from :meth:`at_times`).  These defaults call the one-state forms state by
     # state; the common joints override them with column arithmetic (the same numbers).
@@ -94,19 +112,28 @@ class Pin(Element):
     def linear(self):
         return not (self.P.turns_with_body or self.Q.turns_with_body)
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         (p1, p2), (q1, q2) = self.P.xy(q), self.Q.xy(q)
-        return np.array((p1 - q1, p2 - q2))
+        return [p1 - q1, p2 - q2]
+
+    def jac_list(self, q):
+        r1, r2 = [0.0] * self.n, [0.0] * self.n
+        self.P.add_jac2(r1, r2, q, 1.0)
+        self.Q.add_jac2(r1, r2, q, -1.0)
+        return [r1, r2]
+
+    def gamma_list(self, q, v, t):
+        (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
+        return [q1 - p1, q2 - p2]
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((2, self.n))
-        self.P.add_jac2(J, q, 1.0)
-        self.Q.add_jac2(J, q, -1.0)
-        return J
+        return np.array(self.jac_list(q))
 
     def gamma(self, q, v, t):
-        (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
-        return np.array((q1 - p1, q2 - p2))
+        return np.array(self.gamma_list(q, v, t))
 
     def phi_many(self, X, td):
         (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
@@ -141,20 +168,29 @@ class Slider(Element):
     def rows(self):
         return 1 if self.theta0 is None else 2
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         n1, n2 = self.surface.n
         x1, x2 = self.body_point.xy(q)
         out = [n1 * x1 + n2 * x2 - self.c0]
         if self.theta0 is not None:
             out.append(float(q[self.body_point.body.index[2]]) - self.theta0)
-        return np.array(out)
+        return out
+
+    def jac_list(self, q):
+        rows = [[0.0] * self.n for _ in range(self.rows)]
+        self.body_point.add_jac(rows[0], q, *self.surface.n)
+        if self.theta0 is not None:
+            rows[1][self.body_point.body.index[2]] = 1.0
+        return rows
+
+    def gamma_list(self, q, v, t):
+        return [0.0] * self.rows
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((self.rows, self.n))
-        self.body_point.add_jac(J[0], q, *self.surface.n)
-        if self.theta0 is not None:
-            J[1, self.body_point.body.index[2]] = 1.0
-        return J
+        return np.array(self.jac_list(q))
 
     def phi_many(self, X, td):
         n1, n2 = self.surface.n
@@ -198,26 +234,35 @@ class Link(Element):
         d1, d2 = p1 - q1, p2 - q2
         return (d1, d2), math.hypot(d1, d2)
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         _, ln = self._d(q)
-        return np.array([ln - self.L])
+        return [ln - self.L]
 
-    def jac(self, q):
+    def jac_list(self, q):
         (d1, d2), ln = self._d(q)
         e1, e2 = d1 / ln, d2 / ln
-        J = np.zeros((1, self.n))
-        self.P.add_jac(J[0], q, e1, e2)
-        self.Q.add_jac(J[0], q, -e1, -e2)
-        return J
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, e1, e2)
+        self.Q.add_jac(row, q, -e1, -e2)
+        return [row]
 
-    def gamma(self, q, v, t):
+    def gamma_list(self, q, v, t):
         (d1, d2), ln = self._d(q)
         e1, e2 = d1 / ln, d2 / ln
         (pv1, pv2), (qv1, qv2) = self.P.vel_xy(q, v), self.Q.vel_xy(q, v)
         (pb1, pb2), (qb1, qb2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
         dv1, dv2 = pv1 - qv1, pv2 - qv2
         ev = e1 * dv1 + e2 * dv2
-        return np.array([-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)])
+        return [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
+
+    def jac(self, q):
+        return np.array(self.jac_list(q))
+
+    def gamma(self, q, v, t):
+        return np.array(self.gamma_list(q, v, t))
 
     def _d_many(self, X):
         (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
@@ -265,19 +310,28 @@ class Drive(Element):
             self._last = (t, self.f(t))
         return self._last[1]
 
+    def phi_list(self, q, t):
+        return [float(q[self.index]) - self._at(t)[0]]
+
+    def jac_list(self, q):
+        row = [0.0] * self.n
+        row[self.index] = 1.0
+        return [row]
+
+    def gamma_list(self, q, v, t):
+        return [self._at(t)[2]]
+
     def phi(self, q, t):
-        return np.array([float(q[self.index]) - self._at(t)[0]])
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((1, self.n))
-        J[0, self.index] = 1.0
-        return J
+        return np.array(self.jac_list(q))
 
     def phi_t(self, t):
         return np.array([-self._at(t)[1]])
 
     def gamma(self, q, v, t):
-        return np.array([self._at(t)[2]])
+        return np.array(self.gamma_list(q, v, t))
 
     def at_times(self, T):
         """f(t) at each time: (k, 3) rows (value, rate, second rate)."""
@@ -389,16 +443,24 @@ class Cord(Element):
     def phi(self, q, t):
         return (self.lengths(q) - np.array(self.consts))[self.taut]
 
-    def jac(self, q):
-        J = np.zeros((self.rows, self.n))
-        for k, r in enumerate(self.taut):
+    def jac_list(self, q):
+        rows = []
+        for r in self.taut:
+            row = [0.0] * self.n
             for s in self.runs[r]:
-                s.b.add_jac(J[k], s.u, q, 1.0)
-                s.a.add_jac(J[k], s.u, q, -1.0)
-        return J
+                s.b.add_jac(row, s.u, q, 1.0)
+                s.a.add_jac(row, s.u, q, -1.0)
+            rows.append(row)
+        return rows
+
+    def gamma_list(self, q, v, t):
+        return [-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut]
+
+    def jac(self, q):
+        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
-        return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut])
+        return np.array(self.gamma_list(q, v, t))
 
     def run_rate(self, q, v, r: int) -> float:
         """d/dt of run r's length (its row's rate): negative while a slack run takes up slack."""
@@ -433,12 +495,23 @@ class Guide(Element):
     c0: float = 0.0
     rows = 1
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         x1, x2 = self.P.xy(q)
-        return np.array([float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0])
+        return [float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0]
+
+    def jac_list(self, q):
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, float(self.w[0]), float(self.w[1]))
+        return [row]
+
+    def gamma_list(self, q, v, t):
+        return [0.0]
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        return (self.w @ self.P.jac(q, self.n))[None, :]
+        return np.array(self.jac_list(q))
 
     def phi_many(self, X, td):
         x1, x2 = self.P.xy_many(X)

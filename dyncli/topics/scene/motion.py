@@ -68,6 +68,7 @@ class Trajectory:
     phases: list = field(default_factory=list)    # phases.Phase, in order
     impacts: list = field(default_factory=list)   # phases.Impact, in order
     _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
+    _stacked: object = field(default=None, repr=False)      # _Stacked: the pieces as velocities() reads them
 
     def add(self, piece: Piece):
         if piece.t_b > piece.t_a or not self.pieces:
@@ -95,10 +96,17 @@ class Trajectory:
                 return np.asarray(p.batch(min(max(float(ts[0]), p.t_a), p.t_b)), dtype=float)[n:2 * n].reshape(1, n)
             return np.asarray(self.state(float(ts[0]))[1], dtype=float).reshape(1, n)
         out = np.empty((ts.size, n))
-        ends = np.array([p.t_b for p in self.pieces])
-        which = np.minimum(np.searchsorted(ends, ts, side="left"), len(self.pieces) - 1)
+        dense = self._dense()
+        which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
+        if dense.stack is not None:         # the DOP853 steps: every time in one stacked evaluation
+            on = dense.row[which] >= 0
+            if np.any(on):
+                k = which[on]
+                y = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
+                out[on] = y[:, n:2 * n]
+                which = np.where(on, -1, which)
         stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
-        for k in sorted(set(which.tolist())):     # (np.unique would import numpy.ma: 13 ms cold)
+        for k in sorted(set(which.tolist()) - {-1}):    # (np.unique would import numpy.ma: 13 ms cold)
             sel = np.nonzero(which == k)[0]
             p = self.pieces[k]
             if p.stack is not None:
@@ -120,6 +128,25 @@ class Trajectory:
             out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
 
+    def _dense(self):
+        """The pieces' ends, and the DOP853 steps among them stacked for :meth:`velocities` (made
+        once the pieces are all there: remade when they changed)."""
+        key = (len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
+        got = self._stacked
+        if got is None or got.key != key:
+            from dyncli.dop853 import DenseOutput, DenseStack
+
+            ps = self.pieces
+            row = np.full(len(ps), -1)
+            outs = []
+            for k, p in enumerate(ps):
+                if isinstance(p.batch, DenseOutput):
+                    row[k] = len(outs)
+                    outs.append(p.batch)
+            got = self._stacked = _Stacked(key, np.array([p.t_b for p in ps]), np.array([p.t_a for p in ps]), row,
+                                           DenseStack(outs) if outs else None)
+        return got
+
     def state(self, t: float):
         p = self.piece(t)
         set_modes(self.system, p.modes)
@@ -131,6 +158,19 @@ class Trajectory:
                 memo.clear()
             memo[t] = got
         return got
+
+
+@dataclass
+class _Stacked:
+    key: tuple                  # (number of pieces, the last one's end) when made
+    ends: np.ndarray            # each piece's t_b
+    t_a: np.ndarray             # each piece's t_a
+    row: np.ndarray             # each piece's row in ``stack`` (-1: not a DOP853 step)
+    stack: object               # dop853.DenseStack of the DOP853 steps, or None
+
+    @property
+    def t_b(self) -> np.ndarray:
+        return self.ends
 
 
 def modes_of(system) -> tuple:

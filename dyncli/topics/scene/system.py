@@ -86,18 +86,18 @@ class Point:
             a1, a2 = self._arm(float(q[i[2]]))
             row[i[2]] += a1 * w2 - a2 * w1          # w·(e3 × Q p)
 
-    def add_jac2(self, J, q, sign: float) -> None:
-        """J[:2] += sign · ∂r/∂q, in place (a pin's two rows)."""
+    def add_jac2(self, r1, r2, q, sign: float) -> None:
+        """(r1, r2) += sign · ∂r/∂q, in place (a pin's two rows: arrays or lists)."""
         b = self.body
         if b is None:
             return
         i = b.index
-        J[0, i[0]] += sign
-        J[1, i[1]] += sign
+        r1[i[0]] += sign
+        r2[i[1]] += sign
         if b.inertia is not None and (self.p[0] or self.p[1]):
             a1, a2 = self._arm(float(q[i[2]]))
-            J[0, i[2]] -= sign * a2
-            J[1, i[2]] += sign * a1
+            r1[i[2]] -= sign * a2
+            r2[i[2]] += sign * a1
 
     def vel_xy(self, q, v) -> tuple[float, float]:
         b = self.body
