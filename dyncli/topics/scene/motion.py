@@ -45,6 +45,7 @@ class Piece:
     many: Callable | None = None   # an exact piece's q̇ at an array of times -> (k, n), as fn's one by one
     powers: Callable | None = None  # kinematics: the power of the drives and loads at an array of times -> (k,)
     stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
+    states: Callable | None = None  # pieces evaluated together: states([fn per time], times) -> [fn(t)]
 
 
 @dataclass
@@ -146,6 +147,25 @@ class Trajectory:
             got = self._stacked = _Stacked(key, np.array([p.t_b for p in ps]), np.array([p.t_a for p in ps]), row,
                                            DenseStack(outs) if outs else None)
         return got
+
+    def prefetch(self, ts) -> None:
+        """The states at the times ``ts`` that a search is about to read one by one, made together
+        where the pieces can (Piece.states: the kinematics route) and kept for :meth:`state`."""
+        groups: dict = {}
+        for t in ts:
+            t = float(t)
+            if t in self._memo:
+                continue
+            p = self.piece(t)
+            if p.states is not None:
+                groups.setdefault((p.states, p.modes), []).append((t, p))
+        for (states, modes), items in groups.items():
+            set_modes(self.system, modes)
+            got = states([p.fn for _, p in items], [min(max(t, p.t_a), p.t_b) for t, p in items])
+            if len(self._memo) + len(items) > 50_000:
+                self._memo.clear()
+            for (t, _), st in zip(items, got):
+                self._memo[t] = st
 
     def state(self, t: float):
         p = self.piece(t)

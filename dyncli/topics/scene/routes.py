@@ -147,7 +147,7 @@ def _kinematics(scene: Scene, traj, acc):
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
         traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
-                              powers=fn.powers, stack=_kin_velocities))
+                              powers=fn.powers, stack=_kin_velocities, states=_kin_states))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
@@ -321,6 +321,13 @@ def _kin_rates(pieces, ts):
             _kin_state(s, p.position(float(t)), float(t))      # raises its message
     V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
     return X, Js, V, td
+
+
+def _kin_states(pieces, ts) -> list:
+    """(q, q̇, 0) of ``pieces[i]`` at ``ts[i]`` (Piece.states of the kinematics route: the
+    states a search will read, made together; the numbers of each piece's own call)."""
+    X, _Js, V, _td = _kin_rates(pieces, ts)
+    return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
 
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
