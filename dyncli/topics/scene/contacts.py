@@ -107,6 +107,16 @@ class Contact(Element):
         b1, b2 = self.P.bias_xy(q, v)
         return [-(w1 * b1 + w2 * b2) for w1, w2 in (self.surface.n, self.surface.d)[:self.rows]]
 
+    def kkt_lists(self, q, v, t):
+        *_, b1, b2, arm = self.P.kin(q, v)
+        rows, gam = [], []
+        for w1, w2 in (self.surface.n, self.surface.d)[:self.rows]:
+            row = [0.0] * self.n
+            self.P.add_jac_arm(row, arm, w1, w2)
+            rows.append(row)
+            gam.append(-(w1 * b1 + w2 * b2))
+        return rows, gam
+
     def phi(self, q, t):
         return np.array(self.phi_list(q, t))
 

@@ -174,6 +174,7 @@ class CurveContact(Contact):
     phi_list = Element.phi_list
     jac_list = Element.jac_list
     gamma_list = Element.gamma_list
+    kkt_lists = Element.kkt_lists
 
     def phase(self):
         return (self.mode, self.sign, self.stick_at, self.stick_t)
@@ -256,6 +257,7 @@ class CurveRolls(Rolls):
     phi_list = Element.phi_list
     jac_list = Element.jac_list
     gamma_list = Element.gamma_list
+    kkt_lists = Element.kkt_lists
 
     def _centre(self, q):
         i = self.body_point.body.index

@@ -254,8 +254,14 @@ class SceneSystem:
         n = self.n
         f, power = self.applied(q, v, t)
         ql, vl = q.tolist(), v.tolist()
-        A = self.kkt_matrix(q, self._jac(ql))
-        rhs = np.concatenate([f, self._gamma(ql, vl, t)])
+        rows, gam = [], []
+        for e in self.elements:
+            if e.rows:
+                r, g = e.kkt_lists(ql, vl, t)
+                rows += r
+                gam += g
+        A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
+        rhs = np.concatenate([f, gam])
         try:
             x = self.linsolve(A, rhs)
         except np.linalg.LinAlgError:

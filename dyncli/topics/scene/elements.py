@@ -56,6 +56,10 @@ class Element:
     def gamma_list(self, q, v, t) -> list:
         return self.gamma(np.asarray(q, dtype=float), np.asarray(v, dtype=float), t).tolist()
 
+    def kkt_lists(self, q, v, t) -> tuple[list, list]:
+        """(jac_list, gamma_list) together (an element may share their geometry)."""
+        return self.jac_list(q), self.gamma_list(q, v, t)
+
     def phi_t_list(self, t) -> list:
         if type(self).phi_t is Element.phi_t:       # rows that do not move in time
             return [0.0] * self.rows
@@ -125,6 +129,14 @@ class Pin(Element):
     def gamma_list(self, q, v, t):
         (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
         return [q1 - p1, q2 - p2]
+
+    def kkt_lists(self, q, v, t):
+        *_, pb1, pb2, pa = self.P.kin(q, v)
+        *_, qb1, qb2, qa = self.Q.kin(q, v)
+        r1, r2 = [0.0] * self.n, [0.0] * self.n
+        self.P.add_jac2_arm(r1, r2, pa, 1.0)
+        self.Q.add_jac2_arm(r1, r2, qa, -1.0)
+        return [r1, r2], [qb1 - pb1, qb2 - pb2]
 
     def phi(self, q, t):
         return np.array(self.phi_list(q, t))
@@ -254,6 +266,19 @@ class Link(Element):
         dv1, dv2 = pv1 - qv1, pv2 - qv2
         ev = e1 * dv1 + e2 * dv2
         return [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
+
+    def kkt_lists(self, q, v, t):
+        p1, p2, pv1, pv2, pb1, pb2, pa = self.P.kin(q, v)
+        q1, q2, qv1, qv2, qb1, qb2, qa = self.Q.kin(q, v)
+        d1, d2 = p1 - q1, p2 - q2
+        ln = math.hypot(d1, d2)
+        e1, e2 = d1 / ln, d2 / ln
+        row = [0.0] * self.n
+        self.P.add_jac_arm(row, pa, e1, e2)
+        self.Q.add_jac_arm(row, qa, -e1, -e2)
+        dv1, dv2 = pv1 - qv1, pv2 - qv2
+        ev = e1 * dv1 + e2 * dv2
+        return [row], [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
 
     def phi(self, q, t):
         return np.array(self.phi_list(q, t))

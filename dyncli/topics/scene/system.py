@@ -54,6 +54,31 @@ class Point:
     def pos(self, q) -> np.ndarray:
         return np.array(self.xy(q), dtype=float)
 
+    def kin(self, q, v) -> tuple:
+        """(r1, r2, v1, v2, b1, b2, arm) in plain floats, the arm Q(θ) p computed once (None for a
+        point that does not turn): what xy, vel_xy and bias_xy give, by the same operations."""
+        b = self.body
+        if b is None:
+            return float(self.p[0]), float(self.p[1]), 0.0, 0.0, 0.0, 0.0, None
+        i = b.index
+        x1, x2, v1, v2 = float(q[i[0]]), float(q[i[1]]), float(v[i[0]]), float(v[i[1]])
+        if b.inertia is not None and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            w = float(v[i[2]])
+            return x1 + a1, x2 + a2, v1 - w * a2, v2 + w * a1, -w * w * a1, -w * w * a2, (a1, a2)
+        return x1, x2, v1, v2, 0.0, 0.0, None
+
+    def add_jac_arm(self, row, arm, w1: float, w2: float) -> None:
+        """:meth:`add_jac` with the arm of :meth:`kin` (not computed again)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        row[i[0]] += w1
+        row[i[1]] += w2
+        if arm is not None:
+            row[i[2]] += arm[0] * w2 - arm[1] * w1
+
     def _arm(self, th: float) -> tuple[float, float]:
         c, s = math.cos(th), math.sin(th)
         p1, p2 = self.p
@@ -85,6 +110,18 @@ class Point:
         if b.inertia is not None and (self.p[0] or self.p[1]):
             a1, a2 = self._arm(float(q[i[2]]))
             row[i[2]] += a1 * w2 - a2 * w1          # w·(e3 × Q p)
+
+    def add_jac2_arm(self, r1, r2, arm, sign: float) -> None:
+        """:meth:`add_jac2` with the arm of :meth:`kin` (not computed again)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        r1[i[0]] += sign
+        r2[i[1]] += sign
+        if arm is not None:
+            r1[i[2]] -= sign * arm[1]
+            r2[i[2]] += sign * arm[0]
 
     def add_jac2(self, r1, r2, q, sign: float) -> None:
         """(r1, r2) += sign · ∂r/∂q, in place (a pin's two rows: arrays or lists)."""
