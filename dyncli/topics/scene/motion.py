@@ -70,6 +70,7 @@ class Trajectory:
     impacts: list = field(default_factory=list)   # phases.Impact, in order
     _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
     _stacked: object = field(default=None, repr=False)      # _Stacked: the pieces as velocities() reads them
+    _ends: tuple = field(default=(None, []), repr=False)     # (key, each piece's t_b) for piece()
 
     def add(self, piece: Piece):
         if piece.t_b > piece.t_a or not self.pieces:
@@ -82,8 +83,11 @@ class Trajectory:
 
     def piece(self, t: float) -> Piece:
         """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
-        ends = [p.t_b for p in self.pieces]
-        return self.pieces[min(bisect.bisect_left(ends, t), len(self.pieces) - 1)]
+        ps = self.pieces
+        key = (id(ps), len(ps), ps[-1].t_b if ps else None)
+        if self._ends[0] != key:        # the pieces' ends, kept while the pieces stay as they are
+            self._ends = (key, [p.t_b for p in ps])
+        return ps[min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)]
 
     def velocities(self, ts) -> np.ndarray:
         """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
@@ -132,7 +136,7 @@ class Trajectory:
     def _dense(self):
         """The pieces' ends, and the DOP853 steps among them stacked for :meth:`velocities` (made
         once the pieces are all there: remade when they changed)."""
-        key = (len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
+        key = (id(self.pieces), len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
         got = self._stacked
         if got is None or got.key != key:
             from dyncli.dop853 import DenseOutput, DenseStack
@@ -182,7 +186,7 @@ class Trajectory:
 
 @dataclass
 class _Stacked:
-    key: tuple                  # (number of pieces, the last one's end) when made
+    key: tuple                  # (the list, its length, the last piece's end) when made
     ends: np.ndarray            # each piece's t_b
     t_a: np.ndarray             # each piece's t_a
     row: np.ndarray             # each piece's row in ``stack`` (-1: not a DOP853 step)
