@@ -20,7 +20,7 @@ import numpy as np
 from dyncli.errors import NumericalError
 
 from .contacts import Contact, Rolls
-from .elements import Element
+from .elements import Element, Pin, PinBlock
 from .system import BodyData, Point
 
 EPS = float(np.finfo(float).eps)
@@ -115,6 +115,7 @@ class SceneSystem:
                 m[b.index[2]] = b.inertia
         self.mass = m
         self._weights = None
+        self._pin_block = None          # (the elements' rows, their PinBlock) for the stacked forms
         self.linsolve = np.linalg.solve
         self.grav = np.zeros(self.n)
         for b in self.bodies:
@@ -193,19 +194,43 @@ class SceneSystem:
         """Each element's data at the times T (a drive's f(t)): ``td`` of the forms below."""
         return [e.at_times(T) for e in self.elements]
 
+    def _pins(self):
+        """The PinBlock of the current rows (None without pins or where it cannot be one block)."""
+        rows = tuple(e.rows for e in self.elements)
+        if self._pin_block is None or self._pin_block[0] != rows:
+            pins, offsets, o = [], [], 0
+            for e, r in zip(self.elements, rows):
+                if isinstance(e, Pin):
+                    pins.append(e)
+                    offsets.append(o)
+                o += r
+            block = PinBlock(pins, offsets) if pins else None
+            self._pin_block = (rows, block if block is not None and block.ok else None)
+        return self._pin_block[1]
+
     def phi_many(self, X, td) -> np.ndarray:
-        if not self.elements:
-            return np.zeros((X.k, 0))
-        return np.concatenate([e.phi_many(X, d) for e, d in zip(self.elements, td)], axis=1)
+        block = self._pins()
+        out = np.empty((X.k, sum(e.rows for e in self.elements)))
+        o = 0
+        for e, d in zip(self.elements, td):
+            if e.rows and (block is None or id(e) not in block.members):
+                out[:, o:o + e.rows] = e.phi_many(X, d)
+            o += e.rows
+        if block is not None:
+            out[:, block.rows0], out[:, block.rows0 + 1] = block.phi(X.Q)
+        return out
 
     def jac_many(self, X) -> np.ndarray:
+        block = self._pins()
         rows = [e.rows for e in self.elements]
         J = np.zeros((X.k, sum(rows), self.n))
         o = 0
         for e, r in zip(self.elements, rows):
-            if r:
+            if r and (block is None or id(e) not in block.members):
                 e.jac_many(X, J[:, o:o + r])
-                o += r
+            o += r
+        if block is not None:
+            block.jac(X.Q, J)
         return J
 
     def gamma_many(self, X, V, td) -> np.ndarray:

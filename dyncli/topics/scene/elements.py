@@ -166,6 +166,90 @@ class Pin(Element):
         return {"R": [float(lam[0]), float(lam[1]), 0.0]}
 
 
+class PinBlock:
+    """The rows of every pin of a scene at many states at once, in a few array operations for
+    all of them (the pins are most of a linkage's rows): the constant entries (±1) placed
+    together, the arms Q(θ) p of all the turning points from one cos and one sin, each entry by
+    the same operations as Pin.jac_many / phi_many (equal to them bit for bit).  ``ok`` is
+    False when two entries of the block share a place (then each pin fills its own rows)."""
+
+    def __init__(self, pins, offsets):
+        self.members = {id(p) for p in pins}
+        self.rows0 = np.array(offsets, dtype=int)
+        cr, cc, cv = [], [], []                   # constant entries: row, column, value
+        cols, p1, p2 = [], [], []                 # turning points: angle column, p
+        ar, ac, at, asg = [], [], [], []          # arm entries of row o (−sign a2); row o + 1 (+sign a1) alike
+        # positions: per pin and side, the column of x1 (or a constant) and the turning point (or −1)
+        side = {"x": ([], []), "y": ([], []), "const": ([], []), "turn": ([], [])}
+        for pin, o in zip(pins, offsets):
+            for k, (pt, sign) in enumerate(((pin.P, 1.0), (pin.Q, -1.0))):
+                b = pt.body
+                if b is None:
+                    side["x"][k].append(-1)
+                    side["y"][k].append(-1)
+                    side["const"][k].append((float(pt.p[0]), float(pt.p[1])))
+                    side["turn"][k].append(-1)
+                    continue
+                i = b.index
+                cr += [o, o + 1]
+                cc += [i[0], i[1]]
+                cv += [sign, sign]
+                side["x"][k].append(i[0])
+                side["y"][k].append(i[1])
+                side["const"][k].append((0.0, 0.0))
+                if b.inertia is not None and (pt.p[0] or pt.p[1]):
+                    side["turn"][k].append(len(cols))
+                    ar.append(o)
+                    ac.append(i[2])
+                    at.append(len(cols))
+                    asg.append(sign)
+                    cols.append(i[2])
+                    p1.append(float(pt.p[0]))
+                    p2.append(float(pt.p[1]))
+                else:
+                    side["turn"][k].append(-1)
+        places = list(zip(cr, cc)) + [(r, c) for r, c in zip(ar, ac)] + [(r + 1, c) for r, c in zip(ar, ac)]
+        self.ok = len(set(places)) == len(places)
+        self.cr, self.cc, self.cv = np.array(cr, dtype=int), np.array(cc, dtype=int), np.array(cv)
+        self.cols, self.p1, self.p2 = np.array(cols, dtype=int), np.array(p1), np.array(p2)
+        self.ar, self.ac, self.at, self.asg = (np.array(ar, dtype=int), np.array(ac, dtype=int),
+                                               np.array(at, dtype=int), np.array(asg))
+        self.sides = []
+        for k in (0, 1):
+            x = np.array(side["x"][k], dtype=int)
+            y = np.array(side["y"][k], dtype=int)
+            turn = np.array(side["turn"][k], dtype=int)
+            self.sides.append(((np.maximum(x, 0), np.maximum(y, 0)), x < 0, np.array(side["const"][k]).reshape(-1, 2),
+                               np.maximum(turn, 0), turn >= 0))
+
+    def _arms(self, Q):
+        th = Q[:, self.cols]
+        c, s = np.cos(th), np.sin(th)
+        return c * self.p1 - s * self.p2, s * self.p1 + c * self.p2
+
+    def jac(self, Q, J) -> None:
+        """The pins' entries of J (k, m, n), zero there on entry."""
+        J[:, self.cr, self.cc] = self.cv
+        if self.cols.size:
+            a1, a2 = self._arms(Q)
+            J[:, self.ar, self.ac] = np.subtract(0.0, self.asg * a2[:, self.at])
+            J[:, self.ar + 1, self.ac] = np.add(0.0, self.asg * a1[:, self.at])
+
+    def phi(self, Q) -> tuple[np.ndarray, np.ndarray]:
+        """The pins' two rows at every state: (k, pins) each, rows o and o + 1."""
+        arms = self._arms(Q) if self.cols.size else None
+        out = []
+        for c in (0, 1):
+            xs = []
+            for cols, ground, const, ti, turning in self.sides:
+                base = np.where(ground, const[:, c], Q[:, cols[c]])
+                if arms is not None:
+                    base = np.where(turning, base + arms[c][:, ti], base)
+                xs.append(base)
+            out.append(xs[0] - xs[1])
+        return out[0], out[1]
+
+
 @dataclass(kw_only=True)
 class Slider(Element):
     """The body's centre stays on the line through its position at t = 0 parallel to the
