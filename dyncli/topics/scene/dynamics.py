@@ -234,9 +234,16 @@ class SceneSystem:
         return J
 
     def gamma_many(self, X, V, td) -> np.ndarray:
-        if not self.elements:
-            return np.zeros((X.k, 0))
-        return np.concatenate([e.gamma_many(X, V, d) for e, d in zip(self.elements, td)], axis=1)
+        block = self._pins()
+        out = np.empty((X.k, sum(e.rows for e in self.elements)))
+        o = 0
+        for e, d in zip(self.elements, td):
+            if e.rows and (block is None or id(e) not in block.members):
+                out[:, o:o + e.rows] = e.gamma_many(X, V, d)
+            o += e.rows
+        if block is not None:
+            out[:, block.rows0], out[:, block.rows0 + 1] = block.gamma(X.Q, V)
+        return out
 
     def phi_t_many(self, td) -> np.ndarray:
         return np.concatenate([e.phi_t_many(d) for e, d in zip(self.elements, td)], axis=1)

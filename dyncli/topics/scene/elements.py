@@ -170,7 +170,7 @@ class PinBlock:
     """The rows of every pin of a scene at many states at once, in a few array operations for
     all of them (the pins are most of a linkage's rows): the constant entries (±1) placed
     together, the arms Q(θ) p of all the turning points from one cos and one sin, each entry by
-    the same operations as Pin.jac_many / phi_many (equal to them bit for bit).  ``ok`` is
+    the same operations as Pin.jac_many, phi_many, gamma_many (equal to them bit for bit); ``ok`` is
     False when two entries of the block share a place (then each pin fills its own rows)."""
 
     def __init__(self, pins, offsets):
@@ -214,13 +214,17 @@ class PinBlock:
         self.cols, self.p1, self.p2 = np.array(cols, dtype=int), np.array(p1), np.array(p2)
         self.ar, self.ac, self.at, self.asg = (np.array(ar, dtype=int), np.array(ac, dtype=int),
                                                np.array(at, dtype=int), np.array(asg))
-        self.sides = []
-        for k in (0, 1):
-            x = np.array(side["x"][k], dtype=int)
-            y = np.array(side["y"][k], dtype=int)
-            turn = np.array(side["turn"][k], dtype=int)
-            self.sides.append(((np.maximum(x, 0), np.maximum(y, 0)), x < 0, np.array(side["const"][k]).reshape(-1, 2),
-                               np.maximum(turn, 0), turn >= 0))
+        # the four coordinates (side P, Q × x1, x2) of every pin, in one row of columns
+        npt = len(cols)
+        xs = [side["x" if c == 0 else "y"][k] for k in (0, 1) for c in (0, 1)]
+        self.all_cols = np.maximum(np.array(sum(xs, []), dtype=int), 0)
+        self.ground = np.array(sum(xs, []), dtype=int) < 0
+        self.const = np.array([cst[c] for k in (0, 1) for c in (0, 1) for cst in side["const"][k]])
+        turn = np.array([t for k in (0, 1) for _c in (0, 1) for t in side["turn"][k]], dtype=int)
+        coord = np.array([c for k in (0, 1) for c in (0, 1) for _ in side["turn"][k]], dtype=int)
+        self.turning = turn >= 0
+        self.turn_idx = np.maximum(turn, 0) + coord * npt      # into the arms' two blocks side by side
+        self.npins = len(pins)
 
     def _arms(self, Q):
         th = Q[:, self.cols]
@@ -235,19 +239,28 @@ class PinBlock:
             J[:, self.ar, self.ac] = np.subtract(0.0, self.asg * a2[:, self.at])
             J[:, self.ar + 1, self.ac] = np.add(0.0, self.asg * a1[:, self.at])
 
+    def _four(self, x, arms):
+        """(k, 2 sides, 2 coordinates, pins) from the columns ``x`` and the arms' two blocks."""
+        if arms is not None:
+            x = np.where(self.turning, x + np.concatenate(arms, axis=1)[:, self.turn_idx], x)
+        return x.reshape(len(x), 2, 2, self.npins)
+
     def phi(self, Q) -> tuple[np.ndarray, np.ndarray]:
         """The pins' two rows at every state: (k, pins) each, rows o and o + 1."""
-        arms = self._arms(Q) if self.cols.size else None
-        out = []
-        for c in (0, 1):
-            xs = []
-            for cols, ground, const, ti, turning in self.sides:
-                base = np.where(ground, const[:, c], Q[:, cols[c]])
-                if arms is not None:
-                    base = np.where(turning, base + arms[c][:, ti], base)
-                xs.append(base)
-            out.append(xs[0] - xs[1])
-        return out[0], out[1]
+        r = self._four(np.where(self.ground, self.const, Q[:, self.all_cols]),
+                       self._arms(Q) if self.cols.size else None)
+        return r[:, 0, 0] - r[:, 1, 0], r[:, 0, 1] - r[:, 1, 1]
+
+    def gamma(self, Q, V) -> tuple[np.ndarray, np.ndarray]:
+        """The pins' γ at every state: (k, pins) each, rows o and o + 1 (J̇ v of Q's side minus P's)."""
+        b = np.zeros((len(Q), 4 * self.npins))
+        if self.cols.size:
+            a1, a2 = self._arms(Q)
+            w = V[:, self.cols]
+            ww = -w * w
+            b = np.where(self.turning, np.concatenate((ww * a1, ww * a2), axis=1)[:, self.turn_idx], b)
+        r = b.reshape(len(Q), 2, 2, self.npins)
+        return r[:, 1, 0] - r[:, 0, 0], r[:, 1, 1] - r[:, 0, 1]
 
 
 @dataclass(kw_only=True)
