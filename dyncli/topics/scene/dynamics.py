@@ -21,7 +21,7 @@ from dyncli.errors import NumericalError
 
 from .contacts import Contact, Rolls
 from .elements import Element, Pin, PinBlock
-from .system import BodyData, Point
+from .system import BodyData, Point, Stack
 
 EPS = float(np.finfo(float).eps)
 
@@ -190,6 +190,10 @@ class SceneSystem:
 
     # the rows at many states at once (X: a system.Stack of k states, V: (k, n), ``td``: from
     # :meth:`at_times`): the same numbers as the one-state forms above, row by row
+    def stack(self, Q) -> Stack:
+        """The states Q (k, n) for the forms below (their trigonometry computed once)."""
+        return Stack(Q)
+
     def at_times(self, T) -> list:
         """Each element's data at the times T (a drive's f(t)): ``td`` of the forms below."""
         return [e.at_times(T) for e in self.elements]

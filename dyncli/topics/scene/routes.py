@@ -26,7 +26,6 @@ from . import assembly, motion, phases
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
-from .system import Stack
 
 
 # ----------------------------------------------------------------------------- routes
@@ -288,7 +287,7 @@ def _kin_positions(pieces, ts):
         if not act.size:
             break
         Qs = Q[act]
-        X = Stack(Qs)
+        X = s.stack(Qs)
         try:
             dQ = np.linalg.solve(s.jac_many(X), s.phi_many(X, [d[act] for d in td])[:, :, None])[:, :, 0]
         except np.linalg.LinAlgError:
@@ -313,7 +312,7 @@ def _kin_rates(pieces, ts):
     condition numbers and the velocities in one stacked call each (the numbers of _kin_state)."""
     s = pieces[0].s
     Q, td = _kin_positions(pieces, ts)
-    X = Stack(Q)
+    X = s.stack(Q)
     Js = s.jac_many(X)
     conds = np.linalg.cond(Js)
     for p, t, cond in zip(pieces, ts, conds):
