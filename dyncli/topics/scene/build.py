@@ -211,7 +211,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
                                  f"{did_you_mean(coord, choices)}", path)
             if coord == "angle":
                 _rigid(b, "an angle drive", path)
-            out.append(el.Drive(name, kind, n, path, index=b.index[choices[coord]], f=j["value"]))
+            out.append(el.Drive(name, kind, n, path, index=b.index[choices[coord]], f=j["value"],
+                               f_many=j.get("values")))
         elif kind == "cord":
             cords.append((name, j))
     return out, cords

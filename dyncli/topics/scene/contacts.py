@@ -74,7 +74,9 @@ class Contact(Element):
         self.stick_at = float(np.array(self.surface.d) @ self.P.pos(q))
 
     def gap(self, q) -> float:
-        return float(np.array(self.surface.n) @ (self.P.pos(q) - np.array(self.surface.origin)))
+        (n1, n2), (o1, o2) = self.surface.n, self.surface.origin
+        x1, x2 = self.P.xy(q)
+        return n1 * (x1 - o1) + n2 * (x2 - o2)
 
     def normal(self, q) -> np.ndarray:
         """The surface's unit normal at the contact (a plane's own; a curve's at the foot of P)."""
@@ -83,24 +85,51 @@ class Contact(Element):
     def normal_speed(self, q, v) -> float:
         return float(self.normal(q) @ self.P.vel(q, v))
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
+        if self.mode == "off":
+            return []
         out = [self.gap(q)]
         if self.mode == "stick":
-            out.append(float(np.array(self.surface.d) @ self.P.pos(q)) - self.stick_at)
-        return np.array(out[:self.rows])
+            d1, d2 = self.surface.d
+            x1, x2 = self.P.xy(q)
+            out.append(d1 * x1 + d2 * x2 - self.stick_at)
+        return out
+
+    def jac_list(self, q):
+        rows = []
+        for k, (w1, w2) in enumerate((self.surface.n, self.surface.d)[:self.rows]):
+            row = [0.0] * self.n
+            self.P.add_jac(row, q, w1, w2)
+            rows.append(row)
+        return rows
+
+    def gamma_list(self, q, v, t):
+        b1, b2 = self.P.bias_xy(q, v)
+        return [-(w1 * b1 + w2 * b2) for w1, w2 in (self.surface.n, self.surface.d)[:self.rows]]
+
+    def kkt_lists(self, q, v, t):
+        *_, b1, b2, arm = self.P.kin(q, v)
+        rows, gam = [], []
+        for w1, w2 in (self.surface.n, self.surface.d)[:self.rows]:
+            row = [0.0] * self.n
+            self.P.add_jac_arm(row, arm, w1, w2)
+            rows.append(row)
+            gam.append(-(w1 * b1 + w2 * b2))
+        return rows, gam
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        JP = self.P.jac(q, self.n)
-        rows = [np.array(self.surface.n) @ JP, np.array(self.surface.d) @ JP]
-        return np.array(rows[:self.rows]).reshape(self.rows, self.n)
+        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
-        b = self.P.bias(q, v)
-        out = [-float(np.array(self.surface.n) @ b), -float(np.array(self.surface.d) @ b)]
-        return np.array(out[:self.rows])
+        return np.array(self.gamma_list(q, v, t))
 
     def tangent_jac(self, q) -> np.ndarray:
-        return np.array(self.surface.d) @ self.P.jac(q, self.n)
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, *self.surface.d)
+        return np.array(row)
 
     def friction_column(self, q):
         """Generalized force per unit N of the kinetic friction −μ_k N sign d̂ at P."""
@@ -114,7 +143,9 @@ class Contact(Element):
         return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
 
     def slip_speed(self, q, v) -> float:
-        return float(np.array(self.surface.d) @ self.P.vel(q, v))
+        d1, d2 = self.surface.d
+        v1, v2 = self.P.vel_xy(q, v)
+        return d1 * v1 + d2 * v2
 
     def friction(self, lam) -> float:
         if self.mode == "stick":
@@ -193,37 +224,55 @@ class Rolls(Element):
         return np.array([q[i[0]], q[i[1]]], dtype=float)
 
     def gap(self, q) -> float:
-        return float(np.array(self.surface.n) @ (self._x(q) - np.array(self.surface.origin))) - self.R
+        i = self.body_point.body.index
+        (n1, n2), (o1, o2) = self.surface.n, self.surface.origin
+        return n1 * (float(q[i[0]]) - o1) + n2 * (float(q[i[1]]) - o2) - self.R
 
     def normal_speed(self, q, v) -> float:
         i = self.body_point.body.index
-        return float(np.array(self.surface.n) @ np.array([v[i[0]], v[i[1]]]))
+        n1, n2 = self.surface.n
+        return n1 * float(v[i[0]]) + n2 * float(v[i[1]])
 
     def slip_speed(self, q, v) -> float:
         """d̂ · (velocity of the contact point) = d̂·ẋ + R ω."""
         i = self.body_point.body.index
-        return float(np.array(self.surface.d) @ np.array([v[i[0]], v[i[1]]])) + self.R * float(v[i[2]])
+        d1, d2 = self.surface.d
+        return d1 * float(v[i[0]]) + d2 * float(v[i[1]]) + self.R * float(v[i[2]])
 
     def roll_const(self, q) -> float:
         i = self.body_point.body.index
-        return float(np.array(self.surface.d) @ self._x(q)) + self.R * float(q[i[2]])
+        d1, d2 = self.surface.d
+        return d1 * float(q[i[0]]) + d2 * float(q[i[1]]) + self.R * float(q[i[2]])
+
+    def phi_list(self, q, t):
+        if not self.rows:
+            return []
+        return [self.gap(q), self.roll_const(q) - self.c0][:self.rows]
+
+    def _tangent_row(self) -> list:
+        i = self.body_point.body.index
+        row = [0.0] * self.n
+        row[i[0]], row[i[1]] = self.surface.d
+        row[i[2]] = self.R
+        return row
+
+    def jac_list(self, q):
+        i = self.body_point.body.index
+        row = [0.0] * self.n
+        row[i[0]], row[i[1]] = self.surface.n
+        return [row, self._tangent_row()][:self.rows]
+
+    def gamma_list(self, q, v, t):
+        return [0.0] * self.rows
 
     def phi(self, q, t):
-        return np.array([self.gap(q), self.roll_const(q) - self.c0][:self.rows])
+        return np.array(self.phi_list(q, t))
 
     def tangent_jac(self, q) -> np.ndarray:
-        i = self.body_point.body.index
-        J = np.zeros(self.n)
-        J[i[0]], J[i[1]] = self.surface.d
-        J[i[2]] = self.R
-        return J
+        return np.array(self._tangent_row())
 
     def jac(self, q):
-        i = self.body_point.body.index
-        J = np.zeros((2, self.n))
-        J[0, i[0]], J[0, i[1]] = self.surface.n
-        J[1] = self.tangent_jac(q)
-        return J[:self.rows]
+        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
         return np.zeros(self.rows)

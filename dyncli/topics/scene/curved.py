@@ -34,6 +34,7 @@ from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
 
 from .contacts import Contact, Rolls
+from .elements import Element
 
 EPS = float(np.finfo(float).eps)
 SEARCH = 4001                      # samples of q for a first foot without `at`
@@ -169,6 +170,12 @@ class CurveContact(Contact):
     foot: _Foot
     stick_t: tuple = (1.0, 0.0)
 
+    # the curve's own rows (not the line's list forms of Contact): through the arrays
+    phi_list = Element.phi_list
+    jac_list = Element.jac_list
+    gamma_list = Element.gamma_list
+    kkt_lists = Element.kkt_lists
+
     def phase(self):
         return (self.mode, self.sign, self.stick_at, self.stick_t)
 
@@ -246,6 +253,11 @@ class CurveRolls(Rolls):
     foot: _Foot
     q_ref: float = 0.0
     linear = False
+    # the curve's own rows (not the line's list forms of Rolls): through the arrays
+    phi_list = Element.phi_list
+    jac_list = Element.jac_list
+    gamma_list = Element.gamma_list
+    kkt_lists = Element.kkt_lists
 
     def _centre(self, q):
         i = self.body_point.body.index

@@ -20,8 +20,8 @@ import numpy as np
 from dyncli.errors import NumericalError
 
 from .contacts import Contact, Rolls
-from .elements import Element
-from .system import BodyData, Point
+from .elements import Element, Pin, PinBlock
+from .system import BodyData, Point, Stack
 
 EPS = float(np.finfo(float).eps)
 
@@ -114,6 +114,8 @@ class SceneSystem:
             if b.rigid:
                 m[b.index[2]] = b.inertia
         self.mass = m
+        self._weights = None
+        self._pin_block = None          # (the elements' rows, their PinBlock) for the stacked forms
         self.linsolve = np.linalg.solve
         self.grav = np.zeros(self.n)
         for b in self.bodies:
@@ -152,19 +154,103 @@ class SceneSystem:
         self._offsets()
 
     # ------------------------------------------------------------------ rows
+    # φ, J and γ are built in plain floats element by element (Element.*_list: numpy's cost per
+    # small array would be most of the work) and made arrays once
     def phi(self, q, t) -> np.ndarray:
-        return np.concatenate([e.phi(q, t) for e in self.elements]) if self.elements else np.zeros(0)
+        ql, out = q.tolist(), []
+        for e in self.elements:
+            out += e.phi_list(ql, t)
+        return np.array(out, dtype=float)
 
     def jac(self, q) -> np.ndarray:
-        if not self.elements:
-            return np.zeros((0, self.n))
-        return np.concatenate([e.jac(q) for e in self.elements], axis=0)
+        return self._jac(q.tolist())
+
+    def _jac(self, ql) -> np.ndarray:
+        rows = []
+        for e in self.elements:
+            if e.rows:
+                rows += e.jac_list(ql)
+        return np.array(rows, dtype=float).reshape(len(rows), self.n)
 
     def gamma(self, q, v, t) -> np.ndarray:
-        return np.concatenate([e.gamma(q, v, t) for e in self.elements]) if self.elements else np.zeros(0)
+        return np.array(self._gamma(q.tolist(), v.tolist(), t), dtype=float)
+
+    def _gamma(self, ql, vl, t) -> list:
+        out = []
+        for e in self.elements:
+            if e.rows:
+                out += e.gamma_list(ql, vl, t)
+        return out
 
     def phi_t(self, t) -> np.ndarray:
-        return np.concatenate([e.phi_t(t) for e in self.elements]) if self.elements else np.zeros(0)
+        out = []
+        for e in self.elements:
+            out += e.phi_t_list(t)
+        return np.array(out, dtype=float)
+
+    # the rows at many states at once (X: a system.Stack of k states, V: (k, n), ``td``: from
+    # :meth:`at_times`): the same numbers as the one-state forms above, row by row
+    def stack(self, Q) -> Stack:
+        """The states Q (k, n) for the forms below (their trigonometry computed once)."""
+        return Stack(Q)
+
+    def at_times(self, T) -> list:
+        """Each element's data at the times T (a drive's f(t)): ``td`` of the forms below."""
+        return [e.at_times(T) for e in self.elements]
+
+    def _pins(self):
+        """The PinBlock of the current rows (None without pins or where it cannot be one block)."""
+        rows = tuple(e.rows for e in self.elements)
+        if self._pin_block is None or self._pin_block[0] != rows:
+            pins, offsets, o = [], [], 0
+            for e, r in zip(self.elements, rows):
+                if isinstance(e, Pin):
+                    pins.append(e)
+                    offsets.append(o)
+                o += r
+            block = PinBlock(pins, offsets) if pins else None
+            self._pin_block = (rows, block if block is not None and block.ok else None)
+        return self._pin_block[1]
+
+    def phi_many(self, X, td) -> np.ndarray:
+        block = self._pins()
+        out = np.empty((X.k, sum(e.rows for e in self.elements)))
+        o = 0
+        for e, d in zip(self.elements, td):
+            if e.rows and (block is None or id(e) not in block.members):
+                out[:, o:o + e.rows] = e.phi_many(X, d)
+            o += e.rows
+        if block is not None:
+            out[:, block.rows0], out[:, block.rows0 + 1] = block.phi(X.Q)
+        return out
+
+    def jac_many(self, X) -> np.ndarray:
+        block = self._pins()
+        rows = [e.rows for e in self.elements]
+        J = np.zeros((X.k, sum(rows), self.n))
+        o = 0
+        for e, r in zip(self.elements, rows):
+            if r and (block is None or id(e) not in block.members):
+                e.jac_many(X, J[:, o:o + r])
+            o += r
+        if block is not None:
+            block.jac(X.Q, J)
+        return J
+
+    def gamma_many(self, X, V, td) -> np.ndarray:
+        block = self._pins()
+        out = np.empty((X.k, sum(e.rows for e in self.elements)))
+        o = 0
+        for e, d in zip(self.elements, td):
+            if e.rows and (block is None or id(e) not in block.members):
+                out[:, o:o + e.rows] = e.gamma_many(X, V, d)
+            o += e.rows
+        if block is not None:
+            out[:, block.rows0], out[:, block.rows0 + 1] = block.gamma(X.Q, V)
+        return out
+
+    def phi_t_many(self, td) -> np.ndarray:
+        return np.concatenate([e.phi_t_many(d) for e, d in zip(self.elements, td)], axis=1)
 
     def lam_of(self, lam, i: int) -> np.ndarray:
         o = self.offsets[i]
@@ -203,8 +289,15 @@ class SceneSystem:
         """(q̈, λ, power of the non-conservative loads incl. friction)."""
         n = self.n
         f, power = self.applied(q, v, t)
-        A = self.kkt_matrix(q, self.jac(q))
-        rhs = np.concatenate([f, self.gamma(q, v, t)])
+        ql, vl = q.tolist(), v.tolist()
+        rows, gam = [], []
+        for e in self.elements:
+            if e.rows:
+                r, g = e.kkt_lists(ql, vl, t)
+                rows += r
+                gam += g
+        A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
+        rhs = np.concatenate([f, gam])
         try:
             x = self.linsolve(A, rhs)
         except np.linalg.LinAlgError:
@@ -268,31 +361,38 @@ class SceneSystem:
 
     # ------------------------------------------------------------------ projection
     def weights(self) -> np.ndarray:
-        w = self.mass.copy()
-        floor = max(float(np.max(w)), 1e-300) * 1e-12
-        return np.maximum(w, floor)
+        """The masses, each at least 1e-12 of the largest (the projections' metric; fixed per scene)."""
+        if self._weights is None:
+            w = self.mass.copy()
+            floor = max(float(np.max(w)), 1e-300) * 1e-12
+            self._weights = np.maximum(w, floor)
+        return self._weights
 
     def project_position(self, q, t, iters: int = 4) -> np.ndarray:
         if self.m == 0:
             return q
         Winv = 1.0 / self.weights()
-        tol = 8 * EPS * max(1.0, float(np.max(np.abs(q))))
+        ql = q.tolist()
+        tol = 8 * EPS * max(1.0, *map(abs, ql))
         for _ in range(iters):
-            ph = self.phi(q, t)
-            if float(np.max(np.abs(ph))) <= tol:      # on the joints to rounding: Newton has converged
+            ph = []
+            for e in self.elements:
+                ph += e.phi_list(ql, t)
+            if all(abs(x) <= tol for x in ph):      # on the joints to rounding: Newton has converged
                 break
-            J = self.jac(q)
+            J = self._jac(ql)
             S = (J * Winv) @ J.T
-            q = q - Winv * (J.T @ np.linalg.solve(S, ph))
+            q = q - Winv * (J.T @ self.linsolve(S, np.array(ph)))
+            ql = q.tolist()
         return q
 
     def project_velocity(self, q, v, t) -> np.ndarray:
         if self.m == 0:
             return v
         Winv = 1.0 / self.weights()
-        J = self.jac(q)
+        J = self._jac(q.tolist())
         r = J @ v + self.phi_t(t)
         if not np.any(r):
             return v
         S = (J * Winv) @ J.T
-        return v - Winv * (J.T @ np.linalg.solve(S, r))
+        return v - Winv * (J.T @ self.linsolve(S, r))

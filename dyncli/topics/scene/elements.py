@@ -43,6 +43,49 @@ class Element:
     def phi_t(self, t) -> np.ndarray:
         return np.zeros(self.rows)
 
+    # --- the same rows in plain floats (q, v: lists; the right-hand side of the ODE route and the
+    # projections, where numpy's cost per small array is most of the work).  The common joints
+    # compute their arrays from these (the same numbers); these defaults go through the arrays.
+    def phi_list(self, q, t) -> list:
+        return self.phi(np.asarray(q, dtype=float), t).tolist()
+
+    def jac_list(self, q) -> list:
+        """The rows' Jacobian: a list of ``rows`` lists of n floats."""
+        return self.jac(np.asarray(q, dtype=float)).tolist()
+
+    def gamma_list(self, q, v, t) -> list:
+        return self.gamma(np.asarray(q, dtype=float), np.asarray(v, dtype=float), t).tolist()
+
+    def kkt_lists(self, q, v, t) -> tuple[list, list]:
+        """(jac_list, gamma_list) together (an element may share their geometry)."""
+        return self.jac_list(q), self.gamma_list(q, v, t)
+
+    def phi_t_list(self, t) -> list:
+        if type(self).phi_t is Element.phi_t:       # rows that do not move in time
+            return [0.0] * self.rows
+        return self.phi_t(t).tolist()
+
+    # --- many states at once (X: a system.Stack of k states, V: (k, n); ``td``: the element's data at the
+    # states' times, from :meth:`at_times`).  These defaults call the one-state forms state by
+    # state; the common joints override them with column arithmetic (the same numbers).
+    def at_times(self, T) -> np.ndarray:
+        """What the rows need of the times T (k,): the times themselves (a drive: its f(t))."""
+        return T
+
+    def phi_many(self, X, td) -> np.ndarray:
+        return np.array([self.phi(q, float(t)) for q, t in zip(X.Q, td)]).reshape(X.k, self.rows)
+
+    def jac_many(self, X, J) -> None:
+        """J (k, rows, n), zero on entry: filled with the rows' Jacobian at every state."""
+        for k, q in enumerate(X.Q):
+            J[k] = self.jac(q)
+
+    def gamma_many(self, X, V, td) -> np.ndarray:
+        return np.array([self.gamma(q, v, float(t)) for q, v, t in zip(X.Q, V, td)]).reshape(X.k, self.rows)
+
+    def phi_t_many(self, td) -> np.ndarray:
+        return np.array([self.phi_t(float(t)) for t in td]).reshape(len(td), self.rows)
+
     def report(self, lam, q, v, t) -> dict:
         return {}
 
@@ -73,22 +116,151 @@ class Pin(Element):
     def linear(self):
         return not (self.P.turns_with_body or self.Q.turns_with_body)
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         (p1, p2), (q1, q2) = self.P.xy(q), self.Q.xy(q)
-        return np.array((p1 - q1, p2 - q2))
+        return [p1 - q1, p2 - q2]
+
+    def jac_list(self, q):
+        r1, r2 = [0.0] * self.n, [0.0] * self.n
+        self.P.add_jac2(r1, r2, q, 1.0)
+        self.Q.add_jac2(r1, r2, q, -1.0)
+        return [r1, r2]
+
+    def gamma_list(self, q, v, t):
+        (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
+        return [q1 - p1, q2 - p2]
+
+    def kkt_lists(self, q, v, t):
+        *_, pb1, pb2, pa = self.P.kin(q, v)
+        *_, qb1, qb2, qa = self.Q.kin(q, v)
+        r1, r2 = [0.0] * self.n, [0.0] * self.n
+        self.P.add_jac2_arm(r1, r2, pa, 1.0)
+        self.Q.add_jac2_arm(r1, r2, qa, -1.0)
+        return [r1, r2], [qb1 - pb1, qb2 - pb2]
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((2, self.n))
-        self.P.add_jac2(J, q, 1.0)
-        self.Q.add_jac2(J, q, -1.0)
-        return J
+        return np.array(self.jac_list(q))
 
     def gamma(self, q, v, t):
-        (p1, p2), (q1, q2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
-        return np.array((q1 - p1, q2 - p2))
+        return np.array(self.gamma_list(q, v, t))
+
+    def phi_many(self, X, td):
+        (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
+        return np.stack((p1 - q1, p2 - q2), axis=1)
+
+    def jac_many(self, X, J):
+        self.P.add_jac2_many(J, X, 1.0)
+        self.Q.add_jac2_many(J, X, -1.0)
+
+    def gamma_many(self, X, V, td):
+        (p1, p2), (q1, q2) = self.P.bias_many(X, V), self.Q.bias_many(X, V)
+        return np.stack((q1 - p1, q2 - p2), axis=1)
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), 2))
 
     def report(self, lam, q, v, t):
         return {"R": [float(lam[0]), float(lam[1]), 0.0]}
+
+
+class PinBlock:
+    """The rows of every pin of a scene at many states at once, in a few array operations for
+    all of them (the pins are most of a linkage's rows): the constant entries (±1) placed
+    together, the arms Q(θ) p of all the turning points from one cos and one sin, each entry by
+    the same operations as Pin.jac_many, phi_many, gamma_many (equal to them bit for bit); ``ok`` is
+    False when two entries of the block share a place (then each pin fills its own rows)."""
+
+    def __init__(self, pins, offsets):
+        self.members = {id(p) for p in pins}
+        self.rows0 = np.array(offsets, dtype=int)
+        cr, cc, cv = [], [], []                   # constant entries: row, column, value
+        cols, p1, p2 = [], [], []                 # turning points: angle column, p
+        ar, ac, at, asg = [], [], [], []          # arm entries of row o (−sign a2); row o + 1 (+sign a1) alike
+        # positions: per pin and side, the column of x1 (or a constant) and the turning point (or −1)
+        side = {"x": ([], []), "y": ([], []), "const": ([], []), "turn": ([], [])}
+        for pin, o in zip(pins, offsets):
+            for k, (pt, sign) in enumerate(((pin.P, 1.0), (pin.Q, -1.0))):
+                b = pt.body
+                if b is None:
+                    side["x"][k].append(-1)
+                    side["y"][k].append(-1)
+                    side["const"][k].append((float(pt.p[0]), float(pt.p[1])))
+                    side["turn"][k].append(-1)
+                    continue
+                i = b.index
+                cr += [o, o + 1]
+                cc += [i[0], i[1]]
+                cv += [sign, sign]
+                side["x"][k].append(i[0])
+                side["y"][k].append(i[1])
+                side["const"][k].append((0.0, 0.0))
+                if b.inertia is not None and (pt.p[0] or pt.p[1]):
+                    side["turn"][k].append(len(cols))
+                    ar.append(o)
+                    ac.append(i[2])
+                    at.append(len(cols))
+                    asg.append(sign)
+                    cols.append(i[2])
+                    p1.append(float(pt.p[0]))
+                    p2.append(float(pt.p[1]))
+                else:
+                    side["turn"][k].append(-1)
+        places = list(zip(cr, cc)) + [(r, c) for r, c in zip(ar, ac)] + [(r + 1, c) for r, c in zip(ar, ac)]
+        self.ok = len(set(places)) == len(places)
+        self.cr, self.cc, self.cv = np.array(cr, dtype=int), np.array(cc, dtype=int), np.array(cv)
+        self.cols, self.p1, self.p2 = np.array(cols, dtype=int), np.array(p1), np.array(p2)
+        self.ar, self.ac, self.at, self.asg = (np.array(ar, dtype=int), np.array(ac, dtype=int),
+                                               np.array(at, dtype=int), np.array(asg))
+        # the four coordinates (side P, Q × x1, x2) of every pin, in one row of columns
+        npt = len(cols)
+        xs = [side["x" if c == 0 else "y"][k] for k in (0, 1) for c in (0, 1)]
+        self.all_cols = np.maximum(np.array(sum(xs, []), dtype=int), 0)
+        self.ground = np.array(sum(xs, []), dtype=int) < 0
+        self.const = np.array([cst[c] for k in (0, 1) for c in (0, 1) for cst in side["const"][k]])
+        turn = np.array([t for k in (0, 1) for _c in (0, 1) for t in side["turn"][k]], dtype=int)
+        coord = np.array([c for k in (0, 1) for c in (0, 1) for _ in side["turn"][k]], dtype=int)
+        self.turning = turn >= 0
+        self.turn_idx = np.maximum(turn, 0) + coord * npt      # into the arms' two blocks side by side
+        self.npins = len(pins)
+
+    def _arms(self, Q):
+        th = Q[:, self.cols]
+        c, s = np.cos(th), np.sin(th)
+        return c * self.p1 - s * self.p2, s * self.p1 + c * self.p2
+
+    def jac(self, Q, J) -> None:
+        """The pins' entries of J (k, m, n), zero there on entry."""
+        J[:, self.cr, self.cc] = self.cv
+        if self.cols.size:
+            a1, a2 = self._arms(Q)
+            J[:, self.ar, self.ac] = np.subtract(0.0, self.asg * a2[:, self.at])
+            J[:, self.ar + 1, self.ac] = np.add(0.0, self.asg * a1[:, self.at])
+
+    def _four(self, x, arms):
+        """(k, 2 sides, 2 coordinates, pins) from the columns ``x`` and the arms' two blocks."""
+        if arms is not None:
+            x = np.where(self.turning, x + np.concatenate(arms, axis=1)[:, self.turn_idx], x)
+        return x.reshape(len(x), 2, 2, self.npins)
+
+    def phi(self, Q) -> tuple[np.ndarray, np.ndarray]:
+        """The pins' two rows at every state: (k, pins) each, rows o and o + 1."""
+        r = self._four(np.where(self.ground, self.const, Q[:, self.all_cols]),
+                       self._arms(Q) if self.cols.size else None)
+        return r[:, 0, 0] - r[:, 1, 0], r[:, 0, 1] - r[:, 1, 1]
+
+    def gamma(self, Q, V) -> tuple[np.ndarray, np.ndarray]:
+        """The pins' γ at every state: (k, pins) each, rows o and o + 1 (J̇ v of Q's side minus P's)."""
+        b = np.zeros((len(Q), 4 * self.npins))
+        if self.cols.size:
+            a1, a2 = self._arms(Q)
+            w = V[:, self.cols]
+            ww = -w * w
+            b = np.where(self.turning, np.concatenate((ww * a1, ww * a2), axis=1)[:, self.turn_idx], b)
+        r = b.reshape(len(Q), 2, 2, self.npins)
+        return r[:, 1, 0] - r[:, 0, 0], r[:, 1, 1] - r[:, 0, 1]
 
 
 @dataclass(kw_only=True)
@@ -105,19 +277,49 @@ class Slider(Element):
     def rows(self):
         return 1 if self.theta0 is None else 2
 
-    def phi(self, q, t):
-        nn = np.array(self.surface.n)
-        out = [float(nn @ self.body_point.pos(q)) - self.c0]
+    def phi_list(self, q, t):
+        n1, n2 = self.surface.n
+        x1, x2 = self.body_point.xy(q)
+        out = [n1 * x1 + n2 * x2 - self.c0]
         if self.theta0 is not None:
             out.append(float(q[self.body_point.body.index[2]]) - self.theta0)
-        return np.array(out)
+        return out
+
+    def jac_list(self, q):
+        rows = [[0.0] * self.n for _ in range(self.rows)]
+        self.body_point.add_jac(rows[0], q, *self.surface.n)
+        if self.theta0 is not None:
+            rows[1][self.body_point.body.index[2]] = 1.0
+        return rows
+
+    def gamma_list(self, q, v, t):
+        return [0.0] * self.rows
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((self.rows, self.n))
-        J[0] = np.array(self.surface.n) @ self.body_point.jac(q, self.n)
+        return np.array(self.jac_list(q))
+
+    def phi_many(self, X, td):
+        n1, n2 = self.surface.n
+        x1, x2 = self.body_point.xy_many(X)
+        cols = [n1 * x1 + n2 * x2 - self.c0]
         if self.theta0 is not None:
-            J[1, self.body_point.body.index[2]] = 1.0
-        return J
+            cols.append(X.Q[:, self.body_point.body.index[2]] - self.theta0)
+        return np.stack(cols, axis=1)
+
+    def jac_many(self, X, J):
+        n1, n2 = self.surface.n
+        self.body_point.add_jac_many(J[:, 0], X, n1, n2)
+        if self.theta0 is not None:
+            J[:, 1, self.body_point.body.index[2]] = 1.0
+
+    def gamma_many(self, X, V, td):
+        return np.zeros((X.k, self.rows))
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), self.rows))
 
     def report(self, lam, q, v, t):
         out = {"N": float(lam[0])}
@@ -141,26 +343,75 @@ class Link(Element):
         d1, d2 = p1 - q1, p2 - q2
         return (d1, d2), math.hypot(d1, d2)
 
-    def phi(self, q, t):
+    def phi_list(self, q, t):
         _, ln = self._d(q)
-        return np.array([ln - self.L])
+        return [ln - self.L]
 
-    def jac(self, q):
+    def jac_list(self, q):
         (d1, d2), ln = self._d(q)
         e1, e2 = d1 / ln, d2 / ln
-        J = np.zeros((1, self.n))
-        self.P.add_jac(J[0], q, e1, e2)
-        self.Q.add_jac(J[0], q, -e1, -e2)
-        return J
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, e1, e2)
+        self.Q.add_jac(row, q, -e1, -e2)
+        return [row]
 
-    def gamma(self, q, v, t):
+    def gamma_list(self, q, v, t):
         (d1, d2), ln = self._d(q)
         e1, e2 = d1 / ln, d2 / ln
         (pv1, pv2), (qv1, qv2) = self.P.vel_xy(q, v), self.Q.vel_xy(q, v)
         (pb1, pb2), (qb1, qb2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
         dv1, dv2 = pv1 - qv1, pv2 - qv2
         ev = e1 * dv1 + e2 * dv2
-        return np.array([-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)])
+        return [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
+
+    def kkt_lists(self, q, v, t):
+        p1, p2, pv1, pv2, pb1, pb2, pa = self.P.kin(q, v)
+        q1, q2, qv1, qv2, qb1, qb2, qa = self.Q.kin(q, v)
+        d1, d2 = p1 - q1, p2 - q2
+        ln = math.hypot(d1, d2)
+        e1, e2 = d1 / ln, d2 / ln
+        row = [0.0] * self.n
+        self.P.add_jac_arm(row, pa, e1, e2)
+        self.Q.add_jac_arm(row, qa, -e1, -e2)
+        dv1, dv2 = pv1 - qv1, pv2 - qv2
+        ev = e1 * dv1 + e2 * dv2
+        return [row], [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
+
+    def jac(self, q):
+        return np.array(self.jac_list(q))
+
+    def gamma(self, q, v, t):
+        return np.array(self.gamma_list(q, v, t))
+
+    def _d_many(self, X):
+        (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
+        d1, d2 = p1 - q1, p2 - q2
+        ln = np.fromiter(map(math.hypot, d1.tolist(), d2.tolist()), float, len(d1))
+        return d1, d2, ln
+
+    def phi_many(self, X, td):
+        return (self._d_many(X)[2] - self.L)[:, None]
+
+    def jac_many(self, X, J):
+        d1, d2, ln = self._d_many(X)
+        e1, e2 = d1 / ln, d2 / ln
+        self.P.add_jac_many(J[:, 0], X, e1, e2)
+        self.Q.add_jac_many(J[:, 0], X, -e1, -e2)
+
+    def gamma_many(self, X, V, td):
+        d1, d2, ln = self._d_many(X)
+        e1, e2 = d1 / ln, d2 / ln
+        (pv1, pv2), (qv1, qv2) = self.P.vel_many(X, V), self.Q.vel_many(X, V)
+        (pb1, pb2), (qb1, qb2) = self.P.bias_many(X, V), self.Q.bias_many(X, V)
+        dv1, dv2 = pv1 - qv1, pv2 - qv2
+        ev = e1 * dv1 + e2 * dv2
+        return (-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln))[:, None]
+
+    def phi_t_many(self, td):
+        return np.zeros((len(td), 1))
 
     def report(self, lam, q, v, t):
         return {"T": -float(lam[0])}
@@ -172,6 +423,7 @@ class Drive(Element):
 
     index: int = 0
     f: Callable[[float], tuple[float, float, float]]     # f(t) -> (value, rate, second rate)
+    f_many: Callable | None = None                       # f at an array of times -> 3 arrays (the same numbers)
     rows = 1
     _last: tuple = field(default=(None, None), repr=False, compare=False)   # (t, f(t)): φ, φ_t, γ asked at one t
 
@@ -180,19 +432,46 @@ class Drive(Element):
             self._last = (t, self.f(t))
         return self._last[1]
 
+    def phi_list(self, q, t):
+        return [float(q[self.index]) - self._at(t)[0]]
+
+    def jac_list(self, q):
+        row = [0.0] * self.n
+        row[self.index] = 1.0
+        return [row]
+
+    def gamma_list(self, q, v, t):
+        return [self._at(t)[2]]
+
     def phi(self, q, t):
-        return np.array([float(q[self.index]) - self._at(t)[0]])
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        J = np.zeros((1, self.n))
-        J[0, self.index] = 1.0
-        return J
+        return np.array(self.jac_list(q))
 
     def phi_t(self, t):
         return np.array([-self._at(t)[1]])
 
     def gamma(self, q, v, t):
-        return np.array([self._at(t)[2]])
+        return np.array(self.gamma_list(q, v, t))
+
+    def at_times(self, T):
+        """f(t) at each time: (k, 3) rows (value, rate, second rate)."""
+        if self.f_many is not None:
+            return np.stack(self.f_many(T), axis=1)
+        return np.array([self.f(float(t)) for t in T], dtype=float).reshape(len(T), 3)
+
+    def phi_many(self, X, td):
+        return (X.Q[:, self.index] - td[:, 0])[:, None]
+
+    def jac_many(self, X, J):
+        J[:, 0, self.index] = 1.0
+
+    def gamma_many(self, X, V, td):
+        return td[:, 2:3].copy()
+
+    def phi_t_many(self, td):
+        return -td[:, 1:2]
 
     def report(self, lam, q, v, t):
         return {"drive": float(lam[0])}
@@ -286,16 +565,24 @@ class Cord(Element):
     def phi(self, q, t):
         return (self.lengths(q) - np.array(self.consts))[self.taut]
 
-    def jac(self, q):
-        J = np.zeros((self.rows, self.n))
-        for k, r in enumerate(self.taut):
+    def jac_list(self, q):
+        rows = []
+        for r in self.taut:
+            row = [0.0] * self.n
             for s in self.runs[r]:
-                s.b.add_jac(J[k], s.u, q, 1.0)
-                s.a.add_jac(J[k], s.u, q, -1.0)
-        return J
+                s.b.add_jac(row, s.u, q, 1.0)
+                s.a.add_jac(row, s.u, q, -1.0)
+            rows.append(row)
+        return rows
+
+    def gamma_list(self, q, v, t):
+        return [-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut]
+
+    def jac(self, q):
+        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
-        return np.array([-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut])
+        return np.array(self.gamma_list(q, v, t))
 
     def run_rate(self, q, v, r: int) -> float:
         """d/dt of run r's length (its row's rate): negative while a slack run takes up slack."""
@@ -330,11 +617,30 @@ class Guide(Element):
     c0: float = 0.0
     rows = 1
 
+    def phi_list(self, q, t):
+        x1, x2 = self.P.xy(q)
+        return [float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0]
+
+    def jac_list(self, q):
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, float(self.w[0]), float(self.w[1]))
+        return [row]
+
+    def gamma_list(self, q, v, t):
+        return [0.0]
+
     def phi(self, q, t):
-        return np.array([float(self.w @ self.P.pos(q)) - self.c0])
+        return np.array(self.phi_list(q, t))
 
     def jac(self, q):
-        return (self.w @ self.P.jac(q, self.n))[None, :]
+        return np.array(self.jac_list(q))
+
+    def phi_many(self, X, td):
+        x1, x2 = self.P.xy_many(X)
+        return (float(self.w[0]) * x1 + float(self.w[1]) * x2 - self.c0)[:, None]
+
+    def jac_many(self, X, J):
+        self.P.add_jac_many(J[:, 0], X, float(self.w[0]), float(self.w[1]))
 
 
 def segment_tangents(Ca, ra, Cb, rb):

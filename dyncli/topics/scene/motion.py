@@ -44,6 +44,9 @@ class Piece:
     fixed: tuple | None = None     # statics: the one solve (q̈ = 0, λ, power)
     batch: Callable | None = None  # ode: the step's interpolant, unprojected, on an array of times -> (dim, k)
     many: Callable | None = None   # an exact piece's q̇ at an array of times -> (k, n), as fn's one by one
+    powers: Callable | None = None  # kinematics: the power of the drives and loads at an array of times -> (k,)
+    stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
+    states: Callable | None = None  # pieces evaluated together: states([fn per time], times) -> [fn(t)]
 
 
 @dataclass
@@ -67,6 +70,8 @@ class Trajectory:
     phases: list = field(default_factory=list)    # phases.Phase, in order
     impacts: list = field(default_factory=list)   # phases.Impact, in order
     _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
+    _stacked: object = field(default=None, repr=False)      # _Stacked: the pieces as velocities() reads them
+    _ends: tuple = field(default=(None, []), repr=False)     # (key, each piece's t_b) for piece()
 
     def add(self, piece: Piece):
         if piece.t_b > piece.t_a or not self.pieces:
@@ -79,8 +84,11 @@ class Trajectory:
 
     def piece(self, t: float) -> Piece:
         """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
-        ends = [p.t_b for p in self.pieces]
-        return self.pieces[min(bisect.bisect_left(ends, t), len(self.pieces) - 1)]
+        ps = self.pieces
+        key = (id(ps), len(ps), ps[-1].t_b if ps else None)
+        if self._ends[0] != key:        # the pieces' ends, kept while the pieces stay as they are
+            self._ends = (key, [p.t_b for p in ps])
+        return ps[min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)]
 
     def velocities(self, ts) -> np.ndarray:
         """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
@@ -94,12 +102,22 @@ class Trajectory:
                 return np.asarray(p.batch(min(max(float(ts[0]), p.t_a), p.t_b)), dtype=float)[n:2 * n].reshape(1, n)
             return np.asarray(self.state(float(ts[0]))[1], dtype=float).reshape(1, n)
         out = np.empty((ts.size, n))
-        ends = np.array([p.t_b for p in self.pieces])
-        which = np.minimum(np.searchsorted(ends, ts, side="left"), len(self.pieces) - 1)
-        for k in sorted(set(which.tolist())):     # (np.unique would import numpy.ma: 13 ms cold)
+        dense = self._dense()
+        which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
+        if dense.stack is not None:         # the DOP853 steps: every time in one stacked evaluation
+            on = dense.row[which] >= 0
+            if np.any(on):
+                k = which[on]
+                y = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
+                out[on] = y[:, n:2 * n]
+                which = np.where(on, -1, which)
+        stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
+        for k in sorted(set(which.tolist()) - {-1}):    # (np.unique would import numpy.ma: 13 ms cold)
             sel = np.nonzero(which == k)[0]
             p = self.pieces[k]
-            if p.batch is not None:
+            if p.stack is not None:
+                stacked.setdefault((p.stack, p.modes), []).append((sel, p))
+            elif p.batch is not None:
                 y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
                 out[sel] = y[n:2 * n].T
             elif p.many is not None:
@@ -109,7 +127,50 @@ class Trajectory:
                 set_modes(self.system, p.modes)
                 for i in sel:
                     out[i] = p.fn(min(max(float(ts[i]), p.t_a), p.t_b))[1]
+        for (stack, modes), parts in stacked.items():
+            set_modes(self.system, modes)
+            sel = np.concatenate([sel for sel, _ in parts])
+            fns = [p.fn for part, p in parts for _ in part]
+            out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
+
+    def _dense(self):
+        """The pieces' ends, and the DOP853 steps among them stacked for :meth:`velocities` (made
+        once the pieces are all there: remade when they changed)."""
+        key = (id(self.pieces), len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
+        got = self._stacked
+        if got is None or got.key != key:
+            from dyncli.dop853 import DenseOutput, DenseStack
+
+            ps = self.pieces
+            row = np.full(len(ps), -1)
+            outs = []
+            for k, p in enumerate(ps):
+                if isinstance(p.batch, DenseOutput):
+                    row[k] = len(outs)
+                    outs.append(p.batch)
+            got = self._stacked = _Stacked(key, np.array([p.t_b for p in ps]), np.array([p.t_a for p in ps]), row,
+                                           DenseStack(outs) if outs else None)
+        return got
+
+    def prefetch(self, ts) -> None:
+        """The states at the times ``ts`` that a search is about to read one by one, made together
+        where the pieces can (Piece.states: the kinematics route) and kept for :meth:`state`."""
+        groups: dict = {}
+        for t in ts:
+            t = float(t)
+            if t in self._memo:
+                continue
+            p = self.piece(t)
+            if p.states is not None:
+                groups.setdefault((p.states, p.modes), []).append((t, p))
+        for (states, modes), items in groups.items():
+            set_modes(self.system, modes)
+            got = states([p.fn for _, p in items], [min(max(t, p.t_a), p.t_b) for t, p in items])
+            if len(self._memo) + len(items) > 50_000:
+                self._memo.clear()
+            for (t, _), st in zip(items, got):
+                self._memo[t] = st
 
     def state(self, t: float):
         p = self.piece(t)
@@ -122,6 +183,19 @@ class Trajectory:
                 memo.clear()
             memo[t] = got
         return got
+
+
+@dataclass
+class _Stacked:
+    key: tuple                  # (the list, its length, the last piece's end) when made
+    ends: np.ndarray            # each piece's t_b
+    t_a: np.ndarray             # each piece's t_a
+    row: np.ndarray             # each piece's row in ``stack`` (-1: not a DOP853 step)
+    stack: object               # dop853.DenseStack of the DOP853 steps, or None
+
+    @property
+    def t_b(self) -> np.ndarray:
+        return self.ends
 
 
 def modes_of(system) -> tuple:

@@ -180,6 +180,8 @@ def _work(scene, traj, route):
     def powers(p, ts) -> np.ndarray:
         """power(p, t) at the nodes ``ts``: one stacked solve when the piece's matrix is constant."""
         motion.set_modes(s, p.modes)
+        if p.powers is not None:
+            return p.powers(ts)
         if p.route == "kinematics" or not s.constant_matrix():
             return np.array([power(p, t) for t in ts])
         states = [p.fn(float(t))[:2] + (float(t),) for t in ts]

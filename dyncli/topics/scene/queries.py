@@ -23,6 +23,7 @@ class SceneMotion:
             self.breaks.append(self.t_end)
         self._cache: dict[float, dict] = {}
         self._paths = None
+        self._ahead = False             # the sample grid's states made together (once)
 
     def _flat(self, t: float) -> dict:
         got = self._cache.get(t)
@@ -40,6 +41,9 @@ class SceneMotion:
     def value(self, path: str, t: float) -> float:
         fast = self._coords.get(path)
         if fast is not None:            # a body's coordinate or rate: the state alone, no solve
+            if not self._ahead:         # the searches' sample grid, made together where the route can
+                self._ahead = True
+                self.traj.prefetch(_q.sample_grid(self.breaks, self.t0, self.t_end, _q.subdivisions(self)))
             q, v, _ = self.traj.state(float(t))
             which, k = fast
             return float((q if which == "q" else v)[k]) + 0.0

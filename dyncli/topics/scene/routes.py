@@ -145,7 +145,8 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
-        traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities))
+        traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
+                              powers=fn.powers, stack=_kin_velocities, states=_kin_states))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
@@ -195,7 +196,7 @@ class _KinPiece:
         self.s, self.q_a, self.t_a = s, q_a, float(t_a)
         self.start = None               # (v_a, a_a, the length scale), made when first asked
 
-    def position(self, t):
+    def _start(self):
         s = self.s
         if self.start is None:
             J = s.jac(self.q_a)
@@ -204,7 +205,11 @@ class _KinPiece:
                 v = np.linalg.solve(J, -s.phi_t(self.t_a))
                 a = np.linalg.solve(J, s.gamma(self.q_a, v, self.t_a))
             self.start = (v, a, assembly.length_scale(self.q_a, s))
-        v, a, scale = self.start
+        return self.start
+
+    def position(self, t):
+        s = self.s
+        v, a, scale = self._start()
         tau = t - self.t_a
         q = self.q_a + v * tau + 0.5 * a * (tau * tau) if v is not None else self.q_a
         if np.all(np.isfinite(q)):
@@ -225,21 +230,129 @@ class _KinPiece:
                 last = size
         return _position(s, self.q_a, t)
 
+    def positions(self, ts):
+        """:meth:`position` at many times of the piece: :func:`_kin_positions`."""
+        return _kin_positions([self] * len(ts), ts)
+
     def __call__(self, t):
         return _kin_state(self.s, self.position(t), t)
 
     def velocities(self, ts) -> np.ndarray:
-        """q̇ at many times of the piece, (len(ts), n): the positions one by one, the condition
-        numbers and the velocities in one stacked call each (the same numbers as _kin_state)."""
-        s = self.s
-        qs = [self.position(float(t)) for t in ts]
-        Js = np.array([s.jac(q) for q in qs])
-        conds = np.linalg.cond(Js)
-        for t, cond in zip(ts, conds):
-            if cond > 1e12:
-                _kin_state(s, self.position(float(t)), float(t))      # raises its message
-        rhs = np.array([-s.phi_t(float(t)) for t in ts])
-        return np.linalg.solve(Js, rhs[:, :, None])[:, :, 0]
+        """q̇ at many times of the piece, (len(ts), n)."""
+        return _kin_velocities([self] * len(ts), ts)
+
+    def powers(self, ts) -> np.ndarray:
+        """The power of the drives and the loads at many times of the piece (:func:`_kin_powers`)."""
+        return _kin_powers([self] * len(ts), ts)
+
+
+def _kin_positions(pieces, ts):
+    """_KinPiece.position of ``pieces[i]`` at ``ts[i]`` for every i at once, (len(ts), n), with
+    the times' data ``td`` (SceneSystem.at_times): each Newton step of all the states still
+    moving in one stacked evaluation of the rows and one stacked solve (the same LU per state),
+    each state started from its own piece's Taylor polynomial and stopped by the same test as
+    :meth:`_KinPiece.position` (the same numbers); a state that does not converge, or a
+    singular step, as :meth:`_KinPiece.position` alone."""
+    s = pieces[0].s
+    T = np.asarray(ts, dtype=float)
+    k = len(T)
+    td = s.at_times(T)
+    starts = {}
+    for p in pieces:
+        if id(p) not in starts:
+            starts[id(p)] = (p, p._start())
+    # per state: its piece's start (q_a, v_a, a_a, t_a, length scale)
+    Qa = np.empty((k, s.n))
+    Va = np.zeros((k, s.n))
+    Aa = np.zeros((k, s.n))
+    Ta = np.empty(k)
+    scale = np.empty(k)
+    taylor = np.zeros(k, dtype=bool)
+    rows: dict[int, list[int]] = {}
+    for i, p in enumerate(pieces):
+        rows.setdefault(id(p), []).append(i)
+    for key, idx in rows.items():
+        p, (v, a, sc) = starts[key]
+        Qa[idx], Ta[idx], scale[idx] = p.q_a, p.t_a, sc
+        if v is not None:
+            Va[idx], Aa[idx], taylor[idx] = v, a, True
+    tau = T - Ta
+    Q = Qa.copy()
+    Q[taylor] = (Qa + Va * tau[:, None] + (0.5 * Aa) * (tau * tau)[:, None])[taylor]
+    out = Q.copy()
+    act = np.nonzero(np.all(np.isfinite(Q), axis=1))[0]
+    alone = set(range(k)) - set(act.tolist())
+    last = np.full(k, np.nan)
+    for _ in range(6):
+        if not act.size:
+            break
+        Qs = Q[act]
+        X = s.stack(Qs)
+        try:
+            dQ = np.linalg.solve(s.jac_many(X), s.phi_many(X, [d[act] for d in td])[:, :, None])[:, :, 0]
+        except np.linalg.LinAlgError:
+            break
+        Qs = Qs - dQ
+        Q[act] = Qs
+        size = np.max(np.abs(dQ), axis=1)
+        prev, sc = last[act], scale[act]
+        with np.errstate(invalid="ignore"):
+            done = (size <= 4 * EPS * sc) | (~np.isnan(prev) & (size <= 1e-6 * sc) & (size ** 3 <= EPS * sc * prev * prev))
+        out[act[done]] = Qs[done]
+        last[act] = size
+        act = act[~done]
+    alone |= set(act.tolist())
+    for i in sorted(alone):
+        out[i] = pieces[i].position(float(T[i]))
+    return out, td
+
+
+def _kin_rates(pieces, ts):
+    """(the positions as a Stack, Jacobians, velocities, times' data) of ``pieces[i]`` at ``ts[i]``: the
+    condition numbers and the velocities in one stacked call each (the numbers of _kin_state)."""
+    s = pieces[0].s
+    Q, td = _kin_positions(pieces, ts)
+    X = s.stack(Q)
+    Js = s.jac_many(X)
+    conds = np.linalg.cond(Js)
+    for p, t, cond in zip(pieces, ts, conds):
+        if cond > 1e12:
+            _kin_state(s, p.position(float(t)), float(t))      # raises its message
+    V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
+    return X, Js, V, td
+
+
+def _kin_states(pieces, ts) -> list:
+    """(q, q̇, 0) of ``pieces[i]`` at ``ts[i]`` (Piece.states of the kinematics route: the
+    states a search will read, made together; the numbers of each piece's own call)."""
+    X, _Js, V, _td = _kin_rates(pieces, ts)
+    return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
+
+
+def _kin_velocities(pieces, ts) -> np.ndarray:
+    """q̇ of ``pieces[i]`` at ``ts[i]``, (len(ts), n) (Piece.stack of the kinematics route)."""
+    return _kin_rates(pieces, ts)[2]
+
+
+def _kin_powers(pieces, ts) -> np.ndarray:
+    """The power of the drives and the loads (outcome's W_nc) of ``pieces[i]`` at ``ts[i]``: q̈
+    from J q̈ = γ, the multipliers from Jᵀ λ = M q̈ − f, each stacked (the numbers of one
+    state at a time, outcome._kin_forces)."""
+    s = pieces[0].s
+    X, Js, V, td = _kin_rates(pieces, ts)
+    A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
+    if s.loads:
+        got = [s.applied(q, v, float(t)) for q, v, t in zip(X.Q, V, ts)]
+        F = np.array([f for f, _ in got])
+        P = np.array([p for _, p in got])
+    else:
+        F, P = s.grav[None, :], 0.0
+    lam = np.linalg.solve(np.swapaxes(Js, 1, 2), (s.mass[None, :] * A - F)[:, :, None])[:, :, 0]
+    drive = 0
+    for i, e in enumerate(s.elements):
+        if e.kind == "drive":
+            drive = drive + lam[:, s.offsets[i]] * V[:, e.index]
+    return drive + P
 
 
 def _kin_state(s, q, t):

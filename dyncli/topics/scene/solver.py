@@ -15,7 +15,7 @@ from dataclasses import replace
 from dyncli import ode
 from dyncli.errors import InputError
 from dyncli.expr import resolve_params
-from dyncli.expr.jet import jet_at
+from dyncli.expr.jet import jet, jet_at
 from dyncli.integrators import Accuracy
 from dyncli.result import Result, SolveOptions
 
@@ -41,6 +41,7 @@ def _plan(p) -> build.Plan:
         if j.kind == "drive":
             e = j.value
             d["value"] = lambda t, e=e: jet_at(e, t)
+            d["values"] = lambda T, e=e: jet(e, T)
         joints[name] = d
     loads = []
     for f in p.forces:

@@ -54,6 +54,31 @@ class Point:
     def pos(self, q) -> np.ndarray:
         return np.array(self.xy(q), dtype=float)
 
+    def kin(self, q, v) -> tuple:
+        """(r1, r2, v1, v2, b1, b2, arm) in plain floats, the arm Q(θ) p computed once (None for a
+        point that does not turn): what xy, vel_xy and bias_xy give, by the same operations."""
+        b = self.body
+        if b is None:
+            return float(self.p[0]), float(self.p[1]), 0.0, 0.0, 0.0, 0.0, None
+        i = b.index
+        x1, x2, v1, v2 = float(q[i[0]]), float(q[i[1]]), float(v[i[0]]), float(v[i[1]])
+        if b.inertia is not None and (self.p[0] or self.p[1]):
+            a1, a2 = self._arm(float(q[i[2]]))
+            w = float(v[i[2]])
+            return x1 + a1, x2 + a2, v1 - w * a2, v2 + w * a1, -w * w * a1, -w * w * a2, (a1, a2)
+        return x1, x2, v1, v2, 0.0, 0.0, None
+
+    def add_jac_arm(self, row, arm, w1: float, w2: float) -> None:
+        """:meth:`add_jac` with the arm of :meth:`kin` (not computed again)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        row[i[0]] += w1
+        row[i[1]] += w2
+        if arm is not None:
+            row[i[2]] += arm[0] * w2 - arm[1] * w1
+
     def _arm(self, th: float) -> tuple[float, float]:
         c, s = math.cos(th), math.sin(th)
         p1, p2 = self.p
@@ -86,18 +111,30 @@ class Point:
             a1, a2 = self._arm(float(q[i[2]]))
             row[i[2]] += a1 * w2 - a2 * w1          # w·(e3 × Q p)
 
-    def add_jac2(self, J, q, sign: float) -> None:
-        """J[:2] += sign · ∂r/∂q, in place (a pin's two rows)."""
+    def add_jac2_arm(self, r1, r2, arm, sign: float) -> None:
+        """:meth:`add_jac2` with the arm of :meth:`kin` (not computed again)."""
         b = self.body
         if b is None:
             return
         i = b.index
-        J[0, i[0]] += sign
-        J[1, i[1]] += sign
+        r1[i[0]] += sign
+        r2[i[1]] += sign
+        if arm is not None:
+            r1[i[2]] -= sign * arm[1]
+            r2[i[2]] += sign * arm[0]
+
+    def add_jac2(self, r1, r2, q, sign: float) -> None:
+        """(r1, r2) += sign · ∂r/∂q, in place (a pin's two rows: arrays or lists)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        r1[i[0]] += sign
+        r2[i[1]] += sign
         if b.inertia is not None and (self.p[0] or self.p[1]):
             a1, a2 = self._arm(float(q[i[2]]))
-            J[0, i[2]] -= sign * a2
-            J[1, i[2]] += sign * a1
+            r1[i[2]] -= sign * a2
+            r2[i[2]] += sign * a1
 
     def vel_xy(self, q, v) -> tuple[float, float]:
         b = self.body
@@ -126,6 +163,79 @@ class Point:
 
     def bias(self, q, v) -> np.ndarray:
         return np.array(self.bias_xy(q, v), dtype=float)
+
+    # --- many states at once (X: a Stack of k states): the same operations in the same order as
+    # the one-state forms above, on columns (equal to them bit for bit)
+    def arms_many(self, X) -> tuple[np.ndarray, np.ndarray] | None:
+        """Q(θ) p at every state, two columns (None for a point that does not turn with a body)."""
+        b = self.body
+        if b is None or b.inertia is None or not (self.p[0] or self.p[1]):
+            return None
+        got = X.arms.get(id(self))
+        if got is None:
+            c, s = X.trig(b.index[2])
+            p1, p2 = self.p
+            got = X.arms[id(self)] = (c * p1 - s * p2, s * p1 + c * p2)
+        return got
+
+    def xy_many(self, X) -> tuple[np.ndarray, np.ndarray]:
+        """r at every state: two columns (a ground point's broadcast to the states)."""
+        b = self.body
+        if b is None:
+            return np.full(X.k, float(self.p[0])), np.full(X.k, float(self.p[1]))
+        i = b.index
+        x1, x2 = X.Q[:, i[0]], X.Q[:, i[1]]
+        a = self.arms_many(X)
+        if a is not None:
+            return x1 + a[0], x2 + a[1]
+        return x1, x2
+
+    def add_jac_many(self, rows, X, w1, w2) -> None:
+        """rows (k, n) += w·∂r/∂q at every state (w1, w2: numbers or columns)."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        rows[:, i[0]] += w1
+        rows[:, i[1]] += w2
+        a = self.arms_many(X)
+        if a is not None:
+            rows[:, i[2]] += a[0] * w2 - a[1] * w1
+
+    def add_jac2_many(self, J, X, sign: float) -> None:
+        """J[:, :2] += sign · ∂r/∂q at every state (a pin's two rows; J is (k, 2, n))."""
+        b = self.body
+        if b is None:
+            return
+        i = b.index
+        J[:, 0, i[0]] += sign
+        J[:, 1, i[1]] += sign
+        a = self.arms_many(X)
+        if a is not None:
+            J[:, 0, i[2]] -= sign * a[1]
+            J[:, 1, i[2]] += sign * a[0]
+
+    def vel_many(self, X, V) -> tuple[np.ndarray, np.ndarray]:
+        b = self.body
+        if b is None:
+            z = np.zeros(X.k)
+            return z, z
+        i = b.index
+        v1, v2 = V[:, i[0]], V[:, i[1]]
+        a = self.arms_many(X)
+        if a is not None:
+            w = V[:, i[2]]
+            return v1 - w * a[1], v2 + w * a[0]
+        return v1, v2
+
+    def bias_many(self, X, V) -> tuple[np.ndarray, np.ndarray]:
+        """J̇ v at every state, two columns (zeros for a point not turning)."""
+        a = self.arms_many(X)
+        if a is None:
+            z = np.zeros(X.k)
+            return z, z
+        w = V[:, self.body.index[2]]
+        return -w * w * a[0], -w * w * a[1]
 
     @property
     def turns_with_body(self) -> bool:
@@ -160,6 +270,25 @@ class SurfaceData:
             return None
         s = (r[0] - self.origin[0]) * self.d[0] + (r[1] - self.origin[1]) * self.d[1]
         return float(min(s, self.length - s))
+
+
+class Stack:
+    """Many states of a scene at once: Q (k, n), one state a row, with the cos and sin of each
+    body's angle and each point's arm Q(θ) p computed once for all the rows that use them."""
+
+    def __init__(self, Q):
+        self.Q = Q
+        self.k = len(Q)
+        self._trig: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self.arms: dict[int, tuple[np.ndarray, np.ndarray]] = {}    # by id of the Point
+
+    def trig(self, i: int) -> tuple[np.ndarray, np.ndarray]:
+        """(cos, sin) of the coordinate i (a body's angle) at every state."""
+        got = self._trig.get(i)
+        if got is None:
+            th = self.Q[:, i]
+            got = self._trig[i] = (np.cos(th), np.sin(th))
+        return got
 
 
 def perp(a) -> np.ndarray:
