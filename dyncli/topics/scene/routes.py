@@ -346,7 +346,7 @@ def _kin_powers(pieces, ts) -> np.ndarray:
         F = np.array([f for f, _ in got])
         P = np.array([p for _, p in got])
     else:
-        F, P = s.grav[None, :], 0.0
+        F, P = s.grav[None, :], np.zeros(len(ts))
     lam = np.linalg.solve(np.swapaxes(Js, 1, 2), (s.mass[None, :] * A - F)[:, :, None])[:, :, 0]
     drive = 0
     for i, e in enumerate(s.elements):

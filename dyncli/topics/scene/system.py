@@ -231,7 +231,7 @@ class Point:
     def bias_many(self, X, V) -> tuple[np.ndarray, np.ndarray]:
         """J̇ v at every state, two columns (zeros for a point not turning)."""
         a = self.arms_many(X)
-        if a is None:
+        if a is None or self.body is None:
             z = np.zeros(X.k)
             return z, z
         w = V[:, self.body.index[2]]
