@@ -192,8 +192,8 @@ def searched_paths(find: Any) -> set[str] | None:
 
 
 def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str], Any], Any],
-                 known: Callable[[str], list[float] | None] | None = None
-                 ) -> Callable[[str], list[float]] | None:
+                 known: Callable[[str], list[float] | None] | None = None,
+                 warn: Callable[[str], None] | None = None) -> Callable[[str], list[float]] | None:
     """``breaks_for(path)`` for :class:`StateMotion` with ``monotone=True``: the ``breaks`` (between
     which the motion is smooth: an ODE's steps, its phase ends) with every extreme inside them of
     each result the queries of ``find`` search added — decided exactly, never by samples:
@@ -203,7 +203,7 @@ def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str]
     ``values(paths, ts)``: the results at the paths, an array (len(paths), len(ts)), at an array
     of times; None or KeyError for a path the motion does not report).  None when no query
     searches, a path is unknown, or a result is not resolved (not finite, not smooth to rounding
-    in a step): the search then samples as before."""
+    in a step): the search then reads the steps' ends and ``warn`` says so (never silently)."""
     from dyncli.rootfind import smooth_extremes
 
     asked = searched_paths(find)
@@ -222,11 +222,14 @@ def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str]
         try:
             probe = values(rest, [B[0]])
         except KeyError:
-            return None
-        if probe is None:
-            return None
-        cuts, ok = smooth_extremes(lambda ts: values(rest, ts), B)
+            probe = None
+        cuts, ok = smooth_extremes(lambda ts: values(rest, ts), B) if probe is not None else ([], False)
         if not ok:
+            if warn is not None:
+                warn(f"find: {', '.join(rest)} could not be followed as a smooth function of each step (a kink, a "
+                     "value that is not finite, or a result not reported along the motion): its crossings are "
+                     "searched between the steps' ends, where a level crossed and crossed back inside one step "
+                     "is not seen")
             return None
         own.update(zip(rest, cuts))
     t0, t_end = B[0], B[-1]
@@ -517,7 +520,7 @@ def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: 
                 for j in range(len(ts))]
 
     B = sorted({t0, t_end} | {float(b) for b in breaks if t0 < b < t_end})
-    own = exact_breaks(problem.find, B, series_values(states))
+    own = exact_breaks(problem.find, B, series_values(states), warn=result.warn)
     motion = StateMotion(lambda t: batch([t])[0], t0, t_end, B, rtol=rtol, rates=rates, batch=batch,
                          subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))

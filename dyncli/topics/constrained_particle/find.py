@@ -165,7 +165,8 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=N
         return dict(batch([t])[0], distance=distance(t))
 
     # distance is Σ|Δs| between the turning points of s: nondecreasing, no cut of its own
-    own = (mf.exact_breaks(p.find, B, mf.series_values(states), lambda path: [] if path == "distance" else None)
+    own = (mf.exact_breaks(p.find, B, mf.series_values(states), lambda path: [] if path == "distance" else None,
+                           warn=res.warn)
            if smooth and t_end > 0 else None)
     motion: mf.StateMotion
     motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,

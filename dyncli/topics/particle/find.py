@@ -62,7 +62,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         f = motion.flat(t)
         return float(p.m) * sum(f[f"v.{i}"] * f[f"a.{i}"] for i in range(3))
 
-    own = exact_breaks(p.find, traj_of() if pieces is None else None, B, at_times, odo)
+    own = exact_breaks(p.find, traj_of() if pieces is None else None, B, at_times, odo, res.warn)
     motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x": "v", "v": "a", "T": lambda t, _: power(t)},
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))],
@@ -74,7 +74,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
 _COMPONENT = {f"{q}.{i}": 3 * k + i for k, q in enumerate(("x", "v")) for i in range(3)}
 
 
-def exact_breaks(find, traj, B: list[float], at_times, odo):
+def exact_breaks(find, traj, B: list[float], at_times, odo, warn=None):
     """``breaks_for(path)`` cutting every piece at the exact extremes of each result searched (else
     None: see :func:`dyncli.motion_find.exact_breaks`).  On the ODE route (``traj``: the dense
     trajectory) a coordinate of x or v is a coordinate of the step's dense output, a polynomial,
@@ -91,6 +91,9 @@ def exact_breaks(find, traj, B: list[float], at_times, odo):
         sol = getattr(ph, "sol", None)
         if sol is None:
             if ph.t1 > ph.t0 and not hasattr(ph, "x"):      # an ODE phase without its steps' polynomials
+                if warn is not None:
+                    warn("find: an ODE phase's step polynomials are not kept: its crossings are searched between the "
+                         "steps' ends, where a level crossed and crossed back inside one step is not seen")
                 return None
             continue
         pieces += [(f, float(a), float(b)) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:]) if b > a]
@@ -124,4 +127,4 @@ def exact_breaks(find, traj, B: list[float], at_times, odo):
                 raise KeyError(path)
         return np.stack(rows)
 
-    return mf.exact_breaks(find, B, values, known)
+    return mf.exact_breaks(find, B, values, known, warn)

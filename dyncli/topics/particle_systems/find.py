@@ -88,7 +88,7 @@ def report(p, res, steps: Steps, quantities, n: int) -> None:
         return float(steps.y([t])[0, 3 * (n + int(i)) + int(c)])
 
     params = resolve_params(p.params)
-    own = mf.exact_breaks(p.find, B, _values(steps, quantities, odo, n))
+    own = mf.exact_breaks(p.find, B, _values(steps, quantities, odo, n), warn=res.warn)
     motion = mf.StateMotion(lambda t: batch([t])[0], 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x_motion": velocity}, batch=batch, breaks_for=own, monotone=own is not None)
     mf.attach(res, p.find, mf.answer_find(p.find, motion, lambda x: constant(x, params), res.warn))
