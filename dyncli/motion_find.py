@@ -448,7 +448,9 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     route's own accuracy; its check solve off).  The results over time are the type's series
     over ``t``; ``rates`` names which is the rate of which; the search grid has at least
     :data:`PER_TURN` pieces per turn of the fastest of the ``fast`` rates (rad/s) seen on a first
-    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`.  A
+    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`; on an
+    exact route (closed form, exact) each piece is cut at the exact extremes of every result
+    searched (:func:`exact_breaks`: monotone between cuts, never sampled).  A
     route that knows its motion as one run's dense output leaves ``(breaks, states)`` in
     ``result.extra["dense_motion"]`` (:func:`_dense_find`: no solve again, every step cut at the
     exact extremes of each result searched)."""
@@ -490,7 +492,16 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
             return
         n = int(max(64, _m.ceil(turns * PER_TURN)))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch)
+    own = None
+    if rtol == 0.0 and t_end > t0:      # an exact motion: each piece cut at its results' exact extremes
+        # (smooth_extremes halves a piece as it needs: two pieces per turn start it)
+        n = int(max(16, _m.ceil(2 * turns)))
+        breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
+        own = exact_breaks(problem.find, breaks, series_values(
+            lambda ts: solve(problem.model_copy(update=dict(base, at=[float(t) for t in ts]))).results),
+            warn=result.warn)
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch,
+                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
 
 
