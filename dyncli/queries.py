@@ -11,7 +11,9 @@ tolerance within which a value touches VALUE and two extremes are equal); option
 (True when every result asked about is monotone between two breaks — the breaks hold all its
 turning points, decided exactly by the type — so that its extremes are samples and no touch or
 pair of crossings hides between two: no search inside a span); optional ``breaks_for(path)``
-(the breaks of one result when they differ by result, such as its own turning points).  Each answer is
+(the breaks of one result when they differ by result, such as its own turning points); optional
+``cuts_approximate`` (True when those turning points are an interpolant's critical points, good
+to ~1e-13, not exact: an extreme's time is then the root of its rate where known).  Each answer is
 ``{"t", "reached", "at_end"}``; the caller adds the state at ``t``.
 
 Every break interval is cut into :data:`SUBDIVIDE` pieces and sampled at their ends.  ``when``:
@@ -390,7 +392,12 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
         j = next((j for j in peaks if H[j] >= best - tol), None)
         if j is not None:
             tm, hm = _peak(h, hr, T[j - 1], T[j + 1])
-            cands += [(tm, hm)] if hm >= H[j] else []
+            rooted = hr is not None and hr(T[j - 1]) > 0 >= hr(T[j + 1])     # (_peak took the rate's root)
+            if rooted and getattr(motion, "cuts_approximate", False) and hm >= H[j] - tol:
+                # cuts at an interpolant's critical points (~1e-13): the rate's root replaces them
+                cands = [c for c in cands if c[0] != T[j]] + [(tm, max(hm, H[j]))]
+            elif hm >= H[j]:
+                cands.append((tm, hm))
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)

@@ -83,6 +83,7 @@ def _coordinate_paths(system) -> dict:
 def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0) -> list[dict]:
     qs = _q.parse_queries(raw, lambda text: constant(text, params))
     motion = SceneMotion(traj, inst, rtol)
+    _cut_at_extremes(motion, raw, warn)
     out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)
@@ -133,3 +134,24 @@ def odometer(scene, traj):
         got = dict(zip(ok, vals))
         return {b.name: [got[t][j] if t in got else None for t in times] for j, b in enumerate(bodies)}
     return at
+
+
+def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
+    """Each piece of the motion (an ODE step, a closed-form phase, a kinematics piece) cut at the
+    exact extremes of every result the queries search (dyncli.motion_find.exact_breaks: the roots
+    of the derivative of its Chebyshev interpolant, resolved to rounding), so that the search
+    takes each as monotone between cuts: a level crossed and crossed back inside one piece is
+    found.  Where a result is not resolved the search reads the pieces as before, with a warning."""
+    from dyncli import motion_find as mf
+
+    def values(paths, ts):
+        ts = [float(t) for t in np.atleast_1d(np.asarray(ts, dtype=float))]
+        return np.array([[motion.value(path, t) for t in ts] for path in paths], dtype=float)
+
+    B = sorted(set(motion.breaks))
+    if len(B) < 2 or not B[-1] > B[0]:
+        return
+    own = mf.exact_breaks(raw, B, values, warn=warn)
+    if own is not None:
+        motion.breaks_for, motion.monotone, motion.subdivide = own, True, 1
+        motion.cuts_approximate = True      # an extreme's time then polished as a root of its rate
