@@ -145,3 +145,38 @@ accuracy: {rtol: 1.0e-6}
         assert abs(ev["t"] - float(t)) <= tol / float(mp.sqrt(v0sq - 2 * g * R * (1 - mp.cos(phi))))
         assert abs(ev["state"]["x"]["block"][0] - float(R * mp.sin(phi))) <= tol
         assert abs(ev["state"]["x"]["block"][1] - float(R - R * mp.cos(phi))) <= tol
+
+
+def test_find_on_a_closed_form_phase_of_many_periods():
+    """A scene's find reads its motion piece by piece; a closed-form phase is one piece however
+    many periods it spans, and the search read four points of it: the 7th crossing of a level
+    near the lowest point was "not reached" and the least v.ball.1 was t = 0.  Each piece is now
+    cut at the exact extremes of the result searched.  y = −d (1 − cos ω t), v = −d ω sin ω t
+    (the notes' free vibration): the crossings of y = Y are ±arccos(1 + Y/d)/ω + k 2π/ω, the least
+    v first at ω t = π/2 (an extreme's time: to the square root of the rounding at worst)."""
+    rec = solve_one_text("""
+type: scene
+params: {m: 1, k: 100}
+surfaces:
+  wall: {through: [0, 0], direction: [0, 1]}
+bodies:
+  ball: {shape: point, mass: m, x: [0, 0]}
+joints:
+  guide: {slider: [ball, wall]}
+forces:
+  - {spring: [[0, 1], ball], k: k, L: 1}
+at: [0, 20]
+find:
+  - {when: {x.ball.1: -0.196199}, occurrence: 7}
+  - {min: v.ball.1}
+""")
+    assert rec.get("error") is None, rec.get("error")
+    assert not rec["warnings"]
+    got = rec["results"]["find"]
+    with mp.workdps(30):
+        d, w = mp.mpf(G) / 100, mp.mpf(10)
+        a = mp.acos(1 + mp.mpf("-0.196199") / d) / w
+        P = 2 * mp.pi / w
+        crossings = sorted([a + k * P for k in range(10)] + [P - a + k * P for k in range(10)])
+        assert abs(got[0]["t"] - float(crossings[6])) <= 1e-12
+        assert abs(got[1]["t"] - float(mp.pi / 20)) <= 1e-8
