@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+from operator import itemgetter
 from typing import Any
 
 
@@ -298,10 +299,43 @@ def _records_text(x: list, indent: str, keys: list, text) -> str:
     inner, deeper = indent + "  ", indent + "    "
     heads = {k: f"{deeper}{next(text)}: " for k in keys}
     open_, close, rows = inner + "{\n", "\n" + inner + "}", []
+    columns = _column_texts(x, keys)
+    if columns is not None:         # every record the same keys, each a column of one kind: no call per value
+        texts, lists = columns
+        row = (open_ + ",\n".join(heads[k].replace("%", "%%") + ("[%s]" if listed else "%s")
+                                   for k, listed in zip(keys, lists)) + close).__mod__
+        return "[\n" + ",\n".join(map(row, zip(*texts))) + "\n" + indent + "]"
     for rec in x:
         rows.append(open_ + ",\n".join([heads[k] + (repr(v) if type(v) in _REPR else next(text))
                                         for k, v in rec.items()]) + close)
     return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
+
+
+def _column_texts(x: list, keys: list) -> tuple[list[list[str]], list[bool]] | None:
+    """The JSON of each record's value of each of ``keys`` (one list per key, in record order;
+    a list's without its brackets) and whether the key's values are lists, when every record of
+    ``x`` has exactly ``keys`` in that order and each key's values are all numbers or all lists
+    of numbers (every one finite: :func:`_records`), else None.  One
+    ``repr`` per column, cut at its separators (", " between numbers, "], [" between lists:
+    neither occurs inside a number's text), so each piece is the ``repr`` of its value."""
+    if len(x) < 64 or any(list(rec) != keys for rec in (x[0], x[-1])):
+        return None
+    if set(map(tuple, x)) != {tuple(keys)}:
+        return None
+    out, lists = [], []
+    for k in keys:
+        col = list(map(itemgetter(k), x))
+        kinds = set(map(type, col))
+        if kinds <= {float, int}:
+            out.append(repr(col)[1:-1].split(", "))
+        elif kinds == {list}:
+            out.append(repr(col)[2:-2].split("], ["))
+        else:
+            return None
+        lists.append(kinds == {list})
+        if len(out[-1]) != len(x):              # (a guard: a piece per record, or the slow way)
+            return None
+    return out, lists
 
 
 def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:

@@ -295,6 +295,22 @@ class _Motion:
         """The breaks searched for ``path``: its own turning points when known, else all."""
         return self.own.get(path, self.breaks)
 
+    def function(self, path: str):
+        """t -> the value of ``path`` (:meth:`value` without its dispatch): a free vibration's x, v
+        or w alone (:func:`closed_form.free_quantity_fn`, the same doubles), else from :meth:`at`."""
+        if path == "distance":
+            return self.odo
+        i = _STATE.get(path)
+        if i is None:
+            return None
+        r = self.resp
+        if r.fo is None and r.s0 == 0.0:
+            got = cf.free_quantity_fn(r.omega_n, r.zeta, r.L, r.x0, r.p.v0, i)
+            if got is not None:
+                return got
+        at = self.at
+        return lambda t: at(t)[i]
+
     def value(self, path: str, t: float) -> float:
         if path == "distance":
             return self.odo(t)
