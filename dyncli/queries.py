@@ -204,7 +204,7 @@ def _check_path(motion: Any, path: str, where: str) -> None:
 
 def sample_grid(breaks: Iterable[float], lo: float, hi: float, n: int = SUBDIVIDE) -> list[float]:
     """lo, the breaks inside (lo, hi) and hi, each interval cut into n (SUBDIVIDE) equal pieces."""
-    pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
+    pts = [lo, *sorted(map(float, [b for b in breaks if lo < b < hi])), hi]
     if n == 1:                                        # the breaks themselves, without repeats
         return [x for i, x in enumerate(pts) if i == 0 or x > pts[i - 1]]
     out = [lo]
@@ -409,19 +409,20 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     w1, w2 = max((q.within or (t0,))[0], t0), min((q.within or (0, t_end))[1], t_end)
     if w1 > w2:
         return None, None
-    sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
+    sense, path, monotone = (1.0 if q.kind == "max" else -1.0), q.path, _monotone(motion)
+    rate = None if monotone else _rate_fn(motion, q.path, w1)       # (a monotone search needs no rate)
     f = _value_fn(motion, path)
     h = lambda t: sense * f(t)     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
     T = sample_grid(_breaks(motion, path), w1, w2, subdivisions(motion))
-    H = [h(t) for t in T]
+    H = list(map(f, T)) if sense > 0 else [-y for y in map(f, T)]       # (h at each: ±1.0·y is ±y)
     cands = [(T[0], H[0]), (T[-1], H[-1])]
-    if _monotone(motion):                             # the turning points are samples: no search
+    if monotone:                                      # the turning points are samples: no search
         cands += [(T[j], H[j]) for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)
-    tol = _tol(motion, max(abs(x) for x in H + [best]))
+    tol = _tol(motion, max([*map(abs, H), abs(best)]))
     t = min(c[0] for c in cands if c[1] >= best - tol)
     return t, (t == w1 or t == w2)
 

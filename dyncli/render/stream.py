@@ -25,6 +25,9 @@ CHUNK = 1 << 20
 def _write_joined(parts: list[str]) -> None:
     """``parts`` to stdout in order, joined into writes of about :data:`CHUNK` characters."""
     write = sys.stdout.write
+    if sum(map(len, parts)) < CHUNK:                # (a sweep point's record: one write)
+        write("".join(parts))
+        return
     buf: list[str] = []
     size = 0
     for p in parts:
