@@ -104,9 +104,11 @@ def _array(x) -> Any:
     return jsonable(x.tolist())
 
 
-def jsonable(x: Any) -> Any:
+def jsonable(x: Any, seen: dict | None = None) -> Any:
     """numpy scalars/arrays, tuples, Expr... -> plain JSON values.
-    Non-finite floats become None."""
+    Non-finite floats become None.  ``seen``: the lists kept as they are after a check (numbers,
+    rows of numbers: "n"; flat records: "r") are noted there by id (with the list), so that
+    :func:`encode_parts` given the same ``seen`` does not check them again."""
     if x is None or isinstance(x, (bool, str)):
         return x
     if isinstance(x, int):
@@ -116,11 +118,15 @@ def jsonable(x: Any) -> Any:
     if isinstance(x, dict):
         if type(x) is dict and _flat_dict(x):
             return x
-        return {str(k): jsonable(v) for k, v in x.items()}
-    if isinstance(x, list) and (_floats(x) is not None or _number_rows(x) or _records(x)):
-        return x
+        return {str(k): jsonable(v, seen) for k, v in x.items()}
+    if isinstance(x, list):
+        kind = "n" if _floats(x) is not None or _number_rows(x) else ("r" if _records(x) else None)
+        if kind is not None:
+            if seen is not None and type(x) is list and x:
+                seen[id(x)] = (kind, x)
+            return x
     if isinstance(x, (list, tuple)):
-        return [jsonable(v) for v in x]
+        return [jsonable(v, seen) for v in x]
     mod = type(x).__module__
     if mod.startswith("numpy"):
         import numpy as np
@@ -147,8 +153,8 @@ def input_sha256(raw: Any) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
-    """One JSON object of the output array (docs/cli.md)."""
+def problem_record(lp, result=None, error=None, exit_code: int = 0, seen: dict | None = None) -> dict:
+    """One JSON object of the output array (docs/cli.md); ``seen``: see :func:`jsonable`."""
     from dyncli import __version__
 
     rec: dict[str, Any] = {
@@ -160,7 +166,7 @@ def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
     if getattr(lp, "swept", None):
         rec["swept"] = jsonable(lp.swept)
     if result is not None:
-        rec["results"] = jsonable(result.results)
+        rec["results"] = jsonable(result.results, seen)
         rec["method"] = result.method
         if result.error_estimate is not None or result.method not in ("closed-form",):
             rec["error_estimate"] = jsonable(result.error_estimate)
@@ -199,7 +205,7 @@ def _numeric(x: list) -> bool:
 _NUMBERS = 1        # the mark of a list written by repr (a series of flat records: its keys)
 
 
-def _leaves(x: Any, out: list, marks: dict) -> None:
+def _leaves(x: Any, out: list, marks: dict, seen: dict | None = None) -> None:
     """Every key and scalar of ``x`` in writing order, but those of the lists marked in
     ``marks`` (by id): numeric lists (written by ``repr``: the same text as ``json.dumps``) and
     series of flat records (:func:`_records_text`: their distinct keys once, then their values
@@ -209,13 +215,15 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
             out.append(str(k))
             t = type(v)
             if t is dict or t is list:
-                _leaves(v, out, marks)
+                _leaves(v, out, marks, seen)
             else:
                 out.append(v)
     elif type(x) is list and x:
-        if _numeric(x):
+        got = seen.get(id(x)) if seen else None
+        kind = got[0] if got is not None and got[1] is x else None     # checked by jsonable already
+        if kind == "n" or (kind is None and _numeric(x)):
             marks[id(x)] = _NUMBERS
-        elif _records(x):
+        elif kind == "r" or _records(x):
             from itertools import chain
 
             keys = list(dict.fromkeys(chain.from_iterable(x)))     # each key once, in order of first use
@@ -225,7 +233,7 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
                 out.extend(v for rec in x for v in rec.values() if type(v) not in _REPR)
         else:
             for v in x:
-                _leaves(v, out, marks)
+                _leaves(v, out, marks, seen)
     elif type(x) is not list:
         out.append(x)
 
@@ -346,12 +354,13 @@ def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
     return "".join(encode_parts(record, indent, ascii_only))
 
 
-def encode_parts(record: Any, indent: str = "", ascii_only: bool = False) -> list[str]:
+def encode_parts(record: Any, indent: str = "", ascii_only: bool = False, seen: dict | None = None) -> list[str]:
     """:func:`encode` as the list of its pieces, in order (a stream writes them one after the
-    other: a record of 1e5 times is ~70 MB, not joined and copied again)."""
+    other: a record of 1e5 times is ~70 MB, not joined and copied again); ``seen``: the lists
+    :func:`jsonable` checked in making ``record`` (their checks not repeated)."""
     leaves: list = []
     marks: dict = {}
-    _leaves(record, leaves, marks)
+    _leaves(record, leaves, marks, seen)
     text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
     parts: list[str] = []
     _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks)
