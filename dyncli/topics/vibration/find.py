@@ -65,6 +65,7 @@ class Response:
         self.x0 = p.x0
         self.s0, self.Om = p.s0, p.Om
         self.fo = p.fo                   # (F0, ω) of a force on the mass or a rotating unbalance, or None
+        self._fast = None
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -79,7 +80,9 @@ class Response:
         (:func:`closed_form.free_response_fn`: the same doubles), or None for any other motion."""
         if self.fo is not None or self.s0 != 0.0:
             return None
-        return cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
+        if self._fast is None:                  # (made once: the odometer and the search share it)
+            self._fast = cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
+        return self._fast
 
     def scalar(self):
         """(x, v)(t) in plain floats: the steady state plus the free vibration that makes up the
