@@ -239,7 +239,8 @@ def report(p: Setup, res, omega_n, zeta) -> None:
     if exact and t_end > 0:
         motion.own = {path: [0.0] + sorted(t for t in ts if 0.0 < t < t_end) + [motion.t_end]
                       for path, ts in own.items()}
-    mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
+    find = list(p.find)
+    mf.attach(res, find, mf.answer_find(find, motion, const, res.warn, full=state, memo=p.params))
 
 
 def _turning_points(resp: Response, grid, t_end: float, asked: set[str]):
