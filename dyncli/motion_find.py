@@ -16,6 +16,12 @@ reports its motion at the times of ``at`` (declared by ``TypeSpec.motion``).
 is the ``distance`` result: ∫|v| dt over the breaks (Gauss–Legendre on each smooth piece), or
 for one coordinate the sum of |Δs| between its turning points (:func:`turning_length`, exact to
 rounding).
+
+:func:`exact_breaks` cuts the pieces of a motion known as smooth functions of time between its
+breaks (an ODE's steps) at the exact extremes of every result a query searches
+(:func:`dyncli.rootfind.smooth_extremes`), so that the search takes each as monotone between
+two cuts (``StateMotion(breaks_for=..., monotone=True)``) and no crossing inside a step is
+stepped over.
 """
 
 from __future__ import annotations
@@ -26,7 +32,8 @@ from typing import Any, Callable, Iterable, Mapping, Sequence
 from dyncli import queries as _q
 from dyncli.errors import InputError
 
-__all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach"]
+__all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach",
+           "searched_paths", "exact_breaks", "series_values", "find_end"]
 
 
 def flatten(node: Any, prefix: str = "") -> dict[str, float]:
@@ -174,6 +181,96 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
         out.append(entry)
     return out
 
+
+
+def searched_paths(find: Any) -> set[str] | None:
+    """The result paths the searching queries (``when``, ``max``, ``min``) of ``find`` ask about;
+    None when an entry is malformed (left to the queries' own validation)."""
+    asked: set[str] = set()
+    for q in find if isinstance(find, (list, tuple)) else ():
+        if not isinstance(q, dict):
+            return None
+        if set(q) <= {"t"}:                             # a time query: no search
+            continue
+        when = q.get("when")
+        paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
+        if not paths or not all(isinstance(x, str) for x in paths):
+            return None
+        asked.update(x.strip() for x in paths)
+    return asked
+
+
+def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str], Any], Any],
+                 known: Callable[[str], list[float] | None] | None = None
+                 ) -> Callable[[str], list[float]] | None:
+    """``breaks_for(path)`` for :class:`StateMotion` with ``monotone=True``: the ``breaks`` (between
+    which the motion is smooth: an ODE's steps, its phase ends) with every extreme inside them of
+    each result the queries of ``find`` search added — decided exactly, never by samples:
+    ``known(path)``, the extremes the route decides itself (a coordinate of its steps'
+    polynomials, :func:`dyncli.rootfind.polynomial_extremes`; None: not known), else the
+    critical points of the result along the motion (:func:`dyncli.rootfind.smooth_extremes` on
+    ``values(paths, ts)``: the results at the paths, an array (len(paths), len(ts)), at an array
+    of times; None or KeyError for a path the motion does not report).  None when no query
+    searches, a path is unknown, or a result is not resolved (not finite, not smooth to rounding
+    in a step): the search then samples as before."""
+    from dyncli.rootfind import smooth_extremes
+
+    asked = searched_paths(find)
+    B = sorted({float(b) for b in breaks})
+    if not asked or len(B) < 2:
+        return None
+    own: dict[str, list[float]] = {}
+    rest = []
+    for path in sorted(asked):
+        got = known(path) if known is not None else None
+        if got is None:
+            rest.append(path)
+        else:
+            own[path] = [float(t) for t in got]
+    if rest:
+        try:
+            probe = values(rest, [B[0]])
+        except KeyError:
+            return None
+        if probe is None:
+            return None
+        cuts, ok = smooth_extremes(lambda ts: values(rest, ts), B)
+        if not ok:
+            return None
+        own.update(zip(rest, cuts))
+    t0, t_end = B[0], B[-1]
+    table = {path: sorted(set(B).union(t for t in cut if t0 < t < t_end)) for path, cut in own.items()}
+    return lambda path: table[path] if path in table else B
+
+
+def series_values(states: Callable[[list[float]], Mapping[str, Any]]) -> Callable[[list[str], Any], Any]:
+    """``values(paths, ts)`` for :func:`exact_breaks` from ``states(ts)``, the results at many times
+    as ``{name: one value per time}`` (a number or a vector per time): ``x.1`` is component 1 of
+    the vectors of ``x``; KeyError for a path that is not such a number."""
+    import numpy as np
+
+    def values(paths: list[str], ts: Any):
+        times = [float(t) for t in np.asarray(ts, dtype=float).reshape(-1)]
+        got = states(times)
+        rows = []
+        for path in paths:
+            head, _, rest = path.partition(".")
+            col = got.get(head)
+            if not isinstance(col, list) or len(col) != len(times):
+                raise KeyError(path)
+            try:
+                arr = np.asarray(col, dtype=float)
+            except (TypeError, ValueError):
+                raise KeyError(path) from None
+            if rest:
+                if arr.ndim != 2 or not rest.isdigit() or int(rest) >= arr.shape[1]:
+                    raise KeyError(path)
+                arr = arr[:, int(rest)]
+            elif arr.ndim != 1:
+                raise KeyError(path)
+            rows.append(arr)
+        return np.stack(rows)
+    return values
 
 class Odometer:
     """∫ |v| dt from the first break: Gauss–Legendre with ``nodes`` points on every piece between
@@ -357,7 +454,10 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     route's own accuracy; its check solve off).  The results over time are the type's series
     over ``t``; ``rates`` names which is the rate of which; the search grid has at least
     :data:`PER_TURN` pieces per turn of the fastest of the ``fast`` rates (rad/s) seen on a first
-    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`."""
+    coarse grid (and per ``period`` when the type reports one), at most :data:`MAX_PIECES`.  A
+    route that knows its motion as one run's dense output leaves ``(breaks, states)`` in
+    ``result.extra["dense_motion"]`` (:func:`_dense_find`: no solve again, every step cut at the
+    exact extremes of each result searched)."""
     import math as _m
 
     names = [n for s in result.series if s.index_name == "t" for n in s.names]
@@ -376,8 +476,12 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
 
     params = resolve_params(getattr(problem, "params", {}) or {})
     const = lambda x: constant(x, params)            # noqa: E731
-    at = [float(t) for t in getattr(problem, "at", []) or []]
-    t_end = search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find, const)
+    t_end = find_end(problem, t0)
+    rtol = float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0
+    dense = getattr(result, "extra", {}).pop("dense_motion", None)
+    if dense is not None and t_end > t0:
+        _dense_find(problem, result, dense, names, rates, t0, t_end, rtol, const)
+        return
     if t_end <= t0:
         breaks = [t0, t0]
     else:
@@ -392,9 +496,39 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
             return
         n = int(max(64, _m.ceil(turns * PER_TURN)))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks,
-                         rtol=float(getattr(acc, "rtol", 0.0) or 0.0) if not str(result.method).startswith(("closed", "exact")) else 0.0,
-                         rates=rates, batch=batch)
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch)
+    attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+
+
+def find_end(problem: Any, t0: float = 0.0) -> float:
+    """How far the ``find`` search of a type solved at the times of ``at`` runs: the largest of
+    ``at`` and ``t_end``, extended to every ``within`` window and ``t`` query (§11)."""
+    from dyncli.expr import constant, resolve_params
+
+    params = resolve_params(getattr(problem, "params", {}) or {})
+    at = [float(t) for t in getattr(problem, "at", []) or []]
+    return search_end(max([t0] + at + [float(getattr(problem, "t_end", None) or t0)]), problem.find,
+                      lambda x: constant(x, params))
+
+
+def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: Mapping[str, str], t0: float,
+                t_end: float, rtol: float, const) -> None:
+    """The ``find`` answers on the route's own motion, ``dense = (breaks, states)``: one run's steps
+    (its ends ``breaks``, covering [t0, t_end]) and ``states(ts)``, the results at many times as
+    ``{name: list}``, a smooth function of the step's polynomial between two breaks — each step
+    cut at the exact extremes of every result searched (:func:`exact_breaks`)."""
+    breaks, states = dense
+
+    def batch(ts) -> list[dict]:
+        ts = [float(t) for t in ts]
+        r = states(ts)
+        return [{n: r[n][j] for n in names if isinstance(r.get(n), list) and len(r[n]) == len(ts)}
+                for j in range(len(ts))]
+
+    B = sorted({t0, t_end} | {float(b) for b in breaks if t0 < b < t_end})
+    own = exact_breaks(problem.find, B, series_values(states))
+    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, B, rtol=rtol, rates=rates, batch=batch,
+                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
 
 

@@ -410,7 +410,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     if w1 > w2:
         return None, None
     sense, path, monotone = (1.0 if q.kind == "max" else -1.0), q.path, _monotone(motion)
-    rate = None if monotone else _rate_fn(motion, q.path, w1)       # (a monotone search needs no rate)
+    rate = _rate_fn(motion, q.path, w1)
     f = _value_fn(motion, path)
     h = lambda t: sense * f(t)     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
@@ -418,7 +418,18 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     H = list(map(f, T)) if sense > 0 else [-y for y in map(f, T)]       # (h at each: ±1.0·y is ±y)
     cands = [(T[0], H[0]), (T[-1], H[-1])]
     if monotone:                                      # the turning points are samples: no search
-        cands += [(T[j], H[j]) for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
+        peaks = [j for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
+        cands += [(T[j], H[j]) for j in peaks]
+        best = max(c[1] for c in cands)
+        tol = _tol(motion, max(abs(x) for x in H + [best]))
+        # the first of the best peaks polished (the answer; a cut is the extreme's time to the
+        # companion matrix's ~1e-12, its value to rounding, so no later peak can overtake it):
+        # h rises to T[j] and falls after it, so its largest value in [T[j-1], T[j+1]] is the
+        # one there (a root of the rate, else Brent's minimiser), kept when no lower than H[j]
+        j = next((j for j in peaks if H[j] >= best - tol), None)
+        if j is not None:
+            tm, hm = _peak(h, hr, T[j - 1], T[j + 1])
+            cands += [(tm, hm)] if hm >= H[j] else []
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)

@@ -395,6 +395,99 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     return out
 
 
+def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int = 200_000):
+    """The critical points of a smooth function of time between each pair of consecutive
+    ``breaks`` (an ODE's steps, inside which a quantity of the state is a smooth function of the
+    step's polynomial), decided by the sign analysis of its derivative, never by samples:
+    (cuts, resolved).  ``q(ts)`` gives the values at an array of times, an array of shape
+    (components, n) or (n,).  Each piece is replaced by the Chebyshev interpolant of degree
+    ``deg`` of every component, the piece halved (all pieces at once, one call of ``q`` per
+    halving) until the interpolants' last coefficients are at the rounding of the values, as
+    :func:`all_roots` resolves its cells; the critical points of each component are the real
+    roots of its interpolant's derivative (its companion matrix, only where the derivative's
+    constant coefficient does not exceed the others' magnitudes: |T_k| <= 1), and the ends of
+    the halved cells are cuts too (a kink, |v| at a stop, lies on one).  ``cuts``: per component,
+    the sorted cuts strictly inside the breaks — between two consecutive cuts or breaks each
+    component is monotone to its rounding.  ``resolved`` is False when a piece is not finite or
+    not resolved after ``max_depth`` halvings (wider than the rounding of t) or when the halvings
+    need more than ``budget`` evaluations of q: the caller cannot take the components as monotone."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    eps = sys.float_info.epsilon
+    B = np.unique(np.asarray(list(breaks), dtype=float))
+    x1, _ = _derivative_series(deg)
+    V = C.chebvander(x1, deg) / (deg + 1)
+    V[:, 1:] *= 2
+    cells = np.stack([B[:-1], B[1:]], axis=1) if B.size > 1 else np.zeros((0, 2))
+    active = None                                        # (components, cells): still to resolve there
+    cuts: list[set[float]] = []
+    depth, used, scale = 0, 0, None
+    while cells.shape[0]:
+        m, h = 0.5 * (cells[:, 0] + cells[:, 1]), 0.5 * (cells[:, 1] - cells[:, 0])
+        used += cells.shape[0] * (deg + 1) if depth else 0
+        if used > budget:
+            return [sorted(c) for c in cuts], False
+        with np.errstate(all="ignore"):
+            Y = np.asarray(q((m[:, None] + h[:, None] * x1[None, :]).ravel()), dtype=float)
+        Y = Y.reshape((-1, cells.shape[0], deg + 1))     # (components, cells, deg + 1)
+        if scale is None:                                # each component's size over the whole motion
+            scale = np.max(np.abs(Y), axis=(1, 2))[:, None]
+            cuts = [set() for _ in range(Y.shape[0])]
+            active = np.ones(Y.shape[:2], dtype=bool)
+        assert active is not None
+        if not np.all(np.isfinite(Y[active])):
+            return [sorted(c) for c in cuts], False
+        c = Y @ V                                        # Chebyshev coefficients (components, cells, deg + 1)
+        noise = 16 * eps * scale                         # the rounding of the values
+        tail = np.max(np.abs(c[..., -3:]), axis=-1)
+        fine = ((tail <= np.maximum(1e-13 * np.max(np.abs(c), axis=-1), noise))
+                | (np.sum(np.abs(c[..., 1:]), axis=-1) <= noise)       # (constant to rounding)
+                | (h <= 64 * eps * np.maximum(np.abs(m), 1e-300))[None, :]   # as narrow as the rounding of t
+                | ~active)
+        if depth >= max_depth and not np.all(fine):
+            return [sorted(c) for c in cuts], False
+        d = C.chebder(c, axis=-1)                        # the derivative's series (components, cells, deg)
+        look = (active & fine & (np.abs(d[..., 0]) <= np.sum(np.abs(d[..., 1:]), axis=-1))
+                & (np.sum(np.abs(c[..., 1:]), axis=-1) > deg * noise))     # (constant to rounding: none)
+        for j, i in zip(*np.nonzero(look)):
+            try:
+                with np.errstate(all="ignore"):
+                    r = C.chebroots(np.trim_zeros(d[j, i], "b"))
+            except np.linalg.LinAlgError:
+                return [sorted(c) for c in cuts], False
+            keep = (np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)
+            # (a critical point within 1e-8 of the cell's end is that end's: the cell is monotone
+            # to rounding up to it — its variation there ~1e-16 of h² q'' — and the end is a cut)
+            cuts[j].update(float(m[i] + h[i] * t) for t in _polished(d[j, i], np.real(r[keep])) if abs(t) < 1 - 1e-8)
+        split = ~np.all(fine, axis=0)
+        mid = m[split]
+        for j, comp in enumerate(cuts):                  # a halved cell's middle: a cut of what is halved
+            comp.update(mid[~fine[j, split]].tolist())
+        cells = np.concatenate([np.stack([cells[split, 0], mid], axis=1), np.stack([mid, cells[split, 1]], axis=1)])
+        active = np.concatenate([~fine[:, split], ~fine[:, split]], axis=1)
+        depth += 1
+    lo, hi = (B[0], B[-1]) if B.size else (0.0, 0.0)
+    inner = set(B.tolist())
+    return [sorted(t for t in comp if lo < t < hi and t not in inner) for comp in cuts], True
+
+
+
+def _polished(d, r):
+    """The roots ``r`` in (−1, 1) of the Chebyshev series ``d`` after two Newton steps on the series
+    itself (the companion matrix's eigenvalues carry its conditioning: ~1e-11 of the interval at
+    a simple root), a step that would leave (−1, 1) or is not finite not taken."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    dd = C.chebder(d)
+    for _ in range(2):
+        with np.errstate(all="ignore"):
+            step = C.chebval(r, d) / C.chebval(r, dd)
+        new = r - step
+        r = np.where(np.isfinite(new) & (np.abs(new) < 1) & (np.abs(step) < 1e-3), new, r)
+    return r
+
 def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
     """A root of the square system F(x) = 0 by Newton's method with the analytic Jacobian
     ``jac``: least-squares steps (a singular Jacobian, a continuum of roots, takes the

@@ -2,8 +2,10 @@
 
 The motion is the route's own at any time: the energy quadrature's q(t) (the legs between
 turning points, periodic when the motion is) or the ODE's dense output, each assembled into the
-reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends; on the quadrature
-route an eighth of the period (or 64 pieces of a motion that does not repeat).  Rates: q̇ of q,
+reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends, each step cut at
+the exact extremes of every result searched (:func:`dyncli.motion_find.exact_breaks`: monotone
+between two cuts); on the quadrature route an eighth of the period (or 64 pieces of a motion
+that does not repeat), sampled.  Rates: q̇ of q,
 ṡ of s, v of x, a of v, so turning points are roots of the rate (Brent).  ``distance`` is the
 arc length travelled, Σ|Δs| between the turning points of s (the roots of ṡ).
 """
@@ -110,9 +112,10 @@ def ode_arc(model, phases, q0: float, known):
 
 
 def ode_breaks(phases) -> list[float]:
+    """The steps' ends and the phases' ends (a stop, a stick, a slip: the state is smooth between two)."""
     out = set()
     for ph in phases:
-        out |= {float(t) for t in ph.steps_t}
+        out |= {float(t) for t in ph.steps_t} | {float(ph.t0), float(ph.t1)}
     return sorted(out)
 
 
@@ -124,10 +127,13 @@ def uniform_breaks(t_end: float, period) -> list[float]:
     return [t_end * k / n for k in range(n + 1)]
 
 
-def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=None) -> None:
+def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=None, smooth=False) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers (``subdivide``: 1 when the
     breaks are the ODE's steps; ``turn_times``: the turning points when the route knows them;
-    ``s_of``: s at a list of times, cheaper than the whole state)."""
+    ``s_of``: s at a list of times, cheaper than the whole state; ``smooth``: the results are
+    smooth functions of time between two breaks — an ODE's steps and phase ends —, so that each
+    step is cut at the exact extremes of every result searched, :func:`dyncli.motion_find.exact_breaks`,
+    and the search takes it as monotone between two cuts)."""
     t_end = float(p.t_end)
     B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
 
@@ -158,11 +164,15 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=N
     def full(t: float) -> dict:
         return dict(batch([t])[0], distance=distance(t))
 
+    # distance is Σ|Δs| between the turning points of s: nondecreasing, no cut of its own
+    own = (mf.exact_breaks(p.find, B, mf.series_values(states), lambda path: [] if path == "distance" else None)
+           if smooth and t_end > 0 else None)
     motion: mf.StateMotion
     motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,
                             rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a",
                                    "distance": lambda t, _: abs(motion.flat(t)["s_dot"])},
-                            batch=lambda ts: [dict(e, distance=distance(float(t))) for t, e in zip(ts, batch(ts))])
+                            batch=lambda ts: [dict(e, distance=distance(float(t))) for t, e in zip(ts, batch(ts))],
+                            breaks_for=own, monotone=own is not None)
     period = res.results.get("period")
     if subdivide is None and isinstance(period, float) and period > 0:
         motion.period = period                       # the energy route's motion repeats exactly

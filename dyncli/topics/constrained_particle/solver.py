@@ -106,7 +106,7 @@ def solve_setup(p: Setup) -> Result:
         res = _solve_ode(p, model, times)
         phases = res.extra.pop("phases")
         find.report(p, res, find.ode_states(p, model, phases), find.ode_breaks(res.extra.pop("breaks_of")), SERIES,
-                    subdivide=1, turn_times=find.ode_turns(phases),
+                    subdivide=1, turn_times=find.ode_turns(phases), smooth=True,
                     s_of=find.ode_arc(model, phases, float(p.q0), zip(times, res.results["s"])))
     equilibria.add(res, p, model)
     if steadies is not None:

@@ -4,7 +4,9 @@ The motion is the integrated trajectory at any time (every step's dense output, 
 as the reported times) or the exact conic of an orbit; its breaks are the accepted steps and the
 phase ends (a stop by friction, a rest), between which the state is one interpolating
 polynomial, or the orbit's equal steps of the eccentric anomaly; v is the rate of x, a of v
-and m v·a of T, so a turning point of a coordinate or of T is a root of its rate (Brent).  ``distance`` is
+and m v·a of T, so a turning point of a coordinate or of T is a root of its rate (Brent); on
+the ODE route every step is cut at the exact extremes of each result searched
+(:func:`exact_breaks`), between which the search takes it as monotone.  ``distance`` is
 ∫|v| dt by Gauss–Legendre on every step (:class:`dyncli.motion_find.Odometer`).
 """
 
@@ -60,7 +62,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         f = motion.flat(t)
         return float(p.m) * sum(f[f"v.{i}"] * f[f"a.{i}"] for i in range(3))
 
-    own = None if pieces is not None else _coordinate_breaks(p.find, traj_of(), B)
+    own = exact_breaks(p.find, traj_of() if pieces is None else None, B, at_times, odo)
     motion = mf.StateMotion(full, 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
                             rates={"x": "v", "v": "a", "T": lambda t, _: power(t)},
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))],
@@ -72,37 +74,54 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
 _COMPONENT = {f"{q}.{i}": 3 * k + i for k, q in enumerate(("x", "v")) for i in range(3)}
 
 
-def _coordinate_breaks(find, traj, B: list[float]):
-    """``breaks_for(path)`` when every query asks about a coordinate of x or v (else None): the
-    breaks with every critical point of that coordinate inside each step added — a step's dense
-    output is a polynomial, whose extremes are decided exactly
-    (:func:`dyncli.rootfind.polynomial_extremes`), so the coordinate is monotone between two of
-    them and no excursion inside a step, however narrow, is stepped over."""
-    asked: set[str] = set()
-    for q in find if isinstance(find, (list, tuple)) else ():
-        if not isinstance(q, dict):
-            return None
-        if set(q) <= {"t"}:                             # a time query: no search
-            continue
-        when = q.get("when")
-        paths = list(when) if isinstance(when, dict) else [q[k] for k in ("max", "min") if k in q]
-        if not paths or not all(isinstance(x, str) and x in _COMPONENT for x in paths):
-            return None
-        asked.update(str(x) for x in paths)
+def exact_breaks(find, traj, B: list[float], at_times, odo):
+    """``breaks_for(path)`` cutting every piece at the exact extremes of each result searched (else
+    None: see :func:`dyncli.motion_find.exact_breaks`).  On the ODE route (``traj``: the dense
+    trajectory) a coordinate of x or v is a coordinate of the step's dense output, a polynomial,
+    whose critical points are decided exactly (:func:`dyncli.rootfind.polynomial_extremes`); any
+    other result (|v| through T, a, V, E, H_O, W_nc, distance) is a smooth function of that
+    polynomial inside the step, whose critical points are the roots of its derivative
+    (:func:`dyncli.rootfind.smooth_extremes`); on the exact orbit (``traj`` None) every result
+    is such a function on each piece of the conic.  Between two cuts each result is monotone, so
+    no excursion inside a piece, however narrow, is stepped over."""
+    import numpy as np
+
     pieces = []
-    for ph in traj.phases:
+    for ph in (traj.phases if traj is not None else ()):
         sol = getattr(ph, "sol", None)
         if sol is None:
             if ph.t1 > ph.t0 and not hasattr(ph, "x"):      # an ODE phase without its steps' polynomials
                 return None
             continue
         pieces += [(f, float(a), float(b)) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:]) if b > a]
-    if not asked or not pieces:
+    if traj is not None and not pieces:
         return None
-    from dyncli.rootfind import polynomial_extremes
+    coordinates: dict[str, list[float]] = {}
 
-    ext = polynomial_extremes(pieces)
-    t_end = B[-1]
-    own = {path: sorted(set(B).union(t for e in ext for t in e[_COMPONENT[path]] if B[0] < t < t_end))
-           for path in asked}
-    return lambda path: own[path] if path in own else B
+    def known(path: str):
+        if path not in _COMPONENT or not pieces:
+            return None
+        if not coordinates:
+            from dyncli.rootfind import polynomial_extremes
+
+            ext = polynomial_extremes(pieces)
+            coordinates.update({k: [t for e in ext for t in e[c]] for k, c in _COMPONENT.items()})
+        return coordinates[path]
+
+    def values(paths, ts):
+        ts = np.asarray(ts, dtype=float)
+        S = at_times(ts.tolist())
+        rows = []
+        for path in paths:
+            head, _, rest = path.partition(".")
+            if head == "distance" and not rest:
+                rows.append(np.asarray(odo.at(ts), dtype=float))
+            elif head in STATE and head in S and np.ndim(S[head]) == (2 if rest else 1):
+                if rest and not (rest.isdigit() and int(rest) < len(S[head])):
+                    raise KeyError(path)
+                rows.append(np.asarray(S[head][int(rest)] if rest else S[head], dtype=float))
+            else:
+                raise KeyError(path)
+        return np.stack(rows)
+
+    return mf.exact_breaks(find, B, values, known)

@@ -4,7 +4,9 @@ The motion is the run's dense output (every accepted step's interpolant, the sam
 reported times, continued to t_end); the breaks are its steps.  The state at a time holds the
 results over time (``x_motion``, ``com_motion``, ``G_motion``, ``H_O_motion``, ``T_motion``,
 ``V_internal_motion``, ``P_internal_motion``, ``W_internal``, ``distance``); the velocities in
-the state are the rates of the positions, so a turning point is a root (Brent).  ``distance``:
+the state are the rates of the positions, so a turning point is a root (Brent); every step is
+cut at the exact extremes of each result searched (:func:`dyncli.motion_find.exact_breaks`),
+between which the search takes it as monotone.  ``distance``:
 each particle's path length ∫|vᵢ| dt (Gauss–Legendre on every step).
 """
 
@@ -86,6 +88,37 @@ def report(p, res, steps: Steps, quantities, n: int) -> None:
         return float(steps.y([t])[0, 3 * (n + int(i)) + int(c)])
 
     params = resolve_params(p.params)
+    own = mf.exact_breaks(p.find, B, _values(steps, quantities, odo, n))
     motion = mf.StateMotion(lambda t: batch([t])[0], 0.0, float(p.t_end), B, rtol=float(p.accuracy.rtol), subdivide=1,
-                            rates={"x_motion": velocity}, batch=batch)
+                            rates={"x_motion": velocity}, batch=batch, breaks_for=own, monotone=own is not None)
     mf.attach(res, p.find, mf.answer_find(p.find, motion, lambda x: constant(x, params), res.warn))
+
+
+def _values(steps: Steps, quantities, odo, n: int):
+    """``values(paths, ts)`` for :func:`dyncli.motion_find.exact_breaks`: the searched results at an
+    array of times as rows, read from the arrays of the dense output (each a smooth function of
+    the step's polynomial: every step is cut at its exact extremes)."""
+    def values(paths, ts):
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        X, G, H, T, com, Vint, Pint, W = quantities(steps.y(ts))
+        arrays = {"x_motion": X, "com_motion": com, "G_motion": G, "H_O_motion": H, "T_motion": T,
+                  "V_internal_motion": Vint, "P_internal_motion": Pint, "W_internal": W}
+        rows = []
+        for path in paths:
+            head, _, rest = path.partition(".")
+            parts = rest.split(".") if rest else []
+            if head == "distance":
+                arr = np.asarray(odo.at(ts), dtype=float)            # (times, particles)
+            elif head in arrays:
+                arr = np.asarray(arrays[head], dtype=float)
+            else:
+                raise KeyError(path)
+            if not all(x.isdigit() for x in parts) or len(parts) != arr.ndim - 1:
+                raise KeyError(path)
+            for x in parts:
+                if int(x) >= arr.shape[1]:
+                    raise KeyError(path)
+                arr = arr[:, int(x)]
+            rows.append(arr)
+        return np.stack(rows)
+    return values

@@ -6,9 +6,9 @@
 * ``closed-form``: one degree of freedom whose rows are affine in q (constant Jacobian) and
   whose loads are affine in the coordinate and its rate (decided from the elements'
   structure, never by sampling): constant acceleration, or the vibration formulas of §17.
-* One-sided joints are watched on every route: after each step (or closed-form piece) the
-  contact forces, cord tensions and slip margins are evaluated; a sign change is located by
-  Brent's method on the interpolant to the double's resolution.  A sliding contact that stops
+* One-sided joints are watched on every route: the contact forces, cord tensions, slip margins
+  and gaps of each step (or closed-form piece) are searched for their first crossing by sign
+  analysis (crossing.py), located to the double's resolution.  A sliding contact that stops
   sticks if the static test holds (an event), else slides back (a new phase).
 """
 
@@ -26,6 +26,7 @@ from dyncli import runner
 from dyncli.errors import NumericalError
 from dyncli.rootfind import brent
 
+from . import crossing
 from .contacts import Contact, Rolls
 from .dynamics import SceneSystem
 
@@ -209,6 +210,11 @@ class OdeRoute:
         # stretch may still read on the old side there; the first step does not count it again
         size = max(1.0, float(np.max(np.abs(y0[:n]))))
         skip = {k for k, (_, what, g) in enumerate(w_old) if what == "switch" and abs(g) <= 1e-9 * size}
+        tol = crossing.rounding(s, y0[:n], y0[n:2 * n], t0, y0[n:2 * n])
+        # the screen reads the step's interpolant off the joints (unprojected: within the step's
+        # error of them), so a quantity is cleared only beyond that error too
+        screen = {what: g * (1.0 + rtol / (4 * EPS)) for what, g in tol.items()}
+        tol0 = tol["sticks"]
         y = y0
         for _ in ode.steps(solver, budget, self.method):
             t_old, t_new = float(solver.t_old), float(solver.t)
@@ -220,7 +226,11 @@ class OdeRoute:
                 lam = self.lam
             dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
             w_new = watches(s, yp[:n], yp[n:2 * n], t_new, lam)
-            hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip)
+            # a speed's rounding is that of the step's speeds (from rest, the phase's start has none)
+            v_step = max(float(np.max(np.abs(y[n:2 * n]), initial=0.0)), float(np.max(np.abs(yp[n:2 * n]), initial=0.0)))
+            tol["sticks"] = max(tol0, 64 * EPS * v_step)
+            screen["sticks"] = tol["sticks"] * (1.0 + rtol / (4 * EPS))
+            hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip, (tol, screen), t_old == t0)
             skip = set()
             traj.steps += 1
             if hit is None:
@@ -238,19 +248,49 @@ class OdeRoute:
         n = self.n
         return lambda t: (lambda y: (y[:n], y[n:2 * n], float(y[2 * n])))(dense(t))
 
-    def _first_crossing(self, w_old, w_new, dense, t_old, t_new, skip=()):
-        best = None
+    def _first_crossing(self, w_old, w_new, dense, t_old, t_new, skip, tols, start):
+        """The first event inside one step, decided from the step's interpolant, not from its ends
+        alone: each watched quantity read at the step's Lobatto points (crossing.step_screen, on
+        the interpolant as integrated); where the screen cannot clear it, its first crossing by
+        crossing.first_crossing (the sign analysis of all_roots on that interpolant, a polynomial
+        within the step's error of the joints; the state there projected): a contact force that
+        dips below 0 and back inside one step is an event.  ``tols``: each quantity's rounding,
+        and the screen's (with the step's error)."""
         s, n = self.system, self.n
-        for k, ((joint, what, g0), (_, _, g1)) in enumerate(zip(w_old, w_new)):
-            if k in skip or not crossed(g0, g1, what):
-                continue
+        tol, screen = tols
+        cache: dict[float, list[float]] = {t_old: [g for _j, _w, g in w_old], t_new: [g for _j, _w, g in w_new]}
 
-            def g(t, k=k):
+        def at(t: float) -> list[float]:
+            got = cache.get(t)
+            if got is None:
                 y = dense(t)
-                return watches(s, y[:n], y[n:2 * n], t)[k][2]
+                got = cache[t] = [g for _j, _w, g in watches(s, y[:n], y[n:2 * n], t)]
+            return got
 
-            tc = t_new if g1 == 0 else brent(g, t_old, t_new, 4 * EPS * max(abs(t_new), 1e-300), 4 * EPS, 200)
-            if best is None or tc < best[0]:
+        def raw_at(ts, k: int) -> np.ndarray:
+            ts = np.atleast_1d(np.asarray(ts, dtype=float))
+            ys = np.asarray(dense.dense(ts), dtype=float).reshape(-1, ts.size)
+            return np.array([watches(s, ys[:n, i], ys[n:2 * n, i], float(t))[k][2] for i, t in enumerate(ts)])
+
+        inner = crossing.screen_times(t_old, t_new)
+        raw = np.asarray(dense.dense(np.array(inner)), dtype=float).reshape(-1, len(inner))
+        seen = [[g for _j, _w, g in watches(s, raw[:n, i], raw[n:2 * n, i], t)] for i, t in enumerate(inner)]
+        best = None
+        for k, (joint, what, g0) in enumerate(w_old):
+            if k in skip:
+                continue
+            g1 = w_new[k][2]
+            seen_k = crossing.step_screen([g0] + [w[k] for w in seen] + [g1], screen[what])
+            if seen_k == "clear" and not crossed(g0, g1, what):
+                continue
+            tc = None
+            if seen_k == "search":      # on the interpolant as integrated: a polynomial, smooth to rounding
+                tc = crossing.first_crossing(lambda ts, k=k: raw_at(ts, k), t_old, t_new if best is None else best[0],
+                                             what, screen[what], start, 1)
+            if tc is None and crossed(g0, g1, what):     # one crossing, or ends on the band below 0
+                tc = t_new if g1 == 0 else brent(lambda t, k=k: at(t)[k], t_old, t_new,
+                                                 4 * EPS * max(abs(t_new), 1e-300), 4 * EPS, 200)
+            if tc is not None and (best is None or tc < best[0]):
                 best = (tc, joint, what)
         return best
 

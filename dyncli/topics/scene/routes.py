@@ -22,7 +22,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 
-from . import assembly, motion, phases
+from . import assembly, crossing, motion, phases
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -271,6 +271,12 @@ def _linear(s, q0, N, i, has_k: bool, has_c: bool) -> motion.Linear1:
     coefficient whose load is absent is exactly 0)."""
     A0 = float(s.solve(q0, N * 0.0, 0.0)[0][i])
     L = assembly.length_scale(q0, s)
+    for ld in s.loads:          # a spring's pull is affine along N while its ends do not cross
+        if ld.kind == "spring":
+            d = ld.P.pos(q0) - ld.Q.pos(q0)
+            w = ld.P.jac(q0, s.n) @ N - ld.Q.jac(q0, s.n) @ N
+            if np.any(w != 0):
+                L = min(L, 0.5 * math.hypot(*d) / math.hypot(*w))
     A1 = (float(s.solve(q0 + L * N, N * 0.0, 0.0)[0][i]) - A0) / L if has_k else 0.0
     A2 = float(s.solve(q0, N, 0.0)[0][i]) - A0 if has_c else 0.0
     return motion.Linear1(q0, N, i, A0, A1, A2)
@@ -323,107 +329,68 @@ def _closed_form(s, traj, t0, q0, v0, t_end):
 
 
 def _first_event(s, traj, k0: int, t_end: float):
-    """The first event on the exact pieces from index k0 (each piece scanned at 64 points or
-    more, one per 0.05 rad a body turns, then Brent to the double's resolution); the pieces are
-    cut there.  Returns (t, q, v, hit)."""
-    from dyncli.rootfind import brent
-
+    """The first event on the exact pieces from index k0 (:func:`_piece_event`: decided by the
+    sign analysis of each watched quantity, not by samples); the pieces are cut there.  Returns
+    (t, q, v, hit)."""
     for k in range(k0, len(traj.pieces)):
         p = traj.pieces[k]
         if p.t_b <= p.t_a:
             continue
         motion.set_modes(s, p.modes)
-
-        def w(t, p=p):
-            q, v, _ = p.fn(t)
-            return motion.watches(s, q, v, t)
-
-        if p.route == "statics":
-            got = _held_event(s, p, w)
-            if got is not None:
-                p.t_b = got[0]
-                del traj.pieces[k + 1:]
-                q, v, _ = p.fn(got[0])
-                return got[0], q, v, got
-            continue
-        # sorted and unique (np.union1d's np.unique would import numpy.ma: 13 ms of a cold solve)
-        ts = np.array(sorted(set(np.linspace(p.t_a, p.t_b, _samples(s, p) + 1).tolist()) | set(_gap_times(s, p))))
-        scan = _watched(s, p, ts, w)
-        prev = next(scan)
-        for t0, t1, cur in zip(ts[:-1], ts[1:], scan):
-            best = None
-            for j, ((joint, what, g0), (_, _, g1)) in enumerate(zip(prev, cur)):
-                if what == "switch" or not motion.crossed(g0, g1, what):
-                    continue
-                tc = t1 if g1 == 0 else brent(lambda t, j=j: w(t)[j][2], t0, t1, 4 * EPS * t1, 4 * EPS, 200)
-                if best is None or tc < best[0]:
-                    best = (tc, joint, what)
-            if best is not None:
-                p.t_b = best[0]
-                del traj.pieces[k + 1:]
-                q, v, _ = p.fn(best[0])
-                return best[0], q, v, best
-            prev = cur
+        got = _piece_event(s, p)
+        if got is not None:
+            p.t_b = got[0]
+            del traj.pieces[k + 1:]
+            q, v, _ = p.fn(got[0])
+            return got[0], q, v, got
     q, v, _ = traj.pieces[-1].fn(t_end)
     return t_end, q, v, None
 
 
-#: the samples of a scan whose multipliers are solved together: the first few, then twice as
-#: many each time up to the most (a scan stops at its first event, often within a few samples)
-_FIRST_CHUNK, _MOST_CHUNK = 4, 256
-
-
-def _watched(s, p, ts, w):
-    """The watched quantities at the times ``ts`` of piece ``p``, in order (a generator: the
-    scan stops at its first event).  When the joint rows have one Jacobian over the piece
-    (every made row linear), the multipliers of a chunk of samples are solved in one stacked
-    call (SceneSystem.solve_many: the same numbers as one solve per sample); else ``w``."""
-    if not s.constant_matrix():
-        for t in ts:
-            yield w(t)
-        return
-    lo, size = 0, _FIRST_CHUNK
-    while lo < len(ts):
-        states = [p.fn(t)[:2] + (t,) for t in ts[lo:lo + size]]
-        for (q, v, t), (_a, lam, _P) in zip(states, s.solve_many(states)):
-            yield motion.watches(s, q, v, t, lam)
-        lo, size = lo + size, min(2 * size, _MOST_CHUNK)
-
-
-def _held_event(s, p, w):
-    """The first event of a phase held at rest under loads that change in time, decided
-    exactly: each watched force (N, μ_s N − |F|, T) is a smooth function of t there, and its
-    roots are every sign change found by the sign analysis of dyncli.rootfind.all_roots
-    (Chebyshev cells halved until resolved, not a grid).  all_roots works through its cells from
-    the left, so it is asked for the first few roots only and resumed after them while none is
-    the event: a periodic load over a long span costs its first period, not its whole span; and
-    the span is searched in windows from 64 s, each 16 times wider (all_roots resolves a cell to
-    2^-48 of its width: a period of 1 s is not lost in a window of 1e300 s).  The
-    solve's CPU budget bounds the search (a span of 1e300 s of a periodic load is refused, not
-    followed).  Returns (t, joint, what) or None."""
+def _piece_event(s, p):
+    """The first event on one exact piece (closed form, quadrature, or held at rest under loads
+    that change in time): each watched quantity's first crossing (crossing.first_crossing, by
+    sign analysis, not samples).  The span is searched in windows: held at rest (loads that are
+    the user's functions of t), from 64 s, each in 16 starting cells; moving (constant loads),
+    from 1/16 of the span (64 s at most), each in one starting cell (an early event costs a few
+    cells); each window 16 times wider than the last (all_roots resolves a cell to 2^-48 of its
+    width: a period of 1 s is not lost in a window of 1e300 s).  Where the joint rows have one
+    matrix over the piece, the states of a cell are solved in one stacked call
+    (SceneSystem.solve_many: the same numbers as one solve each).  The solve's CPU budget bounds
+    the search.  Returns (t, joint, what) or None."""
     from dyncli import cputime
 
-    cache: dict[float, list] = {}
+    cache: dict[float, list[float]] = {}
+    stacked = p.route == "statics" or s.constant_matrix()
 
-    def at(t):
-        got = cache.get(t)
-        if got is None:
+    def column(j: int, ts) -> np.ndarray:
+        ts = [float(t) for t in np.atleast_1d(ts)]
+        if missing := [t for t in dict.fromkeys(ts) if t not in cache]:
             if (limit := cputime.over()) is not None:
                 raise NumericalError(
-                    f"the forces of the joints held at rest were followed to t = {t:.6g} s only within the CPU "
-                    f"budget of {limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise "
-                    "accuracy.max_cpu")
-            got = cache[t] = w(t)
-        return got
+                    f"the forces of the joints were followed to t = {missing[0]:.6g} s only within the CPU budget of "
+                    f"{limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise accuracy.max_cpu")
+            states = [p.fn(t)[:2] + (t,) for t in missing]
+            lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 else [None] * len(states)
+            for (q, v, t), lam in zip(states, lams):
+                cache[t] = [g for _j, _w, g in motion.watches(s, q, v, t, lam)]
+        return np.array([cache[t][j] for t in ts])
 
-    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(at(p.t_a)) if what != "switch"]
-    lo, width = p.t_a, _FIRST_WINDOW
-    while lo < p.t_b:                           # window by window, every watched force in each
+    q, v, _ = p.fn(p.t_a)
+    tol = crossing.rounding(s, q, v, p.t_a, p.fn(p.t_b)[1])
+    # held at rest, a one-sided spring's stretch does not change (no switch to look for)
+    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(motion.watches(s, q, v, p.t_a))
+               if not (what == "switch" and p.route == "statics")]
+    # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
+    # points each over a window); moving, the loads are constant and the motion's own scales rule
+    held = p.route == "statics"
+    lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
+    while lo < p.t_b:                           # window by window, every watched quantity in each
         hi = min(p.t_b, lo + width)
         best = None
         for j, joint, what in watched:
-            got = _first_down(lambda ts, j=j: np.array([at(float(t))[j][2] for t in np.atleast_1d(ts)]),
-                              lo, hi if best is None else best[0])
+            got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, hi if best is None else best[0], what,
+                                          tol[what], start=lo == p.t_a, cells=16 if held else 1)
             if got is not None:
                 best = (got, joint, what)
         if best is not None:
@@ -432,64 +399,5 @@ def _held_event(s, p, w):
     return None
 
 
-def _first_down(f, a: float, b: float) -> float | None:
-    """The first root in (a, b] where ``f`` (on arrays; f > 0 at a) turns negative, or None;
-    all_roots asked for a few roots at a time, resumed after them while none is that root."""
-    from dyncli.rootfind import all_roots
-
-    lo = prev = a
-    while True:
-        roots, touches, bad = all_roots(f, lo, b, cells=16, limit=_FIRST_ROOTS)
-        best = None
-        for r in sorted(r for r in roots if r > lo):
-            if float(f(np.array([0.5 * (prev + r)]))[0]) > 0:
-                best = r
-                break
-            prev = r
-        if bad and (best is None or bad[0] < best):
-            raise NumericalError(f"the forces of the joints held at rest could not be resolved near t = {bad[0]:.6g} s")
-        done = max(roots + touches, default=lo)
-        if best is not None or len(roots) + len(touches) <= _FIRST_ROOTS or done <= lo:
-            return best
-        lo = done
 
 
-#: how many roots of a held force one call of all_roots finds before the event is looked for
-_FIRST_ROOTS = 8
-#: the first window (s) of that search, each next one 16 times wider: all_roots resolves a cell to
-#: 2^-48 of its starting width, so a load's period must not be lost in a window of 1e300 s
-_FIRST_WINDOW = 64.0
-
-
-def _gap_times(s, p) -> list[float]:
-    """Where each released point's height over its surface, as the parabola of its start
-    (height, normal speed, normal acceleration), has its top or returns to 0: sampled too, so
-    that a short flight between two samples is not stepped over."""
-    from .contacts import Contact, Rolls
-    from .impulse import normal_acceleration
-
-    q, v, _ = p.fn(p.t_a)
-    out = []
-    for e in s.elements:
-        if isinstance(e, (Contact, Rolls)) and e.mode == "off":
-            g, gd, gdd = e.gap(q), e.normal_speed(q, v), normal_acceleration(s, q, v, p.t_a, e)
-            if gdd == 0:
-                roots = [-g / gd] if gd else []
-            else:
-                disc = gd * gd - 2 * gdd * g
-                roots = [-gd / gdd] + ([(-gd + r) / gdd for r in (disc ** 0.5, -disc ** 0.5)] if disc >= 0 else [])
-            out += [p.t_a + r for r in roots if 0 < r and p.t_a + r < p.t_b]
-    return out
-
-
-def _samples(s, p) -> int:
-    """64, or one sample per 0.05 rad that a body turns over the piece (a turning point's height
-    is then sampled finely enough not to step over a touch)."""
-    q0, v0, _ = p.fn(p.t_a)
-    q1, v1, _ = p.fn(p.t_b)
-    turn = 0.0
-    for b in s.bodies:
-        if b.rigid:
-            k = b.index[2]
-            turn = max(turn, abs(float(q1[k] - q0[k])), 0.5 * abs(float(v0[k]) + float(v1[k])) * (p.t_b - p.t_a))
-    return int(min(max(64, turn / 0.05), 20_000))

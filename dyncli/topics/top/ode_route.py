@@ -139,6 +139,20 @@ def _floor_and_warning(res, rtol, drifts, bounds, checked, floor=True):
     runner.warn_unmet(res, rtol, measured, promise=runner.ODE_PROMISE, what=what)
 
 
+def dense_motion(top, acc: Controls, T: float, Wfast, Wp, *, state, bounds):
+    """The motion from 0 to T as one run's dense output for the ``find`` search (see
+    :meth:`dyncli.topics.top.reduced.Reduced.dense`): (the steps' ends, ``states(ts)``), or None
+    where the route takes the quaternion form (next to the vertical, ``projected``) — its ψ and φ
+    are followed step by step, so that form's queries are answered by solving again at the
+    search's times (:func:`dyncli.motion_find.resolved`)."""
+    method = acc.method if acc.method == "projected" else runner.scipy_method(acc.method)
+    red = Reduced(top, state, bounds, Wp)
+    if not T > 0 or method == "projected" or not usable(top, bounds[0], bounds[1], red.w3, red.b, Wp, Wfast, acc.rtol):
+        return None
+    return red.dense(T, rtol=acc.rtol, atol=acc.atol, method=method, max_step=step_cap(bounds, Wfast, method),
+                     max_steps=acc.max_steps)
+
+
 def step_cap(bounds, Wfast, method, ratio=1.0):
     """The largest step while the axis nutates: 1/W (W the fastest rate), times ratio^(1/order) for
     a run at ``ratio`` × rtol (the step an error ∝ h^order scales by), so that a check solve's

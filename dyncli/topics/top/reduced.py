@@ -131,6 +131,35 @@ class Reduced:
         thd[zero], psi[zero], phi[zero] = self.y0[1:]
         return self.motion(psi, th, phi, thd), self.drift(th, thd)
 
+    def dense(self, T, *, rtol, atol, method, max_step, max_steps):
+        """One run from 0 to T with every step's interpolant: (the steps' ends, ``states(ts)``, the
+        results ψ, θ, φ, ψ̇, θ̇, φ̇, R at any times of [0, T] as lists, each a smooth function of the
+        step's polynomial between two step ends) — the ``find`` search's motion."""
+        budget = ode.Budget(max_steps)
+        budget.leg(0.0, T)
+        rtol, atol = self.tolerances(rtol, atol)
+        sol = runner.solve_ivp(self.rhs, (0.0, T), self.y0, method=method, budget=budget, check_finite=False,
+                               dense_output=True, rtol=rtol, atol=atol, max_step=max_step)
+        if sol.status != 0:
+            from dyncli.errors import NumericalError
+
+            raise NumericalError(f"the integrator ({method}) failed at t = {sol.t[-1]:.6g} s: {sol.message}")
+        dense = sol.sol
+
+        def states(ts) -> dict:
+            ts = np.asarray(ts, dtype=float).reshape(-1)
+            x, thd, psi, phi = np.asarray(dense(ts), dtype=float).reshape(4, -1)
+            th = x + self.tc
+            zero = ts == 0.0                  # the initial state as given
+            th[zero] = self.th0
+            thd[zero], psi[zero], phi[zero] = self.y0[1:]
+            psi, th, phi, psd, thd, phd, _, R = self.motion(psi, th, phi, thd)
+            out = {k: (np.asarray(a, dtype=float) + 0.0).tolist() for k, a in
+                   (("psi", psi), ("theta", th), ("phi", phi), ("psi_dot", psd), ("theta_dot", thd), ("phi_dot", phd))}
+            out["R"] = (np.asarray(R, dtype=float) + 0.0).tolist()
+            return out
+        return [float(t) for t in sol.t], states
+
     def motion(self, psi, th, phi, thd):
         s, c = np.sin(th), np.cos(th)
         psd = (self.b - self.c * c) / (s * s)

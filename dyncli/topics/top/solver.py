@@ -64,6 +64,12 @@ def solve(p, options=None) -> Result:
         out = ode_route.route(res, top, acc, np.array(y0, dtype=float), psi0, phi0, times, Wfast, Wp, scales,
                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot), bounds=(th_min, th_max))
         res.extra["sample"] = lambda ts: _resample(p, ts)
+        if p.find:                          # the search's motion: one run's steps, cut at exact extremes
+            from dyncli.motion_find import find_end
+
+            T = find_end(p)
+            res.extra["dense_motion"] = ode_route.dense_motion(top, acc, T, Wfast, Wp, bounds=(th_min, th_max),
+                                                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot))
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out
     _report_motion(res, p, out)
     _warn_poles(res, top, th_min, th_max, W3, ambiguous, n)
@@ -183,7 +189,7 @@ def _resample(p, ts):
     """(ψ, θ) of the integrated motion at other times (for plots): the same run on those times."""
     import numpy as np
 
-    R = solve(p.model_copy(update={"at": [float(t) for t in ts]})).results
+    R = solve(p.model_copy(update={"at": [float(t) for t in ts], "find": []})).results
     return np.asarray(R["psi"], dtype=float), np.asarray(R["theta"], dtype=float)
 
 

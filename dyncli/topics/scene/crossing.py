@@ -1,0 +1,140 @@
+"""The first crossing of a watched quantity of a scene over a span of its motion, decided by
+sign analysis, never by samples (docs/types/scene.md: which events are found).
+
+A watched quantity g (motion.watches: a normal force, a tension, a friction margin μ_s N ∓ F, a
+gap, a slip speed, a one-sided spring's stretch) is a smooth function of t within a phase.  Its
+roots are the sign changes found by :func:`dyncli.rootfind.all_roots` (Chebyshev cells halved
+until resolved; between the critical points of a cell's interpolant at most one root).  g is
+known to its rounding only (:func:`rounding`): an event is g passing below minus its rounding,
+then located on g itself, so that a gap at 0 as a body leaves its surface is not read as impacts
+in the noise.  The exact routes search whole pieces (routes.py); the ODE route screens each
+step's interpolant (:func:`step_screen`) and searches the steps the screen cannot clear.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from dyncli.errors import NumericalError
+from dyncli.rootfind import all_roots, brent
+
+from . import assembly
+
+EPS = float(np.finfo(float).eps)
+
+
+def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
+    """The rounding of each kind of watched quantity over a span that starts at (q, v, t) and
+    ends with the velocities ``v_end``: 64 ε of the scene's lengths (gaps, margins, stretches),
+    of its forces (the applied loads and the multipliers at the start) and of its speeds (at both
+    ends)."""
+    f, _P = s.applied(q, v, t)
+    lam = s.solve(q, v, t)[1]
+    big = lambda *xs: max([float(np.max(np.abs(x), initial=0.0)) for x in xs] + [1e-300])   # noqa: E731
+    L, F, V = assembly.length_scale(q, s), big(f, lam), big(v, v_end)
+    lengths, speeds = ("impact", "leaves", "switch", "taut"), ("sticks",)
+    return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in WATCHED}
+
+
+#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut), a speed
+#: (sticks) and forces (separates, slips, slack)
+WATCHED = ("impact", "leaves", "switch", "taut", "sticks", "separates", "slips", "slack")
+
+
+def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, cells: int) -> float | None:
+    """The first time in [a, b] where ``g`` (on arrays; known to ``tol``) crosses its event, or
+    None: down through −tol, then located on g itself (a one-sided spring's stretch, "switch",
+    either way).  At a phase's start (``start``) a quantity on its band of rounding goes off it
+    first (a force at 0 that goes negative is where the last phase ended; a stretch at 0 is where
+    the spring switched), except that a gap or a slip speed at 0 that goes negative is an event
+    there; elsewhere a quantity on its band comes from its side of 0 (a search resumed)."""
+    g0 = float(g(np.array([a]))[0])
+    if what == "switch" or abs(g0) <= tol and start and what not in ("sticks", "impact", "taut"):
+        if abs(g0) <= tol and start:    # off the band first: g² reaches (2 tol)²
+            off = _first_down(lambda ts: 4 * tol * tol - g(ts) ** 2, a, b, tol * tol, cells)
+            if off is None:
+                return None
+            a = off[0]
+            g0 = float(g(np.array([a]))[0])
+        sign = 1.0 if what != "switch" or g0 > 0 else -1.0
+    else:
+        sign = 1.0
+    got = _first_down(lambda ts: sign * g(ts) + tol, a, b, tol, cells)
+    if got is None:
+        return None
+    r, x = got                      # g's own root is the last before r: from x (g on the far side)
+    gr, gx = sign * float(g(np.array([r]))[0]), sign * float(g(np.array([x]))[0])
+    if not gr < 0 < gx:
+        return r
+    near = r - 2 * (r - x) * gr / (gr - gx)     # (the secant's root of g, twice as far: a tight bracket)
+    if x < near < r and sign * float(g(np.array([near]))[0]) > 0:
+        x = near
+    return brent(lambda t: sign * float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
+
+
+def _first_down(f, a: float, b: float, floor: float, cells: int) -> tuple[float, float] | None:
+    """The first root r in (a, b] where ``f`` (on arrays, smooth) turns negative, and a time
+    before it where f > 0 (the midpoint from the root before), or None; all_roots (``floor``:
+    the rounding of f) asked for the roots of its first cell that holds one, resumed after them
+    while none is r."""
+    lo = prev = a
+    while True:
+        roots, touches, bad = all_roots(f, lo, b, cells=cells, limit=FIRST_ROOTS, floor=floor)
+        best = None
+        for r in sorted(r for r in roots if r > lo):
+            if float(f(np.array([0.5 * (prev + r)]))[0]) > 0:
+                best = (r, 0.5 * (prev + r))
+                break
+            prev = r
+        # a cell still unresolved at the depth limit (2^-48 of its window) is a kink of g (a gap
+        # watched as |gap| − margin past a surface's end): no root where g is far off its rounding
+        bad = [m for m in bad if not abs(float(f(np.array([m]))[0])) > 2.0 ** 20 * floor]
+        if bad and (best is None or bad[0] < best[0]):
+            raise NumericalError(f"the forces of the joints could not be resolved near t = {bad[0]:.6g} s")
+        done = max(roots + touches, default=lo)
+        if best is not None or len(roots) + len(touches) <= FIRST_ROOTS or done <= lo:
+            return best
+        lo = done
+
+
+#: how many roots of a watched quantity one call of all_roots finds before the event is looked
+#: for: none beyond the first cell that holds one (cells are resolved from the left), since the
+#: first root is the event unless the quantity starts below it; resumed after it otherwise
+FIRST_ROOTS = 0
+#: the first window (s) of that search (at most, in motion), each next one 16 times wider:
+#: all_roots resolves a cell to 2^-48 of its starting width, so a load's period must not be lost
+#: in a window of 1e300 s
+FIRST_WINDOW = 64.0
+
+
+# ----------------------------------------------------------------------------- an ODE step
+
+#: the screen of an ODE step reads each watched quantity at the SCREEN + 1 Chebyshev–Lobatto
+#: points of the step (its ends included: the step's own two)
+SCREEN = 4
+_X = -np.cos(np.pi * np.arange(SCREEN + 1) / SCREEN)
+_TO_COEFFICIENTS = np.linalg.inv(np.polynomial.chebyshev.chebvander(_X, SCREEN))
+_FINE = np.polynomial.chebyshev.chebvander(np.linspace(-1.0, 1.0, 65), SCREEN)
+
+
+def screen_times(a: float, b: float) -> list[float]:
+    """The step's inner screening times (its Lobatto points but the ends)."""
+    return [float(0.5 * (a + b) + 0.5 * (b - a) * x) for x in _X[1:-1]]
+
+
+def step_screen(values, tol: float) -> str:
+    """What a watched quantity, known at the step's Lobatto points (``values``, ends included),
+    may do inside the step, from its interpolant p of degree SCREEN widened by the interpolation
+    error its last two Chebyshev coefficients show, by the most p changes between two of 65
+    points and by the quantity's rounding: "clear" (p stays off 0 by more than that: no root),
+    "monotone" (p changes sign once and is monotone: the one root, by Brent on the ends), else
+    "search" (:func:`first_crossing`)."""
+    c = _TO_COEFFICIENTS @ np.asarray(values, dtype=float)
+    p = _FINE @ c
+    d = np.diff(p)
+    err = 2.0 * (abs(float(c[-1])) + abs(float(c[-2]))) + float(np.max(np.abs(d))) + tol
+    if not float(np.min(p)) - err <= 0.0 <= float(np.max(p)) + err:
+        return "clear"
+    if p[0] * p[-1] < 0 and (np.all(d < 0) or np.all(d > 0)):
+        return "monotone"
+    return "search"

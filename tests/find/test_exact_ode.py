@@ -1,0 +1,239 @@
+"""``find`` decided exactly on the ODE routes (issue #28 item 1): a level crossed up and down
+inside one ODE step is found, never stepped over.
+
+Every case below was answered "not reached" (exit 0, only a "not reached" warning) by the search
+that sampled the step ends (and, for the top, a grid of 32 points per turn of its fastest rate):
+the quantity asked dips through the level and back inside one step whose ends lie on the same
+side.  Now each step is cut at the exact extremes of the quantity along the step's dense
+polynomial (``dyncli.rootfind.polynomial_extremes`` for a coordinate,
+``dyncli.rootfind.smooth_extremes`` for any other result), so it is monotone between two cuts.
+
+References, never dyncli's output:
+
+* ``particle`` and ``constrained-particle`` (a straight wire): the force 2(t − 1) on m = 1 from
+  v(0) = 1 − ε gives v = −ε + (t − 1)², T = ½v²; T = ½(ε/2)² where (t − 1)² = ε ± ε/2, and the
+  coordinate q = −εt + ((t − 1)³ + 1)/3 (closed forms, in mpmath).
+* ``particles``: two unit masses joined by a spring k = ½, L = 0: the relative motion is
+  harmonic (ω = √(2k) = 1), so x₀(t) = Vt + (w/ω) sin ωt exactly; with w = V(1 + δ) particle 0
+  steps back for a moment around t = π (mpmath).
+* ``top``: a top released with ψ̇₀ = −δ loops: ψ̇ < 0 for ~4e-4 s at each lowest point of the
+  nutation, and ψ steps back by 2e-8 rad there; the reference is a second integration of the
+  reduced equations (38.18) with p_ψ and ω₃ held, written here (scipy's DOP853 at rtol 1e-13).
+
+Tolerances: a crossing's time is off by the error of the quantity (``tests.tolerances.ode``
+times its scale) over its rate there.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from .refs import entry, solve
+from tests.tolerances import ode
+
+MPMATH_DPS = 30
+
+
+# --- the numerics: exact extremes of a smooth function between breaks --------------------------
+
+def test_smooth_extremes_finds_every_critical_point_and_a_kink():
+    from dyncli.rootfind import smooth_extremes
+
+    B = np.linspace(0.0, 10.0, 41)
+    cuts, ok = smooth_extremes(lambda t: np.stack([np.sin(3 * t), np.exp(-t), 1 + 0 * t]), B)
+    assert ok
+    want = [(2 * k + 1) * math.pi / 6 for k in range(10)]          # the extremes of sin 3t in (0, 10)
+    assert len(cuts[0]) == len(want) and max(abs(a - b) for a, b in zip(cuts[0], want)) < 1e-12
+    assert cuts[1] == [] and cuts[2] == []                          # monotone, constant: no cut
+    cuts, ok = smooth_extremes(lambda t: np.abs(np.sin(t)), B)      # kinks at π, 2π, 3π: cut at each
+    assert ok
+    for k in (1, 2, 3):
+        assert min(abs(c - k * math.pi) for c in cuts[0]) < 1e-12
+    cuts, ok = smooth_extremes(lambda t: 1 / (t - 2.5), B[:11])     # a pole: not resolved
+    assert not ok
+
+
+# --- particle and constrained-particle: T dips to 0 and back inside one step -----------------
+
+EPS = 1e-2
+
+
+def _t_crossings():
+    """The four times T = ½(ε/2)² (closed form)."""
+    with mp.workdps(MPMATH_DPS):
+        return _t_crossings_mp()
+
+
+def _t_crossings_mp():
+    e = mp.mpf(EPS)
+    return [float(1 + s * mp.sqrt(e * f)) for s, f in ((-1, 1.5), (-1, 0.5), (1, 0.5), (1, 1.5))]
+
+
+def _q(t):
+    e = mp.mpf(EPS)
+    return -e * t + ((t - 1) ** 3 + 1) / 3
+
+
+def _q_crossings():
+    """The level halfway through q's backward step (its local max at 1 − √ε, min at 1 + √ε) and
+    the three times q reaches it (mpmath)."""
+    with mp.workdps(MPMATH_DPS):
+        return _q_crossings_mp()
+
+
+def _q_crossings_mp():
+    e = mp.mpf(EPS)
+    r1, r2 = 1 - mp.sqrt(e), 1 + mp.sqrt(e)
+    Q = (_q(r1) + _q(r2)) / 2
+    f = lambda t: _q(t) - Q                                         # noqa: E731
+    return float(Q), [float(mp.findroot(f, ab, solver="bisect")) for ab in ((0.5, r1), (r1, r2), (r2, 1.5))]
+
+
+def _v(t: float) -> float:
+    return -EPS + (t - 1) ** 2
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-9])
+def test_particle_kinetic_energy_dips_inside_one_step(rtol):
+    X = 0.5 * (EPS / 2) ** 2
+    R, _ = solve(f"""
+type: particle
+m: 1
+x0: [0, 0, 0]
+v0: [{1 - EPS!r}, 0, 0]
+forces:
+  - {{kind: custom, F: ["2*(t-1)", "0", "0"]}}
+t_end: 2
+find:
+  - {{when: {{T: {X!r}}}}}
+  - {{when: {{T: {X!r}}}, occurrence: 2}}
+  - {{when: {{T: {X!r}}}, occurrence: 3}}
+  - {{when: {{T: {X!r}}}, occurrence: 4}}
+  - {{max: T, within: [0.95, 1.05]}}
+accuracy: {{rtol: {rtol!r}}}
+""")
+    for k, t in enumerate(_t_crossings()):
+        # T's error is |v| times v's (ode(rtol) of v's scale 1), its rate |v a|: Δt ≤ ode(rtol)/|a|
+        assert abs(entry(R, k)["t"] - t) <= ode(rtol) / abs(2 * (t - 1)), k
+    top = entry(R, 4)                                               # the local maximum ½ε² at t = 1
+    assert top["t"] == pytest.approx(1.0, abs=math.sqrt(ode(rtol)))
+    assert top["T"] == pytest.approx(0.5 * EPS ** 2, rel=ode(rtol) / EPS)
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-9])
+def test_constrained_particle_dips_inside_one_step(rtol):
+    X = 0.5 * (EPS / 2) ** 2
+    Q, qs = _q_crossings()
+    R, _ = solve(f"""
+type: constrained-particle
+m: 1
+curve: {{x1: q, x2: 0, x3: 0}}
+q_dot0: {1 - EPS!r}
+forces:
+  - {{kind: custom, F: ["2*(t-1)", "0", "0"]}}
+t_end: 2
+find:
+  - {{when: {{T: {X!r}}}, occurrence: 3}}
+  - {{when: {{T: {X!r}}}, occurrence: 4}}
+  - {{when: {{q: {Q!r}}}, occurrence: 2}}
+  - {{when: {{q: {Q!r}}}, occurrence: 3}}
+  - {{when: {{x.0: {Q!r}}}, occurrence: 3}}
+accuracy: {{rtol: {rtol!r}, method: ode}}
+""")
+    t3, t4 = _t_crossings()[2:]
+    assert abs(entry(R, 0)["t"] - t3) <= ode(rtol) / abs(2 * (t3 - 1))
+    assert abs(entry(R, 1)["t"] - t4) <= ode(rtol) / abs(2 * (t4 - 1))
+    for k, t in ((2, qs[1]), (3, qs[2]), (4, qs[2])):
+        # q's error (ode(rtol) of its scale ~1) over its rate there
+        assert abs(entry(R, k)["t"] - t) <= ode(rtol) / abs(_v(t)), k
+
+
+# --- particles: a particle steps back for a moment inside one step ---------------------------
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-8])
+def test_particles_backward_step_inside_one_step(rtol):
+    V, delta = 1.0, 1e-3
+    w = V * (1 + delta)
+    x = lambda t: V * t + w * mp.sin(t)                              # noqa: E731
+    v = lambda t: V + w * mp.cos(t)                                  # noqa: E731
+    with mp.workdps(MPMATH_DPS):
+        r1, r2 = (mp.findroot(v, ab, solver="bisect") for ab in ((mp.pi - 0.3, mp.pi), (mp.pi, mp.pi + 0.3)))
+        X = (x(r1) + x(r2)) / 2
+        want = [mp.findroot(lambda t: x(t) - X, ab, solver="bisect") for ab in ((2, r1), (r1, r2), (r2, 4.5))]
+        speeds = [float(abs(v(t))) for t in want]
+    R, _ = solve(f"""
+type: particles
+particles:
+  - {{m: 1, x: [0, 0, 0], v: [{V + w!r}, 0, 0]}}
+  - {{m: 1, x: [0, 1, 0], v: [{V - w!r}, 0, 0]}}
+pairs:
+  - {{between: [0, 1], kind: spring, k: 0.5, L: 0}}
+t_end: 5
+find:
+  - {{when: {{x_motion.0.0: {float(X)!r}}}}}
+  - {{when: {{x_motion.0.0: {float(X)!r}}}, occurrence: 2}}
+  - {{when: {{x_motion.0.0: {float(X)!r}}}, occurrence: 3}}
+accuracy: {{rtol: {rtol!r}}}
+""")
+    for k, (t, speed) in enumerate(zip(want, speeds)):
+        # x's error (ode(rtol) of its scale, 5 m over the run) over the speed there
+        assert abs(entry(R, k)["t"] - float(t)) <= ode(rtol) * 5 / speed, k
+
+
+# --- top: a looping top's ψ steps back by 2e-8 rad inside one step ---------------------------
+
+def _top_reference(delta: float, t_end: float):
+    """ψ(t) and ψ̇(t) of the top below from (38.18) with p_ψ, ω₃ held (scipy, rtol 1e-13)."""
+    from scipy.integrate import solve_ivp
+
+    m, L, A, C, g, th0, phd0 = 0.5, 0.05, 2e-3, 1e-3, 9.81, 0.5, 100.0
+    w3 = -delta * math.cos(th0) + phd0
+    c = C * w3 / A
+    b = -delta * math.sin(th0) ** 2 + c * math.cos(th0)
+    kg = m * g * L / A
+
+    def rhs(t, y):
+        s, co = math.sin(y[0]), math.cos(y[0])
+        psd = (b - c * co) / (s * s)
+        return [y[1], s * (psd * (psd * co - c) + kg), psd]
+
+    sol = solve_ivp(rhs, (0.0, t_end), [th0, 0.0, 0.0], method="DOP853", rtol=1e-13, atol=1e-16, dense_output=True)
+    psi = lambda t: float(sol.sol(t)[2])                                            # noqa: E731
+    psd = lambda t: (b - c * math.cos(sol.sol(t)[0])) / math.sin(sol.sol(t)[0]) ** 2  # noqa: E731
+    return psi, psd
+
+
+@pytest.mark.parametrize("rtol", [1e-10])
+def test_top_psi_steps_back_inside_one_step(rtol):
+    from scipy.optimize import brentq
+
+    delta = 1e-4
+    psi, psd = _top_reference(delta, 0.2)
+    ts = np.linspace(0.1, 0.16, 60001)                               # ψ̇'s roots near the second lowest point
+    P = [psd(t) for t in ts]
+    r1, r2 = (brentq(psd, ts[k], ts[k + 1], xtol=1e-16) for k in range(len(ts) - 1) if P[k] * P[k + 1] < 0)
+    X = 0.5 * (psi(r1) + psi(r2))
+    want = [brentq(lambda t: psi(t) - X, a, b, xtol=1e-16) for a, b in ((0.1, r1), (r1, r2), (r2, 0.16))]
+    R, _ = solve(f"""
+type: top
+m: 0.5
+L: 0.05
+I11: 2.0e-3
+I33: 1.0e-3
+theta: 0.5
+psi_dot: {-delta!r}
+phi_dot: 100
+at: [0.2]
+find:
+  - {{when: {{psi: {X!r}}}}}
+  - {{when: {{psi: {X!r}}}, occurrence: 2}}
+  - {{when: {{psi: {X!r}}}, occurrence: 3}}
+accuracy: {{rtol: {rtol!r}, method: DOP853}}
+""")
+    for k, t in enumerate(want):
+        # ψ's error (ode(rtol) of its scale, 0.5 rad) over ψ̇ there
+        assert abs(entry(R, k)["t"] - t) <= ode(rtol) * 0.5 / abs(psd(t)), k
