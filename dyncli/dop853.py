@@ -331,10 +331,13 @@ class OdeSolution:
         segment = min(max(ind - 1, 0), self.n_segments - 1)
         return segment if self.ascending else self.n_segments - 1 - segment
 
-    def __call__(self, t):
+    def __call__(self, t, rows: slice | None = None):
+        """The states at ``t`` (a time or a 1-D array of times); ``rows``: only those components
+        (the same values as the whole state's rows: every operation is element by element)."""
         t = np.asarray(t)
         if t.ndim == 0:
-            return self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
+            y = self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
+            return y if rows is None else y[rows]
         order = np.argsort(t, kind="stable")     # (linear on times already in order)
         reverse = np.empty_like(order)
         reverse[order] = np.arange(order.shape[0])
@@ -347,10 +350,10 @@ class OdeSolution:
         cuts = np.flatnonzero(np.diff(segments)) + 1
         stack = self._stacked() if cuts.size and t.size < 32 * (cuts.size + 1) else None
         if stack is not None:               # many steps, few times in each: every step's polynomial at once
-            return _evaluate(stack, segments, t_sorted)[:, reverse]
+            return _evaluate(stack, segments, t_sorted, rows)[:, reverse]
         bounds = [0] + cuts.tolist() + [t.size]
         ys = [self.interpolants[int(segments[i])](t_sorted[i:j]) for i, j in zip(bounds[:-1], bounds[1:])]
-        return np.hstack(ys)[:, reverse]
+        return np.hstack(ys if rows is None else [y[rows] for y in ys])[:, reverse]
 
     def _stacked(self):
         """(t_old, h, F, y_old) of every step stacked, when every step is a :class:`DenseOutput`
@@ -363,10 +366,13 @@ class OdeSolution:
         return self._stack
 
 
-def _evaluate(stack, segments, t):
+def _evaluate(stack, segments, t, rows: slice | None = None):
     """:meth:`DenseOutput._call_impl` of the steps ``segments`` at the times ``t`` in one
-    vectorised pass: the same operations on the same doubles, so the same values."""
+    vectorised pass: the same operations on the same doubles, so the same values (``rows``: of
+    those components only)."""
     t_old, h, F, y_old = stack
+    if rows is not None:
+        F, y_old = F[:, :, rows], y_old[:, rows]
     x = ((t - t_old[segments]) / h[segments])[:, None]
     y = np.zeros((t.size, y_old.shape[1]), dtype=y_old.dtype)
     for i in range(F.shape[1]):

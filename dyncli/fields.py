@@ -320,6 +320,9 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
             value = [value]
         if len(value) > max_len:
             raise _err(f"too many times ({len(value)}, at most {max_len})")
+        fast = _plain_times(value, from_zero)
+        if fast is not None:
+            return fast
         out = []
         for i, x in enumerate(value):
             try:
@@ -332,6 +335,22 @@ def Times(*, max_len: int = MAX_TIMES, description: str = "times at which to rep
 
     schema = {"type": "array", "items": NUMBER_SCHEMA, "description": description}
     return FieldSpec(validate, schema)
+
+
+def _plain_times(value, from_zero: bool) -> list[float] | None:
+    """``value`` as floats when every entry is a plain int or float, all finite (and ≥ 0 with
+    ``from_zero``): what the entry-by-entry check gives such a list, decided at C speed (a list
+    of 1e5 times); None otherwise (the entries then checked one by one, with their messages)."""
+    if not set(map(type, value)) <= {float, int}:
+        return None
+    try:
+        out = list(map(float, value))
+        total = sum(out)
+    except OverflowError:
+        return None
+    if not math.isfinite(total) or (from_zero and out and min(out) < 0):
+        return None
+    return out
 
 
 def check_times(p) -> None:

@@ -144,11 +144,20 @@ def search_end(t_end: float, find: Any, constant: Callable[[Any], float]) -> flo
 
 
 def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: Callable[[str], None] | None = None,
-                full: Callable[[float], Mapping] | None = None, stopped: str | None = None) -> list[dict]:
+                full: Callable[[float], Mapping] | None = None, stopped: str | None = None,
+                memo: Any = None) -> list[dict]:
     """One entry per query of ``raw`` (the problem's ``find`` list): ``{t, reached, at_end}`` and
     the whole state at ``t`` (``full(t)``, default ``motion.state``) when reached; a warning per
-    query not reached (``stopped``: why the motion ends early, said in that warning)."""
-    qs = _q.parse_queries(raw, constant)
+    query not reached (``stopped``: why the motion ends early, said in that warning).  ``memo``:
+    the plain data ``constant`` depends on (the params as written), when given the parsed
+    queries are remembered for equal ``raw`` and ``memo`` (:mod:`dyncli.docmemo`: the points of
+    a sweep parse them once)."""
+    if memo is None:
+        qs = _q.parse_queries(raw, constant)
+    else:
+        from dyncli.docmemo import recall
+
+        qs = recall("find", (raw, memo), lambda: _q.parse_queries(raw, constant))
     full = full or motion.state
     period = getattr(motion, "period", None)
     one = motion.clipped(motion.t0 + period) if period and motion.t_end - motion.t0 > period else None

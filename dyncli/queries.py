@@ -5,7 +5,8 @@ answers it against any motion with: ``t0``, ``t_end`` (floats); ``breaks`` (incr
 from t0 to t_end: step ends or natural pieces; the results are smooth between two breaks);
 optional ``subdivide`` (the pieces each break interval is cut into, default SUBDIVIDE);
 ``paths()`` (the valid scalar result paths); ``value(path, t) -> float`` (KeyError for an
-unknown path); optional ``rate(path, t) -> float | None`` (the time derivative when known);
+unknown path); optional ``function(path)`` (``t -> value(path, t)`` as one callable, or None:
+a search calls it without the dispatch of ``value``); optional ``rate(path, t) -> float | None`` (the time derivative when known);
 optional ``rtol`` (the values' relative accuracy, default 0: exact to rounding; it widens the
 tolerance within which a value touches VALUE and two extremes are equal); optional ``monotone``
 (True when every result asked about is monotone between two breaks — the breaks hold all its
@@ -205,7 +206,7 @@ def _check_path(motion: Any, path: str, where: str) -> None:
 
 def sample_grid(breaks: Iterable[float], lo: float, hi: float, n: int = SUBDIVIDE) -> list[float]:
     """lo, the breaks inside (lo, hi) and hi, each interval cut into n (SUBDIVIDE) equal pieces."""
-    pts = [lo] + sorted(float(b) for b in breaks if lo < b < hi) + [hi]
+    pts = [lo, *sorted(map(float, [b for b in breaks if lo < b < hi])), hi]
     if n == 1:                                        # the breaks themselves, without repeats
         return [x for i, x in enumerate(pts) if i == 0 or x > pts[i - 1]]
     out = [lo]
@@ -218,6 +219,14 @@ def subdivisions(motion: Any) -> int:
     """How many pieces each break interval is cut into: ``motion.subdivide`` (1 for the steps of
     an ODE, already short beside the motion) or SUBDIVIDE."""
     return int(getattr(motion, "subdivide", SUBDIVIDE) or SUBDIVIDE)
+
+
+def _value_fn(motion: Any, path: str) -> Callable[[float], float]:
+    """t -> the value of ``path`` as a float: ``motion.function(path)`` when the motion gives one
+    (the numbers of ``value``, without its dispatch per call), else ``value(path, t)``."""
+    own = getattr(motion, "function", None)
+    fn = own(path) if callable(own) else None
+    return fn if fn is not None else (lambda t: float(motion.value(path, t)))
 
 
 def _rate_fn(motion: Any, path: str, t0: float):
@@ -241,14 +250,14 @@ def _when(motion: Any, q: When) -> float | None:
     T = sample_grid(_breaks(motion, path), float(motion.t0), float(motion.t_end), subdivisions(motion))
     want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
     ahead = getattr(motion, "prefetch", None)
+    f = _value_fn(motion, path)
     F: list[float] = []
     m = min(len(T), FIRST_PREFIX)
     while True:
         if callable(ahead) and m < len(T):
             ahead(T[m - 1])
-        F += [float(motion.value(path, t)) for t in T[len(F):m]]
-        scan = _Crossings(lambda t: float(motion.value(path, t)) - V, rate, T[:m], [f - V for f in F],
-                          _tol(motion, max([abs(V)] + [abs(f) for f in F])))
+        F += map(f, T[len(F):m])
+        scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])))
         safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
         hits = [t for t, d in scan.events(want, q.occurrence, safe, _monotone(motion)) if (want is None or d == want) and t <= safe]
         if len(hits) >= q.occurrence:
@@ -271,8 +280,11 @@ class _Crossings:
     for the n-th event stops once it has n and no span left starts before the n-th (the events
     it returns up to there are those of the full scan)."""
 
-    def __init__(self, g, rate, T, G, tol):
-        self.g, self.rate, self.T, self.G, self.tol, self.S = g, rate, T, G, tol, [_sign(x, tol) for x in G]
+    def __init__(self, f, V, rate, T, G, tol):
+        self.g = lambda t: f(t) - V       # noqa: E731
+        self.f, self.V = f, V
+        self.rate, self.T, self.G, self.tol = rate, T, G, tol
+        self.S: list[int] = []
         self.found: list[tuple[float, int]] = []
         self.spans: list[tuple[float, int, Callable[[], None]]] = []
 
@@ -281,8 +293,11 @@ class _Crossings:
         """The events, all of them, or (``occurrence``) at least every one up to the
         ``occurrence``-th in direction ``want`` at or before ``safe``; ``monotone``: g is monotone
         between two samples (no dip to look for inside a span)."""
-        if not monotone:
-            self._dips()
+        if monotone:        # only the spans of the signs, met in order of their start: solved as met
+            return self._events_in_order(want, occurrence, safe)
+        tol = self.tol
+        self.S = [0 if abs(x) <= tol else (1 if x > 0 else -1) for x in self.G]     # (_sign)
+        self._dips()
         self._signs()
         spans = sorted(self.spans, key=lambda s: (s[0], s[1]))
         for i, (_, _, solve) in enumerate(spans):
@@ -293,6 +308,21 @@ class _Crossings:
                     break
         return sorted(self.found)
 
+    def _events_in_order(self, want: int | None, occurrence: int | None, safe: float) -> list[tuple[float, int]]:
+        """:meth:`events` of a monotone g: the spans of :meth:`_sign_spans` come in order of their
+        start, so each is solved when met and the search stops at the first span that starts
+        after the ``occurrence``-th event (the same spans solved, and the same events, as
+        :meth:`events` solving the sorted list)."""
+        solved = False
+        for start, solve in self._sign_spans():
+            if solved and occurrence is not None:
+                hits = sorted(t for t, d in self.found if (want is None or d == want) and t <= safe)
+                if len(hits) >= occurrence and start > hits[occurrence - 1]:
+                    break
+            solve()
+            solved = True
+        return sorted(self.found)
+
     def _later(self, start: float, solve: Callable[[], None]) -> None:
         """A span from ``start`` that may hold events: ``solve`` finds them (when asked)."""
         self.spans.append((start, len(self.spans), solve))
@@ -300,10 +330,10 @@ class _Crossings:
     def first_reach(self, a: float, b: float, s: int) -> float:
         """The first time in [a, b] with s*g <= 0 (s*g(a) > 0 >= s*g(b)): the root of s*g with
         an exact zero counted as negative (:func:`_hr_psi`, written out: one call per value)."""
-        g = self.g
+        f, V = self.f, self.V
 
         def psi(t: float) -> float:
-            y = s * g(t)
+            y = s * (f(t) - V)
             return y if y != 0 else -_TINY
 
         return root(psi, a, b)
@@ -346,18 +376,25 @@ class _Crossings:
 
     def _signs(self) -> None:
         """Sign changes between samples off VALUE, runs of samples on it (within tolerance)."""
-        T, S = self.T, self.S
+        for start, solve in self._sign_spans():
+            self._later(start, solve)
+
+    def _sign_spans(self):
+        """(start, solve) of each span of :meth:`_signs`, in order of the samples (so of start)."""
+        T, G, tol = self.T, self.G, self.tol
         sp: int | None = None                         # the last sample off VALUE: its side, index
         ip = -1                                       # (read only once sp is set)
-        for i, s in enumerate(S):
-            if s != 0 and sp is not None and s != sp:     # crossed (possibly through samples on VALUE)
-                self._later(T[ip], partial(self.crossing, T[ip], T[i], sp))
-            elif s != 0 and sp is not None and i - ip > 1:    # came to VALUE and went back: a touch
-                self._later(T[ip], partial(self.dip, T[ip], T[i], sp, range(ip + 1, i)))
-            if s != 0:
-                sp, ip = s, i                         # (sp None before: a value held at the start)
+        for i, x in enumerate(G):
+            if abs(x) <= tol:                         # on VALUE (_sign 0)
+                continue
+            s = 1 if x > 0 else -1
+            if sp is not None and s != sp:            # crossed (possibly through samples on VALUE)
+                yield T[ip], partial(self.crossing, T[ip], T[i], sp)
+            elif sp is not None and i - ip > 1:       # came to VALUE and went back: a touch
+                yield T[ip], partial(self.dip, T[ip], T[i], sp, range(ip + 1, i))
+            sp, ip = s, i                             # (sp None before: a value held at the start)
         if sp is not None and ip < len(T) - 1:        # reaches VALUE and stays on it to the end
-            self._later(T[ip], partial(self._stays, ip, sp))
+            yield T[ip], partial(self._stays, ip, sp)
 
     def _stays(self, ip: int, sp: int) -> None:
         """The event of a motion that reaches VALUE after the sample ``ip`` and stays on it."""
@@ -374,13 +411,15 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     w1, w2 = max((q.within or (t0,))[0], t0), min((q.within or (0, t_end))[1], t_end)
     if w1 > w2:
         return None, None
-    sense, path, rate = (1.0 if q.kind == "max" else -1.0), q.path, _rate_fn(motion, q.path, w1)
-    h = lambda t: sense * float(motion.value(path, t))     # noqa: E731
+    sense, path, monotone = (1.0 if q.kind == "max" else -1.0), q.path, _monotone(motion)
+    rate = _rate_fn(motion, q.path, w1)
+    f = _value_fn(motion, path)
+    h = lambda t: sense * f(t)     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
     T = sample_grid(_breaks(motion, path), w1, w2, subdivisions(motion))
-    H = [h(t) for t in T]
+    H = list(map(f, T)) if sense > 0 else [-y for y in map(f, T)]       # (h at each: ±1.0·y is ±y)
     cands = [(T[0], H[0]), (T[-1], H[-1])]
-    if _monotone(motion):                             # the turning points are samples: no search
+    if monotone:                                      # the turning points are samples: no search
         peaks = [j for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
         cands += [(T[j], H[j]) for j in peaks]
         best = max(c[1] for c in cands)
@@ -401,7 +440,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)
-    tol = _tol(motion, max(abs(x) for x in H + [best]))
+    tol = _tol(motion, max([*map(abs, H), abs(best)]))
     t = min(c[0] for c in cands if c[1] >= best - tol)
     return t, (t == w1 or t == w2)
 

@@ -273,8 +273,11 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
         stream = RecordStream(fmt, long) if streamed else None
         notes: list[str] = []
         table = emit.TableWriter(digits, wanted, wide, sweep=bool(sweeps)) if fmt == "table" else None
+        # made one at a time (overrides.expand: no problem reads another's outcome), a streamed
+        # problem's outcome is let go once written: freed while collections are off, not walked after
+        forget = stream is not None and not isinstance(problems, list)
         outcomes = _solve_all(problems, SolveOptions(symbolic=symbolic), codes, debug,
-                              table if table is not None else stream, notes, keep=stream is None)
+                              table if table is not None else stream, notes, keep=stream is None, forget=forget)
         if stream is not None:
             stream.close()
         elif table is not None:
@@ -289,15 +292,19 @@ def solve_command(files, fmt: str, *, symbolic=False, digits=6, units=None, plot
     return worst(codes)
 
 
-def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, notes=None, keep=True) -> list[Outcome]:
+def _solve_all(problems, options, codes: list[int], debug: bool, writer=None, notes=None, keep=True,
+               forget=False) -> list[Outcome]:
     """Solve each problem, its messages to stderr, its output to ``writer``
     (the table, or a :class:`~dyncli.render.stream.RecordStream` that takes
     failures too) as it is solved; the outcomes kept when ``keep`` (else only
-    the results' warnings, in ``notes``: a streamed sweep holds one point)."""
+    the results' warnings, in ``notes``: a streamed sweep holds one point);
+    ``forget``: nothing reads a problem's outcome after it is written (``lp.outcome`` cleared)."""
     outcomes: list[Outcome] = []
     for lp in problems:
         with _no_gc(True):          # one problem's results (1e5 times: millions of lists) built and written
             _one(lp, options, codes, debug, writer, notes, keep, outcomes)      # without collections walking them
+            if forget:
+                lp.outcome = None
     return outcomes
 
 

@@ -103,6 +103,8 @@ def parse(
 def constant(text: Any, params: Mapping[str, float] | None = None) -> float:
     """Parse and evaluate a constant expression or number to a float
     (may be +-inf for a YAML ``.inf``; never NaN)."""
+    if type(text) is float and text == text:        # a plain number (not NaN): the value of its Expr
+        return text
     e = parse(text, (), params)
     v = e.value()
     if math.isnan(v):

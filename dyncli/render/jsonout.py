@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+from operator import itemgetter
 from typing import Any
 
 
@@ -103,9 +104,11 @@ def _array(x) -> Any:
     return jsonable(x.tolist())
 
 
-def jsonable(x: Any) -> Any:
+def jsonable(x: Any, seen: dict | None = None) -> Any:
     """numpy scalars/arrays, tuples, Expr... -> plain JSON values.
-    Non-finite floats become None."""
+    Non-finite floats become None.  ``seen``: the lists kept as they are after a check (numbers,
+    rows of numbers: "n"; flat records: "r") are noted there by id (with the list), so that
+    :func:`encode_parts` given the same ``seen`` does not check them again."""
     if x is None or isinstance(x, (bool, str)):
         return x
     if isinstance(x, int):
@@ -115,11 +118,15 @@ def jsonable(x: Any) -> Any:
     if isinstance(x, dict):
         if type(x) is dict and _flat_dict(x):
             return x
-        return {str(k): jsonable(v) for k, v in x.items()}
-    if isinstance(x, list) and (_floats(x) is not None or _number_rows(x) or _records(x)):
-        return x
+        return {str(k): jsonable(v, seen) for k, v in x.items()}
+    if isinstance(x, list):
+        kind = "n" if _floats(x) is not None or _number_rows(x) else ("r" if _records(x) else None)
+        if kind is not None:
+            if seen is not None and type(x) is list and x:
+                seen[id(x)] = (kind, x)
+            return x
     if isinstance(x, (list, tuple)):
-        return [jsonable(v) for v in x]
+        return [jsonable(v, seen) for v in x]
     mod = type(x).__module__
     if mod.startswith("numpy"):
         import numpy as np
@@ -146,8 +153,8 @@ def input_sha256(raw: Any) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
-    """One JSON object of the output array (docs/cli.md)."""
+def problem_record(lp, result=None, error=None, exit_code: int = 0, seen: dict | None = None) -> dict:
+    """One JSON object of the output array (docs/cli.md); ``seen``: see :func:`jsonable`."""
     from dyncli import __version__
 
     rec: dict[str, Any] = {
@@ -159,7 +166,7 @@ def problem_record(lp, result=None, error=None, exit_code: int = 0) -> dict:
     if getattr(lp, "swept", None):
         rec["swept"] = jsonable(lp.swept)
     if result is not None:
-        rec["results"] = jsonable(result.results)
+        rec["results"] = jsonable(result.results, seen)
         rec["method"] = result.method
         if result.error_estimate is not None or result.method not in ("closed-form",):
             rec["error_estimate"] = jsonable(result.error_estimate)
@@ -198,7 +205,7 @@ def _numeric(x: list) -> bool:
 _NUMBERS = 1        # the mark of a list written by repr (a series of flat records: its keys)
 
 
-def _leaves(x: Any, out: list, marks: dict) -> None:
+def _leaves(x: Any, out: list, marks: dict, seen: dict | None = None) -> None:
     """Every key and scalar of ``x`` in writing order, but those of the lists marked in
     ``marks`` (by id): numeric lists (written by ``repr``: the same text as ``json.dumps``) and
     series of flat records (:func:`_records_text`: their distinct keys once, then their values
@@ -208,13 +215,15 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
             out.append(str(k))
             t = type(v)
             if t is dict or t is list:
-                _leaves(v, out, marks)
+                _leaves(v, out, marks, seen)
             else:
                 out.append(v)
     elif type(x) is list and x:
-        if _numeric(x):
+        got = seen.get(id(x)) if seen else None
+        kind = got[0] if got is not None and got[1] is x else None     # checked by jsonable already
+        if kind == "n" or (kind is None and _numeric(x)):
             marks[id(x)] = _NUMBERS
-        elif _records(x):
+        elif kind == "r" or _records(x):
             from itertools import chain
 
             keys = list(dict.fromkeys(chain.from_iterable(x)))     # each key once, in order of first use
@@ -224,7 +233,7 @@ def _leaves(x: Any, out: list, marks: dict) -> None:
                 out.extend(v for rec in x for v in rec.values() if type(v) not in _REPR)
         else:
             for v in x:
-                _leaves(v, out, marks)
+                _leaves(v, out, marks, seen)
     elif type(x) is not list:
         out.append(x)
 
@@ -298,10 +307,43 @@ def _records_text(x: list, indent: str, keys: list, text) -> str:
     inner, deeper = indent + "  ", indent + "    "
     heads = {k: f"{deeper}{next(text)}: " for k in keys}
     open_, close, rows = inner + "{\n", "\n" + inner + "}", []
+    columns = _column_texts(x, keys)
+    if columns is not None:         # every record the same keys, each a column of one kind: no call per value
+        texts, lists = columns
+        row = (open_ + ",\n".join(heads[k].replace("%", "%%") + ("[%s]" if listed else "%s")
+                                   for k, listed in zip(keys, lists)) + close).__mod__
+        return "[\n" + ",\n".join(map(row, zip(*texts))) + "\n" + indent + "]"
     for rec in x:
         rows.append(open_ + ",\n".join([heads[k] + (repr(v) if type(v) in _REPR else next(text))
                                         for k, v in rec.items()]) + close)
     return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
+
+
+def _column_texts(x: list, keys: list) -> tuple[list[list[str]], list[bool]] | None:
+    """The JSON of each record's value of each of ``keys`` (one list per key, in record order;
+    a list's without its brackets) and whether the key's values are lists, when every record of
+    ``x`` has exactly ``keys`` in that order and each key's values are all numbers or all lists
+    of numbers (every one finite: :func:`_records`), else None.  One
+    ``repr`` per column, cut at its separators (", " between numbers, "], [" between lists:
+    neither occurs inside a number's text), so each piece is the ``repr`` of its value."""
+    if len(x) < 64 or any(list(rec) != keys for rec in (x[0], x[-1])):
+        return None
+    if set(map(tuple, x)) != {tuple(keys)}:
+        return None
+    out, lists = [], []
+    for k in keys:
+        col = list(map(itemgetter(k), x))
+        kinds = set(map(type, col))
+        if kinds <= {float, int}:
+            out.append(repr(col)[1:-1].split(", "))
+        elif kinds == {list}:
+            out.append(repr(col)[2:-2].split("], ["))
+        else:
+            return None
+        lists.append(kinds == {list})
+        if len(out[-1]) != len(x):              # (a guard: a piece per record, or the slow way)
+            return None
+    return out, lists
 
 
 def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
@@ -312,12 +354,13 @@ def encode(record: Any, indent: str = "", ascii_only: bool = False) -> str:
     return "".join(encode_parts(record, indent, ascii_only))
 
 
-def encode_parts(record: Any, indent: str = "", ascii_only: bool = False) -> list[str]:
+def encode_parts(record: Any, indent: str = "", ascii_only: bool = False, seen: dict | None = None) -> list[str]:
     """:func:`encode` as the list of its pieces, in order (a stream writes them one after the
-    other: a record of 1e5 times is ~70 MB, not joined and copied again)."""
+    other: a record of 1e5 times is ~70 MB, not joined and copied again); ``seen``: the lists
+    :func:`jsonable` checked in making ``record`` (their checks not repeated)."""
     leaves: list = []
     marks: dict = {}
-    _leaves(record, leaves, marks)
+    _leaves(record, leaves, marks, seen)
     text = json.dumps(leaves, ensure_ascii=ascii_only, allow_nan=False, separators=("\n", ": "))
     parts: list[str] = []
     _layout(record, indent, iter(text[1:-1].split("\n") if leaves else ()), parts, marks)

@@ -25,9 +25,18 @@ CHUNK = 1 << 20
 def _write_joined(parts: list[str]) -> None:
     """``parts`` to stdout in order, joined into writes of about :data:`CHUNK` characters."""
     write = sys.stdout.write
+    if sum(map(len, parts)) < CHUNK:                # (a sweep point's record: one write)
+        write("".join(parts))
+        return
     buf: list[str] = []
     size = 0
     for p in parts:
+        if len(p) >= CHUNK:                         # a long series' text: written as it is (not copied)
+            if buf:
+                write("".join(buf))
+                buf, size = [], 0
+            write(p)
+            continue
         buf.append(p)
         size += len(p)
         if size >= CHUNK:
@@ -61,11 +70,12 @@ class RecordStream:
             return
         from dyncli.render.jsonout import problem_record
 
-        rec = problem_record(o.problem, o.result, o.message, o.exit_code)
+        seen: dict = {}                         # (the lists checked once, not again when written)
+        rec = problem_record(o.problem, o.result, o.message, o.exit_code, seen)
         if self.fmt == "json":
             from dyncli.render.jsonout import encode_parts
 
-            _write_joined(["[\n  " if self.n == 0 else ",\n  "] + encode_parts(rec, "  ", not self.utf))
+            _write_joined(["[\n  " if self.n == 0 else ",\n  "] + encode_parts(rec, "  ", not self.utf, seen))
         else:
             from dyncli.render.yamlout import dumps
 

@@ -43,7 +43,7 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
     def speeds(ts):                                  # |v| from the states alone (not every reported quantity)
         import numpy as np
 
-        V = traj_of().state_array(ts)[1][3:6]
+        V = traj_of().state_array(ts, slice(3, 6))[1]
         return np.sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2])
 
     odo = mf.Odometer(speeds, B, arrays=True)

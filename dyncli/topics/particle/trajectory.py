@@ -45,10 +45,17 @@ class OdePhase:
         self.t0, self.t1, self.sol, self.rhs = t0, t1, sol, rhs
         self.steps_t, self.steps_y, self.d = steps_t, steps_y, (np.zeros(3) if d is None else np.asarray(d, float))
 
-    def state(self, t):
+    def state(self, t, rows: slice | None = None):
+        """The state at t (``rows``: those components only)."""
         if self.t1 > self.t0 and self.sol is None:
             raise RuntimeError("the trajectory was integrated without dense output")
-        return self.sol(t) if self.t1 > self.t0 else self.steps_y[:, 0]
+        if self.t1 <= self.t0:
+            return self.steps_y[:, 0] if rows is None else self.steps_y[rows, 0]
+        if rows is None:
+            return self.sol(t)
+        from dyncli.dop853 import OdeSolution
+
+        return self.sol(t, rows) if isinstance(self.sol, OdeSolution) else self.sol(t)[rows]
 
 
 class RestPhase:
@@ -99,18 +106,21 @@ class Trajectory:
         idx, Y = self.state_array(times)
         return [(self.phases[k], Y[:, j]) for j, k in enumerate(idx.tolist())]
 
-    def state_array(self, times) -> tuple[np.ndarray, np.ndarray]:
+    def state_array(self, times, rows: slice | None = None) -> tuple[np.ndarray, np.ndarray]:
         """The phase index of each time (as :meth:`phase_at`) and the states
         y (7 x N) at all ``times`` at once: a time recorded during the run takes its
         recorded state; each phase's dense output is called once on the array of the others
-        (the recorded times looked up by one sorted search, not one at a time)."""
+        (the recorded times looked up by one sorted search, not one at a time).  ``rows``: only
+        those rows of y (the same values: the dense output works component by component)."""
         t = np.asarray(times, float).reshape(-1)
         rt, ridx, rY = self._recorded_arrays()
+        if rows is not None:
+            rY = rY[rows]
         pos = np.clip(np.searchsorted(rt, t), 0, max(rt.size - 1, 0))
         hit = rt[pos] == t if rt.size else np.zeros(t.size, bool)
         if hit.all():
             return ridx[pos], rY[:, pos]
-        idx, Y = self._dense_array(t)
+        idx, Y = self._dense_array(t, rows)
         if hit.any():                           # the recorded states exactly (the same as the results)
             idx[hit], Y[:, hit] = ridx[pos[hit]], rY[:, pos[hit]]
         return idx, Y
@@ -124,7 +134,8 @@ class Trajectory:
                          np.array([y for _, y in got], dtype=float).reshape(-1, 7).T)
         return self._rec
 
-    def _dense_array(self, t):
+    def _dense_array(self, t, rows: slice | None = None):
+        sl = slice(None) if rows is None else rows
         starts = np.array([ph.t0 for ph in self.phases])
         ends = np.array([ph.t1 for ph in self.phases])
         idx = np.clip(np.searchsorted(starts, t, side="left") - 1, 0, len(self.phases) - 1)
@@ -133,17 +144,17 @@ class Trajectory:
         odd = ~((starts[idx] <= t) & (t <= ends[idx])) | ((idx > 0) & (t <= ends[np.maximum(idx - 1, 0)]))
         for j in np.flatnonzero(odd):
             idx[j] = self.phases.index(self.phase_at(float(t[j])))
-        Y = np.empty((7, t.size))
+        Y = np.empty((len(range(7)[sl]), t.size))
         order = np.argsort(idx, kind="stable")      # the times of each phase present, one slice each
         cuts = np.flatnonzero(np.diff(idx[order])) + 1
         for sel in np.split(order, cuts) if t.size else ():
             ph = self.phases[int(idx[sel[0]])]
             if isinstance(ph, RestPhase):
-                Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[:, None]
+                Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[sl, None]
             elif ph.t1 > ph.t0:
-                Y[:, sel] = ph.state(t[sel])
+                Y[:, sel] = ph.state(t[sel], rows)
             else:
-                Y[:, sel] = ph.steps_y[:, :1]
+                Y[:, sel] = ph.steps_y[sl, :1]
         return idx, Y
 
 

@@ -19,6 +19,8 @@ T − T1 (18.7): ``work_residual`` = max |Σ U_i − (T − T1)| over the times.
 
 from __future__ import annotations
 
+from itertools import repeat
+
 import numpy as np
 
 from dyncli.topics.particle import equations as eq
@@ -208,9 +210,8 @@ def add(res, p, F, traj, S) -> None:
     T1 = 0.5 * F.m * sum(float(c) * float(c) for c in p.v0)
     resid = float(abs(U.sum(axis=0) - (S["T"] - T1)).max()) if t.size else 0.0
     Fl, Pl, Ul = (Fi.transpose(2, 0, 1) + 0.0).tolist(), (P.T + 0.0).tolist(), (U.T + 0.0).tolist()
-    res.results["force_terms"] = [dict(zip(labs, row)) for row in Fl]
-    res.results["power"] = [dict(zip(labs, row)) for row in Pl]
-    res.results["work"] = [dict(zip(labs, row)) for row in Ul]
+    keyed = lambda rows: list(map(dict, map(zip, repeat(labs), rows)))    # noqa: E731  (no Python call per row)
+    res.results["force_terms"], res.results["power"], res.results["work"] = keyed(Fl), keyed(Pl), keyed(Ul)
     res.results["work_residual"] = resid
     for name, title in (("force_terms", "Fᵢ (each force)"), ("power", "Pᵢ = Fᵢ·v"),
                         ("work", "Uᵢ = ∫ Pᵢ dt")):

@@ -65,6 +65,7 @@ class Response:
         self.x0 = p.x0
         self.s0, self.Om = p.s0, p.Om
         self.fo = p.fo                   # (F0, ω) of a force on the mass or a rotating unbalance, or None
+        self._fast = None
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -79,7 +80,9 @@ class Response:
         (:func:`closed_form.free_response_fn`: the same doubles), or None for any other motion."""
         if self.fo is not None or self.s0 != 0.0:
             return None
-        return cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
+        if self._fast is None:                  # (made once: the odometer and the search share it)
+            self._fast = cf.free_response_fn(self.omega_n, self.zeta, self.L, self.x0, self.p.v0)
+        return self._fast
 
     def scalar(self):
         """(x, v)(t) in plain floats: the steady state plus the free vibration that makes up the
@@ -179,6 +182,11 @@ class Response:
         h = self.step()
         return t_end if not h > 0 or t_end <= MAX_PIECES * h else MAX_PIECES * h
 
+    def capped(self, t_end: float) -> bool:
+        """Whether :meth:`breaks` over [0, t_end] is capped (without making the grid)."""
+        h = self.step()
+        return h > 0 and t_end > 0 and math.ceil(t_end / h) > MAX_PIECES
+
     def breaks(self, t_end: float) -> tuple[list[float], bool]:
         """Every 1/PER_PERIOD of the shortest period over [0, t_end] (and whether capped)."""
         h = self.step()
@@ -209,33 +217,39 @@ def report(p: Setup, res, omega_n, zeta) -> None:
         res.results["distance"] = odo.many(list(p.at))
     if not p.find:
         return
-    breaks, capped = resp.breaks(t_end)
+    capped = resp.capped(t_end)
     asked = _asked_paths(list(p.find))
     exact = asked is not None and not capped    # (a capped grid: far too many turning points)
     if exact and asked is not None and t_end > 0:   # every turning point of each quantity asked is a break: monotone between
-        own, capped = _turning_points(resp, breaks, t_end, asked)
+        own, capped = _turning_points(resp, lambda: resp.breaks(t_end)[0], t_end, asked)
         breaks = sorted(set([0.0, t_end]).union(*own.values()))
+    else:
+        breaks = resp.breaks(t_end)[0]
     if capped:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
 
+    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None, monotone=exact and not capped)
+    at = motion.at          # (resp.at, or a free vibration's with its constants hoisted: the same doubles)
+
     def state(t: float) -> dict:
-        xx, v, w = resp.at(t)
+        xx, v, w = at(t)
         return {"x": xx, "v": v, "w": w, "distance": odo(t)}
 
-    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None, monotone=exact and not capped)
     if exact and t_end > 0:
         motion.own = {path: [0.0] + sorted(t for t in ts if 0.0 < t < t_end) + [motion.t_end]
                       for path, ts in own.items()}
-    mf.attach(res, list(p.find), mf.answer_find(list(p.find), motion, const, res.warn, full=state))
+    find = list(p.find)
+    mf.attach(res, find, mf.answer_find(find, motion, const, res.warn, full=state, memo=p.params))
 
 
-def _turning_points(resp: Response, breaks: list[float], t_end: float, asked: set[str]):
+def _turning_points(resp: Response, grid, t_end: float, asked: set[str]):
     """({quantity: its turning points in (0, t_end)} for every quantity in ``asked``, whether a
     search ran out of cells): of x (the roots of v; also the kinks of distance), of v (the roots of the
     acceleration) and of w (the roots of ẇ; w = x − L without a base motion, so x's), each in
-    closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns`."""
-    mo, arrays = resp.motion(), _on_arrays(len(breaks))
+    closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns` on
+    the breaks ``grid()`` (made only then)."""
+    mo, breaks = resp.motion(), None
     wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo   # w = x − s − L: the same equation without s
     which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
     found: dict = {}
@@ -245,6 +259,9 @@ def _turning_points(resp: Response, breaks: list[float], t_end: float, asked: se
         if key not in found:
             got = turns.free_roots(key[0], key[1], t_end)
             if got is None:
+                if breaks is None:
+                    breaks = grid()
+                    arrays = _on_arrays(len(breaks))
                 got, _, more = turns.roots(key[0], breaks, key[1], arrays)
                 capped = capped or more
             found[key] = got
@@ -294,6 +311,22 @@ class _Motion:
     def breaks_for(self, path: str) -> list[float]:
         """The breaks searched for ``path``: its own turning points when known, else all."""
         return self.own.get(path, self.breaks)
+
+    def function(self, path: str):
+        """t -> the value of ``path`` (:meth:`value` without its dispatch): a free vibration's x, v
+        or w alone (:func:`closed_form.free_quantity_fn`, the same doubles), else from :meth:`at`."""
+        if path == "distance":
+            return self.odo
+        i = _STATE.get(path)
+        if i is None:
+            return None
+        r = self.resp
+        if r.fo is None and r.s0 == 0.0:
+            got = cf.free_quantity_fn(r.omega_n, r.zeta, r.L, r.x0, r.p.v0, i)
+            if got is not None:
+                return got
+        at = self.at
+        return lambda t: at(t)[i]
 
     def value(self, path: str, t: float) -> float:
         if path == "distance":
