@@ -4,6 +4,8 @@ closed form), each answer filled with the whole state at its time."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from dyncli import queries as _q
@@ -24,6 +26,9 @@ class SceneMotion:
         self._cache: dict[float, dict] = {}
         self._paths = None
         self._ahead = False             # the sample grid's states made together (once)
+        # set by _cut_at_extremes: each result's pieces cut at its exact extremes (dyncli.queries)
+        self.breaks_for: Callable[[str], list[float]] | None = None
+        self.monotone, self.subdivide, self.cuts_approximate = False, None, False
 
     def _flat(self, t: float) -> dict:
         got = self._cache.get(t)
