@@ -28,7 +28,8 @@ class SceneMotion:
         self._ahead = False             # the sample grid's states made together (once)
         # set by _cut_at_extremes: each result's pieces cut at its exact extremes (dyncli.queries)
         self.breaks_for: Callable[[str], list[float]] | None = None
-        self.monotone, self.subdivide, self.cuts_approximate = False, None, False
+        self.monotone, self.cuts_approximate = False, False
+        self.subdivide: int | None = None
 
     def _flat(self, t: float) -> dict:
         got = self._cache.get(t)
