@@ -230,7 +230,7 @@ class ExactTop:
 
     def _constants(self, theta_dot0):
         n = self.nut
-        m, m1 = n.m, n.m1
+        m1 = n.m1
         self.K = float(elliprf(0.0, m1, 1.0))
         # phase at t = 0, from the nearer turning point
         # (sn²: cn² = rv : m1 rw at τ0, rv + rw = 1, from the roots of Q about u0)
