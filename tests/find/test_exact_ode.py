@@ -272,3 +272,27 @@ find:
     for k, t in enumerate(want):
         assert entry(R, k)["reached"], k
         assert abs(entry(R, k)["t"] - t) <= ode(1e-13) * 0.5 / abs(psd(t)), k
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-9])
+def test_constrained_particle_distance_counts_a_step_back_inside_one_step(rtol):
+    """The bead above steps back between its turning points 1 ∓ √ε, inside one ODE step (its
+    motion is a cubic: the steps are long).  The distance Σ|Δs| between the turning points of s
+    read the signs of q̇ at the step ends only and gave the net displacement (exit 0); the roots
+    of q̇ are now bracketed at the critical points of its polynomial.  Reference: the closed form
+    q(t) = −ε t + ((t − 1)³ + 1)/3 (mpmath)."""
+    R, _ = solve(f"""
+type: constrained-particle
+m: 1
+curve: {{x1: q, x2: 0, x3: 0}}
+q_dot0: {1 - EPS!r}
+forces:
+  - {{kind: custom, F: ["2*(t-1)", "0", "0"]}}
+at: [0, 2]
+accuracy: {{rtol: {rtol!r}, method: ode}}
+""")
+    with mp.workdps(MPMATH_DPS):
+        r1, r2 = 1 - mp.sqrt(mp.mpf(EPS)), 1 + mp.sqrt(mp.mpf(EPS))
+        want = float((_q(r1) - _q(0)) + (_q(r1) - _q(r2)) + (_q(2) - _q(r2)))
+    # three legs, each q's error (ode(rtol) of its scale ~1) at its ends
+    assert abs(R["distance"][1] - want) <= 6 * ode(rtol)

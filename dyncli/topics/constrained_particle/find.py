@@ -75,9 +75,12 @@ def ode_states(p, model, phases):
 
 
 def ode_turns(phases) -> list[float]:
-    """The turning points of s on the ODE route: the roots of q̇ (ṡ = |τ| q̇ with |τ| > 0) where it
-    changes sign between the steps of a sliding phase (Brent on the phase's dense output), and the
-    start of every later phase (a stop, a stick or a slip: a turn at most, never a missed one)."""
+    """The turning points of s on the ODE route: the roots of q̇ (ṡ = |τ| q̇ with |τ| > 0) inside
+    every step of a sliding phase, decided exactly: q̇ is a component of the step's dense output,
+    a polynomial, monotone between its critical points (:func:`dyncli.rootfind.polynomial_extremes`),
+    so the signs at the step's ends and at those points bracket every root (Brent) — a q̇ that
+    changes sign twice inside one step is two turns, not none; and the start of every later phase
+    (a stop, a stick or a slip: a turn at most, never a missed one)."""
     from dyncli import rootfind
 
     eps = float(np.finfo(float).eps)
@@ -87,13 +90,19 @@ def ode_turns(phases) -> list[float]:
             out.append(float(ph.t0))
         if ph.mode[0] == "stick" or not ph.t1 > ph.t0:
             continue
-        T, R = [float(t) for t in ph.steps_t], [float(v) for v in ph.steps_y[1]]
-        for k in range(len(T) - 1):
-            if R[k] == 0.0 and k > 0:
-                out.append(T[k])
-            elif R[k] * R[k + 1] < 0:
-                out.append(rootfind.brent(lambda t, ph=ph: float(ph.sol(t)[1]), T[k], T[k + 1], 1e-300, 4 * eps, 2000))
-    return out
+        sol = ph.sol
+        pieces = [(f, float(a), min(float(b), float(ph.t1))) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:])
+                  if min(float(b), float(ph.t1)) > float(a)]
+        for (f, a, b), crit in zip(pieces, rootfind.polynomial_extremes(pieces)):
+            T = [a] + crit[1] + [b]
+            R = [float(r) for r in np.asarray(f(np.array(T)), dtype=float)[1]]
+            for k in range(len(T) - 1):
+                if R[k] == 0.0 and (k > 0 or a > float(ph.t0)):
+                    out.append(T[k])
+                elif R[k] * R[k + 1] < 0:
+                    out.append(rootfind.brent(lambda t, f=f: float(np.asarray(f(t))[1]), T[k], T[k + 1], 1e-300, 4 * eps,
+                                              2000))
+    return sorted(set(out))
 
 
 def ode_arc(model, phases, q0: float, known):
