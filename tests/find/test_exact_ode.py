@@ -207,8 +207,13 @@ def _top_reference(delta: float, t_end: float):
     return psi, psd
 
 
-@pytest.mark.parametrize("rtol", [1e-10])
-def test_top_psi_steps_back_inside_one_step(rtol):
+@pytest.mark.parametrize("route, rtol", [("ode", 1e-10), ("exact", 1e-13)])
+def test_top_psi_steps_back_inside_one_step(route, rtol):
+    """ψ steps back near the second lowest point, inside one step of the ODE route (reduced form,
+    its dense output cut at ψ's exact extremes) and inside one piece of the exact route's search
+    (elliptic functions, solved again on pieces: four points each, occurrences 2 and 3 were "not
+    reached").  Tolerance: ψ's error over ψ̇ there — the route's at its rtol (ODE), the
+    reference's at 1e-13 (exact)."""
     from scipy.optimize import brentq
 
     delta = 1e-4
@@ -218,6 +223,7 @@ def test_top_psi_steps_back_inside_one_step(rtol):
     r1, r2 = (brentq(psd, ts[k], ts[k + 1], xtol=1e-16) for k in range(len(ts) - 1) if P[k] * P[k + 1] < 0)
     X = 0.5 * (psi(r1) + psi(r2))
     want = [brentq(lambda t: psi(t) - X, a, b, xtol=1e-16) for a, b in ((0.1, r1), (r1, r2), (r2, 0.16))]
+    method = f"accuracy: {{rtol: {rtol!r}, method: DOP853}}" if route == "ode" else ""
     R, _ = solve(f"""
 type: top
 m: 0.5
@@ -232,46 +238,12 @@ find:
   - {{when: {{psi: {X!r}}}}}
   - {{when: {{psi: {X!r}}}, occurrence: 2}}
   - {{when: {{psi: {X!r}}}, occurrence: 3}}
-accuracy: {{rtol: {rtol!r}, method: DOP853}}
-""")
-    for k, t in enumerate(want):
-        # ψ's error (ode(rtol) of its scale, 0.5 rad) over ψ̇ there
-        assert abs(entry(R, k)["t"] - t) <= ode(rtol) * 0.5 / abs(psd(t)), k
-
-
-def test_top_exact_route_psi_steps_back_inside_one_piece():
-    """The same looping top on its exact route (elliptic functions), whose find search solves
-    again on pieces of the motion: ψ steps back by 2e-8 rad for 4e-4 s near the lowest point,
-    inside one piece; the search read four points of each piece and answered occurrences 2 and 3
-    "not reached".  Each piece is now cut at ψ's exact extremes.  The reference is the
-    integration of (38.18) above at rtol 1e-13: its ψ error over ψ̇ there bounds the comparison."""
-    from scipy.optimize import brentq
-
-    delta = 1e-4
-    psi, psd = _top_reference(delta, 0.2)
-    ts = np.linspace(0.1, 0.16, 60001)
-    P = [psd(t) for t in ts]
-    r1, r2 = (brentq(psd, ts[k], ts[k + 1], xtol=1e-16) for k in range(len(ts) - 1) if P[k] * P[k + 1] < 0)
-    X = 0.5 * (psi(r1) + psi(r2))
-    want = [brentq(lambda t: psi(t) - X, a, b, xtol=1e-16) for a, b in ((0.1, r1), (r1, r2), (r2, 0.16))]
-    R, _ = solve(f"""
-type: top
-m: 0.5
-L: 0.05
-I11: 2.0e-3
-I33: 1.0e-3
-theta: 0.5
-psi_dot: {-delta!r}
-phi_dot: 100
-at: [0.2]
-find:
-  - {{when: {{psi: {X!r}}}}}
-  - {{when: {{psi: {X!r}}}, occurrence: 2}}
-  - {{when: {{psi: {X!r}}}, occurrence: 3}}
+{method}
 """)
     for k, t in enumerate(want):
         assert entry(R, k)["reached"], k
-        assert abs(entry(R, k)["t"] - t) <= ode(1e-13) * 0.5 / abs(psd(t)), k
+        # ψ's error (ode(rtol) of its scale, 0.5 rad) over ψ̇ there
+        assert abs(entry(R, k)["t"] - t) <= ode(rtol) * 0.5 / abs(psd(t)), k
 
 
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9])

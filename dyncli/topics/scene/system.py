@@ -128,13 +128,8 @@ class Point:
         b = self.body
         if b is None:
             return
-        i = b.index
-        r1[i[0]] += sign
-        r2[i[1]] += sign
-        if b.inertia is not None and (self.p[0] or self.p[1]):
-            a1, a2 = self._arm(float(q[i[2]]))
-            r1[i[2]] -= sign * a2
-            r2[i[2]] += sign * a1
+        turns = b.inertia is not None and (self.p[0] or self.p[1])
+        self.add_jac2_arm(r1, r2, self._arm(float(q[b.index[2]])) if turns else None, sign)
 
     def vel_xy(self, q, v) -> tuple[float, float]:
         b = self.body

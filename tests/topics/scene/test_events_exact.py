@@ -38,6 +38,21 @@ at: [0, 40]
 """
 
 
+#: a ball on a vertical guide hanging from a spring anchored one rest length above it
+HANGING = """
+type: scene
+params: {m: 1, k: 100}
+surfaces:
+  wall: {through: [0, 0], direction: [0, 1]}
+bodies:
+  ball: {shape: point, mass: m, x: [0, 0]}
+joints:
+  guide: {slider: [ball, wall]}
+forces:
+  - {spring: [[0, 1], ball], k: k, L: 1}
+"""
+
+
 def _reference(t):
     with mp.workdps(30):
         d, w, yf = mp.mpf(G) / 100, mp.mpf(10), mp.mpf("-0.1960038")
@@ -92,19 +107,7 @@ def test_a_spring_anchored_one_rest_length_above_is_a_closed_form():
     """The closed form's stiffness is probed along the motion: a probe of the scene's size would
     put the ball on the spring's anchor (1 m above, rest length 1 m) and was refused ("the ends of
     the spring coincide"); y = −d (1 − cos ω t), d = m g/k, ω = √(k/m) (the notes' free vibration)."""
-    rec = solve_one_text("""
-type: scene
-params: {m: 1, k: 100}
-surfaces:
-  wall: {through: [0, 0], direction: [0, 1]}
-bodies:
-  ball: {shape: point, mass: m, x: [0, 0]}
-joints:
-  guide: {slider: [ball, wall]}
-forces:
-  - {spring: [[0, 1], ball], k: k, L: 1}
-at: [0, 0.3, 1]
-""")
+    rec = solve_one_text(HANGING + "at: [0, 0.3, 1]\n")
     assert rec.get("error") is None, rec.get("error")
     r = rec["results"]
     assert [p["route"] for p in r["phases"]] == ["closed-form"]
@@ -154,18 +157,7 @@ def test_find_on_a_closed_form_phase_of_many_periods():
     cut at the exact extremes of the result searched.  y = −d (1 − cos ω t), v = −d ω sin ω t
     (the notes' free vibration): the crossings of y = Y are ±arccos(1 + Y/d)/ω + k 2π/ω, the least
     v first at ω t = π/2 (an extreme's time: to the square root of the rounding at worst)."""
-    rec = solve_one_text("""
-type: scene
-params: {m: 1, k: 100}
-surfaces:
-  wall: {through: [0, 0], direction: [0, 1]}
-bodies:
-  ball: {shape: point, mass: m, x: [0, 0]}
-joints:
-  guide: {slider: [ball, wall]}
-forces:
-  - {spring: [[0, 1], ball], k: k, L: 1}
-at: [0, 20]
+    rec = solve_one_text(HANGING + """at: [0, 20]
 find:
   - {when: {x.ball.1: -0.196199}, occurrence: 7}
   - {min: v.ball.1}
