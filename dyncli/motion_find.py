@@ -202,7 +202,8 @@ def searched_paths(find: Any) -> set[str] | None:
 
 def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str], Any], Any],
                  known: Callable[[str], list[float] | None] | None = None,
-                 warn: Callable[[str], None] | None = None) -> Callable[[str], list[float]] | None:
+                 warn: Callable[[str], None] | None = None, budget: int = 200_000
+                 ) -> Callable[[str], list[float]] | None:
     """``breaks_for(path)`` for :class:`StateMotion` with ``monotone=True``: the ``breaks`` (between
     which the motion is smooth: an ODE's steps, its phase ends) with every extreme inside them of
     each result the queries of ``find`` search added — decided exactly, never by samples:
@@ -212,7 +213,8 @@ def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str]
     ``values(paths, ts)``: the results at the paths, an array (len(paths), len(ts)), at an array
     of times; None or KeyError for a path the motion does not report).  None when no query
     searches, a path is unknown, or a result is not resolved (not finite, not smooth to rounding
-    in a step): the search then reads the steps' ends and ``warn`` says so (never silently)."""
+    in a step, or more than ``budget`` evaluations): the search then reads the steps' ends and
+    ``warn`` says so (never silently)."""
     from dyncli.rootfind import smooth_extremes
 
     asked = searched_paths(find)
@@ -232,7 +234,7 @@ def exact_breaks(find: Any, breaks: Sequence[float], values: Callable[[list[str]
             probe = values(rest, [B[0]])
         except KeyError:
             probe = None
-        cuts, ok = smooth_extremes(lambda ts: values(rest, ts), B) if probe is not None else ([], False)
+        cuts, ok = smooth_extremes(lambda ts: values(rest, ts), B, budget=budget) if probe is not None else ([], False)
         if not ok:
             if warn is not None:
                 warn(f"find: {', '.join(rest)} could not be followed as a smooth function of each step (a kink, a "

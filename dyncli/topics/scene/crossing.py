@@ -25,13 +25,16 @@ EPS = float(np.finfo(float).eps)
 
 def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
     """The rounding of each kind of watched quantity over a span that starts at (q, v, t) and
-    ends with the velocities ``v_end``: 64 ε of the scene's lengths (gaps, margins, stretches),
+    ends with the velocities ``v_end``: 64 ε of the scene's lengths (gaps, margins, stretches:
+    its positions, sizes and the lengths its cords hold),
     of its forces (the applied loads and the multipliers at the start) and of its speeds (at both
     ends)."""
     f, _P = s.applied(q, v, t)
     lam = s.solve(q, v, t)[1]
     big = lambda *xs: max([float(np.max(np.abs(x), initial=0.0)) for x in xs] + [1e-300])   # noqa: E731
-    L, F, V = assembly.length_scale(q, s), big(f, lam), big(v, v_end)
+    # a length a joint holds (a cord's runs) is a scale of its gap's rounding too
+    held = [abs(float(c)) for e in s.elements for c in (getattr(e, "consts", None) or ())]
+    L, F, V = max([assembly.length_scale(q, s)] + held), big(f, lam), big(v, v_end)
     lengths, speeds = ("impact", "leaves", "switch", "taut"), ("sticks",)
     return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in WATCHED}
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from dyncli import ode
+from dyncli import cputime, ode
 from dyncli import runner
 from dyncli.errors import NumericalError
 from dyncli.rootfind import brent
@@ -343,6 +343,10 @@ class OdeRoute:
 
         def raw_at(ts, k: int) -> np.ndarray:
             ts = np.atleast_1d(np.asarray(ts, dtype=float))
+            if (limit := cputime.over()) is not None:
+                raise NumericalError(f"the forces of the joints were searched to t = {float(ts[0]):.6g} s only within the "
+                                     f"CPU budget of {limit:g} s (accuracy.max_cpu): shorten the times asked (at, "
+                                     "t_max) or raise accuracy.max_cpu")
             ys = np.asarray(dense.dense(ts), dtype=float).reshape(-1, ts.size)
             return np.array([watches(s, ys[:n, i], ys[n:2 * n, i], float(t))[k][2] for i, t in enumerate(ts)])
 

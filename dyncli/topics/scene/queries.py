@@ -150,14 +150,42 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
     found.  Where a result is not resolved the search reads the pieces as before, with a warning."""
     from dyncli import motion_find as mf
 
+    traj, n = motion.traj, motion.traj.system.n
+
+    def coordinates(ts) -> np.ndarray:
+        """(q, q̇) at many times, (2n, len(ts)): an ODE step's interpolant as integrated (a
+        polynomial, within the step's error of the joints: smooth to rounding, and one call per
+        step), any other piece's own state."""
+        out = np.empty((2 * n, len(ts)))
+        traj.prefetch(ts)               # (the kinematics route's states, made together)
+        for j, t in enumerate(ts):
+            p = traj.piece(t)
+            if p.batch is not None:
+                out[:, j] = np.asarray(p.batch(min(max(t, p.t_a), p.t_b)), dtype=float).reshape(-1)[:2 * n]
+            else:
+                q, v, _ = traj.state(t)
+                out[:n, j], out[n:, j] = q, v
+        return out
+
     def values(paths, ts):
         ts = [float(t) for t in np.atleast_1d(np.asarray(ts, dtype=float))]
-        return np.array([[motion.value(path, t) for t in ts] for path in paths], dtype=float)
+        Y = coordinates(ts) if any(path in motion._coords for path in paths) else None
+        rows = []
+        for path in paths:
+            fast = motion._coords.get(path)
+            if fast is not None and Y is not None:
+                which, k = fast
+                rows.append(Y[k if which == "q" else n + k])
+            else:
+                rows.append(np.array([motion.value(path, t) for t in ts], dtype=float))
+        return np.array(rows, dtype=float)
 
     B = sorted(set(motion.breaks))
     if len(B) < 2 or not B[-1] > B[0]:
         return
-    own = mf.exact_breaks(raw, B, values, warn=warn)
+    # each piece resolved in a few halvings at most (a piece that needs more is searched as before,
+    # with a warning): the cost stays a small multiple of the motion's own
+    own = mf.exact_breaks(raw, B, values, warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
     if own is not None:
         motion.breaks_for, motion.monotone, motion.subdivide = own, True, 1
         motion.cuts_approximate = True      # an extreme's time then polished as a root of its rate

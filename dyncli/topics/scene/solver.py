@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from dyncli import ode
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 from dyncli.expr import resolve_params
 from dyncli.expr.jet import jet, jet_at
 from dyncli.integrators import Accuracy
@@ -75,6 +75,29 @@ def _search_end(t_end: float, find, params) -> float:
 
 
 def solve(p, options: SolveOptions | None = None) -> Result:
+    """The scene solved; a linear solve, a division or a square root that fails on the way (a
+    degenerate geometry — a body that does not fit its surface's curvature, coincident points —
+    or numbers beyond the doubles) is a numerical failure with what to check (exit 1), not an
+    internal error."""
+    import numpy as np
+
+    try:
+        return _solve(p, options)
+    except (np.linalg.LinAlgError, ZeroDivisionError, OverflowError) as exc:
+        raise NumericalError(_degenerate(exc)) from None
+    except ValueError as exc:
+        if "math domain error" not in str(exc):
+            raise
+        raise NumericalError(_degenerate(exc)) from None
+
+
+def _degenerate(exc: Exception) -> str:
+    return (f"the scene's equations cannot be evaluated ({type(exc).__name__}: {exc}): its geometry is degenerate "
+            "(a body that does not fit the curvature of its surface, points that coincide, a size of 0) or its "
+            "numbers are beyond the doubles; check the sizes and positions, or rescale the units")
+
+
+def _solve(p, options: SolveOptions | None) -> Result:
     plan = _plan(p)
     times = [float(t) for t in p.at]
     a = p.accuracy

@@ -535,3 +535,25 @@ joints:
 at: [0, 0.5]
 """
     refusal(text, "joints.s.slider.1", "straight surface", "'bowl' is a curve")
+
+
+def test_a_degenerate_geometry_is_a_numerical_failure_not_an_internal_error(tmp_path):
+    """A disk of radius 5 cm rolling inside a bowl of radius 5e-151 m (found by fuzzing): the
+    geometry cannot be evaluated (a linear solve fails); exit 1 with what to check, never exit 3
+    ("this is a bug")."""
+    f = tmp_path / "bad.yaml"
+    f.write_text("""
+type: scene
+params: {R: 5.0e-151}
+surfaces:
+  bowl: {curve: {x1: "R*sin(q)", x2: "-R*cos(q)"}, q_range: [-pi/2, pi/2]}
+bodies:
+  ball: {shape: disk, mass: 0.5, radius: 0.05, angle: 0}
+joints:
+  roll: {rolls: [ball, bowl], at: "30*deg", mu_s: 0.5}
+at: [0, 0.2]
+""")
+    code, out, err = run_cli("solve", str(f))
+    assert code == 1, (code, err)
+    assert "Traceback" not in err and "bug" not in err
+    assert "geometry is degenerate" in err
