@@ -124,18 +124,22 @@ accuracy: {{rtol: {rtol!r}}}
     assert top["T"] == pytest.approx(0.5 * EPS ** 2, rel=ode(rtol) / EPS)
 
 
-@pytest.mark.parametrize("rtol", [1e-6, 1e-9])
-def test_constrained_particle_dips_inside_one_step(rtol):
-    X = 0.5 * (EPS / 2) ** 2
-    Q, qs = _q_crossings()
-    R, _ = solve(f"""
+#: a bead on a straight wire pushed by F = 2(t − 1): q̇ = −ε + (t − 1)², q = _q(t)
+BEAD = f"""
 type: constrained-particle
 m: 1
 curve: {{x1: q, x2: 0, x3: 0}}
 q_dot0: {1 - EPS!r}
 forces:
   - {{kind: custom, F: ["2*(t-1)", "0", "0"]}}
-t_end: 2
+"""
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-9])
+def test_constrained_particle_dips_inside_one_step(rtol):
+    X = 0.5 * (EPS / 2) ** 2
+    Q, qs = _q_crossings()
+    R, _ = solve(BEAD + f"""t_end: 2
 find:
   - {{when: {{T: {X!r}}}, occurrence: 3}}
   - {{when: {{T: {X!r}}}, occurrence: 4}}
@@ -253,14 +257,7 @@ def test_constrained_particle_distance_counts_a_step_back_inside_one_step(rtol):
     read the signs of q̇ at the step ends only and gave the net displacement (exit 0); the roots
     of q̇ are now bracketed at the critical points of its polynomial.  Reference: the closed form
     q(t) = −ε t + ((t − 1)³ + 1)/3 (mpmath)."""
-    R, _ = solve(f"""
-type: constrained-particle
-m: 1
-curve: {{x1: q, x2: 0, x3: 0}}
-q_dot0: {1 - EPS!r}
-forces:
-  - {{kind: custom, F: ["2*(t-1)", "0", "0"]}}
-at: [0, 2]
+    R, _ = solve(BEAD + f"""at: [0, 2]
 accuracy: {{rtol: {rtol!r}, method: ode}}
 """)
     with mp.workdps(MPMATH_DPS):

@@ -53,6 +53,19 @@ forces:
 """
 
 
+#: a block entering a smooth loop of radius R at its bottom with the speed v0
+LOOP = """
+type: scene
+params: {{m: 0.2, R: 0.5}}
+surfaces:
+  loop: {{curve: {{x1: "R*sin(q)", x2: "R - R*cos(q)"}}}}
+bodies:
+  block: {{shape: point, mass: m, v: ["{v0}", 0]}}
+joints:
+  track: {{contact: [block, loop], at: 0}}
+"""
+
+
 def _reference(t):
     with mp.workdps(30):
         d, w, yf = mp.mpf(G) / 100, mp.mpf(10), mp.mpf("-0.1960038")
@@ -86,17 +99,7 @@ def test_a_point_leaving_a_curve_is_not_read_as_impacts_in_the_rounding():
     """At the instant a block leaves a loop its gap is 0 and grows like (t − t*)³: within the first
     microseconds it is below the gap's rounding; the search takes the event as the gap passing
     below minus its rounding, so the flight is one phase (not thousands of impacts in the noise)."""
-    rec = solve_one_text("""
-type: scene
-params: {m: 0.2, R: 0.5}
-surfaces:
-  loop: {curve: {x1: "R*sin(q)", x2: "R - R*cos(q)"}}
-bodies:
-  block: {shape: point, mass: m, v: ["sqrt(4*9.81*R)", 0]}
-joints:
-  track: {contact: [block, loop], at: 0}
-at: [0, 0.4]
-""")
+    rec = solve_one_text(LOOP.format(v0="sqrt(4*9.81*R)") + "at: [0, 0.4]\n")
     assert rec.get("error") is None, rec.get("error")
     r = rec["results"]
     assert [e["what"] for e in r["events"]] == ["separates"]
@@ -124,18 +127,7 @@ def test_a_contact_force_that_dips_below_zero_inside_one_ode_step_separates():
     interpolant sees the dip: the block leaves where cos φ* = (2 g R − v0²)/(3 g R), at
     t* = ∫ R dφ / v (mpmath).  The position there is sensitive to the state by 1/sin φ* (N's
     slope is small at the top): tolerance ODE_GLOBAL · rtol · R / sin φ*."""
-    rec = solve_one_text("""
-type: scene
-params: {m: 0.2, R: 0.5}
-surfaces:
-  loop: {curve: {x1: "R*sin(q)", x2: "R - R*cos(q)"}}
-bodies:
-  block: {shape: point, mass: m, v: ["sqrt(5*9.81*R*(1 - 1e-4))", 0]}
-joints:
-  track: {contact: [block, loop], at: 0}
-at: [0, 0.5]
-accuracy: {rtol: 1.0e-6}
-""")
+    rec = solve_one_text(LOOP.format(v0="sqrt(5*9.81*R*(1 - 1e-4))") + "at: [0, 0.5]\naccuracy: {rtol: 1.0e-6}\n")
     assert rec.get("error") is None, rec.get("error")
     ev = rec["results"]["events"][0]
     assert ev["what"] == "separates"
