@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .elements import Element
+from .elements import ListRows
 from .system import BodyPoint, Point, SurfaceData
 
 EPS = float(np.finfo(float).eps)
@@ -34,7 +34,7 @@ def _gap_watch(gap: float, margin: float | None) -> float:
 
 
 @dataclass(kw_only=True)
-class Contact(Element):
+class Contact(ListRows):
     """P on the surface, pushing only; Coulomb friction with the computed N."""
 
     P: Point
@@ -117,15 +117,6 @@ class Contact(Element):
             gam.append(-(w1 * b1 + w2 * b2))
         return rows, gam
 
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
-
-    def gamma(self, q, v, t):
-        return np.array(self.gamma_list(q, v, t))
-
     def tangent_jac(self, q) -> np.ndarray:
         row = [0.0] * self.n
         self.P.add_jac(row, q, *self.surface.d)
@@ -187,7 +178,7 @@ def _slip_watches(muN: float, F: float) -> list[tuple[str, float]]:
 
 
 @dataclass(kw_only=True)
-class Rolls(Element):
+class Rolls(ListRows):
     """A disk or ring of radius R rolls on the surface without slipping (15.8):
     n·(x − O) = R and d̂·x + R θ = const; it slips with kinetic friction μ_k N when rolling
     would need more than μ_s N, and leaves the surface when N would turn negative."""
@@ -265,14 +256,8 @@ class Rolls(Element):
     def gamma_list(self, q, v, t):
         return [0.0] * self.rows
 
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
     def tangent_jac(self, q) -> np.ndarray:
         return np.array(self._tangent_row())
-
-    def jac(self, q):
-        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
 
     def gamma(self, q, v, t):
         return np.zeros(self.rows)

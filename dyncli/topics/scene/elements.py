@@ -107,7 +107,22 @@ def _two(P: Point, Q: Point, q, n):
 
 
 @dataclass(kw_only=True)
-class Pin(Element):
+class ListRows(Element):
+    """An element whose rows are written in plain floats (its ``phi_list``, ``jac_list`` and
+    ``gamma_list``): the arrays are made from them (the same numbers)."""
+
+    def phi(self, q, t):
+        return np.array(self.phi_list(q, t))
+
+    def jac(self, q):
+        return np.array(self.jac_list(q)).reshape(self.rows, self.n)
+
+    def gamma(self, q, v, t):
+        return np.array(self.gamma_list(q, v, t))
+
+
+@dataclass(kw_only=True)
+class Pin(ListRows):
     P: Point
     Q: Point
     rows = 2
@@ -137,15 +152,6 @@ class Pin(Element):
         self.P.add_jac2_arm(r1, r2, pa, 1.0)
         self.Q.add_jac2_arm(r1, r2, qa, -1.0)
         return [r1, r2], [qb1 - pb1, qb2 - pb2]
-
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q))
-
-    def gamma(self, q, v, t):
-        return np.array(self.gamma_list(q, v, t))
 
     def phi_many(self, X, td):
         (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
@@ -264,7 +270,7 @@ class PinBlock:
 
 
 @dataclass(kw_only=True)
-class Slider(Element):
+class Slider(ListRows):
     """The body's centre stays on the line through its position at t = 0 parallel to the
     surface; a rigid body keeps its angle."""
 
@@ -295,12 +301,6 @@ class Slider(Element):
     def gamma_list(self, q, v, t):
         return [0.0] * self.rows
 
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q))
-
     def phi_many(self, X, td):
         n1, n2 = self.surface.n
         x1, x2 = self.body_point.xy_many(X)
@@ -329,7 +329,7 @@ class Slider(Element):
 
 
 @dataclass(kw_only=True)
-class Link(Element):
+class Link(ListRows):
     """A massless rigid link (36): |r_P − r_Q| = L; T tension positive."""
 
     P: Point
@@ -377,15 +377,6 @@ class Link(Element):
         ev = e1 * dv1 + e2 * dv2
         return [row], [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
 
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q))
-
-    def gamma(self, q, v, t):
-        return np.array(self.gamma_list(q, v, t))
-
     def _d_many(self, X):
         (p1, p2), (q1, q2) = self.P.xy_many(X), self.Q.xy_many(X)
         d1, d2 = p1 - q1, p2 - q2
@@ -418,7 +409,7 @@ class Link(Element):
 
 
 @dataclass(kw_only=True)
-class Drive(Element):
+class Drive(ListRows):
     """A prescribed coordinate q_i = f(t); λ is the force or couple the driver applies."""
 
     index: int = 0
@@ -443,17 +434,8 @@ class Drive(Element):
     def gamma_list(self, q, v, t):
         return [self._at(t)[2]]
 
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q))
-
     def phi_t(self, t):
         return np.array([-self._at(t)[1]])
-
-    def gamma(self, q, v, t):
-        return np.array(self.gamma_list(q, v, t))
 
     def at_times(self, T):
         """f(t) at each time: (k, 3) rows (value, rate, second rate)."""
@@ -609,7 +591,7 @@ class Cord(Element):
 
 
 @dataclass(kw_only=True)
-class Guide(Element):
+class Guide(ListRows):
     """A point mass at a cord segment's end moves along the segment (its direction of t = 0)."""
 
     P: Point
@@ -628,12 +610,6 @@ class Guide(Element):
 
     def gamma_list(self, q, v, t):
         return [0.0]
-
-    def phi(self, q, t):
-        return np.array(self.phi_list(q, t))
-
-    def jac(self, q):
-        return np.array(self.jac_list(q))
 
     def phi_many(self, X, td):
         x1, x2 = self.P.xy_many(X)
