@@ -17,10 +17,12 @@ def _interrupted(signum, frame):  # pragma: no cover - exercised in a subprocess
 
 def quiet_interrupts() -> None:
     """SIGINT (Ctrl-C) ends the process with exit 130 and nothing printed
-    (the command's handler; never installed by ``import dyncli``)."""
-    import signal
+    (the command's handler; never installed by ``import dyncli``).  Through the interpreter's
+    built-in ``_signal`` (loaded before any Python code runs): importing ``signal`` took the
+    first interrupts of a loaded machine inside ``signal.py``, with a traceback."""
+    sig = _sys.modules.get("_signal") or __import__("signal")
 
-    signal.signal(signal.SIGINT, _interrupted)
+    sig.signal(sig.SIGINT, _interrupted)
 
 
 def _started_as_command() -> bool:
