@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from dyncli.rootfind import root_in_bracket
+from dyncli.rootfind import distinct_sorted, root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case2_scan import Scan, nonfinite_reason
 from dyncli.topics.rectilinear.case2_signs import SignTable, derivatives, irs
@@ -137,7 +137,7 @@ class _Case2:
         if h == 0:
             return sb, vb, 0.0, 0.0
         cuts = np.asarray(cuts, dtype=float)
-        inner = np.unique(cuts[(cuts > min(tb, T)) & (cuts < max(tb, T))])
+        inner = distinct_sorted(cuts[(cuts > min(tb, T)) & (cuts < max(tb, T))])
         B = np.concatenate([[tb], inner[::-1] if h < 0 else inner, [T]])
         lo, w = B[:-1], np.diff(B)
         n = lo.size

@@ -19,7 +19,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from dyncli.rootfind import roots_in_brackets
+from dyncli.rootfind import distinct_sorted, roots_in_brackets
 from dyncli.topics.rectilinear._quad import NonFinite, NotIntegrable
 from dyncli.topics.rectilinear.constants import fmt
 
@@ -124,7 +124,7 @@ class Scan:
             self.m.ans.res.warn("a varies too fast somewhere (a pole, or sign changes closer than the rounding) "
                               "for its sign changes to be decided there; see error_estimate")
         # the extrema of v (the roots of a: ext) and the quadrature panels between them
-        Bv = np.unique(np.concatenate([[ca], roots, panels, [cb]]))
+        Bv = distinct_sorted(np.concatenate([[ca], roots, panels, [cb]]))
         ext = np.isin(Bv, roots)
         vals, errs, conv = self.m.integrate(lambda t, j: self.m.A(t), Bv[:-1], np.diff(Bv))
         self.m.check(conv)

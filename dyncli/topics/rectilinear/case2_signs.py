@@ -26,7 +26,7 @@ from typing import Callable
 
 import numpy as np
 
-from dyncli.rootfind import all_roots, roots_in_brackets
+from dyncli.rootfind import all_roots, distinct_sorted, roots_in_brackets
 from dyncli.topics.rectilinear.constants import EPS
 from dyncli.topics.rectilinear.enclose import hidden
 
@@ -125,9 +125,9 @@ class SignTable:
         if not hi > lo:
             return
         roots, panels, stops = self._analyse(lo, hi)
-        self.roots = np.unique(np.concatenate([self.roots, roots]))
-        self.panels = np.unique(np.concatenate([self.panels, panels]))
-        self.stops = np.unique(np.concatenate([self.stops, stops]))
+        self.roots = distinct_sorted(np.concatenate([self.roots, roots]))
+        self.panels = distinct_sorted(np.concatenate([self.panels, panels]))
+        self.stops = distinct_sorted(np.concatenate([self.stops, stops]))
 
     def variation(self, lo: float, hi: float) -> float:
         """The total variation of a over [lo, hi] (a is monotone between its critical points):
@@ -164,7 +164,7 @@ class SignTable:
             self.unresolved = self.unresolved or bool(spots)
         if dA is None:              # all_roots decided the roots of a itself
             return np.array(crit, dtype=float), np.array(crit + touch + spots, dtype=float), np.array(stops)
-        pts = np.unique(np.array([lo] + crit + touch + spots + [hi], dtype=float))
+        pts = distinct_sorted(np.array([lo] + crit + touch + spots + [hi], dtype=float))
         ap = A(pts)
         order = np.argsort(np.concatenate([self.cpts, pts[1:-1]]), kind="stable")
         self.cpts = np.concatenate([self.cpts, pts[1:-1]])[order]
@@ -191,7 +191,7 @@ class SignTable:
         if ja:                      # one vectorised root search over every bracket
             jj = np.array(ja)
             out += [float(x) for x in roots_in_brackets(lambda t, idx: self.A(t), pts[jj], pts[jj + 1], ap[jj], ap[jj + 1])]
-        return np.unique(np.array(out, dtype=float))
+        return distinct_sorted(np.array(out, dtype=float))
 
     def _graded(self, pts, ap) -> np.ndarray:
         """Panel cuts graded by 4 towards each peak of |a| narrower than the gap to its neighbours

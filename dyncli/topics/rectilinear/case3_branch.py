@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import root_in_bracket
+from dyncli.rootfind import distinct_sorted, root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.constants import BIG, EPS
 from dyncli.topics.rectilinear.work import QUAD
@@ -51,7 +51,7 @@ class Branch:
         c3, e, v1, c = self.c3, self.e, self.v1, self.c
         # a starting table (issue 28 audit): it only bounds the search; the first root of a is
         # decided by all_roots below (_first_zero), non-finite a by the quadratures' NonFinite
-        g = np.unique(np.concatenate([
+        g = distinct_sorted(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:],
             4.0 * np.logspace(0, 300, 3001)]))
         g = g[np.abs(v1) + c * g <= BIG]
@@ -181,14 +181,14 @@ class Branch:
             umax = max(math.log(max(abs(self.D0) / dmin, 1.0)), 1e-3)
         base = [0.0, 1 / 64, 1 / 16, 1 / 8, 1 / 4, 1 / 2]
         # quadrature panels in u (a starting table the adaptive quadrature refines; no decision)
-        grid = np.unique(np.concatenate([base, np.arange(1.0, umax, 1.0), [umax]]))
+        grid = distinct_sorted(np.concatenate([base, np.arange(1.0, umax, 1.0), [umax]]))
         grid = grid[grid <= umax]
         # the turning point of s (v = 0) on this branch is a grid node
         e = self.e
         if self.v1 != 0 and -self.v1 * e > 0 and (self.kind == "inf" or self.v_end * e > 0):
             u0 = self.u_of(0.0)
             if 0 < u0 < umax:
-                grid = np.unique(np.concatenate([grid, [u0]]))
+                grid = distinct_sorted(np.concatenate([grid, [u0]]))
         while True:
             try:
                 dt, ds, et, es = self.integ(grid[:-1], grid[1:])

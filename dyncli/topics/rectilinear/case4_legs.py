@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import root_in_bracket
+from dyncli.rootfind import distinct_sorted, root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.constants import BIG, EPS, fmt
 from dyncli.topics.rectilinear.work import QUAD
@@ -180,7 +180,7 @@ class Leg:
             return np.array([0.0])
         if kind in ("exp", "geo"):
             g = np.concatenate([[0.0, 1 / 8, 1 / 4, 1 / 2], np.arange(1.0, X, 1.0), [X]])
-            return np.unique(g[g <= X])
+            return distinct_sorted(g[g <= X])
         return np.linspace(0.0, X, 9)
 
     def _build(self) -> None:

@@ -15,7 +15,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from dyncli.rootfind import root_in_bracket
+from dyncli.rootfind import distinct_sorted, root_in_bracket
 from dyncli.topics.rectilinear._quad import NonFinite, integrate
 from dyncli.topics.rectilinear.case4_legs import End
 from dyncli.topics.rectilinear.constants import BIG, EPS
@@ -99,13 +99,13 @@ class Scan:
         s1, c = self.m.s1, self.m.scale
         # cells of v² (a starting table: turning points and dips are decided inside the cells by
         # root searches, and barriers between the nodes by the enclosures of a, _hidden_dips)
-        g = np.unique(np.concatenate([
+        g = distinct_sorted(np.concatenate([
             np.logspace(-15, -3, 97), np.linspace(0.0, 4.0, 2001)[1:], 4.0 * np.logspace(0, 300, 3001)]))
         cm = self.m.scale_min
         if cm < 1e-3 * c:
             # offsets below the scan scale down to the smallest length of the problem, 8 per decade
             dec = math.log10(c) - math.log10(cm)        # (c / cm overflows for c ~ 1e99, cm ~ 1e-290)
-            g = np.unique(np.concatenate([g, (cm / c) * np.logspace(-15, -3, 49),
+            g = distinct_sorted(np.concatenate([g, (cm / c) * np.logspace(-15, -3, 49),
                                           (cm / c) * np.logspace(-3, dec, int(8 * (dec + 3)) + 1)]))
         g = np.concatenate([[0.0], g[abs(s1) + c * g <= BIG]])
         return s1 + e * c * g
@@ -209,7 +209,7 @@ class Scan:
                 continue
             leaves, _ = hidden(ir, dir_, self.m.A, min(lo, hi), max(lo, hi), cells=1, budget=200, var="s")
             k9 = np.linspace(0.0, 1.0, 9)
-            pts = np.unique(np.concatenate([[lo, hi]] + [u + (v - u) * k9 for u, v in leaves or [(lo, hi)]]))
+            pts = distinct_sorted(np.concatenate([[lo, hi]] + [u + (v - u) * k9 for u, v in leaves or [(lo, hi)]]))
             pts = pts if e > 0 else pts[::-1]
             y = self.m.A(pts) * e
             j = np.nonzero((y[:-1] < 0) & (y[1:] > 0))[0]
