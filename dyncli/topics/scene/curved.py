@@ -32,12 +32,12 @@ import numpy as np
 from dyncli.errors import NumericalError
 from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
+from dyncli.rootfind import all_roots
 
 from .contacts import Contact, Rolls
 from .elements import Element
 
 EPS = float(np.finfo(float).eps)
-SEARCH = 4001                      # samples of q for a first foot without `at`
 
 
 class CurveData:
@@ -102,7 +102,7 @@ class CurveData:
 
     def foot(self, r, guess: float) -> float:
         """q* with (r − y(q*))·y′(q*) = 0, a nearest point: Newton from ``guess``, else from the
-        nearest of samples over q_range (or guess ± 10)."""
+        nearest point over q_range (or guess ± 10), decided exactly (:meth:`_nearest`)."""
         got = self._newton(r, float(guess))
         if got is not None and (self.q_range is None or
                                 self.q_range[0] - 0.5 <= got <= self.q_range[1] + 0.5):
@@ -114,14 +114,29 @@ class CurveData:
         return got
 
     def _nearest(self, r, a: float, b: float) -> float:
-        # a starting table only: its best sample is Newton's guess (foot), which then converges to the
-        # exact nearest point; a nearer branch between samples needs the curve to fold back within 1/4000 of q_range
-        qs = np.linspace(a, b, SEARCH)
-        ys = np.stack([e.evaluate(q=qs) if e.variables else np.full(SEARCH, float(e.value())) for e in self.y0])
-        return float(qs[int(np.argmin((ys[0] - r[0]) ** 2 + (ys[1] - r[1]) ** 2))])
+        """The nearest point of the curve to r over [a, b], decided exactly (never by samples):
+        every root of g(q) = (r − y)·y′ (the critical points of |r − y|², by the sign analysis of
+        :func:`dyncli.rootfind.all_roots`) and the ends, the nearest of them (a branch that folds
+        back between two samples of a table is found as any other)."""
+        r0, r1 = float(r[0]), float(r[1])
+
+        def on(es, qs):
+            return [e.evaluate(q=qs) if e.variables else np.full(qs.shape, float(e.value())) for e in es]
+
+        def g(qs):
+            (y0, y1), (d0, d1) = on(self.y0, qs), on(self.y1, qs)
+            return (r0 - y0) * d0 + (r1 - y1) * d1
+
+        roots, touches, bad = all_roots(g, a, b)
+        qs = np.array([a, b, *roots, *touches, *bad], dtype=float)
+        with np.errstate(all="ignore"):
+            y0, y1 = on(self.y0, qs)
+            d2 = (y0 - r0) ** 2 + (y1 - r1) ** 2
+        d2 = np.where(np.isfinite(d2), d2, np.inf)
+        return float(qs[int(np.argmin(d2))])
 
     def first_foot(self, r, at: float | None) -> float:
-        """The foot of r at t = 0: from ``at``, else the nearest of samples over q_range (or
+        """The foot of r at t = 0: from ``at``, else the nearest point over q_range (or
         [−10, 10])."""
         if at is not None:
             return self.foot(r, at)
