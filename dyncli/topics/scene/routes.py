@@ -314,12 +314,26 @@ def _kin_rates(pieces, ts):
     Q, td = _kin_positions(pieces, ts)
     X = s.stack(Q)
     Js = s.jac_many(X)
-    conds = np.linalg.cond(Js)
-    for p, t, cond in zip(pieces, ts, conds):
-        if cond > 1e12:
-            _kin_state(s, p.position(float(t)), float(t))      # raises its message
+    for i in _conds_above(Js, 1e12):
+        _kin_state(s, pieces[i].position(float(ts[i])), float(ts[i]))      # raises its message
     V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
     return X, Js, V, td
+
+
+def _conds_above(Js, limit: float) -> list[int]:
+    """The indices of the stacked square matrices ``Js`` whose condition number (2-norm) exceeds
+    ``limit``: the SVD only where the bound cond₂ ≤ n ‖J‖∞ ‖J⁻¹‖∞ (one stacked LU) cannot exclude
+    it, so that a mechanism far from its toggles pays no SVD per state."""
+    k, n = Js.shape[0], Js.shape[-1]
+    if k == 0:
+        return []
+    try:
+        with np.errstate(all="ignore"):
+            bound = n * np.abs(Js).sum(axis=2).max(axis=1) * np.abs(np.linalg.inv(Js)).sum(axis=2).max(axis=1)
+        maybe = np.nonzero(~(bound <= limit))[0]
+    except np.linalg.LinAlgError:
+        maybe = np.arange(k)
+    return [int(i) for i, c in zip(maybe, np.linalg.cond(Js[maybe]) if maybe.size else ()) if c > limit]
 
 
 def _kin_states(pieces, ts) -> list:
