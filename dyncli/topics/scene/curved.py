@@ -38,6 +38,11 @@ from .contacts import Contact, Rolls
 from .elements import Element
 
 EPS = float(np.finfo(float).eps)
+#: a search of the nearest point (rootfind.all_roots of (r − y)·y′): its starting cells, the most
+#: cells and the most roots it takes — at t = 0 (once), and when Newton from the last foot fails
+#: during the motion or the assembly (a curve of a few turns takes a few dozen cells and roots; a
+#: q_range of thousands of laps is searched only that far)
+NEAREST_FIRST, NEAREST_AGAIN = (64, 4000, 2000), (8, 256, 64)
 
 
 class CurveData:
@@ -117,26 +122,32 @@ class CurveData:
                                 self.q_range[0] - 0.5 <= got <= self.q_range[1] + 0.5):
             return got                  # (a foot well beyond the curve's ends is another lap: searched)
         a, b = self.q_range if self.q_range is not None else (guess - 10.0, guess + 10.0)
-        got = self._newton(r, self._nearest(r, a, b))
+        got = self._newton(r, self._nearest(r, a, b, *NEAREST_AGAIN))
         if got is None:
             raise NumericalError(f"no nearest point on the curve {self.name!r} for the point {list(map(float, r))}")
         return got
 
-    def _nearest(self, r, a: float, b: float) -> float:
-        """The nearest point of the curve to r over [a, b], decided exactly (never by samples):
-        every root of g(q) = (r − y)·y′ (the critical points of |r − y|², by the sign analysis of
-        :func:`dyncli.rootfind.all_roots`) and the ends, the nearest of them (a branch that folds
-        back between two samples of a table is found as any other)."""
+    def _nearest(self, r, a: float, b: float, start: int, cells: int, most: int) -> float:
+        """The nearest point of the curve to r over [a, b]: every root of g(q) = (r − y)·y′ (the
+        critical points of |r − y|², by the sign analysis of :func:`dyncli.rootfind.all_roots`,
+        each cell's interpolant of g resolved to its rounding) and the ends, the nearest of them —
+        an exact critical point for Newton to start from, not the best of a table of samples
+        (beside a sharp bend the best sample can start Newton off the curve)."""
         r0, r1 = float(r[0]), float(r[1])
 
         def on(es, qs):
             return [e.evaluate(q=qs) if e.variables else np.full(qs.shape, float(e.value())) for e in es]
 
         def g(qs):
+            if qs.size == 1:            # (Brent's steps: the float closures)
+                (y0, y1), (d0, d1) = self._ev(0, float(qs[0])), self._ev(1, float(qs[0]))
+                return np.array([(r0 - y0) * d0 + (r1 - y1) * d1])
             (y0, y1), (d0, d1) = on(self.y0, qs), on(self.y1, qs)
             return (r0 - y0) * d0 + (r1 - y1) * d1
 
-        roots, touches, bad = all_roots(g, a, b)
+        # bounded for a q_range of many laps (each lap's roots are found): past the budget the
+        # cells not searched count as candidates by their midpoints
+        roots, touches, bad = all_roots(g, a, b, cells=start, budget=cells, limit=most)
         qs = np.array([a, b, *roots, *touches, *bad], dtype=float)
         with np.errstate(all="ignore"):
             y0, y1 = on(self.y0, qs)
@@ -150,7 +161,7 @@ class CurveData:
         if at is not None:
             return self.foot(r, at)
         a, b = self.q_range if self.q_range is not None else (-10.0, 10.0)
-        return self.foot(r, self._nearest(r, a, b))
+        return self.foot(r, self._nearest(r, a, b, *NEAREST_FIRST))
 
     def ends_margin(self, q: float) -> float | None:
         if self.q_range is None:

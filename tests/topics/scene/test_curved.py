@@ -231,11 +231,12 @@ at: [0]
 """
 
 
-def test_first_foot_is_the_nearest_point_however_narrow_the_branch():
-    """Without ``at`` the contact's first foot is the nearest point of the curve, decided by the
-    roots of (r − y)·y′ (never by a table of samples): a needle 3e-4 wide, narrower than any
-    table over [−10, 10], holds the bead at its tip, where by hand y = (3.001, 0.5), the tangent
-    is horizontal and N = m g."""
+def test_first_foot_on_the_tip_of_a_needle():
+    """Without ``at`` the contact's first foot is the nearest point of the curve, from the roots
+    of (r − y)·y′ (then Newton), not from the best of a table of samples: a needle 3e-4 wide
+    (between two samples of a 4001-point table over [−10, 10], whose best sample started Newton
+    on its flank, where it left the curve: "no nearest point", exit 1) holds the bead at its tip,
+    where by hand y = (3.001, 0.5), the tangent is horizontal and N = m g."""
     rec = solve_one_text(NEEDLE)
     r = rec["results"]
     assert r["x"]["bead"][0][:2] == pytest.approx([3.001, 0.5], abs=1e-12)
