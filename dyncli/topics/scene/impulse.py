@@ -8,13 +8,17 @@ give no impulse) gives, in the scene's maximal coordinates,
     [ J      0    ] [ Λ  ] = [ b ]
 
 with the same Jacobian J as the equations of motion: for every joint that stays made,
-b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for the impacting row,
+b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for a smooth impacting row,
 b = −(1 + e) (n·v⁻) (Newton's restitution, 28.7: the normal speed after is −e times the
-one before); for its tangential row (rough, sticking) b = −v_t⁻.  Φ holds the friction of the
-impact where it slides: −μ Λ_n sign(v_t⁻) along d̂ (Coulomb, as in 28.26 with the impulse at
-the friction angle).  A made contact or a taut cord whose impulse would pull is released and
-the system solved again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two
-particles: (1 − e²) ½ m* (n·Δv)²).
+one before).  A rough striking point (two rows: normal and tangential) is followed through the
+impact by Routh's method (routh.py): the same system, solved with the point's two row
+velocities after as unknowns, gives the 2 × 2 map W from its impulses to its velocity, Routh's
+method gives the velocity after (Coulomb's law on every increment of the impulse, Poisson's
+impulse ratio, = Newton's while the impulse keeps one direction), and the system is solved
+with those targets.  Φ holds the kinetic friction of the *other* made contacts that slide.
+A made contact or a taut cord whose impulse would pull is released and the system solved
+again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two particles:
+(1 − e²) ½ m* (n·Δv)²).
 """
 
 from __future__ import annotations
@@ -25,28 +29,55 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
+from . import routh
 from .elements import Cord
 from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
 
-def _kkt(s, q, v, t, target: dict):
-    """Solve the impulse system; ``target`` maps (element index, row) -> the velocity the row
-    must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
-    n, m = s.n, s.m
+def _system(s, q, v, t, target: dict):
+    """The impulse system's matrix and right side; ``target`` maps (element index, row) -> the
+    velocity the row must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
     J = s.jac(q)
     A = s.kkt_matrix(q, J)
-    b = -(J @ v + s.phi_t(t)) if m else np.zeros(0)
+    b = -(J @ v + s.phi_t(t)) if s.m else np.zeros(0)
     for (i, r), want in target.items():
         k = s.offsets[i] + r
         b[k] = want - float(J[k] @ v)
+    return A, np.concatenate([np.zeros(s.n), b])
+
+
+def _solve(A, rhs, t):
     try:
-        x = np.linalg.solve(A, np.concatenate([np.zeros(n), b]))
+        return np.linalg.solve(A, rhs)
     except np.linalg.LinAlgError:
         raise NumericalError(f"the impact at t = {t:.6g} s is not determined: the joints made at that instant "
                              "lock each other (redundant rows)") from None
-    return v + x[:n], x[n:]
+
+
+def _kkt(s, q, v, t, target: dict):
+    """Solve the impulse system for (v⁺, Λ)."""
+    x = _solve(*_system(s, q, v, t, target), t)
+    return v + x[:s.n], x[s.n:]
+
+
+def _delassus(s, q, v, t, target: dict, i: int):
+    """(u⁰, W) of the rough striking element ``i`` (rows 0 and 1): its row velocities after are
+    u⁰ + W Λ_i for its impulses Λ_i, every other row keeping its target (the system is linear in
+    the targets: three right sides)."""
+    tg = dict(target)
+    tg[(i, 0)] = tg[(i, 1)] = 0.0
+    A, rhs = _system(s, q, v, t, tg)
+    k = s.n + s.offsets[i]
+    rhs3 = np.column_stack([rhs, rhs, rhs])
+    rhs3[k, 1] += 1.0
+    rhs3[k + 1, 2] += 1.0
+    x = _solve(A, rhs3, t)
+    lam0 = x[k:k + 2, 0]
+    C = x[k:k + 2, 1:] - lam0[:, None]          # dΛ_i / d(row velocities)
+    W = np.linalg.inv(C)
+    return -W @ lam0, W
 
 
 def _pulling(s, lam, skip=frozenset()) -> tuple | None:
@@ -85,11 +116,13 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     """The impact of element ``e`` (a contact, stop or rolling body reaching its surface with
     restitution ``rest``, or a cord run jerked taut: ``run``, restitution 0) at (t, q, v⁻),
     together with ``others``: [(element, restitution)] of the points striking at the same
-    instant.  Every striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve; a striking
-    point whose impulse would pull drops out (it separates), as a made joint does.  Leaves the
-    striking joints made (those with an impulse); returns (v⁺, normal impulse, friction impulse,
-    released joints, [(element, normal impulse, friction impulse)] of ``others``).  ``hold``
-    keeps every striking point made whatever its impulse (the plastic remainder of the
+    instant.  Every smooth striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve, a
+    rough one Routh's method (``rough``); a striking point whose impulse would pull drops out (it
+    separates), as a made joint does.  Leaves the striking joints made (those with an impulse; a
+    rough one that slides on after a plastic impact in mode slide/slip); returns (v⁺, normal
+    impulse, friction impulse, released joints, [(element, normal impulse, friction impulse)] of
+    ``others``, {element name: the course of its slip (routh.Course.name), or "smooth"}).
+    ``hold`` keeps every striking point made whatever its impulse (the plastic remainder of the
     accumulation rule, where the rebound left is below the threshold)."""
     i = s.elements.index(e)
     released = []
@@ -99,9 +132,10 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         struck = []
     else:
         struck = [(e, rest)] + list(others)
-    speeds = {id(el): (el.normal_speed(q, v), el.slip_speed(q, v)) for el, _ in struck}
+    speeds = {id(el): el.normal_speed(q, v) for el, _ in struck}
     for el, _ in struck:
         _make(el, q)
+    courses: dict = {}
     for _ in range(4 * len(s.elements) + 4):
         s.refresh()
         if struck:
@@ -109,13 +143,11 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
             for el, r in struck:
                 k = s.elements.index(el)
                 if el.rows:
-                    rows[(k, 0)] = -r * speeds[id(el)][0]
+                    rows[(k, 0)] = -r * speeds[id(el)]
                 if el.rows == 2:
                     rows[(k, 1)] = 0.0
+            courses = rough(s, q, v, t, rows, struck, speeds)
         vp, lam = _kkt(s, q, v, t, rows)
-        slid = _slides(s, lam, struck, speeds)
-        if slid:
-            continue
         skip = {i} if isinstance(e, Cord) else {s.elements.index(el) for el, _ in struck} if hold else set()
         pull = _pulling(s, lam, skip)
         if pull is None:
@@ -126,28 +158,65 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         raise NumericalError(f"the impact at t = {t:.6g} s could not be resolved (joints releasing each other)")
     lm = s.lam_of(lam, i)
     if isinstance(e, Cord):
-        return vp, -float(lm[0]), 0.0, released, []
+        return vp, -float(lm[0]), 0.0, released, [], {}
     got = []
     for el, _ in struck:
         lk = s.lam_of(lam, s.elements.index(el))
         got.append((el, float(lk[0]) if el.rows else 0.0, el.friction(lk) if el.rows else 0.0))
-    released = [(el, r) for el, r in released if not any(el is x for x, _ in struck)]
-    return vp, got[0][1], got[0][2], released, got[1:]
-
-
-def _slides(s, lam, struck, speeds) -> bool:
-    """A rough striking point held whose impulse needs more than μ Λ_n slides (Coulomb for
-    impulses, against the slip before); True when one changed."""
+    names = {}
     for el, _ in struck:
-        if el.rows != 2:
-            continue
-        lm = s.lam_of(lam, s.elements.index(el))
-        if not el.holds(float(lm[0]), float(lm[1])):
-            vt = speeds[id(el)][1]
-            el.mode = "slip" if isinstance(el, Rolls) else "slide"
-            el.sign = math.copysign(1.0, vt) if vt != 0 else -math.copysign(1.0, float(lm[1]))
-            return True
-    return False
+        c = courses.get(id(el))
+        names[el.name] = c.name if c is not None else "smooth"
+        if c is not None and c.u_t != 0.0 and el.rows == 2:
+            el.mode = "slip" if isinstance(el, Rolls) else "slide"      # it slides on (if it stays made)
+            el.sign = math.copysign(1.0, c.u_t)
+    s.refresh()
+    released = [(el, r) for el, r in released if not any(el is x for x, _ in struck)]
+    return vp, got[0][1], got[0][2], released, got[1:], names
+
+
+def _mu(el) -> tuple[float, float]:
+    """(μ_s, μ_k) of a rough element for the impact (a rolling joint without μ_s cannot slip: ∞)."""
+    mu_s = math.inf if el.mu_s is None else float(el.mu_s)
+    mu_k = math.inf if el.mu_s is None else float(el.mu_k or 0.0)
+    return mu_s, mu_k
+
+
+#: sweeps over several rough points striking at one instant before the impact is given up (exit 1)
+MAX_SWEEPS = 100
+
+
+def rough(s, q, v, t, rows: dict, struck, speeds) -> dict:
+    """Routh's method (routh.py) at every rough striking point (two rows), each with the other
+    rows at their targets: writes the targets of its two rows (the velocity after) into ``rows``
+    and returns {id(element): routh.Course}.  A straight course keeps Newton's normal target
+    exactly (−e v_n⁻).  Several rough points striking together are swept in turn until their
+    targets agree (a fixed point)."""
+    pts = [(el, r) for el, r in struck if el.rows == 2]
+    out: dict = {}
+    for _ in range(MAX_SWEEPS if len(pts) > 1 else 1):
+        moved = 0.0
+        for el, r in pts:
+            k = s.elements.index(el)
+            u0, W = _delassus(s, q, v, t, rows, k)
+            mu_s, mu_k = _mu(el)
+            try:
+                c = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
+            except ArithmeticError as exc:
+                raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
+            un = -r * speeds[id(el)] if c.steps in (["sticks"], ["slides"]) else c.u_n
+            new = (un, c.u_t)
+            old = (rows[(k, 0)], rows[(k, 1)])
+            scale = max(abs(u0[0]), abs(u0[1]), 1e-300)
+            moved = max(moved, max(abs(a - b) for a, b in zip(new, old)) / scale)
+            rows[(k, 0)], rows[(k, 1)] = new
+            out[id(el)] = c
+        if moved <= 1e-13:
+            return out
+    if len(pts) > 1:
+        raise NumericalError(f"the rough points striking together at t = {t:.6g} s do not settle on one "
+                             f"impulse ({MAX_SWEEPS} sweeps of Routh's method)")
+    return out
 
 
 def normal_acceleration(s, q, v, t, e) -> float:
