@@ -95,7 +95,7 @@ def routh(W, u_n: float, u_t: float, e: float, mu_s: float, mu_k: float) -> Cour
             c.steps.append(what)
         dn, dt = Wnn + Wnt * k, Wtn + Wtt * k
         ends = []                               # (ΔP, which)
-        if s != 0.0 and ut != 0.0 and dt * ut < 0:
+        if s != 0.0 and ut != 0.0 and dt * ut < 0 and abs(dt) > abs(ut) * 1e-300:
             ends.append((-ut / dt, "stop"))
         if P_f is None and dn > 0:
             ends.append((-un / dn, "compression"))
