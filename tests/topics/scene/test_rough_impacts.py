@@ -433,3 +433,30 @@ def test_random_disk_landings_never_gain_energy(vx, vn, w, mu_s, frac, e):
     assert phases.lost(s.kinetic(v), s.kinetic(vp)) >= 0
     u0, u1 = vx + 0.1 * w, vp[i[0]] + 0.1 * vp[i[2]]
     assert u0 * u1 >= -1e-12 * (abs(u0) + vn)                    # a disk's slip never reverses
+
+
+def test_gallery_rod_strikes_rough_floor():
+    """problems/scenes/rod-strikes-rough-floor.yaml: the free flight to t = (−3 + √(9 + 2 g/10))/g
+    (exact in sympy), then Routh by hand on the body: slides, then slides back."""
+    from tests.topics.scene.common import gallery
+
+    g = sp.Rational(981, 100)
+    t = (-3 + sp.sqrt(9 + 2 * g / 10)) / g
+    vy = -3 - g * t
+    m = sp.Integer(2)
+    I = m / 12
+    pieces, (P, F, vx2, vy2, w2) = _body(m, I, (-sp.Rational(2, 5), -sp.Rational(3, 10)), sp.Rational(1, 2),
+                                         sp.Rational(2, 5), (sp.Integer(2), vy), sp.Integer(0))
+    assert [k for k, _ in pieces] == ["slides", "slides back"]
+    res = gallery("rod-strikes-rough-floor.yaml")["results"]
+    im = res["impacts"][0]
+    near(im["t"], t, EXACT, 1, "impact time")
+    near(im["v_n_before"], vy, EXACT, 3, "normal speed before")
+    near(im["impulse"], P, EXACT, P, "normal impulse")
+    near(im["impulse_F"], F, EXACT, P, "friction impulse")
+    near(im["v_n_after"], vy2 - w2 * sp.Rational(2, 5), EXACT, 3, "normal speed after (Poisson, not −e u_n⁻)")
+    near(im["slip_after"], vx2 + w2 * sp.Rational(3, 10), EXACT, 3, "slip after")
+    T1 = m * (4 + vy**2) / 2
+    near(im["energy_loss"], T1 - m * (vx2**2 + vy2**2) / 2 - I * w2**2 / 2, EXACT, T1, "energy lost")
+    near(res["omega"]["rod"][1][2], w2, EXACT, 10, "ω after")
+    assert im["course"] == "slides, then slides back"
