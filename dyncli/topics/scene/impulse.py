@@ -36,16 +36,18 @@ from .contacts import Contact, Rolls
 EPS = float(np.finfo(float).eps)
 
 
-def _system(s, q, v, t, target: dict):
+def _system(s, q, v, t, target: dict, applied=None):
     """The impulse system's matrix and right side; ``target`` maps (element index, row) -> the
-    velocity the row must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
+    velocity the row must have after the impact (its other rows keep J q̇⁺ + φ_t = 0);
+    ``applied``: a known generalized impulse (the rough striking points')."""
     J = s.jac(q)
     A = s.kkt_matrix(q, J)
     b = -(J @ v + s.phi_t(t)) if s.m else np.zeros(0)
     for (i, r), want in target.items():
         k = s.offsets[i] + r
         b[k] = want - float(J[k] @ v)
-    return A, np.concatenate([np.zeros(s.n), b])
+    top = np.zeros(s.n) if applied is None else np.asarray(applied, dtype=float)
+    return A, np.concatenate([top, b])
 
 
 def _solve(A, rhs, t):
@@ -56,28 +58,10 @@ def _solve(A, rhs, t):
                              "lock each other (redundant rows)") from None
 
 
-def _kkt(s, q, v, t, target: dict):
+def _kkt(s, q, v, t, target: dict, applied=None):
     """Solve the impulse system for (v⁺, Λ)."""
-    x = _solve(*_system(s, q, v, t, target), t)
+    x = _solve(*_system(s, q, v, t, target, applied), t)
     return v + x[:s.n], x[s.n:]
-
-
-def _delassus(s, q, v, t, target: dict, i: int):
-    """(u⁰, W) of the rough striking element ``i`` (rows 0 and 1): its row velocities after are
-    u⁰ + W Λ_i for its impulses Λ_i, every other row keeping its target (the system is linear in
-    the targets: three right sides)."""
-    tg = dict(target)
-    tg[(i, 0)] = tg[(i, 1)] = 0.0
-    A, rhs = _system(s, q, v, t, tg)
-    k = s.n + s.offsets[i]
-    rhs3 = np.column_stack([rhs, rhs, rhs])
-    rhs3[k, 1] += 1.0
-    rhs3[k + 1, 2] += 1.0
-    x = _solve(A, rhs3, t)
-    lam0 = x[k:k + 2, 0]
-    C = x[k:k + 2, 1:] - lam0[:, None]          # dΛ_i / d(row velocities)
-    W = np.linalg.inv(C)
-    return -W @ lam0, W
 
 
 def _pulling(s, lam, skip=frozenset()) -> tuple | None:
@@ -116,14 +100,15 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     """The impact of element ``e`` (a contact, stop or rolling body reaching its surface with
     restitution ``rest``, or a cord run jerked taut: ``run``, restitution 0) at (t, q, v⁻),
     together with ``others``: [(element, restitution)] of the points striking at the same
-    instant.  Every smooth striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve, a
-    rough one Routh's method (``rough``); a striking point whose impulse would pull drops out (it
-    separates), as a made joint does.  Leaves the striking joints made (those with an impulse; a
-    rough one that slides on after a plastic impact in mode slide/slip); returns (v⁺, normal
-    impulse, friction impulse, released joints, [(element, normal impulse, friction impulse)] of
-    ``others``, {element name: the course of its slip (routh.Course.name), or "smooth"}).
-    ``hold`` keeps every striking point made whatever its impulse (the plastic remainder of the
-    accumulation rule, where the rebound left is below the threshold)."""
+    instant.  Every smooth striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve; a
+    rough striking point has no row during the impact: its impulse (P, F) from Routh's method
+    (``rough``) is applied as a known impulse.  A striking point whose impulse would pull drops
+    out (it separates), as a made joint does.  Leaves the striking joints made (a rough one that
+    slides on, in mode slide/slip); returns (v⁺, normal impulse, friction impulse, released
+    joints, [(element, normal impulse, friction impulse)] of ``others``, {element name: the
+    course of its slip (routh.Course.name), or "smooth"}).  ``hold`` keeps every striking point
+    made whatever its impulse (the plastic remainder of the accumulation rule, where the
+    rebound left is below the threshold)."""
     i = s.elements.index(e)
     released = []
     if isinstance(e, Cord):
@@ -135,19 +120,21 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     speeds = {id(el): el.normal_speed(q, v) for el, _ in struck}
     for el, _ in struck:
         _make(el, q)
+    s.refresh()
+    J = s.jac(q)
+    pts = [(el, r, J[s.offsets[s.elements.index(el)]:][:2].copy()) for el, r in struck if el.rows == 2]
+    for el, _r, _J in pts:
+        el.mode = "off"                         # its impulse is applied, not a row, through the impact
     courses: dict = {}
+    applied = None
     for _ in range(4 * len(s.elements) + 4):
         s.refresh()
         if struck:
-            rows = {}
-            for el, r in struck:
-                k = s.elements.index(el)
-                if el.rows:
-                    rows[(k, 0)] = -r * speeds[id(el)]
-                if el.rows == 2:
-                    rows[(k, 1)] = 0.0
-            courses = rough(s, q, v, t, rows, struck, speeds)
-        vp, lam = _kkt(s, q, v, t, rows)
+            rows = {(s.elements.index(el), 0): -r * speeds[id(el)] for el, r in struck if el.rows}
+        if pts:
+            courses = rough(s, q, v, t, rows, pts)
+            applied = sum(Jk.T @ np.array([courses[id(el)].P, courses[id(el)].F]) for el, _r, Jk in pts)
+        vp, lam = _kkt(s, q, v, t, rows, applied)
         skip = {i} if isinstance(e, Cord) else {s.elements.index(el) for el, _ in struck} if hold else set()
         pull = _pulling(s, lam, skip)
         if pull is None:
@@ -161,14 +148,19 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         return vp, -float(lm[0]), 0.0, released, [], {}
     got = []
     for el, _ in struck:
+        c = courses.get(id(el))
+        if c is not None:
+            got.append((el, float(c.P), float(c.F)))
+            continue
         lk = s.lam_of(lam, s.elements.index(el))
         got.append((el, float(lk[0]) if el.rows else 0.0, el.friction(lk) if el.rows else 0.0))
-    names = {}
-    for el, _ in struck:
-        c = courses.get(id(el))
-        names[el.name] = c.name if c is not None else "smooth"
-        if c is not None and c.u_t != 0.0 and el.rows == 2:
-            el.mode = "slip" if isinstance(el, Rolls) else "slide"      # it slides on (if it stays made)
+    names = {el.name: "smooth" for el, _ in struck}
+    for el, _r, _J in pts:
+        c = courses[id(el)]
+        names[el.name] = c.name
+        _make(el, q)                            # made again: sticking (rolling), or sliding on
+        if c.u_t != 0.0:
+            el.mode = "slip" if isinstance(el, Rolls) else "slide"
             el.sign = math.copysign(1.0, c.u_t)
     s.refresh()
     released = [(el, r) for el, r in released if not any(el is x for x, _ in struck)]
@@ -186,30 +178,37 @@ def _mu(el) -> tuple[float, float]:
 MAX_SWEEPS = 100
 
 
-def rough(s, q, v, t, rows: dict, struck, speeds) -> dict:
-    """Routh's method (routh.py) at every rough striking point (two rows), each with the other
-    rows at their targets: writes the targets of its two rows (the velocity after) into ``rows``
-    and returns {id(element): routh.Course}.  A straight course keeps Newton's normal target
-    exactly (−e v_n⁻).  Several rough points striking together are swept in turn until their
-    targets agree (a fixed point)."""
-    pts = [(el, r) for el, r in struck if el.rows == 2]
+def rough(s, q, v, t, rows: dict, pts) -> dict:
+    """Routh's method (routh.py) at every rough striking point ``pts`` = [(element, e, J_k)] (J_k
+    its normal and tangential rows), each with the joints made keeping their rows and the other
+    rough points' impulses applied: the point's velocity is u = u⁰ + W (P, F), u⁰ = J_k q̇ with
+    no impulse of its own, W = J_k Δq̇ per unit impulse (three right sides of one system).
+    Returns {id(element): routh.Course}.  Several rough points striking together are swept in
+    turn until their impulses agree (a fixed point)."""
+    n = s.n
     out: dict = {}
     for _ in range(MAX_SWEEPS if len(pts) > 1 else 1):
         moved = 0.0
-        for el, r in pts:
-            k = s.elements.index(el)
-            u0, W = _delassus(s, q, v, t, rows, k)
+        for el, r, Jk in pts:
+            others = [(o, Jo) for o, _r, Jo in pts if o is not el and id(o) in out]
+            applied = sum((Jo.T @ np.array([out[id(o)].P, out[id(o)].F]) for o, Jo in others), np.zeros(n))
+            A, rhs = _system(s, q, v, t, rows, applied)
+            cols = np.zeros((len(rhs), 3))
+            cols[:, 0] = rhs
+            cols[:n, 1], cols[:n, 2] = Jk[0], Jk[1]
+            x = _solve(A, cols, t)
+            u0 = Jk @ (v + x[:n, 0])
+            W = Jk @ x[:n, 1:]
             mu_s, mu_k = _mu(el)
             try:
                 c = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
             except ArithmeticError as exc:
                 raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
-            un = -r * speeds[id(el)] if c.steps in (["sticks"], ["slides"]) else c.u_n
-            new = (un, c.u_t)
-            old = (rows[(k, 0)], rows[(k, 1)])
-            scale = max(abs(u0[0]), abs(u0[1]), 1e-300)
-            moved = max(moved, max(abs(a - b) for a, b in zip(new, old)) / scale)
-            rows[(k, 0)], rows[(k, 1)] = new
+            old = out.get(id(el))
+            if old is not None:
+                moved = max(moved, (abs(c.P - old.P) + abs(c.F - old.F)) / max(c.P, old.P, 1e-300))
+            else:
+                moved = math.inf
             out[id(el)] = c
         if moved <= 1e-13:
             return out

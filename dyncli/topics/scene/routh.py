@@ -81,7 +81,8 @@ def routh(W, u_n: float, u_t: float, e: float, mu_s: float, mu_k: float) -> Cour
     if un >= 0:                                 # no approach left: no normal impulse
         c.u_n, c.u_t, c.F = un, ut, F
         return c
-    k_st = -Wtn / Wtt
+    tiny = 1e-13 * (abs(un) + abs(ut))         # speeds within the rounding of W's solves: 0
+    k_st = -Wtn / Wtt if Wtt > 1e-13 * (abs(Wnn) + abs(Wtt)) else 0.0    # (W_tt = 0: friction moves nothing)
     sticks = abs(k_st) - mu_s <= 64 * EPS * max(abs(k_st), mu_s)     # the static test (|F| ≤ μ_s P)
     P_f, first = None, 0.0                      # first: the direction of the first slide
     for _ in range(8):
@@ -106,16 +107,18 @@ def routh(W, u_n: float, u_t: float, e: float, mu_s: float, mu_k: float) -> Cour
         dP, which = min(ends)
         dP = max(dP, 0.0)
         P, F, un, ut = P + dP, F + k * dP, un + dn * dP, ut + dt * dP
-        if s == 0.0:
+        if s == 0.0 or abs(ut) <= tiny:
             ut = 0.0                            # sticking keeps it at 0, not at rounding
         if which == "stop":
             ut = 0.0
-        elif which == "compression":
+        if P_f is None and which != "compression" and un >= -tiny:
+            which = "compression"               # it ended with the slip (a point on a circle: both at once)
+        if which == "compression":
             un, c.P_c = 0.0, P
             P_f = (1.0 + e) * P
             if e == 0.0:
                 break
-        else:
+        elif which == "end":
             break
     else:
         raise ArithmeticError("the impact's slip changed more often than Routh's method allows")

@@ -31,6 +31,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.conftest import solve_one_text
+from tests.tolerances import ODE_GLOBAL
 
 mp.mp.dps = 30
 EXACT = 1e-12
@@ -459,4 +460,40 @@ def test_gallery_rod_strikes_rough_floor():
     T1 = m * (4 + vy**2) / 2
     near(im["energy_loss"], T1 - m * (vx2**2 + vy2**2) / 2 - I * w2**2 / 2, EXACT, T1, "energy lost")
     near(res["omega"]["rod"][1][2], w2, EXACT, 10, "ω after")
+    assert im["course"] == "slides, then slides back"
+
+
+def test_pendulum_bob_strikes_a_rough_wall():
+    """A bob (m = 1 kg) on a light link (L = 1 m) released 45° from the vertical strikes a rough
+    wall 30° on the other side (a stop at x1 = 0.5, e = 0.7, μ = 0.3).  On its circle the bob
+    has one speed v along τ = (cos 30°, sin 30°), v0² = 2 g L (cos 30° − cos 45°); the wall's
+    (P, F) with n = −e1, d̂ = e2 changes it by m dv = −cos 30° dP + sin 30° dF.  The slip u_t = v/2
+    and u_n = −v cos 30° vanish together: it slides up (dF = −μ dP) until v = 0, at
+    P_c = m v0 / (cos 30° + μ/2); then the bob moves back, its slip reverses and so does friction
+    (dF = +μ dP) for the restitution (1 + e) P_c − P_c = e P_c:
+    v⁺ = −e P_c (cos 30° − μ/2)/m, F = −μ P_c + μ e P_c.  (The single-step rule kept F = −μ P
+    against the slip before, friction pushing the rebounding bob along.)"""
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  wall: {through: [0.5, 0], direction: [0, 1]}
+bodies:
+  bob: {shape: point, mass: 1, x: ["-sqrt(0.5)", "-sqrt(0.5)"]}
+joints:
+  arm: {link: [[0, 0], bob], length: 1}
+  hit: {stop: [bob, wall], e: 0.7, mu: 0.3}
+at: [0, 1]
+""")
+    im = rec["results"]["impacts"][0]
+    G = mp.mpf("9.81")
+    c30, e, mu = mp.cos(mp.pi / 6), mp.mpf("0.7"), mp.mpf("0.3")
+    v0 = mp.sqrt(2 * G * (c30 - mp.cos(mp.pi / 4)))
+    Pc = v0 / (c30 + mu / 2)
+    v1 = -e * Pc * (c30 - mu / 2)
+    tol = ODE_GLOBAL * 1e-10                   # the state at the impact comes from the quadrature/ODE route
+    near(im["impulse"], (1 + e) * Pc, tol, Pc, "normal impulse")
+    near(im["impulse_F"], -mu * Pc * (1 - e), tol, Pc, "friction impulse")
+    near(im["v_n_after"], -v1 * c30, tol, v0, "normal speed after (Poisson; Newton's would be −e u_n⁻)")
+    near(im["slip_after"], v1 / 2, tol, v0, "slip after: reversed with the bob")
+    near(im["energy_loss"], (v0**2 - v1**2) / 2, tol, v0**2, "energy lost")
     assert im["course"] == "slides, then slides back"
