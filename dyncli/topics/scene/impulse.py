@@ -11,11 +11,13 @@ with the same Jacobian J as the equations of motion: for every joint that stays 
 b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for a smooth impacting row,
 b = −(1 + e) (n·v⁻) (Newton's restitution, 28.7: the normal speed after is −e times the
 one before).  A rough striking point (two rows: normal and tangential) is followed through the
-impact by Routh's method (routh.py): the same system, solved with the point's two row
-velocities after as unknowns, gives the 2 × 2 map W from its impulses to its velocity, Routh's
-method gives the velocity after (Coulomb's law on every increment of the impulse, Poisson's
-impulse ratio, = Newton's while the impulse keeps one direction), and the system is solved
-with those targets.  Φ holds the kinetic friction of the *other* made contacts that slide.
+impact by Routh's method (routh.py): without its rows, the same system with unit impulses
+at the point gives the 2 × 2 map W from its impulses to its velocity, Routh's method gives its
+impulse (Coulomb's law on every increment, Poisson's impulse ratio, = Newton's while the impulse
+keeps one direction), and the system is solved with that impulse applied.  A rough point
+striking together with others keeps the single-step rule: held (tangential row 0 after), or
+sliding at −μ_k Λ_n sign(v_t⁻) along d̂ (Φ) when holding needs more than μ_s Λ_n.  Φ also holds
+the kinetic friction of the made contacts that slide.
 A made contact or a taut cord whose impulse would pull is released and the system solved
 again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two particles:
 (1 − e²) ½ m* (n·Δv)²).
@@ -101,8 +103,9 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     restitution ``rest``, or a cord run jerked taut: ``run``, restitution 0) at (t, q, v⁻),
     together with ``others``: [(element, restitution)] of the points striking at the same
     instant.  Every smooth striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve; a
-    rough striking point has no row during the impact: its impulse (P, F) from Routh's method
-    (``rough``) is applied as a known impulse.  A striking point whose impulse would pull drops
+    rough point striking alone has no row during the impact: its impulse (P, F) from Routh's
+    method (``rough``) is applied as a known impulse; a rough point striking with others keeps
+    the single-step rule (held, or sliding against its slip before: ``_slides``).  A striking point whose impulse would pull drops
     out (it separates), as a made joint does.  Leaves the striking joints made (a rough one that
     slides on, in mode slide/slip); returns (v⁺, normal impulse, friction impulse, released
     joints, [(element, normal impulse, friction impulse)] of ``others``, {element name: the
@@ -118,11 +121,15 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     else:
         struck = [(e, rest)] + list(others)
     speeds = {id(el): el.normal_speed(q, v) for el, _ in struck}
+    slips = {id(el): el.slip_speed(q, v) for el, _ in struck}
     for el, _ in struck:
         _make(el, q)
     s.refresh()
     J = s.jac(q)
     pts = [(el, r, J[s.offsets[s.elements.index(el)]:][:2].copy()) for el, r in struck if el.rows == 2]
+    together = bool(pts) and len(struck) > 1    # a rough point striking with others: the single-step rule
+    if together:
+        pts = []
     for el, _r, _J in pts:
         el.mode = "off"                         # its impulse is applied, not a row, through the impact
     courses: dict = {}
@@ -131,6 +138,11 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         s.refresh()
         if struck:
             rows = {(s.elements.index(el), 0): -r * speeds[id(el)] for el, r in struck if el.rows}
+            rows.update({(s.elements.index(el), 1): 0.0 for el, r in struck if el.rows == 2})
+        if together:
+            vp, lam = _kkt(s, q, v, t, rows)
+            if _slides(s, lam, struck, slips):
+                continue
         if pts:
             courses = rough(s, q, v, t, rows, pts)
             applied = sum(Jk.T @ np.array([courses[id(el)].P, courses[id(el)].F]) for el, _r, Jk in pts)
@@ -154,7 +166,12 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
             continue
         lk = s.lam_of(lam, s.elements.index(el))
         got.append((el, float(lk[0]) if el.rows else 0.0, el.friction(lk) if el.rows else 0.0))
-    names = {el.name: "smooth" for el, _ in struck}
+    names = {el.name: "smooth" if not el.rough else ("single step: " + el.mode) for el, _ in struck}
+    if together and s.kinetic(vp) - s.kinetic(v) > 64 * EPS * s.kinetic(v):
+        raise NumericalError(f"the points striking together at t = {t:.6g} s ("
+                             + ", ".join(el.name for el, _ in struck) + ") would gain energy by the "
+                             "single-step rule of Coulomb's law for impulses (Routh's method follows one "
+                             "striking point only); not solved")
     for el, _r, _J in pts:
         c = courses[id(el)]
         names[el.name] = c.name
@@ -174,48 +191,42 @@ def _mu(el) -> tuple[float, float]:
     return mu_s, mu_k
 
 
-#: sweeps over several rough points striking at one instant before the impact is given up (exit 1)
-MAX_SWEEPS = 100
-
-
 def rough(s, q, v, t, rows: dict, pts) -> dict:
-    """Routh's method (routh.py) at every rough striking point ``pts`` = [(element, e, J_k)] (J_k
-    its normal and tangential rows), each with the joints made keeping their rows and the other
-    rough points' impulses applied: the point's velocity is u = u⁰ + W (P, F), u⁰ = J_k q̇ with
-    no impulse of its own, W = J_k Δq̇ per unit impulse (three right sides of one system).
-    Returns {id(element): routh.Course}.  Several rough points striking together are swept in
-    turn until their impulses agree (a fixed point)."""
+    """Routh's method (routh.py) at the rough striking point of ``pts`` = [(element, e, J_k)] (J_k
+    its normal and tangential rows), the joints made keeping their rows: the point's velocity is
+    u = u⁰ + W (P, F), u⁰ = J_k q̇ with no impulse of its own and W = J_k Δq̇ per unit impulse
+    (three right sides of one system).  Returns {id(element): routh.Course}."""
     n = s.n
     out: dict = {}
-    for _ in range(MAX_SWEEPS if len(pts) > 1 else 1):
-        moved = 0.0
-        for el, r, Jk in pts:
-            others = [(o, Jo) for o, _r, Jo in pts if o is not el and id(o) in out]
-            applied = sum((Jo.T @ np.array([out[id(o)].P, out[id(o)].F]) for o, Jo in others), np.zeros(n))
-            A, rhs = _system(s, q, v, t, rows, applied)
-            cols = np.zeros((len(rhs), 3))
-            cols[:, 0] = rhs
-            cols[:n, 1], cols[:n, 2] = Jk[0], Jk[1]
-            x = _solve(A, cols, t)
-            u0 = Jk @ (v + x[:n, 0])
-            W = Jk @ x[:n, 1:]
-            mu_s, mu_k = _mu(el)
-            try:
-                c = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
-            except ArithmeticError as exc:
-                raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
-            old = out.get(id(el))
-            if old is not None:
-                moved = max(moved, (abs(c.P - old.P) + abs(c.F - old.F)) / max(c.P, old.P, 1e-300))
-            else:
-                moved = math.inf
-            out[id(el)] = c
-        if moved <= 1e-13:
-            return out
-    if len(pts) > 1:
-        raise NumericalError(f"the rough points striking together at t = {t:.6g} s do not settle on one "
-                             f"impulse ({MAX_SWEEPS} sweeps of Routh's method)")
+    for el, r, Jk in pts:
+        A, rhs = _system(s, q, v, t, rows)
+        cols = np.zeros((len(rhs), 3))
+        cols[:, 0] = rhs
+        cols[:n, 1], cols[:n, 2] = Jk[0], Jk[1]
+        x = _solve(A, cols, t)
+        u0 = Jk @ (v + x[:n, 0])
+        W = Jk @ x[:n, 1:]
+        mu_s, mu_k = _mu(el)
+        try:
+            out[id(el)] = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
+        except ArithmeticError as exc:
+            raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
     return out
+
+
+def _slides(s, lam, struck, slips) -> bool:
+    """Points striking together, one of them rough (the single-step rule): a point held whose impulse
+    needs more than μ_s Λ_n slides at μ_k Λ_n against the slip before; True when one changed."""
+    for el, _ in struck:
+        if el.rows != 2:
+            continue
+        lm = s.lam_of(lam, s.elements.index(el))
+        if not el.holds(float(lm[0]), float(lm[1])):
+            vt = slips[id(el)]
+            el.mode = "slip" if isinstance(el, Rolls) else "slide"
+            el.sign = math.copysign(1.0, vt) if vt != 0 else -math.copysign(1.0, float(lm[1]))
+            return True
+    return False
 
 
 def normal_acceleration(s, q, v, t, e) -> float:

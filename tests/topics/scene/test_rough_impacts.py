@@ -497,3 +497,20 @@ at: [0, 1]
     near(im["slip_after"], v1 / 2, tol, v0, "slip after: reversed with the bob")
     near(im["energy_loss"], (v0**2 - v1**2) / 2, tol, v0**2, "energy lost")
     assert im["course"] == "slides, then slides back"
+
+
+def test_rod_flat_on_a_rough_and_a_smooth_ledge_bounces_flat():
+    """Points striking together keep the single-step rule: a rod falling flat (no slip) onto a
+    rough ledge and a smooth one bounces flat, 2P = m (1 + e) v (the hand solution of
+    rod-on-two-ledges.yaml), no friction needed."""
+    from tests.conftest import PROBLEMS
+
+    text = (PROBLEMS / "scenes" / "rod-on-two-ledges.yaml").read_text()
+    text = text.replace("{stop: [rod.end1, left], e: e}", "{stop: [rod.end1, left], e: e, mu: 0.3}")
+    assert "mu: 0.3" in text
+    res = solve_one_text(text)["results"]
+    a, b = res["impacts"][0], res["impacts"][1]
+    v = mp.sqrt(2 * mp.mpf("9.81") * mp.mpf("0.5"))
+    near(a["impulse"], b["impulse"], EXACT, v, "equal impulses")
+    near(a["impulse"] + b["impulse"], 2 * mp.mpf("1.5") * v, EXACT, v, "2P = m (1 + e) v")
+    assert a["impulse_F"] == 0 and a["course"] == "single step: stick" and b["course"] == "smooth"
