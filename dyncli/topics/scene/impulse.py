@@ -8,13 +8,19 @@ give no impulse) gives, in the scene's maximal coordinates,
     [ J      0    ] [ Λ  ] = [ b ]
 
 with the same Jacobian J as the equations of motion: for every joint that stays made,
-b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for the impacting row,
+b = −(J q̇⁻ + φ_t) (the velocities after still satisfy it); for a smooth impacting row,
 b = −(1 + e) (n·v⁻) (Newton's restitution, 28.7: the normal speed after is −e times the
-one before); for its tangential row (rough, sticking) b = −v_t⁻.  Φ holds the friction of the
-impact where it slides: −μ Λ_n sign(v_t⁻) along d̂ (Coulomb, as in 28.26 with the impulse at
-the friction angle).  A made contact or a taut cord whose impulse would pull is released and
-the system solved again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two
-particles: (1 − e²) ½ m* (n·Δv)²).
+one before).  A rough striking point (two rows: normal and tangential) is followed through the
+impact by Routh's method (routh.py): without its rows, the same system with unit impulses
+at the point gives the 2 × 2 map W from its impulses to its velocity, Routh's method gives its
+impulse (Coulomb's law on every increment, Poisson's impulse ratio, = Newton's while the impulse
+keeps one direction), and the system is solved with that impulse applied.  A rough point
+striking together with others keeps the single-step rule: held (tangential row 0 after), or
+sliding at −μ_k Λ_n sign(v_t⁻) along d̂ (Φ) when holding needs more than μ_s Λ_n.  Φ also holds
+the kinetic friction of the made contacts that slide.
+A made contact or a taut cord whose impulse would pull is released and the system solved
+again.  The energy lost is T⁻ − T⁺ (28.16 for one smooth impact of two particles:
+(1 − e²) ½ m* (n·Δv)²).
 """
 
 from __future__ import annotations
@@ -25,28 +31,39 @@ import numpy as np
 
 from dyncli.errors import NumericalError
 
+from . import routh
 from .elements import Cord
 from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
 
-def _kkt(s, q, v, t, target: dict):
-    """Solve the impulse system; ``target`` maps (element index, row) -> the velocity the row
-    must have after the impact (its other rows keep J q̇⁺ + φ_t = 0)."""
-    n, m = s.n, s.m
+def _system(s, q, v, t, target: dict, applied=None):
+    """The impulse system's matrix and right side; ``target`` maps (element index, row) -> the
+    velocity the row must have after the impact (its other rows keep J q̇⁺ + φ_t = 0);
+    ``applied``: a known generalized impulse (the rough striking points')."""
     J = s.jac(q)
     A = s.kkt_matrix(q, J)
-    b = -(J @ v + s.phi_t(t)) if m else np.zeros(0)
+    b = -(J @ v + s.phi_t(t)) if s.m else np.zeros(0)
     for (i, r), want in target.items():
         k = s.offsets[i] + r
         b[k] = want - float(J[k] @ v)
+    top = np.zeros(s.n) if applied is None else np.asarray(applied, dtype=float)
+    return A, np.concatenate([top, b])
+
+
+def _solve(A, rhs, t):
     try:
-        x = np.linalg.solve(A, np.concatenate([np.zeros(n), b]))
+        return np.linalg.solve(A, rhs)
     except np.linalg.LinAlgError:
         raise NumericalError(f"the impact at t = {t:.6g} s is not determined: the joints made at that instant "
                              "lock each other (redundant rows)") from None
-    return v + x[:n], x[n:]
+
+
+def _kkt(s, q, v, t, target: dict, applied=None):
+    """Solve the impulse system for (v⁺, Λ)."""
+    x = _solve(*_system(s, q, v, t, target, applied), t)
+    return v + x[:s.n], x[s.n:]
 
 
 def _pulling(s, lam, skip=frozenset()) -> tuple | None:
@@ -85,12 +102,16 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     """The impact of element ``e`` (a contact, stop or rolling body reaching its surface with
     restitution ``rest``, or a cord run jerked taut: ``run``, restitution 0) at (t, q, v⁻),
     together with ``others``: [(element, restitution)] of the points striking at the same
-    instant.  Every striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve; a striking
-    point whose impulse would pull drops out (it separates), as a made joint does.  Leaves the
-    striking joints made (those with an impulse); returns (v⁺, normal impulse, friction impulse,
-    released joints, [(element, normal impulse, friction impulse)] of ``others``).  ``hold``
-    keeps every striking point made whatever its impulse (the plastic remainder of the
-    accumulation rule, where the rebound left is below the threshold)."""
+    instant.  Every smooth striking row has Newton's law v_n⁺ = −e v_n⁻ (28.7) in one solve; a
+    rough point striking alone has no row during the impact: its impulse (P, F) from Routh's
+    method (``rough``) is applied as a known impulse; a rough point striking with others keeps
+    the single-step rule (held, or sliding against its slip before: ``_slides``).  A striking point whose impulse would pull drops
+    out (it separates), as a made joint does.  Leaves the striking joints made (a rough one that
+    slides on, in mode slide/slip); returns (v⁺, normal impulse, friction impulse, released
+    joints, [(element, normal impulse, friction impulse)] of ``others``, {element name: the
+    course of its slip (routh.Course.name), or "smooth"}).  ``hold`` keeps every striking point
+    made whatever its impulse (the plastic remainder of the accumulation rule, where the
+    rebound left is below the threshold)."""
     i = s.elements.index(e)
     released = []
     if isinstance(e, Cord):
@@ -99,23 +120,33 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         struck = []
     else:
         struck = [(e, rest)] + list(others)
-    speeds = {id(el): (el.normal_speed(q, v), el.slip_speed(q, v)) for el, _ in struck}
+    speeds = {id(el): el.normal_speed(q, v) for el, _ in struck}
+    slips = {id(el): el.slip_speed(q, v) for el, _ in struck}
     for el, _ in struck:
         _make(el, q)
+    s.refresh()
+    J = s.jac(q)
+    pts = [(el, r, J[s.offsets[s.elements.index(el)]:][:2].copy()) for el, r in struck if el.rows == 2]
+    together = bool(pts) and len(struck) > 1    # a rough point striking with others: the single-step rule
+    if together:
+        pts = []
+    for el, _r, _J in pts:
+        el.mode = "off"                         # its impulse is applied, not a row, through the impact
+    courses: dict = {}
+    applied = None
     for _ in range(4 * len(s.elements) + 4):
         s.refresh()
         if struck:
-            rows = {}
-            for el, r in struck:
-                k = s.elements.index(el)
-                if el.rows:
-                    rows[(k, 0)] = -r * speeds[id(el)][0]
-                if el.rows == 2:
-                    rows[(k, 1)] = 0.0
-        vp, lam = _kkt(s, q, v, t, rows)
-        slid = _slides(s, lam, struck, speeds)
-        if slid:
-            continue
+            rows = {(s.elements.index(el), 0): -r * speeds[id(el)] for el, r in struck if el.rows}
+            rows.update({(s.elements.index(el), 1): 0.0 for el, r in struck if el.rows == 2})
+        if together:
+            vp, lam = _kkt(s, q, v, t, rows)
+            if _slides(s, lam, struck, slips):
+                continue
+        if pts:
+            courses = rough(s, q, v, t, rows, pts)
+            applied = sum(Jk.T @ np.array([courses[id(el)].P, courses[id(el)].F]) for el, _r, Jk in pts)
+        vp, lam = _kkt(s, q, v, t, rows, applied)
         skip = {i} if isinstance(e, Cord) else {s.elements.index(el) for el, _ in struck} if hold else set()
         pull = _pulling(s, lam, skip)
         if pull is None:
@@ -126,24 +157,72 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         raise NumericalError(f"the impact at t = {t:.6g} s could not be resolved (joints releasing each other)")
     lm = s.lam_of(lam, i)
     if isinstance(e, Cord):
-        return vp, -float(lm[0]), 0.0, released, []
+        return vp, -float(lm[0]), 0.0, released, [], {}
     got = []
     for el, _ in struck:
+        c = courses.get(id(el))
+        if c is not None:
+            got.append((el, float(c.P), float(c.F)))
+            continue
         lk = s.lam_of(lam, s.elements.index(el))
         got.append((el, float(lk[0]) if el.rows else 0.0, el.friction(lk) if el.rows else 0.0))
+    names = {el.name: "smooth" if not el.rough else ("single step: " + el.mode) for el, _ in struck}
+    if together and s.kinetic(vp) - s.kinetic(v) > 64 * EPS * s.kinetic(v):
+        raise NumericalError(f"the points striking together at t = {t:.6g} s ("
+                             + ", ".join(el.name for el, _ in struck) + ") would gain energy by the "
+                             "single-step rule of Coulomb's law for impulses (Routh's method follows one "
+                             "striking point only); not solved")
+    for el, _r, _J in pts:
+        c = courses[id(el)]
+        names[el.name] = c.name
+        _make(el, q)                            # made again: sticking (rolling), or sliding on
+        if c.u_t != 0.0:
+            el.mode = "slip" if isinstance(el, Rolls) else "slide"
+            el.sign = math.copysign(1.0, c.u_t)
+    s.refresh()
     released = [(el, r) for el, r in released if not any(el is x for x, _ in struck)]
-    return vp, got[0][1], got[0][2], released, got[1:]
+    return vp, got[0][1], got[0][2], released, got[1:], names
 
 
-def _slides(s, lam, struck, speeds) -> bool:
-    """A rough striking point held whose impulse needs more than μ Λ_n slides (Coulomb for
-    impulses, against the slip before); True when one changed."""
+def _mu(el) -> tuple[float, float]:
+    """(μ_s, μ_k) of a rough element for the impact (a rolling joint without μ_s cannot slip: ∞)."""
+    mu_s = math.inf if el.mu_s is None else float(el.mu_s)
+    mu_k = math.inf if el.mu_s is None else float(el.mu_k or 0.0)
+    return mu_s, mu_k
+
+
+def rough(s, q, v, t, rows: dict, pts) -> dict:
+    """Routh's method (routh.py) at the rough striking point of ``pts`` = [(element, e, J_k)] (J_k
+    its normal and tangential rows), the joints made keeping their rows: the point's velocity is
+    u = u⁰ + W (P, F), u⁰ = J_k q̇ with no impulse of its own and W = J_k Δq̇ per unit impulse
+    (three right sides of one system).  Returns {id(element): routh.Course}."""
+    n = s.n
+    out: dict = {}
+    for el, r, Jk in pts:
+        A, rhs = _system(s, q, v, t, rows)
+        cols = np.zeros((len(rhs), 3))
+        cols[:, 0] = rhs
+        cols[:n, 1], cols[:n, 2] = Jk[0], Jk[1]
+        x = _solve(A, cols, t)
+        u0 = Jk @ (v + x[:n, 0])
+        W = Jk @ x[:n, 1:]
+        mu_s, mu_k = _mu(el)
+        try:
+            out[id(el)] = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
+        except ArithmeticError as exc:
+            raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
+    return out
+
+
+def _slides(s, lam, struck, slips) -> bool:
+    """Points striking together, one of them rough (the single-step rule): a point held whose impulse
+    needs more than μ_s Λ_n slides at μ_k Λ_n against the slip before; True when one changed."""
     for el, _ in struck:
         if el.rows != 2:
             continue
         lm = s.lam_of(lam, s.elements.index(el))
         if not el.holds(float(lm[0]), float(lm[1])):
-            vt = speeds[id(el)][1]
+            vt = slips[id(el)]
             el.mode = "slip" if isinstance(el, Rolls) else "slide"
             el.sign = math.copysign(1.0, vt) if vt != 0 else -math.copysign(1.0, float(lm[1]))
             return True

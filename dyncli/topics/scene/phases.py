@@ -36,6 +36,7 @@ from . import assembly, impulse, motion
 from .contacts import Contact, Rolls
 from .elements import Cord
 
+EPS = float(np.finfo(float).eps)
 #: the most phases one solve follows; the motion stops there with a warning
 MAX_PHASES = 2000
 #: the most changes at one instant (phases of no length) before the solve gives up (exit 1)
@@ -62,11 +63,21 @@ class Impact:
     energy_loss: float              # T⁻ − T⁺
     friction: float = 0.0           # the tangential impulse of a rough impact
     v_normal: tuple = (0.0, 0.0)    # the normal speed of the point before and after
+    slip: tuple = (None, None)      # the point's slip speed along d̂ before and after (a cord: None)
+    course: str | None = None       # the slip through the impact (routh.py): smooth, sticks, slides, ...
 
     def as_dict(self) -> dict:
         return {"t": self.t, "joint": self.joint, "e": self.e, "impulse": self.impulse,
                 "energy_loss": self.energy_loss, "impulse_F": self.friction,
-                "v_n_before": self.v_normal[0], "v_n_after": self.v_normal[1]}
+                "v_n_before": self.v_normal[0], "v_n_after": self.v_normal[1],
+                "slip_before": self.slip[0], "slip_after": self.slip[1], "course": self.course}
+
+
+def lost(T1: float, T2: float) -> float:
+    """The kinetic energy an impact takes, T⁻ − T⁺ ≥ 0: a difference below the rounding of T
+    (64 ε T⁻, an elastic or nearly elastic impact) is 0, never a gain."""
+    d = T1 - T2
+    return 0.0 if d < 0 and -d <= 64 * EPS * max(T1, T2) else d
 
 
 def joints_of(s) -> list[str]:
@@ -136,15 +147,20 @@ class Transitions:
         vn = speed(v)
         others = [] if isinstance(e, Cord) else self._together(t, q, v, e)
         vns = [el.normal_speed(q, v) for el, _ in others]
-        vp, N, F, released, more = impulse.strike(s, q, v, t, e, rest, run, others)
+        slips = {el.name: el.slip_speed(q, v) for el, _ in [(e, 0)] + others if not isinstance(el, Cord)}
+        vp, N, F, released, more, courses = impulse.strike(s, q, v, t, e, rest, run, others)
         vn2 = speed(vp)
-        hit = Impact(t, e.name, rest, N, 0.0, F, (vn, vn2))
+
+        def slip(el):
+            return (None, None) if isinstance(el, Cord) else (slips[el.name], el.slip_speed(q, vp))
+        hit = Impact(t, e.name, rest, N, 0.0, F, (vn, vn2), slip(e), courses.get(e.name))
         hits = [(hit, what)] if N > 0 or not more else []      # a point struck with no impulse: none
         for (el, N_o, F_o), vn_o in zip(more, vns):
             if N_o > 0:
-                hits.append((Impact(t, el.name, el.e, N_o, 0.0, F_o, (vn_o, el.normal_speed(q, vp))), "impact"))
+                hits.append((Impact(t, el.name, el.e, N_o, 0.0, F_o, (vn_o, el.normal_speed(q, vp)), slip(el),
+                                    courses.get(el.name)), "impact"))
         hits = hits or [(hit, what)]
-        hits[0][0].energy_loss = T1 - s.kinetic(vp)      # the whole impact's, on its first entry
+        hits[0][0].energy_loss = lost(T1, s.kinetic(vp))   # the whole impact's, on its first entry
         for h, w in hits:
             self.event(t, h.joint, w)
             self.traj.impacts.append(h)
@@ -168,10 +184,10 @@ class Transitions:
             return vp
         t_rest = t + 2.0 * vn2 / (-a_n * (1.0 - rest)) if rest < 1 else math.inf
         T2 = s.kinetic(vp)
-        vr, N2, F2, released, more = impulse.strike(s, q, vp, t, e, 0.0, None, rebound, hold=True)
+        vr, N2, F2, released, more, _ = impulse.strike(s, q, vp, t, e, 0.0, None, rebound, hold=True)
         hit.impulse += N2
         hit.friction += F2
-        hit.energy_loss += T2 - s.kinetic(vr)
+        hit.energy_loss += lost(T2, s.kinetic(vr))
         self.event(t_rest, e.name, "rests")
         for el, _N, _F in more:                         # those that struck with it rest with it
             self.event(t_rest, el.name, "rests")

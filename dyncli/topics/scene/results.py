@@ -49,7 +49,9 @@ SCENE = TypeSpec(
           "the first integrals that hold through it: E, G.0, G.1)}",
           kind="list", contract=True),
         R("impacts", "", "", "28.7, 28.16, 33.2", "each impact: {t, joint, e, impulse (normal, or the cord's "
-          "impulsive tension) [N·s], energy_loss [J], impulse_F, v_n_before, v_n_after}", kind="list",
+          "impulsive tension) [N·s], energy_loss [J], impulse_F, v_n_before, v_n_after, slip_before, slip_after "
+          "(the point's speed along d̂ [m/s]; a cord: null), course (the slip through the impact, Routh's method: "
+          "smooth, sticks, slides, slides, then sticks, slides, then slides back, ...; a cord: null)}", kind="list",
           contract=True),
         R("integrals", "", "", "34.20, 36.10", "first integrals that hold: {name, value, drift, equation}",
           kind="list", contract=True),

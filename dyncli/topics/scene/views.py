@@ -115,9 +115,10 @@ def _phases(r) -> Table:
 
 def _impacts(r) -> Table:
     rows = [[i["t"], i["joint"], i["e"], i["impulse"], i["impulse_F"], i["v_n_before"], i["v_n_after"],
-             i["energy_loss"]] for i in r["impacts"]]
+             i["energy_loss"], i.get("course") or "—"] for i in r["impacts"]]
     return Table("impacts (28.7, 28.16, 33.2)", ["t [s]", "joint", "e", "impulse [N·s]", "friction [N·s]",
-                                                 "v_n before [m/s]", "v_n after [m/s]", "energy lost [J]"], rows)
+                                                 "v_n before [m/s]", "v_n after [m/s]", "energy lost [J]",
+                                                 "slip"], rows)
 
 
 def _find(r) -> Table:
