@@ -62,7 +62,8 @@ def _solve(A, rhs, t):
 
 def _kkt(s, q, v, t, target: dict, applied=None):
     """Solve the impulse system for (v⁺, Λ)."""
-    x = _solve(*_system(s, q, v, t, target, applied), t)
+    A, rhs = _system(s, q, v, t, target, applied)
+    x = _solve(A, rhs, t)
     return v + x[:s.n], x[s.n:]
 
 
