@@ -53,18 +53,26 @@ def _system(s, q, v, t, target: dict, applied=None):
 
 
 def _solve(A, rhs, t):
+    """(x, shared): the impulse system's solution; where its rows are dependent but consistent
+    (two rough points of one body striking together along one line: their friction impulses are
+    statically indeterminate, only their sum is fixed), the least-norm one, ``shared`` True."""
     try:
-        return np.linalg.solve(A, rhs)
+        return np.linalg.solve(A, rhs), False
     except np.linalg.LinAlgError:
+        x = np.linalg.lstsq(A, rhs, rcond=None)[0]
+        scale = max(float(np.max(np.abs(rhs), initial=0.0)), float(np.max(np.abs(A), initial=0.0) *
+                                                                    np.max(np.abs(x), initial=0.0)), 1e-300)
+        if np.all(np.isfinite(x)) and float(np.max(np.abs(A @ x - rhs), initial=0.0)) <= 1e-10 * scale:
+            return x, True
         raise NumericalError(f"the impact at t = {t:.6g} s is not determined: the joints made at that instant "
                              "lock each other (redundant rows)") from None
 
 
 def _kkt(s, q, v, t, target: dict, applied=None):
-    """Solve the impulse system for (v⁺, Λ)."""
+    """Solve the impulse system for (v⁺, Λ, shared) (shared: :func:`_solve`)."""
     A, rhs = _system(s, q, v, t, target, applied)
-    x = _solve(A, rhs, t)
-    return v + x[:s.n], x[s.n:]
+    x, shared = _solve(A, rhs, t)
+    return v + x[:s.n], x[s.n:], shared
 
 
 def _pulling(s, lam, skip=frozenset()) -> tuple | None:
@@ -141,13 +149,13 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
             rows = {(s.elements.index(el), 0): -r * speeds[id(el)] for el, r in struck if el.rows}
             rows.update({(s.elements.index(el), 1): 0.0 for el, r in struck if el.rows == 2})
         if together:
-            vp, lam = _kkt(s, q, v, t, rows)
+            vp, lam, shared = _kkt(s, q, v, t, rows)
             if _slides(s, lam, struck, slips):
                 continue
         if pts:
             courses = rough(s, q, v, t, rows, pts)
             applied = sum(Jk.T @ np.array([courses[id(el)].P, courses[id(el)].F]) for el, _r, Jk in pts)
-        vp, lam = _kkt(s, q, v, t, rows, applied)
+        vp, lam, shared = _kkt(s, q, v, t, rows, applied)
         skip = {i} if isinstance(e, Cord) else {s.elements.index(el) for el, _ in struck} if hold else set()
         pull = _pulling(s, lam, skip)
         if pull is None:
@@ -168,6 +176,8 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
         lk = s.lam_of(lam, s.elements.index(el))
         got.append((el, float(lk[0]) if el.rows else 0.0, el.friction(lk) if el.rows else 0.0))
     names = {el.name: "smooth" if not el.rough else ("single step: " + el.mode) for el, _ in struck}
+    if shared:      # the friction impulses of points along one line of one body: only their sum is fixed
+        names = {k: c if c == "smooth" else c + ", friction shared by least norm (indeterminate)" for k, c in names.items()}
     if together and s.kinetic(vp) - s.kinetic(v) > 64 * EPS * s.kinetic(v):
         raise NumericalError(f"the points striking together at t = {t:.6g} s ("
                              + ", ".join(el.name for el, _ in struck) + ") would gain energy by the "
@@ -204,7 +214,7 @@ def rough(s, q, v, t, rows: dict, pts) -> dict:
         cols = np.zeros((len(rhs), 3))
         cols[:, 0] = rhs
         cols[:n, 1], cols[:n, 2] = Jk[0], Jk[1]
-        x = _solve(A, cols, t)
+        x, _ = _solve(A, cols, t)
         u0 = Jk @ (v + x[:n, 0])
         W = Jk @ x[:n, 1:]
         mu_s, mu_k = _mu(el)

@@ -101,3 +101,46 @@ def test_a_striking_point_whose_impulse_would_pull_leaves():
     t1 = mp.sqrt(1 / mp.mpf(G))
     near(r["omega"]["rod"][1][2], w, abs(w), "omega after")
     near(r["v"]["rod"][1][1], -v + P / m - G * (mp.mpf("0.4") - t1), v, "v after")
+
+
+ROUGH_LEDGES = """
+type: scene
+params: {{m: 2, L: 1, h: 0.5, e: 0.5, u: 0.5, mu: {mu}}}
+surfaces:
+  left: {{through: [-1.5, 0], direction: [1, 0], length: 1.2}}
+  right: {{through: [0.3, 0], direction: [1, 0], length: 1.2}}
+bodies:
+  rod: {{shape: rod, mass: m, length: L, x: [0, h], angle: 0, v: [u, 0]}}
+joints:
+  a: {{stop: [rod.end1, left], e: e, mu: mu}}
+  b: {{stop: [rod.end2, right], e: e, mu: mu}}
+at: [0, 0.4]
+t_end: 0.4
+"""
+
+
+def test_rod_flat_and_sliding_on_two_rough_ledges():
+    """A rod (m = 2) falls flat from h = 0.5 with a sideways speed u = 0.5 onto two rough ledges,
+    both ends at once.  By hand (33.2, 28.7, Coulomb's law for impulses): each normal impulse
+    P = m (1 + e) v / 2, v = √(2 g h); holding the slip needs the total friction impulse −m u,
+    within μ (2P) for μ = 0.3: the rod stops sliding, the loss ½ m u² + ½ m v² (1 − e²); the two
+    ends' shares are not determined (one line of one rigid body: only the sum is), split by the
+    least norm (−m u / 2 each) and said in `course`.  With μ = 0.05 holding needs more than μ (2P):
+    both slide, −μ P each, u⁺ = u − 2 μ P / m.  (The rows of the two held points are dependent:
+    before, the impact was refused, exit 1.)"""
+    m, e, u = mp.mpf(2), mp.mpf("0.5"), mp.mpf("0.5")
+    v = mp.sqrt(2 * mp.mpf(G) * mp.mpf("0.5"))
+    P = m * (1 + e) * v / 2
+    r = solve_one_text(ROUGH_LEDGES.format(mu=0.3))["results"]
+    a, b = r["impacts"][:2]
+    for hit in (a, b):
+        near(hit["impulse"], P, P, "P")
+        near(hit["impulse_F"], -m * u / 2, P, "F")
+        assert "least norm" in hit["course"]
+    near(a["energy_loss"] + b["energy_loss"], m * u ** 2 / 2 + m * v ** 2 * (1 - e ** 2) / 2, m * v ** 2, "loss")
+    near(r["v"]["rod"][1][0], 0, v, "u after")
+    r = solve_one_text(ROUGH_LEDGES.format(mu=0.05))["results"]
+    for hit in r["impacts"][:2]:
+        near(hit["impulse_F"], -mp.mpf("0.05") * P, P, "F sliding")
+        assert "least norm" not in hit["course"]
+    near(r["v"]["rod"][1][0], u - 2 * mp.mpf("0.05") * P / m, v, "u after sliding")
