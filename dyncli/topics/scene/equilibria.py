@@ -1,4 +1,4 @@
-"""Where a scene can rest: the equilibria of its reduced system, found exactly (docs/types/scene.md).
+"""Where a scene can rest: the equilibria of its reduced system, each a converged root (docs/types/scene.md).
 
 At rest the joints hold the loads: f(q) + Jᵀλ = 0 with φ(q) = 0 — the generalized forces
 Zᵀf of the reduced system vanish (Z spanning the null space of J).  Each equilibrium is a root
@@ -11,6 +11,8 @@ started from the given configuration and from the points where the generalized f
 path on the mechanism changes sign: each free coordinate is followed on the joints' manifold
 (a step of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either
 way) — the sign change brackets a root the Newton iteration then converges to quadratically.
+Which equilibria are reached depends on these starts (a sampled walk: two equilibria within one
+step, or one beyond half a turn from every start, can be missed; said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
