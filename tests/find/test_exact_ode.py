@@ -265,3 +265,113 @@ accuracy: {{rtol: {rtol!r}, method: ode}}
         want = float((_q(r1) - _q(0)) + (_q(r1) - _q(r2)) + (_q(2) - _q(r2)))
     # three legs, each q's error (ode(rtol) of its scale ~1) at its ends
     assert abs(R["distance"][1] - want) <= 6 * ode(rtol)
+
+
+# --- euler (ODE route, an applied moment): ω₁ steps back inside one piece of the old grid -------
+
+def _euler_omega(eps, t):
+    """ω₁ of a body spun about e'₁ (ω₂ = ω₃ = 0 stay 0) by M₁ = I₁(3(t − 1)² − ε): the closed form
+    1 + (t − 1)³ + 1 − εt."""
+    return 1 + (t - 1) ** 3 + 1 - eps * t
+
+
+@pytest.mark.parametrize("rtol", [1e-10, 1e-12])
+def test_euler_omega_steps_back_between_samples(rtol):
+    """ω₁ rises, falls by ~1e-8 over 4e-3 s around t = 1 and rises again (the moment dips below 0
+    for a moment).  The sampled search (4 points per piece of a 64-piece grid over [0, 2]) saw one
+    crossing of the level halfway through the fall: occurrences 2 and 3 'not reached' and
+    T_t's 'not reached' (exit 0), the local maximum of ω₁ 3e-8 s off (Brent's minimiser on the
+    flat top).  Now one run's dense output, every step cut at ω₁'s exact extremes, an extreme
+    polished as a root of ω̇ from Euler's equations.  Reference: the closed form (mpmath).
+    Tolerance: ω's error (ode(rtol) of its scale, 2) over |ω̇₁| at the crossing; the extreme's
+    time: ω̇₁'s error over ω̈₁ = 6(t − 1) there."""
+    eps = 1e-5
+    with mp.workdps(MPMATH_DPS):
+        r1, r2 = 1 - mp.sqrt(mp.mpf(eps) / 3), 1 + mp.sqrt(mp.mpf(eps) / 3)
+        W = (_euler_omega(eps, r1) + _euler_omega(eps, r2)) / 2
+        want = [mp.findroot(lambda t: _euler_omega(eps, t) - W, ab, solver="bisect")
+                for ab in ((mp.mpf("0.5"), r1), (r1, r2), (r2, mp.mpf("1.5")))]
+        rates = [float(abs(3 * (t - 1) ** 2 - eps)) for t in want]
+        top = float(_euler_omega(eps, r1))
+    W = float(W)
+    R, _ = solve(f"""
+type: euler
+I: [1, 2, 3]
+omega0: [1, 0, 0]
+M: ["3*(t-1)**2 - {eps!r}", "0", "0"]
+t_end: 2
+find:
+  - {{when: {{omega.0: {W!r}}}}}
+  - {{when: {{omega.0: {W!r}}}, occurrence: 2}}
+  - {{when: {{omega.0: {W!r}}}, occurrence: 3}}
+  - {{max: omega.0, within: [0.5, 1.0]}}
+  - {{when: {{T_t: {0.5 * W * W!r}}}, occurrence: 2}}
+accuracy: {{rtol: {rtol!r}}}
+""")
+    for k, (t, rate) in enumerate(zip(want, rates)):
+        assert abs(entry(R, k)["t"] - float(t)) <= ode(rtol) * 2 / rate, k
+    # T_t = ½ω₁² (I₁ = 1) crosses ½W² where ω₁ crosses W
+    assert abs(entry(R, 4)["t"] - float(want[1])) <= ode(rtol) * 2 / rates[1]
+    e = entry(R, 3)
+    assert e["at_end"] is False
+    assert abs(e["t"] - float(r1)) <= ode(rtol) * 2 / (6 * abs(float(r1) - 1))
+    assert e["omega"][0] == pytest.approx(top, abs=ode(rtol) * 2)
+
+
+# --- gyroscope (ODE route): θ̇ dips for a moment each time θ passes π/2 ---------------------------
+
+def _gyro(delta):
+    """The gyroscope below (I1 = 1, I2 = 2, q = 1, p = 1 − δ, θ₀ = 0, θ̇₀ = √2): θ circulates with
+    θ̇² = C − V(θ), V = ½ sin²θ − p sin θ, C = 2 (37.13); V has a minimum at sin θ* = p, a maximum
+    δ²/2 higher at θ = π/2: θ̇ dips by ~1e-7 over 0.09 rad there.  (θ̇ at the level X halfway
+    into the dip, the four θ where θ̇ = X in one turn, the time of a whole turn; mpmath.)"""
+    p, C = 1 - mp.mpf(delta), mp.mpf(2)
+    thd = lambda th: mp.sqrt(C - (mp.sin(th) ** 2 / 2 - p * mp.sin(th)))     # noqa: E731
+    X = (thd(mp.asin(p)) + thd(mp.pi / 2)) / 2
+    disc = mp.sqrt(p * p + 2 * (C - X * X))                                    # V(θ) = C − X²: sin θ = p ∓ disc
+    thetas = [mp.asin(p - disc), mp.asin(p + disc), mp.pi - mp.asin(p + disc), mp.pi - mp.asin(p - disc)]
+    time = lambda th: mp.quad(lambda x: 1 / thd(x), [0, th])                  # noqa: E731
+    turn = mp.quad(lambda x: 1 / thd(x), [0, mp.pi / 2, mp.pi, 3 * mp.pi / 2, 2 * mp.pi])
+    return p, X, thd, thetas, time, turn
+
+
+@pytest.mark.parametrize("rtol", [1e-10, 1e-12])
+def test_gyroscope_theta_dot_dips_between_samples(rtol):
+    """The sampled search (4 points per piece, 8 pieces per turn of θ̇) found the dip's two
+    crossings in the first turn only: the 2nd and 3rd turns' crossings were given the wrong
+    occurrence (5 s off) or 'not reached' (exit 0); the dip's minimum was the window's end.  Now
+    one run's dense output, every step cut at θ̇'s exact extremes, an extreme polished as a root of
+    θ̈ (37.12).  Reference: t(θ) = ∫dθ/θ̇ from the first integral (mpmath quadrature, 30 digits).
+    Tolerance: a crossing's time is off by θ̇'s error over θ̈ there plus θ's error over θ̇ (each
+    ode(rtol) of its scale: 1.6 rad/s, 20 rad over 16 s)."""
+    delta = 1e-3
+    with mp.workdps(MPMATH_DPS):
+        p, X, thd, thetas, time, turn = _gyro(delta)
+        first = [time(th) for th in thetas]
+        want = [(t + k * turn, th) for k in range(3) for t, th in zip(first, thetas)]
+        slope = [float(abs((p - mp.sin(th)) * mp.cos(th) / 2)) for _, th in want]    # |θ̈| (37.12)
+        speed = [float(thd(th)) for _, th in want]
+        bottom, t_bottom = float(thd(mp.pi / 2)), float(time(mp.pi / 2) + turn)
+        X = float(X)
+    assert float(want[-1][0]) < 16
+    queries = "\n".join(f"  - {{when: {{theta_dot: {X!r}}}, occurrence: {k + 1}}}" for k in range(len(want)))
+    R, _ = solve(f"""
+type: gyroscope
+I1: 1
+I2: 2
+p: {float(p)!r}
+q: 1
+theta_dot0: {math.sqrt(2)!r}
+t_end: 16
+find:
+{queries}
+  - {{min: theta_dot, within: [{float(want[4][0])!r}, {float(want[7][0])!r}]}}
+accuracy: {{rtol: {rtol!r}, method: DOP853}}
+""")
+    for k, ((t, _), a, v) in enumerate(zip(want, slope, speed)):
+        assert abs(entry(R, k)["t"] - float(t)) <= ode(rtol) * (1.6 / a + 20 / v), k
+    e = entry(R, len(want))
+    assert e["at_end"] is False
+    assert e["theta_dot"] == pytest.approx(bottom, abs=ode(rtol) * 1.6)
+    # the bottom's time: θ̇'s error over its curvature there, θ̈' = θ̇·d/dθ((p − sinθ)cosθ/2) = θ̇(1 − p)/2
+    assert abs(e["t"] - t_bottom) <= math.sqrt(2 * ode(rtol) * 1.6 / (bottom * delta / 2)) + ode(rtol) * 20 / bottom
