@@ -375,3 +375,47 @@ accuracy: {{rtol: {rtol!r}, method: DOP853}}
     assert e["theta_dot"] == pytest.approx(bottom, abs=ode(rtol) * 1.6)
     # the bottom's time: θ̇'s error over its curvature there, θ̈' = θ̇·d/dθ((p − sinθ)cosθ/2) = θ̇(1 − p)/2
     assert abs(e["t"] - t_bottom) <= math.sqrt(2 * ode(rtol) * 1.6 / (bottom * delta / 2)) + ode(rtol) * 20 / bottom
+
+
+# --- constrained-particle, energy quadrature: the bead's height steps back between samples ----
+
+def test_constrained_particle_quadrature_height_steps_back_between_samples():
+    """A bead on the wire x₃ = q³/3 − εq (x₁ = q) pulled back by F₁ = −x₁, released from rest at
+    q = 1: its height wiggles by (4/3)ε^1.5 = 1.3e-6 m over |q| < √ε = 0.01 each time it passes
+    q = 0.  The energy route's search (an eighth of the period, cut in four) found the three
+    crossings of x₃ = 0 on the first pass and one on the way back: occurrences 5 and 6 'not
+    reached' (exit 0).  Now each leg is cut at the exact extremes of the result in the leg's
+    quadrature variable (smooth_extremes), taken to time by the leg's own quadrature.  Reference:
+    q = cos θ, t(θ) = ∫₀^θ √(1 + (cos²θ' − ε)²) dθ' (the energy integral with K = ½ sin²θ, M = 1 +
+    x₃'²; mpmath, 30 digits); x₃ = 0 at q = 0, ±√(3ε).  Tolerance: the route's time error, its
+    quadratures' 1e-13 over the period (~7 s) times the few legs run, at most 1e-11 s."""
+    eps = 1e-4
+    with mp.workdps(MPMATH_DPS):
+        e = mp.mpf(eps)
+        time = lambda th: mp.quad(lambda a: mp.sqrt(1 + (mp.cos(a) ** 2 - e) ** 2), [0, th])   # noqa: E731
+        qs = [mp.sqrt(3 * e), mp.mpf(0), -mp.sqrt(3 * e)]
+        want = [time(mp.acos(q)) for q in qs] + [time(2 * mp.pi - mp.acos(q)) for q in reversed(qs)]
+        top = time(mp.acos(-mp.sqrt(e)))                        # the wiggle's top, q = −√ε on the way out
+        window = (float(time(mp.acos(mp.sqrt(e)))), float(time(mp.acos(-2 * mp.sqrt(e)))))
+        height = float(2 * e ** mp.mpf(1.5) / 3)
+        period = float(4 * time(mp.pi / 2))
+    R, warns = solve(f"""
+type: constrained-particle
+m: 1
+curve: {{x1: q, x2: 0, x3: "q**3/3 - {eps!r}*q"}}
+q_range: [-2, 2]
+q0: 1
+forces: [{{kind: custom, F: ["-x1", "0", "0"]}}]
+t_end: 8
+find:
+""" + "".join(f"  - {{when: {{x.2: 0}}, occurrence: {k + 1}}}\n" for k in range(6)) + f"""\
+  - {{max: x.2, within: [{window[0]!r}, {window[1]!r}]}}
+accuracy: {{rtol: 1e-10}}
+""")
+    assert R["period"] == pytest.approx(period, rel=1e-12)
+    for k, t in enumerate(want):
+        assert abs(entry(R, k)["t"] - float(t)) <= 1e-11, k
+    e = entry(R, 6)
+    assert e["at_end"] is False and abs(e["t"] - float(top)) <= 1e-9       # (an extreme: its time to √(1e-13))
+    assert e["x"][2] == pytest.approx(height, rel=1e-9)
+    assert not [w for w in warns if "sampl" in w]
