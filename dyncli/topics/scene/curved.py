@@ -53,15 +53,24 @@ class CurveData:
         self.y2 = tuple(derivative(e, "q") for e in self.y1)
         self.y3 = tuple(derivative(e, "q") for e in self.y2)
         self.q_range = tuple(q_range) if q_range is not None else None
+        self._fns: tuple | None = None
 
     # ------------------------------------------------------------------ geometry at q
-    @staticmethod
-    def _ev(es, q: float) -> np.ndarray:
-        return np.array([float(e.evaluate(q=np.array([q]))[0]) if e.variables else float(e.value()) for e in es])
+    def _ev(self, order: int, q: float) -> np.ndarray:
+        """y (order 0) or its ``order``-th derivative at one q, in plain floats (the expressions'
+        closures over floats, :mod:`dyncli.expr.floateval`: about 10x cheaper than an array of
+        one; the frame is read thousands of times a solve)."""
+        fns = self._fns
+        if fns is None:
+            from dyncli.expr.floateval import float_fn
+
+            fns = self._fns = tuple(tuple(float_fn(e, "q") for e in es) for es in (self.y0, self.y1, self.y2, self.y3))
+        f1, f2 = fns[order]
+        return np.array((f1(q), f2(q)))
 
     def frame(self, q: float):
         """(y, y′, t̂, n, k, |y′|) at q."""
-        y, d1, d2 = self._ev(self.y0, q), self._ev(self.y1, q), self._ev(self.y2, q)
+        y, d1, d2 = self._ev(0, q), self._ev(1, q), self._ev(2, q)
         sp = math.hypot(d1[0], d1[1])
         if not sp > 0:
             raise NumericalError(f"the curve {self.name!r} has no tangent at q = {q:.6g} (y′ = 0)")
@@ -76,7 +85,7 @@ class CurveData:
         order) it walks to the nearest foot on its side instead of jumping to another lap of a
         closed curve (where the arc of rolling, φ₂, would be a lap off)."""
         for _ in range(200):
-            y, d1, d2 = self._ev(self.y0, q), self._ev(self.y1, q), self._ev(self.y2, q)
+            y, d1, d2 = self._ev(0, q), self._ev(1, q), self._ev(2, q)
             w = np.asarray(r, float) - y
             g = float(w @ d1)
             gp = float(w @ d2) - float(d1 @ d1)
@@ -94,7 +103,7 @@ class CurveData:
 
     def dk_ds(self, q: float) -> float:
         """The rate of the curvature along the arc, dk/ds = (dk/dq)/|y′|."""
-        d1, d2, d3 = self._ev(self.y1, q), self._ev(self.y2, q), self._ev(self.y3, q)
+        d1, d2, d3 = self._ev(1, q), self._ev(2, q), self._ev(3, q)
         sp = math.hypot(d1[0], d1[1])
         cross = d1[0] * d2[1] - d1[1] * d2[0]
         dk = (d1[0] * d3[1] - d1[1] * d3[0]) / sp ** 3 - 3 * cross * float(d1 @ d2) / sp ** 5
