@@ -211,13 +211,15 @@ def _top_reference(delta: float, t_end: float):
     return psi, psd
 
 
-@pytest.mark.parametrize("route, rtol", [("ode", 1e-10), ("exact", 1e-13)])
+@pytest.mark.parametrize("route, rtol", [("ode", 1e-10), ("exact", 1e-13), ("projected", 1e-10)])
 def test_top_psi_steps_back_inside_one_step(route, rtol):
     """ψ steps back near the second lowest point, inside one step of the ODE route (reduced form,
-    its dense output cut at ψ's exact extremes) and inside one piece of the exact route's search
-    (elliptic functions, solved again on pieces: four points each, occurrences 2 and 3 were "not
-    reached").  Tolerance: ψ's error over ψ̇ there — the route's at its rtol (ODE), the
-    reference's at 1e-13 (exact)."""
+    its dense output cut at ψ's exact extremes), inside one step of the quaternion form (method
+    projected: the tracker carries ψ from each step's start on the step's interpolant; solved again
+    on a grid of 8 pieces per turn, 4 points each, occurrences 2 and 3 were "not reached") and
+    inside one piece of the exact route's search (elliptic functions, solved again on pieces: four
+    points each, occurrences 2 and 3 were "not reached").  Tolerance: ψ's error over ψ̇ there — the
+    route's at its rtol (ODE), the reference's at 1e-13 (exact)."""
     from scipy.optimize import brentq
 
     delta = 1e-4
@@ -227,7 +229,8 @@ def test_top_psi_steps_back_inside_one_step(route, rtol):
     r1, r2 = (brentq(psd, ts[k], ts[k + 1], xtol=1e-16) for k in range(len(ts) - 1) if P[k] * P[k + 1] < 0)
     X = 0.5 * (psi(r1) + psi(r2))
     want = [brentq(lambda t: psi(t) - X, a, b, xtol=1e-16) for a, b in ((0.1, r1), (r1, r2), (r2, 0.16))]
-    method = f"accuracy: {{rtol: {rtol!r}, method: DOP853}}" if route == "ode" else ""
+    method = {"ode": f"accuracy: {{rtol: {rtol!r}, method: DOP853}}",
+              "projected": f"accuracy: {{rtol: {rtol!r}, method: projected}}"}.get(route, "")
     R, _ = solve(f"""
 type: top
 m: 0.5
