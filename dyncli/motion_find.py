@@ -64,6 +64,7 @@ class StateMotion:
         self.monotone = monotone                    # every result asked about monotone between its breaks
         self.subdivide = subdivide                  # 1 when the breaks are an ODE's steps
         self.period: float | None = None            # set when the motion repeats exactly (find's extremes)
+        self.cuts_approximate = False               # breaks_for's cuts an interpolant's critical points (~1e-13)
         self.batch = batch                          # the states at many times in one run (optional)
         inner = sorted({float(b) for b in breaks if self.t0 < b < self.t_end})
         self.breaks = [self.t0] + inner + [self.t_end]
@@ -87,7 +88,7 @@ class StateMotion:
                         self._rates, self.batch, self.subdivide,
                         None if own is None else (lambda path: [b for b in own(path) if b < t_end] + [t_end]),
                         self.monotone)
-        w._cache, w._limit = self._cache, self._limit
+        w._cache, w._limit, w.cuts_approximate = self._cache, self._limit, self.cuts_approximate
         return w
 
     def prefetch(self, upto: float | None = None) -> None:
@@ -529,11 +530,16 @@ def find_end(problem: Any, t0: float = 0.0) -> float:
 
 def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: Mapping[str, str], t0: float,
                 t_end: float, rtol: float, const) -> None:
-    """The ``find`` answers on the route's own motion, ``dense = (breaks, states)``: one run's steps
-    (its ends ``breaks``, covering [t0, t_end]) and ``states(ts)``, the results at many times as
-    ``{name: list}``, a smooth function of the step's polynomial between two breaks — each step
-    cut at the exact extremes of every result searched (:func:`exact_breaks`)."""
-    breaks, states = dense
+    """The ``find`` answers on the route's own motion, ``dense = (breaks, states)`` or ``(breaks,
+    states, more_rates)``: one run's steps (its ends ``breaks``, covering [t0, t_end]) and
+    ``states(ts)``, the results at many times as ``{name: list}``, a smooth function of the step's
+    polynomial between two breaks — each step cut at the exact extremes of every result searched
+    (:func:`exact_breaks`); ``more_rates``: rates the type does not report (``{name: (t, rest of
+    the path) -> rate}``, the equations of motion at the interpolated state), so that an
+    extreme's time is polished as a root of its rate on the motion itself."""
+    breaks, states = dense[0], dense[1]
+    if len(dense) > 2 and dense[2]:
+        rates = dict(rates, **dense[2])
 
     def batch(ts) -> list[dict]:
         ts = [float(t) for t in ts]
@@ -545,6 +551,7 @@ def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: 
     own = exact_breaks(problem.find, B, series_values(states), warn=result.warn)
     motion = StateMotion(lambda t: batch([t])[0], t0, t_end, B, rtol=rtol, rates=rates, batch=batch,
                          subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
+    motion.cuts_approximate = own is not None   # (an interpolant's critical points: a rate's root replaces them)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
 
 

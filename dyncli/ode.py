@@ -262,6 +262,26 @@ def integrate(fun, y0, times, *, method="DOP853", rtol=1e-10, atol=1e-12, t0=0.0
     return Y, budget.n
 
 
+def dense_run(fun, y0, T, *, method="DOP853", rtol=1e-10, atol=1e-12, project=None, max_steps=None, t0=0.0):
+    """One run of :func:`integrate` from (t0, y0) to T that keeps every accepted step's interpolant
+    (projected with ``project``): (the steps' ends, from t0 to T, and ``sol(ts)``, the states at an
+    array of times as an array (components, len(ts)), each component a polynomial of the step
+    between two step ends) — the motion a ``find`` search cuts at exact extremes
+    (:func:`dyncli.motion_find.exact_breaks`)."""
+    from dyncli.dop853 import OdeSolution
+
+    ends, its = [float(t0)], []
+
+    def keep(t_old, t_new, dense, direction):
+        if dense is not None and t_new != t_old:
+            its.append(dense.interpolant())      # made now, while the stepper is on this step
+            ends.append(float(t_new))
+
+    integrate(fun, y0, [T], method=method, rtol=rtol, atol=atol, t0=t0, project=project, on_step=keep,
+              max_steps=max_steps)
+    return ends, OdeSolution(ends, its)
+
+
 class _Lazy:
     """The step's interpolant, built only when a point inside the step is asked for."""
 
@@ -270,13 +290,17 @@ class _Lazy:
         self.y_end = solver.y.copy()
         self._d = None
 
-    def __call__(self, t):
-        if np.ndim(t) == 0 and t == self.t_end:
-            return self.y_end.copy()
+    def interpolant(self):
+        """The step's interpolant itself (projected with ``project``), made now."""
         if self._d is None:
             d = dense_output(self.solver)
             self._d = _Projected(d, self.project, self.t_end, self.y_end) if self.project is not None else d
-        return self._d(t)
+        return self._d
+
+    def __call__(self, t):
+        if np.ndim(t) == 0 and t == self.t_end:
+            return self.y_end.copy()
+        return self.interpolant()(t)
 
 
 class _Projected:

@@ -435,7 +435,9 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
             if rooted and getattr(motion, "cuts_approximate", False) and hm >= H[j] - tol:
                 # cuts at an interpolant's critical points (~1e-13): the rate's root replaces them
                 cands = [c for c in cands if c[0] != T[j]] + [(tm, max(hm, H[j]))]
-            elif hm >= H[j]:
+            elif (hm >= H[j]) if rooted else (hm > H[j] + tol):
+                # (Brent's minimiser's time is good to ~√eps only: on a flat top its value ties the
+                # cut's to rounding, and the cut — the extreme to ~1e-13 — stands unless beaten)
                 cands.append((tm, hm))
     else:
         cands += _turning(h, hr, T, H)

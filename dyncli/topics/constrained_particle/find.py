@@ -4,8 +4,10 @@ The motion is the route's own at any time: the energy quadrature's q(t) (the leg
 turning points, periodic when the motion is) or the ODE's dense output, each assembled into the
 reported results as at an ``at`` time.  Breaks: the ODE's steps and phase ends, each step cut at
 the exact extremes of every result searched (:func:`dyncli.motion_find.exact_breaks`: monotone
-between two cuts); on the quadrature route an eighth of the period (or 64 pieces of a motion
-that does not repeat), sampled.  Rates: q̇ of q,
+between two cuts); on the quadrature route its legs (turning points and midpoints) and an eighth
+of the period, each leg cut at the exact extremes of every result searched in the leg's
+quadrature variable (:func:`quadrature_cuts`: monotone between two cuts; beyond MAX_PIECES legs,
+sampled, with a warning).  Rates: q̇ of q,
 ṡ of s, v of x, a of v, so turning points are roots of the rate (Brent).  ``distance`` is the
 arc length travelled, Σ|Δs| between the turning points of s (the roots of ṡ).
 """
@@ -60,7 +62,100 @@ def quadrature_states(p, model):
         Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
         return assemble(p, model, ts, Y, [("slide", 1.0)] * n)["results"]
     states.legs = legs
+    states.energy = E
     return states
+
+
+def quadrature_cuts(p, model, E, t_end: float, warn) -> "dict[str, list[float]] | None":
+    """The exact extremes, as times in (0, t_end), of every result the ``find`` queries search on
+    the energy-quadrature route — decided exactly, never by samples.  Each leg of the route runs one
+    piece of the quadrature monotonically in its variable x (q = a + σx² from a turning point a,
+    else q = a + σx): the reported results are smooth functions of x there (the turning point's
+    square root taken out exactly: q̇ = ±√(2K/M) is smooth in x), so their extremes along the leg
+    are the roots of their rate in x, found by :func:`dyncli.rootfind.smooth_extremes` on the leg's
+    x interval (the Chebyshev interpolant resolved to rounding, the real roots of its derivative);
+    each is taken to time by the piece's own quadrature τ(x).  The legs' cuts repeat with the period.
+    ``{path: cuts}`` (the legs' starts among them), or None when no query searches, the
+    motion is at rest, or a result is not resolved (a warning then says the search reads samples)."""
+    from dyncli import rootfind
+
+    from . import quadrature
+    from .report import assemble
+
+    asked = mf.searched_paths(p.find)
+    if not asked or not t_end > 0:
+        return None
+    quadrature.motion(E, [0.0])
+    plan = E._plan
+    if plan is None:
+        return None
+    first, cycle = plan[0], plan[1]
+    # nondecreasing along a leg (q, s: the leg runs q one way; distance): no cut of their own
+    rest = sorted(a for a in asked if a not in ("q", "s", "distance"))
+    table: dict[str, list[float]] = {a: [] for a in asked}
+    W0 = float(E.W(np.array([E.q0]), 1)[0])
+
+    def leg_values(seg, paths):
+        pc, d = seg.p, seg.dir
+
+        def values(xs):
+            xs = np.asarray(xs, dtype=float).reshape(-1)
+            q, K = pc._K(xs)
+            qd = np.sqrt(np.maximum(K, 0.0) / (0.5 * E.M(q))) * pc.sig * d
+            n = xs.size
+            Y = np.vstack([q, qd, np.zeros(n), E.W(q, 1) - W0, np.zeros(n), np.zeros(n)])
+            got = assemble(p, model, np.zeros(n), Y, [("slide", 1.0)] * n)["results"]
+            return mf.series_values(lambda ts: got)(paths, xs)
+        return values
+
+    def cuts_of(seg) -> dict[str, list[float]] | None:
+        """The cuts of one leg as times from the leg's start."""
+        lo, hi = sorted((seg.x0, seg.x1))
+        if not hi > lo or not rest:
+            return {a: [] for a in rest}
+        try:
+            got, ok = rootfind.smooth_extremes(leg_values(seg, rest), [lo + (hi - lo) * k / 4 for k in range(5)])
+        except KeyError:
+            return None
+        if not ok:
+            return None
+        grid = [lo + (hi - lo) * k / 4 for k in range(1, 4)]    # (the inner breaks given: cuts of every result)
+        out = {}
+        for a, xs in zip(rest, got):
+            ts = [seg.dir * (seg.p.tau(x) - seg.t0) for x in sorted(set(xs) | set(grid))]
+            out[a] = sorted(t for t in ts if 0.0 < t < seg.dur)
+        return out
+
+    legs: list = []
+    t = 0.0
+    for seg in first:
+        legs.append((t, seg))
+        t += seg.dur
+    per = sum(sg.dur for sg in cycle) if cycle else 0.0
+    n_cycles = math.ceil((t_end - t) / per) if cycle and per > 0 and t_end > t else 0
+    if len(first) + n_cycles * len(cycle or []) > MAX_PIECES:
+        warn(f"find: {', '.join(rest)} searched on samples: the motion runs {n_cycles} periods, more legs than "
+             f"the exact cuts cover ({MAX_PIECES}); narrow the search with within")
+        return None
+    memo: dict[int, dict[str, list[float]] | None] = {}
+    for k in range(n_cycles):
+        for seg in cycle or []:
+            legs.append((t, seg))
+            t += seg.dur
+    for start, seg in legs:
+        if start >= t_end:
+            break
+        if id(seg) not in memo:
+            memo[id(seg)] = cuts_of(seg)
+        got = memo[id(seg)]
+        if got is None:
+            warn(f"find: {', '.join(rest)} could not be followed as a smooth function along a leg of the "
+                 "quadrature: its crossings are searched on samples, where a level crossed and crossed back "
+                 "between two is not seen")
+            return None
+        for a in table:                 # the leg's start (a turning point or a leg's middle) and its cuts
+            table[a] += [start] + [start + c for c in got.get(a, ()) if start + c < t_end]
+    return table
 
 
 def ode_states(p, model, phases):
@@ -136,13 +231,16 @@ def uniform_breaks(t_end: float, period) -> list[float]:
     return [t_end * k / n for k in range(n + 1)]
 
 
-def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=None, smooth=False) -> None:
+def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=None, smooth=False,
+           cuts=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers (``subdivide``: 1 when the
     breaks are the ODE's steps; ``turn_times``: the turning points when the route knows them;
     ``s_of``: s at a list of times, cheaper than the whole state; ``smooth``: the results are
     smooth functions of time between two breaks — an ODE's steps and phase ends —, so that each
     step is cut at the exact extremes of every result searched, :func:`dyncli.motion_find.exact_breaks`,
-    and the search takes it as monotone between two cuts)."""
+    and the search takes it as monotone between two cuts; ``cuts``: ``{path: times}``, the exact
+    extremes of each result searched the route decides itself, :func:`quadrature_cuts`, so that the
+    search takes each result as monotone between two of the breaks and its cuts)."""
     t_end = float(p.t_end)
     B = sorted({0.0, t_end} | {b for b in breaks if 0.0 < b < t_end})
 
@@ -177,14 +275,19 @@ def report(p, res, states, breaks, keys, subdivide=None, turn_times=None, s_of=N
     own = (mf.exact_breaks(p.find, B, mf.series_values(states), lambda path: [] if path == "distance" else None,
                            warn=res.warn)
            if smooth and t_end > 0 else None)
+    quad = subdivide is None            # the energy route (its motion repeats exactly)
+    if cuts is not None:                # the route's own exact extremes (the quadrature's legs)
+        table = {path: sorted(set(B).union(c for c in cut if 0.0 < c < t_end)) for path, cut in cuts.items()}
+        own, subdivide = (lambda path: table.get(path, B)), 1
     motion: mf.StateMotion
     motion = mf.StateMotion(full, 0.0, t_end, B, rtol=float(p.accuracy.rtol), subdivide=subdivide,
                             rates={"q": "q_dot", "s": "s_dot", "x": "v", "v": "a",
                                    "distance": lambda t, _: abs(motion.flat(t)["s_dot"])},
                             batch=lambda ts: [dict(e, distance=distance(float(t))) for t, e in zip(ts, batch(ts))],
                             breaks_for=own, monotone=own is not None)
+    motion.cuts_approximate = own is not None   # (critical points of interpolants: a rate's root replaces them)
     period = res.results.get("period")
-    if subdivide is None and isinstance(period, float) and period > 0:
+    if quad and isinstance(period, float) and period > 0:
         motion.period = period                       # the energy route's motion repeats exactly
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
 

@@ -100,8 +100,10 @@ def solve_setup(p: Setup) -> Result:
         if res is not None:
             states = find.quadrature_states(p, model)
             t_end = float(p.t_end or 0.0)     # (set whenever the motion is asked for)
-            find.report(p, res, states, find.uniform_breaks(t_end, res.results.get("period"))
-                        + states.legs(t_end), SERIES, turn_times=states.legs(t_end, turning=True))
+            legs = states.legs(t_end)
+            find.report(p, res, states, find.uniform_breaks(t_end, res.results.get("period")) + legs, SERIES,
+                        turn_times=states.legs(t_end, turning=True),
+                        cuts=find.quadrature_cuts(p, model, states.energy, t_end, res.warn) if p.find else None)
     if res is None:
         res = _solve_ode(p, model, times)
         phases = res.extra.pop("phases")

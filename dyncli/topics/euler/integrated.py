@@ -84,6 +84,44 @@ def integrate(pb, times, res, exact, H0, T0):
     return W.tolist(), drift.worst_H, drift.worst_T
 
 
+def dense_motion(pb, T, torque_free, H0, T0):
+    """ω (and, with an applied moment, |H̄| and T) from 0 to T as one run's dense output for the
+    ``find`` search (:func:`dyncli.ode.dense_run`, the route's method, tolerances and projection):
+    (the steps' ends, ``states(ts)``, the results at many times as lists, smooth functions of the
+    step's polynomial between two ends, and ``{"omega": rate}``, ω̇ from Euler's equations at the
+    interpolated state), so that every step is cut at the exact extremes of the result searched
+    (:func:`dyncli.motion_find.exact_breaks`) and an extreme of ω polished as a root of ω̇."""
+    import numpy as np
+
+    from dyncli import ode, runner
+
+    I = np.asarray(pb.I, dtype=float)
+    w0 = np.array(pb.omega0, dtype=float)
+    fun, y0 = _rhs(pb.I, None if torque_free else pb.M, w0)
+    project = make_projector(pb.I, H0, T0) if pb.method == "projected" else None
+    ends, sol = ode.dense_run(fun, y0, T, method=runner.scipy_method(pb.method), rtol=pb.rtol, atol=pb.atol,
+                              project=project, max_steps=pb.max_steps)
+
+    def states(ts) -> dict:
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        W = np.asarray(sol(ts), dtype=float).reshape(len(y0), -1)[:3].T.copy()
+        W[ts == 0.0] = w0                       # the initial state as given
+        out = {"omega": (W + 0.0).tolist()}
+        if not torque_free:                     # (the operations of motion.energy_momentum, on arrays)
+            h = W * I
+            out["H_t"] = np.sqrt(h[:, 0] * h[:, 0] + h[:, 1] * h[:, 1] + h[:, 2] * h[:, 2]).tolist()
+            out["T_t"] = (0.5 * (h[:, 0] * W[:, 0] + h[:, 1] * W[:, 1] + h[:, 2] * W[:, 2])).tolist()
+        return out
+
+    def omega_rate(t: float, rest: str):
+        """ω̇ of component ``rest`` from Euler's equations at the interpolated state (None: not a component)."""
+        if rest not in ("0", "1", "2"):
+            return None
+        y = np.asarray(sol(float(t)), dtype=float)
+        return float(fun(float(t), y)[int(rest)])
+    return ends, states, {"omega": omega_rate}
+
+
 class _Drift:
     """The largest relative drift of |H| and T over the accepted steps (plain floats: it runs
     once per step).  With an applied moment the drift is that of the balances

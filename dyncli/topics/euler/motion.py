@@ -59,8 +59,10 @@ def _drifts(I, W, H0, T0) -> tuple[float, float]:
     return drift_H, drift_T
 
 
-def solve(pb: Body, options: SolveOptions | None = None) -> Result:
-    """ω at ``pb.times``, |H̄|, T and the drifts; the torque-free constants or H_t, T_t; Table 39.1."""
+def solve(pb: Body, options: SolveOptions | None = None, search_end: float | None = None) -> Result:
+    """ω at ``pb.times``, |H̄|, T and the drifts; the torque-free constants or H_t, T_t; Table 39.1.
+    ``search_end``: the end of the ``find`` search (None: no query), whose motion an ODE route
+    leaves as one run's dense output (``res.extra["dense_motion"]``)."""
     I, w0, times = pb.I, pb.omega0, list(pb.times)
     res = Result({}, equations=["39.5"])
     method = pb.method
@@ -101,6 +103,9 @@ def solve(pb: Body, options: SolveOptions | None = None) -> Result:
         _torque_free_results(res, exact)
     r["drift"] = max(drift_H, drift_T)
     r["drift_detail"] = {"H": drift_H, "T": drift_T}
+    if search_end is not None and search_end > 0 and res.method.startswith("ode"):
+        # the find search's motion: one run's steps, each cut at the exact extremes of the result searched
+        res.extra["dense_motion"] = integrated.dense_motion(pb, search_end, torque_free, H0, T0)
     if times:
         res.series.append(Series("t", times, ["omega"] + ([] if torque_free else ["H_t", "T_t"])))
         M = (0.0, 0.0, 0.0) if torque_free else _moment(pb, times[0])

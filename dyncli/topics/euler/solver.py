@@ -19,4 +19,9 @@ def plain(pb) -> motion.Body:
 
 
 def solve(pb, options: SolveOptions | None = None) -> Result:
-    return motion.solve(plain(pb), options)
+    end = None
+    if pb.find:
+        from dyncli.motion_find import find_end
+
+        end = find_end(pb)
+    return motion.solve(plain(pb), options, search_end=end)

@@ -29,9 +29,9 @@ from dyncli.topics.gyroscope.elliptic import quadratic_roots
 BASIS2 = ("e''₁", "e''₂", "e''₃")
 
 
-def theta_ddot(I1, I2, p, q, th):
-    """(37.12) solved for θ̈ (floats)."""
-    return ((I1 - I2) * q * q * math.sin(th) + I1 * p * q) * math.cos(th) / I2
+def theta_ddot(I1, I2, p, q, th, fm=math):
+    """(37.12) solved for θ̈ (floats; ``fm``: numpy for arrays of θ)."""
+    return ((I1 - I2) * q * q * fm.sin(th) + I1 * p * q) * fm.cos(th) / I2
 
 
 def first_integral(I1, I2, p, q, th, thd):
@@ -51,9 +51,10 @@ def table_rows(I1, I2, p, q, th, thd, thdd):
     return [("Ω", Om), ("ω", [Om[0] + p, Om[1], Om[2]]), ("H̄", H), ("δH̄/δt", dH), ("Ω×H̄", OmH), ("Ḣ = M̄", Hd)]
 
 
-def moment(I1, I2, p, q, th, thd, thdd):
-    """M̄ = Ḣ (Table 37.1) at one state, [M1, M2, M3]; the e''₃ component vanishes by (37.11)."""
-    s, c = math.sin(th), math.cos(th)
+def moment(I1, I2, p, q, th, thd, thdd, fm=math):
+    """M̄ = Ḣ (Table 37.1) at one state, [M1, M2, M3]; the e''₃ component vanishes by (37.11)
+    (``fm``: numpy for arrays of states, each component an array)."""
+    s, c = fm.sin(th), fm.cos(th)
     m1 = I1 * q * thd * c
     m2 = -2.0 * I2 * q * thd * s + I1 * (q * s + p) * thd
     m3 = I2 * thdd + (I2 - I1) * q * q * s * c - I1 * p * q * c
@@ -173,6 +174,42 @@ def _ode_route(pb, times, res):
     return Y[:, 0].tolist(), Y[:, 1].tolist(), drift
 
 
+def dense_motion(pb, T):
+    """The ODE route's motion from 0 to T as one run's dense output for the ``find`` search
+    (:func:`dyncli.ode.dense_run`, the route's method and tolerances): (the steps' ends,
+    ``states(ts)``, θ, θ̇ and M̄ at many times as lists, smooth functions of the step's
+    polynomial between two ends, and θ̇'s rate θ̈ of (37.12)), so that every step is cut at the
+    exact extremes of the result searched (:func:`dyncli.motion_find.exact_breaks`) and an
+    extreme of θ̇ polished as a root of θ̈."""
+    import numpy as np
+
+    from dyncli import ode, runner
+
+    I1, I2, p, q = pb.I1, pb.I2, pb.p, pb.q
+    th0, thd0 = pb.theta0, pb.theta_dot0
+
+    def fun(t, y):
+        return (float(y[1]), theta_ddot(I1, I2, p, q, float(y[0])))
+
+    ends, sol = ode.dense_run(fun, [th0, thd0], T, method=runner.scipy_method(pb.accuracy.method),
+                              rtol=pb.accuracy.rtol, atol=pb.accuracy.atol, max_steps=pb.accuracy.max_steps)
+
+    def states(ts) -> dict:
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        th, thd = np.asarray(sol(ts), dtype=float).reshape(2, -1)
+        zero = ts == 0.0                        # the initial state as given
+        th[zero], thd[zero] = th0, thd0
+        M = moment(I1, I2, p, q, th, thd, theta_ddot(I1, I2, p, q, th, np), np)
+        return {"theta": (th + 0.0).tolist(), "theta_dot": (thd + 0.0).tolist(),
+                "M": (np.stack([np.broadcast_to(np.asarray(m, dtype=float), th.shape) for m in M], axis=1)
+                      + 0.0).tolist()}
+
+    def theta_dot_rate(t: float, rest: str):
+        """θ̈ of (37.12) at the interpolated θ."""
+        return None if rest else theta_ddot(I1, I2, p, q, float(sol(float(t))[0]))
+    return ends, states, {"theta_dot": theta_dot_rate}
+
+
 def _periods(pb, T):
     """Periods of θ(t) in [0, T] (revolutions when θ circulates), from the elliptic solution's period
     (plain floats); 0 where that is not representable or θ is steady."""
@@ -237,6 +274,11 @@ def solve(pb, options: SolveOptions | None = None) -> Result:
         if out is None:
             th, thd, drift = _ode_route(pb, times, res)
             res.extra["sample"] = lambda ts: _ode_route(pb, ts, Result({}))[0]
+            if pb.find:                 # the search's motion: one run's steps, cut at exact extremes
+                from dyncli.motion_find import find_end
+
+                T = find_end(pb)
+                res.extra["dense_motion"] = dense_motion(pb, T) if T > 0 else None
         else:
             th, thd, drift = out
     if not all(math.isfinite(x) for x in th + thd):

@@ -238,3 +238,78 @@ def _normq(y):
     y = np.array(y, dtype=float)
     y[:4] /= math.sqrt(float(y[:4] @ y[:4]))
     return y
+
+
+def dense_run(top: Top, y0, psi0, phi0, T, *, rtol, atol, method, Wp, scales, max_steps=None, max_step=math.inf):
+    """The quaternion form's motion from 0 to T as one run's dense output, for the ``find`` search:
+    (the steps' ends, ``states(ts)``, the reported ψ, θ, φ, ψ̇, θ̇, φ̇, R at any times of [0, T] as
+    lists).  The run is :func:`integrate`'s (the same stepper, tolerances, cap and projection);
+    each step keeps its interpolant and the tracker's ψ, φ_p at its start, and a time inside it is
+    read as :func:`integrate` reads a requested time: the state from the interpolant (normalised or
+    projected), ψ and φ_p carried from the step's start by the tracker (bisected on the step's
+    interpolant where the axis moves far beside the vertical) — so every result is a smooth
+    function of the step's polynomial between two ends."""
+    from dyncli.topics.top.derived import rates, reaction
+
+    budget = ode.Budget(max_steps)
+    Es, Hs, Ws = scales
+    cls = runner.solver_class(method)
+    rtol = runner.floor_rtol(rtol)
+    atol_v = np.array([atol] * 4 + [atol * (Wp if Wp > 0 else Ws)] * 2 + [atol * Ws])
+    Wt = Wp * (1.0 + 1e-6) + 1e-300
+    tr = _Tracker(psi0, phi0, y0[:4], 0.0, Wt)
+    E0, H0, W3 = top.invariants(y0[:4], y0[4:])
+    S = math.sqrt(top.A) * Ws
+    projected = method == "projected"
+
+    def settle(y):
+        return top.project(y, E0, H0, W3, S) if projected else _normq(y)
+
+    budget.leg(0.0, T)
+    solver = cls(ode.finite(top.rhs_spinfree), 0.0, np.array(y0, dtype=float), T, rtol=rtol, atol=atol_v,
+                 max_step=max_step)
+    steps, t_prev = [], 0.0
+    for _ in ode.steps(solver, budget, method):
+        tb = float(solver.t)
+        interp = ode.dense_output(solver)
+        dense_q = (lambda t, d=interp: _unit(np.asarray(d(t), dtype=float)[:4]))
+        yb = settle(solver.y)
+        steps.append((t_prev, interp, dense_q, tr.psi, tr.phi, tr.ang))
+        tr.advance(t_prev, tb, yb[:4], dense_q)
+        t_prev = tb
+        if projected:
+            solver.y = yb
+            solver.f = solver.fun(solver.t, yb)
+    ends = np.array([0.0] + [s[0] for s in steps[1:]] + [t_prev])
+    y0 = np.array(y0, dtype=float)
+
+    def states(ts) -> dict:
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        n = ts.size
+        psi, theta, phi_p = np.empty(n), np.empty(n), np.empty(n)
+        w = np.empty((n, 3))
+        k = np.clip(np.searchsorted(ends, ts, side="left") - 1, 0, len(steps) - 1)
+        scratch = _Tracker(psi0, phi0, y0[:4], 0.0, Wt)
+        for j in np.unique(k).tolist():
+            sel = np.flatnonzero(k == j)
+            ta, interp, dense_q, psi_a, phi_a, ang_a = steps[j]
+            Y = np.asarray(interp(ts[sel]), dtype=float).reshape(len(y0), -1)
+            for i, col in zip(sel.tolist(), Y.T):
+                if ts[i] == 0.0:                # the initial state as given
+                    y, psi[i], phi_p[i] = y0, psi0, phi0
+                    theta[i] = half_angles(y0[:4])[0]
+                else:
+                    y = settle(col)
+                    ang = half_angles(y[:4])
+                    scratch._splits = MAX_SPLITS
+                    psi[i], phi_p[i] = scratch._seg(ta, ang_a, psi_a, phi_a, float(ts[i]), ang, dense_q, 0)
+                    theta[i] = ang[0]
+                w[i] = y[4:]
+        psd, thd, phd, _ = rates(top, theta, phi_p, w)
+        R = reaction(top, theta, phi_p, w)
+        out = {k_: (np.asarray(a, dtype=float) + 0.0).tolist() for k_, a in
+               (("psi", psi), ("theta", theta), ("phi", phi_p + W3 * ts), ("psi_dot", psd), ("theta_dot", thd),
+                ("phi_dot", phd))}
+        out["R"] = (np.asarray(R, dtype=float) + 0.0).tolist()
+        return out
+    return ends.tolist(), states

@@ -139,18 +139,32 @@ def _floor_and_warning(res, rtol, drifts, bounds, checked, floor=True):
     runner.warn_unmet(res, rtol, measured, promise=runner.ODE_PROMISE, what=what)
 
 
-def dense_motion(top, acc: Controls, T: float, Wfast, Wp, *, state, bounds):
-    """The motion from 0 to T as one run's dense output for the ``find`` search (see
-    :meth:`dyncli.topics.top.reduced.Reduced.dense`): (the steps' ends, ``states(ts)``), or None
-    where the route takes the quaternion form (next to the vertical, ``projected``) — its ψ and φ
-    are followed step by step, so that form's queries are answered by solving again at the
-    search's times (:func:`dyncli.motion_find.resolved`)."""
+def dense_motion(top, acc: Controls, T: float, Wfast, Wp, *, state, bounds, y0, scales):
+    """The motion from 0 to T as one run's dense output for the ``find`` search: (the steps' ends,
+    ``states(ts)``) of the form the route takes — the reduced form
+    (:meth:`dyncli.topics.top.reduced.Reduced.dense`) or, next to the vertical and for
+    ``projected``, the quaternion form (:func:`dyncli.topics.top.integrator.dense_run`: ψ and φ
+    carried from each step's start by the tracker); None when T is not positive or the axis comes
+    within :data:`DENSE_POLE` of the vertical (ψ swings by ~π in ~θ_min/ω there: no interpolant
+    resolves it, and the tracker bisects every point — that motion is searched by solving again
+    on a grid, sampled, with a warning: :func:`dyncli.motion_find.resolved`)."""
+    from dyncli.topics.top.integrator import dense_run
+
     method = acc.method if acc.method == "projected" else runner.scipy_method(acc.method)
     red = Reduced(top, state, bounds, Wp)
-    if not T > 0 or method == "projected" or not usable(top, bounds[0], bounds[1], red.w3, red.b, Wp, Wfast, acc.rtol):
+    if not T > 0:
         return None
-    return red.dense(T, rtol=acc.rtol, atol=acc.atol, method=method, max_step=step_cap(bounds, Wfast, method),
-                     max_steps=acc.max_steps)
+    cap = step_cap(bounds, Wfast, method)
+    if min(math.sin(bounds[0]), math.sin(bounds[1])) < DENSE_POLE:
+        return None
+    if method == "projected" or not usable(top, bounds[0], bounds[1], red.w3, red.b, Wp, Wfast, acc.rtol):
+        return dense_run(top, y0, state[0], state[2], T, rtol=acc.rtol, atol=acc.atol, method=method, Wp=Wp,
+                         scales=scales, max_steps=acc.max_steps, max_step=cap)
+    return red.dense(T, rtol=acc.rtol, atol=acc.atol, method=method, max_step=cap, max_steps=acc.max_steps)
+
+
+#: closest approach to a pole (sinθ) below which the ``find`` search reads samples (:func:`dense_motion`)
+DENSE_POLE = 1e-3
 
 
 def step_cap(bounds, Wfast, method, ratio=1.0):

@@ -69,7 +69,13 @@ def solve(p, options=None) -> Result:
 
             T = find_end(p)
             res.extra["dense_motion"] = ode_route.dense_motion(top, acc, T, Wfast, Wp, bounds=(th_min, th_max),
-                                                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot))
+                                                               state=(psi0, th0, phi0, psd0, th_dot0, p.phi_dot),
+                                                               y0=np.array(y0, dtype=float), scales=scales)
+            if res.extra["dense_motion"] is None and T > 0:
+                res.warn(f"find: the axis comes within {min(math.sin(th_min), math.sin(th_max)):.2g} of the vertical "
+                         "(sinθ), where ψ and φ swing by ~π too fast for a step's interpolant: the queries are "
+                         "searched on samples (8 pieces per turn, 4 points each), where a level crossed and crossed "
+                         "back between two points is not seen")
     psi, theta, phi, psi_dot, th_dot, phi_dot, S, R, drift, ambiguous = out
     _report_motion(res, p, out)
     _warn_poles(res, top, th_min, th_max, W3, ambiguous, n)
