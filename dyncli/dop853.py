@@ -287,11 +287,58 @@ class LazyDense(_Interpolant):
         super().__init__(t_old, t)
         self._args, self._dense = (fun, K, t_old, t, y_old, y, f, h), None
 
-    def _call_impl(self, t):
+    def made(self) -> DenseOutput:
+        """The step's :class:`DenseOutput` (made now if it was not yet)."""
         if self._dense is None:
             self._dense = _interpolant(*self._args)
             self._args = None
-        return self._dense._call_impl(t)
+        return self._dense
+
+    def _call_impl(self, t):
+        return self.made()._call_impl(t)
+
+
+def _bernstein_matrix():
+    """The matrix taking (y_old, F0, …, F6) of a :class:`DenseOutput` to the Bernstein coefficients
+    of degree 7 of its polynomial on the step (x = (t − t_old)/h in [0, 1]).  Its nested form is
+    y_old + x (F0 + (1 − x)(F1 + x (F2 + …))): F_j multiplies x^i (1 − x)^l with i = ⌈(j + 1)/2⌉,
+    l = ⌊(j + 1)/2⌋, whose Bernstein coefficients of degree 7 are C(7 − i − l, k − i) / C(7, k)
+    (k = i … 7 − l); the constant 1 has every coefficient 1."""
+    from math import comb
+
+    M = np.zeros((8, 8))
+    M[:, 0] = 1.0
+    for j in range(7):
+        i, l = (j + 2) // 2, (j + 1) // 2
+        for k in range(i, 8 - l):
+            M[k, j + 1] = comb(7 - i - l, k - i) / comb(7, k)
+    return M
+
+
+BERNSTEIN = _bernstein_matrix()
+
+
+def one_sign(outputs, row: int):
+    """For each step's interpolant of ``outputs`` (:class:`DenseOutput` or :class:`LazyDense`;
+    anything else: False), whether its component ``row`` keeps one strict sign over the whole
+    step, decided exactly, never by samples: every Bernstein coefficient of that degree-7
+    polynomial (:data:`BERNSTEIN`) has the same sign and exceeds 64 ε times the sum of the
+    magnitudes of its terms (so that neither the coefficients' rounding nor the interpolant's own
+    evaluation can change a sign); the polynomial is a convex combination of those coefficients on
+    the step.  False says only that the test cannot exclude a root (the caller looks closer).
+    All steps in a few array operations."""
+    dense = [o.made() if type(o) is LazyDense else o for o in outputs]
+    ok = np.array([type(d) is DenseOutput and d.F.shape[0] == 7 for d in dense], dtype=bool)
+    out = np.zeros(len(dense), dtype=bool)
+    if not ok.any():
+        return out
+    coef = np.array([np.concatenate(([d.y_old[row]], d.F[:, row])) for d, g in zip(dense, ok) if g], dtype=float)
+    with np.errstate(all="ignore"):
+        b = coef @ BERNSTEIN.T
+        tol = 64 * EPS * np.sum(np.abs(coef), axis=1)[:, None]
+        good = np.all(b > tol, axis=1) | np.all(b < -tol, axis=1)
+    out[ok] = good
+    return out
 
 
 class ConstantOutput(_Interpolant):
