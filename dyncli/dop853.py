@@ -95,6 +95,7 @@ class DOP853:
             raise ValueError("All components of the initial state `y0` must be finite.")
         self.t_old, self.t, self.y, self.t_bound = None, t0, y0, t_bound
         self.fun_single = lambda t, y: np.asarray(fun(t, y), dtype=float)
+        self._fun_raw = fun         # a stage's rate is written into K directly (the same doubles)
         self.direction = np.sign(t_bound - t0) if t_bound != t0 else 1
         self.n, self.status, self.nfev, self.njev, self.nlu = y0.size, "running", 0, 0, 0
         self.y_old = None
@@ -119,6 +120,10 @@ class DOP853:
         self.h_previous = None
         self.K_extended = np.empty((dc.N_STAGES_EXTENDED, self.n), dtype=self.y.dtype)
         self.K = self.K_extended[:self.n_stages + 1]
+        # the stage loop's operands made once (views of K: the same arrays scipy's loop slices per stage)
+        self._stages = [(self.K[:s].T, a[:s], float(c), self.K[s]) for s, (a, c) in
+                        enumerate(zip(self.A[1:], self.C[1:]), start=1)]
+        self._KB = self.K[:-1].T
 
     def fun(self, t, y):
         """The right-hand side, each call counted (``nfev``)."""
@@ -148,14 +153,14 @@ class DOP853:
 
     def _rk_step(self, t, y, h):
         """The stages of one step and its 8th-order result (scipy's ``rk_step``)."""
-        K, fun = self.K, self.fun
+        K, fun, dot = self.K, self._fun_raw, np.dot
         K[0] = self.f
-        for s, (a, c) in enumerate(zip(self.A[1:], self.C[1:]), start=1):
-            dy = np.dot(K[:s].T, a[:s]) * h
-            K[s] = fun(t + c * h, y + dy)
-        y_new = y + h * np.dot(K[:-1].T, self.B)
-        f_new = fun(t + h, y_new)
+        for KT, a, c, row in self._stages:
+            row[...] = fun(t + c * h, y + dot(KT, a) * h)
+        y_new = y + h * dot(self._KB, self.B)
+        f_new = self.fun_single(t + h, y_new)
         K[-1] = f_new
+        self.nfev += self.n_stages
         return y_new, f_new
 
     def _error_norm(self, h, scale):
@@ -165,8 +170,8 @@ class DOP853:
             K, scale = K[:, :self.controlled], scale[:self.controlled]
         err5 = np.dot(K.T, self.E5) / scale
         err3 = np.dot(K.T, self.E3) / scale
-        err5_norm_2 = np.linalg.norm(err5) ** 2
-        err3_norm_2 = np.linalg.norm(err3) ** 2
+        err5_norm_2 = np.sqrt(err5.dot(err5)) ** 2      # np.linalg.norm of a vector, without its checks
+        err3_norm_2 = np.sqrt(err3.dot(err3)) ** 2
         if err5_norm_2 == 0 and err3_norm_2 == 0:
             return 0.0
         denom = err5_norm_2 + 0.01 * err3_norm_2

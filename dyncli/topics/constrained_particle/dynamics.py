@@ -123,6 +123,7 @@ class Model:
         rotating, w_const = curve.rotating, curve.omega_const
         omega = compile_jet(curve.omega_expr.ir, "t", floatmath) if rotating and w_const is None else None
         turn = rotating and not self.compiled.symmetric_about((k1, k2, k3))
+        vertical = (k1, k2, k3) == (0.0, 0.0, 1.0)
         stick, s = mode[0] == "stick", float(mode[1])
         sqrt, cos, sin, isfinite = math.sqrt, math.cos, math.sin, math.isfinite
 
@@ -138,14 +139,21 @@ class Model:
                     w, wd = w_const, 0.0
                 else:
                     w, wd, _ = omega({"t": float(t)})
-                kx1, kx2, kx3 = k2 * x3 - k3 * x2, k3 * x1 - k1 * x3, k1 * x2 - k2 * x1          # k × y
-                kt1, kt2, kt3 = k2 * a3 - k3 * a2, k3 * a1 - k1 * a3, k1 * a2 - k2 * a1          # k × y'
-                ky = k1 * x1 + k2 * x2 + k3 * x3
-                v1, v2, v3 = a1 * qd + w * kx1, a2 * qd + w * kx2, a3 * qd + w * kx3
                 w2, ww = 2 * w * qd, w * w
-                B1 = b1 * qq + w2 * kt1 + wd * kx1 + ww * (k1 * ky - x1)
-                B2 = b2 * qq + w2 * kt2 + wd * kx2 + ww * (k2 * ky - x2)
-                B3 = b3 * qq + w2 * kt3 + wd * kx3 + ww * (k3 * ky - x3)
+                if vertical:                      # k = e3: k × y = (−y2, y1, 0), k (k·y) − y = (−y1, −y2, 0)
+                    kx1, kx2, kx3, ky = -x2, x1, 0.0, x3
+                    v1, v2, v3 = a1 * qd - w * x2, a2 * qd + w * x1, a3 * qd
+                    B1 = b1 * qq - w2 * a2 - wd * x2 - ww * x1
+                    B2 = b2 * qq + w2 * a1 + wd * x1 - ww * x2
+                    B3 = b3 * qq
+                else:
+                    kx1, kx2, kx3 = k2 * x3 - k3 * x2, k3 * x1 - k1 * x3, k1 * x2 - k2 * x1      # k × y
+                    kt1, kt2, kt3 = k2 * a3 - k3 * a2, k3 * a1 - k1 * a3, k1 * a2 - k2 * a1      # k × y'
+                    ky = k1 * x1 + k2 * x2 + k3 * x3
+                    v1, v2, v3 = a1 * qd + w * kx1, a2 * qd + w * kx2, a3 * qd + w * kx3
+                    B1 = b1 * qq + w2 * kt1 + wd * kx1 + ww * (k1 * ky - x1)
+                    B2 = b2 * qq + w2 * kt2 + wd * kx2 + ww * (k2 * ky - x2)
+                    B3 = b3 * qq + w2 * kt3 + wd * kx3 + ww * (k3 * ky - x3)
                 if turn:                          # the field at x = Q y, v = Q v_r, turned back by Qᵀ
                     c, sn = cos(yl[2]), sin(yl[2])
                     d = 1.0 - c
