@@ -95,6 +95,7 @@ class DOP853:
             raise ValueError("All components of the initial state `y0` must be finite.")
         self.t_old, self.t, self.y, self.t_bound = None, t0, y0, t_bound
         self.fun_single = lambda t, y: np.asarray(fun(t, y), dtype=float)
+        self._fun_raw = fun         # a stage's rate is written into K directly (the same doubles)
         self.direction = np.sign(t_bound - t0) if t_bound != t0 else 1
         self.n, self.status, self.nfev, self.njev, self.nlu = y0.size, "running", 0, 0, 0
         self.y_old = None
@@ -119,6 +120,10 @@ class DOP853:
         self.h_previous = None
         self.K_extended = np.empty((dc.N_STAGES_EXTENDED, self.n), dtype=self.y.dtype)
         self.K = self.K_extended[:self.n_stages + 1]
+        # the stage loop's operands made once (views of K: the same arrays scipy's loop slices per stage)
+        self._stages = [(self.K[:s].T, a[:s], float(c), self.K[s]) for s, (a, c) in
+                        enumerate(zip(self.A[1:], self.C[1:]), start=1)]
+        self._KB = self.K[:-1].T
 
     def fun(self, t, y):
         """The right-hand side, each call counted (``nfev``)."""
@@ -148,14 +153,14 @@ class DOP853:
 
     def _rk_step(self, t, y, h):
         """The stages of one step and its 8th-order result (scipy's ``rk_step``)."""
-        K, fun = self.K, self.fun
+        K, fun, dot = self.K, self._fun_raw, np.dot
         K[0] = self.f
-        for s, (a, c) in enumerate(zip(self.A[1:], self.C[1:]), start=1):
-            dy = np.dot(K[:s].T, a[:s]) * h
-            K[s] = fun(t + c * h, y + dy)
-        y_new = y + h * np.dot(K[:-1].T, self.B)
-        f_new = fun(t + h, y_new)
+        for KT, a, c, row in self._stages:
+            row[...] = fun(t + c * h, y + dot(KT, a) * h)
+        y_new = y + h * dot(self._KB, self.B)
+        f_new = self.fun_single(t + h, y_new)
         K[-1] = f_new
+        self.nfev += self.n_stages
         return y_new, f_new
 
     def _error_norm(self, h, scale):
@@ -165,8 +170,8 @@ class DOP853:
             K, scale = K[:, :self.controlled], scale[:self.controlled]
         err5 = np.dot(K.T, self.E5) / scale
         err3 = np.dot(K.T, self.E3) / scale
-        err5_norm_2 = np.linalg.norm(err5) ** 2
-        err3_norm_2 = np.linalg.norm(err3) ** 2
+        err5_norm_2 = np.sqrt(err5.dot(err5)) ** 2      # np.linalg.norm of a vector, without its checks
+        err3_norm_2 = np.sqrt(err3.dot(err3)) ** 2
         if err5_norm_2 == 0 and err3_norm_2 == 0:
             return 0.0
         denom = err5_norm_2 + 0.01 * err3_norm_2
@@ -287,11 +292,58 @@ class LazyDense(_Interpolant):
         super().__init__(t_old, t)
         self._args, self._dense = (fun, K, t_old, t, y_old, y, f, h), None
 
-    def _call_impl(self, t):
+    def made(self) -> DenseOutput:
+        """The step's :class:`DenseOutput` (made now if it was not yet)."""
         if self._dense is None:
             self._dense = _interpolant(*self._args)
             self._args = None
-        return self._dense._call_impl(t)
+        return self._dense
+
+    def _call_impl(self, t):
+        return self.made()._call_impl(t)
+
+
+def _bernstein_matrix():
+    """The matrix taking (y_old, F0, …, F6) of a :class:`DenseOutput` to the Bernstein coefficients
+    of degree 7 of its polynomial on the step (x = (t − t_old)/h in [0, 1]).  Its nested form is
+    y_old + x (F0 + (1 − x)(F1 + x (F2 + …))): F_j multiplies x^i (1 − x)^l with i = ⌈(j + 1)/2⌉,
+    l = ⌊(j + 1)/2⌋, whose Bernstein coefficients of degree 7 are C(7 − i − l, k − i) / C(7, k)
+    (k = i … 7 − l); the constant 1 has every coefficient 1."""
+    from math import comb
+
+    M = np.zeros((8, 8))
+    M[:, 0] = 1.0
+    for j in range(7):
+        i, l = (j + 2) // 2, (j + 1) // 2
+        for k in range(i, 8 - l):
+            M[k, j + 1] = comb(7 - i - l, k - i) / comb(7, k)
+    return M
+
+
+BERNSTEIN = _bernstein_matrix()
+
+
+def one_sign(outputs, row: int):
+    """For each step's interpolant of ``outputs`` (:class:`DenseOutput` or :class:`LazyDense`;
+    anything else: False), whether its component ``row`` keeps one strict sign over the whole
+    step, decided exactly, never by samples: every Bernstein coefficient of that degree-7
+    polynomial (:data:`BERNSTEIN`) has the same sign and exceeds 64 ε times the sum of the
+    magnitudes of its terms (so that neither the coefficients' rounding nor the interpolant's own
+    evaluation can change a sign); the polynomial is a convex combination of those coefficients on
+    the step.  False says only that the test cannot exclude a root (the caller looks closer).
+    All steps in a few array operations."""
+    dense = [o.made() if type(o) is LazyDense else o for o in outputs]
+    ok = np.array([type(d) is DenseOutput and d.F.shape[0] == 7 for d in dense], dtype=bool)
+    out = np.zeros(len(dense), dtype=bool)
+    if not ok.any():
+        return out
+    coef = np.array([np.concatenate(([d.y_old[row]], d.F[:, row])) for d, g in zip(dense, ok) if g], dtype=float)
+    with np.errstate(all="ignore"):
+        b = coef @ BERNSTEIN.T
+        tol = 64 * EPS * np.sum(np.abs(coef), axis=1)[:, None]
+        good = np.all(b > tol, axis=1) | np.all(b < -tol, axis=1)
+    out[ok] = good
+    return out
 
 
 class ConstantOutput(_Interpolant):

@@ -75,6 +75,17 @@ class Curve:
             self._speed = fn
         return fn(q)
 
+    def float_jet(self):
+        """``q -> (y, y', y'')``, the nine components at one float q in plain floats (the right-hand
+        side's curve): each component's derivatives differentiated once, on the expression IR
+        (:func:`dyncli.expr.derivative.derivative`), and compiled into float closures
+        (:func:`dyncli.expr.floateval.float_fn`: a component free of q returns its value).  One call each:
+        cheaper than a loop over the components that vary."""
+        from dyncli.expr.floateval import float_fn
+
+        f1, f2, f3, g1, g2, g3, h1, h2, h3 = (float_fn(e, "q") for e in self.y0 + self.y1 + self.y2)
+        return lambda q: (f1(q), f2(q), f3(q), g1(q), g2(q), g3(q), h1(q), h2(q), h3(q))
+
     @staticmethod
     def _ev(es, q):
         q = np.atleast_1d(np.asarray(q, float))

@@ -106,56 +106,76 @@ class Model:
 
     def rhs_for(self, mode):  # over 60 lines: the integrator's hot loop, inlined in plain floats on purpose
         """y' = f(t, y) for one state, in plain float arithmetic (the integrator calls it one state
-        at a time; the same equations as evaluate()): the curve's y, y', y'' from one jet of each
-        component (:func:`dyncli.expr.jet.compile_jet` on floats), the turning frame Q(φ) as one
-        matrix, the forces from :meth:`Forces.plain`."""
+        at a time; the same equations as evaluate()): the curve's y, y', y'' from its derivatives
+        compiled once into float closures (:meth:`Curve.float_jet`), the forces from
+        :meth:`Forces.plain`.  Everything is computed on the curve's own frame, where x = y and
+        τ = y' (dot products and lengths do not change with the frame): b = y'' q̇² + 2 ω k × y' q̇
+        + ω̇ k × y + ω² (k (k·y) − y).  A field symmetric about the axis (:meth:`Forces.symmetric_about`:
+        gravity along it, dampers, drag) is evaluated there too; any other at the fixed-frame
+        x = Q y, v = Q v_r, and turned back by Qᵀ (Rodrigues: Q u = c u + s k × u + (1 − c)(k·u) k)."""
         from dyncli.expr import floatmath
         from dyncli.expr.jet import compile_jet
 
         curve, m, mu = self.curve, self.m, self.mu
-        j1, j2, j3 = (compile_jet(e.ir, "q", floatmath) for e in curve.y0)
+        jet = curve.float_jet()
         forces = self.compiled.plain()
         k1, k2, k3 = (float(c) for c in curve.k)
         rotating, w_const = curve.rotating, curve.omega_const
         omega = compile_jet(curve.omega_expr.ir, "t", floatmath) if rotating and w_const is None else None
+        turn = rotating and not self.compiled.symmetric_about((k1, k2, k3))
+        vertical = (k1, k2, k3) == (0.0, 0.0, 1.0)
         stick, s = mode[0] == "stick", float(mode[1])
         sqrt, cos, sin, isfinite = math.sqrt, math.cos, math.sin, math.isfinite
 
         def rhs(t, y):
             yl = y.tolist()
-            q, qd, phi = yl[0], yl[1], yl[2]
+            q, qd = yl[0], yl[1]
             if stick:
                 qd = 0.0
-            env = {"q": q}
-            (x1, a1, b1), (x2, a2, b2), (x3, a3, b3) = j1(env), j2(env), j3(env)
-            if rotating:                          # x = Q y, τ = Q y', Q y'' (Rodrigues: c I + s K + (1 − c) k kᵀ)
-                c, sn = cos(phi), sin(phi)
-                d = 1.0 - c
-                Q11, Q12, Q13 = c + d * k1 * k1, -sn * k3 + d * k1 * k2, sn * k2 + d * k1 * k3
-                Q21, Q22, Q23 = sn * k3 + d * k2 * k1, c + d * k2 * k2, -sn * k1 + d * k2 * k3
-                Q31, Q32, Q33 = -sn * k2 + d * k3 * k1, sn * k1 + d * k3 * k2, c + d * k3 * k3
-                x1, x2, x3 = Q11 * x1 + Q12 * x2 + Q13 * x3, Q21 * x1 + Q22 * x2 + Q23 * x3, Q31 * x1 + Q32 * x2 + Q33 * x3
-                a1, a2, a3 = Q11 * a1 + Q12 * a2 + Q13 * a3, Q21 * a1 + Q22 * a2 + Q23 * a3, Q31 * a1 + Q32 * a2 + Q33 * a3
-                b1, b2, b3 = Q11 * b1 + Q12 * b2 + Q13 * b3, Q21 * b1 + Q22 * b2 + Q23 * b3, Q31 * b1 + Q32 * b2 + Q33 * b3
+            x1, x2, x3, a1, a2, a3, b1, b2, b3 = jet(q)
+            qq = qd * qd
+            if rotating:
                 if omega is None:
                     w, wd = w_const, 0.0
                 else:
                     w, wd, _ = omega({"t": float(t)})
-                kx1, kx2, kx3 = k2 * x3 - k3 * x2, k3 * x1 - k1 * x3, k1 * x2 - k2 * x1          # k × x
-                kt1, kt2, kt3 = k2 * a3 - k3 * a2, k3 * a1 - k1 * a3, k1 * a2 - k2 * a1          # k × τ
-                kk1, kk2, kk3 = k2 * kx3 - k3 * kx2, k3 * kx1 - k1 * kx3, k1 * kx2 - k2 * kx1    # k × (k × x)
-                v1, v2, v3 = a1 * qd + w * kx1, a2 * qd + w * kx2, a3 * qd + w * kx3
-                qq, w2 = qd * qd, 2 * w * qd
-                ww = w * w
-                B1 = b1 * qq + w2 * kt1 + wd * kx1 + ww * kk1
-                B2 = b2 * qq + w2 * kt2 + wd * kx2 + ww * kk2
-                B3 = b3 * qq + w2 * kt3 + wd * kx3 + ww * kk3
+                w2, ww = 2 * w * qd, w * w
+                if vertical:                      # k = e3: k × y = (−y2, y1, 0), k (k·y) − y = (−y1, −y2, 0)
+                    kx1, kx2, kx3, ky = -x2, x1, 0.0, x3
+                    v1, v2, v3 = a1 * qd - w * x2, a2 * qd + w * x1, a3 * qd
+                    B1 = b1 * qq - w2 * a2 - wd * x2 - ww * x1
+                    B2 = b2 * qq + w2 * a1 + wd * x1 - ww * x2
+                    B3 = b3 * qq
+                else:
+                    kx1, kx2, kx3 = k2 * x3 - k3 * x2, k3 * x1 - k1 * x3, k1 * x2 - k2 * x1      # k × y
+                    kt1, kt2, kt3 = k2 * a3 - k3 * a2, k3 * a1 - k1 * a3, k1 * a2 - k2 * a1      # k × y'
+                    ky = k1 * x1 + k2 * x2 + k3 * x3
+                    v1, v2, v3 = a1 * qd + w * kx1, a2 * qd + w * kx2, a3 * qd + w * kx3
+                    B1 = b1 * qq + w2 * kt1 + wd * kx1 + ww * (k1 * ky - x1)
+                    B2 = b2 * qq + w2 * kt2 + wd * kx2 + ww * (k2 * ky - x2)
+                    B3 = b3 * qq + w2 * kt3 + wd * kx3 + ww * (k3 * ky - x3)
+                if turn:                          # the field at x = Q y, v = Q v_r, turned back by Qᵀ
+                    c, sn = cos(yl[2]), sin(yl[2])
+                    d = 1.0 - c
+                    dk = d * ky
+                    X1, X2, X3 = c * x1 + sn * kx1 + dk * k1, c * x2 + sn * kx2 + dk * k2, c * x3 + sn * kx3 + dk * k3
+                    kv1, kv2, kv3 = k2 * v3 - k3 * v2, k3 * v1 - k1 * v3, k1 * v2 - k2 * v1
+                    dk = d * (k1 * v1 + k2 * v2 + k3 * v3)
+                    V1, V2, V3 = c * v1 + sn * kv1 + dk * k1, c * v2 + sn * kv2 + dk * k2, c * v3 + sn * kv3 + dk * k3
+                    C1, C2, C3, N1, N2, N3 = forces(t, X1, X2, X3, V1, V2, V3)
+                    kf1, kf2, kf3 = k2 * C3 - k3 * C2, k3 * C1 - k1 * C3, k1 * C2 - k2 * C1
+                    dk = d * (k1 * C1 + k2 * C2 + k3 * C3)
+                    c1, c2, c3 = c * C1 - sn * kf1 + dk * k1, c * C2 - sn * kf2 + dk * k2, c * C3 - sn * kf3 + dk * k3
+                    kf1, kf2, kf3 = k2 * N3 - k3 * N2, k3 * N1 - k1 * N3, k1 * N2 - k2 * N1
+                    dk = d * (k1 * N1 + k2 * N2 + k3 * N3)
+                    n1, n2, n3 = c * N1 - sn * kf1 + dk * k1, c * N2 - sn * kf2 + dk * k2, c * N3 - sn * kf3 + dk * k3
+                else:
+                    c1, c2, c3, n1, n2, n3 = forces(t, x1, x2, x3, v1, v2, v3)
             else:
                 w = 0.0
                 v1, v2, v3 = a1 * qd, a2 * qd, a3 * qd
-                qq = qd * qd
                 B1, B2, B3 = b1 * qq, b2 * qq, b3 * qq
-            c1, c2, c3, n1, n2, n3 = forces(t, x1, x2, x3, v1, v2, v3)
+                c1, c2, c3, n1, n2, n3 = forces(t, x1, x2, x3, v1, v2, v3)
             sp = sqrt(a1 * a1 + a2 * a2 + a3 * a3) or math.nan     # a vanishing tangent: the not-finite error below
             e1, e2, e3 = a1 / sp, a2 / sp, a3 / sp
             R1, R2, R3 = m * B1 - c1 - n1, m * B2 - c2 - n2, m * B3 - c3 - n3

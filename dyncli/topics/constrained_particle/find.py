@@ -175,8 +175,11 @@ def ode_turns(phases) -> list[float]:
     a polynomial, monotone between its critical points (:func:`dyncli.rootfind.polynomial_extremes`),
     so the signs at the step's ends and at those points bracket every root (Brent) — a q̇ that
     changes sign twice inside one step is two turns, not none; and the start of every later phase
-    (a stop, a stick or a slip: a turn at most, never a missed one)."""
+    (a stop, a stick or a slip: a turn at most, never a missed one).  A step whose q̇ keeps one
+    strict sign by its Bernstein coefficients (:func:`dyncli.dop853.one_sign`, all steps at once)
+    has no root and is not looked into."""
     from dyncli import rootfind
+    from dyncli.dop853 import one_sign
 
     eps = float(np.finfo(float).eps)
     out = []
@@ -186,10 +189,13 @@ def ode_turns(phases) -> list[float]:
         if ph.mode[0] == "stick" or not ph.t1 > ph.t0:
             continue
         sol = ph.sol
-        pieces = [(f, float(a), min(float(b), float(ph.t1))) for f, a, b in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:])
-                  if min(float(b), float(ph.t1)) > float(a)]
-        for (f, a, b), crit in zip(pieces, rootfind.polynomial_extremes(pieces)):
-            T = [a] + crit[1] + [b]
+        signed = one_sign(sol.interpolants, 1)
+        pieces = [(f, float(a), min(float(b), float(ph.t1)))
+                  for f, a, b, skip in zip(sol.interpolants, sol.ts[:-1], sol.ts[1:], signed)
+                  if min(float(b), float(ph.t1)) > float(a) and not skip]
+        rows = [(lambda t, f=f: np.asarray(f(t))[1:2], a, b) for f, a, b in pieces]     # q̇'s row only
+        for (f, a, b), crit in zip(pieces, rootfind.polynomial_extremes(rows)):
+            T = [a] + crit[0] + [b]
             R = [float(r) for r in np.asarray(f(np.array(T)), dtype=float)[1]]
             for k in range(len(T) - 1):
                 if R[k] == 0.0 and (k > 0 or a > float(ph.t0)):

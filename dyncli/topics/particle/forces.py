@@ -76,6 +76,20 @@ class Forces:
         #: half period, so that no step leaps over the contact and the error control sees the kink
         self.kink_step = min([math.pi * math.sqrt(m / k) / 8 for _, k, _, side in self.springs if side] + [math.inf])
 
+    def symmetric_about(self, k) -> bool:
+        """Whether the field turns with every rotation Q about the unit axis k through the origin:
+        F(t, Q x, Q v) = Q F(t, x, v) (a uniform force and gravity along k, centres and anchors on
+        the axis, dampers and drag; a custom force never counts as symmetric).  Decided exactly
+        (a cross product that is not exactly zero counts as off the axis)."""
+        k1, k2, k3 = (float(c) for c in k)
+
+        def on_axis(a) -> bool:
+            a1, a2, a3 = (float(c) for c in a)
+            return k2 * a3 - k3 * a2 == 0.0 and k3 * a1 - k1 * a3 == 0.0 and k1 * a2 - k2 * a1 == 0.0
+
+        return (not self.custom and on_axis(self.uniform) and (not self.weight or on_axis((0.0, 0.0, 1.0)))
+                and all(on_axis(c) for c, _, _ in self.inv) and all(on_axis(a) for a, _, _, _ in self.springs))
+
     # -- forces -------------------------------------------------------------
     def conservative(self, x):
         """Gravity + inverse-square + springs (position only)."""
