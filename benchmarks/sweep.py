@@ -18,9 +18,9 @@ Wall times on a shared machine vary with its load; the CPU column is the
 steadier number.
 
 Measured (CPU of the whole command, 10⁴ points, the release before → this one interleaved,
-median of 5, load 3–5 on 2 CPUs): free without find as YAML 1.96 → 1.41 s (JSON, CSV 1.2 s,
-table 1.9 s); free with its two find queries as YAML 3.97 → 3.18 s, as JSON 3.00 → 2.93 s; the
-base-excited sweep with find on w, x and v, 10³ points as JSON, 3.17 → 2.64 s.
+medians of 3–5, load 1.2–3.2 on 2 CPUs): free without find as YAML 1.82 → 1.28 s (JSON 1.15 s,
+CSV 1.2 s, table 1.9 s); free with its two find queries as YAML 3.52 → 2.82 s, as JSON 2.59 →
+2.55 s; the base-excited sweep with find on w, x and v, 10³ points as JSON, 3.07 → 2.56 s.
 
 Usage: python benchmarks/sweep.py [--points N] [--loop-runs K]
 """
