@@ -17,6 +17,11 @@ The in-process rows split the time into validation, solving and output.
 Wall times on a shared machine vary with its load; the CPU column is the
 steadier number.
 
+Measured (CPU of the whole command, 10⁴ points, the release before → this one interleaved,
+medians of 3–5, load 1.2–3.2 on 2 CPUs): free without find as YAML 1.82 → 1.28 s (JSON 1.15 s,
+CSV 1.2 s, table 1.9 s); free with its two find queries as YAML 3.52 → 2.82 s, as JSON 2.59 →
+2.55 s; the base-excited sweep with find on w, x and v, 10³ points as JSON, 3.07 → 2.56 s.
+
 Usage: python benchmarks/sweep.py [--points N] [--loop-runs K]
 """
 
@@ -36,6 +41,7 @@ sys.path.insert(0, str(ROOT))
 
 CASES = [
     ("vibration, free (5 times)", "problems/vibration/underdamped.yaml", "k", 100.0, 1000.0),
+    ("vibration, free without find", "benchmarks/sweep_cases/free-no-find.yaml", "k", 100.0, 1000.0),
     ("vibration, base-excited (6 times)", "problems/vibration/base-excitation.yaml", "k", 100.0, 1000.0),
     ("impact, oblique smooth", "problems/impact/oblique-smooth.yaml", "e", 0.1, 0.9),
     ("vibration, free with find (2 queries)", "problems/vibration/underdamped.yaml", "k", 100.0, 1000.0),

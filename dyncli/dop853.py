@@ -390,22 +390,39 @@ class OdeSolution:
         if t.ndim == 0:
             y = self.interpolants[self._segment(np.searchsorted(self.ts_sorted, t, side=self.side))](t)
             return y if rows is None else y[rows]
-        order = np.argsort(t, kind="stable")     # (linear on times already in order)
-        reverse = np.empty_like(order)
-        reverse[order] = np.arange(order.shape[0])
-        t_sorted = t[order]
-        segments = np.searchsorted(self.ts_sorted, t_sorted, side=self.side) - 1
+        # each time's step, found by a sorted search of the time itself (whatever the order of the
+        # others); the times are put in order only when their steps are not already grouped in
+        # order (the nodes of many pieces, one piece after the other, are: no sort, no copy back)
+        segments = self._segments(t)
+        grouped = segments.size < 2 or bool((segments[1:] >= segments[:-1]).all())
+        if grouped:
+            reverse, t_sorted = None, t
+        else:
+            order = np.argsort(t, kind="stable")     # (linear on times already in order)
+            reverse = np.empty_like(order)
+            reverse[order] = np.arange(order.shape[0])
+            t_sorted = t[order]
+            segments = segments[order]
+        cuts = np.flatnonzero(np.diff(segments)) + 1
+        stack = self._stacked() if cuts.size and t.size < 32 * (cuts.size + 1) else None
+        if stack is not None:               # many steps, few times in each: every step's polynomial at once
+            y = _evaluate(stack, segments, t_sorted, rows)
+            return y if reverse is None else y[:, reverse]
+        bounds = [0] + cuts.tolist() + [t.size]
+        ys = [self.interpolants[int(segments[i])](t_sorted[i:j]) for i, j in zip(bounds[:-1], bounds[1:])]
+        if rows is not None:
+            ys = [y[rows] for y in ys]
+        y = ys[0] if len(ys) == 1 else np.hstack(ys)
+        return y if reverse is None else y[:, reverse]
+
+    def _segments(self, t):
+        """The step of each time (an array, in any order), as scipy's OdeSolution picks it."""
+        segments = np.searchsorted(self.ts_sorted, t, side=self.side) - 1
         segments[segments < 0] = 0
         segments[segments > self.n_segments - 1] = self.n_segments - 1
         if not self.ascending:
             segments = self.n_segments - 1 - segments
-        cuts = np.flatnonzero(np.diff(segments)) + 1
-        stack = self._stacked() if cuts.size and t.size < 32 * (cuts.size + 1) else None
-        if stack is not None:               # many steps, few times in each: every step's polynomial at once
-            return _evaluate(stack, segments, t_sorted, rows)[:, reverse]
-        bounds = [0] + cuts.tolist() + [t.size]
-        ys = [self.interpolants[int(segments[i])](t_sorted[i:j]) for i, j in zip(bounds[:-1], bounds[1:])]
-        return np.hstack(ys if rows is None else [y[rows] for y in ys])[:, reverse]
+        return segments
 
     def _stacked(self):
         """(t_old, h, F, y_old) of every step stacked, when every step is a :class:`DenseOutput`

@@ -229,6 +229,20 @@ def _value_fn(motion: Any, path: str) -> Callable[[float], float]:
     return fn if fn is not None else (lambda t: float(motion.value(path, t)))
 
 
+def _samples(motion: Any, path: str, f: Callable[[float], float], T: list[float]) -> list[float]:
+    """``f`` (the value of ``path``) at each time of ``T``; remembered in ``motion.samples`` (a
+    dict, when the motion keeps one) under the path and the times, so that two queries on one
+    result read its grid once (the same values).  The list returned is not to be changed."""
+    memo = getattr(motion, "samples", None)
+    if type(memo) is not dict:
+        return list(map(f, T))
+    key = (path, tuple(T))
+    got = memo.get(key)
+    if got is None:
+        got = memo[key] = list(map(f, T))
+    return got
+
+
 def _rate_fn(motion: Any, path: str, t0: float):
     rate = getattr(motion, "rate", None)
     return None if not callable(rate) or rate(path, t0) is None else (lambda t: float(rate(path, t)))
@@ -256,7 +270,7 @@ def _when(motion: Any, q: When) -> float | None:
     while True:
         if callable(ahead) and m < len(T):
             ahead(T[m - 1])
-        F += map(f, T[len(F):m])
+        F += _samples(motion, path, f, T[len(F):m])
         scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])))
         safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
         hits = [t for t, d in scan.events(want, q.occurrence, safe, _monotone(motion)) if (want is None or d == want) and t <= safe]
@@ -417,7 +431,8 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     h = lambda t: sense * f(t)     # noqa: E731
     hr = (lambda t: sense * rate(t)) if rate else None
     T = sample_grid(_breaks(motion, path), w1, w2, subdivisions(motion))
-    H = list(map(f, T)) if sense > 0 else [-y for y in map(f, T)]       # (h at each: ±1.0·y is ±y)
+    Y = _samples(motion, path, f, T)
+    H = list(Y) if sense > 0 else [-y for y in Y]       # (h at each: ±1.0·y is ±y)
     cands = [(T[0], H[0]), (T[-1], H[-1])]
     if monotone:                                      # the turning points are samples: no search
         peaks = [j for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]

@@ -70,3 +70,60 @@ def test_refused_shapes_fall_back():
         with pytest.raises(yamlemit.Unsupported):
             yamlemit.dumps(recs)
         assert yamlout.dumps(recs) == _pyyaml(recs)
+
+
+# -- property: random records with tricky strings (issue #31)
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+TRICKY = ["", " ", " lead", "trail ", "a: b", "a:b", "a #b", "#x", "- x", "-", "'q'", '"dq"', "it's",
+          "yes", "no", "on", "off", "y", "n", "Yes", "NO", "true", "False", "null", "Null", "~", "1e3", "012",
+          "0x1f", "1_000", "1:30", "+1", "-0", ".5", ".inf", "-.inf", ".nan", "1.0", "2001-12-14", "0.1.0",
+          "αβγ", "ω* ≤ 2π", "line\nbreak", "tab\there", "\u202e", "a  b", "[x]", "{y}", "x,y", "?", "!", "&a",
+          "*a", "%", "@", "`", "|", ">", "---", "...", "a" * 130, "word " * 30, "17.20", "17.5b", "<<", "="]
+
+_text = st.one_of(st.sampled_from(TRICKY), st.text(max_size=12),
+                  st.text(alphabet="ab :#'-.,0123456789 eE+~\n", max_size=10))
+#: the texts dyncli's records mostly hold (printable, one line): the writer's own layout reached
+_word = st.one_of(st.sampled_from([t for t in TRICKY if t.isprintable()]),
+                  st.text(alphabet="abxyz_ :#'-.,0123456789 eE+~αω", max_size=12),
+                  st.text(alphabet="abcdef0123456789", min_size=1, max_size=64))
+
+
+def _records_of(text, long_lists=False):
+    key = text.filter(lambda k: 0 < len(k) < 128) if long_lists else text
+    atom = st.one_of(st.none(), st.booleans(), st.integers(-10**20, 10**20),
+                     st.floats(allow_nan=True, allow_infinity=True), text)
+    node = st.recursive(atom, lambda inner: st.one_of(
+        st.lists(inner, max_size=6), st.dictionaries(key, inner, max_size=6),
+        st.lists(st.floats(), max_size=20 if long_lists else 6)), max_leaves=30)
+    return st.lists(st.dictionaries(key, node, max_size=8), max_size=3)
+
+
+_records = st.one_of(_records_of(_text), _records_of(_word, True))
+
+
+def _same_data(a, b):
+    if isinstance(a, float) and a != a:
+        return isinstance(b, float) and b != b
+    if isinstance(a, dict):
+        return isinstance(b, dict) and list(a) == list(b) and all(_same_data(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return isinstance(b, list) and len(a) == len(b) and all(map(_same_data, a, b))
+    return type(a) is type(b) and a == b
+
+
+@settings(max_examples=300, deadline=None)
+@given(_records, st.booleans())
+def test_random_records_read_back_as_todays_output(records, unicode):
+    """The writer's text reads back (PyYAML's safe_load) to the records, and is PyYAML's own bytes
+    whenever dyncli's writer lays the records out (else PyYAML wrote them)."""
+    text = yamlout.dumps(records, unicode)
+    assert text == _pyyaml(records, unicode)
+    assert _same_data(yaml.safe_load(text), records)
+    try:
+        own = yamlemit.dumps(records, unicode)
+    except yamlemit.Unsupported:
+        return
+    assert own == text

@@ -145,10 +145,14 @@ class Trajectory:
         for j in np.flatnonzero(odd):
             idx[j] = self.phases.index(self.phase_at(float(t[j])))
         Y = np.empty((len(range(7)[sl]), t.size))
-        order = np.argsort(idx, kind="stable")      # the times of each phase present, one slice each
-        cuts = np.flatnonzero(np.diff(idx[order])) + 1
-        for sel in np.split(order, cuts) if t.size else ():
-            ph = self.phases[int(idx[sel[0]])]
+        if t.size < 2 or bool((idx[1:] >= idx[:-1]).all()):     # the phases' times already grouped
+            cuts = (np.flatnonzero(np.diff(idx)) + 1).tolist()
+            groups = [(int(idx[a]), slice(a, b)) for a, b in zip([0] + cuts, cuts + [t.size])] if t.size else []
+        else:
+            order = np.argsort(idx, kind="stable")      # the times of each phase present, one slice each
+            groups = [(int(idx[sel[0]]), sel) for sel in np.split(order, np.flatnonzero(np.diff(idx[order])) + 1)]
+        for k, sel in groups:
+            ph = self.phases[k]
             if isinstance(ph, RestPhase):
                 Y[:, sel] = np.concatenate([ph.x, np.zeros(3), [ph.W]])[sl, None]
             elif ph.t1 > ph.t0:

@@ -66,6 +66,22 @@ class Response:
         self.s0, self.Om = p.s0, p.Om
         self.fo = p.fo                   # (F0, ω) of a force on the mass or a rotating unbalance, or None
         self._fast = None
+        self._roots: dict = {}           # (motion, d, t_end) -> turns.roots on the breaks to t_end
+
+    def roots(self, mo: turns.Motion, d: int, t_end: float, arrays: bool | None = None):
+        """:func:`turns.roots` of ``mo``'s d-th derivative on :meth:`breaks` to ``t_end``, found once
+        per response and route (the distance and a query on x ask for the same turning points);
+        ``arrays``: on numpy arrays (default: :func:`_on_arrays` of the grid's length)."""
+        breaks = None
+        if arrays is None:
+            breaks = self.breaks(t_end)[0]
+            arrays = _on_arrays(len(breaks))
+        key = (mo, d, t_end, arrays)        # (the float and the array searches may differ in the last bits)
+        got = self._roots.get(key)
+        if got is None:
+            breaks = self.breaks(t_end)[0] if breaks is None else breaks
+            got = self._roots[key] = turns.roots(mo, breaks, d, arrays)
+        return got
 
     def at(self, t: float) -> tuple[float, float, float]:
         p = self.p
@@ -262,7 +278,7 @@ def _turning_points(resp: Response, grid, t_end: float, asked: set[str]):
                 if breaks is None:
                     breaks = grid()
                     arrays = _on_arrays(len(breaks))
-                got, _, more = turns.roots(key[0], breaks, key[1], arrays)
+                got, _, more = resp.roots(key[0], key[1], t_end, arrays)
                 capped = capped or more
             found[key] = got
         out[path] = found[key]
@@ -304,6 +320,7 @@ class _Motion:
         self.subdivide = subdivide
         self.period = None
         self.at = resp.fast_at() or resp.at
+        self.samples: dict = {}         # (path, times) -> values: the queries on one result share its grid
 
     def paths(self) -> list[str]:
         return ["distance", "v", "w", "x"]
@@ -472,6 +489,5 @@ def _forced_turns(resp: Response, t_end: float) -> list[float]:
     analysis of :mod:`.turns` on the grid of breaks (on arrays when numpy is loaded already or
     the grid is long; in plain floats otherwise: a cold closed-form solve stays at the import
     floor)."""
-    breaks, _ = resp.breaks(t_end)
-    found, _, _ = turns.roots(resp.motion(), breaks, 1, _on_arrays(len(breaks)))
+    found, _, _ = resp.roots(resp.motion(), 1, t_end)
     return [t for t in found if 0.0 < t < t_end]
