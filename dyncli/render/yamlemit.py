@@ -525,6 +525,8 @@ def _block_map(d: dict, indent: int, out: list[str], unicode: bool, seen: set, h
                         raise _Slow
             else:
                 tok = _atom(v)
+                if tok is None:             # (not a scalar this writer knows: the general one)
+                    raise _Slow
             out.append(line + " " + tok)
         elif kind == 1:
             if not v:

@@ -23,6 +23,7 @@ from __future__ import annotations
 import bisect
 import math
 from itertools import repeat
+from typing import Any
 
 import numpy as np
 
@@ -147,7 +148,7 @@ class Trajectory:
         Y = np.empty((len(range(7)[sl]), t.size))
         if t.size < 2 or bool((idx[1:] >= idx[:-1]).all()):     # the phases' times already grouped
             cuts = (np.flatnonzero(np.diff(idx)) + 1).tolist()
-            groups = [(int(idx[a]), slice(a, b)) for a, b in zip([0] + cuts, cuts + [t.size])] if t.size else []
+            groups: list[tuple[int, Any]] = [(int(idx[a]), slice(a, b)) for a, b in zip([0] + cuts, cuts + [t.size])] if t.size else []
         else:
             order = np.argsort(idx, kind="stable")      # the times of each phase present, one slice each
             groups = [(int(idx[sel[0]]), sel) for sel in np.split(order, np.flatnonzero(np.diff(idx[order])) + 1)]
