@@ -62,7 +62,7 @@ def pair(x):
 
 def _round(x):
     if isinstance(x, float):
-        return float(round(x))
+        return float(round(x)) if math.isfinite(x) else x     # (a phase beyond the doubles: nan, as numpy's)
     import numpy as np
 
     return np.round(x)

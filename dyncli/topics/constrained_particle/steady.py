@@ -179,7 +179,8 @@ def _friction_ranges(alpha, beta, A, B, mu, scale_f, scale_a):
     a2 = alpha * alpha - mu * mu * float(A @ A)
     a1 = 2 * (alpha * beta - mu * mu * float(A @ B))
     a0 = beta * beta - mu * mu * float(B @ B)
-    ranges = rate_range(a2 / scale_a ** 2, a1 / (scale_a * scale_f), a0 / scale_f ** 2, 1.0)
+    # (divided one scale at a time: the square of a scale of 1e-305 underflows to 0)
+    ranges = rate_range(a2 / scale_a / scale_a, a1 / scale_a / scale_f, a0 / scale_f / scale_f, 1.0)
     return [(lo * scale_f / scale_a, hi * scale_f / scale_a if hi != math.inf else hi) for lo, hi in ranges]
 
 

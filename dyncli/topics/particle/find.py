@@ -12,6 +12,8 @@ the ODE route every step is cut at the exact extremes of each result searched
 
 from __future__ import annotations
 
+import math
+
 from dyncli import motion_find as mf
 from dyncli.expr import constant, resolve_params
 
@@ -26,11 +28,13 @@ def breaks(traj) -> list[float]:
     return sorted(ts)
 
 
-def report(p, res, at_times, traj_of, pieces=None) -> None:
+def report(p, res, at_times, traj_of, pieces=None, period=None) -> None:
     """``distance`` at the times of ``at`` and the ``find`` answers.  ``at_times(ts)``: the
     reported quantities at many times as arrays (report.at_times on the dense trajectory);
     ``traj_of()``: the dense trajectory; ``pieces``: the breaks when they are not its steps (the
-    exact orbit: equal steps of the eccentric anomaly)."""
+    exact orbit: equal steps of the eccentric anomaly); ``period``: (T, the breaks of [0, T]) of a
+    periodic motion (the exact ellipse), whose distance is then k times one period's plus the rest
+    (the speed repeats every T): the same cost at any time, however many turns."""
     B = pieces if pieces is not None else breaks(traj_of())
 
     def batch(ts) -> list[dict]:
@@ -46,7 +50,8 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
         V = traj_of().state_array(ts, slice(3, 6))[1]
         return np.sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2])
 
-    odo = mf.Odometer(speeds, B, arrays=True)
+    odo = mf.Odometer(speeds, B, arrays=True) if period is None else _Periodic(mf.Odometer(speeds, period[1], arrays=True),
+                                                                             period[0])
     res.results["distance"] = odo.at(p.at)
     if not p.find:
         return
@@ -68,6 +73,23 @@ def report(p, res, at_times, traj_of, pieces=None) -> None:
                             batch=lambda ts: [dict(s, distance=d) for s, d in zip(batch(ts), odo.at(ts))],
                             breaks_for=own, monotone=own is not None)
     mf.attach(res, p.find, mf.answer_find(p.find, motion, const, res.warn, full=full))
+
+
+class _Periodic:
+    """The odometer of a motion whose speed repeats every ``T`` from one period's odometer:
+    d(kT + τ) = k d(T) + d(τ), 0 ≤ τ < T."""
+
+    def __init__(self, one, T: float):
+        self.one, self.T = one, float(T)
+        self.full = float(one.at([self.T])[0])
+
+    def at(self, times) -> list:
+        rest, ks = [], []
+        for t in times:
+            k = math.floor(float(t) / self.T)
+            ks.append(k)
+            rest.append(min(max(float(t) - k * self.T, 0.0), self.T))
+        return [k * self.full + d + 0.0 for k, d in zip(ks, self.one.at(rest))]
 
 
 #: the state component of each coordinate path a query may ask about

@@ -63,8 +63,8 @@ def conic(p, field=None):
     """The Orbit of the initial state when the forces are an inverse-square field alone (radial
     or not), else None."""
     field = field or kepler_field(p)
-    if field is None or not math.isfinite(field[1]):
-        return None                     # (an overflowing field: the Forces refuse it)
+    if field is None or not math.isfinite(field[1]) or not field[1] > 0:
+        return None                     # (an overflowing field: the Forces refuse it; one below the doubles: μ = 0)
     c, mu = field
     return Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
 
@@ -139,8 +139,8 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     return res
 
 
-#: pieces of the search per turn of the eccentric anomaly (find, distance)
-PIECES_PER_TURN = 64
+#: pieces of the search per turn of the eccentric anomaly (find, distance), and the most pieces
+PIECES_PER_TURN, PIECES_CAP = 64, 200_000
 
 
 def breaks(orb: Orbit, t_end: float) -> list[float]:
@@ -153,7 +153,7 @@ def breaks(orb: Orbit, t_end: float) -> list[float]:
     if orb.kind == "elliptic":
         assert orb.period is not None          # an ellipse has one
         turns = t_end / orb.period
-        n = int(min(max(PIECES_PER_TURN * math.ceil(turns + 1), 8), 200_000))
+        n = int(min(max(PIECES_PER_TURN * math.ceil(turns + 1), 8), PIECES_CAP))
         dE = 2 * math.pi / PIECES_PER_TURN
         out = []
         for k in range(n + 1):

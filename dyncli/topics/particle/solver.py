@@ -92,7 +92,14 @@ def _motion(p) -> Result:
     orb = orbit.choose(p, notes)
     if orb is not None:
         res = orbit.solve_exact(p, F, orb)
-        find.report(p, res, res.extra["sample"], lambda: res.extra["trajectory"], orbit.breaks(orb, float(p.t_end)))
+        t_end = float(p.t_end)
+        T = orb.period if orb.kind == "elliptic" and orb.period is not None and orb.period < t_end else None
+        if T is not None and t_end / T > orbit.PIECES_CAP / orbit.PIECES_PER_TURN and p.find:
+            res.warn(f"find: the orbit makes {t_end / T:.3g} turns to t = {t_end:g} s, more than "
+                     f"{orbit.PIECES_CAP // orbit.PIECES_PER_TURN} searched piece by piece: crossings inside "
+                     "one piece of several turns may be missed (narrow the search with within)")
+        find.report(p, res, res.extra["sample"], lambda: res.extra["trajectory"], orbit.breaks(orb, t_end),
+                    period=(T, orbit.breaks(orb, T)) if T is not None else None)
         for msg in notes:
             res.warn(msg)
         return res

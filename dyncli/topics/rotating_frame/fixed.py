@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from dyncli.errors import NumericalError
 from dyncli.expr.jet import jet_at
 from dyncli.topics.inertia import mat3, rotations
 
@@ -85,6 +86,10 @@ def orientations(p: Turning, times, res) -> list:
         rate = math.hypot(*w)
         if rate == 0.0:
             return [Q0 for _ in times]
+        for t in times:
+            if not math.isfinite(rate * t):
+                raise NumericalError(f"the frame turns through {rate:.3g} rad/s × {t:.3g} s, beyond the doubles: "
+                                     "its orientation at that time is not determined (ask for an earlier time)")
         return [mat3.matmul(Q0, rotations.rot_axis(w, rate * t)) for t in times]
     return _integrated(p, Q0, times, res) if times else []
 

@@ -93,3 +93,25 @@ def test_distance_same_with_and_without_find():
     plain = _distance(base)
     with_find = _distance(base + "find: [{max: x.2}]\n")
     assert with_find == pytest.approx(plain, rel=1e-14)
+
+
+def test_exact_orbit_distance_after_many_turns():
+    """The exact Kepler route's distance over a million turns of an ellipse (μ = 1, a = 1, e = 0.5,
+    from perigee): the speed repeats every period T = 2π, so d(kT + τ) = k · 4aE(e) + the arc from
+    perigee to the eccentric anomaly E(τ), a ∫₀^E √(1 − e² cos²u) du (mpmath, 30 digits).  The
+    answer takes the same time at any t (it once spent 24 s on 200,000 pieces of many turns each,
+    which a Gauss–Legendre rule cannot follow); the tolerance is the rounding of kT (ε k) carried
+    by the speed, and the route's own error estimate."""
+    e, k = 0.5, 10 ** 6
+    T = 2 * math.pi
+    tau = math.pi / 2 - e                        # E(τ) = π/2 from perigee: τ = (E − e sin E)/n
+    t = k * T + tau
+    rec = solve_one_text(f"type: particle\nm: 1\ng: 1\nx0: [0.5, 0, 0]\nv0: [0, {math.sqrt(3.0)!r}, 0]\n"
+                         f"forces: [{{kind: inverse-square, R0: 1}}]\nat: [0, {tau!r}, {t!r}]\n")
+    d = rec["results"]["distance"]
+    C = 4 * mp.ellipe(mp.mpf(e) ** 2)
+    arc = mp.quad(lambda u: mp.sqrt(1 - mp.mpf(e) ** 2 * mp.cos(u) ** 2), [0, mp.pi / 2])
+    want = k * C + arc
+    assert rec["method"] == "exact"
+    assert abs(d[1] - float(arc)) <= 1e-12 * float(arc)
+    assert abs(d[2] - float(want)) <= max(64 * 2.2e-16 * k * float(C), rec["error_estimate"] * float(want))
