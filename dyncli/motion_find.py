@@ -29,8 +29,9 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
+from dyncli import cputime
 from dyncli import queries as _q
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 
 __all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach",
            "searched_paths", "exact_breaks", "series_values", "find_end"]
@@ -50,6 +51,11 @@ def flatten(node: Any, prefix: str = "") -> dict[str, float]:
         for i, v in enumerate(node):
             out.update(flatten(v, f"{prefix}{i}."))
     return out
+
+
+#: a ``find`` search stops once the solve has used this many times its CPU budget (its states are
+#: solves; a search near its end is not cut short at the budget itself)
+FIND_MARGIN = 2.0
 
 
 class StateMotion:
@@ -76,6 +82,10 @@ class StateMotion:
     def flat(self, t: float) -> dict[str, float]:
         got = self._cache.get(t)
         if got is None:
+            if (limit := cputime.over(FIND_MARGIN)) is not None:   # (every state a solve: the budget bounds them)
+                raise NumericalError(f"find: the search has used {FIND_MARGIN:g} × the solve's CPU budget of "
+                                     f"{limit:g} s (accuracy.max_cpu) before its answers were decided: narrow it "
+                                     "with within, or raise accuracy.max_cpu")
             if len(self._cache) > self._limit:      # bounded: a long search keeps only its recent instants
                 self._cache.clear()
             got = self._cache[t] = flatten(self.state(float(t)))

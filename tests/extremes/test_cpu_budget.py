@@ -115,4 +115,27 @@ def test_quadrature_routes_share_the_budget(slow_clock):
     text = ("type: rectilinear\nparams: {m: 2, k: 800, h: 0.5}\na: \"g - k/m*max(s - h, 0)\"\n"
             "s1: 0\nv1: 1\nfind: [{when: {s: h}, direction: down}]\n")
     rec = solve_text(text)[0]
-    assert rec["error"] and "× the CPU budget" in rec["error"] and "accuracy.max_cpu" in rec["error"]
+    # refused by the quadratures' own count or by the find search's (each names the budget)
+    assert rec["error"] and "accuracy.max_cpu" in rec["error"]
+    assert "× the CPU budget" in rec["error"] or "× the solve's CPU budget" in rec["error"]
+
+
+HOOP_FIND = """
+type: constrained-particle
+m: 1
+curve: {x1: "0.5*sin(q)", x2: 0, x3: "-0.5*cos(q)"}
+q_range: [-pi, pi]
+q0: 1
+forces: [{kind: gravity}]
+at: [0, 1]
+find: [{min: q}, {max: N.1}]
+"""
+
+
+def test_find_searches_within_the_budget(slow_clock):
+    """Every state a `find` search reads is a solve: the search stops at twice the solve's budget
+    with what to change (a bead of 1e-301 kg took 9 s of CPU in 96 states of its quadrature)."""
+    rec = solve_text(HOOP_FIND)[0]
+    assert rec["error"] and "find:" in rec["error"] and "accuracy.max_cpu" in rec["error"]
+    rec = solve_text(HOOP_FIND + "accuracy: {max_cpu: 1e6}\n")[0]
+    assert rec.get("error") is None and rec["results"]["find"][0]["reached"] is True
