@@ -12,6 +12,12 @@ import math
 import struct
 import sys
 
+from dyncli import cputime
+from dyncli.errors import NumericalError
+
+#: a root search (:func:`all_roots`) stops once the solve has used this many times its CPU budget
+SEARCH_MARGIN = 2.0
+
 #: scipy's defaults and smallest rtol of ``brentq``
 XTOL = 2e-12
 RTOL = 4 * sys.float_info.epsilon
@@ -294,6 +300,10 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
         m, h = 0.5 * (u + v), 0.5 * (v - u)
+        if budget % 64 == 0 and (cpu := cputime.over(SEARCH_MARGIN)) is not None:
+            raise NumericalError(f"a root search has used {SEARCH_MARGIN:g} × the solve's CPU budget of {cpu:g} s "
+                                 f"(accuracy.max_cpu; {len(roots)} roots found so far): check the scales of the "
+                                 "inputs, or raise accuracy.max_cpu")
         if (budget := budget - 1) < 0:
             bad.append(m)
             continue

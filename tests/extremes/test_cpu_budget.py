@@ -139,3 +139,21 @@ def test_find_searches_within_the_budget(slow_clock):
     assert rec["error"] and "find:" in rec["error"] and "accuracy.max_cpu" in rec["error"]
     rec = solve_text(HOOP_FIND + "accuracy: {max_cpu: 1e6}\n")[0]
     assert rec.get("error") is None and rec["results"]["find"][0]["reached"] is True
+
+
+def test_a_root_search_stops_at_twice_the_budget(slow_clock):
+    """all_roots looks at the solve's CPU every 64 cells and stops at twice its budget with what
+    to change (a bead on a hoop of 5e7 m turning about a tilted axis searched its equilibria for
+    13 s); outside a solve it has no budget."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from dyncli.errors import NumericalError
+    from dyncli.rootfind import all_roots
+
+    f = lambda x: np.sin(50.0 * x)      # noqa: E731  many cells, many roots
+    assert len(all_roots(f, 0.0, 200.0, budget=10_000)[0]) > 1000
+    with cputime.solve_budget(SimpleNamespace(max_cpu=1.0, max_steps=None)):
+        with pytest.raises(NumericalError, match="root search .* accuracy.max_cpu"):
+            all_roots(f, 0.0, 200.0, budget=10_000)
