@@ -449,6 +449,9 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
     cuts: list[set[float]] = []
     depth, used, scale = 0, 0, None
     while cells.shape[0]:
+        if (cpu := cputime.over(SEARCH_MARGIN)) is not None:
+            raise NumericalError(f"a search of extremes has used {SEARCH_MARGIN:g} × the solve's CPU budget of "
+                                 f"{cpu:g} s (accuracy.max_cpu): narrow it with within, or raise accuracy.max_cpu")
         m, h = 0.5 * (cells[:, 0] + cells[:, 1]), 0.5 * (cells[:, 1] - cells[:, 0])
         used += cells.shape[0] * (deg + 1) if depth else 0
         if used > budget:

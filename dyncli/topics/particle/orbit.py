@@ -66,7 +66,10 @@ def conic(p, field=None):
     if field is None or not math.isfinite(field[1]) or not field[1] > 0:
         return None                     # (an overflowing field: the Forces refuse it; one below the doubles: μ = 0)
     c, mu = field
-    return Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
+    try:
+        return Orbit(mu, np.asarray(p.x0, float) - c, np.asarray(p.v0, float))
+    except (ZeroDivisionError, OverflowError, ValueError):     # elements beyond the doubles: the ODE route
+        return None
 
 
 def choose(p, res_warn):
@@ -98,7 +101,10 @@ def _radial(p, orb: Orbit, res_warn) -> None:
     from dyncli.topics.particle.kepler import radial_fall_time
 
     R = orb.R0
-    t_c = radial_fall_time(orb.mu, R, float(orb.r0 @ orb.v0) / R)
+    try:
+        t_c = radial_fall_time(orb.mu, R, float(orb.r0 @ orb.v0) / R)
+    except (ZeroDivisionError, OverflowError, ValueError):     # beyond the doubles: the ODE route says when
+        t_c = None
     msg = "the orbit is radial (x0 − center parallel to v0, angular momentum 0)"
     if t_c is not None and t_c <= float(p.t_end):
         raise NumericalError(f"{msg}: the particle falls into the centre of the inverse-square field at "

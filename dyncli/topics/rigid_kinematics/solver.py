@@ -99,6 +99,8 @@ def rigid_residual(points: dict) -> tuple[float, str | None]:
         return 0.0, None
     for a, b, x, v in rel:
         L = norm(x)
+        if not L * vmax > 0:            # (coincident points, or a product below the doubles: no direction)
+            continue
         r = abs(dot(v, x)) / (L * vmax)
         if r > worst:
             worst, pair = r, f"{a}-{b}"
