@@ -18,7 +18,9 @@ otherwise the cell is halved.  Two roots closer than the rounding of f
 (a tangency: an inflection with a level tangent, or a pair of turning points that cancel to
 rounding) end in cells of a few ulp: they are reported as ``touches`` (they move x by nothing
 that a double can hold).  The cells start on the grid of breaks (a fraction of the shortest
-period); a vectorised pass on numpy arrays for long grids, plain floats for short ones.
+period); a vectorised pass on numpy arrays for long grids, plain floats for short ones.  Each root
+the arrays find is then re-found by the float search's own cells and Newton (:func:`float_root`):
+the two routes give the same doubles (numpy's sin and exp need not round as the C library's do).
 """
 
 from __future__ import annotations
@@ -279,4 +281,34 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
             r = jet(x)
             return r[0], r[1]
         found.append(np.asarray(newton_in_brackets(FD, A[k], B[k], FA[k], FB[k]), dtype=float))
-    return sorted(set(np.concatenate(found).tolist())), sorted(touches), cells >= MAX_CELLS
+    jf = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
+    got = {float_root(jf, breaks, r) for r in np.concatenate(found).tolist()}
+    return sorted(got), sorted(touches), cells >= MAX_CELLS
+
+
+def float_root(jet, breaks: list[float], r: float) -> float:
+    """The root near ``r`` (found on arrays) as the plain-float search finds it, bit for bit: the
+    cells of :func:`_cells_floats` that hold ``r`` followed from its break cell, halved as it
+    halves them, then the same :func:`_newton` on the first cell it decides — so the answer does
+    not depend on the route (numpy's sin and exp may differ from the C library's in the last bit,
+    and the vectorised Newton steps from other ends).  ``r`` itself where the float search would
+    not end at a sign change around it (a root at a break or a midpoint, a cell the float sign
+    analysis calls rootless: only at a tangency, within the rounding of x⁽ᵈ⁾)."""
+    import bisect
+
+    i = bisect.bisect_right(breaks, r) - 1
+    if not 0 <= i < len(breaks) - 1 or breaks[i] == r:
+        return r
+    lo, hi = breaks[0], breaks[-1]
+    span = hi - lo
+    a, b = breaks[i], breaks[i + 1]
+    fa, fb = jet(a)[0], jet(b)[0]
+    while True:
+        m, h = 0.5 * (a + b), 0.5 * (b - a)
+        f, fd, bound, noise = jet(m)
+        kind = _classify(f, fd, bound, noise, h)
+        if kind == 1 or (kind == -1 and (m <= a or m >= b or h <= 4 * _EPS * max(abs(m), span))):
+            return _newton(jet, a, b, fa, fb) if fa * fb < 0 else r
+        if kind == 0 or f == 0.0 or r == m:
+            return m if f == 0.0 else r
+        a, b, fa, fb = (a, m, fa, f) if r < m else (m, b, f, fb)
