@@ -74,7 +74,35 @@ find:
   - {when: {v: 0}, occurrence: 300}
 """
 
-CASES = {"base-find-w": BASE_FIND_W, "base-k133": BASE.format(k=133.1103678929766),
+NEAR_RESONANCE = """type: vibration
+m: 1
+k: 400
+zeta: 0.01
+x0: 0.001
+force: {amplitude: 1, omega: 20.2}
+t_end: 4
+at: [3.9]
+find:
+  - {max: x, within: [2, 3]}
+  - {when: {v: 0}, occurrence: 9}
+  - {min: v, within: [1, 2]}
+"""
+
+OVERDAMPED = """type: vibration
+m: 1
+k: 100
+zeta: 1.5
+x0: 0.05
+base: {amplitude: 0.01, omega: 7}
+t_end: 3
+at: [2.5]
+find:
+  - {max: x, within: [1, 2]}
+  - {when: {v: 0}, occurrence: 3}
+  - {min: w}
+"""
+
+CASES = {"near-resonance": NEAR_RESONANCE, "overdamped": OVERDAMPED, "base-find-w": BASE_FIND_W, "base-k133": BASE.format(k=133.1103678929766),
          "base-k400": BASE.format(k=400), "base-k977": BASE.format(k=977.3), "force": FORCE,
          "unbalance": UNBALANCE, "long": LONG}
 
