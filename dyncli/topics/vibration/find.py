@@ -15,8 +15,9 @@ when ζ ≥ 1) and the sum over them as a geometric series (each |w| at a turnin
 times e^(−ζωₙπ/ω*)) — O(1) at any time.  With a base motion or a force: the roots of v on the grid
 of breaks, from the steady state plus the free vibration that makes up the initial conditions —
 in plain floats with Newton and the exact acceleration for a short grid (no numpy import), on
-arrays with :func:`dyncli.rootfind.roots_in_brackets` for a long one (an error δ in a turning
-point's time changes x there by ½|ẍ|δ² only).
+arrays for a long one or once numpy is loaded, each root then polished by the plain-float search's
+own cells and Newton (:func:`turns.float_root`), so both routes give the same doubles and an
+answer does not depend on what the process solved before (a point's place in a sweep).
 """
 
 from __future__ import annotations
@@ -70,16 +71,15 @@ class Response:
 
     def roots(self, mo: turns.Motion, d: int, t_end: float, arrays: bool | None = None):
         """:func:`turns.roots` of ``mo``'s d-th derivative on :meth:`breaks` to ``t_end``, found once
-        per response and route (the distance and a query on x ask for the same turning points);
-        ``arrays``: on numpy arrays (default: :func:`_on_arrays` of the grid's length)."""
-        breaks = None
-        if arrays is None:
-            breaks = self.breaks(t_end)[0]
-            arrays = _on_arrays(len(breaks))
-        key = (mo, d, t_end, arrays)        # (the float and the array searches may differ in the last bits)
+        per response (the distance and a query on x ask for the same turning points; both routes
+        give the same doubles); ``arrays``: on numpy arrays (default: :func:`_on_arrays` of the
+        grid's length)."""
+        key = (mo, d, t_end)
         got = self._roots.get(key)
         if got is None:
-            breaks = self.breaks(t_end)[0] if breaks is None else breaks
+            breaks = self.breaks(t_end)[0]
+            if arrays is None:
+                arrays = _on_arrays(len(breaks))
             got = self._roots[key] = turns.roots(mo, breaks, d, arrays)
         return got
 
@@ -145,27 +145,6 @@ class Response:
         f = 0.0 if self.fo is None else self.fo[0] * X.sin(self.fo[1] * t) / self.p.m
         wn = self.omega_n
         return -wn * wn * (x - s - self.L) - 2.0 * self.zeta * wn * (v - sd) + f
-
-    def arrays(self, t):
-        """(x, v) on an array of times (numpy): the steady state plus the free vibration that
-        makes up the initial conditions (a few numpy operations per call); at an undamped
-        resonance (no steady state) the general closed form."""
-        p = self.p
-        P, Om = self._steady()
-        if P is None:
-            if self.fo is None:
-                x, v, _ = cf.response(t, omega_n=self.omega_n, zeta=self.zeta, L=self.L, x0=self.x0, v0=p.v0,
-                                      s0=self.s0, Omega=self.Om)
-                return x, v
-            wh, vh = cf.free(t, self.x0 - self.L, p.v0, self.omega_n, self.zeta)
-            wf, vf = cf.forced(t, self.fo[0] / p.m, self.fo[1], self.omega_n, self.zeta)
-            return wh + wf + self.L, vh + vf
-        import numpy as np
-
-        e = np.exp(1j * Om * np.asarray(t, dtype=float))
-        wp, vp = (P * e).imag, (1j * Om * P * e).imag
-        wh, vh = cf.free(t, self.x0 - self.L - P.imag, p.v0 - (1j * Om * P).imag, self.omega_n, self.zeta)
-        return self.L + wh + wp, vh + vp
 
     def _steady(self):
         """(the complex amplitude P of the steady state x − L = Im(P e^(iΩt)), Ω), or (None, None)."""
@@ -374,11 +353,8 @@ def _odometer(resp: Response, t_end: float):
     if resp.fo is None and resp.s0 == 0.0:
         return _free_odometer(resp)
     tps = _forced_turns(resp, t_end) if t_end > 0 else []
-    if not _on_arrays(len(tps)):
-        xv = resp.scalar()
-        xs = [xv(t)[0] for t in tps]
-    else:
-        xs = resp.arrays(__import__("numpy").asarray(tps, dtype=float))[0].tolist()
+    xv = resp.scalar()              # (plain floats on every route: the same doubles, numpy loaded or not)
+    xs = [xv(t)[0] for t in tps]
     return _Odometer(_turning_length(resp, tps, xs))
 
 

@@ -18,7 +18,9 @@ otherwise the cell is halved.  Two roots closer than the rounding of f
 (a tangency: an inflection with a level tangent, or a pair of turning points that cancel to
 rounding) end in cells of a few ulp: they are reported as ``touches`` (they move x by nothing
 that a double can hold).  The cells start on the grid of breaks (a fraction of the shortest
-period); a vectorised pass on numpy arrays for long grids, plain floats for short ones.
+period); a vectorised pass on numpy arrays for long grids, plain floats for short ones.  Each root
+the arrays find is then re-found by the float search's own cells and Newton (:func:`float_root`):
+the two routes give the same doubles (numpy's sin and exp need not round as the C library's do).
 """
 
 from __future__ import annotations
@@ -112,21 +114,28 @@ def _fast_jets(mo: Motion, d: int, X=math):
     sd, sd1 = mo.s0 * Om ** d, mo.s0 * Om ** (d + 1)
     exp, cos, sin, sqrt = X.exp, X.cos, X.sin, X.sqrt
 
-    def jet(t: float):
+    def derivatives(t: float):
         ex, y, th = exp(-sig * t), ws * t, Om * t
         cy, sy, c, s = cos(y), sin(y), cos(th), sin(th)
         u = [ex * (a0 * cy + q0 * sy) + Pi * c + Pr * s, ex * (b0 * cy + q1 * sy) + Om * (Pr * c - Pi * s)]
         trig = (s, c, -s, -c)
         for k in range(1, d + 2):
             u.append(Fk[k - 1] * trig[(k - 1) % 4] - two * u[k] - wn2 * u[k - 1])
-        f = u[d] + sd * trig[d % 4]
-        fd = u[d + 1] + sd1 * trig[(d + 1) % 4]
+        return u, u[d] + sd * trig[d % 4], u[d + 1] + sd1 * trig[(d + 1) % 4]
+
+    def slope(t: float):
+        _, f, fd = derivatives(t)
+        return f, fd
+
+    def jet(t: float):
+        u, f, fd = derivatives(t)
         noise = 16 * _EPS * (abs(u[d]) + two * abs(u[d - 1]) + wn2 * abs(u[max(d - 2, 0)])) + base
         root_e = sqrt(wn2 * u[n - 1] * u[n - 1] + u[n] * u[n])
 
         def bound(h):
             return ((root_e + G * h) * exp(two * h) + sn) * (1.0 + 1e-9)
         return f, fd, bound, noise
+    jet.slope = slope                   # (f, f') alone, the same doubles: Newton's steps need no bound
     return jet
 
 
@@ -219,9 +228,10 @@ FEW_CELLS = 8
 def _newton(jet, a: float, b: float, fa: float, fb: float) -> float:
     """The one root of f = x⁽ᵈ⁾ in a proven bracket: Newton with the exact slope, bisection when
     a step leaves the bracket, to a step below 4 ulp."""
+    slope = getattr(jet, "slope", None) or (lambda t: jet(t)[:2])
     t = a - fa * (b - a) / (fb - fa)
     for _ in range(200):
-        f, fd, _, _ = jet(t)
+        f, fd = slope(t)
         if f == 0.0:
             return t
         if (f > 0) == (fa > 0):
@@ -236,25 +246,54 @@ def _newton(jet, a: float, b: float, fa: float, fb: float) -> float:
     return t
 
 
+class _LibmArrays:
+    """numpy's arithmetic with the C library's exp, sin and cos element by element: the array
+    search then makes the plain-float search's very doubles (+ − × / and √ round correctly in
+    both; numpy's own exp need not round as the C library's does)."""
+
+    def __init__(self, np):
+        self.np, self.sqrt = np, np.sqrt
+
+    def _each(self, fn, t):
+        return self.np.fromiter(map(fn, self.np.asarray(t, dtype=float).ravel().tolist()), float)
+
+    def exp(self, t):
+        return self._each(math.exp, t)
+
+    def sin(self, t):
+        return self._each(math.sin, t)
+
+    def cos(self, t):
+        return self._each(math.cos, t)
+
+
 def _roots_arrays(mo: Motion, breaks: list[float], d: int):
     import numpy as np
 
-    from dyncli.rootfind import newton_in_brackets
+    jet = _fast_jets(mo, d, _LibmArrays(np))
+    if jet is None:                     # (the general form: numpy's own functions, then each root re-found)
+        jf = lambda t: jets(mo, t, d)   # noqa: E731
+        got, touches, more = _search_arrays(mo, lambda t: jets(mo, t, d, np), breaks, d, np)
+        return sorted({float_root(jf, breaks, r) for r in got}), touches, more
+    return _search_arrays(mo, jet, breaks, d, np)
 
-    jet = _fast_jets(mo, d, np) or (lambda t: jets(mo, t, d, np))
+
+def _search_arrays(mo: Motion, jet, breaks: list[float], d: int, np):
+    """:func:`_roots_floats` cell by cell on arrays (``jet`` on arrays of times), each root then
+    refined by the same :func:`_newton` in plain floats."""
+    jf = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
     T = np.asarray(breaks, dtype=float)
     F = jet(T)[0]
-    found = [T[1:-1][F[1:-1] == 0.0]]
+    found = [T[1:-1][F[1:-1] == 0.0].tolist()]
     a, b, fa, fb = T[:-1], T[1:], F[:-1], F[1:]
     touches: list = []
     ends: list[list] = [[], [], [], []]
     cells = 0
     while a.size:
         if a.size <= FEW_CELLS and cells:
-            jf = _fast_jets(mo, d) or (lambda t: jets(mo, t, d))
             got, more, cells = _cells_floats(jf, list(zip(a.tolist(), b.tolist(), fa.tolist(), fb.tolist()))[::-1],
                                              breaks[0], breaks[-1], cells)
-            found.append(np.asarray(got, dtype=float))
+            found.append(got)
             touches += more
             break
         m, h = 0.5 * (a + b), 0.5 * (b - a)
@@ -269,14 +308,76 @@ def _roots_arrays(mo: Motion, breaks: list[float], d: int):
         for lst, arr in zip(ends, (a, b, fa, fb)):
             lst.append(arr[end])
         split = und & ~tiny
-        found.append(m[split & (f == 0.0)])
+        found.append(m[split & (f == 0.0)].tolist())
         a, b, fa, fb, m, f = a[split], b[split], fa[split], fb[split], m[split], f[split]
         a, b, fa, fb = np.concatenate([a, m]), np.concatenate([m, b]), np.concatenate([fa, f]), np.concatenate([f, fb])
     A, B, FA, FB = (np.concatenate(x) for x in ends)
     k = FA * FB < 0
-    if k.any():
-        def FD(x, _):
-            r = jet(x)
-            return r[0], r[1]
-        found.append(np.asarray(newton_in_brackets(FD, A[k], B[k], FA[k], FB[k]), dtype=float))
-    return sorted(set(np.concatenate(found).tolist())), sorted(touches), cells >= MAX_CELLS
+    out = [t for got in found for t in got]
+    slope = getattr(jet, "slope", None)
+    if slope is not None and k.sum() > MANY_ROOTS:
+        out += _newton_arrays(slope, A[k], B[k], FA[k], FB[k], np).tolist()
+    else:
+        out += [_newton(jf, *c) for c in zip(A[k].tolist(), B[k].tolist(), FA[k].tolist(), FB[k].tolist())]
+    return sorted(set(out)), sorted(touches), cells >= MAX_CELLS
+
+
+#: from this many brackets on, Newton runs on arrays (below: a call per bracket costs less than a
+#: round of array operations)
+MANY_ROOTS = 48
+
+
+def _newton_arrays(slope, a, b, fa, fb, np):
+    """:func:`_newton` on many brackets at once (``slope``: (f, f') on an array of times), each
+    element by the same operations in the same order: the same doubles as one call per bracket."""
+    t = a - fa * (b - a) / (fb - fa)
+    out = np.empty_like(t)
+    idx = np.arange(t.size)
+    for _ in range(200):
+        if not idx.size:
+            break
+        f, fd = slope(t)
+        zero = f == 0.0
+        out[idx[zero]] = t[zero]
+        keep = ~zero
+        idx, a, b, fa, fb, t, f, fd = (x[keep] for x in (idx, a, b, fa, fb, t, f, fd))
+        same = (f > 0) == (fa > 0)
+        a, fa = np.where(same, t, a), np.where(same, f, fa)
+        b, fb = np.where(same, b, t), np.where(same, fb, f)
+        with np.errstate(all="ignore"):
+            step = np.where(fd != 0, t - f / fd, np.nan)
+        t_new = np.where((a <= step) & (step <= b), step, 0.5 * (a + b))
+        done = (np.abs(t_new - t) <= 4 * _EPS * np.abs(t)) | (b - a <= 4 * _EPS * np.abs(b))
+        out[idx[done]] = t_new[done]
+        keep = ~done
+        idx, a, b, fa, fb, t = (x[keep] for x in (idx, a, b, fa, fb, t_new))
+    out[idx] = t
+    return out
+
+
+def float_root(jet, breaks: list[float], r: float) -> float:
+    """The root near ``r`` (found on arrays) as the plain-float search finds it, bit for bit: the
+    cells of :func:`_cells_floats` that hold ``r`` followed from its break cell, halved as it
+    halves them, then the same :func:`_newton` on the first cell it decides — so the answer does
+    not depend on the route (numpy's sin and exp may differ from the C library's in the last bit,
+    and the vectorised Newton steps from other ends).  ``r`` itself where the float search would
+    not end at a sign change around it (a root at a break or a midpoint, a cell the float sign
+    analysis calls rootless: only at a tangency, within the rounding of x⁽ᵈ⁾)."""
+    import bisect
+
+    i = bisect.bisect_right(breaks, r) - 1
+    if not 0 <= i < len(breaks) - 1 or breaks[i] == r:
+        return r
+    lo, hi = breaks[0], breaks[-1]
+    span = hi - lo
+    a, b = breaks[i], breaks[i + 1]
+    fa, fb = jet(a)[0], jet(b)[0]
+    while True:
+        m, h = 0.5 * (a + b), 0.5 * (b - a)
+        f, fd, bound, noise = jet(m)
+        kind = _classify(f, fd, bound, noise, h)
+        if kind == 1 or (kind == -1 and (m <= a or m >= b or h <= 4 * _EPS * max(abs(m), span))):
+            return _newton(jet, a, b, fa, fb) if fa * fb < 0 else r
+        if kind == 0 or f == 0.0 or r == m:
+            return m if f == 0.0 else r
+        a, b, fa, fb = (a, m, fa, f) if r < m else (m, b, f, fb)
