@@ -135,7 +135,7 @@ def _fast_jets(mo: Motion, d: int, X=math):
         def bound(h):
             return ((root_e + G * h) * exp(two * h) + sn) * (1.0 + 1e-9)
         return f, fd, bound, noise
-    jet.slope = slope                   # (f, f') alone, the same doubles: Newton's steps need no bound
+    setattr(jet, "slope", slope)        # (f, f') alone, the same doubles: Newton's steps need no bound
     return jet
 
 
