@@ -260,35 +260,9 @@ class _Writer:
         """The items of a flow collection already written as texts (atoms: never split), with
         PyYAML's break before an item that starts past the width; with ``pairs`` the texts are
         key, value, key, value… of a flow mapping (``key: value``, the break before a key only)."""
-        out = self.out
-        col, ws = self.column, self.whitespace
-        first = True
-        it = iter(texts)
-        for t in it:
-            if first:
-                first = False
-            else:
-                out.append(",")
-                col += 1
-                ws = False
-            if col > WIDTH:
-                # newline_indent in a flow collection: past the width, so always a new line
-                indent = self.indent or 0
-                out.append("\n" + " " * indent)
-                col, ws = indent, True
-            if ws:
-                out.append(t)
-                col += len(t)
-            else:
-                out.append(" " + t)
-                col += len(t) + 1
-            if pairs:
-                v = next(it)
-                out.append(": " + v)        # indicator(":", False), then the value after a space
-                col += len(v) + 2
-            ws = False
-        self.column, self.whitespace = col, ws
-        if not first:
+        self.column, self.whitespace, wrote = _lay_flow(texts, self.column, self.whitespace, self.indent or 0,
+                                                        self.out, pairs)
+        if wrote:
             self.indention = False
 
     def sequence(self, xs: list, mapping: bool) -> None:
@@ -419,11 +393,14 @@ def _scalar_token(x, unicode: bool, flow: bool, key: bool) -> str:
     return a
 
 
-def _flow(tokens: list[str], col: int, indent: int, out: list[str], close: str, pairs: bool) -> None:
-    """The items of a flow collection after its opening bracket (at column ``col``), as
-    :meth:`_Writer.flow_items` lays them out, then ``close``."""
-    ws, first = True, True
-    it = iter(tokens)
+def _lay_flow(texts, col: int, ws: bool, indent: int, out: list[str], pairs: bool) -> tuple[int, bool, bool]:
+    """The items of a flow collection written as texts (atoms: never split) from column ``col``
+    (``ws``: after whitespace), PyYAML's break (newline_indent: past the width, always a new
+    line) before an item that starts past the width; with ``pairs`` the texts are key, value,
+    key, value… (``key: value``, indicator ":" then the value after a space).  Returns the column
+    and whitespace state after them, and whether any item was written."""
+    first = True
+    it = iter(texts)
     for t in it:
         if first:
             first = False
@@ -445,6 +422,13 @@ def _flow(tokens: list[str], col: int, indent: int, out: list[str], close: str, 
             out.append(": " + v)
             col += len(v) + 2
         ws = False
+    return col, ws, not first
+
+
+def _flow(tokens: list[str], col: int, indent: int, out: list[str], close: str, pairs: bool) -> None:
+    """The items of a flow collection after its opening bracket (at column ``col``), as
+    :meth:`_Writer.flow_items` lays them out, then ``close``."""
+    _lay_flow(tokens, col, True, indent, out, pairs)
     out.append(close)
 
 
