@@ -8,11 +8,13 @@ of that square system in (q, λ), found by Newton's method with its analytic Jac
     [ J                    0  ]      (curvature.py),
 
 started from the given configuration and from the points where the generalized force along a
-path on the mechanism changes sign: each free coordinate is followed on the joints' manifold
-(a step of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either
-way) — the sign change brackets a root the Newton iteration then converges to quadratically.
-Which equilibria are reached depends on these starts (a sampled walk: two equilibria within one
-step, or one beyond half a turn from every start, can be missed; said in the docs).
+path on the mechanism vanishes: each free coordinate is followed on the joints' manifold (a step
+of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either way), and on
+each step p(τ) = onto(q_k + τ (q_{k+1} − q_k)) every root and touch of g(τ) = t(τ)·f(p(τ)) is
+decided by all_roots (the sign analysis of g's resolved Chebyshev interpolant, g evaluated at
+all its nodes at once), never by the signs at the step's ends: two or three equilibria within
+one step are each a start.  An equilibrium beyond half a turn from every start can still be
+missed (said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
