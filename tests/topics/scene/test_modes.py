@@ -456,9 +456,10 @@ def test_three_equilibria_within_one_step_of_the_path():
     """A bead on a smooth horizontal rail, a spring (k, natural length L0) to the anchor (a, h) with
     L0 just over h: V = k (√((x − a)² + h²) − L0)²/2 has the snap-through's three rests x = a
     (unstable, ω² = k (1 − L0/h)/m) and x = a ± √(L0² − h²) (stable, ω² = k (L0² − h²)/(m L0²)), all
-    three within 0.13 of each other — inside one 0.12 step of the path (a tenth of the scene's
-    size 1.2), where the force along it changes sign three times: the signs at the steps' ends
-    alone found only the two wells.  The references: the closed forms, and sympy's roots of V'."""
+    three within 0.13 of each other.  The path from x = 1.2 steps by 0.12 (a tenth of the scene's
+    size): its step from 0.12 to 0 holds the unstable rest and a well, where the force along it
+    changes sign twice — the signs at the steps' ends alone found only the two wells.  The
+    references: the closed forms, and sympy's roots of V'."""
     import sympy as sp
 
     k, a, h, L0 = 100, 0.03, 1, 1.002
