@@ -8,11 +8,13 @@ of that square system in (q, λ), found by Newton's method with its analytic Jac
     [ J                    0  ]      (curvature.py),
 
 started from the given configuration and from the points where the generalized force along a
-path on the mechanism changes sign: each free coordinate is followed on the joints' manifold
-(a step of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either
-way) — the sign change brackets a root the Newton iteration then converges to quadratically.
-Which equilibria are reached depends on these starts (a sampled walk: two equilibria within one
-step, or one beyond half a turn from every start, can be missed; said in the docs).
+path on the mechanism vanishes: each free coordinate is followed on the joints' manifold (a step
+of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn either way), and on
+each step p(τ) = onto(q_k + τ (q_{k+1} − q_k)) every root and touch of g(τ) = t(τ)·f(p(τ)) is
+decided by all_roots (the sign analysis of g's resolved Chebyshev interpolant, g evaluated at
+all its nodes at once), never by the signs at the step's ends: two or three equilibria within
+one step are each a start.  An equilibrium beyond half a turn from every start can still be
+missed (said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
@@ -24,7 +26,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import newton_system
+from dyncli.rootfind import all_roots, newton_system
 
 from . import assembly, curvature
 
@@ -34,6 +36,8 @@ REACH = math.pi         # how far each path runs either way (same units)
 MAX_FOUND = 24
 EVERY = 5              # every fifth point of a path starts a Newton iteration too
 MAX_WALKED = 8         # equilibria whose own paths are followed too
+DEG = 12                # the degree of g's interpolant on one step (all_roots' starting cell)
+BUDGET = 64            # cells per step before the rest of it is left undecided (a start at each)
 
 
 class Search:
@@ -103,26 +107,26 @@ class Search:
             ph = self.s.phi(q, 0.0)
             if float(np.max(np.abs(ph), initial=0.0)) <= 1e-13 * self.L:
                 return q
-            step = np.linalg.lstsq(self.s.jac(q) * self.scale, -ph, rcond=None)[0] * self.scale
-            q = q + step
+            Js = self.s.jac(q) * self.scale
+            q = q - Js.T @ _row_solve(Js, ph) * self.scale
         return None
 
     def _tangent(self, q, t):
         J = self.s.jac(q) * self.scale
         ts = t / self.scale
         if J.shape[0]:
-            ts = ts - J.T @ np.linalg.lstsq(J @ J.T, J @ ts, rcond=None)[0]
+            ts = ts - J.T @ _row_solve(J, J @ ts)
         nrm = float(np.linalg.norm(ts))
         return None if nrm < 1e-12 else ts / nrm * self.scale
 
     def path_starts(self, q0, t0) -> list:
-        """Points of the path from q0 along t0 (both ways) where the force along it changes sign."""
+        """Points of the path from q0 along t0 (both ways) where the force along it vanishes:
+        every root and touch of g on every step, decided by :meth:`step_roots`."""
         out = []
         for sign in (1.0, -1.0):
             q, t = q0.copy(), self._tangent(q0, sign * t0)
             if t is None:
                 continue
-            g_prev, q_prev = float(t @ self.forces(q)), q
             for k in range(int(REACH / STEP)):
                 q_new = self._onto(q + STEP * t)
                 if q_new is None:
@@ -130,15 +134,78 @@ class Search:
                 t_new = self._tangent(q_new, t)
                 if t_new is None or not self.same_sides(q, q_new):
                     break
-                g = float(t_new @ self.forces(q_new))
-                noise = 1e-9 * self.F0 * max(1.0, self.L)
-                if (g_prev > noise and g < -noise) or (g_prev < -noise and g > noise):
-                    w = abs(g_prev) / (abs(g_prev) + abs(g))
-                    out.append(self._onto(q_prev + w * (q_new - q_prev)))
-                elif k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
+                out += self.step_roots(q, q_new)
+                if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
                     out.append(q_new)
-                q, t, g_prev, q_prev = q_new, t_new, g, q_new
+                q, t = q_new, t_new
         return [x for x in out if x is not None]
+
+    def step_roots(self, qa, qb) -> list:
+        """The points of the step p(τ) = onto(qa + τ (qb − qa)), τ in [0, 1], where the force along
+        it, g(τ) = t(τ)·f(p(τ)) (t the chord's direction projected on the joints' tangent at p),
+        has a root or a touch: all_roots' sign analysis of g's Chebyshev interpolant (one cell of
+        degree DEG, halved where not resolved to ``floor``), never the signs at the ends alone.
+        A part of the step where g cannot be evaluated (off the joints) starts Newton at its middle."""
+        d = qb - qa
+
+        def point(x):
+            p = self._onto(qa + x * d)
+            t = None if p is None else self._tangent(p, d)
+            return math.nan if t is None else float(t @ self.forces(p))
+
+        def g(taus):
+            try:
+                return self.along(qa + np.atleast_1d(taus)[:, None] * d, d)
+            except np.linalg.LinAlgError:       # dependent rows somewhere: one point at a time (least squares)
+                return np.array([point(float(x)) for x in np.atleast_1d(taus)])
+
+        floor = 1e-10 * self.F0 * max(1.0, self.L)
+        roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
+        return [self._onto(qa + x * d) for x in roots + touches + bad]
+
+    def along(self, Q, d) -> np.ndarray:
+        """g at the chord points Q (k, n), all at once: each placed on the joints by the minimum-norm
+        Gauss–Newton of :meth:`_onto` (stacked), then t·f with t the chord direction d projected on
+        the joints' tangent there (NaN where a point does not reach the joints)."""
+        s, sc = self.s, self.scale
+        Q = np.array(Q, dtype=float)
+        ok = np.ones(len(Q), dtype=bool)
+        if s.m:
+            td = s.at_times(np.zeros(len(Q)))
+            act = np.arange(len(Q))
+            for _ in range(30):
+                X = s.stack(Q[act])
+                ph = s.phi_many(X, [x[act] for x in td])
+                done = np.max(np.abs(ph), axis=1) <= 1e-13 * self.L
+                act, ph = act[~done], ph[~done]
+                if not act.size:
+                    break
+                Js = s.jac_many(s.stack(Q[act])) * sc
+                Q[act] -= (np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), ph[:, :, None]))[:, :, 0] * sc
+            ok[act] = False
+            Js = s.jac_many(s.stack(Q)) * sc
+            ts = np.broadcast_to(d / sc, Q.shape)[:, :, None]
+            T = (ts - np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), Js @ ts))[:, :, 0]
+        else:
+            T = np.broadcast_to(d / sc, Q.shape)
+        nrm = np.linalg.norm(T, axis=1)
+        ok &= np.all(np.isfinite(Q), axis=1) & (nrm >= 1e-12)
+        out = np.full(len(Q), np.nan)
+        for k in np.nonzero(ok)[0]:
+            out[k] = float((T[k] / nrm[k] * sc) @ self.forces(Q[k]))
+        return out
+
+
+def _row_solve(J, r) -> np.ndarray:
+    """(J Jᵀ)⁻¹ r: J Jᵀ's LU (a quarter of a least-squares solve's cost), least squares where J's
+    rows are dependent (redundant joints, a singular configuration)."""
+    try:
+        x = np.linalg.solve(J @ J.T, r)
+        if np.all(np.isfinite(x)):
+            return x
+    except np.linalg.LinAlgError:
+        pass
+    return np.linalg.lstsq(J @ J.T, r, rcond=None)[0]
 
 
 def null_basis(J, n: int, indep: list[int]) -> np.ndarray:

@@ -433,3 +433,44 @@ linearize: true
     if z < 1:
         assert e["damped"]["damping_ratios"][0] == pytest.approx(z, rel=1e-12)
         assert e["damped"]["frequencies"][0] == pytest.approx(w * math.sqrt(1 - z * z), rel=1e-12)
+
+
+SNAP = """
+type: scene
+title: snap-through bead
+params: {k: 100, a: 0.03, h: 1, L0: 1.002}
+surfaces:
+  track: {through: [0, 0], direction: [1, 0]}
+bodies:
+  bead: {shape: point, mass: 1, x: [1.2, 0]}
+joints:
+  rail: {slider: [bead, track]}
+forces:
+  - {spring: [bead, [a, h]], k: k, L: L0}
+at: [0]
+linearize: true
+"""
+
+
+def test_three_equilibria_within_one_step_of_the_path():
+    """A bead on a smooth horizontal rail, a spring (k, natural length L0) to the anchor (a, h) with
+    L0 just over h: V = k (√((x − a)² + h²) − L0)²/2 has the snap-through's three rests x = a
+    (unstable, ω² = k (1 − L0/h)/m) and x = a ± √(L0² − h²) (stable, ω² = k (L0² − h²)/(m L0²)), all
+    three within 0.13 of each other.  The path from x = 1.2 steps by 0.12 (a tenth of the scene's
+    size): its step from 0.12 to 0 holds the unstable rest and a well, where the force along it
+    changes sign twice — the signs at the steps' ends alone found only the two wells.  The
+    references: the closed forms, and sympy's roots of V'."""
+    import sympy as sp
+
+    k, a, h, L0 = 100, 0.03, 1, 1.002
+    e = sorted(solved(SNAP)["equilibria"], key=lambda r: r["x"]["bead"][0])
+    w = math.sqrt(L0**2 - h**2)
+    assert [r["x"]["bead"][0] for r in e] == pytest.approx([a - w, a, a + w], abs=1e-12)
+    assert [r["stability"] for r in e] == ["stable", "unstable", "stable"]
+    assert [r["omega2"][0] for r in e] == pytest.approx(
+        [k * w**2 / L0**2, k * (1 - L0 / h), k * w**2 / L0**2], rel=1e-9)
+    x = sp.symbols("x", real=True)
+    ka, aa, ha, La = 100, sp.Rational(3, 100), 1, sp.Rational(1002, 1000)
+    V = ka * (sp.sqrt((x - aa) ** 2 + ha**2) - La) ** 2 / 2
+    want = sorted(float(r) for r in sp.solve(sp.diff(V, x), x))
+    assert [r["x"]["bead"][0] for r in e] == pytest.approx(want, abs=1e-12)
