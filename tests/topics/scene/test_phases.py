@@ -308,6 +308,21 @@ at: [0, 0.5, 10]
     assert any("5 phases" in w and "stops there" in w for w in rec["warnings"])
 
 
+#: a bob on a light link released 45° from the vertical, striking a wall 30° on the other side
+#: (``rough``: the stop's friction, e.g. ", mu: 0.3"; tests/topics/scene/test_rough_impacts.py)
+BOB_AT_WALL = """
+type: scene
+surfaces:
+  wall: {{through: [0.5, 0], direction: [0, 1]}}
+bodies:
+  bob: {{shape: point, mass: 1, x: ["-sqrt(0.5)", "-sqrt(0.5)"]}}
+joints:
+  arm: {{link: [[0, 0], bob], length: 1}}
+  hit: {{stop: [bob, wall], e: 0.7{rough}}}
+at: [0, 1]
+"""
+
+
 def test_pendulum_strikes_a_wall():
     """A bob (m = 1 kg) on a light link (L = 1 m) released 45° from the vertical strikes a wall at
     x1 = 0.5 m (30° on the other side; a stop, e = 0.7).  Energy (34.20): v² = 2 g L (cos 30° −
@@ -315,17 +330,7 @@ def test_pendulum_strikes_a_wall():
     The link keeps the bob on its circle, so the velocity is tangent and the wall's impulse and
     the link's impulsive tension together reverse only its normal part with e: the bob leaves at
     e v along the circle, and the loss is (1 − e²) ½ m v² (28.16 with the circle's m* = m)."""
-    rec = solve_one_text("""
-type: scene
-surfaces:
-  wall: {through: [0.5, 0], direction: [0, 1]}
-bodies:
-  bob: {shape: point, mass: 1, x: ["-sqrt(0.5)", "-sqrt(0.5)"]}
-joints:
-  arm: {link: [[0, 0], bob], length: 1}
-  hit: {stop: [bob, wall], e: 0.7}
-at: [0, 1]
-""")
+    rec = solve_one_text(BOB_AT_WALL.format(rough=""))
     r = rec["results"]
     phi0, phi1, e = mp.pi / 4, mp.pi / 6, mp.mpf("0.7")
     v = mp.sqrt(2 * G * (mp.cos(phi1) - mp.cos(phi0)))

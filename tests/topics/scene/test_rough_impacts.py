@@ -31,6 +31,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.conftest import solve_one_text
+from tests.topics.scene.test_phases import BOB_AT_WALL
 from tests.tolerances import ODE_GLOBAL
 
 mp.mp.dps = 30
@@ -473,17 +474,7 @@ def test_pendulum_bob_strikes_a_rough_wall():
     (dF = +μ dP) for the restitution (1 + e) P_c − P_c = e P_c:
     v⁺ = −e P_c (cos 30° − μ/2)/m, F = −μ P_c + μ e P_c.  (The single-step rule kept F = −μ P
     against the slip before, friction pushing the rebounding bob along.)"""
-    rec = solve_one_text("""
-type: scene
-surfaces:
-  wall: {through: [0.5, 0], direction: [0, 1]}
-bodies:
-  bob: {shape: point, mass: 1, x: ["-sqrt(0.5)", "-sqrt(0.5)"]}
-joints:
-  arm: {link: [[0, 0], bob], length: 1}
-  hit: {stop: [bob, wall], e: 0.7, mu: 0.3}
-at: [0, 1]
-""")
+    rec = solve_one_text(BOB_AT_WALL.format(rough=", mu: 0.3"))
     im = rec["results"]["impacts"][0]
     G = mp.mpf("9.81")
     c30, e, mu = mp.cos(mp.pi / 6), mp.mpf("0.7"), mp.mpf("0.3")
