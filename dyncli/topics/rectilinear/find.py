@@ -185,7 +185,8 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     if res.results.get("case") == "general" and (t_end > t1 or lo < t1):    # one run each way, every step's interpolant
         from dyncli.topics.rectilinear.general import Dense
 
-        sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end, lo)
+        sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end, lo,
+                               res.extra.get("marches", ()))
     motion = _Motion(p, sample)
     if generic:
         t_end = dense.end if dense is not None else motion.reachable_end(t_end)

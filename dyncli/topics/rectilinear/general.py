@@ -51,6 +51,7 @@ class _Run:
         # all integrations of this run (the check solve of accuracy.estimate has its own)
         self.budget = ode.Budget(p.accuracy.max_steps, default=min(ode.MAX_STEPS, DEFAULT_MAX_STEPS))
         self._cls = ode.budgeted(method, self.budget, stop_nonfinite=True)
+        self.records: list[Record] = []     # this run's marches as they went (DOP853: replayed by Dense)
 
         def rhs(t, y):
             return [y[1], fn({"t": t, "s": y[0], "v": y[1]})]
@@ -60,21 +61,81 @@ class _Run:
     def acc(self, t, s, v) -> float:
         return float(self.fn({"t": t, "s": s, "v": v}))
 
-    def march(self, t0: float, y0, t_end: float, visit):
+    def march(self, t0: float, y0, t_end: float, visit, replay=()):
         """Step from (t0, y0) towards t_end, calling ``visit(step)`` after every accepted
-        step until it returns True.  Returns None, or (t, why) where the integration failed."""
+        step until it returns True.  Returns None, or (t, why) where the integration failed.
+        ``replay``: earlier marches of the same problem at the same tolerances (:class:`Record`);
+        the steps of one of them that this march would take as well are handed to ``visit`` as
+        they were, and the march goes on from there (:meth:`Record.prefix`: the same steps, not
+        taken again)."""
         kw = {"jac": None} if self.method in ("Radau", "LSODA") else {}
         with np.errstate(all="ignore"):
             solver = self._cls(self.rhs, t0, np.array(y0, dtype=float), t_end, rtol=self.rtol, atol=self.atol, **kw)
+            rec = None
+            if hasattr(solver, "dense_later"):           # dyncli's DOP853: its steps recorded
+                rec = Record(self, t0, y0, t_end, solver)
+                self.records.append(rec)
             step = _Step(self, solver)
+            for old in replay:
+                done = old.prefix(rec, solver, t_end) if rec is not None else []
+                for t_old, t, y, f, h_abs, interp in done:
+                    solver.t_old, solver.t, solver.y, solver.f, solver.h_abs = t_old, t, y, f, h_abs
+                    rec.steps.append((t_old, t, y, f, h_abs, interp))
+                    if solver.direction * (t - t_end) >= 0:
+                        solver.status = "finished"
+                    step.advance(interp)
+                    if visit(step):
+                        return None
+                if done:
+                    break
             try:
                 for _ in ode.steps(solver, None, self.method):     # the budgeted class counts the steps
-                    step.advance()
+                    interp = rec.add(solver) if rec is not None else None
+                    step.advance(interp)
                     if visit(step):
                         return None
             except ode.StepFailed as exc:
                 return exc.t, exc.reason
         return None
+
+
+class Record:
+    """One DOP853 march of a :class:`_Run` as it went: its start, its bound, its first step size
+    and, after every accepted step, (t_old, t, y, f, h_abs, the step's interpolant made on first
+    use).  A march of the same problem towards another bound takes the same steps as long as the
+    first try of a step does not pass that bound (a rejected try only shortens the step), from
+    the same first step size (the starting step depends on the interval): :meth:`prefix`."""
+
+    def __init__(self, run: _Run, t0: float, y0, t_bound: float, solver):
+        self.key = (run.method, run.rtol, run.atol, run.p.a, float(t0), tuple(float(c) for c in y0))
+        self.t_bound, self.h0, self.direction = float(t_bound), float(solver.h_abs), float(solver.direction)
+        self.max_step = solver.max_step
+        self.steps: list[tuple] = []
+
+    def add(self, solver):
+        interp = solver.dense_later()
+        self.steps.append((solver.t_old, solver.t, solver.y, solver.f, solver.h_abs, interp))
+        return interp
+
+    def prefix(self, rec: "Record", solver, t_end: float) -> list[tuple]:
+        """The recorded steps the march ``rec`` (just started, ``solver`` its stepper) towards
+        ``t_end`` would take too: the same problem, start, tolerances and first step size, and
+        every step whose first try (the step size left by the step before, as DOP853 tries it)
+        does not pass t_end (a bound no further than this record's)."""
+        d = self.direction
+        if (rec.key != self.key or rec.h0 != self.h0 or rec.direction != d or rec.max_step != self.max_step
+                or d * (self.t_bound - t_end) < 0):
+            return []
+        out = []
+        t, h_abs = rec.key[4], self.h0
+        for st in self.steps:
+            min_step = 10 * np.abs(np.nextafter(t, d * np.inf) - t)
+            h = self.max_step if h_abs > self.max_step else (min_step if h_abs < min_step else h_abs)
+            if d * ((t + h * d) - t_end) > 0:
+                break
+            out.append(st)
+            t, h_abs = st[1], st[4]
+        return out
 
 
 class _Step:
@@ -89,23 +150,30 @@ class _Step:
         self.ya: Any = None
         self.aa: float | None = None
         self._dense: Any = None
+        self._interp: Any = None
         self._ext: list[list[float]] | None = None
 
-    def advance(self) -> None:
+    def advance(self, interp=None) -> None:
+        """On to the solver's last step (``interp``: its interpolant, made on first use; None:
+        the solver's dense output, made when asked for)."""
         sv = self.solver
         self.ta, self.ya, self.aa = self.tb, self.yb, self.ab
         self.tb, self.yb = float(sv.t), sv.y.copy()
         f = getattr(sv, "f", None)     # the rate at the step's end (explicit Runge-Kutta: FSAL)
         self.ab = float(f[1]) if f is not None else self.run.acc(self.tb, *self.yb)
-        self._dense = self._ext = None
+        self._dense, self._ext, self._interp = None, None, interp
+
+    def dense(self):
+        """The step's interpolant (made now if it was not yet)."""
+        if self._dense is None:
+            self._dense = self._interp.made() if self._interp is not None else ode.dense_output(self.solver)
+        return self._dense
 
     def y(self, t: float):
         """The state at t inside the step."""
         if t == self.tb:
             return self.yb.copy()
-        if self._dense is None:
-            self._dense = ode.dense_output(self.solver)
-        return self._dense(t)
+        return self.dense()(t)
 
     def a(self, t: float) -> float:
         y = self.y(t)
@@ -117,9 +185,7 @@ class _Step:
         if self._ext is None:
             from dyncli.rootfind import polynomial_extremes
 
-            if self._dense is None:
-                self._dense = ode.dense_output(self.solver)
-            (self._ext,) = polynomial_extremes([(self._dense, self.ta, self.tb)])
+            (self._ext,) = polynomial_extremes([(self.dense(), self.ta, self.tb)])
         return self._ext[comp]
 
 
@@ -141,6 +207,7 @@ def solve(p, ans, method: str, rtol: float, atol: float) -> str:
     else:
         _Forward(r, ans, fwd, vq, sq).run()
     ans.res.extra["nsteps"] = r.budget.n      # accepted steps (the nominal error estimate)
+    ans.res.extra["marches"] = r.records      # replayed by Dense (the motion of every find query)
     return f"ode:{method}"
 
 
@@ -281,9 +348,12 @@ class Dense:
     step added — the interpolant of a step is a polynomial, whose extremes are decided exactly
     (:func:`dyncli.rootfind.polynomial_extremes`), so s and v are monotone between two of them:
     a target is crossed there exactly when it lies between the values at their ends, and no
-    excursion, however narrow, lies between two of them unseen."""
+    excursion, however narrow, lies between two of them unseen.  ``replay``: the route's own
+    marches (:func:`solve`'s, ``res.extra["marches"]``), whose steps it takes as they were as far
+    as they are its own (:meth:`_Run.march`): the motion is integrated once."""
 
-    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float, t_start: float | None = None):
+    def __init__(self, p, method: str, rtol: float, atol: float, t_end: float, t_start: float | None = None,
+                 replay=()):
         import bisect
 
         from dyncli.rootfind import polynomial_extremes
@@ -296,12 +366,11 @@ class Dense:
             ends, steps = [t1], list[Any]()
 
             def visit(step, ends=ends, steps=steps):
-                step.y(0.5 * (step.ta + step.tb))     # the interpolant built now, while the solver is on this step
                 ends.append(float(step.tb))
-                steps.append(step._dense)
+                steps.append(step.dense())            # made now, while the solver is on this step
                 return False
 
-            failed = self.run.march(t1, [p.s1, p.v1], goal, visit) if goal != t1 else None
+            failed = self.run.march(t1, [p.s1, p.v1], goal, visit, replay) if goal != t1 else None
             reach = float(failed[0]) if failed else float(goal)
             if failed and (ends[-1] - reach) * (goal - t1) > 0:
                 reach = ends[-1]
