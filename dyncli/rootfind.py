@@ -402,7 +402,7 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     ab = np.array([(a, b) for _, a, b in pieces], dtype=float)
     m, h = 0.5 * (ab[:, 0] + ab[:, 1]), 0.5 * (ab[:, 1] - ab[:, 0])
     with np.errstate(all="ignore"):
-        y = np.stack([np.atleast_2d(np.asarray(f(mk + hk * x), dtype=float)) for (f, _, _), mk, hk in zip(pieces, m, h)])
+        y = _piece_values(pieces, m, h, x)
         d = y @ W                                       # (pieces, components, deg): the derivative's series
         noise = 4 * deg * deg * sys.float_info.epsilon * np.max(np.abs(y), axis=-1)   # the rounding of y, differentiated
         look = (np.all(np.isfinite(d), axis=-1) & (np.abs(d[..., 0]) <= np.sum(np.abs(d[..., 1:]), axis=-1))
@@ -418,6 +418,23 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
         a, b = ab[i]
         out[i][j] = sorted({float(m[i] + h[i] * t) for t in np.real(r[keep]) if a < m[i] + h[i] * t < b})
     return out
+
+
+def _piece_values(pieces, m, h, x):
+    """(pieces, components, len(x)): each piece's ``f`` at ``m + h x`` — DOP853 steps' dense
+    outputs (:class:`dyncli.dop853.DenseOutput`, one shape) all at once through
+    :class:`dyncli.dop853.DenseStack` (the same arithmetic on the same doubles: the same values),
+    anything else one call per piece."""
+    import numpy as np
+
+    from dyncli.dop853 import DenseOutput, DenseStack
+
+    fs = [f for f, _, _ in pieces]
+    if len(fs) > 1 and all(type(f) is DenseOutput for f in fs) and len({f.F.shape for f in fs}) == 1:
+        t = np.concatenate([mk + hk * x for mk, hk in zip(m, h)])
+        rows = DenseStack(fs)(np.repeat(np.arange(len(fs)), x.size), t)
+        return rows.reshape(len(fs), x.size, -1).transpose(0, 2, 1)
+    return np.stack([np.atleast_2d(np.asarray(f(mk + hk * x), dtype=float)) for f, mk, hk in zip(fs, m, h)])
 
 
 def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int = 200_000):

@@ -193,6 +193,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
     hi = max(reached + [t1, t_end])
     if dense is not None:       # the general case: s and v monotone between the steps' extremes
         cuts = [b for b in dense.extremes if dense.start <= b <= max(dense.end, t1)]
+        motion.batch(cuts)      # the states at every cut in one pass over the steps (the turns' signs)
         turns = mf.turns(lambda t: motion.state(t)["v"], cuts, 1)
         knots = [b for b in cuts if t1 < b < t_end]
     else:

@@ -383,8 +383,11 @@ class Dense:
         self.extremes = sorted(set(self.breaks).union(x for piece in cuts for comp in piece for x in comp))
 
     def __call__(self, p, times) -> list[dict]:
+        times = [float(x) for x in times]
+        if len(times) > 1 and self._stack() is not None:
+            return self._many(times)
         out: list[dict[str, Any]] = []
-        for t in (float(x) for x in times):
+        for t in times:
             if t == self.p.t1 or not self.steps:
                 s, v = self.p.s1, self.p.v1
             elif t > self.breaks[-1] or t < self.breaks[0]:
@@ -394,4 +397,36 @@ class Dense:
                 k = min(max(self._bisect(self.breaks, t) - 1, 0), len(self.steps) - 1)
                 s, v = (float(c) for c in self.steps[k](t))
             out.append({"t": t, "s": s, "v": v, "a": self.run.acc(t, s, v), "reached": True})
+        return out
+
+    def _stack(self):
+        """Every step's interpolant stacked (:class:`dyncli.dop853.DenseStack`) when each is a
+        DOP853 :class:`dyncli.dop853.DenseOutput` of one shape, else None; made once."""
+        if not hasattr(self, "_dense_stack"):
+            from dyncli.dop853 import DenseOutput, DenseStack
+
+            ok = (self.steps and all(type(d) is DenseOutput for d in self.steps)
+                  and len({d.F.shape for d in self.steps}) == 1)
+            self._dense_stack = DenseStack(self.steps) if ok else None
+        return self._dense_stack
+
+    def _many(self, times: list[float]) -> list[dict]:
+        """:meth:`__call__` at many times in one evaluation of the stacked steps (the same step
+        for each time, the same arithmetic: the same values)."""
+        t = np.array(times, dtype=float)
+        inside = (t >= self.breaks[0]) & (t <= self.breaks[-1]) & (t != self.p.t1)
+        k = np.clip(np.searchsorted(np.array(self.breaks), t, side="left") - 1, 0, len(self.steps) - 1)
+        rows = self._stack()(k[inside], t[inside]).tolist()
+        out: list[dict[str, Any]] = []
+        j = 0
+        for x, ok in zip(times, inside.tolist()):
+            if ok:
+                s, v = rows[j]
+                j += 1
+            elif x == self.p.t1:
+                s, v = self.p.s1, self.p.v1
+            else:
+                out.append({"reached": False})
+                continue
+            out.append({"t": x, "s": s, "v": v, "a": self.run.acc(x, s, v), "reached": True})
         return out
