@@ -14,7 +14,7 @@ on the problems of tests/accuracy/cases.py (exact or 50-digit references):
    (``accuracy.estimate: true``) is costed separately: its extra time over the plain solve, as
    a ratio to the same scipy time.
 
-Usage: python benchmarks/runner_cost.py [--rtols 1e-6 1e-10] [--repeats 7]
+Usage: python benchmarks/runner_cost.py [--rtols 1e-6 1e-10] [--repeats 7] [--only rectilinear ...]
 Goal (issue 19): dyncli/scipy <= 1.2 at equal error.
 """
 
@@ -222,6 +222,7 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--rtols", type=float, nargs="+", default=[1e-6, 1e-10])
     ap.add_argument("--repeats", type=int, default=7)
+    ap.add_argument("--only", nargs="+", default=None, help="only the routes whose label contains one of these")
     args = ap.parse_args()
     warnings.simplefilter("ignore")
     from tests.accuracy.cases import CASES
@@ -233,6 +234,8 @@ def main() -> None:
     print(f"{'route':<36} {'rtol':>6} {'dyncli ms':>9} {'error':>8} {'check ms':>8} | "
           f"{'scipy rtol':>10} {'ms':>7} {'error':>8} | {'ratio':>5} {'check/scipy':>11}")
     for label, name, script, key in ROUTES:
+        if args.only and not any(w in label for w in args.only):
+            continue
         case = next(c for c in CASES if c.name.startswith(name) or c.type == name)
         for rtol in args.rtols:
             rec, plain = dyncli_solver(case, rtol, False)

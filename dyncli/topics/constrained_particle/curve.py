@@ -88,8 +88,16 @@ class Curve:
 
     @staticmethod
     def _ev(es, q):
+        """The components ``es`` at the parameters q, rows (len(es), n): each one's compiled
+        evaluator on the array (``Expr.evaluate``'s values, without its per-call error state and
+        broadcast: a component free of q is spread over the row here)."""
         q = np.atleast_1d(np.asarray(q, float))
-        return np.stack([e.evaluate(q=q) for e in es])
+        out = np.empty((len(es), q.size))
+        env = {"q": q}
+        with np.errstate(all="ignore"):
+            for i, e in enumerate(es):
+                out[i] = e.scalar_fn()(env)
+        return out
 
     def y(self, q):
         return self._ev(self.y0, q)
