@@ -426,9 +426,10 @@ class OdeSolution:
 
     def _stacked(self):
         """(t_old, h, F, y_old) of every step stacked, when every step is a :class:`DenseOutput`
-        (else None); made once."""
+        (a :class:`LazyDense` already made by then counts as its DenseOutput; else None); made once,
+        on the first call over many steps."""
         if not hasattr(self, "_stack"):
-            its = self.interpolants
+            its = [i._dense if type(i) is LazyDense and i._dense is not None else i for i in self.interpolants]
             ok = all(type(i) is DenseOutput for i in its) and len({i.F.shape for i in its}) == 1
             self._stack = (np.array([i.t_old for i in its], float), np.array([i.h for i in its], float),
                            np.stack([i.F for i in its]), np.stack([i.y_old for i in its])) if ok else None

@@ -300,6 +300,18 @@ def _integrate(model, rtol, atol, method, max_steps, max_step):
     return phases, notes, budget.n
 
 
+def make_dense(phases) -> None:
+    """Every step's interpolant of the sliding phases made now (:meth:`dyncli.dop853.LazyDense.made`:
+    the values it gives when made on first use), so that the phases' solutions evaluate many times
+    in one pass over all their steps (:class:`dyncli.dop853.OdeSolution`)."""
+    for ph in phases:
+        if ph.mode[0] != "stick" and ph.sol is not None:
+            for f in ph.sol.interpolants:
+                made = getattr(f, "made", None)
+                if made is not None:
+                    made()
+
+
 def phase_at(phases, t):
     for ph in phases:
         if ph.t0 <= t <= ph.t1:

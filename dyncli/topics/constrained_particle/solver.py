@@ -141,6 +141,7 @@ def _solve_ode(p, model, times) -> Result:
     method = _ode_method(p)
     rtol, atol = runner.floor_rtol(float(p.accuracy.rtol)), float(p.accuracy.atol)
     phases, notes, nsteps = dynamics.integrate(model, rtol, atol, method, p.accuracy.max_steps)
+    dynamics.make_dense(phases)       # every sliding step's interpolant (the turning points read them all)
     Y, modes = dynamics.states_at(phases, times)
     out = assemble(p, model, times, Y, modes)
     resid, scale = _residual(p, model, phases, out)
