@@ -27,6 +27,7 @@ naming the time where it blew up.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -50,11 +51,17 @@ class _Run:
         self.fn = fn = p.a.scalar_fn()
         # all integrations of this run (the check solve of accuracy.estimate has its own)
         self.budget = ode.Budget(p.accuracy.max_steps, default=min(ode.MAX_STEPS, DEFAULT_MAX_STEPS))
-        self._cls = ode.budgeted(method, self.budget, stop_nonfinite=True)
+        # the rate checked by rhs itself (ode.finite's test, one call less per evaluation)
+        self._cls = ode.budgeted(method, self.budget, stop_nonfinite=True, check_finite=False)
         self.records: list[Record] = []     # this run's marches as they went (DOP853: replayed by Dense)
+        isfinite, NonFinite = math.isfinite, ode.NonFiniteRate
 
         def rhs(t, y):
-            return [y[1], fn({"t": t, "s": y[0], "v": y[1]})]
+            s, v = y[0], y[1]
+            a = fn({"t": t, "s": s, "v": v})
+            if not isfinite(v + a) and not np.all(np.isfinite([v, a])):
+                raise NonFinite(t, y)
+            return [v, a]
 
         self.rhs = rhs
 
