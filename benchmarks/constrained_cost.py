@@ -14,12 +14,13 @@ scale over the requested times.
 
 Usage: python benchmarks/constrained_cost.py [--rtols 1e-6 1e-8 1e-10] [--repeats 9]
 
-Measured (issue 26, load ~1 on 2 CPUs, median of 15): dyncli 3.20 / 3.96 / 5.34 ms against the
-script's 1.15 / 1.78 / 2.63 ms at rtol 1e-6 / 1e-8 / 1e-10: ratios 2.79 / 2.22 / 2.03 (4.26 /
-3.51 / 3.41 before the right-hand side moved to the curve's frame in float closures, the DOP853
-stage loop's operands were made once and `distance` skipped the steps whose q̇ keeps one sign).
-The steps are the script's (15 / 24 / 40); the rest is the right-hand side (1.6 µs a call against
-the script's 0.65 µs) and the results the script does not compute (docs/accuracy.md).
+Measured (issue 31, load 5-6 on 2 CPUs, the code before and after run back to back in rounds,
+median of 5 x 40): dyncli 3.19 / 4.30 / 5.94 ms against the script's 1.15 / 1.88 / 2.77 ms at rtol
+1e-6 / 1e-8 / 1e-10: ratios 2.77 / 2.28 / 2.14 (3.57 / 2.72 / 2.28 before every sliding step's
+interpolant was made once after the run and the times read in one pass over the stacked steps;
+2.79 / 2.22 / 2.03 at load 1 in issue 26, 4.26 / 3.51 / 3.41 before that issue's right-hand side).
+The steps are the script's (15 / 24 / 40); the integration alone costs about the script's whole
+time; the rest is the results the script does not compute (docs/accuracy.md).
 """
 
 from __future__ import annotations
