@@ -186,7 +186,7 @@ def answer(p, res, generic, items, sample, solve_one) -> None:
         from dyncli.topics.rectilinear.general import Dense
 
         sample = dense = Dense(p, str(res.method).split(":")[-1], p.accuracy.rtol, p.accuracy.atol, t_end, lo,
-                               res.extra.get("marches", ()))
+                               res.extra.pop("marches", ()))
     motion = _Motion(p, sample)
     if generic:
         t_end = dense.end if dense is not None else motion.reachable_end(t_end)

@@ -129,6 +129,7 @@ def solve_setup(p: Setup) -> Result:
         items[i] = dict(got[k])
     if p.find:
         find.answer(p, res, generic, items, sample, _solve_one)
+    res.extra.pop("marches", None)    # the route's recorded steps (general.Record) are not kept with the result
     res.results["find"] = items
     return res
 
