@@ -91,14 +91,31 @@ def jets(mo: Motion, t, d: int, X=None):
 
 
 def _root(X, s, a, b):
-    """√s of s = a² + b² (as the caller rounded it): its doubles wherever s is finite, the C
-    library's hypot(a, b) where s overflows (a motion of ~1e300: a bound of inf left every cell
-    undecided, halved to the budget of cells)."""
+    """√s of s = a² + b² (as the caller rounded it): its doubles wherever s is finite, and where s
+    overflows (a motion of ~1e300: a bound of inf left every cell undecided, halved to the budget
+    of cells) m √((a/m)² + (b/m)²), m = max(|a|, |b|): the same operations on floats and on
+    arrays, so both searches keep making the same doubles."""
     if X is math:
-        return math.sqrt(s) if s < math.inf else math.hypot(a, b)
-    if hasattr(X, "root"):                          # (the C library's functions on arrays)
-        return X.root(s, a, b)
-    return X.where(s < X.inf, X.sqrt(s), X.hypot(a, b))       # numpy itself
+        if s < math.inf:
+            return math.sqrt(s)
+        m = max(abs(a), abs(b))
+        if not m < math.inf:
+            return m
+        p, q = a / m, b / m
+        return m * math.sqrt(p * p + q * q)
+    np = getattr(X, "np", X)                        # (the C library's functions on arrays, or numpy)
+    s, a, b = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (s, a, b)))
+    r = np.sqrt(s)
+    big = ~(s < np.inf)
+    if big.any():
+        a, b = a[big], b[big]
+        m = np.maximum(np.abs(a), np.abs(b))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            p, q = a / m, b / m
+            scaled = m * np.sqrt(p * p + q * q)
+        r = r.copy()
+        r[big] = np.where(m < np.inf, scaled, m)
+    return r
 
 
 def _fast_jets(mo: Motion, d: int, X=math):
@@ -270,17 +287,6 @@ class _LibmArrays:
 
     def exp(self, t):
         return self._each(math.exp, t)
-
-    def root(self, s, a, b):
-        """:func:`_root` element by element."""
-        np = self.np
-        s, a, b = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (s, a, b)))
-        r = np.sqrt(s)
-        big = ~(s < np.inf)
-        if big.any():
-            r = r.copy()
-            r[big] = [math.hypot(x, y) for x, y in zip(a[big].tolist(), b[big].tolist())]
-        return r
 
     def sin(self, t):
         return self._each(math.sin, t)
