@@ -400,14 +400,7 @@ class SceneSystem:
             self._offsets()
         got = None
         if self._minv is not None and len(rows) <= SCHUR_ROWS:
-            cols = rows
-            for i in self._friction:
-                col = self.elements[i].friction_column(q)
-                if col is not None:     # the multiplier's force: (J_o + col)ᵀ λ_o
-                    o = self.offsets[i]
-                    cols = cols.copy() if cols is rows else cols
-                    cols[o] = [x + y for x, y in zip(rows[o], col.tolist())]
-            got = schur_solve(self._minv, rows, cols, f, gam)
+            got = schur_solve(self._minv, rows, self._force_cols(rows, q), f, gam)
         if got is None:
             A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
             try:
@@ -419,6 +412,19 @@ class SceneSystem:
             got = x[:n], x[n:]
         a, lam = got
         return a, lam, self._power(power, lam, q, v)
+
+    def _force_cols(self, rows: list, q) -> list:
+        """The generalized force per unit multiplier, row by row: the row itself, or with a
+        sliding contact's friction column added (−Jᵀ − Φ of :meth:`kkt_matrix`); ``rows``
+        itself when no friction column is active."""
+        cols = rows
+        for i in self._friction:
+            col = self.elements[i].friction_column(q)
+            if col is not None:     # the multiplier's force: (J_o + col)ᵀ λ_o
+                o = self.offsets[i]
+                cols = cols.copy() if cols is rows else cols
+                cols[o] = [x + y for x, y in zip(rows[o], col.tolist())]
+        return cols
 
     def _power(self, power: float, lam, q, v) -> float:
         """The applied loads' power plus the kinetic friction's and the drives'."""
@@ -441,7 +447,9 @@ class SceneSystem:
         solved in one call, each by the same LU as :meth:`solve` (equal to it bit for bit)."""
         n = self.n
         if self._minv is not None and self.m <= SCHUR_ROWS:
-            return [self.solve(q, v, t) for q, v, t in states]      # small: one by one (as solve's)
+            got = self._schur_many(states)
+            if got is not None:
+                return got
         q0 = states[0][0]
         A = self.kkt_matrix(q0, self.jac(q0))
         R = np.empty((len(states), A.shape[0], 1))
@@ -460,6 +468,32 @@ class SceneSystem:
             raise NumericalError(f"the equations of motion are singular at t = {states[0][2]:.6g} s (a massless body "
                                  "with a free motion, or joints that lock each other)") from None
         return [(x[:n], x[n:], self._power(P, x[n:], q, v)) for (q, v, _t), x, P in zip(states, X, powers)]
+
+    def _schur_many(self, states) -> list | None:
+        """:meth:`solve_many` by :func:`schur_solve` on columns: each state's force and γ a
+        column entry (numpy's elementwise operations: the same doubles as the one-state lists,
+        operation by operation); None where the complement is close to singular."""
+        q0, v0, t0 = states[0]
+        ql0, vl0 = q0.tolist(), v0.tolist()
+        rows = []
+        for e in self.elements:
+            if e.rows:
+                rows += e.kkt_lists(ql0, vl0, t0)[0]
+        F, G, powers = [], [], []
+        for q, v, t in states:
+            ql, vl = q.tolist(), v.tolist()
+            f, power = self.applied_list(ql, vl, t)
+            F.append(f)
+            G.append(self._gamma(ql, vl, t))
+            powers.append(power)
+        k = len(states)
+        got = schur_solve(self._minv, rows, self._force_cols(rows, ql0), list(np.array(F).reshape(k, self.n).T),
+                          list(np.array(G, dtype=float).reshape(k, len(rows)).T))
+        if got is None:
+            return None
+        A = np.array(got[0]).reshape(self.n, k).T
+        L = np.array(got[1], dtype=float).reshape(len(rows), k).T
+        return [(a, lam, self._power(P, lam, q, v)) for (q, v, _t), a, lam, P in zip(states, A, L, powers)]
 
     # ------------------------------------------------------------------ energy
     def kinetic(self, v) -> float:
