@@ -207,7 +207,8 @@ class SceneSystem:
             self.grav[b.index[1]] = -b.mass * self.g
         self._grav_list = self.grav.tolist()
         # the small solves in plain floats (:meth:`solve_lists`): every mass and inertia positive
-        self._minv = [1.0 / x for x in m.tolist()] if bool(np.all(m > 0)) and bool(np.all(np.isfinite(1.0 / m))) else None
+        minv = [1.0 / x if x > 0 else math.inf for x in m.tolist()]
+        self._minv = minv if all(map(math.isfinite, minv)) else None
         self._offsets()
 
     def use_lapack(self) -> None:
