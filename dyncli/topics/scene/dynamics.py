@@ -25,10 +25,10 @@ from .elements import Element, Pin, PinBlock
 from .system import BodyData, Point, Stack
 
 EPS = float(np.finfo(float).eps)
-#: the most joint rows solved by the Schur complement in plain floats (:func:`schur_solve`):
-#: beyond them LAPACK's LU of the whole matrix is cheaper (measured, docs/accuracy.md: 0, 1, 2
-#: rows 0.4, 1.4, 2.5 µs against 2.4–3.1 µs of dgesv with its arrays; 3 rows 4.5 against 3.4 µs)
-SCHUR_ROWS = 2
+#: the most joint rows solved by the Schur complement in plain floats (:func:`schur_solve`; three
+#: only with the complement symmetric): beyond them LAPACK's LU of the whole matrix is cheaper
+#: (measured, docs/accuracy.md)
+SCHUR_ROWS = 3
 #: a pivot of the Schur complement below this part of its row's largest entry (the rows close
 #: to dependent: the complement's rounding ~ ε/PIVOT) sends the solve to the LU of the whole matrix
 PIVOT = 2.0 ** -10
@@ -51,16 +51,44 @@ def schur_solve(minv: list, rows: list, cols: list, f: list, gam: list) -> tuple
     if len(lam) == 1:
         l0, = lam
         return [x + l0 * y for x, y in zip(Mf, Y[0])], lam
-    l0, l1 = lam
-    return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, *Y)], lam
+    if len(lam) == 2:
+        l0, l1 = lam
+        return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, *Y)], lam
+    l0, l1, l2 = lam
+    return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, *Y)], lam
 
 
 def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list, list] | None:
-    """(x, Y) of W x = r, W = rows diag(minv) colsᵀ (one or two rows; Y = the lists minv ⊙ cols_k),
-    in plain floats: ``cols is rows`` (W symmetric positive definite) by W = L D Lᵀ, else by
-    Gaussian elimination with partial pivoting.  None when a pivot is below PIVOT of its row's
-    largest entry of W (rows close to dependent, singular, or not finite)."""
+    """(x, Y) of W x = r, W = rows diag(minv) colsᵀ (one to three rows; Y = the lists minv ⊙ cols_k),
+    in plain floats: ``cols is rows`` (W symmetric positive definite) by W = L D Lᵀ, else (one or
+    two rows) by Gaussian elimination with partial pivoting.  None when a pivot is below PIVOT of
+    its row's largest entry of W (rows close to dependent, singular, or not finite), or for three
+    rows that are not symmetric."""
     mul = operator.mul
+    if len(rows) == 3:              # L D Lᵀ written out (symmetric only: else the whole matrix's LU)
+        if cols is not rows:
+            return None
+        (J0, J1, J2), Y = rows, [list(map(mul, minv, c)) for c in rows]
+        Y0, Y1, Y2 = Y
+        w00, w01, w02 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2))
+        w11, w12, w22 = sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2))
+        a01, a02, a12 = abs(w01), abs(w02), abs(w12)
+        if not w00 > PIVOT * max(w00, a01, a02):
+            return None
+        l10, l20 = w01 / w00, w02 / w00
+        d1 = w11 - l10 * w01
+        if not d1 > PIVOT * max(w11, a01, a12):
+            return None
+        u21 = w12 - l20 * w01
+        l21 = u21 / d1
+        d2 = w22 - l20 * w02 - l21 * u21
+        if not d2 > PIVOT * max(w22, a02, a12):
+            return None
+        r0, r1, r2 = r
+        z1 = r1 - l10 * r0
+        x2 = (r2 - l20 * r0 - l21 * z1) / d2
+        x1 = z1 / d1 - l21 * x2
+        return [r0 / w00 - l10 * x1 - l20 * x2, x1, x2], Y
     if len(rows) == 1:
         Y0 = list(map(mul, minv, cols[0]))
         w = sum(map(mul, rows[0], Y0))
@@ -555,7 +583,7 @@ class SceneSystem:
 
     def _least_step(self, x: list, J: list, r: list) -> list:
         """x − W⁻¹ Jᵀ (J W⁻¹ Jᵀ)⁻¹ r (W: :meth:`weights`): the step of least mass-weighted size
-        that takes the rows' values J x by −r; one or two rows by :func:`complement_solve` in
+        that takes the rows' values J x by −r; up to SCHUR_ROWS rows by :func:`complement_solve` in
         plain floats, more (or rows close to dependent) by LAPACK as the whole solve."""
         if self._winv is None:
             self._winv = (1.0 / self.weights()).tolist()

@@ -3,10 +3,11 @@ dynamics.schur_solve) against the LU of the whole matrix [[M, −Jᵀ − Φ], [
 second formulation of the same equations, built here from the rows, γ and the loads:
 
 * q̈ and λ agree to 1e-13 of their largest entry at random states of scenes with each kind of
-  row (pin, link, cord and guide, slider, rolling, a point contact, a curve contact) and with
-  the kinetic friction columns of a sliding contact, a slipping disk and a sliding point on a
-  curve (the complement then not symmetric); the complement of well-separated rows loses at
-  most a few digits to κ(W) ≤ 1/PIVOT, far below;
+  row (pin, link, cord and guide, slider, rolling, a point contact, a curve contact; one to
+  three rows) and with the kinetic friction columns of a sliding contact, a slipping disk and a
+  sliding point on a curve (the complement then not symmetric); the complement of rows
+  accepted by its pivot test loses at most log2(1/PIVOT) bits, far below; scenes with more rows
+  (or three with friction) take the whole matrix's LU;
 * rows close to dependent go to the whole matrix's LU (the same numbers as numpy's);
 * the stacked solve of many states is the one-state solve bit for bit;
 * the projections leave the velocity on the joints (J q̇ + φ_t = 0 to rounding) by the
@@ -56,25 +57,28 @@ def _slide(e, sign=1.0, mu_k=0.3):
         e.mode, e.sign = "slide", sign
 
 
-# (file, how its joints are set before the states: None, or a function of the system)
+# (file, how its joints are set before the states: None, or a function of the system, and the
+# path expected: "schur" every state by the complement, "lu" every state by the whole matrix)
 CASES = [
-    ("compound-pendulum.yaml", None),                      # a pin: 2 rows
-    ("double-pendulum.yaml", None),                        # two links
-    ("yo-yo.yaml", None),                                  # a cord on a disk and its guide
-    ("two-mass-three-springs.yaml", None),                 # two sliders, springs
-    ("cart-pendulum.yaml", None),                          # slider and link: 3 rows (the whole LU)
-    ("pulled-spool.yaml", None),                           # rolling: 2 rows, a force
-    ("falling-rod.yaml", None),                            # a point contact of a turning rod
-    ("stick-slip-periodic.yaml", lambda s: _slide(s.elements[0], -1.0)),       # sliding: 1 row + friction
-    ("bowling-ball-skids.yaml", lambda s: _slide(s.elements[0], 1.0, 0.2)),    # slipping disk + friction
-    ("sliding-ladder.yaml", lambda s: [_slide(e, 1.0, 0.4) for e in s.elements[:1]]),  # 2 rows, one with friction
-    ("block-in-rough-bowl.yaml", lambda s: _slide(s.elements[0], 1.0)),        # a point on a curve, sliding
-    ("ball-in-bowl.yaml", None),                           # a disk rolling in a curve
+    ("compound-pendulum.yaml", None, "schur"),                      # a pin: 2 rows
+    ("double-pendulum.yaml", None, "schur"),                        # two links
+    ("yo-yo.yaml", None, "schur"),                                  # a cord on a disk and its guide
+    ("two-mass-three-springs.yaml", None, "schur"),                 # two sliders, springs
+    ("cart-pendulum.yaml", None, "schur"),                          # slider and link: 3 rows
+    ("pulled-spool.yaml", None, "schur"),                           # rolling: 2 rows, a force
+    ("falling-rod.yaml", None, "schur"),                            # a point contact of a turning rod
+    ("stick-slip-periodic.yaml", lambda s: _slide(s.elements[0], -1.0), "schur"),     # sliding: 1 row + friction
+    ("bowling-ball-skids.yaml", lambda s: _slide(s.elements[0], 1.0, 0.2), "schur"),  # slipping disk + friction
+    ("sliding-ladder.yaml", lambda s: _slide(s.elements[0], 1.0, 0.4), "schur"),      # 2 rows, one with friction
+    ("block-in-rough-bowl.yaml", lambda s: _slide(s.elements[0], 1.0), "schur"),      # a point on a curve, sliding
+    ("ball-in-bowl.yaml", None, "schur"),                           # a disk rolling in a curve
+    ("incline-pulley-slides.yaml", lambda s: _slide(s.elements[0], 1.0, 0.2), "lu"),  # 3 rows with friction
+    ("atwood-massive-pulley.yaml", None, "lu"),                     # pin, cord runs, guides: 6 rows
 ]
 
 
-@pytest.mark.parametrize("name,setup", CASES, ids=[c[0] for c in CASES])
-def test_small_solve_matches_the_whole_matrix(name, setup, monkeypatch):
+@pytest.mark.parametrize("name,setup,path", CASES, ids=[c[0] for c in CASES])
+def test_small_solve_matches_the_whole_matrix(name, setup, path, monkeypatch):
     from dyncli.topics.scene import dynamics
 
     sc = _scene(name)
@@ -93,8 +97,10 @@ def test_small_solve_matches_the_whole_matrix(name, setup, monkeypatch):
         a, lam, _P = s.solve(q, v, t)
         a_ref, lam_ref = _kkt(s, q, v, t)
         assert _close(a, a_ref) and _close(lam, lam_ref), (name, a, a_ref, lam, lam_ref)
-    # one or two rows: every state by the complement (none sent to the whole matrix); more: never
-    assert (len(used) == 20 and None not in used) if s.m <= dynamics.SCHUR_ROWS else not used
+    if path == "schur":                 # every state by the complement (none sent to the whole matrix)
+        assert len(used) == 20 and None not in used
+    else:
+        assert s.m >= 3 and all(u is None for u in used)
 
 
 def test_a_friction_column_makes_the_complement_unsymmetric():
@@ -128,8 +134,9 @@ def test_rows_close_to_dependent_go_to_the_whole_matrix(monkeypatch):
     assert _close(a, a_ref, 1e-14) and _close(lam, lam_ref, 1e-14)
 
 
-@pytest.mark.parametrize("name,setup", [CASES[0], CASES[3], CASES[7], CASES[9]], ids=["pin", "sliders", "slide", "ladder"])
-def test_many_states_are_the_one_state_solve_bit_for_bit(name, setup):
+@pytest.mark.parametrize("name,setup,path", [CASES[0], CASES[3], CASES[4], CASES[7], CASES[9], CASES[12]],
+                         ids=["pin", "sliders", "three rows", "slide", "ladder", "whole matrix"])
+def test_many_states_are_the_one_state_solve_bit_for_bit(name, setup, path):
     sc = _scene(name)
     s = sc.system
     if setup is not None:
