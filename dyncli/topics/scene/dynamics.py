@@ -429,7 +429,7 @@ class SceneSystem:
             self._offsets()
         got = None
         if self._minv is not None and len(rows) <= SCHUR_ROWS:
-            got = schur_solve(self._minv, rows, self._force_cols(rows, q), f, gam)
+            got = schur_solve(self._minv, rows, self.force_columns(rows, q), f, gam)
         if got is None:
             A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
             try:
@@ -442,7 +442,7 @@ class SceneSystem:
         a, lam = got
         return a, lam, self._power(power, lam, q, v)
 
-    def _force_cols(self, rows: list, q) -> list:
+    def force_columns(self, rows: list, q) -> list:
         """The generalized force per unit multiplier, row by row: the row itself, or with a
         sliding contact's friction column added (−Jᵀ − Φ of :meth:`kkt_matrix`); ``rows``
         itself when no friction column is active."""
@@ -516,7 +516,7 @@ class SceneSystem:
             G.append(self._gamma(ql, vl, t))
             powers.append(power)
         k = len(states)
-        got = schur_solve(self._minv, rows, self._force_cols(rows, ql0), list(np.array(F).reshape(k, self.n).T),
+        got = schur_solve(self._minv, rows, self.force_columns(rows, ql0), list(np.array(F).reshape(k, self.n).T),
                           list(np.array(G, dtype=float).reshape(k, len(rows)).T))
         if got is None:
             return None

@@ -111,9 +111,9 @@ def test_a_friction_column_makes_the_complement_unsymmetric():
     s = sc.system
     _slide(s.elements[0], 1.0, 0.4)
     s.refresh()
-    rows = s._jac_rows(sc.q0.tolist())
-    assert len(rows) == 2 and s._force_cols(rows, sc.q0.tolist()) is not rows
-    assert dynamics.complement_solve([1.0] * s.n, rows, s._force_cols(rows, sc.q0.tolist()), [1.0, 1.0]) is not None
+    rows = s.jac(sc.q0).tolist()
+    assert len(rows) == 2 and s.force_columns(rows, sc.q0.tolist()) is not rows
+    assert dynamics.complement_solve([1.0] * s.n, rows, s.force_columns(rows, sc.q0.tolist()), [1.0, 1.0]) is not None
 
 
 def test_rows_close_to_dependent_go_to_the_whole_matrix(monkeypatch):
