@@ -306,7 +306,7 @@ class OdeRoute:
             dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
             w_new = watches(s, yp[:n], yp[n:2 * n], t_new, lam)
             # a speed's rounding is that of the step's speeds (from rest, the phase's start has none)
-            v_step = max(float(np.max(np.abs(y[n:2 * n]), initial=0.0)), float(np.max(np.abs(yp[n:2 * n]), initial=0.0)))
+            v_step = max(map(abs, y[n:2 * n].tolist() + yp[n:2 * n].tolist()), default=0.0)
             tol["sticks"] = max(tol0, 64 * EPS * v_step)
             screen["sticks"] = tol["sticks"] * (1.0 + rtol / (4 * EPS))
             hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip, (tol, screen), t_old == t0)
