@@ -216,11 +216,11 @@ def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     """(joint, what, g) of every one-sided quantity (event where g crosses 0 downwards), and
     ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event);
     ``lam``: the multipliers at (q, v, t) when already solved for."""
-    if lam is None:
+    if lam is None and system.watching:     # (joints that watch nothing read no multiplier)
         _, lam, _ = system.solve(q, v, t)
     out = []
     for i, e in enumerate(system.elements):
-        for what, g in e.watch(system.lam_of(lam, i), q, v, t):
+        for what, g in e.watch(None if lam is None else system.lam_of(lam, i), q, v, t):
             out.append((e.name, what, g))
     for ld in system.loads:
         if ld.kind == "spring" and ld.one_sided:
@@ -251,11 +251,16 @@ class OdeRoute:
         n = system.n
         self.n = n
 
-        def rhs(t, y):
-            q, v = y[:n], y[n:2 * n]
-            a, lam, P = system.solve(q, v, t)
+        solve = system.solve_lists
+
+        def rhs(t, y):                      # in plain floats: (q̇, q̈, P) a list, as the stepper takes it
+            y = y.tolist()
+            v = y[n:2 * n]
+            a, lam, P = solve(y[:n], v, t)
             self.lam = lam                  # the multipliers of the last evaluation (the step's end)
-            return np.concatenate([v, a, (P,)])
+            v += a
+            v.append(P)
+            return v
 
         self.rhs = rhs
         self.lam = None
@@ -296,12 +301,12 @@ class OdeRoute:
             solver.y = yp
             lam = None
             if hasattr(solver, "f"):
-                solver.f = self.rhs(t_new, yp)
-                lam = self.lam
+                solver.f = np.array(self.rhs(t_new, yp))
+                lam = np.array(self.lam)
             dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
             w_new = watches(s, yp[:n], yp[n:2 * n], t_new, lam)
             # a speed's rounding is that of the step's speeds (from rest, the phase's start has none)
-            v_step = max(float(np.max(np.abs(y[n:2 * n]), initial=0.0)), float(np.max(np.abs(yp[n:2 * n]), initial=0.0)))
+            v_step = max(map(abs, y[n:2 * n].tolist() + yp[n:2 * n].tolist()), default=0.0)
             tol["sticks"] = max(tol0, 64 * EPS * v_step)
             screen["sticks"] = tol["sticks"] * (1.0 + rtol / (4 * EPS))
             hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip, (tol, screen), t_old == t0)
@@ -330,6 +335,8 @@ class OdeRoute:
         within the step's error of the joints; the state there projected): a contact force that
         dips below 0 and back inside one step is an event.  ``tols``: each quantity's rounding,
         and the screen's (with the step's error)."""
+        if not w_old:                   # nothing watched (bilateral joints, no one-sided spring)
+            return None
         s, n = self.system, self.n
         tol, screen = tols
         cache: dict[float, list[float]] = {t_old: [g for _j, _w, g in w_old], t_new: [g for _j, _w, g in w_new]}
