@@ -363,8 +363,17 @@ class Odometer:
         inside = t > lo
         part = np.zeros_like(self.cum[k])
         if np.any(inside):
-            part[inside] = self._pieces(lo[inside], t[inside])
+            a, b = lo[inside], t[inside]
+            n = CHUNK // self.x.size        # the pieces a chunk of nodes holds
+            part[inside] = (self._pieces(a, b) if a.size <= n else
+                            np.concatenate([self._pieces(a[i:i + n], b[i:i + n]) for i in range(0, a.size, n)]))
         return (self.cum[k] + part + 0.0).tolist()
+
+
+#: the Gauss–Legendre nodes evaluated in one call of ``speeds`` by :meth:`Odometer.at`: the partial
+#: pieces of 1e5 times are taken a chunk at a time (the same values: every operation is piece by
+#: piece), so their arrays are a few hundred kB reused, not ~25 MB each freshly mapped (page faults)
+CHUNK = 1 << 15
 
 
 def _leggauss(nodes: int):
