@@ -166,9 +166,21 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
     for e in s.elements:
         if e.kind == "drive":
             vals = np.array([e.f(t)[0] for t in fine])
-            step = 0.05 if s.names[e.index].startswith("angle.") else 0.02 * size
-            pieces = max(pieces, int(np.sum(np.abs(np.diff(vals))) / step) + 1)
-    return np.linspace(0.0, t_end, min(pieces, 20_000) + 1)
+            angle = s.names[e.index].startswith("angle.")
+            step = 0.05 if angle else 0.02 * size
+            travel = float(np.sum(np.abs(np.diff(vals))))
+            need = travel / step + 1
+            if not need <= KIN_PIECES:         # (a longer piece could leave the branch unseen)
+                unit = "rad" if angle else "m"
+                raise NumericalError(f"the drive {e.name!r} moves {travel:.3g} {unit} by t = {t_end:.6g} s: the "
+                                     f"kinematics follows at most {KIN_PIECES} pieces of {step:.3g} {unit} "
+                                     f"({KIN_PIECES * step:.3g} {unit}); shorten t_end (or the times asked)")
+            pieces = max(pieces, int(need))
+    return np.linspace(0.0, t_end, pieces + 1)
+
+
+#: the most pieces the kinematics route continues its positions over
+KIN_PIECES = 20_000
 
 
 def _position(s, q, t, depth: int = 0):
