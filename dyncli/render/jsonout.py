@@ -341,9 +341,12 @@ def _records_json(x: list, keys: list, heads: list[str], indent: str) -> str | N
 
     if set(map(tuple, x)) != {tuple(keys)} or not set(map(type, chain.from_iterable(map(dict.values, x)))) <= _REPR:
         return None
-    text = numbers_json(x, _records=True)
-    if text is None or heads != [f'{indent}    "{k}": ' for k in keys]:
+    if heads != [f'{indent}    "{k}": ' for k in keys]:
         return None
+    text = _serialized(x)
+    if text is None:
+        return None
+    text = text.replace(",", ", ").replace('":', '": ')
     inner = indent + "  "
     first = '{"%s": ' % keys[0]
     if not (text.startswith("[" + first) and text.endswith("}]")):
@@ -354,28 +357,59 @@ def _records_json(x: list, keys: list, heads: list[str], indent: str) -> str | N
     return f"[\n{inner}{{\n{heads[0]}{text}\n{inner}}}\n{indent}]"
 
 
-def numbers_json(x: list, _records: bool = False) -> str:
+def numbers_json(x: list) -> str:
     """``repr(x)`` with None as null — the JSON of a list of finite numbers or None, or of lists
-    of them, as ``json.dumps`` writes it — at ~10 × its speed for a long list: pydantic_core's
-    serializer writes every float in the shortest digits that read back as it (Ryu), the digits
-    of ``repr``; only its notation differs, for 1e-5 ≤ |x| < 1e-4 (``0.00001``, not ``1e-05``)
-    and for a one-digit negative exponent (``1e-6``, not ``1e-06``): those numbers, found in the
-    text, are written by ``repr``.  Its separators (``,``) become ``, `` (no number holds a comma).
-    A short list, or one the serializer does not take: ``repr``."""
-    if len(x) >= 64:
-        try:
-            from pydantic_core import to_json
+    of them, as ``json.dumps`` writes it — at ~10 × its speed for a long list (:func:`_serialized`,
+    its separators ``,`` made ``, ``: no number holds a comma); a short list by ``repr``."""
+    text = _serialized(x) if len(x) >= 64 else None
+    return repr(x).replace("None", "null") if text is None else text.replace(",", ", ")
 
-            text = to_json(x).decode("ascii")
-        except Exception:                       # (not expected: numbers and lists of them)
-            text = None
-        if text is not None:
-            if "0.0000" in text:
-                text = _SMALL(_small, text)
-            if "e-" in text:
-                text = _EXPONENT(r"e-0\1", text)
-            return text.replace(",", ", ").replace('":', '": ') if _records else text.replace(",", ", ")
-    return None if _records else repr(x).replace("None", "null")
+
+def _serialized(x: Any) -> str | None:
+    """The compact JSON of ``x`` (numbers, None, lists, plain-keyed mappings of them) by
+    pydantic_core's serializer, every number as ``repr`` writes it, or None (the serializer
+    refuses it, or does not pass :func:`_serializer_ok`).  The serializer writes each float in the
+    shortest digits that read back as it (Ryu), ``repr``'s digits; only its notation differs, for
+    1e-5 ≤ |x| < 1e-4 (``0.00001``, not ``1e-05``) and for a one-digit negative exponent
+    (``1e-6``, not ``1e-06``): those numbers, found in the text, are mended."""
+    if not _serializer_ok():
+        return None
+    from pydantic_core import to_json
+
+    try:
+        return _mend(to_json(x).decode("ascii"))
+    except Exception:                           # (not expected: numbers and lists of them)
+        return None
+
+
+def _mend(text: str) -> str:
+    """The serializer's ``text`` with every number in ``repr``'s notation (:func:`_serialized`)."""
+    if "0.0000" in text:
+        text = _SMALL(_small, text)
+    if "e-" in text:
+        text = _EXPONENT(r"e-0\1", text)
+    return text
+
+
+_PROBE: list = []       # [whether the serializer, mended, wrote the probe as json.dumps does]
+
+
+def _serializer_ok() -> bool:
+    """Whether :func:`_serialized`'s text of a probe of numbers in every notation (each decade
+    from 1e-12 to 1e20, both signs, 0, -0.0, ints, a subnormal, the extremes, 17-digit values) is
+    ``json.dumps``'s, decided once: a serializer that writes otherwise is not used (``repr``)."""
+    if not _PROBE:
+        from pydantic_core import to_json
+
+        probe = [s * (1 + k / 7) * 10.0 ** e for e in range(-12, 21) for k in (0, 3) for s in (1, -1)]
+        probe += [0.0, -0.0, 0, -3, 2**63, 10**20, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                  0.1, 0.30000000000000004, 9007199254740993.0, 1e-05, 1e-06, 1.5e-05, 1e16, 123456.789, None]
+        try:
+            text = _mend(to_json([probe, [probe]]).decode("ascii"))
+            _PROBE.append(text.replace(",", ", ") == json.dumps([probe, [probe]]))
+        except Exception:
+            _PROBE.append(False)
+    return _PROBE[0]
 
 
 # a number written in the serializer's notation where repr's differs: 0.0000ddd (|x| < 1e-4, read

@@ -72,3 +72,23 @@ def test_a_series_of_flat_records_is_written_as_json_dumps(labels):
     rec = [{"results": {"force_terms": vectors, "power": numbers, "n": ints, "t": xs[:500]}, "method": "ode"}]
     assert dumps(rec) == _reference(rec)
     assert json.loads(dumps(rec)) == rec
+
+
+def test_a_serializer_that_writes_otherwise_is_not_used(monkeypatch):
+    """The serializer is checked once against ``json.dumps`` on a probe of every notation; one that
+    wrote otherwise (here: no notation mended) is never used, and the text is the same by ``repr``."""
+    import pydantic_core
+
+    from dyncli.render import jsonout
+
+    real = pydantic_core.to_json
+    monkeypatch.setattr(jsonout, "_PROBE", [])
+    monkeypatch.setattr(pydantic_core, "to_json", lambda x: real(x).replace(b"e-", b"E-"))
+    assert not jsonout._serializer_ok()
+    xs = _doubles(2000, 5)
+    assert jsonout.numbers_json(xs) == _plain(xs)
+    rec = [{"work": [{"a": v, "b": -v} for v in xs[:300]]}]
+    assert jsonout.dumps(rec) == _reference(rec)
+    monkeypatch.setattr(jsonout, "_PROBE", [])
+    monkeypatch.setattr(pydantic_core, "to_json", real)
+    assert jsonout._serializer_ok()
