@@ -15,7 +15,10 @@ constructed by PyYAML:
 * every value's (line, col) is recorded under its path tuple -- for a run of
   plain numbers in a list (``at: [0.0, 0.01, ...]`` with 100,000 times), only
   the run's packed marks and texts are kept, each turned into a position when
-  a message asks for it (:class:`PathTable`).
+  a message asks for it (:class:`PathTable`);
+* a long flow list of plain numbers is read by a scan of the text
+  (:func:`_flow_numbers`), the parser meeting it blanked; anything unexpected
+  reads the document again as written (the same values, positions, errors).
 """
 
 from __future__ import annotations

@@ -4,7 +4,10 @@ Scales to long series: numpy arrays convert with one ``tolist()`` call (and
 one vectorised finiteness test), flat lists of floats are checked in one pass
 instead of a recursive call per element, and :func:`dumps` indents the
 records' structure but writes each list of numbers (a series of 1e5 values,
-or of 1e5 vectors) on one line, so the file is not a number per line.
+or of 1e5 vectors) on one line, so the file is not a number per line.  A long
+list of numbers, and a long series of flat records, is written by pydantic_core's
+serializer (:func:`numbers_json`: the digits of ``repr``, its notation mended
+where it differs), the same text as ``json.dumps`` at ~8 × its speed.
 """
 
 from __future__ import annotations
