@@ -31,8 +31,12 @@ from dataclasses import dataclass
 from . import closed_form as cf
 
 _EPS = 2.220446049250313e-16
-#: the most cells a search examines (beyond: the undecided cells are decided by their end signs)
-MAX_CELLS = 4_000_000
+#: the most cells a search examines (beyond: the undecided cells are decided by their end signs);
+#: a grid of 20,000 eighths of a period whose every root is of high order (~50 halvings each) needs
+#: ~250,000; only inputs far outside the doubles' comfort reach it (Ω = 3e17 rad/s: ~0.7 s)
+MAX_CELLS = 1_000_000
+#: the most roots of a free vibration listed in closed form
+MAX_FREE_ROOTS = 16_000_000
 #: |D| = |1 − r² + 2iζr| from which w, ẇ are the steady state plus a free part (their sum loses at
 #: most a factor 1/|D| = 10 of relative accuracy); nearer resonance the divided-difference form
 FAR = 0.1
@@ -197,7 +201,7 @@ def free_roots(mo: Motion, d: int, t_end: float) -> list[float] | None:
     first = (math.atan2((e + z * wn * c) / ws, c) + 0.5 * math.pi) % math.pi
     first = first or math.pi
     n = math.floor((t_end * ws - first) / math.pi) + 1
-    if n > 4 * MAX_CELLS:
+    if n > MAX_FREE_ROOTS:
         return None
     return [t for t in ((first + k * math.pi) / ws for k in range(max(n, 0))) if 0.0 < t < t_end]
 

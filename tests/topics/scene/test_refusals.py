@@ -580,3 +580,17 @@ at: [0, 0.4]
     assert code == 1, out + err
     assert "Traceback" not in out + err
     assert "'motor' moves 4e+08 rad" in err and "shorten t_end" in err, err
+
+
+def test_a_starting_angle_beyond_a_million_radians_is_refused():
+    """angle: 1e16 (fuzz seed 811267) is held by a double to ±1 rad: a disk rolling in a bowl
+    could not meet its joints to rounding (2.5 s, then no rest configuration found)."""
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 1.0e+16}
+joints:
+  p: {pin: [rod.end1, ground]}
+at: [0, 1]
+"""
+    refusal(text, "bodies.rod.angle", "1e+16 rad", "within a few turns")
