@@ -42,6 +42,8 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
 #: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut), a speed
 #: (sticks) and forces (separates, slips, slack)
 WATCHED = ("impact", "leaves", "switch", "taut", "sticks", "separates", "slips", "slack")
+#: the watched quantities that are forces of the joints (functions of the multipliers alone)
+FORCES = ("separates", "slips", "slack")
 
 
 def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, cells: int) -> float | None:

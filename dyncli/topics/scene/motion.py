@@ -134,6 +134,37 @@ class Trajectory:
             out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
 
+    def coordinates(self, ts) -> np.ndarray:
+        """(q, q̇) at many times, (2n, len(ts)): an ODE step's interpolant as integrated
+        (unprojected), the DOP853 steps' times all in one stacked evaluation (bit for bit each
+        step's own call) and any other step's once per step on an array; any other piece's own
+        state (:meth:`state`, after :meth:`prefetch`)."""
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        n = self.system.n
+        out = np.empty((2 * n, ts.size))
+        if not ts.size:
+            return out
+        self.prefetch(ts)
+        dense = self._dense()
+        which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
+        if dense.stack is not None:
+            on = dense.row[which] >= 0
+            if np.any(on):
+                k = which[on]
+                out[:, on] = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))[:, :2 * n].T
+                which = np.where(on, -1, which)
+        for k in sorted(set(which.tolist()) - {-1}):
+            sel = np.nonzero(which == k)[0]
+            p = self.pieces[k]
+            if p.batch is not None:
+                y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
+                out[:, sel] = y[:2 * n]
+            else:
+                for i in sel:
+                    q, v, _ = self.state(float(ts[i]))
+                    out[:n, i], out[n:, i] = q, v
+        return out
+
     def _dense(self):
         """The pieces' ends, and the DOP853 steps among them stacked for :meth:`velocities` (made
         once the pieces are all there: remade when they changed)."""
@@ -156,6 +187,8 @@ class Trajectory:
     def prefetch(self, ts) -> None:
         """The states at the times ``ts`` that a search is about to read one by one, made together
         where the pieces can (Piece.states: the kinematics route) and kept for :meth:`state`."""
+        if not any(p.states is not None for p in self.pieces):
+            return
         groups: dict = {}
         for t in ts:
             t = float(t)

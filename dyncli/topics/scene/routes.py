@@ -441,6 +441,10 @@ def _closed_form(s, traj, t0, q0, v0, t_end):
         def fn(t):
             tau = t - t0
             return q0 + v0 * tau + 0.5 * a * tau * tau, v0 + a * tau, 0.0
+
+        def many(ts):                   # fn's q̇ at many times, the same operations on arrays
+            tau = np.asarray(ts, dtype=float)[:, None] - t0
+            return v0[None, :] + a[None, :] * tau
     else:
         N, i = along = kind[1]
         has_k, has_c = motion.along(s, q0, N)
@@ -450,9 +454,24 @@ def _closed_form(s, traj, t0, q0, v0, t_end):
         def fn(t):
             sv, sdv = lin.motion(t - t0, s_a, sd_a)
             return q0 + N * (sv - s_a), N * sdv, 0.0
-    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along))
+
+        def many(ts):                   # fn's q̇ at many times (the rate alone: no positions made)
+            return np.array([lin.motion(t - t0, s_a, sd_a)[1] for t in ts])[:, None] * N[None, :]
+    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many))
     traj.method = "closed-form"
     return _first_event(s, traj, len(traj.pieces) - 1, t_end)
+
+
+def constant_forces(s) -> bool:
+    """Whether the joints' forces are one constant over a closed-form phase of the current joint
+    set, decided from the structure: every made row linear (one matrix, SceneSystem.constant_matrix:
+    constant Jacobian and friction columns, no J̇ q̇ term), nothing driven, and every load a
+    constant force or couple (gravity's included) at a point that does not turn with its body —
+    the equations M q̈ − Jᵀ λ = f, J q̈ = 0 then have one right-hand side at every state, so
+    λ (the normal forces, the tensions, the friction margins μ_s N ∓ F) does not change."""
+    return (s.constant_matrix() and not any(e.kind == "drive" for e in s.elements)
+            and all(ld.kind in ("force", "torque") and ld.constant
+                    and not (ld.kind == "force" and ld.P.turns_with_body) for ld in s.loads))
 
 
 def _first_event(s, traj, k0: int, t_end: float):
@@ -504,10 +523,20 @@ def _piece_event(s, p):
         return np.array([cache[t][j] for t in ts])
 
     q, v, _ = p.fn(p.t_a)
-    tol = crossing.rounding(s, q, v, p.t_a, p.fn(p.t_b)[1])
+    q_b, v_b, _ = p.fn(p.t_b)
+    tol = crossing.rounding(s, q, v, p.t_a, v_b)
+    at_a = motion.watches(s, q, v, p.t_a)
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
-    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(motion.watches(s, q, v, p.t_a))
+    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(at_a)
                if not (what == "switch" and p.route == "statics")]
+    if p.route == "closed-form" and constant_forces(s):
+        # the multipliers are one constant over the piece: a force off its band has no crossing
+        at_b = motion.watches(s, q_b, v_b, p.t_b)
+        watched = [(j, joint, what) for j, joint, what in watched
+                   if not (what in crossing.FORCES and abs(at_a[j][2]) > 2 * tol[what]
+                           and abs(at_b[j][2] - at_a[j][2]) <= tol[what])]
+        if not watched:
+            return None
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
