@@ -170,6 +170,9 @@ def _work(scene, traj, route):
             if p.batch is not None:
                 return float(p.batch(b)[2 * s.n]) - float(p.batch(p.t_a)[2 * s.n])
             return p.fn(b)[2] - p.fn(p.t_a)[2]
+        motion.set_modes(s, p.modes)
+        if not _powered(s):             # the power is 0.0 at every state: so is its integral
+            return 0.0
         mid = 0.5 * (p.t_a + b)
         q, v, _ = p.fn(mid)
         # each piece to the rounding of the energies it moves (an exact motion: only the
@@ -202,6 +205,15 @@ def _work(scene, traj, route):
     return W
 
 
+def _powered(s) -> bool:
+    """Whether the current joint set has a non-conservative power at all (SceneSystem.solve's
+    P): a force, couple or damper, a drive, or a made contact sliding with kinetic friction;
+    without one, P is exactly 0.0 at every state (34.20)."""
+    return (any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
+            or any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip") and e.mu_k
+                   for e in s.elements if e.rows))
+
+
 def holding(s, q) -> list[str]:
     """The first integrals that hold by the structure of the current joint set: "E" (34.20)
     when every load is conservative and no made joint dissipates or drives; "G.0", "G.1"
@@ -210,9 +222,7 @@ def holding(s, q) -> list[str]:
     friction ties the scene to the ground along e_i."""
     made = [e for e in s.elements if e.rows]
     out = []
-    if (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
-            and not any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
-                        and e.mu_k for e in made)):
+    if not _powered(s):
         out.append("E")
     J = s.jac(q)
     on_curve = any(getattr(getattr(e, "surface", None), "curved", False) for e in made)
