@@ -29,6 +29,7 @@ from dyncli.rootfind import brent
 from . import crossing
 from .contacts import Contact, Rolls
 from .dynamics import SceneSystem
+from .elements import Element
 
 EPS = float(np.finfo(float).eps)
 
@@ -84,11 +85,27 @@ class Trajectory:
 
     def piece(self, t: float) -> Piece:
         """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
+        return self.pieces[self.index(t)]
+
+    def index(self, t: float) -> int:
+        """The index in ``pieces`` of :meth:`piece`'s piece."""
         ps = self.pieces
         key = (id(ps), len(ps), ps[-1].t_b if ps else None)
         if self._ends[0] != key:        # the pieces' ends, kept while the pieces stay as they are
             self._ends = (key, [p.t_b for p in ps])
-        return ps[min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)]
+        return min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)
+
+    def increments(self, col: int) -> np.ndarray:
+        """Component ``col`` of the state (unprojected) at each piece's end minus at its start,
+        for every DOP853 step in one stacked evaluation (bit for bit each step's own calls);
+        NaN for any other piece."""
+        dense = self._dense()
+        out = np.full(len(self.pieces), np.nan)
+        on = np.nonzero(dense.row >= 0)[0]
+        if on.size and dense.stack is not None:
+            rows = dense.row[on]
+            out[on] = dense.stack(rows, dense.t_b[on])[:, col] - dense.stack(rows, dense.t_a[on])[:, col]
+        return out
 
     def velocities(self, ts) -> np.ndarray:
         """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
@@ -122,7 +139,7 @@ class Trajectory:
                 out[sel] = y[n:2 * n].T
             elif p.many is not None:
                 set_modes(self.system, p.modes)
-                out[sel] = p.many([min(max(float(ts[i]), p.t_a), p.t_b) for i in sel])
+                out[sel] = p.many(np.clip(ts[sel], p.t_a, p.t_b))
             else:                           # an exact piece: its own function, the modes set once
                 set_modes(self.system, p.modes)
                 for i in sel:
@@ -248,13 +265,15 @@ def set_modes(system, modes) -> None:
 def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     """(joint, what, g) of every one-sided quantity (event where g crosses 0 downwards), and
     ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event);
-    ``lam``: the multipliers at (q, v, t) when already solved for."""
-    if lam is None:
-        _, lam, _ = system.solve(q, v, t)
+    ``lam``: the multipliers at (q, v, t) when already solved for (solved here only when an
+    element watches anything: a scene of pins and links alone watches nothing)."""
     out = []
-    for i, e in enumerate(system.elements):
-        for what, g in e.watch(system.lam_of(lam, i), q, v, t):
-            out.append((e.name, what, g))
+    if any(type(e).watch is not Element.watch for e in system.elements):
+        if lam is None:
+            _, lam, _ = system.solve(q, v, t)
+        for i, e in enumerate(system.elements):
+            for what, g in e.watch(system.lam_of(lam, i), q, v, t):
+                out.append((e.name, what, g))
     for ld in system.loads:
         if ld.kind == "spring" and ld.one_sided:
             out.append(("", "switch", ld.stretch(q)))

@@ -191,13 +191,23 @@ def _work(scene, traj, route):
         return np.array([P for _a, _lam, P in s.solve_many(states)])
 
     cum = [0.0]                         # W_nc over the whole pieces before piece k, built as asked
+    steps = []                          # W_nc across each whole DOP853 step (one stacked evaluation)
+
+    def whole(j: int) -> float:
+        p = traj.pieces[j]
+        if p.route == "ode" and p.t_b > p.t_a:
+            if not steps:
+                steps.append(traj.increments(2 * s.n))
+            if not np.isnan(steps[0][j]):
+                return float(steps[0][j])
+        return piece(p, p.t_b)
 
     def W(t, _W):
         if t == traj.t0:
             return 0.0
-        k = traj.pieces.index(traj.piece(t))
+        k = traj.index(t)
         while len(cum) <= k:
-            cum.append(cum[-1] + piece(traj.pieces[len(cum) - 1], traj.pieces[len(cum) - 1].t_b))
+            cum.append(cum[-1] + whole(len(cum) - 1))
         total = cum[k] + piece(traj.pieces[k], t)
         motion.set_modes(s, traj.pieces[k].modes)
         return total - sum(im.energy_loss for im in traj.impacts if im.t < t)
