@@ -504,8 +504,10 @@ def _piece_event(s, p):
     cells); each window 16 times wider than the last (all_roots resolves a cell to 2^-48 of its
     width: a period of 1 s is not lost in a window of 1e300 s).  Where the joint rows have one
     matrix over the piece, the states of a cell are solved in one stacked call
-    (SceneSystem.solve_many: the same numbers as one solve each).  The solve's CPU budget bounds
-    the search.  Returns (t, joint, what) or None."""
+    (SceneSystem.solve_many: the same numbers as one solve each).  In a closed form whose joint
+    forces are one constant by structure (:func:`constant_forces`), a force off its band (more
+    than twice its rounding from 0) has no crossing and is not searched.  The solve's CPU budget
+    bounds the search.  Returns (t, joint, what) or None."""
     from dyncli import cputime
 
     cache: dict[float, list[float]] = {}
@@ -533,12 +535,18 @@ def _piece_event(s, p):
                if not (what == "switch" and p.route == "statics")]
     if p.route == "closed-form" and constant_forces(s):
         # the multipliers are one constant over the piece: a force off its band has no crossing
-        at_b = motion.watches(s, q_b, v_b, p.t_b)
-        watched = [(j, joint, what) for j, joint, what in watched
-                   if not (what in crossing.FORCES and abs(at_a[j][2]) > 2 * tol[what]
-                           and abs(at_b[j][2] - at_a[j][2]) <= tol[what])]
-        if not watched:
-            return None
+        # (the piece's end read as a check of the structure; where it is beyond the doubles, the
+        # search below decides as before)
+        try:
+            at_b = motion.watches(s, q_b, v_b, p.t_b)
+        except NumericalError:
+            at_b = None
+        if at_b is not None:
+            watched = [(j, joint, what) for j, joint, what in watched
+                       if not (what in crossing.FORCES and abs(at_a[j][2]) > 2 * tol[what]
+                               and abs(at_b[j][2] - at_a[j][2]) <= tol[what])]
+            if not watched:
+                return None
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
