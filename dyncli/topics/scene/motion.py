@@ -127,8 +127,7 @@ class Trajectory:
             on = dense.row[which] >= 0
             if np.any(on):
                 k = which[on]
-                y = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
-                out[on] = y[:, n:2 * n]
+                out[on] = self._stacked_rates(dense, dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
                 which = np.where(on, -1, which)
         stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
         for k in sorted(set(which.tolist()) - {-1}):    # (np.unique would import numpy.ma: 13 ms cold)
@@ -183,6 +182,23 @@ class Trajectory:
                     q, v, _ = self.state(float(ts[i]))
                     out[:n, i], out[n:, i] = q, v
         return out
+
+    def _stacked_rates(self, dense, rows, ts) -> np.ndarray:
+        """dop853.DenseStack's evaluation on the q̇ components only (the same operations on each
+        element: bit for bit its numbers), its coefficients gathered once per call."""
+        if dense.rates is None:
+            n, st = self.system.n, dense.stack
+            dense.rates = (np.ascontiguousarray(st.F[:, ::-1, n:2 * n]), np.ascontiguousarray(st.y_old[:, n:2 * n]))
+        F, y_old = dense.rates
+        Fw = F[rows]
+        x = ((ts - dense.stack.t_old[rows]) / dense.stack.h[rows])[:, None]
+        x1 = 1 - x
+        y = np.zeros((len(ts), F.shape[2]))
+        for i in range(F.shape[1]):
+            y += Fw[:, i]
+            y *= x if i % 2 == 0 else x1
+        y += y_old[rows]
+        return y
 
     def _few_rates(self, ts: list[float]) -> np.ndarray | None:
         """q̇ at a few times (a minimiser's probes) that all lie on DOP853 steps, in plain floats:
@@ -276,6 +292,7 @@ class _Stacked:
     row: np.ndarray             # each piece's row in ``stack`` (-1: not a DOP853 step)
     stack: object               # dop853.DenseStack of the DOP853 steps, or None
     floats: dict = field(default_factory=dict)  # piece index -> its step's q̇ interpolant in plain floats
+    rates: tuple | None = None  # the DOP853 steps' q̇ coefficients (highest power first) and q̇ at their starts
 
     @property
     def t_b(self) -> np.ndarray:
