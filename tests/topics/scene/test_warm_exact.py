@@ -147,3 +147,75 @@ def test_the_trajectory_read_on_arrays_is_one_time_at_a_time_bit_for_bit():
     for k, t in enumerate(ts):
         p = traj.piece(float(t))
         assert np.array_equal(V[k], p.fn(min(max(float(t), p.t_a), p.t_b))[1])
+
+
+# ----------------------------------------------------------------------------- gaps as quadratics
+
+BALL = """
+type: scene
+params: {{m: 0.5, h: 1.5}}
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+bodies:
+  ball: {{shape: point, mass: m, x: [0, h], v: [0.3, {v0}]}}
+joints:
+  bounce: {{stop: [ball, floor], e: 0.5}}
+at: [0, 0.5]
+t_end: 3
+"""
+
+
+def _landing(h, v0):
+    """The first landing of a ball thrown up at v0 from h: h + v0 t − g t²/2 = 0 (mpmath)."""
+    with mp.workdps(30):
+        g, h, v0 = mp.mpf(G), mp.mpf(h), mp.mpf(v0)
+        return (v0 + mp.sqrt(v0 * v0 + 2 * g * h)) / g
+
+
+def test_a_flight_over_a_line_is_decided_from_its_quadratic(monkeypatch):
+    """The gap of a point over a line without ends, in free flight, is a quadratic in t: its
+    crossing is decided from the quadratic (no all_roots search), located by Brent on the gap
+    itself to the rounding of the time; the second landing after a bounce (e = 0.5) too."""
+    from dyncli.topics.scene import crossing
+
+    searched = []
+    real = crossing.first_crossing
+    monkeypatch.setattr(crossing, "first_crossing", lambda *a, **k: searched.append(a[3]) or real(*a, **k))
+    for v0 in (0.0, 2.0, -1.0):
+        r = solve_one_text(BALL.format(v0=v0))["results"]
+        t1 = _landing(1.5, v0)
+        ev = r["events"]
+        assert (ev[0]["joint"], ev[0]["what"]) == ("bounce", "impact")
+        assert abs(ev[0]["t"] - float(t1)) <= 8 * 2.2e-16 * float(t1)
+        with mp.workdps(30):        # up again at half the landing speed: the next flight 2 (v/2)/g
+            v1 = mp.mpf(G) * t1 - mp.mpf(v0)
+            t2 = t1 + v1 / mp.mpf(G)
+        assert abs(ev[1]["t"] - float(t2)) <= 1e-13 * float(t2)
+    assert "impact" not in searched
+
+
+def test_the_quadratic_decision_answers_only_what_it_can_tell():
+    """crossing.quadratic_crossing on quadratics given exactly: a clear miss is None, a clear
+    crossing is g's own root (mpmath), a graze of the band or a start below it is UNDECIDED."""
+    from dyncli.topics.scene import crossing
+
+    tol = 1e-12
+
+    def err(a, b):
+        return 1e-14
+
+    def quad(c0, c1, c2):
+        return lambda ts: c0 + c1 * np.asarray(ts) + c2 * np.asarray(ts) ** 2
+
+    assert crossing.quadratic_crossing(quad(1.0, -0.5, 0.2), 0.0, 3.0, tol, err) is None
+    got = crossing.quadratic_crossing(quad(1.0, 0.5, -4.905), 0.0, 3.0, tol, err)
+    with mp.workdps(30):
+        root = (mp.mpf(0.5) + mp.sqrt(mp.mpf(0.25) + 4 * mp.mpf(4.905))) / (2 * mp.mpf(4.905))
+    assert abs(got - float(root)) <= 4 * 2.2e-16 * float(root)
+    # a dip to −tol/2 at t = 1: inside the band by more than the error, not an event
+    assert crossing.quadratic_crossing(quad(1.0 - 0.5 * tol, -2.0, 1.0), 0.0, 3.0, tol, err) is None
+    # a graze of −tol itself (within the quadratic's error): too close to call
+    for d in (0.0, 1e-14, -1e-14):
+        assert crossing.quadratic_crossing(quad(1.0 - tol + d, -2.0, 1.0), 0.0, 3.0, tol, err) == crossing.UNDECIDED
+    assert crossing.quadratic_crossing(quad(-2 * tol, -1.0, 0.0), 0.0, 3.0, tol, err) == crossing.UNDECIDED
+    assert crossing.quadratic_crossing(quad(1.0, -1.0, 0.0), 0.0, 3.0, tol, lambda a, b: tol) == crossing.UNDECIDED
