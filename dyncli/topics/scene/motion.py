@@ -211,6 +211,8 @@ class Trajectory:
         × (1 − x), highest power first, then + y_old), on its q̇ components only, so the same
         numbers without the arrays' cost per call; None when a time lies on another piece."""
         dense = self._dense()
+        if dense.stack is None:             # no DOP853 step at all
+            return None
         n, out = self.system.n, []
         for t in ts:
             k = self.index(t)
