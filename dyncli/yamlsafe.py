@@ -62,7 +62,7 @@ class PathTable(MutableMapping):
 
     def __init__(self, eager: dict | None = None):
         self.eager: dict = {} if eager is None else eager
-        self.runs: dict[tuple, tuple[list, Any]] = {}
+        self.runs: dict[tuple, tuple[Any, Any]] = {}     # (items: a list, or _FlowMarks made lazily)
 
     def __getitem__(self, path):
         try:
@@ -422,6 +422,7 @@ class _Builder:
         """The list of numbers :func:`_flow_numbers` read, whose blanked ``[ ... ]`` starts at
         ``ev``: the same values, counts and caps as :meth:`numbers` (a cap reached, an anchor,
         a tag or a list met otherwise than directly: :class:`_Unmet`, read again as written)."""
+        assert self.lists is not None           # (called only for a list it holds)
         out, texts, inner = self.lists.pop(ev.start_mark.index)
         events, n = self.events, len(texts)
         if it is not events or not depth < MAX_DEPTH or ev.anchor is not None or ev.tag is not None \

@@ -404,7 +404,7 @@ def _serializer_ok() -> bool:
     if not _PROBE:
         from pydantic_core import to_json
 
-        probe = [s * (1 + k / 7) * 10.0 ** e for e in range(-12, 21) for k in (0, 3) for s in (1, -1)]
+        probe: list[Any] = [s * (1 + k / 7) * 10.0 ** e for e in range(-12, 21) for k in (0, 3) for s in (1, -1)]
         probe += [0.0, -0.0, 0, -3, 2**63, 10**20, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
                   0.1, 0.30000000000000004, 9007199254740993.0, 1e-05, 1e-06, 1.5e-05, 1e16, 123456.789, None]
         try:

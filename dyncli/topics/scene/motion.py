@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import bisect
 import math
+from typing import Any
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -220,7 +221,7 @@ class Trajectory:
                 r = int(dense.row[k])
                 if r < 0:
                     return None
-                o = self.pieces[k].batch
+                o: Any = self.pieces[k].batch         # (a DOP853 step's DenseOutput)
                 got = dense.floats[k] = (float(o.t_old), float(o.h), o.F[::-1, n:2 * n].tolist(),
                                          o.y_old[n:2 * n].tolist(), float(dense.t_a[k]), float(dense.ends[k]))
             t_old, h, F, y_old, a, b = got

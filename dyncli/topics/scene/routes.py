@@ -16,6 +16,7 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -601,7 +602,7 @@ def _piece_event(s, p, quadratic: bool = False):
         best = None
         for j, joint, what in watched:
             end = hi if best is None else best[0]
-            got = crossing.UNDECIDED
+            got: Any = crossing.UNDECIDED
             if affine[j]:
                 got = crossing.quadratic_crossing(lambda ts, j=j: column(j, ts), lo, end, tol[what], reading)
             if got == crossing.UNDECIDED:
