@@ -10,9 +10,11 @@ parent: the children's rusage) of ``dyncli solve -f json FILE`` to /dev/null for
 
 Medians of interleaved rounds (a change in the machine's load hits every case alike).
 
-Measured (1e5 times, the release before → this one interleaved, median of 5 on 2
-CPUs, load 1.2–3): projectile 2.90 → 2.61 s, spring and damper 2.75 → 2.61 s; ~0.8 s of either is
-the shortest round-trip repr of the 2.7 million numbers written (docs/accuracy.md, Cost).
+Measured (1e5 times, the release before → this one interleaved, median of 5 on 2 CPUs, load
+3–7): projectile 2.45 → 1.44 s, spring and damper 2.28 → 1.44 s (goal met); 1e4 times 0.45–0.47
+→ 0.37–0.41 s; the Coulomb oscillator 0.52 → 0.49 s.  The numbers' text is now pydantic_core's
+serializer's (repr's digits, ~0.15 s for the 2.7 million numbers, was ~0.9 s by repr; see
+docs/accuracy.md, Cost).
 
 Usage: python -m benchmarks.many_times [--runs 3] [--sizes 1000,10000,100000]
 """

@@ -294,22 +294,41 @@ class Odometer:
     is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
     at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
     ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns.
-    ``arrays``: ``speeds`` takes a numpy array of times (no list of 1e6 floats made and read back)."""
+    ``arrays``: ``speeds`` takes a numpy array of times (no list of 1e6 floats made and read back).
+    ``times``: the times ``at`` will be asked first (the reported ones), when few: the nodes of
+    their partial pieces are evaluated with the pieces' own, in one call of ``speeds`` (the same
+    values: every operation is node by node, each piece's sum its own)."""
 
     def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10,
-                 arrays: bool = False):
+                 arrays: bool = False, times: Sequence[float] | None = None):
         import numpy as np
 
         self.speeds, self.np, self.arrays = speeds, np, arrays
         self.x, self.w = _leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
-        S = self._nodes(self.pts[:-1], self.pts[1:])
+        self._early: tuple | None = None
+        a, b = self.pts[:-1], self.pts[1:]
+        if times is not None and 0 < len(times) <= EARLY:
+            t = np.asarray([float(x) for x in times], dtype=float)
+            k, lo, inside = self._where(t)
+            S = self._nodes(np.concatenate([a, lo[inside]]), np.concatenate([b, t[inside]]))
+            S, partial = S[:a.size], S[a.size:]
+            self._early = (t, k, inside, self._sum(partial, lo[inside], t[inside]))
+        else:
+            S = self._nodes(a, b)
         stops = self._stops(S)
         if stops:                                   # |v| has a kink there: a break of its own
             self.pts = np.array(sorted(set(self.pts.tolist()) | set(stops)))
             S = self._nodes(self.pts[:-1], self.pts[1:])
+            self._early = None                      # (the partial pieces' breaks have changed)
         first = self._sum(S, self.pts[:-1], self.pts[1:])
         self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
+
+    def _where(self, t):
+        """(the piece of each time, its start, whether the time is past it: a partial piece)."""
+        k = self.np.clip(self.np.searchsorted(self.pts, t, side="right") - 1, 0, len(self.pts) - 1)
+        lo = self.pts[k]
+        return k, lo, t > lo
 
     def _nodes(self, a, b):
         """The speeds at the Gauss–Legendre nodes of each piece [a, b]: (pieces, nodes[, k])."""
@@ -358,13 +377,30 @@ class Odometer:
         t = np.asarray([float(x) for x in times], dtype=float)
         if t.size == 0:
             return []
-        k = np.clip(np.searchsorted(self.pts, t, side="right") - 1, 0, len(self.pts) - 1)
-        lo = self.pts[k]
-        inside = t > lo
+        early = self._early
+        if early is not None and early[0].size == t.size and bool((early[0] == t).all()):
+            k, inside = early[1], early[2]
+            part = np.zeros_like(self.cum[k])
+            part[inside] = early[3]
+            return (self.cum[k] + part + 0.0).tolist()
+        k, lo, inside = self._where(t)
         part = np.zeros_like(self.cum[k])
         if np.any(inside):
-            part[inside] = self._pieces(lo[inside], t[inside])
+            a, b = lo[inside], t[inside]
+            n = max(64, CHUNK // self.x.size // 64 * 64)        # the pieces a chunk of nodes holds
+            part[inside] = (self._pieces(a, b) if a.size <= n else
+                            np.concatenate([self._pieces(a[i:i + n], b[i:i + n]) for i in range(0, a.size, n)]))
         return (self.cum[k] + part + 0.0).tolist()
+
+
+#: the Gauss–Legendre nodes evaluated in one call of ``speeds`` by :meth:`Odometer.at`: the partial
+#: pieces of 1e5 times are taken a chunk at a time (the same values: every operation is piece by
+#: piece, and a chunk holds a multiple of 64 pieces, so the rows of the weights' matrix product
+#: keep their place in the BLAS kernel's blocks), so their arrays are a few hundred kB reused, not
+#: ~25 MB each freshly mapped (page faults)
+CHUNK = 1 << 15
+#: at most this many reported times have their partial pieces' nodes evaluated with the pieces'
+EARLY = 256
 
 
 def _leggauss(nodes: int):

@@ -36,8 +36,8 @@ from dataclasses import dataclass
 from functools import partial
 from typing import Any, Callable, Iterable, Union
 
-from dyncli.errors import InputError
-from dyncli.rootfind import root
+from dyncli.errors import InputError, NumericalError
+from dyncli.rootfind import NotANumber, root
 from dyncli.expr import did_you_mean
 
 __all__ = ["AtTime", "When", "Extreme", "Query", "parse_queries", "answer", "SUBDIVIDE"]
@@ -192,7 +192,11 @@ def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
             out.append({"t": float(q.t) if ok else None, "reached": ok, "at_end": None})
             continue
         _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
-        t, at_end = (_when(motion, q), None) if isinstance(q, When) else _extreme(motion, q)
+        try:
+            t, at_end = (_when(motion, q), None) if isinstance(q, When) else _extreme(motion, q)
+        except NotANumber as exc:
+            raise NumericalError(f"find.{q.index}: {q.path} is not a number near t = {exc.x:.6g} s (the motion "
+                                 "overflows the doubles there): search a shorter span (t_end or within)") from None
         out.append({"t": t, "reached": t is not None, "at_end": at_end})
     return out
 

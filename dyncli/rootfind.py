@@ -39,6 +39,14 @@ def brentq(f, a: float, b: float, *, xtol: float = XTOL, rtol: float = RTOL, max
     return brent(f, float(a), float(b), xtol, rtol, int(maxiter), signs=True)
 
 
+class NotANumber(ValueError):
+    """The function's value at ``x`` is NaN (brentq's ValueError, with the place kept)."""
+
+    def __init__(self, x: float):
+        super().__init__(f"The function value at x={x:g} is NaN; solver cannot converge.")
+        self.x = x
+
+
 def brent(f, xa, xb, xtol, rtol, maxiter, *, signs=False):
     """Root of ``f`` bracketed by [xa, xb] by Brent's method (bisection guarding inverse
     quadratic / secant steps), in plain floats: step for step the operations of scipy's
@@ -48,7 +56,7 @@ def brent(f, xa, xb, xtol, rtol, maxiter, *, signs=False):
     def fx(x):
         y = float(f(x))
         if math.isnan(y):           # as brentq: refused, not iterated on
-            raise ValueError(f"The function value at x={x:f} is NaN; solver cannot converge.")
+            raise NotANumber(x)
         return y
 
     xpre, xcur = xa, xb

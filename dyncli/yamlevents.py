@@ -107,6 +107,10 @@ class Events:
                 self._anchor(ev, type(ev))
         return ev
 
+    def recording(self) -> bool:
+        """Whether the events read now are recorded (inside an anchored value, for its aliases)."""
+        return bool(self._recording)
+
     def _cap(self, ev, message: str):
         raise self._error(message, ev.start_mark.line + 1, ev.start_mark.column + 1)
 

@@ -15,7 +15,10 @@ constructed by PyYAML:
 * every value's (line, col) is recorded under its path tuple -- for a run of
   plain numbers in a list (``at: [0.0, 0.01, ...]`` with 100,000 times), only
   the run's packed marks and texts are kept, each turned into a position when
-  a message asks for it (:class:`PathTable`).
+  a message asks for it (:class:`PathTable`);
+* a long flow list of plain numbers is read by a scan of the text
+  (:func:`_flow_numbers`), the parser meeting it blanked; anything unexpected
+  reads the document again as written (the same values, positions, errors).
 """
 
 from __future__ import annotations
@@ -59,7 +62,7 @@ class PathTable(MutableMapping):
 
     def __init__(self, eager: dict | None = None):
         self.eager: dict = {} if eager is None else eager
-        self.runs: dict[tuple, tuple[list, Any]] = {}
+        self.runs: dict[tuple, tuple[Any, Any]] = {}     # (items: a list, or _FlowMarks made lazily)
 
     def __getitem__(self, path):
         try:
@@ -163,6 +166,12 @@ def load(text: str | bytes) -> Document:
         raise YamlError("file contains a NUL character (binary data?)")
     loader = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
     try:
+        lists = _flow_numbers(text)
+        if lists is not None:               # long flow lists of plain numbers: read by a regex scan
+            try:
+                return _one_pass(lists[0], loader, lists[1])
+            except Exception:               # anything unexpected (an error, a list not met as a list):
+                pass                        # the text as written, the ordinary way (the same values, errors)
         return _one_pass(text, loader)
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
@@ -183,16 +192,18 @@ def load(text: str | bytes) -> Document:
         raise YamlError("YAML is nested too deeply") from None
 
 
-def _one_pass(text: str, loader) -> Document:
+def _one_pass(text: str, loader, lists: dict | None = None) -> Document:
     """The first document built straight from the event stream, which is
     read to its end.  The errors keep the order of a parse, then a compose,
     then a construction: a syntax error or a cap (raised while parsing) comes
     first, then an anchor error, then an empty file or several documents,
-    then the first document's own errors (kept until the stream is read)."""
+    then the first document's own errors (kept until the stream is read).
+    ``lists``: the flow lists of numbers blanked in ``text`` (:func:`_flow_numbers`),
+    each to be met as a list (else :class:`_Unmet`)."""
     from dyncli.yamlevents import Events, Stop
 
     events = Events(text, loader, (MAX_DEPTH, MAX_NODES, YamlError))
-    builder = _Builder(events)
+    builder = _Builder(events, lists)
     root_seen, second, late = False, None, None
     for ev in events:
         if not events.is_node(ev):
@@ -213,7 +224,100 @@ def _one_pass(text: str, loader) -> Document:
         raise YamlError("file holds several YAML documents ('---'); use one document with 'problems: [...]'", *second)
     if late is not None:
         raise late
+    if lists:
+        raise _Unmet()                      # a blanked list was not read as a list (inside a string...)
     return builder.doc
+
+
+class _Unmet(Exception):
+    """A flow list of numbers read by :func:`_flow_numbers` is not where the parser says a plain
+    list of the document starts (inside a quoted string, a comment, an anchored value, beyond a
+    cap...): the document is read again as written."""
+
+
+#: a flow list long enough to be worth a scan (characters between its brackets)
+_SCAN_FROM = 256
+_FLOW = re.compile(r"\[([-+0-9.eE, \n]{%d,})\]" % _SCAN_FROM)
+_TOKEN = r"[-+]?(?:0|[1-9][0-9]*)(?:\.[0-9]*(?:[eE][-+][0-9]+)?)?"     # (within _NUMBER's texts)
+# plain numbers (as :data:`_NUMBER` reads them) separated by commas, spaces and line breaks only
+# around the commas (a line break inside an entry would fold two numbers into one text)
+_FLOW_LIST = re.compile(rf"[ \n]*{_TOKEN}(?:[ \n]*,[ \n]*{_TOKEN})*[ \n]*").fullmatch
+_TEXTS = re.compile(r"[^ \n,]+").findall
+_BLANK = str.maketrans({c: " " for c in "-+0123456789.eE,"})
+
+
+def _flow_numbers(text: str) -> tuple[str, dict] | None:
+    """``text`` with every long flow list of plain numbers (``at: [0.0, 0.001, ...]`` with 1e5
+    times) blanked between its brackets (the same length, its line breaks kept: every other
+    position unchanged, and the parser meets ``[  ...  ]``, an empty list), and ``{index of its
+    "[": (its values, its items' texts, the text between the brackets)}``; None when there is
+    none.  The items are read here at C speed (not an event of the parser each);
+    :meth:`_Builder.scanned` puts them in the list the parser starts at that index."""
+    found = []
+    for m in _FLOW.finditer(text):
+        got = _flow_items(m.group(1))
+        if got is not None:
+            found.append((m.start(), m.group(1), got))
+    if not found:
+        return None
+    parts, last, lists = [], 0, {}
+    for at, inner, (values, texts) in found:
+        lists[at] = (values, texts, inner)
+        parts += [text[last:at + 1], inner.translate(_BLANK)]
+        last = at + 1 + len(inner)
+    parts.append(text[last:])
+    return "".join(parts), lists
+
+
+def _flow_items(inner: str) -> tuple[list, list[str]] | None:
+    """(values, texts) of the items of a flow list whose text between the brackets is ``inner``
+    (made of the characters of numbers, commas, spaces and line breaks) when every item is a plain
+    number that YAML reads as :data:`_NUMBER` does (the same values), else None.  The common case
+    — floats with their dot, each after ", " — is decided by string operations: no line break,
+    no other space, no empty item; then every item has exactly one dot (a float, not an int or a
+    text such as ``1.2.3``), every exponent is signed (``1.0e5`` is text in YAML 1.1), and
+    ``float`` reads each (so each is ``[-+]?[0-9]*.[0-9]*([eE][-+][0-9]+)?``, YAML's float, whose
+    value is ``float``'s).  Any other list is checked item by item by a regular expression."""
+    compact = inner.replace(", ", ",")
+    if " " not in compact and "\n" not in compact:
+        texts = compact.split(",")
+        if inner.count(".") == len(texts) and "" not in texts and \
+                inner.count("e") + inner.count("E") == sum(inner.count(e) for e in ("e+", "e-", "E+", "E-")):
+            try:
+                return list(map(float, texts)), texts
+            except ValueError:
+                return None
+    if not _FLOW_LIST(inner):
+        return None
+    texts = _TEXTS(inner)
+    try:
+        return [float(v) if "." in v else int(v) for v in texts], texts
+    except ValueError:                          # (an int of more digits than Python reads)
+        return None
+
+
+class _FlowMarks:
+    """The packed marks (line << _SHIFT | column, 0-based) of the items of a flow list read by
+    :func:`_flow_numbers`, made when a message first asks for one (a list of 1e5 times read
+    without error never needs them): ``inner`` the text between its brackets, ``line``/``col``
+    its ``[``'s."""
+
+    def __init__(self, inner: str, line: int, col: int, n: int):
+        self.inner, self.line, self.col, self.n, self.marks = inner, line, col, n, None
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, i):
+        if self.marks is None:
+            marks, inner = [], self.inner
+            for m in re.finditer(r"[^ \n,]+", inner):
+                k = m.start()
+                nl = inner.count("\n", 0, k)
+                col = self.col + 1 + k if not nl else k - inner.rfind("\n", 0, k) - 1
+                marks.append((self.line + nl) << _SHIFT | col)
+            self.marks = marks
+        return self.marks[i]
 
 
 def _tab_near(text: str, line: int | None, col: int | None) -> tuple[int, int] | None:
@@ -246,10 +350,11 @@ class _Builder:
     standard tags only, the constructed values capped: aliases are built
     again from their anchor's events, so an alias bomb stops at the cap)."""
 
-    def __init__(self, events):
+    def __init__(self, events, lists: dict | None = None):
         import yaml
 
         self.events, self.doc, self.count = events, Document(None), 0
+        self.lists = lists              # the flow lists of numbers read by _flow_numbers, by index
         self.pos, self.text = self.doc.pos.eager, self.doc.text.eager
         self.resolver = yaml.resolver.Resolver()
         self.y = yaml
@@ -298,6 +403,8 @@ class _Builder:
                 shown = ev.value if len(ev.value) <= 40 else ev.value[:37] + "..."
                 raise _stop(f"cannot read value {shown!r} ({len(ev.value)} characters)", line, col) from None
         if cls is y.SequenceStartEvent:
+            if self.lists and ev.start_mark.index in self.lists:
+                return self.scanned(ev, it, path, depth)
             out: list[Any] = []
             if it is self.events and depth < MAX_DEPTH:
                 child = self.numbers(path, out)
@@ -310,6 +417,26 @@ class _Builder:
                 out.append(self.value(child, it, path + (len(out),), depth + 1))
             return out
         return self.mapping(it, path, depth)
+
+    def scanned(self, ev, it, path: tuple, depth: int) -> list:
+        """The list of numbers :func:`_flow_numbers` read, whose blanked ``[ ... ]`` starts at
+        ``ev``: the same values, counts and caps as :meth:`numbers` (a cap reached, an anchor,
+        a tag or a list met otherwise than directly: :class:`_Unmet`, read again as written)."""
+        assert self.lists is not None           # (called only for a list it holds)
+        out, texts, inner = self.lists.pop(ev.start_mark.index)
+        events, n = self.events, len(texts)
+        if it is not events or not depth < MAX_DEPTH or ev.anchor is not None or ev.tag is not None \
+                or events.recording() or events.values + n > MAX_NODES or self.count + n > MAX_NODES:
+            raise _Unmet()
+        end = next(it)
+        if type(end) is not self.y.SequenceEndEvent:
+            raise _Unmet()
+        events.values += n
+        self.count += n
+        m = ev.start_mark
+        self.doc.pos.runs[path] = (_FlowMarks(inner, m.line, m.column, n), _unpack)
+        self.doc.text.runs[path] = (texts, None)
+        return out
 
     def numbers(self, path: tuple, out: list) -> Any:
         """The leading run of plain numbers of the list at ``path`` read into

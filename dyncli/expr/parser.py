@@ -105,8 +105,15 @@ def constant(text: Any, params: Mapping[str, float] | None = None) -> float:
     (may be +-inf for a YAML ``.inf``; never NaN)."""
     if type(text) is float and text == text:        # a plain number (not NaN): the value of its Expr
         return text
-    e = parse(text, (), params)
-    v = e.value()
+    if type(text) is str and (params is None or type(params) is dict):
+        from dyncli.docmemo import recall       # remembered per (text, params), type-exactly
+
+        return recall("constant", (text, params), lambda: _constant(text, params))
+    return _constant(text, params)
+
+
+def _constant(text: Any, params: Mapping[str, float] | None) -> float:
+    v = parse(text, (), params).value()
     if math.isnan(v):
         raise ExpressionError("not a number (NaN)")
     return v

@@ -4,13 +4,17 @@ Scales to long series: numpy arrays convert with one ``tolist()`` call (and
 one vectorised finiteness test), flat lists of floats are checked in one pass
 instead of a recursive call per element, and :func:`dumps` indents the
 records' structure but writes each list of numbers (a series of 1e5 values,
-or of 1e5 vectors) on one line, so the file is not a number per line.
+or of 1e5 vectors) on one line, so the file is not a number per line.  A long
+list of numbers, and a long series of flat records, is written by pydantic_core's
+serializer (:func:`numbers_json`: the digits of ``repr``, its notation mended
+where it differs), the same text as ``json.dumps`` at ~8 × its speed.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import re
 from operator import itemgetter
 from typing import Any
 
@@ -250,7 +254,7 @@ def _layout(x: Any, indent: str, text, parts: list, marks: dict) -> None:
             if t is not dict and t is not list:      # a scalar: inline (a series of small records)
                 parts.append(f"{inner}{next(text)}: {next(text)}")
             elif t is list and marks.get(id(v)) == _NUMBERS:
-                parts.append(f"{inner}{next(text)}: " + repr(v).replace("None", "null"))
+                parts.append(f"{inner}{next(text)}: " + numbers_json(v))
             else:
                 parts.append(f"{inner}{next(text)}: ")
                 _layout(v, inner, text, parts, marks)
@@ -259,7 +263,7 @@ def _layout(x: Any, indent: str, text, parts: list, marks: dict) -> None:
     elif type(x) is list and x:
         mark = marks.get(id(x))
         if mark == _NUMBERS:
-            parts.append(repr(x).replace("None", "null"))     # repr of ints, floats, None = their JSON
+            parts.append(numbers_json(x))
             return
         if mark is not None:
             parts.append(_records_text(x, indent, mark, text))
@@ -307,6 +311,9 @@ def _records_text(x: list, indent: str, keys: list, text) -> str:
     inner, deeper = indent + "  ", indent + "    "
     heads = {k: f"{deeper}{next(text)}: " for k in keys}
     open_, close, rows = inner + "{\n", "\n" + inner + "}", []
+    whole = _records_json(x, keys, [heads[k] for k in keys], indent)
+    if whole is not None:
+        return whole
     columns = _column_texts(x, keys)
     if columns is not None:         # every record the same keys, each a column of one kind: no call per value
         texts, lists = columns
@@ -317,6 +324,108 @@ def _records_text(x: list, indent: str, keys: list, text) -> str:
         rows.append(open_ + ",\n".join([heads[k] + (repr(v) if type(v) in _REPR else next(text))
                                         for k, v in rec.items()]) + close)
     return "[\n" + ",\n".join(rows) + "\n" + indent + "]"
+
+
+#: a key written as is in :func:`_records_json`: letters, digits, spaces and a few signs (its JSON is
+#: itself in quotes; no separator the text is cut at, nor a number's delimiter, is in it)
+_PLAIN_KEY = re.compile(r"[A-Za-z0-9 _#.+*/()'-]+").fullmatch
+
+
+def _records_json(x: list, keys: list, heads: list[str], indent: str) -> str | None:
+    """:func:`_records_text` of records that all have exactly ``keys`` (plain ones: :data:`_PLAIN_KEY`,
+    ``heads`` their indented JSON) and only numbers and lists of numbers as values (all finite:
+    :func:`_records`), at once: :func:`numbers_json` of the whole list (``[{"k1": v, "k2": [a,
+    b]}, {...}]``: the separators are the only commas), laid out by replacing its separators
+    (``}, {"k1": `` between records, ``, "k2": `` between values: no number holds a quote or a
+    brace); else None."""
+    if len(x) < 64 or any(list(rec) != keys for rec in (x[0], x[-1])) or not all(map(_PLAIN_KEY, keys)):
+        return None
+    from itertools import chain
+
+    if set(map(tuple, x)) != {tuple(keys)} or not set(map(type, chain.from_iterable(map(dict.values, x)))) <= _REPR:
+        return None
+    if heads != [f'{indent}    "{k}": ' for k in keys]:
+        return None
+    text = _serialized(x)
+    if text is None:
+        return None
+    text = text.replace(",", ", ").replace('":', '": ')
+    inner = indent + "  "
+    first = '{"%s": ' % keys[0]
+    if not (text.startswith("[" + first) and text.endswith("}]")):
+        return None
+    text = text[len(first) + 1:-2].replace("}, " + first, f"\n{inner}}},\n{inner}{{\n{heads[0]}")
+    for k, head in zip(keys[1:], heads[1:]):
+        text = text.replace(', "%s": ' % k, ",\n" + head)
+    return f"[\n{inner}{{\n{heads[0]}{text}\n{inner}}}\n{indent}]"
+
+
+def numbers_json(x: list) -> str:
+    """``repr(x)`` with None as null — the JSON of a list of finite numbers or None, or of lists
+    of them, as ``json.dumps`` writes it — at ~10 × its speed for a long list (:func:`_serialized`,
+    its separators ``,`` made ``, ``: no number holds a comma); a short list by ``repr``."""
+    text = _serialized(x) if len(x) >= 64 else None
+    return repr(x).replace("None", "null") if text is None else text.replace(",", ", ")
+
+
+def _serialized(x: Any) -> str | None:
+    """The compact JSON of ``x`` (numbers, None, lists, plain-keyed mappings of them) by
+    pydantic_core's serializer, every number as ``repr`` writes it, or None (the serializer
+    refuses it, or does not pass :func:`_serializer_ok`).  The serializer writes each float in the
+    shortest digits that read back as it (Ryu), ``repr``'s digits; only its notation differs, for
+    1e-5 ≤ |x| < 1e-4 (``0.00001``, not ``1e-05``) and for a one-digit negative exponent
+    (``1e-6``, not ``1e-06``): those numbers, found in the text, are mended."""
+    if not _serializer_ok():
+        return None
+    from pydantic_core import to_json
+
+    try:
+        return _mend(to_json(x).decode("ascii"))
+    except Exception:                           # (not expected: numbers and lists of them)
+        return None
+
+
+def _mend(text: str) -> str:
+    """The serializer's ``text`` with every number in ``repr``'s notation (:func:`_serialized`)."""
+    if "0.0000" in text:
+        text = _SMALL(_small, text)
+    if "e-" in text:
+        text = _EXPONENT(r"e-0\1", text)
+    return text
+
+
+_PROBE: list = []       # [whether the serializer, mended, wrote the probe as json.dumps does]
+
+
+def _serializer_ok() -> bool:
+    """Whether :func:`_serialized`'s text of a probe of numbers in every notation (each decade
+    from 1e-12 to 1e20, both signs, 0, -0.0, ints, a subnormal, the extremes, 17-digit values) is
+    ``json.dumps``'s, decided once: a serializer that writes otherwise is not used (``repr``)."""
+    if not _PROBE:
+        from pydantic_core import to_json
+
+        probe: list[Any] = [s * (1 + k / 7) * 10.0 ** e for e in range(-12, 21) for k in (0, 3) for s in (1, -1)]
+        probe += [0.0, -0.0, 0, -3, 2**63, 10**20, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                  0.1, 0.30000000000000004, 9007199254740993.0, 1e-05, 1e-06, 1.5e-05, 1e16, 123456.789, None]
+        try:
+            text = _mend(to_json([probe, [probe]]).decode("ascii"))
+            _PROBE.append(text.replace(",", ", ") == json.dumps([probe, [probe]]))
+        except Exception:
+            _PROBE.append(False)
+    return _PROBE[0]
+
+
+# a number written in the serializer's notation where repr's differs: 0.0000ddd (|x| < 1e-4, read
+# again by repr: its sign, if any, stays before it) and a one-digit negative exponent (padded), each
+# only as a whole number (after "[", ",", ":" or its sign; before ",", "]" or "}")
+_SMALL = re.compile(r"0\.0000[0-9]*").sub
+_EXPONENT = re.compile(r"e-([0-9])(?=[,\]}]|$)").sub
+
+
+def _small(m) -> str:
+    s, a, b = m.string, m.start(), m.end()
+    whole = a > 0 and s[a - 1] in "[,:-" and (b == len(s) or s[b] in ",]}")
+    return repr(float(m.group())) if whole else m.group()
 
 
 def _column_texts(x: list, keys: list) -> tuple[list[list[str]], list[bool]] | None:
@@ -335,9 +444,9 @@ def _column_texts(x: list, keys: list) -> tuple[list[list[str]], list[bool]] | N
         col = list(map(itemgetter(k), x))
         kinds = set(map(type, col))
         if kinds <= {float, int}:
-            out.append(repr(col)[1:-1].split(", "))
+            out.append(numbers_json(col)[1:-1].split(", "))
         elif kinds == {list}:
-            out.append(repr(col)[2:-2].split("], ["))
+            out.append(numbers_json(col)[2:-2].split("], ["))
         else:
             return None
         lists.append(kinds == {list})

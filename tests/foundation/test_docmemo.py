@@ -81,3 +81,21 @@ def test_a_swept_param_changes_every_point(tmp_path, monkeypatch):
         wn = math.sqrt(k / 2)
         assert rec["results"]["omega_n"] == pytest.approx(wn, rel=1e-15)
         assert rec["results"]["find"][0]["t"] == pytest.approx(2 * math.pi / wn, rel=1e-15)
+
+
+def test_constant_expressions_are_remembered_per_text_and_params_never_their_errors():
+    import math
+
+    import pytest
+
+    from dyncli.expr import ExpressionError
+    from dyncli.expr.parser import constant
+
+    assert constant("sqrt(k/m)", {"k": 25.0, "m": 1.0}) == 5.0
+    assert constant("sqrt(k/m)", {"k": 25.0, "m": 4.0}) == 2.5          # other params: computed afresh
+    assert constant("sqrt(k/m)", {"k": 25.0, "m": 1.0}) == 5.0
+    assert math.copysign(1.0, constant("-x", {"x": 0.0})) == -1.0
+    assert math.copysign(1.0, constant("-x", {"x": -0.0})) == 1.0       # -0.0 and 0.0: two keys
+    for _ in range(2):                                                   # an error raised each time
+        with pytest.raises(ExpressionError):
+            constant("sqrt(", {})

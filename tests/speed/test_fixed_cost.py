@@ -174,6 +174,25 @@ def _texts(node, path=(), out=None):
     "at: [0, -0, +5, 12, -0.0, +1.5, 1., 3.25e+3, 1.0e-2, 00.5, 1.0e5, 1e5, 012, 0x1F, 1_000,\n"
     "     # a comment\n     1:30, .5, .inf, -.inf, 7, 8.5, true, null, '9', 10, [1, 2.5], {a: 1}, 11]\n",
     "a:\n  - 1\n  - 2.5\n  - 1e3\n  - -4\nb: [1, 2, 3]\nc: &r [1, 2]\nd: *r\ne: [&x 1, *x, 2]\n",
+    # long flow lists (read by a scan of the text, yamlsafe._flow_numbers): floats after ", ",
+    # ints, mixed, over lines, no spaces, exponents, and texts that only look like such a list
+    "at: [" + ", ".join(repr(k / 7 * 10.0 ** (k % 40 - 20)) for k in range(400)) + "]\n",     # 1e-13: a text
+    "at: [" + ", ".join(f"{k / 7 * 10.0 ** (k % 40 - 20):.{k % 17 + 1}e}" for k in range(400)) + "]\n",
+    "at: [" + ",".join(str(k * 37 - 999) for k in range(300)) + "]\nb: [0.5,   1.5 ,2.5]\n",
+    "at: [\n  " + ",\n  ".join(f"{k}.{k % 7}" if k % 3 else str(k) for k in range(300)) + "\n  ]\nx: 1\n",
+    "at: [" + ", ".join(["1.5"] * 100) + ", 1.0e5, " + ", ".join(["2.5"] * 100) + "]\n",      # 1.0e5: a text
+    "at: [" + ", ".join(["1.5"] * 100) + ", 012, " + ", ".join(["2.5"] * 100) + "]\n",        # 012: octal
+    "at: [" + ", ".join(["1.5"] * 100) + ", 1e+5, 1.2.3, -.5, 00.5, 1." + "]\n",
+    "at: [" + ", ".join(["1.5"] * 100) + "\n 2.5, 3.5]\n",                   # a break inside an item: folded
+    "at: [" + ", ".join(["1.5"] * 150) + ",]\n",
+    "t: '[" + ", ".join(["1.5"] * 150) + "]'\nat: [1]\n",                    # inside a quoted string
+    "t: |\n  [" + ", ".join(["1.5"] * 150) + "]\nat: [1]\n",                # inside a block scalar
+    "t: 1  # [" + ", ".join(["1.5"] * 150) + "]\nat: [1]\n",                  # inside a comment
+    "at: &l [" + ", ".join(["1.5"] * 150) + "]\nb: *l\n",                     # anchored, and its alias
+    "at: !!seq [" + ", ".join(["1.5"] * 150) + "]\n",
+    "at: [[" + ", ".join(["1.5"] * 150) + "], [" + ", ".join(["2"] * 150) + "]]\n",
+    "at:\n  - [" + ", ".join(["-1.25e-3"] * 150) + "]\n  - 3\n",
+    "é: x\nat: [" + ", ".join(["1.5"] * 150) + "]  # ü\n",
 ])
 def test_yaml_number_runs_same_values_positions_and_texts(text):
     from dyncli import yamlsafe
@@ -207,6 +226,32 @@ def test_yaml_number_run_errors_and_caps_unchanged(monkeypatch):
     with pytest.raises(yamlsafe.YamlError) as err:
         yamlsafe.load("at: [" + ", ".join(["1"] * 60) + "]\n")
     assert "more than 50 values" in err.value.message
+    for text in ("at: [" + ", ".join(["1.5"] * 60) + "]\n",                   # a scanned list: the same caps
+                 "a: [" + ", ".join(["1.5"] * 40) + "]\nb: [" + ", ".join(["2.5"] * 40) + "]\n"):
+        with pytest.raises(yamlsafe.YamlError) as err:
+            yamlsafe.load(text)
+        assert "more than 50 values" in err.value.message
+
+
+def test_yaml_scanned_flow_list_errors_and_positions_as_written():
+    """A long flow list read by the scan (yamlsafe._flow_numbers) keeps every other error where the
+    parser puts it, and its items' positions are those of the text as written."""
+    from dyncli import yamlsafe
+
+    long = "[" + ", ".join(f"{k}.5" for k in range(200)) + "]"
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load(f"at: {long}\nb: [1, 2\nc: 3\n")
+    with pytest.raises(yamlsafe.YamlError) as plain:
+        yamlsafe.load("at: [1]\nb: [1, 2\nc: 3\n")
+    assert (err.value.message, err.value.line) == (plain.value.message, plain.value.line)
+    with pytest.raises(yamlsafe.YamlError) as err:
+        yamlsafe.load(f"at: {long}\nat: 1\n")
+    assert "duplicate key 'at'" in err.value.message and (err.value.line, err.value.col) == (2, 1)
+    doc = yamlsafe.load(f"x: 1\nat:   {long[:600]}\n   {long[600:]}\n")
+    node = yaml.compose(f"x: 1\nat:   {long[:600]}\n   {long[600:]}\n", Loader=yaml.SafeLoader)
+    assert doc.pos == _positions(node) and doc.pos[("at", 199)] == _positions(node)[("at", 199)]
+    del doc.pos[("at", 150)]                          # a run cut at an item: the rest kept one by one
+    assert doc.pos[("at", 151)] == _positions(node)[("at", 151)] and ("at", 150) not in doc.pos
 
 
 @pytest.mark.parametrize("chunk", [1, 50, 1 << 20])

@@ -176,3 +176,33 @@ def test_top_without_times_imports_no_numpy(tmp_path):
     code = "import sys\nsys.argv = ['x', " + repr(str(f)) + "]\n" + _SOLVE_NUMPY_FREE
     [rec] = [json.loads(ln[4:]) for ln in _run(code).splitlines() if ln.startswith("REC=")]
     assert rec["methods"] == [["top", "exact"]] and not rec["numpy"], rec
+
+
+def test_the_command_reads_no_pydantic_plugin_entry_points():
+    """The command solves without pydantic's plugin search (importlib.metadata and every
+    distribution's entry points); the Python API leaves pydantic alone."""
+    code = (
+        "import sys, runpy\n"
+        "sys.argv = ['dyncli', 'solve', '-f', 'json', 'problems/scenes/yo-yo.yaml']\n"
+        "try:\n    runpy.run_module('dyncli', run_name='__main__')\nexcept SystemExit as e:\n"
+        "    assert not e.code, e.code\n"
+        "print('\\nMETA=' + str('importlib.metadata' in sys.modules))\n"
+    )
+    out = _run(code)
+    record = json.loads(out.split("\nMETA=")[0])
+    assert (record[0] if isinstance(record, list) else record)["type"] == "scene"
+    assert out.rstrip().endswith("META=False")
+    api = _run("import dyncli, sys\ndyncli.solve('problems/scenes/yo-yo.yaml')\n"
+               "print('pydantic.plugin._loader' in sys.modules and hasattr(sys.modules['pydantic.plugin._loader'], 'entry_points'))")
+    assert api.strip().endswith("True")
+
+
+def test_the_stand_in_gives_pydantic_its_real_loader_for_anything_else():
+    code = (
+        "import sys\nfrom dyncli.__main__ import no_pydantic_plugins, PLUGIN_LOADER\n"
+        "no_pydantic_plugins()\nstub = sys.modules[PLUGIN_LOADER]\nassert tuple(stub.get_plugins()) == ()\n"
+        "assert not hasattr(stub, '__path__')\n"
+        "group = stub.PYDANTIC_ENTRY_POINT_GROUP\n"
+        "print(group, sys.modules[PLUGIN_LOADER] is not stub)\n"
+    )
+    assert _run(code).split() == ["pydantic", "True"]

@@ -329,6 +329,9 @@ class _Run:
                 if g >= 0 and g_new <= 0:           # solve_ivp's event of direction −1
                     t, y, sol = self._stop(solver, sol, d, t_old, t)
                     stop = True
+                    if not t > ts[-1]:              # the stop at the step's start (to rounding): the
+                        ys[-1] = y                  # phase ends there, no step of zero length
+                        break
                 g = g_new
             if k < n_want and want[k] <= t:         # the requested times in this step: one interpolation
                 j = bisect.bisect_right(want, t, k)

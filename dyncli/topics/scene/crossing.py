@@ -42,6 +42,8 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
 #: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut), a speed
 #: (sticks) and forces (separates, slips, slack)
 WATCHED = ("impact", "leaves", "switch", "taut", "sticks", "separates", "slips", "slack")
+#: the watched quantities that are forces of the joints (functions of the multipliers alone)
+FORCES = ("separates", "slips", "slack")
 
 
 def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, cells: int) -> float | None:
@@ -73,6 +75,88 @@ def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, ce
     if x < near < r and sign * float(g(np.array([near]))[0]) > 0:
         x = near
     return brent(lambda t: sign * float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
+
+
+#: what :func:`quadratic_crossing` returns when the quadratic's picture is too close to call
+UNDECIDED = "undecided"
+
+
+def quadratic_crossing(g, a: float, b: float, tol: float, err):
+    """The first crossing in [a, b] of a watched quantity that is a quadratic in t by structure
+    (a gap affine in the positions, over a phase of constant accelerations: routes.py), decided
+    from the quadratic itself instead of a search: g read at a, the midpoint and b gives its
+    coefficients, known to 2 ``err(a, b)`` (the rounding of a reading over [a, b]).  Where
+    g + tol stays above that over [a, b], the answer is None.  Where it turns negative at a
+    simple root, the span is first narrowed to just past that root while the quadratic's error
+    (of the largest coordinates over the span) exceeds tol/2, then: the root must move it by
+    8 × its error within a bracket that readings of g itself confirm (g > 0 at the bracket's
+    start, g + tol < 0 at its end, the quadratic + tol above its error from a to there); the
+    answer is g's own root before it (the last root of the quadratic), bracketed the same way and
+    located by Brent on g itself — the event of :func:`first_crossing` for the quantities of
+    kinds "impact" and "taut" (no band rule at a start).  Anything closer to call (a graze, a
+    start below the band, a root at an end) is UNDECIDED: the caller searches as before."""
+    b0 = b
+    for _ in range(4):
+        if not b > a:
+            return UNDECIDED
+        h = b - a
+        g0, gm, g1 = (float(x) for x in g(np.array([a, a + 0.5 * h, b])))
+        c2 = 2.0 * (g0 - 2.0 * gm + g1)           # S(u) = g0 + c1 u + c2 u², u = (t − a)/h
+        c1 = g1 - g0 - c2
+        e = 2.0 * err(a, b)                         # the quadratic's error (1.25 × a reading's, rounded up)
+        if not g0 + tol > 2 * e:
+            return UNDECIDED
+        if _low(g0, c1, c2, 1.0) + tol > 2 * e:
+            return None if b == b0 else UNDECIDED
+        u_f = _first_root(c2, c1, g0 + tol)        # where S + tol turns negative
+        if u_f is None or not 0 < u_f <= 1:
+            return UNDECIDED
+        if e <= tol / 2:
+            break
+        b = a + h * min(1.0, u_f + max(16 * e / max(-(c1 + 2 * c2 * u_f), 1e-300), 1 / 16))
+    else:
+        return UNDECIDED
+    u_g = _first_root(c2, c1, g0)                  # S's own root before it
+    if u_g is None or not 0 < u_g <= u_f:
+        return UNDECIDED
+    slope_f, slope_g = c1 + 2 * c2 * u_f, c1 + 2 * c2 * u_g
+    if not (slope_f < 0 and slope_g < 0):
+        return UNDECIDED
+    w_f, w_g = 8 * e / -slope_f, 8 * e / -slope_g
+    x, r = a + h * (u_g - w_g), a + h * min(u_f + w_f, 1.0)
+    if not (a < x and _low(g0, c1, c2, u_g - w_g) + tol > 2 * e):
+        return UNDECIDED
+    gx, gr = (float(v) for v in g(np.array([x, r])))
+    if not (gx > 0 and gr + tol < 0):
+        return UNDECIDED
+    r_g = a + h * min(u_g + w_g, 1.0)
+    if float(g(np.array([r_g]))[0]) < 0:
+        r = r_g
+    return brent(lambda t: float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
+
+
+def _low(c0: float, c1: float, c2: float, u: float) -> float:
+    """The least value of c0 + c1 x + c2 x² over x in [0, u]."""
+    m = min(c0, c0 + c1 * u + c2 * u * u)
+    if c2 > 0 and 0 < -c1 / (2 * c2) < u:
+        m = min(m, c0 - c1 * c1 / (4 * c2))
+    return m
+
+
+def _first_root(c2: float, c1: float, c0: float) -> float | None:
+    """The smaller real root of c2 u² + c1 u + c0 where the quadratic goes from positive to
+    negative (c0 > 0: the first root in u > 0 with a negative slope), by the stable formula;
+    None when it has none."""
+    if c2 == 0:
+        return -c0 / c1 if c1 < 0 else None
+    disc = c1 * c1 - 4 * c2 * c0
+    if disc < 0:
+        return None
+    sq = disc ** 0.5
+    q = -0.5 * (c1 + (sq if c1 >= 0 else -sq))
+    roots = sorted(x for x in ((q / c2) if q != 0 else None, (c0 / q) if q != 0 else None) if x is not None)
+    down = [x for x in roots if x > 0 and c1 + 2 * c2 * x < 0]
+    return down[0] if down else None
 
 
 def _first_down(f, a: float, b: float, floor: float, cells: int) -> tuple[float, float] | None:

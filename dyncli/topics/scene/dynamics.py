@@ -12,6 +12,7 @@ proportional to that contact's own multiplier).  The multipliers λ are the join
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -24,6 +25,112 @@ from .elements import Element, Pin, PinBlock
 from .system import BodyData, Point, Stack
 
 EPS = float(np.finfo(float).eps)
+#: the most joint rows solved by the Schur complement in plain floats (:func:`schur_solve`; three
+#: only with the complement symmetric): beyond them LAPACK's LU of the whole matrix is cheaper
+#: (measured, docs/accuracy.md)
+SCHUR_ROWS = 3
+#: a pivot of the Schur complement below this part of its row's largest entry (the rows close
+#: to dependent: the complement's rounding ~ ε/PIVOT) sends the solve to the LU of the whole matrix
+PIVOT = 2.0 ** -10
+
+
+def schur_solve(minv: list, rows: list, cols: list, f: list, gam: list) -> tuple[list, list] | None:
+    """(q̈, λ) of M q̈ = f + Σ_k cols_k λ_k, rows q̈ = γ (M = diag(1/minv); at most SCHUR_ROWS
+    rows), in plain floats: λ from the Schur complement (:func:`complement_solve`)
+    W λ = γ − rows M⁻¹ f, then q̈ = M⁻¹ f + Σ_k (M⁻¹ cols_k) λ_k.  ``cols``: the rows themselves,
+    or with a sliding contact's friction column added to its normal row (−Jᵀ − Φ of the whole
+    matrix).  None where the complement is close to singular."""
+    mul = operator.mul
+    Mf = list(map(mul, minv, f))
+    if not rows:
+        return Mf, []
+    got = complement_solve(minv, rows, cols, [g - sum(map(mul, Ji, Mf)) for Ji, g in zip(rows, gam)])
+    if got is None:
+        return None
+    lam, Y = got
+    if len(lam) == 1:
+        l0, = lam
+        return [x + l0 * y for x, y in zip(Mf, Y[0])], lam
+    if len(lam) == 2:
+        l0, l1 = lam
+        return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, *Y)], lam
+    l0, l1, l2 = lam
+    return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, *Y)], lam
+
+
+def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list, list] | None:
+    """(x, Y) of W x = r, W = rows diag(minv) colsᵀ (one to three rows; Y = the lists minv ⊙ cols_k),
+    in plain floats: ``cols is rows`` (W symmetric positive definite) by W = L D Lᵀ, else (one or
+    two rows) by Gaussian elimination with partial pivoting.  None when a pivot is below PIVOT of
+    its row's largest entry of W (rows close to dependent, singular, or not finite), or for three
+    rows that are not symmetric."""
+    mul = operator.mul
+    if len(rows) == 3:              # L D Lᵀ written out (symmetric only: else the whole matrix's LU)
+        if cols is not rows:
+            return None
+        (J0, J1, J2), Y = rows, [list(map(mul, minv, c)) for c in rows]
+        Y0, Y1, Y2 = Y
+        w00, w01, w02 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2))
+        w11, w12, w22 = sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2))
+        a01, a02, a12 = abs(w01), abs(w02), abs(w12)
+        if not w00 > PIVOT * max(w00, a01, a02):
+            return None
+        l10, l20 = w01 / w00, w02 / w00
+        d1 = w11 - l10 * w01
+        if not d1 > PIVOT * max(w11, a01, a12):
+            return None
+        u21 = w12 - l20 * w01
+        l21 = u21 / d1
+        d2 = w22 - l20 * w02 - l21 * u21
+        if not d2 > PIVOT * max(w22, a02, a12):
+            return None
+        r0, r1, r2 = r
+        z1 = r1 - l10 * r0
+        x2 = (r2 - l20 * r0 - l21 * z1) / d2
+        x1 = z1 / d1 - l21 * x2
+        return [r0 / w00 - l10 * x1 - l20 * x2, x1, x2], Y
+    if len(rows) == 1:
+        Y0 = list(map(mul, minv, cols[0]))
+        w = sum(map(mul, rows[0], Y0))
+        if not (w != 0 and math.isfinite(w)):
+            return None
+        return [r[0] / w], [Y0]
+    (J0, J1), (C0, C1) = rows, cols
+    Y0, Y1 = list(map(mul, minv, C0)), list(map(mul, minv, C1))
+    w00, w01, w11 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J1, Y1))
+    r0, r1 = r
+    if cols is rows:                # L D Lᵀ: d0 = w00, l = w01 / w00, d1 = w11 − l w01
+        a01 = abs(w01)
+        if not w00 > PIVOT * max(w00, a01):
+            return None
+        el = w01 / w00
+        d1 = w11 - el * w01
+        if not d1 > PIVOT * max(w11, a01):
+            return None
+        x1 = (r1 - el * r0) / d1
+        return [r0 / w00 - el * x1, x1], [Y0, Y1]
+    got = solve2(w00, w01, sum(map(mul, J1, Y0)), w11, r0, r1)
+    return None if got is None else (list(got), [Y0, Y1])
+
+
+def solve2(a: float, b: float, c: float, d: float, r0: float, r1: float) -> tuple[float, float] | None:
+    """x of [[a, b], [c, d]] x = (r0, r1) by Gaussian elimination with partial pivoting; None
+    when a pivot is below PIVOT of its row's largest entry (or not finite)."""
+    if abs(c) > abs(a):             # the pivot row first
+        a, b, c, d, r0, r1 = c, d, a, b, r1, r0
+    if not abs(a) > PIVOT * max(abs(a), abs(b)):
+        return None
+    k = c / a
+    p = d - k * b
+    if not abs(p) > PIVOT * max(abs(c), abs(d)):
+        return None
+    x1 = (r1 - k * r0) / p
+    return (r0 - b * x1) / a, x1
+
+
+def _dot(a, b) -> float:
+    """Σ a_k b_k of two sequences of floats (lists: no array made)."""
+    return float(sum(map(operator.mul, a, b)))
 
 
 @dataclass
@@ -67,6 +174,11 @@ class Load:
 
     def generalized(self, q, v, t, n: int) -> tuple[np.ndarray, float, object]:
         """(generalized force, its power if non-conservative else 0, the reported value)."""
+        g, power, value = self.generalized_list(q, v, t, n)
+        return np.array(g, dtype=float), power, value
+
+    def generalized_list(self, q, v, t, n: int) -> tuple[list, float, object]:
+        """:meth:`generalized` with the force a list of n floats (q, v: lists or arrays)."""
         if self.kind in ("spring", "damper"):
             d1, d2, ln = self._d(q)
             if ln == 0:
@@ -78,16 +190,16 @@ class Load:
             else:
                 (pv1, pv2), (qv1, qv2) = P.vel_xy(q, v), Q.vel_xy(q, v)
                 T = self.c * (e1 * (pv1 - qv1) + e2 * (pv2 - qv2))
-            g = np.zeros(n)                       # −T e·∂(r_P − r_Q)/∂q
+            g = [0.0] * n                         # −T e·∂(r_P − r_Q)/∂q
             P.add_jac(g, q, -T * e1, -T * e2)
             Q.add_jac(g, q, T * e1, T * e2)
-            return g, (0.0 if self.kind == "spring" else float(g @ v)), T
-        g = np.zeros(n)
+            return g, (0.0 if self.kind == "spring" else _dot(g, v)), T
+        g = [0.0] * n
         if self.kind == "force":
             assert self.P is not None and self.F is not None, "a force has its point and its F(t)"
             F1, F2 = (float(c) for c in self.F(t))
             self.P.add_jac(g, q, F1, F2)
-            return g, float(g @ v), [F1, F2, 0.0]
+            return g, _dot(g, v), [F1, F2, 0.0]
         assert self.body is not None and self.M is not None, "a torque has its body and its M(t)"
         M = float(self.M(t))
         g[self.body.index[2]] = M
@@ -115,11 +227,16 @@ class SceneSystem:
                 m[b.index[2]] = b.inertia
         self.mass = m
         self._weights = None
+        self._winv = None               # 1 / weights() as a list (the projections in plain floats)
         self._pin_block = None          # (the elements' rows, their PinBlock) for the stacked forms
         self.linsolve = np.linalg.solve
         self.grav = np.zeros(self.n)
         for b in self.bodies:
             self.grav[b.index[1]] = -b.mass * self.g
+        self._grav_list = self.grav.tolist()
+        # the small solves in plain floats (:meth:`solve_lists`): every mass and inertia positive
+        minv = [1.0 / x if x > 0 else math.inf for x in m.tolist()]
+        self._minv = minv if all(map(math.isfinite, minv)) else None
         self._offsets()
 
     def use_lapack(self) -> None:
@@ -148,6 +265,8 @@ class SceneSystem:
         self._template[:n, :n] = np.diag(self.mass)
         self._friction = [i for i, e in enumerate(self.elements) if isinstance(e, (Contact, Rolls))]
         self._drives = [i for i, e in enumerate(self.elements) if e.kind == "drive"]
+        # whether an element watches a one-sided quantity (motion.watches: else no multiplier is read)
+        self.watching = any(type(e).watch is not Element.watch for e in self.elements)
 
     def refresh(self):
         """Recompute the row offsets after an element changed its rows (a contact's mode)."""
@@ -259,13 +378,16 @@ class SceneSystem:
     # ------------------------------------------------------------------ loads
     def applied(self, q, v, t) -> tuple[np.ndarray, float]:
         """Generalized applied force and the power of the non-conservative loads."""
-        f = self.grav.copy()
+        f, power = self.applied_list(q, v, t)
+        return np.array(f, dtype=float), power
+
+    def applied_list(self, q, v, t) -> tuple[list, float]:
+        """:meth:`applied` with the force a list of floats (q, v: lists or arrays)."""
+        f = self._grav_list.copy()
         power = 0.0
-        if not self.loads:
-            return f, power
         for ld in self.loads:
-            g, p, _ = ld.generalized(q, v, t, self.n)
-            f += g
+            g, p, _ = ld.generalized_list(q, v, t, self.n)
+            f = [a + b for a, b in zip(f, g)]
             power += p
         return f, power
 
@@ -287,24 +409,51 @@ class SceneSystem:
 
     def solve(self, q, v, t) -> tuple[np.ndarray, np.ndarray, float]:
         """(q̈, λ, power of the non-conservative loads incl. friction)."""
+        a, lam, power = self.solve_lists(q.tolist(), v.tolist(), t)
+        return np.array(a, dtype=float), np.array(lam, dtype=float), power
+
+    def solve_lists(self, q: list, v: list, t) -> tuple[list, list, float]:
+        """:meth:`solve` in plain floats (q, v: lists; q̈ and λ lists).  A small system whose
+        masses are all positive by the Schur complement of M (:func:`schur_solve`); a larger one,
+        or one whose joint rows are close to dependent there, by the LU of the whole matrix
+        (:meth:`kkt_matrix`, LAPACK)."""
         n = self.n
-        f, power = self.applied(q, v, t)
-        ql, vl = q.tolist(), v.tolist()
+        f, power = self.applied_list(q, v, t)
         rows, gam = [], []
         for e in self.elements:
             if e.rows:
-                r, g = e.kkt_lists(ql, vl, t)
+                r, g = e.kkt_lists(q, v, t)
                 rows += r
                 gam += g
-        A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
-        rhs = np.concatenate([f, gam])
-        try:
-            x = self.linsolve(A, rhs)
-        except np.linalg.LinAlgError:
-            raise NumericalError(f"the equations of motion are singular at t = {t:.6g} s (a massless body with a "
-                                 "free motion, or joints that lock each other)") from None
-        a, lam = x[:n], x[n:]
+        if len(rows) != self.m:         # an element changed its rows without a refresh
+            self._offsets()
+        got = None
+        if self._minv is not None and len(rows) <= SCHUR_ROWS:
+            got = schur_solve(self._minv, rows, self.force_columns(rows, q), f, gam)
+        if got is None:
+            A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
+            try:
+                x = self.linsolve(A, np.array(f + gam, dtype=float))
+            except np.linalg.LinAlgError:
+                raise NumericalError(f"the equations of motion are singular at t = {t:.6g} s (a massless body with a "
+                                     "free motion, or joints that lock each other)") from None
+            x = x.tolist()
+            got = x[:n], x[n:]
+        a, lam = got
         return a, lam, self._power(power, lam, q, v)
+
+    def force_columns(self, rows: list, q) -> list:
+        """The generalized force per unit multiplier, row by row: the row itself, or with a
+        sliding contact's friction column added (−Jᵀ − Φ of :meth:`kkt_matrix`); ``rows``
+        itself when no friction column is active."""
+        cols = rows
+        for i in self._friction:
+            col = self.elements[i].friction_column(q)
+            if col is not None:     # the multiplier's force: (J_o + col)ᵀ λ_o
+                o = self.offsets[i]
+                cols = cols.copy() if cols is rows else cols
+                cols[o] = [x + y for x, y in zip(rows[o], col.tolist())]
+        return cols
 
     def _power(self, power: float, lam, q, v) -> float:
         """The applied loads' power plus the kinetic friction's and the drives'."""
@@ -326,6 +475,10 @@ class SceneSystem:
         all of them (:meth:`constant_matrix`, or one q held): the right-hand sides stacked and
         solved in one call, each by the same LU as :meth:`solve` (equal to it bit for bit)."""
         n = self.n
+        if self._minv is not None and self.m <= SCHUR_ROWS:
+            got = self._schur_many(states)
+            if got is not None:
+                return got
         q0 = states[0][0]
         A = self.kkt_matrix(q0, self.jac(q0))
         R = np.empty((len(states), A.shape[0], 1))
@@ -344,6 +497,32 @@ class SceneSystem:
             raise NumericalError(f"the equations of motion are singular at t = {states[0][2]:.6g} s (a massless body "
                                  "with a free motion, or joints that lock each other)") from None
         return [(x[:n], x[n:], self._power(P, x[n:], q, v)) for (q, v, _t), x, P in zip(states, X, powers)]
+
+    def _schur_many(self, states) -> list | None:
+        """:meth:`solve_many` by :func:`schur_solve` on columns: each state's force and γ a
+        column entry (numpy's elementwise operations: the same doubles as the one-state lists,
+        operation by operation); None where the complement is close to singular."""
+        q0, v0, t0 = states[0]
+        ql0, vl0 = q0.tolist(), v0.tolist()
+        rows = []
+        for e in self.elements:
+            if e.rows:
+                rows += e.kkt_lists(ql0, vl0, t0)[0]
+        F, G, powers = [], [], []
+        for q, v, t in states:
+            ql, vl = q.tolist(), v.tolist()
+            f, power = self.applied_list(ql, vl, t)
+            F.append(f)
+            G.append(self._gamma(ql, vl, t))
+            powers.append(power)
+        k = len(states)
+        got = schur_solve(self._minv, rows, self.force_columns(rows, ql0), list(np.array(F).reshape(k, self.n).T),
+                          list(np.array(G, dtype=float).reshape(k, len(rows)).T))
+        if got is None:
+            return None
+        A = np.array(got[0]).reshape(self.n, k).T
+        L = np.array(got[1], dtype=float).reshape(len(rows), k).T
+        return [(a, lam, self._power(P, lam, q, v)) for (q, v, _t), a, lam, P in zip(states, A, L, powers)]
 
     # ------------------------------------------------------------------ energy
     def kinetic(self, v) -> float:
@@ -371,7 +550,6 @@ class SceneSystem:
     def project_position(self, q, t, iters: int = 4) -> np.ndarray:
         if self.m == 0:
             return q
-        Winv = 1.0 / self.weights()
         ql = q.tolist()
         tol = 8 * EPS * max(1.0, *map(abs, ql))
         for _ in range(iters):
@@ -380,19 +558,42 @@ class SceneSystem:
                 ph += e.phi_list(ql, t)
             if all(abs(x) <= tol for x in ph):      # on the joints to rounding: Newton has converged
                 break
-            J = self._jac(ql)
-            S = (J * Winv) @ J.T
-            q = q - Winv * (J.T @ self.linsolve(S, np.array(ph)))
-            ql = q.tolist()
-        return q
+            ql = self._least_step(ql, self._jac_rows(ql), ph)
+        return np.array(ql, dtype=float)
 
     def project_velocity(self, q, v, t) -> np.ndarray:
         if self.m == 0:
             return v
-        Winv = 1.0 / self.weights()
-        J = self._jac(q.tolist())
-        r = J @ v + self.phi_t(t)
-        if not np.any(r):
+        J = self._jac_rows(q.tolist())
+        vl = v.tolist()
+        r = []
+        for e in self.elements:
+            r += e.phi_t_list(t)
+        r = [sum(map(operator.mul, Ji, vl)) + x for Ji, x in zip(J, r)]
+        if not any(r):
             return v
-        S = (J * Winv) @ J.T
-        return v - Winv * (J.T @ self.linsolve(S, r))
+        return np.array(self._least_step(vl, J, r), dtype=float)
+
+    def _jac_rows(self, ql) -> list:
+        rows = []
+        for e in self.elements:
+            if e.rows:
+                rows += e.jac_list(ql)
+        return rows
+
+    def _least_step(self, x: list, J: list, r: list) -> list:
+        """x − W⁻¹ Jᵀ (J W⁻¹ Jᵀ)⁻¹ r (W: :meth:`weights`): the step of least mass-weighted size
+        that takes the rows' values J x by −r; up to SCHUR_ROWS rows by :func:`complement_solve` in
+        plain floats, more (or rows close to dependent) by LAPACK as the whole solve."""
+        if self._winv is None:
+            self._winv = (1.0 / self.weights()).tolist()
+        got = complement_solve(self._winv, J, J, r) if len(J) <= SCHUR_ROWS else None
+        if got is not None:
+            mu, Y = got
+            for mk, Yk in zip(mu, Y):
+                x = [a - mk * y for a, y in zip(x, Yk)]
+            return x
+        Winv = 1.0 / self.weights()
+        Ja = np.array(J, dtype=float).reshape(len(J), self.n)
+        S = (Ja * Winv) @ Ja.T
+        return (np.array(x) - Winv * (Ja.T @ self.linsolve(S, np.array(r, dtype=float)))).tolist()

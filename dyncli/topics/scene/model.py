@@ -9,6 +9,7 @@ solver, which reports each refusal at the field it concerns.
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Any, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, model_validator
@@ -17,6 +18,8 @@ from dyncli.errors import InputError
 from dyncli.fields import Expr, ExprField, Num, ProblemBase, StrictModel, Times, check_times
 
 TIME = ("t",)
+#: the largest starting angle of a body [rad] (~160,000 turns; a double holds it to ~1e-10 rad)
+MAX_ANGLE = 1e6
 
 
 def _at(base: str, field: str | None) -> str:
@@ -107,6 +110,10 @@ class Body(StrictModel):
         for k, p in self.points.items():
             if len(p) != 2:
                 raise InputError(f"expected [p1, p2], got {len(p)} numbers", _at(base, f"points.{k}"))
+        if self.angle is not None and not abs(self.angle) <= MAX_ANGLE:
+            raise InputError(f"{self.angle:g} rad is held by a double only to ±{math.ulp(self.angle) / 2:g} rad: the "
+                             "joints cannot be met to rounding; give the angle within a few turns (its value "
+                             "modulo 2π)", _at(base, "angle"))
         if self.shape == "point":
             for name in ("length", "radius", "size", "I"):
                 if getattr(self, name) is not None:

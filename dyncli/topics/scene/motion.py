@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import bisect
 import math
+from typing import Any
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -84,11 +85,27 @@ class Trajectory:
 
     def piece(self, t: float) -> Piece:
         """The piece holding t (at a phase boundary: the one that ends there, before a jump)."""
+        return self.pieces[self.index(t)]
+
+    def index(self, t: float) -> int:
+        """The index in ``pieces`` of :meth:`piece`'s piece."""
         ps = self.pieces
         key = (id(ps), len(ps), ps[-1].t_b if ps else None)
         if self._ends[0] != key:        # the pieces' ends, kept while the pieces stay as they are
             self._ends = (key, [p.t_b for p in ps])
-        return ps[min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)]
+        return min(bisect.bisect_left(self._ends[1], t), len(ps) - 1)
+
+    def increments(self, col: int) -> np.ndarray:
+        """Component ``col`` of the state (unprojected) at each piece's end minus at its start,
+        for every DOP853 step in one stacked evaluation (bit for bit each step's own calls);
+        NaN for any other piece."""
+        dense = self._dense()
+        out = np.full(len(self.pieces), np.nan)
+        on = np.nonzero(dense.row >= 0)[0]
+        if on.size and dense.stack is not None:
+            rows = dense.row[on]
+            out[on] = dense.stack(rows, dense.t_b[on])[:, col] - dense.stack(rows, dense.t_a[on])[:, col]
+        return out
 
     def velocities(self, ts) -> np.ndarray:
         """q̇ at many times, (len(ts), n): an ODE step's interpolant evaluated once for all its
@@ -96,6 +113,8 @@ class Trajectory:
         the motion such as the distance); an exact piece time by time through its own function."""
         ts = np.asarray(ts, dtype=float)
         n = self.system.n
+        if ts.size <= FEW and (few := self._few_rates(ts.ravel().tolist())) is not None:
+            return few
         if ts.size == 1:                    # one time (a minimiser's probe): no grouping
             p = self.piece(float(ts[0]))
             if p.batch is not None:
@@ -104,12 +123,16 @@ class Trajectory:
         out = np.empty((ts.size, n))
         dense = self._dense()
         which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
+        if ts.size and which[0] == which[-1] and dense.row[which[0]] < 0 and np.all(which == which[0]):
+            p = self.pieces[int(which[0])]    # one exact piece (a minimiser's probes): its rates at once
+            if p.many is not None and p.stack is None:
+                set_modes(self.system, p.modes)
+                return np.asarray(p.many(np.clip(ts, p.t_a, p.t_b)), dtype=float).reshape(ts.size, n)
         if dense.stack is not None:         # the DOP853 steps: every time in one stacked evaluation
             on = dense.row[which] >= 0
             if np.any(on):
                 k = which[on]
-                y = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
-                out[on] = y[:, n:2 * n]
+                out[on] = self._stacked_rates(dense, dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))
                 which = np.where(on, -1, which)
         stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
         for k in sorted(set(which.tolist()) - {-1}):    # (np.unique would import numpy.ma: 13 ms cold)
@@ -122,7 +145,7 @@ class Trajectory:
                 out[sel] = y[n:2 * n].T
             elif p.many is not None:
                 set_modes(self.system, p.modes)
-                out[sel] = p.many([min(max(float(ts[i]), p.t_a), p.t_b) for i in sel])
+                out[sel] = p.many(np.clip(ts[sel], p.t_a, p.t_b))
             else:                           # an exact piece: its own function, the modes set once
                 set_modes(self.system, p.modes)
                 for i in sel:
@@ -133,6 +156,83 @@ class Trajectory:
             fns = [p.fn for part, p in parts for _ in part]
             out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
+
+    def coordinates(self, ts) -> np.ndarray:
+        """(q, q̇) at many times, (2n, len(ts)): an ODE step's interpolant as integrated
+        (unprojected), the DOP853 steps' times all in one stacked evaluation (bit for bit each
+        step's own call) and any other step's once per step on an array; any other piece's own
+        state (:meth:`state`, after :meth:`prefetch`)."""
+        ts = np.asarray(ts, dtype=float).reshape(-1)
+        n = self.system.n
+        out = np.empty((2 * n, ts.size))
+        if not ts.size:
+            return out
+        self.prefetch(ts)
+        dense = self._dense()
+        which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
+        if dense.stack is not None:
+            on = dense.row[which] >= 0
+            if np.any(on):
+                k = which[on]
+                out[:, on] = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))[:, :2 * n].T
+                which = np.where(on, -1, which)
+        for k in sorted(set(which.tolist()) - {-1}):
+            sel = np.nonzero(which == k)[0]
+            p = self.pieces[k]
+            if p.batch is not None:
+                y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
+                out[:, sel] = y[:2 * n]
+            else:
+                for i in sel:
+                    q, v, _ = self.state(float(ts[i]))
+                    out[:n, i], out[n:, i] = q, v
+        return out
+
+    def _stacked_rates(self, dense, rows, ts) -> np.ndarray:
+        """dop853.DenseStack's evaluation on the q̇ components only (the same operations on each
+        element: bit for bit its numbers), its coefficients gathered once per call."""
+        if dense.rates is None:
+            n, st = self.system.n, dense.stack
+            dense.rates = (np.ascontiguousarray(st.F[:, ::-1, n:2 * n]), np.ascontiguousarray(st.y_old[:, n:2 * n]))
+        F, y_old = dense.rates
+        Fw = F[rows]
+        x = ((ts - dense.stack.t_old[rows]) / dense.stack.h[rows])[:, None]
+        x1 = 1 - x
+        y = np.zeros((len(ts), F.shape[2]))
+        for i in range(F.shape[1]):
+            y += Fw[:, i]
+            y *= x if i % 2 == 0 else x1
+        y += y_old[rows]
+        return y
+
+    def _few_rates(self, ts: list[float]) -> np.ndarray | None:
+        """q̇ at a few times (a minimiser's probes) that all lie on DOP853 steps, in plain floats:
+        each step's interpolant by the operations of its own call (DenseOutput: (y + F_j) × x or
+        × (1 − x), highest power first, then + y_old), on its q̇ components only, so the same
+        numbers without the arrays' cost per call; None when a time lies on another piece."""
+        dense = self._dense()
+        if dense.stack is None:             # no DOP853 step at all
+            return None
+        n, out = self.system.n, []
+        for t in ts:
+            k = self.index(t)
+            got = dense.floats.get(k)
+            if got is None:
+                r = int(dense.row[k])
+                if r < 0:
+                    return None
+                o: Any = self.pieces[k].batch         # (a DOP853 step's DenseOutput)
+                got = dense.floats[k] = (float(o.t_old), float(o.h), o.F[::-1, n:2 * n].tolist(),
+                                         o.y_old[n:2 * n].tolist(), float(dense.t_a[k]), float(dense.ends[k]))
+            t_old, h, F, y_old, a, b = got
+            x = (min(max(t, a), b) - t_old) / h
+            x1 = 1 - x
+            y = [0.0] * n
+            for i, f in enumerate(F):
+                m = x if i % 2 == 0 else x1
+                y = [(u + w) * m for u, w in zip(y, f)]
+            out.append([u + w for u, w in zip(y, y_old)])
+        return np.array(out, dtype=float).reshape(len(ts), n)
 
     def _dense(self):
         """The pieces' ends, and the DOP853 steps among them stacked for :meth:`velocities` (made
@@ -156,6 +256,8 @@ class Trajectory:
     def prefetch(self, ts) -> None:
         """The states at the times ``ts`` that a search is about to read one by one, made together
         where the pieces can (Piece.states: the kinematics route) and kept for :meth:`state`."""
+        if not any(p.states is not None for p in self.pieces):
+            return
         groups: dict = {}
         for t in ts:
             t = float(t)
@@ -185,6 +287,10 @@ class Trajectory:
         return got
 
 
+#: how many times :meth:`Trajectory.velocities` evaluates in plain floats (a minimiser's probes)
+FEW = 8
+
+
 @dataclass
 class _Stacked:
     key: tuple                  # (the list, its length, the last piece's end) when made
@@ -192,6 +298,8 @@ class _Stacked:
     t_a: np.ndarray             # each piece's t_a
     row: np.ndarray             # each piece's row in ``stack`` (-1: not a DOP853 step)
     stack: object               # dop853.DenseStack of the DOP853 steps, or None
+    floats: dict = field(default_factory=dict)  # piece index -> its step's q̇ interpolant in plain floats
+    rates: tuple | None = None  # the DOP853 steps' q̇ coefficients (highest power first) and q̇ at their starts
 
     @property
     def t_b(self) -> np.ndarray:
@@ -216,11 +324,11 @@ def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     """(joint, what, g) of every one-sided quantity (event where g crosses 0 downwards), and
     ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event);
     ``lam``: the multipliers at (q, v, t) when already solved for."""
-    if lam is None:
+    if lam is None and system.watching:     # (joints that watch nothing read no multiplier)
         _, lam, _ = system.solve(q, v, t)
     out = []
     for i, e in enumerate(system.elements):
-        for what, g in e.watch(system.lam_of(lam, i), q, v, t):
+        for what, g in e.watch(None if lam is None else system.lam_of(lam, i), q, v, t):
             out.append((e.name, what, g))
     for ld in system.loads:
         if ld.kind == "spring" and ld.one_sided:
@@ -251,11 +359,16 @@ class OdeRoute:
         n = system.n
         self.n = n
 
-        def rhs(t, y):
-            q, v = y[:n], y[n:2 * n]
-            a, lam, P = system.solve(q, v, t)
+        solve = system.solve_lists
+
+        def rhs(t, y):                      # in plain floats: (q̇, q̈, P) a list, as the stepper takes it
+            y = y.tolist()
+            v = y[n:2 * n]
+            a, lam, P = solve(y[:n], v, t)
             self.lam = lam                  # the multipliers of the last evaluation (the step's end)
-            return np.concatenate([v, a, (P,)])
+            v += a
+            v.append(P)
+            return v
 
         self.rhs = rhs
         self.lam = None
@@ -296,12 +409,12 @@ class OdeRoute:
             solver.y = yp
             lam = None
             if hasattr(solver, "f"):
-                solver.f = self.rhs(t_new, yp)
-                lam = self.lam
+                solver.f = np.array(self.rhs(t_new, yp))
+                lam = np.array(self.lam)
             dense = _ProjectedStep(ode.dense_output(solver), self, t_new, yp.copy())
             w_new = watches(s, yp[:n], yp[n:2 * n], t_new, lam)
             # a speed's rounding is that of the step's speeds (from rest, the phase's start has none)
-            v_step = max(float(np.max(np.abs(y[n:2 * n]), initial=0.0)), float(np.max(np.abs(yp[n:2 * n]), initial=0.0)))
+            v_step = max(map(abs, y[n:2 * n].tolist() + yp[n:2 * n].tolist()), default=0.0)
             tol["sticks"] = max(tol0, 64 * EPS * v_step)
             screen["sticks"] = tol["sticks"] * (1.0 + rtol / (4 * EPS))
             hit = self._first_crossing(w_old, w_new, dense, t_old, t_new, skip, (tol, screen), t_old == t0)
@@ -330,6 +443,8 @@ class OdeRoute:
         within the step's error of the joints; the state there projected): a contact force that
         dips below 0 and back inside one step is an event.  ``tols``: each quantity's rounding,
         and the screen's (with the step's error)."""
+        if not w_old:                   # nothing watched (bilateral joints, no one-sided spring)
+            return None
         s, n = self.system, self.n
         tol, screen = tols
         cache: dict[float, list[float]] = {t_old: [g for _j, _w, g in w_old], t_new: [g for _j, _w, g in w_new]}

@@ -170,6 +170,9 @@ def _work(scene, traj, route):
             if p.batch is not None:
                 return float(p.batch(b)[2 * s.n]) - float(p.batch(p.t_a)[2 * s.n])
             return p.fn(b)[2] - p.fn(p.t_a)[2]
+        motion.set_modes(s, p.modes)
+        if not _powered(s):             # the power is 0.0 at every state: so is its integral
+            return 0.0
         mid = 0.5 * (p.t_a + b)
         q, v, _ = p.fn(mid)
         # each piece to the rounding of the energies it moves (an exact motion: only the
@@ -188,18 +191,37 @@ def _work(scene, traj, route):
         return np.array([P for _a, _lam, P in s.solve_many(states)])
 
     cum = [0.0]                         # W_nc over the whole pieces before piece k, built as asked
+    steps = []                          # W_nc across each whole DOP853 step (one stacked evaluation)
+
+    def whole(j: int) -> float:
+        p = traj.pieces[j]
+        if p.route == "ode" and p.t_b > p.t_a:
+            if not steps:
+                steps.append(traj.increments(2 * s.n))
+            if not np.isnan(steps[0][j]):
+                return float(steps[0][j])
+        return piece(p, p.t_b)
 
     def W(t, _W):
         if t == traj.t0:
             return 0.0
-        k = traj.pieces.index(traj.piece(t))
+        k = traj.index(t)
         while len(cum) <= k:
-            cum.append(cum[-1] + piece(traj.pieces[len(cum) - 1], traj.pieces[len(cum) - 1].t_b))
+            cum.append(cum[-1] + whole(len(cum) - 1))
         total = cum[k] + piece(traj.pieces[k], t)
         motion.set_modes(s, traj.pieces[k].modes)
         return total - sum(im.energy_loss for im in traj.impacts if im.t < t)
 
     return W
+
+
+def _powered(s) -> bool:
+    """Whether the current joint set has a non-conservative power at all (SceneSystem.solve's
+    P): a force, couple or damper, a drive, or a made contact sliding with kinetic friction;
+    without one, P is exactly 0.0 at every state (34.20)."""
+    return (any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
+            or any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip") and e.mu_k
+                   for e in s.elements if e.rows))
 
 
 def holding(s, q) -> list[str]:
@@ -210,9 +232,7 @@ def holding(s, q) -> list[str]:
     friction ties the scene to the ground along e_i."""
     made = [e for e in s.elements if e.rows]
     out = []
-    if (not any(ld.kind in ("damper", "force", "torque") for ld in s.loads)
-            and not any(e.kind == "drive" or isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
-                        and e.mu_k for e in made)):
+    if not _powered(s):
         out.append("E")
     J = s.jac(q)
     on_curve = any(getattr(getattr(e, "surface", None), "curved", False) for e in made)

@@ -154,18 +154,9 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
 
     def coordinates(ts) -> np.ndarray:
         """(q, q̇) at many times, (2n, len(ts)): an ODE step's interpolant as integrated (a
-        polynomial, within the step's error of the joints: smooth to rounding, and one call per
-        step), any other piece's own state."""
-        out = np.empty((2 * n, len(ts)))
-        traj.prefetch(ts)               # (the kinematics route's states, made together)
-        for j, t in enumerate(ts):
-            p = traj.piece(t)
-            if p.batch is not None:
-                out[:, j] = np.asarray(p.batch(min(max(t, p.t_a), p.t_b)), dtype=float).reshape(-1)[:2 * n]
-            else:
-                q, v, _ = traj.state(t)
-                out[:n, j], out[n:, j] = q, v
-        return out
+        polynomial, within the step's error of the joints: smooth to rounding; the times of all
+        the steps in one stacked evaluation), any other piece's own state."""
+        return traj.coordinates(ts)
 
     def values(paths, ts):
         ts = [float(t) for t in np.atleast_1d(np.asarray(ts, dtype=float))]

@@ -16,6 +16,7 @@ Routes (``route`` and ``method``), the cheapest that is exact, decided from the 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -166,9 +167,21 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
     for e in s.elements:
         if e.kind == "drive":
             vals = np.array([e.f(t)[0] for t in fine])
-            step = 0.05 if s.names[e.index].startswith("angle.") else 0.02 * size
-            pieces = max(pieces, int(np.sum(np.abs(np.diff(vals))) / step) + 1)
-    return np.linspace(0.0, t_end, min(pieces, 20_000) + 1)
+            angle = s.names[e.index].startswith("angle.")
+            step = 0.05 if angle else 0.02 * size
+            travel = float(np.sum(np.abs(np.diff(vals))))
+            need = travel / step + 1
+            if not need <= KIN_PIECES:         # (a longer piece could leave the branch unseen)
+                unit = "rad" if angle else "m"
+                raise NumericalError(f"the drive {e.name!r} moves {travel:.3g} {unit} by t = {t_end:.6g} s: the "
+                                     f"kinematics follows at most {KIN_PIECES} pieces of {step:.3g} {unit} "
+                                     f"({KIN_PIECES * step:.3g} {unit}); shorten t_end (or the times asked)")
+            pieces = max(pieces, int(need))
+    return np.linspace(0.0, t_end, pieces + 1)
+
+
+#: the most pieces the kinematics route continues its positions over
+KIN_PIECES = 20_000
 
 
 def _position(s, q, t, depth: int = 0):
@@ -435,36 +448,60 @@ def _closed_form(s, traj, t0, q0, v0, t_end):
     if kind is None:
         return None
     along = None
+    quadratic = kind[0] == "constant"           # constant accelerations: q(t) a quadratic
     if kind[0] == "constant":
         a = s.solve(q0, v0, t0)[0]
 
         def fn(t):
             tau = t - t0
             return q0 + v0 * tau + 0.5 * a * tau * tau, v0 + a * tau, 0.0
+
+        def many(ts):                   # fn's q̇ at many times, the same operations on arrays
+            tau = np.asarray(ts, dtype=float)[:, None] - t0
+            return v0[None, :] + a[None, :] * tau
     else:
         N, i = along = kind[1]
         has_k, has_c = motion.along(s, q0, N)
         lin = _linear(s, q0, N, i, has_k, has_c)
         s_a, sd_a = float(q0[i]), float(v0[i])
+        quadratic = lin.A1 == 0 and lin.A2 == 0
 
         def fn(t):
             sv, sdv = lin.motion(t - t0, s_a, sd_a)
             return q0 + N * (sv - s_a), N * sdv, 0.0
-    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along))
+
+        def many(ts):                   # fn's q̇ at many times (the rate alone: no positions made)
+            if lin.A1 == 0 and lin.A2 == 0:         # Linear1.motion's ṡ on an array, the same operations
+                return (sd_a + lin.A0 * (np.asarray(ts, dtype=float) - t0))[:, None] * N[None, :]
+            return np.array([lin.motion(t - t0, s_a, sd_a)[1] for t in ts])[:, None] * N[None, :]
+    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many))
     traj.method = "closed-form"
-    return _first_event(s, traj, len(traj.pieces) - 1, t_end)
+    return _first_event(s, traj, len(traj.pieces) - 1, t_end, quadratic)
 
 
-def _first_event(s, traj, k0: int, t_end: float):
+def constant_forces(s) -> bool:
+    """Whether the joints' forces are one constant over a closed-form phase of the current joint
+    set, decided from the structure: every made row linear (one matrix, SceneSystem.constant_matrix:
+    constant Jacobian and friction columns, no J̇ q̇ term), nothing driven, and every load a
+    constant force or couple (gravity's included) at a point that does not turn with its body —
+    the equations M q̈ − Jᵀ λ = f, J q̈ = 0 then have one right-hand side at every state, so
+    λ (the normal forces, the tensions, the friction margins μ_s N ∓ F) does not change."""
+    return (s.constant_matrix() and not any(e.kind == "drive" for e in s.elements)
+            and all(ld.kind in ("force", "torque") and ld.constant
+                    and not (ld.kind == "force" and ld.P.turns_with_body) for ld in s.loads))
+
+
+def _first_event(s, traj, k0: int, t_end: float, quadratic: bool = False):
     """The first event on the exact pieces from index k0 (:func:`_piece_event`: decided by the
-    sign analysis of each watched quantity, not by samples); the pieces are cut there.  Returns
+    sign analysis of each watched quantity, not by samples; ``quadratic``: the pieces' positions
+    are quadratics in t, constant accelerations); the pieces are cut there.  Returns
     (t, q, v, hit)."""
     for k in range(k0, len(traj.pieces)):
         p = traj.pieces[k]
         if p.t_b <= p.t_a:
             continue
         motion.set_modes(s, p.modes)
-        got = _piece_event(s, p)
+        got = _piece_event(s, p, quadratic)
         if got is not None:
             p.t_b = got[0]
             del traj.pieces[k + 1:]
@@ -474,7 +511,27 @@ def _first_event(s, traj, k0: int, t_end: float):
     return t_end, q, v, None
 
 
-def _piece_event(s, p):
+def _affine_watches(s, q, v, t) -> list[bool]:
+    """Per watched quantity (motion.watches' order): whether it is affine in the positions by
+    the structure of its joint — a point that does not turn with its body, or a rolling body's
+    centre, over a line without ends (its gap, "impact"), a cord whose runs are linear (a slack
+    run's gap, "taut").  Over constant accelerations such a quantity is a quadratic in t."""
+    from .contacts import Contact, Rolls
+    from .elements import Cord
+
+    def affine(e, what: str) -> bool:
+        if type(e) is Contact:
+            return what == "impact" and not e.P.turns_with_body and e.surface.length is None
+        if type(e) is Rolls:
+            return what == "impact" and e.surface.length is None
+        return type(e) is Cord and what == "taut" and e.linear
+
+    lam = s.solve(q, v, t)[1]
+    out = [affine(e, what) for i, e in enumerate(s.elements) for what, _g in e.watch(s.lam_of(lam, i), q, v, t)]
+    return out + [False for ld in s.loads if ld.kind == "spring" and ld.one_sided]
+
+
+def _piece_event(s, p, quadratic: bool = False):
     """The first event on one exact piece (closed form, quadrature, or held at rest under loads
     that change in time): each watched quantity's first crossing (crossing.first_crossing, by
     sign analysis, not samples).  The span is searched in windows: held at rest (loads that are
@@ -483,8 +540,13 @@ def _piece_event(s, p):
     cells); each window 16 times wider than the last (all_roots resolves a cell to 2^-48 of its
     width: a period of 1 s is not lost in a window of 1e300 s).  Where the joint rows have one
     matrix over the piece, the states of a cell are solved in one stacked call
-    (SceneSystem.solve_many: the same numbers as one solve each).  The solve's CPU budget bounds
-    the search.  Returns (t, joint, what) or None."""
+    (SceneSystem.solve_many: the same numbers as one solve each).  In a closed form whose joint
+    forces are one constant by structure (:func:`constant_forces`), a force off its band (more
+    than twice its rounding from 0) has no crossing and is not searched; over constant
+    accelerations (``quadratic``) a gap affine in the positions (:func:`_affine_watches`) is a
+    quadratic in t, its crossing decided from the quadratic (crossing.quadratic_crossing),
+    searched as before where that is too close to call.  The solve's CPU budget bounds the
+    search.  Returns (t, joint, what) or None."""
     from dyncli import cputime
 
     cache: dict[float, list[float]] = {}
@@ -504,20 +566,48 @@ def _piece_event(s, p):
         return np.array([cache[t][j] for t in ts])
 
     q, v, _ = p.fn(p.t_a)
-    tol = crossing.rounding(s, q, v, p.t_a, p.fn(p.t_b)[1])
+    q_b, v_b, _ = p.fn(p.t_b)
+    tol = crossing.rounding(s, q, v, p.t_a, v_b)
+    at_a = motion.watches(s, q, v, p.t_a)
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
-    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(motion.watches(s, q, v, p.t_a))
+    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(at_a)
                if not (what == "switch" and p.route == "statics")]
+    if p.route == "closed-form" and constant_forces(s):
+        # the multipliers are one constant over the piece: a force off its band has no crossing
+        # (the piece's end read as a check of the structure; where it is beyond the doubles, the
+        # search below decides as before)
+        try:
+            at_b = motion.watches(s, q_b, v_b, p.t_b)
+        except NumericalError:
+            at_b = None
+        if at_b is not None:
+            watched = [(j, joint, what) for j, joint, what in watched
+                       if not (what in crossing.FORCES and abs(at_a[j][2]) > 2 * tol[what]
+                               and abs(at_b[j][2] - at_a[j][2]) <= tol[what])]
+            if not watched:
+                return None
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
+    affine = _affine_watches(s, q, v, p.t_a) if quadratic and p.route == "closed-form" else [False] * len(at_a)
+    L = tol["impact"] / (64 * EPS)              # the lengths' scale of their rounding
+
+    def reading(a: float, b: float) -> float:
+        """The rounding of one reading of an affine gap over [a, b]: of the largest coordinate."""
+        return 4 * EPS * max([L] + [float(np.max(np.abs(p.fn(t)[0]), initial=0.0)) for t in (a, 0.5 * (a + b), b)])
+
     lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
     while lo < p.t_b:                           # window by window, every watched quantity in each
         hi = min(p.t_b, lo + width)
         best = None
         for j, joint, what in watched:
-            got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, hi if best is None else best[0], what,
-                                          tol[what], start=lo == p.t_a, cells=16 if held else 1)
+            end = hi if best is None else best[0]
+            got: Any = crossing.UNDECIDED
+            if affine[j]:
+                got = crossing.quadratic_crossing(lambda ts, j=j: column(j, ts), lo, end, tol[what], reading)
+            if got == crossing.UNDECIDED:
+                got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, end, what, tol[what],
+                                              start=lo == p.t_a, cells=16 if held else 1)
             if got is not None:
                 best = (got, joint, what)
         if best is not None:

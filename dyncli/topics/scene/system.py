@@ -8,6 +8,7 @@ and acceleration a = ẍ + α e3 × Q p − ω² Q p (14.8).  Nothing here knows
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -54,19 +55,21 @@ class Point:
     def pos(self, q) -> np.ndarray:
         return np.array(self.xy(q), dtype=float)
 
-    def kin(self, q, v) -> tuple:
-        """(r1, r2, v1, v2, b1, b2, arm) in plain floats, the arm Q(θ) p computed once (None for a
-        point that does not turn): what xy, vel_xy and bias_xy give, by the same operations."""
+    def kin(self, q: list, v: list) -> tuple:
+        """(r1, r2, v1, v2, b1, b2, arm) in plain floats (q, v: lists of floats), the arm Q(θ) p
+        computed once (None for a point that does not turn): what xy, vel_xy and bias_xy give,
+        by the same operations."""
         b = self.body
         if b is None:
             return float(self.p[0]), float(self.p[1]), 0.0, 0.0, 0.0, 0.0, None
         i = b.index
-        x1, x2, v1, v2 = float(q[i[0]]), float(q[i[1]]), float(v[i[0]]), float(v[i[1]])
-        if b.inertia is not None and (self.p[0] or self.p[1]):
-            a1, a2 = self._arm(float(q[i[2]]))
-            w = float(v[i[2]])
-            return x1 + a1, x2 + a2, v1 - w * a2, v2 + w * a1, -w * w * a1, -w * w * a2, (a1, a2)
-        return x1, x2, v1, v2, 0.0, 0.0, None
+        if self.turns_with_body:
+            th, w = q[i[2]], v[i[2]]
+            c, s = math.cos(th), math.sin(th)
+            p1, p2 = self.p
+            a1, a2 = c * p1 - s * p2, s * p1 + c * p2
+            return q[i[0]] + a1, q[i[1]] + a2, v[i[0]] - w * a2, v[i[1]] + w * a1, -w * w * a1, -w * w * a2, (a1, a2)
+        return q[i[0]], q[i[1]], v[i[0]], v[i[1]], 0.0, 0.0, None
 
     def add_jac_arm(self, row, arm, w1: float, w2: float) -> None:
         """:meth:`add_jac` with the arm of :meth:`kin` (not computed again)."""
@@ -232,7 +235,7 @@ class Point:
         w = V[:, self.body.index[2]]
         return -w * w * a[0], -w * w * a[1]
 
-    @property
+    @functools.cached_property
     def turns_with_body(self) -> bool:
         """True when r depends on the body's angle (a rigid body's point off its centre)."""
         return self.body is not None and self.body.rigid and (self.p[0] != 0 or self.p[1] != 0)

@@ -224,7 +224,10 @@ def report(p: Setup, res, omega_n, zeta) -> None:
         res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
 
-    motion = _Motion(resp, odo, t_end, breaks, 1 if exact else None, monotone=exact and not capped)
+    # a capped grid (far more turning points than cells) is read as monotone between its breaks: the
+    # answers are the grid's, as the warning says (a search for dips inside each of 20,000 cells that
+    # each hold many periods cost seconds for nothing better)
+    motion = _Motion(resp, odo, t_end, breaks, 1 if exact or capped else None, monotone=exact or capped)
     at = motion.at          # (resp.at, or a free vibration's with its constants hoisted: the same doubles)
 
     def state(t: float) -> dict:

@@ -31,8 +31,12 @@ from dataclasses import dataclass
 from . import closed_form as cf
 
 _EPS = 2.220446049250313e-16
-#: the most cells a search examines (beyond: the undecided cells are decided by their end signs)
-MAX_CELLS = 4_000_000
+#: the most cells a search examines (beyond: the undecided cells are decided by their end signs);
+#: a grid of 20,000 eighths of a period whose every root is of high order (~50 halvings each) needs
+#: ~250,000; only inputs far outside the doubles' comfort reach it (Ω = 3e17 rad/s: ~0.7 s)
+MAX_CELLS = 1_000_000
+#: the most roots of a free vibration listed in closed form
+MAX_FREE_ROOTS = 16_000_000
 #: |D| = |1 − r² + 2iζr| from which w, ẇ are the steady state plus a free part (their sum loses at
 #: most a factor 1/|D| = 10 of relative accuracy); nearer resonance the divided-difference form
 FAR = 0.1
@@ -82,12 +86,40 @@ def jets(mo: Motion, t, d: int, X=None):
     fd = u[d + 1] + mo.s0 * Om ** (d + 1) * trig[(d + 1) % 4]
     noise = 16 * _EPS * (abs(u[d]) + 2.0 * z * wn * abs(u[d - 1]) + wn * wn * abs(u[max(d - 2, 0)])
                          + abs(F) * Om ** max(d - 2, 0) + abs(mo.s0) * Om ** d + amp)
-    root_e = X.sqrt(wn * wn * u[n - 1] * u[n - 1] + u[n] * u[n])
+    root_e = _root(X, wn * wn * u[n - 1] * u[n - 1] + u[n] * u[n], wn * u[n - 1], u[n])
     G, grow, sn = abs(F) * Om ** (n - 1), 2.0 * z * wn, abs(mo.s0) * Om ** n
 
     def bound(h):
         return ((root_e + G * h) * X.exp(grow * h) + sn) * (1.0 + 1e-9)
     return f, fd, bound, noise
+
+
+def _root(X, s, a, b):
+    """√s of s = a² + b² (as the caller rounded it): its doubles wherever s is finite, and where s
+    overflows (a motion of ~1e300: a bound of inf left every cell undecided, halved to the budget
+    of cells) m √((a/m)² + (b/m)²), m = max(|a|, |b|): the same operations on floats and on
+    arrays, so both searches keep making the same doubles."""
+    if X is math:
+        if s < math.inf:
+            return math.sqrt(s)
+        m = max(abs(a), abs(b))
+        if not m < math.inf:
+            return m
+        p, q = a / m, b / m
+        return m * math.sqrt(p * p + q * q)
+    np = getattr(X, "np", X)                        # (the C library's functions on arrays, or numpy)
+    s, a, b = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (s, a, b)))
+    r = np.sqrt(s)
+    big = ~(s < np.inf)
+    if big.any():
+        a, b = a[big], b[big]
+        m = np.maximum(np.abs(a), np.abs(b))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            p, q = a / m, b / m
+            scaled = m * np.sqrt(p * p + q * q)
+        r = r.copy()
+        r[big] = np.where(m < np.inf, scaled, m)
+    return r
 
 
 def _fast_jets(mo: Motion, d: int, X=math):
@@ -112,7 +144,7 @@ def _fast_jets(mo: Motion, d: int, X=math):
     base = 16 * _EPS * (abs(F) * Om ** max(d - 2, 0) + abs(mo.s0) * Om ** d + abs(P) * (Om ** d + wn ** d))
     Fk = [F * Om ** (k - 1) for k in range(1, d + 2)]
     sd, sd1 = mo.s0 * Om ** d, mo.s0 * Om ** (d + 1)
-    exp, cos, sin, sqrt = X.exp, X.cos, X.sin, X.sqrt
+    exp, cos, sin = X.exp, X.cos, X.sin
 
     def derivatives(t: float):
         ex, y, th = exp(-sig * t), ws * t, Om * t
@@ -130,7 +162,7 @@ def _fast_jets(mo: Motion, d: int, X=math):
     def jet(t: float):
         u, f, fd = derivatives(t)
         noise = 16 * _EPS * (abs(u[d]) + two * abs(u[d - 1]) + wn2 * abs(u[max(d - 2, 0)])) + base
-        root_e = sqrt(wn2 * u[n - 1] * u[n - 1] + u[n] * u[n])
+        root_e = _root(X, wn2 * u[n - 1] * u[n - 1] + u[n] * u[n], wn * u[n - 1], u[n])
 
         def bound(h):
             return ((root_e + G * h) * exp(two * h) + sn) * (1.0 + 1e-9)
@@ -169,7 +201,7 @@ def free_roots(mo: Motion, d: int, t_end: float) -> list[float] | None:
     first = (math.atan2((e + z * wn * c) / ws, c) + 0.5 * math.pi) % math.pi
     first = first or math.pi
     n = math.floor((t_end * ws - first) / math.pi) + 1
-    if n > 4 * MAX_CELLS:
+    if n > MAX_FREE_ROOTS:
         return None
     return [t for t in ((first + k * math.pi) / ws for k in range(max(n, 0))) if 0.0 < t < t_end]
 

@@ -115,3 +115,37 @@ def test_exact_orbit_distance_after_many_turns():
     assert rec["method"] == "exact"
     assert abs(d[1] - float(arc)) <= 1e-12 * float(arc)
     assert abs(d[2] - float(want)) <= max(64 * 2.2e-16 * k * float(C), rec["error_estimate"] * float(want))
+
+
+def test_distance_at_many_times_against_the_closed_form_speed(monkeypatch):
+    """3,000 requested times (their partial steps' nodes a chunk at a time: CHUNK made small so that
+    many chunks are taken) against mpmath's integral of the closed-form speed at a sample of them."""
+    from dyncli import motion_find
+
+    rtol = 1e-10
+    times = [4.5 * j / 2999 for j in range(3000)]
+    doc = ("type: particle\nm: 0.5\nv0: [20, 0, 20]\nforces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\n"
+           f"t_end: 4.5\nat: {times}\naccuracy: {{rtol: {rtol}}}\n")
+    whole = _distance(doc)
+    monkeypatch.setattr(motion_find, "CHUNK", 640)          # 64 pieces a chunk: 47 chunks
+    got = _distance(doc)
+    assert got == whole                                     # the same doubles, chunk by chunk
+    assert got[0] == 0.0 and all(b >= a for a, b in zip(got, got[1:]))
+    for j in list(range(0, 3000, 157)) + [2999]:
+        assert got[j] == pytest.approx(float(_drag_arc(mp.mpf(times[j]))), rel=ode(rtol)), times[j]
+
+
+@pytest.mark.parametrize("body", [
+    "m: 0.5\nv0: [20, 0, 20]\nforces: [{kind: gravity}, {kind: drag, c: 0.1, power: 1}]\nt_end: 4.5\n",
+    "m: 1.0\nx0: [2.5, 0, 0]\nforces: [{kind: spring, k: 104.0, L: 2}, {kind: friction, mu: 1, N: 0.26}]\nt_end: 5\n",
+])
+def test_distance_the_same_whichever_way_its_nodes_are_evaluated(monkeypatch, body):
+    """The partial steps' nodes of a few times evaluated in one call with the steps' own, or apart,
+    give the same doubles: every operation is node by node, each set of pieces summed on its own."""
+    from dyncli import motion_find
+
+    times = [0.0, 0.013, 0.4, 1.0, 1.0000001, 2.2, 3.9, 4.5] + [0.01 * j + 0.005 for j in range(100)]
+    doc = f"type: particle\n{body}at: {sorted(times)}\n"
+    together = _distance(doc)
+    monkeypatch.setattr(motion_find, "EARLY", 0)
+    assert _distance(doc) == together

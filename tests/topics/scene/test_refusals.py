@@ -557,3 +557,40 @@ at: [0, 0.2]
     assert code == 1, (code, err)
     assert "Traceback" not in err and "bug" not in err
     assert "geometry is degenerate" in err
+
+
+def test_a_drive_too_far_for_the_kinematics_pieces_is_refused_fast(tmp_path):
+    """A crank driven at 1e9 rad/s for 0.4 s (fuzz seed 710049) turns 4e8 rad: the pieces of
+    0.05 rad the positions are continued over would be 8e9.  Capping them silently let each
+    piece span thousands of radians (Newton free to change branch) and took 11 s; now exit 1
+    at once, naming the drive and the fix."""
+    text = """\
+type: scene
+params: {w: 1.0e+9}
+bodies:
+  crank: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 0}
+joints:
+  axle: {pin: [crank.end1, ground]}
+  motor: {drive: crank.angle, value: w*t}
+at: [0, 0.4]
+"""
+    f = tmp_path / "far.yaml"
+    f.write_text(text)
+    code, out, err = run_cli("solve", str(f))
+    assert code == 1, out + err
+    assert "Traceback" not in out + err
+    assert "'motor' moves 4e+08 rad" in err and "shorten t_end" in err, err
+
+
+def test_a_starting_angle_beyond_a_million_radians_is_refused():
+    """angle: 1e16 (fuzz seed 811267) is held by a double to ±1 rad: a disk rolling in a bowl
+    could not meet its joints to rounding (2.5 s, then no rest configuration found)."""
+    text = """\
+type: scene
+bodies:
+  rod: {shape: rod, mass: 1, length: 1, x: [0.5, 0], angle: 1.0e+16}
+joints:
+  p: {pin: [rod.end1, ground]}
+at: [0, 1]
+"""
+    refusal(text, "bodies.rod.angle", "1e+16 rad", "within a few turns")

@@ -80,3 +80,19 @@ def test_continuity_through_critical():
     scale = np.max(np.abs(xs[1]))
     assert np.max(np.abs(xs[0] - xs[1])) / scale < 1e-11
     assert np.max(np.abs(xs[2] - xs[1])) / scale < 1e-11
+
+
+def test_distance_of_a_forced_motion_at_1e300_scales_as_the_free_one():
+    """v0 = 1e300 under a base motion of 1 mm (fuzz seed 707029): the squares in the bound of
+    the turning-point search overflowed, every cell was undecided and halved 4 million times
+    (25 s of CPU).  By linearity the distance is 1e300 times that of v0 = 1 alone (the base's
+    and x0's parts are below the rounding of 1e300), and the free motion's turning points are
+    in closed form."""
+    from tests.conftest import solve_text
+
+    at = "[1.0e-08, 0.5, 1, 5, 20]"
+    big = solve_text("type: vibration\nm: 1\nk: 800.0\nzeta: 0.05\nL: 0.2\nx0: -0.2\nv0: 1.0e+300\n"
+                     f"base: {{amplitude: 0.001, omega: 30}}\nat: {at}\n", "big.yaml")[0]["results"]["distance"]
+    one = solve_text(f"type: vibration\nm: 1\nk: 800.0\nzeta: 0.05\nx0: 0\nv0: 1\nat: {at}\n",
+                     "one.yaml")[0]["results"]["distance"]
+    assert big == pytest.approx([1e300 * d for d in one], rel=1e-13)

@@ -102,7 +102,23 @@ find:
   - {min: w}
 """
 
-CASES = {"near-resonance": NEAR_RESONANCE, "overdamped": OVERDAMPED, "base-find-w": BASE_FIND_W, "base-k133": BASE.format(k=133.1103678929766),
+HUGE = """type: vibration
+m: 1
+k: 800
+zeta: 0.05
+L: 0.2
+x0: -0.2
+v0: 1.0e+300
+base: {amplitude: 0.001, omega: 30}
+t_end: 3
+at: [0.5, 2.9]
+find:
+  - {when: {v: 0}, occurrence: 5}
+  - {min: x, within: [1, 2]}
+"""
+# (HUGE: the bound's squares overflow; both searches scale them alike)
+
+CASES = {"huge": HUGE, "near-resonance": NEAR_RESONANCE, "overdamped": OVERDAMPED, "base-find-w": BASE_FIND_W, "base-k133": BASE.format(k=133.1103678929766),
          "base-k400": BASE.format(k=400), "base-k977": BASE.format(k=977.3), "force": FORCE,
          "unbalance": UNBALANCE, "long": LONG}
 
