@@ -22,6 +22,8 @@ takes scipy's own classes (:func:`dyncli.integrators.solver_class` with ``scipy=
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from dyncli import dop853_coefficients as dc
@@ -179,7 +181,7 @@ class DOP853:
 
     def _step_impl(self):
         t, y, rtol, atol = self.t, self.y, self.rtol, self.atol
-        min_step = 10 * np.abs(np.nextafter(t, self.direction * np.inf) - t)
+        min_step = 10 * abs(math.nextafter(t, self.direction * math.inf) - t)   # (numpy's, in floats)
         if self.h_abs > self.max_step:
             h_abs = self.max_step
         elif self.h_abs < min_step:
@@ -195,7 +197,7 @@ class DOP853:
             if self.direction * (t_new - self.t_bound) > 0:
                 t_new = self.t_bound
             h = t_new - t
-            h_abs = np.abs(h)
+            h_abs = abs(h)
             y_new, f_new = self._rk_step(t, y, h)
             scale = atol + np.maximum(np.abs(y), np.abs(y_new)) * rtol
             error_norm = self._error_norm(h, scale)
