@@ -84,7 +84,9 @@ class _Run:
                 self.records.append(rec)
             step = _Step(self, solver)
             for old in replay:
-                done = old.prefix(rec, solver, t_end) if rec is not None else []
+                if rec is None:                          # (scipy's classes: nothing recorded to replay)
+                    break
+                done = old.prefix(rec, solver, t_end)
                 for t_old, t, y, f, h_abs, interp in done:
                     solver.t_old, solver.t, solver.y, solver.f, solver.h_abs = t_old, t, y, f, h_abs
                     rec.steps.append((t_old, t, y, f, h_abs, interp))
