@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field, model_validator
@@ -48,6 +49,13 @@ class Euler(ProblemBase):
                 if I[i] > others * (1 + 1e-12):
                     raise ValueError(f"I: I{i + 1} = {I[i]:g} exceeds the sum of the other two ({others:g}): "
                                      "no rigid body has these principal moments (triangle inequality)")
+        if self.coin is not None:
+            I = self.moments()
+            if not all(0 < v < math.inf for v in I):
+                c = self.coin
+                raise ValueError(f"coin: its moments of inertia (m R²/4 + m h²/12, m R²/2 = {I[0]:g}, {I[2]:g} kg·m² "
+                                 f"for m = {c.m:g}, R = {c.R:g}, h = {c.h:g}) are beyond the range of a double; "
+                                 "give m, R and h in units that keep m R² between about 1e-300 and 1e300")
         if self.M is not None and self.accuracy.method == "projected":
             raise ValueError("accuracy.method projected conserves |H| and T and needs a torque-free body (no M)")
         return self
