@@ -8,6 +8,16 @@ from tests.conftest import PROBLEMS, solve_path
 
 SCENES = PROBLEMS / "scenes"
 
+#: the bodies and joints of a double pendulum of two point masses on massless links (its params
+#: m1, m2, L1, L2, p1, p2 given by the test)
+DOUBLE_PENDULUM = """bodies:
+  A: {shape: point, mass: m1, x: ["L1*sin(p1)", "-L1*cos(p1)"]}
+  B: {shape: point, mass: m2, x: ["L1*sin(p1) + L2*sin(p2)", "-L1*cos(p1) - L2*cos(p2)"]}
+joints:
+  upper: {link: [[0, 0], A], length: L1}
+  lower: {link: [A, B], length: L2}
+"""
+
 
 @functools.lru_cache(maxsize=None)
 def gallery(name: str) -> dict:

@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import error_of, solve_one_text
+from tests.topics.scene.common import DOUBLE_PENDULUM
 
 TOL = 1e-9
 G = 9.81
@@ -62,13 +63,7 @@ DOUBLE = """
 type: scene
 title: double pendulum
 params: {m1: %s, m2: %s, L1: %s, L2: %s, p1: "10*deg", p2: "-5*deg"}
-bodies:
-  A: {shape: point, mass: m1, x: ["L1*sin(p1)", "-L1*cos(p1)"]}
-  B: {shape: point, mass: m2, x: ["L1*sin(p1) + L2*sin(p2)", "-L1*cos(p1) - L2*cos(p2)"]}
-joints:
-  upper: {link: [[0, 0], A], length: L1}
-  lower: {link: [A, B], length: L2}
-at: [0, 0.5]
+""" + DOUBLE_PENDULUM + """at: [0, 0.5]
 linearize: true
 """
 

@@ -16,6 +16,7 @@ import mpmath as mp
 import numpy as np
 
 from tests.conftest import solve_one_text
+from tests.topics.scene.common import DOUBLE_PENDULUM
 
 G = 9.81
 
@@ -40,13 +41,7 @@ t_end: 1.5
 DOUBLE = """
 type: scene
 params: {m1: 1, m2: 2, L1: 1, L2: 0.7, p1: "60*deg", p2: "20*deg"}
-bodies:
-  A: {shape: point, mass: m1, x: ["L1*sin(p1)", "-L1*cos(p1)"]}
-  B: {shape: point, mass: m2, x: ["L1*sin(p1) + L2*sin(p2)", "-L1*cos(p1) - L2*cos(p2)"]}
-joints:
-  upper: {link: [[0, 0], A], length: L1}
-  lower: {link: [A, B], length: L2}
-at: [0, 1.5]
+""" + DOUBLE_PENDULUM + """at: [0, 1.5]
 """
 
 
