@@ -495,3 +495,45 @@ def amplitude_phase(w0: float, wd0: float, omega_n: float, zeta: float, omega_d:
     return None, None, ("A and phi are null: the overdamped amplitude–phase form (17.24) exists only when "
                         "|v0 + ζωₙw0| > ω*|w0| (here it is not; the motion is "
                         "w0 e^(−ζωₙt)cosh(ω*t) + ... , computed exactly)")
+
+
+#: a reported x, ẋ or w whose rounding error exceeds this fraction of its scale is warned about
+LOSS_FRACTION = 1e-6
+
+
+def base_rounding(t: float, *, omega_n: float, zeta: float, L: float, x0: float, v0: float,
+                  s0: float, Omega: float, x: float, v: float, w: float):
+    """Bounds on the rounding errors of the closed form's (x, ẋ, w) at time t under the base
+    motion s = s0 sin(Ωt), and the scales they are judged against: ((ex, ev, ew), (sx, sv, sw)).
+
+    The errors come from the magnitudes of the terms summed (x = w + s + L, ẋ = ẇ + ṡ, and w =
+    w_h + w_f whose free part grows from w0 to the size |w0| + |ẇ0|/ωₙ, ẇ0 = v0 − s0Ω) and from the
+    phases Ωt and ωₙt held to one ulp. The scales are the absolute motion's a-priori size
+    (|x0 − L| + |v0|/ωₙ + 2 s0 T(r) with the transmissibility T, notes eq. 17.33), not the
+    computed values (which are garbage when digits are lost).
+
+    >>> e, s = base_rounding(0.1, omega_n=20.0, zeta=0.025, L=0.4, x0=0.2, v0=0.0, s0=0.002,
+    ...                      Omega=3e17, x=0.0, v=0.0, w=0.0)
+    >>> e[1] > s[1]          # ẋ: Y·Ω = 6e14 m/s cancels; nothing left
+    True
+    """
+    eps = 2.0 ** -52
+    th = Omega * t
+    s, sd = s0 * math.sin(th), s0 * Omega * math.cos(th)
+    w0, wd0 = x0 - L, v0 - s0 * Omega
+    c = 1.0 / math.sqrt(max(1.0 - zeta * zeta, 0.25))
+    ah = abs(w0) * c + abs(wd0) * min(t, 1.0 / omega_n)      # w_h's size by time t (w_h(0) = w0)
+    av = abs(w0) * c * omega_n + abs(wd0)                     # ẇ_h's size (ẇ_h(0) = ẇ0)
+    ph, pf = math.ulp(th), math.ulp(omega_n * t)
+    wd = v - sd
+    ew = eps * (abs(w) + 2 * ah) + 2 * s0 * ph + ah * pf
+    ex = eps * (abs(s) + abs(w) + abs(L)) + ew + s0 * ph
+    ev = eps * (abs(sd) + abs(wd) + 2 * av) + 3 * s0 * Omega * ph + av * pf
+    r = Omega / omega_n
+    den = math.hypot(1.0 - r * r, 2.0 * zeta * r)
+    T = math.inf if den == 0.0 else math.hypot(1.0, 2.0 * zeta * r) / den
+    y = abs(w0) + abs(v0) / omega_n + 2.0 * s0 * T
+    sx = abs(L) + y
+    sv = omega_n * (abs(w0) + 2.0 * s0 * T) + abs(v0) + s0 * T * Omega
+    sw = y + s0
+    return (ex, ev, ew), (sx, sv, sw)

@@ -174,8 +174,39 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
     if not all(math.isfinite(c) for c in x + v):
         raise NumericalError("the response is not representable at the requested times "
                              "(ω·t beyond the floating-point range)")
+    if s0 != 0.0 and Om != 0.0 and method not in ("ode", "DOP853"):
+        _warn_lost_digits(res, times, x, v, w, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Om=Om)
     res.results.update(x=x, v=v, w=w)
     res.series.append(Series("t", list(p.at), ["x", "v", "w", "distance"], title="Response x = w + s + L (17.16b)"))
+
+
+def _warn_lost_digits(res, times, x, v, w, *, omega_n, zeta, L, x0, v0, s0, Om):
+    """Warn, per quantity, at the first reported time whose rounding error
+    (:func:`closed_form.base_rounding`) exceeds LOSS_FRACTION of the quantity's scale."""
+    names = ("x", "ẋ", "w")
+    cures = ("the base's phase Ω·t is held to one ulp; use a smaller Ω·t",
+             f"the base's velocity Y·Ω = {s0 * Om:.3g} m/s cancels in ṡ + ẇ and the phase Ω·t is held to "
+             "one ulp; use w (relative motion) where it is not warned about, or a smaller Ω·t",
+             "its free and forced parts (each of size ≈ Y·Ω/ωₙ) cancel and the phase Ω·t is held to one "
+             "ulp; use a smaller Ω·t")
+    worst = [None, None, None]
+    count = [0, 0, 0]
+    for i, ti in enumerate(times):
+        errs, scales = cf.base_rounding(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om,
+                                        x=x[i], v=v[i], w=w[i])
+        for q in range(3):
+            if errs[q] > cf.LOSS_FRACTION * scales[q]:
+                count[q] += 1
+                if worst[q] is None or errs[q] / scales[q] > worst[q][1] / worst[q][2]:
+                    worst[q] = (ti, errs[q], scales[q])
+    for q, hit in enumerate(worst):
+        if hit is None:
+            continue
+        ti, e, sc = hit
+        how = ("has no correct digits" if e >= sc else
+               f"has a rounding error up to {e:.2g} (more than {cf.LOSS_FRACTION:g} of its scale {sc:.3g})")
+        more = f" (digits lost at {count[q]} of the {len(times)} reported times)" if count[q] > 1 else ""
+        res.warn(f"{names[q]} at t = {ti:g} s {how}{more}: {cures[q]}")
 
 
 def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol, force_per_mass=None, max_steps=None):
