@@ -350,7 +350,9 @@ class Odometer:
         each piece whose node speeds dip below a quarter of their largest, by a golden-section
         search over all those pieces at once (:func:`dyncli.rootfind.fminbound_many`: one call of
         ``speeds`` per iteration; an error δ in its place costs only ~|a| δ²).  A least speed at
-        the piece's end (a stop that is a break already) adds nothing."""
+        the piece's end (a stop that is a break already) adds nothing: a piece whose speed is
+        exactly 0 at an end (a body starting from rest) is not searched — the least of a unimodal
+        |v| ≥ 0 is that end (one call of ``speeds`` at the pieces' ends, not ~60)."""
         from dyncli.rootfind import fminbound_many
 
         np = self.np
@@ -359,6 +361,15 @@ class Odometer:
         if not piece.size:
             return []
         a, b = self.pts[piece], self.pts[piece + 1]
+        ends = np.asarray(self.speeds(np.concatenate([a, b]) if self.arrays else np.concatenate([a, b]).tolist()),
+                          dtype=float)
+        ends = ends[np.concatenate([np.arange(piece.size)] * 2), np.concatenate([col, col])] if ends.ndim > 1 else ends
+        search = (ends[:piece.size] != 0.0) & (ends[piece.size:] != 0.0)
+        if not search.all():                        # |v| = 0 exactly at an end (a start from rest): the
+            piece, col = piece[search], col[search]  # least of a unimodal |v| ≥ 0 is there, a break already
+            if not piece.size:
+                return []
+            a, b = self.pts[piece], self.pts[piece + 1]
 
         def speed(u, k):
             ts = a[k] + u * (b[k] - a[k])

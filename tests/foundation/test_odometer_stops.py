@@ -1,0 +1,39 @@
+"""The odometer's stops decided exactly: a speed exactly 0 at a piece's end (a start from rest) is
+not searched, and the distance still matches an independent closed form / mpmath quadrature."""
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from dyncli.motion_find import Odometer
+
+G = 9.81
+
+
+@pytest.mark.parametrize("v0", [0.0, 7.0, -3.0])
+def test_vertical_throw_distance_against_mpmath(v0):
+    """|v| = |v0 − g t| on [0, 2]: a start from rest (v0 = 0) has its zero at t0 exactly; a throw
+    upward stops at the apex v0/g inside a piece (a kink found by the search)."""
+    calls = []
+
+    def speeds(ts):
+        calls.append(len(ts))
+        return np.abs(v0 - G * np.asarray(ts, dtype=float))
+
+    odo = Odometer(speeds, [0.0, 0.5, 1.0, 2.0], arrays=True)
+    built = len(calls)
+    for t in (0.3, 0.9, 2.0):
+        ref = mpmath.quad(lambda s: abs(v0 - G * s), [0, *( [v0 / G] if 0 < v0 / G < t else []), t])
+        assert odo.at([t])[0] == pytest.approx(float(ref), rel=1e-12, abs=1e-13)
+    if v0 == 0.0:                                    # the piece from rest: one call at its ends, no search
+        assert built == 2                            # the nodes, then the pieces' ends
+
+
+def test_from_rest_closed_form_distance():
+    """s(t) = g t² / 2 for a drop from rest (the notes' closed form)."""
+    odo = Odometer(lambda ts: G * np.asarray(ts, dtype=float), [0.0, 1.0, 3.0], arrays=True)
+    got = odo.at([0.25, 1.0, 2.5])
+    assert got == pytest.approx([0.5 * G * t * t for t in (0.25, 1.0, 2.5)], rel=1e-13)
+    assert math.isfinite(got[0])
