@@ -363,7 +363,7 @@ class Odometer:
         a, b = self.pts[piece], self.pts[piece + 1]
         ends = np.asarray(self.speeds(np.concatenate([a, b]) if self.arrays else np.concatenate([a, b]).tolist()),
                           dtype=float)
-        ends = ends[np.concatenate([np.arange(piece.size)] * 2), np.concatenate([col, col])] if ends.ndim > 1 else ends
+        ends = ends[np.arange(2 * piece.size), np.concatenate([col, col])] if ends.ndim > 1 else ends   # (each piece's column)
         search = (ends[:piece.size] != 0.0) & (ends[piece.size:] != 0.0)
         if not search.all():                        # |v| = 0 exactly at an end (a start from rest): the
             piece, col = piece[search], col[search]  # least of a unimodal |v| ≥ 0 is there, a break already
