@@ -181,8 +181,9 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
 
 
 def _warn_lost_digits(res, times, x, v, w, *, omega_n, zeta, L, x0, v0, s0, Om):
-    """Warn, per quantity, at the first reported time whose rounding error
-    (:func:`closed_form.base_rounding`) exceeds LOSS_FRACTION of the quantity's scale."""
+    """Warn, once per quantity, when a reported time's rounding error
+    (:func:`closed_form.base_rounding`) exceeds LOSS_FRACTION of the quantity's scale: naming
+    the worst such time and how many there are."""
     names = ("x", "ẋ", "w")
     cures = ("the base's phase Ω·t is held to one ulp; use a smaller Ω·t",
              f"the base's velocity Y·Ω = {s0 * Om:.3g} m/s cancels in ṡ + ẇ and the phase Ω·t is held to "
