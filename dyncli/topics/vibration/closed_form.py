@@ -501,6 +501,43 @@ def amplitude_phase(w0: float, wd0: float, omega_n: float, zeta: float, omega_d:
 LOSS_FRACTION = 1e-6
 
 
+def phase_rounding(t: float, *, omega_n: float, zeta: float, L: float, w0: float, wd0: float,
+                   f0: float = 0.0, Omega: float = 0.0):
+    """Bounds on the errors of the closed form's (x, ẋ, w) at time t that come from its phases
+    ω*·t and Ω·t held to one ulp — a free vibration (w0, ẇ0), plus a harmonic force f0 sin(Ωt)
+    per unit mass — and the scales they are judged against: ((ex, ev, ew), (sx, sv, sw)).
+
+    A phase error δ moves an oscillation of amplitude a by up to a·δ (and its rate by a·ω·δ): the
+    free oscillation's amplitude decays as e^(−ζωₙt) (ζ < 1; no phase at all when ζ ≥ 1), the
+    force's steady amplitude is f0/|ωₙ² − Ω² + 2iζωₙΩ| (growing as f0(1 + ωₙt)/(2ωₙ²) at undamped
+    resonance) and the transient it starts is at most (1 + Ω/ωₙ) times that.  The scales are
+    the a-priori sizes of the motion, not the computed values (garbage when digits are lost).
+
+    >>> e, s = phase_rounding(1e17, omega_n=3 ** 0.5, zeta=0.0, L=0.5, w0=0.1, wd0=0.2)
+    >>> e[0] > s[0]          # ωₙt ≈ 1.7e17 rad, held to ±32 rad: no digit left
+    True
+    >>> e, s = phase_rounding(1e3, omega_n=3 ** 0.5, zeta=0.0, L=0.5, w0=0.1, wd0=0.2)
+    >>> e[0] < 1e-12 * s[0]
+    True
+    """
+    c = 1.0 / math.sqrt(max(1.0 - zeta * zeta, 0.25))
+    grow = math.exp(-zeta * omega_n * t) if zeta < 1.0 else 0.0   # an overdamped motion has no phase
+    ah = (abs(w0) + abs(wd0) / omega_n) * c                        # the free oscillation's amplitude
+    xp = r = 0.0
+    if f0 != 0.0 and Omega != 0.0:
+        r = Omega / omega_n
+        den = omega_n * omega_n * math.hypot(1.0 - r * r, 2.0 * zeta * r)
+        xp = abs(f0) * (1.0 + omega_n * t) / (2.0 * omega_n * omega_n) if den == 0.0 else abs(f0) / den
+    at = (ah + xp * (1.0 + r) * c) * grow                           # everything oscillating at ω*
+    # ωₙ = √(k/m) and Ω·t to half an ulp each; ω* = ωₙ√((1 − ζ)(1 + ζ)) two roundings more
+    pf, ph = (1.0 if zeta == 0.0 else 3.0) * math.ulp(omega_n * t), math.ulp(Omega * t)
+    ew = at * pf + xp * ph
+    ev = at * omega_n * c * pf + xp * Omega * ph
+    sw = ah + xp * (2.0 + r)
+    sv = (ah + xp * (1.0 + r)) * omega_n * c + xp * Omega
+    return (ew, ev, ew), (abs(L) + sw, sv, sw)
+
+
 def base_rounding(t: float, *, omega_n: float, zeta: float, L: float, x0: float, v0: float,
                   s0: float, Omega: float, x: float, v: float, w: float):
     """Bounds on the rounding errors of the closed form's (x, ẋ, w) at time t under the base

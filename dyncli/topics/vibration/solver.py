@@ -174,40 +174,74 @@ def _time_response(p, res, omega_n, zeta, L, x0, v0, s0, Om):
     if not all(math.isfinite(c) for c in x + v):
         raise NumericalError("the response is not representable at the requested times "
                              "(ω·t beyond the floating-point range)")
-    if s0 != 0.0 and Om != 0.0 and method not in ("ode", "DOP853"):
-        _warn_lost_digits(res, times, x, v, w, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Om=Om)
+    if method not in ("ode", "DOP853"):
+        _check_digits(res, times, x, v, w, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Om=Om,
+                      f0=0.0 if fo is None else fo[0] / p.m, Of=0.0 if fo is None else fo[1])
     res.results.update(x=x, v=v, w=w)
     res.series.append(Series("t", list(p.at), ["x", "v", "w", "distance"], title="Response x = w + s + L (17.16b)"))
 
 
-def _warn_lost_digits(res, times, x, v, w, *, omega_n, zeta, L, x0, v0, s0, Om):
-    """Warn, once per quantity, when a reported time's rounding error
-    (:func:`closed_form.base_rounding`) exceeds LOSS_FRACTION of the quantity's scale: naming
-    the worst such time and how many there are."""
+def _check_digits(res, times, x, v, w, *, omega_n, zeta, L, x0, v0, s0, Om, f0, Of):
+    """Warn when the closed form's reported values have lost digits (:func:`_warn_lost_digits`):
+    under a base motion by :func:`closed_form.base_rounding` (its velocity cancels too), else by
+    the phases alone (:func:`closed_form.phase_rounding`) — skipped when no phase at the reported
+    times is large enough to matter (one ulp of it below a quarter of LOSS_FRACTION)."""
+    if not times:
+        return
+    if s0 != 0.0 and Om != 0.0:
+        def bound(ti, xi, vi, wi):
+            return cf.base_rounding(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om,
+                                    x=xi, v=vi, w=wi)
+        _warn_lost_digits(res, times, x, v, w, bound, base_cures(s0 * Om))
+        return
+    if 4.0 * math.ulp(max(omega_n, Of) * max(abs(ti) for ti in times)) <= cf.LOSS_FRACTION:
+        return
+    phase = "ω*·t" if f0 == 0.0 else "ω*·t or Ω·t"
+
+    def bound(ti, xi, vi, wi):
+        return cf.phase_rounding(ti, omega_n=omega_n, zeta=zeta, L=L, w0=x0 - L, wd0=v0, f0=f0, Omega=Of)
+    cure = (f"the phase {phase} is held to one ulp (a double holds a frequency to 16 digits, so a "
+            "phase beyond ~1e9 rad costs the answer its digits); ask for a smaller t")
+    _warn_lost_digits(res, times, x, v, w, bound, (cure, cure, cure))
+
+
+def base_cures(speed: float) -> tuple[str, str, str]:
+    """The cure of each quantity's lost digits (x, ẋ, w) under a base motion of speed Y·Ω."""
+    return ("the base's phase Ω·t is held to one ulp; use a smaller Ω·t",
+            f"the base's velocity Y·Ω = {speed:.3g} m/s cancels in ṡ + ẇ and the phase Ω·t is held to "
+            "one ulp; use w (relative motion) where it is not warned about, or a smaller Ω·t",
+            "its free and forced parts (each of size ≈ Y·Ω/ωₙ) cancel and the phase Ω·t is held to "
+            "one ulp; use a smaller Ω·t")
+
+
+def _warn_lost_digits(res, times, x, v, w, bound, cures):
+    """Warn, once per quantity, when a reported time's rounding error (``bound(t, x, v, w)`` ->
+    (errors, scales)) exceeds LOSS_FRACTION of the quantity's scale: naming the worst such time,
+    how many there are and the quantity's cure."""
     names = ("x", "ẋ", "w")
-    cures = ("the base's phase Ω·t is held to one ulp; use a smaller Ω·t",
-             f"the base's velocity Y·Ω = {s0 * Om:.3g} m/s cancels in ṡ + ẇ and the phase Ω·t is held to "
-             "one ulp; use w (relative motion) where it is not warned about, or a smaller Ω·t",
-             "its free and forced parts (each of size ≈ Y·Ω/ωₙ) cancel and the phase Ω·t is held to one "
-             "ulp; use a smaller Ω·t")
     worst = [None, None, None]
     count = [0, 0, 0]
     for i, ti in enumerate(times):
-        errs, scales = cf.base_rounding(ti, omega_n=omega_n, zeta=zeta, L=L, x0=x0, v0=v0, s0=s0, Omega=Om,
-                                        x=x[i], v=v[i], w=w[i])
+        errs, scales = bound(ti, x[i], v[i], w[i])
         for q in range(3):
             if errs[q] > cf.LOSS_FRACTION * scales[q]:
                 count[q] += 1
                 if worst[q] is None or errs[q] / scales[q] > worst[q][1] / worst[q][2]:
                     worst[q] = (ti, errs[q], scales[q])
+    said: dict[str, list[str]] = {}             # quantities with the same time, loss and cure: one warning
     for q, hit in enumerate(worst):
         if hit is None:
             continue
         ti, e, sc = hit
-        how = ("has no correct digits" if e >= sc else
-               f"has a rounding error up to {e:.2g} (more than {cf.LOSS_FRACTION:g} of its scale {sc:.3g})")
+        how = ("no correct digits" if e >= sc else
+               f"a rounding error up to {e:.2g} (more than {cf.LOSS_FRACTION:g} of its scale {sc:.3g})")
         more = f" (digits lost at {count[q]} of the {len(times)} reported times)" if count[q] > 1 else ""
-        res.warn(f"{names[q]} at t = {ti:g} s {how}{more}: {cures[q]}")
+        said.setdefault(f" at t = {ti:g} s {{}} {how}{more}: {cures[q]}", []).append(names[q])
+    for tail, who in said.items():
+        if len(who) == 1:
+            res.warn(who[0] + tail.format("has"))
+        else:
+            res.warn(", ".join(who[:-1]) + " and " + who[-1] + tail.format("have"))
 
 
 def _ode(t, omega_n, zeta, L, x0, v0, s0, Om, rtol, atol, force_per_mass=None, max_steps=None):
