@@ -33,8 +33,9 @@ from . import closed_form as cf
 _EPS = 2.220446049250313e-16
 #: the most cells a search examines (beyond: the undecided cells are decided by their end signs);
 #: a grid of 20,000 eighths of a period whose every root is of high order (~50 halvings each) needs
-#: ~250,000; only inputs far outside the doubles' comfort reach it (Ω = 3e17 rad/s: ~0.7 s)
-MAX_CELLS = 1_000_000
+#: ~250,000; only inputs far outside the doubles' comfort reach it (Ω = 3e17 rad/s: ~0.3 s; ζ = 5e14
+#: over 5e299 s, whose stiff derivatives leave every cell undecided: ~1.5 s)
+MAX_CELLS = 400_000
 #: the most roots of a free vibration listed in closed form
 MAX_FREE_ROOTS = 16_000_000
 #: |D| = |1 − r² + 2iζr| from which w, ẇ are the steady state plus a free part (their sum loses at
@@ -63,8 +64,10 @@ def jets(mo: Motion, t, d: int, X=None):
     c, s = (math.cos(th), math.sin(th)) if X is None else (X.cos(th), X.sin(th))
     r = Om / wn
     D = complex((1.0 - r) * (1.0 + r), 2.0 * z * r)
-    if F != 0.0 and Om != 0.0 and abs(D) >= FAR:   # the steady state plus the free part: no cancellation
-        P = F / (wn * wn) / D
+    P = F / (wn * wn) / D if F != 0.0 and Om != 0.0 and abs(D) >= FAR else 0j
+    if P != 0.0 and math.isfinite(abs(P)):        # the steady state plus the free part
+        # (no cancellation); a steady amplitude beyond the doubles (F/ωₙ² overflows while the
+        # motion itself does not) takes the divided-difference form, finite wherever the motion is
         w0, wd0 = mo.w0 - P.imag, mo.wd0 - Om * P.real
         u = [P.imag * c + P.real * s, Om * (P.real * c - P.imag * s)]
         Fh, amp = 0.0, abs(P) * (Om ** d + wn ** d)
