@@ -123,6 +123,13 @@ def root_in_bracket(g, x0: float, x1: float, g0: float | None = None, g1: float 
         return float(_brentq(g, x0, x1, xtol=1e-300, rtol=RTOL, maxiter=200))
     except RuntimeError:
         pass
+    except NotANumber:
+        raise
+    except ValueError:
+        # the ends as ``g`` gives them are of one sign, where the caller's values (summed another
+        # way) were not: a bracket up to rounding, as above (fuzz seed 1313963)
+        ga, gb = g(x0), g(x1)
+        return x0 if abs(ga) <= abs(gb) else x1
     # Brent's bisection steps halve the bracket arithmetically: a root many
     # orders of magnitude smaller than the bracket (a root near 0 in [0, h])
     # needs ~log2(h/root) of them and exhausts maxiter.  Bisect the bracket in

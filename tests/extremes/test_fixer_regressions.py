@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 from tests.conftest import error_of, solve_one_text
 
 
@@ -20,6 +22,19 @@ def test_rectilinear_brentq_finds_a_root_far_below_the_bracket_width():
     r = brentq(g, 0.0, 1.0)
     assert math.isclose(r, math.sqrt(1e-200 / 3), rel_tol=1e-14)
     assert len(calls) < 300      # Brent (maxiter 200), then bisection on the doubles + polish
+
+
+def test_a_bracket_given_by_values_summed_another_way_is_one_up_to_rounding():
+    # fuzz seed 1313963: the caller's end values (cumulative sums) bracket a root, the function's
+    # own at the right end has the other sign by a rounding: the end nearer zero, not a ValueError
+    from dyncli.rootfind import NotANumber, root_in_bracket
+
+    def g(x):
+        return x - 1.0 - 2e-16                # at x = 1 the function gives -2e-16
+
+    assert root_in_bracket(g, 0.0, 1.0, -1.0, 1e-300) == 1.0
+    with pytest.raises(NotANumber):          # a NaN is still refused, not read as a rounding
+        root_in_bracket(lambda x: math.nan if x > 0.5 else x - 1.0, 0.0, 1.0, -1.0, 1e-300)
 
 
 def test_rectilinear_case2_grazing_zero_of_v_is_fast_and_right():

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import all_roots, brent
+from dyncli.rootfind import NotANumber, all_roots, brent
 
 N_CELLS = 1024
 _EPS = float(np.finfo(float).eps)
@@ -166,7 +166,10 @@ class Energy:
                            f"from 0 by more than {err:.2g} J")
             if k == 0:
                 return c, (None if c == end else c)
-            a = brent(lambda q: self.K(q, refs)[0], prev, c, 4 * _EPS * max(abs(prev), abs(c)), 4 * _EPS, 200)
+            try:
+                a = brent(lambda q: self.K(q, refs)[0], prev, c, 4 * _EPS * max(abs(prev), abs(c)), 4 * _EPS, 200)
+            except NotANumber as e:           # the energy integral overflows there (fuzz seed 1303530)
+                raise Skip(f"the kinetic energy is not finite near q = {e.x:.6g} (its terms overflow)") from None
             return a, (None if c == end else c)
         return None
 

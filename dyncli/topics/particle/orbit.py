@@ -35,7 +35,7 @@ def kepler_estimate(orb: Orbit, t_max: float, mu_err: float = 0.0) -> float:
     motion next to a parabola hardly depends on a).  At e = 0.97 over five revolutions (g = 9.81,
     R0 = 6371 km: δ = 0.23 ε) the true error is 4.4e-11 of scale, this 1.0e-10 (without δ: 1.5e-11)."""
     X = t_max * (orb.h / orb.r_p) / orb.r_p
-    kappa = (1.0 + orb.e) / (1.0 - orb.e) if orb.period else 0.0
+    kappa = (1.0 + orb.e) / max(1.0 - orb.e, EPS) if orb.period else 0.0   # (e rounded to 1: fuzz 1308217)
     w = min(1.0, t_max / orb.period) if orb.period else 0.0
     return 8 * EPS * (1.0 + X) + 2.0 * X * (1.5 * kappa + 0.5) * mu_err * w
 
