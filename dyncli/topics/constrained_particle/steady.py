@@ -126,7 +126,7 @@ def _entry(p, model, F, q: float, where: str) -> tuple[dict, list[str]]:
     alpha, beta, A, B, Fx = _coefficients(m, F, x, et, rho)
     r = float(np.linalg.norm(rho))
     scale_f = max(abs(beta), float(np.linalg.norm(Fx)), 1e-300)
-    scale_a = m * max(r, float(np.linalg.norm(x)), 1e-300)
+    scale_a = m * max(r, float(np.linalg.norm(x)), 1e-300) or 5e-324    # (m·1e-300 underflows: fuzz 1413356)
     held_anyhow = abs(alpha) <= 64 * EPS * scale_a and abs(beta) <= 64 * EPS * scale_f
     u = None
     if not held_anyhow and abs(alpha) > 64 * EPS * scale_a and -beta / alpha >= 0:
