@@ -24,6 +24,11 @@ from __future__ import annotations
 
 import math
 
+#: a reported state whose phase is uncertain by more than this (radians: the same fraction of its
+#: oscillation) is warned about — a route whose period is not held exactly (a quadrature's, or a
+#: frequency rounded to a double) loses it over enough periods
+LOSS = 1e-6
+
 #: Dekker's splitter for doubles, 2^27 + 1
 _SPLIT = 134217729.0
 _FMA = getattr(math, "fma", None)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 
+from dyncli.phase import LOSS
 from dyncli.topics.rectilinear.constants import EPS
 
 
@@ -43,7 +44,17 @@ def setup(c4) -> None:
     if c4.v1 == 0:
         c4.start_sens = turn_sensitivity(c4, c4.s1, 4 * EPS * abs(c4.s1))
     c4.cycle_sens = 2 * (sum(dt for _, dt in c4.turns.values()) + c4.start_sens[1]) if c4.periodic else 0.0
+    # the period's own error: its legs' quadratures and its last digit; the reduction modulo the
+    # period (math.fmod) is exact, so n periods shift the time by n times that
+    c4.period_err = (2 * (_duration_err(c4.F) + _duration_err(c4.B)) + math.ulp(c4.period)) if c4.periodic else 0.0
+    c4.cycle_sens += c4.period_err
     c4.sens_used = 0.0
+    c4.long_used = (0.0, 0.0)        # (the time shift n·δP, n) of the latest reported time
+
+
+def _duration_err(leg) -> float:
+    """The error estimate of a leg's duration (its quadratures', summed)."""
+    return float(leg.cerrs[-1][-1]) if leg.cerrs and len(leg.cerrs[-1]) else 0.0
 
 
 def time_sens(c4, legs, tau: float, upto: int | None = None) -> tuple[float, float]:
@@ -54,6 +65,8 @@ def time_sens(c4, legs, tau: float, upto: int | None = None) -> tuple[float, flo
     if c4.periodic and upto is None and c4.period > 0:
         n = math.floor(tau / c4.period)
         extra += n * c4.cycle_sens
+        if n * c4.period_err > c4.long_used[0]:
+            c4.long_used = (n * c4.period_err, n)
         tau -= n * c4.period
     for k, (leg, rev, _) in enumerate(legs):
         sd = c4.turns.get(id(leg)) if not rev else None
@@ -74,7 +87,15 @@ def time_sens(c4, legs, tau: float, upto: int | None = None) -> tuple[float, flo
 
 
 def warn(c4, ans, rtol: float) -> None:
-    """A warning when the separatrix's sensitivity exceeds rtol of the answers' time scale."""
+    """A warning when the separatrix's sensitivity exceeds rtol of the answers' time scale, and
+    one when whole periods have shifted a reported state by more than LOSS of its phase."""
+    shift, n = c4.long_used
+    phase = 2 * math.pi * shift / c4.period if c4.periodic and c4.period > 0 else 0.0
+    if phase > LOSS:
+        how = "no correct digits" if phase >= 1.0 else f"a phase error up to {phase:.2g} rad"
+        ans.res.warn(f"the state at t ≈ {c4.p.t1 + n * c4.period:.3g} s ({n:.3g} periods after t1) has {how}: the period {c4.period:.9g} s is known to "
+                     f"±{c4.period_err:.2g} s (its quadratures and last digit), so n periods shift the time by "
+                     f"±{shift:.2g} s (counted in error_estimate); ask for an earlier time")
     got = [x for x in ans.items if x is not None and x.get("reached")]
     tsc = max([abs(x["t"] - c4.p.t1) for x in got] + [0.0])
     if got and tsc > 0 and c4.sens_used / tsc > rtol:
