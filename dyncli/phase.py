@@ -29,6 +29,40 @@ import math
 #: frequency rounded to a double) loses it over enough periods
 LOSS = 1e-6
 
+_EPS = 2.0 ** -52
+
+
+def rounded(rate: float, t: float, u0: float = 0.0, rel: float = 8 * _EPS) -> float:
+    """The error of a phase u = rate·t + u0 formed in doubles from a rate known to ``rel``
+    (relative: its formula's roundings): |rate·t|·rel + ulp(u).  A Jacobi or circular function's
+    slope in its phase is at most 1, so this bounds its error relative to its amplitude.
+
+    >>> rounded(5.0, 1e12) > 1e-3, rounded(5.0, 10.0) < 1e-13
+    (True, True)
+    """
+    u = rate * t + u0
+    return abs(rate * t) * rel + math.ulp(u)
+
+
+def warn_lost(res, times, errs, what: str) -> float:
+    """Warn once (naming the worst time and how many) when a reported time's phase error ``errs[i]``
+    (radians, or the same fraction of the oscillation) exceeds :data:`LOSS`; the largest error."""
+    worst, count = None, 0
+    for t, e in zip(times, errs):
+        if e > LOSS:
+            count += 1
+            if worst is None or e > worst[1]:
+                worst = (t, e)
+    if worst is not None:
+        t, e = worst
+        how = "has no correct digits" if e >= 1.0 else f"has a phase error up to {e:.2g}"
+        more = f" (digits lost at {count} of the {len(times)} reported times)" if count > 1 else ""
+        res.warn(f"{what} at t = {t:g} s {how}{more}: its phase is formed in doubles, held to about one "
+                 "ulp and its rate's last digits, so a phase beyond ~1e9 costs the answer its digits; "
+                 "ask for a smaller t")
+    return max(errs, default=0.0)
+
+
 #: Dekker's splitter for doubles, 2^27 + 1
 _SPLIT = 134217729.0
 _FMA = getattr(math, "fma", None)

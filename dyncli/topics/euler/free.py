@@ -26,6 +26,7 @@ import math
 
 from dyncli.backends import FLOAT_OPS, ops_for
 from dyncli.elliptic import ellipj, ellipK, elliprf
+from dyncli.phase import rounded
 
 EQUAL_TOL = 1e-13
 
@@ -108,6 +109,13 @@ class Asymmetric:
             u0 = s0 * elliprf(c0 * c0, d0 * d0, 1.0)
             self.u0 = math.copysign(2.0 * ellipK(m, m1), s0) - u0 if c0 < 0 else u0
 
+    def phase_error(self, t: float) -> float:
+        """The error of ω(t) relative to its amplitudes from its phase λt + u0 formed in doubles
+        (:func:`dyncli.phase.rounded`); 0 for constant ω and on the separatrix (tanh, sech settle)."""
+        if self.constant or self.m1 == 0.0:
+            return 0.0
+        return rounded(self.lam, t, self.u0)
+
     @property
     def period(self) -> float | None:
         """Period of ω(t) (4K/|λ|); None on the separatrix or for constant ω."""
@@ -177,6 +185,10 @@ class Axisymmetric:
         self.alpha = 1.0 if w03 >= 0 else -1.0              # (39.20); ω03 = 0 takes α = 1
         self.psi_dot = self.alpha * math.hypot(*lam_vec)    # (39.20); hypot: no overflow of the squares
         self.theta = math.atan2(math.hypot(w01, w02), abs(lam_vec[2]))   # (39.21)
+
+    def phase_error(self, t: float) -> float:
+        """As :meth:`Asymmetric.phase_error`, of the precession phase λt."""
+        return rounded(self.lam, t)
 
     def omega(self, t):
         """ω at t, as :meth:`Asymmetric.omega`."""

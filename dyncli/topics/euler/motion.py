@@ -85,6 +85,10 @@ def solve(pb: Body, options: SolveOptions | None = None, search_end: float | Non
                                  "magnitudes (its elliptic constants overflow): rescale the units")
         res.method = "closed-form"
         drift_H, drift_T = _drifts(I, W, H0, T0)
+        if times and max(abs(t) for t in times) * abs(getattr(exact, "lam", 0.0)) > 1e8:   # (else none can)
+            from dyncli.phase import warn_lost
+
+            warn_lost(res, times, [exact.phase_error(t) for t in times], "ω")
     elif method == "closed-form":
         raise InputError("the closed form is for torque-free bodies; remove M or use auto/an ODE method", "accuracy.method")
     else:

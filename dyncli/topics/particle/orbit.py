@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from dyncli.errors import InputError, NumericalError
+from dyncli.phase import LOSS, warn_lost
 from dyncli.result import Result, Series
 from dyncli.topics.particle.kepler import EPS, Orbit, e_minus_sin, kepler_H, sinh_minus
 from dyncli.topics.particle.trajectory import OdePhase, Trajectory
@@ -135,6 +136,9 @@ def solve_exact(p, F, orb: Orbit) -> Result:
     _warn_surface(res, p, orb)
     t_max = max(times) if times else 0.0
     res.error_estimate = kepler_estimate(orb, t_max, mu_rounding(p, orb.mu)) if times else 0.0
+    if res.error_estimate > LOSS:           # the mean anomaly n·t run for many revolutions
+        mu_err = mu_rounding(p, orb.mu)
+        warn_lost(res, times, [kepler_estimate(orb, t, mu_err) for t in times], "the state")
     res.extra["error_estimate_note"] = NOTE
     res.extra["energy_scale"] = scale
     res.extra["nfev"] = 0
