@@ -46,6 +46,7 @@ class Piece:
     batch: Callable | None = None  # ode: the step's interpolant, unprojected, on an array of times -> (dim, k)
     many: Callable | None = None   # an exact piece's q̇ at an array of times -> (k, n), as fn's one by one
     powers: Callable | None = None  # kinematics: the power of the drives and loads at an array of times -> (k,)
+    power_stack: Callable | None = None  # pieces evaluated together: power_stack([fn per time], times) -> (k,)
     stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
     states: Callable | None = None  # pieces evaluated together: states([fn per time], times) -> [fn(t)]
 

@@ -147,7 +147,8 @@ def _kinematics(scene: Scene, traj, acc):
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
         traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
-                              powers=fn.powers, stack=_kin_velocities, states=_kin_states))
+                              powers=fn.powers, stack=_kin_velocities, states=_kin_states,
+                              power_stack=_kin_powers))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
