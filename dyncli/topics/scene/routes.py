@@ -136,9 +136,16 @@ def _kinematics(scene: Scene, traj, acc):
     s = scene.system
     grid = _drive_grid(s, traj.t_end)
     qs = [scene.q0]
-    for t in grid[1:]:
-        qs.append(_position(s, qs[-1], t))
-    conds = [float(np.linalg.cond(s.jac(q))) for q in qs]
+    for k, t in enumerate(grid[1:]):
+        # Newton from the quadratic through the last three grid positions (off by O(h³), so
+        # two steps fewer than from the last one; the same branch, nearer): from the last
+        # position itself where that does not converge (_position)
+        guess = qs[-1] if k < 2 else 3.0 * (qs[-1] - qs[-2]) + qs[-3]
+        qs.append(_newton(s, guess, t) if k >= 2 else None)
+        if qs[-1] is None:
+            qs[-1] = _position(s, qs[-2], t)
+    starts = _starts(s, qs, grid)
+    conds = [c for _v, _a, _sc, c in starts]
     worst = int(np.argmax(conds))
     if conds[worst] > 1e8:
         scene.warnings.append(f"the mechanism comes near a toggle position (the joint rows' condition number reaches "
@@ -146,6 +153,7 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
+        fn.start = starts[k][:3]
         traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
                               powers=fn.powers, stack=_kin_velocities, states=_kin_states,
                               power_stack=_kin_powers))
@@ -154,6 +162,29 @@ def _kinematics(scene: Scene, traj, acc):
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
     traj.method = "kinematics"
     return traj
+
+
+def _starts(s, qs, grid) -> list:
+    """Per grid position: (q̇, q̈, the length scale, cond(J)) — _KinPiece's start (q̇ and q̈
+    None near a toggle, cond(J) > 1e8), all in stacked solves."""
+    Q = np.array(qs, dtype=float)
+    X = s.stack(Q)
+    Js = s.jac_many(X)
+    conds = np.linalg.cond(Js) if Js.size else np.ones(len(qs))
+    td = s.at_times(np.asarray(grid, dtype=float))
+    out = []
+    try:
+        V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
+        A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
+    except np.linalg.LinAlgError:
+        V = A = None
+    for k, q in enumerate(qs):
+        c = float(conds[k])
+        if V is not None and c <= 1e8:
+            out.append((V[k], A[k], assembly.length_scale(q, s), c))
+        else:                           # near a toggle the rates are not to be trusted
+            out.append((None, None, assembly.length_scale(q, s), c))
+    return out
 
 
 def _drive_grid(s, t_end: float) -> np.ndarray:
@@ -183,6 +214,26 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
 
 #: the most pieces the kinematics route continues its positions over
 KIN_PIECES = 20_000
+
+
+def _newton(s, q, t):
+    """Newton on φ(q, t) = 0 from q, stopped as _KinPiece.position stops (the correction at the
+    rounding of the positions, or the next one foreseen below it); None if it does not converge
+    in 6 steps."""
+    scale = assembly.length_scale(q, s)
+    last = None
+    for _ in range(6):
+        try:
+            dq = np.linalg.solve(s.jac(q), s.phi(q, t))
+        except np.linalg.LinAlgError:
+            return None
+        q = q - dq
+        size = float(np.max(np.abs(dq)))
+        if size <= 4 * EPS * scale or last is not None and size <= 1e-6 * scale and \
+                size ** 3 <= EPS * scale * last * last:
+            return q
+        last = size
+    return None
 
 
 def _position(s, q, t, depth: int = 0):
