@@ -145,7 +145,7 @@ def _kinematics(scene: Scene, traj, acc):
         if qs[-1] is None:
             qs[-1] = _position(s, qs[-2], t)
     starts = _starts(s, qs, grid)
-    conds = [c for _v, _a, _sc, c in starts]
+    conds = [st[3] for st in starts]
     worst = int(np.argmax(conds))
     if conds[worst] > 1e8:
         scene.warnings.append(f"the mechanism comes near a toggle position (the joint rows' condition number reaches "
@@ -153,10 +153,10 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
-        fn.start = starts[k][:3]
+        fn.start, fn.sigma = starts[k][:3], starts[k][4]
         traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
                               powers=fn.powers, stack=_kin_velocities, states=_kin_states,
-                              power_stack=_kin_powers))
+                              power_stack=_kin_powers, coords=_kin_coordinates))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
@@ -165,12 +165,14 @@ def _kinematics(scene: Scene, traj, acc):
 
 
 def _starts(s, qs, grid) -> list:
-    """Per grid position: (q̇, q̈, the length scale, cond(J)) — _KinPiece's start (q̇ and q̈
-    None near a toggle, cond(J) > 1e8), all in stacked solves."""
+    """Per grid position: (q̇, q̈, the length scale, cond(J), (J, σ_max, σ_min)) — _KinPiece's
+    start (q̇ and q̈ None near a toggle, cond(J) > 1e8) and its ``sigma``, all in stacked solves."""
     Q = np.array(qs, dtype=float)
     X = s.stack(Q)
     Js = s.jac_many(X)
-    conds = np.linalg.cond(Js) if Js.size else np.ones(len(qs))
+    sv = np.linalg.svd(Js, compute_uv=False) if Js.size else np.ones((len(qs), 1))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        conds = sv[:, 0] / sv[:, -1]            # (np.linalg.cond's 2-norm)
     td = s.at_times(np.asarray(grid, dtype=float))
     out = []
     try:
@@ -181,9 +183,9 @@ def _starts(s, qs, grid) -> list:
     for k, q in enumerate(qs):
         c = float(conds[k])
         if V is not None and c <= 1e8:
-            out.append((V[k], A[k], assembly.length_scale(q, s), c))
+            out.append((V[k], A[k], assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
         else:                           # near a toggle the rates are not to be trusted
-            out.append((None, None, assembly.length_scale(q, s), c))
+            out.append((None, None, assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
     return out
 
 
@@ -198,7 +200,7 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
     pieces = 64
     for e in s.elements:
         if e.kind == "drive":
-            vals = np.array([e.f(t)[0] for t in fine])
+            vals = e.at_times(fine)[:, 0]
             angle = s.names[e.index].startswith("angle.")
             step = 0.05 if angle else 0.02 * size
             travel = float(np.sum(np.abs(np.diff(vals))))
@@ -260,6 +262,7 @@ class _KinPiece:
     def __init__(self, s, q_a, t_a: float):
         self.s, self.q_a, self.t_a = s, q_a, float(t_a)
         self.start = None               # (v_a, a_a, the length scale), made when first asked
+        self.sigma = None               # (J, σ_max, σ_min) at q_a, when the grid made them (_near_toggle)
 
     def _start(self):
         s = self.s
@@ -379,10 +382,32 @@ def _kin_rates(pieces, ts):
     Q, td = _kin_positions(pieces, ts)
     X = s.stack(Q)
     Js = s.jac_many(X)
-    for i in _conds_above(Js, 1e12):
+    maybe = _near_toggle(pieces, Js, 1e12)
+    for i in maybe[_conds_above(Js[maybe], 1e12)] if maybe.size else ():
         _kin_state(s, pieces[i].position(float(ts[i])), float(ts[i]))      # raises its message
     V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
     return X, Js, V, td
+
+
+def _near_toggle(pieces, Js, limit: float) -> np.ndarray:
+    """The indices of the Jacobians ``Js`` (of ``pieces[i]``) whose condition number may exceed
+    ``limit``: excluded without a factorization where the piece's start knows J_a and its
+    extreme singular values (Weyl: each σ of J moves by at most ‖J − J_a‖₂ ≤ ‖J − J_a‖_F, so
+    cond(J) ≤ (σ_max + d)/(σ_min − d) with d = ‖J − J_a‖_F)."""
+    k = Js.shape[0]
+    Ja = np.zeros_like(Js)
+    smax = np.zeros(k)
+    smin = np.zeros(k)                  # 0: not known, never excluded
+    rows: dict[int, tuple] = {}
+    for i, p in enumerate(pieces):
+        rows.setdefault(id(p), (p, []))[1].append(i)
+    for p, idx in rows.values():
+        if p.sigma is not None:
+            Ja[idx], smax[idx], smin[idx] = p.sigma
+    d = np.sqrt(((Js - Ja) ** 2).sum(axis=(1, 2)))
+    with np.errstate(all="ignore"):
+        ok = (smin > d) & (smax + d <= limit * (smin - d))
+    return np.nonzero(~ok)[0]
 
 
 def _conds_above(Js, limit: float) -> list[int]:
@@ -406,6 +431,13 @@ def _kin_states(pieces, ts) -> list:
     states a search will read, made together; the numbers of each piece's own call)."""
     X, _Js, V, _td = _kin_rates(pieces, ts)
     return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
+
+
+def _kin_coordinates(pieces, ts) -> np.ndarray:
+    """(q, q̇) of ``pieces[i]`` at ``ts[i]``, (2n, len(ts)) (Piece.coords of the kinematics route:
+    the numbers of :func:`_kin_states`)."""
+    X, _Js, V, _td = _kin_rates(pieces, ts)
+    return np.concatenate([X.Q.T, V.T])
 
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
