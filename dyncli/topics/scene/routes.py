@@ -325,25 +325,17 @@ def _kin_positions(pieces, ts):
     T = np.asarray(ts, dtype=float)
     k = len(T)
     td = s.at_times(T)
-    starts = {}
-    for p in pieces:
-        if id(p) not in starts:
-            starts[id(p)] = (p, p._start())
-    # per state: its piece's start (q_a, v_a, a_a, t_a, length scale)
-    Qa = np.empty((k, s.n))
-    Va = np.zeros((k, s.n))
-    Aa = np.zeros((k, s.n))
-    Ta = np.empty(k)
-    scale = np.empty(k)
-    taylor = np.zeros(k, dtype=bool)
-    rows: dict[int, list[int]] = {}
-    for i, p in enumerate(pieces):
-        rows.setdefault(id(p), []).append(i)
-    for key, idx in rows.items():
-        p, (v, a, sc) = starts[key]
-        Qa[idx], Ta[idx], scale[idx] = p.q_a, p.t_a, sc
+    uniq, which = _pieces_of(pieces)
+    # per piece, then per state (its piece's row): the start (q_a, v_a, a_a, t_a, length scale)
+    g = len(uniq)
+    Qg, Vg, Ag = np.empty((g, s.n)), np.zeros((g, s.n)), np.zeros((g, s.n))
+    Tg, Sg, Yg = np.empty(g), np.empty(g), np.zeros(g, dtype=bool)
+    for j, p in enumerate(uniq):
+        v, a, sc = p._start()
+        Qg[j], Tg[j], Sg[j] = p.q_a, p.t_a, sc
         if v is not None:
-            Va[idx], Aa[idx], taylor[idx] = v, a, True
+            Vg[j], Ag[j], Yg[j] = v, a, True
+    Qa, Va, Aa, Ta, scale, taylor = Qg[which], Vg[which], Ag[which], Tg[which], Sg[which], Yg[which]
     tau = T - Ta
     Q = Qa.copy()
     Q[taylor] = (Qa + Va * tau[:, None] + (0.5 * Aa) * (tau * tau)[:, None])[taylor]
@@ -389,21 +381,33 @@ def _kin_rates(pieces, ts):
     return X, Js, V, td
 
 
+def _pieces_of(pieces) -> tuple[list, np.ndarray]:
+    """(the distinct pieces in order of first appearance, the index of each entry's among them)."""
+    first: dict[int, int] = {}
+    uniq = []
+    which = np.empty(len(pieces), dtype=np.intp)
+    for i, p in enumerate(pieces):
+        j = first.get(id(p))
+        if j is None:
+            j = first[id(p)] = len(uniq)
+            uniq.append(p)
+        which[i] = j
+    return uniq, which
+
+
 def _near_toggle(pieces, Js, limit: float) -> np.ndarray:
     """The indices of the Jacobians ``Js`` (of ``pieces[i]``) whose condition number may exceed
     ``limit``: excluded without a factorization where the piece's start knows J_a and its
     extreme singular values (Weyl: each σ of J moves by at most ‖J − J_a‖₂ ≤ ‖J − J_a‖_F, so
     cond(J) ≤ (σ_max + d)/(σ_min − d) with d = ‖J − J_a‖_F)."""
-    k = Js.shape[0]
-    Ja = np.zeros_like(Js)
-    smax = np.zeros(k)
-    smin = np.zeros(k)                  # 0: not known, never excluded
-    rows: dict[int, tuple] = {}
-    for i, p in enumerate(pieces):
-        rows.setdefault(id(p), (p, []))[1].append(i)
-    for p, idx in rows.values():
+    uniq, which = _pieces_of(pieces)
+    g = len(uniq)
+    Jg = np.zeros((g,) + Js.shape[1:])
+    smax, smin = np.zeros(g), np.zeros(g)       # σ_min 0: not known, never excluded
+    for j, p in enumerate(uniq):
         if p.sigma is not None:
-            Ja[idx], smax[idx], smin[idx] = p.sigma
+            Jg[j], smax[j], smin[j] = p.sigma
+    Ja, smax, smin = Jg[which], smax[which], smin[which]
     d = np.sqrt(((Js - Ja) ** 2).sum(axis=(1, 2)))
     with np.errstate(all="ignore"):
         ok = (smin > d) & (smax + d <= limit * (smin - d))
