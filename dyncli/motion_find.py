@@ -318,8 +318,17 @@ class Odometer:
             S = self._nodes(a, b)
         stops = self._stops(S)
         if stops:                                   # |v| has a kink there: a break of its own
-            self.pts = np.array(sorted(set(self.pts.tolist()) | set(stops)))
-            S = self._nodes(self.pts[:-1], self.pts[1:])
+            old = self.pts
+            self.pts = np.array(sorted(set(old.tolist()) | set(stops)))
+            a, b = self.pts[:-1], self.pts[1:]
+            # the pieces not cut keep their nodes' speeds (the same nodes, the same values);
+            # only the pieces a stop cut are evaluated again
+            j = np.minimum(np.searchsorted(old, a), old.size - 2)
+            kept = (old[j] == a) & (old[j + 1] == b)
+            S_new = np.empty((a.size,) + S.shape[1:])
+            S_new[kept] = S[j[kept]]
+            S_new[~kept] = self._nodes(a[~kept], b[~kept])
+            S = S_new
             self._early = None                      # (the partial pieces' breaks have changed)
         first = self._sum(S, self.pts[:-1], self.pts[1:])
         self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])

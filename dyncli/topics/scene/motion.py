@@ -46,6 +46,8 @@ class Piece:
     batch: Callable | None = None  # ode: the step's interpolant, unprojected, on an array of times -> (dim, k)
     many: Callable | None = None   # an exact piece's q̇ at an array of times -> (k, n), as fn's one by one
     powers: Callable | None = None  # kinematics: the power of the drives and loads at an array of times -> (k,)
+    power_stack: Callable | None = None  # pieces evaluated together: power_stack([fn per time], times) -> (k,)
+    coords: Callable | None = None  # pieces evaluated together: coords([fn per time], times) -> (2n, k), q over q̇
     stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
     states: Callable | None = None  # pieces evaluated together: states([fn per time], times) -> [fn(t)]
 
@@ -167,7 +169,6 @@ class Trajectory:
         out = np.empty((2 * n, ts.size))
         if not ts.size:
             return out
-        self.prefetch(ts)
         dense = self._dense()
         which = np.minimum(np.searchsorted(dense.ends, ts, side="left"), len(self.pieces) - 1)
         if dense.stack is not None:
@@ -176,16 +177,29 @@ class Trajectory:
                 k = which[on]
                 out[:, on] = dense.stack(dense.row[k], np.clip(ts[on], dense.t_a[k], dense.t_b[k]))[:, :2 * n].T
                 which = np.where(on, -1, which)
+        stacked: dict = {}                  # pieces evaluated together (the kinematics route's)
+        alone = []
         for k in sorted(set(which.tolist()) - {-1}):
             sel = np.nonzero(which == k)[0]
             p = self.pieces[k]
             if p.batch is not None:
                 y = np.asarray(p.batch(np.clip(ts[sel], p.t_a, p.t_b)), dtype=float).reshape(-1, sel.size)
                 out[:, sel] = y[:2 * n]
+            elif p.coords is not None:
+                stacked.setdefault((p.coords, p.modes), []).append((sel, p))
             else:
-                for i in sel:
-                    q, v, _ = self.state(float(ts[i]))
-                    out[:n, i], out[n:, i] = q, v
+                alone.append(sel)
+        if alone:
+            sel = np.concatenate(alone)
+            self.prefetch(ts[sel])
+            for i in sel:
+                q, v, _ = self.state(float(ts[i]))
+                out[:n, i], out[n:, i] = q, v
+        for (coords, modes), parts in stacked.items():
+            set_modes(self.system, modes)
+            sel = np.concatenate([sel for sel, _ in parts])
+            fns = [p.fn for part, p in parts for _ in part]
+            out[:, sel] = coords(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
         return out
 
     def _stacked_rates(self, dense, rows, ts) -> np.ndarray:

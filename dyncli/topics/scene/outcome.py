@@ -18,9 +18,10 @@ from .prepare import Scene
 
 # ----------------------------------------------------------------------------- results
 
-def instants_of(scene: Scene, traj, route: str):
+def instants_of(scene: Scene, traj, route: str, times=()):
     """inst(t): every result at one instant of the solved motion (the forces from the route's
-    own solve: the kinematics' J λ balance, the closed form's motion along its one direction)."""
+    own solve: the kinematics' J λ balance, the closed form's motion along its one direction);
+    ``times``: the instants about to be asked (their W_nc integrated together, _Work.prime)."""
     s = scene.system
 
     def state_at(t):
@@ -38,7 +39,8 @@ def instants_of(scene: Scene, traj, route: str):
 
     q0, v0, _, _ = state_at(0.0)
     E1 = s.kinetic(v0) + s.potential(q0)
-    W_of = _work(scene, traj, route)
+    W_of = _Work(scene, traj, route)
+    W_of.prime(times)
 
     def inst(t):
         q, v, W, solved = state_at(t)
@@ -49,7 +51,8 @@ def instants_of(scene: Scene, traj, route: str):
 
 def results(scene: Scene, traj, route: str, times: list[float], find_raw, params, acc) -> Result:
     t_stop = traj.stopped
-    inst = instants_of(scene, traj, route)
+    inst = instants_of(scene, traj, route, [t for t in times if t_stop is None or t <= t_stop]
+                       + [ev.t for ev in traj.events if t_stop is None or ev.t <= t_stop])
     instants = [None if (t_stop is not None and t > t_stop) else inst(t) for t in times]
     res = Result({"dof": scene.dof, "coordinates": scene.coords, "route": route, "t": list(times)})
     res.results.update(report.collect(instants))
@@ -145,14 +148,25 @@ def _kin_forces(s, q, v, t):
     return a, lam
 
 
-def _work(scene, traj, route):
-    """W_nc(t): on an ODE phase integrated with the state; on an exact phase by quadrature of
-    the power; each impact's energy loss counted from its instant on (the work of the
-    impulsive reactions)."""
-    s = scene.system
-    free = not any(ld.kind in ("force", "torque") for ld in s.loads)
+class _Work:
+    """W_nc(t) (called as ``W(t, W_state)``): on an ODE phase integrated with the state; on an
+    exact phase by quadrature of the power; each impact's energy loss counted from its instant on
+    (the work of the impulsive reactions).  The pieces whose power is evaluated for many pieces
+    at once (Piece.power_stack: the kinematics route's) are integrated together
+    (quadrature.gauss_kronrod_many: every piece's panels in one evaluation per pass, each piece
+    to its own tolerance, as it would be alone): every whole piece when the first is needed, and
+    the partial pieces of the times :meth:`prime` is given."""
 
-    def power(p, t):
+    def __init__(self, scene, traj, route):
+        self.s, self.traj = scene.system, traj
+        self.free = not any(ld.kind in ("force", "torque") for ld in self.s.loads)
+        self.cum = [0.0]                # W_nc over the whole pieces before piece k, built as asked
+        self.steps: list = []           # W_nc across each whole DOP853 step (one stacked evaluation)
+        self.stacked: dict | None = None    # W_nc of the whole pieces integrated together, by index
+        self.partial: dict = {}         # (piece index, t) -> W_nc from the piece's start to t
+
+    def power(self, p, t) -> float:
+        s = self.s
         motion.set_modes(s, p.modes)
         q, v, _ = p.fn(float(t))
         if p.route == "kinematics":
@@ -161,10 +175,23 @@ def _work(scene, traj, route):
             return P + s.applied(q, v, float(t))[1]
         return s.solve(q, v, float(t))[2]
 
-    from dyncli.quadrature import gauss_kronrod
+    def powers(self, p, ts) -> np.ndarray:
+        """power(p, t) at the nodes ``ts``: one stacked solve when the piece's matrix is constant."""
+        s = self.s
+        motion.set_modes(s, p.modes)
+        if p.powers is not None:
+            return p.powers(ts)
+        if p.route == "kinematics" or not s.constant_matrix():
+            return np.array([self.power(p, t) for t in ts])
+        states = [p.fn(float(t))[:2] + (float(t),) for t in ts]
+        return np.array([P for _a, _lam, P in s.solve_many(states)])
 
-    def piece(p, b: float) -> float:
-        if b <= p.t_a or p.route == "statics" or p.route == "quadrature" and free:
+    def _trivial(self, p, b: float) -> bool:
+        return b <= p.t_a or p.route == "statics" or p.route == "quadrature" and self.free
+
+    def piece(self, p, b: float) -> float:
+        s = self.s
+        if self._trivial(p, b):
             return 0.0
         if p.route == "ode":          # W_nc is a component of the state (never projected): the raw step
             if p.batch is not None:
@@ -173,46 +200,97 @@ def _work(scene, traj, route):
         motion.set_modes(s, p.modes)
         if not _powered(s):             # the power is 0.0 at every state: so is its integral
             return 0.0
+        from dyncli.quadrature import gauss_kronrod
+
         mid = 0.5 * (p.t_a + b)
         q, v, _ = p.fn(mid)
         # each piece to the rounding of the energies it moves (an exact motion: only the
         # quadrature's own error is left, well below the energy residual it is checked by)
-        scale = abs(power(p, mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
-        return gauss_kronrod(lambda x: powers(p, x), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+        scale = abs(self.power(p, mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
+        return gauss_kronrod(lambda x: self.powers(p, x), p.t_a, b, 1e-12, 1e-13 * scale)[0]
 
-    def powers(p, ts) -> np.ndarray:
-        """power(p, t) at the nodes ``ts``: one stacked solve when the piece's matrix is constant."""
-        motion.set_modes(s, p.modes)
-        if p.powers is not None:
-            return p.powers(ts)
-        if p.route == "kinematics" or not s.constant_matrix():
-            return np.array([power(p, t) for t in ts])
-        states = [p.fn(float(t))[:2] + (float(t),) for t in ts]
-        return np.array([P for _a, _lam, P in s.solve_many(states)])
+    def together(self, items) -> list[float]:
+        """:meth:`piece` of each (piece, b) in ``items``, those with a ``power_stack`` integrated
+        together (grouped by their joint set): the same integrand and tolerance per piece, the
+        scale's states and powers at the midpoints stacked too."""
+        from dyncli.quadrature import gauss_kronrod_many
 
-    cum = [0.0]                         # W_nc over the whole pieces before piece k, built as asked
-    steps = []                          # W_nc across each whole DOP853 step (one stacked evaluation)
+        s = self.s
+        out = [0.0] * len(items)
+        groups: dict = {}
+        for k, (p, b) in enumerate(items):
+            if p.power_stack is None or p.states is None:
+                out[k] = self.piece(p, b)
+            elif not self._trivial(p, b):
+                groups.setdefault((p.power_stack, p.states, p.modes), []).append(k)
+        for (stack, states, modes), ks in groups.items():
+            motion.set_modes(s, modes)
+            if not _powered(s):
+                continue
+            fns = [items[k][0].fn for k in ks]
+            a = np.array([items[k][0].t_a for k in ks])
+            b = np.array([items[k][1] for k in ks], dtype=float)
+            mid = 0.5 * (a + b)
+            P = stack(fns, mid)
+            E = np.array([s.kinetic(v) + abs(s.potential(q)) for q, v, _ in states(fns, mid)])
+            scale = np.abs(P) * (b - a) + E
 
-    def whole(j: int) -> float:
+            def f(i, t, fns=fns, stack=stack):
+                return stack([fns[j] for j in i.tolist()], t)
+            I = gauss_kronrod_many(f, a, b, 1e-12, 1e-13 * scale)[0]
+            for k, val in zip(ks, I.tolist()):
+                out[k] = val
+        return out
+
+    def prime(self, ts) -> None:
+        """The W_nc of the whole pieces and of the partial pieces of the times ``ts`` (the
+        instants about to be reported), integrated together where the pieces allow."""
+        traj = self.traj
+        ps = traj.pieces
+        if not any(p.power_stack is not None for p in ps):
+            return
+        wanted = [] if self.stacked is not None else [(j, p.t_b) for j, p in enumerate(ps) if p.power_stack is not None]
+        for t in dict.fromkeys(float(t) for t in ts):
+            if t != traj.t0:
+                k = traj.index(t)
+                if ps[k].power_stack is not None and (k, t) not in self.partial:
+                    wanted.append((k, t))
+        got = self.together([(ps[j], b) for j, b in wanted])
+        if self.stacked is None:
+            self.stacked = {}
+        for (j, b), val in zip(wanted, got):
+            if b == ps[j].t_b:
+                self.stacked.setdefault(j, val)
+            self.partial[(j, b)] = val
+
+    def whole(self, j: int) -> float:
+        traj, s = self.traj, self.s
         p = traj.pieces[j]
         if p.route == "ode" and p.t_b > p.t_a:
-            if not steps:
-                steps.append(traj.increments(2 * s.n))
-            if not np.isnan(steps[0][j]):
-                return float(steps[0][j])
-        return piece(p, p.t_b)
+            if not self.steps:
+                self.steps.append(traj.increments(2 * s.n))
+            if not np.isnan(self.steps[0][j]):
+                return float(self.steps[0][j])
+        if p.power_stack is not None:
+            if self.stacked is None:
+                self.prime(())
+            if j in self.stacked:
+                return self.stacked[j]
+        return self.piece(p, p.t_b)
 
-    def W(t, _W):
+    def __call__(self, t, _W):
+        traj = self.traj
         if t == traj.t0:
             return 0.0
         k = traj.index(t)
+        cum = self.cum
         while len(cum) <= k:
-            cum.append(cum[-1] + whole(len(cum) - 1))
-        total = cum[k] + piece(traj.pieces[k], t)
-        motion.set_modes(s, traj.pieces[k].modes)
+            cum.append(cum[-1] + self.whole(len(cum) - 1))
+        p = traj.pieces[k]
+        got = self.partial.get((k, float(t)))
+        total = cum[k] + (got if got is not None else self.piece(p, t))
+        motion.set_modes(self.s, p.modes)
         return total - sum(im.energy_loss for im in traj.impacts if im.t < t)
-
-    return W
 
 
 def _powered(s) -> bool:

@@ -136,9 +136,16 @@ def _kinematics(scene: Scene, traj, acc):
     s = scene.system
     grid = _drive_grid(s, traj.t_end)
     qs = [scene.q0]
-    for t in grid[1:]:
-        qs.append(_position(s, qs[-1], t))
-    conds = [float(np.linalg.cond(s.jac(q))) for q in qs]
+    for k, t in enumerate(grid[1:]):
+        # Newton from the quadratic through the last three grid positions (off by O(h³), so
+        # two steps fewer than from the last one; the same branch, nearer): from the last
+        # position itself where that does not converge (_position)
+        guess = qs[-1] if k < 2 else 3.0 * (qs[-1] - qs[-2]) + qs[-3]
+        qs.append(_newton(s, guess, t) if k >= 2 else None)
+        if qs[-1] is None:
+            qs[-1] = _position(s, qs[-2], t)
+    starts = _starts(s, qs, grid)
+    conds = [st[3] for st in starts]
     worst = int(np.argmax(conds))
     if conds[worst] > 1e8:
         scene.warnings.append(f"the mechanism comes near a toggle position (the joint rows' condition number reaches "
@@ -146,13 +153,40 @@ def _kinematics(scene: Scene, traj, acc):
                               f"{math.log10(conds[worst]):.0f} digits there")
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
+        fn.start, fn.sigma = starts[k][:3], starts[k][4]
         traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
-                              powers=fn.powers, stack=_kin_velocities, states=_kin_states))
+                              powers=fn.powers, stack=_kin_velocities, states=_kin_states,
+                              power_stack=_kin_powers, coords=_kin_coordinates))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
     traj.phases.append(phases.Phase(0.0, traj.t_end, phases.joints_of(s), "kinematics"))
     traj.method = "kinematics"
     return traj
+
+
+def _starts(s, qs, grid) -> list:
+    """Per grid position: (q̇, q̈, the length scale, cond(J), (J, σ_max, σ_min)) — _KinPiece's
+    start (q̇ and q̈ None near a toggle, cond(J) > 1e8) and its ``sigma``, all in stacked solves."""
+    Q = np.array(qs, dtype=float)
+    X = s.stack(Q)
+    Js = s.jac_many(X)
+    sv = np.linalg.svd(Js, compute_uv=False) if Js.size else np.ones((len(qs), 1))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        conds = sv[:, 0] / sv[:, -1]            # (np.linalg.cond's 2-norm)
+    td = s.at_times(np.asarray(grid, dtype=float))
+    out = []
+    try:
+        V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
+        A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
+    except np.linalg.LinAlgError:
+        V = A = None
+    for k, q in enumerate(qs):
+        c = float(conds[k])
+        if V is not None and c <= 1e8:
+            out.append((V[k], A[k], assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
+        else:                           # near a toggle the rates are not to be trusted
+            out.append((None, None, assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
+    return out
 
 
 def _drive_grid(s, t_end: float) -> np.ndarray:
@@ -166,7 +200,7 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
     pieces = 64
     for e in s.elements:
         if e.kind == "drive":
-            vals = np.array([e.f(t)[0] for t in fine])
+            vals = e.at_times(fine)[:, 0]
             angle = s.names[e.index].startswith("angle.")
             step = 0.05 if angle else 0.02 * size
             travel = float(np.sum(np.abs(np.diff(vals))))
@@ -182,6 +216,26 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
 
 #: the most pieces the kinematics route continues its positions over
 KIN_PIECES = 20_000
+
+
+def _newton(s, q, t):
+    """Newton on φ(q, t) = 0 from q, stopped as _KinPiece.position stops (the correction at the
+    rounding of the positions, or the next one foreseen below it); None if it does not converge
+    in 6 steps."""
+    scale = assembly.length_scale(q, s)
+    last = None
+    for _ in range(6):
+        try:
+            dq = np.linalg.solve(s.jac(q), s.phi(q, t))
+        except np.linalg.LinAlgError:
+            return None
+        q = q - dq
+        size = float(np.max(np.abs(dq)))
+        if size <= 4 * EPS * scale or last is not None and size <= 1e-6 * scale and \
+                size ** 3 <= EPS * scale * last * last:
+            return q
+        last = size
+    return None
 
 
 def _position(s, q, t, depth: int = 0):
@@ -208,6 +262,7 @@ class _KinPiece:
     def __init__(self, s, q_a, t_a: float):
         self.s, self.q_a, self.t_a = s, q_a, float(t_a)
         self.start = None               # (v_a, a_a, the length scale), made when first asked
+        self.sigma = None               # (J, σ_max, σ_min) at q_a, when the grid made them (_near_toggle)
 
     def _start(self):
         s = self.s
@@ -270,25 +325,17 @@ def _kin_positions(pieces, ts):
     T = np.asarray(ts, dtype=float)
     k = len(T)
     td = s.at_times(T)
-    starts = {}
-    for p in pieces:
-        if id(p) not in starts:
-            starts[id(p)] = (p, p._start())
-    # per state: its piece's start (q_a, v_a, a_a, t_a, length scale)
-    Qa = np.empty((k, s.n))
-    Va = np.zeros((k, s.n))
-    Aa = np.zeros((k, s.n))
-    Ta = np.empty(k)
-    scale = np.empty(k)
-    taylor = np.zeros(k, dtype=bool)
-    rows: dict[int, list[int]] = {}
-    for i, p in enumerate(pieces):
-        rows.setdefault(id(p), []).append(i)
-    for key, idx in rows.items():
-        p, (v, a, sc) = starts[key]
-        Qa[idx], Ta[idx], scale[idx] = p.q_a, p.t_a, sc
+    uniq, which = _pieces_of(pieces)
+    # per piece, then per state (its piece's row): the start (q_a, v_a, a_a, t_a, length scale)
+    g = len(uniq)
+    Qg, Vg, Ag = np.empty((g, s.n)), np.zeros((g, s.n)), np.zeros((g, s.n))
+    Tg, Sg, Yg = np.empty(g), np.empty(g), np.zeros(g, dtype=bool)
+    for j, p in enumerate(uniq):
+        v, a, sc = p._start()
+        Qg[j], Tg[j], Sg[j] = p.q_a, p.t_a, sc
         if v is not None:
-            Va[idx], Aa[idx], taylor[idx] = v, a, True
+            Vg[j], Ag[j], Yg[j] = v, a, True
+    Qa, Va, Aa, Ta, scale, taylor = Qg[which], Vg[which], Ag[which], Tg[which], Sg[which], Yg[which]
     tau = T - Ta
     Q = Qa.copy()
     Q[taylor] = (Qa + Va * tau[:, None] + (0.5 * Aa) * (tau * tau)[:, None])[taylor]
@@ -327,10 +374,44 @@ def _kin_rates(pieces, ts):
     Q, td = _kin_positions(pieces, ts)
     X = s.stack(Q)
     Js = s.jac_many(X)
-    for i in _conds_above(Js, 1e12):
+    maybe = _near_toggle(pieces, Js, 1e12)
+    for i in maybe[_conds_above(Js[maybe], 1e12)] if maybe.size else ():
         _kin_state(s, pieces[i].position(float(ts[i])), float(ts[i]))      # raises its message
     V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
     return X, Js, V, td
+
+
+def _pieces_of(pieces) -> tuple[list, np.ndarray]:
+    """(the distinct pieces in order of first appearance, the index of each entry's among them)."""
+    first: dict[int, int] = {}
+    uniq = []
+    which = np.empty(len(pieces), dtype=np.intp)
+    for i, p in enumerate(pieces):
+        j = first.get(id(p))
+        if j is None:
+            j = first[id(p)] = len(uniq)
+            uniq.append(p)
+        which[i] = j
+    return uniq, which
+
+
+def _near_toggle(pieces, Js, limit: float) -> np.ndarray:
+    """The indices of the Jacobians ``Js`` (of ``pieces[i]``) whose condition number may exceed
+    ``limit``: excluded without a factorization where the piece's start knows J_a and its
+    extreme singular values (Weyl: each σ of J moves by at most ‖J − J_a‖₂ ≤ ‖J − J_a‖_F, so
+    cond(J) ≤ (σ_max + d)/(σ_min − d) with d = ‖J − J_a‖_F)."""
+    uniq, which = _pieces_of(pieces)
+    g = len(uniq)
+    Jg = np.zeros((g,) + Js.shape[1:])
+    smax, smin = np.zeros(g), np.zeros(g)       # σ_min 0: not known, never excluded
+    for j, p in enumerate(uniq):
+        if p.sigma is not None:
+            Jg[j], smax[j], smin[j] = p.sigma
+    Ja, smax, smin = Jg[which], smax[which], smin[which]
+    d = np.sqrt(((Js - Ja) ** 2).sum(axis=(1, 2)))
+    with np.errstate(all="ignore"):
+        ok = (smin > d) & (smax + d <= limit * (smin - d))
+    return np.nonzero(~ok)[0]
 
 
 def _conds_above(Js, limit: float) -> list[int]:
@@ -354,6 +435,13 @@ def _kin_states(pieces, ts) -> list:
     states a search will read, made together; the numbers of each piece's own call)."""
     X, _Js, V, _td = _kin_rates(pieces, ts)
     return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
+
+
+def _kin_coordinates(pieces, ts) -> np.ndarray:
+    """(q, q̇) of ``pieces[i]`` at ``ts[i]``, (2n, len(ts)) (Piece.coords of the kinematics route:
+    the numbers of :func:`_kin_states`)."""
+    X, _Js, V, _td = _kin_rates(pieces, ts)
+    return np.concatenate([X.Q.T, V.T])
 
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
