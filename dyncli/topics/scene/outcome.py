@@ -274,7 +274,7 @@ class _Work:
         if p.power_stack is not None:
             if self.stacked is None:
                 self.prime(())
-            if j in self.stacked:
+            if self.stacked is not None and j in self.stacked:
                 return self.stacked[j]
         return self.piece(p, p.t_b)
 

@@ -135,7 +135,7 @@ def _statics(s, traj, t, q, t_end):
 def _kinematics(scene: Scene, traj, acc):
     s = scene.system
     grid = _drive_grid(s, traj.t_end)
-    qs = [scene.q0]
+    qs: list = [scene.q0]
     for k, t in enumerate(grid[1:]):
         # Newton from the quadratic through the last three grid positions (off by O(h³), so
         # two steps fewer than from the last one; the same branch, nearer): from the last
@@ -175,6 +175,8 @@ def _starts(s, qs, grid) -> list:
         conds = sv[:, 0] / sv[:, -1]            # (np.linalg.cond's 2-norm)
     td = s.at_times(np.asarray(grid, dtype=float))
     out = []
+    V: np.ndarray | None
+    A: np.ndarray | None
     try:
         V = np.linalg.solve(Js, -s.phi_t_many(td)[:, :, None])[:, :, 0]
         A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
@@ -182,7 +184,7 @@ def _starts(s, qs, grid) -> list:
         V = A = None
     for k, q in enumerate(qs):
         c = float(conds[k])
-        if V is not None and c <= 1e8:
+        if V is not None and A is not None and c <= 1e8:
             out.append((V[k], A[k], assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
         else:                           # near a toggle the rates are not to be trusted
             out.append((None, None, assembly.length_scale(q, s), c, (Js[k], float(sv[k, 0]), float(sv[k, -1]))))
@@ -384,7 +386,7 @@ def _kin_rates(pieces, ts):
 def _pieces_of(pieces) -> tuple[list, np.ndarray]:
     """(the distinct pieces in order of first appearance, the index of each entry's among them)."""
     first: dict[int, int] = {}
-    uniq = []
+    uniq: list = []
     which = np.empty(len(pieces), dtype=np.intp)
     for i, p in enumerate(pieces):
         j = first.get(id(p))
