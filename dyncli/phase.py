@@ -62,7 +62,11 @@ def warn_lost(res, times, errs, what: str, why: str = WHY) -> float:
         t, e = worst
         how = "has no correct digits" if e >= 1.0 else f"has a phase error up to {e:.2g}"
         more = f" (digits lost at {count} of the {len(times)} reported times)" if count > 1 else ""
-        res.warn(f"{what} at t = {t:g} s {how}{more}: {why}; ask for a smaller t")
+        msg = f"{what} at t = {t:g} s {how}{more}: {why}; ask for a smaller t"
+        res.warn(msg)
+        extra = getattr(res, "extra", None)
+        if extra is not None:           # (for a find search that solves again at its answers' times)
+            extra["phase_lost"] = msg
     return max(errs, default=0.0)
 
 

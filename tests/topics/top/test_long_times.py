@@ -56,3 +56,15 @@ def test_moderate_times_are_not_warned():
 def test_long_times_are_warned_once():
     warned = _lost(solve_one_text(TEXT.format(at="1, 1e12, 1e16")))
     assert len(warned) == 1 and warned[0].startswith("the state at t = 1e+16 s has no correct digits (digits lost at 2 of the 3")
+
+
+def test_a_find_answer_at_a_long_time_is_warned_and_counted():
+    rec = solve_one_text(TEXT.format(at="1") + "find: [{t: 1e12}]\n")
+    warned = _lost(rec)
+    assert len(warned) == 1 and warned[0].startswith("the state at t = 1e+12 s has a phase error up to")
+    assert rec["error_estimate"] > 1e-3
+    rec = solve_one_text(TEXT.format(at="1") + "find: [{t: 1e3}]\n")
+    assert _lost(rec) == [] and rec["error_estimate"] < 1e-10
+    rec = solve_one_text("type: gyroscope\nI1: 0.01\nI2: 0.006\np: 100\nq: 1\ntheta0: 0\ntheta_dot0: 0\nat: [1]\n"
+                         "find: [{t: 1e12}]\n")
+    assert any(w.startswith("θ at t = 1e+12 s has a phase error") for w in rec["warnings"]), rec["warnings"]
