@@ -567,6 +567,8 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
             turns = max(turns, (t_end - t0) / period)
         if not turns * PER_TURN <= MAX_PIECES:      # (also a rate beyond a double)
             _too_fast(problem, result, const, t_end, turns, batch)
+            if rtol == 0.0:
+                _phase_at_answers(problem, result, base, solve)
             return
         n = int(max(64, _m.ceil(turns * PER_TURN)))
         breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
@@ -581,6 +583,24 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch,
                          subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
     attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+    if rtol == 0.0:
+        _phase_at_answers(problem, result, base, solve)
+
+
+def _phase_at_answers(problem: Any, result: Any, base: dict, solve: Callable[[Any], Any]) -> None:
+    """An exact route's answers later than every time of ``at``: solved once more at their times,
+    and the lost-phase warning of that solve (:func:`dyncli.phase.warn_lost`, left in its
+    ``extra["phase_lost"]``), with its error_estimate, carried to the result."""
+    at = [float(t) for t in getattr(problem, "at", []) or []]
+    ts = [float(e["t"]) for e in result.results.get("find") or () if e.get("reached") and e.get("t") is not None]
+    if not ts or max(ts) <= max(at, default=0.0):
+        return
+    r = solve(problem.model_copy(update=dict(base, at=ts)))
+    lost = getattr(r, "extra", {}).get("phase_lost")
+    if lost is not None:
+        result.warn(lost)
+        if result.error_estimate is not None and r.error_estimate is not None:
+            result.error_estimate = max(result.error_estimate, r.error_estimate)
 
 
 def find_end(problem: Any, t0: float = 0.0) -> float:

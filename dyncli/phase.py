@@ -44,7 +44,12 @@ def rounded(rate: float, t: float, u0: float = 0.0, rel: float = 8 * _EPS) -> fl
     return abs(rate * t) * rel + math.ulp(u)
 
 
-def warn_lost(res, times, errs, what: str) -> float:
+#: why a phase loses its digits, by default (a route may say its own, e.g. a period from quadratures)
+WHY = ("its phase is formed in doubles, held to about one ulp and its rate's last digits, so a phase "
+       "beyond ~1e9 costs the answer its digits")
+
+
+def warn_lost(res, times, errs, what: str, why: str = WHY) -> float:
     """Warn once (naming the worst time and how many) when a reported time's phase error ``errs[i]``
     (radians, or the same fraction of the oscillation) exceeds :data:`LOSS`; the largest error."""
     worst, count = None, 0
@@ -57,9 +62,11 @@ def warn_lost(res, times, errs, what: str) -> float:
         t, e = worst
         how = "has no correct digits" if e >= 1.0 else f"has a phase error up to {e:.2g}"
         more = f" (digits lost at {count} of the {len(times)} reported times)" if count > 1 else ""
-        res.warn(f"{what} at t = {t:g} s {how}{more}: its phase is formed in doubles, held to about one "
-                 "ulp and its rate's last digits, so a phase beyond ~1e9 costs the answer its digits; "
-                 "ask for a smaller t")
+        msg = f"{what} at t = {t:g} s {how}{more}: {why}; ask for a smaller t"
+        res.warn(msg)
+        extra = getattr(res, "extra", None)
+        if extra is not None:           # (for a find search that solves again at its answers' times)
+            extra["phase_lost"] = msg
     return max(errs, default=0.0)
 
 

@@ -121,8 +121,10 @@ def test_exact_top_at_long_times_against_40_digits(name, top_references):
         err = _top_errors(rec, rows, wscale)
     assert max(err.values()) <= GOAL, err
     assert rec["error_estimate"] >= max(err.values()), (rec["error_estimate"], err)
-    assert rec["error_estimate"] <= 1e-13        # ε·16·(1 + one period): no warning at the default rtol
-    assert not any("rtol" in w for w in rec.get("warnings", [])), rec.get("warnings")
+    # the phase is exact for the inputs as binary numbers (above), but they are decimals rounded to
+    # doubles: the estimate counts 4ε·λt for that (tests/topics/top/test_long_times.py), well below
+    # the double phase's 16ε·λt and short of the 1e-6 of a lost-digits warning
+    assert rec["error_estimate"] <= 5e-15 * 1e6 * 40 and not any("smaller t" in w for w in rec["warnings"])
 
 
 def _gyro_reference(I1, I2, p, q, th0, thd0, sigma, times):
@@ -174,7 +176,26 @@ def test_exact_gyroscope_at_long_times_against_40_digits(name):
     err = float(max(eth, ethd))
     assert err <= GOAL, (eth, ethd)
     assert rec["error_estimate"] >= err, (rec["error_estimate"], err)
-    assert rec["error_estimate"] <= 1e-13
+    # (+ the inputs' rounding, 4ε·λt: well below the double phase's 16ε·λt, no lost-digits warning)
+    assert rec["error_estimate"] <= 5e-8 and not any("smaller t" in w for w in rec["warnings"])
+
+
+@pytest.mark.parametrize("t", ["1", "1e6", "1e10", "1e13"])
+@pytest.mark.parametrize("name", sorted(GYROS))
+def test_exact_gyroscope_estimate_bounds_the_error_from_the_decimal_inputs(name, t):
+    # the phase is exact for the inputs as binary numbers; against the decimals they stand for,
+    # λ/4K is known to a few ε, counted in error_estimate (4ε·λt) and warned beyond 1e-6
+    decimals = [repr(x) for x in GYROS[name][:6]] + [GYROS[name][6]]
+    with mp.workdps(50):
+        rows, sthd = _gyro_reference(*decimals, [t])
+    rec = solve_one_text(_gyro_text(name, [float(t)]))
+    r = rec["results"]
+    with mp.workdps(50):
+        d = mp.mpf(r["theta"][0]) - rows[0][0]
+        eth = abs(d - 2 * mp.pi * mp.nint(d / (2 * mp.pi))) / mp.pi
+        err = float(max(eth, abs(mp.mpf(r["theta_dot"][0]) - rows[0][1]) / sthd))
+    assert err <= rec["error_estimate"], (err, rec["error_estimate"])
+    assert any("smaller t" in w for w in rec["warnings"]) == (rec["error_estimate"] > 1e-6)
 
 
 def _gyro_text(name, times, extra=""):
@@ -227,9 +248,10 @@ def test_exact_routes_say_when_the_estimate_exceeds_rtol(monkeypatch):
         msg = [w for w in rec["warnings"] if "requested accuracy was not met" in w]
         assert msg and f"{rec['error_estimate']:.2g}" in msg[0], rec["warnings"]
     monkeypatch.undo()
-    for text in (_gyro_text("slow", [1e6]), _top_text(TOPS["nutating"], [1e6])):
-        rec = solve_one_text(text)
-        assert rec["error_estimate"] < 1e-13 and not any("requested accuracy" in w for w in rec["warnings"])
+    rec = solve_one_text(_gyro_text("slow", [1e6]))      # (the inputs' rounding, 4ε·λt: 1.5e-9)
+    assert 1e-10 < rec["error_estimate"] < 3e-9
+    rec = solve_one_text(_top_text(TOPS["nutating"], [1e6]))      # (the inputs' rounding, 4ε·λt: 1.2e-8)
+    assert 1e-9 < rec["error_estimate"] < 2e-8
     # a request below what the evaluation can promise (rtol 2.3e-14, the floor): said as well
     rec = solve_one_text(_gyro_text("zero_to_pi", [1e6], "accuracy: {rtol: 2.3e-14}\n"))
     assert any("requested accuracy was not met" in w for w in rec["warnings"]), rec["warnings"]

@@ -12,7 +12,11 @@ on x within a piece.  The state at t = 0 is the input itself.
 
 ``error_estimate``: the time error (the quadratures' estimates, per period times the periods run,
 plus the sensitivity of the time to the turning points' rounding next to a barrier's top) times
-the largest speed, relative to the position scale |x| + |v| t, at least 100 ε.  Not used (the ODE
+the largest speed, relative to the position scale |x| + |v| t, at least 100 ε; for a periodic
+motion at least 2π·δt/period with δt = n·(the cycle's time error) + ulp(t) after n whole periods
+(the error of the velocity, and of a position oscillating about a point, relative to its scale),
+warned beyond rtol and, as lost digits, beyond :data:`dyncli.phase.LOSS` (docs/accuracy.md,
+long times).  Not used (the ODE
 route takes over under method auto) without q_range, on a closed curve whose forces do net work
 around it, or when the energy equals a barrier's top to rounding (refused: undecided).
 """
@@ -182,7 +186,7 @@ def motion(E, times):
         E._plan = plan(E)
     pl = E._plan
     if pl is None:
-        return np.full(len(times), E.q0), np.zeros(len(times)), None, [], 0.0
+        return np.full(len(times), E.q0), np.zeros(len(times)), None, [], 0.0, [0.0] * len(times)
     first, cycle, shift, turns, sens = pl
     t_first = sum(s.dur for s in first)
     period = sum(s.dur for s in cycle) if cycle else None
@@ -194,11 +198,12 @@ def motion(E, times):
                              f"before t_end = {max(times):g} s")
     pieces = {id(s.p): s.p for s in first + (cycle or [])}.values()
     err_cycle = sum(pc.err for pc in pieces) + sens
-    qs, qds, dt = [], [], 0.0
+    qs, qds, dt, dts = [], [], 0.0, []          # dts: the time's error from the whole periods run
     for t in times:
         if t == 0:                             # the input itself
             qs.append(E.q0)
             qds.append(float(E.p.q_dot0))
+            dts.append(0.0)
             continue
         legs, tt, base = first, t, 0.0
         if cycle and (tt > t_first or not first):
@@ -207,8 +212,10 @@ def motion(E, times):
             tt -= nper * period
             legs, base = cycle, nper * shift
             dt = max(dt, err_cycle * (nper + 2))
+            dts.append(err_cycle * nper + math.ulp(t))      # (the periods run: within one, the estimate above)
         else:
             dt = max(dt, err_cycle)
+            dts.append(math.ulp(t))
         k = 0
         while k < len(legs) - 1 and tt > legs[k].dur:
             tt -= legs[k].dur
@@ -216,13 +223,13 @@ def motion(E, times):
         q, qd = legs[k].state(tt)
         qs.append(q + base)
         qds.append(qd)
-    return np.array(qs), np.array(qds), period, turns, dt
+    return np.array(qs), np.array(qds), period, turns, dt, dts
 
 
 def solve(p, model, times, fallback=True) -> Result | None:
     try:
         E = Energy(p, model)
-        q, qd, period, turns, dt = motion(E, times)
+        q, qd, period, turns, dt, dts = motion(E, times)
     except Skip as exc:
         if fallback:
             return None
@@ -240,7 +247,27 @@ def solve(p, model, times, fallback=True) -> Result | None:
     r["period"] = period
     r["q_turn"] = [float(v) + 0.0 for v in turns]
     _estimate(res, p, E, times, dt, period)
+    if period:
+        _long_times(res, p, times, dts, period)
     return res
+
+
+def _long_times(res, p, times, dts, period):
+    """The periodic motion's phase error 2π·δt/period at each time: counted in error_estimate and
+    warned beyond :data:`dyncli.phase.LOSS` (the period known to its quadratures' estimates), or
+    beyond rtol when the estimate was within it before."""
+    from dyncli.phase import LOSS, warn_lost
+
+    phases = [2.0 * math.pi * d / period for d in dts]
+    before, worst = res.error_estimate or 0.0, max(phases, default=0.0)
+    res.error_estimate = max(before, worst)
+    why = (f"the period {period:.9g} s is known to its quadratures' estimates, so n periods on the time is "
+           "n times as uncertain (counted in error_estimate)")
+    rtol = float(p.accuracy.rtol)
+    if worst > LOSS:
+        warn_lost(res, [float(t) for t in times], phases, "the state", why)
+    elif worst > rtol >= before:
+        res.warn(f"error estimate {worst:.2g} > rtol {rtol:g}: {why}; ask for a smaller t")
 
 
 def _estimate(res, p, E, times, dt, period):
@@ -262,6 +289,3 @@ def _estimate(res, p, E, times, dt, period):
         res.warn(f"error estimate {res.error_estimate:.2g} > rtol {rtol:g}: the motion passes close to a barrier's "
                  "top (an unstable equilibrium), where its timing depends on the last digits of q0 and of the turning "
                  "points; move the start further from the separatrix for a better-determined answer")
-    if period and times and max(times) > 1e12 * period:
-        res.warn(f"t = {max(times):.6g} s is more than 1e12 periods ({period:.6g} s): the phase of the motion there "
-                 "is lost to rounding of t itself")

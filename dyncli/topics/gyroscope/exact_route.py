@@ -10,7 +10,9 @@ error_estimate (relative, docs/accuracy.md) bounds the round-off of the evaluati
   relative to the scale of θ̇² (it catches a wrong root or a lost digit in θ, θ̇);
 
 the estimate is the larger of these (the phase term times a safety factor of 16, as
-for the top).
+for the top).  Where the phase is reduced in double-double, the inputs' own rounding to doubles
+(½ε each) still leaves λ/4K known to ~:data:`INPUTS_REL` relative: a phase error of that times
+λt (:func:`dyncli.phase.rounded`), counted and warned beyond :data:`dyncli.phase.LOSS`, as for the top.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import math
 import sys
 
 from dyncli.backends import ops_for
+from dyncli.phase import rounded
 from dyncli.topics.gyroscope.elliptic import GyroTheta
 
 EPS = sys.float_info.epsilon
@@ -26,6 +29,8 @@ PHASE_FACTOR = 16.0
 #: the phase is formed in double-double (40-digit λ and period) where its double round-off would exceed
 #: min(rtol, this), as for the top
 EXTENDED_ABOVE = 1e-12
+#: the relative error of the frequency λ/4K from the inputs' rounding to doubles (as for the top)
+INPUTS_REL = 4.0 * EPS
 
 
 def theta_dot_sq(I1, I2, p, q, th0, thd0, th):
@@ -71,7 +76,14 @@ class ExactRun:
         # are tiny there and the rate is λ√(1 − m)), so the rounding is measured on that scale
         stretch = math.sqrt(g.m1) if getattr(g, "m", 0.0) < 0 else 1.0
         phase = 1.0 + stretch * ((4.0 * g.K if self.extended else self.lam_T) + abs(getattr(g, "u0", 0.0)))
-        self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * phase) if T > 0 else 0.0
+        u0 = abs(getattr(g, "u0", 0.0))
+        if g.kind == "steady":
+            self.phase_errors = [0.0 for _ in t]
+        elif self.extended:            # the inputs' rounding, on the same scale
+            self.phase_errors = [rounded(stretch * g.lam, abs(x), stretch * u0, INPUTS_REL) if x else 0.0 for x in t]
+        else:
+            self.phase_errors = [PHASE_FACTOR * EPS * (1.0 + stretch * (g.lam * abs(x) + u0)) if x else 0.0 for x in t]
+        self.error_estimate = max(self.drift, PHASE_FACTOR * EPS * phase, max(self.phase_errors)) if T > 0 else 0.0
 
     @property
     def period(self) -> float:

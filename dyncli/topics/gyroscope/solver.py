@@ -236,7 +236,14 @@ def _exact_route(pb, times, res, steady):
         return None
     res.method = "exact"
     res.error_estimate = run.error_estimate
-    if times and max(abs(t) for t in times) > 0 and run.error_estimate > pb.accuracy.rtol:
+    from dyncli.phase import LOSS
+
+    lost = max(run.phase_errors, default=0.0) > LOSS
+    if lost:
+        from dyncli.phase import warn_lost
+
+        warn_lost(res, [float(t) for t in times], run.phase_errors, "θ")
+    if not lost and times and max(abs(t) for t in times) > 0 and run.error_estimate > pb.accuracy.rtol:
         from dyncli import runner       # (numpy: only when there is something to say)
 
         runner.warn_unmet(res, pb.accuracy.rtol, run.error_estimate,

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 
 from dyncli.elliptic import ellipj_half, elliprf, legendre_F
-from dyncli.phase import ReducedPhase, pair
+from dyncli.phase import ReducedPhase, pair, rounded
 
 from . import equations as eq
 
@@ -126,6 +126,17 @@ class Motion:
         tau = self.lam * t + self.u0
         n = float(round(tau / self.P))
         return n, tau - n * self.P
+
+    def phase_error(self, t: float) -> float:
+        """The error of the phase λt + u₀ (the fraction of the motion's range θ(t) may be off by):
+        however exactly it is reduced, λ/P is the inputs' (each rounded to a double, ½ε relative)
+        through √(g/l) and K(k²), whose relative slope in k² is ~1/(2K·(1 − k²)) near the separatrix,
+        so it is known to ~4ε·(1 + 1/(K·|1 − k²|)) relative (:func:`dyncli.phase.rounded`); a slope
+        of θ, θ̇ in the phase of at most their scale makes it their error relative to that scale.
+        0 at rest and on the separatrix (no period: θ settles)."""
+        if self.regime not in ("swing", "rotating") or t == 0.0:
+            return 0.0
+        return rounded(self.lam, t, self.u0, 4.0 * 2.0 ** -52 * (1.0 + 1.0 / (self.K * abs(self.m1))))
 
     # --- the state ------------------------------------------------------------------------------
     def state(self, t: float) -> tuple[float, float]:

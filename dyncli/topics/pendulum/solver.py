@@ -60,7 +60,17 @@ def solve(p, options: SolveOptions | None = None) -> Result:
         res.series.append(Series("t", list(p.at), list(rows[0]), title="Motion θ(t) by Jacobi's elliptic functions"))
     if p.find:
         _find(p, mo, res, state, t_end, const)
+    _warn_long(mo, res, list(p.at) + [e["t"] for e in R.get("find") or () if e.get("t") is not None])
     return res
+
+
+def _warn_long(mo: Motion, res: Result, times: list) -> None:
+    """One warning when a reported time's phase error exceeds :data:`dyncli.phase.LOSS`."""
+    if mo.period and times and max(abs(float(t)) for t in times) > 1e6 * mo.period:   # (else none can)
+        from dyncli.phase import warn_lost
+
+        times = [float(t) for t in times]
+        warn_lost(res, times, [mo.phase_error(t) for t in times], "θ")
 
 
 def _warn_regime(mo: Motion, res: Result) -> None:

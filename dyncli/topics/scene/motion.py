@@ -544,6 +544,8 @@ class Linear1:
     A0: float
     A1: float
     A2: float
+    #: the relative error of A1 (and so of ωₙ², of the phase's rate) from its assembly
+    rel: float = 0.0
 
     def motion(self, t: float, s0: float, sd0: float) -> tuple[float, float]:
         A0, A1, A2 = self.A0, self.A1, self.A2

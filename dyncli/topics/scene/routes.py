@@ -32,6 +32,8 @@ from .prepare import Scene
 # ----------------------------------------------------------------------------- routes
 
 #: the generality of each route: a scene whose phases took several reports the most general
+#: a double's relative spacing (the assembled coefficients' rounding unit)
+EPS_RATE = 2.0 ** -52
 ORDER = ("statics", "closed-form", "quadrature", "ode")
 
 
@@ -91,7 +93,7 @@ def _phase(scene, traj, t, q, v, t_end, acc, budget):
         # forces change (watched for the instant they slip or let go)
         return "statics", _statics(s, traj, t, q, t_end)
     if acc.method in ("auto", "closed-form"):
-        got = _closed_form(s, traj, t, q, v, t_end)
+        got = _closed_form(s, traj, t, q, v, t_end, scene.warnings.append)
         if got is not None:
             return "closed-form", got
     if acc.method == "quadrature" and t == 0:
@@ -509,7 +511,9 @@ def _linear(s, q0, N, i, has_k: bool, has_c: bool) -> motion.Linear1:
                 L = min(L, 0.5 * math.hypot(*d) / math.hypot(*w))
     A1 = (float(s.solve(q0 + L * N, N * 0.0, 0.0)[0][i]) - A0) / L if has_k else 0.0
     A2 = float(s.solve(q0, N, 0.0)[0][i]) - A0 if has_c else 0.0
-    return motion.Linear1(q0, N, i, A0, A1, A2)
+    # A1 by a difference over L: its rounding relative to A1 grows with |A0|/|A1 L|
+    rel = 8.0 * EPS_RATE * (1.0 + abs(A0) / abs(A1 * L)) if A1 != 0 else 0.0
+    return motion.Linear1(q0, N, i, A0, A1, A2, rel)
 
 
 def _closed_form_kind(s, q0):
@@ -532,8 +536,10 @@ def _closed_form_kind(s, q0):
     return None
 
 
-def _closed_form(s, traj, t0, q0, v0, t_end):
-    """A closed-form phase from (t0, q0, v0): one piece to t_end, cut at its first event."""
+def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
+    """A closed-form phase from (t0, q0, v0): one piece to t_end, cut at its first event; ``warn``
+    told when the vibration's phase ω*·t has lost its digits by the piece's end
+    (:func:`long_phase`)."""
     kind = _closed_form_kind(s, q0)
     if kind is None:
         return None
@@ -566,7 +572,34 @@ def _closed_form(s, traj, t0, q0, v0, t_end):
             return np.array([lin.motion(t - t0, s_a, sd_a)[1] for t in ts])[:, None] * N[None, :]
     traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many))
     traj.method = "closed-form"
-    return _first_event(s, traj, len(traj.pieces) - 1, t_end, quadratic)
+    got = _first_event(s, traj, len(traj.pieces) - 1, t_end, quadratic)
+    if along is not None and warn is not None and got is not None:
+        long_phase(lin, t0, got[0], warn)
+    return got
+
+
+def long_phase(lin: motion.Linear1, t0: float, t1: float, warn) -> None:
+    """Warn (:func:`dyncli.phase.warn_lost`) when a vibration's phase ω*·(t1 − t0) is uncertain
+    by more than :data:`dyncli.phase.LOSS` of its oscillation: ω* from the assembled A1, A2 to
+    ``lin.rel`` relative (:func:`dyncli.phase.rounded`), times the free part's decay e^(−ζωₙt)
+    (an overdamped or unstable motion has no phase)."""
+    if not (lin.A1 < 0 and math.isfinite(t1) and t1 > t0):
+        return
+    wn = math.sqrt(-lin.A1)
+    zeta = -lin.A2 / (2.0 * wn)
+    if not zeta < 1.0:
+        return
+    from dyncli.phase import LOSS, rounded
+
+    tau = t1 - t0
+    err = rounded(wn * math.sqrt(1.0 - zeta * zeta), tau, 0.0, lin.rel) * math.exp(-max(zeta, 0.0) * wn * tau) \
+        + math.ulp(t1) * wn
+    if err > LOSS:
+        from types import SimpleNamespace
+
+        from dyncli.phase import warn_lost
+
+        warn_lost(SimpleNamespace(warn=warn), [t1], [err], "the vibration")
 
 
 def constant_forces(s) -> bool:

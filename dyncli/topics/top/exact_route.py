@@ -10,7 +10,11 @@ error_estimate (relative, docs/accuracy.md) bounds the round-off of the evaluati
 * the residuals of the energy and H_O·e3 integrals at the reported times, relative to
   their scales (they catch a wrong root or a lost digit in θ, θ̇, ψ̇ sinθ);
 
-the estimate is the largest of these (the phase term times a safety factor of 16).
+the estimate is the largest of these (the phase term times a safety factor of 16).  Where the
+phase is reduced in double-double (40-digit λ and period from the inputs as binary numbers), the
+inputs themselves are still decimal numbers rounded to doubles (½ε each): λ/2K is known to
+~:data:`INPUTS_REL` relative, a phase error of that times λt (:func:`dyncli.phase.rounded`), counted
+in the estimate and warned beyond :data:`dyncli.phase.LOSS` (docs/accuracy.md, long times).
 """
 
 from __future__ import annotations
@@ -19,6 +23,7 @@ import math
 
 from dyncli.backends import FLOAT_OPS
 from dyncli.errors import NumericalError
+from dyncli.phase import LOSS, rounded
 from dyncli.topics.top.derived import reaction_on
 from dyncli.topics.top.elliptic import EPS, ExactTop
 from dyncli.topics.top.kinematics import Controls
@@ -31,6 +36,9 @@ EXTENDED_ABOVE = 1e-12
 #: at most this many requested times are evaluated one by one in plain floats (no numpy import; each
 #: costs ~50 µs, mostly three Carlson integrals), more as arrays (~0.7 ms for numpy's calls + ~8 µs a time)
 FLOAT_TIMES = 16
+#: the relative error of the frequency λ/2K from the inputs' rounding to doubles (½ε each, through
+#: the products mgL/A, Cω3/A, the nutation cubic's roots and K(m); measured ≤ 1.5ε in the tests)
+INPUTS_REL = 4.0 * EPS
 
 
 class ExactRun:
@@ -126,12 +134,25 @@ class ExactRun:
         lam = 0.0 if ex.steady else n.lam
         periods = 0.0 if ex.steady else lam * T / (2.0 * ex.K)
         self.lam_T = lam * T
+        self.phase_errors = [self.phase_error(abs(x)) for x in t]
         if self.extended:       # the phase reduced in double-double: as if λt were at most one period
-            phase = PHASE_FACTOR * EPS * (1.0 + 2.0 * ex.K + abs(ex.tau0))
+            phase = max(PHASE_FACTOR * EPS * (1.0 + 2.0 * ex.K + abs(ex.tau0)), max(self.phase_errors))
         else:
             phase = PHASE_FACTOR * EPS * (1.0 + lam * T + periods)
         # at t = 0 only, the reported state is the input itself
         self.error_estimate = max(dE, dH, phase) if T > 0 else 0.0
+
+
+    def phase_error(self, t: float) -> float:
+        """The phase's error at time t (a fraction of each quantity's scale): the inputs' rounding,
+        INPUTS_REL·λt + ulp (double-double), or PHASE_FACTOR·ε(1 + λt + periods) (double phase)."""
+        ex = self.ex
+        if ex.steady or t == 0.0:
+            return 0.0
+        lam = ex.nut.lam
+        if self.extended:
+            return rounded(lam, t, ex.tau0, INPUTS_REL)
+        return PHASE_FACTOR * EPS * (1.0 + lam * t + lam * t / (2.0 * ex.K))
 
 
 def nutation_period(ex: ExactTop) -> float:
@@ -157,9 +178,14 @@ def route(res, top, acc: Controls, psi0, th0, phi0, psd0, th_dot0, phi_dot0, tim
     res.error_estimate = float(ex.error_estimate) if len(times) else None
     res.extra["error_estimate_note"] = (
         "round-off of the elliptic solution: the larger of ε·16(1 + λt + periods) (the phase λt + τ0 "
-        "formed in floating point) and the residuals of the energy and H_O·e3 integrals at the reported times, "
+        "formed in floating point; in double-double, 4ε·λt: the inputs' rounding to doubles) and the residuals of the energy and H_O·e3 integrals at the reported times, "
         "each relative to its scale")
-    if ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > acc.rtol:
+    lost = max(ex.phase_errors, default=0.0) > LOSS
+    if lost:
+        from dyncli.phase import warn_lost
+
+        warn_lost(res, ex.times, ex.phase_errors, "the state")
+    if not lost and ex.times and max(abs(x) for x in ex.times) > 0 and ex.error_estimate > acc.rtol:
         from dyncli import runner       # (numpy: only when there is something to say)
 
         runner.warn_unmet(res, acc.rtol, res.error_estimate,
