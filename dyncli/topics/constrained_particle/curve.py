@@ -116,8 +116,9 @@ class Curve:
             return np.full_like(t, self.omega_const), np.zeros_like(t)
         return self.omega_expr.evaluate(t=t), self.omega_dot_expr.evaluate(t=t)
 
-    def state(self, t, q, qd, phi):
-        """Fixed-frame x, v, τ and b (see the module docstring), arrays (3, n)."""
+    def state(self, t, q, qd, phi, jet=False):
+        """Fixed-frame x, v, τ and b (see the module docstring), arrays (3, n), and the rotations Q;
+        ``jet``: also y' and y'' on the curve's frame (for :meth:`frenet`, not evaluated twice)."""
         t, q, qd, phi = (np.atleast_1d(np.asarray(a, float)) for a in (t, q, qd, phi))
         Q = rotation(self.k, phi)
         y, y1, y2 = self.y(q), self.dy(q), self.ddy(q)
@@ -130,11 +131,22 @@ class Curve:
         ktau = _cross(k, tau)
         kkx = _cross(k, kx)
         b = np.einsum("nij,jn->in", Q, y2) * qd ** 2 + 2 * w * ktau * qd + wd * kx + w ** 2 * kkx
-        return x, v, tau, b, Q
+        return (x, v, tau, b, Q, y1, y2) if jet else (x, v, tau, b, Q)
 
-    def frenet(self, q, Q):
-        """e_t, e_n, e_b (fixed-frame components, (3, n) each) and κ."""
-        y1, y2 = self.dy(q), self.ddy(q)
+    def motion(self, t, q, qd, phi):
+        """Fixed-frame x and v alone (:meth:`state`'s values, without τ's rate b)."""
+        t, q, qd, phi = (np.atleast_1d(np.asarray(a, float)) for a in (t, q, qd, phi))
+        Q = rotation(self.k, phi)
+        x = np.einsum("nij,jn->in", Q, self.y(q))
+        tau = np.einsum("nij,jn->in", Q, self.dy(q))
+        w = self.omega(t)[0]
+        return x, tau * qd + w * _cross(self.k[:, None], x)
+
+    def frenet(self, q, Q, y1=None, y2=None):
+        """e_t, e_n, e_b (fixed-frame components, (3, n) each) and κ (``y1``, ``y2``: y' and y'' at q
+        when they are known)."""
+        if y1 is None:
+            y1, y2 = self.dy(q), self.ddy(q)
         sp = norm_rows(y1.T)                      # lengths and directions scaled first (dyncli.direction)
         et = np.nan_to_num(unit_rows(y1.T).T)     # a zero tangent stays 0
         c = _cross(y1, y2)
