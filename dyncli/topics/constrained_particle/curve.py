@@ -80,10 +80,20 @@ class Curve:
         side's curve): each component's derivatives differentiated once, on the expression IR
         (:func:`dyncli.expr.derivative.derivative`), and compiled into float closures
         (:func:`dyncli.expr.floateval.float_fn`: a component free of q returns its value).  One call each:
-        cheaper than a loop over the components that vary."""
+        cheaper than a loop over the components that vary; a curve in a coordinate plane (one
+        component constant, e.g. a hoop) gives that component's three values without a call."""
         from dyncli.expr.floateval import float_fn
 
-        f1, f2, f3, g1, g2, g3, h1, h2, h3 = (float_fn(e, "q") for e in self.y0 + self.y1 + self.y2)
+        fns = [float_fn(e, "q") for e in self.y0 + self.y1 + self.y2]
+        f1, f2, f3, g1, g2, g3, h1, h2, h3 = fns
+        flat = [i for i in range(3) if not any("q" in e.variables for e in (self.y0[i], self.y1[i], self.y2[i]))]
+        if len(flat) == 1:
+            c, d, e = (fns[flat[0] + 3 * j](0.0) for j in range(3))    # the constant's value, its derivatives 0
+            if flat == [0]:
+                return lambda q: (c, f2(q), f3(q), d, g2(q), g3(q), e, h2(q), h3(q))
+            if flat == [1]:
+                return lambda q: (f1(q), c, f3(q), g1(q), d, g3(q), h1(q), e, h3(q))
+            return lambda q: (f1(q), f2(q), c, g1(q), g2(q), d, h1(q), h2(q), e)
         return lambda q: (f1(q), f2(q), f3(q), g1(q), g2(q), g3(q), h1(q), h2(q), h3(q))
 
     @staticmethod
