@@ -19,6 +19,8 @@ median of 5 x 40): dyncli 3.19 / 4.30 / 5.94 ms against the script's 1.15 / 1.88
 1e-6 / 1e-8 / 1e-10: ratios 2.77 / 2.28 / 2.14 (3.57 / 2.72 / 2.28 before every sliding step's
 interpolant was made once after the run and the times read in one pass over the stacked steps;
 2.79 / 2.22 / 2.03 at load 1 in issue 26, 4.26 / 3.51 / 3.41 before that issue's right-hand side).
+Then 2.65 / 3.45 / 4.70 -> 2.36 / 3.10 / 4.34 ms, ratios 2.37 / 2.00 / 1.81 -> 2.09 / 1.83 / 1.70
+(load 5-7, back to back: the turning roots in plain floats, y' and y'' read once, docs/accuracy.md).
 The steps are the script's (15 / 24 / 40); the integration alone costs about the script's whole
 time; the rest is the results the script does not compute (docs/accuracy.md).
 """

@@ -286,6 +286,25 @@ class DenseOutput(_Interpolant):
         y += self.y_old
         return y.T
 
+    def component(self, i: int):
+        """``t -> float``: the ``i``-th component at one float t in plain floats (a root search's
+        many scalar calls): the operations of :meth:`_call_impl` on that component alone, the same
+        double (each is elementwise)."""
+        cs = [float(c) for c in reversed(self.F[:, i])]
+        y0, t_old, h = float(self.y_old[i]), self.t_old, self.h
+
+        def value(t: float) -> float:
+            x = (t - t_old) / h
+            y = 0.0
+            for k, c in enumerate(cs):
+                y += c
+                if k % 2 == 0:
+                    y *= x
+                else:
+                    y *= 1 - x
+            return y + y0
+        return value
+
 
 class LazyDense(_Interpolant):
     """A step's :class:`DenseOutput` made on its first call (:meth:`DOP853.dense_later`)."""
@@ -303,6 +322,10 @@ class LazyDense(_Interpolant):
 
     def _call_impl(self, t):
         return self.made()._call_impl(t)
+
+    def component(self, i: int):
+        """:meth:`DenseOutput.component` of the step's interpolant (made now)."""
+        return self.made().component(i)
 
 
 def _bernstein_matrix():

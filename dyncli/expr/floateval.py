@@ -97,6 +97,9 @@ def _binary(kind: str, left: tuple, right: tuple, var: str) -> Callable[[float],
     ca, cb = not _uses(left, var), not _uses(right, var)
     if kind == "mul" and (ca or cb):
         c, g = (a(0.0), b) if ca else (b(0.0), a)
+        other = right if ca else left
+        if other[0] == "neg":           # c·(−u) = (−c)·u exactly (a sign moved): one call less
+            c, g = -c, _compile(other[1], var)
         return lambda x: c * g(x)
     if kind == "add" and (ca or cb):
         c, g = (a(0.0), b) if ca else (b(0.0), a)

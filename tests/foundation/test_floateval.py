@@ -42,3 +42,15 @@ def test_float_fn_matches_numpy_evaluation(text):
 def test_other_variables_are_refused():
     with pytest.raises(ValueError, match="x1"):
         float_fn(parse("t*x1", ("t", "x1")))
+
+
+@pytest.mark.parametrize("c, inner", [(-0.5, "sin(t)"), (2.0, "cos(t)"), (3.0, "t"), (-2.0, "t - 1")])
+def test_a_sign_moved_onto_a_constant_factor_changes_no_bit(c, inner):
+    """c·(−u) is compiled as (−c)·u: the double of c·(−u) for every u (IEEE products are symmetric
+    in sign), signed zeros, infinities and nan included."""
+    u = float_fn(parse(inner, ("t",)), "t")
+    for text in (f"({c})*(-({inner}))", f"(-({inner}))*({c})"):
+        f = float_fn(parse(text, ("t",)), "t")
+        for t in TIMES:
+            got, want = f(t), c * (-u(t))
+            assert (math.isnan(got) and math.isnan(want)) or (got == want and math.copysign(1, got) == math.copysign(1, want))

@@ -80,10 +80,20 @@ class Curve:
         side's curve): each component's derivatives differentiated once, on the expression IR
         (:func:`dyncli.expr.derivative.derivative`), and compiled into float closures
         (:func:`dyncli.expr.floateval.float_fn`: a component free of q returns its value).  One call each:
-        cheaper than a loop over the components that vary."""
+        cheaper than a loop over the components that vary; a curve in a coordinate plane (one
+        component constant, e.g. a hoop) gives that component's three values without a call."""
         from dyncli.expr.floateval import float_fn
 
-        f1, f2, f3, g1, g2, g3, h1, h2, h3 = (float_fn(e, "q") for e in self.y0 + self.y1 + self.y2)
+        fns = [float_fn(e, "q") for e in self.y0 + self.y1 + self.y2]
+        f1, f2, f3, g1, g2, g3, h1, h2, h3 = fns
+        flat = [i for i in range(3) if not any("q" in e.variables for e in (self.y0[i], self.y1[i], self.y2[i]))]
+        if len(flat) == 1:
+            c, d, e = (fns[flat[0] + 3 * j](0.0) for j in range(3))    # the constant's value, its derivatives 0
+            if flat == [0]:
+                return lambda q: (c, f2(q), f3(q), d, g2(q), g3(q), e, h2(q), h3(q))
+            if flat == [1]:
+                return lambda q: (f1(q), c, f3(q), g1(q), d, g3(q), h1(q), e, h3(q))
+            return lambda q: (f1(q), f2(q), c, g1(q), g2(q), d, h1(q), h2(q), e)
         return lambda q: (f1(q), f2(q), f3(q), g1(q), g2(q), g3(q), h1(q), h2(q), h3(q))
 
     @staticmethod
@@ -116,8 +126,9 @@ class Curve:
             return np.full_like(t, self.omega_const), np.zeros_like(t)
         return self.omega_expr.evaluate(t=t), self.omega_dot_expr.evaluate(t=t)
 
-    def state(self, t, q, qd, phi):
-        """Fixed-frame x, v, τ and b (see the module docstring), arrays (3, n)."""
+    def state(self, t, q, qd, phi, jet=False):
+        """Fixed-frame x, v, τ and b (see the module docstring), arrays (3, n), and the rotations Q;
+        ``jet``: also y' and y'' on the curve's frame (for :meth:`frenet`, not evaluated twice)."""
         t, q, qd, phi = (np.atleast_1d(np.asarray(a, float)) for a in (t, q, qd, phi))
         Q = rotation(self.k, phi)
         y, y1, y2 = self.y(q), self.dy(q), self.ddy(q)
@@ -130,11 +141,22 @@ class Curve:
         ktau = _cross(k, tau)
         kkx = _cross(k, kx)
         b = np.einsum("nij,jn->in", Q, y2) * qd ** 2 + 2 * w * ktau * qd + wd * kx + w ** 2 * kkx
-        return x, v, tau, b, Q
+        return (x, v, tau, b, Q, y1, y2) if jet else (x, v, tau, b, Q)
 
-    def frenet(self, q, Q):
-        """e_t, e_n, e_b (fixed-frame components, (3, n) each) and κ."""
-        y1, y2 = self.dy(q), self.ddy(q)
+    def motion(self, t, q, qd, phi):
+        """Fixed-frame x and v alone (:meth:`state`'s values, without τ's rate b)."""
+        t, q, qd, phi = (np.atleast_1d(np.asarray(a, float)) for a in (t, q, qd, phi))
+        Q = rotation(self.k, phi)
+        x = np.einsum("nij,jn->in", Q, self.y(q))
+        tau = np.einsum("nij,jn->in", Q, self.dy(q))
+        w = self.omega(t)[0]
+        return x, tau * qd + w * _cross(self.k[:, None], x)
+
+    def frenet(self, q, Q, y1=None, y2=None):
+        """e_t, e_n, e_b (fixed-frame components, (3, n) each) and κ (``y1``, ``y2``: y' and y'' at q
+        when they are known)."""
+        if y1 is None:
+            y1, y2 = self.dy(q), self.ddy(q)
         sp = norm_rows(y1.T)                      # lengths and directions scaled first (dyncli.direction)
         et = np.nan_to_num(unit_rows(y1.T).T)     # a zero tangent stays 0
         c = _cross(y1, y2)

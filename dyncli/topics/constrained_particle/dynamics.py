@@ -85,7 +85,7 @@ class Model:
         q, qd, phi = Y[0], Y[1], Y[2]
         if mode[0] == "stick":
             qd = np.zeros_like(qd)
-        x, v, tau, b, Q = self.curve.state(t, q, qd, phi)
+        x, v, tau, b, Q, y1, y2 = self.curve.state(t, q, qd, phi, jet=True)
         Fc, Fn = self.forces(t, x, v)
         F = Fc + Fn
         sp = norm_rows(tau.T)                     # scaled first (dyncli.direction)
@@ -102,7 +102,8 @@ class Model:
             qdd = eq.parameter_acceleration(G, ft, self.m, sp)
         a = tau * qdd + b
         return {"x": x, "v": v, "a": a, "tau": tau, "speed": sp, "et": et, "N": N, "Nmag": Nmag, "G": G,
-                "ft": ft, "qdd": qdd, "F": F, "Fc": Fc, "Fn": Fn, "Q": Q, "q": q, "qd": qd}
+                "ft": ft, "qdd": qdd, "F": F, "Fc": Fc, "Fn": Fn, "Q": Q, "q": q, "qd": qd,
+                "y1": y1, "y2": y2}
 
     def rhs_for(self, mode):  # over 60 lines: the integrator's hot loop, inlined in plain floats on purpose
         """y' = f(t, y) for one state, in plain float arithmetic (the integrator calls it one state

@@ -201,8 +201,8 @@ def ode_turns(phases) -> list[float]:
                 if R[k] == 0.0 and (k > 0 or a > float(ph.t0)):
                     out.append(T[k])
                 elif R[k] * R[k + 1] < 0:
-                    out.append(rootfind.brent(lambda t, f=f: float(np.asarray(f(t))[1]), T[k], T[k + 1], 1e-300, 4 * eps,
-                                              2000))
+                    qd = f.component(1) if hasattr(f, "component") else (lambda t, f=f: float(np.asarray(f(t))[1]))
+                    out.append(rootfind.brent(qd, T[k], T[k + 1], 1e-300, 4 * eps, 2000))
     return sorted(set(out))
 
 

@@ -22,6 +22,12 @@ def _cols(a) -> list[list[float]]:
     return (np.asarray(a, float).T + 0.0).tolist()
 
 
+def _dot3(a, b):
+    """The dot products of the columns of two (3, n) arrays, each summed in order (a₁b₁ + a₂b₂) + a₃b₃:
+    the doubles of ``a[:, j] @ b[:, j]``, all columns at once."""
+    return (a[0] * b[0] + a[1] * b[1]) + a[2] * b[2]
+
+
 def arc_length(curve, q0, qs):
     """s(q) = ∫ |y'| dq from q0 to each q (QUADPACK to 1e-13 of each, the speed in plain floats)."""
     from dyncli.quadrature import quad
@@ -42,13 +48,13 @@ def assemble(p, model, times, Y, modes) -> dict:
     Q = np.empty((n, 3, 3))
     for md, idx in groups.items():
         e = model.evaluate(ts[idx], Y[:, idx], md)
-        for k in ("x", "v", "a", "N", "ft", "et", "speed"):
+        for k in ("x", "v", "a", "N", "ft", "et", "speed", "y1", "y2"):
             if k not in cat:
                 cat[k] = np.empty(np.shape(e[k])[:-1] + (n,))
             cat[k][..., idx] = e[k]
         Q[idx] = e["Q"]
     # where the curve is straight e_n is the documented fallback direction (no warning: nothing to act on)
-    et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q)
+    et, en, eb, kappa, _straight = model.curve.frenet(Y[0], Q, cat["y1"], cat["y2"])
     N = cat["N"]
     m = model.m
     T = 0.5 * m * np.sum(cat["v"] ** 2, axis=0)
@@ -61,7 +67,7 @@ def assemble(p, model, times, Y, modes) -> dict:
               arc_length(model.curve, float(p.q0), [float(v) for v in Y[0]])),
         "s_dot": [float(v) + 0.0 for v in cat["speed"] * qd],
         "x": _cols(cat["x"]), "v": _cols(cat["v"]), "a": _cols(cat["a"]),
-        "N": [_vec([0.0, N[:, j] @ en[:, j], N[:, j] @ eb[:, j]]) for j in range(n)],
+        "N": [[0.0, a + 0.0, b + 0.0] for a, b in zip(_dot3(N, en).tolist(), _dot3(N, eb).tolist())],
         "N_vec": _cols(N + cat["ft"] * cat["et"]),
         "friction": [float(v) + 0.0 for v in cat["ft"]],
         "kappa": [float(v) for v in kappa],

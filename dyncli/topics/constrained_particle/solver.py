@@ -156,7 +156,7 @@ def _solve_ode(p, model, times) -> Result:
     # scale over the run), else the nominal bound (rtol × steps, or the energy balance's drift)
     def difference(_, phases2):
         Y2 = dynamics.states_at(phases2, times)[0]
-        x2, v2 = model.curve.state(np.array(times), Y2[0], Y2[1], Y2[2])[:2]
+        x2, v2 = model.curve.motion(np.array(times), Y2[0], Y2[1], Y2[2])
         return ode.relative_difference(
             [(np.array(out["results"]["x"], float).T, x2), (np.array(out["results"]["v"], float).T, v2)])
 
@@ -170,13 +170,13 @@ def _solve_ode(p, model, times) -> Result:
 def _residual(p, model, phases, out):
     """max |E − E1 − W_nc − W_N| over every accepted step and the times."""
     m = model.m
-    x0 = model.curve.state(0.0, p.q0, p.q_dot0, 0.0)
+    x0 = model.curve.motion(0.0, p.q0, p.q_dot0, 0.0)
     E1 = float(0.5 * m * np.sum(x0[1] ** 2) + model.potential(x0[0])[0])
     resid, scale = 0.0, abs(E1)
     for ph in phases:
         Yp = ph.steps_y
         qd = np.zeros_like(Yp[1]) if ph.mode[0] == "stick" else Yp[1]
-        x, v = model.curve.state(ph.steps_t, Yp[0], qd, Yp[2])[:2]
+        x, v = model.curve.motion(ph.steps_t, Yp[0], qd, Yp[2])
         T = 0.5 * m * np.sum(v * v, axis=0)
         V = model.potential(x)
         resid = max(resid, float(np.max(np.abs(T + V - E1 - Yp[3] - Yp[4]))))
