@@ -139,52 +139,59 @@ class Search:
                     break
                 steps.append((q, q_new))
                 q, t = q_new, t_new
-            firsts = self.first_cells(steps)
+            known = self.first_cells(steps)
             for k, (qa, qb) in enumerate(steps):
-                out += self.step_roots(qa, qb, firsts[k])
+                out += self.step_roots(qa, qb, known[k])
                 if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
                     out.append(qb)
         return [x for x in out if x is not None]
 
     def first_cells(self, steps) -> list:
-        """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step, in one
-        stacked :meth:`along` (each row's Gauss–Newton and solves its own: the values of one call
-        a step); None for every step when a row's matrix is singular (then each step's own call
-        falls back to least squares where needed)."""
+        """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step and at
+        its ends (where all_roots reads the signs), in one stacked :meth:`along` (each row's
+        Gauss–Newton and solves its own: the values of one call a step), as {τ: g} per step;
+        {} for every step when a row's matrix is singular (then each step's own call falls back
+        to least squares where needed)."""
         if not steps:
             return []
-        x1 = np.polynomial.chebyshev.chebpts1(DEG + 1)
-        taus = 0.5 + 0.5 * x1                   # all_roots' m + h x1 on [0, 1]
+        taus = np.concatenate([0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1), [0.0, 1.0]])
         Q = np.concatenate([qa + taus[:, None] * (qb - qa) for qa, qb in steps])
         D = np.repeat(np.array([qb - qa for qa, qb in steps]), len(taus), axis=0)
         try:
             vals = self.along(Q, D)
         except np.linalg.LinAlgError:
-            return [None] * len(steps)
-        return [(taus, vals[k * len(taus):(k + 1) * len(taus)]) for k in range(len(steps))]
+            return [{} for _ in steps]
+        k = len(taus)
+        return [dict(zip(taus.tolist(), vals[j * k:(j + 1) * k].tolist())) for j in range(len(steps))]
 
-    def step_roots(self, qa, qb, first=None) -> list:
+    def step_roots(self, qa, qb, known=None) -> list:
         """The points of the step p(τ) = onto(qa + τ (qb − qa)), τ in [0, 1], where the force along
         it, g(τ) = t(τ)·f(p(τ)) (t the chord's direction projected on the joints' tangent at p),
         has a root or a touch: all_roots' sign analysis of g's Chebyshev interpolant (one cell of
         degree DEG, halved where not resolved to ``floor``), never the signs at the ends alone.
         A part of the step where g cannot be evaluated (off the joints) starts Newton at its middle.
-        ``first``: (τ, g(τ)) already evaluated at the first cell's nodes (:meth:`first_cells`)."""
+        ``known``: {τ: g(τ)} already evaluated (:meth:`first_cells`)."""
         d = qb - qa
+        known = known or {}
 
         def point(x):
             p = self._onto(qa + x * d)
             t = None if p is None else self._tangent(p, d)
             return math.nan if t is None else float(t @ self.forces(p))
 
-        def g(taus):
-            taus = np.atleast_1d(taus)
-            if first is not None and taus.shape == first[0].shape and np.array_equal(taus, first[0]):
-                return first[1].copy()
+        def fresh(taus):
             try:
                 return self.along(qa + taus[:, None] * d, d)
             except np.linalg.LinAlgError:       # dependent rows somewhere: one point at a time (least squares)
                 return np.array([point(float(x)) for x in taus])
+
+        def g(taus):
+            taus = np.atleast_1d(np.asarray(taus, dtype=float))
+            out = np.array([known.get(x, math.nan) for x in taus.tolist()])
+            new = np.array([x not in known for x in taus.tolist()], dtype=bool)
+            if np.any(new):
+                out[new] = fresh(taus[new])
+            return out
 
         floor = 1e-10 * self.F0 * max(1.0, self.L)
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
