@@ -107,16 +107,19 @@ class CurveData:
         |r − y| + 1/|k| along the curve, so that from a guess far away (a state asked out of
         order) it walks to the nearest foot on its side instead of jumping to another lap of a
         closed curve (where the arc of rolling, φ₂, would be a lap off)."""
+        (f0, h0), (f1, h1), (f2, h2) = self._closures()[:3]     # plain floats: no array a step
+        r0, r1 = float(r[0]), float(r[1])
         for _ in range(200):
-            y, d1, d2 = self._ev(0, q), self._ev(1, q), self._ev(2, q)
-            w = np.asarray(r, float) - y
-            g = float(w @ d1)
-            gp = float(w @ d2) - float(d1 @ d1)
+            a1, b1, a2, b2 = f1(q), h1(q), f2(q), h2(q)
+            w0, w1 = r0 - f0(q), r1 - h0(q)
+            g = w0 * a1 + w1 * b1
+            dd = a1 * a1 + b1 * b1
+            gp = (w0 * a2 + w1 * b2) - dd
             if not gp < 0:
                 return None
             step = g / gp
-            sp = math.sqrt(float(d1 @ d1))
-            cap = 0.25 * (math.sqrt(float(w @ w)) + sp ** 3 / max(abs(float(d1[0] * d2[1] - d1[1] * d2[0])), 1e-300))
+            sp = math.sqrt(dd)
+            cap = 0.25 * (math.sqrt(w0 * w0 + w1 * w1) + sp ** 3 / max(abs(a1 * b2 - b1 * a2), 1e-300))
             if abs(step) * sp > cap:
                 step = math.copysign(cap / sp, step)
             q -= step
