@@ -291,6 +291,19 @@ def _critical(c, deg: int):
     return np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
 
 
+@functools.lru_cache(maxsize=8)
+def _nodes(deg: int):
+    """(the deg + 1 Chebyshev points of the first kind, their Vandermonde matrix): made once a
+    degree (a search of many small intervals starts a cell on each)."""
+    from numpy.polynomial import chebyshev as C
+
+    x1 = C.chebpts1(deg + 1)
+    x1.flags.writeable = False
+    V = C.chebvander(x1, deg)
+    V.flags.writeable = False
+    return x1, V
+
+
 def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_depth: int = 48,
               limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
@@ -306,9 +319,8 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     stop once more than that many roots are found.  (One loop over a stack of cells, a little over
     60 lines: its steps share the cell's state and read best in one place.)"""
     import numpy as np
-    from numpy.polynomial import chebyshev as C
 
-    eps, x1, V = sys.float_info.epsilon, C.chebpts1(deg + 1), C.chebvander(C.chebpts1(deg + 1), deg)
+    eps, (x1, V) = sys.float_info.epsilon, _nodes(deg)
     edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
     stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
     roots, touches, bad = list[float](), list[float](), []      # (the sign changes, the double roots, the unresolved cells)

@@ -65,13 +65,16 @@ class CurveData:
         """y (order 0) or its ``order``-th derivative at one q, in plain floats (the expressions'
         closures over floats, :mod:`dyncli.expr.floateval`: about 10x cheaper than an array of
         one; the frame is read thousands of times a solve)."""
-        fns = self._fns
-        if fns is None:
+        f1, f2 = self._closures()[order]
+        return np.array((f1(q), f2(q)))
+
+    def _closures(self) -> tuple:
+        """((x1, x2) of y, y′, y″, y‴) as float closures, made once."""
+        if self._fns is None:
             from dyncli.expr.floateval import float_fn
 
-            fns = self._fns = tuple(tuple(float_fn(e, "q") for e in es) for es in (self.y0, self.y1, self.y2, self.y3))
-        f1, f2 = fns[order]
-        return np.array((f1(q), f2(q)))
+            self._fns = tuple(tuple(float_fn(e, "q") for e in es) for es in (self.y0, self.y1, self.y2, self.y3))
+        return self._fns
 
     def frame(self, q: float):
         """(y, y′, t̂, n, k, |y′|) at q."""
@@ -83,22 +86,40 @@ class CurveData:
         k = (d1[0] * d2[1] - d1[1] * d2[0]) / sp ** 3
         return y, d1, t, np.array([-t[1], t[0]]), k, sp
 
+    def offset_speeds(self, qs, R: float) -> np.ndarray:
+        """|y′|(1 − R k) at each q of ``qs``: the rate of the offset curve's arc (a rolling disk's
+        φ₂ integrand), in plain floats — the same operations as :meth:`frame`, without its
+        arrays (the arc's quadrature reads it at every node)."""
+        (a1, b1), (a2, b2) = self._closures()[1:3]
+        out = np.empty(len(qs))
+        for j, qq in enumerate(qs):
+            qq = float(qq)
+            x1, y1, x2, y2 = a1(qq), b1(qq), a2(qq), b2(qq)
+            sp = math.hypot(x1, y1)
+            if not sp > 0:
+                raise NumericalError(f"the curve {self.name!r} has no tangent at q = {qq:.6g} (y′ = 0)")
+            out[j] = sp * (1 - R * ((x1 * y2 - y1 * x2) / sp ** 3))
+        return out
+
     def _newton(self, r, q: float):
         """Newton on (r − y)·y′ = 0 from q: the foot q* when it converges to a nearest point
         (|r − y|² a minimum there), else None.  Each step moves the foot at most a quarter of
         |r − y| + 1/|k| along the curve, so that from a guess far away (a state asked out of
         order) it walks to the nearest foot on its side instead of jumping to another lap of a
         closed curve (where the arc of rolling, φ₂, would be a lap off)."""
+        (f0, h0), (f1, h1), (f2, h2) = self._closures()[:3]     # plain floats: no array a step
+        r0, r1 = float(r[0]), float(r[1])
         for _ in range(200):
-            y, d1, d2 = self._ev(0, q), self._ev(1, q), self._ev(2, q)
-            w = np.asarray(r, float) - y
-            g = float(w @ d1)
-            gp = float(w @ d2) - float(d1 @ d1)
+            a1, b1, a2, b2 = f1(q), h1(q), f2(q), h2(q)
+            w0, w1 = r0 - f0(q), r1 - h0(q)
+            g = w0 * a1 + w1 * b1
+            dd = a1 * a1 + b1 * b1
+            gp = (w0 * a2 + w1 * b2) - dd
             if not gp < 0:
                 return None
             step = g / gp
-            sp = math.sqrt(float(d1 @ d1))
-            cap = 0.25 * (math.sqrt(float(w @ w)) + sp ** 3 / max(abs(float(d1[0] * d2[1] - d1[1] * d2[0])), 1e-300))
+            sp = math.sqrt(dd)
+            cap = 0.25 * (math.sqrt(w0 * w0 + w1 * w1) + sp ** 3 / max(abs(a1 * b2 - b1 * a2), 1e-300))
             if abs(step) * sp > cap:
                 step = math.copysign(cap / sp, step)
             q -= step
@@ -302,16 +323,8 @@ class CurveRolls(Rolls):
         """∫ |y′|(1 − R k) dq from the foot of t = 0 to qf: the offset curve's arc length."""
         if qf == self.q_ref:
             return 0.0
-        c = self.surface
-
-        def f(x):
-            out = np.empty(len(x))
-            for j, qq in enumerate(x):
-                _, d1, _, _, k, sp = c.frame(float(qq))
-                out[j] = sp * (1 - self.R * k)
-            return out
-
-        val, err, ok = gauss_kronrod(f, self.q_ref, qf, 1e-14, 1e-15)[:3]
+        c, R = self.surface, self.R
+        val, err, ok = gauss_kronrod(lambda x: c.offset_speeds(x, R), self.q_ref, qf, 1e-14, 1e-15)[:3]
         return float(val)
 
     def gap(self, q) -> float:

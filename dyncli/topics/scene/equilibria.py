@@ -121,12 +121,15 @@ class Search:
 
     def path_starts(self, q0, t0) -> list:
         """Points of the path from q0 along t0 (both ways) where the force along it vanishes:
-        every root and touch of g on every step, decided by :meth:`step_roots`."""
+        every root and touch of g on every step, decided by :meth:`step_roots`.  The steps of one
+        way are walked first; g at every step's first Chebyshev nodes is then evaluated in one
+        stacked call (:meth:`first_cells`: the same values, one call instead of one a step)."""
         out = []
         for sign in (1.0, -1.0):
             q, t = q0.copy(), self._tangent(q0, sign * t0)
             if t is None:
                 continue
+            steps = []
             for k in range(int(REACH / STEP)):
                 q_new = self._onto(q + STEP * t)
                 if q_new is None:
@@ -134,30 +137,61 @@ class Search:
                 t_new = self._tangent(q_new, t)
                 if t_new is None or not self.same_sides(q, q_new):
                     break
-                out += self.step_roots(q, q_new)
-                if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
-                    out.append(q_new)
+                steps.append((q, q_new))
                 q, t = q_new, t_new
+            known = self.first_cells(steps)
+            for k, (qa, qb) in enumerate(steps):
+                out += self.step_roots(qa, qb, known[k])
+                if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
+                    out.append(qb)
         return [x for x in out if x is not None]
 
-    def step_roots(self, qa, qb) -> list:
+    def first_cells(self, steps) -> list:
+        """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step and at
+        its ends (where all_roots reads the signs), in one stacked :meth:`along` (each row's
+        Gauss–Newton and solves its own: the values of one call a step), as {τ: g} per step;
+        {} for every step when a row's matrix is singular (then each step's own call falls back
+        to least squares where needed)."""
+        if not steps:
+            return []
+        taus = np.concatenate([0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1), [0.0, 1.0]])
+        Q = np.concatenate([qa + taus[:, None] * (qb - qa) for qa, qb in steps])
+        D = np.repeat(np.array([qb - qa for qa, qb in steps]), len(taus), axis=0)
+        try:
+            vals = self.along(Q, D)
+        except np.linalg.LinAlgError:
+            return [{} for _ in steps]
+        k = len(taus)
+        return [dict(zip(taus.tolist(), vals[j * k:(j + 1) * k].tolist())) for j in range(len(steps))]
+
+    def step_roots(self, qa, qb, known=None) -> list:
         """The points of the step p(τ) = onto(qa + τ (qb − qa)), τ in [0, 1], where the force along
         it, g(τ) = t(τ)·f(p(τ)) (t the chord's direction projected on the joints' tangent at p),
         has a root or a touch: all_roots' sign analysis of g's Chebyshev interpolant (one cell of
         degree DEG, halved where not resolved to ``floor``), never the signs at the ends alone.
-        A part of the step where g cannot be evaluated (off the joints) starts Newton at its middle."""
+        A part of the step where g cannot be evaluated (off the joints) starts Newton at its middle.
+        ``known``: {τ: g(τ)} already evaluated (:meth:`first_cells`)."""
         d = qb - qa
+        known = known or {}
 
         def point(x):
             p = self._onto(qa + x * d)
             t = None if p is None else self._tangent(p, d)
             return math.nan if t is None else float(t @ self.forces(p))
 
-        def g(taus):
+        def fresh(taus):
             try:
-                return self.along(qa + np.atleast_1d(taus)[:, None] * d, d)
+                return self.along(qa + taus[:, None] * d, d)
             except np.linalg.LinAlgError:       # dependent rows somewhere: one point at a time (least squares)
-                return np.array([point(float(x)) for x in np.atleast_1d(taus)])
+                return np.array([point(float(x)) for x in taus])
+
+        def g(taus):
+            taus = np.atleast_1d(np.asarray(taus, dtype=float))
+            out = np.array([known.get(x, math.nan) for x in taus.tolist()])
+            new = np.array([x not in known for x in taus.tolist()], dtype=bool)
+            if np.any(new):
+                out[new] = fresh(taus[new])
+            return out
 
         floor = 1e-10 * self.F0 * max(1.0, self.L)
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
@@ -165,8 +199,9 @@ class Search:
 
     def along(self, Q, d) -> np.ndarray:
         """g at the chord points Q (k, n), all at once: each placed on the joints by the minimum-norm
-        Gauss–Newton of :meth:`_onto` (stacked), then t·f with t the chord direction d projected on
-        the joints' tangent there (NaN where a point does not reach the joints)."""
+        Gauss–Newton of :meth:`_onto` (stacked), then t·f with t the chord direction d (one for
+        all, or one a row) projected on the joints' tangent there (NaN where a point does not
+        reach the joints)."""
         s, sc = self.s, self.scale
         Q = np.array(Q, dtype=float)
         ok = np.ones(len(Q), dtype=bool)
@@ -184,10 +219,10 @@ class Search:
                 Q[act] -= (np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), ph[:, :, None]))[:, :, 0] * sc
             ok[act] = False
             Js = s.jac_many(s.stack(Q)) * sc
-            ts = np.broadcast_to(d / sc, Q.shape)[:, :, None]
+            ts = np.broadcast_to(np.asarray(d) / sc, Q.shape)[:, :, None]
             T = (ts - np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), Js @ ts))[:, :, 0]
         else:
-            T = np.broadcast_to(d / sc, Q.shape)
+            T = np.broadcast_to(np.asarray(d) / sc, Q.shape)
         nrm = np.linalg.norm(T, axis=1)
         ok &= np.all(np.isfinite(Q), axis=1) & (nrm >= 1e-12)
         out = np.full(len(Q), np.nan)
