@@ -50,6 +50,7 @@ class Piece:
     coords: Callable | None = None  # pieces evaluated together: coords([fn per time], times) -> (2n, k), q over q̇
     stack: Callable | None = None  # pieces evaluated together: stack([fn per time], times) -> q̇ (k, n)
     states: Callable | None = None  # pieces evaluated together: states([fn per time], times) -> [fn(t)]
+    quad: tuple | None = None      # constant accelerations: (t0, q0, v0, a), q = q0 + v0 τ + a τ²/2, τ = t − t0
 
 
 @dataclass

@@ -176,7 +176,38 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
         return
     # each piece resolved in a few halvings at most (a piece that needs more is searched as before,
     # with a warning): the cost stays a small multiple of the motion's own
-    own = mf.exact_breaks(raw, B, values, warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
+    own = mf.exact_breaks(raw, B, values, known=quadratic_extremes(traj, motion._coords, B[0], B[-1]),
+                          warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
     if own is not None:
         motion.breaks_for, motion.monotone, motion.subdivide = own, True, 1
         motion.cuts_approximate = True      # an extreme's time then polished as a root of its rate
+
+
+def quadratic_extremes(traj, coords: dict, t0: float, t_end: float):
+    """``known(path)`` for :func:`dyncli.motion_find.exact_breaks` when every piece of the motion
+    over [t0, t_end] has constant accelerations (``Piece.quad``): a coordinate q_k = q0 + v0 τ +
+    a τ²/2 has its one extreme at τ = −v0/a (kept when inside its piece), a rate q̇_k none — the
+    extremes decided from the formula itself, no interpolant.  None for a path that is not a
+    coordinate or a motion with another piece (the search then resolves it by
+    :func:`dyncli.rootfind.smooth_extremes`)."""
+    pieces = [p for p in traj.pieces if p.t_b > t0 and p.t_a < t_end]
+    if not pieces or any(p.quad is None for p in pieces) \
+            or pieces[0].t_a > t0 or pieces[-1].t_b < t_end:
+        return None
+
+    def known(path: str) -> list[float] | None:
+        got = coords.get(path)
+        if got is None:
+            return None
+        which, k = got
+        if which != "q":
+            return []                   # q̇_k linear in t on every piece
+        out = []
+        for p in pieces:
+            tq, _, v0, a = p.quad
+            if a[k] != 0.0:
+                t = tq - float(v0[k]) / float(a[k])
+                if p.t_a < t < p.t_b:
+                    out.append(t)
+        return out
+    return known

@@ -543,10 +543,11 @@ def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
     kind = _closed_form_kind(s, q0)
     if kind is None:
         return None
-    along = None
+    along = quad = None
     quadratic = kind[0] == "constant"           # constant accelerations: q(t) a quadratic
     if kind[0] == "constant":
         a = s.solve(q0, v0, t0)[0]
+        quad = (t0, q0, v0, a)
 
         def fn(t):
             tau = t - t0
@@ -561,6 +562,8 @@ def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
         lin = _linear(s, q0, N, i, has_k, has_c)
         s_a, sd_a = float(q0[i]), float(v0[i])
         quadratic = lin.A1 == 0 and lin.A2 == 0
+        if quadratic:                   # Linear1.motion's quadratic, per coordinate
+            quad = (t0, q0, N * sd_a, N * lin.A0)
 
         def fn(t):
             sv, sdv = lin.motion(t - t0, s_a, sd_a)
@@ -570,7 +573,7 @@ def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
             if lin.A1 == 0 and lin.A2 == 0:         # Linear1.motion's ṡ on an array, the same operations
                 return (sd_a + lin.A0 * (np.asarray(ts, dtype=float) - t0))[:, None] * N[None, :]
             return np.array([lin.motion(t - t0, s_a, sd_a)[1] for t in ts])[:, None] * N[None, :]
-    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many))
+    traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many, quad=quad))
     traj.method = "closed-form"
     got = _first_event(s, traj, len(traj.pieces) - 1, t_end, quadratic)
     if along is not None and warn is not None and got is not None:
