@@ -222,11 +222,13 @@ def _drive_grid(s, t_end: float) -> np.ndarray:
 KIN_PIECES = 20_000
 
 
-def _newton(s, q, t):
-    """Newton on φ(q, t) = 0 from q, stopped as _KinPiece.position stops (the correction at the
-    rounding of the positions, or the next one foreseen below it); None if it does not converge
-    in 6 steps."""
-    scale = assembly.length_scale(q, s)
+def _newton(s, q, t, scale: float | None = None):
+    """Newton on φ(q, t) = 0 from q (positions of the length ``scale``, default q's own): stopped
+    when the correction is at the rounding of the positions, or (well inside Newton's quadratic
+    convergence, |dq| ≤ 1e-6 of the scale) the next one, |dq|³/|dq_prev|², is foreseen below it
+    (that step would not change q); None if it does not converge in 6 steps."""
+    if scale is None:
+        scale = assembly.length_scale(q, s)
     last = None
     for _ in range(6):
         try:
@@ -285,21 +287,9 @@ class _KinPiece:
         tau = t - self.t_a
         q = self.q_a + v * tau + 0.5 * a * (tau * tau) if v is not None else self.q_a
         if np.all(np.isfinite(q)):
-            last = None
-            for _ in range(6):
-                try:
-                    dq = np.linalg.solve(s.jac(q), s.phi(q, t))
-                except np.linalg.LinAlgError:
-                    break
-                q = q - dq
-                size = float(np.max(np.abs(dq)))
-                # converged: the correction at the rounding of the positions, or (well inside
-                # Newton's quadratic convergence, |dq| ≤ 1e-6 of the scale) the next one,
-                # |dq|³/|dq_prev|², below it: that step would not change q
-                if size <= 4 * EPS * scale or last is not None and size <= 1e-6 * scale and \
-                        size ** 3 <= EPS * scale * last * last:
-                    return q
-                last = size
+            got = _newton(s, q, t, scale)
+            if got is not None:
+                return got
         return _position(s, self.q_a, t)
 
     def positions(self, ts):
