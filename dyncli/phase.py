@@ -49,20 +49,36 @@ WHY = ("its phase is formed in doubles, held to about one ulp and its rate's las
        "beyond ~1e9 costs the answer its digits")
 
 
+def worst_loss(rels, limit: float = LOSS) -> tuple[int, int] | None:
+    """(the index of the largest of ``rels`` above ``limit``, how many are above it), or None:
+    the worst reported time of a loss of digits (relative errors, one per time).
+
+    >>> worst_loss([1e-9, 3e-6, 2e-5, 1e-7])
+    (2, 2)
+    """
+    worst, count = None, 0
+    for k, e in enumerate(rels):
+        if e > limit:
+            count += 1
+            if worst is None or e > rels[worst]:
+                worst = k
+    return None if worst is None else (worst, count)
+
+
+def lost_at(count: int, n: int) -> str:
+    """The warnings' note of how many of the n reported times lost digits (none for one)."""
+    return f" (digits lost at {count} of the {n} reported times)" if count > 1 else ""
+
+
 def warn_lost(res, times, errs, what: str, why: str = WHY) -> float:
     """Warn once (naming the worst time and how many) when a reported time's phase error ``errs[i]``
     (radians, or the same fraction of the oscillation) exceeds :data:`LOSS`; the largest error."""
-    worst, count = None, 0
-    for t, e in zip(times, errs):
-        if e > LOSS:
-            count += 1
-            if worst is None or e > worst[1]:
-                worst = (t, e)
-    if worst is not None:
-        t, e = worst
+    hit = worst_loss(errs)
+    if hit is not None:
+        k, count = hit
+        t, e = times[k], errs[k]
         how = "has no correct digits" if e >= 1.0 else f"has a phase error up to {e:.2g}"
-        more = f" (digits lost at {count} of the {len(times)} reported times)" if count > 1 else ""
-        msg = f"{what} at t = {t:g} s {how}{more}: {why}; ask for a smaller t"
+        msg = f"{what} at t = {t:g} s {how}{lost_at(count, len(times))}: {why}; ask for a smaller t"
         res.warn(msg)
         extra = getattr(res, "extra", None)
         if extra is not None:           # (for a find search that solves again at its answers' times)

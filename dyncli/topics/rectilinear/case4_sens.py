@@ -93,8 +93,8 @@ def warn(c4, ans, rtol: float) -> None:
     phase = 2 * math.pi * shift / c4.period if c4.periodic and c4.period > 0 else 0.0
     if phase > LOSS:
         how = "no correct digits" if phase >= 1.0 else f"a phase error up to {phase:.2g} rad"
-        ans.res.warn(f"the state at t ≈ {c4.p.t1 + n * c4.period:.3g} s ({n:.3g} periods after t1) has {how}: the period {c4.period:.9g} s is known to "
-                     f"±{c4.period_err:.2g} s (its quadratures and last digit), so n periods shift the time by "
+        ans.res.warn(f"the state at t ≈ {c4.p.t1 + n * c4.period:.3g} s ({n:.3g} periods after t1) has {how}: "
+                     f"the period {c4.period:.9g} s is known to ±{c4.period_err:.2g} s (its quadratures and last digit), so n periods shift the time by "
                      f"±{shift:.2g} s (counted in error_estimate); ask for an earlier time")
     got = [x for x in ans.items if x is not None and x.get("reached")]
     tsc = max([abs(x["t"] - c4.p.t1) for x in got] + [0.0])

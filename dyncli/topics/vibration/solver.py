@@ -218,25 +218,23 @@ def _warn_lost_digits(res, times, x, v, w, bound, cures):
     """Warn, once per quantity, when a reported time's rounding error (``bound(t, x, v, w)`` ->
     (errors, scales)) exceeds LOSS_FRACTION of the quantity's scale: naming the worst such time,
     how many there are and the quantity's cure."""
+    from dyncli.phase import lost_at, worst_loss
+
     names = ("x", "ẋ", "w")
-    worst = [None, None, None]
-    count = [0, 0, 0]
-    for i, ti in enumerate(times):
-        errs, scales = bound(ti, x[i], v[i], w[i])
-        for q in range(3):
-            if errs[q] > cf.LOSS_FRACTION * scales[q]:
-                count[q] += 1
-                if worst[q] is None or errs[q] / scales[q] > worst[q][1] / worst[q][2]:
-                    worst[q] = (ti, errs[q], scales[q])
+    bounds = [bound(ti, x[i], v[i], w[i]) for i, ti in enumerate(times)]      # ((ex, ev, ew), scales)
     said: dict[str, list[str]] = {}             # quantities with the same time, loss and cure: one warning
-    for q, hit in enumerate(worst):
+    for q in range(3):
+        # (a motion of scale 0 has errors 0: no loss)
+        hit = worst_loss([errs[q] / scales[q] if scales[q] > 0 else (math.inf if errs[q] > 0 else 0.0)
+                          for errs, scales in bounds], cf.LOSS_FRACTION)
         if hit is None:
             continue
-        ti, e, sc = hit
+        k, count = hit
+        e, sc = bounds[k][0][q], bounds[k][1][q]
         how = ("no correct digits" if e >= sc else
                f"a rounding error up to {e:.2g} (more than {cf.LOSS_FRACTION:g} of its scale {sc:.3g})")
-        more = f" (digits lost at {count[q]} of the {len(times)} reported times)" if count[q] > 1 else ""
-        said.setdefault(f" at t = {ti:g} s {{}} {how}{more}: {cures[q]}", []).append(names[q])
+        said.setdefault(f" at t = {times[k]:g} s {{}} {how}{lost_at(count, len(times))}: {cures[q]}",
+                        []).append(names[q])
     for tail, who in said.items():
         if len(who) == 1:
             res.warn(who[0] + tail.format("has"))
