@@ -7,8 +7,10 @@ vectorised f(t) -> array.
 * Many intervals at once (:func:`gauss_kronrod_many`: a motion's pieces, each with its own
   integrand ``f(i, t)`` and tolerance): the panels of all of them in the same call per pass,
   each interval refined and stopped on its own, as if it were integrated alone.
-* Panels are bisected until Σ|K15 − G7| ≤ max(atol, rtol·|I|); the error returned is that sum,
-  each panel's term at least the rounding of its sum, 50 ε ∫|f| (QUADPACK's rule): an integral
+* Panels are bisected until Σ e ≤ max(atol, rtol·|I|); the error returned is that sum.  Each
+  panel's e is |K15 − G7|, raised to QUADPACK's (200·d/A)^1.5·A (A = ∫|f − its mean| over the
+  panel) where that is larger — the difference can vanish by accident on a panel holding a kink
+  or a jump — and at least the rounding of its sum, 50 ε ∫|f| (QUADPACK's rule): an integral
   whose terms cancel below that stops there, its error saying so.
 * Work budget: each panel evaluated counts one step against ``max_steps`` (default
   ``MAX_PANELS``); a run that needs more is refused (:class:`dyncli.ode.OverBudget`, exit 1,
@@ -48,7 +50,7 @@ _WG15[7] = _WG[3]
 def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps: int | None = None,
                   what: str = "the integrand", path: str | None = None):
     """∫_a^b f by globally adaptive G7/K15 (``f`` evaluated on arrays of t).
-    Returns (integral, error estimate = Σ|K15 − G7|, converged): the rule of
+    Returns (integral, error estimate = Σ of the panels' errors, converged): the rule of
     :func:`gauss_kronrod_many` on one interval, with the bookkeeping in plain floats (a quadrature
     called hundreds of times a solve: half the cost of the many-interval arrays for one).
 
@@ -105,7 +107,7 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
     """∫ over each interval [a_i, b_i] at once: ``f(i, t)`` the integrand of interval ``i[j]`` at
     ``t[j]`` (two arrays of one shape, the intervals mixed), so that every pass evaluates the
     panels still being refined in *all* the intervals in one call.  Each interval is refined as
-    :func:`gauss_kronrod` refines its one (bisected until its own Σ|K15 − G7| ≤ max(atol_i,
+    :func:`gauss_kronrod` refines its one (bisected until its own Σ of the panels' errors ≤ max(atol_i,
     rtol·|I_i|), ``atol`` a number or one per interval; the panels that carry more than their
     share of the error split, each term at least its rounding), and stops on its own: an interval
     whose first pass meets its tolerance costs that pass only.  Returns three arrays (integral,
@@ -172,8 +174,8 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
 def _panels(f, own, c, h, what: str, path: str | None):
     """One pass over the panels of centres ``c`` and half-widths ``h`` (of the intervals ``own``,
     or None for one interval):
-    (K15 sums, |K15 − G7|, the rounding of each sum, 50 ε ∫|f|: QUADPACK's rule, no error is
-    below it)."""
+    (K15 sums, each panel's error — |K15 − G7| or QUADPACK's (200 d / A)^1.5 A, the larger —,
+    the rounding of each sum, 50 ε ∫|f|: QUADPACK's rule, no error is below it)."""
     x = c[:, None] + h[:, None] * NODES[None, :]
     idx = None if own is None else np.repeat(own, NODES.size)        # (None: one interval)
     y = np.asarray(f(idx, x.ravel()), dtype=float).reshape(x.shape)
@@ -181,10 +183,16 @@ def _panels(f, own, c, h, what: str, path: str | None):
         bad = x[~np.isfinite(y)][0]
         raise InputError(f"{what} is not finite at t = {bad:.6g} inside the interval "
                          "(the position or its derivative is undefined there)", path)
-    with np.errstate(over="ignore", invalid="ignore"):     # overflow is reported below
-        K = (y @ _WK) * h
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # overflow: reported below
+        mean = y @ _WK
+        K = mean * h
         diff = np.abs(K - (y @ _WG15) * h)
         floor = 50 * _EPS * (np.abs(y) @ _WK) * np.abs(h)
+        # QUADPACK's guard: |K15 − G7| can vanish by accident on a panel with a kink or a jump;
+        # its (200 d / A)^1.5 A, A = ∫|f − mean|, is larger there (never below d here)
+        spread = (np.abs(y - 0.5 * mean[:, None]) @ _WK) * np.abs(h)
+        guard = spread * np.minimum(1.0, (200.0 * diff / spread) ** 1.5)
+        diff = np.where(spread > 0, np.maximum(diff, guard), diff)
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(diff)) and np.all(np.isfinite(floor))):
         raise NumericalError(f"the integral of {what} is not finite: it overflows a double (beyond ~1.8e308)")
     return K, diff, floor

@@ -36,7 +36,11 @@ class Skip(Exception):
 
 class Energy:
     def __init__(self, p, model):
-        self.p, self.model, self.curve, self.m = p, model, model.curve, model.m
+        self.p, self.model, self.curve = p, model, model.curve
+        # energies (and m) are held in a unit 2^k J that balances the work over the wire against
+        # the mass term m|y'|²: scaling by a power of two is exact, and keeps K, M·du and their
+        # roundings clear of the subnormals (a bead of 1e-301 kg); W() reports joules
+        self.unit, self.m = 1.0, float(model.m)
         if p.q_range is None:
             raise Skip("the energy route needs q_range (the ends of the wire)")
         self.lo, self.hi = (float(v) for v in p.q_range)
@@ -47,6 +51,7 @@ class Energy:
         w = _WG * (self.h / 2)
         self.cum = np.concatenate([[0.0], np.cumsum(Qt @ w)])
         self.cum_n = np.concatenate([[0.0], np.cumsum(Qn @ w)])
+        self._in_unit(p)
         self.scale = max(float(np.max(np.abs(self.cum))), 1e-300)
         x6, w6 = np.polynomial.legendre.leggauss(6)   # the cells must resolve the forces along the curve
         Q6 = self._gen((0.5 * (edges[:-1] + edges[1:]))[:, None] + (0.5 * self.h) * x6[None, :])[0]
@@ -60,6 +65,22 @@ class Energy:
         self._integrals = {}
         self.crit = self._critical_points()
 
+    def _in_unit(self, p):
+        """Choose the unit 2^k J at the geometric mean of the energy's size (the work over the
+        wire, or the start's kinetic energy) and the mass term's (m|y'(q0)|²), so that both
+        their ratio (q̇²) and each of them stay normal doubles, and express the table, m and
+        the generalised forces in it."""
+        y1 = self.curve.dy(np.array([float(p.q0)]))
+        mass = self.m * float(np.sum(y1 * y1))
+        size = max(float(np.max(np.abs(self.cum))), 0.5 * mass * float(p.q_dot0) ** 2)
+        if not (0.0 < size < math.inf):
+            return
+        k = math.frexp(size)[1]
+        if 0.0 < mass < math.inf:
+            k = (k + math.frexp(mass)[1]) // 2
+        self.unit = math.ldexp(1.0, -k)
+        self.cum, self.cum_n, self.m = self.cum * self.unit, self.cum_n * self.unit, self.m * self.unit
+
     # -- the generalised force and the work ----------------------------------------------
     @staticmethod
     def _nodes(a, b):
@@ -72,7 +93,8 @@ class Energy:
         x = self.curve.y(qf)
         Fc, Fn = self.model.forces(np.zeros_like(qf), x, np.zeros_like(x))
         y1 = self.curve.dy(qf)
-        return (np.sum((Fc + Fn) * y1, axis=0).reshape(shape), np.sum(Fn * y1, axis=0).reshape(shape))
+        u = self.unit
+        return (np.sum((Fc + Fn) * y1, axis=0).reshape(shape) * u, np.sum(Fn * y1, axis=0).reshape(shape) * u)
 
     def Q(self, q):
         return self._gen(np.asarray(q, float))[0]
@@ -93,7 +115,7 @@ class Energy:
         G = self._gen(self._nodes(np.ravel(a), np.ravel(qq)))[which]
         part = (G @ _WG) * (np.ravel(qq) - np.ravel(a)) / 2
         cum = self.cum if which == 0 else self.cum_n
-        return (cum[i] + part.reshape(np.shape(q))) + loops * cum[-1]
+        return ((cum[i] + part.reshape(np.shape(q))) + loops * cum[-1]) / self.unit
 
     def I(self, qa, q):
         """∫_qa^q Q (q an array) and its rounding, from qa's own table (:class:`Integral`)."""
