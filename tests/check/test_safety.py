@@ -5,7 +5,6 @@ feedback (issue findings: ../ and absolute paths, symlinks, NUL bytes,
 
 from __future__ import annotations
 
-import time
 
 import pytest
 
@@ -110,16 +109,24 @@ def test_bounded_numbers_in_a_key(tmp_path, capsys, extra):
     assert code == 2 and "tolerance" in err and "Traceback" not in err
 
 
-def test_200_unknown_keys_are_cheap():
+def test_200_unknown_keys_are_cheap(monkeypatch):
+    """Counted, not timed: the result paths are indexed once, and each unknown key is compared
+    with at most MAX_HINT_CANDIDATES of them (not with all ~2,000)."""
+    import dyncli.expr
+    from dyncli.check import paths
+
     answers = "\n".join(f"  find.{i}.zz{i}: 1" for i in range(200))
     text = "problem: {type: rectilinear, a: -4, v1: 20, find: [" + ", ".join(f"{{t: {i + 1}}}" for i in range(400)) \
            + "]}\nanswers:\n" + answers + "\n"
-    grade(text)                               # warm up (imports, the solve)
-    t0 = time.perf_counter()
+    compared: list[int] = []
+    indexed: list[int] = []
+    hint, build = dyncli.expr.did_you_mean, paths.PathIndex.__init__
+    monkeypatch.setattr(dyncli.expr, "did_you_mean", lambda key, cands: compared.append(len(cands)) or hint(key, cands))
+    monkeypatch.setattr(paths.PathIndex, "__init__", lambda self, ps: indexed.append(len(ps)) or build(self, ps))
     r = grade(text)
-    dt = time.perf_counter() - t0
     assert sum(1 for f in r.submissions for a in f.questions if a.status == "unknown") == 200
-    assert dt < 2.0, f"{dt:.2f} s for 200 unknown keys"
+    assert len(compared) == 200 and max(compared) <= paths.MAX_HINT_CANDIDATES, compared[:5]
+    assert len(indexed) == 1 and indexed[0] > 1000, indexed
 
 
 def test_write_key_on_an_euler_problem_with_numpy_results():

