@@ -17,6 +17,9 @@ vectorised f(t) -> array.
   the runner's one message), as on the ODE routes.
 * A non-finite value of the integrand is an input error (the expression is undefined there,
   exit 2); a sum that overflows is a numerical one (exit 1).
+* CPU: each pass looks at the solve's CPU budget (:mod:`dyncli.cputime`, ``accuracy.max_cpu``):
+  the work is adaptive, not projected to its end, so a quadrature that has used the whole budget
+  (an integrand of rounding noise, which no bisection resolves) is refused then, exit 1.
 * A panel that cannot be halved any more (its width at the rounding of t) ends the run as not
   converged: the caller warns.
 """
@@ -25,6 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from dyncli import cputime
 from dyncli.errors import InputError, NumericalError
 
 MAX_PANELS = 50_000         # default budget: panels evaluated (15 evaluations each)
@@ -79,6 +83,7 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
         panels += len(c)
         if panels > limit:
             raise OverBudget(b, panels + len(c), limit, float(c[0]))
+        _within_cpu(panels, what, path)
         K, diff, floor = _panels(one, None, c, h, what, path)
         err = np.maximum(diff, floor)
         total = done_val + float(K.sum())
@@ -140,6 +145,7 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
         panels += len(c)
         if panels > limit:
             raise OverBudget(float(hi0[own].max()), panels + len(c), limit, float(c[0]))
+        _within_cpu(panels, what, path)
         K, diff, floor = _panels(f, own, c, h, what, path)
         err = np.maximum(diff, floor)
         total = done_val + np.bincount(own, K, minlength=m)
@@ -169,6 +175,16 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
         own, lo, hi, c = own[go], lo[go], hi[go], c[go]
         own, lo, hi = np.concatenate([own, own]), np.concatenate([lo, c]), np.concatenate([c, hi])
     return sign * I, E, ok
+
+
+def _within_cpu(panels: int, what: str, path: str | None) -> None:
+    """NumericalError once the solve has used its CPU budget (checked once a pass)."""
+    if (limit := cputime.over()) is not None:
+        raise NumericalError(
+            f"the quadrature of {what}{f' ({path})' if path else ''} used the solve's CPU budget of {limit:g} s (accuracy.max_cpu) after "
+            f"{panels} panels without reaching accuracy.rtol (an integrand that is rounding noise at the inputs' "
+            "scales, or one with very many kinks): check the scales of the inputs, loosen accuracy.rtol, "
+            "or raise accuracy.max_cpu")
 
 
 def _panels(f, own, c, h, what: str, path: str | None):

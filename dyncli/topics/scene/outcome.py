@@ -15,6 +15,9 @@ from .contacts import Contact, Rolls
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
 
+#: the integrand of W_nc, as the quadrature names it in a refusal
+WNC_POWER = "the power of the non-conservative forces (W_nc)"
+
 
 # ----------------------------------------------------------------------------- results
 
@@ -207,7 +210,7 @@ class _Work:
         # each piece to the rounding of the energies it moves (an exact motion: only the
         # quadrature's own error is left, well below the energy residual it is checked by)
         scale = abs(self.power(p, mid)) * (b - p.t_a) + s.kinetic(v) + abs(s.potential(q))
-        return gauss_kronrod(lambda x: self.powers(p, x), p.t_a, b, 1e-12, 1e-13 * scale)[0]
+        return gauss_kronrod(lambda x: self.powers(p, x), p.t_a, b, 1e-12, 1e-13 * scale, what=WNC_POWER)[0]
 
     def together(self, items) -> list[float]:
         """:meth:`piece` of each (piece, b) in ``items``, those with a ``power_stack`` integrated
@@ -237,7 +240,7 @@ class _Work:
 
             def f(i, t, fns=fns, stack=stack):
                 return stack([fns[j] for j in i.tolist()], t)
-            I = gauss_kronrod_many(f, a, b, 1e-12, 1e-13 * scale)[0]
+            I = gauss_kronrod_many(f, a, b, 1e-12, 1e-13 * scale, what=WNC_POWER)[0]
             for k, val in zip(ks, I.tolist()):
                 out[k] = val
         return out
