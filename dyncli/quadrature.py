@@ -181,8 +181,8 @@ def _within_cpu(panels: int, what: str, path: str | None) -> None:
     """NumericalError once the solve has used its CPU budget (checked once a pass)."""
     if (limit := cputime.over()) is not None:
         raise NumericalError(
-            f"the quadrature of {what}{f' ({path})' if path else ''} used the solve's CPU budget of {limit:g} s (accuracy.max_cpu) after "
-            f"{panels} panels without reaching accuracy.rtol (an integrand that is rounding noise at the inputs' "
+            f"the quadrature of {what}{f' ({path})' if path else ''} used the solve's CPU budget of {limit:g} s "
+            f"(accuracy.max_cpu) after {panels} panels without reaching accuracy.rtol (an integrand that is rounding noise at the inputs' "
             "scales, or one with very many kinks): check the scales of the inputs, loosen accuracy.rtol, "
             "or raise accuracy.max_cpu")
 
