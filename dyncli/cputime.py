@@ -53,6 +53,9 @@ import time  # noqa: E402
 #: the CPU (seconds, this thread's) a solve may take when its file sets neither
 #: ``accuracy.max_cpu`` nor ``accuracy.max_steps``; a run projected beyond it is refused
 SOLVE_CPU = 2.0
+#: adaptive work that cannot be projected to its end (root searches, quadratures, find searches)
+#: stops once the solve has used this many times its budget
+ADAPTIVE = 2.0
 #: below this much CPU used, by the solve or by the run being projected, no projection is made
 #: (one noisy probe must not refuse a cheap run, nor a retry's first small steps)
 GRACE = 0.25

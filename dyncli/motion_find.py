@@ -55,7 +55,7 @@ def flatten(node: Any, prefix: str = "") -> dict[str, float]:
 
 #: a ``find`` search stops once the solve has used this many times its CPU budget (its states are
 #: solves; a search near its end is not cut short at the budget itself)
-FIND_MARGIN = 2.0
+FIND_MARGIN = cputime.ADAPTIVE
 
 
 class StateMotion:

@@ -18,8 +18,9 @@ vectorised f(t) -> array.
 * A non-finite value of the integrand is an input error (the expression is undefined there,
   exit 2); a sum that overflows is a numerical one (exit 1).
 * CPU: each pass looks at the solve's CPU budget (:mod:`dyncli.cputime`, ``accuracy.max_cpu``):
-  the work is adaptive, not projected to its end, so a quadrature that has used the whole budget
-  (an integrand of rounding noise, which no bisection resolves) is refused then, exit 1.
+  the work is adaptive, not projected to its end, so a quadrature that has used
+  ``cputime.ADAPTIVE`` (2) × the budget (an integrand of rounding noise, which no bisection
+  resolves) is refused then, exit 1, as the root and find searches are.
 * A panel that cannot be halved any more (its width at the rounding of t) ends the run as not
   converged: the caller warns.
 """
@@ -178,13 +179,14 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
 
 
 def _within_cpu(panels: int, what: str, path: str | None) -> None:
-    """NumericalError once the solve has used its CPU budget (checked once a pass)."""
-    if (limit := cputime.over()) is not None:
+    """NumericalError once the solve has used ``cputime.ADAPTIVE`` × its CPU budget (checked once
+    a pass: the work is adaptive, not projected to its end)."""
+    if (limit := cputime.over(cputime.ADAPTIVE)) is not None:
         raise NumericalError(
-            f"the quadrature of {what}{f' ({path})' if path else ''} used the solve's CPU budget of {limit:g} s "
-            f"(accuracy.max_cpu) after {panels} panels without reaching accuracy.rtol (an integrand that is rounding noise at the inputs' "
-            "scales, or one with very many kinks): check the scales of the inputs, loosen accuracy.rtol, "
-            "or raise accuracy.max_cpu")
+            f"the quadrature of {what}{f' ({path})' if path else ''} used {cputime.ADAPTIVE:g} × the solve's "
+            f"CPU budget of {limit:g} s (accuracy.max_cpu) after {panels} panels without reaching accuracy.rtol "
+            "(an integrand that is rounding noise at the inputs' scales, or one with very many kinks): check "
+            "the scales of the inputs, loosen accuracy.rtol, or raise accuracy.max_cpu")
 
 
 def _panels(f, own, c, h, what: str, path: str | None):

@@ -16,7 +16,7 @@ from dyncli import cputime
 from dyncli.errors import NumericalError
 
 #: a root search (:func:`all_roots`) stops once the solve has used this many times its CPU budget
-SEARCH_MARGIN = 2.0
+SEARCH_MARGIN = cputime.ADAPTIVE
 
 #: scipy's defaults and smallest rtol of ``brentq``
 XTOL = 2e-12

@@ -11,6 +11,7 @@ exception escaping a layer, NaN in JSON, a document that takes more than
 
 from __future__ import annotations
 
+import contextlib
 import io
 import json
 import math
@@ -122,6 +123,7 @@ class Report:
     codes: list[int] = field(default_factory=list)
     messages: list[str] = field(default_factory=list)
     seconds: float = 0.0
+    stray: bytes = b""          # what reached file descriptor 1 behind Python's back (LAPACK's messages)
 
     def check(self, source: Any = None) -> None:
         where = f"\n--- document ---\n{source!r}"[:3000] if source is not None else ""
@@ -131,6 +133,7 @@ class Report:
             if c:
                 assert m and m.strip(), f"exit {c} without a message{where}"
                 assert "Traceback" not in m, m + where
+        assert not self.stray, f"printed to stdout behind the renderers: {self.stray[:300]!r}{where}"
         assert self.seconds <= MAX_SECONDS, f"took {self.seconds:.2f} s of CPU (limit {MAX_SECONDS}){where}"
 
 
@@ -150,13 +153,45 @@ def run_document(data: bytes | str, name: str = "fuzz.yaml", render: bool = True
 
     old = signal.signal(signal.SIGALRM, _alarm)
     signal.setitimer(signal.ITIMER_REAL, hang)
+    with _fd1_caught() as stray:
+        try:
+            rep = _run_document(data, name, render)
+        except Hang as exc:
+            raise AssertionError(f"{exc} ({hang} s)\n--- document ---\n{data[:3000]!r}") from None
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+    rep.stray = stray.read()
+    return rep
+
+
+_SINK = None
+
+
+@contextlib.contextmanager
+def _fd1_caught():
+    """File descriptor 1 sent to a scratch file for the block (a library writing to it directly —
+    LAPACK's "On entry to DLASCL …" on a NaN — would reach the user's terminal or JSON); the
+    file, rewound, is yielded and read after the block."""
+    import os
+    import sys
+    import tempfile
+
+    global _SINK
+    if _SINK is None:
+        _SINK = tempfile.TemporaryFile()
+    _SINK.seek(0)
+    _SINK.truncate()
+    sys.stdout.flush()
+    saved = os.dup(1)
+    os.dup2(_SINK.fileno(), 1)
     try:
-        return _run_document(data, name, render)
-    except Hang as exc:
-        raise AssertionError(f"{exc} ({hang} s)\n--- document ---\n{data[:3000]!r}") from None
+        yield _SINK
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
+        sys.stdout.flush()
+        os.dup2(saved, 1)
+        os.close(saved)
+        _SINK.seek(0)
 
 
 def _run_document(data: bytes | str, name: str, render: bool) -> Report:

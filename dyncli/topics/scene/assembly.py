@@ -38,6 +38,8 @@ def assemble(system, q, free, t: float = 0.0, iters: int = 60) -> np.ndarray:
         if float(np.max(np.abs(ph), initial=0.0)) <= tol:
             break
         J = system.jac(q)[:, cols]
+        if not (np.all(np.isfinite(ph)) and np.all(np.isfinite(J))):   # (LAPACK would print to stdout)
+            raise np.linalg.LinAlgError("the joints' equations are not finite while placing the bodies")
         step = np.linalg.lstsq(J, -ph, rcond=None)[0]
         nrm = float(np.max(np.abs(step), initial=0.0))
         if nrm > 0.5 * length_scale(q, system):         # damp far jumps from a rough sketch

@@ -233,14 +233,18 @@ class Search:
 
 def _row_solve(J, r) -> np.ndarray:
     """(J Jᵀ)⁻¹ r: J Jᵀ's LU (a quarter of a least-squares solve's cost), least squares where J's
-    rows are dependent (redundant joints, a singular configuration)."""
+    rows are dependent (redundant joints, a singular configuration).  Not finite: LinAlgError,
+    as least squares would raise (after LAPACK printed to stdout)."""
+    JJ = J @ J.T
+    if not (np.all(np.isfinite(JJ)) and np.all(np.isfinite(r))):
+        raise np.linalg.LinAlgError("the joints' equations are not finite on the way to an equilibrium")
     try:
-        x = np.linalg.solve(J @ J.T, r)
+        x = np.linalg.solve(JJ, r)
         if np.all(np.isfinite(x)):
             return x
     except np.linalg.LinAlgError:
         pass
-    return np.linalg.lstsq(J @ J.T, r, rcond=None)[0]
+    return np.linalg.lstsq(JJ, r, rcond=None)[0]
 
 
 def null_basis(J, n: int, indep: list[int]) -> np.ndarray:
