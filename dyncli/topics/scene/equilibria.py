@@ -154,7 +154,7 @@ class Search:
         to least squares where needed)."""
         if not steps:
             return []
-        taus = np.concatenate([0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1), [0.0, 1.0]])
+        taus = np.concatenate([NODES, [0.0, 1.0]])
         Q = np.concatenate([qa + taus[:, None] * (qb - qa) for qa, qb in steps])
         D = np.repeat(np.array([qb - qa for qa, qb in steps]), len(taus), axis=0)
         try:
@@ -194,6 +194,8 @@ class Search:
             return out
 
         floor = 1e-10 * self.F0 * max(1.0, self.L)
+        if away_from_zero([known.get(x, math.nan) for x in NODES.tolist()], floor):
+            return []
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
         return [self._onto(qa + x * d) for x in roots + touches + bad]
 
@@ -229,6 +231,28 @@ class Search:
         for k in np.nonzero(ok)[0]:
             out[k] = float((T[k] / nrm[k] * sc) @ self.forces(Q[k]))
         return out
+
+
+NODES = 0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1)    # all_roots' first cell [0, 1]
+#: (c = COEF @ g(NODES): the Chebyshev coefficients of g's interpolant on [0, 1], all_roots' own)
+COEF = np.polynomial.chebyshev.chebvander(2 * NODES - 1, DEG).T * np.r_[1.0, np.full(DEG, 2.0)][:, None] / (DEG + 1)
+
+
+def away_from_zero(ys, floor: float) -> bool:
+    """True when g, known at the DEG + 1 NODES of a step, has no root and no touch on it, decided
+    from its interpolant p = Σ c_k T_k alone: p resolved (all_roots' own test: the last three
+    coefficients at the rounding of g, or below ``floor``) and |p| ≥ |c₀| − Σ_{k≥1} |c_k| (|T_k| ≤ 1)
+    more than four times that resolution — then g keeps p's sign on the whole step and is nowhere
+    within its rounding of 0: all_roots, which decides the same interpolant by g's signs at p's
+    critical points, would find nothing there (its critical points and their values not needed)."""
+    y = np.asarray(ys, dtype=float)
+    if not np.all(np.isfinite(y)):
+        return False
+    c = COEF @ y
+    tol = max(1e-13 * float(np.max(np.abs(c))), 16 * EPS * float(np.max(np.abs(y))), floor)
+    if float(np.max(np.abs(c[-3:]))) > tol:
+        return False
+    return abs(float(c[0])) - float(np.sum(np.abs(c[1:]))) > 4 * tol
 
 
 def _row_solve(J, r) -> np.ndarray:
