@@ -47,6 +47,7 @@ class Search:
         self.L = assembly.length_scale(q0, system)
         self.angles = np.array([nm.startswith("angle.") for nm in system.names])
         self.scale = np.where(self.angles, 1.0, self.L)
+        self.dof = system.n - assembly.rank(system.jac(q0)) if system.m else system.n
         f = self.forces(q0)
         self.F0 = max(float(np.max(np.abs(f), initial=0.0)), float(np.max(np.abs(system.grav), initial=0.0)), 1e-300)
 
@@ -129,7 +130,7 @@ class Search:
             q, t = q0.copy(), self._tangent(q0, sign * t0)
             if t is None:
                 continue
-            steps = []
+            steps, tans = [], [t]
             for k in range(int(REACH / STEP)):
                 q_new = self._onto(q + STEP * t)
                 if q_new is None:
@@ -138,13 +139,101 @@ class Search:
                 if t_new is None or not self.same_sides(q, q_new):
                     break
                 steps.append((q, q_new))
+                tans.append(t_new)
                 q, t = q_new, t_new
-            known = self.first_cells(steps)
-            for k, (qa, qb) in enumerate(steps):
-                out += self.step_roots(qa, qb, known[k])
-                if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
-                    out.append(qb)
+            out += self.walk_roots(steps, tans)
+            out += [qb for k, (_qa, qb) in enumerate(steps) if k % EVERY == EVERY - 1]   # starts on the path itself
         return [x for x in out if x is not None]
+
+    def walk_roots(self, steps, tans) -> list:
+        """The roots and touches of the force along one walk: with one degree of freedom over
+        stretches of many steps at once (:meth:`stretch_roots`), else step by step."""
+        out, i = [], 0
+        pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
+        while i < len(steps):
+            j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
+            if j > i + 1:
+                got = self.stretch_roots(pts[i:j + 1])
+                if got is not None:
+                    out += got
+                    i = j
+                    continue
+            known = self.first_cells(steps[i:j])
+            for k in range(i, j):
+                out += self.step_roots(*steps[k], known[k - i])
+            i = j
+        return out
+
+    def stretch_end(self, pts, tans, i: int) -> int:
+        """The last walk point j such that the path from point i to j is a graph over the chord
+        d = q_j − q_i: every walk point's tangent within 60° of d (the scaled metric), each step
+        advancing along d — the section by the planes normal to d then meets it once."""
+        j = len(pts) - 1
+        while j > i + 1:
+            d = (pts[j] - pts[i]) / self.scale
+            d = d / max(float(np.linalg.norm(d)), 1e-300)
+            ok = all(float(tans[k] / self.scale @ d) >= 0.5 for k in range(i, j + 1))
+            if ok:
+                return j
+            j = i + 1 + (j - i - 1) // 2
+        return i + 1
+
+    def stretch_roots(self, pts) -> list | None:
+        """With one degree of freedom, the roots and touches of the force along the path over a
+        stretch of walk points q_0 … q_N (a graph over d = q_N − q_0, :meth:`stretch_end`): the
+        path p(τ) is the point of the joints on the plane w·(p − q_0) = τ w·d (w = d in the scaled
+        metric), τ in [0, 1], and g(τ) = t·f(p(τ)) as on a step (t along d, projected on the
+        joints' tangent) — the same function of the configuration as step by step, one all_roots
+        (cells halved where not resolved) over the whole stretch instead of a cell of degree 12
+        on each step.  None when a plane's point cannot be found (the steps decide then)."""
+        P = np.array(pts)
+        d = P[-1] - P[0]
+        w = d / self.scale ** 2
+        taus = (P - P[0]) @ w / float(w @ d)
+        if not np.all(np.diff(taus) > 0):
+            return None
+
+        def section(T):
+            T = np.atleast_1d(np.asarray(T, dtype=float))
+            return self.on_planes(np.column_stack([np.interp(T, taus, P[:, c]) for c in range(self.n)]), T, P[0], d, w)
+
+        def g(T):
+            Q, ok = section(T)
+            return self.forces_along(Q, d, ok)
+
+        floor = 1e-10 * self.F0 * max(1.0, self.L)
+        roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET * len(pts))
+        xs = roots + touches + bad
+        if not xs:
+            return []
+        Q, ok = section(np.array(xs))
+        return [Q[k].copy() if ok[k] else self._onto(P[0] + x * d) for k, x in enumerate(xs)]
+
+    def on_planes(self, Q, T, q0, d, w):
+        """Newton from Q (k, n) on the joints' rows and the plane w·(p − q0) = τ w·d of each row's
+        τ (stacked); (the points, converged or not)."""
+        s = self.s
+        Q = np.array(Q, dtype=float)
+        td = s.at_times(np.zeros(len(Q)))
+        wd = float(w @ d)
+        act = np.arange(len(Q))
+        for _ in range(30):
+            X = s.stack(Q[act])
+            F = np.concatenate([s.phi_many(X, [x[act] for x in td]),
+                                (((Q[act] - q0) @ w - T[act] * wd) / float(np.linalg.norm(w)))[:, None]], axis=1)
+            done = np.max(np.abs(F), axis=1) <= 1e-13 * self.L
+            act, F = act[~done], F[~done]
+            if not act.size:
+                break
+            A = np.concatenate([s.jac_many(s.stack(Q[act])),
+                                np.broadcast_to(w / float(np.linalg.norm(w)), (act.size, 1, self.n))], axis=1)
+            try:
+                Q[act] -= np.linalg.solve(A, F[:, :, None])[:, :, 0]
+            except np.linalg.LinAlgError:
+                break
+        ok = np.ones(len(Q), dtype=bool)
+        ok[act] = False
+        return Q, ok & np.all(np.isfinite(Q), axis=1)
 
     def first_cells(self, steps) -> list:
         """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step and at
@@ -220,6 +309,13 @@ class Search:
                 Js = s.jac_many(s.stack(Q[act])) * sc
                 Q[act] -= (np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), ph[:, :, None]))[:, :, 0] * sc
             ok[act] = False
+        return self.forces_along(Q, d, ok)
+
+    def forces_along(self, Q, d, ok) -> np.ndarray:
+        """t·f at the points Q of the joints (rows), t the direction d (one for all, or one a row)
+        projected on the joints' tangent there (NaN where not ``ok`` or the projection vanishes)."""
+        s, sc = self.s, self.scale
+        if s.m:
             Js = s.jac_many(s.stack(Q)) * sc
             ts = np.broadcast_to(np.asarray(d) / sc, Q.shape)[:, :, None]
             T = (ts - np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), Js @ ts))[:, :, 0]
