@@ -148,20 +148,19 @@ class Search:
     def walk_roots(self, steps, tans) -> list:
         """The roots and touches of the force along one walk: with one degree of freedom over
         stretches of many steps at once (:meth:`stretch_roots`), else step by step."""
-        out, i = [], 0
+        out, i, single = [], 0, []
         pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
         while i < len(steps):
             j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
-            if j > i + 1:
-                got = self.stretch_roots(pts[i:j + 1])
-                if got is not None:
-                    out += got
-                    i = j
-                    continue
-            known = self.first_cells(steps[i:j])
-            for k in range(i, j):
-                out += self.step_roots(*steps[k], known[k - i])
+            got = self.stretch_roots(pts[i:j + 1]) if j > i + 1 else None
+            if got is None:
+                single += range(i, j)
+            else:
+                out += got
             i = j
+        known = self.first_cells([steps[k] for k in single])      # the steps decided one by one: stacked
+        for k, kn in zip(single, known):
+            out += self.step_roots(*steps[k], kn)
         return out
 
     def stretch_end(self, pts, tans, i: int) -> int:
@@ -172,7 +171,7 @@ class Search:
         while j > i + 1:
             d = (pts[j] - pts[i]) / self.scale
             d = d / max(float(np.linalg.norm(d)), 1e-300)
-            ok = all(float(tans[k] / self.scale @ d) >= 0.5 for k in range(i, j + 1))
+            ok = all(float(tans[k] / self.scale @ d) >= 0.9 for k in range(i, j + 1))
             if ok:
                 return j
             j = i + 1 + (j - i - 1) // 2
