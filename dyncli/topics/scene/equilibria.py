@@ -13,8 +13,13 @@ of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn eit
 each step p(τ) = onto(q_k + τ (q_{k+1} − q_k)) every root and touch of g(τ) = t(τ)·f(p(τ)) is
 decided by all_roots (the sign analysis of g's resolved Chebyshev interpolant, g evaluated at
 all its nodes at once), never by the signs at the step's ends: two or three equilibria within
-one step are each a start.  An equilibrium beyond half a turn from every start can still be
-missed (said in the docs).
+one step are each a start.  A step whose interpolant stays clear of zero is decided by its
+coefficients alone (:func:`away_from_zero`).  With one degree of freedom the steps are decided
+together over *stretches* (:meth:`Search.stretch_roots`): where the walk is a graph over the
+chord of a run of steps, the path is the section of the joints by the planes normal to that
+chord, and one all_roots (cells halved where g needs it) decides the same zeros as a cell of
+degree 12 on every step, at a fraction of the evaluations.  An equilibrium beyond half a turn
+from every start can still be missed (said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
@@ -38,6 +43,7 @@ EVERY = 5              # every fifth point of a path starts a Newton iteration t
 MAX_WALKED = 8         # equilibria whose own paths are followed too
 DEG = 12                # the degree of g's interpolant on one step (all_roots' starting cell)
 BUDGET = 64            # cells per step before the rest of it is left undecided (a start at each)
+STRETCH_COS = 0.9      # one degree of freedom: a stretch's tangents within 26° of its chord
 
 
 class Search:
@@ -165,13 +171,14 @@ class Search:
 
     def stretch_end(self, pts, tans, i: int) -> int:
         """The last walk point j such that the path from point i to j is a graph over the chord
-        d = q_j − q_i: every walk point's tangent within 60° of d (the scaled metric), each step
-        advancing along d — the section by the planes normal to d then meets it once."""
+        d = q_j − q_i: every walk point's tangent within 26° of d (STRETCH_COS, the scaled
+        metric), each step advancing along d — the section by the planes normal to d then meets
+        it once (the closer to straight, the fewer cells all_roots needs)."""
         j = len(pts) - 1
         while j > i + 1:
             d = (pts[j] - pts[i]) / self.scale
             d = d / max(float(np.linalg.norm(d)), 1e-300)
-            ok = all(float(tans[k] / self.scale @ d) >= 0.9 for k in range(i, j + 1))
+            ok = all(float(tans[k] / self.scale @ d) >= STRETCH_COS for k in range(i, j + 1))
             if ok:
                 return j
             j = i + 1 + (j - i - 1) // 2
@@ -423,8 +430,13 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
     found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
     dropped: list[str] = []
     walked = 0
+    tried: set[bytes] = set()           # a start already run (the same doubles: the same result)
     while starts:
-        got = S.rest_from(starts.pop(0))
+        start = starts.pop(0)
+        if (key := np.asarray(start, dtype=float).tobytes()) in tried:
+            continue
+        tried.add(key)
+        got = S.rest_from(start)
         if got is None:
             continue
         q, lam = got
