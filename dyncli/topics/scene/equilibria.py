@@ -191,7 +191,8 @@ class Search:
         metric), τ in [0, 1], and g(τ) = t·f(p(τ)) as on a step (t along d, projected on the
         joints' tangent) — the same function of the configuration as step by step, one all_roots
         (cells halved where not resolved) over the whole stretch instead of a cell of degree 12
-        on each step.  None when a plane's point cannot be found (the steps decide then)."""
+        on each step.  None when a plane's point cannot be found or a part is not resolved
+        (all_roots' ``bad``: the steps decide then, each with its own cells)."""
         P = np.array(pts)
         d = P[-1] - P[0]
         w = d / self.scale ** 2
@@ -209,7 +210,9 @@ class Search:
 
         floor = 1e-10 * self.F0 * max(1.0, self.L)
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET * len(pts))
-        xs = roots + touches + bad
+        if bad:                         # a plane's point not found, or not resolved: step by step
+            return None
+        xs = roots + touches
         if not xs:
             return []
         Q, ok = section(np.array(xs))
