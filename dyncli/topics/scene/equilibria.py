@@ -13,8 +13,13 @@ of 0.1 rad, or 0.1 of the scene's size, by tangent continuation, half a turn eit
 each step p(τ) = onto(q_k + τ (q_{k+1} − q_k)) every root and touch of g(τ) = t(τ)·f(p(τ)) is
 decided by all_roots (the sign analysis of g's resolved Chebyshev interpolant, g evaluated at
 all its nodes at once), never by the signs at the step's ends: two or three equilibria within
-one step are each a start.  An equilibrium beyond half a turn from every start can still be
-missed (said in the docs).
+one step are each a start.  A step whose interpolant stays clear of zero is decided by its
+coefficients alone (:func:`away_from_zero`).  With one degree of freedom the steps are decided
+together over *stretches* (:meth:`Search.stretch_roots`): where the walk is a graph over the
+chord of a run of steps, the path is the section of the joints by the planes normal to that
+chord, and one all_roots (cells halved where g needs it) decides the same zeros as a cell of
+degree 12 on every step, at a fraction of the evaluations.  An equilibrium beyond half a turn
+from every start can still be missed (said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
@@ -38,6 +43,7 @@ EVERY = 5              # every fifth point of a path starts a Newton iteration t
 MAX_WALKED = 8         # equilibria whose own paths are followed too
 DEG = 12                # the degree of g's interpolant on one step (all_roots' starting cell)
 BUDGET = 64            # cells per step before the rest of it is left undecided (a start at each)
+STRETCH_COS = 0.9      # one degree of freedom: a stretch's tangents within 26° of its chord
 
 
 class Search:
@@ -47,6 +53,7 @@ class Search:
         self.L = assembly.length_scale(q0, system)
         self.angles = np.array([nm.startswith("angle.") for nm in system.names])
         self.scale = np.where(self.angles, 1.0, self.L)
+        self.dof = system.n - assembly.rank(system.jac(q0)) if system.m else system.n
         f = self.forces(q0)
         self.F0 = max(float(np.max(np.abs(f), initial=0.0)), float(np.max(np.abs(system.grav), initial=0.0)), 1e-300)
 
@@ -129,7 +136,7 @@ class Search:
             q, t = q0.copy(), self._tangent(q0, sign * t0)
             if t is None:
                 continue
-            steps = []
+            steps, tans = [], [t]
             for k in range(int(REACH / STEP)):
                 q_new = self._onto(q + STEP * t)
                 if q_new is None:
@@ -138,13 +145,104 @@ class Search:
                 if t_new is None or not self.same_sides(q, q_new):
                     break
                 steps.append((q, q_new))
+                tans.append(t_new)
                 q, t = q_new, t_new
-            known = self.first_cells(steps)
-            for k, (qa, qb) in enumerate(steps):
-                out += self.step_roots(qa, qb, known[k])
-                if k % EVERY == EVERY - 1:    # a start on the path itself: many degrees of freedom
-                    out.append(qb)
+            out += self.walk_roots(steps, tans)
+            out += [qb for k, (_qa, qb) in enumerate(steps) if k % EVERY == EVERY - 1]   # starts on the path itself
         return [x for x in out if x is not None]
+
+    def walk_roots(self, steps, tans) -> list:
+        """The roots and touches of the force along one walk: with one degree of freedom over
+        stretches of many steps at once (:meth:`stretch_roots`), else step by step."""
+        out, i, single = [], 0, []
+        pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
+        while i < len(steps):
+            j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
+            got = self.stretch_roots(pts[i:j + 1]) if j > i + 1 else None
+            if got is None:
+                single += range(i, j)
+            else:
+                out += got
+            i = j
+        known = self.first_cells([steps[k] for k in single])      # the steps decided one by one: stacked
+        for k, kn in zip(single, known):
+            out += self.step_roots(*steps[k], kn)
+        return out
+
+    def stretch_end(self, pts, tans, i: int) -> int:
+        """The last walk point j such that the path from point i to j is a graph over the chord
+        d = q_j − q_i: every walk point's tangent within 26° of d (STRETCH_COS, the scaled
+        metric), each step advancing along d — the section by the planes normal to d then meets
+        it once (the closer to straight, the fewer cells all_roots needs)."""
+        j = len(pts) - 1
+        while j > i + 1:
+            d = (pts[j] - pts[i]) / self.scale
+            d = d / max(float(np.linalg.norm(d)), 1e-300)
+            ok = all(float(tans[k] / self.scale @ d) >= STRETCH_COS for k in range(i, j + 1))
+            if ok:
+                return j
+            j = i + 1 + (j - i - 1) // 2
+        return i + 1
+
+    def stretch_roots(self, pts) -> list | None:
+        """With one degree of freedom, the roots and touches of the force along the path over a
+        stretch of walk points q_0 … q_N (a graph over d = q_N − q_0, :meth:`stretch_end`): the
+        path p(τ) is the point of the joints on the plane w·(p − q_0) = τ w·d (w = d in the scaled
+        metric), τ in [0, 1], and g(τ) = t·f(p(τ)) as on a step (t along d, projected on the
+        joints' tangent) — the same function of the configuration as step by step, one all_roots
+        (cells halved where not resolved) over the whole stretch instead of a cell of degree 12
+        on each step.  None when a plane's point cannot be found or a part is not resolved
+        (all_roots' ``bad``: the steps decide then, each with its own cells)."""
+        P = np.array(pts)
+        d = P[-1] - P[0]
+        w = d / self.scale ** 2
+        taus = (P - P[0]) @ w / float(w @ d)
+        if not np.all(np.diff(taus) > 0):
+            return None
+
+        def section(T):
+            T = np.atleast_1d(np.asarray(T, dtype=float))
+            return self.on_planes(np.column_stack([np.interp(T, taus, P[:, c]) for c in range(self.n)]), T, P[0], d, w)
+
+        def g(T):
+            Q, ok = section(T)
+            return self.forces_along(Q, d, ok)
+
+        floor = 1e-10 * self.F0 * max(1.0, self.L)
+        roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET * len(pts))
+        if bad:                         # a plane's point not found, or not resolved: step by step
+            return None
+        xs = roots + touches
+        if not xs:
+            return []
+        Q, ok = section(np.array(xs))
+        return [Q[k].copy() if ok[k] else self._onto(P[0] + x * d) for k, x in enumerate(xs)]
+
+    def on_planes(self, Q, T, q0, d, w):
+        """Newton from Q (k, n) on the joints' rows and the plane w·(p − q0) = τ w·d of each row's
+        τ (stacked); (the points, converged or not)."""
+        s = self.s
+        Q = np.array(Q, dtype=float)
+        td = s.at_times(np.zeros(len(Q)))
+        wd = float(w @ d)
+        act = np.arange(len(Q))
+        for _ in range(30):
+            X = s.stack(Q[act])
+            F = np.concatenate([s.phi_many(X, [x[act] for x in td]),
+                                (((Q[act] - q0) @ w - T[act] * wd) / float(np.linalg.norm(w)))[:, None]], axis=1)
+            done = np.max(np.abs(F), axis=1) <= 1e-13 * self.L
+            act, F = act[~done], F[~done]
+            if not act.size:
+                break
+            A = np.concatenate([s.jac_many(s.stack(Q[act])),
+                                np.broadcast_to(w / float(np.linalg.norm(w)), (act.size, 1, self.n))], axis=1)
+            try:
+                Q[act] -= np.linalg.solve(A, F[:, :, None])[:, :, 0]
+            except np.linalg.LinAlgError:
+                break
+        ok = np.ones(len(Q), dtype=bool)
+        ok[act] = False
+        return Q, ok & np.all(np.isfinite(Q), axis=1)
 
     def first_cells(self, steps) -> list:
         """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step and at
@@ -154,7 +252,7 @@ class Search:
         to least squares where needed)."""
         if not steps:
             return []
-        taus = np.concatenate([0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1), [0.0, 1.0]])
+        taus = np.concatenate([NODES, [0.0, 1.0]])
         Q = np.concatenate([qa + taus[:, None] * (qb - qa) for qa, qb in steps])
         D = np.repeat(np.array([qb - qa for qa, qb in steps]), len(taus), axis=0)
         try:
@@ -194,6 +292,8 @@ class Search:
             return out
 
         floor = 1e-10 * self.F0 * max(1.0, self.L)
+        if away_from_zero([known.get(x, math.nan) for x in NODES.tolist()], floor):
+            return []
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
         return [self._onto(qa + x * d) for x in roots + touches + bad]
 
@@ -218,6 +318,13 @@ class Search:
                 Js = s.jac_many(s.stack(Q[act])) * sc
                 Q[act] -= (np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), ph[:, :, None]))[:, :, 0] * sc
             ok[act] = False
+        return self.forces_along(Q, d, ok)
+
+    def forces_along(self, Q, d, ok) -> np.ndarray:
+        """t·f at the points Q of the joints (rows), t the direction d (one for all, or one a row)
+        projected on the joints' tangent there (NaN where not ``ok`` or the projection vanishes)."""
+        s, sc = self.s, self.scale
+        if s.m:
             Js = s.jac_many(s.stack(Q)) * sc
             ts = np.broadcast_to(np.asarray(d) / sc, Q.shape)[:, :, None]
             T = (ts - np.swapaxes(Js, 1, 2) @ np.linalg.solve(Js @ np.swapaxes(Js, 1, 2), Js @ ts))[:, :, 0]
@@ -229,6 +336,28 @@ class Search:
         for k in np.nonzero(ok)[0]:
             out[k] = float((T[k] / nrm[k] * sc) @ self.forces(Q[k]))
         return out
+
+
+NODES = 0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1)    # all_roots' first cell [0, 1]
+#: (c = COEF @ g(NODES): the Chebyshev coefficients of g's interpolant on [0, 1], all_roots' own)
+COEF = np.polynomial.chebyshev.chebvander(2 * NODES - 1, DEG).T * np.r_[1.0, np.full(DEG, 2.0)][:, None] / (DEG + 1)
+
+
+def away_from_zero(ys, floor: float) -> bool:
+    """True when g, known at the DEG + 1 NODES of a step, has no root and no touch on it, decided
+    from its interpolant p = Σ c_k T_k alone: p resolved (all_roots' own test: the last three
+    coefficients at the rounding of g, or below ``floor``) and |p| ≥ |c₀| − Σ_{k≥1} |c_k| (|T_k| ≤ 1)
+    more than four times that resolution — then g keeps p's sign on the whole step and is nowhere
+    within its rounding of 0: all_roots, which decides the same interpolant by g's signs at p's
+    critical points, would find nothing there (its critical points and their values not needed)."""
+    y = np.asarray(ys, dtype=float)
+    if not np.all(np.isfinite(y)):
+        return False
+    c = COEF @ y
+    tol = max(1e-13 * float(np.max(np.abs(c))), 16 * EPS * float(np.max(np.abs(y))), floor)
+    if float(np.max(np.abs(c[-3:]))) > tol:
+        return False
+    return abs(float(c[0])) - float(np.sum(np.abs(c[1:]))) > 4 * tol
 
 
 def _row_solve(J, r) -> np.ndarray:
@@ -308,8 +437,13 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
     found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
     dropped: list[str] = []
     walked = 0
+    tried: set[bytes] = set()           # a start already run (the same doubles: the same result)
     while starts:
-        got = S.rest_from(starts.pop(0))
+        start = starts.pop(0)
+        if (key := np.asarray(start, dtype=float).tobytes()) in tried:
+            continue
+        tried.add(key)
+        got = S.rest_from(start)
         if got is None:
             continue
         q, lam = got
