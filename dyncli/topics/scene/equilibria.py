@@ -154,7 +154,8 @@ class Search:
     def walk_roots(self, steps, tans) -> list:
         """The roots and touches of the force along one walk: with one degree of freedom over
         stretches of many steps at once (:meth:`stretch_roots`), else step by step."""
-        out, i, single = [], 0, []
+        out: list = []
+        i, single = 0, list[int]()
         pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
         while i < len(steps):
             j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
@@ -166,7 +167,8 @@ class Search:
             i = j
         known = self.first_cells([steps[k] for k in single])      # the steps decided one by one: stacked
         for k, kn in zip(single, known):
-            out += self.step_roots(*steps[k], kn)
+            qa, qb = steps[k]
+            out += self.step_roots(qa, qb, kn)
         return out
 
     def stretch_end(self, pts, tans, i: int) -> int:
