@@ -210,6 +210,75 @@ def cart_pendulum_script(P, at, t_end, rtol, atol):
     return {"cart": cart, "bob": bob}
 
 
+# --- the same scenes in the engine's own formulation: maximal coordinates, one KKT solve per call ----
+# (what "a script of the same equations" is when the equations are the scene's: every point's own
+# coordinates, the joints' rows and their multipliers, numpy's solve of [[M, Jᵀ], [J, 0]] per call)
+
+def double_pendulum_kkt(P, at, t_end, rtol, atol):
+    """A and B's own coordinates; rows |A|² = L1², |B − A|² = L2² (halved); J̇v from the rows."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    g, m1, m2, L1, L2 = 9.81, P["m1"], P["m2"], P["L1"], P["L2"]
+    K = np.zeros((6, 6))
+    K[:4, :4] = np.diag([m1, m1, m2, m2])
+    rhs_f = np.array([0.0, -m1 * g, 0.0, -m2 * g, 0.0, 0.0])
+
+    def rhs(t, y):
+        xa, ya, xb, yb, ua, va, ub, vb = y
+        dx, dy, du, dv = xb - xa, yb - ya, ub - ua, vb - va
+        J = [[xa, ya, 0.0, 0.0], [-dx, -dy, dx, dy]]
+        K[4, :4], K[5, :4] = J
+        K[:4, 4], K[:4, 5] = J
+        rhs_f[4], rhs_f[5] = -(ua * ua + va * va), -(du * du + dv * dv)
+        acc = np.linalg.solve(K, rhs_f)
+        return [ua, va, ub, vb, acc[0], acc[1], acc[2], acc[3]]
+
+    def find(t, y):
+        return y[0]
+
+    p1, p2 = P["p1"], P["p2"]
+    xa, ya = L1 * math.sin(p1), -L1 * math.cos(p1)
+    y0 = [xa, ya, xa + L2 * math.sin(p2), ya - L2 * math.cos(p2), 0.0, 0.0, 0.0, 0.0]
+    sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol, t_eval=at, events=[find])
+    return {"A": sol.y[0:2].T.tolist(), "B": sol.y[2:4].T.tolist()}
+
+
+def cart_pendulum_kkt(P, at, t_end, rtol, atol):
+    """The cart's and the bob's own coordinates; rows: the cart on its track (y = 1), the link
+    |bob − hook|² = l² (halved); the spring's force on the cart."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    g, M, m, l, k = 9.81, P["M"], P["m"], P["l"], P["k"]
+    L0, xw, hy = P.get("L0", 0.8), P.get("xw", -1.0), -0.1
+    K = np.zeros((6, 6))
+    K[:4, :4] = np.diag([M, M, m, m])
+    K[4, 1] = K[1, 4] = 1.0
+    f = np.zeros(6)
+
+    def rhs(t, y):
+        xc, yc, xb, yb, uc, vc, ub, vb = y
+        dx, dy, du, dv = xb - xc, yb - (yc + hy), ub - uc, vb - vc
+        K[5, :4] = K[:4, 5] = [-dx, -dy, dx, dy]
+        f[0], f[1], f[3] = -k * (xc - xw - L0), -M * g, -m * g
+        f[5] = -(du * du + dv * dv)
+        acc = np.linalg.solve(K, f)
+        return [uc, vc, ub, vb, acc[0], acc[1], acc[2], acc[3]]
+
+    def find(t, y):
+        return y[4]
+    find.direction = 1
+
+    p0 = P["p0"]
+    y0 = [0.0, 1.0, l * math.sin(p0), 1.0 + hy - l * math.cos(p0), 0.0, 0.0, 0.0, 0.0]
+    sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol, t_eval=at, events=[find])
+    return {"cart": sol.y[0:2].T.tolist(), "bob": sol.y[2:4].T.tolist()}
+
+
+KKT = {"double-pendulum.yaml": double_pendulum_kkt, "cart-pendulum.yaml": cart_pendulum_kkt}
+
+
 SCRIPTS = {   # file -> (script, defaults of its params: the gallery's values, tests/topics/scene)
     "double-pendulum.yaml": (double_pendulum_script, {"m1": 1, "m2": 2, "L1": 1, "L2": 0.7,
                                                       "p1": math.pi / 3, "p2": math.pi / 9}),
@@ -409,7 +478,26 @@ def warm(rtols, repeats: int) -> list[Path]:
             flag = "  > goal" if t_d / t_s > WARM_GOAL else ""
             print(f"   {path.stem:<18} {rtol:6.0e} {t_d * 1e3:8.2f} {e:8.1e} | {r_s:10.1e} {t_s * 1e3:7.2f} "
                   f"{e_s:8.1e} | {t_d / t_s:5.2f}{flag}")
+            if name in KKT:
+                kkt_row(KKT[name], P, at, t_end, ref, e, t_d, repeats)
     return used
+
+
+def kkt_row(kkt, P, at, t_end, ref, e: float, t_d: float, repeats: int) -> None:
+    """The same comparison against the scene's own equations written as a script (maximal
+    coordinates, numpy's KKT solve per call: :data:`KKT`) at equal error."""
+    best = None
+    for r in reversed(GRID):
+        es = error(kkt(P, at, t_end, r, r * 1e-3), ref, {b: [0.0, 0.0] for b in ref})
+        if es > e:
+            break
+        best = (r, es)
+    if best is None:
+        print(f"   {'  same equations':<18} {'':>6} {'':>8} {'':>8} | the KKT script never reaches this error")
+        return
+    (t_k,) = interleaved([lambda: kkt(P, at, t_end, best[0], best[0] * 1e-3)], repeats)
+    print(f"   {'  same equations':<18} {'':>6} {'':>8} {'':>8} | {best[0]:10.1e} {t_k * 1e3:7.2f} {best[1]:8.1e} | "
+          f"{t_d / t_k:5.2f}  (a KKT script: maximal coordinates, numpy solve per call)")
 
 
 def profile(path: Path, rtol: float = 1e-10, top: int = 10) -> None:
