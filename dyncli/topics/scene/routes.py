@@ -647,6 +647,52 @@ def _affine_watches(s, q, v, t) -> list[bool]:
     return out + [False for ld in s.loads if ld.kind == "spring" and ld.one_sided]
 
 
+def _turning_gaps(s, p) -> dict:
+    """Per watched quantity (motion.watches' order) that is the gap of a released contact whose
+    point turns with its body, over a plane line, on a piece of constant accelerations without
+    angular acceleration of that body (``p.quad``: a free rigid body under gravity): its index ->
+    :func:`_gap_forms`."""
+    from .contacts import Contact
+
+    t0, q0, v0, acc = p.quad
+    lam = s.solve(q0, v0, t0)[1]
+    out, j = {}, 0
+    for i, e in enumerate(s.elements):
+        k = len(e.watch(s.lam_of(lam, i), q0, v0, t0))
+        if type(e) is Contact and e.mode == "off" and e.P.turns_with_body and acc[e.P.body.index[2]] == 0.0:
+            out[j] = _gap_forms(e, p.quad)
+        j += k
+    return out
+
+
+def _gap_forms(e, quad) -> tuple:
+    """(the gap of the contact ``e``'s point over its line as a crossing.Sinusoid, its place along
+    the line from the line's origin (None for a line without ends), the line's length, the
+    forms' error over [a, b] beyond a reading's: the arm's through its angle's rounding and the
+    terms' of the quadratic) over the piece of constant accelerations ``quad``."""
+    t0, q0, v0, acc = quad
+    i1, i2, ia = e.P.body.index
+    p1, p2 = e.P.p
+    sf = e.surface
+
+    def form(w1: float, w2: float) -> crossing.Sinusoid:
+        o = w1 * sf.origin[0] + w2 * sf.origin[1]
+        return crossing.Sinusoid(t0, w1 * float(q0[i1]) + w2 * float(q0[i2]) - o,
+                                 w1 * float(v0[i1]) + w2 * float(v0[i2]),
+                                 0.5 * (w1 * float(acc[i1]) + w2 * float(acc[i2])),
+                                 w1 * p1 + w2 * p2, w2 * p1 - w1 * p2, float(q0[ia]), float(v0[ia]))
+
+    arm = math.hypot(p1, p2)
+    th0, w = abs(float(q0[ia])), abs(float(v0[ia]))
+    vmax, amax = max(abs(float(v0[i1])), abs(float(v0[i2]))), max(abs(float(acc[i1])), abs(float(acc[i2])))
+
+    def err(a: float, b: float) -> float:
+        tau = max(abs(a - t0), abs(b - t0))
+        return 16 * EPS * (arm * (1.0 + th0 + w * tau) + vmax * tau + amax * tau * tau)
+
+    return form(*sf.n), (form(*sf.d) if sf.length is not None else None), sf.length, err
+
+
 def _piece_event(s, p, quadratic: bool = False):
     """The first event on one exact piece (closed form, quadrature, or held at rest under loads
     that change in time): each watched quantity's first crossing (crossing.first_crossing, by
@@ -706,6 +752,7 @@ def _piece_event(s, p, quadratic: bool = False):
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
     affine = _affine_watches(s, q, v, p.t_a) if quadratic and p.route == "closed-form" else [False] * len(at_a)
+    turning = _turning_gaps(s, p) if quadratic and p.route == "closed-form" else {}
     L = tol["impact"] / (64 * EPS)              # the lengths' scale of their rounding
 
     def reading(a: float, b: float) -> float:
@@ -721,6 +768,10 @@ def _piece_event(s, p, quadratic: bool = False):
             got: Any = crossing.UNDECIDED
             if affine[j]:
                 got = crossing.quadratic_crossing(lambda ts, j=j: column(j, ts), lo, end, tol[what], reading)
+            elif j in turning:
+                G, S, length, err = turning[j]
+                got = crossing.sinusoid_crossing(G, S, length, lambda ts, j=j: column(j, ts), lo, end, tol[what],
+                                                 2 * reading(lo, end) + err(lo, end))
             if got == crossing.UNDECIDED:
                 got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, end, what, tol[what],
                                               start=lo == p.t_a, cells=16 if held else 1)
