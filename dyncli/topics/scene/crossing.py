@@ -163,9 +163,10 @@ class Sinusoid:
     def inflections(self, a: float, b: float, most: int = 4096) -> list[float] | None:
         """The zeros of f'' inside (a, b), sorted (None: more than ``most``)."""
         amp = math.hypot(self.P, self.Q)
-        if self.w == 0.0 or amp == 0.0:
-            return []                               # f'' = 2 c2: one sign
-        kappa = 2.0 * self.c2 / (self.w * self.w * amp)
+        scale = self.w * self.w * amp
+        if not scale > 0.0:
+            return []                               # f'' = 2 c2 (ω² |p| below the doubles): one sign
+        kappa = 2.0 * self.c2 / scale
         if not abs(kappa) < 1.0:
             return []                               # f'' of one sign (touching 0 at most)
         psi, alpha = math.atan2(self.Q, self.P), math.acos(kappa)

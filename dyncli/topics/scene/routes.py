@@ -770,8 +770,11 @@ def _piece_event(s, p, quadratic: bool = False):
                 got = crossing.quadratic_crossing(lambda ts, j=j: column(j, ts), lo, end, tol[what], reading)
             elif j in turning:
                 G, S, length, err = turning[j]
-                got = crossing.sinusoid_crossing(G, S, length, lambda ts, j=j: column(j, ts), lo, end, tol[what],
-                                                 2 * reading(lo, end) + err(lo, end))
+                try:
+                    got = crossing.sinusoid_crossing(G, S, length, lambda ts, j=j: column(j, ts), lo, end,
+                                                     tol[what], 2 * reading(lo, end) + err(lo, end))
+                except (ArithmeticError, ValueError):   # the form beyond the doubles: searched
+                    got = crossing.UNDECIDED
             if got == crossing.UNDECIDED:
                 got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, end, what, tol[what],
                                               start=lo == p.t_a, cells=16 if held else 1)
