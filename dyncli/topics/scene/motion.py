@@ -15,6 +15,7 @@
 from __future__ import annotations
 
 import bisect
+import itertools
 import math
 from typing import Any
 from collections.abc import Callable
@@ -156,8 +157,7 @@ class Trajectory:
         for (stack, modes), parts in stacked.items():
             set_modes(self.system, modes)
             sel = np.concatenate([sel for sel, _ in parts])
-            fns = [p.fn for part, p in parts for _ in part]
-            out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
+            out[sel] = stack(*_gathered(ts, parts))
         return out
 
     def coordinates(self, ts) -> np.ndarray:
@@ -199,8 +199,7 @@ class Trajectory:
         for (coords, modes), parts in stacked.items():
             set_modes(self.system, modes)
             sel = np.concatenate([sel for sel, _ in parts])
-            fns = [p.fn for part, p in parts for _ in part]
-            out[:, sel] = coords(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
+            out[:, sel] = coords(*_gathered(ts, parts))
         return out
 
     def _stacked_rates(self, dense, rows, ts) -> np.ndarray:
@@ -323,6 +322,13 @@ class _Stacked:
 
 def modes_of(system) -> tuple:
     return tuple(e.phase() for e in system.elements)
+
+
+def _gathered(ts, parts) -> tuple[list, np.ndarray]:
+    """(the function of each time's piece, the times each clipped to its piece) for the pieces
+    evaluated together, ``parts`` [(the indices into ts, the piece)]: in the order of the parts."""
+    fns = list(itertools.chain.from_iterable([p.fn] * len(part) for part, p in parts))
+    return fns, np.concatenate([np.minimum(np.maximum(ts[part], p.t_a), p.t_b) for part, p in parts])
 
 
 def set_modes(system, modes) -> None:

@@ -377,16 +377,10 @@ def _kin_rates(pieces, ts):
 
 def _pieces_of(pieces) -> tuple[list, np.ndarray]:
     """(the distinct pieces in order of first appearance, the index of each entry's among them)."""
-    first: dict[int, int] = {}
-    uniq: list = []
-    which = np.empty(len(pieces), dtype=np.intp)
-    for i, p in enumerate(pieces):
-        j = first.get(id(p))
-        if j is None:
-            j = first[id(p)] = len(uniq)
-            uniq.append(p)
-        which[i] = j
-    return uniq, which
+    ids = list(map(id, pieces))
+    by_id = dict(zip(ids, pieces))              # (keeps the order of first appearance)
+    slot = {k: j for j, k in enumerate(by_id)}
+    return list(by_id.values()), np.fromiter(map(slot.__getitem__, ids), dtype=np.intp, count=len(ids))
 
 
 def _near_toggle(pieces, Js, limit: float) -> np.ndarray:
