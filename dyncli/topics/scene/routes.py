@@ -716,7 +716,8 @@ def _piece_event(s, p, quadratic: bool = False):
                     f"the forces of the joints were followed to t = {missing[0]:.6g} s only within the CPU budget of "
                     f"{limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise accuracy.max_cpu")
             states = [p.fn(t)[:2] + (t,) for t in missing]
-            lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 else [None] * len(states)
+            lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 and s.watching \
+                else [None] * len(states)
             for (q, v, t), lam in zip(states, lams):
                 cache[t] = [g for _j, _w, g in motion.watches(s, q, v, t, lam)]
         return np.array([cache[t][j] for t in ts])
