@@ -418,29 +418,57 @@ def _conds_above(Js, limit: float) -> list[int]:
     return [int(i) for i, c in zip(maybe, np.linalg.cond(Js[maybe]) if maybe.size else ()) if c > limit]
 
 
+#: the most states of one stacked evaluation of the kinematics route: its arrays (the Jacobians,
+#: k × m × n doubles) then stay at a few hundred kB, reused by the C allocator from call to call,
+#: where the thousands of states of a quadrature or a search at once would fault in megabytes of
+#: fresh pages per call (four-bar: ~3,800 page faults per solve without it, ~250 with it); every
+#: operation is state by state (the same numbers)
+KIN_CHUNK = 256
+
+
+def _chunks(pieces, ts) -> list:
+    """[(pieces, ts)] in slices of at most KIN_CHUNK states."""
+    if len(ts) <= KIN_CHUNK:
+        return [(pieces, ts)]
+    return [(pieces[i:i + KIN_CHUNK], ts[i:i + KIN_CHUNK]) for i in range(0, len(ts), KIN_CHUNK)]
+
+
 def _kin_states(pieces, ts) -> list:
     """(q, q̇, 0) of ``pieces[i]`` at ``ts[i]`` (Piece.states of the kinematics route: the
     states a search will read, made together; the numbers of each piece's own call)."""
-    X, _Js, V, _td = _kin_rates(pieces, ts)
-    return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
+    out = []
+    for ps, tt in _chunks(pieces, ts):
+        X, _Js, V, _td = _kin_rates(ps, tt)
+        out += [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(tt))]
+    return out
 
 
 def _kin_coordinates(pieces, ts) -> np.ndarray:
     """(q, q̇) of ``pieces[i]`` at ``ts[i]``, (2n, len(ts)) (Piece.coords of the kinematics route:
     the numbers of :func:`_kin_states`)."""
-    X, _Js, V, _td = _kin_rates(pieces, ts)
-    return np.concatenate([X.Q.T, V.T])
+    parts = []
+    for ps, tt in _chunks(pieces, ts):
+        X, _Js, V, _td = _kin_rates(ps, tt)
+        parts.append(np.concatenate([X.Q.T, V.T]))
+    return parts[0] if len(parts) == 1 else np.concatenate(parts, axis=1)
 
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
     """q̇ of ``pieces[i]`` at ``ts[i]``, (len(ts), n) (Piece.stack of the kinematics route)."""
-    return _kin_rates(pieces, ts)[2]
+    parts = [_kin_rates(ps, tt)[2] for ps, tt in _chunks(pieces, ts)]
+    return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
 def _kin_powers(pieces, ts) -> np.ndarray:
     """The power of the drives and the loads (outcome's W_nc) of ``pieces[i]`` at ``ts[i]``: q̈
     from J q̈ = γ, the multipliers from Jᵀ λ = M q̈ − f, each stacked (the numbers of one
     state at a time, outcome._kin_forces)."""
+    parts = [_kin_powers_of(ps, tt) for ps, tt in _chunks(pieces, ts)]
+    return parts[0] if len(parts) == 1 else np.concatenate(parts)
+
+
+def _kin_powers_of(pieces, ts) -> np.ndarray:
+    """:func:`_kin_powers` of one slice of states."""
     s = pieces[0].s
     X, Js, V, td = _kin_rates(pieces, ts)
     A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
