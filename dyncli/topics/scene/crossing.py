@@ -13,6 +13,7 @@ step's interpolant (:func:`step_screen`) and searches the steps the screen canno
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -357,8 +358,16 @@ FIRST_WINDOW = 64.0
 #: points of the step (its ends included: the step's own two)
 SCREEN = 4
 _X = -np.cos(np.pi * np.arange(SCREEN + 1) / SCREEN)
-_TO_COEFFICIENTS = np.linalg.inv(np.polynomial.chebyshev.chebvander(_X, SCREEN))
-_FINE = np.polynomial.chebyshev.chebvander(np.linspace(-1.0, 1.0, 65), SCREEN)
+
+
+@functools.cache
+def _screen_matrices() -> tuple[np.ndarray, np.ndarray]:
+    """(values at the Lobatto points -> Chebyshev coefficients, coefficients -> values at 65
+    points): made on the first screened step (numpy.polynomial is not imported by a scene that
+    has none)."""
+    from numpy.polynomial import chebyshev
+
+    return np.linalg.inv(chebyshev.chebvander(_X, SCREEN)), chebyshev.chebvander(np.linspace(-1.0, 1.0, 65), SCREEN)
 
 
 def screen_times(a: float, b: float) -> list[float]:
@@ -373,8 +382,9 @@ def step_screen(values, tol: float) -> str:
     points and by the quantity's rounding: "clear" (p stays off 0 by more than that: no root),
     "monotone" (p changes sign once and is monotone: the one root, by Brent on the ends), else
     "search" (:func:`first_crossing`)."""
-    c = _TO_COEFFICIENTS @ np.asarray(values, dtype=float)
-    p = _FINE @ c
+    to_coefficients, fine = _screen_matrices()
+    c = to_coefficients @ np.asarray(values, dtype=float)
+    p = fine @ c
     d = np.diff(p)
     err = 2.0 * (abs(float(c[-1])) + abs(float(c[-2]))) + float(np.max(np.abs(d))) + tol
     if not float(np.min(p)) - err <= 0.0 <= float(np.max(p)) + err:

@@ -254,17 +254,18 @@ class Trajectory:
         key = (id(self.pieces), len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
         got = self._stacked
         if got is None or got.key != key:
-            from dyncli.dop853 import DenseOutput, DenseStack
-
             ps = self.pieces
             row = np.full(len(ps), -1)
             outs = []
-            for k, p in enumerate(ps):
-                if isinstance(p.batch, DenseOutput):
-                    row[k] = len(outs)
-                    outs.append(p.batch)
+            if any(p.batch is not None for p in ps):        # (dop853 is imported by a motion with steps only)
+                from dyncli.dop853 import DenseOutput
+
+                for k, p in enumerate(ps):
+                    if isinstance(p.batch, DenseOutput):
+                        row[k] = len(outs)
+                        outs.append(p.batch)
             got = self._stacked = _Stacked(key, np.array([p.t_b for p in ps]), np.array([p.t_a for p in ps]), row,
-                                           DenseStack(outs) if outs else None)
+                                           _dense_stack(outs) if outs else None)
         return got
 
     def prefetch(self, ts) -> None:
@@ -322,6 +323,13 @@ class _Stacked:
 
 def modes_of(system) -> tuple:
     return tuple(e.phase() for e in system.elements)
+
+
+def _dense_stack(outs):
+    """dop853.DenseStack of the DOP853 steps ``outs``."""
+    from dyncli.dop853 import DenseStack
+
+    return DenseStack(outs)
 
 
 def _gathered(ts, parts) -> tuple[list, np.ndarray]:
