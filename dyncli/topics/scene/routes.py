@@ -649,11 +649,34 @@ def _first_event(s, traj, k0: int, t_end: float, quadratic: bool = False):
     return t_end, q, v, None
 
 
-def _affine_watches(s, q, v, t) -> list[bool]:
-    """Per watched quantity (motion.watches' order): whether it is affine in the positions by
-    the structure of its joint — a point that does not turn with its body, or a rolling body's
-    centre, over a line without ends (its gap, "impact"), a cord whose runs are linear (a slack
-    run's gap, "taut").  Over constant accelerations such a quantity is a quadratic in t."""
+def _watchers(s, at, state) -> list:
+    """The element of each watched quantity of ``at`` (motion.watches' list at ``state`` = (q, v,
+    t): the elements' entries in their order, each named by its joint, then the one-sided
+    springs'), None for a spring's: read from the names (no solve) where the elements that watch
+    are named apart, else from each element's own entries (one solve)."""
+    els = s.elements
+    names = [e.name for e in els]
+    out = []
+    if all(names.count(j) == 1 for j in {j for j, _w, _g in at if j}):
+        i = 0
+        for joint, _what, _g in at:
+            while i < len(els) and els[i].name != joint:
+                i += 1
+            out.append(els[i] if joint and i < len(els) else None)
+        return out
+    q, v, t = state
+    lam = s.solve(q, v, t)[1]
+    for i, e in enumerate(els):
+        out += [e] * len(e.watch(s.lam_of(lam, i), q, v, t))
+    return out + [None] * (len(at) - len(out))
+
+
+def _affine_watches(s, at, state) -> list[bool]:
+    """Per watched quantity of ``at`` (motion.watches' list at the piece's start): whether it is
+    affine in the positions by the structure of its joint — a point that does not turn with its
+    body, or a rolling body's centre, over a line without ends (its gap, "impact"), a cord whose
+    runs are linear (a slack run's gap, "taut").  Over constant accelerations such a quantity is
+    a quadratic in t."""
     from .contacts import Contact, Rolls
     from .elements import Cord
 
@@ -664,27 +687,20 @@ def _affine_watches(s, q, v, t) -> list[bool]:
             return what == "impact" and e.surface.length is None
         return type(e) is Cord and what == "taut" and e.linear
 
-    lam = s.solve(q, v, t)[1]
-    out = [affine(e, what) for i, e in enumerate(s.elements) for what, _g in e.watch(s.lam_of(lam, i), q, v, t)]
-    return out + [False for ld in s.loads if ld.kind == "spring" and ld.one_sided]
+    return [e is not None and affine(e, what) for e, (_j, what, _g) in zip(_watchers(s, at, state), at)]
 
 
-def _turning_gaps(s, p) -> dict:
-    """Per watched quantity (motion.watches' order) that is the gap of a released contact whose
-    point turns with its body, over a plane line, on a piece of constant accelerations without
-    angular acceleration of that body (``p.quad``: a free rigid body under gravity): its index ->
-    :func:`_gap_forms`."""
+def _turning_gaps(s, p, at, state) -> dict:
+    """Per watched quantity of ``at`` (motion.watches' list at the piece's start) that is the gap
+    of a released contact whose point turns with its body, over a plane line, on a piece of
+    constant accelerations without angular acceleration of that body (``p.quad``: a free rigid
+    body under gravity): its index -> :func:`_gap_forms`."""
     from .contacts import Contact
 
-    t0, q0, v0, acc = p.quad
-    lam = s.solve(q0, v0, t0)[1]
-    out, j = {}, 0
-    for i, e in enumerate(s.elements):
-        k = len(e.watch(s.lam_of(lam, i), q0, v0, t0))
-        if type(e) is Contact and e.mode == "off" and e.P.turns_with_body and acc[e.P.body.index[2]] == 0.0:
-            out[j] = _gap_forms(e, p.quad)
-        j += k
-    return out
+    acc = p.quad[3]
+    return {j: _gap_forms(e, p.quad) for j, (e, (_j, what, _g)) in enumerate(zip(_watchers(s, at, state), at))
+            if type(e) is Contact and what == "impact" and e.mode == "off" and e.P.turns_with_body
+            and acc[e.P.body.index[2]] == 0.0}
 
 
 def _gap_forms(e, quad) -> tuple:
@@ -774,8 +790,9 @@ def _piece_event(s, p, quadratic: bool = False):
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
-    affine = _affine_watches(s, q, v, p.t_a) if quadratic and p.route == "closed-form" else [False] * len(at_a)
-    turning = _turning_gaps(s, p) if quadratic and p.route == "closed-form" else {}
+    formed = quadratic and p.route == "closed-form"
+    affine = _affine_watches(s, at_a, (q, v, p.t_a)) if formed else [False] * len(at_a)
+    turning = _turning_gaps(s, p, at_a, (q, v, p.t_a)) if formed else {}
     L = tol["impact"] / (64 * EPS)              # the lengths' scale of their rounding
 
     def reading(a: float, b: float) -> float:

@@ -173,7 +173,7 @@ def test_a_spinning_rod_strikes_the_ledge_at_the_hand_root(monkeypatch):
     # the search the route used before agrees to Brent's tolerance
     from dyncli.topics.scene import routes
 
-    monkeypatch.setattr(routes, "_turning_gaps", lambda s, p: {})
+    monkeypatch.setattr(routes, "_turning_gaps", lambda s, p, at, state: {})
     old = solve_one_text(SPIN.format(w=1, t_end=0.6))["results"]["events"]
     assert abs(old[0]["t"] - ev[0]["t"]) <= 8 * EPS * want
 
@@ -188,5 +188,5 @@ def test_a_spinning_rod_end_passing_beside_the_ledge_strikes_nothing(monkeypatch
     assert rec["results"]["events"] == []
     from dyncli.topics.scene import routes
 
-    monkeypatch.setattr(routes, "_turning_gaps", lambda s, p: {})
+    monkeypatch.setattr(routes, "_turning_gaps", lambda s, p, at, state: {})
     assert solve_one_text(SPIN.format(w=3, t_end=1))["results"]["events"] == []
