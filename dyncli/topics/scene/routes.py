@@ -750,7 +750,14 @@ def _piece_event(s, p, quadratic: bool = False):
     from dyncli import cputime
 
     cache: dict[float, list[float]] = {}
+    states_at: dict[float, tuple] = {}          # p.fn's states, by time (a reading's and a search's)
     stacked = p.route == "statics" or s.constant_matrix()
+
+    def state(t: float) -> tuple:
+        got = states_at.get(t)
+        if got is None:
+            got = states_at[t] = p.fn(t)
+        return got
 
     def column(j: int, ts) -> np.ndarray:
         ts = [float(t) for t in np.atleast_1d(ts)]
@@ -759,15 +766,15 @@ def _piece_event(s, p, quadratic: bool = False):
                 raise NumericalError(
                     f"the forces of the joints were followed to t = {missing[0]:.6g} s only within the CPU budget of "
                     f"{limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise accuracy.max_cpu")
-            states = [p.fn(t)[:2] + (t,) for t in missing]
+            states = [state(t)[:2] + (t,) for t in missing]
             lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 and s.watching \
                 else [None] * len(states)
             for (q, v, t), lam in zip(states, lams):
                 cache[t] = [g for _j, _w, g in motion.watches(s, q, v, t, lam)]
         return np.array([cache[t][j] for t in ts])
 
-    q, v, _ = p.fn(p.t_a)
-    q_b, v_b, _ = p.fn(p.t_b)
+    q, v, _ = state(p.t_a)
+    q_b, v_b, _ = state(p.t_b)
     tol = crossing.rounding(s, q, v, p.t_a, v_b)
     at_a = motion.watches(s, q, v, p.t_a)
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
@@ -797,7 +804,7 @@ def _piece_event(s, p, quadratic: bool = False):
 
     def reading(a: float, b: float) -> float:
         """The rounding of one reading of an affine gap over [a, b]: of the largest coordinate."""
-        return 4 * EPS * max([L] + [float(np.max(np.abs(p.fn(t)[0]), initial=0.0)) for t in (a, 0.5 * (a + b), b)])
+        return 4 * EPS * max([L] + [abs(x) for t in (a, 0.5 * (a + b), b) for x in state(t)[0].tolist()])
 
     lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
     while lo < p.t_b:                           # window by window, every watched quantity in each
