@@ -225,7 +225,7 @@ def sinusoid_crossing(G: Sinusoid, S: Sinusoid | None, length: float | None, g, 
     −tol over the line's extent, located on the gap itself).  ``g`` is the watched quantity as
     the scene computes it (on arrays), ``e`` the forms' error (of a reading, rounded up).  The
     forms are first checked against ``g`` at a, b and the midpoint.  The extent is widened by
-    e (the times where the scene's own margin may be ≥ 0); over it G + tol must stay above 2e
+    2e (the times where the scene's own margin may be ≥ 0); over it G + tol must stay above 2e
     until the first monotone piece of G where G + tol goes from above 2e to below −2e, whose
     crossing and G's own root before it (G above 2e at the piece's start) are bracketed as in
     :func:`quadratic_crossing`, the bracket confirmed by readings of g (g > 0 at its start,
