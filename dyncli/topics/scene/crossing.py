@@ -172,8 +172,8 @@ class Sinusoid:
             return []                               # f'' of one sign (touching 0 at most)
         psi, alpha = math.atan2(self.Q, self.P), math.acos(kappa)
         pa, pb = sorted((self.th0 + self.w * (a - self.t0), self.th0 + self.w * (b - self.t0)))
-        if (pb - pa) / math.pi > most:
-            return None
+        if not ((pb - pa) / math.pi <= most and max(abs(pa), abs(pb)) <= 1e12):
+            return None                             # (too many turns, or angles past a turn's resolution)
         out = []
         for base in (psi + alpha, psi - alpha):
             k = math.floor((pa - base) / (2 * math.pi))

@@ -137,6 +137,10 @@ def test_the_crossing_answers_only_what_it_can_tell():
     # a start below the band
     G = Sin(0.0, -2 * tol, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     assert crossing.sinusoid_crossing(G, None, None, on_arrays(G), 0.0, 3.0, tol, e) == crossing.UNDECIDED
+    # turns beyond the doubles' resolution of an angle, or without end: not listed (searched instead)
+    assert Sin(0.0, 1.0, 0.0, -4.905, 0.5, 0.0, 0.0, 1e200).monotone(0.0, 1e-190) is None
+    assert Sin(0.0, 1.0, 0.0, -4.905, 0.5, 0.0, 0.0, float("inf")).monotone(0.0, 1.0) is None
+    assert Sin(0.0, 1.0, 0.0, -4.905, 0.5, 0.0, 0.0, 1e4).monotone(0.0, 10.0) is None     # > 4096 half-turns
     # a watched quantity that is not the form: refused, never trusted
     G = Sin(0.0, 1.0, 0.0, -4.905, 0.0, 0.5, 0.0, 7.0)
     assert crossing.sinusoid_crossing(G, None, None, lambda ts: on_arrays(G)(ts) + 1e-9, 0.0, 2.0, tol, e) \
