@@ -1,5 +1,6 @@
 """The odometer's stops decided exactly: a speed exactly 0 at a piece's end (a start from rest) is
-not searched, and the distance still matches an independent closed form / mpmath quadrature."""
+not searched, and the distance still matches an independent closed form / mpmath quadrature; the
+10-point Gauss–Legendre rule it integrates with, kept as a table, is checked against mpmath."""
 
 import math
 
@@ -37,3 +38,24 @@ def test_from_rest_closed_form_distance():
     got = odo.at([0.25, 1.0, 2.5])
     assert got == pytest.approx([0.5 * G * t * t for t in (0.25, 1.0, 2.5)], rel=1e-13)
     assert math.isfinite(got[0])
+
+
+def test_the_ten_point_rule_table_is_gauss_legendre():
+    """motion_find.LEGGAUSS_10 (the distance's rule, kept as a table so that numpy.polynomial is
+    not imported by every scene): the nodes are the doubles nearest the roots of P10 and the
+    weights 2/((1 − x²) P10'(x)²) to 8 units in the last place (mpmath, 40 digits; numpy's
+    leggauss, whose doubles the table holds, rounds its weights that far)."""
+    import mpmath as mp
+
+    from dyncli.motion_find import LEGGAUSS_10
+
+    with mp.workdps(40):
+        def P(x):
+            return mp.legendre(10, x)
+        grid = [mp.mpf(-1) + mp.mpf(2) * i / 2000 for i in range(2001)]
+        roots = [mp.findroot(P, (a, b), solver="anderson") for a, b in zip(grid, grid[1:]) if P(a) * P(b) < 0]
+        assert len(roots) == 10
+        for x, node, weight in zip(roots, *LEGGAUSS_10):
+            assert node == float(x)
+            w = 2 / ((1 - x ** 2) * mp.diff(P, x) ** 2)
+            assert abs(mp.mpf(weight) - w) <= 8 * mp.mpf(2) ** (mp.floor(mp.log(w, 2)) - 52)

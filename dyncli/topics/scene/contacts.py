@@ -150,6 +150,10 @@ class Contact(ListRows):
             return {"N": 0.0, "F": 0.0}
         return {"N": float(lam[0]), "F": self.friction(lam)}
 
+    def reads_forces(self) -> bool:
+        """Released, it watches its gap alone (no multiplier)."""
+        return self.mode != "off"
+
     def watch(self, lam, q, v, t):
         m = self.surface.ends_margin(self.P.pos(q))
         if self.mode == "off":
@@ -285,6 +289,10 @@ class Rolls(ListRows):
         N, F = float(lam[0]), self.friction(lam)
         margin = None if self.mu_s is None or self.mode != "roll" else self.mu_s * N - abs(F)
         return {"N": N, "F": F, "slip_margin": margin}
+
+    def reads_forces(self) -> bool:
+        """Off the surface, it watches its gap alone (no multiplier)."""
+        return self.mode != "off"
 
     def watch(self, lam, q, v, t):
         m = self.surface.ends_margin(self._x(q))

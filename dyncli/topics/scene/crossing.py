@@ -13,6 +13,9 @@ step's interpolant (:func:`step_screen`) and searches the steps the screen canno
 
 from __future__ import annotations
 
+import functools
+import math
+
 import numpy as np
 
 from dyncli.errors import NumericalError
@@ -135,6 +138,161 @@ def quadratic_crossing(g, a: float, b: float, tol: float, err):
     return brent(lambda t: float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
 
 
+class Sinusoid:
+    """f(t) = c0 + c1 τ + c2 τ² + P cos φ + Q sin φ with φ = θ0 + ω τ, τ = t − t0: a body point's
+    coordinate along a fixed direction over a phase of constant accelerations in which its body
+    turns at a constant rate (no angular acceleration: a free rigid body under gravity) — its
+    centre's coordinate a quadratic, its arm Q(φ) p turning uniformly.  Its critical points are
+    decided from the form, not by samples: f'' = 2 c2 − ω² |p| cos(φ − ψ) vanishes where
+    cos(φ − ψ) = 2 c2 / (ω² |p|), in closed form (two per turn at most); between two of those
+    f' is monotone, so it has at most one root there, located by Brent where its ends' signs
+    differ: between consecutive critical points f is monotone."""
+
+    def __init__(self, t0: float, c0: float, c1: float, c2: float, P: float, Q: float, th0: float, w: float):
+        self.t0, self.c0, self.c1, self.c2, self.P, self.Q, self.th0, self.w = t0, c0, c1, c2, P, Q, th0, w
+
+    def __call__(self, t: float) -> float:
+        tau = t - self.t0
+        ph = self.th0 + self.w * tau
+        return self.c0 + self.c1 * tau + self.c2 * tau * tau + self.P * math.cos(ph) + self.Q * math.sin(ph)
+
+    def rate(self, t: float) -> float:
+        tau = t - self.t0
+        ph = self.th0 + self.w * tau
+        return self.c1 + 2.0 * self.c2 * tau + self.w * (self.Q * math.cos(ph) - self.P * math.sin(ph))
+
+    def inflections(self, a: float, b: float, most: int = 4096) -> list[float] | None:
+        """The zeros of f'' inside (a, b), sorted (None: more than ``most``)."""
+        amp = math.hypot(self.P, self.Q)
+        scale = self.w * self.w * amp
+        if not scale > 0.0:
+            return []                               # f'' = 2 c2 (ω² |p| below the doubles): one sign
+        kappa = 2.0 * self.c2 / scale
+        if not abs(kappa) < 1.0:
+            return []                               # f'' of one sign (touching 0 at most)
+        psi, alpha = math.atan2(self.Q, self.P), math.acos(kappa)
+        pa, pb = sorted((self.th0 + self.w * (a - self.t0), self.th0 + self.w * (b - self.t0)))
+        if not ((pb - pa) / math.pi <= most and max(abs(pa), abs(pb)) <= 1e12):
+            return None                             # (too many turns, or angles past a turn's resolution)
+        out = []
+        for base in (psi + alpha, psi - alpha):
+            k = math.floor((pa - base) / (2 * math.pi))
+            while True:
+                ph = base + 2 * math.pi * k
+                if ph > pb:
+                    break
+                t = self.t0 + (ph - self.th0) / self.w
+                if a < t < b:
+                    out.append(t)
+                k += 1
+        return sorted(out)
+
+    def monotone(self, a: float, b: float) -> list[float] | None:
+        """[a, ..., b]: the critical points of f inside (a, b) (and the zeros of f''), between any
+        two consecutive of which f is monotone; None when there are too many to list."""
+        inf = self.inflections(a, b)
+        if inf is None:
+            return None
+        cuts = [a] + inf + [b]
+        out = [a]
+        for u, w in zip(cuts[:-1], cuts[1:]):
+            du, dw = self.rate(u), self.rate(w)
+            if du * dw < 0:                         # f' monotone on [u, w]: its one root there
+                out.append(brent(self.rate, u, w, 4 * EPS * max(abs(u), abs(w)), 4 * EPS, 200))
+            out.append(w)
+        return out
+
+    def roots(self, level: float, a: float, b: float) -> list[float] | None:
+        """The times in (a, b) where f crosses ``level`` (one per monotone piece whose ends lie
+        on either side), sorted; None when the pieces are too many to list."""
+        cuts = self.monotone(a, b)
+        if cuts is None:
+            return None
+        out = []
+        for u, w in zip(cuts[:-1], cuts[1:]):
+            fu, fw = self(u) - level, self(w) - level
+            if fu * fw < 0:
+                out.append(brent(lambda t: self(t) - level, u, w, 4 * EPS * max(abs(u), abs(w)), 4 * EPS, 200))
+        return out
+
+
+def sinusoid_crossing(G: Sinusoid, S: Sinusoid | None, length: float | None, g, a: float, b: float,
+                      tol: float, e: float):
+    """The first impact in [a, b] of a body point that turns with its body at a constant rate
+    over a line (a gap ``G`` of the form :class:`Sinusoid`; ``S``, its place along the line from
+    the line's origin, ``length`` its extent, None for none), decided from the form instead of
+    a search — the event of :func:`first_crossing` for a gap ("impact": the gap passing below
+    −tol over the line's extent, located on the gap itself).  ``g`` is the watched quantity as
+    the scene computes it (on arrays), ``e`` the forms' error (of a reading, rounded up).  The
+    forms are first checked against ``g`` at a, b and the midpoint.  The extent is widened by
+    2e (the times where the scene's own margin may be ≥ 0); over it G + tol must stay above 2e
+    until the first monotone piece of G where G + tol goes from above 2e to below −2e, whose
+    crossing and G's own root before it (G above 2e at the piece's start) are bracketed as in
+    :func:`quadratic_crossing`, the bracket confirmed by readings of g (g > 0 at its start,
+    g + tol < 0 at its end) and the root located by Brent on g itself.  Anything closer to call
+    (a graze, an entry onto the line's extent below the band, a start below it) is UNDECIDED:
+    the caller searches as before."""
+    def watch(t: float) -> float:
+        gap = G(t)
+        if S is None:
+            return gap
+        s = S(t)
+        m = min(s, length - s)
+        return gap if m >= 0 else abs(gap) - m
+
+    ts = [a, 0.5 * (a + b), b]
+    got = [float(x) for x in g(np.array(ts))]
+    if any(not abs(watch(t) - x) <= 2 * e and not (S is not None and _near_end(S, length, t, 2 * e))
+           for t, x in zip(ts, got)):
+        return UNDECIDED
+    if not got[0] + tol > 2 * e:
+        return UNDECIDED
+    # the times the scene's margin may be >= 0: the extent widened by 2e on either side
+    if S is None:
+        spans = [(a, b)]
+    else:
+        cuts = [S.roots(-2 * e, a, b), S.roots(length + 2 * e, a, b)]
+        if cuts[0] is None or cuts[1] is None:
+            return UNDECIDED
+        B = [a] + sorted(cuts[0] + cuts[1]) + [b]
+        spans = [(u, w) for u, w in zip(B[:-1], B[1:]) if -2 * e <= S(0.5 * (u + w)) <= length + 2 * e]
+    for u, w in spans:
+        if not G(u) + tol > 2 * e:                  # (entering the extent below the band)
+            return UNDECIDED
+        cuts = G.monotone(u, w)
+        if cuts is None:
+            return UNDECIDED
+        for p0, p1 in zip(cuts[:-1], cuts[1:]):
+            v1 = G(p1) + tol
+            if v1 > 2 * e:
+                continue
+            if not (v1 < -2 * e and G(p0) > 2 * e):
+                return UNDECIDED
+            u_f = brent(lambda t: G(t) + tol, p0, p1, 4 * EPS * abs(p1), 4 * EPS, 200)
+            u_g = brent(G, p0, u_f, 4 * EPS * abs(u_f), 4 * EPS, 200)
+            slope_f, slope_g = G.rate(u_f), G.rate(u_g)
+            if not (slope_f < 0 and slope_g < 0):
+                return UNDECIDED
+            x, r = max(p0, u_g - 8 * e / -slope_g), min(u_f + 8 * e / -slope_f, p1)
+            if S is not None and not all(2 * e < S(t) < length - 2 * e for t in (x, u_g, u_f, r)):
+                return UNDECIDED            # (an event at the extent's end: the search decides)
+            gx, gr = (float(v) for v in g(np.array([x, r])))
+            if not (x > a and gx > 0 and gr + tol < 0):
+                return UNDECIDED
+            r_g = min(u_g + 8 * e / -slope_g, r)
+            if float(g(np.array([r_g]))[0]) < 0:
+                r = r_g
+            return brent(lambda t: float(g(np.array([t]))[0]), x, r, 4 * EPS * abs(r), 4 * EPS, 200)
+    return None
+
+
+def _near_end(S, length, t: float, e: float) -> bool:
+    """Whether the place ``S`` at t is within e of an end of the extent (where the scene's own
+    margin and the form's may have opposite signs)."""
+    s = S(t)
+    return abs(s) <= e or abs(length - s) <= e
+
+
 def _low(c0: float, c1: float, c2: float, u: float) -> float:
     """The least value of c0 + c1 x + c2 x² over x in [0, u]."""
     m = min(c0, c0 + c1 * u + c2 * u * u)
@@ -200,8 +358,16 @@ FIRST_WINDOW = 64.0
 #: points of the step (its ends included: the step's own two)
 SCREEN = 4
 _X = -np.cos(np.pi * np.arange(SCREEN + 1) / SCREEN)
-_TO_COEFFICIENTS = np.linalg.inv(np.polynomial.chebyshev.chebvander(_X, SCREEN))
-_FINE = np.polynomial.chebyshev.chebvander(np.linspace(-1.0, 1.0, 65), SCREEN)
+
+
+@functools.cache
+def _screen_matrices() -> tuple[np.ndarray, np.ndarray]:
+    """(values at the Lobatto points -> Chebyshev coefficients, coefficients -> values at 65
+    points): made on the first screened step (numpy.polynomial is not imported by a scene that
+    has none)."""
+    from numpy.polynomial import chebyshev
+
+    return np.linalg.inv(chebyshev.chebvander(_X, SCREEN)), chebyshev.chebvander(np.linspace(-1.0, 1.0, 65), SCREEN)
 
 
 def screen_times(a: float, b: float) -> list[float]:
@@ -216,8 +382,9 @@ def step_screen(values, tol: float) -> str:
     points and by the quantity's rounding: "clear" (p stays off 0 by more than that: no root),
     "monotone" (p changes sign once and is monotone: the one root, by Brent on the ends), else
     "search" (:func:`first_crossing`)."""
-    c = _TO_COEFFICIENTS @ np.asarray(values, dtype=float)
-    p = _FINE @ c
+    to_coefficients, fine = _screen_matrices()
+    c = to_coefficients @ np.asarray(values, dtype=float)
+    p = fine @ c
     d = np.diff(p)
     err = 2.0 * (abs(float(c[-1])) + abs(float(c[-2]))) + float(np.max(np.abs(d))) + tol
     if not float(np.min(p)) - err <= 0.0 <= float(np.max(p)) + err:

@@ -265,8 +265,9 @@ class SceneSystem:
         self._template[:n, :n] = np.diag(self.mass)
         self._friction = [i for i, e in enumerate(self.elements) if isinstance(e, (Contact, Rolls))]
         self._drives = [i for i, e in enumerate(self.elements) if e.kind == "drive"]
-        # whether an element watches a one-sided quantity (motion.watches: else no multiplier is read)
-        self.watching = any(type(e).watch is not Element.watch for e in self.elements)
+        # whether an element's watch reads its multipliers in the current phases (motion.watches:
+        # else no multiplier is solved for)
+        self.watching = any(e.reads_forces() for e in self.elements)
 
     def refresh(self):
         """Recompute the row offsets after an element changed its rows (a contact's mode)."""

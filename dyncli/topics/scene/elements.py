@@ -93,6 +93,11 @@ class Element:
         """(what, g): the event ``what`` happens where g crosses zero from above."""
         return []
 
+    def reads_forces(self) -> bool:
+        """Whether :meth:`watch` reads the element's multipliers in its current phase (an element
+        that watches anything: yes, unless it says otherwise)."""
+        return type(self).watch is not Element.watch
+
     def phase(self):
         """The element's state in the current phase (one-sided joints: made, released, sliding,
         slack ...); None for a joint that never changes."""

@@ -15,6 +15,7 @@
 from __future__ import annotations
 
 import bisect
+import itertools
 import math
 from typing import Any
 from collections.abc import Callable
@@ -156,8 +157,7 @@ class Trajectory:
         for (stack, modes), parts in stacked.items():
             set_modes(self.system, modes)
             sel = np.concatenate([sel for sel, _ in parts])
-            fns = [p.fn for part, p in parts for _ in part]
-            out[sel] = stack(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
+            out[sel] = stack(*_gathered(ts, parts))
         return out
 
     def coordinates(self, ts) -> np.ndarray:
@@ -199,8 +199,7 @@ class Trajectory:
         for (coords, modes), parts in stacked.items():
             set_modes(self.system, modes)
             sel = np.concatenate([sel for sel, _ in parts])
-            fns = [p.fn for part, p in parts for _ in part]
-            out[:, sel] = coords(fns, [min(max(float(ts[i]), p.t_a), p.t_b) for part, p in parts for i in part])
+            out[:, sel] = coords(*_gathered(ts, parts))
         return out
 
     def _stacked_rates(self, dense, rows, ts) -> np.ndarray:
@@ -255,17 +254,18 @@ class Trajectory:
         key = (id(self.pieces), len(self.pieces), self.pieces[-1].t_b if self.pieces else None)
         got = self._stacked
         if got is None or got.key != key:
-            from dyncli.dop853 import DenseOutput, DenseStack
-
             ps = self.pieces
             row = np.full(len(ps), -1)
             outs = []
-            for k, p in enumerate(ps):
-                if isinstance(p.batch, DenseOutput):
-                    row[k] = len(outs)
-                    outs.append(p.batch)
+            if any(p.batch is not None for p in ps):        # (dop853 is imported by a motion with steps only)
+                from dyncli.dop853 import DenseOutput
+
+                for k, p in enumerate(ps):
+                    if isinstance(p.batch, DenseOutput):
+                        row[k] = len(outs)
+                        outs.append(p.batch)
             got = self._stacked = _Stacked(key, np.array([p.t_b for p in ps]), np.array([p.t_a for p in ps]), row,
-                                           DenseStack(outs) if outs else None)
+                                           _dense_stack(outs) if outs else None)
         return got
 
     def prefetch(self, ts) -> None:
@@ -323,6 +323,20 @@ class _Stacked:
 
 def modes_of(system) -> tuple:
     return tuple(e.phase() for e in system.elements)
+
+
+def _dense_stack(outs):
+    """dop853.DenseStack of the DOP853 steps ``outs``."""
+    from dyncli.dop853 import DenseStack
+
+    return DenseStack(outs)
+
+
+def _gathered(ts, parts) -> tuple[list, np.ndarray]:
+    """(the function of each time's piece, the times each clipped to its piece) for the pieces
+    evaluated together, ``parts`` [(the indices into ts, the piece)]: in the order of the parts."""
+    fns = list(itertools.chain.from_iterable([p.fn] * len(part) for part, p in parts))
+    return fns, np.concatenate([np.minimum(np.maximum(ts[part], p.t_a), p.t_b) for part, p in parts])
 
 
 def set_modes(system, modes) -> None:

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import assembly, impulse, motion
+from . import assembly, motion
 from .contacts import Contact, Rolls
 from .elements import Cord
 
@@ -113,6 +113,8 @@ class Transitions:
         return q, s.project_velocity(q, v, t)
 
     def _change(self, t, q, v, e, what):
+        from . import impulse           # (the impacts' module: imported by a motion that has one)
+
         s = self.s
         if what in ("separates", "leaves"):
             impulse.release(e)
@@ -141,6 +143,8 @@ class Transitions:
         return v
 
     def _strike(self, t, q, v, e, rest, run, what):
+        from . import impulse
+
         s = self.s
         T1 = s.kinetic(v)
         speed = (lambda w: -float(e.run_rate(q, w, run))) if isinstance(e, Cord) else (lambda w: e.normal_speed(q, w))

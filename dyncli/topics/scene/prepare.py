@@ -11,7 +11,7 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build, curved, start
+from . import assembly, build, start
 from .dynamics import SceneSystem
 from .contacts import Contact
 
@@ -104,6 +104,8 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
             b, s = R.body(j["rolls"][0], ""), R.surface(j["rolls"][1], "")
             if b.rigid and free[b.index[0]]:
                 if getattr(s, "curved", False):
+                    from . import curved
+
                     c = curved.place_on(s, j["at"], b.radius)
                 else:
                     c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
@@ -111,6 +113,8 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
         if j["kind"] == "contact" and j["at"] is not None:
             P, s = R.point(j["contact"][0], ""), R.surface(j["contact"][1], "")
             if getattr(s, "curved", False) and P.body is not None and free[P.body.index[0]]:
+                from . import curved
+
                 i = P.body.index
                 q[i[0]], q[i[1]] = curved.place_on(s, j["at"], 0.0) - P.arm(q)
 

@@ -377,16 +377,10 @@ def _kin_rates(pieces, ts):
 
 def _pieces_of(pieces) -> tuple[list, np.ndarray]:
     """(the distinct pieces in order of first appearance, the index of each entry's among them)."""
-    first: dict[int, int] = {}
-    uniq: list = []
-    which = np.empty(len(pieces), dtype=np.intp)
-    for i, p in enumerate(pieces):
-        j = first.get(id(p))
-        if j is None:
-            j = first[id(p)] = len(uniq)
-            uniq.append(p)
-        which[i] = j
-    return uniq, which
+    ids = list(map(id, pieces))
+    by_id = dict(zip(ids, pieces))              # (keeps the order of first appearance)
+    slot = {k: j for j, k in enumerate(by_id)}
+    return list(by_id.values()), np.fromiter(map(slot.__getitem__, ids), dtype=np.intp, count=len(ids))
 
 
 def _near_toggle(pieces, Js, limit: float) -> np.ndarray:
@@ -424,29 +418,57 @@ def _conds_above(Js, limit: float) -> list[int]:
     return [int(i) for i, c in zip(maybe, np.linalg.cond(Js[maybe]) if maybe.size else ()) if c > limit]
 
 
+#: the most states of one stacked evaluation of the kinematics route: its arrays (the Jacobians,
+#: k × m × n doubles) then stay at a few hundred kB, reused by the C allocator from call to call,
+#: where the thousands of states of a quadrature or a search at once would fault in megabytes of
+#: fresh pages per call (four-bar: ~3,800 page faults per solve without it, ~250 with it); every
+#: operation is state by state (the same numbers)
+KIN_CHUNK = 256
+
+
+def _chunks(pieces, ts) -> list:
+    """[(pieces, ts)] in slices of at most KIN_CHUNK states."""
+    if len(ts) <= KIN_CHUNK:
+        return [(pieces, ts)]
+    return [(pieces[i:i + KIN_CHUNK], ts[i:i + KIN_CHUNK]) for i in range(0, len(ts), KIN_CHUNK)]
+
+
 def _kin_states(pieces, ts) -> list:
     """(q, q̇, 0) of ``pieces[i]`` at ``ts[i]`` (Piece.states of the kinematics route: the
     states a search will read, made together; the numbers of each piece's own call)."""
-    X, _Js, V, _td = _kin_rates(pieces, ts)
-    return [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(ts))]
+    out = []
+    for ps, tt in _chunks(pieces, ts):
+        X, _Js, V, _td = _kin_rates(ps, tt)
+        out += [(X.Q[i].copy(), V[i].copy(), 0.0) for i in range(len(tt))]
+    return out
 
 
 def _kin_coordinates(pieces, ts) -> np.ndarray:
     """(q, q̇) of ``pieces[i]`` at ``ts[i]``, (2n, len(ts)) (Piece.coords of the kinematics route:
     the numbers of :func:`_kin_states`)."""
-    X, _Js, V, _td = _kin_rates(pieces, ts)
-    return np.concatenate([X.Q.T, V.T])
+    parts = []
+    for ps, tt in _chunks(pieces, ts):
+        X, _Js, V, _td = _kin_rates(ps, tt)
+        parts.append(np.concatenate([X.Q.T, V.T]))
+    return parts[0] if len(parts) == 1 else np.concatenate(parts, axis=1)
 
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
     """q̇ of ``pieces[i]`` at ``ts[i]``, (len(ts), n) (Piece.stack of the kinematics route)."""
-    return _kin_rates(pieces, ts)[2]
+    parts = [_kin_rates(ps, tt)[2] for ps, tt in _chunks(pieces, ts)]
+    return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
 def _kin_powers(pieces, ts) -> np.ndarray:
     """The power of the drives and the loads (outcome's W_nc) of ``pieces[i]`` at ``ts[i]``: q̈
     from J q̈ = γ, the multipliers from Jᵀ λ = M q̈ − f, each stacked (the numbers of one
     state at a time, outcome._kin_forces)."""
+    parts = [_kin_powers_of(ps, tt) for ps, tt in _chunks(pieces, ts)]
+    return parts[0] if len(parts) == 1 else np.concatenate(parts)
+
+
+def _kin_powers_of(pieces, ts) -> np.ndarray:
+    """:func:`_kin_powers` of one slice of states."""
     s = pieces[0].s
     X, Js, V, td = _kin_rates(pieces, ts)
     A = np.linalg.solve(Js, s.gamma_many(X, V, td)[:, :, None])[:, :, 0]
@@ -627,11 +649,34 @@ def _first_event(s, traj, k0: int, t_end: float, quadratic: bool = False):
     return t_end, q, v, None
 
 
-def _affine_watches(s, q, v, t) -> list[bool]:
-    """Per watched quantity (motion.watches' order): whether it is affine in the positions by
-    the structure of its joint — a point that does not turn with its body, or a rolling body's
-    centre, over a line without ends (its gap, "impact"), a cord whose runs are linear (a slack
-    run's gap, "taut").  Over constant accelerations such a quantity is a quadratic in t."""
+def _watchers(s, at, state) -> list:
+    """The element of each watched quantity of ``at`` (motion.watches' list at ``state`` = (q, v,
+    t): the elements' entries in their order, each named by its joint, then the one-sided
+    springs'), None for a spring's: read from the names (no solve) where the elements that watch
+    are named apart, else from each element's own entries (one solve)."""
+    els = s.elements
+    names = [e.name for e in els]
+    out = []
+    if all(names.count(j) == 1 for j in {j for j, _w, _g in at if j}):
+        i = 0
+        for joint, _what, _g in at:
+            while i < len(els) and els[i].name != joint:
+                i += 1
+            out.append(els[i] if joint and i < len(els) else None)
+        return out
+    q, v, t = state
+    lam = s.solve(q, v, t)[1]
+    for i, e in enumerate(els):
+        out += [e] * len(e.watch(s.lam_of(lam, i), q, v, t))
+    return out + [None] * (len(at) - len(out))
+
+
+def _affine_watches(s, at, state) -> list[bool]:
+    """Per watched quantity of ``at`` (motion.watches' list at the piece's start): whether it is
+    affine in the positions by the structure of its joint — a point that does not turn with its
+    body, or a rolling body's centre, over a line without ends (its gap, "impact"), a cord whose
+    runs are linear (a slack run's gap, "taut").  Over constant accelerations such a quantity is
+    a quadratic in t."""
     from .contacts import Contact, Rolls
     from .elements import Cord
 
@@ -642,9 +687,48 @@ def _affine_watches(s, q, v, t) -> list[bool]:
             return what == "impact" and e.surface.length is None
         return type(e) is Cord and what == "taut" and e.linear
 
-    lam = s.solve(q, v, t)[1]
-    out = [affine(e, what) for i, e in enumerate(s.elements) for what, _g in e.watch(s.lam_of(lam, i), q, v, t)]
-    return out + [False for ld in s.loads if ld.kind == "spring" and ld.one_sided]
+    return [e is not None and affine(e, what) for e, (_j, what, _g) in zip(_watchers(s, at, state), at)]
+
+
+def _turning_gaps(s, p, at, state) -> dict:
+    """Per watched quantity of ``at`` (motion.watches' list at the piece's start) that is the gap
+    of a released contact whose point turns with its body, over a plane line, on a piece of
+    constant accelerations without angular acceleration of that body (``p.quad``: a free rigid
+    body under gravity): its index -> :func:`_gap_forms`."""
+    from .contacts import Contact
+
+    acc = p.quad[3]
+    return {j: _gap_forms(e, p.quad) for j, (e, (_j, what, _g)) in enumerate(zip(_watchers(s, at, state), at))
+            if type(e) is Contact and what == "impact" and e.mode == "off" and e.P.turns_with_body
+            and acc[e.P.body.index[2]] == 0.0}
+
+
+def _gap_forms(e, quad) -> tuple:
+    """(the gap of the contact ``e``'s point over its line as a crossing.Sinusoid, its place along
+    the line from the line's origin (None for a line without ends), the line's length, the
+    forms' error over [a, b] beyond a reading's: the arm's through its angle's rounding and the
+    terms' of the quadratic) over the piece of constant accelerations ``quad``."""
+    t0, q0, v0, acc = quad
+    i1, i2, ia = e.P.body.index
+    p1, p2 = e.P.p
+    sf = e.surface
+
+    def form(w1: float, w2: float) -> crossing.Sinusoid:
+        o = w1 * sf.origin[0] + w2 * sf.origin[1]
+        return crossing.Sinusoid(t0, w1 * float(q0[i1]) + w2 * float(q0[i2]) - o,
+                                 w1 * float(v0[i1]) + w2 * float(v0[i2]),
+                                 0.5 * (w1 * float(acc[i1]) + w2 * float(acc[i2])),
+                                 w1 * p1 + w2 * p2, w2 * p1 - w1 * p2, float(q0[ia]), float(v0[ia]))
+
+    arm = math.hypot(p1, p2)
+    th0, w = abs(float(q0[ia])), abs(float(v0[ia]))
+    vmax, amax = max(abs(float(v0[i1])), abs(float(v0[i2]))), max(abs(float(acc[i1])), abs(float(acc[i2])))
+
+    def err(a: float, b: float) -> float:
+        tau = max(abs(a - t0), abs(b - t0))
+        return 16 * EPS * (arm * (1.0 + th0 + w * tau) + vmax * tau + amax * tau * tau)
+
+    return form(*sf.n), (form(*sf.d) if sf.length is not None else None), sf.length, err
 
 
 def _piece_event(s, p, quadratic: bool = False):
@@ -666,7 +750,14 @@ def _piece_event(s, p, quadratic: bool = False):
     from dyncli import cputime
 
     cache: dict[float, list[float]] = {}
+    states_at: dict[float, tuple] = {}          # p.fn's states, by time (a reading's and a search's)
     stacked = p.route == "statics" or s.constant_matrix()
+
+    def state(t: float) -> tuple:
+        got = states_at.get(t)
+        if got is None:
+            got = states_at[t] = p.fn(t)
+        return got
 
     def column(j: int, ts) -> np.ndarray:
         ts = [float(t) for t in np.atleast_1d(ts)]
@@ -675,14 +766,15 @@ def _piece_event(s, p, quadratic: bool = False):
                 raise NumericalError(
                     f"the forces of the joints were followed to t = {missing[0]:.6g} s only within the CPU budget of "
                     f"{limit:g} s (accuracy.max_cpu): shorten the times asked (at, t_max) or raise accuracy.max_cpu")
-            states = [p.fn(t)[:2] + (t,) for t in missing]
-            lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 else [None] * len(states)
+            states = [state(t)[:2] + (t,) for t in missing]
+            lams = [lam for _a, lam, _P in s.solve_many(states)] if stacked and len(states) > 1 and s.watching \
+                else [None] * len(states)
             for (q, v, t), lam in zip(states, lams):
                 cache[t] = [g for _j, _w, g in motion.watches(s, q, v, t, lam)]
         return np.array([cache[t][j] for t in ts])
 
-    q, v, _ = p.fn(p.t_a)
-    q_b, v_b, _ = p.fn(p.t_b)
+    q, v, _ = state(p.t_a)
+    q_b, v_b, _ = state(p.t_b)
     tol = crossing.rounding(s, q, v, p.t_a, v_b)
     at_a = motion.watches(s, q, v, p.t_a)
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
@@ -705,12 +797,14 @@ def _piece_event(s, p, quadratic: bool = False):
     # held, the loads are the user's functions of t (a narrow pulse is seen by 16 cells of 33
     # points each over a window); moving, the loads are constant and the motion's own scales rule
     held = p.route == "statics"
-    affine = _affine_watches(s, q, v, p.t_a) if quadratic and p.route == "closed-form" else [False] * len(at_a)
+    formed = quadratic and p.route == "closed-form"
+    affine = _affine_watches(s, at_a, (q, v, p.t_a)) if formed else [False] * len(at_a)
+    turning = _turning_gaps(s, p, at_a, (q, v, p.t_a)) if formed else {}
     L = tol["impact"] / (64 * EPS)              # the lengths' scale of their rounding
 
     def reading(a: float, b: float) -> float:
         """The rounding of one reading of an affine gap over [a, b]: of the largest coordinate."""
-        return 4 * EPS * max([L] + [float(np.max(np.abs(p.fn(t)[0]), initial=0.0)) for t in (a, 0.5 * (a + b), b)])
+        return 4 * EPS * max([L] + [abs(x) for t in (a, 0.5 * (a + b), b) for x in state(t)[0].tolist()])
 
     lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
     while lo < p.t_b:                           # window by window, every watched quantity in each
@@ -721,6 +815,13 @@ def _piece_event(s, p, quadratic: bool = False):
             got: Any = crossing.UNDECIDED
             if affine[j]:
                 got = crossing.quadratic_crossing(lambda ts, j=j: column(j, ts), lo, end, tol[what], reading)
+            elif j in turning:
+                G, S, length, err = turning[j]
+                try:
+                    got = crossing.sinusoid_crossing(G, S, length, lambda ts, j=j: column(j, ts), lo, end,
+                                                     tol[what], 2 * reading(lo, end) + err(lo, end))
+                except (ArithmeticError, ValueError):   # the form beyond the doubles: searched
+                    got = crossing.UNDECIDED
             if got == crossing.UNDECIDED:
                 got = crossing.first_crossing(lambda ts, j=j: column(j, ts), lo, end, what, tol[what],
                                               start=lo == p.t_a, cells=16 if held else 1)
