@@ -234,7 +234,7 @@ def sinusoid_crossing(G: Sinusoid, S: Sinusoid | None, length: float | None, g, 
     the caller searches as before."""
     def watch(t: float) -> float:
         gap = G(t)
-        if S is None:
+        if S is None or length is None:
             return gap
         s = S(t)
         m = min(s, length - s)
@@ -248,13 +248,13 @@ def sinusoid_crossing(G: Sinusoid, S: Sinusoid | None, length: float | None, g, 
     if not got[0] + tol > 2 * e:
         return UNDECIDED
     # the times the scene's margin may be >= 0: the extent widened by 2e on either side
-    if S is None:
+    if S is None or length is None:
         spans = [(a, b)]
     else:
-        cuts = [S.roots(-2 * e, a, b), S.roots(length + 2 * e, a, b)]
-        if cuts[0] is None or cuts[1] is None:
+        lo, hi = S.roots(-2 * e, a, b), S.roots(length + 2 * e, a, b)
+        if lo is None or hi is None:
             return UNDECIDED
-        B = [a] + sorted(cuts[0] + cuts[1]) + [b]
+        B = [a] + sorted(lo + hi) + [b]
         spans = [(u, w) for u, w in zip(B[:-1], B[1:]) if -2 * e <= S(0.5 * (u + w)) <= length + 2 * e]
     for u, w in spans:
         if not G(u) + tol > 2 * e:                  # (entering the extent below the band)
@@ -274,7 +274,8 @@ def sinusoid_crossing(G: Sinusoid, S: Sinusoid | None, length: float | None, g, 
             if not (slope_f < 0 and slope_g < 0):
                 return UNDECIDED
             x, r = max(p0, u_g - 8 * e / -slope_g), min(u_f + 8 * e / -slope_f, p1)
-            if S is not None and not all(2 * e < S(t) < length - 2 * e for t in (x, u_g, u_f, r)):
+            if S is not None and length is not None and not all(2 * e < S(t) < length - 2 * e
+                                                                 for t in (x, u_g, u_f, r)):
                 return UNDECIDED            # (an event at the extent's end: the search decides)
             gx, gr = (float(v) for v in g(np.array([x, r])))
             if not (x > a and gx > 0 and gr + tol < 0):

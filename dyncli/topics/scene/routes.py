@@ -700,7 +700,7 @@ def _turning_gaps(s, p, at, state) -> dict:
     acc = p.quad[3]
     return {j: _gap_forms(e, p.quad) for j, (e, (_j, what, _g)) in enumerate(zip(_watchers(s, at, state), at))
             if type(e) is Contact and what == "impact" and e.mode == "off" and e.P.turns_with_body
-            and acc[e.P.body.index[2]] == 0.0}
+            and e.P.body is not None and acc[e.P.body.index[2]] == 0.0}
 
 
 def _gap_forms(e, quad) -> tuple:
