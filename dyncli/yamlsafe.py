@@ -172,7 +172,7 @@ def load(text: str | bytes) -> Document:
                 return _one_pass(lists[0], loader, lists[1])
             except Exception:               # anything unexpected (an error, a list not met as a list):
                 pass                        # the text as written, the ordinary way (the same values, errors)
-        return _one_pass(text, loader)
+        return _plain_pass(text, loader)
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
         tab = _tab_near(text, m.line if m is not None else None, m.column if m is not None else None)
@@ -227,6 +227,174 @@ def _one_pass(text: str, loader, lists: dict | None = None) -> Document:
     if lists:
         raise _Unmet()                      # a blanked list was not read as a list (inside a string...)
     return builder.doc
+
+
+class _Bail(Exception):
+    """:class:`_Plain` meets what only :class:`_Builder` handles (an anchor, an alias, a tag, a
+    key that is not text, a value to refuse, a cap near): the events read so far are handed over."""
+
+
+class _Replay:
+    """A loader whose events are ``seen`` (already read from ``loader``) and then the rest of
+    ``loader``'s: :func:`_one_pass` carries on where :class:`_Plain` stopped, with no second parse."""
+
+    def __init__(self, seen: list, loader):
+        self._seen, self._i, self._loader = seen, 0, loader
+
+    def get_event(self):
+        if self._i < len(self._seen):
+            self._i += 1
+            return self._seen[self._i - 1]
+        return self._loader.get_event()
+
+    def dispose(self) -> None:
+        self._loader.dispose()
+
+
+def _plain_pass(text: str, loader) -> Document:
+    """The document of ``text`` read by :class:`_Plain` (a document of plain data: no anchor, alias
+    or tag, text keys, nothing to refuse, far from the caps: every problem file as usually written),
+    else by :func:`_one_pass`, which is handed the events read so far -- one parse either way, and
+    the same :class:`Document` (data, positions, texts, runs) or the same error."""
+    ld = loader(text)
+    plain = _Plain(ld.get_event)
+    try:
+        doc = plain.document()
+    except _Bail:
+        return _one_pass(text, lambda _text: _Replay(plain.seen, ld))
+    ld.dispose()
+    return doc
+
+
+def _resolved(ev) -> str:
+    """The tag of a scalar event with no tag of its own, as a composer resolves it (remembered
+    by its text: a document repeats its keys and numbers)."""
+    key = (ev.value, ev.implicit)
+    tag = _TAGS.get(key)
+    if tag is None:
+        import yaml
+
+        if not _RESOLVER:
+            _RESOLVER.append(yaml.resolver.Resolver())
+        tag = _RESOLVER[0].resolve(yaml.ScalarNode, ev.value, ev.implicit)
+        if len(_TAGS) < 4096:
+            _TAGS[key] = tag
+    return tag
+
+
+_RESOLVER: list = []        # the resolver (stateless: no path resolvers), made at the first use
+
+
+class _Plain:
+    """The :class:`Document` of a document of plain data, built straight from the parser's events
+    with what :class:`_Builder` would record (values, positions, texts, the runs of plain numbers of
+    a list); anything else raises :class:`_Bail` (``seen``: every event read, for :class:`_Replay`)."""
+
+    def __init__(self, get):
+        import yaml
+
+        self.seen: list = []
+        keep = self.seen.append
+
+        def next_event():
+            ev = get()
+            keep(ev)
+            return ev
+
+        self.next = next_event
+        self.doc = Document(None)
+        self.pos, self.text = self.doc.pos.eager, self.doc.text.eager
+        self.count = 0
+        self.most = MAX_NODES - 2                 # (read now: the caps are the module's, tests lower them)
+        self.deepest = MAX_DEPTH - 2
+        self.y = yaml
+        self.scalar, self.mapping_end, self.sequence_end = yaml.ScalarEvent, yaml.MappingEndEvent, yaml.SequenceEndEvent
+
+    def document(self) -> Document:
+        y, nxt = self.y, self.next
+        if type(nxt()) is not y.StreamStartEvent or type(nxt()) is not y.DocumentStartEvent:
+            raise _Bail                           # (an empty stream: the builder's message)
+        data = self.value(nxt(), (), 0)
+        if type(nxt()) is not y.DocumentEndEvent or type(nxt()) is not y.StreamEndEvent:
+            raise _Bail                           # (several documents)
+        self.doc.data = data
+        return self.doc
+
+    def value(self, ev, path: tuple, depth: int) -> Any:
+        if type(ev) is self.y.AliasEvent or ev.tag is not None or ev.anchor is not None or depth >= self.deepest:
+            raise _Bail
+        self.count += 1
+        if self.count > self.most:
+            raise _Bail
+        m = ev.start_mark
+        self.pos[path] = (m.line + 1, m.column + 1)
+        cls = type(ev)
+        if cls is self.scalar:
+            v = ev.value
+            tag = _resolved(ev)
+            if tag == _STR:
+                return v
+            if tag == _NULL:
+                return None
+            if tag != _INT and tag != _FLOAT and tag != _BOOL:
+                raise _Bail                       # (a date: refused by the builder)
+            self.text[path] = v
+            if tag != _BOOL and _NUMBER(v) is not None:
+                return float(v) if "." in v else int(v)
+            try:
+                return _scalar(tag, v)
+            except (ValueError, OverflowError, IndexError):
+                raise _Bail from None
+        if cls is self.y.MappingStartEvent:
+            return self.mapping(path, depth)
+        return self.sequence(path, depth)
+
+    def sequence(self, path: tuple, depth: int) -> list:
+        nxt, scalar, number = self.next, self.scalar, _NUMBER
+        out: list = []
+        marks: list[int] = []
+        texts: list[str] = []
+        ev = nxt()
+        while type(ev) is scalar and ev.tag is None and ev.anchor is None and ev.implicit[0] \
+                and number(ev.value) is not None:     # the leading run of plain numbers (_Builder.numbers)
+            self.count += 1
+            if self.count > self.most:
+                raise _Bail
+            v, m = ev.value, ev.start_mark
+            out.append(float(v) if "." in v else int(v))
+            marks.append(m.line << _SHIFT | m.column)
+            texts.append(v)
+            ev = nxt()
+        if marks:
+            self.doc.pos.runs[path] = (marks, _unpack)
+            self.doc.text.runs[path] = (texts, None)
+        end = self.sequence_end
+        while type(ev) is not end:
+            out.append(self.value(ev, path + (len(out),), depth + 1))
+            ev = nxt()
+        return out
+
+    def mapping(self, path: tuple, depth: int) -> dict:
+        nxt, scalar, end, key_pos = self.next, self.scalar, self.mapping_end, self.doc.key_pos
+        out: dict = {}
+        while True:
+            kev = nxt()
+            if type(kev) is end:
+                return out
+            if type(kev) is not scalar or kev.tag is not None or kev.anchor is not None:
+                raise _Bail
+            key = kev.value
+            if _resolved(kev) != _STR or key in out or key == "<key>":
+                raise _Bail                       # (a key not text, a duplicate: the builder's)
+            self.count += 1
+            if self.count > self.most:
+                raise _Bail
+            m = kev.start_mark
+            key_pos[path + (key,)] = (m.line + 1, m.column + 1)
+            out[key] = self.value(nxt(), path + (key,), depth + 1)
+
+
+_STR, _NULL, _INT, _FLOAT, _BOOL = (_STD + t for t in ("str", "null", "int", "float", "bool"))
 
 
 class _Unmet(Exception):
