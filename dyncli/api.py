@@ -123,16 +123,29 @@ def load(source: Any):
             data = _plain(source)
         except InputError as exc:
             raise _input_error([f"<dict>: {exc.message}"]) from None
-        problems, diags = split_problems("<dict>", Document(data), Path.cwd())
+        problems, diags = split_problems("<dict>", Document(data), _cwd())
     elif isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and ":" not in source.replace("\\", "/").split("/")[-1]):
         return load_paths([str(source)])
     elif isinstance(source, (str, bytes)):
-        problems, diags = split_problems("<text>", source, Path.cwd())
+        problems, diags = split_problems("<text>", source, _cwd())
     else:
         raise TypeError(f"dyncli.solve: expected a path, a YAML text or a mapping, got {type(source).__name__}")
     for p in problems:
         validate(p)
     return problems, diags
+
+
+_CWD: list = [None, None]       # (the working directory's name, its Path): made again when it changes
+
+
+def _cwd() -> Path:
+    """``Path.cwd()``, the Path made once per working directory (every problem asks)."""
+    import os
+
+    here = os.getcwd()
+    if _CWD[0] != here:
+        _CWD[:] = [here, Path(here)]
+    return _CWD[1]
 
 
 def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> list:

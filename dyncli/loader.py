@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import sys
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -111,7 +112,7 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
     except YamlError as exc:
         return [], [Diagnostic(display, exc.line, exc.col, None, exc.message)]
     data = doc.data
-    default_title = Path(display).name if display != "<stdin>" else "stdin"
+    default_title = _file_name(display) if display != "<stdin>" else "stdin"
     if isinstance(data, dict) and "problems" in data and "type" not in data:
         extra = [k for k in data if k != "problems"]
         if extra:
@@ -141,6 +142,12 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
             title = default_title if len(items) == 1 else f"{default_title} #{i + 1}"
         out.append(LoadedProblem(display, i, t if isinstance(t, str) else None, title, item, doc, prefix, base_dir=base_dir))
     return out, []
+
+
+@lru_cache(maxsize=256)
+def _file_name(display: str) -> str:
+    """``Path(display).name`` (the default title), worked out once per name."""
+    return Path(display).name
 
 
 def validate(lp: LoadedProblem) -> None:
