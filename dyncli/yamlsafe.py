@@ -288,20 +288,15 @@ _RESOLVER: list = []        # the resolver (stateless: no path resolvers), made 
 class _Plain:
     """The :class:`Document` of a document of plain data, built straight from the parser's events
     with what :class:`_Builder` would record (values, positions, texts, the runs of plain numbers of
-    a list); anything else raises :class:`_Bail` (``seen``: every event read, for :class:`_Replay`)."""
+    a list); anything else raises :class:`_Bail` (``seen``: every event read, for :class:`_Replay`).
+    (The common entry, a key and a plain scalar, is read in :meth:`mapping` itself: this pass is a
+    fixed cost of every problem.)"""
 
     def __init__(self, get):
         import yaml
 
         self.seen: list = []
-        keep = self.seen.append
-
-        def next_event():
-            ev = get()
-            keep(ev)
-            return ev
-
-        self.next = next_event
+        self.get, self.keep = get, self.seen.append
         self.doc = Document(None)
         self.pos, self.text = self.doc.pos.eager, self.doc.text.eager
         self.count = 0
@@ -309,6 +304,11 @@ class _Plain:
         self.deepest = MAX_DEPTH - 2
         self.y = yaml
         self.scalar, self.mapping_end, self.sequence_end = yaml.ScalarEvent, yaml.MappingEndEvent, yaml.SequenceEndEvent
+
+    def next(self):
+        ev = self.get()
+        self.keep(ev)
+        return ev
 
     def document(self) -> Document:
         y, nxt = self.y, self.next
@@ -331,30 +331,31 @@ class _Plain:
         cls = type(ev)
         if cls is self.scalar:
             v = ev.value
-            tag = _resolved(ev)
-            if tag == _STR:
-                return v
-            if tag == _NULL:
-                return None
-            if tag != _INT and tag != _FLOAT and tag != _BOOL:
-                raise _Bail                       # (a date: refused by the builder)
-            self.text[path] = v
-            if tag != _BOOL and _NUMBER(v) is not None:
-                return float(v) if "." in v else int(v)
-            try:
-                return _scalar(tag, v)
-            except (ValueError, OverflowError, IndexError):
-                raise _Bail from None
+            tag = _TAGS.get((v, ev.implicit)) or _resolved(ev)
+            return v if tag == _STR else None if tag == _NULL else self.typed(path, v, tag)
         if cls is self.y.MappingStartEvent:
             return self.mapping(path, depth)
         return self.sequence(path, depth)
 
+    def typed(self, path: tuple, v: str, tag: str) -> Any:
+        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
+        if tag != _INT and tag != _FLOAT and tag != _BOOL:
+            raise _Bail                           # (a date: refused by the builder)
+        self.text[path] = v
+        if tag != _BOOL and _NUMBER(v) is not None:
+            return float(v) if "." in v else int(v)
+        try:
+            return _scalar(tag, v)
+        except (ValueError, OverflowError, IndexError):
+            raise _Bail from None
+
     def sequence(self, path: tuple, depth: int) -> list:
-        nxt, scalar, number = self.next, self.scalar, _NUMBER
+        get, keep, scalar, number = self.get, self.keep, self.scalar, _NUMBER
         out: list = []
         marks: list[int] = []
         texts: list[str] = []
-        ev = nxt()
+        ev = get()
+        keep(ev)
         while type(ev) is scalar and ev.tag is None and ev.anchor is None and ev.implicit[0] \
                 and number(ev.value) is not None:     # the leading run of plain numbers (_Builder.numbers)
             self.count += 1
@@ -364,34 +365,50 @@ class _Plain:
             out.append(float(v) if "." in v else int(v))
             marks.append(m.line << _SHIFT | m.column)
             texts.append(v)
-            ev = nxt()
+            ev = get()
+            keep(ev)
         if marks:
             self.doc.pos.runs[path] = (marks, _unpack)
             self.doc.text.runs[path] = (texts, None)
         end = self.sequence_end
         while type(ev) is not end:
             out.append(self.value(ev, path + (len(out),), depth + 1))
-            ev = nxt()
+            ev = get()
+            keep(ev)
         return out
 
     def mapping(self, path: tuple, depth: int) -> dict:
-        nxt, scalar, end, key_pos = self.next, self.scalar, self.mapping_end, self.doc.key_pos
+        get, keep, scalar, end = self.get, self.keep, self.scalar, self.mapping_end
+        pos, key_pos, tags = self.pos, self.doc.key_pos, _TAGS
         out: dict = {}
         while True:
-            kev = nxt()
-            if type(kev) is end:
-                return out
-            if type(kev) is not scalar or kev.tag is not None or kev.anchor is not None:
-                raise _Bail
+            kev = get()
+            keep(kev)
+            if type(kev) is not scalar:
+                if type(kev) is end:
+                    return out
+                raise _Bail                       # (a key that is a list or a mapping, an alias)
             key = kev.value
-            if _resolved(kev) != _STR or key in out or key == "<key>":
+            if kev.tag is not None or kev.anchor is not None or key in out or key == "<key>" \
+                    or (tags.get((key, kev.implicit)) or _resolved(kev)) != _STR:
                 raise _Bail                       # (a key not text, a duplicate: the builder's)
-            self.count += 1
-            if self.count > self.most:
-                raise _Bail
             m = kev.start_mark
-            key_pos[path + (key,)] = (m.line + 1, m.column + 1)
-            out[key] = self.value(nxt(), path + (key,), depth + 1)
+            here = path + (key,)
+            key_pos[here] = (m.line + 1, m.column + 1)
+            ev = get()
+            keep(ev)
+            if type(ev) is scalar and ev.tag is None and ev.anchor is None:
+                self.count += 2                   # the key and its value
+                if self.count > self.most:
+                    raise _Bail
+                m = ev.start_mark
+                pos[here] = (m.line + 1, m.column + 1)
+                v = ev.value
+                tag = tags.get((v, ev.implicit)) or _resolved(ev)
+                out[key] = v if tag == _STR else None if tag == _NULL else self.typed(here, v, tag)
+            else:
+                self.count += 1
+                out[key] = self.value(ev, here, depth + 1)
 
 
 _STR, _NULL, _INT, _FLOAT, _BOOL = (_STD + t for t in ("str", "null", "int", "float", "bool"))
