@@ -14,8 +14,9 @@ a report).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any
 
 from dyncli.errors import InputError, NumericalError
 from dyncli.results_map import results_of, units_of
@@ -95,6 +96,8 @@ def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
     """numpy values, tuples and paths in a mapping -> plain YAML data.  A
     mapping or list that contains itself, or nested deeper than a problem
     file may be (yamlsafe.MAX_DEPTH), is InputError naming where."""
+    if type(x) in _LEAVES:
+        return x                  # (what the rest would return, without its questions)
     from dyncli.yamlsafe import MAX_DEPTH
 
     if isinstance(x, (Mapping, list, tuple)):
@@ -111,6 +114,9 @@ def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
     if isinstance(x, Path):
         return str(x)
     return x
+
+
+_LEAVES = frozenset({str, int, float, bool, type(None)})
 
 
 def load(source: Any):
