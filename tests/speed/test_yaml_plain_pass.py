@@ -1,14 +1,19 @@
-"""The plain pass of the YAML reader (issue #31 item 2: one cheap pass per problem file).
+"""The cheap passes of the YAML reader (issue #31 item 2: one cheap pass per problem file).
 
-A document of plain data (no anchor, alias or tag, text keys, nothing to refuse) is built by
-``yamlsafe._Plain`` straight from the parser's events; anything else is handed, with the events
-read so far, to the general builder (``yamlsafe._one_pass``).  Checked here, with no timing:
+A text in the block style every problem file is written in is read by its lines
+(``yamlsafe._Lines``, no parser); a document of plain data (no anchor, alias or tag, text keys,
+nothing to refuse) is built by ``yamlsafe._Plain`` straight from the parser's events; anything
+else is handed, with the events read so far, to the general builder (``yamlsafe._one_pass``).
+Checked here, with no timing:
 
-* the plain pass builds the same :class:`~dyncli.yamlsafe.Document` as the general builder —
+* both passes build the same :class:`~dyncli.yamlsafe.Document` as the general builder —
   type-exact data, value and key positions, number texts, and the same runs of plain numbers —
-  for every example of problems/ and for texts made to reach each of its exits;
-* every example of problems/ is read by the plain pass alone; a text it hands over is still
-  parsed once (one loader made, no event read twice) with the general builder's values or errors.
+  for every example of problems/, for texts made to reach each of their exits, and (the lines'
+  reader) for thousands of examples changed at random (a reader of lines that accepts a text
+  the parser refuses, or reads it otherwise, fails here);
+* every example of problems/ is read by the lines' reader, and by the plain pass alone; a text
+  the plain pass hands over is still parsed once (one loader made, no event read twice) with the
+  general builder's values or errors.
 """
 
 from __future__ import annotations
@@ -27,6 +32,13 @@ def _image(doc) -> tuple:
 
     return (fingerprint(doc.data), dict(doc.pos.eager), {k: (list(v[0]), v[1]) for k, v in doc.pos.runs.items()},
             dict(doc.key_pos), dict(doc.text.eager), {k: (list(v[0]), v[1]) for k, v in doc.text.runs.items()})
+
+
+def _lines(text: str):
+    """The lines' reader's Document, or None when it leaves the text to the parser."""
+    from dyncli import yamlsafe
+
+    return yamlsafe._lines_pass(text)
 
 
 def _general(text: str):
@@ -51,9 +63,9 @@ def _plain(text: str):
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: f"{p.parent.name}/{p.name}")
 def test_every_example_read_by_the_plain_pass_as_the_general_builder_reads_it(path):
     text = path.read_text(encoding="utf-8")
-    doc = _plain(text)
-    assert doc is not None
-    assert _image(doc) == _image(_general(text))
+    doc, lines = _plain(text), _lines(text)
+    assert doc is not None and lines is not None
+    assert _image(doc) == _image(_general(text)) == _image(lines)
 
 
 PLAIN = [
@@ -88,6 +100,8 @@ HANDED_OVER = [
     "# only a comment\n",
     "a: [1, &y 2, *y]\n",
     "a: [1, 2, !!int 3]\n",
+    "a: " + "9" * 5000 + "\n",                # an int of more digits than Python reads
+    "a: [1, " + "9" * 5000 + "]\n",
 ]
 
 
@@ -108,6 +122,8 @@ def test_the_plain_pass_builds_what_the_general_builder_builds_or_hands_over(tex
         assert doc is not None
     if doc is not None:
         assert _image(doc) == general
+    if _lines(text) is not None:
+        assert _image(_lines(text)) == general
     assert _image(yamlsafe.load(text)) == general
 
 
@@ -155,3 +171,85 @@ def test_the_caps_bite_as_before(monkeypatch):
         yamlsafe.load("a: " + "[" * 8 + "]" * 8 + "\n")
     assert "nested" in err.value.message
     assert yamlsafe.load("a: [[1]]\n").data == {"a": [[1]]}
+
+
+LINES = [
+    "a: 1\nb: x y  # c\nc: 'q r'\nd: \"s # t\"\ne: [1, 2.5, x, 'y', [3], {f: 4}]\ng: {h: 1, i: [2, 3]}\n",
+    "# c\n\nk:\n  - 1\n  - -2.5\n  - a: 2\n    b: 3\n  - [4]\n  - x\n  - 5\nl:\n  m: {n: -1}\n",
+    "e: ü\nt: Frequency sweep, ζ = 0.2\nu: [1, ü, 2]\nv: a#b\nw: 1:30\nx: .inf\ny: 012\nz: 0x1F\n",
+    "a: true\nb: ~\nc: null\nd: 1e5\ne: 1.0e+5\nf: -.5\ng: 1_000\nh: on\ni: ''\nj: []\nk: {}\n",
+    "problems:\n  - type: x\n    k: 1\n  -   type: y\n      m: [0, 1, 2]\n",
+]
+NOT_LINES = [
+    "a:\n  b\n",                               # a scalar on the next line
+    "a: x\n  y\n",                              # a scalar over two lines
+    "a:\nb: 1\n",                              # an empty value
+    "a:\n- 1\n",                               # a list at its key's indent
+    "a: [1,\n  2]\n",                           # a flow list over lines
+    "a: \"x\\ty\"\n",                           # an escape
+    "a: 'it''s'\n",
+    "a: |\n  text\n",
+    "a: &x 1\n",
+    "a: !!str 1\n",
+    "a: 1\n\tb: 2\n",
+    "a: [1, 2,]\n",
+    "a: {b: }\n",
+    "a: b: c\n",
+    "- 1\n",
+    "1: a\n",
+    "true: a\n",
+    "a: 1\na: 2\n",
+    "---\na: 1\n",
+    "a: 2017-01-01\n",
+    "a: [1]x\n",
+    "a: x\n   # a comment more indented\nb: y\n",
+]
+
+
+@pytest.mark.parametrize("text", LINES + NOT_LINES)
+def test_the_lines_reader_reads_the_block_style_as_the_parser_does_or_leaves_it(text):
+    from dyncli import yamlsafe
+
+    got = _lines(text)
+    if text in LINES:
+        assert got is not None
+    try:
+        general = _image(_general(text))
+    except (yamlsafe.YamlError, yaml.YAMLError):
+        assert got is None
+        return
+    if got is not None:
+        assert _image(got) == general
+    assert _image(yamlsafe.load(text)) == general
+
+
+def test_the_lines_reader_on_examples_changed_at_random():
+    """Examples (their comments dropped) with a few characters inserted, deleted or copied: each
+    text the lines' reader reads, the general builder reads the same (never an error)."""
+    import random
+
+    from dyncli import yamlsafe
+
+    rng = random.Random(31)
+    texts = ["\n".join(ln for ln in p.read_text(encoding="utf-8").split("\n") if not ln.lstrip().startswith("#"))
+             for p in EXAMPLES]
+    pieces = list(" \n-:#,[]{}'\"&*!|>?%@`.0123456789eE+_xé~") + ["  ", "- ", ": ", " #", "\n  ", "true", "null",
+                                                                    "1e5", "0x1F", "1:30", "2017-01-01"]
+    read = 0
+    for _ in range(3000):
+        t = rng.choice(texts)
+        for _ in range(rng.randint(1, 3)):
+            i, op = rng.randrange(len(t) + 1), rng.random()
+            if op < 0.4:
+                t = t[:i] + rng.choice(pieces) + t[i:]
+            elif op < 0.8:
+                t = t[:i] + t[i + rng.randint(1, 3):]
+            else:
+                j = rng.randrange(len(t) + 1)
+                t = t[:i] + t[j:j + 5] + t[i:]
+        got = yamlsafe._lines_pass(t)
+        if got is None:
+            continue
+        read += 1
+        assert _image(got) == _image(_general(t)), repr(t)
+    assert read > 500
