@@ -173,9 +173,11 @@ def Num(
     """A float field accepting numbers and constant expressions."""
 
     def validate(value: Any, info: ValidationInfo) -> float:
-        # a finite float is its own value (to_float's answer, without its questions)
-        v = value if type(value) is float and -math.inf < value < math.inf else \
-            to_float(value, info, allow_inf=allow_inf, dim=dim)
+        # a finite float is its own value, a YAML int of at most 2**53 its float (to_float's
+        # answers, without its questions: every problem's numbers come this way)
+        t = type(value)
+        v = value if t is float and -math.inf < value < math.inf else float(value) if t is int and \
+            -_EXACT <= value <= _EXACT else to_float(value, info, allow_inf=allow_inf, dim=dim)
         if gt is not None and not v > gt:
             raise _err(f"must be > {_fmt(gt)}, got {_fmt(v)}")
         if ge is not None and not v >= ge:
@@ -199,6 +201,9 @@ def Num(
     if description:
         schema["description"] = description
     return FieldSpec(validate, {**schema, **extra})
+
+
+_EXACT = 2 ** 53
 
 
 def _fmt(v: float) -> str:
