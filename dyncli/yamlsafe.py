@@ -3,7 +3,12 @@
 One pass over PyYAML's parser events (the libyaml-based CSafeLoader when
 available, else SafeLoader; :mod:`dyncli.yamlevents`) builds plain data
 straight from the events, with no node graph and no Python object
-constructed by PyYAML:
+constructed by PyYAML.  Two cheaper readers come first, each giving the same
+:class:`Document` or leaving the text to the next (the fixed cost of every
+problem, issue #31): the block style problem files are written in is read by
+its lines (:class:`_Lines`, no parser), and a document of plain data by
+:class:`_Plain` from the parser's events, which hands anything else, with the
+events read so far, to the general builder (one parse either way).  The rules:
 
 * only the standard tags (str, int, float, bool, null, map, seq) are allowed
   -- a ``!!python/...`` or any custom tag is invalid input;
