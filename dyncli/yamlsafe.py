@@ -270,8 +270,7 @@ class _Lines:
         #: (line, indent, content) of the significant lines (not blank, not a comment)
         self.rows: list[tuple[int, int, str]] = [(n, len(raw) - len(c), c.rstrip(" ")) for n, raw in enumerate(lines)
                                                  if (c := raw.lstrip(" ")) and c[0] != "#"]
-        if any(at == 0 and c.startswith(("---", "...", "%")) for _, at, c in self.rows):
-            raise _Bail                         # (a document marker, a directive)
+        # (a document marker or a directive, at the start of a line, is not a key: mapping() bails)
         self.i = 0
         self.doc = Document(None)
         self.pos, self.text, self.key_pos = self.doc.pos.eager, self.doc.text.eager, self.doc.key_pos
@@ -296,11 +295,11 @@ class _Lines:
     def mapping(self, path: tuple, indent: int, depth: int) -> dict:
         """The block mapping whose first key is the row at ``self.i``, its keys at ``indent``."""
         rows, out = self.rows, {}
-        line, _, content = rows[self.i]
-        self.counted(path, line, indent, depth)
-        n, pos, key_pos, tags = len(rows), self.pos, self.key_pos, _TAGS
-        while self.i < n:
-            line, at, content = rows[self.i]
+        i = self.i
+        self.counted(path, rows[i][0], indent, depth)
+        n, pos, key_pos, tags = len(rows), self.pos, self.key_pos, _PLAIN_TAGS
+        while i < n:
+            line, at, content = rows[i]
             if at != indent:
                 if at > indent:
                     raise _Bail                 # (a line more indented: a scalar over lines, an error)
@@ -309,33 +308,34 @@ class _Lines:
             if m is None:
                 raise _Bail
             key, v = m.group(1, 2)
-            if key in out or (tags.get((key, _PLAIN_IMPLICIT)) or _tag_of(key)) != _STR:
+            if key in out or (tags.get(key) or _tag_of(key)) != _STR:
                 raise _Bail                     # (a duplicate, a key YAML reads as true, null...)
             here = path + (key,)
             key_pos[here] = (line + 1, indent + 1)
-            self.i += 1
+            i += 1
             if v is not None and ": " not in v and v[-1] != ":":     # a plain scalar (the common line)
                 self.count += 2
-                if self.count > self.most or self.i < n and rows[self.i][1] > indent:
+                if self.count > self.most or i < n and rows[i][1] > indent:
                     raise _Bail                 # (a cap near; the next line more indented: its continuation)
                 pos[here] = (line + 1, indent + m.start(2) + 1)
-                tag = tags.get((v, _PLAIN_IMPLICIT)) or _tag_of(v)
-                out[key] = v if tag == _STR else None if tag == _NULL else self.scalar(v, here)
+                tag = tags.get(v) or _tag_of(v)
+                out[key] = v if tag == _STR else None if tag == _NULL else self.typed(v, tag, here)
                 continue
             self.count += 1
+            self.i = i
             rest = content[m.end(1) + 1:].lstrip(" ")
             if rest and rest[0] != "#":
                 out[key] = self.inline(rest, line, indent + len(content) - len(rest), here, depth + 1)
-                continue
-            if self.i == n or rows[self.i][1] <= indent:
+            elif i == n or rows[i][1] <= indent:
                 raise _Bail                     # (an empty value: null, its mark where the next token is)
-            _, inner, nxt = rows[self.i]
-            if nxt[0] == "-" and (len(nxt) == 1 or nxt[1] == " "):
-                out[key] = self.sequence(here, inner, depth + 1)
+            elif (nxt := rows[i][2])[0] == "-" and (len(nxt) == 1 or nxt[1] == " "):
+                out[key] = self.sequence(here, rows[i][1], depth + 1)
             elif _KEY(nxt) is not None:
-                out[key] = self.mapping(here, inner, depth + 1)
+                out[key] = self.mapping(here, rows[i][1], depth + 1)
             else:
                 raise _Bail
+            i = self.i
+        self.i = i
         return out
 
     def sequence(self, path: tuple, indent: int, depth: int) -> list:
@@ -405,11 +405,11 @@ class _Lines:
         return value
 
     def scalar(self, v: str, path: tuple) -> Any:
-        tag = _TAGS.get((v, _PLAIN_IMPLICIT)) or _tag_of(v)
-        if tag == _STR:
-            return v
-        if tag == _NULL:
-            return None
+        tag = _PLAIN_TAGS.get(v) or _tag_of(v)
+        return v if tag == _STR else None if tag == _NULL else self.typed(v, tag, path)
+
+    def typed(self, v: str, tag: str, path: tuple) -> Any:
+        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
         if tag != _INT and tag != _FLOAT and tag != _BOOL:
             raise _Bail
         self.text[path] = v
@@ -455,7 +455,7 @@ class _Lines:
                 if m is None:
                     raise _Bail
                 key = m.group()
-                if key in out or (_TAGS.get((key, _PLAIN_IMPLICIT)) or _tag_of(key)) != _STR:
+                if key in out or (_PLAIN_TAGS.get(key) or _tag_of(key)) != _STR:
                     raise _Bail
                 self.count += 1
                 here = path + (key,)
@@ -525,15 +525,19 @@ _FLOW_NUMBER = re.compile(r"[-+]?(?:0|[1-9][0-9]*|[0-9]+\.[0-9]*(?:[eE][-+][0-9]
 
 
 def _tag_of(value: str) -> str:
-    """The tag a plain scalar's text resolves to (remembered as :func:`_resolved` does)."""
+    """The tag a plain scalar's text resolves to (remembered by its text, as :func:`_resolved`
+    remembers it by text and implicit flags)."""
     import yaml
 
     if not _RESOLVER:
         _RESOLVER.append(yaml.resolver.Resolver())
     tag = _RESOLVER[0].resolve(yaml.ScalarNode, value, _PLAIN_IMPLICIT)
-    if len(_TAGS) < 4096:
-        _TAGS[(value, _PLAIN_IMPLICIT)] = tag
+    if len(_PLAIN_TAGS) < 4096:
+        _PLAIN_TAGS[value] = tag
     return tag
+
+
+_PLAIN_TAGS: dict[str, str] = {}      # a plain scalar's text -> its resolved tag (for _Lines)
 
 
 class _Bail(Exception):
