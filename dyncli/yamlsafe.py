@@ -265,7 +265,7 @@ class _Lines:
 
     def __init__(self, text: str):
         lines = text.split("\n")
-        if max(map(len, lines)) > 1000 or not all(map(str.isprintable, lines)):
+        if max(map(len, lines)) > 1000 or not text.replace("\n", " ").isprintable():
             raise _Bail           # (a long flow list: the scan of _flow_numbers; a tab, a control character)
         #: (line, indent, content) of the significant lines (not blank, not a comment)
         self.rows: list[tuple[int, int, str]] = [(n, len(raw) - len(c), c.rstrip(" ")) for n, raw in enumerate(lines)
@@ -450,6 +450,18 @@ class _Lines:
                 else:
                     value, j = self.flow_scalar(s, j, line, col0, here, depth + 1)
                 out.append(value)
+            elif (m := _FLOW_PAIR(s, j)) is not None:     # key: plain scalar (the common entry)
+                key, v = m.group(1, 2)
+                if key in out or (_PLAIN_TAGS.get(key) or _tag_of(key)) != _STR or depth + 1 >= self.deepest:
+                    raise _Bail
+                self.count += 2
+                if self.count > self.most:
+                    raise _Bail
+                here = path + (key,)
+                self.key_pos[here] = (line + 1, col0 + j + 1)
+                self.pos[here] = (line + 1, col0 + m.start(2) + 1)
+                out[key] = self.scalar(v, here)
+                j = m.end()
             else:
                 m = _FLOW_KEY(s, j)
                 if m is None:
@@ -520,6 +532,9 @@ def _comment_only(s: str, end: int) -> None:
 
 
 _FLOW_KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*(?=: )").match
+#: ``key: value`` in a flow mapping, the value a plain scalar (as :data:`_FLOW_PLAIN`) ending at ``,`` or ``}``
+_FLOW_PAIR = re.compile(r"([A-Za-z_][A-Za-z0-9_.\-]*): +([^\s,\[\]{}:#'\"&*!|>%@`?-][^,\[\]{}:#]*?"
+                        r"|-[^\s,\[\]{}:#][^,\[\]{}:#]*?) *(?=[,}])").match
 #: a plain number (as :data:`_NUMBER` reads it) that ends where a flow scalar ends
 _FLOW_NUMBER = re.compile(r"[-+]?(?:0|[1-9][0-9]*|[0-9]+\.[0-9]*(?:[eE][-+][0-9]+)?)(?= *[,\]])").match
 
