@@ -8,6 +8,7 @@ model class, evaluates ``params`` and validates with pydantic (context
 
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -218,6 +219,8 @@ def params_of(raw: dict) -> dict[str, float]:
 def _gravity(value, params: dict[str, float]) -> float:
     """The value of the problem's ``g`` field for use in expressions (9.81
     when it cannot be read here; the model's validation reports the error)."""
+    if type(value) is float and -math.inf < value < math.inf:
+        return value                    # (to_float's answer for a finite float: the default 9.81)
     from dyncli.fields import to_float
 
     try:
