@@ -67,12 +67,46 @@ _FIELDS: dict[Any, list[tuple[str, str, bool]]] = {}
 
 
 def _fields(cls: Any) -> list[tuple[str, str, bool]]:
-    """(name, key as written, is an angle) of every field of a model class,
-    worked out once per class (every solve asks)."""
+    """(name, key as written, is an angle) of the fields of a model class that are angles or may
+    hold a model with one (a field declared as numbers, text, a choice, or a model with no such
+    field anywhere can hold none and is left out), worked out once per class (every solve asks)."""
     out = _FIELDS.get(cls)
     if out is None:
-        out = _FIELDS[cls] = [(name, info.alias or name, is_angle(info)) for name, info in cls.model_fields.items()]
+        _BUSY.add(cls)
+        try:
+            out = [(name, info.alias or name, angle) for name, info in cls.model_fields.items()
+                   if (angle := is_angle(info)) or _may_hold_angles(info.annotation)]
+        finally:
+            _BUSY.discard(cls)
+        _FIELDS[cls] = out
     return out
+
+
+_BUSY: set = set()       # the classes whose fields are being worked out (a model that may hold itself)
+
+
+_PLAIN = (float, int, str, bool, type(None))
+
+
+def _may_hold_angles(tp: Any) -> bool:
+    """Whether a value of the declared type ``tp`` may be, or hold, a model with an angle field:
+    False for numbers, text, choices and containers of them, and for a model whose fields hold
+    none; True for anything not declared so plainly (``Any``, a bare ``tuple``, another class)."""
+    from pydantic import BaseModel
+
+    if tp in _PLAIN or tp is Ellipsis:
+        return False
+    if isinstance(tp, type) and issubclass(tp, BaseModel):
+        return tp in _BUSY or bool(_fields(tp))
+    origin = typing.get_origin(tp)
+    if origin is typing.Literal:
+        return False
+    if origin is typing.Annotated:
+        return _may_hold_angles(typing.get_args(tp)[0])
+    args = typing.get_args(tp)
+    if origin is None or not args:
+        return True
+    return any(_may_hold_angles(a) for a in args)
 
 
 def _bare(written: Any) -> float | None:

@@ -14,8 +14,9 @@ a report).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any
 
 from dyncli.errors import InputError, NumericalError
 from dyncli.results_map import results_of, units_of
@@ -95,6 +96,8 @@ def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
     """numpy values, tuples and paths in a mapping -> plain YAML data.  A
     mapping or list that contains itself, or nested deeper than a problem
     file may be (yamlsafe.MAX_DEPTH), is InputError naming where."""
+    if type(x) in _LEAVES:
+        return x                  # (what the rest would return, without its questions)
     from dyncli.yamlsafe import MAX_DEPTH
 
     if isinstance(x, (Mapping, list, tuple)):
@@ -113,6 +116,9 @@ def _plain(x: Any, where: str = "", _open: tuple = ()) -> Any:
     return x
 
 
+_LEAVES = frozenset({str, int, float, bool, type(None)})
+
+
 def load(source: Any):
     """(loaded problems, diagnostics) of a path, a YAML text or a mapping."""
     from dyncli.loader import load_paths, split_problems, validate
@@ -123,16 +129,29 @@ def load(source: Any):
             data = _plain(source)
         except InputError as exc:
             raise _input_error([f"<dict>: {exc.message}"]) from None
-        problems, diags = split_problems("<dict>", Document(data), Path.cwd())
+        problems, diags = split_problems("<dict>", Document(data), _cwd())
     elif isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and ":" not in source.replace("\\", "/").split("/")[-1]):
         return load_paths([str(source)])
     elif isinstance(source, (str, bytes)):
-        problems, diags = split_problems("<text>", source, Path.cwd())
+        problems, diags = split_problems("<text>", source, _cwd())
     else:
         raise TypeError(f"dyncli.solve: expected a path, a YAML text or a mapping, got {type(source).__name__}")
     for p in problems:
         validate(p)
     return problems, diags
+
+
+_CWD: list = [None, None]       # (the working directory's name, its Path): made again when it changes
+
+
+def _cwd() -> Path:
+    """``Path.cwd()``, the Path made once per working directory (every problem asks)."""
+    import os
+
+    here = os.getcwd()
+    if _CWD[0] != here:
+        _CWD[:] = [here, Path(here)]
+    return _CWD[1]
 
 
 def _assigns(overrides: Mapping[str, Any], sweeps: Mapping[str, Any] | None) -> list:

@@ -63,20 +63,27 @@ GRACE = 0.25
 _SOLVE: contextvars.ContextVar = contextvars.ContextVar("dyncli_solve_cpu", default=None)
 
 
-@contextlib.contextmanager
-def solve_budget(accuracy):
+class solve_budget:
     """The CPU budget of one solve, read by the work budgets of its routes
     (:func:`over_budget`): ``accuracy.max_cpu`` when given; else :data:`SOLVE_CPU` unless
     ``accuracy.max_steps`` is given (a user who sized the work in steps chose it); ``None``
-    for types without accuracy controls."""
-    limit = getattr(accuracy, "max_cpu", None)
-    if limit is None and accuracy is not None and getattr(accuracy, "max_steps", None) is None:
-        limit = SOLVE_CPU
-    token = _SOLVE.set(None if limit is None else (time.thread_time(), float(limit)))
-    try:
-        yield
-    finally:
-        _SOLVE.reset(token)
+    for types without accuracy controls.  ``with solve_budget(accuracy): ...`` (a class, not a
+    generator: it is entered once per solve, a fixed cost of every problem)."""
+
+    __slots__ = ("_limit", "_token")
+
+    def __init__(self, accuracy):
+        limit = getattr(accuracy, "max_cpu", None)
+        if limit is None and accuracy is not None and getattr(accuracy, "max_steps", None) is None:
+            limit = SOLVE_CPU
+        self._limit = limit
+
+    def __enter__(self) -> None:
+        self._token = _SOLVE.set(None if self._limit is None else (time.thread_time(), float(self._limit)))
+
+    def __exit__(self, *exc) -> bool:
+        _SOLVE.reset(self._token)
+        return False
 
 
 @contextlib.contextmanager

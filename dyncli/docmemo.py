@@ -25,8 +25,13 @@ class Unkeyable(Exception):
     """The data is not plain (or too deep): it has no fingerprint."""
 
 
+_SCALARS = frozenset({str, int, bool, type(None)})
+
+
 def fingerprint(x: Any, depth: int = 0) -> Hashable:
-    """A hashable, type-exact image of plain data; raises :class:`Unkeyable` otherwise."""
+    """A hashable, type-exact image of plain data; raises :class:`Unkeyable` otherwise.
+    (A container's plain items are imaged in place, the same as :func:`fingerprint` of each:
+    a params mapping or a list of numbers costs one call, not one per item.)"""
     t = type(x)
     if t is str or t is int or t is bool or x is None:
         return (t, x)
@@ -34,19 +39,25 @@ def fingerprint(x: Any, depth: int = 0) -> Hashable:
         return (t, x.hex())                         # -0.0 and 0.0 apart, a NaN equal to itself
     if depth >= DEPTH:
         raise Unkeyable
+    d, scalars = depth + 1, _SCALARS
     if t is list or t is tuple:
-        return (t, tuple([fingerprint(v, depth + 1) for v in x]))
+        return (t, tuple([(float, v.hex()) if (u := type(v)) is float else (u, v) if u in scalars
+                          else fingerprint(v, d) for v in x]))
     if t is dict:
-        return (t, tuple([(fingerprint(k, depth + 1), fingerprint(v, depth + 1)) for k, v in x.items()]))
+        return (t, tuple([((u, k) if (u := type(k)) in scalars else fingerprint(k, d),
+                           (float, v.hex()) if (w := type(v)) is float else (w, v) if w in scalars
+                           else fingerprint(v, d)) for k, v in x.items()]))
     raise Unkeyable
 
 
-def recall(kind: str, data: Any, compute: Callable[[], Any], still: Callable[[Any], bool] | None = None) -> Any:
+def recall(kind: str, data: Any, compute: Callable[[], Any], still: Callable[[Any], bool] | None = None,
+           print_: Hashable | None = None) -> Any:
     """``compute()`` for ``data`` (its value remembered under ``kind`` and the fingerprint of
-    ``data``); ``still(value)``: whether a remembered value holds for this call (else computed
-    again).  The caller must not change the value it is given (a shared one)."""
+    ``data``, or ``print_`` when the caller made that fingerprint already); ``still(value)``: whether
+    a remembered value holds for this call (else computed again).  The caller must not change the
+    value it is given (a shared one)."""
     try:
-        key = (kind, fingerprint(data))
+        key = (kind, fingerprint(data) if print_ is None else print_)
     except (Unkeyable, RecursionError):
         return compute()
     got = _MEMO.get(key, _MEMO)

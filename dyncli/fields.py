@@ -98,6 +98,28 @@ def _params(info: ValidationInfo | None) -> dict[str, float]:
     return ctx.get("params", {})
 
 
+def _params_print(info: ValidationInfo | None) -> Any:
+    """The fingerprint of the context's params (:func:`dyncli.docmemo.fingerprint`, the key of the
+    constants' memo), made at the first expression of a validation and kept in its context (the
+    params of one validation do not change); None when there is none to keep."""
+    ctx = getattr(info, "context", None)
+    params = ctx.get("params") if type(ctx) is dict else None
+    if type(params) is not dict:
+        return None
+    got = ctx.get(_PRINT)
+    if got is None or got[0] is not params:
+        from dyncli.docmemo import Unkeyable, fingerprint
+
+        try:
+            got = ctx[_PRINT] = (params, fingerprint(params))
+        except (Unkeyable, RecursionError):
+            return None
+    return got[1]
+
+
+_PRINT = "params fingerprint"       # (a key no context is given by a caller)
+
+
 def _err(msg: str) -> PydanticCustomError:
     # the message travels as context: pydantic renders "{msg}" with it and
     # never reads braces inside it (a quoted "f'{1}'" stays as written)
@@ -116,7 +138,7 @@ def to_float(value: Any, info: ValidationInfo | None = None, *, allow_inf: bool 
             raise _err("number is too large") from None
     elif isinstance(value, str):
         try:
-            v = _expr.constant(value, _params(info))
+            v = _expr.constant(value, _params(info), _params_print(info))
         except InputError as exc:
             from dyncli import units
 
@@ -151,7 +173,11 @@ def Num(
     """A float field accepting numbers and constant expressions."""
 
     def validate(value: Any, info: ValidationInfo) -> float:
-        v = to_float(value, info, allow_inf=allow_inf, dim=dim)
+        # a finite float is its own value, a YAML int of at most 2**53 its float (to_float's
+        # answers, without its questions: every problem's numbers come this way)
+        t = type(value)
+        v = value if t is float and -math.inf < value < math.inf else float(value) if t is int and \
+            -_EXACT <= value <= _EXACT else to_float(value, info, allow_inf=allow_inf, dim=dim)
         if gt is not None and not v > gt:
             raise _err(f"must be > {_fmt(gt)}, got {_fmt(v)}")
         if ge is not None and not v >= ge:
@@ -175,6 +201,9 @@ def Num(
     if description:
         schema["description"] = description
     return FieldSpec(validate, {**schema, **extra})
+
+
+_EXACT = 2 ** 53
 
 
 def _fmt(v: float) -> str:

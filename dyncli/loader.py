@@ -8,8 +8,10 @@ model class, evaluates ``params`` and validates with pydantic (context
 
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -111,7 +113,7 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
     except YamlError as exc:
         return [], [Diagnostic(display, exc.line, exc.col, None, exc.message)]
     data = doc.data
-    default_title = Path(display).name if display != "<stdin>" else "stdin"
+    default_title = _file_name(display) if display != "<stdin>" else "stdin"
     if isinstance(data, dict) and "problems" in data and "type" not in data:
         extra = [k for k in data if k != "problems"]
         if extra:
@@ -141,6 +143,12 @@ def split_problems(display: str, data: bytes | str | Document, base_dir: Path | 
             title = default_title if len(items) == 1 else f"{default_title} #{i + 1}"
         out.append(LoadedProblem(display, i, t if isinstance(t, str) else None, title, item, doc, prefix, base_dir=base_dir))
     return out, []
+
+
+@lru_cache(maxsize=256)
+def _file_name(display: str) -> str:
+    """``Path(display).name`` (the default title), worked out once per name."""
+    return Path(display).name
 
 
 def validate(lp: LoadedProblem) -> None:
@@ -211,6 +219,8 @@ def params_of(raw: dict) -> dict[str, float]:
 def _gravity(value, params: dict[str, float]) -> float:
     """The value of the problem's ``g`` field for use in expressions (9.81
     when it cannot be read here; the model's validation reports the error)."""
+    if type(value) is float and -math.inf < value < math.inf:
+        return value                    # (to_float's answer for a finite float: the default 9.81)
     from dyncli.fields import to_float
 
     try:

@@ -277,6 +277,8 @@ def expand(problems: list, assigns: list[Assign], lazy: bool = False):
     one once per point of its source: dyncli.chain.link).  Raises :class:`OverrideError` for a path
     that no problem has, or a product beyond ``MAX_POINTS``.  ``lazy``: an iterator making them one at
     a time (a streamed output holds one point; not when a problem is chained: it needs its source's)."""
+    if not assigns and not any(getattr(lp, "chain", None) for lp in problems):
+        return iter(problems) if lazy else list(problems)     # (each problem once, as it is)
     points = _points(problems, assigns)
     if lazy and not any(getattr(lp, "chain", None) for lp in problems):
         return points

@@ -121,12 +121,18 @@ def _load(ref: Any) -> Any:
 def available(name: str) -> bool:
     """True when the type's model and solver modules exist."""
     info = TYPES[name]
+    if _AVAILABLE.get(name) is info:
+        return True
     try:
         _load(info.ref(info.model))
         _load(info.ref(info.solve))
     except (ImportError, AttributeError):
         return False
+    _AVAILABLE[name] = info
     return True
+
+
+_AVAILABLE: dict[str, Any] = {}     # name -> the declaration found available (every problem asks)
 
 
 def model_class(name: str):

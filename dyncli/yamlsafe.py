@@ -3,7 +3,12 @@
 One pass over PyYAML's parser events (the libyaml-based CSafeLoader when
 available, else SafeLoader; :mod:`dyncli.yamlevents`) builds plain data
 straight from the events, with no node graph and no Python object
-constructed by PyYAML:
+constructed by PyYAML.  Two cheaper readers come first, each giving the same
+:class:`Document` or leaving the text to the next (the fixed cost of every
+problem, issue #31): the block style problem files are written in is read by
+its lines (:class:`_Lines`, no parser), and a document of plain data by
+:class:`_Plain` from the parser's events, which hands anything else, with the
+events read so far, to the general builder (one parse either way).  The rules:
 
 * only the standard tags (str, int, float, bool, null, map, seq) are allowed
   -- a ``!!python/...`` or any custom tag is invalid input;
@@ -172,7 +177,7 @@ def load(text: str | bytes) -> Document:
                 return _one_pass(lists[0], loader, lists[1])
             except Exception:               # anything unexpected (an error, a list not met as a list):
                 pass                        # the text as written, the ordinary way (the same values, errors)
-        return _one_pass(text, loader)
+        return _lines_pass(text) or _plain_pass(text, loader)
     except yaml.MarkedYAMLError as exc:
         m = exc.problem_mark or exc.context_mark
         tab = _tab_near(text, m.line if m is not None else None, m.column if m is not None else None)
@@ -227,6 +232,515 @@ def _one_pass(text: str, loader, lists: dict | None = None) -> Document:
     if lists:
         raise _Unmet()                      # a blanked list was not read as a list (inside a string...)
     return builder.doc
+
+
+def _lines_pass(text: str) -> Document | None:
+    """The :class:`Document` of ``text`` read line by line by :class:`_Lines` when it is written
+    in the common block style (see there), else None (the parser reads it)."""
+    try:
+        return _Lines(text).document()
+    except _Bail:
+        return None
+
+
+_KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*(?=:(?: |$))").match     # a key of the block style (text)
+_FLOW_PLAIN = re.compile(r"[^\s,\[\]{}:#'\"&*!|>%@`?][^,\[\]{}:#]*").match   # a plain scalar inside [...] or {...}
+_STARTS = frozenset("[]{},#&*!|>'\"%@`?:")      # what a plain scalar may not start with
+#: a row ``key: value``: the key, and the value when it is a plain scalar with no ``#`` (else None)
+_ROW = re.compile(r"([A-Za-z_][A-Za-z0-9_.\-]*):(?: +(?:#.*|([^\s\[\]{},#&*!|>'\"%@`?:-][^#]*|-[^\s#][^#]*)|.*))?$").match
+_PLAIN_IMPLICIT = (True, False)
+
+
+class _Lines:
+    """A reader of the block style every problem file is written in, by its lines (no parser):
+    a mapping of ``key: value`` lines (keys are names), a value a plain or quoted scalar on its
+    line, a flow list or mapping closed on its line, or a block mapping or list indented under
+    its key; list items ``- value`` or ``- key: value`` (a mapping).  It records what the
+    parser's events would give :class:`_Plain` -- values, positions (the parser's marks:
+    a block collection at its first key or ``-``, a flow one at its bracket, a scalar at its
+    first character or quote), texts, runs of plain numbers -- and raises :class:`_Bail` at
+    anything else (an empty value, a scalar over several lines, an escape, an anchor, a tag,
+    a key that is not a name, a duplicate, a value to refuse, a cap near...): the parser then
+    reads the text, which gives the same Document or the error."""
+
+    def __init__(self, text: str):
+        lines = text.split("\n")
+        if max(map(len, lines)) > 1000 or not text.replace("\n", " ").isprintable():
+            raise _Bail           # (a long flow list: the scan of _flow_numbers; a tab, a control character)
+        #: (line, indent, content) of the significant lines (not blank, not a comment)
+        self.rows: list[tuple[int, int, str]] = [(n, len(raw) - len(c), c.rstrip(" ")) for n, raw in enumerate(lines)
+                                                 if (c := raw.lstrip(" ")) and c[0] != "#"]
+        # (a document marker or a directive, at the start of a line, is not a key: mapping() bails)
+        self.i = 0
+        self.doc = Document(None)
+        self.pos, self.text, self.key_pos = self.doc.pos.eager, self.doc.text.eager, self.doc.key_pos
+        self.count = 0
+        self.most = MAX_NODES - 2
+        self.deepest = MAX_DEPTH - 2
+
+    def document(self) -> Document:
+        if not self.rows or self.rows[0][1] != 0 or _KEY(self.rows[0][2]) is None:
+            raise _Bail                         # (a document that is not a mapping of names)
+        self.doc.data = self.mapping((), 0, 0)
+        if self.i != len(self.rows):
+            raise _Bail
+        return self.doc
+
+    def counted(self, path: tuple, line: int, col: int, depth: int) -> None:
+        self.count += 1
+        if self.count > self.most or depth >= self.deepest:
+            raise _Bail
+        self.pos[path] = (line + 1, col + 1)
+
+    def mapping(self, path: tuple, indent: int, depth: int) -> dict:
+        """The block mapping whose first key is the row at ``self.i``, its keys at ``indent``."""
+        rows, out = self.rows, {}
+        i = self.i
+        self.counted(path, rows[i][0], indent, depth)
+        n, pos, key_pos, tags = len(rows), self.pos, self.key_pos, _PLAIN_TAGS
+        while i < n:
+            line, at, content = rows[i]
+            if at != indent:
+                if at > indent:
+                    raise _Bail                 # (a line more indented: a scalar over lines, an error)
+                break
+            m = _ROW(content)
+            if m is None:
+                raise _Bail
+            key, v = m.group(1, 2)
+            if key in out or (tags.get(key) or _tag_of(key)) != _STR:
+                raise _Bail                     # (a duplicate, a key YAML reads as true, null...)
+            here = path + (key,)
+            key_pos[here] = (line + 1, indent + 1)
+            i += 1
+            if v is not None and ": " not in v and v[-1] != ":":     # a plain scalar (the common line)
+                self.count += 2
+                if self.count > self.most or i < n and rows[i][1] > indent:
+                    raise _Bail                 # (a cap near; the next line more indented: its continuation)
+                pos[here] = (line + 1, indent + m.start(2) + 1)
+                tag = tags.get(v) or _tag_of(v)
+                out[key] = v if tag == _STR else None if tag == _NULL else self.typed(v, tag, here)
+                continue
+            self.count += 1
+            self.i = i
+            rest = content[m.end(1) + 1:].lstrip(" ")
+            if rest and rest[0] != "#":
+                out[key] = self.inline(rest, line, indent + len(content) - len(rest), here, depth + 1)
+            elif i == n or rows[i][1] <= indent:
+                raise _Bail                     # (an empty value: null, its mark where the next token is)
+            elif (nxt := rows[i][2])[0] == "-" and (len(nxt) == 1 or nxt[1] == " "):
+                out[key] = self.sequence(here, rows[i][1], depth + 1)
+            elif _KEY(nxt) is not None:
+                out[key] = self.mapping(here, rows[i][1], depth + 1)
+            else:
+                raise _Bail
+            i = self.i
+        self.i = i
+        return out
+
+    def sequence(self, path: tuple, indent: int, depth: int) -> list:
+        """The block list whose first ``-`` is the row at ``self.i``, at ``indent``."""
+        rows, out = self.rows, []
+        self.counted(path, rows[self.i][0], indent, depth)
+        marks: list[int] = []
+        texts: list[str] = []
+        while self.i < len(rows):
+            line, at, content = rows[self.i]
+            if at != indent:
+                if at > indent:
+                    raise _Bail
+                break
+            if content[0] != "-" or len(content) < 3 or content[1] != " ":
+                raise _Bail                     # (not an item, or an item with nothing on its line)
+            rest = content[2:].lstrip(" ")
+            col = indent + len(content) - len(rest)
+            here = path + (len(out),)
+            if _KEY(rest) is not None:          # "- key: value ...": a mapping, its keys at col
+                self.rows[self.i] = (line, col, rest)
+                out.append(self.mapping(here, col, depth + 1))
+                continue
+            self.i += 1
+            if not out or len(marks) == len(out):
+                v = rest.split(" #", 1)[0].rstrip(" ") if rest[0] not in _STARTS else ""
+                if v and _NUMBER(v) is not None and not (v[0] == "-" and v[1:2] == " "):
+                    self.count += 1
+                    if self.count > self.most:
+                        raise _Bail
+                    out.append(float(v) if "." in v else int(v))
+                    marks.append(line << _SHIFT | col)
+                    texts.append(v)
+                    self.next_shallower(indent)
+                    continue
+            out.append(self.inline(rest, line, col, here, depth + 1))
+        if marks:
+            self.doc.pos.runs[path] = (marks, _unpack)
+            self.doc.text.runs[path] = (texts, None)
+        return out
+
+    def next_shallower(self, indent: int) -> None:
+        """A plain scalar ends its line: the next row may not be more indented (its continuation)."""
+        if self.i < len(self.rows) and self.rows[self.i][1] > indent:
+            raise _Bail
+
+    def inline(self, rest: str, line: int, col: int, path: tuple, depth: int) -> Any:
+        """The value written on its line from column ``col`` (``rest``, not a comment)."""
+        c = rest[0]
+        if c == "[" or c == "{":
+            value, end = self.flow(rest, 0, line, col, path, depth)
+            _comment_only(rest, end)
+        elif c == '"' or c == "'":
+            end = _closing(rest, 0)
+            _comment_only(rest, end)
+            self.counted(path, line, col, depth)
+            value = rest[1:end - 1]
+        else:
+            if c in _STARTS or c == "-" and (len(rest) == 1 or rest[1] == " "):
+                raise _Bail
+            v = rest.split(" #", 1)[0].rstrip(" ")
+            if ": " in v or v[-1] == ":":
+                raise _Bail
+            self.counted(path, line, col, depth)
+            value = self.scalar(v, path)
+        self.next_shallower(self.rows[self.i - 1][1])
+        return value
+
+    def scalar(self, v: str, path: tuple) -> Any:
+        tag = _PLAIN_TAGS.get(v) or _tag_of(v)
+        return v if tag == _STR else None if tag == _NULL else self.typed(v, tag, path)
+
+    def typed(self, v: str, tag: str, path: tuple) -> Any:
+        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
+        if tag != _INT and tag != _FLOAT and tag != _BOOL:
+            raise _Bail
+        self.text[path] = v
+        try:
+            if tag != _BOOL and _NUMBER(v) is not None:
+                return float(v) if "." in v else int(v)
+            return _scalar(tag, v)
+        except (ValueError, OverflowError, IndexError):       # (an int of more digits than Python reads)
+            raise _Bail from None
+
+    def flow(self, s: str, j: int, line: int, col0: int, path: tuple, depth: int) -> tuple[Any, int]:
+        """The flow list or mapping at ``s[j]`` (``[`` or ``{``) of a line whose ``s[0]`` is at
+        column ``col0``, closed on the line, and the index after it."""
+        self.counted(path, line, col0 + j, depth)
+        is_list = s[j] == "["
+        close = "]" if is_list else "}"
+        out: Any = [] if is_list else {}
+        marks: list[int] = []
+        texts: list[str] = []
+        n = len(s)
+        j = _skip(s, j + 1)
+        if j < n and s[j] == close:
+            return out, j + 1
+        while j < n:
+            if is_list:
+                here = path + (len(out),)
+                if s[j] == "[" or s[j] == "{":
+                    value, j = self.flow(s, j, line, col0, here, depth + 1)
+                elif len(marks) == len(out) and (m := _FLOW_NUMBER(s, j)) is not None:
+                    v = m.group()                 # the leading run of plain numbers (_Builder.numbers)
+                    self.count += 1
+                    if self.count > self.most:
+                        raise _Bail
+                    value = float(v) if "." in v else int(v)
+                    marks.append(line << _SHIFT | (col0 + j))
+                    texts.append(v)
+                    j = m.end()
+                else:
+                    value, j = self.flow_scalar(s, j, line, col0, here, depth + 1)
+                out.append(value)
+            elif (m := _FLOW_PAIR(s, j)) is not None:     # key: plain scalar (the common entry)
+                key, v = m.group(1, 2)
+                if key in out or (_PLAIN_TAGS.get(key) or _tag_of(key)) != _STR or depth + 1 >= self.deepest:
+                    raise _Bail
+                self.count += 2
+                if self.count > self.most:
+                    raise _Bail
+                here = path + (key,)
+                self.key_pos[here] = (line + 1, col0 + j + 1)
+                self.pos[here] = (line + 1, col0 + m.start(2) + 1)
+                out[key] = self.scalar(v, here)
+                j = m.end()
+            else:
+                m = _FLOW_KEY(s, j)
+                if m is None:
+                    raise _Bail
+                key = m.group()
+                if key in out or (_PLAIN_TAGS.get(key) or _tag_of(key)) != _STR:
+                    raise _Bail
+                self.count += 1
+                here = path + (key,)
+                self.key_pos[here] = (line + 1, col0 + j + 1)
+                j = _skip(s, m.end() + 1)
+                if j >= n or s[j] == "," or s[j] == "}":
+                    raise _Bail                 # (an empty value)
+                if s[j] == "[" or s[j] == "{":
+                    out[key], j = self.flow(s, j, line, col0, here, depth + 1)
+                else:
+                    out[key], j = self.flow_scalar(s, j, line, col0, here, depth + 1)
+            j = _skip(s, j)
+            if j < n and s[j] == close:
+                if marks:
+                    self.doc.pos.runs[path] = (marks, _unpack)
+                    self.doc.text.runs[path] = (texts, None)
+                return out, j + 1
+            if j >= n or s[j] != ",":
+                break
+            j = _skip(s, j + 1)
+            if j < n and s[j] == close:
+                break                           # (a comma before the bracket)
+        raise _Bail
+
+    def flow_scalar(self, s: str, j: int, line: int, col0: int, path: tuple, depth: int) -> tuple[Any, int]:
+        """A scalar inside a flow collection at ``s[j]`` and the index after it."""
+        self.counted(path, line, col0 + j, depth)
+        c = s[j]
+        if c == '"' or c == "'":
+            end = _closing(s, j)
+            return s[j + 1:end - 1], end
+        m = _FLOW_PLAIN(s, j)
+        if m is None or c == "-" and s[j + 1:j + 2] in (" ", ",", "]", "}", ""):
+            raise _Bail
+        v = m.group().rstrip(" ")
+        return self.scalar(v, path), j + len(v)
+
+
+def _skip(s: str, j: int) -> int:
+    """The index of the first character from ``j`` that is not a space."""
+    n = len(s)
+    while j < n and s[j] == " ":
+        j += 1
+    return j
+
+
+def _closing(s: str, j: int) -> int:
+    """The index after the quote that closes the quoted scalar at ``s[j]`` on its line (no
+    escape, no doubled quote: those are the parser's)."""
+    q = s[j]
+    end = s.find(q, j + 1)
+    if end < 0 or "\\" in s[j:end] or s[end + 1:end + 2] == q:
+        raise _Bail
+    return end + 1
+
+
+def _comment_only(s: str, end: int) -> None:
+    """Nothing after ``s[:end]`` on its line but spaces and a comment after a space."""
+    tail = s[end:]
+    if tail and (tail[0] != " " or tail.lstrip(" ")[:1] not in ("", "#")):
+        raise _Bail
+
+
+_FLOW_KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*(?=: )").match
+#: ``key: value`` in a flow mapping, the value a plain scalar (as :data:`_FLOW_PLAIN`) ending at ``,`` or ``}``
+_FLOW_PAIR = re.compile(r"([A-Za-z_][A-Za-z0-9_.\-]*): +([^\s,\[\]{}:#'\"&*!|>%@`?-][^,\[\]{}:#]*?"
+                        r"|-[^\s,\[\]{}:#][^,\[\]{}:#]*?) *(?=[,}])").match
+#: a plain number (as :data:`_NUMBER` reads it) that ends where a flow scalar ends
+_FLOW_NUMBER = re.compile(r"[-+]?(?:0|[1-9][0-9]*|[0-9]+\.[0-9]*(?:[eE][-+][0-9]+)?)(?= *[,\]])").match
+
+
+def _tag_of(value: str) -> str:
+    """The tag a plain scalar's text resolves to (remembered by its text, as :func:`_resolved`
+    remembers it by text and implicit flags)."""
+    import yaml
+
+    if not _RESOLVER:
+        _RESOLVER.append(yaml.resolver.Resolver())
+    tag = _RESOLVER[0].resolve(yaml.ScalarNode, value, _PLAIN_IMPLICIT)
+    if len(_PLAIN_TAGS) < 4096:
+        _PLAIN_TAGS[value] = tag
+    return tag
+
+
+_PLAIN_TAGS: dict[str, str] = {}      # a plain scalar's text -> its resolved tag (for _Lines)
+
+
+class _Bail(Exception):
+    """:class:`_Plain` meets what only :class:`_Builder` handles (an anchor, an alias, a tag, a
+    key that is not text, a value to refuse, a cap near): the events read so far are handed over."""
+
+
+class _Replay:
+    """A loader whose events are ``seen`` (already read from ``loader``) and then the rest of
+    ``loader``'s: :func:`_one_pass` carries on where :class:`_Plain` stopped, with no second parse."""
+
+    def __init__(self, seen: list, loader):
+        self._seen, self._i, self._loader = seen, 0, loader
+
+    def get_event(self):
+        if self._i < len(self._seen):
+            self._i += 1
+            return self._seen[self._i - 1]
+        return self._loader.get_event()
+
+    def dispose(self) -> None:
+        self._loader.dispose()
+
+
+def _plain_pass(text: str, loader) -> Document:
+    """The document of ``text`` read by :class:`_Plain` (a document of plain data: no anchor, alias
+    or tag, text keys, nothing to refuse, far from the caps: every problem file as usually written),
+    else by :func:`_one_pass`, which is handed the events read so far -- one parse either way, and
+    the same :class:`Document` (data, positions, texts, runs) or the same error."""
+    ld = loader(text)
+    plain = _Plain(ld.get_event)
+    try:
+        doc = plain.document()
+    except _Bail:
+        return _one_pass(text, lambda _text: _Replay(plain.seen, ld))
+    ld.dispose()
+    return doc
+
+
+def _resolved(ev) -> str:
+    """The tag of a scalar event with no tag of its own, as a composer resolves it (remembered
+    by its text: a document repeats its keys and numbers)."""
+    key = (ev.value, ev.implicit)
+    tag = _TAGS.get(key)
+    if tag is None:
+        import yaml
+
+        if not _RESOLVER:
+            _RESOLVER.append(yaml.resolver.Resolver())
+        tag = _RESOLVER[0].resolve(yaml.ScalarNode, ev.value, ev.implicit)
+        if len(_TAGS) < 4096:
+            _TAGS[key] = tag
+    return tag
+
+
+_RESOLVER: list = []        # the resolver (stateless: no path resolvers), made at the first use
+
+
+class _Plain:
+    """The :class:`Document` of a document of plain data, built straight from the parser's events
+    with what :class:`_Builder` would record (values, positions, texts, the runs of plain numbers of
+    a list); anything else raises :class:`_Bail` (``seen``: every event read, for :class:`_Replay`).
+    (The common entry, a key and a plain scalar, is read in :meth:`mapping` itself: this pass is a
+    fixed cost of every problem.)"""
+
+    def __init__(self, get):
+        import yaml
+
+        self.seen: list = []
+        self.get, self.keep = get, self.seen.append
+        self.doc = Document(None)
+        self.pos, self.text = self.doc.pos.eager, self.doc.text.eager
+        self.count = 0
+        self.most = MAX_NODES - 2                 # (read now: the caps are the module's, tests lower them)
+        self.deepest = MAX_DEPTH - 2
+        self.y = yaml
+        self.scalar, self.mapping_end, self.sequence_end = yaml.ScalarEvent, yaml.MappingEndEvent, yaml.SequenceEndEvent
+
+    def next(self):
+        ev = self.get()
+        self.keep(ev)
+        return ev
+
+    def document(self) -> Document:
+        y, nxt = self.y, self.next
+        if type(nxt()) is not y.StreamStartEvent or type(nxt()) is not y.DocumentStartEvent:
+            raise _Bail                           # (an empty stream: the builder's message)
+        data = self.value(nxt(), (), 0)
+        if type(nxt()) is not y.DocumentEndEvent or type(nxt()) is not y.StreamEndEvent:
+            raise _Bail                           # (several documents)
+        self.doc.data = data
+        return self.doc
+
+    def value(self, ev, path: tuple, depth: int) -> Any:
+        if type(ev) is self.y.AliasEvent or ev.tag is not None or ev.anchor is not None or depth >= self.deepest:
+            raise _Bail
+        self.count += 1
+        if self.count > self.most:
+            raise _Bail
+        m = ev.start_mark
+        self.pos[path] = (m.line + 1, m.column + 1)
+        cls = type(ev)
+        if cls is self.scalar:
+            v = ev.value
+            tag = _TAGS.get((v, ev.implicit)) or _resolved(ev)
+            return v if tag == _STR else None if tag == _NULL else self.typed(path, v, tag)
+        if cls is self.y.MappingStartEvent:
+            return self.mapping(path, depth)
+        return self.sequence(path, depth)
+
+    def typed(self, path: tuple, v: str, tag: str) -> Any:
+        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
+        if tag != _INT and tag != _FLOAT and tag != _BOOL:
+            raise _Bail                           # (a date: refused by the builder)
+        self.text[path] = v
+        try:
+            if tag != _BOOL and _NUMBER(v) is not None:
+                return float(v) if "." in v else int(v)
+            return _scalar(tag, v)
+        except (ValueError, OverflowError, IndexError):       # (an int of more digits than Python reads)
+            raise _Bail from None
+
+    def sequence(self, path: tuple, depth: int) -> list:
+        get, keep, scalar, number = self.get, self.keep, self.scalar, _NUMBER
+        out: list = []
+        marks: list[int] = []
+        texts: list[str] = []
+        ev = get()
+        keep(ev)
+        while type(ev) is scalar and ev.tag is None and ev.anchor is None and ev.implicit[0] \
+                and number(ev.value) is not None:     # the leading run of plain numbers (_Builder.numbers)
+            self.count += 1
+            if self.count > self.most:
+                raise _Bail
+            v, m = ev.value, ev.start_mark
+            try:
+                out.append(float(v) if "." in v else int(v))
+            except ValueError:                    # (an int of more digits than Python reads)
+                raise _Bail from None
+            marks.append(m.line << _SHIFT | m.column)
+            texts.append(v)
+            ev = get()
+            keep(ev)
+        if marks:
+            self.doc.pos.runs[path] = (marks, _unpack)
+            self.doc.text.runs[path] = (texts, None)
+        end = self.sequence_end
+        while type(ev) is not end:
+            out.append(self.value(ev, path + (len(out),), depth + 1))
+            ev = get()
+            keep(ev)
+        return out
+
+    def mapping(self, path: tuple, depth: int) -> dict:
+        get, keep, scalar, end = self.get, self.keep, self.scalar, self.mapping_end
+        pos, key_pos, tags = self.pos, self.doc.key_pos, _TAGS
+        out: dict = {}
+        while True:
+            kev = get()
+            keep(kev)
+            if type(kev) is not scalar:
+                if type(kev) is end:
+                    return out
+                raise _Bail                       # (a key that is a list or a mapping, an alias)
+            key = kev.value
+            if kev.tag is not None or kev.anchor is not None or key in out or key == "<key>" \
+                    or (tags.get((key, kev.implicit)) or _resolved(kev)) != _STR:
+                raise _Bail                       # (a key not text, a duplicate: the builder's)
+            m = kev.start_mark
+            here = path + (key,)
+            key_pos[here] = (m.line + 1, m.column + 1)
+            ev = get()
+            keep(ev)
+            if type(ev) is scalar and ev.tag is None and ev.anchor is None:
+                self.count += 2                   # the key and its value
+                if self.count > self.most:
+                    raise _Bail
+                m = ev.start_mark
+                pos[here] = (m.line + 1, m.column + 1)
+                v = ev.value
+                tag = tags.get((v, ev.implicit)) or _resolved(ev)
+                out[key] = v if tag == _STR else None if tag == _NULL else self.typed(here, v, tag)
+            else:
+                self.count += 1
+                out[key] = self.value(ev, here, depth + 1)
+
+
+_STR, _NULL, _INT, _FLOAT, _BOOL = (_STD + t for t in ("str", "null", "int", "float", "bool"))
 
 
 class _Unmet(Exception):
@@ -451,11 +965,15 @@ class _Builder:
             v = ev.value
             if number(v) is None:
                 return False
+            try:
+                x = float(v) if "." in v else int(v)
+            except ValueError:          # an int of more digits than Python reads: refused by value()
+                return False
             self.count += 1
             m = ev.start_mark
             if self.count > MAX_NODES:
                 raise _stop(f"document expands to more than {MAX_NODES} values (alias bomb?)", m.line + 1, m.column + 1)
-            out.append(float(v) if "." in v else int(v))
+            out.append(x)
             marks.append(m.line << shift | m.column)
             texts.append(v)
             return True

@@ -100,15 +100,19 @@ def parse(
     return expr
 
 
-def constant(text: Any, params: Mapping[str, float] | None = None) -> float:
+def constant(text: Any, params: Mapping[str, float] | None = None, params_print: Any = None) -> float:
     """Parse and evaluate a constant expression or number to a float
-    (may be +-inf for a YAML ``.inf``; never NaN)."""
+    (may be +-inf for a YAML ``.inf``; never NaN).  ``params_print``: the fingerprint of
+    ``params`` (:func:`dyncli.docmemo.fingerprint`) when the caller made it already (one per
+    problem, not one per field)."""
     if type(text) is float and text == text:        # a plain number (not NaN): the value of its Expr
         return text
     if type(text) is str and (params is None or type(params) is dict):
         from dyncli.docmemo import recall       # remembered per (text, params), type-exactly
 
-        return recall("constant", (text, params), lambda: _constant(text, params))
+        # (the fingerprint of (text, params), made of params' own)
+        whole = None if params_print is None else (tuple, ((str, text), params_print))
+        return recall("constant", (text, params), lambda: _constant(text, params), print_=whole)
     return _constant(text, params)
 
 

@@ -110,3 +110,50 @@ def test_a_huge_integer_is_left_to_its_field():
     from dyncli.angles import _bare
 
     assert _bare(10 ** 400) is None and _bare("9" * 500) is None and _bare("30") == 30.0
+
+
+def _every_field(model, raw, path=()):
+    """(path, value as written) of every angle field given in ``raw``, found by visiting every field
+    of every model met (no field left out): the reference for the pruned walk of dyncli.angles."""
+    from pydantic import BaseModel
+
+    from dyncli.angles import is_angle
+
+    if not isinstance(raw, dict):
+        return
+    for name, info in type(model).model_fields.items():
+        key = info.alias or name
+        if key not in raw:
+            continue
+        value, written, here = getattr(model, name, None), raw[key], path + (key,)
+        if is_angle(info):
+            yield here, written
+        elif isinstance(value, BaseModel):
+            yield from _every_field(value, written, here)
+        elif isinstance(value, (list, tuple)) and isinstance(written, list):
+            for i, (v, w) in enumerate(zip(value, written)):
+                if isinstance(v, BaseModel):
+                    yield from _every_field(v, w, here + (i,))
+        elif isinstance(value, dict) and isinstance(written, dict):
+            for k, v in value.items():
+                if isinstance(v, BaseModel) and k in written:
+                    yield from _every_field(v, written[k], here + (k,))
+
+
+def test_the_walk_leaves_out_only_fields_that_hold_no_angle():
+    """The angle fields of every example and of every type's template (with each angle field set)
+    are those a visit of every field finds."""
+    from dyncli.angles import angle_fields
+    from dyncli.loader import load_paths
+
+    problems, _ = load_paths([str(p) for p in sorted((ROOT / "problems").rglob("*.yaml"))])
+    for t, path in CASES:
+        ps, _ = split_problems("angle.yaml", yaml.safe_dump(_problem(t, path, 400)).encode(), ROOT)
+        validate(ps[0])
+        problems += ps
+    checked = 0
+    for p in problems:
+        if p.model is not None:
+            assert list(angle_fields(p.model, p.raw)) == list(_every_field(p.model, p.raw)), p.file
+            checked += bool(list(_every_field(p.model, p.raw)))
+    assert checked > len(CASES) // 2
