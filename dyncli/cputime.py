@@ -81,9 +81,8 @@ class solve_budget:
     def __enter__(self) -> None:
         self._token = _SOLVE.set(None if self._limit is None else (time.thread_time(), float(self._limit)))
 
-    def __exit__(self, *exc) -> bool:
+    def __exit__(self, *exc) -> None:
         _SOLVE.reset(self._token)
-        return False
 
 
 @contextlib.contextmanager

@@ -103,7 +103,9 @@ def _params_print(info: ValidationInfo | None) -> Any:
     constants' memo), made at the first expression of a validation and kept in its context (the
     params of one validation do not change); None when there is none to keep."""
     ctx = getattr(info, "context", None)
-    params = ctx.get("params") if type(ctx) is dict else None
+    if type(ctx) is not dict:
+        return None
+    params = ctx.get("params")
     if type(params) is not dict:
         return None
     got = ctx.get(_PRINT)

@@ -340,7 +340,7 @@ class _Lines:
 
     def sequence(self, path: tuple, indent: int, depth: int) -> list:
         """The block list whose first ``-`` is the row at ``self.i``, at ``indent``."""
-        rows, out = self.rows, []
+        rows, out = self.rows, list[Any]()
         self.counted(path, rows[self.i][0], indent, depth)
         marks: list[int] = []
         texts: list[str] = []
