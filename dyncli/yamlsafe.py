@@ -409,16 +409,7 @@ class _Lines:
         return v if tag == _STR else None if tag == _NULL else self.typed(v, tag, path)
 
     def typed(self, v: str, tag: str, path: tuple) -> Any:
-        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
-        if tag != _INT and tag != _FLOAT and tag != _BOOL:
-            raise _Bail
-        self.text[path] = v
-        try:
-            if tag != _BOOL and _NUMBER(v) is not None:
-                return float(v) if "." in v else int(v)
-            return _scalar(tag, v)
-        except (ValueError, OverflowError, IndexError):       # (an int of more digits than Python reads)
-            raise _Bail from None
+        return _typed(self.text, path, v, tag)
 
     def flow(self, s: str, j: int, line: int, col0: int, path: tuple, depth: int) -> tuple[Any, int]:
         """The flow list or mapping at ``s[j]`` (``[`` or ``{``) of a line whose ``s[0]`` is at
@@ -512,6 +503,21 @@ def _skip(s: str, j: int) -> int:
     while j < n and s[j] == " ":
         j += 1
     return j
+
+
+def _typed(texts, path: tuple, v: str, tag: str) -> Any:
+    """The value of a plain scalar of ``tag`` other than str and null (its text kept in
+    ``texts``), as the builder makes it; anything else (a date: the builder refuses it, an int
+    of more digits than Python reads) is :class:`_Bail`."""
+    if tag != _INT and tag != _FLOAT and tag != _BOOL:
+        raise _Bail
+    texts[path] = v
+    try:
+        if tag != _BOOL and _NUMBER(v) is not None:
+            return float(v) if "." in v else int(v)
+        return _scalar(tag, v)
+    except (ValueError, OverflowError, IndexError):
+        raise _Bail from None
 
 
 def _closing(s: str, j: int) -> int:
@@ -664,16 +670,7 @@ class _Plain:
         return self.sequence(path, depth)
 
     def typed(self, path: tuple, v: str, tag: str) -> Any:
-        """The value of a plain scalar of ``tag`` other than str and null, its text kept."""
-        if tag != _INT and tag != _FLOAT and tag != _BOOL:
-            raise _Bail                           # (a date: refused by the builder)
-        self.text[path] = v
-        try:
-            if tag != _BOOL and _NUMBER(v) is not None:
-                return float(v) if "." in v else int(v)
-            return _scalar(tag, v)
-        except (ValueError, OverflowError, IndexError):       # (an int of more digits than Python reads)
-            raise _Bail from None
+        return _typed(self.text, path, v, tag)
 
     def sequence(self, path: tuple, depth: int) -> list:
         get, keep, scalar, number = self.get, self.keep, self.scalar, _NUMBER
