@@ -64,6 +64,11 @@ class Energy:
         self.Q0 = float(self.Q(np.array([self.q0]))[0])
         self._integrals = {}
         self.crit = self._critical_points()
+        inner = [c for c in self.crit if self.lo < c < self.hi or self.closed]   # (the wire's ends end the motion)
+        if inner and not np.all(self.M(np.array(inner)) > 0):
+            bad = next(c for c in inner if not float(self.M(np.array([c]))[0]) > 0)
+            raise Skip(f"the curve's tangent dy/dq vanishes at q = {bad:.6g}, a critical point of the potential "
+                       "(the speed q̇ is not finite there)")
 
     def _in_unit(self, p):
         """Choose the unit 2^k J at the geometric mean of the energy's size (the work over the
