@@ -85,7 +85,7 @@ def gauss_kronrod(f, a: float, b: float, rtol: float, atol: float, *, max_steps:
         if panels > limit:
             raise OverBudget(b, panels + len(c), limit, float(c[0]))
         _within_cpu(panels, what, path)
-        K, diff, floor = _panels(one, None, c, h, what, path)
+        K, diff, floor = _pass(one, None, c, h, what, path, panels)
         err = np.maximum(diff, floor)
         total = done_val + float(K.sum())
         total_err = done_err + float(err.sum())
@@ -147,7 +147,7 @@ def gauss_kronrod_many(f, a, b, rtol: float, atol, *, max_steps: int | None = No
         if panels > limit:
             raise OverBudget(float(hi0[own].max()), panels + len(c), limit, float(c[0]))
         _within_cpu(panels, what, path)
-        K, diff, floor = _panels(f, own, c, h, what, path)
+        K, diff, floor = _pass(f, own, c, h, what, path, panels)
         err = np.maximum(diff, floor)
         total = done_val + np.bincount(own, K, minlength=m)
         total_err = done_err + np.bincount(own, err, minlength=m)
@@ -187,6 +187,23 @@ def _within_cpu(panels: int, what: str, path: str | None) -> None:
             f"CPU budget of {limit:g} s (accuracy.max_cpu) after {panels} panels without reaching accuracy.rtol "
             "(an integrand that is rounding noise at the inputs' scales, or one with very many kinks): check "
             "the scales of the inputs, loosen accuracy.rtol, or raise accuracy.max_cpu")
+
+
+#: a pass over more panels than this is evaluated in slices, the CPU budget looked at between them
+#: (a pass costs as much as all the passes before it: one look per pass could overshoot the budget 2x)
+SLICE = 1024
+
+
+def _pass(f, own, c, h, what: str, path: str | None, panels: int):
+    """:func:`_panels` of one pass, in slices of :data:`SLICE` panels when it is larger."""
+    if len(c) <= SLICE:
+        return _panels(f, own, c, h, what, path)
+    parts = []
+    for k in range(0, len(c), SLICE):
+        if k:
+            _within_cpu(panels, what, path)
+        parts.append(_panels(f, None if own is None else own[k:k + SLICE], c[k:k + SLICE], h[k:k + SLICE], what, path))
+    return tuple(np.concatenate(col) for col in zip(*parts))
 
 
 def _panels(f, own, c, h, what: str, path: str | None):
