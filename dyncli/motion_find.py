@@ -356,13 +356,14 @@ class Odometer:
     def _stops(self, S) -> list[float]:
         """Where a speed comes (nearly) to rest inside a piece — a turning point, where |v| has a
         kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
-        each piece whose node speeds dip below a quarter of their largest, by a golden-section
-        search over all those pieces at once (:func:`dyncli.rootfind.fminbound_many`: one call of
-        ``speeds`` per iteration; an error δ in its place costs only ~|a| δ²).  A least speed at
-        the piece's end (a stop that is a break already) adds nothing: a piece whose speed is
-        exactly 0 at an end (a body starting from rest) is not searched — the least of a unimodal
-        |v| ≥ 0 is that end (one call of ``speeds`` at the pieces' ends, not ~60)."""
-        from dyncli.rootfind import fminbound_many
+        each piece whose node speeds dip below a quarter of their largest.  |v|² is smooth there
+        (a polynomial on an ODE step), so the least is read off its Chebyshev interpolant on all
+        those pieces at once (:func:`dyncli.rootfind.smooth_minimisers`: one call of ``speeds``,
+        the derivative's roots); a piece whose interpolant is not resolved is searched on |v| by
+        golden section (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per
+        iteration).  An error δ in a stop's place costs only ~|a| δ².  A least speed at the
+        piece's end (a stop that is a break already, a body starting from rest) adds nothing."""
+        from dyncli.rootfind import fminbound_many, smooth_minimisers
 
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
@@ -370,15 +371,6 @@ class Odometer:
         if not piece.size:
             return []
         a, b = self.pts[piece], self.pts[piece + 1]
-        ends = np.asarray(self.speeds(np.concatenate([a, b]) if self.arrays else np.concatenate([a, b]).tolist()),
-                          dtype=float)
-        ends = ends[np.arange(2 * piece.size), np.concatenate([col, col])] if ends.ndim > 1 else ends   # (each piece's column)
-        search = (ends[:piece.size] != 0.0) & (ends[piece.size:] != 0.0)
-        if not search.all():                        # |v| = 0 exactly at an end (a start from rest): the
-            piece, col = piece[search], col[search]  # least of a unimodal |v| ≥ 0 is there, a break already
-            if not piece.size:
-                return []
-            a, b = self.pts[piece], self.pts[piece + 1]
 
         def speed(u, k):
             ts = a[k] + u * (b[k] - a[k])
@@ -386,10 +378,14 @@ class Odometer:
             return got[np.arange(k.size), col[k]] if got.ndim > 1 else got
 
         xatol = 1e-12
-        u = fminbound_many(speed, piece.size, xatol)
+        u, resolved = smooth_minimisers(lambda u, k: speed(u, k) ** 2, piece.size)
+        rest = np.flatnonzero(~resolved)
+        if rest.size:
+            u[rest] = fminbound_many(lambda v, k: speed(v, rest[k]), rest.size, xatol)
         end = 2 * (np.sqrt(np.finfo(float).eps) * u + xatol)     # within the search's tolerance of an end
         t = a + u * (b - a)
-        keep = (u > end) & (u < 1.0 - end) & (a < t) & (t < b)
+        with np.errstate(invalid="ignore"):
+            keep = (u > end) & (u < 1.0 - end) & (a < t) & (t < b)
         return sorted(set(t[keep].tolist()))
 
     def at(self, times: Iterable[float]) -> list:

@@ -28,8 +28,32 @@ def test_vertical_throw_distance_against_mpmath(v0):
     for t in (0.3, 0.9, 2.0):
         ref = mpmath.quad(lambda s: abs(v0 - G * s), [0, *( [v0 / G] if 0 < v0 / G < t else []), t])
         assert odo.at([t])[0] == pytest.approx(float(ref), rel=1e-12, abs=1e-13)
-    if v0 == 0.0:                                    # the piece from rest: one call at its ends, no search
-        assert built == 2                            # the nodes, then the pieces' ends
+    # the nodes, then one call for the interpolants of |v|² on the pieces that dip (from rest, or
+    # the apex inside a piece), then the nodes of the pieces a stop cuts: no golden-section
+    # search (~40 calls)
+    assert built == {0.0: 2, 7.0: 3, -3.0: 1}[v0]
+
+
+def test_smooth_minimisers_against_closed_forms():
+    """rootfind.smooth_minimisers: the interior least point of each function from its resolved
+    Chebyshev interpolant of degree 20, in one call — |v|² of a degree-7 velocity (exactly a polynomial of
+    degree 14, as on a DOP853 step), an analytic dip, a least at an end (NaN) and a function the degree-20 series
+    cannot resolve (handed back unresolved)."""
+    from dyncli.rootfind import smooth_minimisers
+
+    def f(u, k):
+        u, k = np.asarray(u, dtype=float), np.asarray(k)
+        v7 = (u - 0.3) * (1 + u ** 6)                 # v = 0 at u = 0.3: |v|² has its least there
+        return np.select([k == 0, k == 1, k == 2], [v7 * v7, np.cosh(3 * (u - 0.61)), 2 + u],
+                         np.abs(np.sin(200 * u)))
+
+    calls = []
+    u, ok = smooth_minimisers(lambda u, k: calls.append(1) or f(u, k), 4)
+    assert len(calls) == 1
+    assert ok.tolist() == [True, True, True, False]
+    assert u[0] == pytest.approx(0.3, abs=1e-9)       # (a double root: located to ~sqrt of the rounding)
+    assert u[1] == pytest.approx(0.61, abs=1e-12)
+    assert math.isnan(u[2]) and math.isnan(u[3])
 
 
 def test_from_rest_closed_form_distance():

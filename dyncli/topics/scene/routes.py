@@ -153,11 +153,15 @@ def _kinematics(scene: Scene, traj, acc):
         scene.warnings.append(f"the mechanism comes near a toggle position (the joint rows' condition number reaches "
                               f"{conds[worst]:.3g} at t = {grid[worst]:.6g} s): its velocities and forces lose about "
                               f"{math.log10(conds[worst]):.0f} digits there")
+    subs = []
     for k in range(len(grid) - 1):
         fn = _KinPiece(s, qs[k], grid[k])
         fn.start, fn.sigma = starts[k][:3], starts[k][4]
-        traj.add(motion.Piece(grid[k], grid[k + 1], fn, motion.modes_of(s), "kinematics", many=fn.velocities,
-                              powers=fn.powers, stack=_kin_velocities, states=_kin_states,
+        subs.append(fn)
+    for k in range(0, len(subs), KIN_RUN):
+        run = _KinRun(subs[k:k + KIN_RUN])
+        traj.add(motion.Piece(grid[k], grid[min(k + KIN_RUN, len(subs))], run, motion.modes_of(s), "kinematics",
+                              many=run.velocities, powers=run.powers, stack=_kin_velocities, states=_kin_states,
                               power_stack=_kin_powers, coords=_kin_coordinates))
     if len(grid) == 1:
         traj.add(motion.Piece(0.0, 0.0, _KinPiece(s, scene.q0, 0.0), motion.modes_of(s), "kinematics"))
@@ -308,6 +312,53 @@ class _KinPiece:
         return _kin_powers([self] * len(ts), ts)
 
 
+#: the grid's pieces one piece of the trajectory holds (:class:`_KinRun`)
+KIN_RUN = 16
+
+
+class _KinRun:
+    """t -> (q, v, 0) on a run of consecutive pieces of the drive grid, each time read from the
+    grid piece that holds it (its Newton start: :class:`_KinPiece`, at a join the piece that
+    ends there, as Trajectory.piece picks).  The positions are the roots of the same joint
+    equations on both sides of a join — the motion is as smooth across it as inside — so the
+    trajectory holds one piece per run: what integrates or searches along the motion (W_nc's
+    quadrature, the distance, the extremes of the find queries) sees a few smooth pieces, not
+    every step of the grid."""
+
+    def __init__(self, subs):
+        self.subs, self.s = subs, subs[0].s
+        self.starts = np.array([p.t_a for p in subs])
+
+    def sub(self, t: float) -> _KinPiece:
+        return self.subs[max(int(np.searchsorted(self.starts, t, side="left")) - 1, 0)]
+
+    def __call__(self, t):
+        return self.sub(t)(t)
+
+    def velocities(self, ts) -> np.ndarray:
+        return _kin_velocities([self] * len(ts), ts)
+
+    def powers(self, ts) -> np.ndarray:
+        return _kin_powers([self] * len(ts), ts)
+
+
+def _grid_pieces(pieces, ts) -> list:
+    """Each entry of ``pieces`` (a :class:`_KinRun` or a :class:`_KinPiece`) as the grid piece
+    that holds ``ts[i]`` (_KinRun.sub, for all the times of a run in one search)."""
+    uniq, which = _pieces_of(pieces)
+    if not any(isinstance(p, _KinRun) for p in uniq):
+        return list(pieces)
+    T = np.asarray(ts, dtype=float)
+    out = list(pieces)
+    for j, p in enumerate(uniq):
+        if isinstance(p, _KinRun):
+            sel = np.flatnonzero(which == j)
+            k = np.maximum(np.searchsorted(p.starts, T[sel], side="left") - 1, 0)
+            for i, kk in zip(sel.tolist(), k.tolist()):
+                out[i] = p.subs[kk]
+    return out
+
+
 def _kin_positions(pieces, ts):
     """_KinPiece.position of ``pieces[i]`` at ``ts[i]`` for every i at once, (len(ts), n), with
     the times' data ``td`` (SceneSystem.at_times): each Newton step of all the states still
@@ -436,6 +487,7 @@ def _chunks(pieces, ts) -> list:
 def _kin_states(pieces, ts) -> list:
     """(q, q̇, 0) of ``pieces[i]`` at ``ts[i]`` (Piece.states of the kinematics route: the
     states a search will read, made together; the numbers of each piece's own call)."""
+    pieces = _grid_pieces(pieces, ts)
     out = []
     for ps, tt in _chunks(pieces, ts):
         X, _Js, V, _td = _kin_rates(ps, tt)
@@ -446,6 +498,7 @@ def _kin_states(pieces, ts) -> list:
 def _kin_coordinates(pieces, ts) -> np.ndarray:
     """(q, q̇) of ``pieces[i]`` at ``ts[i]``, (2n, len(ts)) (Piece.coords of the kinematics route:
     the numbers of :func:`_kin_states`)."""
+    pieces = _grid_pieces(pieces, ts)
     parts = []
     for ps, tt in _chunks(pieces, ts):
         X, _Js, V, _td = _kin_rates(ps, tt)
@@ -455,6 +508,7 @@ def _kin_coordinates(pieces, ts) -> np.ndarray:
 
 def _kin_velocities(pieces, ts) -> np.ndarray:
     """q̇ of ``pieces[i]`` at ``ts[i]``, (len(ts), n) (Piece.stack of the kinematics route)."""
+    pieces = _grid_pieces(pieces, ts)
     parts = [_kin_rates(ps, tt)[2] for ps, tt in _chunks(pieces, ts)]
     return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
@@ -463,6 +517,7 @@ def _kin_powers(pieces, ts) -> np.ndarray:
     """The power of the drives and the loads (outcome's W_nc) of ``pieces[i]`` at ``ts[i]``: q̈
     from J q̈ = γ, the multipliers from Jᵀ λ = M q̈ − f, each stacked (the numbers of one
     state at a time, outcome._kin_forces)."""
+    pieces = _grid_pieces(pieces, ts)
     parts = [_kin_powers_of(ps, tt) for ps, tt in _chunks(pieces, ts)]
     return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
