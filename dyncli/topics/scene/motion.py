@@ -578,6 +578,21 @@ class Linear1:
         w, wd = free_at(t, s0 - s_eq, sd0, wn, zeta)
         return s_eq + w, wd
 
+    def rates(self, ts, s0: float, sd0: float) -> np.ndarray:
+        """ṡ of :meth:`motion` at an array of times (the same formulas on arrays, numpy's exp and
+        cos: within an ulp or two of the scalar's — for integrals over the motion, the distance)."""
+        A0, A1, A2 = self.A0, self.A1, self.A2
+        t = np.asarray(ts, dtype=float)
+        if A1 == 0 and A2 == 0:
+            return sd0 + A0 * t
+        if A1 == 0:
+            vinf = -A0 / A2
+            return vinf + (sd0 - vinf) * (np.expm1(A2 * t) + 1.0)
+        from dyncli.topics.vibration.closed_form import free
+
+        wn = math.sqrt(-A1)
+        return free(t, s0 - (s0 - A0 / A1), sd0, wn, -A2 / (2 * wn))[1]
+
 
 def closed_form_reason(system, N: np.ndarray, q0) -> str | None:
     """None when the 1-DOF motion along N is affine (constant Jacobian, affine loads); else why not."""

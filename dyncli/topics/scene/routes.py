@@ -637,9 +637,7 @@ def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
             return q0 + N * (sv - s_a), N * sdv, 0.0
 
         def many(ts):                   # fn's q̇ at many times (the rate alone: no positions made)
-            if lin.A1 == 0 and lin.A2 == 0:         # Linear1.motion's ṡ on an array, the same operations
-                return (sd_a + lin.A0 * (np.asarray(ts, dtype=float) - t0))[:, None] * N[None, :]
-            return np.array([lin.motion(t - t0, s_a, sd_a)[1] for t in ts])[:, None] * N[None, :]
+            return lin.rates(np.asarray(ts, dtype=float) - t0, s_a, sd_a)[:, None] * N[None, :]
     traj.add(motion.Piece(t0, t_end, fn, motion.modes_of(s), "closed-form", along=along, many=many, quad=quad))
     traj.method = "closed-form"
     got = _first_event(s, traj, len(traj.pieces) - 1, t_end, quadratic)
