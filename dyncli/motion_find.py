@@ -378,7 +378,8 @@ class Odometer:
             return got[np.arange(k.size), col[k]] if got.ndim > 1 else got
 
         xatol = 1e-12
-        u, resolved = smooth_minimisers(lambda u, k: speed(u, k) ** 2, piece.size)
+        top = S3.max(axis=1)[piece, col]            # (|v|² in units of the piece's largest node speed: no
+        u, resolved = smooth_minimisers(lambda u, k: (speed(u, k) / top[k]) ** 2, piece.size)   # underflow)
         rest = np.flatnonzero(~resolved)
         if rest.size:
             u[rest] = fminbound_many(lambda v, k: speed(v, rest[k]), rest.size, xatol)

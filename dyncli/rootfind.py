@@ -685,14 +685,16 @@ def smooth_minimisers(f, n: int, deg: int = 20):
         resolved = (np.all(np.isfinite(c), axis=-1)
                     & (np.max(np.abs(c[:, -3:]), axis=-1)
                        <= np.maximum(1e-13 * big, 16 * sys.float_info.epsilon * np.max(np.abs(Y), axis=-1))))
-        look = resolved & (np.abs(d[:, 0]) <= np.sum(np.abs(d[:, 1:]), axis=-1))   # |T_k| <= 1: else no root
+        # |T_k| <= 1: a derivative whose constant term exceeds the rest has no root (nor has a
+        # constant one: its least is anywhere, an end's as well)
+        look = resolved & (np.abs(d[:, 0]) <= np.sum(np.abs(d[:, 1:]), axis=-1)) & np.any(d[:, 1:] != 0, axis=-1)
     u = np.full(n, np.nan)
     ends = np.array([-1.0, 1.0])
     for i in np.flatnonzero(look):
         try:
             with np.errstate(all="ignore"):
                 r = C.chebroots(np.trim_zeros(d[i], "b"))
-        except np.linalg.LinAlgError:
+        except (np.linalg.LinAlgError, ValueError):
             resolved[i] = False
             continue
         r = np.real(r[(np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)])
