@@ -405,7 +405,7 @@ def _derivative_series(deg: int):
     return x, to_series @ C.chebder(np.eye(deg + 1), axis=0).T
 
 
-def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
+def polynomial_extremes(pieces, deg: int = 15, components=None) -> list[list[list[float]]]:
     """The critical points of polynomial curves, decided exactly, never by samples: for each
     piece ``(f, a, b)`` of ``pieces`` (an ODE step's dense output on its step: ``f`` on an array
     of n times gives an array of shape (components, n), each component a polynomial of degree at
@@ -418,7 +418,8 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     derivative with a small imaginary part (a near-double root, whose real pair the rounding may
     have made complex) are kept too: between consecutive points returned each component is
     monotone.  A component constant to its rounding (its derivative's coefficients within
-    4 deg² eps of its size) or not finite on the piece gives none."""
+    4 deg² eps of its size) or not finite on the piece gives none.  ``components``: the indices
+    of the components wanted (the lists of each piece then in that order), default all."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
@@ -430,6 +431,8 @@ def polynomial_extremes(pieces, deg: int = 15) -> list[list[list[float]]]:
     m, h = 0.5 * (ab[:, 0] + ab[:, 1]), 0.5 * (ab[:, 1] - ab[:, 0])
     with np.errstate(all="ignore"):
         y = _piece_values(pieces, m, h, x)
+        if components is not None:
+            y = y[:, list(components), :]
         d = y @ W                                       # (pieces, components, deg): the derivative's series
         noise = 4 * deg * deg * sys.float_info.epsilon * np.max(np.abs(y), axis=-1)   # the rounding of y, differentiated
         look = (np.all(np.isfinite(d), axis=-1) & (np.abs(d[..., 0]) <= np.sum(np.abs(d[..., 1:]), axis=-1))

@@ -176,8 +176,9 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
         return
     # each piece resolved in a few halvings at most (a piece that needs more is searched as before,
     # with a warning): the cost stays a small multiple of the motion's own
-    own = mf.exact_breaks(raw, B, values, known=quadratic_extremes(traj, motion._coords, B[0], B[-1]),
-                          warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
+    known = (quadratic_extremes(traj, motion._coords, B[0], B[-1])
+             or step_extremes(traj, motion._coords, B[0], B[-1]))
+    own = mf.exact_breaks(raw, B, values, known=known, warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
     if own is not None:
         motion.breaks_for, motion.monotone, motion.subdivide = own, True, 1
         motion.cuts_approximate = True      # an extreme's time then polished as a root of its rate
@@ -211,3 +212,38 @@ def quadratic_extremes(traj, coords: dict, t0: float, t_end: float):
                     out.append(t)
         return out
     return known
+
+
+def step_extremes(traj, coords: dict, t0: float, t_end: float):
+    """``known(path)`` for :func:`dyncli.motion_find.exact_breaks` when every piece of the motion
+    over [t0, t_end] is a DOP853 step (``Piece.batch``, its interpolant of degree 7 as integrated:
+    the values the search reads through :meth:`Trajectory.coordinates`): a coordinate or a rate is
+    a polynomial on each step, whose critical points are the real roots of its derivative
+    (:func:`dyncli.rootfind.polynomial_extremes`, all the steps in one pass, that component alone) — no
+    halving of a degree-32 interpolant.  None for a path that is not a coordinate or a rate, or a
+    motion with another piece (the search then resolves it by :func:`dyncli.rootfind.smooth_extremes`)."""
+    pieces = [p for p in traj.pieces if p.t_b > t0 and p.t_a < t_end]
+    if not pieces or pieces[0].t_a > t0 or pieces[-1].t_b < t_end:
+        return None
+    from dyncli.dop853 import DenseOutput
+
+    if not all(isinstance(p.batch, DenseOutput) for p in pieces):
+        return None
+    n = traj.system.n
+
+    def known(path: str) -> list[float] | None:
+        got = coords.get(path)
+        if got is None:
+            return None
+        from dyncli.rootfind import polynomial_extremes
+
+        which, k = got
+        per = polynomial_extremes([(p.batch, p.t_a, p.t_b) for p in pieces], deg=DENSE_DEGREE,
+                                  components=[k if which == "q" else n + k])
+        return sorted(t for (cuts,) in per for t in cuts)
+    return known
+
+
+#: the degree of a DOP853 step's interpolant (dop853.DenseOutput: seven coefficient rows)
+DENSE_DEGREE = 7
+
