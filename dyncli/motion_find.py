@@ -34,7 +34,7 @@ from dyncli import queries as _q
 from dyncli.errors import InputError, NumericalError
 
 __all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach",
-           "searched_paths", "exact_breaks", "series_values", "find_end"]
+           "searched_paths", "exact_breaks", "series_values", "find_end", "check_resolved"]
 
 
 def flatten(node: Any, prefix: str = "") -> dict[str, float]:
@@ -300,7 +300,7 @@ class Odometer:
     values: every operation is node by node, each piece's sum its own)."""
 
     def __init__(self, speeds: Callable[[list[float]], Any], breaks: Iterable[float], nodes: int = 10,
-                 arrays: bool = False, times: Sequence[float] | None = None):
+                 arrays: bool = False, times: Sequence[float] | None = None, rtol: float = 1e-10):
         import numpy as np
 
         self.speeds, self.np, self.arrays = speeds, np, arrays
@@ -318,20 +318,65 @@ class Odometer:
             S = self._nodes(a, b)
         stops = self._stops(S)
         if stops:                                   # |v| has a kink there: a break of its own
-            old = self.pts
-            self.pts = np.array(sorted(set(old.tolist()) | set(stops)))
-            a, b = self.pts[:-1], self.pts[1:]
-            # the pieces not cut keep their nodes' speeds (the same nodes, the same values);
-            # only the pieces a stop cut are evaluated again
-            j = np.minimum(np.searchsorted(old, a), old.size - 2)
-            kept = (old[j] == a) & (old[j + 1] == b)
-            S_new = np.empty((a.size,) + S.shape[1:])
-            S_new[kept] = S[j[kept]]
-            S_new[~kept] = self._nodes(a[~kept], b[~kept])
-            S = S_new
-            self._early = None                      # (the partial pieces' breaks have changed)
+            S, _ = self._recut(S, stops)
+        # each piece's speeds resolved by its rule: pieces whose Legendre series (from the node
+        # values) has not decayed to rtol are halved until it has
+        self.resolved = True
+        budget = max(RESOLVE_NODES, 8 * S.shape[0] * self.x.size)
+        for _ in range(RESOLVE_HALVINGS + 1):
+            bad = self._unresolved(S, rtol)
+            if not bad.any():
+                break
+            a, b = self.pts[:-1][bad], self.pts[1:][bad]
+            if S.shape[0] * self.x.size > budget or not bool(np.all(b - a > 64 * EPS_T * np.maximum(np.abs(a), 1.0))):
+                self.resolved = False               # (the caller says so)
+                break
+            S, kept = self._recut(S, (0.5 * (a + b)).tolist())
+            stops = self._stops(S, ~kept)           # (the halves may now hold a stop apart)
+            if stops:
+                S, _ = self._recut(S, stops)
+        else:
+            self.resolved = False
         first = self._sum(S, self.pts[:-1], self.pts[1:])
         self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
+
+    def _recut(self, S, cuts):
+        """The node speeds ``S`` of the pieces between ``self.pts`` after the ``cuts`` are added to
+        the breaks: the pieces not cut keep their nodes' speeds (the same nodes, the same values),
+        only the pieces cut are evaluated again (the partial pieces of ``times`` are then read
+        afresh: their breaks have changed).  Returns (the speeds, which pieces were kept)."""
+        np = self.np
+        old = self.pts
+        self.pts = np.array(sorted(set(old.tolist()) | set(cuts)))
+        a, b = self.pts[:-1], self.pts[1:]
+        j = np.minimum(np.searchsorted(old, a), old.size - 2)
+        kept = (old[j] == a) & (old[j + 1] == b)
+        S_new = np.empty((a.size,) + S.shape[1:])
+        S_new[kept] = S[j[kept]]
+        S_new[~kept] = self._nodes(a[~kept], b[~kept])
+        self._early = None
+        return S_new, kept
+
+    def _unresolved(self, S, rtol: float):
+        """Per piece: whether some column's speeds are not resolved by the rule to ``rtol`` of its
+        mean (or to the rounding of the column's largest speed).  The rule integrates exactly the
+        Legendre series of degree < nodes interpolated at its nodes; what it misses are the
+        coefficients beyond (its first error term is the degree 2·nodes one), foreseen from the
+        series' last four: with c_{n−4} … c_{n−1} decaying by a ratio ρ per degree (the larger
+        of the even and the odd terms' ratios; 1 where they do not decay), the error is about
+        max(|c_{n−2}|, |c_{n−1}|) ρ^(n+1).  A kink, a stop not split or a speed that varies
+        faster than the piece's nodes follow decays slowly (ρ near 1): the piece is halved."""
+        np = self.np
+        S3 = S if S.ndim == 3 else S[:, :, None]
+        c = np.abs(np.tensordot(S3, _legendre_tail(self.x.size), axes=([1], [0])))   # (pieces, k, 4)
+        mean = np.abs(np.tensordot(S3, self.w, axes=([1], [0]))) * 0.5
+        top = np.max(np.abs(S3), axis=(0, 1)) if S3.size else np.zeros(S3.shape[2])
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rho2 = np.maximum(c[..., 2] / c[..., 0], c[..., 3] / c[..., 1])       # ρ², from both parities
+            rho = np.sqrt(np.where(np.isfinite(rho2) & (rho2 < 1.0), rho2, 1.0))
+            err = np.maximum(c[..., 2], c[..., 3]) * rho ** (self.x.size + 1)
+            bad = ~(err <= rtol * mean + 64 * EPS_T * top[None, :])
+        return bad.any(axis=1)
 
     def _where(self, t):
         """(the piece of each time, its start, whether the time is past it: a partial piece)."""
@@ -353,7 +398,7 @@ class Odometer:
     def _pieces(self, a, b):
         return self._sum(self._nodes(a, b), a, b)
 
-    def _stops(self, S) -> list[float]:
+    def _stops(self, S, only=None) -> list[float]:
         """Where a speed comes (nearly) to rest inside a piece — a turning point, where |v| has a
         kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
         each piece whose node speeds dip below a quarter of their largest.  |v|² is smooth there
@@ -362,12 +407,16 @@ class Odometer:
         the derivative's roots); a piece whose interpolant is not resolved is searched on |v| by
         golden section (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per
         iteration).  An error δ in a stop's place costs only ~|a| δ².  A least speed at the
-        piece's end (a stop that is a break already, a body starting from rest) adds nothing."""
+        piece's end (a stop that is a break already, a body starting from rest) adds nothing.
+        ``only``: the pieces to look at (a mask), default all."""
         from dyncli.rootfind import fminbound_many, smooth_minimisers
 
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
-        piece, col = np.nonzero(S3.min(axis=1) < 0.25 * S3.max(axis=1))
+        dips = S3.min(axis=1) < 0.25 * S3.max(axis=1)
+        if only is not None:
+            dips &= only[:, None]
+        piece, col = np.nonzero(dips)
         if not piece.size:
             return []
         a, b = self.pts[piece], self.pts[piece + 1]
@@ -409,6 +458,43 @@ class Odometer:
                             np.concatenate([self._pieces(a[i:i + n], b[i:i + n]) for i in range(0, a.size, n)]))
         return (self.cum[k] + part + 0.0).tolist()
 
+
+#: the halvings of a piece the odometer makes to resolve its speeds (a kink converges as h²: 20
+#: levels take it from 1e-2 to below 1e-14 of the piece), and the node evaluations it may spend on
+#: them (or 8 × its first pass's, when larger): beyond either, ``Odometer.resolved`` is False
+RESOLVE_HALVINGS = 40
+RESOLVE_NODES = 200_000
+EPS_T = 2.220446049250313e-16
+
+
+def check_resolved(odo, warn: Callable[[str], None] | None) -> None:
+    """``warn`` when the odometer ``odo`` (or the one it wraps) could not resolve every piece's
+    speeds within its budget: its distance may then be off by more than rtol."""
+    inner = getattr(odo, "one", odo)
+    if warn is not None and not getattr(inner, "resolved", True):
+        warn("distance: the speed could not be resolved on every piece within the quadrature's budget "
+             f"({RESOLVE_HALVINGS} halvings, {RESOLVE_NODES} nodes; a speed with very many turning points, or "
+             "one that is rounding noise): the distance may be off by more than accuracy.rtol")
+
+
+def _legendre_tail(nodes: int):
+    """The matrix (nodes, 4) taking the speeds at the Gauss–Legendre nodes to the last four
+    coefficients (degrees nodes − 4 … nodes − 1) of their Legendre series: c_m = (2m+1)/2 Σ w_j
+    P_m(x_j) f(x_j), P_m by its three-term recurrence (no numpy.polynomial imported)."""
+    got = _TAIL.get(nodes)
+    if got is None:
+        import numpy as np
+
+        x, w = _leggauss(nodes)
+        p0, p1 = np.ones_like(x), x.copy()
+        P = [p0, p1]
+        for m in range(1, nodes - 1):
+            P.append(((2 * m + 1) * x * P[m] - m * P[m - 1]) / (m + 1))
+        got = _TAIL[nodes] = np.stack([(2 * m + 1) / 2 * w * P[m] for m in range(nodes - 4, nodes)], axis=1)
+    return got
+
+
+_TAIL: dict = {}
 
 #: the Gauss–Legendre nodes evaluated in one call of ``speeds`` by :meth:`Odometer.at`: the partial
 #: pieces of 1e5 times are taken a chunk at a time (the same values: every operation is piece by

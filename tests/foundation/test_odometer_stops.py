@@ -95,3 +95,30 @@ def test_the_ten_point_rule_table_is_gauss_legendre():
             assert node == float(x)
             w = 2 / ((1 - x ** 2) * mp.diff(P, x) ** 2)
             assert abs(mp.mpf(weight) - w) <= 8 * mp.mpf(2) ** (mp.floor(mp.log(w, 2)) - 52)
+
+
+def test_many_kinks_in_one_piece_are_resolved():
+    """|sin 20 t| on one piece [0, 3] (nine kinks in it: one found as a stop, the rest left to the
+    resolution check, which halves the pieces whose Legendre tail has not decayed to rtol):
+    the closed form ∫|sin ωt| = (2n + 1 − cos(ωt − nπ))/ω, n = ⌊ωt/π⌋, to 1e-10."""
+    w = 20.0
+    odo = Odometer(lambda ts: np.abs(np.sin(w * np.asarray(ts, dtype=float))), [0.0, 3.0], arrays=True, rtol=1e-11)
+    assert odo.resolved
+    for t in (0.5, 1.7, 3.0):
+        n = math.floor(w * t / math.pi)
+        ref = (2 * n + 1 - math.cos(w * t - n * math.pi)) / w
+        assert odo.at([t])[0] == pytest.approx(ref, rel=1e-10)
+
+
+def test_noise_that_no_halving_resolves_is_said():
+    """A speed that is rounding noise never resolves: the odometer stops at its budget, says so
+    (``resolved`` False) and check_resolved warns once (never silently)."""
+    from dyncli.motion_find import check_resolved
+
+    rnd = np.random.default_rng(1)
+    odo = Odometer(lambda ts: 1.0 + 1e-3 * rnd.random(np.asarray(ts).shape), [0.0, 1.0], arrays=True, rtol=1e-12)
+    assert not odo.resolved
+    said = []
+    check_resolved(odo, said.append)
+    assert len(said) == 1 and "distance" in said[0] and "accuracy.rtol" in said[0]
+    assert odo.at([1.0])[0] == pytest.approx(1.0005, rel=1e-3)

@@ -50,8 +50,10 @@ def report(p, res, at_times, traj_of, pieces=None, period=None) -> None:
         V = traj_of().state_array(ts, slice(3, 6))[1]
         return np.sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2])
 
-    odo = (mf.Odometer(speeds, B, arrays=True, times=p.at) if period is None else
-           _Periodic(mf.Odometer(speeds, period[1], arrays=True), period[0]))
+    rtol = float(p.accuracy.rtol)
+    odo = (mf.Odometer(speeds, B, arrays=True, times=p.at, rtol=rtol) if period is None else
+           _Periodic(mf.Odometer(speeds, period[1], arrays=True, rtol=rtol), period[0]))
+    mf.check_resolved(odo, res.warn)
     res.results["distance"] = odo.at(p.at)
     if not p.find:
         return

@@ -64,7 +64,8 @@ def report(p, res, steps: Steps, quantities, n: int) -> None:
     def speeds(ts):                                  # every particle's speed: one column each
         return np.linalg.norm(steps.y(ts)[:, 3 * n:6 * n].reshape(-1, n, 3), axis=2)
 
-    odo = mf.Odometer(speeds, B)
+    odo = mf.Odometer(speeds, B, rtol=float(p.accuracy.rtol))
+    mf.check_resolved(odo, res.warn)
     D0 = odo.at(p.at)
     res.results["distance"] = {str(i): [row[i] for row in D0] for i in range(n)}
     if not p.find:

@@ -69,7 +69,7 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
     res.results["integrals"] = _integrals(scene, traj, times, first)
     from . import queries
 
-    distance = queries.odometer(scene, traj)
+    distance = queries.odometer(scene, traj, float(acc.rtol), res.warn)
     res.results["distance"] = distance(times)
     for w in scene.warnings:
         res.warn(w)

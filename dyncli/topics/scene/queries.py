@@ -111,10 +111,11 @@ def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0) 
 DISTANCE_PIECES = 128
 
 
-def odometer(scene, traj):
+def odometer(scene, traj, rtol: float = 1e-10, warn=None):
     """Each body's path length since t = 0 (its reference point: the centre of mass), ∫|v| dt by
-    Gauss–Legendre on the trajectory's pieces: ``at(times) -> {body: [..]}``."""
-    from dyncli.motion_find import Odometer
+    Gauss–Legendre on the trajectory's pieces, each resolved to ``rtol`` (``warn``: told when one
+    cannot be): ``at(times) -> {body: [..]}``."""
+    from dyncli.motion_find import Odometer, check_resolved
 
     bodies = scene.system.bodies
     t0 = traj.t0
@@ -129,7 +130,9 @@ def odometer(scene, traj):
         V = traj.velocities(ts)
         return np.hypot(V[:, i1], V[:, i2])
 
-    odo = Odometer(speeds, pts) if t_end > t0 else None
+    odo = Odometer(speeds, pts, rtol=rtol) if t_end > t0 else None
+    if odo is not None:
+        check_resolved(odo, warn)
 
     def at(times) -> dict:
         times = [float(t) for t in times]

@@ -56,6 +56,30 @@ def test_linear_drag_projectile_distance(rtol, method):
         assert d == pytest.approx(float(_drag_arc(mp.mpf(t))), rel=ode(rtol)), t
 
 
+@pytest.mark.parametrize("rtol", RTOLS)
+@pytest.mark.parametrize("vx", [4.0, 5.5, 6.0, 8.0])
+def test_light_drag_long_steps_near_the_apex(rtol, vx):
+    """Light drag (c/m = 0.001 /s): the motion is nearly a parabola, so DOP853 takes steps of a
+    second or more, and at the apex the speed dips to vx — not below a quarter of its largest
+    (no stop split) for vx ≥ 5.5, yet |v| = √(vx² + vz²) bends over ~vx/g s, far inside the
+    step: each step's rule is checked for resolution (its Legendre tail) and halved until it
+    is.  A single 10-point rule per step was off by 1.5e-5 at vx = 5.5, rtol 1e-8 (the route's
+    estimate said 7e-8)."""
+    times = [1.0, 2.5, 4.0]
+    got = _distance(f"type: particle\nm: 1\nv0: [{vx}, 0, 20]\n"
+                    "forces: [{kind: gravity}, {kind: drag, c: 0.001, power: 1}]\n"
+                    f"t_end: 4\nat: {times}\naccuracy: {{rtol: {rtol}}}\n")
+    k, g = mp.mpf("0.001"), mp.mpf("9.81")
+    vinf = -g / k
+    vxs = lambda s: vx * mp.exp(-k * s)                               # noqa: E731
+    vz = lambda s: vinf + (20 - vinf) * mp.exp(-k * s)                 # noqa: E731
+    apex = mp.log((20 - vinf) / -vinf) / k
+    for t, d in zip(times, got):
+        pts = [0, apex, t] if t > apex else [0, t]
+        ref = mp.quad(lambda s: mp.sqrt(vxs(s) ** 2 + vz(s) ** 2), pts)
+        assert d == pytest.approx(float(ref), rel=ode(rtol)), t
+
+
 def _osc_arc(A, w, t):
     n = math.floor(w * t / math.pi)
     return 2 * A * n + A * (1 - math.cos(w * t - n * math.pi))
