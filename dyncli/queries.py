@@ -461,6 +461,9 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     else:
         cands += _turning(h, hr, T, H)
     best = max(c[1] for c in cands)
+    if any(c[1] != c[1] for c in cands):               # NaN: no largest value to speak of
+        raise NumericalError(f"find: {path} is not a number along the motion (between t = {w1:g} and {w2:g} s): "
+                             "no largest or smallest value; check the inputs that define it")
     tol = _tol(motion, max([*map(abs, H), abs(best)]))
     t = min(c[0] for c in cands if c[1] >= best - tol)
     return t, (t == w1 or t == w2)

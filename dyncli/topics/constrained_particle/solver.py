@@ -32,7 +32,7 @@ from .report import SERIES, assemble, equation_numbers
 
 def _check_curve(p, curve: Curve) -> None:
     sp = np.linalg.norm(curve.dy(p.q0)[:, 0])
-    if not np.isfinite(sp):
+    if not (np.isfinite(sp) and np.all(np.isfinite(curve.y(p.q0)))):
         raise InputError(f"the curve is not defined at q0 = {p.q0:g} (x1, x2, x3 or their derivatives are not finite "
                          "there): choose q0 where the curve exists", "curve")
     if sp == 0:

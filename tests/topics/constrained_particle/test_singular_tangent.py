@@ -40,3 +40,15 @@ def test_cusps_at_the_ends_keep_the_energy_route(q0):
     rec = solve_one_text(CYCLOID.format(q0=q0))
     assert rec["method"].startswith("quadrature")
     assert rec["results"]["period"] == pytest.approx(4 * math.pi * math.sqrt(0.5 / 9.81), rel=1e-9)
+
+
+@pytest.mark.parametrize("x3", [".inf", "-.inf", ".nan"])
+def test_a_curve_that_is_not_finite_at_q0_is_refused(x3):
+    """A component that is not a finite number where the bead starts (its derivatives may still
+    be: a constant) is an input error naming the curve (exit 2; was exit 3 from the find queries'
+    extremes of NaN values, fuzz seed 3037873)."""
+    rec = solve_text("type: constrained-particle\nm: 0.1\n"
+                     f"curve: {{x1: \"0.5*sin(q)\", x2: 0, x3: {x3}}}\nq0: 1\nforces: [{{kind: gravity}}]\n"
+                     "at: [0, 1]\nfind: [{max: N.1}]\n", "bead.yaml")[0]
+    assert rec["exit_code"] == 2, rec["error"]
+    assert "curve" in rec["error"] and "q0" in rec["error"]
