@@ -303,11 +303,12 @@ class Odometer:
                  arrays: bool = False, times: Sequence[float] | None = None, rtol: float = 1e-10):
         import numpy as np
 
-        self.speeds, self.np, self.arrays = speeds, np, arrays
+        self.speeds, self.np, self.arrays, self.rtol = speeds, np, arrays, float(rtol)
         self.x, self.w = _leggauss(nodes)
         self.pts = np.array(sorted({float(b) for b in breaks}))
         self._early: tuple | None = None
         a, b = self.pts[:-1], self.pts[1:]
+        self.budget = max(RESOLVE_NODES, 8 * a.size * self.x.size)   # nodes for the stops and the halvings
         if times is not None and 0 < len(times) <= EARLY:
             t = np.asarray([float(x) for x in times], dtype=float)
             k, lo, inside = self._where(t)
@@ -316,29 +317,39 @@ class Odometer:
             self._early = (t, k, inside, self._sum(partial, lo[inside], t[inside]))
         else:
             S = self._nodes(a, b)
-        stops = self._stops(S)
-        if stops:                                   # |v| has a kink there: a break of its own
-            S, _ = self._recut(S, stops)
+        S = self._split_stops(S, None)              # |v| has a kink at each: a break of its own
         # each piece's speeds resolved by its rule: pieces whose Legendre series (from the node
         # values) has not decayed to rtol are halved until it has
         self.resolved = True
-        budget = max(RESOLVE_NODES, 8 * S.shape[0] * self.x.size)
         for _ in range(RESOLVE_HALVINGS + 1):
-            bad = self._unresolved(S, rtol)
+            # (a piece at the rounding of t cannot be halved: its error is at the rounding of
+            # the distance, |v| × its width — a kink that close to a break is resolved enough)
+            lo, hi = self.pts[:-1], self.pts[1:]
+            bad = self._unresolved(S, rtol) & (hi - lo > 64 * EPS_T * np.maximum(np.abs(lo), 1.0))
             if not bad.any():
                 break
-            a, b = self.pts[:-1][bad], self.pts[1:][bad]
-            if S.shape[0] * self.x.size > budget or not bool(np.all(b - a > 64 * EPS_T * np.maximum(np.abs(a), 1.0))):
+            if S.shape[0] * self.x.size > self.budget:
                 self.resolved = False               # (the caller says so)
                 break
+            a, b = lo[bad], hi[bad]
             S, kept = self._recut(S, (0.5 * (a + b)).tolist())
-            stops = self._stops(S, ~kept)           # (the halves may now hold a stop apart)
-            if stops:
-                S, _ = self._recut(S, stops)
+            S = self._split_stops(S, ~kept)         # (the halves may now hold a stop apart)
         else:
             self.resolved = False
         first = self._sum(S, self.pts[:-1], self.pts[1:])
         self.cum = np.concatenate([np.zeros((1,) + first.shape[1:]), np.cumsum(first, axis=0)])
+
+    def _split_stops(self, S, only):
+        """The pieces (``only``: a mask, default all) cut at their stops (:meth:`_stops`), and the
+        pieces those cuts make cut at theirs in turn (a piece searched whole, unresolved, gives
+        one stop of several), until none is left inside a piece, or the node budget is spent."""
+        for _ in range(RESOLVE_HALVINGS):
+            stops = self._stops(S, only)
+            if not stops or S.shape[0] * self.x.size > self.budget:
+                break
+            S, kept = self._recut(S, stops)
+            only = ~kept
+        return S
 
     def _recut(self, S, cuts):
         """The node speeds ``S`` of the pieces between ``self.pts`` after the ``cuts`` are added to
@@ -358,24 +369,30 @@ class Odometer:
         return S_new, kept
 
     def _unresolved(self, S, rtol: float):
-        """Per piece: whether some column's speeds are not resolved by the rule to ``rtol`` of its
-        mean (or to the rounding of the column's largest speed).  The rule integrates exactly the
-        Legendre series of degree < nodes interpolated at its nodes; what it misses are the
-        coefficients beyond (its first error term is the degree 2·nodes one), foreseen from the
-        series' last four: with c_{n−4} … c_{n−1} decaying by a ratio ρ per degree (the larger
-        of the even and the odd terms' ratios; 1 where they do not decay), the error is about
-        max(|c_{n−2}|, |c_{n−1}|) ρ^(n+1).  A kink, a stop not split or a speed that varies
-        faster than the piece's nodes follow decays slowly (ρ near 1): the piece is halved."""
+        """Per piece: whether some column's speeds are not resolved by the rule to ``rtol`` — its
+        error per unit time above rtol × (the piece's mean speed + the column's mean speed over
+        the whole motion: a piece where the body nearly rests, whose speeds are mostly rounding,
+        is held to the motion's scale, not to its own), or above the rounding of the column's
+        largest speed.  The rule integrates exactly the Legendre series of degree < nodes
+        interpolated at its nodes; what it misses are the coefficients beyond (its first error
+        term is the degree 2·nodes one), foreseen from the series' last four: with c_{n−4} …
+        c_{n−1} decaying by a ratio ρ per degree (the larger of the even and the odd terms'
+        ratios; 1 where they do not decay), the error is about max(|c_{n−2}|, |c_{n−1}|) ρ^(n+1).
+        A kink, a stop not split or a speed that varies faster than the piece's nodes follow
+        decays slowly (ρ near 1): the piece is halved."""
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
         c = np.abs(np.tensordot(S3, _legendre_tail(self.x.size), axes=([1], [0])))   # (pieces, k, 4)
-        mean = np.abs(np.tensordot(S3, self.w, axes=([1], [0]))) * 0.5
+        mean = np.abs(np.tensordot(S3, self.w, axes=([1], [0]))) * 0.5              # (pieces, k)
+        width = np.diff(self.pts)
+        span = float(self.pts[-1] - self.pts[0])
+        overall = (mean * width[:, None]).sum(axis=0) / span if span > 0 else np.zeros(S3.shape[2])
         top = np.max(np.abs(S3), axis=(0, 1)) if S3.size else np.zeros(S3.shape[2])
         with np.errstate(invalid="ignore", divide="ignore"):
             rho2 = np.maximum(c[..., 2] / c[..., 0], c[..., 3] / c[..., 1])       # ρ², from both parities
             rho = np.sqrt(np.where(np.isfinite(rho2) & (rho2 < 1.0), rho2, 1.0))
             err = np.maximum(c[..., 2], c[..., 3]) * rho ** (self.x.size + 1)
-            bad = ~(err <= rtol * mean + 64 * EPS_T * top[None, :])
+            bad = ~(err <= rtol * (mean + overall[None, :]) + 64 * EPS_T * top[None, :])
         return bad.any(axis=1)
 
     def _where(self, t):
@@ -402,14 +419,15 @@ class Odometer:
         """Where a speed comes (nearly) to rest inside a piece — a turning point, where |v| has a
         kink the rule cannot follow (its error would be ~|a| h²): the time of the least speed on
         each piece whose node speeds dip below a quarter of their largest.  |v|² is smooth there
-        (a polynomial on an ODE step), so the least is read off its Chebyshev interpolant on all
-        those pieces at once (:func:`dyncli.rootfind.smooth_minimisers`: one call of ``speeds``,
-        the derivative's roots); a piece whose interpolant is not resolved is searched on |v| by
-        golden section (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per
-        iteration).  An error δ in a stop's place costs only ~|a| δ².  A least speed at the
+        (a polynomial on an ODE step), so its local minima — every one: two stops in one piece
+        are two — are read off its Chebyshev interpolant on all those pieces at once
+        (:func:`dyncli.rootfind.smooth_minima`: one call of ``speeds``, the derivative's roots); a
+        piece whose interpolant is not resolved is searched on |v| by golden section
+        (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per iteration) and halved
+        by the resolution check after.  An error δ in a stop's place costs only ~|a| δ².  A least speed at the
         piece's end (a stop that is a break already, a body starting from rest) adds nothing.
         ``only``: the pieces to look at (a mask), default all."""
-        from dyncli.rootfind import fminbound_many, smooth_minimisers
+        from dyncli.rootfind import fminbound_many, smooth_minima
 
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
@@ -427,15 +445,23 @@ class Odometer:
             return got[np.arange(k.size), col[k]] if got.ndim > 1 else got
 
         xatol = 1e-12
-        top = S3.max(axis=1)[piece, col]            # (|v|² in units of the piece's largest node speed: no
-        u, resolved = smooth_minimisers(lambda u, k: (speed(u, k) / top[k]) ** 2, piece.size)   # underflow)
-        rest = np.flatnonzero(~resolved)
-        if rest.size:
-            u[rest] = fminbound_many(lambda v, k: speed(v, rest[k]), rest.size, xatol)
-        end = 2 * (np.sqrt(np.finfo(float).eps) * u + xatol)     # within the search's tolerance of an end
+        # |v|² in units of the piece's largest node speed (no underflow), its rounding that of the
+        # column's largest speed anywhere (near a stop the speeds are mostly rounding: resolved there)
+        top = S3.max(axis=1)[piece, col]
+        noise = 2 * 64 * EPS_T * np.max(S3, axis=(0, 1))[col] / top
+        minima, resolved = smooth_minima(lambda u, k: (speed(u, k) / top[k]) ** 2, piece.size, noise=noise)
+        rest = np.flatnonzero(~resolved)            # not resolved (several turns, or rounding noise near a
+        if rest.size:                               # stop): the least of |v| by golden section
+            for k, u in zip(rest.tolist(), fminbound_many(lambda v, k: speed(v, rest[k]), rest.size, xatol).tolist()):
+                minima[k] = np.array([u])
+        k = np.repeat(np.arange(piece.size), [m.size for m in minima])
+        u = np.concatenate(minima) if k.size else np.zeros(0)
+        a, b = a[k], b[k]
+        # a stop within √rtol/16 of the piece from an end is that end's (a kink δ from a break costs
+        # ~|a| δ² of distance: rtol/256 of the piece's; cutting it off again would only make slivers)
+        end = np.maximum(2 * (np.sqrt(np.finfo(float).eps) * u + xatol), math.sqrt(self.rtol) / 16)
         t = a + u * (b - a)
-        with np.errstate(invalid="ignore"):
-            keep = (u > end) & (u < 1.0 - end) & (a < t) & (t < b)
+        keep = (u > end) & (u < 1.0 - end) & (a < t) & (t < b)
         return sorted(set(t[keep].tolist()))
 
     def at(self, times: Iterable[float]) -> list:

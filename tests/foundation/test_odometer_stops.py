@@ -29,9 +29,9 @@ def test_vertical_throw_distance_against_mpmath(v0):
         ref = mpmath.quad(lambda s: abs(v0 - G * s), [0, *( [v0 / G] if 0 < v0 / G < t else []), t])
         assert odo.at([t])[0] == pytest.approx(float(ref), rel=1e-12, abs=1e-13)
     # the nodes, then one call for the interpolants of |v|² on the pieces that dip (from rest, or
-    # the apex inside a piece), then the nodes of the pieces a stop cuts: no golden-section
-    # search (~40 calls)
-    assert built == {0.0: 2, 7.0: 3, -3.0: 1}[v0]
+    # the apex inside a piece), then the nodes of the pieces a stop cuts and one call for their
+    # interpolants (no stop left inside): no golden-section search (~40 calls)
+    assert built == {0.0: 2, 7.0: 4, -3.0: 1}[v0]
 
 
 @pytest.mark.parametrize("unit", [1e-170, 1e150])
@@ -46,26 +46,29 @@ def test_stop_found_at_speeds_whose_square_leaves_the_doubles(unit):
     assert odo.at([1.5])[0] == pytest.approx(ref, rel=1e-12)
 
 
-def test_smooth_minimisers_against_closed_forms():
-    """rootfind.smooth_minimisers: the interior least point of each function from its resolved
-    Chebyshev interpolant of degree 20, in one call — |v|² of a degree-7 velocity (exactly a polynomial of
-    degree 14, as on a DOP853 step), an analytic dip, a least at an end (NaN) and a function the degree-20 series
-    cannot resolve (handed back unresolved)."""
-    from dyncli.rootfind import smooth_minimisers
+def test_smooth_minima_against_closed_forms():
+    """rootfind.smooth_minima: every interior local minimum of each function from its resolved
+    Chebyshev interpolant of degree 20, in one call — |v|² of a degree-7 velocity (exactly a
+    polynomial of degree 14, as on a DOP853 step), an analytic dip, two stops in one piece
+    (both), a least at an end and a constant (none), and a function the degree-20 series cannot
+    resolve (handed back unresolved)."""
+    from dyncli.rootfind import smooth_minima
 
     def f(u, k):
         u, k = np.asarray(u, dtype=float), np.asarray(k)
         v7 = (u - 0.3) * (1 + u ** 6)                 # v = 0 at u = 0.3: |v|² has its least there
-        return np.select([k == 0, k == 1, k == 2, k == 3], [v7 * v7, np.cosh(3 * (u - 0.61)), 2 + u, 0 * u],
-                         np.abs(np.sin(200 * u)))
+        two = ((u - 0.25) * (u - 0.75)) ** 2
+        return np.select([k == 0, k == 1, k == 2, k == 3, k == 4],
+                         [v7 * v7, np.cosh(3 * (u - 0.61)), 2 + u, 0 * u, two], np.abs(np.sin(200 * u)))
 
     calls = []
-    u, ok = smooth_minimisers(lambda u, k: calls.append(1) or f(u, k), 5)
+    got, ok = smooth_minima(lambda u, k: calls.append(1) or f(u, k), 6)
     assert len(calls) == 1
-    assert ok.tolist() == [True, True, True, True, False]
-    assert u[0] == pytest.approx(0.3, abs=1e-9)       # (a double root: located to ~sqrt of the rounding)
-    assert u[1] == pytest.approx(0.61, abs=1e-12)
-    assert math.isnan(u[2]) and math.isnan(u[3]) and math.isnan(u[4])   # (a constant: no interior least)
+    assert ok.tolist() == [True, True, True, True, True, False]
+    assert got[0] == pytest.approx([0.3], abs=1e-9)   # (a double root: located to ~sqrt of the rounding)
+    assert got[1] == pytest.approx([0.61], abs=1e-12)
+    assert got[2].size == 0 and got[3].size == 0
+    assert got[4] == pytest.approx([0.25, 0.75], abs=1e-9)
 
 
 def test_from_rest_closed_form_distance():
