@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 
 REL = 1e-9          # an unbalanced part above this fraction of |F| refuses (typed numbers' rounding)
 
@@ -55,6 +55,10 @@ def _one(p, Fx, x, k, where, warn) -> dict:
         return _none(base, f"{where}: no circular motion about this axis at x0: the force there points away from "
                            f"the axis (F·ρ̂ = {Fr:.6g} N), and the centripetal force must point towards it", warn)
     w = math.sqrt(-Fr / (float(p.m) * r))
+    if not (w > 0.0 and math.isfinite(w * r) and math.isfinite(2 * math.pi / w)):
+        raise NumericalError(f"{where}: the circular motion's angular speed ω = √(−F·ρ̂ / (m ρ)) = {w:.6g} rad/s "
+                             "leaves the doubles (its period or its speed is beyond ~1e308): rescale the units "
+                             "(m, x0, the forces)")
     return {**base, "exists": True, "omega": w, "v": w * r, "period": 2 * math.pi / w}
 
 

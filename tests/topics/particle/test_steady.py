@@ -84,3 +84,15 @@ def test_no_circular_motion_is_an_answer(extra, message):
 def test_invalid_steady(extra, where, message):
     msg = error_of(BASE + extra + "\n")
     assert f": {where}: " in msg and message in msg, msg
+
+
+def test_angular_speed_that_leaves_the_doubles_is_a_numerical_error():
+    """m = 3e299 kg at ρ = 1e16 m on a spring: ω² = −F·ρ̂/(m ρ) underflows to 0, so the period
+    2π/ω would divide by zero (fuzz seed 3071278: exit 3); refused naming the query (exit 1)."""
+    from tests.conftest import solve_text
+
+    rec = solve_text("type: particle\nm: 3.0e+299\nx0: [0.5, 1.0e+16, -0.9]\n"
+                     "forces: [{kind: gravity}, {kind: spring, k: 50, L: 0.6}]\n"
+                     "steady: [{axis: [0, 0, 1]}]\n", "big.yaml")[0]
+    assert rec["exit_code"] == 1, rec["error"]
+    assert "steady.0" in rec["error"] and "rescale" in rec["error"]
