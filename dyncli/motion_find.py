@@ -317,10 +317,10 @@ class Odometer:
             self._early = (t, k, inside, self._sum(partial, lo[inside], t[inside]))
         else:
             S = self._nodes(a, b)
+        self.resolved = True                        # (False once a refinement below runs out of budget)
         S = self._split_stops(S, None)              # |v| has a kink at each: a break of its own
         # each piece's speeds resolved by its rule: pieces whose Legendre series (from the node
         # values) has not decayed to rtol are halved until it has
-        self.resolved = True
         for _ in range(RESOLVE_HALVINGS + 1):
             # (a piece at the rounding of t cannot be halved: its error is at the rounding of
             # the distance, |v| × its width — a kink that close to a break is resolved enough)
@@ -328,7 +328,7 @@ class Odometer:
             bad = self._unresolved(S, rtol) & (hi - lo > 64 * EPS_T * np.maximum(np.abs(lo), 1.0))
             if not bad.any():
                 break
-            if S.shape[0] * self.x.size > self.budget:
+            if S.shape[0] * self.x.size > self.budget or cputime.over(REFINE_SHARE) is not None:
                 self.resolved = False               # (the caller says so)
                 break
             a, b = lo[bad], hi[bad]
@@ -344,6 +344,9 @@ class Odometer:
         pieces those cuts make cut at theirs in turn (a piece searched whole, unresolved, gives
         one stop of several), until none is left inside a piece, or the node budget is spent."""
         for _ in range(RESOLVE_HALVINGS):
+            if cputime.over(REFINE_SHARE) is not None:
+                self.resolved = False
+                break
             stops = self._stops(S, only)
             if not stops or S.shape[0] * self.x.size > self.budget:
                 break
@@ -490,6 +493,9 @@ class Odometer:
 #: them (or 8 × its first pass's, when larger): beyond either, ``Odometer.resolved`` is False
 RESOLVE_HALVINGS = 40
 RESOLVE_NODES = 200_000
+#: the odometer stops refining (and says so) once the solve has used this share of its CPU budget:
+#: the distance is one result among many, never the reason a solve is refused
+REFINE_SHARE = 0.5
 EPS_T = 2.220446049250313e-16
 
 
@@ -499,8 +505,9 @@ def check_resolved(odo, warn: Callable[[str], None] | None) -> None:
     inner = getattr(odo, "one", odo)
     if warn is not None and not getattr(inner, "resolved", True):
         warn("distance: the speed could not be resolved on every piece within the quadrature's budget "
-             f"({RESOLVE_HALVINGS} halvings, {RESOLVE_NODES} nodes; a speed with very many turning points, or "
-             "one that is rounding noise): the distance may be off by more than accuracy.rtol")
+             f"({RESOLVE_HALVINGS} halvings, {RESOLVE_NODES:,} nodes, {REFINE_SHARE:g} of the solve's CPU budget; "
+             "a speed with very many turning points, one that changes over a far shorter time than the "
+             "motion, or rounding noise): the distance may be off by more than accuracy.rtol")
 
 
 def _legendre_tail(nodes: int):
