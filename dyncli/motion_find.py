@@ -291,7 +291,10 @@ def series_values(states: Callable[[list[float]], Mapping[str, Any]]) -> Callabl
 class Odometer:
     """∫ |v| dt from the first break: Gauss–Legendre with ``nodes`` points on every piece between
     consecutive breaks (the speed is smooth inside an ODE step or a closed-form piece: the rule
-    is exact for polynomials of degree 2·nodes − 1), accumulated once; ``speeds(ts)`` gives |v|
+    is exact for polynomials of degree 2·nodes − 1), each piece first cut at its stops (where |v|
+    has a kink) and then halved until its rule is resolved to ``rtol`` (:meth:`_unresolved`;
+    ``resolved`` False when the budget ends that first: :func:`check_resolved` warns),
+    accumulated once; ``speeds(ts)`` gives |v|
     at many times in one call — one column per point when it returns a 2-D array (len(ts), k).
     ``at(times)``: the distance at each time (≥ the first break), a list per point for k columns.
     ``arrays``: ``speeds`` takes a numpy array of times (no list of 1e6 floats made and read back).
@@ -426,10 +429,10 @@ class Odometer:
         are two — are read off its Chebyshev interpolant on all those pieces at once
         (:func:`dyncli.rootfind.smooth_minima`: one call of ``speeds``, the derivative's roots); a
         piece whose interpolant is not resolved is searched on |v| by golden section
-        (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per iteration) and halved
-        by the resolution check after.  An error δ in a stop's place costs only ~|a| δ².  A least speed at the
-        piece's end (a stop that is a break already, a body starting from rest) adds nothing.
-        ``only``: the pieces to look at (a mask), default all."""
+        (:func:`dyncli.rootfind.fminbound_many`: one call of ``speeds`` per iteration; the pieces
+        its cut makes are searched again).  An error δ in a stop's place costs only ~|a| δ².  A
+        least speed at the piece's end (a stop that is a break already, a body starting from
+        rest) adds nothing.  ``only``: the pieces to look at (a mask), default all."""
         from dyncli.rootfind import fminbound_many, smooth_minima
 
         np = self.np
