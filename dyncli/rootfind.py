@@ -587,6 +587,57 @@ def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-1
     return x, False
 
 
+def newton_systems(F, jac, X0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
+    """:func:`newton_system` from many starts at once, each row of ``X0`` its own iteration (the
+    same steps, stopped and limited row by row): ``F(X)`` and ``jac(X)`` take the rows still
+    iterating, (k, N) → (k, N) and (k, N, N).  The least-squares steps of all rows in one stacked
+    SVD (:func:`lstsq_many`, lstsq's own cut of the singular values below ``rcond`` of the
+    largest).  Returns (X, converged: a boolean per row); a row whose F is not finite stops there,
+    not converged, as :func:`newton_system` does."""
+    import numpy as np
+
+    X = np.array(X0, dtype=float)
+    scale = np.asarray(scale, dtype=float)
+    ok = np.zeros(len(X), dtype=bool)
+    live = np.arange(len(X))
+    for _ in range(maxit):
+        if not live.size:
+            break
+        R = np.asarray(F(X[live]), dtype=float)
+        fin = np.all(np.isfinite(R), axis=1)
+        live, R = live[fin], R[fin]
+        if not live.size:
+            break
+        step = lstsq_many(np.asarray(jac(X[live]), dtype=float), -R, rcond=1e-13)
+        big = np.max(np.abs(step) / scale, axis=1)
+        over = big > max_step
+        step[over] *= (max_step / big[over])[:, None]
+        X[live] += step
+        done = big <= tol
+        ok[live[done]] = True
+        live = live[~done]
+    return X, ok
+
+
+def lstsq_many(A, B, rcond: float):
+    """The minimum-norm least-squares solutions of A[k] x = B[k] for a stack of square matrices,
+    as ``numpy.linalg.lstsq(A[k], B[k], rcond)`` (LAPACK's gelsd: singular values at or below
+    rcond times the largest taken as zero), by one stacked SVD; a matrix that is not finite goes
+    to lstsq itself (which raises as it would)."""
+    import numpy as np
+
+    fin = np.all(np.isfinite(A), axis=(1, 2))
+    out = np.empty(B.shape)
+    if np.any(fin):
+        U, s, Vt = np.linalg.svd(A[fin])
+        keep = s > rcond * s[:, :1]
+        inv = np.divide(1.0, s, out=np.zeros_like(s), where=keep)
+        out[fin] = np.einsum("kji,kj->ki", Vt, inv * np.einsum("kji,kj->ki", U, B[fin]))
+    for k in np.nonzero(~fin)[0]:
+        out[k] = np.linalg.lstsq(A[k], B[k], rcond=rcond)[0]
+    return out
+
+
 def fminbound_unit(f, xatol: float, maxfun: int = 500) -> float:
     """Brent's minimiser on [0, 1] (golden section with parabolic steps; Brent 1973, ch. 5), in plain
     floats: the ``find`` queries' extremes of a result with no rate, and the distance's stops."""

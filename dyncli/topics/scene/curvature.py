@@ -8,7 +8,10 @@ length |r_P − r_Q| of a link; a point of a rigid body r = x + Q(θ) p has one 
   curvature of the linearized system);
 * :func:`potential_hessian` — ∇²V of gravity (0), springs (k (∇s ∇sᵀ + s ∇²|d|)) and
   constant forces (−∇²(F·r_P));
-* :func:`damping_matrix` — the dampers' C (the generalized force −C q̇ at rest).
+* :func:`damping_matrix` — the dampers' C (the generalized force −C q̇ at rest);
+* :func:`rest_hessians` — Σ_k λ_k ∇²φ_k − ∇²V at many configurations at once (the Jacobian of
+  the equilibrium search's Newton from all its starts: links and springs in columns, every
+  other joint and load row by row by the forms above).
 
 No finite differences: the tests compare these with differences of the Jacobians.
 """
@@ -108,3 +111,64 @@ def damping_matrix(system, q) -> np.ndarray:
             _ln, _e, grad, _H = length_terms(ld.P, ld.Q, q, n)
             C += ld.c * np.outer(grad, grad)
     return C
+
+
+def _point_hessian_many(P: Point, X, c1, c2, H) -> None:
+    """H (k, n, n) += ∇²(c·r_P) at every state of the Stack X (c1, c2: columns)."""
+    if P.body is not None and P.turns_with_body:
+        a = P.arms_many(X)
+        assert a is not None, "a point turning with its body has an arm"
+        k = P.body.index[2]
+        H[:, k, k] -= c1 * a[0] + c2 * a[1]
+
+
+def _length_terms_many(P: Point, Q: Point, X, n: int):
+    """:func:`length_terms` at every state of the Stack X: (|d|, ∇|d|, ∇²|d|) as (k,), (k, n), (k, n, n)."""
+    (p1, p2), (q1, q2) = P.xy_many(X), Q.xy_many(X)
+    d1, d2 = p1 - q1, p2 - q2
+    ln = np.hypot(d1, d2)
+    e1, e2 = d1 / ln, d2 / ln
+    D = np.zeros((X.k, 2, n))
+    P.add_jac2_many(D, X, 1.0)
+    Q.add_jac2_many(D, X, -1.0)
+    grad = e1[:, None] * D[:, 0] + e2[:, None] * D[:, 1]
+    proj = np.empty((X.k, 2, 2))
+    proj[:, 0, 0], proj[:, 1, 1] = 1.0 - e1 * e1, 1.0 - e2 * e2
+    proj[:, 0, 1] = proj[:, 1, 0] = -e1 * e2
+    H = np.swapaxes(D, 1, 2) @ proj @ D / ln[:, None, None]
+    _point_hessian_many(P, X, e1, e2, H)
+    _point_hessian_many(Q, X, -e1, -e2, H)
+    return ln, grad, H
+
+
+def rest_hessians(system, Q, LAM) -> np.ndarray:
+    """Σ_k λ_k ∇²φ_k − ∇²V at the configurations Q (k, n) with the multipliers LAM (k, m): what
+    :func:`rows_hessian` minus :func:`potential_hessian` give row by row, links and springs
+    computed in columns for all rows at once (an element or load of another kind row by row)."""
+    k, n = Q.shape
+    X = system.stack(Q)
+    H = np.zeros((k, n, n))
+    for i, el in enumerate(system.elements):
+        W = LAM[:, system.offsets[i]:system.offsets[i] + el.rows]
+        if not el.rows or not np.any(W):
+            continue
+        if el.kind == "link" and not hasattr(el, "hessian"):
+            w = W[:, 0]
+            Hl = _length_terms_many(el.P, el.Q, X, n)[2]
+            H += np.where((w != 0)[:, None, None], w[:, None, None] * Hl, 0.0)
+            continue
+        for r in range(k):
+            if np.any(W[r]):
+                H[r] += _element_hessian(el, Q[r], W[r], n)
+    for ld in system.loads:
+        if ld.kind == "spring":
+            ln, grad, Hl = _length_terms_many(ld.P, ld.Q, X, n)
+            s = ln - ld.L
+            on = ~((s > 0) if ld.one_sided == "compression" else (s < 0) if ld.one_sided == "tension" else np.zeros(k, bool))
+            G = ld.k * (grad[:, :, None] * grad[:, None, :] + s[:, None, None] * Hl)
+            H -= np.where(on[:, None, None], G, 0.0)
+        elif ld.kind == "force":
+            F = np.array(ld.F(0.0), dtype=float)
+            for r in range(k):
+                H[r] += point_hessian(ld.P, Q[r], F, n)
+    return H

@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import all_roots, newton_system
+from dyncli.rootfind import all_roots, newton_system, newton_systems
 
 from . import assembly, curvature
 
@@ -56,9 +56,20 @@ class Search:
         self.dof = system.n - assembly.rank(system.jac(q0)) if system.m else system.n
         f = self.forces(q0)
         self.F0 = max(float(np.max(np.abs(f), initial=0.0)), float(np.max(np.abs(system.grav), initial=0.0)), 1e-300)
+        self.floor = 1e-10 * self.F0 * max(1.0, self.L)      # all_roots' resolution of the force along a path
+        # many paths and Newton starts at once, unless an element on a curve keeps the foot of its
+        # point from the last position asked (its next foot is searched from there: one at a time)
+        self.stacked = not any(hasattr(e, "hessian") for e in system.elements)
 
     def forces(self, q) -> np.ndarray:
         return self.s.applied(q, np.zeros(self.n), 0.0)[0]
+
+    def forces_many(self, Q) -> np.ndarray:
+        """:meth:`forces` at the configurations Q (k, n): gravity alone for all rows at once, with
+        loads row by row."""
+        if not self.s.loads:
+            return np.broadcast_to(self.s.grav, np.shape(Q))
+        return np.array([self.forces(q) for q in Q]).reshape(np.shape(Q))
 
     def multipliers(self, q) -> np.ndarray:
         J = self.s.jac(q)
@@ -77,9 +88,42 @@ class Search:
         return True
 
     # ------------------------------------------------------------------ Newton on (q, λ)
+    def rests_from(self, starts) -> list:
+        """The equilibrium Newton's method reaches from each start, (q, λ) or None: one Newton
+        iteration a start, all run together (rootfind.newton_systems: the rows' F, Jacobians and
+        least-squares steps stacked, each row stopped on its own), then each result checked."""
+        s, n, m = self.s, self.n, self.s.m
+        if len(starts) <= 1:
+            return [self.rest_from(q) for q in starts]
+
+        def F(Y):
+            Q, L = Y[:, :n], Y[:, n:]
+            X = s.stack(Q)
+            out = np.empty_like(Y)
+            out[:, :n] = self.forces_many(Q)
+            if m:
+                out[:, :n] += np.einsum("kri,kr->ki", s.jac_many(X), L)
+                out[:, n:] = s.phi_many(X, s.at_times(np.zeros(len(Y))))
+            return out
+
+        def jac(Y):
+            Q, L = Y[:, :n], Y[:, n:]
+            A = np.zeros((len(Y), n + m, n + m))
+            A[:, :n, :n] = curvature.rest_hessians(s, Q, L)
+            if m:
+                J = s.jac_many(s.stack(Q))
+                A[:, :n, n:] = np.swapaxes(J, 1, 2)
+                A[:, n:, :n] = J
+            return A
+
+        Y0 = np.array([np.concatenate([q, self.multipliers(q)]) for q in starts])
+        scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
+        Y, conv = newton_systems(F, jac, Y0, scale=scale, tol=1e-13)
+        return [self._checked(q0, Y[k, :n]) if conv[k] else None for k, q0 in enumerate(starts)]
+
     def rest_from(self, q_start):
-        s, n = self.s, self.n
-        m = s.m
+        """:meth:`rests_from` from one start (its F and Jacobian in the one-state forms)."""
+        s, n, m = self.s, self.n, self.s.m
 
         def F(y):
             q, lam = y[:n], y[n:]
@@ -97,9 +141,12 @@ class Search:
         y0 = np.concatenate([q_start, self.multipliers(q_start)])
         scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
         y, ok = newton_system(F, jac, y0, scale=scale, tol=1e-13)
-        if not ok:
-            return None
-        q = y[:n]
+        return self._checked(q_start, y[:n]) if ok else None
+
+    def _checked(self, q_start, q):
+        """(q, λ) when Newton's point q is on the joints, reached without a spring or damper passing
+        through zero length, and its loads held by the joints (λ by least squares); else None."""
+        s = self.s
         if float(np.max(np.abs(s.phi(q, 0.0)), initial=0.0)) > 1e-10 * self.L or not self.same_sides(q_start, q):
             return None
         lam = self.multipliers(q)
@@ -126,50 +173,127 @@ class Search:
         nrm = float(np.linalg.norm(ts))
         return None if nrm < 1e-12 else ts / nrm * self.scale
 
+    def _onto_many(self, Q):
+        """:meth:`_onto` of every row of Q (k, n) at once: (the points, placed or not)."""
+        s, sc = self.s, self.scale
+        Q = np.array(Q, dtype=float)
+        act = np.arange(len(Q) if s.m else 0)
+        if s.m:
+            td = s.at_times(np.zeros(len(Q)))
+            for _ in range(30):
+                ph = s.phi_many(s.stack(Q[act]), [x[act] for x in td])
+                done = np.max(np.abs(ph), axis=1) <= 1e-13 * self.L
+                act, ph = act[~done], ph[~done]
+                if not act.size:
+                    break
+                Js = s.jac_many(s.stack(Q[act])) * sc
+                Q[act] -= (np.swapaxes(Js, 1, 2) @ _row_solve_many(Js, ph)[:, :, None])[:, :, 0] * sc
+        ok = np.ones(len(Q), dtype=bool)
+        ok[act] = False
+        return Q, ok
+
+    def _tangents(self, Q, T) -> np.ndarray:
+        """:meth:`_tangent` at every row of Q along the row of T at once (NaN rows where it vanishes)."""
+        ts = T / self.scale
+        if self.s.m:
+            J = self.s.jac_many(self.s.stack(Q)) * self.scale
+            ts = ts - (np.swapaxes(J, 1, 2) @ _row_solve_many(J, (J @ ts[:, :, None])[:, :, 0])[:, :, None])[:, :, 0]
+        nrm = np.linalg.norm(ts, axis=1)
+        with np.errstate(all="ignore"):
+            return np.where((nrm >= 1e-12)[:, None], ts / nrm[:, None] * self.scale, np.nan)
+
     def path_starts(self, q0, t0) -> list:
-        """Points of the path from q0 along t0 (both ways) where the force along it vanishes:
-        every root and touch of g on every step, decided by :meth:`step_roots`.  The steps of one
-        way are walked first; g at every step's first Chebyshev nodes is then evaluated in one
-        stacked call (:meth:`first_cells`: the same values, one call instead of one a step)."""
+        """Points of the path from q0 along t0 (both ways) where the force along it vanishes
+        (:meth:`walks` of this one path)."""
+        return self.walks([(q0, t0)])[0]
+
+    def walks(self, froms) -> list[list]:
+        """For each (q0, t0) of ``froms``, the points of the path from q0 along t0 (both ways) where
+        the force along it vanishes: every root and touch of g on every step, decided by
+        :meth:`step_roots`, and every fifth point of the path.  All the paths are walked together,
+        a step of each at once (:meth:`_onto_many`, :meth:`_tangents`: each row's own
+        Gauss–Newton and projection, a path stopping on its own), and g at every step's first
+        Chebyshev nodes is then evaluated in one stacked call for all of them (:meth:`first_cells`:
+        the same values, one call instead of one a step)."""
+        ways = [(q0, sign * t0) for q0, t0 in froms for sign in (1.0, -1.0)]
+        walks: list[tuple[list, list]] = [([], []) for _ in ways]
+        roots: list[list] = []
+        for group in ([range(len(ways))] if self.stacked else [[w] for w in range(len(ways))]):
+            self._walk(ways, walks, list(group))
+            roots += self.walks_roots([walks[w] for w in group])
         out = []
-        for sign in (1.0, -1.0):
-            q, t = q0.copy(), self._tangent(q0, sign * t0)
-            if t is None:
-                continue
-            steps, tans = [], [t]
-            for k in range(int(REACH / STEP)):
-                q_new = self._onto(q + STEP * t)
-                if q_new is None:
-                    break
-                t_new = self._tangent(q_new, t)
-                if t_new is None or not self.same_sides(q, q_new):
-                    break
-                steps.append((q, q_new))
-                tans.append(t_new)
-                q, t = q_new, t_new
-            out += self.walk_roots(steps, tans)
-            out += [qb for k, (_qa, qb) in enumerate(steps) if k % EVERY == EVERY - 1]   # starts on the path itself
-        return [x for x in out if x is not None]
+        for k in range(len(froms)):
+            got = []
+            for w in (2 * k, 2 * k + 1):
+                got += roots[w]
+                got += [qb for j, (_qa, qb) in enumerate(walks[w][0]) if j % EVERY == EVERY - 1]   # starts on the path itself
+            out.append([x for x in got if x is not None])
+        return out
+
+    def _walk(self, ways, walks, group) -> None:
+        """The ways (q0, t0) of ``group`` walked together, their steps and tangents into ``walks``."""
+        qs, ts, live = [], [], []
+        for w in group:
+            q0, t0 = ways[w]
+            t = self._tangent(q0, t0)
+            if t is not None:
+                qs.append(q0.copy())
+                ts.append(t)
+                live.append(w)
+                walks[w][1].append(t)
+        for _ in range(int(REACH / STEP)):
+            if not live:
+                break
+            if len(live) == 1:                  # one path (an element on a curve): the plain forms
+                q1 = self._onto(qs[0] + STEP * ts[0])
+                t1 = None if q1 is None else self._tangent(q1, ts[0])
+                Q, ok = np.array([qs[0] if q1 is None else q1]), np.array([q1 is not None])
+                T = np.array([np.full(self.n, np.nan) if t1 is None else t1])
+            else:
+                Q, ok = self._onto_many(np.array(qs) + STEP * np.array(ts))
+                T = self._tangents(Q, np.array(ts))
+            nq, nt, nl = [], [], []
+            for j, w in enumerate(live):
+                if not ok[j] or not np.isfinite(T[j, 0]) or not self.same_sides(qs[j], Q[j]):
+                    continue
+                walks[w][0].append((qs[j], Q[j]))
+                walks[w][1].append(T[j])
+                nq.append(Q[j])
+                nt.append(T[j])
+                nl.append(w)
+            qs, ts, live = nq, nt, nl
 
     def walk_roots(self, steps, tans) -> list:
-        """The roots and touches of the force along one walk: with one degree of freedom over
-        stretches of many steps at once (:meth:`stretch_roots`), else step by step."""
-        out: list = []
-        i, single = 0, list[int]()
-        pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
-        while i < len(steps):
-            j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
-            got = self.stretch_roots(pts[i:j + 1]) if j > i + 1 else None
-            if got is None:
-                single += range(i, j)
-            else:
-                out += got
-            i = j
-        known = self.first_cells([steps[k] for k in single])      # the steps decided one by one: stacked
-        for k, kn in zip(single, known):
-            qa, qb = steps[k]
-            out += self.step_roots(qa, qb, kn)
-        return out
+        """:meth:`walks_roots` of one walk."""
+        return self.walks_roots([(steps, tans)])[0]
+
+    def walks_roots(self, walks) -> list[list]:
+        """The roots and touches of the force along each walk (steps, tangents): with one degree of
+        freedom over stretches of many steps at once (:meth:`stretch_roots`), else step by step
+        (the steps of all the walks decided one by one stacked in one :meth:`first_cells`)."""
+        outs: list[list] = []
+        single: list[tuple[int, int]] = []
+        for w, (steps, tans) in enumerate(walks):
+            out: list = []
+            i = 0
+            pts = [steps[0][0]] + [qb for _qa, qb in steps] if steps else []
+            while i < len(steps):
+                j = self.stretch_end(pts, tans, i) if self.dof == 1 and self.s.m == self.n - 1 else i + 1
+                got = self.stretch_roots(pts[i:j + 1]) if j > i + 1 else None
+                if got is None:
+                    single += [(w, k) for k in range(i, j)]
+                else:
+                    out += got
+                i = j
+            outs.append(out)
+        steps = [walks[w][0][k] for w, k in single]
+        known = self.first_cells(steps)
+        done = self.second_cells(steps, known)
+        for (w, k), kn, clear in zip(single, known, done):
+            if not clear:
+                qa, qb = walks[w][0][k]
+                outs[w] += self.step_roots(qa, qb, kn)
+        return outs
 
     def stretch_end(self, pts, tans, i: int) -> int:
         """The last walk point j such that the path from point i to j is a graph over the chord
@@ -264,6 +388,43 @@ class Search:
         k = len(taus)
         return [dict(zip(taus.tolist(), vals[j * k:(j + 1) * k].tolist())) for j in range(len(steps))]
 
+    def clear(self, known) -> bool:
+        """The force along a step has no root and no touch, decided from its values ``known`` at the
+        nodes of all_roots' first cell [0, 1], or of both its halves (:func:`away_from_zero`)."""
+        vals = [known.get(x, math.nan) for x in NODES.tolist()]
+        if away_from_zero(vals, self.floor):
+            return True
+        return all(x in known for x in HALVES.tolist()) and all(
+            away_from_zero([known[x] for x in half.tolist()], self.floor) for half in (HALVES[:DEG + 1], HALVES[DEG + 1:]))
+
+    def second_cells(self, steps, known) -> np.ndarray:
+        """Which steps are clear of zero (no root, no touch: :func:`clear_of_zero`, all steps at
+        once) from g at their first cell's nodes, or else at both halves [0, ½], [½, 1] of it: for
+        the steps whose first cell is not resolved (all_roots would halve it), g at the halves'
+        nodes (and at ½) in one stacked :meth:`along` for all of them, added to their ``known``
+        values (all_roots reuses them where a step is not clear)."""
+        if not steps:
+            return np.zeros(0, dtype=bool)
+        Y = np.array([[kn.get(x, math.nan) for x in NODES.tolist()] for kn in known])
+        clear, unresolved = clear_of_zero(Y, self.floor)
+        todo = np.nonzero(unresolved)[0]
+        if not todo.size:
+            return clear
+        taus = np.concatenate([HALVES, [0.5]])
+        Q = np.concatenate([steps[j][0] + taus[:, None] * (steps[j][1] - steps[j][0]) for j in todo])
+        D = np.repeat(np.array([steps[j][1] - steps[j][0] for j in todo]), len(taus), axis=0)
+        try:
+            vals = self.along(Q, D)
+        except np.linalg.LinAlgError:
+            return clear
+        k = len(taus)
+        for i, j in enumerate(todo):
+            known[j].update(zip(taus.tolist(), vals[i * k:(i + 1) * k].tolist()))
+        V = vals.reshape(len(todo), k)
+        both = clear_of_zero(V[:, :DEG + 1], self.floor)[0] & clear_of_zero(V[:, DEG + 1:2 * DEG + 2], self.floor)[0]
+        clear[todo] = both
+        return clear
+
     def step_roots(self, qa, qb, known=None) -> list:
         """The points of the step p(τ) = onto(qa + τ (qb − qa)), τ in [0, 1], where the force along
         it, g(τ) = t(τ)·f(p(τ)) (t the chord's direction projected on the joints' tangent at p),
@@ -279,7 +440,15 @@ class Search:
             t = None if p is None else self._tangent(p, d)
             return math.nan if t is None else float(t @ self.forces(p))
 
+        def one(x):
+            try:
+                return point(x)
+            except np.linalg.LinAlgError:       # joints not finite there: not on them (as along gives)
+                return math.nan
+
         def fresh(taus):
+            if len(taus) <= 2:                  # Brent's points, a cell's critical points: the plain forms
+                return np.array([one(float(x)) for x in taus])
             try:
                 return self.along(qa + taus[:, None] * d, d)
             except np.linalg.LinAlgError:       # dependent rows somewhere: one point at a time (least squares)
@@ -293,8 +462,8 @@ class Search:
                 out[new] = fresh(taus[new])
             return out
 
-        floor = 1e-10 * self.F0 * max(1.0, self.L)
-        if away_from_zero([known.get(x, math.nan) for x in NODES.tolist()], floor):
+        floor = self.floor
+        if self.clear(known):
             return []
         roots, touches, bad = all_roots(g, 0.0, 1.0, cells=1, deg=DEG, floor=floor, budget=BUDGET)
         return [self._onto(qa + x * d) for x in roots + touches + bad]
@@ -335,14 +504,34 @@ class Search:
         nrm = np.linalg.norm(T, axis=1)
         ok &= np.all(np.isfinite(Q), axis=1) & (nrm >= 1e-12)
         out = np.full(len(Q), np.nan)
-        for k in np.nonzero(ok)[0]:
-            out[k] = float((T[k] / nrm[k] * sc) @ self.forces(Q[k]))
+        k = np.nonzero(ok)[0]
+        out[k] = np.einsum("ki,ki->k", T[k] / nrm[k, None] * sc, self.forces_many(Q[k]))
         return out
 
 
 NODES = 0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1)    # all_roots' first cell [0, 1]
+#: the nodes of its two halves [0, ½] and [½, 1] (all_roots' m + h x of each, the same doubles)
+HALVES = np.concatenate([0.25 + 0.25 * np.polynomial.chebyshev.chebpts1(DEG + 1),
+                         0.75 + 0.25 * np.polynomial.chebyshev.chebpts1(DEG + 1)])
 #: (c = COEF @ g(NODES): the Chebyshev coefficients of g's interpolant on [0, 1], all_roots' own)
 COEF = np.polynomial.chebyshev.chebvander(2 * NODES - 1, DEG).T * np.r_[1.0, np.full(DEG, 2.0)][:, None] / (DEG + 1)
+
+
+def _resolution(y, c, floor: float) -> float:
+    """all_roots' resolution of an interpolant with coefficients c of the values y."""
+    return max(1e-13 * float(np.max(np.abs(c))), 16 * EPS * float(np.max(np.abs(y))), floor)
+
+
+def clear_of_zero(Y, floor: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`away_from_zero` of each row of Y (k, DEG + 1: g at a cell's nodes), all at once; and
+    which rows are finite but not resolved (all_roots would halve that cell)."""
+    fin = np.all(np.isfinite(Y), axis=1)
+    Y = np.where(fin[:, None], Y, 0.0)
+    C = Y @ COEF.T
+    tol = np.maximum(np.maximum(1e-13 * np.max(np.abs(C), axis=1), 16 * EPS * np.max(np.abs(Y), axis=1)), floor)
+    resolved = np.max(np.abs(C[:, -3:]), axis=1) <= tol
+    clear = fin & resolved & (np.abs(C[:, 0]) - np.sum(np.abs(C[:, 1:]), axis=1) > 4 * tol)
+    return clear, fin & ~resolved
 
 
 def away_from_zero(ys, floor: float) -> bool:
@@ -356,7 +545,7 @@ def away_from_zero(ys, floor: float) -> bool:
     if not np.all(np.isfinite(y)):
         return False
     c = COEF @ y
-    tol = max(1e-13 * float(np.max(np.abs(c))), 16 * EPS * float(np.max(np.abs(y))), floor)
+    tol = _resolution(y, c, floor)
     if float(np.max(np.abs(c[-3:]))) > tol:
         return False
     return abs(float(c[0])) - float(np.sum(np.abs(c[1:]))) > 4 * tol
@@ -376,6 +565,20 @@ def _row_solve(J, r) -> np.ndarray:
     except np.linalg.LinAlgError:
         pass
     return np.linalg.lstsq(JJ, r, rcond=None)[0]
+
+
+def _row_solve_many(J, R) -> np.ndarray:
+    """:func:`_row_solve` of every row of the stacks J (k, m, n) and R (k, m) at once (one stacked
+    LU); row by row (least squares, or LinAlgError, as there) when a matrix is singular or not finite."""
+    JJ = J @ np.swapaxes(J, 1, 2)
+    if np.all(np.isfinite(JJ)) and np.all(np.isfinite(R)):
+        try:
+            x = np.linalg.solve(JJ, R[:, :, None])[:, :, 0]
+            if np.all(np.isfinite(x)):
+                return x
+        except np.linalg.LinAlgError:
+            pass
+    return np.array([_row_solve(J[k], R[k]) for k in range(len(J))]).reshape(R.shape)
 
 
 def null_basis(J, n: int, indep: list[int]) -> np.ndarray:
@@ -420,9 +623,16 @@ def _same(a, b, search, dirs) -> bool:
     return False
 
 
-def _walks(S, q, indep) -> list:
-    Z = null_basis(S.s.jac(q), S.n, indep)
-    return [x for k in range(Z.shape[1]) for x in S.path_starts(q, Z[:, k])]
+def _walks(S, froms) -> list[list]:
+    """The starts of the paths along each free coordinate from each (q, its independent
+    coordinates) of ``froms``: one list a configuration."""
+    ways, cut = [], [0]
+    for q, indep in froms:
+        Z = null_basis(S.s.jac(q), S.n, indep)
+        ways += [(q, Z[:, k]) for k in range(Z.shape[1])]
+        cut.append(len(ways))
+    got = S.walks(ways) if ways else []
+    return [[x for w in range(a, b) for x in got[w]] for a, b in zip(cut[:-1], cut[1:])]
 
 
 def _near_start(q, q0, angles) -> np.ndarray:
@@ -433,36 +643,47 @@ def _near_start(q, q0, angles) -> np.ndarray:
 
 
 def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Every equilibrium reached: [(q, λ)], the one reached from the initial configuration first."""
+    """Every equilibrium reached: [(q, λ)], the one reached from the initial configuration first.
+
+    The starts are taken in order (the initial configuration, the points of its paths, then the
+    points of the paths from each new equilibrium), in rounds: Newton runs from all the starts
+    queued at once (:meth:`Search.rests_from`), their results are read in the queue's order, and
+    the paths from the round's new equilibria are walked together — the same equilibria, in the
+    same order, as one start at a time."""
     S = Search(system, q0)
-    starts = [q0] + _walks(S, q0, coords_idx)
+    starts = [q0] + _walks(S, [(q0, coords_idx)])[0]
     found: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
     dropped: list[str] = []
-    walked = 0
+    walked, i, full = 0, 0, False
     tried: set[bytes] = set()           # a start already run (the same doubles: the same result)
-    while starts:
-        start = starts.pop(0)
-        if (key := np.asarray(start, dtype=float).tobytes()) in tried:
-            continue
-        tried.add(key)
-        got = S.rest_from(start)
-        if got is None:
-            continue
-        q, lam = got
-        q = _near_start(q, q0, S.angles)
-        if any(_same(q, f[0], S, f[2]) for f in found):
-            continue
-        bad = _pulls(system, q, lam)
-        found.append((q, lam, neutral_dirs(system, q, lam)))
-        if bad:
-            pos = ", ".join(f"{nm} = {x:.6g}" for nm, x in zip(system.names, q))
-            dropped.append(f"at {pos}: {bad}")
-        if walked < MAX_WALKED:           # the paths from each new equilibrium reach the others
-            walked += 1
-            starts += _walks(S, q, assembly.independent(system.jac(q), system.n))
-        if len(found) >= MAX_FOUND:
-            warn(f"the equilibrium search stopped after {MAX_FOUND} equilibria")
-            break
+    while i < len(starts) and not full:
+        batch, new = [], []
+        while i < len(starts) and (S.stacked or not batch):
+            start, i = starts[i], i + 1
+            if (key := np.asarray(start, dtype=float).tobytes()) not in tried:
+                tried.add(key)
+                batch.append(start)
+        for start, got in zip(batch, S.rests_from(batch)):
+            if got is None:
+                continue
+            q, lam = got
+            q = _near_start(q, q0, S.angles)
+            if any(_same(q, f[0], S, f[2]) for f in found):
+                continue
+            bad = _pulls(system, q, lam)
+            found.append((q, lam, neutral_dirs(system, q, lam)))
+            if bad:
+                pos = ", ".join(f"{nm} = {x:.6g}" for nm, x in zip(system.names, q))
+                dropped.append(f"at {pos}: {bad}")
+            if walked < MAX_WALKED:           # the paths from each new equilibrium reach the others
+                walked += 1
+                new.append((q, assembly.independent(system.jac(q), system.n)))
+            if len(found) >= MAX_FOUND:
+                warn(f"the equilibrium search stopped after {MAX_FOUND} equilibria")
+                full = True
+                break
+        if not full:
+            starts += [x for got in _walks(S, new) for x in got]
     if len(dropped) == len(found):
         warn("no rest configuration found: the loads cannot be held by the joints at rest anywhere the search "
              "reached (from the given configuration and along each free coordinate)")
