@@ -620,16 +620,16 @@ def newton_systems(F, jac, X0, *, scale, max_step: float = 0.5, tol: float = 1e-
 
 
 def lstsq_many(A, B, rcond: float):
-    """The minimum-norm least-squares solutions of A[k] x = B[k] for a stack of square matrices,
+    """The minimum-norm least-squares solutions of A[k] x = B[k] for a stack of matrices,
     as ``numpy.linalg.lstsq(A[k], B[k], rcond)`` (LAPACK's gelsd: singular values at or below
     rcond times the largest taken as zero), by one stacked SVD; a matrix that is not finite goes
     to lstsq itself (which raises as it would)."""
     import numpy as np
 
     fin = np.all(np.isfinite(A), axis=(1, 2))
-    out = np.empty(B.shape)
+    out = np.empty((len(A), A.shape[2]))
     if np.any(fin):
-        U, s, Vt = np.linalg.svd(A[fin])
+        U, s, Vt = np.linalg.svd(A[fin], full_matrices=False)
         keep = s > rcond * s[:, :1]
         inv = np.divide(1.0, s, out=np.zeros_like(s), where=keep)
         out[fin] = np.einsum("kji,kj->ki", Vt, inv * np.einsum("kji,kj->ki", U, B[fin]))

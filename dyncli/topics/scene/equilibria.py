@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from dyncli.rootfind import all_roots, newton_system, newton_systems
+from dyncli.rootfind import all_roots, lstsq_many, newton_system, newton_systems
 
 from . import assembly, curvature
 
@@ -77,6 +77,14 @@ class Search:
             return np.zeros(0)
         return np.linalg.lstsq(J.T, -self.forces(q), rcond=None)[0]
 
+    def multipliers_many(self, Q, J=None) -> np.ndarray:
+        """:meth:`multipliers` at every row of Q (k, n) at once (J: the rows' Jacobians, if known)."""
+        if not self.s.m:
+            return np.zeros((len(Q), 0))
+        if J is None:
+            J = self.s.jac_many(self.s.stack(Q))
+        return lstsq_many(np.swapaxes(J, 1, 2), -self.forces_many(Q), rcond=EPS * max(self.n, self.s.m))
+
     def same_sides(self, qa, qb) -> bool:
         """No spring or damper passed through zero length from qa to qb (its direction, undefined
         there, would flip: the model ends where its two ends meet)."""
@@ -116,10 +124,24 @@ class Search:
                 A[:, n:, :n] = J
             return A
 
-        Y0 = np.array([np.concatenate([q, self.multipliers(q)]) for q in starts])
+        Q0 = np.array(starts, dtype=float)
+        Y0 = np.concatenate([Q0, self.multipliers_many(Q0)], axis=1)
         scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
         Y, conv = newton_systems(F, jac, Y0, scale=scale, tol=1e-13)
-        return [self._checked(q0, Y[k, :n]) if conv[k] else None for k, q0 in enumerate(starts)]
+        out: list = [None] * len(starts)
+        k = np.nonzero(conv)[0]
+        if not k.size:
+            return out
+        Q = Y[k, :n]
+        X = s.stack(Q)
+        on = np.max(np.abs(s.phi_many(X, s.at_times(np.zeros(len(k))))), axis=1, initial=0.0) <= 1e-10 * self.L
+        J = s.jac_many(X) if m else np.zeros((len(k), 0, n))
+        lam = self.multipliers_many(Q, J)
+        held = np.max(np.abs(self.forces_many(Q) + np.einsum("kri,kr->ki", J, lam)), axis=1, initial=0.0) <= 1e-9 * self.F0
+        for j, kk in enumerate(k.tolist()):
+            if on[j] and held[j] and self.same_sides(starts[kk], Q[j]):
+                out[kk] = (Q[j].copy(), lam[j].copy())
+        return out
 
     def rest_from(self, q_start):
         """:meth:`rests_from` from one start (its F and Jacobian in the one-state forms)."""
