@@ -18,8 +18,18 @@ coefficients alone (:func:`away_from_zero`).  With one degree of freedom the ste
 together over *stretches* (:meth:`Search.stretch_roots`): where the walk is a graph over the
 chord of a run of steps, the path is the section of the joints by the planes normal to that
 chord, and one all_roots (cells halved where g needs it) decides the same zeros as a cell of
-degree 12 on every step, at a fraction of the evaluations.  An equilibrium beyond half a turn
-from every start can still be missed (said in the docs).
+degree 12 on every step, at a fraction of the evaluations.  With more degrees of freedom each
+step keeps its own cell; what is shared is the arithmetic: :func:`find` works in *rounds* — Newton
+runs from every start queued at once (:meth:`Search.rests_from`: one iteration a row, stacked F,
+Jacobians from curvature.rest_hessians and least-squares steps by one stacked SVD, each row
+stopped on its own), the results are read in the queue's order (the same equilibria in the same
+order as one start at a time), and the paths from the round's new equilibria are walked together
+(:meth:`Search.walks`: a step of every path in one stacked Gauss–Newton), their steps' first cells
+evaluated in one call, the steps whose first cell is not resolved evaluated on both halves in one
+more, and the clear-of-zero test applied to all of them at once (:func:`clear_of_zero`).  A scene
+with an element on a curve (whose point's foot is searched from the last one asked) keeps one
+path and one start at a time.  An equilibrium beyond half a turn from every start can still be
+missed (said in the docs).
 Equilibria that differ by whole turns of an angle, or along a neutral direction of a continuum
 of equilibria, are one.  A one-sided joint that would pull (or a rolling body that would slip)
 at an equilibrium is not a rest configuration: that equilibrium is dropped with a warning.
@@ -679,7 +689,8 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
     walked, i, full = 0, 0, False
     tried: set[bytes] = set()           # a start already run (the same doubles: the same result)
     while i < len(starts) and not full:
-        batch, new = [], []
+        batch: list[np.ndarray] = []
+        new: list[tuple[np.ndarray, list[int]]] = []
         while i < len(starts) and (S.stacked or not batch):
             start, i = starts[i], i + 1
             if (key := np.asarray(start, dtype=float).tobytes()) not in tried:
