@@ -301,8 +301,11 @@ class Search:
 
     def walks_roots(self, walks) -> list[list]:
         """The roots and touches of the force along each walk (steps, tangents): with one degree of
-        freedom over stretches of many steps at once (:meth:`stretch_roots`), else step by step
-        (the steps of all the walks decided one by one stacked in one :meth:`first_cells`)."""
+        freedom over stretches of many steps at once (:meth:`stretch_roots`), else step by step.
+        The steps of all the walks decided one by one are evaluated together (:meth:`cell_values`
+        at their first cells and ends, then at both halves of the first cells not resolved) and
+        decided clear of zero all at once (:func:`clear_of_zero`); the others go to
+        :meth:`step_roots` with their values known."""
         outs: list[list] = []
         single: list[tuple[int, int]] = []
         for w, (steps, tans) in enumerate(walks):
@@ -319,12 +322,22 @@ class Search:
                 i = j
             outs.append(out)
         steps = [walks[w][0][k] for w, k in single]
-        known = self.first_cells(steps)
-        done = self.second_cells(steps, known)
-        for (w, k), kn, clear in zip(single, known, done):
-            if not clear:
-                qa, qb = walks[w][0][k]
-                outs[w] += self.step_roots(qa, qb, kn)
+        V, evaluated = self.cell_values(steps, FIRST)
+        clear, unresolved = clear_of_zero(V[:, :DEG + 1], self.floor)
+        todo = np.nonzero(unresolved)[0]
+        halves: dict[int, np.ndarray] = {}
+        if todo.size:               # a first cell not resolved: both its halves, for all such steps at once
+            V2, got2 = self.cell_values([steps[j] for j in todo], SECOND)
+            clear[todo] = got2 & clear_of_zero(V2[:, :DEG + 1], self.floor)[0] & \
+                clear_of_zero(V2[:, DEG + 1:2 * DEG + 2], self.floor)[0]
+            halves = {int(j): V2[i] for i, j in enumerate(todo) if got2[i]}
+        for j in np.nonzero(~clear)[0].tolist():
+            w, k = single[j]
+            known = dict(zip(FIRST.tolist(), V[j].tolist())) if evaluated[j] else {}
+            if j in halves:
+                known.update(zip(SECOND.tolist(), halves[j].tolist()))
+            qa, qb = walks[w][0][k]
+            outs[w] += self.step_roots(qa, qb, known)
         return outs
 
     def stretch_end(self, pts, tans, i: int) -> int:
@@ -404,21 +417,36 @@ class Search:
 
     def first_cells(self, steps) -> list:
         """g at the DEG + 1 Chebyshev nodes of all_roots' first cell [0, 1] of every step and at
-        its ends (where all_roots reads the signs), in one stacked :meth:`along` (each row's
-        Gauss–Newton and solves its own: the values of one call a step), as {τ: g} per step;
-        {} for every step when a row's matrix is singular (then each step's own call falls back
-        to least squares where needed)."""
-        if not steps:
-            return []
-        taus = np.concatenate([NODES, [0.0, 1.0]])
-        Q = np.concatenate([qa + taus[:, None] * (qb - qa) for qa, qb in steps])
-        D = np.repeat(np.array([qb - qa for qa, qb in steps]), len(taus), axis=0)
-        try:
-            vals = self.along(Q, D)
-        except np.linalg.LinAlgError:
-            return [{} for _ in steps]
-        k = len(taus)
-        return [dict(zip(taus.tolist(), vals[j * k:(j + 1) * k].tolist())) for j in range(len(steps))]
+        its ends (where all_roots reads the signs) by :meth:`cell_values`, as {τ: g} per step ({}
+        for a step whose rows' matrices are singular: its own call falls back to least squares)."""
+        V, got = self.cell_values(steps, FIRST)
+        return [dict(zip(FIRST.tolist(), V[j].tolist())) if got[j] else {} for j in range(len(steps))]
+
+    def cell_values(self, steps, taus) -> tuple[np.ndarray, np.ndarray]:
+        """g at the points τ of ``taus`` of every step (qa, qb), in one stacked :meth:`along` (each
+        row's Gauss–Newton and solves its own: the values of one call a step): (the values, a row a
+        step; which steps were evaluated).  Where a row's matrix is singular the steps are halved
+        until the steps with such a row are alone (those are left to their own calls, which fall
+        back to least squares)."""
+        V = np.full((len(steps), len(taus)), np.nan)
+        got = np.zeros(len(steps), dtype=bool)
+
+        def run(lo: int, hi: int) -> None:
+            Q = np.concatenate([steps[j][0] + taus[:, None] * (steps[j][1] - steps[j][0]) for j in range(lo, hi)])
+            D = np.repeat(np.array([steps[j][1] - steps[j][0] for j in range(lo, hi)]), len(taus), axis=0)
+            try:
+                vals = self.along(Q, D)
+            except np.linalg.LinAlgError:
+                if hi - lo > 1:
+                    run(lo, (lo + hi) // 2)
+                    run((lo + hi) // 2, hi)
+                return
+            V[lo:hi] = vals.reshape(hi - lo, len(taus))
+            got[lo:hi] = True
+
+        if steps:
+            run(0, len(steps))
+        return V, got
 
     def clear(self, known) -> bool:
         """The force along a step has no root and no touch, decided from its values ``known`` at the
@@ -428,34 +456,6 @@ class Search:
             return True
         return all(x in known for x in HALVES.tolist()) and all(
             away_from_zero([known[x] for x in half.tolist()], self.floor) for half in (HALVES[:DEG + 1], HALVES[DEG + 1:]))
-
-    def second_cells(self, steps, known) -> np.ndarray:
-        """Which steps are clear of zero (no root, no touch: :func:`clear_of_zero`, all steps at
-        once) from g at their first cell's nodes, or else at both halves [0, ½], [½, 1] of it: for
-        the steps whose first cell is not resolved (all_roots would halve it), g at the halves'
-        nodes (and at ½) in one stacked :meth:`along` for all of them, added to their ``known``
-        values (all_roots reuses them where a step is not clear)."""
-        if not steps:
-            return np.zeros(0, dtype=bool)
-        Y = np.array([[kn.get(x, math.nan) for x in NODES.tolist()] for kn in known])
-        clear, unresolved = clear_of_zero(Y, self.floor)
-        todo = np.nonzero(unresolved)[0]
-        if not todo.size:
-            return clear
-        taus = np.concatenate([HALVES, [0.5]])
-        Q = np.concatenate([steps[j][0] + taus[:, None] * (steps[j][1] - steps[j][0]) for j in todo])
-        D = np.repeat(np.array([steps[j][1] - steps[j][0] for j in todo]), len(taus), axis=0)
-        try:
-            vals = self.along(Q, D)
-        except np.linalg.LinAlgError:
-            return clear
-        k = len(taus)
-        for i, j in enumerate(todo):
-            known[j].update(zip(taus.tolist(), vals[i * k:(i + 1) * k].tolist()))
-        V = vals.reshape(len(todo), k)
-        both = clear_of_zero(V[:, :DEG + 1], self.floor)[0] & clear_of_zero(V[:, DEG + 1:2 * DEG + 2], self.floor)[0]
-        clear[todo] = both
-        return clear
 
     def step_roots(self, qa, qb, known=None) -> list:
         """The points of the step p(τ) = onto(qa + τ (qb − qa)), τ in [0, 1], where the force along
@@ -545,6 +545,8 @@ NODES = 0.5 + 0.5 * np.polynomial.chebyshev.chebpts1(DEG + 1)    # all_roots' fi
 #: the nodes of its two halves [0, ½] and [½, 1] (all_roots' m + h x of each, the same doubles)
 HALVES = np.concatenate([0.25 + 0.25 * np.polynomial.chebyshev.chebpts1(DEG + 1),
                          0.75 + 0.25 * np.polynomial.chebyshev.chebpts1(DEG + 1)])
+FIRST = np.concatenate([NODES, [0.0, 1.0]])     # a step's first evaluation: the first cell and the ends
+SECOND = np.concatenate([HALVES, [0.5]])        # a first cell not resolved: its halves and their common end
 #: (c = COEF @ g(NODES): the Chebyshev coefficients of g's interpolant on [0, 1], all_roots' own)
 COEF = np.polynomial.chebyshev.chebvander(2 * NODES - 1, DEG).T * np.r_[1.0, np.full(DEG, 2.0)][:, None] / (DEG + 1)
 

@@ -133,3 +133,35 @@ def test_double_pendulum_rests_with_few_stacked_jacobians(k, monkeypatch):
     assert got == sorted(want)
     assert calls["jacobians"] <= 60
     assert calls["projections"] <= 200
+
+
+def test_cell_values_isolate_a_singular_step(monkeypatch):
+    """A step whose rows have a singular matrix (``along`` raises for any stack holding it) is left
+    to its own call; every other step has the values ``along`` gives it alone."""
+    from dyncli.topics.scene import equilibria
+
+    scene = _pendulum()
+    s = scene.system
+    S = equilibria.Search(s, scene.q0)
+    Z = equilibria.null_basis(s.jac(scene.q0), s.n, [s.names.index(c) for c in scene.coords])
+    q, t = scene.q0.copy(), S._tangent(scene.q0, Z[:, 0])
+    steps = []
+    for _ in range(9):
+        q_new = S._onto(q + equilibria.STEP * t)
+        steps.append((q, q_new))
+        q, t = q_new, S._tangent(q_new, t)
+    along = S.along
+    bad = steps[5][0] + equilibria.FIRST[3] * (steps[5][1] - steps[5][0])      # a node inside step 5
+
+    def singular(Q, D):
+        if np.any(np.all(np.abs(np.asarray(Q) - bad) < 1e-12, axis=1)):
+            raise np.linalg.LinAlgError("singular")
+        return along(Q, D)
+
+    monkeypatch.setattr(S, "along", singular)
+    V, got = S.cell_values(steps, equilibria.FIRST)
+    assert got.tolist() == [k != 5 for k in range(9)]
+    for k, (qa, qb) in enumerate(steps):
+        if k != 5:
+            one = along(qa + equilibria.FIRST[:, None] * (qb - qa), qb - qa)
+            assert np.array_equal(V[k], one)
