@@ -27,3 +27,21 @@ def gallery(name: str) -> dict:
     rec = recs[0]
     assert rec.get("error") is None, rec.get("error")
     return rec
+
+
+def walk_steps(scene, count: int):
+    """(the equilibrium search of ``scene``, the first ``count`` steps (q_k, q_{k+1}) of its path
+    along the first free direction from the start): what the search's path tests walk."""
+    from dyncli.topics.scene import equilibria
+
+    s = scene.system
+    S = equilibria.Search(s, scene.q0)
+    Z = equilibria.null_basis(s.jac(scene.q0), s.n, [s.names.index(c) for c in scene.coords])
+    q, t = scene.q0.copy(), S._tangent(scene.q0, Z[:, 0])
+    steps = []
+    for _ in range(count):
+        q_new = S._onto(q + equilibria.STEP * t)
+        steps.append((q, q_new))
+        q, t = q_new, S._tangent(q_new, t)
+    return S, steps
+

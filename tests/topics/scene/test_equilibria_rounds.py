@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import PROBLEMS, ROOT
+from tests.topics.scene.common import walk_steps
 
 #: a rigid rod on a link from an off-centre point, a spring and a constant force on off-centre
 #: points: every stacked branch of curvature.rest_hessians (links, springs, forces, arms that turn)
@@ -140,16 +141,7 @@ def test_cell_values_isolate_a_singular_step(monkeypatch):
     to its own call; every other step has the values ``along`` gives it alone."""
     from dyncli.topics.scene import equilibria
 
-    scene = _pendulum()
-    s = scene.system
-    S = equilibria.Search(s, scene.q0)
-    Z = equilibria.null_basis(s.jac(scene.q0), s.n, [s.names.index(c) for c in scene.coords])
-    q, t = scene.q0.copy(), S._tangent(scene.q0, Z[:, 0])
-    steps = []
-    for _ in range(9):
-        q_new = S._onto(q + equilibria.STEP * t)
-        steps.append((q, q_new))
-        q, t = q_new, S._tangent(q_new, t)
+    S, steps = walk_steps(_pendulum(), 9)
     along = S.along
     bad = steps[5][0] + equilibria.FIRST[3] * (steps[5][1] - steps[5][0])      # a node inside step 5
 

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import PROBLEMS, ROOT
+from tests.topics.scene.common import walk_steps
 
 
 def _scene(name: str):
@@ -25,19 +26,7 @@ def _scene(name: str):
 
 @pytest.mark.parametrize("name", ["double-pendulum-modes.yaml", "ball-in-bowl.yaml"])
 def test_stacked_first_cells_equal_one_call_a_step(name):
-    from dyncli.topics.scene import equilibria
-
-    scene = _scene(name)
-    s = scene.system
-    S = equilibria.Search(s, scene.q0)
-    preferred = [s.names.index(c) for c in scene.coords]
-    Z = equilibria.null_basis(s.jac(scene.q0), s.n, preferred)
-    q, t = scene.q0.copy(), S._tangent(scene.q0, Z[:, 0])
-    steps = []
-    for _ in range(6):
-        q_new = S._onto(q + equilibria.STEP * t)
-        steps.append((q, q_new))
-        q, t = q_new, S._tangent(q_new, t)
+    S, steps = walk_steps(_scene(name), 6)
     known = S.first_cells(steps)
     assert len(known) == len(steps)
     for (qa, qb), got in zip(steps, known):
