@@ -25,6 +25,25 @@ def quiet_interrupts() -> None:
     sig.signal(sig.SIGINT, _interrupted)
 
 
+#: the BLAS thread counts the command sets to 1 where the user has not set them: its matrices have
+#: a few rows (a scene's 9 × 9, a few hundred at a time at most), where a BLAS thread pool only
+#: waits — and on a loaded machine OpenBLAS's threads spin: a stacked 9 × 9 inverse took 100 ms of
+#: wall time for 2 ms of work (numpy 1.26's OpenBLAS 0.3.23, two test suites at once), unseen by
+#: the solve's CPU budget, which counts its own thread
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def single_threaded_blas() -> None:
+    """One BLAS thread for the command (never set by ``import dyncli``; a variable the user set
+    is kept).  Only before numpy is imported: its BLAS reads them when it loads."""
+    if "numpy" in _sys.modules:
+        return
+    import os
+
+    for name in BLAS_THREADS:
+        os.environ.setdefault(name, "1")
+
+
 def _started_as_command() -> bool:
     """True when this import is the ``dyncli`` command's own start-up
     (``python -m dyncli`` or the ``dyncli`` script), never for ``import dyncli``."""
@@ -40,6 +59,7 @@ if _started_as_command():
     # ends it with exit 130 and nothing printed (dyncli.__main__); before this
     # line only the interpreter's own start-up runs (docs/cli.md, "Interrupts")
     quiet_interrupts()
+    single_threaded_blas()
 
 __version__ = "0.1.0"
 

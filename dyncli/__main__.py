@@ -9,7 +9,7 @@ route to :func:`main`."""
 
 import sys
 
-from dyncli import quiet_interrupts
+from dyncli import quiet_interrupts, single_threaded_blas
 
 #: pydantic's module that finds its plugins (the ``pydantic`` entry-point group)
 PLUGIN_LOADER = "pydantic.plugin._loader"
@@ -46,6 +46,7 @@ def no_pydantic_plugins() -> None:
 
 def main() -> None:
     quiet_interrupts()
+    single_threaded_blas()
     no_pydantic_plugins()
     from dyncli.cli import main as cli_main
 

@@ -14,7 +14,12 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
+# one BLAS thread, as the command runs (dyncli.single_threaded_blas): set before numpy is
+# imported, here and in the xdist workers, which inherit the environment
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
+import pytest  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = ROOT / "problems"
