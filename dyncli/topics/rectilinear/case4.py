@@ -37,6 +37,7 @@ from typing import Iterable
 
 import numpy as np
 
+from dyncli.errors import NumericalError
 from dyncli.rootfind import root_in_bracket
 from dyncli.topics.rectilinear.case4_legs import End, Energy, Leg
 from dyncli.topics.rectilinear import case4_sens as sens
@@ -153,6 +154,11 @@ class _Case4:
         if self.endB.kind == "turn":
             self.bwd += [(B, True, -e), (F, False, -e)]
         self.period = 2 * (F.duration + B.duration) if self.periodic else math.inf
+        if self.periodic and not (self.period > 0 and math.isfinite(self.period)):
+            raise NumericalError(f"the oscillation between the turning points s = {fmt(self.endB.pos)} and "
+                                 f"{fmt(self.endF.pos)} has a period of {fmt(self.period)} s in doubles: its "
+                                 "amplitude is below the rounding of s (or its period beyond the doubles); rescale "
+                                 "the units of s or v1")
         sens.setup(self)
         return True
 

@@ -56,3 +56,15 @@ def test_case1_turning_point_given_as_expression():
     for q in rec["results"]["find"]:
         assert q["reached"] and q["v"] == 0.0
         assert q["t"] == pytest.approx(10 / 9.81, rel=4.5e-16)
+
+
+def test_an_oscillation_below_the_rounding_of_s_is_a_numerical_error():
+    """k = 1e-298, m = 4, v1 = 1e-300 from s1 = 0: the amplitude v1/ω = 2e-151 is below the
+    rounding the position scan resolves, so both legs last 0 s in doubles and the period is 0;
+    a time query then took fmod(t, 0) (exit 3, fuzz seed 3391620).  Refused, exit 1, saying why."""
+    from tests.conftest import solve_text
+
+    rec = solve_text("type: rectilinear\na: -k/m*s\nparams: {k: 1.0000000000000001e-298, m: 4}\n"
+                     "s1: 0.0\nv1: 1.0e-300\nfind: [{t: 1.0e-16}, {t: 50}]\n", "tiny.yaml")[0]
+    assert rec["exit_code"] == 1, rec["error"]
+    assert "period" in rec["error"] and "rescale" in rec["error"]
