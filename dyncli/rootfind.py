@@ -392,16 +392,25 @@ def distinct_sorted(a):
 
 
 @functools.lru_cache(maxsize=8)
-def _derivative_series(deg: int):
+def _series(deg: int):
     """(the deg + 1 Chebyshev points of the first kind, the matrix taking a polynomial's values
-    there to the Chebyshev coefficients of its derivative): interpolation and differentiation
-    in one product."""
-    import numpy as np
+    there to its Chebyshev coefficients): interpolation in one product (kept: never written to)."""
     from numpy.polynomial import chebyshev as C
 
     x = C.chebpts1(deg + 1)
     to_series = C.chebvander(x, deg) / (deg + 1)
     to_series[:, 1:] *= 2
+    return x, to_series
+
+
+@functools.lru_cache(maxsize=8)
+def _derivative_series(deg: int):
+    """(the points of :func:`_series`, the matrix taking a polynomial's values there to the
+    Chebyshev coefficients of its derivative): interpolation and differentiation in one product."""
+    import numpy as np
+    from numpy.polynomial import chebyshev as C
+
+    x, to_series = _series(deg)
     return x, to_series @ C.chebder(np.eye(deg + 1), axis=0).T
 
 
@@ -488,9 +497,7 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
 
     eps = sys.float_info.epsilon
     B = distinct_sorted(np.asarray(list(breaks), dtype=float))
-    x1, _ = _derivative_series(deg)
-    V = C.chebvander(x1, deg) / (deg + 1)
-    V[:, 1:] *= 2
+    x1, V = _series(deg)
     cells = np.stack([B[:-1], B[1:]], axis=1) if B.size > 1 else np.zeros((0, 2))
     active = None                                        # (components, cells): still to resolve there
     cuts: list[set[float]] = []
@@ -729,9 +736,7 @@ def smooth_minima(f, n: int, deg: int = 20, noise=0.0):
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
-    x, _ = _derivative_series(deg)
-    V = C.chebvander(x, deg) / (deg + 1)
-    V[:, 1:] *= 2
+    x, V = _series(deg)
     k = np.arange(n)
     with np.errstate(all="ignore"):
         Y = np.asarray(f(np.tile(0.5 + 0.5 * x, n), np.repeat(k, x.size)), dtype=float).reshape(n, x.size)
