@@ -139,6 +139,26 @@ def independent(J: np.ndarray, n: int) -> list[int]:
     return sorted(chosen)
 
 
+def implied_rates(system, q, v, given, t: float = 0.0) -> np.ndarray:
+    """v with the rates left out (``given`` False) set to what the joints impose with the rates
+    given held: the least mass-weighted change of the left-out rates that brings J v + φ_t
+    closest to 0 (a rolling disk given its centre's velocity turns at −v/R; a hanging mass tied
+    to a block given a speed moves with it).  Left-out rates no joint fixes stay as they are
+    (at rest); what the given rates themselves violate is left to :func:`project_velocity`."""
+    free = ~np.asarray(given, dtype=bool)
+    if system.m == 0 or not free.any():
+        return v
+    J = system.jac(q)
+    r = J @ v + system.phi_t(t)
+    if not float(np.max(np.abs(r), initial=0.0)) > 0.0:
+        return v
+    root_w = np.sqrt(system.weights()[free])
+    z = np.linalg.lstsq(J[:, free] / root_w, -r, rcond=None)[0]
+    out = np.array(v, dtype=float)
+    out[free] += z / root_w
+    return out
+
+
 def project_velocity(system, q, v, t: float = 0.0):
     """(v projected onto J v + φ_t = 0, changed?)."""
     if system.m == 0:

@@ -75,7 +75,8 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
         res.warn(w)
     if find_raw:
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn,
-                                             rtol=0.0 if str(traj.method or route).startswith("closed") else acc.rtol)
+                                             rtol=0.0 if str(traj.method or route).startswith("closed") else acc.rtol,
+                                             distance=distance)
         for e in res.results["find"]:
             e["distance"] = ({k: v[0] for k, v in distance([e["t"]]).items()} if e.get("reached") else None)
     res.method = traj.method or route

@@ -48,6 +48,8 @@ def setup(plan: build.Plan) -> Scene:
             system.elements.append(cord)
             system.refresh()
             for gd in guides:
+                if _held_otherwise(system, q, gd, warnings.append):
+                    continue
                 system.elements.append(gd)
                 system.refresh()
                 J = system.jac(q)
@@ -68,7 +70,7 @@ def setup(plan: build.Plan) -> Scene:
                          f"joints.{red[0]}")
     v_in = v.copy()
     start.slipping_given(system, q, v, vgiven)
-    v, changed = assembly.project_velocity(system, q, v)
+    v, changed = assembly.project_velocity(system, q, assembly.implied_rates(system, q, v, vgiven))
     moved = [k for k in range(n) if vgiven[k] and abs(v[k] - v_in[k]) > 1e-12 * max(abs(v_in[k]), abs(v[k]), 1e-300)]
     if changed and moved:
         warnings.append("the initial velocities given violate the joints and were projected (mass-weighted) onto "
@@ -84,6 +86,34 @@ def setup(plan: build.Plan) -> Scene:
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
+def _held_otherwise(system, q, guide, warn) -> bool:
+    """Whether another joint than a cord already holds the guided mass in some direction (a block
+    on a table tied over a pulley): the table guides it, not its segment; guided along the
+    segment too, it could not move at all.  A segment at an angle to the one path left to the
+    mass is told (``warn``): the cord keeps its segments' directions of t = 0.  A segment
+    across that path (a block on the floor that the cord will lift) still guides the mass."""
+    cols = list(guide.P.body.index[:2])
+    ql = q.tolist()
+    rows = [r for e in system.elements if e.rows and e.kind not in ("cord", "guide") for r in e.jac_list(ql)]
+    if not rows:
+        return False
+    held = np.array(rows, dtype=float)[:, cols]
+    if assembly.rank(held) == 0:
+        return False
+    if assembly.rank(held) == 1:
+        k = int(np.argmax(np.abs(held).sum(axis=1)))
+        path = np.array([-held[k, 1], held[k, 0]]) / math.hypot(held[k, 0], held[k, 1])
+        off = abs(float(guide.w @ path))
+        if off > 1.0 - 1e-9:
+            return False                # a segment across the path (a block lifted off the floor): guided by it
+        if off > 1e-9:
+            cord = guide.name.partition(":")[0]
+            warn(f"the cord {cord!r} meets {guide.P.body.name!r} at {math.degrees(math.asin(min(off, 1.0))):.3g}° to "
+                 "the path its other joints allow: the cord keeps its segments' directions of t = 0, so that angle "
+                 "stays as it is (exact while the segment runs along the path: put the pulley in line with it)")
+    return True
+
+
 def _rate_name(coord: str) -> str:
     """x.A.0 -> v.A.0, angle.rod -> omega.rod."""
     head, _, rest = coord.partition(".")
@@ -92,7 +122,7 @@ def _rate_name(coord: str) -> str:
 
 def _sketch_links_and_rolls(plan, R, q, free) -> None:
     """Sketch positions the joints place exactly: a link's free end from its `angle`, a rolling
-    body's centre from `at`."""
+    body's centre from `at` (held there: given)."""
     for name, j in plan.joints.items():
         if j["kind"] == "link" and j["angle"] is not None and j["length"] is not None:
             P, Q = R.point(j["link"][0], ""), R.point(j["link"][1], "")
@@ -109,6 +139,9 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
                     c = curved.place_on(s, j["at"], b.radius)
                 else:
                     c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
+                    # `at` on a line is where it touches: its centre is held there (its angle,
+                    # left free, is the rolling row's: not a second branch of the assembly)
+                    free[b.index[0]] = free[b.index[1]] = False
                 q[b.index[0]], q[b.index[1]] = c
         if j["kind"] == "contact" and j["at"] is not None:
             P, s = R.point(j["contact"][0], ""), R.surface(j["contact"][1], "")

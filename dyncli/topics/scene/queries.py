@@ -15,8 +15,9 @@ from . import report
 
 
 class SceneMotion:
-    def __init__(self, traj, inst, rtol: float = 0.0):
+    def __init__(self, traj, inst, rtol: float = 0.0, distance=None):
         self.traj, self.inst, self.rtol = traj, inst, float(rtol)   # rtol: equal extremes, touches
+        self.distance = distance        # :func:`odometer`'s at(times), for distance.BODY (or None)
         self._coords = _coordinate_paths(traj.system)
         self.t0 = traj.t0
         self.t_end = traj.stopped if traj.stopped is not None else traj.t_end
@@ -41,10 +42,21 @@ class SceneMotion:
 
     def paths(self):
         if self._paths is None:
-            self._paths = sorted(self._flat(self.t0))
+            walked = [f"distance.{b.name}" for b in self.traj.system.bodies] if self.distance else []
+            self._paths = sorted(list(self._flat(self.t0)) + walked)
         return self._paths
 
+    def distances(self, path: str, ts) -> np.ndarray:
+        """distance.BODY at many times (the odometer's, one pass over them)."""
+        body = path.partition(".")[2]
+        got = self.distance([float(t) for t in ts]).get(body) if self.distance is not None else None
+        if got is None or any(x is None for x in got):
+            raise KeyError(path)
+        return np.asarray(got, dtype=float)
+
     def value(self, path: str, t: float) -> float:
+        if path.startswith("distance."):
+            return float(self.distances(path, [t])[0])
         fast = self._coords.get(path)
         if fast is not None:            # a body's coordinate or rate: the state alone, no solve
             if not self._ahead:         # the searches' sample grid, made together where the route can
@@ -86,9 +98,10 @@ def _coordinate_paths(system) -> dict:
     return out
 
 
-def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0) -> list[dict]:
+def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0, distance=None) -> list[dict]:
+    """The answers; ``distance``: :func:`odometer`'s at(times), searched as ``distance.BODY``."""
     qs = _q.parse_queries(raw, lambda text: constant(text, params))
-    motion = SceneMotion(traj, inst, rtol)
+    motion = SceneMotion(traj, inst, rtol, distance)
     _cut_at_extremes(motion, raw, warn)
     out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
@@ -170,6 +183,8 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
             if fast is not None and Y is not None:
                 which, k = fast
                 rows.append(Y[k if which == "q" else n + k])
+            elif path.startswith("distance."):
+                rows.append(motion.distances(path, ts))
             else:
                 rows.append(np.array([motion.value(path, t) for t in ts], dtype=float))
         return np.array(rows, dtype=float)
