@@ -58,6 +58,7 @@ def setup(plan: build.Plan) -> Scene:
                     system.refresh()
         q = assembly.assemble(system, q, free)
     assembly.refuse_gaps(system, q, free)
+    _refuse_moving_pulley_at_angle(system, q)
     other = assembly.other_branch(system, q, free)
     if other is not None:
         k, mine, theirs = other
@@ -112,6 +113,38 @@ def _held_otherwise(system, q, guide, warn) -> bool:
                  "the path its other joints allow: the cord keeps its segments' directions of t = 0, so that angle "
                  "stays as it is (exact while the segment runs along the path: put the pulley in line with it)")
     return True
+
+
+def _refuse_moving_pulley_at_angle(system, q) -> None:
+    """A cord over a disk body whose centre can move (a moving pulley) is followed only with its
+    two segments there parallel: the cord keeps its segments' directions of t = 0, which holds
+    while the pulley moves along them; at an angle their pull turns the pulley aside and the
+    directions kept would not be the cord's."""
+    cords = [e for e in system.elements if e.kind == "cord"]
+    if not cords:
+        return
+    free_motion = None
+    for cord in cords:
+        segs = [sg for run in cord.runs for sg in run]
+        for s_in, s_out in zip(segs[:-1], segs[1:]):
+            c = s_in.b.centre
+            if c is None or s_out.a.centre is None or s_out.a.centre.body is not c.body:
+                continue
+            cross = abs(float(s_in.u[0] * s_out.u[1] - s_in.u[1] * s_out.u[0]))
+            if cross <= 1e-9:
+                continue
+            if free_motion is None:     # the velocities the joints allow: the null space of J
+                J = system.jac(q)
+                _, sv, vt = np.linalg.svd(J) if J.size else (None, np.zeros(0), np.eye(system.n))
+                tol = max(sv.max(initial=0.0), 1.0) * 1e-10
+                free_motion = vt[int(np.sum(sv > tol)):]
+            cols = list(c.body.index[:2])
+            if float(np.max(np.abs(free_motion[:, cols]), initial=0.0)) > 1e-9:
+                deg = math.degrees(math.asin(min(cross, 1.0)))
+                raise InputError(f"the cord {cord.name!r} passes over the moving disk {c.body.name!r} with its two "
+                                 f"segments at {deg:.3g}° to each other: a moving pulley is followed with parallel "
+                                 "segments only (the cord keeps its segments' directions of t = 0); place the pulleys "
+                                 "so that both segments run parallel", cord.path)
 
 
 def _rate_name(coord: str) -> str:

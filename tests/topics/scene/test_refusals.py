@@ -594,3 +594,43 @@ joints:
 at: [0, 1]
 """
     refusal(text, "bodies.rod.angle", "1e+16 rad", "within a few turns")
+
+
+def test_a_moving_pulley_whose_segments_are_not_parallel_is_refused_with_their_angle():
+    # the cord comes straight down from the ground to the hanging disk P and leaves it for a
+    # fixed pulley whose left side is 0.1 m further right than P's: the second segment leans
+    # from the vertical by the angle of its tangent line between the two circles (5.66°)
+    refusal("""
+type: scene
+bodies:
+  P: {shape: disk, mass: 1, radius: 0.1, x: [0.1, -1], angle: 0}
+  B: {shape: point, mass: 1.5, x: [0.5, -1]}
+joints:
+  rope: {cord: [[0, 0], P, {pulley: [0.4, 0], radius: 0.1}, B]}
+at: [0, 1]
+""", "joints.rope.cord", "moving disk 'P'", "5.66°", "parallel")
+
+
+def test_a_moving_pulley_with_parallel_segments_is_solved():
+    # the same with the fixed pulley 0.1 m to the left: both segments vertical.  P (1 kg, a disk:
+    # Ī/r² = m_P/2) carries A (4 kg) on a link; B (1.5 kg) hangs over the fixed pulley.  P and A
+    # drop y, B rises 2y, P turns y/r (the ground side of the cord is still): by energy (34.20)
+    # [m_A + m_P + m_P/2 + 4 m_B] a_P = (m_A + m_P − 2 m_B) g
+    text = """
+type: scene
+bodies:
+  P: {shape: disk, mass: 1, radius: 0.1, x: [0.1, -1], angle: 0}
+  A: {shape: point, mass: 4, x: [0.1, -1.5]}
+  B: {shape: point, mass: 1.5, x: [0.4, -1]}
+joints:
+  hang: {link: [P, A], length: 0.5}
+  rope: {cord: [[0, 0], P, {pulley: [0.3, 0], radius: 0.1}, B]}
+at: [0]
+"""
+    from tests.conftest import solve_one_text
+
+    r = solve_one_text(text)["results"]
+    g, mA, mP, mB = 9.81, 4.0, 1.0, 1.5
+    aP = (mA + mP - 2 * mB) * g / (mA + mP + mP / 2 + 4 * mB)
+    assert abs(r["a"]["P"][0][1] + aP) <= 1e-9 * g
+    assert abs(r["a"]["B"][0][1] - 2 * aP) <= 1e-9 * g
