@@ -317,7 +317,8 @@ def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
 
 
 def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> tuple[el.Cord, list[el.Guide]]:
-    """A cord with the directions of its segments at the assembled positions of t = 0."""
+    """A cord with the directions of its segments at the assembled positions of t = 0 (one
+    between two points over no pulley: a :class:`~.elements.String`, its length exact)."""
     path = f"joints.{name}.cord"
     nodes = _cord_nodes(path, spec["cord"], R)
     centres = [_centre(nd, q) for nd in nodes]
@@ -344,6 +345,11 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
             runs.append(run)
             run = []
     runs.append(run)
+    if len(nodes) == 2 and all(nd[0] == "point" for nd in nodes):
+        # a string between two points: its own length, not its direction of t = 0 (no guide)
+        string = el.String(name, "cord", len(q), path, runs=runs)
+        string.consts = list(string.lengths(q))
+        return string, []
     cord = el.Cord(name, "cord", len(q), path, runs=runs)
     cord.consts = list(cord.lengths(q))
     return cord, guides

@@ -333,6 +333,32 @@ class Slider(ListRows):
         return out
 
 
+def span_row(P: Point, Q: Point, q, n: int) -> list:
+    """∂|r_P − r_Q|/∂q: the row of a length held between two points (a link, a string)."""
+    (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
+    d1, d2 = p1 - q1, p2 - q2
+    ln = math.hypot(d1, d2)
+    e1, e2 = d1 / ln, d2 / ln
+    row = [0.0] * n
+    P.add_jac(row, q, e1, e2)
+    Q.add_jac(row, q, -e1, -e2)
+    return row
+
+
+def span_gamma(P: Point, Q: Point, q, v) -> float:
+    """−(the part of d²|r_P − r_Q|/dt² that is not the row times q̈): e·(b_P − b_Q) (the points'
+    velocity-squared terms) and the turning of e, (|ḋ|² − (e·ḋ)²)/|d|."""
+    (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
+    d1, d2 = p1 - q1, p2 - q2
+    ln = math.hypot(d1, d2)
+    e1, e2 = d1 / ln, d2 / ln
+    (pv1, pv2), (qv1, qv2) = P.vel_xy(q, v), Q.vel_xy(q, v)
+    (pb1, pb2), (qb1, qb2) = P.bias_xy(q, v), Q.bias_xy(q, v)
+    dv1, dv2 = pv1 - qv1, pv2 - qv2
+    ev = e1 * dv1 + e2 * dv2
+    return -((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)
+
+
 @dataclass(kw_only=True)
 class Link(ListRows):
     """A massless rigid link (36): |r_P − r_Q| = L; T tension positive."""
@@ -353,21 +379,10 @@ class Link(ListRows):
         return [ln - self.L]
 
     def jac_list(self, q):
-        (d1, d2), ln = self._d(q)
-        e1, e2 = d1 / ln, d2 / ln
-        row = [0.0] * self.n
-        self.P.add_jac(row, q, e1, e2)
-        self.Q.add_jac(row, q, -e1, -e2)
-        return [row]
+        return [span_row(self.P, self.Q, q, self.n)]
 
     def gamma_list(self, q, v, t):
-        (d1, d2), ln = self._d(q)
-        e1, e2 = d1 / ln, d2 / ln
-        (pv1, pv2), (qv1, qv2) = self.P.vel_xy(q, v), self.Q.vel_xy(q, v)
-        (pb1, pb2), (qb1, qb2) = self.P.bias_xy(q, v), self.Q.bias_xy(q, v)
-        dv1, dv2 = pv1 - qv1, pv2 - qv2
-        ev = e1 * dv1 + e2 * dv2
-        return [-((e1 * (pb1 - qb1) + e2 * (pb2 - qb2)) + (dv1 * dv1 + dv2 * dv2 - ev * ev) / ln)]
+        return [span_gamma(self.P, self.Q, q, v)]
 
     def kkt_lists(self, q, v, t):
         p1, p2, pv1, pv2, pb1, pb2, pa = self.P.kin(q, v)
@@ -593,6 +608,55 @@ class Cord(Element):
     def watch(self, lam, q, v, t):
         T, gap = self.tensions(lam), np.array(self.consts) - self.lengths(q)
         return [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
+
+
+@dataclass
+class String(Cord):
+    """A cord of one straight segment between two points, over no pulley (a ball whirled on a
+    string, a mass hanging from a ceiling point): its length is |r_b − r_a| itself, its direction
+    turning with the points — a link (36) that can only pull (T ≥ 0), goes slack and is jerked
+    taut as any cord.  (A cord over pulleys keeps its segments' directions of t = 0.)"""
+
+    linear = False                  # (Cord's is a property of its ends)
+
+    def ends(self) -> tuple[Point, Point]:
+        """(the point at its far end, the point at its first): its length is |r_b − r_a|."""
+        seg = self.runs[0][0]
+        assert seg.a.point is not None and seg.b.point is not None, "a string runs between two points"
+        return seg.b.point, seg.a.point
+
+    def lengths(self, q) -> np.ndarray:
+        P, Q = self.ends()
+        (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
+        return np.array([math.hypot(p1 - q1, p2 - q2)])
+
+    def jac_list(self, q):
+        return [span_row(*self.ends(), q, self.n)] if not self.slack else []
+
+    def gamma_list(self, q, v, t):
+        return [span_gamma(*self.ends(), q, v)] if not self.slack else []
+
+    def run_rate(self, q, v, r: int) -> float:
+        return float(np.array(span_row(*self.ends(), q, self.n)) @ v)
+
+    def straight_along(self, q, N) -> bool:
+        """Whether its direction stays put along the motion q + N s (its ends on bodies that do
+        not turn, moving apart along its own line: blocks tied in a row on a floor): its row is
+        then affine along that motion, as a cord's over pulleys."""
+        P, Q = self.ends()
+        if P.turns_with_body or Q.turns_with_body:
+            return False
+        d = P.pos(q) - Q.pos(q)
+        w = P.jac(q, self.n) @ N - Q.jac(q, self.n) @ N
+        return abs(float(d[0] * w[1] - d[1] * w[0])) <= 1e-12 * math.hypot(*d) * math.hypot(*w)
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ λ ∇²φ of its row (curvature.py: the equilibria's stiffness of a taut string)."""
+        from .curvature import length_terms
+
+        if self.slack:
+            return np.zeros((n, n))
+        return w[0] * length_terms(*self.ends(), q, n)[3]
 
 
 @dataclass(kw_only=True)

@@ -597,7 +597,7 @@ class Linear1:
 def closed_form_reason(system, N: np.ndarray, q0) -> str | None:
     """None when the 1-DOF motion along N is affine (constant Jacobian, affine loads); else why not."""
     for e in system.elements:
-        if e.rows and not e.linear:
+        if e.rows and not e.linear and not (hasattr(e, "straight_along") and e.straight_along(q0, N)):
             return f"the {e.kind} {e.name!r} is not linear in the coordinates"
         if e.kind == "drive":
             return "a drive prescribes a motion in time"

@@ -282,6 +282,9 @@ def _initial_modes(system, q, v) -> None:
     if not at_rest:
         return
     J = system.jac(q)
+    if assembly.rank(J) < J.shape[0] and _slide_together(system, q, v, at_rest):
+        at_rest = [e for e in at_rest if e.mode == "stick"]
+        J = system.jac(q)
     if assembly.rank(J) < J.shape[0]:
         names = [e.name for e in at_rest]
         raise InputError(f"the friction at {', '.join(names)} is not determined by the equations of motion (statically "
@@ -302,6 +305,57 @@ def _initial_modes(system, q, v) -> None:
         worst.mode, worst.sign = "slide", sign
         at_rest.remove(worst)
         system.refresh()
+
+
+def _slide_together(system, q, v, at_rest) -> bool:
+    """Rough contacts at rest whose held rows are dependent (blocks tied by a string on a rough
+    floor): which friction each would take is not determined, but whether they can be held at
+    all is.  Their group (the contacts whose held row takes part in the dependence) slides when
+    even the static limit μ_s N at every one, against the way each point goes without friction,
+    leaves each going that way: no friction within the limits then holds them (between none and
+    all of it the points' accelerations only shrink).  Leaves the group sliding (kinetic
+    friction) and returns True; else leaves the contacts as they were and returns False."""
+    def deficiency() -> int:
+        J = system.jac(q)
+        return J.shape[0] - assembly.rank(J)
+
+    d0 = deficiency()
+    group = []
+    for e in at_rest:
+        e.mode, e.sign = "slide", 0.0
+        system.refresh()
+        if deficiency() < d0:
+            group.append(e)
+        e.mode = "stick"
+        system.refresh()
+
+    def tangential(sign_of) -> list[float]:
+        for e in group:
+            e.mode, e.sign = "slide", sign_of(e)
+        system.refresh()
+        a, _, _ = system.solve(q, v, 0.0)
+        out = []
+        for e in group:
+            b1, b2 = e.P.bias_xy(q, v)
+            d1, d2 = e.surface.d
+            out.append(float(e.tangent_jac(q) @ a) + d1 * b1 + d2 * b2)
+        return out
+
+    kept = [(e.mu_k, e.mode, e.sign) for e in group]
+    free = tangential(lambda e: 0.0)                # the way each point goes without friction
+    scale = max(map(abs, free), default=0.0)
+    signs = {id(e): math.copysign(1.0, f) for e, f in zip(group, free)}
+    slides = bool(group) and all(abs(f) > 1e-9 * scale for f in free) and scale > 0
+    if slides:
+        for e in group:
+            e.mu_k = e.mu_s                         # the static limit, against the way it goes
+        held = tangential(lambda e: signs[id(e)])
+        slides = all(math.copysign(1.0, h) == signs[id(e)] and abs(h) > 1e-9 * scale for e, h in zip(group, held))
+    for e, (mu_k, mode, sign) in zip(group, kept):
+        e.mu_k = mu_k
+        e.mode, e.sign = ("slide", signs[id(e)]) if slides else (mode, sign)
+    system.refresh()
+    return slides
 
 
 def _refuse_at_start(system, q, v) -> None:

@@ -161,7 +161,13 @@ def _signed_radius(G: Geometry, b, k: float):
 
 
 def _cord(e, G: Geometry, S: Symbols):
-    """Rows Σ u·(X_b − X_a) = const per run; λ = −T per run."""
+    """Rows Σ u·(X_b − X_a) = const per run; λ = −T per run (a string between two points: its
+    length |r_b − r_a| = const, as a link's)."""
+    if hasattr(e, "ends"):
+        b, a = e.ends()
+        d = G.pos(b) - G.pos(a)
+        T = S.force("T", e.name, "")
+        return [sp.sqrt(d[0] ** 2 + d[1] ** 2) - exact(e.consts[0])], [-T], [T]
     phis, tens = [], []
     for r, run in enumerate(e.runs):
         total = sp.Integer(0)

@@ -1,7 +1,8 @@
 """The questions homework asks of a scene, as a student writes them: "the speed after 4 m"
 (a ``when`` on ``distance.BODY``), "how high does it rise" (a disk given its centre's speed, the
 spin left to the rolling), "a block given a speed drags a hanging mass" (the rates left out are
-those the joints impose, the rates given are kept).
+those the joints impose, the rates given are kept), a block on a table tied over a pulley, "where
+does the string go slack" (a cord between two points is a string: its exact length).
 
 References by hand (constant accelerations 16.7, rolling 15.8, energy 34.20) and, for the
 pendulum's time to the bottom, mpmath's complete elliptic integral at 30 digits.  Exact routes:
@@ -194,3 +195,108 @@ at: [0]
     near(r["v"]["B"][0][0], 2, 2, "v1")
     near(r["v"]["B"][0][1], 0, 2, "v2")
     assert any("were projected" in w and "v.B.1 = 0" in w for w in rec["warnings"]), rec["warnings"]
+
+
+def test_a_ball_whirled_on_a_string_goes_slack_where_g_cos_equals_v2_over_l():
+    # a cord from a ceiling point straight to a ball is a string (its own length, its direction
+    # turning): given v0 = 7 m/s at the bottom of a 1 m circle, the energy (34.20) gives
+    # v² = v0² − 2 g L (1 − cos θ) (θ from the bottom) and the radial balance (16.7)
+    # T = m v²/L + m g cos θ, so T = 0 where cos θ = −(v0²/(g L) − 2)/3: the ball is at
+    # height −L cos θ; the time is the quadrature ∫ L dθ / v(θ) (mpmath, 30 digits)
+    v0, L = 7, 1
+    rec = solve_one_text(f"""
+type: scene
+bodies:
+  ball: {{shape: point, mass: 1, x: [0, -{L}], v: [{v0}, 0]}}
+joints:
+  string: {{cord: [[0, 0], ball]}}
+t_end: 0.65
+""")
+    r = rec["results"]
+    with mp.workdps(30):
+        c = -(mp.mpf(v0) ** 2 / (G * L) - 2) / 3
+        th = mp.acos(c)
+        t_slack = mp.quad(lambda a: L / mp.sqrt(v0 ** 2 - 2 * G * L * (1 - mp.cos(a))), [0, th])
+    assert r["dof"] == 1 and [(e["joint"], e["what"]) for e in r["events"]] == [("string", "slack")]
+    ev = r["events"][0]
+    near(ev["t"], t_slack, 1, "t", ODE_TOL)
+    near(ev["state"]["x"]["ball"][1], -L * c, L, "height", ODE_TOL)
+    near(ev["state"]["x"]["ball"][0], L * mp.sin(th), L, "x1", ODE_TOL)
+
+
+def test_a_string_pendulum_from_the_horizontal_pulls_3_mg_at_the_bottom():
+    # released from the horizontal: v² = 2 g L at the bottom, T = m g + m v²/L = 3 m g (16.7),
+    # reached after a quarter period √(L/g) K(m = 1/2)
+    rec = solve_one_text("""
+type: scene
+bodies:
+  ball: {shape: point, mass: 2, x: [1.5, 0]}
+joints:
+  string: {cord: [[0, 0], ball]}
+t_end: 1
+find: [{max: reaction.string.T.0}]
+""")
+    f = rec["results"]["find"][0]
+    near(f["reaction"]["string"]["T"][0], 3 * 2 * G, 2 * G, "T", ODE_TOL)
+    near(f["t"], mp.sqrt(mp.mpf("1.5") / G) * mp.ellipk(mp.mpf(1) / 2), 1, "t", ODE_TOL)
+    assert rec["results"]["events"] == []
+
+
+def test_a_string_pendulum_oscillates_at_root_g_over_l():
+    # small oscillations about the hanging position: ω² = g/L (the string's length from the
+    # position given, L = √(0.3² + 1.5²)); the position above the ceiling point would need the
+    # string to push, so it is no rest configuration (left out, with a warning)
+    rec = solve_one_text("""
+type: scene
+bodies:
+  ball: {shape: point, mass: 2, x: [0.3, -1.5]}
+joints:
+  string: {cord: [[0, 0], ball]}
+linearize: true
+at: [0]
+""")
+    eq = rec["results"]["equilibria"]
+    L = math.hypot(0.3, 1.5)
+    assert len(eq) == 1 and eq[0]["stability"] == "stable"
+    near(eq[0]["frequencies"][0], math.sqrt(G / L), 1, "omega", 1e-9)
+    assert any("'string' slack" in w for w in rec["warnings"])
+
+
+TIED = """
+type: scene
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+bodies:
+  A: {{shape: point, mass: 2, x: [0, 0]}}
+  B: {{shape: point, mass: 3, x: [1, 0]}}
+joints:
+  onA: {{contact: [A, floor], mu: 0.1}}
+  onB: {{contact: [B, floor], mu: 0.1}}
+  tie: {{cord: [A, B]}}
+forces:
+  - {{force: B, F: [{F}, 0]}}
+at: [0, 1]
+"""
+
+
+def test_two_blocks_tied_by_a_string_pulled_across_a_rough_floor():
+    # F = 20 N on B, μ = 0.1 at both: the static limit μ (m_A + m_B) g = 4.905 N cannot hold
+    # them, so both slide (16.7): a = (F − μ (m_A + m_B) g)/(m_A + m_B), T = m_A (a + μ g); the
+    # string along the floor keeps its direction: constant accelerations, a closed form
+    rec = solve_one_text(TIED.format(F=20))
+    r = rec["results"]
+    a = (20 - 0.1 * 5 * G) / 5
+    assert r["route"] == "closed-form" and r["events"] == []
+    for body in ("A", "B"):
+        near(r["a"][body][0][0], a, G, f"a_{body}")
+    near(r["x"]["A"][1][0], a / 2, 1, "x_A")
+    near(r["reaction"]["tie"]["T"][0][0], 2 * (a + 0.1 * G), G, "T")
+    near(r["reaction"]["onA"]["F"][0], -0.1 * 2 * G, G, "F_A")
+
+
+def test_two_tied_blocks_the_floor_can_hold_are_refused_as_indeterminate():
+    # F = 3 N < 4.905 N: they stay at rest, but how the floor shares the friction between A and
+    # B is not determined by the equations (statically indeterminate): refused naming both
+    from tests.topics.scene.test_refusals import refusal
+
+    refusal(TIED.format(F=3), "joints.onA", "onA, onB", "statically indeterminate")
