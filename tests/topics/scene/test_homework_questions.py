@@ -17,6 +17,7 @@ import mpmath as mp
 
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
+from tests.topics.scene.common import gallery
 
 G = 9.81
 EXACT = 1e-12
@@ -300,3 +301,52 @@ def test_two_tied_blocks_the_floor_can_hold_are_refused_as_indeterminate():
     from tests.topics.scene.test_refusals import refusal
 
     refusal(TIED.format(F=3), "joints.onA", "onA, onB", "statically indeterminate")
+
+
+def test_block_on_table_pulley_gallery():
+    # the file's header, by hand (16.7): s̈ = g (m2 − μ_k m1)/(m1 + m2), T = m2 (g − s̈); the
+    # static test fails (m2 g > μ_s m1 g); "the speed after 0.5 m" at t = √(2 · 0.5/s̈)
+    rec = gallery("block-on-table-pulley.yaml")
+    r = rec["results"]
+    m1, m2, mu_k = 4, 2, mp.mpf("0.2")
+    a = G * (m2 - mu_k * m1) / (m1 + m2)
+    assert r["route"] == "closed-form" and r["events"] == [] and rec["warnings"] == []
+    near(r["a"]["A"][0][0], a, G, "a_A")
+    near(r["a"]["B"][0][1], -a, G, "a_B")
+    near(r["reaction"]["rope"]["T"][0][0], m2 * (G - a), m2 * G, "T")
+    near(r["reaction"]["slide"]["F"][0], -mu_k * m1 * G, m1 * G, "F")
+    f = r["find"][0]
+    near(f["t"], mp.sqrt(1 / a), 1, "t")
+    near(f["v"]["A"][0], mp.sqrt(a), 1, "v")
+
+
+def test_ball_on_string_gallery():
+    # references by mpmath at 30 digits: the slack point from the energy and the radial balance,
+    # its time by quadrature, the flight to the string's length again by findroot, the jerk's
+    # impulse m × the outward speed lost (28.7, e = 0)
+    r = gallery("ball-on-string.yaml")["results"]
+    m, L, v0 = mp.mpf("0.5"), 1, 6
+    with mp.workdps(30):
+        c = -(mp.mpf(v0) ** 2 / (G * L) - 2) / 3
+        th = mp.acos(c)
+        t1 = mp.quad(lambda a: L / mp.sqrt(v0 ** 2 - 2 * G * L * (1 - mp.cos(a))), [0, th])
+        v = mp.sqrt(-G * L * c)
+        P = [L * mp.sin(th), -L * c]
+        V = [v * mp.cos(th), v * mp.sin(th)]
+
+        def gap(tau):
+            return (P[0] + V[0] * tau) ** 2 + (P[1] + V[1] * tau - G * tau ** 2 / 2) ** 2 - L ** 2
+
+        tau = mp.findroot(gap, (mp.mpf("0.7"), mp.mpf("0.9")), solver="anderson")
+        X = [P[0] + V[0] * tau, P[1] + V[1] * tau - G * tau ** 2 / 2]
+        W = [V[0], V[1] - G * tau]
+        vr = (X[0] * W[0] + X[1] * W[1]) / L
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("string", "slack"), ("string", "taut")]
+    near(r["reaction"]["string"]["T"][0][0], m * (G + v0 ** 2 / L), m * G, "T at the bottom")
+    s0, s1 = r["events"][0], r["events"][1]
+    near(s0["t"], t1, 1, "slack t", ODE_TOL)
+    near(s0["state"]["x"]["ball"][1], -L * c, L, "slack height", ODE_TOL)
+    near(s0["state"]["v"]["ball"][0], V[0], v0, "slack v1", ODE_TOL)
+    near(s1["t"], t1 + tau, 1, "taut t", 10 * ODE_TOL)
+    near(s1["state"]["x"]["ball"][0], X[0], L, "taut x1", 10 * ODE_TOL)
+    near(r["impacts"][0]["impulse"], m * vr, m * v0, "impulse", 10 * ODE_TOL)
