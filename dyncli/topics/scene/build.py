@@ -84,7 +84,16 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict) -> SurfaceData | CurveData:
+def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -> SurfaceData | CurveData:
+    """A fixed line or curve, or a line carried by a body (``on``: placed by the body's sketch)."""
+    if s.get("on") is not None:
+        from .carried import carried_line
+
+        path = f"surfaces.{name}.on"
+        if s["on"] not in bodies:
+            raise InputError(f"unknown body {s['on']!r}{did_you_mean(s['on'], bodies)}; bodies: {', '.join(bodies)}",
+                             path)
+        return carried_line(name, s, bodies[s["on"]], q)
     if s.get("curve") is not None:
         from .curved import CurveData
 
@@ -113,11 +122,15 @@ class Resolver:
             raise InputError(f"unknown surface {name!r}{hint}; surfaces: {known}", path)
         return self.surfaces[name]
 
-    def line(self, name, path, what: str) -> SurfaceData:
-        """A straight surface (``what`` runs along lines only: a curve is refused)."""
+    def line(self, name, path, what: str, carried: bool = False) -> SurfaceData:
+        """A straight surface (``what`` runs along lines only: a curve is refused; a line carried
+        by a body only where ``carried``)."""
         s = self.surface(name, path)
         if not isinstance(s, SurfaceData):
             raise InputError(f"{what} runs along a straight surface; {name!r} is a curve", path)
+        if getattr(s, "carried", False) and not carried:
+            raise InputError(f"{what} runs along a fixed surface in this release; {name!r} is carried by "
+                             f"{s.body.name!r} (only a contact touches a carried surface)", path)  # type: ignore[attr-defined]
         return s
 
     def pair(self, refs, path, q) -> tuple[Point, Point]:
@@ -223,12 +236,21 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
     friction coefficients (mu for both, or mu_s / mu_k; one given stands for the other)."""
     a = j[kind]
     P = R.point(a[0], path + ".0")
-    s = R.line(a[1], path + ".1", "a contact")
+    s = R.line(a[1], path + ".1", "a contact", carried=True)
     mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
     mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
     if j.get("mu_k") is not None and j.get("mu_s") is None:
         mu_s = mu_k
     mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
+    if getattr(s, "carried", False):        # (carried.py loaded only for a scene that has one)
+        from .carried import CarriedContact, CarriedLine
+
+        assert isinstance(s, CarriedLine)
+        if P.body is s.body:
+            raise InputError(f"{P.label!r} is on {s.body.name!r}, which carries {s.name!r}: a body cannot touch its "
+                             "own surface", path + ".0")
+        return CarriedContact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
+                              e=float(j.get("e") or 0.0), stop=kind == "stop")
     return contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
                             e=float(j.get("e") or 0.0), stop=kind == "stop")
 

@@ -138,6 +138,16 @@ class Contact(ListRows):
         v1, v2 = self.P.vel_xy(q, v)
         return d1 * v1 + d2 * v2
 
+    def slip_rate(self, q, v, a) -> float:
+        """d/dt of :meth:`slip_speed` at the accelerations q̈ = a (a line's)."""
+        d1, d2 = self.surface.d
+        b1, b2 = self.P.bias_xy(q, v)
+        return float(self.tangent_jac(q) @ a) + d1 * b1 + d2 * b2
+
+    def gap_acceleration(self, q, v, a) -> float:
+        """d²/dt² of the gap at the accelerations q̈ = a: n·(P's acceleration)."""
+        return float(self.normal(q) @ (self.P.jac(q, self.n) @ a + self.P.bias(q, v)))
+
     def friction(self, lam) -> float:
         if self.mode == "stick":
             return float(lam[1])

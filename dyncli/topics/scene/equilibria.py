@@ -733,7 +733,8 @@ def _pulls(system, q, lam) -> str | None:
     """Why a one-sided joint does not hold at this equilibrium (None when every one holds)."""
     v = np.zeros(system.n)
     for e in system.elements:
-        if e.kind in ("contact", "rolls") and not getattr(e.surface, "curved", False):
+        if e.kind in ("contact", "rolls") and not getattr(e.surface, "curved", False) \
+                and not getattr(e.surface, "carried", False):       # (a carried line moves: its own gap holds)
             body = e.P.body if e.kind == "contact" else e.body_point.body
             if body is not None:
                 i = body.index

@@ -247,5 +247,4 @@ def normal_acceleration(s, q, v, t, e) -> float:
         i = e.body_point.body.index
         n = e.normal(q) if hasattr(e, "normal") else np.array(e.surface.n)     # a curve's n at the foot
         return float(n @ np.array([a[i[0]], a[i[1]]]))
-    acc = e.P.jac(q, s.n) @ a + e.P.bias(q, v)
-    return float(e.normal(q) @ acc)
+    return e.gap_acceleration(q, v, a)

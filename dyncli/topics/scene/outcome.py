@@ -121,7 +121,7 @@ def _drawing(scene) -> dict:
                         if end.fixed is not None:
                             pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
     return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d}
-                                          for x in scene.surfaces],
+                                          for x in scene.surfaces if not getattr(x, "carried", False)],
             "pulleys": pulleys, "span": span}
 
 

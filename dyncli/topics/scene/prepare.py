@@ -31,7 +31,7 @@ class Scene:
 
 def setup(plan: build.Plan) -> Scene:
     bodies, q, free, v, names, vgiven = build.bodies_of(plan)
-    surfaces = {k: build.surface_of(k, s) for k, s in plan.surfaces.items()}
+    surfaces = {k: build.surface_of(k, s, bodies, q) for k, s in plan.surfaces.items()}
     R = build.Resolver(bodies, surfaces)
     _sketch_links_and_rolls(plan, R, q, free)
     n = len(q)
@@ -59,6 +59,7 @@ def setup(plan: build.Plan) -> Scene:
         q = assembly.assemble(system, q, free)
     assembly.refuse_gaps(system, q, free)
     _refuse_moving_pulley_at_angle(system, q)
+    _carried_fixed_angles(system, q)
     other = assembly.other_branch(system, q, free)
     if other is not None:
         k, mine, theirs = other
@@ -145,6 +146,24 @@ def _refuse_moving_pulley_at_angle(system, q) -> None:
                                  f"segments at {deg:.3g}° to each other: a moving pulley is followed with parallel "
                                  "segments only (the cord keeps its segments' directions of t = 0); place the pulleys "
                                  "so that both segments run parallel", cord.path)
+
+
+def _carried_fixed_angles(system, q) -> None:
+    """A contact on a line carried by a body whose angle the two-sided joints hold (a wedge on a
+    slider, a cart on a point body) has rows affine in q: marked, for the closed forms."""
+    from .carried import CarriedContact
+
+    carried = [e for e in system.elements if isinstance(e, CarriedContact)]
+    if not carried:
+        return
+    rows = [r for e in system.elements if e.rows and e.kind in ("pin", "slider", "link", "drive")
+            for r in e.jac_list(q.tolist())]
+    J = np.array(rows, dtype=float).reshape(len(rows), system.n)
+    _, sv, vt = np.linalg.svd(J) if J.size else (None, np.zeros(0), np.eye(system.n))
+    free_motion = vt[int(np.sum(sv > max(sv.max(initial=0.0), 1.0) * 1e-10)):]
+    for e in carried:
+        W = e.surface.body
+        e.fixed_angle = not W.rigid or float(np.max(np.abs(free_motion[:, int(W.index[2])]), initial=0.0)) <= 1e-9
 
 
 def _rate_name(coord: str) -> str:
@@ -334,13 +353,10 @@ def _slide_together(system, q, v, at_rest) -> bool:
             e.mode, e.sign = "slide", sign_of(e)
         system.refresh()
         a, _, _ = system.solve(q, v, 0.0)
-        out = []
-        for e in group:
-            b1, b2 = e.P.bias_xy(q, v)
-            d1, d2 = e.surface.d
-            out.append(float(e.tangent_jac(q) @ a) + d1 * b1 + d2 * b2)
-        return out
+        return [e.slip_rate(q, v, a) for e in group]
 
+    if any(getattr(e.surface, "curved", False) for e in group):
+        return False                                # (a curve's slip rate has its own terms)
     kept = [(e.mu_k, e.mode, e.sign) for e in group]
     free = tangential(lambda e: 0.0)                # the way each point goes without friction
     scale = max(map(abs, free), default=0.0)

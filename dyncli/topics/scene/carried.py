@@ -1,0 +1,212 @@
+"""Surfaces carried by a body (a wedge free to slide on the floor, a block on a cart, a plank
+under another block): a straight line fixed to a body, moving and turning with it, and the
+contact of a point of another body on it (docs/types/scene.md: surfaces on a body).
+
+The line is given in ground coordinates as drawn at t = 0, with its body where the file puts
+it; it keeps its place on the body: its origin o and direction d̂ₗ on the body's e'1, e'2.  At
+(q) the body W is at x_W turned by θ_W, so d̂ = Q(θ_W) d̂ₗ and n = e3 × d̂, and for a point P of
+another body, ρ = r_P − x_W:
+
+* the gap g = n·ρ − n_l·o (the height of P over the line), and its place along the line
+  s = d̂·ρ − d̂ₗ·o (from the line's origin, as on a fixed line);
+* their rates ġ = n·ρ̇ − ω (d̂·ρ) and ṡ = d̂·ρ̇ + ω (n·ρ), ω = θ̇_W: ṡ is P's slip over the
+  line's material point under it, so kinetic friction −μ_k N sign(ṡ) d̂ on P, and its opposite
+  on W at that point, has the power −μ_k N |ṡ| (the pair the multipliers carry, 16.7);
+* their second derivatives g̈ = [∂g/∂q] q̈ + n·b_P − 2ω d̂·ρ̇ − ω² n·ρ and
+  s̈ = [∂s/∂q] q̈ + d̂·b_P + 2ω n·ρ̇ − ω² d̂·ρ (ṅ = −ω d̂, ḋ = ω n; b_P: P's own −ω_P² Q p), so
+  the rows' γ are the negated rest.
+
+A contact on such a line is a :class:`~.contacts.Contact` whose rows are these (N along n on P,
+−N on W; friction along d̂).  Its rows are affine in q when W cannot turn (its angle held by
+two-sided joints: a wedge on a slider) and P does not turn with its body (``fixed_angle``, set
+once the scene is assembled): the closed forms then apply as on a fixed line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .contacts import Contact
+from .system import BodyData, SurfaceData
+
+
+@dataclass(frozen=True)
+class CarriedLine(SurfaceData):
+    """A straight surface fixed to ``body``: ``origin``, ``d``, ``n`` are its place at t = 0 (for
+    messages); ``o``, ``dl`` its origin and direction on the body's axes."""
+
+    body: BodyData = field(kw_only=True, compare=False)
+    o: tuple[float, float] = field(kw_only=True)
+    dl: tuple[float, float] = field(kw_only=True)
+    carried = True
+
+    def frame(self, q) -> tuple[float, float, float, float, float, float, float]:
+        """(x_W1, x_W2, d̂1, d̂2, n_l·o, d̂ₗ·o, θ_W) at q: the body's centre, the line's direction
+        turned with it, the two constants of the gap and the place along the line, its angle."""
+        b = self.body
+        i = b.index
+        th = float(q[i[2]]) if b.rigid else 0.0
+        c, s = math.cos(th), math.sin(th)
+        d1, d2 = c * self.dl[0] - s * self.dl[1], s * self.dl[0] + c * self.dl[1]
+        o1, o2 = self.o
+        return float(q[i[0]]), float(q[i[1]]), d1, d2, -self.dl[1] * o1 + self.dl[0] * o2, self.dl[0] * o1 + self.dl[1] * o2, th
+
+    def ends_margin(self, r) -> float | None:       # on a carried line the margin is the contact's
+        raise AssertionError("a carried line's ends are read through its contact")
+
+
+def carried_line(name: str, s: dict, body: BodyData, q) -> CarriedLine:
+    """The line ``s`` (through, direction in ground coordinates at t = 0) fixed to ``body`` at its
+    place q."""
+    d = np.array(s["direction"], float)
+    d = d / math.hypot(d[0], d[1])
+    i = body.index
+    th = float(q[i[2]]) if body.rigid else 0.0
+    c, sn = math.cos(th), math.sin(th)
+    rel = np.array(s["through"], float) - np.array([q[i[0]], q[i[1]]], float)
+    o = (c * rel[0] + sn * rel[1], -sn * rel[0] + c * rel[1])
+    dl = (c * d[0] + sn * d[1], -sn * d[0] + c * d[1])
+    return CarriedLine(name, tuple(s["through"]), (float(d[0]), float(d[1])), (float(-d[1]), float(d[0])),
+                       s.get("length"), body=body, o=(float(o[0]), float(o[1])), dl=(float(dl[0]), float(dl[1])))
+
+
+@dataclass(kw_only=True)
+class CarriedContact(Contact):
+    """A point of one body on a line carried by another (module docstring)."""
+
+    surface: CarriedLine            # a carried line: the geometry is all overridden here
+    fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
+
+    @property
+    def linear(self):
+        return self.fixed_angle and not self.P.turns_with_body
+
+    # --- the geometry at q (and v)
+    def _geometry(self, q, v=None):
+        """(d̂, n, ρ, ρ̇ or None, ω, W's angle index or None)."""
+        xw1, xw2, d1, d2, cn, cd, _th = self.surface.frame(q)
+        p1, p2 = self.P.xy(q)
+        rho = (p1 - xw1, p2 - xw2)
+        W = self.surface.body
+        ia = W.index[2] if W.rigid else None
+        if v is None:
+            return (d1, d2), (-d2, d1), rho, None, 0.0, ia, cn, cd
+        pv1, pv2 = self.P.vel_xy(q, v)
+        rhod = (pv1 - float(v[W.index[0]]), pv2 - float(v[W.index[1]]))
+        w = float(v[ia]) if ia is not None else 0.0
+        return (d1, d2), (-d2, d1), rho, rhod, w, ia, cn, cd
+
+    def gap(self, q) -> float:
+        (d1, d2), (n1, n2), (r1, r2), *_, cn, _cd = self._geometry(q)
+        return n1 * r1 + n2 * r2 - cn
+
+    def along(self, q) -> float:
+        """s: the contact point's place along the line from its origin."""
+        (d1, d2), _n, (r1, r2), *_, _cn, cd = self._geometry(q)
+        return d1 * r1 + d2 * r2 - cd
+
+    def normal(self, q) -> np.ndarray:
+        _d, n, *_ = self._geometry(q)
+        return np.array(n)
+
+    def _row(self, q, w1: float, w2: float, k_theta: float) -> list:
+        """∂(w·ρ)/∂q with the line's turn k_theta on W's angle (w = n: −d̂·ρ; w = d̂: n·ρ)."""
+        W = self.surface.body
+        row = [0.0] * self.n
+        self.P.add_jac(row, q, w1, w2)
+        row[W.index[0]] -= w1
+        row[W.index[1]] -= w2
+        if W.rigid:
+            row[W.index[2]] += k_theta
+        return row
+
+    def _rows_gammas(self, q, v):
+        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, _ia, _cn, _cd = self._geometry(q, v)
+        b1, b2 = self.P.bias_xy(q, v)
+        n_rho, d_rho = n1 * r1 + n2 * r2, d1 * r1 + d2 * r2
+        n_rhod, d_rhod = n1 * rd1 + n2 * rd2, d1 * rd1 + d2 * rd2
+        rows = [self._row(q, n1, n2, -d_rho), self._row(q, d1, d2, n_rho)]
+        gams = [-(n1 * b1 + n2 * b2 - 2 * w * d_rhod - w * w * n_rho),
+                -(d1 * b1 + d2 * b2 + 2 * w * n_rhod - w * w * d_rho)]
+        return rows, gams
+
+    def phi_list(self, q, t):
+        if self.mode == "off":
+            return []
+        out = [self.gap(q)]
+        if self.mode == "stick":
+            out.append(self.along(q) - self.stick_at)
+        return out
+
+    def jac_list(self, q):
+        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+        rows = [self._row(q, n1, n2, -(d1 * r1 + d2 * r2)), self._row(q, d1, d2, n1 * r1 + n2 * r2)]
+        return rows[:self.rows]
+
+    def gamma_list(self, q, v, t):
+        return self._rows_gammas(q, v)[1][:self.rows]
+
+    def kkt_lists(self, q, v, t):
+        rows, gams = self._rows_gammas(q, v)
+        return rows[:self.rows], gams[:self.rows]
+
+    def tangent_jac(self, q) -> np.ndarray:
+        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+        return np.array(self._row(q, d1, d2, n1 * r1 + n2 * r2))
+
+    def stick_here(self, q) -> None:
+        self.stick_at = self.along(q)
+
+    def normal_speed(self, q, v) -> float:
+        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
+        return n1 * rd1 + n2 * rd2 - w * (d1 * r1 + d2 * r2)
+
+    def slip_speed(self, q, v) -> float:
+        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
+        return d1 * rd1 + d2 * rd2 + w * (n1 * r1 + n2 * r2)
+
+    def slip_rate(self, q, v, a) -> float:
+        rows, gams = self._rows_gammas(q, v)
+        return float(np.array(rows[1]) @ a) - gams[1]
+
+    def gap_acceleration(self, q, v, a) -> float:
+        rows, gams = self._rows_gammas(q, v)
+        return float(np.array(rows[0]) @ a) - gams[0]
+
+    def _margin(self, q) -> float | None:
+        L = self.surface.length
+        if L is None:
+            return None
+        s = self.along(q)
+        return float(min(s, L - s))
+
+    def watch(self, lam, q, v, t):
+        m = self._margin(q)
+        if self.mode == "off":
+            g = self.gap(q)
+            return [("impact", g if m is None or m >= 0 else abs(g) - m)]
+        return self.touching_watches(lam, q, v, m)
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ w ∇² of the rows (curvature.py): P's own arm turning (n·∂²r_P), the line turning
+        with W (∂n/∂θ = −d̂, ∂d̂/∂θ = n) against P's and W's motion, and −(n·ρ), −(d̂·ρ) on
+        W's angle twice."""
+        from .curvature import point_hessian
+
+        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+        W = self.surface.body
+        H = np.zeros((n, n))
+        dirs = [((n1, n2), (-d1, -d2), -(n1 * r1 + n2 * r2)), ((d1, d2), (n1, n2), -(d1 * r1 + d2 * r2))]
+        for wk, ((c1, c2), (t1, t2), diag) in zip(w, dirs):
+            H += wk * point_hessian(self.P, q, (c1, c2), n)
+            if not W.rigid:
+                continue
+            ia = W.index[2]
+            row = np.array(self._row(q, t1, t2, 0.0))      # ∂(turned w)·ρ/∂q, but W's angle
+            H[ia, :] += wk * row
+            H[:, ia] += wk * row
+            H[ia, ia] += wk * diag
+        return H

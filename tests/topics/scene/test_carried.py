@@ -1,0 +1,259 @@
+"""Surfaces carried by a body (``surfaces.NAME.on``): a block on a wedge free to slide, a block
+on a block pulled across the floor, a bead on a bar driven round in the vertical plane, a mass
+held by a spring on a cart — against references derived here by hand (16.7 for each body with
+the contact forces equal and opposite, solved as a small linear system in mpmath) and, where the
+motion is not one of constant accelerations, the closed-form solution of the bead's equation in
+the bar's turning frame (mpmath at 30 digits).  Exact routes: 1e-12 of each quantity's scale;
+the ODE route at its default rtol: ODE_GLOBAL × 1e-10.
+"""
+
+from __future__ import annotations
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_one_text
+from tests.tolerances import ODE_GLOBAL
+from tests.topics.scene.common import gallery
+from tests.topics.scene.test_refusals import refusal
+
+G = 9.81
+EXACT = 1e-12
+ODE_TOL = ODE_GLOBAL * 1e-10
+
+
+def near(got, want, scale, what, tol=EXACT):
+    assert got is not None, f"{what}: null"
+    assert abs(float(got) - float(want)) <= tol * abs(float(scale)), f"{what}: {got!r} vs {float(want)!r}"
+
+
+WEDGE = """
+type: scene
+params: {{M: 4, m: 1, beta: "30*deg"}}
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+  slope: {{on: wedge, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}}
+bodies:
+  wedge: {{shape: box, mass: M, size: [2, 1], x: [1, 0.5], angle: 0}}
+  block: {{shape: point, mass: m, x: ["cos(beta)", "sin(beta)"]}}
+joints:
+  on_floor: {{slider: [wedge, floor]}}
+  on_slope: {{contact: [block, slope]{friction}}}
+at: [0, 0.5]
+"""
+
+
+def wedge_reference(mu):
+    """(A, s̈, N) of the block sliding down the wedge's slope with kinetic friction μ (up the
+    slope, on the block), the wedge (M) free on a smooth floor: the block's acceleration is
+    A e1 − s̈ (cos β, sin β); 16.7 for the block along e1, e2 and for the wedge along e1."""
+    M, m, b = 4, 1, mp.pi / 6
+    c, s = mp.cos(b), mp.sin(b)
+    A = mp.matrix([[m, -m * c, s - mu * c], [0, -m * s, -(c + mu * s)], [M, 0, -(s - mu * c)]])
+    return mp.lu_solve(A, mp.matrix([0, -m * G, 0]))
+
+
+@pytest.mark.parametrize("mu", [0, mp.mpf("0.3")])
+def test_a_block_slides_down_a_wedge_free_on_a_smooth_floor(mu):
+    rec = solve_one_text(WEDGE.format(friction=f", mu: {mu}" if mu else ""))
+    r = rec["results"]
+    A, sdd, N = wedge_reference(mu)
+    b = mp.pi / 6
+    if mu == 0:     # the textbook's forms
+        assert abs(A - mp.sin(b) * mp.cos(b) * G / (4 + mp.sin(b) ** 2)) < 1e-14
+        assert abs(N - 4 * G * mp.cos(b) / (4 + mp.sin(b) ** 2)) < 1e-14
+    assert r["route"] == "closed-form" and r["dof"] == 2 and r["events"] == []
+    near(r["a"]["wedge"][0][0], A, G, "A")
+    near(r["a"]["block"][0][0], A - sdd * mp.cos(b), G, "block a1")
+    near(r["a"]["block"][1][1], -sdd * mp.sin(b), G, "block a2")
+    near(r["reaction"]["on_slope"]["N"][0], N, G, "N")
+    near(r["reaction"]["on_slope"]["F"][0], mu * N, G, "F")
+    near(r["reaction"]["on_floor"]["N"][0], 5 * G - sdd * mp.sin(b), 5 * G, "floor N")   # 29.5 for the two
+    near(r["x"]["wedge"][1][0], 1 + A / 8, 1, "wedge x at 0.5 s")
+
+
+def test_block_on_wedge_gallery():
+    # the gallery's file is WEDGE (smooth) with the slope's length and a find: the same hand
+    # solution; halfway down (x2 = 0.25 m) at √(0.5/(s̈ sin β))
+    r = gallery("block-on-wedge.yaml")["results"]
+    A, sdd, N = wedge_reference(0)
+    b = mp.pi / 6
+    assert r["route"] == "closed-form"
+    near(r["a"]["wedge"][0][0], A, G, "A")
+    near(r["reaction"]["on_slope"]["N"][0], N, G, "N")
+    near(r["x"]["block"][2][1], mp.sin(b) - sdd * mp.sin(b) / 8, 1, "block x2 at 0.5 s")
+    near(r["find"][0]["t"], mp.sqrt(mp.mpf("0.5") / (sdd * mp.sin(b))), 1, "halfway down")
+    near(4 * r["v"]["wedge"][2][0] + r["v"]["block"][2][0], 0, 4 * A, "G.0 (36.10)")
+
+
+def test_a_block_on_a_rough_wedge_that_can_hold_it_stays():
+    # μ_s = 0.7 > tan 30°: held, so nothing moves (no horizontal load on the pair): N = m g cos β,
+    # F = m g sin β up the slope
+    r = solve_one_text(WEDGE.format(friction=", mu: 0.7"))["results"]
+    b = mp.pi / 6
+    for body in ("wedge", "block"):
+        near(r["v"][body][1][0], 0, 1, f"v {body}")
+    near(r["reaction"]["on_slope"]["N"][0], G * mp.cos(b), G, "N")
+    near(r["reaction"]["on_slope"]["F"][0], G * mp.sin(b), G, "F")
+
+
+def test_a_block_on_a_block_slips_and_leaves_the_deck_at_its_end():
+    # the lower block (M = 3 kg) pulled by 20 N on a smooth floor; the upper (1 kg) on its deck
+    # (μ_s = 0.3, μ_k = 0.2): held together they would need m F/(m + M) = 5 N > μ_s m g, so it
+    # slips: a_upper = μ_k g, a_lower = (F − μ_k m g)/M; starting 0.5 m ahead of the lower's
+    # centre, it reaches the deck's back end (1 m behind) where 1.5 = (a_lower − a_upper) t²/2
+    rec = solve_one_text("""
+type: scene
+params: {m: 1, M: 3, F: 20}
+surfaces:
+  floor: {through: [-10, 0], direction: [1, 0]}
+  deck: {on: lower, through: [-1, 0.5], direction: [1, 0], length: 2}
+bodies:
+  lower: {shape: box, mass: M, size: [2, 0.5], x: [0, 0.25], angle: 0}
+  upper: {shape: point, mass: m, x: [0.5, 0.5]}
+joints:
+  slide: {slider: [lower, floor]}
+  rest: {contact: [upper, deck], mu_s: 0.3, mu_k: 0.2}
+forces:
+  - {force: lower, F: [F, 0]}
+at: [0, 0.5]
+t_end: 1
+""")
+    r = rec["results"]
+    au, al = mp.mpf("0.2") * G, (20 - mp.mpf("0.2") * G) / 3
+    assert r["route"] == "closed-form"
+    near(r["a"]["upper"][0][0], au, G, "a upper")
+    near(r["a"]["lower"][0][0], al, G, "a lower")
+    near(r["reaction"]["rest"]["F"][0], mp.mpf("0.2") * G, G, "F forward on the upper")
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("rest", "leaves")]
+    near(r["events"][0]["t"], mp.sqrt(3 / (al - au)), 1, "leaves at")
+
+
+def test_a_bead_on_a_bar_driven_round_leaves_where_the_bar_stops_pushing():
+    # the bar turns at ω = 1 rad/s about its centre in the vertical plane; the bead (0.1 kg) on
+    # its upper line starts at s0 = 0.5 m carried with it (its velocity left out: the one the
+    # contact imposes, ω s0 up).  In the bar's frame (16.7 with r = s d̂, θ = ω t):
+    #   s̈ − ω² s = −g sin ωt,  N = m (g cos ωt + 2 ω ṡ)  (the Coriolis term on the bar),
+    # so s = s0 cosh ωt − (g/2ω²)(sinh ωt − sin ωt); it leaves where N = 0 (mpmath findroot)
+    rec = solve_one_text("""
+type: scene
+bodies:
+  bar: {shape: rod, mass: 2, length: 2, x: [0, 0], angle: 0}
+  bead: {shape: point, mass: 0.1, x: [0.5, 0]}
+surfaces:
+  top: {on: bar, through: [0, 0], direction: [1, 0]}
+joints:
+  axle: {pin: [bar, ground]}
+  turn: {drive: bar.angle, value: "1.0*t"}
+  on: {contact: [bead, top]}
+at: [0, 0.2]
+t_end: 2
+""")
+    r = rec["results"]
+    assert rec["warnings"] == []
+    m, s0 = mp.mpf("0.1"), mp.mpf("0.5")
+    with mp.workdps(30):
+        def s(t):
+            return s0 * mp.cosh(t) - G / 2 * (mp.sinh(t) - mp.sin(t))
+
+        def N(t):
+            return m * (G * mp.cos(t) + 2 * mp.diff(s, t))
+
+        t_off = mp.findroot(N, mp.mpf("0.8"))
+    near(r["v"]["bead"][0][1], s0, 1, "carried up at t = 0")
+    t = mp.mpf("0.2")
+    near(r["reaction"]["on"]["N"][1], N(t), m * G, "N at 0.2 s", ODE_TOL)
+    near(r["x"]["bead"][1][0], s(t) * mp.cos(t), 1, "x1 at 0.2 s", ODE_TOL)
+    near(r["x"]["bead"][1][1], s(t) * mp.sin(t), 1, "x2 at 0.2 s", ODE_TOL)
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "separates")]
+    near(r["events"][0]["t"], t_off, 1, "leaves at", ODE_TOL)
+
+
+def test_a_mass_on_a_spring_on_a_free_cart_oscillates_at_the_reduced_mass_frequency():
+    # B (1 kg) on the cart's smooth deck, tied to the cart (3 kg, free on a smooth floor) by a
+    # spring k = 12 N/m: ω² = k (1/m + 1/M) = 16 besides the free translation (ω² = 0), whose
+    # mode moves both together; the other keeps the centre of mass: M x_cart + m x_B = 0
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [-10, 0], direction: [1, 0]}
+  deck: {on: cart, through: [-1, 0.5], direction: [1, 0]}
+bodies:
+  cart: {shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0, points: {wall: [-0.5, 0.25]}}
+  B: {shape: point, mass: 1, x: [0.3, 0.5]}
+joints:
+  roll: {slider: [cart, floor]}
+  on: {contact: [B, deck]}
+forces:
+  - {spring: [B, cart.wall], k: 12, L: 0.5}
+linearize: true
+at: [0]
+""")
+    (eq,) = rec["results"]["equilibria"]
+    assert eq["coordinates"] == ["x.cart.0", "x.B.0"] and eq["stability"] == "neutral"
+    near(eq["omega2"][0], 0, 16, "translation", 1e-9)
+    near(eq["omega2"][1], 16, 16, "omega2", 1e-9)
+    near(eq["modes"][1][1], -3, 3, "mode", 1e-9)
+
+
+def test_a_ball_dropped_on_a_moving_cart_rebounds_and_is_dragged_along_by_friction():
+    # a stop on the cart's deck (e = 0.5, μ = 0.2): the ball (1 kg, 1 m above the deck, 1 m/s)
+    # meets the deck (the cart at 2 m/s, 3 kg, on a smooth floor that holds it upright) after
+    # √(2/g), at v = √(2 g); rebound e v (28.7), normal impulse m (1 + e) v.  Its slip over the
+    # deck, −1 m/s, needs a friction impulse F (1/m + 1/M) = 1 to stop: F = 0.75 N·s < μ P, so it
+    # ends sticking (Routh's method, 33.2): both at 1.75 m/s along e1 after
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [-10, 0], direction: [1, 0]}
+  deck: {on: cart, through: [-1, 0.5], direction: [1, 0]}
+bodies:
+  cart: {shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0, v: [2, 0]}
+  B: {shape: point, mass: 1, x: [0.3, 1.5], v: [1, 0]}
+joints:
+  roll: {slider: [cart, floor]}
+  on: {stop: [B, deck], e: 0.5, mu: 0.2}
+at: [0, 0.5]
+""")
+    r = rec["results"]
+    v = mp.sqrt(2 * G)
+    (imp,) = r["impacts"]
+    near(imp["t"], mp.sqrt(2 / mp.mpf(G)), 1, "t")
+    near(imp["v_n_before"], -v, v, "v_n before")
+    near(imp["v_n_after"], v / 2, v, "v_n after")
+    near(imp["impulse"], mp.mpf("1.5") * v, v, "P")
+    near(imp["impulse_F"], mp.mpf("0.75"), v, "F")
+    near(imp["slip_before"], -1, 1, "slip before")
+    near(imp["slip_after"], 0, 1, "slip after")
+    near(r["v"]["B"][1][0], mp.mpf("1.75"), 2, "ball after")
+    near(r["v"]["cart"][1][0], mp.mpf("1.75"), 2, "cart after")
+
+
+CARRIED = """
+type: scene
+surfaces:
+  deck: {{on: cart, through: [-1, 0.5], direction: [1, 0]{extra}}}
+bodies:
+  cart: {{shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0}}
+  B: {{shape: disk, mass: 1, radius: 0.1, x: [0.3, 0.6], angle: 0}}
+joints:
+  j: {joint}
+at: [0]
+"""
+
+
+@pytest.mark.parametrize("joint, field, needles", [
+    ("{rolls: [B, deck]}", "joints.j.rolls.1", ("rolling runs along a fixed surface", "carried by 'cart'")),
+    ("{slider: [B, deck]}", "joints.j.slider.1", ("a slider runs along a fixed surface", "carried by 'cart'")),
+    ("{contact: [cart.center, deck]}", "joints.j.contact.0", ("cannot touch its own surface",)),
+])
+def test_what_touches_a_carried_surface_only_a_contact(joint, field, needles):
+    refusal(CARRIED.format(extra="", joint=joint), field, *needles)
+
+
+def test_a_carried_surface_names_a_body_that_exists_and_is_straight():
+    refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace("on: cart", "on: crat"),
+            "surfaces.deck.on", "unknown body 'crat'", "did you mean 'cart'")
+    refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace(
+        "through: [-1, 0.5], direction: [1, 0]", 'curve: {x1: "q", x2: "0.5"}'),
+        "surfaces.deck.on", "a curved surface cannot be carried")
