@@ -329,7 +329,8 @@ def holding(s, q) -> list[str]:
         if any(ld.kind in ("spring", "damper") and (ld.P.body is None or ld.Q.body is None)
                or ld.kind == "force" and not (ld.constant and ld.F(0.0)[axis] == 0) for ld in s.loads):
             continue
-        if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0 for e in made):
+        if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0
+               and not getattr(e.surface, "carried", False) for e in made):    # (on a carried line: internal)
             continue
         out.append(name)
     return out

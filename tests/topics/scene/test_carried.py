@@ -70,6 +70,7 @@ def test_a_block_slides_down_a_wedge_free_on_a_smooth_floor(mu):
     near(r["reaction"]["on_slope"]["F"][0], mu * N, G, "F")
     near(r["reaction"]["on_floor"]["N"][0], 5 * G - sdd * mp.sin(b), 5 * G, "floor N")   # 29.5 for the two
     near(r["x"]["wedge"][1][0], 1 + A / 8, 1, "wedge x at 0.5 s")
+    assert "G.0" in [i["name"] for i in r["integrals"]]     # the friction is internal to the pair (36.10)
 
 
 def test_block_on_wedge_gallery():
