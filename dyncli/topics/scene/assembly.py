@@ -139,6 +139,15 @@ def independent(J: np.ndarray, n: int) -> list[int]:
     return sorted(chosen)
 
 
+def motions(J: np.ndarray, n: int) -> np.ndarray:
+    """The velocities the rows J allow, as the rows of an orthonormal basis of J's null space
+    (singular values below 1e-10 of the largest, or of 1, count as zero)."""
+    if not J.size:
+        return np.eye(n)
+    _, sv, vt = np.linalg.svd(J)
+    return vt[int(np.sum(sv > max(float(sv.max(initial=0.0)), 1.0) * 1e-10)):]
+
+
 def implied_rates(system, q, v, given, t: float = 0.0) -> np.ndarray:
     """v with the rates left out (``given`` False) set to what the joints impose with the rates
     given held: the least mass-weighted change of the left-out rates that brings J v + φ_t

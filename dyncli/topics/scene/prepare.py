@@ -134,11 +134,8 @@ def _refuse_moving_pulley_at_angle(system, q) -> None:
             cross = abs(float(s_in.u[0] * s_out.u[1] - s_in.u[1] * s_out.u[0]))
             if cross <= 1e-9:
                 continue
-            if free_motion is None:     # the velocities the joints allow: the null space of J
-                J = system.jac(q)
-                _, sv, vt = np.linalg.svd(J) if J.size else (None, np.zeros(0), np.eye(system.n))
-                tol = max(sv.max(initial=0.0), 1.0) * 1e-10
-                free_motion = vt[int(np.sum(sv > tol)):]
+            if free_motion is None:     # the velocities the joints allow
+                free_motion = assembly.motions(system.jac(q), system.n)
             cols = list(c.body.index[:2])
             if float(np.max(np.abs(free_motion[:, cols]), initial=0.0)) > 1e-9:
                 deg = math.degrees(math.asin(min(cross, 1.0)))
@@ -158,9 +155,7 @@ def _carried_fixed_angles(system, q) -> None:
         return
     rows = [r for e in system.elements if e.rows and e.kind in ("pin", "slider", "link", "drive")
             for r in e.jac_list(q.tolist())]
-    J = np.array(rows, dtype=float).reshape(len(rows), system.n)
-    _, sv, vt = np.linalg.svd(J) if J.size else (None, np.zeros(0), np.eye(system.n))
-    free_motion = vt[int(np.sum(sv > max(sv.max(initial=0.0), 1.0) * 1e-10)):]
+    free_motion = assembly.motions(np.array(rows, dtype=float).reshape(len(rows), system.n), system.n)
     for e in carried:
         W = e.surface.body
         e.fixed_angle = not W.rigid or float(np.max(np.abs(free_motion[:, int(W.index[2])]), initial=0.0)) <= 1e-9
