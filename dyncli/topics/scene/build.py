@@ -196,7 +196,10 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
-            s = R.line(a[1], path + ".1", "a slider")
+            s = R.line(a[1], path + ".1", "a slider", carried=True)
+            if getattr(s, "carried", False):
+                out.append(_carried_slider(name, kind, n, path, b, s, q))
+                continue
             P = BodyPoint(b.name, b, (0.0, 0.0))
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
@@ -229,6 +232,21 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "cord":
             cords.append((name, j))
     return out, cords
+
+
+def _carried_slider(name: str, kind: str, n: int, path: str, b: BodyData, s, q: np.ndarray):
+    """A slider on a line carried by another body (carried.py): its offset from the line and
+    (a rigid body) its angle to the carrier kept from t = 0."""
+    from .carried import CarriedSlider
+
+    if b is s.body:
+        raise InputError(f"{b.name!r} carries {s.name!r}: a body cannot slide on its own surface", path + ".0")
+    P = BodyPoint(b.name, b, (0.0, 0.0))
+    e = CarriedSlider(name, kind, n, path, P=P, surface=s)
+    e.c0 = e.gap(q)
+    if b.rigid:
+        e.dtheta = float(q[b.index[2]]) - (float(q[s.body.index[2]]) if s.body.rigid else 0.0)
+    return e
 
 
 def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):

@@ -30,7 +30,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .contacts import Contact
-from .system import BodyData, SurfaceData
+from .elements import ListRows
+from .system import BodyData, BodyPoint, Point, SurfaceData
 
 
 @dataclass(frozen=True)
@@ -73,16 +74,13 @@ def carried_line(name: str, s: dict, body: BodyData, q) -> CarriedLine:
                        s.get("length"), body=body, o=(float(o[0]), float(o[1])), dl=(float(dl[0]), float(dl[1])))
 
 
-@dataclass(kw_only=True)
-class CarriedContact(Contact):
-    """A point of one body on a line carried by another (module docstring)."""
+class _OnLine:
+    """The geometry of a point ``P`` over a carried line ``surface`` (module docstring): its gap,
+    its place along the line, their rows and γ, and their curvature."""
 
-    surface: CarriedLine            # a carried line: the geometry is all overridden here
-    fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
-
-    @property
-    def linear(self):
-        return self.fixed_angle and not self.P.turns_with_body
+    P: Point
+    surface: CarriedLine
+    n: int
 
     # --- the geometry at q (and v)
     def _geometry(self, q, v=None):
@@ -123,6 +121,11 @@ class CarriedContact(Contact):
             row[W.index[2]] += k_theta
         return row
 
+    def jac_lines(self, q) -> list:
+        """[∂g/∂q, ∂s/∂q]: the rows of the gap and of the place along the line."""
+        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+        return [self._row(q, n1, n2, -(d1 * r1 + d2 * r2)), self._row(q, d1, d2, n1 * r1 + n2 * r2)]
+
     def _rows_gammas(self, q, v):
         (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, _ia, _cn, _cd = self._geometry(q, v)
         b1, b2 = self.P.bias_xy(q, v)
@@ -133,6 +136,39 @@ class CarriedContact(Contact):
                 -(d1 * b1 + d2 * b2 + 2 * w * n_rhod - w * w * d_rho)]
         return rows, gams
 
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ w ∇² of the rows (curvature.py): P's own arm turning (n·∂²r_P), the line turning
+        with W (∂n/∂θ = −d̂, ∂d̂/∂θ = n) against P's and W's motion, and −(n·ρ), −(d̂·ρ) on
+        W's angle twice."""
+        from .curvature import point_hessian
+
+        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+        W = self.surface.body
+        H = np.zeros((n, n))
+        dirs = [((n1, n2), (-d1, -d2), -(n1 * r1 + n2 * r2)), ((d1, d2), (n1, n2), -(d1 * r1 + d2 * r2))]
+        for wk, ((c1, c2), (t1, t2), diag) in zip(w, dirs):
+            H += wk * point_hessian(self.P, q, (c1, c2), n)
+            if not W.rigid:
+                continue
+            ia = W.index[2]
+            row = np.array(self._row(q, t1, t2, 0.0))      # ∂(turned w)·ρ/∂q, but W's angle
+            H[ia, :] += wk * row
+            H[:, ia] += wk * row
+            H[ia, ia] += wk * diag
+        return H
+
+
+@dataclass(kw_only=True)
+class CarriedContact(_OnLine, Contact):
+    """A point of one body on a line carried by another (module docstring)."""
+
+    surface: CarriedLine            # a carried line: the geometry is all overridden here
+    fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
+
+    @property
+    def linear(self):
+        return self.fixed_angle and not self.P.turns_with_body
+
     def phi_list(self, q, t):
         if self.mode == "off":
             return []
@@ -142,9 +178,7 @@ class CarriedContact(Contact):
         return out
 
     def jac_list(self, q):
-        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
-        rows = [self._row(q, n1, n2, -(d1 * r1 + d2 * r2)), self._row(q, d1, d2, n1 * r1 + n2 * r2)]
-        return rows[:self.rows]
+        return self.jac_lines(q)[:self.rows]
 
     def gamma_list(self, q, v, t):
         return self._rows_gammas(q, v)[1][:self.rows]
@@ -154,8 +188,7 @@ class CarriedContact(Contact):
         return rows[:self.rows], gams[:self.rows]
 
     def tangent_jac(self, q) -> np.ndarray:
-        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
-        return np.array(self._row(q, d1, d2, n1 * r1 + n2 * r2))
+        return np.array(self.jac_lines(q)[1])
 
     def stick_here(self, q) -> None:
         self.stick_at = self.along(q)
@@ -190,23 +223,64 @@ class CarriedContact(Contact):
             return [("impact", g if m is None or m >= 0 else abs(g) - m)]
         return self.touching_watches(lam, q, v, m)
 
-    def hessian(self, q, w, n: int) -> np.ndarray:
-        """Σ w ∇² of the rows (curvature.py): P's own arm turning (n·∂²r_P), the line turning
-        with W (∂n/∂θ = −d̂, ∂d̂/∂θ = n) against P's and W's motion, and −(n·ρ), −(d̂·ρ) on
-        W's angle twice."""
-        from .curvature import point_hessian
 
-        (d1, d2), (n1, n2), (r1, r2), *_ = self._geometry(q)
+@dataclass(kw_only=True)
+class CarriedSlider(_OnLine, ListRows):
+    """A body's centre on the line through its place at t = 0 parallel to a carried line (a
+    collar on a turning rod, a slide block in a moving guide), two-sided and smooth; a rigid body
+    keeps its angle to the carrier.  ``N`` is the force on the body along n (−N on the carrier),
+    ``M`` the couple on it."""
+
+    P: BodyPoint
+    surface: CarriedLine
+    c0: float = 0.0                 # its gap from the line at t = 0
+    dtheta: float | None = None     # its angle less the carrier's at t = 0 (a rigid body)
+    fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
+
+    @property
+    def rows(self):
+        return 1 if self.dtheta is None else 2
+
+    @property
+    def linear(self):
+        return self.fixed_angle
+
+    def _angle_row(self) -> list:
+        row = [0.0] * self.n
+        row[self.P.body.index[2]] = 1.0
         W = self.surface.body
-        H = np.zeros((n, n))
-        dirs = [((n1, n2), (-d1, -d2), -(n1 * r1 + n2 * r2)), ((d1, d2), (n1, n2), -(d1 * r1 + d2 * r2))]
-        for wk, ((c1, c2), (t1, t2), diag) in zip(w, dirs):
-            H += wk * point_hessian(self.P, q, (c1, c2), n)
-            if not W.rigid:
-                continue
-            ia = W.index[2]
-            row = np.array(self._row(q, t1, t2, 0.0))      # ∂(turned w)·ρ/∂q, but W's angle
-            H[ia, :] += wk * row
-            H[:, ia] += wk * row
-            H[ia, ia] += wk * diag
-        return H
+        if W.rigid:
+            row[W.index[2]] -= 1.0
+        return row
+
+    def _relative_angle(self, q) -> float:
+        W = self.surface.body
+        return float(q[self.P.body.index[2]]) - (float(q[W.index[2]]) if W.rigid else 0.0)
+
+    def phi_list(self, q, t):
+        out = [self.gap(q) - self.c0]
+        if self.dtheta is not None:
+            out.append(self._relative_angle(q) - self.dtheta)
+        return out
+
+    def jac_list(self, q):
+        rows = self.jac_lines(q)[:1]
+        return rows + [self._angle_row()] if self.dtheta is not None else rows
+
+    def gamma_list(self, q, v, t):
+        return self._rows_gammas(q, v)[1][:1] + [0.0] * (self.rows - 1)
+
+    def kkt_lists(self, q, v, t):
+        rows, gams = self._rows_gammas(q, v)
+        if self.dtheta is None:
+            return rows[:1], gams[:1]
+        return [rows[0], self._angle_row()], [gams[0], 0.0]
+
+    def hessian(self, q, w, n: int) -> np.ndarray:          # (the angle row is linear)
+        return _OnLine.hessian(self, q, list(w[:1]), n)
+
+    def report(self, lam, q, v, t):
+        out = {"N": float(lam[0])}
+        if self.dtheta is not None:
+            out["M"] = [0.0, 0.0, float(lam[1])]
+        return out
