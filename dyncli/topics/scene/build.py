@@ -211,10 +211,13 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             _rigid(b, "rolling", path + ".0")
             if b.radius <= 0:
                 raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-            s = R.line(a[1], path + ".1", "rolling")
+            s = R.line(a[1], path + ".1", "rolling", carried=True)
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             centre = BodyPoint(b.name, b, (0.0, 0.0))
+            if getattr(s, "carried", False):
+                out.append(_carried_rolls(name, kind, n, path, centre, s, j, q))
+                continue
             out.append(contacts.Rolls(name, kind, n, path, body_point=centre, surface=s, R=b.radius,
                                 c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
                                       e=float(j.get("e") or 0.0)))
@@ -246,6 +249,19 @@ def _carried_slider(name: str, kind: str, n: int, path: str, b: BodyData, s, q: 
     e.c0 = e.gap(q)
     if b.rigid:
         e.dtheta = float(q[b.index[2]]) - (float(q[s.body.index[2]]) if s.body.rigid else 0.0)
+    return e
+
+
+def _carried_rolls(name: str, kind: str, n: int, path: str, centre: BodyPoint, s, j: dict, q: np.ndarray):
+    """A disk rolling on a line carried by another body (carried.py)."""
+    from .carried import CarriedRolls
+
+    b = centre.body
+    if b is s.body:
+        raise InputError(f"{b.name!r} carries {s.name!r}: a body cannot roll on its own surface", path + ".0")
+    e = CarriedRolls(name, kind, n, path, body_point=centre, surface=s, R=b.radius, mu_s=j["mu_s"],
+                     mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"], e=float(j.get("e") or 0.0))
+    e.c0 = e.roll_const(q)
     return e
 
 

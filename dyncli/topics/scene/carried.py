@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .contacts import Contact
+from .contacts import Contact, Rolls
 from .elements import ListRows
 from .system import BodyData, BodyPoint, Point, SurfaceData
 
@@ -78,21 +78,24 @@ class _OnLine:
     """The geometry of a point ``P`` over a carried line ``surface`` (module docstring): its gap,
     its place along the line, their rows and γ, and their curvature."""
 
-    P: Point
     surface: CarriedLine
     n: int
+
+    def point(self) -> Point:
+        """The point on the line (a contact's P, a slider's or a rolling disk's centre)."""
+        return self.P       # type: ignore[attr-defined]  # (each element names its point)
 
     # --- the geometry at q (and v)
     def _geometry(self, q, v=None):
         """(d̂, n, ρ, ρ̇ or None, ω, W's angle index or None)."""
         xw1, xw2, d1, d2, cn, cd, _th = self.surface.frame(q)
-        p1, p2 = self.P.xy(q)
+        p1, p2 = self.point().xy(q)
         rho = (p1 - xw1, p2 - xw2)
         W = self.surface.body
         ia = W.index[2] if W.rigid else None
         if v is None:
             return (d1, d2), (-d2, d1), rho, None, 0.0, ia, cn, cd
-        pv1, pv2 = self.P.vel_xy(q, v)
+        pv1, pv2 = self.point().vel_xy(q, v)
         rhod = (pv1 - float(v[W.index[0]]), pv2 - float(v[W.index[1]]))
         w = float(v[ia]) if ia is not None else 0.0
         return (d1, d2), (-d2, d1), rho, rhod, w, ia, cn, cd
@@ -114,7 +117,7 @@ class _OnLine:
         """∂(w·ρ)/∂q with the line's turn k_theta on W's angle (w = n: −d̂·ρ; w = d̂: n·ρ)."""
         W = self.surface.body
         row = [0.0] * self.n
-        self.P.add_jac(row, q, w1, w2)
+        self.point().add_jac(row, q, w1, w2)
         row[W.index[0]] -= w1
         row[W.index[1]] -= w2
         if W.rigid:
@@ -128,13 +131,50 @@ class _OnLine:
 
     def _rows_gammas(self, q, v):
         (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, _ia, _cn, _cd = self._geometry(q, v)
-        b1, b2 = self.P.bias_xy(q, v)
+        b1, b2 = self.point().bias_xy(q, v)
         n_rho, d_rho = n1 * r1 + n2 * r2, d1 * r1 + d2 * r2
         n_rhod, d_rhod = n1 * rd1 + n2 * rd2, d1 * rd1 + d2 * rd2
         rows = [self._row(q, n1, n2, -d_rho), self._row(q, d1, d2, n_rho)]
         gams = [-(n1 * b1 + n2 * b2 - 2 * w * d_rhod - w * w * n_rho),
                 -(d1 * b1 + d2 * b2 + 2 * w * n_rhod - w * w * d_rho)]
         return rows, gams
+
+    def gap_rate(self, q, v) -> float:
+        """ġ = n·ρ̇ − ω (d̂·ρ)."""
+        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
+        return n1 * rd1 + n2 * rd2 - w * (d1 * r1 + d2 * r2)
+
+    def along_rate(self, q, v) -> float:
+        """ṡ = d̂·ρ̇ + ω (n·ρ): the slip of P over the line's material point under it."""
+        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
+        return d1 * rd1 + d2 * rd2 + w * (n1 * r1 + n2 * r2)
+
+    def gap_acceleration(self, q, v, a) -> float:
+        """g̈ at the accelerations q̈ = a."""
+        rows, gams = self._rows_gammas(q, v)
+        return float(np.array(rows[0]) @ a) - gams[0]
+
+    def turn_row(self, B: BodyData) -> list:
+        """∂(θ_B − θ_W)/∂q: the rigid body B turning relative to the carrier."""
+        row = [0.0] * self.n
+        row[B.index[2]] = 1.0
+        W = self.surface.body
+        if W.rigid:
+            row[W.index[2]] -= 1.0
+        return row
+
+    def turned(self, q, B: BodyData) -> float:
+        """θ_B − θ_W of the rigid body B (θ_W = 0 for a point carrier)."""
+        W = self.surface.body
+        return float(q[B.index[2]]) - (float(q[W.index[2]]) if W.rigid else 0.0)
+
+    def _margin(self, q) -> float | None:
+        """How far P's place along the line is from its nearer end (None: no ends)."""
+        L = self.surface.length
+        if L is None:
+            return None
+        s = self.along(q)
+        return float(min(s, L - s))
 
     def hessian(self, q, w, n: int) -> np.ndarray:
         """Σ w ∇² of the rows (curvature.py): P's own arm turning (n·∂²r_P), the line turning
@@ -147,7 +187,7 @@ class _OnLine:
         H = np.zeros((n, n))
         dirs = [((n1, n2), (-d1, -d2), -(n1 * r1 + n2 * r2)), ((d1, d2), (n1, n2), -(d1 * r1 + d2 * r2))]
         for wk, ((c1, c2), (t1, t2), diag) in zip(w, dirs):
-            H += wk * point_hessian(self.P, q, (c1, c2), n)
+            H += wk * point_hessian(self.point(), q, (c1, c2), n)
             if not W.rigid:
                 continue
             ia = W.index[2]
@@ -194,27 +234,14 @@ class CarriedContact(_OnLine, Contact):
         self.stick_at = self.along(q)
 
     def normal_speed(self, q, v) -> float:
-        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
-        return n1 * rd1 + n2 * rd2 - w * (d1 * r1 + d2 * r2)
+        return self.gap_rate(q, v)
 
     def slip_speed(self, q, v) -> float:
-        (d1, d2), (n1, n2), (r1, r2), (rd1, rd2), w, *_ = self._geometry(q, v)
-        return d1 * rd1 + d2 * rd2 + w * (n1 * r1 + n2 * r2)
+        return self.along_rate(q, v)
 
     def slip_rate(self, q, v, a) -> float:
         rows, gams = self._rows_gammas(q, v)
         return float(np.array(rows[1]) @ a) - gams[1]
-
-    def gap_acceleration(self, q, v, a) -> float:
-        rows, gams = self._rows_gammas(q, v)
-        return float(np.array(rows[0]) @ a) - gams[0]
-
-    def _margin(self, q) -> float | None:
-        L = self.surface.length
-        if L is None:
-            return None
-        s = self.along(q)
-        return float(min(s, L - s))
 
     def watch(self, lam, q, v, t):
         m = self._margin(q)
@@ -245,27 +272,15 @@ class CarriedSlider(_OnLine, ListRows):
     def linear(self):
         return self.fixed_angle
 
-    def _angle_row(self) -> list:
-        row = [0.0] * self.n
-        row[self.P.body.index[2]] = 1.0
-        W = self.surface.body
-        if W.rigid:
-            row[W.index[2]] -= 1.0
-        return row
-
-    def _relative_angle(self, q) -> float:
-        W = self.surface.body
-        return float(q[self.P.body.index[2]]) - (float(q[W.index[2]]) if W.rigid else 0.0)
-
     def phi_list(self, q, t):
         out = [self.gap(q) - self.c0]
         if self.dtheta is not None:
-            out.append(self._relative_angle(q) - self.dtheta)
+            out.append(self.turned(q, self.P.body) - self.dtheta)
         return out
 
     def jac_list(self, q):
         rows = self.jac_lines(q)[:1]
-        return rows + [self._angle_row()] if self.dtheta is not None else rows
+        return rows + [self.turn_row(self.P.body)] if self.dtheta is not None else rows
 
     def gamma_list(self, q, v, t):
         return self._rows_gammas(q, v)[1][:1] + [0.0] * (self.rows - 1)
@@ -274,7 +289,7 @@ class CarriedSlider(_OnLine, ListRows):
         rows, gams = self._rows_gammas(q, v)
         if self.dtheta is None:
             return rows[:1], gams[:1]
-        return [rows[0], self._angle_row()], [gams[0], 0.0]
+        return [rows[0], self.turn_row(self.P.body)], [gams[0], 0.0]
 
     def hessian(self, q, w, n: int) -> np.ndarray:          # (the angle row is linear)
         return _OnLine.hessian(self, q, list(w[:1]), n)
@@ -284,3 +299,67 @@ class CarriedSlider(_OnLine, ListRows):
         if self.dtheta is not None:
             out["M"] = [0.0, 0.0, float(lam[1])]
         return out
+
+
+@dataclass(kw_only=True)
+class CarriedRolls(_OnLine, Rolls):
+    """A disk or ring rolling without slipping on a carried line (a cylinder on a plank pulled
+    from under it): its centre R off the line, and no slip over the line's material point,
+    ṡ + R (ω_B − ω_W) = 0, integrated as s + R (θ_B − θ_W) = const (15.8 relative to the
+    carrier); past μ_s N it slips with kinetic friction against that slip, as on a fixed line."""
+
+    surface: CarriedLine            # a carried line: the geometry is all overridden here
+    fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
+
+    def point(self) -> Point:       # (the geometry's point: the centre)
+        return self.body_point
+
+    @property
+    def linear(self):
+        return self.fixed_angle
+
+    def gap(self, q) -> float:
+        return _OnLine.gap(self, q) - self.R
+
+    def normal_speed(self, q, v) -> float:
+        return self.gap_rate(q, v)
+
+    def slip_speed(self, q, v) -> float:
+        """The contact point's slip over the line: ṡ + R (ω_B − ω_W)."""
+        return self.along_rate(q, v) + self.R * float(np.array(self.turn_row(self.body_point.body)) @ v)
+
+    def roll_const(self, q) -> float:
+        return self.along(q) + self.R * self.turned(q, self.body_point.body)
+
+    def phi_list(self, q, t):
+        if not self.rows:
+            return []
+        return [self.gap(q), self.roll_const(q) - self.c0][:self.rows]
+
+    def _rolling_row(self, q) -> list:
+        return [a + self.R * b for a, b in zip(self.jac_lines(q)[1], self.turn_row(self.body_point.body))]
+
+    def jac_list(self, q):
+        return [self.jac_lines(q)[0], self._rolling_row(q)][:self.rows]
+
+    def gamma_list(self, q, v, t):
+        return self._rows_gammas(q, v)[1][:self.rows]
+
+    def gamma(self, q, v, t):
+        return np.array(self.gamma_list(q, v, t))
+
+    def kkt_lists(self, q, v, t):
+        return self.jac_list(q), self.gamma_list(q, v, t)
+
+    def tangent_jac(self, q) -> np.ndarray:
+        return np.array(self._rolling_row(q))
+
+    def slip_rate(self, q, v, a) -> float:
+        return float(self.tangent_jac(q) @ a) - self._rows_gammas(q, v)[1][1]
+
+    def watch(self, lam, q, v, t):
+        m = self._margin(q)
+        if self.mode == "off":
+            g = self.gap(q)
+            return [("impact", g if m is None or m >= 0 else abs(g) - m)]
+        return self.touching_watches(lam, q, v, m)

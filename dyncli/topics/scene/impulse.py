@@ -243,7 +243,7 @@ def _slides(s, lam, struck, slips) -> bool:
 def normal_acceleration(s, q, v, t, e) -> float:
     """n·a of the contact point with the contact released (free flight towards the surface: < 0)."""
     a, _, _ = s.solve(q, v, t)
-    if isinstance(e, Rolls):
+    if isinstance(e, Rolls) and not hasattr(e, "gap_acceleration"):
         i = e.body_point.body.index
         n = e.normal(q) if hasattr(e, "normal") else np.array(e.surface.n)     # a curve's n at the foot
         return float(n @ np.array([a[i[0]], a[i[1]]]))

@@ -148,9 +148,9 @@ def _refuse_moving_pulley_at_angle(system, q) -> None:
 def _carried_fixed_angles(system, q) -> None:
     """A contact or slider on a line carried by a body whose angle the two-sided joints hold (a
     wedge on a slider, a cart on a point body) has rows affine in q: marked, for the closed forms."""
-    from .carried import CarriedContact, CarriedSlider
+    from .carried import CarriedContact, CarriedRolls, CarriedSlider
 
-    carried = [e for e in system.elements if isinstance(e, (CarriedContact, CarriedSlider))]
+    carried = [e for e in system.elements if isinstance(e, (CarriedContact, CarriedRolls, CarriedSlider))]
     if not carried:
         return
     rows = [r for e in system.elements if e.rows and e.kind in ("pin", "slider", "link", "drive")
