@@ -31,6 +31,7 @@ class Scene:
 
 def setup(plan: build.Plan) -> Scene:
     bodies, q, free, v, names, vgiven = build.bodies_of(plan)
+    _carriers_placed(plan, bodies, free)
     surfaces = {k: build.surface_of(k, s, bodies, q) for k, s in plan.surfaces.items()}
     R = build.Resolver(bodies, surfaces)
     _sketch_links_and_rolls(plan, R, q, free)
@@ -86,6 +87,22 @@ def setup(plan: build.Plan) -> Scene:
     start.settle(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
+
+
+def _carriers_placed(plan, bodies, free) -> None:
+    """A body that carries a surface is where the file draws it: its `x` given (refused
+    otherwise), its angle as given or 0 (not left to the joints), so that the line drawn in
+    ground coordinates at t = 0 is where it was drawn."""
+    for name, sf in plan.surfaces.items():
+        b = bodies.get(sf.get("on")) if sf.get("on") is not None else None
+        if b is None:
+            continue
+        if free[b.index[0]]:
+            raise InputError(f"give the position x of {b.name!r}, which carries the surface {name!r}: the line is "
+                             "drawn in ground coordinates with its body where the file puts it",
+                             f"bodies.{b.name}.x")
+        if b.rigid:
+            free[b.index[2]] = False
 
 
 def _held_otherwise(system, q, guide, warn) -> bool:

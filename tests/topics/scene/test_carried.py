@@ -337,6 +337,13 @@ def test_a_body_on_its_own_carried_surface_is_refused(joint, field, needles):
     refusal(CARRIED.format(extra="", joint=joint), field, *needles)
 
 
+def test_the_body_that_carries_a_surface_is_given_its_place():
+    # the line is drawn in ground coordinates at t = 0 with its body where the file puts it: a
+    # carrier left to the joints would move the line away from where it was drawn
+    refusal(WEDGE.format(friction="").replace("size: [2, 1], x: [1, 0.5], angle: 0", "size: [2, 1]"),
+            "bodies.wedge", "give the position x of 'wedge'", "carries the surface 'slope'")
+
+
 def test_a_carried_surface_names_a_body_that_exists_and_is_straight():
     refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace("on: cart", "on: crat"),
             "surfaces.deck.on", "unknown body 'crat'", "did you mean 'cart'")
