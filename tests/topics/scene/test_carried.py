@@ -245,6 +245,17 @@ def test_a_plank_pulled_from_under_a_rolling_drum():
     near(r["reaction"]["roll"]["slip_margin"][0], mp.mpf("0.5") * 3 * G - 4, 3 * G, "slip margin")
 
 
+def test_drum_on_plank_gallery():
+    # the gallery's file is PLANK with μ_s = 0.5: the same hand solution, and the positions at
+    # 1 s from rest (a t²/2)
+    r = gallery("drum-on-plank.yaml")["results"]
+    a_p = mp.mpf(36) / 9
+    near(r["a"]["plank"][0][0], a_p, 4, "a plank")
+    near(r["x"]["plank"][1][0], a_p / 2, 4, "x plank")
+    near(r["x"]["drum"][1][0], a_p / 6, 4, "x drum")
+    near(r["reaction"]["roll"]["F"][0], a_p, 4, "f")
+
+
 def test_a_plank_pulled_harder_than_friction_can_roll_the_drum_slides_under_it():
     # μ_s = μ_k = 0.1: rolling would need f = 4 N > μ N = 2.943 N, so the deck slips under the
     # drum from t = 0: f = μ m g forward on the drum, a_c = μ g, α = 2 μ g / R, a_p = (F − μ m g)/M
