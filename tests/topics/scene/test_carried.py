@@ -361,3 +361,35 @@ def test_a_carried_surface_names_a_body_that_exists_and_is_straight():
     refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace(
         "through: [-1, 0.5], direction: [1, 0]", 'curve: {x1: "q", x2: "0.5"}'),
         "surfaces.deck.on", "a curved surface cannot be carried")
+
+
+def test_an_incline_on_a_cart_driven_at_constant_speed_is_an_incline_galileo():
+    # the cart's x prescribed as 3 t (no acceleration): in its frame the block slides down the rough
+    # slope as on a fixed incline, s̈ = g (sin β − μ cos β) (16.7), N = m g cos β; on the ground it
+    # has the cart's 3 m/s besides (given only the cart's motion: the block's velocity left out is
+    # the one the contact imposes, the cart's)
+    rec = solve_one_text("""
+type: scene
+params: {beta: "30*deg"}
+surfaces:
+  slope: {on: cart, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}
+bodies:
+  cart: {shape: box, mass: 10, size: [2, 1], x: [1, 0.5], angle: 0}
+  block: {shape: point, mass: 2, x: ["cos(beta)", "sin(beta)"], v: [3, 0]}
+joints:
+  go: {drive: cart.x1, value: "1 + 3*t"}
+  lift: {drive: cart.x2, value: 0.5}
+  turn: {drive: cart.angle, value: 0}
+  on: {contact: [block, slope], mu: 0.2}
+at: [0, 0.5]
+""")
+    r = rec["results"]
+    b = mp.pi / 6
+    a = G * (mp.sin(b) - mp.mpf("0.2") * mp.cos(b))
+    assert rec["warnings"] == []
+    tol = EXACT if r["route"] == "closed-form" else ODE_TOL      # (a drive in time: the ODE route)
+    near(r["reaction"]["on"]["N"][1], 2 * G * mp.cos(b), 2 * G, "N", 10 * tol)
+    near(r["reaction"]["on"]["F"][1], mp.mpf("0.2") * 2 * G * mp.cos(b), 2 * G, "F up the slope", 10 * tol)
+    near(r["x"]["block"][1][0] - r["x"]["cart"][1][0], mp.cos(b) - 1 - a / 8 * mp.cos(b), 1, "relative x1", tol)
+    near(r["x"]["block"][1][1], mp.sin(b) - a / 8 * mp.sin(b), 1, "x2", tol)
+    near(r["v"]["block"][1][0], 3 - a / 2 * mp.cos(b), 3, "v1", tol)
