@@ -16,10 +16,13 @@ another body, ρ = r_P − x_W:
   s̈ = [∂s/∂q] q̈ + d̂·b_P + 2ω n·ρ̇ − ω² d̂·ρ (ṅ = −ω d̂, ḋ = ω n; b_P: P's own −ω_P² Q p), so
   the rows' γ are the negated rest.
 
-A contact on such a line is a :class:`~.contacts.Contact` whose rows are these (N along n on P,
-−N on W; friction along d̂).  Its rows are affine in q when W cannot turn (its angle held by
-two-sided joints: a wedge on a slider) and P does not turn with its body (``fixed_angle``, set
-once the scene is assembled): the closed forms then apply as on a fixed line.
+A contact (or a stop) on such a line is a :class:`~.contacts.Contact` whose rows are these (N
+along n on P, −N on W; friction along d̂).  A slider keeps a body's centre at its t = 0 offset
+from the line, and a rigid body's angle to W.  A rolling disk keeps its centre R off the line
+and rolls on W's material point: ṡ + R (ω_B − ω_W) = 0, i.e. s + R (θ_B − θ_W) = const (15.8
+relative to W).  Their rows are affine in q when W cannot turn (its angle held by two-sided
+joints: a wedge on a slider) and P does not turn with its body (``fixed_angle``, set once the
+scene is assembled): the closed forms then apply as on a fixed line.
 """
 
 from __future__ import annotations
@@ -87,7 +90,8 @@ class _OnLine:
 
     # --- the geometry at q (and v)
     def _geometry(self, q, v=None):
-        """(d̂, n, ρ, ρ̇ or None, ω, W's angle index or None)."""
+        """(d̂, n, ρ, ρ̇ (None without v), ω_W (0 without v), W's angle index (None for a point
+        carrier), n_l·o, d̂ₗ·o)."""
         xw1, xw2, d1, d2, cn, cd, _th = self.surface.frame(q)
         p1, p2 = self.point().xy(q)
         rho = (p1 - xw1, p2 - xw2)
