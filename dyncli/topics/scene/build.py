@@ -85,15 +85,15 @@ def bodies_of(plan: Plan) -> tuple:
 
 
 def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -> SurfaceData | CurveData:
-    """A fixed line or curve, or a line carried by a body (``on``: placed by the body's sketch)."""
-    if s.get("on") is not None:
+    """A fixed line or curve, or a line carried by a body (``body``: placed by the body's sketch)."""
+    if s.get("body") is not None:
         from .carried import carried_line
 
-        path = f"surfaces.{name}.on"
-        if s["on"] not in bodies:
-            raise InputError(f"unknown body {s['on']!r}{did_you_mean(s['on'], bodies)}; bodies: {', '.join(bodies)}",
+        path = f"surfaces.{name}.body"
+        if s["body"] not in bodies:
+            raise InputError(f"unknown body {s['body']!r}{did_you_mean(s['body'], bodies)}; bodies: {', '.join(bodies)}",
                              path)
-        return carried_line(name, s, bodies[s["on"]], q)
+        return carried_line(name, s, bodies[s["body"]], q)
     if s.get("curve") is not None:
         from .curved import CurveData
 
@@ -122,15 +122,12 @@ class Resolver:
             raise InputError(f"unknown surface {name!r}{hint}; surfaces: {known}", path)
         return self.surfaces[name]
 
-    def line(self, name, path, what: str, carried: bool = False) -> SurfaceData:
-        """A straight surface (``what`` runs along lines only: a curve is refused; a line carried
-        by a body only where ``carried``)."""
+    def line(self, name, path, what: str) -> SurfaceData:
+        """A straight surface, fixed or carried by a body (``what`` runs along lines only: a curve
+        is refused)."""
         s = self.surface(name, path)
         if not isinstance(s, SurfaceData):
             raise InputError(f"{what} runs along a straight surface; {name!r} is a curve", path)
-        if getattr(s, "carried", False) and not carried:
-            raise InputError(f"{what} runs along a fixed surface in this release; {name!r} is carried by "
-                             f"{s.body.name!r} (only a contact touches a carried surface)", path)  # type: ignore[attr-defined]
         return s
 
     def pair(self, refs, path, q) -> tuple[Point, Point]:
@@ -196,7 +193,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
-            s = R.line(a[1], path + ".1", "a slider", carried=True)
+            s = R.line(a[1], path + ".1", "a slider")
             if getattr(s, "carried", False):
                 out.append(_carried_slider(name, kind, n, path, b, s, q))
                 continue
@@ -211,7 +208,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             _rigid(b, "rolling", path + ".0")
             if b.radius <= 0:
                 raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-            s = R.line(a[1], path + ".1", "rolling", carried=True)
+            s = R.line(a[1], path + ".1", "rolling")
             i = b.index
             c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             centre = BodyPoint(b.name, b, (0.0, 0.0))
@@ -270,7 +267,7 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
     friction coefficients (mu for both, or mu_s / mu_k; one given stands for the other)."""
     a = j[kind]
     P = R.point(a[0], path + ".0")
-    s = R.line(a[1], path + ".1", "a contact", carried=True)
+    s = R.line(a[1], path + ".1", "a contact")
     mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
     mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
     if j.get("mu_k") is not None and j.get("mu_s") is None:

@@ -40,7 +40,7 @@ class SurfaceCurve(StrictModel):
 class Surface(StrictModel):
     """A fixed straight line through ``through`` along ``direction``, or a fixed ``curve``;
     bodies are on its left (the side of n = e3 × d̂, d̂ the direction or the curve's tangent
-    in the sense of increasing q).  A line ``on`` a body moves with that body (carried.py)."""
+    in the sense of increasing q).  A line given a ``body`` moves with that body (carried.py)."""
 
     through: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: a point of the line [m]")
     direction: Optional[list[Annotated[float, Num()]]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")
@@ -49,13 +49,13 @@ class Surface(StrictModel):
                                           "(instead of through and direction); bodies on the left of increasing q")
     q_range: Optional[list[Annotated[float, Num()]]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "
                                            "reaching an end leaves the surface (an event)")
-    on: Optional[str] = Field(None, description="a body that carries the line (a wedge, a cart, a plank): it moves and turns "
-                              "with that body, given as drawn at t = 0; only contacts touch it")
+    body: Optional[str] = Field(None, description="a body that carries the line (a wedge, a cart, a plank): it moves and turns "
+                              "with that body, given as drawn at t = 0")
 
     def check(self, base: str) -> None:
-        if self.on is not None and self.curve is not None:
+        if self.body is not None and self.curve is not None:
             raise InputError("a curved surface cannot be carried by a body in this release: give a straight line "
-                             "(through, direction) on it", _at(base, "on"))
+                             "(through, direction) on it", _at(base, "body"))
         if self.curve is not None:
             for name in ("through", "direction", "length"):
                 if getattr(self, name) is not None:

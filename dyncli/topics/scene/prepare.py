@@ -94,7 +94,7 @@ def _carriers_placed(plan, bodies, free) -> None:
     otherwise), its angle as given or 0 (not left to the joints), so that the line drawn in
     ground coordinates at t = 0 is where it was drawn."""
     for name, sf in plan.surfaces.items():
-        b = bodies.get(sf.get("on")) if sf.get("on") is not None else None
+        b = bodies.get(sf.get("body")) if sf.get("body") is not None else None
         if b is None:
             continue
         if free[b.index[0]]:

@@ -1,4 +1,4 @@
-"""Surfaces carried by a body (``surfaces.NAME.on``): a block on a wedge free to slide, a block
+"""Surfaces carried by a body (``surfaces.NAME.body``): a block on a wedge free to slide, a block
 on a block pulled across the floor, a bead on a bar driven round in the vertical plane, a mass
 held by a spring on a cart — against references derived here by hand (16.7 for each body with
 the contact forces equal and opposite, solved as a small linear system in mpmath) and, where the
@@ -32,7 +32,7 @@ type: scene
 params: {{M: 4, m: 1, beta: "30*deg"}}
 surfaces:
   floor: {{through: [0, 0], direction: [1, 0]}}
-  slope: {{on: wedge, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}}
+  slope: {{body: wedge, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}}
 bodies:
   wedge: {{shape: box, mass: M, size: [2, 1], x: [1, 0.5], angle: 0}}
   block: {{shape: point, mass: m, x: ["cos(beta)", "sin(beta)"]}}
@@ -108,7 +108,7 @@ type: scene
 params: {m: 1, M: 3, F: 20}
 surfaces:
   floor: {through: [-10, 0], direction: [1, 0]}
-  deck: {on: lower, through: [-1, 0.5], direction: [1, 0], length: 2}
+  deck: {body: lower, through: [-1, 0.5], direction: [1, 0], length: 2}
 bodies:
   lower: {shape: box, mass: M, size: [2, 0.5], x: [0, 0.25], angle: 0}
   upper: {shape: point, mass: m, x: [0.5, 0.5]}
@@ -142,7 +142,7 @@ bodies:
   bar: {shape: rod, mass: 2, length: 2, x: [0, 0], angle: 0}
   bead: {shape: point, mass: 0.1, x: [0.5, 0]}
 surfaces:
-  top: {on: bar, through: [0, 0], direction: [1, 0]}
+  top: {body: bar, through: [0, 0], direction: [1, 0]}
 joints:
   axle: {pin: [bar, ground]}
   turn: {drive: bar.angle, value: "1.0*t"}
@@ -176,7 +176,7 @@ bodies:
   bar: {{shape: rod, mass: 2, length: 4, x: [0, 0], angle: 0}}
   collar: {{shape: {shape}, mass: 0.1, x: [0.5, 0]{extra}}}
 surfaces:
-  along: {{on: bar, through: [0, 0], direction: [1, 0]}}
+  along: {{body: bar, through: [0, 0], direction: [1, 0]}}
 joints:
   axle: {{pin: [bar, ground]}}
   turn: {{drive: bar.angle, value: "1.0*t"}}
@@ -217,7 +217,7 @@ type: scene
 params: {{M: 2, m: 3, R: 0.2, F: 12}}
 surfaces:
   floor: {{through: [-10, 0], direction: [1, 0]}}
-  deck: {{on: plank, through: [-2, 0.1], direction: [1, 0], length: 4}}
+  deck: {{body: plank, through: [-2, 0.1], direction: [1, 0], length: 4}}
 bodies:
   plank: {{shape: box, mass: M, size: [4, 0.1], x: [0, 0.05], angle: 0}}
   drum: {{shape: disk, mass: m, radius: R, x: [0, 0.3], angle: 0}}
@@ -275,7 +275,7 @@ def test_a_mass_on_a_spring_on_a_free_cart_oscillates_at_the_reduced_mass_freque
 type: scene
 surfaces:
   floor: {through: [-10, 0], direction: [1, 0]}
-  deck: {on: cart, through: [-1, 0.5], direction: [1, 0]}
+  deck: {body: cart, through: [-1, 0.5], direction: [1, 0]}
 bodies:
   cart: {shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0, points: {wall: [-0.5, 0.25]}}
   B: {shape: point, mass: 1, x: [0.3, 0.5]}
@@ -304,7 +304,7 @@ def test_a_ball_dropped_on_a_moving_cart_rebounds_and_is_dragged_along_by_fricti
 type: scene
 surfaces:
   floor: {through: [-10, 0], direction: [1, 0]}
-  deck: {on: cart, through: [-1, 0.5], direction: [1, 0]}
+  deck: {body: cart, through: [-1, 0.5], direction: [1, 0]}
 bodies:
   cart: {shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0, v: [2, 0]}
   B: {shape: point, mass: 1, x: [0.3, 1.5], v: [1, 0]}
@@ -330,7 +330,7 @@ at: [0, 0.5]
 CARRIED = """
 type: scene
 surfaces:
-  deck: {{on: cart, through: [-1, 0.5], direction: [1, 0]{extra}}}
+  deck: {{body: cart, through: [-1, 0.5], direction: [1, 0]{extra}}}
 bodies:
   cart: {{shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0}}
   B: {{shape: disk, mass: 1, radius: 0.1, x: [0.3, 0.6], angle: 0}}
@@ -356,11 +356,11 @@ def test_the_body_that_carries_a_surface_is_given_its_place():
 
 
 def test_a_carried_surface_names_a_body_that_exists_and_is_straight():
-    refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace("on: cart", "on: crat"),
-            "surfaces.deck.on", "unknown body 'crat'", "did you mean 'cart'")
+    refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace("body: cart", "body: crat"),
+            "surfaces.deck.body", "unknown body 'crat'", "did you mean 'cart'")
     refusal(CARRIED.format(extra="", joint="{contact: [B, deck]}").replace(
         "through: [-1, 0.5], direction: [1, 0]", 'curve: {x1: "q", x2: "0.5"}'),
-        "surfaces.deck.on", "a curved surface cannot be carried")
+        "surfaces.deck.body", "a curved surface cannot be carried")
 
 
 def test_an_incline_on_a_cart_driven_at_constant_speed_is_an_incline_galileo():
@@ -372,7 +372,7 @@ def test_an_incline_on_a_cart_driven_at_constant_speed_is_an_incline_galileo():
 type: scene
 params: {beta: "30*deg"}
 surfaces:
-  slope: {on: cart, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}
+  slope: {body: cart, through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}
 bodies:
   cart: {shape: box, mass: 10, size: [2, 1], x: [1, 0.5], angle: 0}
   block: {shape: point, mass: 2, x: ["cos(beta)", "sin(beta)"], v: [3, 0]}
