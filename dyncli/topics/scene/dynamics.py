@@ -160,6 +160,15 @@ class Load:
         d1, d2 = p1 - q1, p2 - q2
         return d1, d2, math.hypot(d1, d2)
 
+    def ties(self, axis: int) -> bool:
+        """Whether it ties the scene to the ground along e_axis: a spring or damper to a ground
+        point, a force with a component along it (or one that changes in time)."""
+        if self.kind in ("spring", "damper"):
+            return self.P is None or self.Q is None or self.P.body is None or self.Q.body is None
+        if self.kind == "force":
+            return not (self.constant and self.F is not None and self.F(0.0)[axis] == 0)
+        return False
+
     def spring_tension(self, q) -> float:
         return self._tension(self._d(q)[2])
 
@@ -524,6 +533,34 @@ class SceneSystem:
         A = np.array(got[0]).reshape(self.n, k).T
         L = np.array(got[1], dtype=float).reshape(len(rows), k).T
         return [(a, lam, self._power(P, lam, q, v)) for (q, v, _t), a, lam, P in zip(states, A, L, powers)]
+
+    def translations(self, q) -> list[int]:
+        """The axes i (0: e1, 1: e2) along which the whole scene may translate as one by its
+        structure at q: every made row allows it (the joint forces have no net e_i component),
+        gravity has none (e1, or g = 0), and no load or friction ties the scene to the ground
+        along e_i (a spring or damper to a ground point, a force along e_i, kinetic friction on
+        a fixed line along it).  Momentum along e_i is then conserved (36.10), and at rest a
+        translation along it is a free motion (ω = 0)."""
+        made = [e for e in self.elements if e.rows]
+        if any(getattr(getattr(e, "surface", None), "curved", False) for e in made):
+            return []                   # (a curve's normal turns: J at one q says nothing)
+        J = self.jac(q)
+        out = []
+        for axis in (0, 1):
+            if axis == 1 and self.g != 0:
+                continue
+            T = np.zeros(self.n)
+            for b in self.bodies:
+                T[b.index[axis]] = 1.0
+            if J.size and float(np.max(np.abs(J @ T))) > 1e-12 * max(float(np.max(np.abs(J))), 1.0):
+                continue
+            if any(ld.ties(axis) for ld in self.loads):
+                continue
+            if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0
+                   and not getattr(e.surface, "carried", False) for e in made):    # (on a carried line: internal)
+                continue
+            out.append(axis)
+        return out
 
     # ------------------------------------------------------------------ energy
     def kinetic(self, v) -> float:

@@ -79,8 +79,11 @@ def analyse(system, q, lam, indep):
     else:
         stability = "neutral"
     modes = [normalised(U[:, r]) for r in range(U.shape[1])]
+    # a neutral equilibrium whose every zero mode is a free translation of the whole scene (a
+    # free cart): its frequencies hold, ω = 0 for the translation (the textbook's rigid-body mode)
+    free = stability == "neutral" and _translation_modes(system, q, indep, U[:, w2 == 0.0])
     out = {"stability": stability, "stable": stability == "stable", "omega2": [float(x) for x in w2],
-           "frequencies": [math.sqrt(x) for x in w2] if stability == "stable" else None,
+           "frequencies": [math.sqrt(x) for x in w2] if stability == "stable" or free else None,
            "modes": [[float(x) for x in u] for u in modes],
            "M": M.tolist(), "K": K.tolist()}
     out["frequencies_hz"] = None if out["frequencies"] is None else [w / (2 * math.pi) for w in out["frequencies"]]
@@ -89,6 +92,22 @@ def analyse(system, q, lam, indep):
         out["C"] = C.tolist()
         out["damped"] = _damped(M, C, K)
     return out, (M, C, K, w2, modes, damped)
+
+
+def _translation_modes(system, q, indep, U0) -> bool:
+    """Whether the zero modes U0 (columns, in the coordinates ``indep``) are all translations of
+    the whole scene along axes it is free to translate along (SceneSystem.translations)."""
+    axes = system.translations(q)
+    if not axes:
+        return False
+    Z = equilibria.null_basis(system.jac(q), system.n, indep)
+    T = np.zeros((system.n, len(axes)))
+    for k, axis in enumerate(axes):
+        for b in system.bodies:
+            T[b.index[axis], k] = 1.0
+    V = Z @ U0                                      # the zero modes in q
+    fit = np.linalg.lstsq(T, V, rcond=None)[0]
+    return bool(float(np.max(np.abs(T @ fit - V), initial=0.0)) <= 1e-9 * max(float(np.max(np.abs(V), initial=0.0)), 1e-300))
 
 
 def _state_matrix(M, C, K):

@@ -311,29 +311,8 @@ def holding(s, q) -> list[str]:
     when every load is conservative and no made joint dissipates or drives; "G.0", "G.1"
     (36.10) where a translation of the whole scene along e_i is allowed by every made row (so
     the joint forces have no net e_i component), gravity has none (e1, or g = 0), and no load or
-    friction ties the scene to the ground along e_i."""
-    made = [e for e in s.elements if e.rows]
-    out = []
-    if not _powered(s):
-        out.append("E")
-    J = s.jac(q)
-    on_curve = any(getattr(getattr(e, "surface", None), "curved", False) for e in made)
-    for axis, name in ((0, "G.0"), (1, "G.1")):
-        if axis == 1 and s.g != 0 or on_curve:     # a curve's normal turns: J at one q says nothing
-            continue
-        T = np.zeros(s.n)
-        for b in s.bodies:
-            T[b.index[axis]] = 1.0
-        if J.size and float(np.max(np.abs(J @ T))) > 1e-12 * max(float(np.max(np.abs(J))), 1.0):
-            continue
-        if any(ld.kind in ("spring", "damper") and (ld.P.body is None or ld.Q.body is None)
-               or ld.kind == "force" and not (ld.constant and ld.F(0.0)[axis] == 0) for ld in s.loads):
-            continue
-        if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0
-               and not getattr(e.surface, "carried", False) for e in made):    # (on a carried line: internal)
-            continue
-        out.append(name)
-    return out
+    friction ties the scene to the ground along e_i (SceneSystem.translations)."""
+    return (["E"] if not _powered(s) else []) + [f"G.{axis}" for axis in s.translations(q)]
 
 
 def _integrals(scene, traj, times, instants) -> list:

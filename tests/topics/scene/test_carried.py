@@ -291,6 +291,8 @@ at: [0]
     assert eq["coordinates"] == ["x.cart.0", "x.B.0"] and eq["stability"] == "neutral"
     near(eq["omega2"][0], 0, 16, "translation", 1e-9)
     near(eq["omega2"][1], 16, 16, "omega2", 1e-9)
+    assert eq["frequencies"][0] == 0.0                     # the free translation: a rigid-body mode
+    near(eq["frequencies"][1], 4, 4, "omega", 1e-9)
     near(eq["modes"][1][1], -3, 3, "mode", 1e-9)
 
 

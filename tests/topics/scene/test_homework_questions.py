@@ -350,3 +350,29 @@ def test_ball_on_string_gallery():
     near(s1["t"], t1 + tau, 1, "taut t", 10 * ODE_TOL)
     near(s1["state"]["x"]["ball"][0], X[0], L, "taut x1", 10 * ODE_TOL)
     near(r["impacts"][0]["impulse"], m * vr, m * v0, "impulse", 10 * ODE_TOL)
+
+
+def test_two_blocks_joined_by_a_spring_on_a_smooth_floor_vibrate_at_the_reduced_mass_frequency():
+    # m1 = 3 kg and m2 = 1 kg on a smooth floor joined by k = 12 N/m: a free system, so one mode
+    # is the translation of both (ω = 0, a rigid-body mode) and the other ω² = k (m1 + m2)/(m1 m2)
+    # = 16 with the centre of mass still: the mode [1, −m1/m2]
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [-10, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 3, x: [0, 0]}
+  B: {shape: point, mass: 1, x: [0.3, 0]}
+joints:
+  a: {slider: [A, floor]}
+  b: {slider: [B, floor]}
+forces:
+  - {spring: [A, B], k: 12, L: 0.5}
+linearize: true
+at: [0]
+""")
+    (eq,) = rec["results"]["equilibria"]
+    assert eq["stability"] == "neutral" and eq["coordinates"] == ["x.A.0", "x.B.0"]
+    assert eq["frequencies"][0] == 0.0 and eq["modes"][0] == [1.0, 1.0]
+    near(eq["frequencies"][1], 4, 4, "omega", 1e-9)
+    near(eq["modes"][1][1], -3, 3, "mode", 1e-9)
