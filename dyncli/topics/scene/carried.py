@@ -158,6 +158,15 @@ class _OnLine:
         rows, gams = self._rows_gammas(q, v)
         return float(np.array(rows[0]) @ a) - gams[0]
 
+    def line_watch(self, lam, q, v, t):
+        """A one-sided element's watch (a contact's, a rolling disk's): off the line, its gap
+        (past the line's ends, as on a fixed line: |gap| − margin); on it, what it watches there."""
+        m = self._margin(q)
+        if self.mode == "off":           # (the one-sided elements have modes and their watches on it)
+            g = self.gap(q)
+            return [("impact", g if m is None or m >= 0 else abs(g) - m)]
+        return self.touching_watches(lam, q, v, m)
+
     def turn_row(self, B: BodyData) -> list:
         """∂(θ_B − θ_W)/∂q: the rigid body B turning relative to the carrier."""
         row = [0.0] * self.n
@@ -247,12 +256,7 @@ class CarriedContact(_OnLine, Contact):
         rows, gams = self._rows_gammas(q, v)
         return float(np.array(rows[1]) @ a) - gams[1]
 
-    def watch(self, lam, q, v, t):
-        m = self._margin(q)
-        if self.mode == "off":
-            g = self.gap(q)
-            return [("impact", g if m is None or m >= 0 else abs(g) - m)]
-        return self.touching_watches(lam, q, v, m)
+    watch = _OnLine.line_watch
 
 
 @dataclass(kw_only=True)
@@ -361,9 +365,4 @@ class CarriedRolls(_OnLine, Rolls):
     def slip_rate(self, q, v, a) -> float:
         return float(self.tangent_jac(q) @ a) - self._rows_gammas(q, v)[1][1]
 
-    def watch(self, lam, q, v, t):
-        m = self._margin(q)
-        if self.mode == "off":
-            g = self.gap(q)
-            return [("impact", g if m is None or m >= 0 else abs(g) - m)]
-        return self.touching_watches(lam, q, v, m)
+    watch = _OnLine.line_watch
