@@ -313,14 +313,16 @@ def _initial_modes(system, q, v) -> None:
     if not at_rest:
         return
     J = system.jac(q)
-    if assembly.rank(J) < J.shape[0] and _slide_together(system, q, v, at_rest):
+    verdict = _slide_together(system, q, v, at_rest) if assembly.rank(J) < J.shape[0] else None
+    if verdict == "slides":
         at_rest = [e for e in at_rest if e.mode == "stick"]
         J = system.jac(q)
     if assembly.rank(J) < J.shape[0]:
         names = [e.name for e in at_rest]
-        raise InputError(f"the friction at {', '.join(names)} is not determined by the equations of motion (statically "
-                         "indeterminate: the rows that hold the contacts at rest are redundant); make one contact smooth, "
-                         "or give the friction as a force", at_rest[0].path)
+        held = " they stay at rest (the friction within μ_s N can hold them), but" if verdict == "held" else ""
+        raise InputError(f"the friction at {', '.join(names)}:{held} how it is shared is not determined by the equations "
+                         "of motion (statically indeterminate: the rows that hold the contacts at rest are redundant); "
+                         "make one contact smooth, or give the friction as a force", at_rest[0].path)
     while at_rest:
         v0 = system.project_velocity(q, v, 0.0)
         _, lam, _ = system.solve(q, v0, 0.0)
@@ -338,14 +340,15 @@ def _initial_modes(system, q, v) -> None:
         system.refresh()
 
 
-def _slide_together(system, q, v, at_rest) -> bool:
+def _slide_together(system, q, v, at_rest) -> str | None:
     """Rough contacts at rest whose held rows are dependent (blocks tied by a string on a rough
     floor): which friction each would take is not determined, but whether they can be held at
     all is.  Their group (the contacts whose held row takes part in the dependence) slides when
     even the static limit μ_s N at every one, against the way each point goes without friction,
     leaves each going that way: no friction within the limits then holds them (between none and
-    all of it the points' accelerations only shrink).  Leaves the group sliding (kinetic
-    friction) and returns True; else leaves the contacts as they were and returns False."""
+    all of it the points' accelerations only shrink).  Returns "slides" (the group left sliding,
+    with kinetic friction), "held" (nothing pushes them, or the limit stops or turns every one:
+    they stay at rest) or None (undecided: the contacts left as they were)."""
     def deficiency() -> int:
         J = system.jac(q)
         return J.shape[0] - assembly.rank(J)
@@ -359,6 +362,8 @@ def _slide_together(system, q, v, at_rest) -> bool:
             group.append(e)
         e.mode = "stick"
         system.refresh()
+    if not group or any(getattr(e.surface, "curved", False) for e in group):
+        return None                                 # (a curve's slip rate has its own terms)
 
     def tangential(sign_of) -> list[float]:
         for e in group:
@@ -367,23 +372,22 @@ def _slide_together(system, q, v, at_rest) -> bool:
         a, _, _ = system.solve(q, v, 0.0)
         return [e.slip_rate(q, v, a) for e in group]
 
-    if any(getattr(e.surface, "curved", False) for e in group):
-        return False                                # (a curve's slip rate has its own terms)
     kept = [(e.mu_k, e.mode, e.sign) for e in group]
     free = tangential(lambda e: 0.0)                # the way each point goes without friction
     scale = max(map(abs, free), default=0.0)
     signs = {id(e): math.copysign(1.0, f) for e, f in zip(group, free)}
-    slides = bool(group) and all(abs(f) > 1e-9 * scale for f in free) and scale > 0
-    if slides:
+    verdict: str | None = "held" if not scale > 0 else None
+    if scale > 0 and all(abs(f) > 1e-9 * scale for f in free):
         for e in group:
             e.mu_k = e.mu_s                         # the static limit, against the way it goes
         held = tangential(lambda e: signs[id(e)])
-        slides = all(math.copysign(1.0, h) == signs[id(e)] and abs(h) > 1e-9 * scale for e, h in zip(group, held))
+        goes = [math.copysign(1.0, h) == signs[id(e)] and abs(h) > 1e-9 * scale for e, h in zip(group, held)]
+        verdict = "slides" if all(goes) else "held" if not any(goes) else None
     for e, (mu_k, mode, sign) in zip(group, kept):
         e.mu_k = mu_k
-        e.mode, e.sign = ("slide", signs[id(e)]) if slides else (mode, sign)
+        e.mode, e.sign = ("slide", signs[id(e)]) if verdict == "slides" else (mode, sign)
     system.refresh()
-    return slides
+    return verdict
 
 
 def _refuse_at_start(system, q, v) -> None:

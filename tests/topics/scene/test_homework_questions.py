@@ -296,11 +296,11 @@ def test_two_blocks_tied_by_a_string_pulled_across_a_rough_floor():
 
 
 def test_two_tied_blocks_the_floor_can_hold_are_refused_as_indeterminate():
-    # F = 3 N < 4.905 N: they stay at rest, but how the floor shares the friction between A and
-    # B is not determined by the equations (statically indeterminate): refused naming both
+    # F = 3 N < 4.905 N: they stay at rest (said), but how the floor shares the friction between
+    # A and B is not determined by the equations (statically indeterminate): refused naming both
     from tests.topics.scene.test_refusals import refusal
 
-    refusal(TIED.format(F=3), "joints.onA", "onA, onB", "statically indeterminate")
+    refusal(TIED.format(F=3), "joints.onA", "onA, onB", "they stay at rest", "statically indeterminate")
 
 
 def test_block_on_table_pulley_gallery():
