@@ -2,7 +2,9 @@
 (a ``when`` on ``distance.BODY``), "how high does it rise" (a disk given its centre's speed, the
 spin left to the rolling), "a block given a speed drags a hanging mass" (the rates left out are
 those the joints impose, the rates given are kept), a block on a table tied over a pulley, "where
-does the string go slack" (a cord between two points is a string: its exact length).
+does the string go slack" (a cord between two points is a string: its exact length), two blocks
+tied by a string on a rough floor (do they move?), two blocks joined by a spring on a smooth floor
+(the natural frequency of a free system: a rigid-body mode at ω = 0).
 
 References by hand (constant accelerations 16.7, rolling 15.8, energy 34.20) and, for the
 pendulum's time to the bottom, mpmath's complete elliptic integral at 30 digits.  Exact routes:
