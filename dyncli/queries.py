@@ -442,7 +442,7 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
         peaks = [j for j in range(1, len(T) - 1) if H[j] >= H[j - 1] and H[j] >= H[j + 1]]
         cands += [(T[j], H[j]) for j in peaks]
         best = max(c[1] for c in cands)
-        tol = _tol(motion, max(abs(x) for x in H + [best]))
+        tol = _tol(motion, _scale(H, best))
         # the first of the best peaks polished (the answer; a cut is the extreme's time to the
         # companion matrix's ~1e-12, its value to rounding, so no later peak can overtake it):
         # h rises to T[j] and falls after it, so its largest value in [T[j-1], T[j+1]] is the
@@ -464,9 +464,18 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     if any(c[1] != c[1] for c in cands):               # NaN: no largest value to speak of
         raise NumericalError(f"find: {path} is not a number along the motion (between t = {w1:g} and {w2:g} s): "
                              "no largest or smallest value; check the inputs that define it")
-    tol = _tol(motion, max([*map(abs, H), abs(best)]))
+    if not math.isfinite(best):                       # ±inf: the extreme is beyond the doubles
+        raise NumericalError(f"find: the {q.kind} of {path} between t = {w1:g} and {w2:g} s is beyond the range "
+                             "of a double (1.8e308): check the inputs that scale it")
+    tol = _tol(motion, _scale(H, best))
     t = min(c[0] for c in cands if c[1] >= best - tol)
     return t, (t == w1 or t == w2)
+
+
+def _scale(H: list[float], best: float) -> float:
+    """The size of the values the extreme is told apart at: the largest finite |value| (an
+    infinite sample elsewhere would make every candidate tie with the best)."""
+    return max([abs(x) for x in H if math.isfinite(x)] + [abs(best) if math.isfinite(best) else 0.0])
 
 
 def _turning(h, hr, T: list[float], H: list[float]) -> list[tuple[float, float]]:

@@ -39,4 +39,13 @@ class Pendulum(ProblemBase):
         q = self.theta_dot0 / math.sqrt(w2)
         if not math.isfinite(q * q) or not math.isfinite(self.theta_dot0 * self.theta_dot0 * self.l * (self.m or 1.0)):
             raise InputError("θ̇₀/√(g/l) overflows: give a rate whose square (and m l θ̇₀²) is a finite number", "theta_dot0")
+        if self.m is not None:
+            # the mass scales E = 2 m g l k² and the tension m g (4k² + 3 cos θ − 2), at most
+            # m g (1 + 4k²) in size: both doubles (its rate may overflow: the extremes are found by its sign)
+            k2 = math.sin(0.5 * self.theta0) ** 2 + 0.25 * q * q
+            mg = self.m * self.g
+            if not (math.isfinite(2.0 * mg * self.l * k2) and math.isfinite(mg * (1.0 + 4.0 * k2))):
+                raise InputError(f"m = {self.m:g} kg puts the energy or the rod's tension beyond the range of a double "
+                                 f"(1.8e308): m g l = {self.m:g}·{self.g:g}·{self.l:g}; give a smaller mass (or "
+                                 "leave m out: the motion does not depend on it)", "m")
         return self

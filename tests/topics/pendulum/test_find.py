@@ -43,3 +43,16 @@ def test_separatrix_never_reaches_the_top():
     f = rec["results"]["find"]
     assert f[0]["reached"] is False and any("find.0: not reached" in w for w in rec["warnings"])
     assert f[1]["t"] == pytest.approx(math.asinh(math.tan(1.5)) / 2, rel=8 * EPS)     # 2 atan(sinh 2t) = 3
+
+
+def test_a_tension_whose_rate_overflows_is_still_found():
+    """m g = 1e300 with ω₀ = 1e100: the tension (at most m g (3 − 2 cos θ₀) at the bottom) is a
+    double though its rate −3 m g θ̇ sin θ is not; the mass is accepted and the extremes found (the
+    largest at the bottom, a quarter period K/ω₀ in; the least at the release)."""
+    rec = solve_one_text("type: pendulum\nl: 1e-100\ng: 1e100\nm: 1e200\ntheta0: 1\n"
+                         "find: [{max: tension}, {min: tension}]\n")
+    f = rec["results"]["find"]
+    T = float(ref.period(1e-100, 1e100, 1.0))
+    assert f[0]["t"] == pytest.approx(T / 4, rel=1e-12)
+    assert f[0]["tension"] == pytest.approx(1e300 * (3 - 2 * math.cos(1.0)), rel=8 * EPS)
+    assert f[1]["t"] == 0.0 and f[1]["tension"] == pytest.approx(1e300 * math.cos(1.0), rel=8 * EPS)

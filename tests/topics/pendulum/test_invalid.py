@@ -22,6 +22,10 @@ CASES = [
     (HEAD + "theta_dot0: .inf\n", "theta_dot0: must be finite"),
     ("type: pendulum\nl: 1e-300\ng: 1e300\ntheta0: 1\n", "l: g/l = 1e+300/1e-300 gives a frequency"),
     (HEAD + "theta_dot0: 1e200\n", "theta_dot0: θ̇₀/√(g/l) overflows"),
+    # m g (3 − 2 cos θ₀), the tension at the bottom, beyond 1.8e308 (fuzz seed 3404059: exit 3 at find)
+    (HEAD + "m: 1.7976931348623157e+308\nfind: [{max: tension}]\n", "bad.yaml:4:1: m: m = 1.79769e+308 kg puts the "
+     "energy or the rod's tension beyond the range of a double"),
+    (HEAD + "m: 1e300\ng: 1e10\n", "m: m = 1e+300 kg puts the energy or the rod's tension beyond"),
     (HEAD + "at: [0, -1]\n", "bad.yaml:4:1: at: entry 1: times must be >= 0"),
     (HEAD + "omega0: 2\n", "omega0: unknown field"),
     (HEAD + "t_end: 0\n", "t_end: must be > 0"),
