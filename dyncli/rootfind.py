@@ -584,7 +584,10 @@ def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-1
         r = np.asarray(F(x), dtype=float)
         if not np.all(np.isfinite(r)):
             return x, False
-        step = np.linalg.lstsq(np.asarray(jac(x), dtype=float), -r, rcond=1e-13)[0]
+        J = np.asarray(jac(x), dtype=float)
+        if not np.all(np.isfinite(J)):
+            raise _not_finite()
+        step = np.linalg.lstsq(J, -r, rcond=1e-13)[0]
         big = float(np.max(np.abs(step) / scale, initial=0.0))
         if big > max_step:
             step *= max_step / big
@@ -626,11 +629,20 @@ def newton_systems(F, jac, X0, *, scale, max_step: float = 0.5, tol: float = 1e-
     return X, ok
 
 
+def _not_finite():
+    """The LinAlgError lstsq raises for a matrix that is not finite, raised before LAPACK sees it
+    (LAPACK prints its complaint about it to stdout, behind the renderers)."""
+    import numpy as np
+
+    return np.linalg.LinAlgError("SVD did not converge in Linear Least Squares (a matrix that is not finite)")
+
+
 def lstsq_many(A, B, rcond: float):
     """The minimum-norm least-squares solutions of A[k] x = B[k] for a stack of matrices,
     as ``numpy.linalg.lstsq(A[k], B[k], rcond)`` (LAPACK's gelsd: singular values at or below
-    rcond times the largest taken as zero), by one stacked SVD; a matrix that is not finite goes
-    to lstsq itself (which raises as it would)."""
+    rcond times the largest taken as zero), by one stacked SVD; a matrix that is not finite
+    raises LinAlgError, as lstsq would (without handing it to LAPACK, which prints a complaint
+    to stdout first)."""
     import numpy as np
 
     fin = np.all(np.isfinite(A), axis=(1, 2))
@@ -640,8 +652,8 @@ def lstsq_many(A, B, rcond: float):
         keep = s > rcond * s[:, :1]
         inv = np.divide(1.0, s, out=np.zeros_like(s), where=keep)
         out[fin] = np.einsum("kji,kj->ki", Vt, inv * np.einsum("kji,kj->ki", U, B[fin]))
-    for k in np.nonzero(~fin)[0]:
-        out[k] = np.linalg.lstsq(A[k], B[k], rcond=rcond)[0]
+    if not np.all(fin):
+        raise _not_finite()
     return out
 
 

@@ -70,6 +70,37 @@ def test_lstsq_many_is_numpy_lstsq_row_by_row():
         assert np.allclose(got[k], np.linalg.lstsq(R[k], b[k], rcond=None)[0], rtol=1e-12, atol=1e-13)
 
 
+def test_a_matrix_beyond_the_doubles_is_refused_before_lapack_prints(tmp_path):
+    """lstsq_many and newton_system raise LinAlgError, as lstsq would, for a matrix that is not
+    finite, without handing it to LAPACK (whose DLASCL complaint went to stdout, behind the
+    renderers: fuzz seed 3524030); the scene then exits 1 saying its numbers are beyond the
+    doubles, with nothing else on stdout."""
+    from dyncli.rootfind import lstsq_many, newton_system
+    from tests.conftest import run_cli
+
+    A = np.eye(3)[None].repeat(2, axis=0)
+    A[1, 0, 0] = np.inf
+    with pytest.raises(np.linalg.LinAlgError):
+        lstsq_many(A, np.ones((2, 3)), rcond=1e-13)
+    with pytest.raises(np.linalg.LinAlgError):
+        newton_system(lambda x: x - 1.0, lambda x: np.diag([np.inf, 1.0]), [0.0, 0.0], scale=np.ones(2))
+    f = tmp_path / "huge.yaml"
+    f.write_text("""type: scene
+params: {m: 1.0e+300, l: 1.0e-16, p1: 30*deg}
+bodies:
+  A: {shape: point, mass: m, x: [l*sin(p1), -l*cos(p1)]}
+  B: {shape: point, mass: m, x: [l*sin(p1) + l*sin(sqrt(2)*p1), -l*cos(p1) - l*cos(sqrt(2)*p1)]}
+joints:
+  upper: {link: [[0, 1.0e-150], A], length: l}
+  lower: {link: [A, B], length: l}
+at: [0]
+linearize: true
+""")
+    code, out, err = run_cli("solve", str(f), "--format", "json")
+    assert code == 1 and "beyond the doubles" in err
+    assert "DLASCL" not in out and "DLASCL" not in err
+
+
 @pytest.mark.parametrize("text", [ROD, None])
 def test_rest_hessians_are_the_one_state_hessians(text):
     from dyncli.topics.scene import curvature
