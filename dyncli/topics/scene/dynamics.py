@@ -534,6 +534,13 @@ class SceneSystem:
         L = np.array(got[1], dtype=float).reshape(len(rows), k).T
         return [(a, lam, self._power(P, lam, q, v)) for (q, v, _t), a, lam, P in zip(states, A, L, powers)]
 
+    def translation(self, axis: int) -> np.ndarray:
+        """q̇ of the whole scene translating along e_axis at unit speed."""
+        T = np.zeros(self.n)
+        for b in self.bodies:
+            T[b.index[axis]] = 1.0
+        return T
+
     def translations(self, q) -> list[int]:
         """The axes i (0: e1, 1: e2) along which the whole scene may translate as one by its
         structure at q: every made row allows it (the joint forces have no net e_i component),
@@ -549,9 +556,7 @@ class SceneSystem:
         for axis in (0, 1):
             if axis == 1 and self.g != 0:
                 continue
-            T = np.zeros(self.n)
-            for b in self.bodies:
-                T[b.index[axis]] = 1.0
+            T = self.translation(axis)
             if J.size and float(np.max(np.abs(J @ T))) > 1e-12 * max(float(np.max(np.abs(J))), 1.0):
                 continue
             if any(ld.ties(axis) for ld in self.loads):

@@ -101,10 +101,7 @@ def _translation_modes(system, q, indep, U0) -> bool:
     if not axes:
         return False
     Z = equilibria.null_basis(system.jac(q), system.n, indep)
-    T = np.zeros((system.n, len(axes)))
-    for k, axis in enumerate(axes):
-        for b in system.bodies:
-            T[b.index[axis], k] = 1.0
+    T = np.stack([system.translation(axis) for axis in axes], axis=1)
     V = Z @ U0                                      # the zero modes in q
     fit = np.linalg.lstsq(T, V, rcond=None)[0]
     return bool(float(np.max(np.abs(T @ fit - V), initial=0.0)) <= 1e-9 * max(float(np.max(np.abs(V), initial=0.0)), 1e-300))
