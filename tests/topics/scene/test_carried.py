@@ -16,15 +16,11 @@ from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
 from tests.topics.scene.common import gallery
 from tests.topics.scene.test_refusals import refusal
+from tests.topics.scene.test_start import near
 
 G = 9.81
 EXACT = 1e-12
 ODE_TOL = ODE_GLOBAL * 1e-10
-
-
-def near(got, want, scale, what, tol=EXACT):
-    assert got is not None, f"{what}: null"
-    assert abs(float(got) - float(want)) <= tol * abs(float(scale)), f"{what}: {got!r} vs {float(want)!r}"
 
 
 WEDGE = """

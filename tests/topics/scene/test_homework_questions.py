@@ -8,7 +8,7 @@ tied by a string on a rough floor (do they move?), two blocks joined by a spring
 
 References by hand (constant accelerations 16.7, rolling 15.8, energy 34.20) and, for the
 pendulum's time to the bottom, mpmath's complete elliptic integral at 30 digits.  Exact routes:
-1e-12 of the quantity's scale; the ODE route at its default rtol: ODE_GLOBAL × 1e-10.
+1e-12 of the quantity's scale (test_start.near); the ODE route at its default rtol: ODE_GLOBAL × 1e-10.
 """
 
 from __future__ import annotations
@@ -20,15 +20,10 @@ import mpmath as mp
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
 from tests.topics.scene.common import gallery
+from tests.topics.scene.test_start import near
 
 G = 9.81
-EXACT = 1e-12
 ODE_TOL = ODE_GLOBAL * 1e-10      # the ODE route at the default rtol (docs/accuracy.md)
-
-
-def near(got, want, scale, what, tol=EXACT):
-    assert got is not None, f"{what}: null"
-    assert abs(float(got) - float(want)) <= tol * abs(float(scale)), f"{what}: {got!r} vs {float(want)!r}"
 
 
 def speed(v) -> float:
