@@ -104,9 +104,11 @@ class CurveData:
     def _newton(self, r, q: float):
         """Newton on (r − y)·y′ = 0 from q: the foot q* when it converges to a nearest point
         (|r − y|² a minimum there), else None.  Each step moves the foot at most a quarter of
-        |r − y| + 1/|k| along the curve, so that from a guess far away (a state asked out of
-        order) it walks to the nearest foot on its side instead of jumping to another lap of a
-        closed curve (where the arc of rolling, φ₂, would be a lap off)."""
+        min(|r − y|, 1/|k|) + 1/|k| along the curve, so that from a guess far away (a state asked
+        out of order) it walks to the nearest foot on its side instead of jumping to another lap
+        of a closed curve (where the arc of rolling, φ₂, would be a lap off); for a point far
+        from a bend (|r − y| ≫ 1/|k|) the step stays within half the bend's radius, inside
+        Newton's basin there (a step of |r − y|/4 jumps across the bend and back forever)."""
         (f0, h0), (f1, h1), (f2, h2) = self._closures()[:3]     # plain floats: no array a step
         r0, r1 = float(r[0]), float(r[1])
         for _ in range(200):
@@ -119,7 +121,8 @@ class CurveData:
                 return None
             step = g / gp
             sp = math.sqrt(dd)
-            cap = 0.25 * (math.sqrt(w0 * w0 + w1 * w1) + sp ** 3 / max(abs(a1 * b2 - b1 * a2), 1e-300))
+            rho = sp ** 3 / max(abs(a1 * b2 - b1 * a2), 1e-300)
+            cap = 0.25 * (min(math.sqrt(w0 * w0 + w1 * w1), rho) + rho)
             if abs(step) * sp > cap:
                 step = math.copysign(cap / sp, step)
             q -= step

@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build, start
 from .dynamics import SceneSystem
-from .contacts import Contact
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
@@ -40,6 +40,7 @@ def setup(plan: build.Plan) -> Scene:
     loads = build.loads_of(plan, R, q)
     system = SceneSystem(list(bodies.values()), elems, loads, plan.g, n, names)
     warnings: list[str] = []
+    _open_contacts(system, q, free, warnings.append)
     q = assembly.assemble(system, q, free)
     if cords:
         _place_hanging(plan, cords, R, q, free, system)
@@ -87,6 +88,37 @@ def setup(plan: build.Plan) -> Scene:
     start.settle(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
+
+
+def _open_contacts(system, q, free, warn) -> None:
+    """A contact or a rolling joint whose body is given off its surface, on the side the surface
+    pushes (a block above the floor it will land on), starts open ("off": the point in flight,
+    watched for its impact, made there with the joint's restitution e), with a warning: the
+    positions given are kept.  A body through its surface, or one whose position is left out
+    (the joint places it), is left to the assembly and its refusal."""
+    scale = assembly.length_scale(q, system)
+    opened = False
+    for e in system.elements:
+        if not isinstance(e, (Contact, Rolls)) or e.mode == "off":
+            continue
+        point = e.P if isinstance(e, Contact) else e.body_point
+        used = [] if point.body is None else list(point.body.index[:2])
+        if isinstance(e, Contact) and point.turns_with_body:
+            used.append(point.body.index[2])
+        carrier = getattr(e.surface, "body", None)
+        if carrier is not None:
+            used += list(carrier.index)
+        if any(free[i] for i in used):
+            continue
+        g = float(e.gap(q))
+        if g > 1e-9 * scale:
+            e.mode = "off"
+            opened = True
+            warn(f"{point.label} is given {g:.6g} m off the surface {e.surface.name!r}: the {e.kind} joint "
+                 f"{e.name!r} starts open and is made where {point.label} strikes it (restitution e = {e.e:g}); "
+                 "place it on the surface (or leave its position out) if it rests there")
+    if opened:
+        system.refresh()
 
 
 def _carriers_placed(plan, bodies, free) -> None:
@@ -400,9 +432,13 @@ def _refuse_at_start(system, q, v) -> None:
                 continue
             if what == "separates":
                 on = e.P.label if isinstance(e, Contact) else e.body_point.label
+                n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]
+                side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
                 raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
-                                 "release it from a position where it pushes, or join them with a two-sided joint",
-                                 e.path)
+                                 f"it pushes along its normal n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}): "
+                                 f"if {on} rests on the other side, reverse the surface's direction; "
+                                 "else release it from a position where it pushes, or join them with a two-sided "
+                                 "joint", e.path)
             if what == "leaves" and getattr(e.surface, "curved", False):
                 raise InputError(f"at t = 0 the contact point is beyond an end of the curve {e.surface.name!r} (q_range "
                                  f"{list(e.surface.q_range)}): place it on the curve or widen q_range", e.path)

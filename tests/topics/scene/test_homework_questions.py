@@ -20,6 +20,7 @@ import mpmath as mp
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
 from tests.topics.scene.common import gallery
+from tests.topics.scene.test_refusals import refusal
 from tests.topics.scene.test_start import near
 
 G = 9.81
@@ -373,3 +374,96 @@ at: [0]
     assert eq["frequencies"][0] == 0.0 and eq["modes"][0] == [1.0, 1.0]
     near(eq["frequencies"][1], 4, 4, "omega", 1e-9)
     near(eq["modes"][1][1], -3, 3, "mode", 1e-9)
+
+
+def test_block_off_dome_gallery():
+    # references by mpmath at 30 digits: N = 0 from the energy and the radial balance (16.7,
+    # 34.20), its time by quadrature of R dθ / v(θ), the flight to the floor in closed form, the
+    # landing's impulse m × the vertical speed (28.7, e = 0); the floor's contact, given 2 m
+    # below the block, starts open (a warning), and the flight past the dome's end runs on
+    r = (rec := gallery("block-off-dome.yaml"))["results"]
+    m, R, v0 = 1, 2, 1
+    with mp.workdps(30):
+        c = (2 + mp.mpf(v0) ** 2 / (G * R)) / 3
+        th = mp.acos(c)
+        t1 = mp.quad(lambda a: R / mp.sqrt(v0 ** 2 + 2 * G * R * (1 - mp.cos(a))), [0, th])
+        vs = mp.sqrt(G * R * c)
+        vx, vy = vs * c, -vs * mp.sin(th)
+        tau = (vy + mp.sqrt(vy ** 2 + 2 * G * R * c)) / G
+        vland = vy - G * tau
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("on_dome", "separates"), ("on_floor", "impact")]
+    assert any("starts open" in w for w in rec["warnings"])
+    near(r["reaction"]["on_dome"]["N"][0], m * (G - v0 ** 2 / R), m * G, "N at the top")
+    s0, s1 = r["events"]
+    near(s0["t"], t1, 1, "leaves at", ODE_TOL)
+    near(s0["state"]["x"]["P"][1], R * c, R, "height", ODE_TOL)
+    near(s0["state"]["v"]["P"][0], vx, vs, "v1 there", ODE_TOL)
+    near(s1["t"], t1 + tau, 1, "lands at", ODE_TOL)
+    near(s1["state"]["x"]["P"][0], R * mp.sin(th) + vx * tau, R, "lands at x", ODE_TOL)
+    near(r["impacts"][0]["impulse"], -m * vland, m * vs, "impulse", ODE_TOL)
+    near(r["v"]["P"][2][0], vx, vs, "slides on", ODE_TOL)
+    near(r["find"][0]["t"], t1 + tau, 1, "find lands", ODE_TOL)
+
+
+def test_a_point_far_beyond_a_curves_end_does_not_stop_the_flight():
+    # the dome's foot for a point far below and beside it: Newton from the curve's end walks
+    # within half the bend's radius a step (a step of a quarter of the distance jumped across
+    # the bend and back forever: "no nearest point on the curve", exit 1 at t ≈ 2.9 s)
+    rec = solve_one_text("""
+type: scene
+params: {R: 2}
+surfaces:
+  dome: {curve: {x1: "-R*cos(q)", x2: "R*sin(q)"}, q_range: [0, "pi"]}
+bodies:
+  P: {shape: point, mass: 1, x: [0, R], v: [0.01, 0]}
+joints:
+  on: {contact: [P, dome]}
+at: [0, 10]
+""")
+    r = rec["results"]
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "separates")]
+    with mp.workdps(30):        # leaves at cos θ = (2 + v0²/(g R))/3, then falls freely
+        c = (2 + mp.mpf("0.01") ** 2 / (G * 2)) / 3
+    near(r["events"][0]["state"]["x"]["P"][1], 2 * c, 2, "height", 10 * ODE_TOL)
+    assert r["x"]["P"][1][1] < -100
+
+
+def test_a_body_on_the_wrong_side_of_a_curve_is_told_its_normal():
+    # a dome run counterclockwise pushes inwards (its left): the block on top is told the
+    # normal and to reverse the curve, exit 2
+    refusal("""
+type: scene
+surfaces:
+  dome: {curve: {x1: "2*cos(q)", x2: "2*sin(q)"}, q_range: [0, "pi"]}
+bodies:
+  P: {shape: point, mass: 1, x: [0, 2]}
+joints:
+  on: {contact: [P, dome]}
+at: [0, 1]
+""", "joints.on", "would have to pull P", "n = [0, -1]", "reverse the surface's direction")
+
+
+def test_a_disk_thrown_without_spin_lands_and_rolls_at_two_thirds_of_its_speed():
+    # given 1 m above the floor it may roll on (the rolling joint starts open, a warning): it
+    # lands after √(2h/g) at √(2 g h) down; the landing (e = 0) with friction μ P_N ≥ m v/3 makes it
+    # roll at once: v' = 2 v0/3 (angular momentum about the contact point, 28.16 with
+    # I = m R²/2), ω' = −v'/R; lost: ½ m v_n² + ½ m v0² − ¾ m v'²
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  D: {shape: disk, mass: 2, radius: 0.2, x: [0, 1.2], v: [3, 0], angle: 0}
+joints:
+  roll: {rolls: [D, floor], mu_s: 0.3}
+at: [0, 2]
+""")
+    r = rec["results"]
+    m, R, h, v0 = 2, mp.mpf("0.2"), 1, 3
+    assert any("starts open" in w for w in rec["warnings"])
+    im, = r["impacts"]
+    near(im["t"], mp.sqrt(2 * h / G), 1, "lands at")
+    near(im["impulse"], m * mp.sqrt(2 * G * h), m * v0, "normal impulse")
+    near(r["v"]["D"][1][0], 2 * mp.mpf(v0) / 3, v0, "rolls at")
+    near(r["omega"]["D"][1][2], -2 * mp.mpf(v0) / 3 / R, v0 / R, "spin")
+    near(im["energy_loss"], m * G * h + m * v0 ** 2 / 2 - mp.mpf(3) / 4 * m * (2 * mp.mpf(v0) / 3) ** 2, m * v0 ** 2, "lost")
