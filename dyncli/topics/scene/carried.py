@@ -271,41 +271,66 @@ class CarriedSlider(_OnLine, ListRows):
     c0: float = 0.0                 # its gap from the line at t = 0
     dtheta: float | None = None     # its angle less the carrier's at t = 0 (a rigid body)
     fixed_angle: bool = False       # the carrying body cannot turn (prepare.py, once assembled)
+    mode: str = "on"                # "off" once its centre passed an end of the line (the event leaves)
 
     @property
     def rows(self):
-        return 1 if self.dtheta is None else 2
+        return 0 if self.mode == "off" else 1 if self.dtheta is None else 2
+
+    def phase(self):
+        return self.mode
+
+    def set_phase(self, state) -> None:
+        self.mode = state
+
+    def watch(self, lam, q, v, t):
+        m = None if self.mode == "off" else self._margin(q)
+        return [] if m is None else [("leaves", m)]
+
+    def reads_forces(self) -> bool:
+        return False
 
     @property
     def linear(self):
         return self.fixed_angle
 
     def phi_list(self, q, t):
+        if self.mode == "off":
+            return []
         out = [self.gap(q) - self.c0]
         if self.dtheta is not None:
             out.append(self.turned(q, self.P.body) - self.dtheta)
         return out
 
     def jac_list(self, q):
+        if self.mode == "off":
+            return []
         rows = self.jac_lines(q)[:1]
         return rows + [self.turn_row(self.P.body)] if self.dtheta is not None else rows
 
     def gamma_list(self, q, v, t):
+        if self.mode == "off":
+            return []
         return self._rows_gammas(q, v)[1][:1] + [0.0] * (self.rows - 1)
 
     def kkt_lists(self, q, v, t):
+        if self.mode == "off":
+            return [], []
         rows, gams = self._rows_gammas(q, v)
         if self.dtheta is None:
             return rows[:1], gams[:1]
         return [rows[0], self.turn_row(self.P.body)], [gams[0], 0.0]
 
     def hessian(self, q, w, n: int) -> np.ndarray:          # (the angle row is linear)
+        if self.mode == "off":
+            return np.zeros((n, n))
         return _OnLine.hessian(self, q, list(w[:1]), n)
 
     def report(self, lam, q, v, t):
-        out = {"N": float(lam[0])}
+        off = self.mode == "off"
+        out = {"N": 0.0 if off else float(lam[0])}
         if self.dtheta is not None:
-            out["M"] = [0.0, 0.0, float(lam[1])]
+            out["M"] = [0.0, 0.0, 0.0 if off else float(lam[1])]
         return out
 
 

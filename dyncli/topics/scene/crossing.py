@@ -54,10 +54,10 @@ def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, ce
     None: down through −tol, then located on g itself (a one-sided spring's stretch, "switch",
     either way).  At a phase's start (``start``) a quantity on its band of rounding goes off it
     first (a force at 0 that goes negative is where the last phase ended; a stretch at 0 is where
-    the spring switched), except that a gap or a slip speed at 0 that goes negative is an event
-    there; elsewhere a quantity on its band comes from its side of 0 (a search resumed)."""
+    the spring switched), except that a gap, a slip speed or an end's margin at 0 that goes
+    negative is an event there (a block started at a table's edge, moving off it); elsewhere a quantity on its band comes from its side of 0 (a search resumed)."""
     g0 = float(g(np.array([a]))[0])
-    if what == "switch" or abs(g0) <= tol and start and what not in ("sticks", "impact", "taut"):
+    if what == "switch" or abs(g0) <= tol and start and what not in ("sticks", "impact", "taut", "leaves"):
         if abs(g0) <= tol and start:    # off the band first: g² reaches (2 tol)²
             off = _first_down(lambda ts: 4 * tol * tol - g(ts) ** 2, a, b, tol * tol, cells)
             if off is None:

@@ -277,18 +277,36 @@ class PinBlock:
 @dataclass(kw_only=True)
 class Slider(ListRows):
     """The body's centre stays on the line through its position at t = 0 parallel to the
-    surface; a rigid body keeps its angle."""
+    surface; a rigid body keeps its angle.  On a surface with ends (``length``) the body leaves
+    it where its centre passes an end (the event ``leaves``; mode "off": no rows, free from then
+    on, as a collar run off the end of its rod)."""
 
     body_point: BodyPoint
     surface: SurfaceData
     c0: float = 0.0
     theta0: float | None = None
+    mode: str = "on"
 
     @property
     def rows(self):
-        return 1 if self.theta0 is None else 2
+        return 0 if self.mode == "off" else 1 if self.theta0 is None else 2
+
+    def phase(self):
+        return self.mode
+
+    def set_phase(self, state) -> None:
+        self.mode = state
+
+    def watch(self, lam, q, v, t):
+        m = None if self.mode == "off" else self.surface.ends_margin(self.body_point.xy(q))
+        return [] if m is None else [("leaves", m)]
+
+    def reads_forces(self) -> bool:
+        return False
 
     def phi_list(self, q, t):
+        if self.mode == "off":
+            return []
         n1, n2 = self.surface.n
         x1, x2 = self.body_point.xy(q)
         out = [n1 * x1 + n2 * x2 - self.c0]
@@ -298,6 +316,8 @@ class Slider(ListRows):
 
     def jac_list(self, q):
         rows = [[0.0] * self.n for _ in range(self.rows)]
+        if not rows:
+            return rows
         self.body_point.add_jac(rows[0], q, *self.surface.n)
         if self.theta0 is not None:
             rows[1][self.body_point.body.index[2]] = 1.0
@@ -307,6 +327,8 @@ class Slider(ListRows):
         return [0.0] * self.rows
 
     def phi_many(self, X, td):
+        if self.mode == "off":
+            return np.zeros((X.k, 0))
         n1, n2 = self.surface.n
         x1, x2 = self.body_point.xy_many(X)
         cols = [n1 * x1 + n2 * x2 - self.c0]
@@ -315,6 +337,8 @@ class Slider(ListRows):
         return np.stack(cols, axis=1)
 
     def jac_many(self, X, J):
+        if self.mode == "off":
+            return
         n1, n2 = self.surface.n
         self.body_point.add_jac_many(J[:, 0], X, n1, n2)
         if self.theta0 is not None:
@@ -327,9 +351,10 @@ class Slider(ListRows):
         return np.zeros((len(td), self.rows))
 
     def report(self, lam, q, v, t):
-        out = {"N": float(lam[0])}
+        off = self.mode == "off"
+        out = {"N": 0.0 if off else float(lam[0])}
         if self.theta0 is not None:
-            out["M"] = [0.0, 0.0, float(lam[1])]
+            out["M"] = [0.0, 0.0, 0.0 if off else float(lam[1])]
         return out
 
 

@@ -44,7 +44,7 @@ class Surface(StrictModel):
 
     through: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: a point of the line [m]")
     direction: Optional[list[Annotated[float, Num()]]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")
-    length: Optional[Annotated[float, Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact or rolling body reaching an end leaves the surface (an event)")]] = None
+    length: Optional[Annotated[float, Num(gt=0, dim="length", description="where it ends: `length` m from `through` along the direction (default: no end); a contact, slider or rolling body reaching an end leaves the surface (the event `leaves`; one started at an end, moving off it, leaves at once)")]] = None
     curve: Optional[SurfaceCurve] = Field(None, description="a curved surface {x1, x2}: expressions in the parameter q [m] "
                                           "(instead of through and direction); bodies on the left of increasing q")
     q_range: Optional[list[Annotated[float, Num()]]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "

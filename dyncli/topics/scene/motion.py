@@ -376,7 +376,7 @@ def crossed(g0: float, g1: float, what: str) -> bool:
         return (g0 > 0) != (g1 > 0) and g0 != 0
     # a force at 0 is where the last phase ended (not a new crossing); a gap or a slip speed at 0
     # that goes negative is one: the point returns to its surface, the sliding stops
-    return g1 < 0 <= g0 and not (g0 == 0 and what not in ("sticks", "impact", "taut"))
+    return g1 < 0 <= g0 and not (g0 == 0 and what not in ("sticks", "impact", "taut", "leaves"))
 
 
 # ----------------------------------------------------------------------------- the ODE route

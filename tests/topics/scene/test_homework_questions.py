@@ -467,3 +467,58 @@ at: [0, 2]
     near(r["v"]["D"][1][0], 2 * mp.mpf(v0) / 3, v0, "rolls at")
     near(r["omega"]["D"][1][2], -2 * mp.mpf(v0) / 3 / R, v0 / R, "spin")
     near(im["energy_loss"], m * G * h + m * v0 ** 2 / 2 - mp.mpf(3) / 4 * m * (2 * mp.mpf(v0) / 3) ** 2, m * v0 ** 2, "lost")
+
+
+def test_a_collar_runs_off_the_end_of_a_rod_spun_at_constant_rate():
+    # g = 0, the rod driven at ω about its end, the collar on it (smooth, a slider on the rod's
+    # carried line) from r0 at rest on the rod: r = r0 cosh ωt (ṙ² − ω² r² = −ω² r0²), the rod
+    # pushes it with N = 2 m ω ṙ (the Coriolis term, 16.7 in polar form); it leaves the 2 m rod
+    # where r0 cosh ωt = 2 and flies on in a straight line (it used to stay on the rod's line
+    # past its end, without a word)
+    rec = solve_one_text("""
+type: scene
+params: {m: 0.5, w: 3, r0: 0.2}
+g: 0
+surfaces:
+  guide: {body: arm, through: [0, 0], direction: [1, 0], length: 2}
+bodies:
+  arm: {shape: rod, mass: 1, length: 2, angle: 0, x: [1, 0], omega: w, v: [0, w]}
+  C: {shape: point, mass: m, x: [r0, 0], v: [0, "w*r0"]}
+joints:
+  pivot: {pin: [arm.end1, [0, 0]]}
+  motor: {drive: arm.angle, value: "w*t"}
+  on: {slider: [C, guide]}
+at: [0, 0.5, 1.2]
+""")
+    r = rec["results"]
+    m, w, r0 = mp.mpf("0.5"), 3, mp.mpf("0.2")
+    t1 = mp.acosh(2 / r0) / w
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "leaves")]
+    near(r["events"][0]["t"], t1, 1, "leaves at", ODE_TOL)
+    near(r["reaction"]["on"]["N"][1], 2 * m * w * r0 * w * mp.sinh(w / 2), m * w * w * 2, "N", ODE_TOL)
+    rd, th = r0 * w * mp.sinh(w * t1), w * t1
+    vx, vy = rd * mp.cos(th) - 2 * w * mp.sin(th), rd * mp.sin(th) + 2 * w * mp.cos(th)
+    T = mp.mpf("1.2") - t1
+    near(r["x"]["C"][2][0], 2 * mp.cos(th) + vx * T, 2, "x after", ODE_TOL)
+    near(r["x"]["C"][2][1], 2 * mp.sin(th) + vy * T, 2, "y after", ODE_TOL)
+    assert r["reaction"]["on"]["N"][2] == 0
+
+
+def test_a_block_slides_off_the_end_of_a_rail_and_falls():
+    # a slider on a 1 m rail from x = 0.5 at 1 m/s leaves at t = 0.5 s and falls (closed form);
+    # one started at the end, moving off it, leaves at once (it used to stay on the rail's line)
+    for x0, t_off in ((0.5, 0.5), (1, 0.0)):
+        for kind in ("slider", "contact"):
+            r = solve_one_text(f"""
+type: scene
+surfaces:
+  rail: {{through: [0, 0], direction: [1, 0], length: 1}}
+bodies:
+  C: {{shape: point, mass: 1, x: [{x0}, 0], v: [1, 0]}}
+joints:
+  on: {{{kind}: [C, rail]}}
+at: [0, 1]
+""")["results"]
+            assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "leaves")], (x0, kind)
+            near(r["events"][0]["t"], t_off, 1, "leaves at")
+            near(r["x"]["C"][1][1], -G / 2 * (1 - t_off) ** 2, G, "fallen")
