@@ -102,9 +102,10 @@ def _open_contacts(system, q, free, warn) -> None:
         if not isinstance(e, (Contact, Rolls)) or e.mode == "off":
             continue
         point = e.P if isinstance(e, Contact) else e.body_point
-        used = [] if point.body is None else list(point.body.index[:2])
-        if isinstance(e, Contact) and point.turns_with_body:
-            used.append(point.body.index[2])
+        body = point.body
+        used = [] if body is None else list(body.index[:2])
+        if body is not None and isinstance(e, Contact) and point.turns_with_body:
+            used.append(body.index[2])
         carrier = getattr(e.surface, "body", None)
         if carrier is not None:
             used += list(carrier.index)
