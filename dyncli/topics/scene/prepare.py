@@ -84,8 +84,8 @@ def setup(plan: build.Plan) -> Scene:
     J = system.jac(q)                   # the mechanism's freedom: a contact held by friction still may slide
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
-    _initial_modes(system, q, v)
-    start.settle(system, q, v)
+    warnings += _initial_modes(system, q, v)
+    warnings += start.settle(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
@@ -326,12 +326,15 @@ def _refuse_massless(system, q, plan) -> None:
                              "the joints carry it", f"bodies.{body.name}.{what}")
 
 
-def _initial_modes(system, q, v) -> None:
+def _initial_modes(system, q, v) -> list[str]:
     """Rough contacts: sliding when their point slides; those at rest are held together (a
     second row each) and the static test decides: every one with |F| ≤ μ_s N sticks; else the
     one furthest past its limit slides opposite to the friction it needed, and the rest are
-    tested again.  Friction that equilibrium does not determine (the held rows redundant) is
-    refused naming the contacts."""
+    tested again.  Where the held rows are redundant, a contact whose N they do determine and
+    that would pull lets go first (:func:`_lift_determined`: a crate pushed past tipping on two
+    rough corners); friction that equilibrium still does not determine is refused naming the
+    contacts.  Returns the notes of the contacts let go."""
+    notes: list[str] = []
     at_rest = []
     for e in system.elements:
         if isinstance(e, Contact) and e.rough and e.mode != "off":       # a stop is open until it is struck
@@ -344,8 +347,12 @@ def _initial_modes(system, q, v) -> None:
                 at_rest.append(e)
     system.refresh()
     if not at_rest:
-        return
+        return notes
     J = system.jac(q)
+    while assembly.rank(J) < J.shape[0] and (note := _lift_determined(system, q, v)) is not None:
+        notes.append(note)
+        at_rest = [e for e in at_rest if e.mode != "off"]
+        J = system.jac(q)
     verdict = _slide_together(system, q, v, at_rest) if assembly.rank(J) < J.shape[0] else None
     if verdict == "slides":
         at_rest = [e for e in at_rest if e.mode == "stick"]
@@ -367,10 +374,35 @@ def _initial_modes(system, q, v) -> None:
                 if worst is None or r > ratio:
                     worst, ratio, sign = e, r, -math.copysign(1.0, F)
         if worst is None:
-            return
+            return notes
         worst.mode, worst.sign = "slide", sign
         at_rest.remove(worst)
         system.refresh()
+    return notes
+
+
+def _lift_determined(system, q, v) -> str | None:
+    """With the held rows redundant (their multipliers not unique), the contacts whose N is
+    still determined (no dependent combination of the rows involves their normal row: the null
+    space of Jᵀ is zero there); of those that would pull (N < 0 in the least-norm multipliers),
+    the first that may let go of its body (start.lets_go) is released.  Its note, or None."""
+    n = system.n
+    J = system.jac(q)
+    f, _ = system.applied(q, v, 0.0)
+    b = np.concatenate([f, system.gamma(q, v, 0.0)])
+    lam = np.linalg.lstsq(system.kkt_matrix(q, J), b, rcond=None)[0][n:]
+    _, sv, Vt = np.linalg.svd(J.T)
+    r = int(np.sum(sv > 1e-10 * max(float(sv[0]), 1e-300))) if sv.size else 0
+    null = Vt[r:]
+    scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+    for i, e in enumerate(system.elements):
+        if not isinstance(e, Contact) or e.mode == "off":
+            continue
+        o = system.offsets[i]
+        N = float(lam[o])
+        if N < -1e-9 * scale and not np.any(np.abs(null[:, o]) > 1e-9) and start.lets_go(system, q, v, e):
+            return start.let_go_note(e, N)
+    return None
 
 
 def _slide_together(system, q, v, at_rest) -> str | None:

@@ -522,3 +522,64 @@ at: [0, 1]
             assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "leaves")], (x0, kind)
             near(r["events"][0]["t"], t_off, 1, "leaves at")
             near(r["x"]["C"][1][1], -G / 2 * (1 - t_off) ** 2, G, "fallen")
+
+
+CRATE = """
+type: scene
+params: {{m: 20, w: 0.6, h: 1.0, P: {P}}}
+surfaces:
+  floor: {{through: [-5, 0], direction: [1, 0]}}
+bodies:
+  crate: {{shape: box, mass: m, size: [w, h], x: [0, "h/2"], angle: 0,
+          points: {{BL: ["-w/2", "-h/2"], BR: ["w/2", "-h/2"], TL: ["-w/2", "h/2"]}}}}
+joints:
+  left: {{contact: [crate.BL, floor], mu_s: {mus}, mu_k: {muk}}}
+  right: {{contact: [crate.BR, floor], mu_s: {mus}, mu_k: {muk}}}
+forces:
+  - {{force: crate.TL, F: [P, 0]}}
+at: [0]
+"""
+
+
+def test_a_crate_pushed_at_its_top_past_tipping_tips_about_its_front_edge():
+    # held on both rough corners the crate's N at the back edge is determined (moments about the
+    # front edge: N_L w = m g w/2 − P h = −11.14 N·m: it would pull), though the friction's split
+    # is not: the back corner lets go (a warning) and the crate turns about the front edge, which
+    # sticks: I_BR α = m g w/2 − P h with I_BR = m (w² + h²)/3, F = m a₁ − P, N = m (g + a₂)
+    # (it used to be refused as statically indeterminate, "they stay at rest")
+    m, w, h, P = 20, mp.mpf("0.6"), 1, 70
+    rec = solve_one_text(CRATE.format(P=P, mus=0.5, muk=0.4))
+    r = rec["results"]
+    alpha = (m * G * w / 2 - P * h) / (m * (w ** 2 + h ** 2) / 3)
+    a1, a2 = -alpha * h / 2, alpha * w / 2 * -1
+    assert any("lets go of crate.BL" in x for x in rec["warnings"])
+    near(r["alpha"]["crate"][0][2], alpha, abs(alpha), "α")
+    near(r["reaction"]["right"]["F"][0], m * a1 - P, P, "F")
+    near(r["reaction"]["right"]["N"][0], m * (G + a2), m * G, "N")
+    assert r["reaction"]["left"]["N"][0] == 0
+
+
+def test_a_crate_pushed_past_tipping_and_sliding_tips_as_its_front_edge_slides():
+    # μ_s too small to hold the front edge as a pivot (57.7 N needed, μ_s N = 40.7 N): it slides
+    # forward with F = −μ_k N while the crate turns: m a₁ = P − μ_k N, N = m (g − α w/2),
+    # Ī α = −(h/2) P + (w/2) N − (h/2) μ_k N, a₂ = −α w/2 (the front edge stays on the floor)
+    m, w, h, P, muk = 20, mp.mpf("0.6"), 1, 70, mp.mpf("0.15")
+    r = solve_one_text(CRATE.format(P=P, mus=0.2, muk=0.15))["results"]
+    Ib = m * (w ** 2 + h ** 2) / 12
+    A = mp.matrix([[m, 0, muk], [0, m * w / 2, 1], [0, Ib, -(w / 2 - h / 2 * muk)]])
+    a1, alpha, N = mp.lu_solve(A, mp.matrix([P, m * G, -P * h / 2]))
+    assert a1 + alpha * h / 2 > 0                  # the front edge slides forward
+    near(r["alpha"]["crate"][0][2], alpha, abs(alpha), "α")
+    near(r["a"]["crate"][0][0], a1, abs(a1), "a1")
+    near(r["reaction"]["right"]["N"][0], N, m * G, "N")
+    near(r["reaction"]["right"]["F"][0], -muk * N, m * G, "F")
+
+
+def test_crate_tips_gallery():
+    # the gallery file is the first crate test's scene (the references there)
+    rec = gallery("crate-tips.yaml")
+    r = rec["results"]
+    m, w, h, P = 20, mp.mpf("0.6"), 1, 70
+    alpha = (m * G * w / 2 - P * h) / (m * (w ** 2 + h ** 2) / 3)
+    near(r["alpha"]["crate"][0][2], alpha, abs(alpha), "α")
+    assert any("N = -18.5667 N" in x for x in rec["warnings"])
