@@ -209,6 +209,8 @@ class Joint(_OneOf):
         if two and len(getattr(self, kind)) != 2:
             raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
                              _at(base, kind))
+        if kind in ("pin", "link") and getattr(self, kind)[0] == getattr(self, kind)[1]:
+            raise InputError(f"a {kind} joins two different points: both ends are {getattr(self, kind)[0]}", _at(base, kind))
         cord = self.cord or []                  # set when kind is "cord"
         if kind == "cord":
             for i, it in enumerate(cord):

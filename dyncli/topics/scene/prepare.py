@@ -39,7 +39,10 @@ def setup(plan: build.Plan) -> Scene:
     elems, cords = build.joint_elements(plan, R, q, n)
     loads = build.loads_of(plan, R, q)
     system = SceneSystem(list(bodies.values()), elems, loads, plan.g, n, names)
-    warnings: list[str] = []
+    warnings: list[str] = [f"joints.{name}: mu_k = {j['mu_k']:g} is larger than mu_s = {j['mu_s']:g} (kinetic friction "
+                           "is the smaller in the notes' tables: were they swapped?); solved as given"
+                           for name, j in plan.joints.items()
+                           if j.get("mu_s") is not None and j.get("mu_k") is not None and j["mu_k"] > j["mu_s"]]
     _open_contacts(system, q, free, warnings.append)
     q = assembly.assemble(system, q, free)
     if cords:

@@ -634,3 +634,36 @@ at: [0]
     aP = (mA + mP - 2 * mB) * g / (mA + mP + mP / 2 + 4 * mB)
     assert abs(r["a"]["P"][0][1] + aP) <= 1e-9 * g
     assert abs(r["a"]["B"][0][1] - 2 * aP) <= 1e-9 * g
+
+
+def test_a_pin_or_link_from_a_point_to_itself_is_refused():
+    refusal("""
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0]}
+joints: {j: {link: [A, A], length: 1}}
+at: [0, 1]
+""", "joints.j.link", "two different points", "A")
+    refusal("""
+type: scene
+bodies:
+  A: {shape: rod, mass: 1, length: 1, x: [0, 0], angle: 0}
+joints: {j: {pin: [A.end1, A.end1]}}
+at: [0, 1]
+""", "joints.j.pin", "two different points", "A.end1")
+
+
+def test_kinetic_friction_above_static_is_solved_with_a_warning():
+    from tests.conftest import solve_one_text
+
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 1, x: [0, 0], v: [1, 0]}
+joints: {j: {contact: [A, floor], mu_s: 0.2, mu_k: 0.5}}
+at: [0, 0.1]
+""")
+    assert any("joints.j: mu_k = 0.5 is larger than mu_s = 0.2" in w for w in rec["warnings"])
+    assert abs(rec["results"]["v"]["A"][1][0] - (1 - 0.5 * 9.81 * 0.1)) <= 1e-12
