@@ -236,7 +236,7 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
         return cls.model_validate(raw, context={"params": params, "base_dir": lp.base_dir}), None
     except ValidationError as exc:
         diags, seen = [], set()
-        errors = exc.errors(include_url=False)
+        errors = _union_branch(cls, raw, exc.errors(include_url=False))
         for err in errors[:MAX_ERRORS]:
             loc = _strip_tags(raw, err["loc"])
             if loc not in seen:   # one message per field (a union reports each member)
@@ -249,6 +249,69 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
         return None, first
     except InputError as exc:
         return None, lp.diagnostic(exc.path, exc.message + degrees_hint(cls, raw, exc.path))
+
+
+#: the error types that say a union member does not take this kind of value at all
+_WRONG_KIND = {"string_type", "list_type", "dict_type", "model_type", "model_attributes_type", "float_type",
+               "float_parsing", "int_type", "bool_type", "literal_error", "is_instance_of"}
+
+
+def _member_tag(raw: Any, loc) -> int | None:
+    """The index in ``loc`` of the first tag pydantic inserts for a member of a plain union (a
+    string where the value reached so far is not a mapping with that key: ``Wound``, ``str``,
+    ``list[...]``), or None."""
+    node = raw
+    for k, part in enumerate(loc):
+        if isinstance(node, dict):
+            if isinstance(part, str) and part not in node and part not in [v for v in node.values() if isinstance(v, str)]:
+                return k
+            node = node.get(part) if isinstance(part, str) else None
+        elif isinstance(node, list) and isinstance(part, int) and 0 <= part < len(node):
+            node = node[part]
+        elif isinstance(part, str):
+            return k
+        else:
+            node = None
+    return None
+
+
+def _union_branch(cls, raw: Any, errors: list) -> list:
+    """One member's errors for each value of a plain union (a cord entry, a force's point): the
+    members that do not take that kind of value at all (text, a list, where a mapping was
+    written) are dropped, and of the rest the member with the fewest errors is kept, its tag
+    taken out of the locations (``cord.1.Wound.side`` -> ``cord.1.side``): one clear message
+    per mistake, not one per member.  Where no member takes the value, one message says what
+    the field takes (its description)."""
+    groups: dict[tuple, dict[str, list]] = {}
+    for err in errors:
+        loc = tuple(err["loc"])
+        k = _member_tag(raw, loc)
+        if k is not None and (k < len(loc) - 1 or err["type"] in _WRONG_KIND):
+            groups.setdefault(loc[:k], {}).setdefault(str(loc[k]), []).append(err)
+    groups = {at: ms for at, ms in groups.items() if len(ms) >= 2}     # a plain union reports each member
+    if not groups:
+        return errors
+    keep: dict[tuple, tuple[str, int]] = {}
+    for at, members in groups.items():
+        fitting = {m: es for m, es in members.items()
+                   if not all(e["type"] in _WRONG_KIND and len(e["loc"]) == len(at) + 1 for e in es)}
+        pick = min(fitting or members, key=lambda m: len((fitting or members)[m]))
+        keep[at] = (pick, len(at))
+        if not fitting:
+            what = _description(cls, at[:-1] if at and isinstance(at[-1], int) else at, 240)
+            first = next(iter(members.values()))[0]
+            errors.append({"type": "dyncli", "loc": at, "input": first.get("input"),
+                           "msg": f"got {_shown(first.get('input'))}; expected {what or 'another kind of value'}"})
+            keep[at] = ("", len(at))
+    out = []
+    for err in errors:
+        loc = tuple(err["loc"])
+        k = _member_tag(raw, loc)
+        if k is None or loc[:k] not in keep:
+            out.append(err)
+        elif keep[loc[:k]][0] == str(loc[k]):
+            out.append(dict(err, loc=loc[:k] + loc[k + 1:]))
+    return out
 
 
 def _strip_tags(raw: Any, loc) -> tuple:
@@ -327,15 +390,15 @@ _PLAIN = {
 }
 
 
-def _description(cls, loc: tuple) -> str:
-    """The declared description of the field at ``loc`` (one short line), or ""."""
+def _description(cls, loc: tuple, limit: int = 90) -> str:
+    """The declared description of the field at ``loc`` (at most ``limit`` characters), or ""."""
     for m in _models_at(cls, loc[:-1]):
         info = getattr(m, "model_fields", {}).get(loc[-1]) if loc else None
         schemas = [getattr(meta, "json_schema", None) for meta in (info.metadata if info is not None else ())]
         d = (info.description if info is not None else None) or next(
             (s["description"] for s in schemas if isinstance(s, dict) and s.get("description")), None)
         if d:
-            return d if len(d) <= 90 else d[:87] + "..."
+            return d if len(d) <= limit else d[:limit - 3] + "..."
     return ""
 
 

@@ -322,6 +322,15 @@ def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
                                  "between two distinct points", path)
             out.append(Load(kind, f["name"], P=P, Q=Q, k=f["k"] or 0.0, L=f["L"] or 0.0, one_sided=f["one_sided"],
                             c=f["c"] or 0.0))
+        elif kind == "force" and isinstance(f["force"], dict):      # through a string wound on a body
+            w = f["force"]
+            b = R.body(w["wound"], path + ".wound")
+            _rigid(b, "a force through a wound string", path + ".wound")
+            r = w.get("radius") or b.radius
+            if not r:
+                raise InputError(f"give the radius the string unwinds from ({w['wound']!r} has none)", path + ".radius")
+            out.append(Load(kind, f["name"], P=Point(w["wound"], b, (0.0, 0.0)), F=f["F"], constant=f["constant"],
+                            wound=(float(r) if w["side"] == "left" else -float(r))))
         elif kind == "force":
             out.append(Load(kind, f["name"], P=R.point(f["force"], path), F=f["F"], constant=f["constant"]))
         else:

@@ -149,6 +149,10 @@ class Load:
     M: Callable[[float], float] | None = None                  # t -> M
     body: BodyData | None = None
     constant: bool = True   # F or M does not depend on t
+    #: a force through a string wound on P's body: the signed radius ρ (+r: the string leaves
+    #: from the left of F̂, seen from the body, at ρ e3 × F̂ from the centre), so the force's line
+    #: stays tangent to the circle: F on the centre and the couple (ρ e3 × F̂) × F = −ρ |F| e3
+    wound: float | None = None
 
     def _ends(self) -> tuple[Point, Point]:
         assert self.P is not None and self.Q is not None, "a spring or damper has two ends"
@@ -208,6 +212,9 @@ class Load:
             assert self.P is not None and self.F is not None, "a force has its point and its F(t)"
             F1, F2 = (float(c) for c in self.F(t))
             self.P.add_jac(g, q, F1, F2)
+            if self.wound is not None:
+                assert self.P.body is not None, "a wound string's body"
+                g[self.P.body.index[2]] -= self.wound * math.hypot(F1, F2)
             return g, _dot(g, v), [F1, F2, 0.0]
         assert self.body is not None and self.M is not None, "a torque has its body and its M(t)"
         M = float(self.M(t))

@@ -146,7 +146,7 @@ class Wound(StrictModel):
 
     wound: str = Field(description="the body the cord is wound on")
     radius: Optional[Annotated[float, Num(gt=0, dim="length", description="the radius it unwinds from [m] (default the body's radius)")]] = None
-    side: Optional[Literal["left", "right"]] = Field(None, description="the side of the body the cord leaves from, seen from the other end (default: the drawing's: the free segment nearest vertical or horizontal)")
+    side: Optional[Literal["left", "right"]] = Field(None, description="the side of the body the cord leaves from, seen from the body looking along the cord (a force: along F) (default for a cord: the drawing's, the free segment nearest vertical or horizontal; a force needs it)")
 
 
 CordEntry = Union[FixedPulley, Wound, str, list[Annotated[float, Num(dim="length")]]]
@@ -225,7 +225,7 @@ class Force(_OneOf):
 
     spring: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear spring (tension positive)")
     damper: Optional[list[PointRef]] = Field(None, description="[P, Q]: a linear damper")
-    force: Optional[PointRef] = Field(None, description="P: a force applied at P")
+    force: Optional[Union[Wound, PointRef]] = Field(None, description="P: a force applied at P; or {wound: BODY, radius: r, side}: pulled by a string wound on the body, F applied where a string along F leaves the circle of radius r (its line stays tangent to it as the body turns)")
     torque: Optional[str] = Field(None, description="BODY: a couple on the body")
     k: Optional[Annotated[float, Num(ge=0, dim="stiffness", description="spring stiffness [N/m]")]] = None
     L: Optional[Annotated[float, Num(ge=0, dim="length", description="spring free length [m]")]] = None
@@ -251,6 +251,9 @@ class Force(_OneOf):
             raise InputError(f"a {kind} joins exactly two points: [P, Q]", _at(base, kind))
         if kind == "force" and len(self.F or []) != 2:
             raise InputError("expected [F1, F2] (a planar force)", _at(base, "F"))
+        if kind == "force" and isinstance(self.force, Wound) and self.force.side is None:
+            raise InputError(f"a force through a string wound on {self.force.wound!r} needs side: left or right (the side "
+                             "the string leaves from, seen from the body looking along F)", _at(base, "force.side"))
 
 
 class Scene(ProblemBase):

@@ -46,7 +46,7 @@ def _plan(p) -> build.Plan:
         joints[name] = d
     loads = []
     for f in p.forces:
-        d = {"kind": f.kind, "name": f.name, "spring": f.spring, "damper": f.damper, "force": f.force,
+        d = {"kind": f.kind, "name": f.name, "spring": f.spring, "damper": f.damper, "force": f.force.model_dump() if hasattr(f.force, "model_dump") else f.force,
              "torque": f.torque, "k": f.k, "L": f.L, "one_sided": f.one_sided, "c": f.c, "constant": True}
         if f.F is not None:
             fns = [e.scalar_fn() for e in f.F]

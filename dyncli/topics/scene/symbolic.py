@@ -170,6 +170,8 @@ def _loads(D, P, G, S, C, system, exprs, t) -> None:
             col = sp.Matrix([F]) * G.pos(ld.P).jacobian(C.q)
             for j in range(len(C.q)):
                 P.f[j] += col[j]
+            if ld.wound is not None:        # the string's line tangent to the body: −ρ |F| about e3
+                P.f[ld.P.body.index[2]] -= exact(ld.wound) * sp.sqrt(F[0] ** 2 + F[1] ** 2)
         else:
             M = _load_exprs(exprs.get(i), t, [ld.M(0.0)] if ld.constant else None, 1)[0]
             P.f[ld.body.index[2]] += M

@@ -583,3 +583,53 @@ def test_crate_tips_gallery():
     alpha = (m * G * w / 2 - P * h) / (m * (w ** 2 + h ** 2) / 3)
     near(r["alpha"]["crate"][0][2], alpha, abs(alpha), "α")
     assert any("N = -18.5667 N" in x for x in rec["warnings"])
+
+
+SPOOL = """
+type: scene
+params: {{m: 5, I0: 0.2, R: 0.3, r: 0.15, P: 20, phi: "{phi}*deg"}}
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+bodies:
+  spool: {{mass: m, I: I0, radius: R, angle: 0}}
+joints:
+  roll: {{rolls: [spool, floor], at: 0, mu_s: 0.9}}
+forces:
+  - {{force: {{wound: spool, radius: r, side: {side}}}, F: ["P*cos(phi)", "P*sin(phi)"], name: pull}}
+at: [0, 2]
+"""
+
+
+def test_a_spool_pulled_by_a_wound_string_rolls_towards_the_pull_below_the_critical_angle():
+    # the string's line tangent to the hub (r) at any turn: (m + Ī/R²) ẍ = P (cos φ ∓ r/R) with −
+    # for the string leaving from under the hub (side right, pulled to the right), + from over
+    # it; constant (the couple ±r P does not turn with the spool: a point force at the hub would)
+    m, I0, R, r, P = 5, mp.mpf("0.2"), mp.mpf("0.3"), mp.mpf("0.15"), 20
+    Me = m + I0 / R ** 2
+    for phi in (0, 30, 60, 75):
+        for side, sgn in (("right", -1), ("left", 1)):
+            rec = solve_one_text(SPOOL.format(phi=phi, side=side))
+            res = rec["results"]
+            c = mp.cos(mp.radians(phi))
+            a = P * (c + sgn * r / R) / Me
+            assert res["route"] == "closed-form"
+            near(res["a"]["spool"][1][0], a, P / m, f"ẍ at {phi}° {side}")
+            near(res["x"]["spool"][1][0], 2 * a, P / m, f"x(2) at {phi}° {side}")
+            near(res["reaction"]["roll"]["F"][0], m * a - P * c, P, f"F at {phi}° {side}")
+            near(res["reaction"]["roll"]["N"][0], m * G - P * mp.sin(mp.radians(phi)), m * G, "N")
+
+
+def test_a_wound_string_force_needs_its_side_and_a_rigid_body():
+    from tests.topics.scene.test_refusals import refusal
+
+    refusal(SPOOL.format(phi=0, side="right").replace(", side: right", ""), "forces.0.force.side", "side: left or right")
+    refusal(SPOOL.format(phi=0, side="up"), "forces.0.force.side", "'left' or 'right'")
+
+
+def test_spool_pulled_at_angle_gallery():
+    # the gallery file is the first spool test's scene at 30°, the string from under the hub
+    r = gallery("spool-pulled-at-angle.yaml")["results"]
+    m, I0, R, r_hub, P = 5, mp.mpf("0.2"), mp.mpf("0.3"), mp.mpf("0.15"), 20
+    a = P * (mp.cos(mp.pi / 6) - r_hub / R) / (m + I0 / R ** 2)
+    near(r["a"]["spool"][0][0], a, P / m, "ẍ")
+    near(r["alpha"]["spool"][0][2], -a / R, P / m / R, "α")

@@ -667,3 +667,19 @@ at: [0, 0.1]
 """)
     assert any("joints.j: mu_k = 0.5 is larger than mu_s = 0.2" in w for w in rec["warnings"])
     assert abs(rec["results"]["v"]["A"][1][0] - (1 - 0.5 * 9.81 * 0.1)) <= 1e-12
+
+
+def test_a_bad_entry_of_a_union_gets_one_message_for_the_member_it_means():
+    # a cord's wound end with a bad side: one message at cord.1.side (not one per member of the
+    # union: a pulley's missing centre, "must be text", "must be a list")
+    text = """
+type: scene
+params: {r: 0.01}
+bodies:
+  yoyo: {shape: disk, mass: 0.2, radius: 0.05, x: [0.01, -0.5]}
+joints:
+  string: {cord: [[0, 0], {wound: yoyo, radius: r, side: up}]}
+at: [0, 1]
+"""
+    refusal(text, "joints.string.cord.1.side", "must be 'left' or 'right'")
+    refusal(text.replace("{wound: yoyo, radius: r, side: up}", "7"), "joints.string.cord.1", "got 7; expected")
