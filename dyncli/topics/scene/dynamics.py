@@ -593,7 +593,12 @@ class SceneSystem:
     def project_position(self, q, t, iters: int = 4) -> np.ndarray:
         if self.m == 0:
             return q
-        ql = q.tolist()
+        return np.array(self.project_position_list(q.tolist(), t, iters), dtype=float)
+
+    def project_position_list(self, ql: list, t, iters: int = 4) -> list:
+        """:meth:`project_position` in plain floats (q a list; the same operations)."""
+        if self.m == 0:
+            return ql
         tol = 8 * EPS * max(1.0, *map(abs, ql))
         for _ in range(iters):
             ph = []
@@ -602,20 +607,28 @@ class SceneSystem:
             if all(abs(x) <= tol for x in ph):      # on the joints to rounding: Newton has converged
                 break
             ql = self._least_step(ql, self._jac_rows(ql), ph)
-        return np.array(ql, dtype=float)
+        return ql
 
     def project_velocity(self, q, v, t) -> np.ndarray:
         if self.m == 0:
             return v
-        J = self._jac_rows(q.tolist())
         vl = v.tolist()
+        got = self.project_velocity_list(q.tolist(), vl, t)
+        return v if got is vl else np.array(got, dtype=float)
+
+    def project_velocity_list(self, ql: list, vl: list, t) -> list:
+        """:meth:`project_velocity` in plain floats (q, v lists; ``vl`` itself when it is on the
+        joints' velocity rows exactly)."""
+        if self.m == 0:
+            return vl
+        J = self._jac_rows(ql)
         r = []
         for e in self.elements:
             r += e.phi_t_list(t)
         r = [sum(map(operator.mul, Ji, vl)) + x for Ji, x in zip(J, r)]
         if not any(r):
-            return v
-        return np.array(self._least_step(vl, J, r), dtype=float)
+            return vl
+        return self._least_step(vl, J, r)
 
     def _jac_rows(self, ql) -> list:
         rows = []
