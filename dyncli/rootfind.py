@@ -558,17 +558,59 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
 def _polished(d, r):
     """The roots ``r`` in (−1, 1) of the Chebyshev series ``d`` after two Newton steps on the series
     itself (the companion matrix's eigenvalues carry its conditioning: ~1e-11 of the interval at
-    a simple root), a step that would leave (−1, 1) or is not finite not taken."""
+    a simple root), a step that would leave (−1, 1) or is not finite not taken.  Root by root in
+    plain floats (:func:`cheb_value`: numpy's chebval, the same double; a few roots of a short
+    series, where numpy's cost per call would be most of the work)."""
     import numpy as np
-    from numpy.polynomial import chebyshev as C
 
-    dd = C.chebder(d)
-    for _ in range(2):
-        with np.errstate(all="ignore"):
-            step = C.chebval(r, d) / C.chebval(r, dd)
-        new = r - step
-        r = np.where(np.isfinite(new) & (np.abs(new) < 1) & (np.abs(step) < 1e-3), new, r)
-    return r
+    c = [float(x) for x in d]
+    dc = cheb_derivative(c)
+    out = []
+    for x in np.asarray(r, dtype=float).tolist():
+        for _ in range(2):
+            num, den = cheb_value(x, c), cheb_value(x, dc)
+            if den == 0:                # (numpy's step: ±inf or NaN, never taken)
+                continue
+            step = num / den
+            new = x - step
+            if math.isfinite(new) and abs(new) < 1 and abs(step) < 1e-3:
+                x = new
+        out.append(x)
+    return np.array(out, dtype=float)
+
+
+def cheb_value(x: float, c: list) -> float:
+    """numpy.polynomial.chebyshev.chebval(x, c) at one float x of a series ``c`` (a list of
+    floats): Clenshaw's recurrence, the same operations in the same order (each one elementwise
+    in numpy): the same double."""
+    if len(c) == 1:
+        c0, c1 = c[0], 0
+    elif len(c) == 2:
+        c0, c1 = c[0], c[1]
+    else:
+        x2 = 2 * x
+        c0, c1 = c[-2], c[-1]
+        for i in range(3, len(c) + 1):
+            c0, c1 = c[-i] - c1, c0 + c1 * x2
+    return c0 + c1 * x
+
+
+def cheb_derivative(c: list) -> list:
+    """numpy.polynomial.chebyshev.chebder(c) of a series ``c`` (a list of floats), in plain
+    floats: the same operations in the same order (the same doubles)."""
+    n = len(c)
+    if n <= 1:
+        return [c[0] * 0] if c else []
+    c = list(c)
+    n -= 1
+    der = [0.0] * n
+    for j in range(n, 2, -1):
+        der[j - 1] = (2 * j) * c[j]
+        c[j - 2] += (j * c[j]) / (j - 2)
+    if n > 1:
+        der[1] = 4 * c[2]
+    der[0] = c[1]
+    return der
 
 def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
     """A root of the square system F(x) = 0 by Newton's method with the analytic Jacobian
@@ -772,7 +814,7 @@ def smooth_minima(f, n: int, deg: int = 20, noise=0.0):
         if not r.size:
             continue
         r = _polished(d[i], r)
-        with np.errstate(all="ignore"):
-            curv = C.chebval(r, C.chebder(d[i]))
+        dd = cheb_derivative(d[i].tolist())
+        curv = np.array([cheb_value(x, dd) for x in r.tolist()], dtype=float)
         minima[i] = np.sort(0.5 + 0.5 * r[~(curv < 0)])
     return minima, resolved
