@@ -165,7 +165,7 @@ class Contact(ListRows):
         return self.mode != "off"
 
     def watch(self, lam, q, v, t):
-        m = self.surface.ends_margin(self.P.pos(q))
+        m = self.surface.ends_margin(self.P.xy(q))      # (two floats: no array per watch)
         if self.mode == "off":
             return [("impact", _gap_watch(self.gap(q), m))]
         return self.touching_watches(lam, q, v, m)
@@ -305,7 +305,8 @@ class Rolls(ListRows):
         return self.mode != "off"
 
     def watch(self, lam, q, v, t):
-        m = self.surface.ends_margin(self._x(q))
+        i = self.body_point.body.index
+        m = self.surface.ends_margin((float(q[i[0]]), float(q[i[1]])))
         if self.mode == "off":
             return [("impact", _gap_watch(self.gap(q), m))]
         return self.touching_watches(lam, q, v, m)
