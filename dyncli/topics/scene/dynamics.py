@@ -495,7 +495,7 @@ class SceneSystem:
             self._offsets()
         got = None
         if self._minv is not None and len(rows) <= SCHUR_ROWS:
-            got = schur_solve(self._minv, rows, self.force_columns(rows, q), f, gam)
+            got = schur_solve(self._minv, rows, self.force_columns(rows, q) if self._friction else rows, f, gam)
         if got is None:
             A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
             try:
@@ -506,7 +506,7 @@ class SceneSystem:
             x = x.tolist()
             got = x[:n], x[n:]
         a, lam = got
-        return a, lam, self._power(power, lam, q, v)
+        return a, lam, (self._power(power, lam, q, v) if self._friction or self._drives else power)
 
     def force_columns(self, rows: list, q) -> list:
         """The generalized force per unit multiplier, row by row: the row itself, or with a
