@@ -33,6 +33,12 @@ def _gap_watch(gap: float, margin: float | None) -> float:
     return abs(gap) - margin
 
 
+#: a contact's joint rows by its mode (any other mode: one, the normal)
+_MODE_ROWS = {"off": 0, "stick": 2}
+#: a rolling body's joint rows by its mode (off the surface: none)
+_ROLL_ROWS = {"roll": 2, "slip": 1}
+
+
 @dataclass(kw_only=True)
 class Contact(ListRows):
     """P on the surface, pushing only; Coulomb friction with the computed N."""
@@ -49,7 +55,7 @@ class Contact(ListRows):
 
     @property
     def rows(self):
-        return {"off": 0, "stick": 2}.get(self.mode, 1)
+        return _MODE_ROWS.get(self.mode, 1)
 
     @property
     def linear(self):
@@ -209,7 +215,7 @@ class Rolls(ListRows):
 
     @property
     def rows(self):
-        return {"roll": 2, "slip": 1}.get(self.mode, 0)
+        return _ROLL_ROWS.get(self.mode, 0)
 
     @property
     def rough(self) -> bool:
