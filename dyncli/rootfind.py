@@ -285,7 +285,7 @@ def _critical(c, deg: int):
 
     try:
         with np.errstate(all="ignore"):
-            r = C.chebroots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
+            r = cheb_roots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
     except np.linalg.LinAlgError:
         return None
     return np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
@@ -430,7 +430,6 @@ def polynomial_extremes(pieces, deg: int = 15, components=None) -> list[list[lis
     4 deg² eps of its size) or not finite on the piece gives none.  ``components``: the indices
     of the components wanted (the lists of each piece then in that order), default all."""
     import numpy as np
-    from numpy.polynomial import chebyshev as C
 
     pieces = list(pieces)
     if not pieces:
@@ -450,7 +449,7 @@ def polynomial_extremes(pieces, deg: int = 15, components=None) -> list[list[lis
     for i, j in zip(*np.nonzero(look)):
         try:
             with np.errstate(all="ignore"):
-                r = C.chebroots(np.trim_zeros(d[i, j], "b"))
+                r = cheb_roots(np.trim_zeros(d[i, j], "b"))
         except np.linalg.LinAlgError:
             continue
         keep = (np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)
@@ -535,7 +534,7 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
         for j, i in zip(*np.nonzero(look)):
             try:
                 with np.errstate(all="ignore"):
-                    r = C.chebroots(np.trim_zeros(d[j, i], "b"))
+                    r = cheb_roots(np.trim_zeros(d[j, i], "b"))
             except np.linalg.LinAlgError:
                 return [sorted(c) for c in cuts], False
             keep = (np.abs(np.imag(r)) <= 1e-6) & (np.abs(np.real(r)) < 1)
@@ -558,17 +557,100 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
 def _polished(d, r):
     """The roots ``r`` in (−1, 1) of the Chebyshev series ``d`` after two Newton steps on the series
     itself (the companion matrix's eigenvalues carry its conditioning: ~1e-11 of the interval at
-    a simple root), a step that would leave (−1, 1) or is not finite not taken."""
+    a simple root), a step that would leave (−1, 1) or is not finite not taken.  Root by root in
+    plain floats (:func:`cheb_value`: numpy's chebval, the same double; a few roots of a short
+    series, where numpy's cost per call would be most of the work)."""
     import numpy as np
-    from numpy.polynomial import chebyshev as C
 
-    dd = C.chebder(d)
-    for _ in range(2):
-        with np.errstate(all="ignore"):
-            step = C.chebval(r, d) / C.chebval(r, dd)
-        new = r - step
-        r = np.where(np.isfinite(new) & (np.abs(new) < 1) & (np.abs(step) < 1e-3), new, r)
+    c = [float(x) for x in d]
+    dc = cheb_derivative(c)
+    out = []
+    for x in np.asarray(r, dtype=float).tolist():
+        for _ in range(2):
+            num, den = cheb_value(x, c), cheb_value(x, dc)
+            if den == 0:                # (numpy's step: ±inf or NaN, never taken)
+                continue
+            step = num / den
+            new = x - step
+            if math.isfinite(new) and abs(new) < 1 and abs(step) < 1e-3:
+                x = new
+        out.append(x)
+    return np.array(out, dtype=float)
+
+
+def cheb_roots(c):
+    """numpy.polynomial.chebyshev.chebroots of a 1-D series of floats ``c``: the same companion
+    matrix (chebcompanion's, its constant part made once per size), the same eigenvalues (numpy's
+    eigvals), sorted — the same roots, without the series' checks and copies made twice (a
+    step's few roots: most of the call)."""
+    import numpy as np
+
+    c = np.asarray(c, dtype=float)
+    if c.size == 0:
+        raise ValueError("Coefficient array is empty")
+    if c[-1] == 0:                      # (trailing zeros off, the first kept: numpy's trimseq)
+        nz = np.flatnonzero(c)
+        c = c[:nz[-1] + 1] if nz.size else c[:1]
+    if c.size < 2:
+        return np.array([], dtype=float)
+    if c.size == 2:
+        return np.array([-c[0] / c[1]])
+    base, ratio = _companion_parts(c.size - 1)
+    mat = base.copy()
+    mat[:, -1] -= (c[:-1] / c[-1]) * ratio * .5
+    r = np.linalg.eigvals(mat[::-1, ::-1])
+    r.sort()
     return r
+
+
+@functools.lru_cache(maxsize=32)
+def _companion_parts(n: int):
+    """(the constant part of chebcompanion's n × n matrix, its scl / scl[-1]), as numpy makes them
+    (kept: never written to)."""
+    import numpy as np
+
+    mat = np.zeros((n, n), dtype=float)
+    scl = np.array([1.] + [np.sqrt(.5)] * (n - 1))
+    top = mat.reshape(-1)[1::n + 1]
+    bot = mat.reshape(-1)[n::n + 1]
+    top[0] = np.sqrt(.5)
+    top[1:] = 1 / 2
+    bot[...] = top
+    return mat, scl / scl[-1]
+
+
+def cheb_value(x: float, c: list) -> float:
+    """numpy.polynomial.chebyshev.chebval(x, c) at one float x of a series ``c`` (a list of
+    floats): Clenshaw's recurrence, the same operations in the same order (each one elementwise
+    in numpy): the same double."""
+    if len(c) == 1:
+        c0, c1 = c[0], 0
+    elif len(c) == 2:
+        c0, c1 = c[0], c[1]
+    else:
+        x2 = 2 * x
+        c0, c1 = c[-2], c[-1]
+        for i in range(3, len(c) + 1):
+            c0, c1 = c[-i] - c1, c0 + c1 * x2
+    return c0 + c1 * x
+
+
+def cheb_derivative(c: list) -> list:
+    """numpy.polynomial.chebyshev.chebder(c) of a series ``c`` (a list of floats), in plain
+    floats: the same operations in the same order (the same doubles)."""
+    n = len(c)
+    if n <= 1:
+        return [c[0] * 0] if c else []
+    c = list(c)
+    n -= 1
+    der = [0.0] * n
+    for j in range(n, 2, -1):
+        der[j - 1] = (2 * j) * c[j]
+        c[j - 2] += (j * c[j]) / (j - 2)
+    if n > 1:
+        der[1] = 4 * c[2]
+    der[0] = c[1]
+    return der
 
 def newton_system(F, jac, x0, *, scale, max_step: float = 0.5, tol: float = 1e-12, maxit: int = 60):
     """A root of the square system F(x) = 0 by Newton's method with the analytic Jacobian
@@ -764,7 +846,7 @@ def smooth_minima(f, n: int, deg: int = 20, noise=0.0):
     for i in np.flatnonzero(look):
         try:
             with np.errstate(all="ignore"):
-                r = C.chebroots(np.trim_zeros(d[i], "b"))
+                r = cheb_roots(np.trim_zeros(d[i], "b"))
         except (np.linalg.LinAlgError, ValueError):
             resolved[i] = False
             continue
@@ -772,7 +854,7 @@ def smooth_minima(f, n: int, deg: int = 20, noise=0.0):
         if not r.size:
             continue
         r = _polished(d[i], r)
-        with np.errstate(all="ignore"):
-            curv = C.chebval(r, C.chebder(d[i]))
+        dd = cheb_derivative(d[i].tolist())
+        curv = np.array([cheb_value(x, dd) for x in r.tolist()], dtype=float)
         minima[i] = np.sort(0.5 + 0.5 * r[~(curv < 0)])
     return minima, resolved

@@ -33,6 +33,12 @@ def _gap_watch(gap: float, margin: float | None) -> float:
     return abs(gap) - margin
 
 
+#: a contact's joint rows by its mode (any other mode: one, the normal)
+_MODE_ROWS = {"off": 0, "stick": 2}
+#: a rolling body's joint rows by its mode (off the surface: none)
+_ROLL_ROWS = {"roll": 2, "slip": 1}
+
+
 @dataclass(kw_only=True)
 class Contact(ListRows):
     """P on the surface, pushing only; Coulomb friction with the computed N."""
@@ -49,7 +55,7 @@ class Contact(ListRows):
 
     @property
     def rows(self):
-        return {"off": 0, "stick": 2}.get(self.mode, 1)
+        return _MODE_ROWS.get(self.mode, 1)
 
     @property
     def linear(self):
@@ -165,7 +171,7 @@ class Contact(ListRows):
         return self.mode != "off"
 
     def watch(self, lam, q, v, t):
-        m = self.surface.ends_margin(self.P.pos(q))
+        m = self.surface.ends_margin(self.P.xy(q))      # (two floats: no array per watch)
         if self.mode == "off":
             return [("impact", _gap_watch(self.gap(q), m))]
         return self.touching_watches(lam, q, v, m)
@@ -209,7 +215,7 @@ class Rolls(ListRows):
 
     @property
     def rows(self):
-        return {"roll": 2, "slip": 1}.get(self.mode, 0)
+        return _ROLL_ROWS.get(self.mode, 0)
 
     @property
     def rough(self) -> bool:
@@ -305,7 +311,8 @@ class Rolls(ListRows):
         return self.mode != "off"
 
     def watch(self, lam, q, v, t):
-        m = self.surface.ends_margin(self._x(q))
+        i = self.body_point.body.index
+        m = self.surface.ends_margin((float(q[i[0]]), float(q[i[1]])))
         if self.mode == "off":
             return [("impact", _gap_watch(self.gap(q), m))]
         return self.touching_watches(lam, q, v, m)

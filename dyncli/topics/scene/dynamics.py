@@ -44,6 +44,8 @@ def schur_solve(minv: list, rows: list, cols: list, f: list, gam: list) -> tuple
     Mf = list(map(mul, minv, f))
     if not rows:
         return Mf, []
+    if len(rows) == 1 or cols is rows and len(rows) <= 3:
+        return _symmetric_solve(minv, rows, cols[0], Mf, gam)
     got = complement_solve(minv, rows, cols, [g - sum(map(mul, Ji, Mf)) for Ji, g in zip(rows, gam)])
     if got is None:
         return None
@@ -56,6 +58,60 @@ def schur_solve(minv: list, rows: list, cols: list, f: list, gam: list) -> tuple
         return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, *Y)], lam
     l0, l1, l2 = lam
     return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, *Y)], lam
+
+
+def _symmetric_solve(minv: list, rows: list, c0: list, Mf: list, gam: list) -> tuple[list, list] | None:
+    """:func:`schur_solve` where the complement is symmetric (``cols is rows``; one row: its column
+    ``c0``), its steps written out: the operations of :func:`complement_solve` and schur_solve's in
+    the same order (the same doubles), without their intermediate lists (a solve per evaluation of
+    the right-hand side: most of its cost)."""
+    mul = operator.mul
+    if len(rows) == 1:
+        J0, = rows
+        Y0 = list(map(mul, minv, c0))
+        w = sum(map(mul, J0, Y0))
+        if not (w != 0 and math.isfinite(w)):
+            return None
+        l0 = (gam[0] - sum(map(mul, J0, Mf))) / w
+        return [x + l0 * y for x, y in zip(Mf, Y0)], [l0]
+    if len(rows) == 2:
+        J0, J1 = rows
+        r0, r1 = gam[0] - sum(map(mul, J0, Mf)), gam[1] - sum(map(mul, J1, Mf))
+        Y0, Y1 = list(map(mul, minv, J0)), list(map(mul, minv, J1))
+        w00, w01, w11 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J1, Y1))
+        a01 = abs(w01)
+        if not w00 > PIVOT * max(w00, a01):
+            return None
+        el = w01 / w00
+        d1 = w11 - el * w01
+        if not d1 > PIVOT * max(w11, a01):
+            return None
+        l1 = (r1 - el * r0) / d1
+        l0 = r0 / w00 - el * l1
+        return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, Y0, Y1)], [l0, l1]
+    J0, J1, J2 = rows
+    r0, r1, r2 = (gam[0] - sum(map(mul, J0, Mf)), gam[1] - sum(map(mul, J1, Mf)),
+                  gam[2] - sum(map(mul, J2, Mf)))
+    Y0, Y1, Y2 = list(map(mul, minv, J0)), list(map(mul, minv, J1)), list(map(mul, minv, J2))
+    w00, w01, w02 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2))
+    w11, w12, w22 = sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2))
+    a01, a02, a12 = abs(w01), abs(w02), abs(w12)
+    if not w00 > PIVOT * max(w00, a01, a02):
+        return None
+    l10, l20 = w01 / w00, w02 / w00
+    d1 = w11 - l10 * w01
+    if not d1 > PIVOT * max(w11, a01, a12):
+        return None
+    u21 = w12 - l20 * w01
+    l21 = u21 / d1
+    d2 = w22 - l20 * w02 - l21 * u21
+    if not d2 > PIVOT * max(w22, a02, a12):
+        return None
+    z1 = r1 - l10 * r0
+    l2 = (r2 - l20 * r0 - l21 * z1) / d2
+    l1 = z1 / d1 - l21 * l2
+    l0 = r0 / w00 - l10 * l1 - l20 * l2
+    return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, Y0, Y1, Y2)], [l0, l1, l2]
 
 
 def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list, list] | None:
@@ -446,7 +502,7 @@ class SceneSystem:
             self._offsets()
         got = None
         if self._minv is not None and len(rows) <= SCHUR_ROWS:
-            got = schur_solve(self._minv, rows, self.force_columns(rows, q), f, gam)
+            got = schur_solve(self._minv, rows, self.force_columns(rows, q) if self._friction else rows, f, gam)
         if got is None:
             A = self.kkt_matrix(q, np.array(rows, dtype=float).reshape(len(rows), n))
             try:
@@ -457,7 +513,7 @@ class SceneSystem:
             x = x.tolist()
             got = x[:n], x[n:]
         a, lam = got
-        return a, lam, self._power(power, lam, q, v)
+        return a, lam, (self._power(power, lam, q, v) if self._friction or self._drives else power)
 
     def force_columns(self, rows: list, q) -> list:
         """The generalized force per unit multiplier, row by row: the row itself, or with a
@@ -600,7 +656,12 @@ class SceneSystem:
     def project_position(self, q, t, iters: int = 4) -> np.ndarray:
         if self.m == 0:
             return q
-        ql = q.tolist()
+        return np.array(self.project_position_list(q.tolist(), t, iters), dtype=float)
+
+    def project_position_list(self, ql: list, t, iters: int = 4) -> list:
+        """:meth:`project_position` in plain floats (q a list; the same operations)."""
+        if self.m == 0:
+            return ql
         tol = 8 * EPS * max(1.0, *map(abs, ql))
         for _ in range(iters):
             ph = []
@@ -609,20 +670,28 @@ class SceneSystem:
             if all(abs(x) <= tol for x in ph):      # on the joints to rounding: Newton has converged
                 break
             ql = self._least_step(ql, self._jac_rows(ql), ph)
-        return np.array(ql, dtype=float)
+        return ql
 
     def project_velocity(self, q, v, t) -> np.ndarray:
         if self.m == 0:
             return v
-        J = self._jac_rows(q.tolist())
         vl = v.tolist()
+        got = self.project_velocity_list(q.tolist(), vl, t)
+        return v if got is vl else np.array(got, dtype=float)
+
+    def project_velocity_list(self, ql: list, vl: list, t) -> list:
+        """:meth:`project_velocity` in plain floats (q, v lists; ``vl`` itself when it is on the
+        joints' velocity rows exactly)."""
+        if self.m == 0:
+            return vl
+        J = self._jac_rows(ql)
         r = []
         for e in self.elements:
             r += e.phi_t_list(t)
         r = [sum(map(operator.mul, Ji, vl)) + x for Ji, x in zip(J, r)]
         if not any(r):
-            return v
-        return np.array(self._least_step(vl, J, r), dtype=float)
+            return vl
+        return self._least_step(vl, J, r)
 
     def _jac_rows(self, ql) -> list:
         rows = []

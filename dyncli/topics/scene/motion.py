@@ -354,7 +354,7 @@ def watches(system, q, v, t, lam=None) -> list[tuple[str, str, float]]:
     ("", "switch", s) for each one-sided spring's stretch (a kink: a new phase, no event);
     ``lam``: the multipliers at (q, v, t) when already solved for."""
     if lam is None and system.watching:     # (joints that watch nothing read no multiplier)
-        _, lam, _ = system.solve(q, v, t)
+        lam = system.solve_lists(q.tolist(), v.tolist(), t)[1]      # (a list: each watch reads floats)
     out = []
     for i, e in enumerate(system.elements):
         for what, g in e.watch(None if lam is None else system.lam_of(lam, i), q, v, t):
@@ -403,10 +403,12 @@ class OdeRoute:
         self.lam = None
 
     def project(self, y, t):
+        """(q, q̇) of the state y projected onto the joints (W_nc as it is), in plain floats: the
+        operations of SceneSystem.project_position and project_velocity, one array made."""
         n, s = self.n, self.system
-        q = s.project_position(y[:n], t)
-        v = s.project_velocity(q, y[n:2 * n], t)
-        return np.concatenate([q, v, y[2 * n:]])
+        yl = y.tolist()
+        ql = s.project_position_list(yl[:n], t)
+        return np.array(ql + s.project_velocity_list(ql, yl[n:2 * n], t) + yl[2 * n:], dtype=float)
 
     def phase(self, t0, q0, v0, W0, t_end, budget, traj: Trajectory, rtol: float, atol: float):
         """Integrate one phase from (t0, q0, v0) until t_end or the first located event; fills

@@ -61,7 +61,7 @@ class Point:
         by the same operations."""
         b = self.body
         if b is None:
-            return float(self.p[0]), float(self.p[1]), 0.0, 0.0, 0.0, 0.0, None
+            return self._ground_kin
         i = b.index
         if self.turns_with_body:
             th, w = q[i[2]], v[i[2]]
@@ -234,6 +234,11 @@ class Point:
             return z, z
         w = V[:, self.body.index[2]]
         return -w * w * a[0], -w * w * a[1]
+
+    @functools.cached_property
+    def _ground_kin(self) -> tuple:
+        """:meth:`kin` of a point of the ground (made once: it never moves)."""
+        return float(self.p[0]), float(self.p[1]), 0.0, 0.0, 0.0, 0.0, None
 
     @functools.cached_property
     def turns_with_body(self) -> bool:
