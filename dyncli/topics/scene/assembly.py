@@ -89,6 +89,16 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
         return
     e, g = bad[0]
     placed = "" if not np.any(free) else " (the joints could not place the positions left out either)"
+    gap = getattr(e, "gap", None)
+    if gap is not None and getattr(e, "mode", "") != "off" and float(gap(q)) < 0:     # a one-sided joint's body through its surface
+        n = getattr(e, "normal", None)
+        n = [0.0 if abs(c) < 1e-12 else float(c) for c in (n(q) if n is not None else e.surface.n)]
+        side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
+        label = (getattr(e, "P", None) or e.body_point).label
+        raise InputError(f"{label} is given {-float(gap(q)):.6g} m through the surface {e.surface.name!r} of the {e.kind} "
+                         f"joint {e.name!r}, which pushes along n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of "
+                         f"{side}){placed}: place it on the surface or on the side n points to, or reverse the surface's "
+                         "direction if the body is on the other side", e.path)
     unit = "rad" if isinstance(e, Drive) and system.names[e.index].startswith("angle") else "m"
     raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {g:.6g} {unit}{placed}; "
                      "fix the positions, or leave one out (x or angle) so that the joints place it", e.path)

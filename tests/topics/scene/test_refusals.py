@@ -683,3 +683,20 @@ at: [0, 1]
 """
     refusal(text, "joints.string.cord.1.side", "must be 'left' or 'right'")
     refusal(text.replace("{wound: yoyo, radius: r, side: up}", "7"), "joints.string.cord.1", "got 7; expected")
+
+
+def test_a_body_given_through_its_surface_is_told_the_normal():
+    # below a floor drawn left to right (n = e2), or above one drawn right to left (n = −e2):
+    # refused naming the depth, the normal and both fixes (a body above a floor drawn the right
+    # way starts released instead: test_homework_questions)
+    for direction, y, depth, n in (("[1, 0]", -0.1, "0.1 m", "n = [0, 1]"), ("[-1, 0]", 1, "1 m", "n = [0, -1]")):
+        refusal(f"""
+type: scene
+surfaces:
+  floor: {{through: [0, 0], direction: {direction}}}
+bodies:
+  P: {{shape: point, mass: 1, x: [0, {y}]}}
+joints:
+  on: {{contact: [P, floor]}}
+at: [0, 1]
+""", "joints.on", f"P is given {depth} through the surface 'floor'", n, "reverse the surface's direction")
