@@ -90,6 +90,14 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
     e, g = bad[0]
     placed = "" if not np.any(free) else " (the joints could not place the positions left out either)"
     gap = getattr(e, "gap", None)
+    if gap is not None and getattr(e, "mode", "") != "off" and float(gap(q)) > 0:     # off its surface, on its side
+        label = (getattr(e, "P", None) or e.body_point).label
+        land = (f", or, for a body that lands on it, make the joint a stop (stop: [{label}, {e.surface.name}], e: E), "
+                "which starts open and is made where it strikes" if e.kind == "contact" else "")
+        raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {float(gap(q)):.6g} m "
+                         f"({label} is off the surface {e.surface.name!r}; a {'contact' if e.kind == 'contact' else 'rolling body'} "
+                         f"starts touching){placed}: place "
+                         f"it on the surface or leave its position out so that the joint places it{land}", e.path)
     if gap is not None and getattr(e, "mode", "") != "off" and float(gap(q)) < 0:     # a one-sided joint's body through its surface
         n = getattr(e, "normal", None)
         n = [0.0 if abs(c) < 1e-12 else float(c) for c in (n(q) if n is not None else e.surface.n)]

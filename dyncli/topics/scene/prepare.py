@@ -43,7 +43,6 @@ def setup(plan: build.Plan) -> Scene:
                            "is the smaller in the notes' tables: were they swapped?); solved as given"
                            for name, j in plan.joints.items()
                            if j.get("mu_s") is not None and j.get("mu_k") is not None and j["mu_k"] > j["mu_s"]]
-    _open_contacts(system, q, free, warnings.append)
     q = assembly.assemble(system, q, free)
     if cords:
         _place_hanging(plan, cords, R, q, free, system)
@@ -87,42 +86,10 @@ def setup(plan: build.Plan) -> Scene:
     J = system.jac(q)                   # the mechanism's freedom: a contact held by friction still may slide
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
-    warnings += _initial_modes(system, q, v)
-    warnings += start.settle(system, q, v)
+    _initial_modes(system, q, v)
+    start.settle(system, q, v)
     _refuse_at_start(system, q, v)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
-
-
-def _open_contacts(system, q, free, warn) -> None:
-    """A contact or a rolling joint whose body is given off its surface, on the side the surface
-    pushes (a block above the floor it will land on), starts open ("off": the point in flight,
-    watched for its impact, made there with the joint's restitution e), with a warning: the
-    positions given are kept.  A body through its surface, or one whose position is left out
-    (the joint places it), is left to the assembly and its refusal."""
-    scale = assembly.length_scale(q, system)
-    opened = False
-    for e in system.elements:
-        if not isinstance(e, (Contact, Rolls)) or e.mode == "off":
-            continue
-        point = e.P if isinstance(e, Contact) else e.body_point
-        body = point.body
-        used = [] if body is None else list(body.index[:2])
-        if body is not None and isinstance(e, Contact) and point.turns_with_body:
-            used.append(body.index[2])
-        carrier = getattr(e.surface, "body", None)
-        if carrier is not None:
-            used += list(carrier.index)
-        if any(free[i] for i in used):
-            continue
-        g = float(e.gap(q))
-        if g > 1e-9 * scale:
-            e.mode = "off"
-            opened = True
-            warn(f"{point.label} is given {g:.6g} m off the surface {e.surface.name!r}: the {e.kind} joint "
-                 f"{e.name!r} starts open and is made where {point.label} strikes it (restitution e = {e.e:g}); "
-                 "place it on the surface (or leave its position out) if it rests there")
-    if opened:
-        system.refresh()
 
 
 def _carriers_placed(plan, bodies, free) -> None:
@@ -329,15 +296,14 @@ def _refuse_massless(system, q, plan) -> None:
                              "the joints carry it", f"bodies.{body.name}.{what}")
 
 
-def _initial_modes(system, q, v) -> list[str]:
+def _initial_modes(system, q, v) -> None:
     """Rough contacts: sliding when their point slides; those at rest are held together (a
     second row each) and the static test decides: every one with |F| ≤ μ_s N sticks; else the
     one furthest past its limit slides opposite to the friction it needed, and the rest are
     tested again.  Where the held rows are redundant, a contact whose N they do determine and
-    that would pull lets go first (:func:`_lift_determined`: a crate pushed past tipping on two
-    rough corners); friction that equilibrium still does not determine is refused naming the
-    contacts.  Returns the notes of the contacts let go."""
-    notes: list[str] = []
+    that would pull is refused as such (:func:`_pull_determined`: a crate pushed past tipping
+    on two rough corners is not "at rest"); friction that equilibrium does not determine is
+    refused naming the contacts."""
     at_rest = []
     for e in system.elements:
         if isinstance(e, Contact) and e.rough and e.mode != "off":       # a stop is open until it is struck
@@ -350,12 +316,10 @@ def _initial_modes(system, q, v) -> list[str]:
                 at_rest.append(e)
     system.refresh()
     if not at_rest:
-        return notes
+        return
     J = system.jac(q)
-    while assembly.rank(J) < J.shape[0] and (note := _lift_determined(system, q, v)) is not None:
-        notes.append(note)
-        at_rest = [e for e in at_rest if e.mode != "off"]
-        J = system.jac(q)
+    if assembly.rank(J) < J.shape[0]:
+        _pull_determined(system, q, v)
     verdict = _slide_together(system, q, v, at_rest) if assembly.rank(J) < J.shape[0] else None
     if verdict == "slides":
         at_rest = [e for e in at_rest if e.mode == "stick"]
@@ -377,18 +341,18 @@ def _initial_modes(system, q, v) -> list[str]:
                 if worst is None or r > ratio:
                     worst, ratio, sign = e, r, -math.copysign(1.0, F)
         if worst is None:
-            return notes
+            return
         worst.mode, worst.sign = "slide", sign
         at_rest.remove(worst)
         system.refresh()
-    return notes
 
 
-def _lift_determined(system, q, v) -> str | None:
-    """With the held rows redundant (their multipliers not unique), the contacts whose N is
-    still determined (no dependent combination of the rows involves their normal row: the null
-    space of Jᵀ is zero there); of those that would pull (N < 0 in the least-norm multipliers),
-    the first that may let go of its body (start.lets_go) is released.  Its note, or None."""
+
+def _pull_determined(system, q, v) -> None:
+    """With the held rows redundant (their multipliers not unique), a contact whose N is still
+    determined (no dependent combination of the rows involves its normal row: the null space of
+    Jᵀ is zero there) and would pull (N < 0 in the least-norm multipliers) is refused as any
+    contact that would pull at t = 0 (:func:`_refuse_at_start`), not as indeterminate friction."""
     n = system.n
     J = system.jac(q)
     f, _ = system.applied(q, v, 0.0)
@@ -402,10 +366,8 @@ def _lift_determined(system, q, v) -> str | None:
         if not isinstance(e, Contact) or e.mode == "off":
             continue
         o = system.offsets[i]
-        N = float(lam[o])
-        if N < -1e-9 * scale and not np.any(np.abs(null[:, o]) > 1e-9) and start.lets_go(system, q, v, e):
-            return start.let_go_note(e, N)
-    return None
+        if float(lam[o]) < -1e-9 * scale and not np.any(np.abs(null[:, o]) > 1e-9):
+            _refuse_pull(system, e, float(lam[o]), q)
 
 
 def _slide_together(system, q, v, at_rest) -> str | None:
@@ -467,14 +429,7 @@ def _refuse_at_start(system, q, v) -> None:
             if g >= -64 * EPS * scale:
                 continue
             if what == "separates":
-                on = e.P.label if isinstance(e, Contact) else e.body_point.label
-                n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]
-                side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
-                raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {g:.6g} N; "
-                                 f"it pushes along its normal n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}): "
-                                 f"if {on} rests on the other side, reverse the surface's direction; "
-                                 "else release it from a position where it pushes, or join them with a two-sided "
-                                 "joint", e.path)
+                _refuse_pull(system, e, g, q)
             if what == "leaves" and getattr(e.surface, "curved", False):
                 raise InputError(f"at t = 0 the contact point is beyond an end of the curve {e.surface.name!r} (q_range "
                                  f"{list(e.surface.q_range)}): place it on the curve or widen q_range", e.path)
@@ -488,3 +443,20 @@ def _refuse_at_start(system, q, v) -> None:
                                  "n = e3 × d̂ (or reverse the surface's direction)", e.path)
 
 
+def _refuse_pull(system, e, N: float, q) -> None:
+    """A contact (or rolling body) that would have to pull at t = 0: refused, with the surface's
+    normal (a body on the wrong side) and, when another joint holds the body too, the way to
+    let it lift off there (a crate pushed past tipping: that corner a `stop`)."""
+    on = e.P.label if isinstance(e, Contact) else e.body_point.label
+    n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]
+    side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
+    body = e.P.body if isinstance(e, Contact) else e.body_point.body
+    others = [o.name for o in system.elements if o is not e and o.rows and body is not None
+              and any(x != 0 for row in o.jac_list(q) for x in (row[i] for i in body.index))]
+    lift = (f"; if {on} lifts off there (held by {', '.join(others)}: a crate tipping about its other edge), "
+            f"make '{e.name}' a stop (stop: [{on}, {e.surface.name}], e: 0): it starts open and is made where "
+            f"{on} strikes" if others and isinstance(e, Contact) else "")
+    raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {N:.6g} N; it pushes "
+                     f"along its normal n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}): if {on} rests on the "
+                     f"other side, reverse the surface's direction; else release it from a position where it pushes, "
+                     f"or join them with a two-sided joint{lift}", e.path)

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from dyncli.errors import InputError, NumericalError
+from dyncli.errors import InputError
 
 from .contacts import Contact, Rolls
 from .elements import Cord
@@ -74,13 +74,9 @@ def slipping_given(system, q, v, vgiven) -> None:
         system.refresh()
 
 
-def settle(system, q, v) -> list[str]:
+def settle(system, q, v) -> None:
     """At t = 0: a cord that would push goes slack, friction past μ_s N slips (a rough contact
-    held at rest slides, a rolling body slips), a contact that would pull lets go of a body that
-    another joint still holds (a crate pushed over tips about one edge: :func:`_lets_go`), one
-    change at a time until none is left; returns a note for each contact let go."""
-    kept: set[int] = set()
-    notes: list[str] = []              # contacts that would pull but may not let go (refused after)
+    held at rest slides, a rolling body slips), one change at a time until none is left."""
     for _ in range(4 * len(system.elements) + 4):
         _, lam, _ = system.solve(q, v, 0.0)
         scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
@@ -91,21 +87,14 @@ def settle(system, q, v) -> list[str]:
             lm = system.lam_of(lam, i)
             for what, g in e.watch(lm, q, v, 0.0):
                 if g < -64 * EPS * scale and (what == "slack" or (what == "slips" and (_can_slip(e) or
-                                                                                        isinstance(e, Contact)))
-                                              or (what == "separates" and id(e) not in kept)):
+                                                                                        isinstance(e, Contact)))):
                     bad = (e, what, lm)
                     break
             if bad:
                 break
         if bad is None:
-            return notes
+            return
         e, what, lm = bad
-        if what == "separates":
-            if lets_go(system, q, v, e):
-                notes.append(let_go_note(e, float(lm[0])))
-            else:
-                kept.add(id(e))
-            continue
         if isinstance(e, Cord):                         # "slack"
             T = e.tensions(lm)
             e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
@@ -114,38 +103,3 @@ def settle(system, q, v) -> list[str]:
             e.mode = "slip" if isinstance(e, Rolls) else "slide"
             e.sign = -math.copysign(1.0, F)
         system.refresh()
-    return notes
-
-
-def let_go_note(e, N: float) -> str:
-    label = e.P.label if isinstance(e, Contact) else e.body_point.label
-    return (f"at t = 0 the contact {e.name!r} lets go of {label}: held, it would have to pull (N = {N:.6g} N), so "
-            f"{label} lifts off the surface {e.surface.name!r} from the start")
-
-
-def lets_go(system, q, v, e) -> bool:
-    """Release the contact ``e`` (N < 0 at t = 0) when its body stays held by another joint and,
-    released, its point moves off the surface (n·a ≥ 0): a crate pushed past tipping lifts one
-    edge.  A body the contact alone holds is not released (a body placed on the wrong side of
-    its surface: refused with the surface's normal, prepare._refuse_at_start)."""
-    from .impulse import normal_acceleration
-
-    body = e.P.body if isinstance(e, Contact) else e.body_point.body
-    if body is None:
-        return False
-    state = e.phase()
-    e.mode, e.sign = "off", 0.0
-    system.refresh()
-    J = system.jac(q)
-    held = J.size > 0 and bool(np.any(J[:, list(body.index)] != 0))
-    if held:
-        try:
-            a, _, _ = system.solve(q, v, 0.0)
-            scale = max(float(np.max(np.abs(a), initial=0.0)), abs(system.g), 1e-300)
-            if normal_acceleration(system, q, v, 0.0, e) >= -64 * EPS * scale:
-                return True
-        except (NumericalError, np.linalg.LinAlgError):     # the rows left still redundant: not decided here
-            pass
-    e.set_phase(state)
-    system.refresh()
-    return False
