@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -89,27 +90,33 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
         return
     e, g = bad[0]
     placed = "" if not np.any(free) else " (the joints could not place the positions left out either)"
-    gap = getattr(e, "gap", None)
-    if gap is not None and getattr(e, "mode", "") != "off" and float(gap(q)) > 0:     # off its surface, on its side
-        label = (getattr(e, "P", None) or e.body_point).label
-        land = (f", or, for a body that lands on it, make the joint a stop (stop: [{label}, {e.surface.name}], e: E), "
-                "which starts open and is made where it strikes" if e.kind == "contact" else "")
-        raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {float(gap(q)):.6g} m "
-                         f"({label} is off the surface {e.surface.name!r}; a {'contact' if e.kind == 'contact' else 'rolling body'} "
-                         f"starts touching){placed}: place "
-                         f"it on the surface or leave its position out so that the joint places it{land}", e.path)
-    if gap is not None and getattr(e, "mode", "") != "off" and float(gap(q)) < 0:     # a one-sided joint's body through its surface
-        n = getattr(e, "normal", None)
-        n = [0.0 if abs(c) < 1e-12 else float(c) for c in (n(q) if n is not None else e.surface.n)]
-        side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
-        label = (getattr(e, "P", None) or e.body_point).label
-        raise InputError(f"{label} is given {-float(gap(q)):.6g} m through the surface {e.surface.name!r} of the {e.kind} "
-                         f"joint {e.name!r}, which pushes along n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of "
-                         f"{side}){placed}: place it on the surface or on the side n points to, or reverse the surface's "
-                         "direction if the body is on the other side", e.path)
+    if getattr(e, "gap", None) is not None and getattr(e, "mode", "") != "off":
+        _refuse_off_surface(e, q, placed)
     unit = "rad" if isinstance(e, Drive) and system.names[e.index].startswith("angle") else "m"
     raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {g:.6g} {unit}{placed}; "
                      "fix the positions, or leave one out (x or angle) so that the joints place it", e.path)
+
+
+def _refuse_off_surface(e: Any, q, placed: str) -> None:
+    """A contact or rolling joint given off its surface: the gap, and what to write instead (a
+    stop, for a body that lands there), or the depth through it with the surface's normal."""
+    gap = float(e.gap(q))
+    label = (getattr(e, "P", None) or e.body_point).label
+    if gap > 0:                         # off its surface, on its side
+        land = (f", or, for a body that lands on it, make the joint a stop (stop: [{label}, {e.surface.name}], e: E), "
+                "which starts open and is made where it strikes" if e.kind == "contact" else "")
+        raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {gap:.6g} m ({label} is "
+                         f"off the surface {e.surface.name!r}; a {'contact' if e.kind == 'contact' else 'rolling body'} "
+                         f"starts touching){placed}: place it on the surface or leave its position out so that the "
+                         f"joint places it{land}", e.path)
+    if gap < 0:                         # through its surface
+        nf = getattr(e, "normal", None)
+        n = [0.0 if abs(c) < 1e-12 else float(c) for c in (nf(q) if nf is not None else e.surface.n)]
+        side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
+        raise InputError(f"{label} is given {-gap:.6g} m through the surface {e.surface.name!r} of the {e.kind} joint "
+                         f"{e.name!r}, which pushes along n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}){placed}: "
+                         "place it on the surface or on the side n points to, or reverse the surface's direction if "
+                         "the body is on the other side", e.path)
 
 
 def rank(J: np.ndarray) -> int:
