@@ -120,7 +120,7 @@ def _drawing(scene) -> dict:
                     for end in (seg.a, seg.b):
                         if end.fixed is not None:
                             pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
-    return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d}
+    return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d, "length": x.length}
                                           for x in scene.surfaces if not getattr(x, "carried", False)],
             "pulleys": pulleys, "span": span}
 

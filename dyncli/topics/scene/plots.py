@@ -51,7 +51,13 @@ def _mechanism(result, draw) -> Plot:
                                    label=f"surface {s['name']}", style=":"))
             continue
         (o1, o2), (d1, d2) = s["origin"], s["d"]
-        plot.lines.append(Line([o1 - span * d1, o1 + span * d1], [o2 - span * d2, o2 + span * d2],
+        if s.get("length") is not None:     # from its `through` point to its end
+            a, b = 0.0, float(s["length"])
+        else:                               # ±span, and past every body drawn on it
+            along = [(x[0] - o1) * d1 + (x[1] - o2) * d2 for xs in r.get("x", {}).values() for x in xs
+                     if x is not None]
+            a, b = min([-span, *along]) - 0.1 * span, max([span, *along]) + 0.1 * span
+        plot.lines.append(Line([o1 + a * d1, o1 + b * d1], [o2 + a * d2, o2 + b * d2],
                                label=f"surface {s['name']}", style=":"))
     for (c1, c2), rad in draw["pulleys"]:
         k = range(33)

@@ -242,3 +242,25 @@ at: [0, 1, 3]
     x = 1.25 * ((t**3 - ts**3) / 3 - ts**2 * (t - ts)) - 0.4 * 9.81 * (t - ts) ** 2 / 2
     assert abs(r["x"]["A"][2][0] - x) <= 1e-7 * x
     assert abs(r["reaction"]["f"]["F"][2] + 0.4 * 2 * 9.81) <= 1e-12 * 8
+
+
+def test_the_drawing_puts_a_line_where_it_is_and_past_every_body_on_it():
+    # a surface with a length is drawn from its `through` point to its end; one without runs past
+    # every body drawn (the block landed beyond the dome's span used to lie off the drawn floor)
+    from dyncli import registry
+    from dyncli.loader import split_problems, validate
+    from dyncli.result import SolveOptions
+    from dyncli.topics.scene.plots import _mechanism
+
+    def drawn(name):
+        path = PROBLEMS / "scenes" / name
+        (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
+        validate(lp)
+        res = registry.solver(lp.type)(lp.model, SolveOptions())
+        return res, {ln.label: ln for ln in _mechanism(res, res.extra["scene_draw"]).lines if ln.label}
+
+    res, lines = drawn("block-off-dome.yaml")
+    floor = lines["surface floor"]
+    assert min(floor.x) < -2 and max(floor.x) > max(x[0] for x in res.results["x"]["P"])
+    res, lines = drawn("block-on-table-pulley.yaml")      # table: through [-3, 0], length 3
+    assert lines["surface table"].x == [-3.0, 0.0] and lines["surface table"].y == [0.0, 0.0]
