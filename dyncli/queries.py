@@ -467,9 +467,28 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     if not math.isfinite(best):                       # ±inf: the extreme is beyond the doubles
         raise NumericalError(f"find: the {q.kind} of {path} between t = {w1:g} and {w2:g} s is beyond the range "
                              "of a double (1.8e308): check the inputs that scale it")
-    tol = _tol(motion, _scale(H, best))
+    scale = _scale(H, best)
+    tol = _tol(motion, scale)
     t = min(c[0] for c in cands if c[1] >= best - tol)
+    if monotone:
+        t = _plateau_start(h, hr, T, H, t, best - tol, 8 * _EPS * scale)
     return t, (t == w1 or t == w2)
+
+
+def _plateau_start(h, hr, T: list[float], H: list[float], t: float, floor: float, rounding: float) -> float:
+    """The start of the plateau that holds the extreme at the sample ``t`` (h monotone between
+    samples): when h is flat there — the next sample equal to it, or ``t`` the window's end, and
+    its rate hr (when known) exactly 0 — the samples before it whose span is flat (h at its middle
+    equal to the plateau) and whose value ties with it to rounding, within tolerance of the best
+    (``floor``).  A body that stops and sticks holds its least speed from the stop on, while the
+    stop itself carries the rounding of the phase before it (|v| ~1e-15): its least kinetic
+    energy is at the stop, not at the end of the motion."""
+    k = next((k for k, x in enumerate(T) if x == t), None)
+    if k is None or (k + 1 < len(T) and H[k + 1] != H[k]) or (hr is not None and hr(t) != 0):
+        return t                                      # a strict peak, or still moving: its own time
+    while k > 0 and H[k - 1] >= floor and abs(H[k] - H[k - 1]) <= rounding and h(0.5 * (T[k - 1] + T[k])) == H[k]:
+        k -= 1
+    return T[k]
 
 
 def _scale(H: list[float], best: float) -> float:

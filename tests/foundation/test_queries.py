@@ -228,6 +228,25 @@ def test_equal_extremes_the_first(rate):
     assert one({"min": "x"}, m) == {"t": 1.0, "reached": True, "at_end": True}
 
 
+def test_least_value_of_a_body_that_sticks_is_at_the_stop():
+    # a speed² that falls to 0 at the stop t = 1 (a break, where the phase before leaves rounding:
+    # 3e-30) and stays 0 to the end, on a monotone motion (the ODE routes' cut steps): the least
+    # value is reached at the stop, not at the end of the motion (first of equal extremes)
+    f = lambda t: (1 - t) ** 2 if t < 1 else (3e-30 if t == 1 else 0.0)          # noqa: E731
+    df = lambda t: -2 * (1 - t) if t < 1 else 0.0                                  # noqa: E731
+    for rate in (True, False):
+        for breaks in ([0, 0.5, 1, 5], [0, 0.5, 1, 1.000001, 2, 5]):
+            m = Motion({"T": (f, df)}, 0, 5, breaks=breaks, rate=rate)
+            m.monotone, m.subdivide = True, 1
+            assert one({"min": "T"}, m) == {"t": 1.0, "reached": True, "at_end": False}
+            assert one({"min": "T", "within": [0.5, 3]}, m) == {"t": 1.0, "reached": True, "at_end": False}
+    # still rising at the end of the window (its rate not 0), by less than the tolerance: the end
+    for rate in (True, False):
+        m = Motion({"x": (lambda t: 1 + 1e-13 * t, lambda t: 1e-13)}, 0, 5, breaks=[0, 4.99, 5], rate=rate)
+        m.monotone, m.subdivide = True, 1
+        assert one({"max": "x"}, m) == {"t": 5.0, "reached": True, "at_end": True}
+
+
 def test_window_clipped_to_the_motion():
     m = Motion(SIN, 0, 10)
     assert one({"max": "x", "within": [20, 30]}, m) == {"t": None, "reached": False, "at_end": None}
