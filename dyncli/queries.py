@@ -181,10 +181,11 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
     return When(path, value, d, n, index=i)
 
 
-def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
+def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None = None) -> list[dict]:
     """One ``{"t", "reached", "at_end"}`` per query, in order (``t`` and ``at_end`` None when not
     reached; ``at_end`` None for ``t`` and ``when``).  An unknown result path is an InputError at
-    ``find.<i>.when`` / ``.max`` / ``.min`` naming it."""
+    ``find.<i>.when`` / ``.max`` / ``.min`` naming it.  ``notes`` (a dict, when given) gets why a
+    ``when`` query was not reached where the search knows more than "not met": ``{index: text}``."""
     out = []
     for q in queries:
         if isinstance(q, AtTime):
@@ -193,7 +194,7 @@ def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
             continue
         _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
         try:
-            t, at_end = (_when(motion, q), None) if isinstance(q, When) else _extreme(motion, q)
+            t, at_end = (_when(motion, q, notes), None) if isinstance(q, When) else _extreme(motion, q)
         except NotANumber as exc:
             raise NumericalError(f"find.{q.index}: {q.path} is not a number near t = {exc.x:.6g} s (the motion "
                                  "overflows the doubles there): search a shorter span (t_end or within)") from None
@@ -260,10 +261,12 @@ def _sign(x: float, tol: float) -> int:
     return 0 if abs(x) <= tol else (1 if x > 0 else -1)
 
 
-def _when(motion: Any, q: When) -> float | None:
+def _when(motion: Any, q: When, notes: dict[int, str] | None = None) -> float | None:
     """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None: the
     grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
-    well inside it (a long search for an early event samples no further than it needs)."""
+    well inside it (a long search for an early event samples no further than it needs).  Not
+    reached because the motion only creeps toward the value (:meth:`_Crossings._stays`): said in
+    ``notes[q.index]``."""
     path, V = q.path, q.value
     T = sample_grid(_breaks(motion, path), float(motion.t0), float(motion.t_end), subdivisions(motion))
     want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
@@ -275,12 +278,16 @@ def _when(motion: Any, q: When) -> float | None:
         if callable(ahead) and m < len(T):
             ahead(T[m - 1])
         F += _samples(motion, path, f, T[len(F):m])
-        scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])))
+        scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])),
+                          final=m == len(T))
         safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
         hits = [t for t, d in scan.events(want, q.occurrence, safe, _monotone(motion)) if (want is None or d == want) and t <= safe]
         if len(hits) >= q.occurrence:
             return hits[q.occurrence - 1]
         if m == len(T):
+            if scan.approach is not None and notes is not None:
+                notes[q.index] = (f"{path} only approaches {V:.10g}: within the tolerance of it ({scan.tol:.2g}) from "
+                                  f"t = {scan.approach:.6g} s on without meeting it (an asymptote, reached as t → ∞)")
             return None
         m = min(len(T), 2 * m)
 
@@ -298,13 +305,15 @@ class _Crossings:
     for the n-th event stops once it has n and no span left starts before the n-th (the events
     it returns up to there are those of the full scan)."""
 
-    def __init__(self, f, V, rate, T, G, tol):
+    def __init__(self, f, V, rate, T, G, tol, final: bool = True):
         self.g = lambda t: f(t) - V       # noqa: E731
         self.f, self.V = f, V
         self.rate, self.T, self.G, self.tol = rate, T, G, tol
         self.S: list[int] = []
         self.found: list[tuple[float, int]] = []
         self.spans: list[tuple[float, int, Callable[[], None]]] = []
+        self.approach: float | None = None        # (_stays) came within tolerance of VALUE only
+        self.final = final                        # T ends where the search ends (not a prefix of it)
 
     def events(self, want: int | None = None, occurrence: int | None = None,
                safe: float = math.inf, monotone: bool = False) -> list[tuple[float, int]]:
@@ -415,12 +424,31 @@ class _Crossings:
             yield T[ip], partial(self._stays, ip, sp)
 
     def _stays(self, ip: int, sp: int) -> None:
-        """The event of a motion that reaches VALUE after the sample ``ip`` and stays on it."""
-        T, G = self.T, self.G
-        j = next((j for j in range(ip + 1, len(T)) if sp * G[j] <= 0), None)
-        t = self.first_reach(T[ip], T[j], sp) if j is not None else \
-            root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance: its edge
-        self.found.append((t, -sp))
+        """The event of a motion that comes within the tolerance of VALUE after the sample ``ip``
+        and stays there to the end (met, or passed by its rounding, at its first sample on or past
+        VALUE, else at the tolerance's edge) — when it stops there (its rate exactly 0; without a
+        rate, met exactly or held on equal samples: a body that stops and sticks) or meets it at
+        the end of the search at the speed it came.  A motion that only creeps toward VALUE, its
+        rounding within the tolerance (on VALUE, or an ulp past it) while it still moves toward
+        it — an asymptote: a critically damped return, (1 + t)e^-t — never reaches it: no event,
+        and ``approach`` keeps the time it came within the tolerance."""
+        T, G, n, rate = self.T, self.G, len(self.T), self.rate
+        j = next((j for j in range(ip + 1, n) if sp * G[j] <= 0), None)
+        edge = root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance from here
+        t = self.first_reach(T[ip], T[j], sp) if j is not None else edge
+        after = range(ip + 1 if j is None else j, min(n, (ip + 1 if j is None else j) + 4))
+        if rate is not None:                          # stopped on VALUE: the rate exactly 0
+            stopped = any(rate(T[k]) == 0 for k in after)
+        else:                                         # a plateau, or met exactly (no rate to tell)
+            stopped = j is not None or any(G[k] == G[k + 1] for k in range(ip + 1, n - 1))
+        # met at the end: the search ends before the motion, at the speed it came, crosses the
+        # tolerance it entered at ``edge`` (a creeping motion slows down: its band lasts ~ its time constant)
+        speed = abs(rate(edge)) if rate is not None else abs(G[ip] - self.g(edge)) / max(edge - T[ip], _TINY)
+        # (4: a tangency at the end approaches quadratically, its band crossed in twice that)
+        if stopped or (self.final and T[-1] - edge <= 4 * self.tol / max(speed, _TINY)):
+            self.found.append((t, -sp))
+        elif self.approach is None:
+            self.approach = edge
 
 
 def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import mpmath as mp
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
@@ -171,6 +172,24 @@ def test_stops_on_the_value_and_stays():
     g = lambda t: min((t - 1) ** 2, 1) if t < 1 else (0.0 if t < 2 else (t - 2) ** 2)   # noqa: E731
     m = Motion({"x": (g, None)}, 0, 3, breaks=[0, 0.45, 1.3, 3])
     assert close(one({"when": {"x": 0}}, m)["t"], 1.0, 1e-12)
+
+
+def test_an_asymptote_is_not_reached():
+    # x = (1 + t) e^-t (a critically damped return from rest) is > 0 for every t, its rounding
+    # within the tolerance of 0 from t ≈ 37.6 s on: never reached (before: "reached" at t ≈ 37.6)
+    f = lambda t: (1 + t) * math.exp(-t)                   # noqa: E731
+    for rate in (True, False):
+        m = Motion({"x": (f, lambda t: -t * math.exp(-t))}, 0, 100, n=40, rate=rate)
+        notes: dict[int, str] = {}
+        got = answer(parse_queries([{"when": {"x": 0}}, {"when": {"x": "1e-10"}}]), m, notes)
+        assert got[0] == {"t": None, "reached": False, "at_end": None}
+        assert "only approaches 0" in notes[0]
+        with mp.workdps(30):                                 # a level above the rounding: crossed
+            want = mp.findroot(lambda t: (1 + t) * mp.exp(-t) - mp.mpf("1e-10"), 26)
+        assert close(got[1]["t"], float(want), 1e-12)
+    # a value met at the very end, computed a rounding short of it: reached (at the end)
+    m = Motion({"x": (lambda t: 0.1 * t, lambda t: 0.1)}, 0, 3, n=4)
+    assert close(one({"when": {"x": math.nextafter(0.1 * 3, 1)}}, m)["t"], 3.0, 1e-14)
 
 
 def test_reaches_the_value_at_the_end():
