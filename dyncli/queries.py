@@ -373,7 +373,9 @@ class _Crossings:
         """g at a and b on side s (the samples ``run`` between on VALUE): a touch, two crossings?"""
         rate, g = self.rate, self.g
         tm, hm = _peak(lambda t: -s * g(t), (lambda t: -s * rate(t)) if rate else None, a, b)
-        tm, hm = max([(tm, hm)] + [(self.T[j], -s * self.G[j]) for j in run], key=lambda c: c[1])   # a kink
+        # a kink; of equal closest approaches a sample on VALUE first (a monotone route's cut: the
+        # extreme's exact time, where Brent's minimiser's is good to ~√eps)
+        tm, hm = max([(self.T[j], -s * self.G[j]) for j in run] + [(tm, hm)], key=lambda c: c[1])
         sm = _sign(-s * hm, self.tol)                 # the side of the closest approach
         if sm == 0:                                   # touches VALUE: reaching it counts
             t1 = self.first_reach(a, tm, s) if hm >= 0 and rate is None else tm

@@ -174,6 +174,17 @@ def test_stops_on_the_value_and_stays():
     assert close(one({"when": {"x": 0}}, m)["t"], 1.0, 1e-12)
 
 
+def test_touch_at_a_cut_on_the_extreme_is_its_exact_time():
+    # a monotone route cuts its pieces at the exact extremes (sin t at π/2): a target equal to the
+    # extreme is touched at the cut, as {max: x} answers, not at Brent's minimiser's time (~√eps:
+    # 8e-9 s off on euler's closed form, with ω₂ = sin t and {when: {omega.1: 1}})
+    for breaks in ([0, PI / 2, 3], [0, 0.4, PI / 2, 2.1, 3]):
+        m = Motion({"x": (math.sin, None)}, 0, 3, breaks=breaks, rate=False)
+        m.monotone, m.subdivide = True, 1
+        assert close(one({"when": {"x": 1}}, m)["t"], PI / 2, 4 * EPS)
+        assert close(one({"max": "x"}, m)["t"], PI / 2, 4 * EPS)
+
+
 def test_an_asymptote_is_not_reached():
     # x = (1 + t) e^-t (a critically damped return from rest) is > 0 for every t, its rounding
     # within the tolerance of 0 from t ≈ 37.6 s on: never reached (before: "reached" at t ≈ 37.6)
