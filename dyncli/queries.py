@@ -292,6 +292,10 @@ def _when(motion: Any, q: When, notes: dict[int, str] | None = None) -> float | 
         m = min(len(T), 2 * m)
 
 
+#: a monotone search's sample closer to VALUE than its neighbours and within this many tolerances of
+#: it is searched for a touch (a cut on a kink lies ~1e-13 s off it: NEAR_CUT × 8 eps ≈ 1e-11 relative)
+NEAR_CUT = 1e4
+
 #: samples of a ``when`` search's first prefix (then doubled until the answer or the end)
 FIRST_PREFIX = 256
 
@@ -340,8 +344,10 @@ class _Crossings:
         start, so each is solved when met and the search stops at the first span that starts
         after the ``occurrence``-th event (the same spans solved, and the same events, as
         :meth:`events` solving the sorted list)."""
+        import heapq
+
         solved = False
-        for start, solve in self._sign_spans():
+        for start, solve in heapq.merge(self._sign_spans(), self._near_cuts(), key=lambda span: span[0]):
             if solved and occurrence is not None:
                 hits = sorted(t for t, d in self.found if (want is None or d == want) and t <= safe)
                 if len(hits) >= occurrence and start > hits[occurrence - 1]:
@@ -349,6 +355,18 @@ class _Crossings:
             solve()
             solved = True
         return sorted(self.found)
+
+    def _near_cuts(self):
+        """(start, solve) of each sample of a monotone g that comes closer to VALUE than its
+        neighbours, on their side, and within NEAR_CUT tolerances of it: a cut on an extreme that
+        may lie a little off it — one on a kink (|t − 1| at 1) is placed to ~1e-13 s, its value
+        that much off 0, beyond the rounding — searched as a dip (the closest approach, a touch)."""
+        T, G, tol = self.T, self.G, self.tol
+        near = NEAR_CUT * tol
+        for j in range(1, len(G) - 1):
+            a, x, b = G[j - 1], G[j], G[j + 1]
+            if tol < abs(x) <= near and (a > 0) == (x > 0) == (b > 0) and abs(x) < abs(a) and abs(x) <= abs(b):
+                yield T[j - 1], partial(self.dip, T[j - 1], T[j + 1], 1 if x > 0 else -1)
 
     def _later(self, start: float, solve: Callable[[], None]) -> None:
         """A span from ``start`` that may hold events: ``solve`` finds them (when asked)."""

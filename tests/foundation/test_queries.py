@@ -185,6 +185,20 @@ def test_touch_at_a_cut_on_the_extreme_is_its_exact_time():
         assert close(one({"max": "x"}, m)["t"], PI / 2, 4 * EPS)
 
 
+def test_touch_at_a_kink_whose_cut_lies_a_little_off_it():
+    # |t − 1| on a monotone route whose cut at the kink lies 4e-14 s off it (an interpolant's
+    # critical point): the value there, 4e-14, is beyond the rounding, yet 0 is met at t = 1.
+    # Before: "not reached" while {min: x} answered 0 at t = 1 (bearing-forces, omega: abs(t-1)).
+    # (Without a rate Brent's minimiser places a kink to ~1e-12 only: neither finds it then.)
+    f = lambda t: abs(t - 1)                               # noqa: E731
+    for breaks in ([0, 0.5, 1 + 4e-14, 3], [0, 1 - 3e-14, 1.7, 3]):
+        m = Motion({"x": (f, lambda t: 1.0 if t > 1 else -1.0)}, 0, 3, breaks=breaks)
+        m.monotone, m.subdivide = True, 1
+        assert close(one({"when": {"x": 0}}, m)["t"], 1.0, 1e-15)
+        assert one({"when": {"x": -1e-9}}, m)["reached"] is False
+        assert close(one({"when": {"x": "1e-9"}, "occurrence": 2}, m)["t"], 1 + 1e-9, 1e-15)
+
+
 def test_an_asymptote_is_not_reached():
     # x = (1 + t) e^-t (a critically damped return from rest) is > 0 for every t, its rounding
     # within the tolerance of 0 from t ≈ 37.6 s on: never reached (before: "reached" at t ≈ 37.6)
