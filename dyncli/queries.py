@@ -204,6 +204,10 @@ def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None =
 
 def _check_path(motion: Any, path: str, where: str) -> None:
     known = list(motion.paths())
+    parts = sorted(k for k in known if k.startswith(path + "."))
+    if path not in known and parts:                   # a vector (or a body's results): one number of it
+        raise InputError(f"'{path}' is not one number: search one of its components, such as "
+                         + ", ".join(parts[:3]) + (" ..." if len(parts) > 3 else ""), where)
     if path not in known:
         raise InputError(f"no result '{path}' to search{did_you_mean(path, known)}; the scalar results are "
                          + ", ".join(sorted(known)[:8]) + (" ..." if len(known) > 8 else ""), where)

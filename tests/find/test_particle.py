@@ -183,3 +183,17 @@ find: [{{min: T}}, {{min: T, within: [1, 4]}}, {{max: x.0}}, {{when: {{T: 0}}}}]
         assert e["t"] == pytest.approx(t_s, rel=TOL), k
         assert e["at_end"] in (False, None), k
         assert e["x"][0] == pytest.approx(float(mp.mpf(100) / G), rel=TOL), k
+
+
+def test_a_time_before_the_start_says_so():
+    # before: "not reached between t = 0 and t = 2 s; raise t_end to search further"
+    R, warns = solve("""
+type: particle
+m: 1
+v0: [1, 0, 0]
+forces: [{kind: gravity}]
+t_end: 2
+find: [{t: -1}]
+""")
+    assert R["find"][0]["reached"] is False
+    assert any("find.0: t = -1 s is before the start of the motion (t = 0 s)" in w for w in warns), warns

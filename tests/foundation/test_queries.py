@@ -371,6 +371,18 @@ def test_unknown_path(raw, path):
     assert exc.value.path == path and "'x.A.2'" in exc.value.message and "did you mean 'x.A.1'" in exc.value.message
 
 
+@pytest.mark.parametrize("raw,path", [({"when": {"v": 1}}, "find.0.when"), ({"max": "x.A"}, "find.0.max")])
+def test_a_vector_asks_for_a_component(raw, path):
+    # before: "no result 'v' to search (did you mean 'V'?)", which leads away from v.0
+    m = Motion({"x.A.0": (math.sin, math.cos), "x.A.1": (math.sin, math.cos), "V": (math.cos, None),
+                "v.0": (math.cos, None), "v.1": (math.cos, None), "v.2": (math.cos, None)}, 0, 1)
+    with pytest.raises(InputError) as exc:
+        answer(parse_queries([raw], constant), m)
+    name = path and (raw.get("max") or next(iter(raw["when"])))
+    assert exc.value.path == path and f"'{name}' is not one number" in exc.value.message
+    assert f"{name}.0" in exc.value.message
+
+
 # ------------------------------------------------------------------------- properties
 
 def _sine(A, t0, span, periods, n, rate=True):
