@@ -189,8 +189,8 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
         entry.update({n: None for n in names if n not in entry})     # every other entry null (§11)
         if warn is not None and k in notes:
             warn(f"find.{k}: not reached: {notes[k]}")
-        elif warn is not None and isinstance(qs[k], _q.AtTime) and qs[k].t < motion.t0:
-            warn(f"find.{k}: t = {qs[k].t:g} s is before the start of the motion (t = {motion.t0:g} s): "
+        elif warn is not None and isinstance(q := qs[k], _q.AtTime) and q.t < motion.t0:
+            warn(f"find.{k}: t = {q.t:g} s is before the start of the motion (t = {motion.t0:g} s): "
                  "ask for a time from the start on")
         elif warn is not None:
             warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
