@@ -176,8 +176,9 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
         (one or motion).prefetch()                  # (a when query fetches as far as it searches)
     out, names = [], None
     # a periodic motion's extremes over the whole motion lie in its first period (the first of equal ones)
+    notes: dict[int, str] = {}
     answers = [_q.answer([q], one)[0] if one is not None and isinstance(q, _q.Extreme) and q.within is None
-               else _q.answer([q], motion)[0] for q in qs]
+               else _q.answer([q], motion, notes)[0] for q in qs]
     for k, ans in enumerate(answers):
         entry = dict(ans)
         if ans.get("reached") and ans.get("t") is not None:
@@ -186,7 +187,12 @@ def answer_find(raw: Any, motion: Any, constant: Callable[[Any], float], warn: C
             continue
         names = list(full(motion.t0)) if names is None else names
         entry.update({n: None for n in names if n not in entry})     # every other entry null (§11)
-        if warn is not None:
+        if warn is not None and k in notes:
+            warn(f"find.{k}: not reached: {notes[k]}")
+        elif warn is not None and isinstance(q := qs[k], _q.AtTime) and q.t < motion.t0:
+            warn(f"find.{k}: t = {q.t:g} s is before the start of the motion (t = {motion.t0:g} s): "
+                 "ask for a time from the start on")
+        elif warn is not None:
             warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
                  + (f" ({stopped})" if stopped else "; raise t_end to search further"))
         out.append(entry)

@@ -181,10 +181,11 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
     return When(path, value, d, n, index=i)
 
 
-def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
+def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None = None) -> list[dict]:
     """One ``{"t", "reached", "at_end"}`` per query, in order (``t`` and ``at_end`` None when not
     reached; ``at_end`` None for ``t`` and ``when``).  An unknown result path is an InputError at
-    ``find.<i>.when`` / ``.max`` / ``.min`` naming it."""
+    ``find.<i>.when`` / ``.max`` / ``.min`` naming it.  ``notes`` (a dict, when given) gets why a
+    ``when`` query was not reached where the search knows more than "not met": ``{index: text}``."""
     out = []
     for q in queries:
         if isinstance(q, AtTime):
@@ -193,7 +194,7 @@ def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
             continue
         _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
         try:
-            t, at_end = (_when(motion, q), None) if isinstance(q, When) else _extreme(motion, q)
+            t, at_end = (_when(motion, q, notes), None) if isinstance(q, When) else _extreme(motion, q)
         except NotANumber as exc:
             raise NumericalError(f"find.{q.index}: {q.path} is not a number near t = {exc.x:.6g} s (the motion "
                                  "overflows the doubles there): search a shorter span (t_end or within)") from None
@@ -203,6 +204,10 @@ def answer(queries: Iterable[Query], motion: Any) -> list[dict]:
 
 def _check_path(motion: Any, path: str, where: str) -> None:
     known = list(motion.paths())
+    parts = sorted(k for k in known if k.startswith(path + "."))
+    if path not in known and parts:                   # a vector (or a body's results): one number of it
+        raise InputError(f"'{path}' is not one number: search one of its components, such as "
+                         + ", ".join(parts[:3]) + (" ..." if len(parts) > 3 else ""), where)
     if path not in known:
         raise InputError(f"no result '{path}' to search{did_you_mean(path, known)}; the scalar results are "
                          + ", ".join(sorted(known)[:8]) + (" ..." if len(known) > 8 else ""), where)
@@ -260,10 +265,12 @@ def _sign(x: float, tol: float) -> int:
     return 0 if abs(x) <= tol else (1 if x > 0 else -1)
 
 
-def _when(motion: Any, q: When) -> float | None:
+def _when(motion: Any, q: When, notes: dict[int, str] | None = None) -> float | None:
     """The time of the n-th crossing or touch of ``q.value`` in ``q.direction``, or None: the
     grid is searched in growing prefixes (doubling), stopping at the prefix that holds the answer
-    well inside it (a long search for an early event samples no further than it needs)."""
+    well inside it (a long search for an early event samples no further than it needs).  Not
+    reached because the motion only creeps toward the value (:meth:`_Crossings._stays`): said in
+    ``notes[q.index]``."""
     path, V = q.path, q.value
     T = sample_grid(_breaks(motion, path), float(motion.t0), float(motion.t_end), subdivisions(motion))
     want, rate = {"up": 1, "down": -1}.get(q.direction), _rate_fn(motion, path, motion.t0)
@@ -275,15 +282,23 @@ def _when(motion: Any, q: When) -> float | None:
         if callable(ahead) and m < len(T):
             ahead(T[m - 1])
         F += _samples(motion, path, f, T[len(F):m])
-        scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])))
+        scan = _Crossings(f, V, rate, T[:m], [y - V for y in F], _tol(motion, max([abs(V), *map(abs, F)])),
+                          final=m == len(T))
         safe = T[-1] if m == len(T) else T[m - 4]     # events are local to ±2 samples: final before this
         hits = [t for t, d in scan.events(want, q.occurrence, safe, _monotone(motion)) if (want is None or d == want) and t <= safe]
         if len(hits) >= q.occurrence:
             return hits[q.occurrence - 1]
         if m == len(T):
+            if scan.approach is not None and notes is not None:
+                notes[q.index] = (f"{path} only approaches {V:.10g}: within the tolerance of it ({scan.tol:.2g}) from "
+                                  f"t = {scan.approach:.6g} s on without meeting it (an asymptote, reached as t → ∞)")
             return None
         m = min(len(T), 2 * m)
 
+
+#: a monotone search's sample closer to VALUE than its neighbours and within this many tolerances of
+#: it is searched for a touch (a cut on a kink lies ~1e-13 s off it: NEAR_CUT × 8 eps ≈ 1e-11 relative)
+NEAR_CUT = 1e4
 
 #: samples of a ``when`` search's first prefix (then doubled until the answer or the end)
 FIRST_PREFIX = 256
@@ -298,13 +313,15 @@ class _Crossings:
     for the n-th event stops once it has n and no span left starts before the n-th (the events
     it returns up to there are those of the full scan)."""
 
-    def __init__(self, f, V, rate, T, G, tol):
+    def __init__(self, f, V, rate, T, G, tol, final: bool = True):
         self.g = lambda t: f(t) - V       # noqa: E731
         self.f, self.V = f, V
         self.rate, self.T, self.G, self.tol = rate, T, G, tol
         self.S: list[int] = []
         self.found: list[tuple[float, int]] = []
         self.spans: list[tuple[float, int, Callable[[], None]]] = []
+        self.approach: float | None = None        # (_stays) came within tolerance of VALUE only
+        self.final = final                        # T ends where the search ends (not a prefix of it)
 
     def events(self, want: int | None = None, occurrence: int | None = None,
                safe: float = math.inf, monotone: bool = False) -> list[tuple[float, int]]:
@@ -331,8 +348,10 @@ class _Crossings:
         start, so each is solved when met and the search stops at the first span that starts
         after the ``occurrence``-th event (the same spans solved, and the same events, as
         :meth:`events` solving the sorted list)."""
+        import heapq
+
         solved = False
-        for start, solve in self._sign_spans():
+        for start, solve in heapq.merge(self._sign_spans(), self._near_cuts(), key=lambda span: span[0]):
             if solved and occurrence is not None:
                 hits = sorted(t for t, d in self.found if (want is None or d == want) and t <= safe)
                 if len(hits) >= occurrence and start > hits[occurrence - 1]:
@@ -340,6 +359,18 @@ class _Crossings:
             solve()
             solved = True
         return sorted(self.found)
+
+    def _near_cuts(self):
+        """(start, solve) of each sample of a monotone g that comes closer to VALUE than its
+        neighbours, on their side, and within NEAR_CUT tolerances of it: a cut on an extreme that
+        may lie a little off it — one on a kink (|t − 1| at 1) is placed to ~1e-13 s, its value
+        that much off 0, beyond the rounding — searched as a dip (the closest approach, a touch)."""
+        T, G, tol = self.T, self.G, self.tol
+        near = NEAR_CUT * tol
+        for j in range(1, len(G) - 1):
+            a, x, b = G[j - 1], G[j], G[j + 1]
+            if tol < abs(x) <= near and (a > 0) == (x > 0) == (b > 0) and abs(x) < abs(a) and abs(x) <= abs(b):
+                yield T[j - 1], partial(self.dip, T[j - 1], T[j + 1], 1 if x > 0 else -1)
 
     def _later(self, start: float, solve: Callable[[], None]) -> None:
         """A span from ``start`` that may hold events: ``solve`` finds them (when asked)."""
@@ -364,7 +395,9 @@ class _Crossings:
         """g at a and b on side s (the samples ``run`` between on VALUE): a touch, two crossings?"""
         rate, g = self.rate, self.g
         tm, hm = _peak(lambda t: -s * g(t), (lambda t: -s * rate(t)) if rate else None, a, b)
-        tm, hm = max([(tm, hm)] + [(self.T[j], -s * self.G[j]) for j in run], key=lambda c: c[1])   # a kink
+        # a kink; of equal closest approaches a sample on VALUE first (a monotone route's cut: the
+        # extreme's exact time, where Brent's minimiser's is good to ~√eps)
+        tm, hm = max([(self.T[j], -s * self.G[j]) for j in run] + [(tm, hm)], key=lambda c: c[1])
         sm = _sign(-s * hm, self.tol)                 # the side of the closest approach
         if sm == 0:                                   # touches VALUE: reaching it counts
             t1 = self.first_reach(a, tm, s) if hm >= 0 and rate is None else tm
@@ -415,12 +448,31 @@ class _Crossings:
             yield T[ip], partial(self._stays, ip, sp)
 
     def _stays(self, ip: int, sp: int) -> None:
-        """The event of a motion that reaches VALUE after the sample ``ip`` and stays on it."""
-        T, G = self.T, self.G
-        j = next((j for j in range(ip + 1, len(T)) if sp * G[j] <= 0), None)
-        t = self.first_reach(T[ip], T[j], sp) if j is not None else \
-            root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance: its edge
-        self.found.append((t, -sp))
+        """The event of a motion that comes within the tolerance of VALUE after the sample ``ip``
+        and stays there to the end (met, or passed by its rounding, at its first sample on or past
+        VALUE, else at the tolerance's edge) — when it stops there (its rate exactly 0; without a
+        rate, met exactly or held on equal samples: a body that stops and sticks) or meets it at
+        the end of the search at the speed it came.  A motion that only creeps toward VALUE, its
+        rounding within the tolerance (on VALUE, or an ulp past it) while it still moves toward
+        it — an asymptote: a critically damped return, (1 + t)e^-t — never reaches it: no event,
+        and ``approach`` keeps the time it came within the tolerance."""
+        T, G, n, rate = self.T, self.G, len(self.T), self.rate
+        j = next((j for j in range(ip + 1, n) if sp * G[j] <= 0), None)
+        edge = root(lambda t: sp * self.g(t) - self.tol, T[ip], T[ip + 1])     # within tolerance from here
+        t = self.first_reach(T[ip], T[j], sp) if j is not None else edge
+        after = range(ip + 1 if j is None else j, min(n, (ip + 1 if j is None else j) + 4))
+        if rate is not None:                          # stopped on VALUE: the rate exactly 0
+            stopped = any(rate(T[k]) == 0 for k in after)
+        else:                                         # a plateau, or met exactly (no rate to tell)
+            stopped = j is not None or any(G[k] == G[k + 1] for k in range(ip + 1, n - 1))
+        # met at the end: the search ends before the motion, at the speed it came, crosses the
+        # tolerance it entered at ``edge`` (a creeping motion slows down: its band lasts ~ its time constant)
+        speed = abs(rate(edge)) if rate is not None else abs(G[ip] - self.g(edge)) / max(edge - T[ip], _TINY)
+        # (4: a tangency at the end approaches quadratically, its band crossed in twice that)
+        if stopped or (self.final and T[-1] - edge <= 4 * self.tol / max(speed, _TINY)):
+            self.found.append((t, -sp))
+        elif self.approach is None:
+            self.approach = edge
 
 
 def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
@@ -467,9 +519,28 @@ def _extreme(motion: Any, q: Extreme) -> tuple[float | None, bool | None]:
     if not math.isfinite(best):                       # ±inf: the extreme is beyond the doubles
         raise NumericalError(f"find: the {q.kind} of {path} between t = {w1:g} and {w2:g} s is beyond the range "
                              "of a double (1.8e308): check the inputs that scale it")
-    tol = _tol(motion, _scale(H, best))
+    scale = _scale(H, best)
+    tol = _tol(motion, scale)
     t = min(c[0] for c in cands if c[1] >= best - tol)
+    if monotone:
+        t = _plateau_start(h, hr, T, H, t, best - tol, 8 * _EPS * scale)
     return t, (t == w1 or t == w2)
+
+
+def _plateau_start(h, hr, T: list[float], H: list[float], t: float, floor: float, rounding: float) -> float:
+    """The start of the plateau that holds the extreme at the sample ``t`` (h monotone between
+    samples): when h is flat there — the next sample equal to it, or ``t`` the window's end, and
+    its rate hr (when known) exactly 0 — the samples before it whose span is flat (h at its middle
+    equal to the plateau) and whose value ties with it to rounding, within tolerance of the best
+    (``floor``).  A body that stops and sticks holds its least speed from the stop on, while the
+    stop itself carries the rounding of the phase before it (|v| ~1e-15): its least kinetic
+    energy is at the stop, not at the end of the motion."""
+    k = next((k for k, x in enumerate(T) if x == t), None)
+    if k is None or (k + 1 < len(T) and H[k + 1] != H[k]) or (hr is not None and hr(t) != 0):
+        return t                                      # a strict peak, or still moving: its own time
+    while k > 0 and H[k - 1] >= floor and abs(H[k] - H[k - 1]) <= rounding and h(0.5 * (T[k - 1] + T[k])) == H[k]:
+        k -= 1
+    return T[k]
 
 
 def _scale(H: list[float], best: float) -> float:

@@ -50,3 +50,19 @@ def test_arms_closed_on_a_free_shaft():
     assert entry(r, 3)["F"][1] == pytest.approx(float(F), rel=1e-12)
     assert r["find"][4]["reached"] is False and r["find"][4]["omega"] is None
     assert any("find.4" in w for w in warns)
+
+
+def test_a_spin_that_stops_at_a_kink_reaches_zero():
+    # ω = |t − 1| (a motor that brakes to rest and reverses): ω = 0 at t = 1 exactly, where ω has
+    # a kink; the exact route's cut there lies ~1e-13 s off it. Before: {when: {omega: 0}} "not
+    # reached" while {min: omega} answered ~0 at t = 1.
+    r, _ = solve("""
+type: bearing-forces
+masses: [{m: 2, L: 0.5, alpha: pi/2}]
+omega: "abs(t-1)"
+at: [0.5]
+t_end: 3
+find: [{when: {omega: 0}}, {min: omega}, {when: {omega: 0.25}, occurrence: 2}]
+""")
+    for k, t in ((0, 1.0), (1, 1.0), (2, 1.25)):
+        assert entry(r, k)["t"] == pytest.approx(t, abs=1e-14), k

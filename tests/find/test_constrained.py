@@ -81,3 +81,25 @@ def test_bead_on_a_hoop(method):
     e = entry(r, 9)
     assert e["q"] == pytest.approx(float(q_at(2)), abs=TOL)
     assert e["distance"] == pytest.approx(float(R * (4 * Q0 + Q0 - q_at(2))), rel=TOL)
+
+
+def test_least_kinetic_energy_of_a_bead_that_sticks_is_at_the_stop():
+    # a bead on a straight horizontal wire (m = 2 kg, q̇0 = 10 m/s) with friction μ = 0.5 stops at
+    # t_s = q̇0/(μg) and sticks. Before, min T was reported 1e-6 s late (the first step of the stuck
+    # phase: the stop carries the rounding of the sliding phase, T ~ 1e-30 J).
+    t_s = float(10 / (mp.mpf("0.5") * G))
+    r, _ = solve("""
+type: constrained-particle
+m: 2
+curve: {x1: q, x2: 0, x3: 0}
+q_dot0: 10
+forces: [{kind: gravity}, {kind: friction, mu: 0.5}]
+t_end: 5
+accuracy: {rtol: 1e-10}
+find: [{min: T}, {min: q_dot}, {max: q}]
+""")
+    for k in range(3):
+        e = entry(r, k)
+        assert e["t"] == pytest.approx(t_s, rel=TOL), k
+        assert e["at_end"] is False, k
+        assert e["q"] == pytest.approx(float(100 / (2 * mp.mpf("0.5") * G)), rel=TOL), k

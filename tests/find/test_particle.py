@@ -161,3 +161,39 @@ accuracy: {{rtol: {rtol!r}}}
     for k, (t, speed) in enumerate(want):
         # a crossing's time is off by the error of x (the route's, relative to x ~ 0.16 m) over |v| there
         assert abs(entry(R, k)["t"] - t) * speed <= ode(rtol) * 0.16 + 1e-15, k
+
+
+@pytest.mark.parametrize("method", ["DOP853", "RK45"])
+def test_least_kinetic_energy_of_a_block_that_sticks_is_at_the_stop(method):
+    # a block (m = 2 kg, v0 = 10 m/s) slides with Coulomb friction μN = 9.81 N and sticks at
+    # t_s = v0 m/(μN) = 20/9.81 s. T is 0 from t_s on; the stop itself carries the rounding of the
+    # phase before it (T ~ 3e-30 J). Before, DOP853 reported min T at the end (t = 5 s, at_end true).
+    t_s = float(mp.mpf(20) / G)
+    R, _ = solve(f"""
+type: particle
+m: 2
+v0: [10, 0, 0]
+forces: [{{kind: friction, mu: 0.5, N: 19.62}}]
+t_end: 5
+accuracy: {{method: {method}, rtol: 1e-10}}
+find: [{{min: T}}, {{min: T, within: [1, 4]}}, {{max: x.0}}, {{when: {{T: 0}}}}]
+""")
+    for k in range(4):
+        e = entry(R, k)
+        assert e["t"] == pytest.approx(t_s, rel=TOL), k
+        assert e["at_end"] in (False, None), k
+        assert e["x"][0] == pytest.approx(float(mp.mpf(100) / G), rel=TOL), k
+
+
+def test_a_time_before_the_start_says_so():
+    # before: "not reached between t = 0 and t = 2 s; raise t_end to search further"
+    R, warns = solve("""
+type: particle
+m: 1
+v0: [1, 0, 0]
+forces: [{kind: gravity}]
+t_end: 2
+find: [{t: -1}]
+""")
+    assert R["find"][0]["reached"] is False
+    assert any("find.0: t = -1 s is before the start of the motion (t = 0 s)" in w for w in warns), warns

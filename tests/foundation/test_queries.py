@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import mpmath as mp
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 
@@ -173,6 +174,49 @@ def test_stops_on_the_value_and_stays():
     assert close(one({"when": {"x": 0}}, m)["t"], 1.0, 1e-12)
 
 
+def test_touch_at_a_cut_on_the_extreme_is_its_exact_time():
+    # a monotone route cuts its pieces at the exact extremes (sin t at π/2): a target equal to the
+    # extreme is touched at the cut, as {max: x} answers, not at Brent's minimiser's time (~√eps:
+    # 8e-9 s off on euler's closed form, with ω₂ = sin t and {when: {omega.1: 1}})
+    for breaks in ([0, PI / 2, 3], [0, 0.4, PI / 2, 2.1, 3]):
+        m = Motion({"x": (math.sin, None)}, 0, 3, breaks=breaks, rate=False)
+        m.monotone, m.subdivide = True, 1
+        assert close(one({"when": {"x": 1}}, m)["t"], PI / 2, 4 * EPS)
+        assert close(one({"max": "x"}, m)["t"], PI / 2, 4 * EPS)
+
+
+def test_touch_at_a_kink_whose_cut_lies_a_little_off_it():
+    # |t − 1| on a monotone route whose cut at the kink lies 4e-14 s off it (an interpolant's
+    # critical point): the value there, 4e-14, is beyond the rounding, yet 0 is met at t = 1.
+    # Before: "not reached" while {min: x} answered 0 at t = 1 (bearing-forces, omega: abs(t-1)).
+    # (Without a rate Brent's minimiser places a kink to ~1e-12 only: neither finds it then.)
+    f = lambda t: abs(t - 1)                               # noqa: E731
+    for breaks in ([0, 0.5, 1 + 4e-14, 3], [0, 1 - 3e-14, 1.7, 3]):
+        m = Motion({"x": (f, lambda t: 1.0 if t > 1 else -1.0)}, 0, 3, breaks=breaks)
+        m.monotone, m.subdivide = True, 1
+        assert close(one({"when": {"x": 0}}, m)["t"], 1.0, 1e-15)
+        assert one({"when": {"x": -1e-9}}, m)["reached"] is False
+        assert close(one({"when": {"x": "1e-9"}, "occurrence": 2}, m)["t"], 1 + 1e-9, 1e-15)
+
+
+def test_an_asymptote_is_not_reached():
+    # x = (1 + t) e^-t (a critically damped return from rest) is > 0 for every t, its rounding
+    # within the tolerance of 0 from t ≈ 37.6 s on: never reached (before: "reached" at t ≈ 37.6)
+    f = lambda t: (1 + t) * math.exp(-t)                   # noqa: E731
+    for rate in (True, False):
+        m = Motion({"x": (f, lambda t: -t * math.exp(-t))}, 0, 100, n=40, rate=rate)
+        notes: dict[int, str] = {}
+        got = answer(parse_queries([{"when": {"x": 0}}, {"when": {"x": "1e-10"}}]), m, notes)
+        assert got[0] == {"t": None, "reached": False, "at_end": None}
+        assert "only approaches 0" in notes[0]
+        with mp.workdps(30):                                 # a level above the rounding: crossed
+            want = mp.findroot(lambda t: (1 + t) * mp.exp(-t) - mp.mpf("1e-10"), 26)
+        assert close(got[1]["t"], float(want), 1e-12)
+    # a value met at the very end, computed a rounding short of it: reached (at the end)
+    m = Motion({"x": (lambda t: 0.1 * t, lambda t: 0.1)}, 0, 3, n=4)
+    assert close(one({"when": {"x": math.nextafter(0.1 * 3, 1)}}, m)["t"], 3.0, 1e-14)
+
+
 def test_reaches_the_value_at_the_end():
     m = Motion({"x": (lambda t: t, lambda t: 1.0)}, 0, 2, n=3)
     assert one({"when": {"x": 2}}, m) == {"t": 2.0, "reached": True, "at_end": None}
@@ -226,6 +270,25 @@ def test_equal_extremes_the_first(rate):
     assert one({"max": "x"}, m) == {"t": 0.0, "reached": True, "at_end": True}
     m = Motion({"x": (lambda t: 3.0, lambda t: 0.0)}, 1, 2, n=4, rate=rate)
     assert one({"min": "x"}, m) == {"t": 1.0, "reached": True, "at_end": True}
+
+
+def test_least_value_of_a_body_that_sticks_is_at_the_stop():
+    # a speed² that falls to 0 at the stop t = 1 (a break, where the phase before leaves rounding:
+    # 3e-30) and stays 0 to the end, on a monotone motion (the ODE routes' cut steps): the least
+    # value is reached at the stop, not at the end of the motion (first of equal extremes)
+    f = lambda t: (1 - t) ** 2 if t < 1 else (3e-30 if t == 1 else 0.0)          # noqa: E731
+    df = lambda t: -2 * (1 - t) if t < 1 else 0.0                                  # noqa: E731
+    for rate in (True, False):
+        for breaks in ([0, 0.5, 1, 5], [0, 0.5, 1, 1.000001, 2, 5]):
+            m = Motion({"T": (f, df)}, 0, 5, breaks=breaks, rate=rate)
+            m.monotone, m.subdivide = True, 1
+            assert one({"min": "T"}, m) == {"t": 1.0, "reached": True, "at_end": False}
+            assert one({"min": "T", "within": [0.5, 3]}, m) == {"t": 1.0, "reached": True, "at_end": False}
+    # still rising at the end of the window (its rate not 0), by less than the tolerance: the end
+    for rate in (True, False):
+        m = Motion({"x": (lambda t: 1 + 1e-13 * t, lambda t: 1e-13)}, 0, 5, breaks=[0, 4.99, 5], rate=rate)
+        m.monotone, m.subdivide = True, 1
+        assert one({"max": "x"}, m) == {"t": 5.0, "reached": True, "at_end": True}
 
 
 def test_window_clipped_to_the_motion():
@@ -306,6 +369,18 @@ def test_unknown_path(raw, path):
     with pytest.raises(InputError) as exc:
         answer(parse_queries([raw], constant), m)
     assert exc.value.path == path and "'x.A.2'" in exc.value.message and "did you mean 'x.A.1'" in exc.value.message
+
+
+@pytest.mark.parametrize("raw,path", [({"when": {"v": 1}}, "find.0.when"), ({"max": "x.A"}, "find.0.max")])
+def test_a_vector_asks_for_a_component(raw, path):
+    # before: "no result 'v' to search (did you mean 'V'?)", which leads away from v.0
+    m = Motion({"x.A.0": (math.sin, math.cos), "x.A.1": (math.sin, math.cos), "V": (math.cos, None),
+                "v.0": (math.cos, None), "v.1": (math.cos, None), "v.2": (math.cos, None)}, 0, 1)
+    with pytest.raises(InputError) as exc:
+        answer(parse_queries([raw], constant), m)
+    name = path and (raw.get("max") or next(iter(raw["when"])))
+    assert exc.value.path == path and f"'{name}' is not one number" in exc.value.message
+    assert f"{name}.0" in exc.value.message
 
 
 # ------------------------------------------------------------------------- properties
