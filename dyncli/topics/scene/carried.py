@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .contacts import Contact, Rolls
-from .elements import ListRows
+from .elements import ListRows, RunsOffEnds
 from .system import BodyData, BodyPoint, Point, SurfaceData
 
 
@@ -260,7 +260,7 @@ class CarriedContact(_OnLine, Contact):
 
 
 @dataclass(kw_only=True)
-class CarriedSlider(_OnLine, ListRows):
+class CarriedSlider(RunsOffEnds, _OnLine, ListRows):
     """A body's centre on the line through its place at t = 0 parallel to a carried line (a
     collar on a turning rod, a slide block in a moving guide), two-sided and smooth; a rigid body
     keeps its angle to the carrier.  ``N`` is the force on the body along n (−N on the carrier),
@@ -277,18 +277,8 @@ class CarriedSlider(_OnLine, ListRows):
     def rows(self):
         return 0 if self.mode == "off" else 1 if self.dtheta is None else 2
 
-    def phase(self):
-        return self.mode
-
-    def set_phase(self, state) -> None:
-        self.mode = state
-
-    def watch(self, lam, q, v, t):
-        m = None if self.mode == "off" else self._margin(q)
-        return [] if m is None else [("leaves", m)]
-
-    def reads_forces(self) -> bool:
-        return False
+    def end_margin(self, q) -> float | None:
+        return self._margin(q)
 
     @property
     def linear(self):

@@ -78,23 +78,40 @@ def _symmetric_solve(minv: list, rows: list, c0: list, Mf: list, gam: list) -> t
         J0, J1 = rows
         r0, r1 = gam[0] - sum(map(mul, J0, Mf)), gam[1] - sum(map(mul, J1, Mf))
         Y0, Y1 = list(map(mul, minv, J0)), list(map(mul, minv, J1))
-        w00, w01, w11 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J1, Y1))
-        a01 = abs(w01)
-        if not w00 > PIVOT * max(w00, a01):
+        got2 = ldl2(sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J1, Y1)), r0, r1)
+        if got2 is None:
             return None
-        el = w01 / w00
-        d1 = w11 - el * w01
-        if not d1 > PIVOT * max(w11, a01):
-            return None
-        l1 = (r1 - el * r0) / d1
-        l0 = r0 / w00 - el * l1
+        l0, l1 = got2
         return [x + l0 * y0 + l1 * y1 for x, y0, y1 in zip(Mf, Y0, Y1)], [l0, l1]
     J0, J1, J2 = rows
     r0, r1, r2 = (gam[0] - sum(map(mul, J0, Mf)), gam[1] - sum(map(mul, J1, Mf)),
                   gam[2] - sum(map(mul, J2, Mf)))
     Y0, Y1, Y2 = list(map(mul, minv, J0)), list(map(mul, minv, J1)), list(map(mul, minv, J2))
-    w00, w01, w02 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2))
-    w11, w12, w22 = sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2))
+    got3 = ldl3(sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2)),
+                sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2)), r0, r1, r2)
+    if got3 is None:
+        return None
+    l0, l1, l2 = got3
+    return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, Y0, Y1, Y2)], [l0, l1, l2]
+
+
+def ldl2(w00: float, w01: float, w11: float, r0: float, r1: float) -> tuple[float, float] | None:
+    """x of the symmetric [[w00, w01], [w01, w11]] x = r by W = L D Lᵀ (d0 = w00, l = w01/w00,
+    d1 = w11 − l w01); None when a pivot is below PIVOT of its row's largest entry."""
+    a01 = abs(w01)
+    if not w00 > PIVOT * max(w00, a01):
+        return None
+    el = w01 / w00
+    d1 = w11 - el * w01
+    if not d1 > PIVOT * max(w11, a01):
+        return None
+    x1 = (r1 - el * r0) / d1
+    return r0 / w00 - el * x1, x1
+
+
+def ldl3(w00: float, w01: float, w02: float, w11: float, w12: float, w22: float,
+         r0: float, r1: float, r2: float) -> tuple[float, float, float] | None:
+    """x of the symmetric 3 × 3 W x = r by W = L D Lᵀ written out; None as :func:`ldl2`."""
     a01, a02, a12 = abs(w01), abs(w02), abs(w12)
     if not w00 > PIVOT * max(w00, a01, a02):
         return None
@@ -108,10 +125,9 @@ def _symmetric_solve(minv: list, rows: list, c0: list, Mf: list, gam: list) -> t
     if not d2 > PIVOT * max(w22, a02, a12):
         return None
     z1 = r1 - l10 * r0
-    l2 = (r2 - l20 * r0 - l21 * z1) / d2
-    l1 = z1 / d1 - l21 * l2
-    l0 = r0 / w00 - l10 * l1 - l20 * l2
-    return [x + l0 * y0 + l1 * y1 + l2 * y2 for x, y0, y1, y2 in zip(Mf, Y0, Y1, Y2)], [l0, l1, l2]
+    x2 = (r2 - l20 * r0 - l21 * z1) / d2
+    x1 = z1 / d1 - l21 * x2
+    return r0 / w00 - l10 * x1 - l20 * x2, x1, x2
 
 
 def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list, list] | None:
@@ -126,25 +142,9 @@ def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list,
             return None
         (J0, J1, J2), Y = rows, [list(map(mul, minv, c)) for c in rows]
         Y0, Y1, Y2 = Y
-        w00, w01, w02 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2))
-        w11, w12, w22 = sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2))
-        a01, a02, a12 = abs(w01), abs(w02), abs(w12)
-        if not w00 > PIVOT * max(w00, a01, a02):
-            return None
-        l10, l20 = w01 / w00, w02 / w00
-        d1 = w11 - l10 * w01
-        if not d1 > PIVOT * max(w11, a01, a12):
-            return None
-        u21 = w12 - l20 * w01
-        l21 = u21 / d1
-        d2 = w22 - l20 * w02 - l21 * u21
-        if not d2 > PIVOT * max(w22, a02, a12):
-            return None
-        r0, r1, r2 = r
-        z1 = r1 - l10 * r0
-        x2 = (r2 - l20 * r0 - l21 * z1) / d2
-        x1 = z1 / d1 - l21 * x2
-        return [r0 / w00 - l10 * x1 - l20 * x2, x1, x2], Y
+        got3 = ldl3(sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J0, Y2)),
+                    sum(map(mul, J1, Y1)), sum(map(mul, J1, Y2)), sum(map(mul, J2, Y2)), *r)
+        return None if got3 is None else (list(got3), Y)
     if len(rows) == 1:
         Y0 = list(map(mul, minv, cols[0]))
         w = sum(map(mul, rows[0], Y0))
@@ -155,16 +155,9 @@ def complement_solve(minv: list, rows: list, cols: list, r: list) -> tuple[list,
     Y0, Y1 = list(map(mul, minv, C0)), list(map(mul, minv, C1))
     w00, w01, w11 = sum(map(mul, J0, Y0)), sum(map(mul, J0, Y1)), sum(map(mul, J1, Y1))
     r0, r1 = r
-    if cols is rows:                # L D Lᵀ: d0 = w00, l = w01 / w00, d1 = w11 − l w01
-        a01 = abs(w01)
-        if not w00 > PIVOT * max(w00, a01):
-            return None
-        el = w01 / w00
-        d1 = w11 - el * w01
-        if not d1 > PIVOT * max(w11, a01):
-            return None
-        x1 = (r1 - el * r0) / d1
-        return [r0 / w00 - el * x1, x1], [Y0, Y1]
+    if cols is rows:                # L D Lᵀ
+        got2 = ldl2(w00, w01, w11, r0, r1)
+        return None if got2 is None else (list(got2), [Y0, Y1])
     got = solve2(w00, w01, sum(map(mul, J1, Y0)), w11, r0, r1)
     return None if got is None else (list(got), [Y0, Y1])
 

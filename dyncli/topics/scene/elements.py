@@ -274,8 +274,31 @@ class PinBlock:
         return r[:, 1, 0] - r[:, 0, 0], r[:, 1, 1] - r[:, 0, 1]
 
 
+class RunsOffEnds:
+    """A slider's phases (mode "on", or "off" past an end of its surface: no rows) and its watch
+    (the event ``leaves`` where ``end_margin``, the distance to the nearer end, crosses 0)."""
+
+    mode: str
+
+    def phase(self):
+        return self.mode
+
+    def set_phase(self, state) -> None:
+        self.mode = state
+
+    def end_margin(self, q) -> float | None:
+        raise NotImplementedError
+
+    def watch(self, lam, q, v, t):
+        m = None if self.mode == "off" else self.end_margin(q)
+        return [] if m is None else [("leaves", m)]
+
+    def reads_forces(self) -> bool:
+        return False
+
+
 @dataclass(kw_only=True)
-class Slider(ListRows):
+class Slider(RunsOffEnds, ListRows):
     """The body's centre stays on the line through its position at t = 0 parallel to the
     surface; a rigid body keeps its angle.  On a surface with ends (``length``) the body leaves
     it where its centre passes an end (the event ``leaves``; mode "off": no rows, free from then
@@ -291,18 +314,8 @@ class Slider(ListRows):
     def rows(self):
         return 0 if self.mode == "off" else 1 if self.theta0 is None else 2
 
-    def phase(self):
-        return self.mode
-
-    def set_phase(self, state) -> None:
-        self.mode = state
-
-    def watch(self, lam, q, v, t):
-        m = None if self.mode == "off" else self.surface.ends_margin(self.body_point.xy(q))
-        return [] if m is None else [("leaves", m)]
-
-    def reads_forces(self) -> bool:
-        return False
+    def end_margin(self, q) -> float | None:
+        return self.surface.ends_margin(self.body_point.xy(q))
 
     def phi_list(self, q, t):
         if self.mode == "off":
