@@ -291,27 +291,26 @@ def _union_branch(cls, raw: Any, errors: list) -> list:
     groups = {at: ms for at, ms in groups.items() if len(ms) >= 2}     # a plain union reports each member
     if not groups:
         return errors
-    keep: dict[tuple, tuple[str, int]] = {}
+    keep: dict[tuple, str] = {}         # the member kept at each union's place ("": none, one message)
+    said = []
     for at, members in groups.items():
         fitting = {m: es for m, es in members.items()
                    if not all(e["type"] in _WRONG_KIND and len(e["loc"]) == len(at) + 1 for e in es)}
-        pick = min(fitting or members, key=lambda m: len((fitting or members)[m]))
-        keep[at] = (pick, len(at))
+        keep[at] = min(fitting, key=lambda m: len(fitting[m])) if fitting else ""
         if not fitting:
             what = _description(cls, at[:-1] if at and isinstance(at[-1], int) else at, 240)
-            first = next(iter(members.values()))[0]
-            errors.append({"type": "dyncli", "loc": at, "input": first.get("input"),
-                           "msg": f"got {_shown(first.get('input'))}; expected {what or 'another kind of value'}"})
-            keep[at] = ("", len(at))
+            given = next(iter(members.values()))[0].get("input")
+            said.append({"type": "dyncli", "loc": at, "input": given,
+                         "msg": f"got {_shown(given)}; expected {what or 'another kind of value'}"})
     out = []
     for err in errors:
         loc = tuple(err["loc"])
         k = _member_tag(raw, loc)
         if k is None or loc[:k] not in keep:
             out.append(err)
-        elif keep[loc[:k]][0] == str(loc[k]):
+        elif keep[loc[:k]] == str(loc[k]):
             out.append(dict(err, loc=loc[:k] + loc[k + 1:]))
-    return out
+    return out + said
 
 
 def _strip_tags(raw: Any, loc) -> tuple:

@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build, start
 from .dynamics import SceneSystem
-from .contacts import Contact, Rolls
+from .contacts import Contact
 
 EPS = float(np.finfo(float).eps)
 
@@ -318,9 +318,10 @@ def _initial_modes(system, q, v) -> None:
     if not at_rest:
         return
     J = system.jac(q)
-    if assembly.rank(J) < J.shape[0]:
+    redundant = assembly.rank(J) < J.shape[0]
+    if redundant:
         _pull_determined(system, q, v)
-    verdict = _slide_together(system, q, v, at_rest) if assembly.rank(J) < J.shape[0] else None
+    verdict = _slide_together(system, q, v, at_rest) if redundant else None
     if verdict == "slides":
         at_rest = [e for e in at_rest if e.mode == "stick"]
         J = system.jac(q)
@@ -345,7 +346,6 @@ def _initial_modes(system, q, v) -> None:
         worst.mode, worst.sign = "slide", sign
         at_rest.remove(worst)
         system.refresh()
-
 
 
 def _pull_determined(system, q, v) -> None:
