@@ -236,7 +236,7 @@ def validate_model(lp: LoadedProblem, cls, raw: dict, params: dict[str, float]):
         return cls.model_validate(raw, context={"params": params, "base_dir": lp.base_dir}), None
     except ValidationError as exc:
         diags, seen = [], set()
-        errors = _union_branch(cls, raw, exc.errors(include_url=False))
+        errors = _renamed(cls, raw, _union_branch(cls, raw, exc.errors(include_url=False)))
         for err in errors[:MAX_ERRORS]:
             loc = _strip_tags(raw, err["loc"])
             if loc not in seen:   # one message per field (a union reports each member)
@@ -335,13 +335,54 @@ def _strip_tags(raw: Any, loc) -> tuple:
     return tuple(out)
 
 
+#: names students write for a field (a position, a velocity, a mass), tried after the spelling
+_ALIASES = {"at": "x", "pos": "x", "position": "x", "x0": "x", "r0": "x", "vel": "v", "velocity": "v",
+            "v0": "v", "m": "mass", "theta": "angle", "phi": "angle", "w": "omega", "inertia": "I"}
+
+
+def _meant(key: str, fields: list[str]) -> str | None:
+    """The field an unknown ``key`` most likely means: a close spelling, a field it abbreviates
+    (the only one it begins), or a common name for it (``at`` for ``x``); None."""
+    hint = did_you_mean(key, fields)
+    if hint:
+        return hint.split("'")[1]
+    starts = [f for f in fields if f.lower().startswith(key.lower()) and f != key]
+    if len(starts) == 1:
+        return starts[0]
+    alias = _ALIASES.get(key)
+    return alias if alias in fields else None
+
+
+def _renamed(cls, raw: Any, errors: list) -> list:
+    """One message for a required field written under another name (``m: 2`` for ``mass``):
+    the unknown key's message names the field; the field's own "missing" is dropped."""
+    extras = {}
+    for err in errors:
+        loc = _strip_tags(raw, err["loc"])
+        if err["type"] == "extra_forbidden" and loc:
+            meant = _meant(str(loc[-1]), _fields_at(cls, loc[:-1]))
+            if meant:
+                extras[loc[:-1] + (meant,)] = err
+    out = []
+    for err in errors:
+        loc = _strip_tags(raw, err["loc"])
+        if err["type"] == "missing" and loc in extras:
+            extras[loc]["required"] = _description(cls, loc) or "required"
+            continue
+        out.append(err)
+    return out
+
+
 def _message(cls, err: Mapping[str, Any]) -> str:
     t = err["type"]
     loc = tuple(err["loc"])
     if t == "extra_forbidden":
         key = str(loc[-1]) if loc else "?"
         fields = _fields_at(cls, loc[:-1])
-        hint = did_you_mean(key, fields) if fields else ""
+        meant = _meant(key, fields) if fields else None
+        if meant and err.get("required"):
+            return f"unknown field '{key}': rename it '{meant}' (required: {err['required']})"
+        hint = f" (did you mean '{meant}'?)" if meant else ""
         known = f"; known fields: {', '.join(sorted(fields))}" if fields and not hint else ""
         return f"unknown field '{key}'{hint}{known}"
     if t == "missing":

@@ -89,6 +89,7 @@ def setup(plan: build.Plan) -> Scene:
     _initial_modes(system, q, v)
     start.settle(system, q, v)
     _refuse_at_start(system, q, v)
+    _guided_aside(system, q, v, warnings.append)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
@@ -272,6 +273,30 @@ def _tangent(end, u, q):
     if end.centre is not None:
         return end.centre.pos(q)
     return end.fixed
+
+
+def _guided_aside(system, q, v, warn) -> None:
+    """A hanging mass is guided along its segment's direction of t = 0 (as textbooks treat it):
+    exact while its loads pull along that line.  A guide that has to push the mass sideways at
+    t = 0 (a mass placed off the vertical below its pulley, a sideways force on it) is told: a
+    mass hanging free would swing there."""
+    guides = [(i, e) for i, e in enumerate(system.elements) if e.kind == "guide"]
+    if not guides:
+        return
+    _, lam, _ = system.solve(q, v, 0.0)
+    scale = float(np.max(np.abs(lam), initial=0.0))
+    for i, e in guides:
+        G = abs(float(system.lam_of(lam, i)[0]))
+        if G <= 1e-9 * scale:
+            continue
+        cord = e.name.partition(":")[0]
+        tilt = math.degrees(math.acos(min(abs(float(e.w[0])), 1.0)))     # the segment's angle from e2
+        warn(f"the cord {cord!r} holds {e.P.body.name!r} on its segment's line of t = 0 ({tilt:.3g}° from the "
+             f"vertical) with a "
+             f"sideways force of {G:.6g} N: a mass hanging over a pulley is guided along its segment, exact while its "
+             "loads pull along that line; here they do not, and a mass hanging free would swing. Place it so that "
+             "its segment runs along the pull (straight below the pulley's rim under gravity), or hang it from a "
+             "point by a string (a cord of two points), whose direction turns")
 
 
 def _refuse_massless(system, q, plan) -> None:

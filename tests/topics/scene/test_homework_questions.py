@@ -177,6 +177,34 @@ at: [0]
     assert any("meets 'A' at 5.72°" in w for w in rec["warnings"]), rec["warnings"]
 
 
+def test_masses_hung_off_the_vertical_below_a_pulley_are_told_they_would_swing():
+    # A and B placed 0.3 m either side of the pulley's centre (a radius of 0.1): each segment
+    # leaves the rim at θ from the vertical, tan-geometry from the centre: θ = atan(0.3/1) −
+    # asin(0.1/√(0.3² + 1²)) (the tangent from the mass to the circle).  Each mass is guided
+    # along its segment (the documented model): the guide pushes it sideways with m g sin θ,
+    # which the warning gives — a mass hanging free would swing there.  Straight below the rim
+    # (x1 = ±0.1) no guide pushes and nothing is said.
+    text = """
+type: scene
+bodies:
+  A: {{shape: point, mass: 3, x: [-{d}, -1]}}
+  B: {{shape: point, mass: 2, x: [{d}, -1]}}
+joints:
+  rope: {{cord: [A, {{pulley: [0, 0], radius: 0.1}}, B]}}
+at: [0]
+"""
+    rec = solve_one_text(text.format(d=0.3))
+    theta = mp.atan(mp.mpf("0.3")) - mp.asin(mp.mpf("0.1") / mp.sqrt(mp.mpf("0.3") ** 2 + 1))
+    for body, m in (("A", 3), ("B", 2)):
+        said = [w for w in rec["warnings"] if f"holds '{body}'" in w]
+        assert len(said) == 1, rec["warnings"]
+        got = float(said[0].split("sideways force of ")[1].split(" N")[0])
+        assert abs(got - float(m * G * mp.sin(theta))) <= 1e-5 * m * G, (got, said)
+        assert f"{float(mp.degrees(theta)):.3g}° from the vertical" in said[0] and "would swing" in said[0]
+    straight = solve_one_text(text.format(d=0.1))
+    assert straight["warnings"] == [], straight["warnings"]
+
+
 def test_a_given_velocity_the_joints_forbid_is_projected_with_a_warning():
     # a point on the floor given an upward component: the given rates themselves violate the
     # contact, so they are projected (mass-weighted) and the warning shows the values used

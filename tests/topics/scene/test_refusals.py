@@ -73,6 +73,19 @@ def test_unknown_body_through_cli(tmp_path):
     cli_refusal(tmp_path, PENDULUM.format(P="rdo.end1"), "joints.p.pin.0", "did you mean 'rod'")
 
 
+def test_a_field_written_under_another_name_is_one_message(tmp_path):
+    # `m` for `mass` is one slip, not two ("mass missing" and "unknown m"): the unknown key's
+    # message names the field to rename it to; `at` for `x` gets a "did you mean"
+    f = tmp_path / "bad.yaml"
+    f.write_text("type: scene\nbodies:\n  A: {m: 2, shape: point, at: [0, 0]}\nat: [0]\n")
+    code, out, err = run_cli("solve", str(f))
+    lines = [ln for ln in (out + err).splitlines() if "bad.yaml:" in ln]
+    assert code == 2 and len(lines) == 2, out + err
+    assert "bodies.A.m: unknown field 'm': rename it 'mass' (required: mass [kg])" in lines[0], lines
+    assert "bodies.A.at: unknown field 'at' (did you mean 'x'?)" in lines[1], lines
+    assert not any("missing" in ln for ln in lines), lines
+
+
 def test_unknown_point_did_you_mean():
     refusal(PENDULUM.format(P="rod.edn1"), "joints.p.pin.0", "edn1", "did you mean", "end1")
 
