@@ -40,12 +40,20 @@ from dyncli.errors import InputError, NumericalError
 from dyncli.rootfind import NotANumber, root
 from dyncli.expr import did_you_mean
 
-__all__ = ["AtTime", "When", "Extreme", "Query", "parse_queries", "answer", "SUBDIVIDE"]
+__all__ = ["AtTime", "When", "Extreme", "Event", "Query", "parse_queries", "answer", "SUBDIVIDE"]
 
 SUBDIVIDE = 4       #: pieces each break interval is cut into before the sign tests
 _EPS, _TINY = 2.220446049250313e-16, 5e-324
-_KEYS = {"t": ("t",), "when": ("when", "direction", "occurrence"), "max": ("max", "within"), "min": ("min", "within")}
-_ALL_KEYS = ("t", "when", "direction", "occurrence", "max", "min", "within")
+_KEYS = {"t": ("t",), "when": ("when", "direction", "occurrence"), "max": ("max", "within"), "min": ("min", "within"),
+         "event": ("event", "joint", "occurrence")}
+_ALL_KEYS = ("t", "when", "direction", "occurrence", "max", "min", "within", "event", "joint")
+_OWNERS = {"direction": "when", "occurrence": "when or event", "within": "max and min", "joint": "event"}
+#: what students call an event, for the "did you mean" of an event query
+_EVENT_WORDS = {"rolls": "sticks", "rolling": "sticks", "stops_slipping": "sticks", "slides": "slips",
+                "slip": "slips", "slipping": "slips", "lifts": "separates", "lifts_off": "separates",
+                "separate": "separates", "leaves_wall": "separates", "hits": "impact", "strikes": "impact",
+                "collides": "impact", "lands": "impact", "bounces": "impact", "stops": "rests", "rest": "rests",
+                "at_rest": "rests", "goes_slack": "slack", "tight": "taut", "leave": "leaves", "falls_off": "leaves"}
 _EXPR = "a number or a constant expression such as \"pi/2\" or \"30*deg\""
 
 
@@ -75,7 +83,17 @@ class Extreme:
     index: int = 0
 
 
-Query = Union[AtTime, When, Extreme]
+@dataclass(frozen=True)
+class Event:
+    """``{event: WHAT, joint: NAME, occurrence: n}``: the n-th event WHAT (of joint NAME, or of any
+    joint) of a motion that reports events (a scene's one-sided joints: separates, slips, ...)."""
+    what: str
+    joint: str | None = None
+    occurrence: int = 1
+    index: int = 0
+
+
+Query = Union[AtTime, When, Extreme, Event]
 
 
 def _kind(x: Any) -> str:
@@ -127,20 +145,29 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
         if key not in _ALL_KEYS:
             raise InputError(f"unknown key {str(key)!r}{did_you_mean(str(key), _ALL_KEYS)}; a query has one of t, "
                              "when (with direction, occurrence), max or min (with within)", f"{base}.{key}")
-    kinds = [k for k in ("t", "when", "max", "min") if k in q]
+    kinds = [k for k in ("t", "when", "max", "min", "event") if k in q]
     if len(kinds) != 1:
         raise InputError(f"a query asks one thing: give '{kinds[0]}' and '{kinds[1]}' as two queries" if kinds else
-                         f"a query needs one of t, when, max or min, not only {', '.join(q) or 'nothing'}",
+                         f"a query needs one of t, when, max, min or event, not only {', '.join(q) or 'nothing'}",
                          f"{base}.{kinds[1]}" if kinds else base)
     kind = kinds[0]
     for key in q:
         if key not in _KEYS[kind]:
-            owner = "when" if key in ("direction", "occurrence") else "max and min"
-            raise InputError(f"'{key}' goes with {owner} only, not with '{kind}': remove it", f"{base}.{key}")
+            raise InputError(f"'{key}' goes with {_OWNERS[key]} only, not with '{kind}': remove it", f"{base}.{key}")
     if kind == "t":
         return AtTime(_number(constant, q["t"], f"{base}.t", "the time t"), index=i)
     if kind == "when":
         return _parse_when(q, base, i, constant)
+    if kind == "event":
+        what = q["event"]
+        if not isinstance(what, str) or not what.strip():
+            raise InputError(f"event names what happens, such as event: sticks or event: separates, got {_kind(what)}",
+                             f"{base}.event")
+        joint = q.get("joint")
+        if joint is not None and (not isinstance(joint, str) or not joint.strip()):
+            raise InputError(f"joint names the joint whose event is asked (a key under joints), got {_kind(joint)}",
+                             f"{base}.joint")
+        return Event(what.strip(), joint.strip() if joint else None, _occurrence(q, base), index=i)
     within = _parse_within(q["within"], base, constant) if "within" in q else None
     return Extreme(_path(q[kind], f"{base}.{kind}", f"the result of {kind}"), kind, within, index=i)
 
@@ -169,6 +196,10 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
         hint = did_you_mean(d, ("up", "down", "any")) if isinstance(d, str) else ""
         raise InputError(f"direction must be up, down or any, got {d!r}{hint}" if isinstance(d, str) else
                          f"direction must be up, down or any, got {_kind(d)}", f"{base}.direction")
+    return When(path, value, d, _occurrence(q, base), index=i)
+
+
+def _occurrence(q: dict, base: str) -> int:
     n = q.get("occurrence", 1)
     n = int(n) if isinstance(n, float) and n.is_integer() else n
     if isinstance(n, bool) or not isinstance(n, int):
@@ -178,7 +209,7 @@ def _parse_when(q: dict, base: str, i: int, constant: Callable[[Any], float]) ->
         shown = str(n) if abs(n) < 10 ** 12 else f"{float(n):.3g}"
         raise InputError(f"occurrence must be 1 or more: it counts from 1 (the first crossing), got {shown}",
                          f"{base}.occurrence")
-    return When(path, value, d, n, index=i)
+    return n
 
 
 def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None = None) -> list[dict]:
@@ -192,6 +223,10 @@ def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None =
             ok = motion.t0 <= q.t <= motion.t_end
             out.append({"t": float(q.t) if ok else None, "reached": ok, "at_end": None})
             continue
+        if isinstance(q, Event):
+            t = _event(motion, q)
+            out.append({"t": t, "reached": t is not None, "at_end": None})
+            continue
         _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
         try:
             t, at_end = (_when(motion, q, notes), None) if isinstance(q, When) else _extreme(motion, q)
@@ -200,6 +235,27 @@ def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None =
                                  "overflows the doubles there): search a shorter span (t_end or within)") from None
         out.append({"t": t, "reached": t is not None, "at_end": at_end})
     return out
+
+
+def _event(motion: Any, q: Event) -> float | None:
+    """The time of the n-th event asked (None when fewer happen): the motion's ``events()``, a list
+    of (t, joint, what) in time order, with ``event_kinds`` and ``joint_names`` for the checks."""
+    where = f"find.{q.index}"
+    events = getattr(motion, "events", None)
+    if events is None:
+        raise InputError("event queries are for scenes (the events of their one-sided joints); ask "
+                         "when: {RESULT: VALUE} for the moment a result reaches a value", f"{where}.event")
+    kinds = motion.event_kinds
+    if q.what not in kinds:
+        near = _EVENT_WORDS.get(q.what.lower())
+        hint = f" (did you mean '{near}'?)" if near in kinds else did_you_mean(q.what, kinds)
+        raise InputError(f"no event {q.what!r}{hint}; the events are {', '.join(kinds)}", f"{where}.event")
+    if q.joint is not None and q.joint not in motion.joint_names:
+        names = motion.joint_names
+        raise InputError(f"no joint {q.joint!r}{did_you_mean(q.joint, names)}; the joints are {', '.join(names) or 'none'}",
+                         f"{where}.joint")
+    hits = [t for t, joint, what in events() if what == q.what and (q.joint is None or joint == q.joint)]
+    return float(hits[q.occurrence - 1]) if len(hits) >= q.occurrence else None
 
 
 def _check_path(motion: Any, path: str, where: str) -> None:

@@ -54,11 +54,15 @@ class Piece:
     quad: tuple | None = None      # constant accelerations: (t0, q0, v0, a), q = q0 + v0 τ + a τ²/2, τ = t − t0
 
 
+#: what a one-sided joint's event can be (docs/types/scene.md, "One-sided joints, events and phases")
+EVENT_KINDS = ("separates", "slack", "slips", "sticks", "leaves", "impact", "taut", "rests")
+
+
 @dataclass
 class Event:
     t: float
     joint: str
-    what: str
+    what: str               # one of EVENT_KINDS
 
 
 @dataclass

@@ -12,6 +12,7 @@ from dyncli import queries as _q
 from dyncli.expr import constant
 
 from . import report
+from .motion import EVENT_KINDS
 
 
 class SceneMotion:
@@ -31,6 +32,16 @@ class SceneMotion:
         self.breaks_for: Callable[[str], list[float]] | None = None
         self.monotone, self.cuts_approximate = False, False
         self.subdivide: int | None = None
+
+    event_kinds = EVENT_KINDS
+
+    @property
+    def joint_names(self) -> list[str]:
+        return [e.name for e in self.traj.system.elements if e.kind != "guide"]
+
+    def events(self) -> list[tuple[float, str, str]]:
+        """(t, joint, what) of every event up to the end searched, in time order."""
+        return [(ev.t, ev.joint, ev.what) for ev in self.traj.events if ev.t <= self.t_end]
 
     def _flat(self, t: float) -> dict:
         got = self._cache.get(t)
