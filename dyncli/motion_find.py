@@ -384,8 +384,9 @@ class Odometer:
         """Per piece: whether some column's speeds are not resolved by the rule to ``rtol`` — its
         error per unit time above rtol × (the piece's mean speed + the column's mean speed over
         the whole motion: a piece where the body nearly rests, whose speeds are mostly rounding,
-        is held to the motion's scale, not to its own), or above the rounding of the column's
-        largest speed.  The rule integrates exactly the Legendre series of degree < nodes
+        is held to the motion's scale, not to its own), or above the rounding of the largest speed
+        of every column (the columns are one motion's points: a pinned centre whose speed is the
+        rounding of the others' is resolved at that rounding).  The rule integrates exactly the Legendre series of degree < nodes
         interpolated at its nodes; what it misses are the coefficients beyond (its first error
         term is the degree 2·nodes one), foreseen from the series' last four: with c_{n−4} …
         c_{n−1} decaying by a ratio ρ per degree (the larger of the even and the odd terms'
@@ -404,7 +405,8 @@ class Odometer:
             rho2 = np.maximum(c[..., 2] / c[..., 0], c[..., 3] / c[..., 1])       # ρ², from both parities
             rho = np.sqrt(np.where(np.isfinite(rho2) & (rho2 < 1.0), rho2, 1.0))
             err = np.maximum(c[..., 2], c[..., 3]) * rho ** (self.x.size + 1)
-            bad = ~(err <= rtol * (mean + overall[None, :]) + 64 * EPS_T * top[None, :])
+            floor = 64 * EPS_T * np.maximum(top, float(top.max(initial=0.0)))    # the rounding of the largest
+            bad = ~(err <= rtol * (mean + overall[None, :]) + floor[None, :])
         return bad.any(axis=1)
 
     def _where(self, t):
@@ -444,7 +446,8 @@ class Odometer:
         np = self.np
         S3 = S if S.ndim == 3 else S[:, :, None]
         dips = S3.min(axis=1) < 0.25 * S3.max(axis=1)
-        if only is not None:
+        dips &= S3.max(axis=1) > 64 * EPS_T * float(S3.max(initial=0.0))   # (not a point at rest: its
+        if only is not None:                                                   # speeds the others' rounding)
             dips &= only[:, None]
         piece, col = np.nonzero(dips)
         if not piece.size:

@@ -325,7 +325,7 @@ def test_answers_in_order_and_frozen_queries():
     ([3], "find.0", ["mapping"]),
     ([{"whn": {"x": 1}}], "find.0.whn", ["did you mean 'when'"]),
     ([{"max": "x", "withn": [0, 1]}], "find.0.withn", ["did you mean 'within'"]),
-    ([{"direction": "up"}], "find.0", ["one of t, when, max or min"]),
+    ([{"direction": "up"}], "find.0", ["one of t, when, max, min or event"]),
     ([{"max": "x", "min": "x"}], "find.0.min", ["two queries"]),
     ([{"t": 1, "occurrence": 2}], "find.0.occurrence", ["goes with when"]),
     ([{"when": {"x": 1}, "within": [0, 1]}], "find.0.within", ["goes with max and min"]),

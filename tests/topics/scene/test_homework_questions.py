@@ -205,6 +205,26 @@ at: [0]
     assert straight["warnings"] == [], straight["warnings"]
 
 
+def test_a_pinned_wheel_travels_no_distance_and_its_rounding_is_not_a_warning():
+    # the wheel's centre is pinned: its speed is the rounding of the solve (1e-34 m/s here), which
+    # the distance's quadrature once tried to resolve to its own scale and warned about; the
+    # rounding of the scene's largest speed is resolved enough
+    rec = solve_one_text("""
+type: scene
+bodies:
+  wheel: {shape: disk, mass: 4, radius: 0.2, x: [0, 0], angle: 0, points: {rim: [0, 0.2]}}
+  m: {shape: point, mass: 2, x: [0.2, -1]}
+joints:
+  axle: {pin: [wheel, ground]}
+  rope: {cord: [{wound: wheel, radius: 0.2, side: right}, m]}
+forces:
+  - {spring: [wheel.rim, [-1, 0.2]], k: 200, L: 1}
+at: [0, 0.5]
+""")
+    assert not any(w.startswith("distance") for w in rec["warnings"]), rec["warnings"]
+    assert abs(rec["results"]["distance"]["wheel"][1]) < 1e-12
+
+
 def test_a_given_velocity_the_joints_forbid_is_projected_with_a_warning():
     # a point on the floor given an upward component: the given rates themselves violate the
     # contact, so they are projected (mass-weighted) and the warning shows the values used
