@@ -28,10 +28,35 @@ def length_scale(q, system) -> float:
     return s if s > 0 else 1.0
 
 
-def assemble(system, q, free, t: float = 0.0, iters: int = 60) -> np.ndarray:
+#: the turns tried on the free angles when Newton's method stalls from the sketch (a rod drawn
+#: level whose end must reach a wall: the wall's row does not move the angle there)
+RESTART_TURNS = (math.pi / 4, -math.pi / 4, math.pi / 2, -math.pi / 2, 3 * math.pi / 4, -3 * math.pi / 4, math.pi)
+
+
+def assemble(system, q, free, t: float = 0.0, iters: int = 60, restarts: bool = True) -> np.ndarray:
+    """The positions left out (``free``) placed by the joints: Newton's method (least squares,
+    damped) from the sketch; where it stalls with the joints not closed — a sketch at a position
+    where the rows do not move a free angle — again from the free angles turned by each of
+    :data:`RESTART_TURNS` in turn, the first that closes them kept (else the sketch's, for the
+    refusal to name the gap)."""
     q = q.astype(float).copy()
     if not np.any(free) or system.m == 0:
         return q
+    got = _newton(system, q, free, t, iters)
+    if not restarts or not gaps(system, got, t):
+        return got
+    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.")]
+    for turn in RESTART_TURNS if angles else ():
+        q2 = q.copy()
+        q2[angles] += turn
+        q2 = _newton(system, q2, free, t, iters)
+        if not gaps(system, q2, t):
+            return q2
+    return got
+
+
+def _newton(system, q, free, t: float, iters: int) -> np.ndarray:
+    q = q.copy()
     cols = np.nonzero(free)[0]
     tol = 1e-14 * length_scale(q, system)
     for _ in range(iters):
@@ -62,7 +87,7 @@ def other_branch(system, q, free, t: float = 0.0):
         for trial in (-q[k], q[k] + math.pi, q[k] - math.pi / 2, q[k] + math.pi / 2):
             q2 = q.copy()
             q2[k] = trial
-            q2 = assemble(system, q2, free, t)
+            q2 = assemble(system, q2, free, t, restarts=False)
             if gaps(system, q2, t):
                 continue
             d = (q2 - q + math.pi) % (2 * math.pi) - math.pi

@@ -225,6 +225,41 @@ at: [0, 0.5]
     assert abs(rec["results"]["distance"]["wheel"][1]) < 1e-12
 
 
+def test_a_ladder_whose_foot_is_pulled_placed_by_its_joints_from_a_level_sketch():
+    # the rod's position left out: the joints place it from the level sketch (angle 0, where the
+    # wall's row does not move the angle: Newton's method restarts from turned angles).  With the
+    # foot at x_A = 3 (L = 5) pulled at 2 m/s and φ the angle to the floor: x_A = L cos φ gives
+    # φ̇ = −ẋ_A/(L sin φ), φ̈ = −cos φ φ̇²/sin φ (ẍ_A = 0); the top y_B = L sin φ moves at
+    # L cos φ φ̇ with ÿ_B = L (cos φ φ̈ − sin φ φ̇²); the rod's angle is π − φ
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+  wall: {through: [0, 0], direction: [0, -1]}
+bodies:
+  foot: {shape: point, mass: 1, x: [3, 0]}
+  rod: {shape: rod, mass: 10, length: 5}
+joints:
+  A: {pin: [rod.end1, foot]}
+  top: {contact: [rod.end2, wall]}
+  fl: {slider: [foot, floor]}
+  pull: {drive: foot.x1, value: "3 + 2*t"}
+at: [0]
+""")
+    r = rec["results"]
+    L, xa = mp.mpf(5), mp.mpf(3)
+    phi = mp.acos(xa / L)
+    pd = -2 / (L * mp.sin(phi))
+    pdd = -mp.cos(phi) * pd ** 2 / mp.sin(phi)
+    assert r["route"] == "kinematics"
+    near(r["angle"]["rod"][0], mp.pi - phi, 1, "angle")
+    near(r["omega"]["rod"][0][2], -pd, 1, "omega")
+    near(r["alpha"]["rod"][0][2], -pdd, 1, "alpha")
+    near(r["point"]["rod"]["end2"]["v"][0][1], L * mp.cos(phi) * pd, 1, "v_B")
+    near(r["point"]["rod"]["end2"]["a"][0][1], L * (mp.cos(phi) * pdd - mp.sin(phi) * pd ** 2), 1, "a_B")
+    assert any("close two ways" in w for w in rec["warnings"]), rec["warnings"]
+
+
 def test_a_given_velocity_the_joints_forbid_is_projected_with_a_warning():
     # a point on the floor given an upward component: the given rates themselves violate the
     # contact, so they are projected (mass-weighted) and the warning shows the values used
