@@ -127,21 +127,41 @@ def _refuse_off_surface(e: Any, q, placed: str) -> None:
     stop, for a body that lands there), or the depth through it with the surface's normal."""
     gap = float(e.gap(q))
     label = (getattr(e, "P", None) or e.body_point).label
+    centre = _centre_hint(e)
     if gap > 0:                         # off its surface, on its side
         land = (f", or, for a body that lands on it, make the joint a stop (stop: [{label}, {e.surface.name}], e: E), "
                 "which starts open and is made where it strikes" if e.kind == "contact" else "")
+        fix = centre or (f"place it on the surface or leave its position out so that the joint places it{land}")
         raise InputError(f"the positions given violate the {e.kind} joint {e.name!r}: a gap of {gap:.6g} m ({label} is "
                          f"off the surface {e.surface.name!r}; a {'contact' if e.kind == 'contact' else 'rolling body'} "
-                         f"starts touching){placed}: place it on the surface or leave its position out so that the "
-                         f"joint places it{land}", e.path)
+                         f"starts touching){placed}: {fix}", e.path)
     if gap < 0:                         # through its surface
         nf = getattr(e, "normal", None)
         n = [0.0 if abs(c) < 1e-12 else float(c) for c in (nf(q) if nf is not None else e.surface.n)]
         side = "increasing q" if getattr(e.surface, "curved", False) else "its direction d̂"
+        fix = centre or ("place it on the surface or on the side n points to, or reverse the surface's direction if "
+                         "the body is on the other side")
         raise InputError(f"{label} is given {-gap:.6g} m through the surface {e.surface.name!r} of the {e.kind} joint "
                          f"{e.name!r}, which pushes along n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}){placed}: "
-                         "place it on the surface or on the side n points to, or reverse the surface's direction if "
-                         "the body is on the other side", e.path)
+                         f"{fix}", e.path)
+
+
+def _centre_hint(e: Any) -> str:
+    """For a contact at a sized body's centre (the body named alone): that the point is the centre
+    — a box rests on a face, a disk rolls — and what to write."""
+    P = getattr(e, "P", None)
+    b = P.body if P is not None and e.kind == "contact" else None
+    if b is None or P.p != (0.0, 0.0) or b.shape not in ("box", "disk", "ring", "rod"):
+        return ""
+    head = f"a body named alone touches with its centre: "
+    if b.shape == "box":
+        return head + (f"for {b.name!r} resting on a face, name a point of that face (points: {{bottom: [0, "
+                       f"{-b.size[1] / 2:g}]}}, contact: [{b.name}.bottom, {e.surface.name}]) with its angle along the "
+                       "surface, or, for a block that only slides, make it a point body on the surface")
+    if b.shape in ("disk", "ring"):
+        return head + (f"a {b.shape} on a surface is rolls: [{b.name}, {e.surface.name}] (its rim on the surface), or a "
+                       "contact at a point of its rim")
+    return head + f"name an end, {b.name}.end1 or {b.name}.end2"
 
 
 def rank(J: np.ndarray) -> int:

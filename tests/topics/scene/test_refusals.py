@@ -233,6 +233,19 @@ def test_body_refusals(body, field, words):
 
 # --- assembly and degrees of freedom ------------------------------------------------------------------
 
+@pytest.mark.parametrize("body,words", [
+    ("{shape: box, mass: 2, size: [1, 0.4], x: [0, 0.2], angle: 0}",
+     ["touches with its centre", "points: {bottom: [0, -0.2]}", "contact: [B.bottom, floor]", "point body"]),
+    ("{shape: disk, mass: 2, radius: 0.3, x: [0, 0.3], angle: 0}", ["touches with its centre", "rolls: [B, floor]"]),
+    ("{shape: rod, mass: 2, length: 1, x: [0, 0.5], angle: 0}", ["touches with its centre", "B.end1"]),
+])
+def test_a_contact_at_a_sized_bodys_centre_says_the_centre_touches(body, words):
+    # a box (disk, rod) named alone in a contact touches with its centre: drawn resting on the floor,
+    # its centre is off it; the refusal says so and what to write
+    refusal(f"type: scene\nsurfaces:\n  floor: {{through: [0, 0], direction: [1, 0]}}\nbodies:\n  B: {body}\n"
+            "joints:\n  c: {contact: [B, floor]}\nat: [0]\n", "joints.c", "gap of", *words)
+
+
 def test_given_position_violates_a_pin_gap_named():
     # the rod's end1 is at [0.3, 0]; the pin wants it at [0, 0]: a gap of 0.3 m
     text = """\
