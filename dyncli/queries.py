@@ -165,8 +165,10 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
                              f"{base}.event")
         joint = q.get("joint")
         if joint is not None and (not isinstance(joint, str) or not joint.strip()):
-            raise InputError(f"joint names the joint whose event is asked (a key under joints), got {_kind(joint)}",
-                             f"{base}.joint")
+            quote = (" (YAML reads a bare on, off, yes or no as a boolean: quote the name, joint: \"on\")"
+                     if isinstance(joint, bool) else "")
+            raise InputError(f"joint names the joint whose event is asked (a key under joints), got "
+                             f"{_kind(joint)}{quote}", f"{base}.joint")
         return Event(what.strip(), joint.strip() if joint else None, _occurrence(q, base), index=i)
     within = _parse_within(q["within"], base, constant) if "within" in q else None
     return Extreme(_path(q[kind], f"{base}.{kind}", f"the result of {kind}"), kind, within, index=i)

@@ -84,6 +84,7 @@ def test_the_second_bounce_of_a_dropped_ball():
     ("{max: x.ball.0, joint: roll}", "find.0.joint", ["goes with event only"]),
     ("{event: sticks, occurrence: 0}", "find.0.occurrence", ["counts from 1"]),
     ("{event: 3}", "find.0.event", ["event names what happens"]),
+    ("{event: sticks, joint: on}", "find.0.joint", ["the boolean True", 'quote the name, joint: "on"']),
     ("{event: sticks, when: {x.ball.0: 1}}", "find.0.event", ["one thing"]),
 ])
 def test_invalid_event_queries(query, field, words):

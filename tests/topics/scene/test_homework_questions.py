@@ -714,3 +714,30 @@ def test_spool_pulled_at_angle_gallery():
     a = P * (mp.cos(mp.pi / 6) - r_hub / R) / (m + I0 / R ** 2)
     near(r["a"]["spool"][0][0], a, P / m, "ẍ")
     near(r["alpha"]["spool"][0][2], -a / R, P / m / R, "α")
+
+
+def test_a_rough_collar_slides_out_along_a_spun_rod():
+    # problems/scenes/rough-collar-on-spun-rod.yaml: in polar coordinates along the rod (ω constant,
+    # g = 0) m (r̈ − ω² r) = −μ N, m 2 ω ṙ = N, so r̈ + 2 μ ω ṙ − ω² r = 0 from r0 at rest on the rod;
+    # the closed form in mpmath, and the time it reaches the rod's end L as a root of r(t) = L
+    rec = gallery("rough-collar-on-spun-rod.yaml")
+    r = rec["results"]
+    m, mu, w, r0, L = mp.mpf("0.5"), mp.mpf("0.3"), mp.mpf(4), mp.mpf("0.5"), mp.mpf(2)
+    s1, s2 = w * (-mu + mp.sqrt(1 + mu ** 2)), w * (-mu - mp.sqrt(1 + mu ** 2))
+    A = r0 * -s2 / (s1 - s2)
+    B = r0 - A
+    rad = lambda t: A * mp.exp(s1 * t) + B * mp.exp(s2 * t)           # noqa: E731
+    rate = lambda t: A * s1 * mp.exp(s1 * t) + B * s2 * mp.exp(s2 * t)  # noqa: E731
+    for k, t in enumerate((0, mp.mpf("0.2"), mp.mpf("0.4"))):
+        x = r["x"]["collar"][k]
+        near(math.hypot(x[0], x[1]), rad(t), L, f"r({t})", ODE_GLOBAL)
+        N = 2 * m * w * rate(t)
+        near(r["reaction"]["sleeve"]["N"][k], N, m * w * w * L, f"N({t})", ODE_GLOBAL)
+        near(r["reaction"]["sleeve"]["F"][k], -mu * N, m * w * w * L, f"F({t})", ODE_GLOBAL)
+        near(r["drive"]["spin"][k], rad(t) * N, m * w * w * L * L, f"couple({t})", ODE_GLOBAL)
+    t_end = mp.findroot(lambda t: rad(t) - L, 0.5)
+    e = r["find"][0]
+    assert e["reached"] is True
+    near(e["t"], t_end, 1, "t at the end", ODE_GLOBAL)
+    assert [ev["what"] for ev in r["events"]] == ["leaves"]
+    assert rec["warnings"] == []
