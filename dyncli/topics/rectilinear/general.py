@@ -260,6 +260,7 @@ class _Forward:
         self.lo = [p.s1, p.v1]
         self.hi = [p.s1, p.v1]
         self.scale = [abs(p.s1), abs(p.v1)]
+        self.entered: dict[int, tuple] = {}    # query -> (when its value came within its tolerance to stay, its rate)
 
     def run(self) -> None:
         r, p, ans = self.r, self.r.p, self.ans
@@ -325,11 +326,20 @@ class _Forward:
                 lo, hi = min(vals[k], vals[k + 1]), max(vals[k], vals[k + 1])
                 if k + 1 < len(bps) - 1 and abs(X - vals[k + 1]) <= tol:
                     t, graze = bps[k + 1], True      # the target is the extremum
+                    xt = vals[k + 1]
                 elif lo <= X <= hi:
                     t, graze = root_in_bracket(lambda t: float(step.y(t)[comp]) - X, bps[k], bps[k + 1],
                                       vals[k] - X, vals[k + 1] - X), False
+                    xt = X
                 else:
+                    self._band(step, comp, i, X, tol, bps[k], bps[k + 1], vals[k], vals[k + 1])
                     continue
+                if self._creeps(step, comp, i, X, tol, bps[k], vals[k], t, xt):
+                    ans.unreached(i, f"{'sv'[comp]} only creeps toward it: within its tolerance from t = "
+                                  f"{fmt(self.entered[i][0])} on while still moving toward it (an asymptote, "
+                                  "reached as t → ∞; the integration's rounding met it later)")
+                    del queries[i]
+                    break
                 if not ans.beyond_t_max(i, t):
                     y = step.y(t)
                     if not graze:
@@ -337,6 +347,27 @@ class _Forward:
                     ans.reached(i, t, y[0], y[1])
                 del queries[i]
                 break
+
+
+    def _band(self, step, comp: int, i: int, X: float, tol: float, ta: float, tb: float, xa: float, xb: float) -> None:
+        """Keep when query i's value came within ``tol`` of X to stay, and its rate then (the piece
+        [ta, tb] of ``step``, monotone from xa to xb): forgotten once it leaves the band."""
+        if abs(xb - X) > tol:
+            self.entered.pop(i, None)
+        elif i not in self.entered:
+            edge = ta if abs(xa - X) <= tol else root_in_bracket(
+                lambda t: abs(float(step.y(t)[comp]) - X) - tol, ta, tb, abs(xa - X) - tol, abs(xb - X) - tol)
+            self.entered[i] = (edge, abs(float(step.y(edge)[1]) if comp == 0 else step.a(edge)))
+
+    def _creeps(self, step, comp: int, i: int, X: float, tol: float, ta: float, xa: float, t: float, xt: float) -> bool:
+        """Whether meeting X at t (crossed, or touched at an extreme: ``xt`` the value there) ends a
+        creep rather than a pass: the value came within ``tol`` of X at ``edge`` and took longer
+        than 4 tol / (its rate there) to meet it (a pass or a touch takes at most 2 tol / rate) — an
+        asymptote (a critically damped return, s = e^-t, creeps toward 0 and the integration's
+        rounding crosses it tens of time constants later), as the ``when`` search decides."""
+        self._band(step, comp, i, X, tol, ta, t, xa, xt)
+        edge, rate = self.entered.get(i, (t, 0.0))
+        return edge < t and (t - edge) * rate > 4 * tol
 
 
 def _event(g, ta: float, tb: float, ga: float, gb: float):

@@ -476,3 +476,37 @@ def test_case1_subnormal_acceleration():
     # a/2 underflows to 0 for a = 5e-324: the position root must not divide by it
     rec = problem("5.0e-324", [{"s": 0.2}], s1=0.1, v1=1)
     close(entries(rec)[0]["t"], 0.1)
+
+
+# -- the general route: an asymptote is not reached -----------------------------------------------
+
+def test_a_critically_damped_return_never_reaches_rest_on_the_ode_route():
+    # s̈ = −2ṡ − s from s = 1, v = −1: s = e^−t, v = −e^−t exactly (the critical root −1 twice, the
+    # initial state on its pure exponential).  Neither s nor v ever reaches 0; the integration's
+    # rounding crosses 0 tens of time constants later (at ~1e-28), which once read as "reached".
+    rec = problem("-2*v - s", [{"s": 0}, {"v": 0}], s1=1, v1=-1, t_max=50)
+    for e in entries(rec)[:2]:
+        assert is_unreached(e), e
+    said = [w for w in rec["warnings"] if "only creeps toward it" in w]
+    assert len(said) == 2 and "asymptote" in said[0], rec["warnings"]
+
+
+def test_an_underdamped_return_crosses_rest_on_the_ode_route():
+    # the same equation's neighbour s̈ = −0.2ṡ − s from s = 1 at rest crosses 0 first at the root of
+    # e^(−0.1 t) (cos ωd t + (0.1/ωd) sin ωd t), ωd = √0.99, and turns (v = 0) at t = π/ωd
+    rec = problem("-0.2*v - s", [{"s": 0}, {"v": 0}], s1=1, v1=0, t_max=50)
+    wd = mp.sqrt(mp.mpf("0.99"))
+    t0 = mp.findroot(lambda t: mp.cos(wd * t) + mp.mpf("0.1") / wd * mp.sin(wd * t), 1.6)
+    e0, e1 = entries(rec)[:2]
+    close(e0["t"], t0, 1, rtol=1e-8)
+    close(e1["t"], mp.pi / wd, 1, rtol=1e-8)
+    assert not any("creeps" in w for w in rec["warnings"]), rec["warnings"]
+
+
+def test_a_graze_at_the_top_is_reached_on_the_ode_route():
+    # thrown up at 10 m/s under gravity, forced onto the ODE route: the top v0²/(2g) is met at an
+    # extreme (a touch within the tolerance), at t = v0/g — not a creep
+    rec = problem("-9.81", [{"s": "100/19.62"}], s1=0, v1=10, accuracy="{method: ode}")
+    e = entries(rec)[0]
+    assert e["reached"] is True, (e, rec["warnings"])
+    close(e["t"], mp.mpf(10) / mp.mpf("9.81"), 1, rtol=1e-6)
