@@ -32,7 +32,6 @@ def _entries(r: dict, n: int, keys) -> list[dict]:
 def quadrature_states(p, model):
     """states(ts) on the energy-quadrature route (the same legs and nodes as its answers)."""
     from . import quadrature
-    from .report import assemble
 
     E = quadrature.Energy(p, model)
 
@@ -57,10 +56,7 @@ def quadrature_states(p, model):
     def states(ts):
         ts = [float(t) for t in ts]
         q, qd = quadrature.motion(E, ts)[:2]
-        n = len(ts)
-        Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
-        Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
-        return assemble(p, model, ts, Y, [("slide", 1.0)] * n)["results"]
+        return quadrature.results_at(p, model, E, ts, q, qd)
     states.legs = legs
     states.energy = E
     return states
@@ -80,7 +76,6 @@ def quadrature_cuts(p, model, E, t_end: float, warn) -> "dict[str, list[float]] 
     from dyncli import rootfind
 
     from . import quadrature
-    from .report import assemble
 
     asked = mf.searched_paths(p.find)
     if not asked or not t_end > 0:
@@ -93,7 +88,6 @@ def quadrature_cuts(p, model, E, t_end: float, warn) -> "dict[str, list[float]] 
     # nondecreasing along a leg (q, s: the leg runs q one way; distance): no cut of their own
     rest = sorted(a for a in asked if a not in ("q", "s", "distance"))
     table: dict[str, list[float]] = {a: [] for a in asked}
-    W0 = float(E.W(np.array([E.q0]), 1)[0])
 
     def leg_values(seg, paths):
         pc, d = seg.p, seg.dir
@@ -102,9 +96,8 @@ def quadrature_cuts(p, model, E, t_end: float, warn) -> "dict[str, list[float]] 
             xs = np.asarray(xs, dtype=float).reshape(-1)
             q, K = pc._K(xs)
             qd = np.sqrt(np.maximum(K, 0.0) / (0.5 * E.M(q))) * pc.sig * d
-            n = xs.size
-            Y = np.vstack([q, qd, np.zeros(n), E.W(q, 1) - W0, np.zeros(n), np.zeros(n)])
-            got = assemble(p, model, np.zeros(n), Y, [("slide", 1.0)] * n)["results"]
+            # (at φ = 0: the results searched do not turn with the curve, solver.TURNING)
+            got = quadrature.results_at(p, model, E, np.zeros(xs.size), q, qd, carried_s=True)
             return mf.series_values(lambda ts: got)(paths, xs)
         return values
 

@@ -226,6 +226,31 @@ def motion(E, times):
     return np.array(qs), np.array(qds), period, turns, dt, dts
 
 
+def results_at(p, model, E, ts, q, qd, carried_s: bool = False) -> dict:
+    """The reported results at the times ``ts`` with q, q̇ there: the curve turned by φ = ω t (a
+    turning curve's), W̄ from the table, and W_N — 0 on a fixed curve — the rest of the energy
+    balance on a turning one, T + V − E₁ − W̄ (the work the turning curve does on the particle).
+    ``carried_s``: a zero row for s (the caller's own arc length)."""
+    n = len(ts)
+    w = model.curve.omega_const if model.curve.rotating else 0.0
+    Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
+    rows = [q, qd, w * np.asarray(ts, float), Wn, np.zeros(n)] + ([np.zeros(n)] if carried_s else [])
+    r = assemble(p, model, ts, np.vstack(rows), [("slide", 1.0)] * n)["results"]
+    if w:       # N's power ω k·(y × N) (N ⊥ the relative velocity): ω times the change of H about the axis
+        k = model.curve.k
+        x0, v0 = (np.asarray(c, float)[:, 0] for c in model.curve.state(0.0, p.q0, p.q_dot0, 0.0)[:2])
+        H0 = float(model.m * np.dot(np.cross(x0, v0), k))
+        H = model.m * np.cross(np.asarray(r["x"], float), np.asarray(r["v"], float)) @ k
+        r["W_N"] = [float(w * (h - H0)) + 0.0 for h in H]
+    return r
+
+
+def initial_energy(p, model) -> float:
+    """T + V at t = 0 (the fixed frame's)."""
+    x0 = model.curve.state(0.0, p.q0, p.q_dot0, 0.0)
+    return float(0.5 * model.m * np.sum(x0[1] ** 2) + model.potential(x0[0])[0])
+
+
 def solve(p, model, times, fallback=True) -> Result | None:
     try:
         E = Energy(p, model)
@@ -234,16 +259,12 @@ def solve(p, model, times, fallback=True) -> Result | None:
         if fallback:
             return None
         raise NumericalError(f"method quadrature: {exc}; use method ode") from None
-    n = len(times)
-    Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
-    Y = np.vstack([q, qd, np.zeros(n), Wn, np.zeros(n)])
-    out = assemble(p, model, times, Y, [("slide", 1.0)] * n)
-    res = Result(out["results"], method="quadrature", equations=equation_numbers(model) + ["19.4", "20.1"],
+    res = Result(results_at(p, model, E, times, q, qd), method="quadrature",
+                 equations=equation_numbers(model) + ["19.4", "20.1"],
                  series=[Series("t", times, SERIES + ["distance"])])
     r = res.results
-    x0 = model.curve.state(0.0, p.q0, p.q_dot0, 0.0)
-    E1 = float(0.5 * model.m * np.sum(x0[1] ** 2) + model.potential(x0[0])[0])
-    r["energy_residual"] = max((abs(e - E1 - w) for e, w in zip(r["E"], r["W_nc"])), default=0.0)
+    E1 = initial_energy(p, model)       # (on a turning curve the balance is the Jacobi integral's, E − ω H_k)
+    r["energy_residual"] = max((abs(e - E1 - w - wn) for e, w, wn in zip(r["E"], r["W_nc"], r["W_N"])), default=0.0)
     r["period"] = period
     r["q_turn"] = [float(v) + 0.0 for v in turns]
     _estimate(res, p, E, times, dt, period)

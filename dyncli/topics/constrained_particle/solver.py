@@ -44,9 +44,27 @@ def _check_curve(p, curve: Curve) -> None:
         raise InputError(f"the initial kinetic energy ½ m (|dy/dq| q_dot0)² overflows (q_dot0 = {p.q_dot0:g})", "q_dot0")
 
 
-def quadrature_applies(p, curve) -> bool:
-    if curve.rotating or any(f.kind in ("friction", "damper", "drag") for f in p.forces):
+#: results whose components turn with the curve (in the fixed frame): a function of the time as
+#: well as of q on a turning curve, so not searched along the energy route's legs
+TURNING = ("x.", "v.", "a.", "N_vec.")
+
+
+def quadrature_applies(p, curve, model=None) -> bool:
+    """Whether the energy integral holds: a fixed curve, or one turning at constant ω about its axis
+    with every force symmetric about that axis (gravity along it, centres and anchors on it: the
+    Jacobi integral, the relative motion's energy with the centrifugal potential −½ m ω² ρ²), no
+    friction, damper or drag, forces of the position only (and on a turning curve no ``find`` of
+    a component that turns with it)."""
+    if any(f.kind in ("friction", "damper", "drag") for f in p.forces):
         return False
+    if curve.rotating:
+        if curve.omega_const is None or model is None or not model.compiled.symmetric_about(curve.k):
+            return False
+        from dyncli.motion_find import searched_paths
+
+        asked = searched_paths(p.find) if p.find else set()
+        if asked is None or any(a.startswith(TURNING) for a in asked):
+            return False
     if any(f.kind == "spring" and f.one_sided for f in p.forces):
         return False          # a one-sided spring's kink in the force: the ODE route, stepped across it
     return not any(f.kind == "custom" and (set(v for e in f.F for v in e.variables) - {"x1", "x2", "x3"})
@@ -79,10 +97,12 @@ def solve_setup(p: Setup) -> Result:
     model = dynamics.Model(p, curve)
     steadies = steady.answers(p, model) if p.steady else None     # refused before the motion is solved
     meth = p.accuracy.method
-    use_quad = meth == "quadrature" or (meth == "auto" and quadrature_applies(p, curve))
-    if meth == "quadrature" and not quadrature_applies(p, curve):
-        raise InputError("method quadrature needs a fixed curve, no friction, damper or drag, and forces of the "
-                         "position only (the energy integral); use method ode", "accuracy.method")
+    use_quad = meth == "quadrature" or (meth == "auto" and quadrature_applies(p, curve, model))
+    if meth == "quadrature" and not quadrature_applies(p, curve, model):
+        raise InputError("method quadrature needs a fixed curve (or one turning at constant omega with every force "
+                         "symmetric about its axis, and no find of a component that turns with it), no friction, "
+                         "damper or drag, and forces of the position only (the energy integral); use method ode",
+                         "accuracy.method")
     if p.find:                              # the motion runs to the end of every window searched (§11)
         from dyncli.topics.particle.setup import extended
 

@@ -93,13 +93,20 @@ class Energy:
         return (0.5 * (a + b))[..., None] + (0.5 * (b - a))[..., None] * _XG
 
     def _gen(self, q):
-        """The generalised forces F·y' (total and of the non-potential terms) at q (any shape)."""
+        """The generalised forces F·y' (total and of the non-potential terms) at q (any shape); on a
+        curve turning at constant ω the total adds the centrifugal force's, m ω² (y − k (k·y))·y'
+        (the relative motion's Jacobi integral: the Coriolis force and N do no work along the curve)."""
         shape, qf = np.shape(q), np.ravel(q)
         x = self.curve.y(qf)
         Fc, Fn = self.model.forces(np.zeros_like(qf), x, np.zeros_like(x))
         y1 = self.curve.dy(qf)
         u = self.unit
-        return (np.sum((Fc + Fn) * y1, axis=0).reshape(shape) * u, np.sum(Fn * y1, axis=0).reshape(shape) * u)
+        total = np.sum((Fc + Fn) * y1, axis=0)
+        w = self.curve.omega_const if self.curve.rotating else None
+        if w:
+            k = self.curve.k[:, None]
+            total = total + float(self.model.m) * w * w * np.sum((x - k * np.sum(k * x, axis=0)) * y1, axis=0)
+        return total.reshape(shape) * u, np.sum(Fn * y1, axis=0).reshape(shape) * u
 
     def Q(self, q):
         return self._gen(np.asarray(q, float))[0]
