@@ -201,6 +201,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
+        elif kind == "stop" and _rim_stop(name, j, R, path, n, q, out):
+            continue
         elif kind in ("contact", "stop"):
             out.append(_contact(name, kind, j, R, path, n))
         elif kind == "rolls":
@@ -260,6 +262,31 @@ def _carried_rolls(name: str, kind: str, n: int, path: str, centre: BodyPoint, s
                      mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"], e=float(j.get("e") or 0.0))
     e.c0 = e.roll_const(q)
     return e
+
+
+def _rim_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, out: list) -> bool:
+    """A stop of a disk or ring body named alone: its rim strikes the surface (a ball, a wheel, a
+    spinning disk dropped onto a floor) — a rolling joint that starts off the surface, made at the
+    impact (with e: 0 it stays on: it rolls, or slips with kinetic friction mu; smooth without mu).
+    Appended to ``out`` (True), or False for any other stop (a point's)."""
+    a = j["stop"]
+    if not (isinstance(a[0], str) and "." not in a[0] and a[0] in R.bodies):
+        return False
+    b = R.bodies[a[0]]
+    if not (b.rigid and b.radius > 0 and b.shape in ("disk", "ring")):
+        return False
+    s = R.line(a[1], path + ".1", "a disk's stop")
+    if getattr(s, "carried", False) or not isinstance(s, SurfaceData):
+        raise InputError(f"a disk's stop is on a fixed straight surface; {s.name!r} is carried by a body or curved: "
+                         "give the disk's rim point as the stop (stop: [DISK.POINT, SURFACE])", path + ".1")
+    mu = float(j["mu"] or 0.0)
+    i = b.index
+    e = contacts.Rolls(name, "rolls", n, path, body_point=BodyPoint(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
+                       c0=0.0, mu_s=mu, mu_k=mu, e=float(j.get("e") or 0.0))
+    e.mode = "off"
+    e.c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
+    out.append(e)
+    return True
 
 
 def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):

@@ -32,8 +32,8 @@ def applies(system) -> str | None:
     for e in system.elements:
         if e.kind == "drive":
             return "a drive prescribes a motion in time"
-        if e.kind == "contact" and e.mode == "slide" and e.mu_k:
-            return f"the contact {e.name!r} slides with friction"
+        if getattr(e, "mode", None) in ("slide", "slip") and getattr(e, "mu_k", 0.0):
+            return f"the joint {e.name!r} slides with friction"
     for ld in system.loads:
         if ld.kind == "damper":
             return f"{ld.label} dissipates"

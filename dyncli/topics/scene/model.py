@@ -179,7 +179,7 @@ class Joint(_OneOf):
     cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
-    stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e)")
+    stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim and then rolls or slips")
     e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
     value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
     mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None

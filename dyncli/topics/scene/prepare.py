@@ -464,7 +464,8 @@ def _refuse_at_start(system, q, v) -> None:
                                  f"{e.surface.name!r} (length {e.surface.length:g} m from its `through` point): "
                                  "place it on the surface or lengthen it", e.path)
             if what == "impact":
-                raise InputError(f"at t = 0 the point {e.P.label} is {-g:.6g} m on the wrong side of the surface "
+                who = f"the point {e.P.label}" if hasattr(e, "P") else f"the rim of {e.body_point.body.name!r}"
+                raise InputError(f"at t = 0 {who} is {-g:.6g} m on the wrong side of the surface "
                                  f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
                                  "n = e3 × d̂ (or reverse the surface's direction)", e.path)
 

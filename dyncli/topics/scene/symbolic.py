@@ -82,6 +82,9 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
             P.M.append(S.param("Ī", r"\bar{I}", b.name, b.inertia))
     D.state = (list(scene.q0), list(scene.v0))
     for e in system.elements:
+        if getattr(e, "mode", "") == "off":
+            raise ValueError(f"no symbolic form for a stop joint ({e.name!r} starts off its surface: each phase "
+                             "has its own equations in this release)")
         if e.kind == "rolls" and e.mode == "slip" or e.kind == "cord" and e.slack:
             raise ValueError(f"{e.name!r} starts {'slack' if e.kind == 'cord' else 'slipping'}, a phase without a "
                              "symbolic form in this release")

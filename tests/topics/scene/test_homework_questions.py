@@ -741,3 +741,70 @@ def test_a_rough_collar_slides_out_along_a_spun_rod():
     near(e["t"], t_end, 1, "t at the end", ODE_GLOBAL)
     assert [ev["what"] for ev in r["events"]] == ["leaves"]
     assert rec["warnings"] == []
+
+
+def test_a_spinning_disk_dropped_onto_a_rough_floor_skids_then_rolls():
+    # problems/scenes/spinning-disk-dropped.yaml: free fall to the floor, Routh's impact (the slip
+    # 5 m/s outlasts the impulse: friction −μP throughout), then the skid under μ m g until
+    # v + Rω = 0, rolling on at the speed the angular momentum about the contact point gives
+    rec = gallery("spinning-disk-dropped.yaml")
+    r = rec["results"]
+    m, R, I, mu, h, v0, w0 = 2, mp.mpf("0.1"), mp.mpf("0.01"), mp.mpf("0.3"), mp.mpf("0.4"), 2, 30
+    t1 = mp.sqrt(2 * h / G)
+    P = m * mp.sqrt(2 * G * h)
+    va, wa = v0 - mu * P / m, w0 - mu * P * R / I
+    tau = (va + R * wa) / (mu * G * (1 + m * R ** 2 / I))
+    H = -m * R * v0 + I * w0                                   # about the contact point, kept
+    im = r["impacts"][0]
+    near(im["t"], t1, 1, "t1")
+    near(im["impulse"], P, P, "P")
+    near(im["impulse_F"], -mu * P, P, "friction impulse")
+    assert im["course"] == "slides"
+    e = r["find"][0]
+    near(e["t"], t1 + tau, 1, "t2")
+    near(r["v"]["disk"][2][0], -H / (m * R + I / R), 1, "rolling speed")
+    near(r["omega"]["disk"][2][2], H / (m * R + I / R) / R, 10, "rolling rate")
+    assert [ev["what"] for ev in r["events"]] == ["impact", "sticks"] and rec["warnings"] == []
+
+
+def test_a_ball_with_spin_bouncing_on_a_smooth_floor_keeps_its_spin():
+    # a smooth floor (no mu): the impact has no friction and the flight none, so ω stays and the
+    # horizontal speed stays; the ball rises back to e² h after the bounce (e = 0.5)
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: disk, mass: 1, radius: 0.1, x: [0, 1.1], angle: 0, v: [1, 0], omega: 5}
+joints:
+  bounce: {stop: [ball, floor], e: 0.5}
+t_end: 1
+find:
+  - {event: impact}
+  - {max: x.ball.1, within: [0.5, 1]}
+""")
+    r = rec["results"]
+    t1 = mp.sqrt(2 / G)
+    near(r["find"][0]["t"], t1, 1, "t1")
+    assert r["impacts"][0]["impulse_F"] == 0
+    top = r["find"][1]
+    near(top["x"]["ball"][1], mp.mpf("0.1") + mp.mpf("0.25"), 1, "rise")
+    near(top["omega"]["ball"][2], 5, 5, "spin kept")
+    near(top["v"]["ball"][0], 1, 1, "speed kept")
+
+
+def test_a_disk_stop_through_its_surface_or_on_a_carried_one_is_refused():
+    text = """
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+  deck: {body: cart, through: [-1, 0.5], direction: [1, 0]}
+bodies:
+  cart: {shape: box, mass: 3, size: [2, 0.5], x: [0, 0.25], angle: 0}
+  disk: {shape: disk, mass: 1, radius: 0.1, x: [0, %s], angle: 0}
+joints:
+  land: {stop: [disk, %s], e: 0}
+at: [0]
+"""
+    refusal(text % ("0.05", "floor"), "joints.land", "the rim of 'disk' is 0.05 m on the wrong side")
+    refusal(text % ("1", "deck"), "joints.land.stop.1", "a disk's stop is on a fixed straight surface")
