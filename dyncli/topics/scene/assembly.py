@@ -150,10 +150,12 @@ def _centre_hint(e: Any) -> str:
     """For a contact at a sized body's centre (the body named alone): that the point is the centre
     — a box rests on a face, a disk rolls — and what to write."""
     P = getattr(e, "P", None)
-    b = P.body if P is not None and e.kind == "contact" else None
-    if b is None or P.p != (0.0, 0.0) or b.shape not in ("box", "disk", "ring", "rod"):
+    if P is None or e.kind != "contact" or P.body is None or P.p != (0.0, 0.0):
         return ""
-    head = f"a body named alone touches with its centre: "
+    b = P.body
+    if b.shape not in ("box", "disk", "ring", "rod"):
+        return ""
+    head = "a body named alone touches with its centre: "
     if b.shape == "box":
         return head + (f"for {b.name!r} resting on a face, name a point of that face (points: {{bottom: [0, "
                        f"{-b.size[1] / 2:g}]}}, contact: [{b.name}.bottom, {e.surface.name}]) with its angle along the "

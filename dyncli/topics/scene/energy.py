@@ -32,7 +32,7 @@ def applies(system) -> str | None:
     for e in system.elements:
         if e.kind == "drive":
             return "a drive prescribes a motion in time"
-        if getattr(e, "mode", None) in ("slide", "slip") and getattr(e, "mu_k", 0.0):
+        if getattr(e, "mode", None) in ("slide", "slip") and getattr(e, "mu_k", None):
             return f"the joint {e.name!r} slides with friction"
     for ld in system.loads:
         if ld.kind == "damper":
