@@ -386,8 +386,8 @@ class Odometer:
         the whole motion: a piece where the body nearly rests, whose speeds are mostly rounding,
         is held to the motion's scale, not to its own), or above the rounding of the largest speed
         of every column (the columns are one motion's points: a pinned centre whose speed is the
-        rounding of the others' is resolved at that rounding).  The rule integrates exactly the Legendre series of degree < nodes
-        interpolated at its nodes; what it misses are the coefficients beyond (its first error
+        rounding of the others' is resolved at that rounding).  The rule integrates exactly the
+        Legendre series of degree < nodes interpolated at its nodes; what it misses are the coefficients beyond (its first error
         term is the degree 2·nodes one), foreseen from the series' last four: with c_{n−4} …
         c_{n−1} decaying by a ratio ρ per degree (the larger of the even and the odd terms'
         ratios; 1 where they do not decay), the error is about max(|c_{n−2}|, |c_{n−1}|) ρ^(n+1).

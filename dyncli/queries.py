@@ -17,6 +17,10 @@ pair of crossings hides between two: no search inside a span); optional ``breaks
 to ~1e-13, not exact: an extreme's time is then the root of its rate where known).  Each answer is
 ``{"t", "reached", "at_end"}``; the caller adds the state at ``t``.
 
+An ``event`` query is answered from the motion's own list of events, ``events()`` — (t, joint,
+what) in time order — with ``event_kinds`` and ``joint_names`` for its checks (a scene's one-sided
+joints); a motion without ``events`` refuses it.
+
 Every break interval is cut into :data:`SUBDIVIDE` pieces and sampled at their ends.  ``when``:
 a sign change of value - VALUE between samples is one Brent solve to full double accuracy
 (4 eps relative in t); a sample within tolerance of VALUE, or one closer to it than both
@@ -144,7 +148,8 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
     for key in q:
         if key not in _ALL_KEYS:
             raise InputError(f"unknown key {str(key)!r}{did_you_mean(str(key), _ALL_KEYS)}; a query has one of t, "
-                             "when (with direction, occurrence), max or min (with within)", f"{base}.{key}")
+                             "when (with direction, occurrence), max or min (with within), or event (with joint, "
+                             "occurrence)", f"{base}.{key}")
     kinds = [k for k in ("t", "when", "max", "min", "event") if k in q]
     if len(kinds) != 1:
         raise InputError(f"a query asks one thing: give '{kinds[0]}' and '{kinds[1]}' as two queries" if kinds else

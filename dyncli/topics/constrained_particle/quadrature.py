@@ -228,15 +228,16 @@ def motion(E, times):
 
 def results_at(p, model, E, ts, q, qd, carried_s: bool = False) -> dict:
     """The reported results at the times ``ts`` with q, q̇ there: the curve turned by φ = ω t (a
-    turning curve's), W̄ from the table, and W_N — 0 on a fixed curve — the rest of the energy
-    balance on a turning one, T + V − E₁ − W̄ (the work the turning curve does on the particle).
-    ``carried_s``: a zero row for s (the caller's own arc length)."""
+    turning curve's), W̄ from the table, and W_N — 0 on a fixed curve — on a turning one the work
+    the curve does, ω ΔH₃ (N's power is ω k·(y × N), N ⊥ the relative velocity; the other forces,
+    symmetric about the axis, have no moment about it), so that the energy balance checks the
+    Jacobi integral.  ``carried_s``: a zero row for s (the caller's own arc length)."""
     n = len(ts)
     w = model.curve.omega_const if model.curve.rotating else 0.0
     Wn = E.W(q, 1) - E.W(np.array(E.q0), 1)
     rows = [q, qd, w * np.asarray(ts, float), Wn, np.zeros(n)] + ([np.zeros(n)] if carried_s else [])
     r = assemble(p, model, ts, np.vstack(rows), [("slide", 1.0)] * n)["results"]
-    if w:       # N's power ω k·(y × N) (N ⊥ the relative velocity): ω times the change of H about the axis
+    if w:
         k = model.curve.k
         x0, v0 = (np.asarray(c, float)[:, 0] for c in model.curve.state(0.0, p.q0, p.q_dot0, 0.0)[:2])
         H0 = float(model.m * np.dot(np.cross(x0, v0), k))

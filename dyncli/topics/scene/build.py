@@ -211,14 +211,13 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             if b.radius <= 0:
                 raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
             s = R.line(a[1], path + ".1", "rolling")
-            i = b.index
-            c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
             centre = BodyPoint(b.name, b, (0.0, 0.0))
             if getattr(s, "carried", False):
                 out.append(_carried_rolls(name, kind, n, path, centre, s, j, q))
                 continue
             out.append(contacts.Rolls(name, kind, n, path, body_point=centre, surface=s, R=b.radius,
-                                c0=c0, mu_s=j["mu_s"], mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
+                                      c0=_roll_const(s, b, q), mu_s=j["mu_s"],
+                                      mu_k=j["mu_k"] if j.get("mu_k") is not None else j["mu_s"],
                                       e=float(j.get("e") or 0.0)))
         elif kind == "drive":
             bname, _, coord = a.partition(".")
@@ -280,13 +279,16 @@ def _rim_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray,
         raise InputError(f"a disk's stop is on a fixed straight surface; {s.name!r} is carried by a body or curved: "
                          "give the disk's rim point as the stop (stop: [DISK.POINT, SURFACE])", path + ".1")
     mu = float(j["mu"] or 0.0)
-    i = b.index
-    e = contacts.Rolls(name, "rolls", n, path, body_point=BodyPoint(b.name, b, (0.0, 0.0)), surface=s, R=b.radius,
-                       c0=0.0, mu_s=mu, mu_k=mu, e=float(j.get("e") or 0.0))
-    e.mode = "off"
-    e.c0 = float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
-    out.append(e)
+    out.append(contacts.Rolls(name, "rolls", n, path, body_point=BodyPoint(b.name, b, (0.0, 0.0)), surface=s,
+                              R=b.radius, c0=_roll_const(s, b, q), mu_s=mu, mu_k=mu, e=float(j.get("e") or 0.0),
+                              mode="off"))
     return True
+
+
+def _roll_const(s: SurfaceData, b: BodyData, q: np.ndarray) -> float:
+    """d̂·x̄ + R θ of a disk on the straight surface s (kept while it rolls, 15.8)."""
+    i = b.index
+    return float(np.array(s.d) @ q[[i[0], i[1]]]) + b.radius * float(q[i[2]])
 
 
 def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):

@@ -292,12 +292,11 @@ def _guided_aside(system, q, v, warn) -> None:
         cord = e.name.partition(":")[0]
         tilt = math.degrees(math.acos(min(abs(float(e.w[0])), 1.0)))     # the segment's angle from e2
         warn(f"the cord {cord!r} holds {e.P.body.name!r} on its segment's line of t = 0 ({tilt:.3g}° from the "
-             f"vertical) with a "
-             f"sideways force of {G:.6g} N: a mass hanging from a cord over a pulley (or off a wound body) is guided "
-             "along its segment, exact while its "
-             "loads pull along that line; here they do not, and a mass hanging free would swing. Place it so that "
-             "its segment runs along the pull (straight below the pulley's rim under gravity), or hang it from a "
-             "point by a string (a cord of two points), whose direction turns")
+             f"vertical) with a sideways force of {G:.6g} N: a mass hanging from a cord over a pulley (or off a wound "
+             "body) is guided along its segment, exact while its loads pull along that line; here they do not, and "
+             "a mass hanging free would swing. Place it so that its segment runs along the pull (straight below the "
+             "pulley's rim under gravity), or hang it from a point by a string (a cord of two points), whose "
+             "direction turns")
 
 
 def _refuse_massless(system, q, plan) -> None:
