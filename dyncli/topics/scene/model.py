@@ -245,9 +245,13 @@ class Force(_OneOf):
     def check(self, base: str) -> None:
         kind = self._one(base, "a force entry", "force: BODY")
         need = {"spring": ("k", "L"), "damper": ("c",), "force": ("F",), "torque": ("M",)}[kind]
+        what = {"k": "its stiffness k [N/m], e.g. k: 200", "L": "its free length L [m], e.g. L: 0.5 (L: 0 for a spring "
+                "stretched from zero length)", "c": "its damping coefficient c [N·s/m], e.g. c: 5",
+                "F": "its force F: [F1, F2] [N] on e1, e2 (numbers or expressions in t)",
+                "M": "its couple M [N·m] about e3 (counter-clockwise positive)"}
         for n in need:
             if getattr(self, n) is None:
-                raise InputError(f"a {kind} needs {n}", _at(base, n))
+                raise InputError(f"a {kind} needs {what[n]}", _at(base, n))
         for extra in ("k", "L", "one_sided", "c", "F", "M"):
             if getattr(self, extra) is not None and extra not in need and not (kind == "spring" and extra == "one_sided"):
                 raise InputError(f"a {kind} takes no {extra}", _at(base, extra))

@@ -726,3 +726,15 @@ joints:
   on: {{contact: [P, floor]}}
 at: [0, 1]
 """, "joints.on", f"P is given {depth} through the surface 'floor'", n, "reverse the surface's direction")
+
+
+@pytest.mark.parametrize("force,field,words", [
+    ("{spring: [B, [3, 0]], k: 100}", "forces.0.L", ["a spring needs its free length L [m]", "L: 0"]),
+    ("{spring: [B, [3, 0]], L: 1}", "forces.0.k", ["a spring needs its stiffness k [N/m]"]),
+    ("{damper: [B, [3, 0]]}", "forces.0.c", ["a damper needs its damping coefficient c"]),
+    ("{force: B}", "forces.0.F", ["a force needs its force F: [F1, F2]"]),
+    ("{torque: B}", "forces.0.M", ["a torque needs its couple M [N·m]"]),
+])
+def test_a_load_without_its_value_says_what_to_give(force, field, words):
+    refusal("type: scene\nbodies:\n  B: {shape: point, mass: 2, x: [0, 0]}\n"
+            f"forces:\n  - {force}\nat: [0]\n", field, *words)
