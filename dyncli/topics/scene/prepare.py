@@ -13,7 +13,7 @@ from dyncli.errors import InputError
 
 from . import assembly, build, start
 from .dynamics import SceneSystem
-from .contacts import Contact
+from .contacts import Contact, Rolls
 
 EPS = float(np.finfo(float).eps)
 
@@ -86,8 +86,7 @@ def setup(plan: build.Plan) -> Scene:
     J = system.jac(q)                   # the mechanism's freedom: a contact held by friction still may slide
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
-    _initial_modes(system, q, v)
-    start.settle(system, q, v)
+    _start_modes(system, q, v)
     _refuse_at_start(system, q, v)
     _guided_aside(system, q, v, warnings.append)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
@@ -319,6 +318,52 @@ def _refuse_massless(system, q, plan) -> None:
             raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
                              f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
                              "the joints carry it", f"bodies.{body.name}.{what}")
+
+
+def _start_modes(system, q, v) -> None:
+    """The joints' phases at t = 0 (:func:`_initial_modes`, :func:`start.settle`).  A stop whose
+    point (a disk's rim) is on its surface at t = 0 and not moving off or into it is first tried
+    made — a ball resting on the floor, then kicked, is on the floor from the start, not struck an
+    instant later with a zero impulse (a disk made so rolls, or slips where its rim slips); where
+    its surface would have to pull it then (a crate's corner that lifts off), or the start cannot
+    be decided with it made, it stays open as before."""
+    saved = [e.phase() for e in system.elements]
+    made = _rest_stops(system, q, v)
+    if made:
+        try:
+            _initial_modes(system, q, v)
+            start.settle(system, q, v)
+            _, lam, _ = system.solve(q, v, 0.0)
+            if all(e.mode != "off" and float(system.lam_of(lam, system.elements.index(e))[0]) >= 0 for e in made):
+                return
+        except InputError:
+            pass
+        for e, ph in zip(system.elements, saved):   # as drawn: the stops open
+            e.set_phase(ph)
+        system.refresh()
+    _initial_modes(system, q, v)
+    start.settle(system, q, v)
+
+
+def _rest_stops(system, q, v) -> list:
+    """The stops touching their surfaces at t = 0 without a normal speed, made (and returned)."""
+    tol = 1e-12 * assembly.length_scale(q, system)
+    vtol = 1e-12 * max(1.0, float(np.max(np.abs(v), initial=0.0)))
+    made = []
+    for e in system.elements:
+        if not (isinstance(e, Rolls) or (isinstance(e, Contact) and e.stop)) or e.mode != "off":
+            continue
+        if abs(e.gap(q)) > tol or abs(e.normal_speed(q, v)) > vtol:
+            continue
+        if isinstance(e, Rolls):
+            slip = e.slip_speed(q, v)
+            e.mode, e.sign = ("slip", math.copysign(1.0, slip)) if slip != 0 else ("roll", 0.0)
+        else:
+            e.mode = "slide" if e.rough else "smooth"      # (rough: _initial_modes decides stick or slide)
+        made.append(e)
+    if made:
+        system.refresh()
+    return made
 
 
 def _initial_modes(system, q, v) -> None:

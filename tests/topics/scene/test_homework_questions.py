@@ -808,3 +808,39 @@ at: [0]
 """
     refusal(text % ("0.05", "floor"), "joints.land", "the rim of 'disk' is 0.05 m on the wrong side")
     refusal(text % ("1", "deck"), "joints.land.stop.1", "a disk's stop is on a fixed straight surface")
+
+
+def test_a_stop_resting_on_its_surface_at_the_start_is_made_at_once():
+    # a block resting on a rough floor (a stop, e = 0.5) kicked at 2 m/s slides to rest under
+    # μ m g: it stops at t = v0/(μ g) after v0²/(2 μ g), with no impact at the start (before,
+    # the stop was struck ~1e-8 s in with a zero impulse); the same as a contact
+    text = """
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  b: {shape: point, mass: 2, x: [0, 0], v: [2, 0]}
+joints:
+  land: {%s: [b, floor], e: 0.5, mu: 0.3}
+at: [0, 1]
+"""
+    stop, contact = solve_one_text(text % "stop"), solve_one_text(text % "contact")
+    r = stop["results"]
+    assert [ev["what"] for ev in r["events"]] == ["sticks"] and r["impacts"] == []
+    near(r["events"][0]["t"], 2 / (mp.mpf("0.3") * G), 1, "t stop")
+    near(r["x"]["b"][1][0], 4 / (2 * mp.mpf("0.3") * G), 1, "distance")
+    assert r["x"] == contact["results"]["x"] and r["reaction"] == contact["results"]["reaction"]
+    # a disk resting on the floor with spin and no speed (a stop of the disk) slips from the start:
+    # ẍ = μ g forward, α = −2μg/R, until v = −Rω: t = ω0 R/(3 μ g) (Ī = m R²/2)
+    disk = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  d: {shape: disk, mass: 2, radius: 0.1, x: [0, 0.1], angle: 0, omega: -30}
+joints:
+  land: {stop: [d, floor], e: 0, mu: 0.3}
+at: [0, 1]
+""")["results"]
+    assert [ev["what"] for ev in disk["events"]] == ["sticks"] and disk["impacts"] == []
+    near(disk["events"][0]["t"], 30 * mp.mpf("0.1") / (3 * mp.mpf("0.3") * G), 1, "t rolls")
