@@ -92,9 +92,13 @@ class Event:
     """``{event: WHAT, joint: NAME, occurrence: n}``: the n-th event WHAT (of joint NAME, or of any
     joint) of a motion that reports events (a scene's one-sided joints: separates, slips, ...)."""
     what: str
-    joint: str | None = None
+    joint: str | bool | None = None        # (a bool: YAML's reading of a bare on, off, yes, no)
     occurrence: int = 1
     index: int = 0
+
+
+#: the names YAML 1.1 reads as true or false (a joint named `on` written bare in a query)
+_YAML_BOOL = {True: ("on", "yes", "y", "true"), False: ("off", "no", "n", "false")}
 
 
 Query = Union[AtTime, When, Extreme, Event]
@@ -169,12 +173,10 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
             raise InputError(f"event names what happens, such as event: sticks or event: separates, got {_kind(what)}",
                              f"{base}.event")
         joint = q.get("joint")
-        if joint is not None and (not isinstance(joint, str) or not joint.strip()):
-            quote = (" (YAML reads a bare on, off, yes or no as a boolean: quote the name, joint: \"on\")"
-                     if isinstance(joint, bool) else "")
-            raise InputError(f"joint names the joint whose event is asked (a key under joints), got "
-                             f"{_kind(joint)}{quote}", f"{base}.joint")
-        return Event(what.strip(), joint.strip() if joint else None, _occurrence(q, base), index=i)
+        if joint is not None and not isinstance(joint, bool) and (not isinstance(joint, str) or not joint.strip()):
+            raise InputError(f"joint names the joint whose event is asked (a key under joints), got {_kind(joint)}",
+                             f"{base}.joint")
+        return Event(what.strip(), joint.strip() if isinstance(joint, str) else joint, _occurrence(q, base), index=i)
     within = _parse_within(q["within"], base, constant) if "within" in q else None
     return Extreme(_path(q[kind], f"{base}.{kind}", f"the result of {kind}"), kind, within, index=i)
 
@@ -257,11 +259,18 @@ def _event(motion: Any, q: Event) -> float | None:
         near = _EVENT_WORDS.get(q.what.lower())
         hint = f" (did you mean '{near}'?)" if near in kinds else did_you_mean(q.what, kinds)
         raise InputError(f"no event {q.what!r}{hint}; the events are {', '.join(kinds)}", f"{where}.event")
-    if q.joint is not None and q.joint not in motion.joint_names:
-        names = motion.joint_names
-        raise InputError(f"no joint {q.joint!r}{did_you_mean(q.joint, names)}; the joints are {', '.join(names) or 'none'}",
+    names, joint = motion.joint_names, q.joint
+    if isinstance(joint, bool):       # `joint: on` read by YAML as true: the joint so named, when one is
+        named = [n for n in names if n.lower() in _YAML_BOOL[joint]]
+        if len(named) != 1:
+            raise InputError(f"joint names the joint whose event is asked (a key under joints), got the boolean "
+                             f"{joint} (YAML reads a bare on, off, yes or no as a boolean: quote the name, "
+                             "joint: \"on\")", f"{where}.joint")
+        joint = named[0]
+    if joint is not None and joint not in names:
+        raise InputError(f"no joint {joint!r}{did_you_mean(joint, names)}; the joints are {', '.join(names) or 'none'}",
                          f"{where}.joint")
-    hits = [t for t, joint, what in events() if what == q.what and (q.joint is None or joint == q.joint)]
+    hits = [t for t, j, what in events() if what == q.what and (joint is None or j == joint)]
     return float(hits[q.occurrence - 1]) if len(hits) >= q.occurrence else None
 
 

@@ -98,3 +98,11 @@ def test_invalid_event_queries(query, field, words):
 def test_an_event_query_on_a_type_without_events_says_what_to_ask():
     msg = error_of("type: vibration\nm: 2\nk: 200\nzeta: 0.1\nt_end: 1\nfind:\n  - {event: impact}\n")
     assert " find.0.event:" in msg and "for scenes" in msg and "when: {RESULT: VALUE}" in msg, msg
+
+
+def test_a_joint_named_on_is_found_though_yaml_reads_the_bare_name_as_true():
+    # `joint: on` is the boolean true to YAML 1.1; the query takes the joint named on, off, yes or
+    # no that it stands for when the scene has exactly one
+    r, _ = solve(LANE.replace("  roll: {rolls:", "  on: {rolls:").split("find:")[0]
+                 + "find:\n  - {event: sticks, joint: on}\n")
+    assert entry(r, 0)["t"] == pytest.approx(float(2 * 8 / (7 * mp.mpf("0.2") * G)), rel=1e-12)
