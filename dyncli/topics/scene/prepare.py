@@ -69,11 +69,7 @@ def setup(plan: build.Plan) -> Scene:
         k, mine, theirs = other
         warnings.append(f"the joints close two ways: assembled with {names[k]} = {mine:.6g} (the other branch has "
                         f"{names[k]} = {theirs:.6g}); give that coordinate in the file to choose")
-    red = assembly.redundant(system, q)
-    if red:
-        raise InputError(f"redundant joints: {', '.join(red)} — their rows are dependent (one of them removes a "
-                         "freedom the others already remove), so the joint forces are not unique (statically indeterminate); remove one of them",
-                         f"joints.{red[0]}")
+    _refuse_redundant(system, q)
     v_in = v.copy()
     start.slipping_given(system, q, v, vgiven)
     v, changed = assembly.project_velocity(system, q, assembly.implied_rates(system, q, v, vgiven))
@@ -320,6 +316,15 @@ def _refuse_massless(system, q, plan) -> None:
                              "the joints carry it", f"bodies.{body.name}.{what}")
 
 
+def _refuse_redundant(system, q) -> None:
+    """Dependent joint rows: refused naming the joints any one of which could go."""
+    red = assembly.redundant(system, q)
+    if red:
+        raise InputError(f"redundant joints: {', '.join(red)} — their rows are dependent (one of them removes a "
+                         "freedom the others already remove), so the joint forces are not unique (statically "
+                         "indeterminate); remove one of them", f"joints.{red[0]}")
+
+
 def _start_modes(system, q, v) -> None:
     """The joints' phases at t = 0 (:func:`_initial_modes`, :func:`start.settle`).  A stop whose
     point (a disk's rim) is on its surface at t = 0 and not moving off or into it is first tried
@@ -395,7 +400,9 @@ def _initial_modes(system, q, v) -> None:
     if verdict == "slides":
         at_rest = [e for e in at_rest if e.mode == "stick"]
         J = system.jac(q)
-    if assembly.rank(J) < J.shape[0]:
+    if assembly.rank(J) < J.shape[0] and not at_rest:      # every rough contact slides: the normal rows are
+        _refuse_redundant(system, q)                        # the dependent ones
+    if at_rest and assembly.rank(J) < J.shape[0]:
         names = [e.name for e in at_rest]
         held = " they stay at rest (the friction within μ_s N can hold them), but" if verdict == "held" else ""
         raise InputError(f"the friction at {', '.join(names)}:{held} how it is shared is not determined by the equations "
@@ -427,7 +434,10 @@ def _pull_determined(system, q, v) -> None:
     J = system.jac(q)
     f, _ = system.applied(q, v, 0.0)
     b = np.concatenate([f, system.gamma(q, v, 0.0)])
-    lam = np.linalg.lstsq(system.kkt_matrix(q, J), b, rcond=None)[0][n:]
+    K = system.kkt_matrix(q, J)
+    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(b))):     # (LAPACK would print to stdout)
+        raise np.linalg.LinAlgError("the joints' equations are not finite at t = 0")
+    lam = np.linalg.lstsq(K, b, rcond=None)[0][n:]
     _, sv, Vt = np.linalg.svd(J.T)
     r = int(np.sum(sv > 1e-10 * max(float(sv[0]), 1e-300))) if sv.size else 0
     null = Vt[r:]
