@@ -1,8 +1,9 @@
 """constrained-particle's ODE route at equal error against a plain scipy script of the same
 equation (issue #26: goal <= 1.2x), in the manner of benchmarks/runner_cost.py.
 
-The problem: a bead on a hoop of radius R turning at ω about its vertical diameter (the ODE
-route: a rotating curve has no energy integral), q̈ = sin q (ω² cos q − g/R).  The reference
+The problem: a bead on a hoop of radius R turning at ω about its vertical diameter, q̈ = sin q
+(ω² cos q − g/R), given without q_range: the ODE route (with q_range the Jacobi integral takes
+the quadrature route, which needs the wire's ends for its table).  The reference
 is mpmath's Taylor-series ODE solver at 30 digits; the error of q and q̇, each relative to its
 scale over the requested times.
 

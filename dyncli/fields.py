@@ -55,6 +55,10 @@ class StrictModel(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=False, arbitrary_types_allowed=True)
 
+    #: keys users write that this model names otherwise: a key -> the field it means (the unknown
+    #: key's message says to rename it) or a sentence saying how the model asks for it
+    unknown_keys: ClassVar[dict[str, str]] = {}
+
     @classmethod
     def __pydantic_init_subclass__(cls, **kwargs: Any) -> None:
         super().__pydantic_init_subclass__(**kwargs)

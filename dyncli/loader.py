@@ -340,9 +340,15 @@ _ALIASES = {"at": "x", "pos": "x", "position": "x", "x0": "x", "r0": "x", "vel":
             "v0": "v", "m": "mass", "theta": "angle", "phi": "angle", "w": "omega", "inertia": "I"}
 
 
-def _meant(key: str, fields: list[str]) -> str | None:
-    """The field an unknown ``key`` most likely means: a close spelling, a field it abbreviates
-    (the only one it begins), or a common name for it (``at`` for ``x``); None."""
+def _meant(key: str, fields: list[str], models: list | None = None) -> str | None:
+    """The field an unknown ``key`` most likely means: the name its model declares for it
+    (``unknown_keys``), a close spelling, a field it abbreviates (the only one it begins), or a
+    common name for it (``at`` for ``x``); None."""
+    declared = _declared_key(key, models or [])
+    if declared in fields:
+        return declared
+    if declared:
+        return None
     hint = did_you_mean(key, fields)
     if hint:
         return hint.split("'")[1]
@@ -353,6 +359,15 @@ def _meant(key: str, fields: list[str]) -> str | None:
     return alias if alias in fields else None
 
 
+def _declared_key(key: str, models: list) -> str | None:
+    """What the model at hand says of ``key`` (its ``unknown_keys``): a field's name or a sentence."""
+    for m in models:
+        said = getattr(m, "unknown_keys", {}).get(key)
+        if said:
+            return said
+    return None
+
+
 def _renamed(cls, raw: Any, errors: list) -> list:
     """One message for a required field written under another name (``m: 2`` for ``mass``):
     the unknown key's message names the field; the field's own "missing" is dropped."""
@@ -360,7 +375,7 @@ def _renamed(cls, raw: Any, errors: list) -> list:
     for err in errors:
         loc = _strip_tags(raw, err["loc"])
         if err["type"] == "extra_forbidden" and loc:
-            meant = _meant(str(loc[-1]), _fields_at(cls, loc[:-1]))
+            meant = _meant(str(loc[-1]), _fields_at(cls, loc[:-1]), _models_at(cls, loc[:-1]))
             if meant:
                 extras[loc[:-1] + (meant,)] = err
     out = []
@@ -379,7 +394,10 @@ def _message(cls, err: Mapping[str, Any]) -> str:
     if t == "extra_forbidden":
         key = str(loc[-1]) if loc else "?"
         fields = _fields_at(cls, loc[:-1])
-        meant = _meant(key, fields) if fields else None
+        said = _declared_key(key, _models_at(cls, loc[:-1]))
+        if said and said not in fields:
+            return f"unknown field '{key}': {said}"
+        meant = _meant(key, fields, _models_at(cls, loc[:-1])) if fields else None
         if meant and err.get("required"):
             return f"unknown field '{key}': rename it '{meant}' (required: {err['required']})"
         hint = f" (did you mean '{meant}'?)" if meant else ""

@@ -133,3 +133,19 @@ def test_sweep_of_one_number_says_give_a_list():
 
     with pytest.raises(dyncli.InputError, match=r"sweep k: give a list of values, e\.g\. \{'k': \[100, 200, 300\]\} \(got 100\)"):
         dyncli.sweep(str(ROOT / "problems" / "vibration" / "base-excitation.yaml"), {"k": 100})
+
+
+@pytest.mark.parametrize("line,said", [
+    ("s0: 1", "s0: unknown field 's0' (did you mean 's1'?)"),
+    ("v0: 1", "v0: unknown field 'v0' (did you mean 'v1'?)"),
+    ("t_end: 3", "t_end: unknown field 't_end' (did you mean 't_max'?)"),
+    ("at: [1, 2]", "at: unknown field 'at': the state at a time is a query: find: [{t: T}]"),
+    ("case: 1", "case: unknown field 'case': the notes' case is read from a"),
+    ("find: [{event: impact}]", "find.0.event: unknown field 'event': event queries are for scenes"),
+])
+def test_rectilinear_names_students_write(line, said):
+    """Names taken from the other types or from textbooks (s0, at, an event query) get the
+    rectilinear way of saying them, not the list of its fields (or 'a' for 'at')."""
+    err = error_of(f"type: rectilinear\na: -9.81\n{line}\n")
+    assert said in err, err
+    assert "known fields" not in err and err.count("\n") == 0, err

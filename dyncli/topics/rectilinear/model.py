@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal, Optional
+from typing import Annotated, Any, ClassVar, Literal, Optional
 
 from pydantic import Field, model_validator
 
@@ -17,6 +17,11 @@ class Query(StrictModel):
     is reached) or the queries of every motion (§11): when (with direction, occurrence), max, min
     (with within).  A v or s held at the start counts only when the motion reaches it again; the
     entries of when/max/min are checked where they are answered (dyncli.queries)."""
+
+    unknown_keys: ClassVar[dict[str, str]] = {
+        "event": "event queries are for scenes (the events of their one-sided joints); ask when: {v: 0} "
+                 "(or {s: S}) for the moment the motion reaches a value",
+        "x": "s", "position": "s", "velocity": "v", "time": "t"}
 
     t: Optional[Annotated[float, Num(dim="time")]] = None
     v: Optional[Annotated[float, Num(dim="velocity")]] = None
@@ -45,6 +50,11 @@ class Query(StrictModel):
 
 class Rectilinear(ProblemBase):
     """Straight-line motion with a = a(t, s, v) (notes §6)."""
+
+    unknown_keys: ClassVar[dict[str, str]] = {
+        "s0": "s1", "v0": "v1", "t0": "t1", "x0": "s1", "t_end": "t_max", "tmax": "t_max", "mass": "m",
+        "at": "the state at a time is a query: find: [{t: T}]", "times": "the state at a time is a query: "
+        "find: [{t: T}]", "case": "the notes' case is read from a (a function of t, of v or of s): drop it"}
 
     type: Literal["rectilinear"]
     a: Annotated[Expr, ExprField(("t", "s", "v"), dim="acceleration", description="acceleration: constant or expression in t, s, v")] = Field(...)
