@@ -153,14 +153,14 @@ def _centre_hint(e: Any) -> str:
     if P is None or e.kind != "contact" or P.body is None or P.p != (0.0, 0.0):
         return ""
     b = P.body
-    if b.shape not in ("box", "disk", "ring", "rod"):
+    if b.shape not in ("box", "rod") and not b.radius:
         return ""
     head = "a body named alone touches with its centre: "
     if b.shape == "box":
         return head + (f"for {b.name!r} resting on a face, name a point of that face (points: {{bottom: [0, "
                        f"{-b.size[1] / 2:g}]}}, contact: [{b.name}.bottom, {e.surface.name}]) with its angle along the "
                        "surface, or, for a block that only slides, make it a point body on the surface")
-    if b.shape in ("disk", "ring"):
+    if b.radius:
         return head + (f"a {b.shape} on a surface is rolls: [{b.name}, {e.surface.name}] (its rim on the surface), or a "
                        "contact at a point of its rim")
     return head + f"name an end, {b.name}.end1 or {b.name}.end2"

@@ -25,7 +25,8 @@ if TYPE_CHECKING:
     from .curved import CurveData
 
 SHAPE_I = {"rod": lambda b: b["mass"] * b["length"] ** 2 / 12, "disk": lambda b: b["mass"] * b["radius"] ** 2 / 2,
-           "ring": lambda b: b["mass"] * b["radius"] ** 2,
+           "ring": lambda b: b["mass"] * b["radius"] ** 2, "cylinder": lambda b: b["mass"] * b["radius"] ** 2 / 2,
+           "sphere": lambda b: 2 * b["mass"] * b["radius"] ** 2 / 5, "shell": lambda b: 2 * b["mass"] * b["radius"] ** 2 / 3,
            "box": lambda b: b["mass"] * (b["size"][0] ** 2 + b["size"][1] ** 2) / 12}
 
 
@@ -272,7 +273,7 @@ def _rim_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray,
     if not (isinstance(a[0], str) and "." not in a[0] and a[0] in R.bodies):
         return False
     b = R.bodies[a[0]]
-    if not (b.rigid and b.radius > 0 and b.shape in ("disk", "ring")):
+    if not (b.rigid and b.radius > 0):
         return False
     s = R.line(a[1], path + ".1", "a disk's stop")
     if getattr(s, "carried", False) or not isinstance(s, SurfaceData):

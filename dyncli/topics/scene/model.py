@@ -80,17 +80,20 @@ class Surface(StrictModel):
             raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", _at(base, "direction"))
 
 
-SHAPES = ("point", "rod", "disk", "ring", "box")
+#: the round shapes: a disk's section in the plane, rolling on its rim of radius R
+ROUND = ("disk", "ring", "sphere", "shell", "cylinder")
+SHAPES = ("point", "rod", "disk", "ring", "box", "sphere", "shell", "cylinder")
 
 
 class Body(StrictModel):
     """A body: a particle (``shape: point``) or a rigid body in planar motion."""
 
-    shape: Optional[Literal["point", "rod", "disk", "ring", "box"]] = Field(
-        None, description="point, rod (along e'1), disk, ring, box; or give I instead")
+    shape: Optional[Literal["point", "rod", "disk", "ring", "box", "sphere", "shell", "cylinder"]] = Field(
+        None, description="point, rod (along e'1), disk, ring, box, sphere (solid), shell (a thin spherical shell), "
+                          "cylinder (solid: a disk's I); or give I instead")
     mass: Annotated[float, Num(ge=0, dim="mass", description="mass [kg]")]
     length: Optional[Annotated[float, Num(gt=0, dim="length", description="rod length [m]")]] = None
-    radius: Optional[Annotated[float, Num(gt=0, dim="length", description="disk/ring radius [m]")]] = None
+    radius: Optional[Annotated[float, Num(gt=0, dim="length", description="radius of a round body (disk, ring, sphere, shell, cylinder) [m]")]] = None
     size: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="box [a, b] along e'1, e'2 [m]")
     I: Optional[Annotated[float, Num(ge=0, dim="moment_of_inertia", description="I33 about the centre [kg·m²]")]] = None
     x: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: centre at t = 0 (left out: placed by the joints)")
@@ -101,9 +104,10 @@ class Body(StrictModel):
 
     def check(self, base: str) -> None:
         if self.shape is None and self.I is None:
-            raise InputError("give shape (point, rod, disk, ring, box) or I (the moment of inertia about the "
+            raise InputError("give shape (point, rod, disk, ring, box, sphere, shell, cylinder) or I (the moment of "
+                             "inertia about the "
                              "centre)", _at(base, "shape"))
-        need = {"rod": "length", "disk": "radius", "ring": "radius", "box": "size"}.get(self.shape or "")
+        need = {"rod": "length", "box": "size"}.get(self.shape or "", "radius" if self.shape in ROUND else "")
         if need and getattr(self, need) is None:
             raise InputError(f"a {self.shape} needs {need}", _at(base, need))
         if self.size is not None and len(self.size) != 2:

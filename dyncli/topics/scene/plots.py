@@ -25,6 +25,8 @@ def _outline(body: dict, x, angle) -> list[tuple[list, list]]:
         return x[0] + c * p1 - s * p2, x[1] + s * p1 + c * p2
 
     shape = body["shape"]
+    if body.get("radius"):            # a round body (disk, ring, sphere, shell, cylinder) or I with a radius
+        shape = "disk"
     if shape == "rod":
         h = body["length"] / 2
         (a1, a2), (b1, b2) = at(-h, 0), at(h, 0)

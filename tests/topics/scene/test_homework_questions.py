@@ -844,3 +844,75 @@ at: [0, 1]
 """)["results"]
     assert [ev["what"] for ev in disk["events"]] == ["sticks"] and disk["impacts"] == []
     near(disk["events"][0]["t"], 30 * mp.mpf("0.1") / (3 * mp.mpf("0.3") * G), 1, "t rolls")
+
+
+def test_a_sphere_a_shell_and_a_cylinder_race_down_an_incline():
+    # "which reaches the bottom first": rolling without slipping (15.8) down β, a = g sin β /
+    # (1 + Ī/(m R²)) with Ī/(m R²) = 2/5 (solid sphere), 2/3 (thin spherical shell), 1/2 (solid
+    # cylinder); the friction F = Ī a / R² up the slope (along d̂: positive), N = m g cos β
+    rec = solve_one_text("""
+type: scene
+params: {beta: "30*deg"}
+surfaces:
+  incline: {through: [0, 0], direction: ["cos(beta)", "sin(beta)"]}
+bodies:
+  ball: {shape: sphere, mass: 2, radius: 0.1}
+  shell: {shape: shell, mass: 3, radius: 0.2}
+  can: {shape: cylinder, mass: 4, radius: 0.3}
+joints:
+  r1: {rolls: [ball, incline], at: 3}
+  r2: {rolls: [shell, incline], at: 2}
+  r3: {rolls: [can, incline], at: 1}
+at: [0, 0.5]
+""")
+    r = rec["results"]
+    assert r["route"] == "closed-form"
+    beta = mp.pi / 6
+    for body, joint, m, R, k in (("ball", "r1", 2, "0.1", mp.mpf(2) / 5), ("shell", "r2", 3, "0.2", mp.mpf(2) / 3),
+                                 ("can", "r3", 4, "0.3", mp.mpf(1) / 2)):
+        a = G * mp.sin(beta) / (1 + k)
+        near(speed(r["a"][body][1]), a, a, f"a of the {body}")
+        near(r["alpha"][body][1][2], a / mp.mpf(R), a / mp.mpf(R), f"alpha of the {body}")
+        near(r["reaction"][joint]["F"][1], k * m * a, m * G, f"friction on the {body}")
+        near(r["reaction"][joint]["N"][1], m * G * mp.cos(beta), m * G, f"N on the {body}")
+
+
+def test_a_round_shape_needs_its_radius():
+    refusal("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: sphere, mass: 2}
+joints:
+  r: {rolls: [ball, floor]}
+at: [0]
+""", "bodies.ball.radius", "a sphere needs radius")
+
+
+def test_the_rolling_race_gallery_file():
+    # problems/scenes/rolling-race.yaml: four round bodies down β = 30° with μ_s = 0.25; the hoop
+    # needs μ ≥ tan β / 2 to roll, so it slips from the start with kinetic friction μ N (16.7, 32.15);
+    # the others roll (15.8).  Down 2 m: t = √(4/a), v = √(4 a).
+    rec = gallery("rolling-race.yaml")
+    r = rec["results"]
+    beta, mu, m, R = mp.pi / 6, mp.mpf("0.25"), 2, mp.mpf("0.1")
+    N = m * G * mp.cos(beta)
+    rolling = {"ball": mp.mpf(2) / 5, "shell": mp.mpf(2) / 3, "can": mp.mpf(1) / 2}
+    for i, (body, k) in enumerate(rolling.items()):
+        a = G * mp.sin(beta) / (1 + k)
+        j = f"r_{body}"
+        near(r["reaction"][j]["F"][0], k * m * a, N, f"F on the {body}")
+        near(r["reaction"][j]["slip_margin"][0], mu * N - k * m * a, N, f"slip margin of the {body}")
+        f = r["find"][i]
+        near(f["t"], mp.sqrt(4 / a), 1, f"t of the {body}")
+        near(speed(f["v"][body]), mp.sqrt(4 * a), mp.sqrt(4 * a), f"v of the {body}")
+    a, alpha = G * (mp.sin(beta) - mu * mp.cos(beta)), mu * G * mp.cos(beta) / R
+    assert r["reaction"]["r_hoop"]["slip_margin"][0] is None
+    near(r["reaction"]["r_hoop"]["F"][0], mu * N, N, "kinetic friction on the hoop")
+    near(r["alpha"]["hoop"][0][2], alpha, alpha, "alpha of the hoop")
+    t = mp.sqrt(4 / a)
+    near(r["find"][3]["t"], t, 1, "t of the hoop")
+    near(r["find"][3]["omega"]["hoop"][2], alpha * t, alpha * t, "omega of the hoop")
+    t_ball, t_shell, t_can, t_hoop = (q["t"] for q in r["find"])
+    assert t_ball < t_can < t_shell < t_hoop            # the sphere first, the slipping hoop last
