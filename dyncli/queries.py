@@ -57,7 +57,9 @@ _EVENT_WORDS = {"rolls": "sticks", "rolling": "sticks", "stops_slipping": "stick
                 "slip": "slips", "slipping": "slips", "lifts": "separates", "lifts_off": "separates",
                 "separate": "separates", "leaves_wall": "separates", "hits": "impact", "strikes": "impact",
                 "collides": "impact", "lands": "impact", "bounces": "impact", "stops": "rests", "rest": "rests",
-                "at_rest": "rests", "goes_slack": "slack", "tight": "taut", "leave": "leaves", "falls_off": "leaves"}
+                "at_rest": "rests", "goes_slack": "slack", "tight": "taut", "leave": "leaves", "falls_off": "leaves",
+                "wrap": "wraps", "catches": "wraps", "hits_peg": "wraps", "catches_peg": "wraps", "unwrap": "unwraps",
+                "leaves_peg": "unwraps", "straightens": "unwraps"}
 _EXPR = "a number or a constant expression such as \"pi/2\" or \"30*deg\""
 
 

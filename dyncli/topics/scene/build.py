@@ -384,6 +384,10 @@ def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
                     raise InputError("a cord ends at a point or a wound body, not at a pulley", p)
                 c = it["pulley"]
                 nodes.append(("pulley", (np.array(c, float), float(it.get("radius") or 0.0)), p))
+            elif "peg" in it:
+                if end:
+                    raise InputError("a cord ends at a point or a wound body, not at a peg", p)
+                nodes.append(("peg", np.array(it["peg"], float), p))
             elif "wound" in it:
                 if not end:
                     raise InputError("a wound body is an end of the cord (first or last)", p)
@@ -394,7 +398,7 @@ def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
                     raise InputError(f"give the radius the cord unwinds from ({it['wound']!r} has none)", p + ".radius")
                 nodes.append(("wound", (b, float(r), it.get("side")), p))
             else:
-                raise InputError("a cord entry is a point, a body, {pulley: [x1, x2], radius: r} or "
+                raise InputError("a cord entry is a point, a body, {pulley: [x1, x2], radius: r}, {peg: [x1, x2]} or "
                                  "{wound: BODY, radius: r}", p)
         elif not end and isinstance(it, str) and "." not in it and it in R.bodies and R.bodies[it].rigid:
             b = R.bodies[it]
@@ -413,6 +417,8 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
     between two points over no pulley: a :class:`~.elements.String`, its length exact)."""
     path = f"joints.{name}.cord"
     nodes = _cord_nodes(path, spec["cord"], R)
+    if any(nd[0] == "peg" for nd in nodes):
+        return _pegged_string(name, path, nodes, q, n), []
     centres = [_centre(nd, q) for nd in nodes]
     rho = _sides(nodes, centres)
     runs, run, guides = [], [], []
@@ -445,6 +451,40 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
     cord = el.Cord(name, "cord", len(q), path, runs=runs)
     cord.consts = list(cord.lengths(q))
     return cord, guides
+
+
+def _pegged_string(name: str, path: str, nodes: list, q: np.ndarray, n: int) -> el.PeggedString:
+    """A string between a fixed point and a body point that catches the pegs listed between them
+    (elements.PeggedString): it starts straight between its ends."""
+    inner = nodes[1:-1]
+    if not all(nd[0] == "peg" for nd in inner) or not all(nd[0] == "point" for nd in (nodes[0], nodes[-1])):
+        raise InputError("pegs are caught by a string between two points: [POINT, {peg: [x1, x2]}..., POINT], "
+                         "without pulleys or wound ends", path)
+    ends = [nodes[0], nodes[-1]]
+    if ends[0][1].body is not None:
+        ends.reverse()                          # the string hangs from its fixed end
+    if ends[0][1].body is not None or ends[1][1].body is None:
+        raise InputError("a string over pegs runs from a fixed point (a ground point [x1, x2]) to a point of a body: "
+                         f"here {'both ends move' if ends[0][1].body is not None else 'neither end moves'}", path)
+    A, B = ends[0][1].pos(q), ends[1][1].pos(q)
+    d = B - A
+    if not math.hypot(*d) > 0:
+        raise InputError("the string's ends coincide at t = 0", path)
+    pegs = []
+    for nd in inner:
+        p = nd[1]
+        w = p - A
+        cross, proj = float(d[0] * w[1] - d[1] * w[0]), float(d @ w) / float(d @ d)
+        if abs(cross) <= 1e-12 * float(d @ d) and 0 <= proj <= 1:
+            raise InputError("the peg lies on the string at t = 0: place it off the string's line (a string already "
+                             "bent over it is a cord over {pulley: [x1, x2]})", nd[2])
+        pegs.append(Point(f"peg {p[0]:g}, {p[1]:g}", None, (float(p[0]), float(p[1]))))
+    u = d / math.hypot(*d)
+    seg = el.Segment(el.CordEnd(point=ends[0][1]), el.CordEnd(point=ends[1][1]), u)
+    string = el.PeggedString(name, "cord", len(q), path, runs=[[seg]], pegs=pegs)
+    string.consts = list(string.lengths(q))
+    string.start_sides(q)
+    return string
 
 
 def _sides(nodes, centres) -> list[float]:

@@ -38,13 +38,13 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
     # a length a joint holds (a cord's runs) is a scale of its gap's rounding too
     held = [abs(float(c)) for e in s.elements for c in (getattr(e, "consts", None) or ())]
     L, F, V = max([assembly.length_scale(q, s)] + held), big(f, lam), big(v, v_end)
-    lengths, speeds = ("impact", "leaves", "switch", "taut"), ("sticks",)
+    lengths, speeds = ("impact", "leaves", "switch", "taut", "wraps", "unwraps"), ("sticks",)
     return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in WATCHED}
 
 
-#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut), a speed
-#: (sticks) and forces (separates, slips, slack)
-WATCHED = ("impact", "leaves", "switch", "taut", "sticks", "separates", "slips", "slack")
+#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps),
+#: a speed (sticks) and forces (separates, slips, slack)
+WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "sticks", "separates", "slips", "slack")
 #: the watched quantities that are forces of the joints (functions of the multipliers alone)
 FORCES = ("separates", "slips", "slack")
 

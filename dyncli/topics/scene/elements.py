@@ -697,6 +697,118 @@ class String(Cord):
         return w[0] * length_terms(*self.ends(), q, n)[3]
 
 
+@dataclass
+class PeggedString(String):
+    """A string from a fixed point to a body point that catches fixed smooth pegs: where its
+    straight line sweeps onto a peg (the peg between its ends) it bends there — the event
+    ``wraps``: from then on it is a string from that peg with the length left (the part to the peg
+    is still), no impulse (the point's velocity is normal to the string both ways); where it swings
+    back straight it leaves the peg (``unwraps``).  Its tension is the same on every part (smooth
+    pegs): T is reported once.
+
+    Each watch is one-sided (downwards through 0), its sign kept with the phase: a peg's signed
+    distance from the free part's line, ``sides[i]`` · (d × (p − A))/|d|, crosses 0 where the line
+    passes the peg — a wrap when the peg is between the ends (and the string taut), else only the
+    side changes (a phase of its own, no event); the last wrapped peg's bend, s · |B − P| sin θ
+    (θ from the part before it to the free part), crosses 0 at each half turn: back through θ = 0
+    it leaves the peg, on through θ = kπ the free part has turned another half turn about it (a
+    whirl about the nail, no event)."""
+
+    pegs: list = field(default_factory=list)         # ground Points
+    wrapped: tuple = ()                              # indices into pegs, from the fixed end on
+    sides: tuple = ()                                # per peg: the sign of its line watch
+    bends: tuple = ()                                # per wrapped peg: (the bend watch's sign, half turns)
+
+    def anchor(self) -> Point:
+        return self.pegs[self.wrapped[-1]] if self.wrapped else self.runs[0][0].a.point
+
+    def ends(self) -> tuple[Point, Point]:
+        return self.runs[0][0].b.point, self.anchor()
+
+    def phase(self):
+        return (self.slack, self.wrapped, self.sides, self.bends, tuple(self.consts))
+
+    def set_phase(self, state) -> None:
+        self.slack, self.wrapped, self.sides, self.bends, consts = state
+        self.consts = list(consts)
+
+    def straight_along(self, q, N) -> bool:
+        return False
+
+    def start_sides(self, q) -> None:
+        """The sign of each peg's line watch at t = 0: positive on the peg's side."""
+        B, A = self.ends()
+        self.sides = tuple(1.0 if self._offset(A, B, p, q)[0] > 0 else -1.0 for p in self.pegs)
+
+    @staticmethod
+    def _offset(A: Point, B: Point, P: Point, q) -> tuple[float, float]:
+        """(the signed distance of P from the line A → B, positive on its left; P's place along
+        A → B as a fraction of |B − A|)."""
+        (a1, a2), (b1, b2), (p1, p2) = A.xy(q), B.xy(q), P.xy(q)
+        d1, d2, w1, w2 = b1 - a1, b2 - a2, p1 - a1, p2 - a2
+        dd = d1 * d1 + d2 * d2
+        return (d1 * w2 - d2 * w1) / math.sqrt(dd), (d1 * w1 + d2 * w2) / dd
+
+    def _before(self) -> Point:
+        """The point before the last wrapped peg (the previous peg, or the fixed end)."""
+        return self.pegs[self.wrapped[-2]] if len(self.wrapped) > 1 else self.runs[0][0].a.point
+
+    def _bend(self, q) -> tuple[float, float]:
+        """(|B − P| sin θ, cos θ) of the free part B − P against the part before, A' → P."""
+        P, A, B = self.anchor(), self._before(), self.runs[0][0].b.point
+        (a1, a2), (p1, p2), (b1, b2) = A.xy(q), P.xy(q), B.xy(q)
+        u1, u2, w1, w2 = p1 - a1, p2 - a2, b1 - p1, b2 - p2
+        lu = math.hypot(u1, u2)
+        return (u1 * w2 - u2 * w1) / lu, (u1 * w1 + u2 * w2) / (lu * math.hypot(w1, w2))
+
+    def watch(self, lam, q, v, t):
+        out = super().watch(lam, q, v, t)
+        B, A = self.ends()
+        for i, p in enumerate(self.pegs):
+            if i not in self.wrapped:
+                out.append(("wraps", self.sides[i] * self._offset(A, B, p, q)[0]))
+        if self.wrapped:
+            out.append(("unwraps", self.bends[-1][0] * self._bend(q)[0]))
+        return out
+
+    def turn(self, q, v, what: str) -> str | None:
+        """The change at a located crossing of a ``wraps`` or ``unwraps`` watch: the event's name,
+        or None for a crossing that only turns a watch's sign (no event)."""
+        B, A = self.ends()
+        vb1, vb2 = B.vel_xy(q, v)
+        if what == "wraps":
+            free = [i for i in range(len(self.pegs)) if i not in self.wrapped]
+            i = min(free, key=lambda k: abs(self._offset(A, B, self.pegs[k], q)[0]))
+            _, place = self._offset(A, B, self.pegs[i], q)
+            self.sides = self.sides[:i] + (-self.sides[i],) + self.sides[i + 1:]
+            if self.slack or not 0.0 < place < 1.0:
+                return None                 # the line passed the peg beyond an end (or slack): its side only
+            (a1, a2), (p1, p2) = A.xy(q), self.pegs[i].xy(q)
+            u1, u2 = p1 - a1, p2 - a2
+            self.wrapped = self.wrapped + (i,)
+            self.consts = [self.consts[0] - math.hypot(u1, u2)]
+            # the free part turns on about the peg the way it turned about A
+            self.bends = self.bends + ((1.0 if u1 * vb2 - u2 * vb1 >= 0 else -1.0, 0),)
+            return "wraps"
+        (sign, k), cos = self.bends[-1], self._bend(q)[1]
+        if (cos > 0) == (k % 2 == 1):       # on through (k + 1)π: another half turn about the peg
+            self.bends = self.bends[:-1] + ((-sign, k + 1),)
+            return None
+        if k > 0:                           # back through kπ
+            self.bends = self.bends[:-1] + ((-sign, k - 1),)
+            return None
+        i, P = self.wrapped[-1], self.anchor()
+        (a1, a2), (p1, p2) = self._before().xy(q), P.xy(q)
+        self.consts = [self.consts[0] + math.hypot(p1 - a1, p2 - a2)]
+        self.wrapped, self.bends = self.wrapped[:-1], self.bends[:-1]
+        # the peg left is on the free part's line again: its watch turns positive the way B goes,
+        # d/dt (d × (p − A)) = v_B × (p − A) there
+        (a1, a2) = self.anchor().xy(q)
+        rate = vb1 * (p2 - a2) - vb2 * (p1 - a1)
+        self.sides = self.sides[:i] + ((1.0 if rate >= 0 else -1.0),) + self.sides[i + 1:]
+        return "unwraps"
+
+
 @dataclass(kw_only=True)
 class Guide(ListRows):
     """A point mass at a cord segment's end moves along the segment (its direction of t = 0)."""

@@ -34,6 +34,8 @@ def applies(system) -> str | None:
             return "a drive prescribes a motion in time"
         if getattr(e, "mode", None) in ("slide", "slip") and getattr(e, "mu_k", None):
             return f"the joint {e.name!r} slides with friction"
+        if getattr(e, "pegs", None):
+            return f"the string {e.name!r} catches pegs (the length it swings on changes there)"
     for ld in system.loads:
         if ld.kind == "damper":
             return f"{ld.label} dissipates"

@@ -719,12 +719,12 @@ def find(system, q0, coords_idx: list[int], warn) -> list[tuple[np.ndarray, np.n
                 break
         if not full:
             starts += [x for got in _walks(S, new) for x in got]
-    if len(dropped) == len(found):
+    if len(dropped) == len(found) and not any("rests on its peg" in d for d in dropped):
         warn("no rest configuration found: the loads cannot be held by the joints at rest anywhere the search "
              "reached (from the given configuration and along each free coordinate)")
     if dropped:
-        warn("equilibria that are not rest configurations (a one-sided joint would not hold, or a body would be "
-             "through a surface) are left out: "
+        warn("equilibria that are not rest configurations (a one-sided joint would not hold, a body would be "
+             "through a surface, or a string would rest on a peg) are left out: "
              + "; ".join(dict.fromkeys(dropped)))
     return [(q, lam) for q, lam, d in found if not _pulls(system, q, lam)]
 
@@ -742,8 +742,14 @@ def _pulls(system, q, lam) -> str | None:
                 if side < -1e-9 * assembly.length_scale(q, system):
                     return f"{body.name!r} would be through the surface {e.surface.name!r} (its centre on the far side)"
     for i, e in enumerate(system.elements):
+        for p in getattr(e, "pegs", ()):
+            B, A = e.ends()
+            off, place = e._offset(A, B, p, q)
+            if 0 < place < 1 and abs(off) <= 1e-9 * assembly.length_scale(q, system):
+                return (f"the string {e.name!r} rests on its peg at [{p.p[0]:g}, {p.p[1]:g}] (small swings turn about "
+                        "the peg one way and about the string's end the other: not one linear system)")
         for what, g in e.watch(system.lam_of(lam, i), q, v, 0.0):
-            if what in ("sticks",):
+            if what in ("sticks", "wraps", "unwraps"):       # (a peg's side is geometry, not a force)
                 continue
             if g < -1e-9 * max(1.0, float(np.max(np.abs(lam), initial=0.0))):
                 return f"the joint {e.name!r} {what}"

@@ -145,6 +145,17 @@ class FixedPulley(StrictModel):
             raise InputError(f"expected [x1, x2], got {len(self.pulley)} numbers", _at(base, "pulley"))
 
 
+class Peg(StrictModel):
+    """A fixed smooth peg (a point) that a string between two points catches when its line sweeps
+    onto it, and leaves when it swings back straight (a pendulum's string caught by a nail)."""
+
+    peg: list[Annotated[float, Num(dim="length")]] = Field(description="[x1, x2]: the peg [m]")
+
+    def check(self, base: str) -> None:
+        if len(self.peg) != 2:
+            raise InputError(f"expected [x1, x2], got {len(self.peg)} numbers", _at(base, "peg"))
+
+
 class Wound(StrictModel):
     """A cord end wound on a body: it unwinds at ``radius`` without slipping (a yo-yo, a spool)."""
 
@@ -153,7 +164,7 @@ class Wound(StrictModel):
     side: Optional[Literal["left", "right"]] = Field(None, description="the side of the body the cord leaves from, seen from the body looking along the cord (a force: along F) (default for a cord: the drawing's, the free segment nearest vertical or horizontal; a force needs it)")
 
 
-CordEntry = Union[FixedPulley, Wound, str, list[Annotated[float, Num(dim="length")]]]
+CordEntry = Union[FixedPulley, Peg, Wound, str, list[Annotated[float, Num(dim="length")]]]
 
 
 class _OneOf(StrictModel):
@@ -180,7 +191,7 @@ class Joint(_OneOf):
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
     contact: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: one-sided contact, Coulomb friction")
     rolls: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: rolls without slipping")
-    cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord")
+    cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord; [END, {peg: [x1, x2]}..., END]: a string that catches pegs")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim and then rolls or slips")
@@ -222,7 +233,7 @@ class Joint(_OneOf):
         cord = self.cord or []                  # set when kind is "cord"
         if kind == "cord":
             for i, it in enumerate(cord):
-                if isinstance(it, FixedPulley):
+                if isinstance(it, (FixedPulley, Peg)):
                     it.check(_at(base, f"cord.{i}"))
         if kind == "cord" and len(cord) < 2:
             raise InputError("a cord needs two ends: [END, PULLEY..., END]", _at(base, "cord"))

@@ -322,7 +322,9 @@ def _integrals(scene, traj, times, instants) -> list:
     out = []
     Es = [st["E"] for st in instants if st is not None]
     if "E" in names and Es:
-        drift = max(abs(E - Es[0]) for E in Es) / max(max(abs(E) for E in Es), 1e-300)
+        # relative to the energy's terms (E itself is 0 for a pendulum let go level with its pivot)
+        scale = max(max(abs(st["E"]), abs(st["T"]), abs(st["V"])) for st in instants if st is not None)
+        drift = max(abs(E - Es[0]) for E in Es) / max(scale, 1e-300)
         out.append({"name": "E", "value": Es[0], "drift": drift, "equation": "34.20"})
     for axis, name in ((0, "G.0"), (1, "G.1")):
         if name not in names:

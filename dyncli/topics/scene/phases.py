@@ -14,6 +14,10 @@
   instant (within 1e-9 of the scene's size) and that approach their surfaces strike together:
   one impulse solve with Newton's law on every striking row (impulse.strike), each listed in
   ``impacts`` (the energy lost, the impact's whole, on the located one's entry);
+* ``wraps``, ``unwraps``: a string catches a peg (from then on it swings about the peg with the
+  length left) or swings back straight off it (elements.PeggedString); a crossing of a peg's
+  watch that is not a wrap (the line passing it beyond the string's end, a whole half turn about
+  the peg) only turns the watch's sign: a phase boundary with no event;
 * ``rests``: the accumulation rule of a bouncing point (Zeno: infinitely many impacts in a
   finite time): when the rebound speed falls below √rtol × the first impact speed on that
   joint (the bounce height below rtol × the first one), the remaining bounces are summed as
@@ -140,6 +144,10 @@ class Transitions:
             v = self._strike(t, q, v, e, 0.0, run, "taut")
         elif what == "impact":
             v = self._strike(t, q, v, e, e.e, None, "impact")
+        elif what in ("wraps", "unwraps"):
+            done = e.turn(q, v, what)
+            if done is not None:
+                self.event(t, e.name, done)
         return v
 
     def _strike(self, t, q, v, e, rest, run, what):

@@ -12,6 +12,7 @@ import numpy as np
 from dyncli.errors import InputError
 
 from . import assembly, build, start
+from . import elements as el
 from .dynamics import SceneSystem
 from .contacts import Contact, Rolls
 
@@ -247,7 +248,10 @@ def _node_xy(nd, R, q):
 
 
 def _cord_length(cord, spec, R, q) -> float:
-    """Straight lengths plus the arcs over pulleys (the cord's whole length at q)."""
+    """Straight lengths plus the arcs over pulleys (the cord's whole length at q); a string over
+    pegs starts straight: its length."""
+    if isinstance(cord, el.PeggedString):
+        return float(cord.lengths(q)[0])
     total = 0.0
     segs = [s for run in cord.runs for s in run]
     for s in segs:

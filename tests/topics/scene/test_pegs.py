@@ -1,0 +1,205 @@
+"""A pendulum's string caught by a peg (``{peg: [x1, x2]}`` in a cord between a fixed point and a
+bob): the events ``wraps`` and ``unwraps``, the tension on each side of them, a whirl about the
+peg, a string that goes slack about it, a peg out of reach, the refusals.
+
+References: the pendulum's exact quarter period √(L/g) K(sin²(θ0/2)) (mpmath's complete elliptic
+integral at 30 digits) on each radius, the swing's time about the peg by mpmath's quadrature of
+dt = r dψ / v(ψ), the tension from the energy integral (16.7 along the string: T = m g cos ψ +
+m v²/r), and the slack point of the notes' string (T = 0: v² = g r sin φ above the peg's level).
+ODE route at its default rtol: ODE_GLOBAL × 1e-10 of the quantity's scale.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_one_text
+from tests.tolerances import ODE_GLOBAL
+from tests.topics.scene.test_refusals import refusal
+from tests.topics.scene.test_start import near
+
+mp.mp.dps = 30
+G = mp.mpf("9.81")
+TOL = ODE_GLOBAL * 1e-10
+
+
+def pendulum(peg: str, theta0: str = "30*deg", extra: str = "", t_end: float = 3) -> dict:
+    rec = solve_one_text(f"""
+type: scene
+params: {{L: 1, th0: "{theta0}"}}
+bodies:
+  bob: {{shape: point, mass: 2, x: ["L*sin(th0)", "-L*cos(th0)"]}}
+joints:
+  string: {{cord: [[0, 0], {{peg: {peg}}}, bob]}}
+t_end: {t_end}
+at: [0, 0.8]
+{extra}
+""")
+    assert rec.get("error") is None, rec.get("error")
+    return rec
+
+
+def quarter(length, amplitude):
+    """A quarter period of a pendulum of this length swinging to ±amplitude."""
+    return mp.sqrt(length / G) * mp.ellipk(mp.sin(amplitude / 2) ** 2)
+
+
+def test_the_string_catches_the_peg_and_leaves_it_swinging_back():
+    # L = 1 from 30°, a peg 0.5 below the pivot: it swings on L to the bottom (a quarter period),
+    # on r = 0.5 about the peg up to the height it started from (a half swing of amplitude φ,
+    # cos φ = (0.5 − L cos θ0)/r ... measured from the bottom of the small circle), back to the
+    # bottom where the string straightens, and on L again: the motion's period is half of each.
+    rec = pendulum("[0, -0.5]", extra="find: [{event: wraps}, {event: unwraps}, {max: x.bob.1, within: [0.3, 1.5]}, "
+                                      "{event: wraps, occurrence: 2}]")
+    r = rec["results"]
+    th0, Lr = mp.pi / 6, mp.mpf("0.5")
+    y0 = -mp.cos(th0)
+    phi = mp.acos((-Lr - y0) / Lr)
+    t1, t2 = quarter(1, th0), quarter(Lr, phi)
+    assert [(e["what"]) for e in r["events"]] == ["wraps", "unwraps", "wraps"]
+    near(r["find"][0]["t"], t1, 1, "the wrap", TOL)
+    near(r["find"][1]["t"], t1 + 2 * t2, 1, "the unwrap", TOL)
+    near(r["find"][3]["t"], 3 * t1 + 2 * t2, 1, "the next wrap", TOL)
+    top = r["find"][2]
+    near(top["t"], t1 + t2, 1, "the top of the swing about the peg", TOL)
+    near(top["x"]["bob"][1], y0, 1, "it rises to the height it started from", TOL)
+    near(top["x"]["bob"][0], -Lr * mp.sin(phi), 1, "on the circle about the peg", TOL)
+    # just before the wrap (the state find reports) T = m g + m v²/L; on the peg's side T = m g cos ψ
+    # + m v²/r at any time (here t = 0.8 s, from the reported position: the energy integral)
+    v2 = 2 * G * (1 - mp.cos(th0))
+    near(r["find"][0]["reaction"]["string"]["T"][0], 2 * (G + v2), 2 * G, "T just before the wrap", TOL)
+    near(r["find"][1]["reaction"]["string"]["T"][0], 2 * (G + v2 / Lr), 2 * G, "T just before the unwrap", TOL)
+    x1, x2 = (mp.mpf(c) for c in r["x"]["bob"][1][:2])
+    cos_psi = (-Lr - x2) / Lr
+    near(math.hypot(x1, x2 + 0.5), Lr, 1, "0.8 s: on the circle about the peg", TOL)
+    near(r["reaction"]["string"]["T"][1][0], 2 * (G * cos_psi + 2 * G * (x2 - y0) * -1 / Lr), 2 * G, "T at 0.8 s",
+         TOL)
+
+
+def test_a_whirl_about_a_low_peg():
+    # from the horizontal, a peg 0.7 below the pivot: r = 0.3, the top of the small circle at
+    # x2 = −0.4 has v² = 2 g 0.4 > g r, so the string stays taut and the bob loops about the peg:
+    # T there = m (v²/r − g); it passes the bottom again after the loop (half turns: no event)
+    rec = pendulum("[0, -0.7]", theta0="90*deg", extra="find: [{event: wraps}, {max: x.bob.1, within: [0.6, 1.2]}, "
+                                                      "{event: unwraps}]")
+    r = rec["results"]
+    assert [e["what"] for e in r["events"]] == ["wraps"] and r["find"][2]["reached"] is False
+    near(r["find"][0]["t"], quarter(1, mp.pi / 2), 1, "the wrap", TOL)
+    top = r["find"][1]
+    near(top["x"]["bob"][1], -0.4, 1, "the top of the loop", TOL)
+    v2 = 2 * G * mp.mpf("0.4")
+    near(top["reaction"]["string"]["T"][0], 2 * (v2 / mp.mpf("0.3") - G), 2 * G, "T at the top", TOL)
+    # E = 0 (let go level with the pivot): the drift is relative to the energy's terms
+    (E,) = r["integrals"][:1]
+    assert E["name"] == "E" and E["drift"] < 1e-8, E
+    # the loop's time by quadrature of dt = r dψ / v(ψ), v² = 2 g L − 2 g r (1 − cos ψ)
+    Lr = mp.mpf("0.3")
+    loop = mp.quad(lambda s: Lr / mp.sqrt(2 * G - 2 * G * Lr * (1 - mp.cos(s))), [0, mp.pi, 2 * mp.pi])
+    rec2 = pendulum("[0, -0.7]", theta0="90*deg", extra="find: [{when: {x.bob.0: 0}, occurrence: 3}]")
+    near(rec2["results"]["find"][0]["t"], quarter(1, mp.pi / 2) + loop, 1, "back at the bottom after a loop", TOL)
+
+
+def test_a_string_that_goes_slack_about_the_peg():
+    # from the horizontal with the peg 0.5 below: about the peg T = 0 where v² = g r sin φ above
+    # the peg's level, sin φ = 2/3 (x2 = −1/6), then the bob flies on a parabola up to x2 = −2/27
+    rec = pendulum("[0, -0.5]", theta0="90*deg", extra="find: [{event: slack}, {max: x.bob.1, within: [0.6, 1.2]}]")
+    r = rec["results"]
+    assert [e["what"] for e in r["events"]][:2] == ["wraps", "slack"]
+    Lr = mp.mpf("0.5")
+    psi = mp.pi / 2 + mp.asin(mp.mpf(2) / 3)            # from the bottom of the small circle
+    t = quarter(1, mp.pi / 2) + mp.quad(lambda s: Lr / mp.sqrt(2 * G - 2 * G * Lr * (1 - mp.cos(s))), [0, psi])
+    near(r["find"][0]["t"], t, 1, "the slack", TOL)
+    near(r["find"][0]["x"]["bob"][1], -mp.mpf(1) / 6, 1, "where it goes slack", TOL)
+    near(r["find"][1]["x"]["bob"][1], -mp.mpf(2) / 27, 1, "the top of the flight", TOL)
+
+
+def test_a_peg_out_of_reach_is_never_caught():
+    # (its line sweeps past it beyond the bob: the watch's side turns, no event)
+    rec = pendulum("[0, -1.5]", theta0="90*deg", extra="find: [{when: {x.bob.0: 0}, occurrence: 2}]")
+    r = rec["results"]
+    assert r["events"] == []
+    near(r["find"][0]["t"], 3 * quarter(1, mp.pi / 2), 1, "a plain pendulum's three quarter periods", TOL)
+
+
+def test_a_peg_off_the_vertical():
+    # the peg at [0.3, −0.5]: caught where the string points at it, |x| = L along (0.3, −0.5)
+    rec = pendulum("[0.3, -0.5]", theta0="90*deg", extra="find: [{event: wraps}]")
+    f = rec["results"]["find"][0]
+    d = mp.sqrt(mp.mpf("0.34"))
+    near(f["x"]["bob"][0], mp.mpf("0.3") / d, 1, "x1 at the wrap", TOL)
+    near(f["x"]["bob"][1], -mp.mpf("0.5") / d, 1, "x2 at the wrap", TOL)
+    v2 = 2 * G * mp.mpf("0.5") / d                      # dropped L cos(angle) = 0.5/|peg| from the horizontal
+    near(speed := math.hypot(*f["v"]["bob"][:2]), mp.sqrt(v2), mp.sqrt(v2), "the speed at the wrap", TOL)
+    assert speed > 0
+
+
+def test_at_rest_on_the_peg_is_no_linear_system():
+    rec = pendulum("[0, -0.5]", extra="linearize: true")
+    assert rec["results"]["equilibria"] == []
+    assert any("rests on its peg at [0, -0.5]" in w for w in rec["warnings"]), rec["warnings"]
+    assert not any("no rest configuration found" in w for w in rec["warnings"])
+    off = pendulum("[0.3, -0.5]", extra="linearize: true")["results"]["equilibria"]
+    assert [e["stability"] for e in off] == ["stable"]
+    near(off[0]["omega2"][0], G, G, "a peg off the string at rest: the plain pendulum")
+
+
+@pytest.mark.parametrize("cord,field,needle", [
+    ("[{peg: [0, -0.5]}, bob]", "joints.string.cord.0", "not at a peg"),
+    ("[[0, 0], {peg: [0, -0.5]}, {pulley: [1, 1]}, bob]", "joints.string.cord", "without pulleys"),
+    ("[[0, 0], {peg: [0.25, -0.4330127018922193]}, bob]", "joints.string.cord.1", "the peg lies on the string"),
+    ("[[0, 0], {peg: [0, -0.5]}, [1, 1]]", "joints.string.cord", "neither end moves"),
+    ("[[0, 0], {peg: [0, -0.5, 1]}, bob]", "joints.string.cord.1.peg", "expected [x1, x2]"),
+])
+def test_refusals(cord, field, needle):
+    refusal(f"""
+type: scene
+bodies:
+  bob: {{shape: point, mass: 2, x: [0.5, -0.8660254037844386]}}
+joints:
+  string: {{cord: {cord}}}
+at: [0]
+""", field, needle)
+
+
+def test_the_quadrature_route_is_refused_and_the_event_is_named():
+    refusal("""
+type: scene
+bodies:
+  bob: {shape: point, mass: 2, x: [1, 0]}
+joints:
+  string: {cord: [[0, 0], {peg: [0, -0.5]}, bob]}
+at: [0, 1]
+accuracy: {method: quadrature}
+""", "accuracy.method", "catches pegs")
+    refusal("""
+type: scene
+bodies:
+  bob: {shape: point, mass: 2, x: [1, 0]}
+joints:
+  string: {cord: [[0, 0], {peg: [0, -0.5]}, bob]}
+at: [0, 1]
+find: [{event: catches}]
+""", "find.0.event", "did you mean 'wraps'")
+
+
+def test_the_pendulum_peg_gallery_file():
+    # problems/scenes/pendulum-peg.yaml: L = 1.2 from 40°, the peg 0.7 below the pivot (r = 0.5)
+    from tests.topics.scene.common import gallery
+
+    r = gallery("pendulum-peg.yaml")["results"]
+    L, Lr, m, th0 = mp.mpf("1.2"), mp.mpf("0.5"), mp.mpf("0.5"), mp.radians(40)
+    phi = mp.acos(1 - L * (1 - mp.cos(th0)) / Lr)
+    t1, t2 = quarter(L, th0), quarter(Lr, phi)
+    v2 = 2 * G * L * (1 - mp.cos(th0))
+    wrap, unwrap, top, back = r["find"]
+    near(wrap["t"], t1, 1, "the wrap", TOL)
+    near(wrap["reaction"]["string"]["T"][0], m * (G + v2 / L), m * G, "T just before the wrap", TOL)
+    near(unwrap["t"], t1 + 2 * t2, 1, "the unwrap", TOL)
+    near(unwrap["reaction"]["string"]["T"][0], m * (G + v2 / Lr), m * G, "T on the peg at the bottom", TOL)
+    near(top["t"], t1 + t2, 1, "the top about the peg", TOL)
+    near(top["x"]["bob"][0], -Lr * mp.sin(phi), 1, "x1 there", TOL)
+    near(back["t"], 2 * t1 + 2 * t2, 1, "the period", TOL)
+    near(back["x"]["bob"][0], L * mp.sin(th0), 1, "back where it started", TOL)
