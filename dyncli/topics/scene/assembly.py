@@ -81,7 +81,11 @@ def other_branch(system, q, free, t: float = 0.0):
     or down): assembled again from the sketch with each free angle mirrored about its value
     (θ → 2θ_line − θ) or turned by π; returns (coordinate, placed value, other value) of the
     first coordinate that differs, or None."""
-    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.")]
+    # an angle that only gears hold is placed by them up to whole turns of their line of centres
+    # (a planet's sun turned by 2π D/R_s): a winding, not a branch the drawing could choose
+    geared = _geared_only(system, q)
+    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.") and k not in geared]
+    free = np.array(free, dtype=bool) & ~np.isin(np.arange(system.n), sorted(geared))
     scale = length_scale(q, system)
     for k in angles:
         for trial in (-q[k], q[k] + math.pi, q[k] - math.pi / 2, q[k] + math.pi / 2):
@@ -96,6 +100,20 @@ def other_branch(system, q, free, t: float = 0.0):
                 j = int(np.argmax(np.abs(d) * free))
                 return j, float(q[j]), float(q[j] + d[j])
     return None
+
+
+def _geared_only(system, q) -> set[int]:
+    """The angles whose only rows are gears' (elements.Gear)."""
+    if not any(e.kind == "gear" for e in system.elements):
+        return set()
+    out = set()
+    for k, nm in enumerate(system.names):
+        if not nm.startswith("angle."):
+            continue
+        kinds = {e.kind for e in system.elements if e.rows and any(row[k] for row in e.jac_list(q))}
+        if kinds == {"gear"}:
+            out.add(k)
+    return out
 
 
 def gaps(system, q, t: float = 0.0) -> list[tuple[Element, float]]:

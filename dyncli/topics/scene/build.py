@@ -233,7 +233,43 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
                                f_many=j.get("values")))
         elif kind == "cord":
             cords.append((name, j))
+        elif kind == "gear":
+            out.append(_gear(name, j, R, path, n, q, plan))
     return out, cords
+
+
+def _gear(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, plan: Plan) -> el.Gear:
+    """Two gears in mesh (elements.Gear): their pitch radii (given, or the bodies' radius), the
+    centres' distance at t = 0 checked against R_A ± R_B."""
+    A, B = (R.body(j["gear"][k], f"{path}.{k}") for k in (0, 1))
+    for k, body in enumerate((A, B)):
+        _rigid(body, "a gear", f"{path}.{k}")
+        if plan.bodies[body.name].get("x") is None:
+            raise InputError(f"give the centre of the gear {body.name!r} (x: [x1, x2]): gears mesh where they are drawn",
+                             f"bodies.{body.name}.x")
+    radii = j.get("radii")
+    if radii is None:
+        missing = [body.name for body in (A, B) if not body.radius > 0]
+        if missing:
+            raise InputError(f"give the pitch radii, radii: [R_A, R_B] ({', '.join(repr(m) for m in missing)} has no "
+                             "radius)", f"joints.{name}.radii")
+        radii = [A.radius, B.radius]
+    RA, RB = float(radii[0]), float(radii[1])
+    s = -1.0 if j.get("internal") else 1.0
+    D = RA + s * RB
+    if not D > 0:
+        raise InputError(f"an internal gear is the larger: R_A = {RA:g} m must exceed R_B = {RB:g} m (A is the ring "
+                         "gear, B meshes inside it)", f"joints.{name}.radii" if j.get("radii") else path)
+    a, b = A.index, B.index
+    d1, d2 = float(q[b[0]] - q[a[0]]), float(q[b[1]] - q[a[1]])
+    gap = math.hypot(d1, d2) - D
+    if abs(gap) > 1e-9 * max(D, math.hypot(d1, d2)):
+        raise InputError(f"the gears do not mesh: their centres are {math.hypot(d1, d2):.6g} m apart, and "
+                         f"R_A {'−' if s < 0 else '+'} R_B = {D:.6g} m: place the centres so that the pitch circles "
+                         "touch", path)
+    e = el.Gear(name, "gear", n, path, A=A, B=B, RA=RA, RB=RB, s=s, D=D)
+    e.c0 = e.angle_sum(q) - D * math.atan2(d2, d1)
+    return e
 
 
 def _carried_slider(name: str, kind: str, n: int, path: str, b: BodyData, s, q: np.ndarray):

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .system import BodyPoint, Point, SurfaceData, perp
+from .system import BodyData, BodyPoint, Point, SurfaceData, perp
 
 EPS = float(np.finfo(float).eps)
 
@@ -467,6 +467,79 @@ class Link(ListRows):
 
 
 @dataclass(kw_only=True)
+class Gear(ListRows):
+    """Two gears in mesh: their pitch circles (radii R_A, R_B) roll on each other without slip.
+    With φ the angle of the line of centres A → B, the contact point's velocities agree along
+    t = e3 × n̂ (n̂ = (x_B − x_A)/D): R_A ω_A + s R_B ω_B = D φ̇, s = +1 for an external mesh
+    (D = R_A + R_B), −1 for B inside A's ring gear (D = R_A − R_B); with D held by the other
+    joints (pins, a carrier arm), integrated: R_A θ_A + s R_B θ_B − D φ = c0 (a planet gear's
+    rolling included).  λ is the tooth force on A by B along t (on B: −λ t), at the pitch point."""
+
+    A: BodyData
+    B: BodyData
+    RA: float
+    RB: float
+    s: float = 1.0
+    D: float = 0.0
+    c0: float = 0.0
+    rows = 1
+    linear = False
+
+    def _d(self, q):
+        a, b = self.A.index, self.B.index
+        return float(q[b[0]]) - float(q[a[0]]), float(q[b[1]]) - float(q[a[1]])
+
+    def angle_sum(self, q) -> float:
+        return self.RA * float(q[self.A.index[2]]) + self.s * self.RB * float(q[self.B.index[2]])
+
+    def phi_list(self, q, t):
+        d1, d2 = self._d(q)
+        want = (self.angle_sum(q) - self.c0) / self.D        # the φ the row holds: the branch of atan2 near it
+        return [-self.D * math.remainder(math.atan2(d2, d1) - want, 2 * math.pi)]
+
+    def jac_list(self, q):
+        d1, d2 = self._d(q)
+        k = self.D / (d1 * d1 + d2 * d2)
+        a, b = self.A.index, self.B.index
+        row = [0.0] * self.n
+        row[a[0]] -= k * d2
+        row[a[1]] += k * d1
+        row[b[0]] += k * d2
+        row[b[1]] -= k * d1
+        row[a[2]] += self.RA
+        row[b[2]] += self.s * self.RB
+        return [row]
+
+    def gamma_list(self, q, v, t):
+        d1, d2 = self._d(q)
+        a, b = self.A.index, self.B.index
+        e1, e2 = float(v[b[0]]) - float(v[a[0]]), float(v[b[1]]) - float(v[a[1]])
+        dd = d1 * d1 + d2 * d2
+        return [-2.0 * self.D * (d1 * e2 - d2 * e1) * (d1 * e1 + d2 * e2) / (dd * dd)]
+
+    def straight_along(self, q, N) -> bool:
+        """Whether the line of centres keeps its direction along the motion N (pinned gears): the
+        row is then affine along it."""
+        row = np.array(self.jac_list(q)[0])
+        row[self.A.index[2]] = row[self.B.index[2]] = 0.0
+        N = np.ravel(np.asarray(N, float))
+        return abs(float(row @ N)) <= 1e-12 * float(np.linalg.norm(row)) * float(np.linalg.norm(N))
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """w ∇²(−D φ): φ = atan2(d2, d1) of d = x_B − x_A, ∂²φ/∂d² = [[2 d1 d2, d2² − d1²], [d2² − d1², −2 d1 d2]]/|d|⁴."""
+        d1, d2 = self._d(q)
+        dd = d1 * d1 + d2 * d2
+        Hd = np.array([[2 * d1 * d2, d2 * d2 - d1 * d1], [d2 * d2 - d1 * d1, -2 * d1 * d2]]) / (dd * dd)
+        Dq = np.zeros((2, n))
+        a, b = self.A.index, self.B.index
+        Dq[0, b[0]], Dq[1, b[1]], Dq[0, a[0]], Dq[1, a[1]] = 1.0, 1.0, -1.0, -1.0
+        return -float(w[0]) * self.D * (Dq.T @ Hd @ Dq)
+
+    def report(self, lam, q, v, t):
+        return {"F": float(lam[0])}
+
+
+@dataclass(kw_only=True)
 class Drive(ListRows):
     """A prescribed coordinate q_i = f(t); λ is the force or couple the driver applies."""
 
@@ -719,11 +792,17 @@ class PeggedString(String):
     sides: tuple = ()                                # per peg: the sign of its line watch
     bends: tuple = ()                                # per wrapped peg: (the bend watch's sign, half turns)
 
+    def _end(self, which: str) -> Point:
+        """The string's fixed end ("a") or its body point ("b")."""
+        P = getattr(self.runs[0][0], which).point
+        assert P is not None, "a string over pegs runs between two points"
+        return P
+
     def anchor(self) -> Point:
-        return self.pegs[self.wrapped[-1]] if self.wrapped else self.runs[0][0].a.point
+        return self.pegs[self.wrapped[-1]] if self.wrapped else self._end("a")
 
     def ends(self) -> tuple[Point, Point]:
-        return self.runs[0][0].b.point, self.anchor()
+        return self._end("b"), self.anchor()
 
     def phase(self):
         return (self.slack, self.wrapped, self.sides, self.bends, tuple(self.consts))
@@ -751,11 +830,11 @@ class PeggedString(String):
 
     def _before(self) -> Point:
         """The point before the last wrapped peg (the previous peg, or the fixed end)."""
-        return self.pegs[self.wrapped[-2]] if len(self.wrapped) > 1 else self.runs[0][0].a.point
+        return self.pegs[self.wrapped[-2]] if len(self.wrapped) > 1 else self._end("a")
 
     def _bend(self, q) -> tuple[float, float]:
         """(|B − P| sin θ, cos θ) of the free part B − P against the part before, A' → P."""
-        P, A, B = self.anchor(), self._before(), self.runs[0][0].b.point
+        P, A, B = self.anchor(), self._before(), self._end("b")
         (a1, a2), (p1, p2), (b1, b2) = A.xy(q), P.xy(q), B.xy(q)
         u1, u2, w1, w2 = p1 - a1, p2 - a2, b1 - p1, b2 - p2
         lu = math.hypot(u1, u2)

@@ -185,7 +185,7 @@ class _OneOf(StrictModel):
 
 
 class Joint(_OneOf):
-    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive, stop."""
+    """One joint: exactly one of pin, slider, contact, rolls, cord, link, drive, stop, gear."""
 
     pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
@@ -195,6 +195,9 @@ class Joint(_OneOf):
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim and then rolls or slips")
+    gear: Optional[list[str]] = Field(None, description="[A, B]: two gears in mesh, their pitch circles rolling on each other (the centres held by other joints: pins, a carrier)")
+    radii: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="gear: the pitch radii [R_A, R_B] [m] (default the bodies' radius)")
+    internal: Optional[bool] = Field(None, description="gear: true when B meshes inside A's ring gear (default false: an external mesh)")
     e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
     value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
     mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None
@@ -204,14 +207,14 @@ class Joint(_OneOf):
     length: Optional[Annotated[float, Num(gt=0, dim="length", description="cord or link length [m]")]] = None
     angle: Optional[Annotated[float, Num(description="link: its angle from −e2, placing Q when its position is left out [rad]")]] = None
 
-    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive", "stop")
+    KINDS: ClassVar[tuple[str, ...]] = ("pin", "slider", "contact", "rolls", "cord", "link", "drive", "stop", "gear")
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
         allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at", "e"},
                    "rolls": {"at", "mu_s", "mu_k", "e"}, "cord": {"length"}, "link": {"length", "angle"},
-                   "drive": {"value"}, "stop": {"e", "mu"}}[kind]
-        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e"):
+                   "drive": {"value"}, "stop": {"e", "mu"}, "gear": {"radii", "internal"}}[kind]
+        for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e", "radii", "internal"):
             if getattr(self, extra) is not None and extra not in allowed:
                 rough = (": a slider is smooth and two-sided; for a rough block or collar that its guide pushes "
                          "one way (a collar on a spun rod, a block on a rough track), write a contact on the same "
@@ -224,11 +227,13 @@ class Joint(_OneOf):
             raise InputError("a stop needs e, the coefficient of restitution (0 <= e <= 1), e.g. e: 0.8", _at(base, "e"))
         if kind == "contact" and self.mu is not None and (self.mu_s is not None or self.mu_k is not None):
             raise InputError("give mu, or mu_s and mu_k, not both", _at(base, "mu"))
-        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2, "stop": 2}.get(kind)
+        two = {"pin": 2, "slider": 2, "contact": 2, "rolls": 2, "link": 2, "stop": 2, "gear": 2}.get(kind)
         if two and len(getattr(self, kind)) != 2:
-            raise InputError(f"a {kind} joins exactly two things: [{'P, Q' if kind in ('pin', 'link') else 'BODY, SURFACE'}]",
-                             _at(base, kind))
-        if kind in ("pin", "link") and getattr(self, kind)[0] == getattr(self, kind)[1]:
+            what = {"pin": "P, Q", "link": "P, Q", "gear": "A, B"}.get(kind, "BODY, SURFACE")
+            raise InputError(f"a {kind} joins exactly two things: [{what}]", _at(base, kind))
+        if kind == "gear" and self.radii is not None and len(self.radii) != 2:
+            raise InputError(f"expected the two pitch radii [R_A, R_B], got {len(self.radii)} numbers", _at(base, "radii"))
+        if kind in ("pin", "link", "gear") and getattr(self, kind)[0] == getattr(self, kind)[1]:
             raise InputError(f"a {kind} joins two different points: both ends are {getattr(self, kind)[0]}", _at(base, kind))
         cord = self.cord or []                  # set when kind is "cord"
         if kind == "cord":

@@ -71,6 +71,7 @@ def setup(plan: build.Plan) -> Scene:
         warnings.append(f"the joints close two ways: assembled with {names[k]} = {mine:.6g} (the other branch has "
                         f"{names[k]} = {theirs:.6g}); give that coordinate in the file to choose")
     _refuse_redundant(system, q)
+    _refuse_loose_gears(system, q)
     v_in = v.copy()
     start.slipping_given(system, q, v, vgiven)
     v, changed = assembly.project_velocity(system, q, assembly.implied_rates(system, q, v, vgiven))
@@ -318,6 +319,47 @@ def _refuse_massless(system, q, plan) -> None:
             raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
                              f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
                              "the joints carry it", f"bodies.{body.name}.{what}")
+
+
+def _refuse_loose_gears(system, q) -> None:
+    """A gear row holds the pitch circles rolling on each other, not their centres' distance D:
+    the other joints (pins, a carrier arm) must hold it, or the gears would part while the row
+    still meshes them.  Held means to first and second order along every motion the joints allow:
+    ∇D = Σ c_k ∇φ_k over the other rows, and then D̈ = q̇ᵀ (∇²D − Σ c_k ∇²φ_k) q̇ = 0 on their null
+    space (a centre guided along the tangent only, as a wound drum's, keeps D to first order and
+    not to second: refused)."""
+    from .curvature import rows_hessian
+
+    gears = [e for e in system.elements if e.kind == "gear"]
+    if not gears:
+        return
+    J = system.jac(q)
+    others = np.ones(J.shape[0], dtype=bool)
+    for i, e in enumerate(system.elements):
+        if e.kind == "gear":
+            others[system.offsets[i]:system.offsets[i] + e.rows] = False
+    Jo = J[others]
+    _, sv, Vt = np.linalg.svd(J)
+    N = Vt[int(np.sum(sv > sv[0] * 1e-10)) if sv.size and sv[0] > 0 else 0:].T      # the motions allowed
+    for g in gears:
+        d1, d2 = g._d(q)
+        D = math.hypot(d1, d2)
+        a, b = g.A.index, g.B.index
+        Dq = np.zeros((2, system.n))
+        Dq[0, b[0]], Dq[1, b[1]], Dq[0, a[0]], Dq[1, a[1]] = 1.0, 1.0, -1.0, -1.0
+        nrm = np.array([d1, d2]) / D
+        grad = nrm @ Dq
+        c = np.linalg.lstsq(Jo.T, grad, rcond=None)[0] if Jo.size else np.zeros(0)
+        held = float(np.linalg.norm(Jo.T @ c - grad)) <= 1e-9 if Jo.size else False
+        if held and N.size:
+            lam = np.zeros(J.shape[0])
+            lam[others] = c
+            H = Dq.T @ ((np.eye(2) - np.outer(nrm, nrm)) / D) @ Dq - rows_hessian(system, q, lam)
+            held = float(np.max(np.abs(N.T @ H @ N), initial=0.0)) <= 1e-9 / D
+        if not held:
+            raise InputError(f"the gears {g.A.name!r} and {g.B.name!r} are not held at their distance: a gear joint "
+                             "meshes the pitch circles, and the centres must be held by other joints — pin each "
+                             "to the ground, or both to a carrier arm", g.path)
 
 
 def _refuse_redundant(system, q) -> None:

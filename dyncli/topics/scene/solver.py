@@ -38,7 +38,7 @@ def _plan(p) -> build.Plan:
         if j.kind == "cord":
             val = [it.model_dump() if hasattr(it, "model_dump") else it for it in val]
         d = {"kind": j.kind, j.kind: val, "mu": j.mu, "mu_s": j.mu_s, "mu_k": j.mu_k, "at": j.at,
-             "length": j.length, "angle": j.angle, "e": j.e}
+             "length": j.length, "angle": j.angle, "e": j.e, "radii": j.radii, "internal": j.internal}
         if j.kind == "drive":
             e = j.value
             d["value"] = lambda t, e=e: jet_at(e, t)

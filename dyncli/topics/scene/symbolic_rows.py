@@ -221,6 +221,11 @@ def element_rows(e, G: Geometry, S: Symbols, drive_expr=None):
     if k == "cord":
         phis, lams, tens = _cord(e, G, S)
         return phis, lams, tens, None
+    if k == "gear":
+        F = S.force("F", e.name)
+        d = G.centre(e.B) - G.centre(e.A)
+        return [exact(e.RA) * C.q[e.A.index[2]] + exact(e.s * e.RB) * C.q[e.B.index[2]]
+                - exact(e.D) * sp.atan2(d[1], d[0]) - exact(e.c0)], [F], [F], None
     if k == "guide":
         owner = e.name.split(":")[0] + "," + e.P.body.name
         N = S.new(f"N_{owner}", f"N_{owner}", f"N_{{{_tex_name(e.name.split(':')[0])},{_tex_name(e.P.body.name)}}}")
