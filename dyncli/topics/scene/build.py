@@ -238,9 +238,52 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
     return out, cords
 
 
-def _gear(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, plan: Plan) -> el.Gear:
+def _rack(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, plan: Plan) -> el.Element:
+    """A gear on a rack: ``gear: [GEAR, SURFACE]``, the surface the rack's pitch line (fixed, or
+    carried by the rack's body): elements.Rack or carried.CarriedRack."""
+    A = R.body(j["gear"][0], path + ".0")
+    _rigid(A, "a gear", path + ".0")
+    if plan.bodies[A.name].get("x") is None:
+        raise InputError(f"give the centre of the gear {A.name!r} (x: [x1, x2]): gears mesh where they are drawn",
+                         f"bodies.{A.name}.x")
+    radii = j.get("radii")
+    if radii is not None and len(radii) != 1:
+        raise InputError(f"a gear on a rack has one pitch radius: radii: [R], got {len(radii)} numbers",
+                         f"joints.{name}.radii")
+    if j.get("internal"):
+        raise InputError("a rack is straight: internal applies to a ring gear", f"joints.{name}.internal")
+    s = R.line(j["gear"][1], path + ".1", "a rack")
+    if getattr(s, "body", None) is A:
+        raise InputError(f"{A.name!r} carries {s.name!r}: a gear cannot mesh with its own rack", path + ".0")
+    Rp = float(radii[0]) if radii else A.radius
+    if not Rp > 0:
+        raise InputError(f"give the pitch radius, radii: [R] ({A.name!r} has no radius)", f"joints.{name}.radii")
+    centre = BodyPoint(A.name, A, (0.0, 0.0))
+    e: el.Element
+    if getattr(s, "carried", False):
+        from .carried import CarriedLine, CarriedRack
+
+        assert isinstance(s, CarriedLine), "a carried surface is a CarriedLine"
+        carried = CarriedRack(name, "gear", n, path, P=centre, surface=s, R=Rp)
+        gap = carried.gap(q) - Rp
+        carried.c0 = carried.roll_const(q)
+        e = carried
+    else:
+        fixed = el.Rack(name, "gear", n, path, body=A, d=(float(s.d[0]), float(s.d[1])), R=Rp)
+        gap = float(np.array(s.n) @ (centre.pos(q) - np.array(s.origin))) - Rp
+        fixed.c0 = fixed.roll_const(q)
+        e = fixed
+    if abs(gap) > 1e-9 * max(Rp, abs(gap + Rp)):
+        raise InputError(f"the gear {A.name!r} does not mesh with the rack: its centre is {gap + Rp:.6g} m from the pitch "
+                         f"line {s.name!r} (on the side of its normal), its pitch radius {Rp:.6g} m", path)
+    return e
+
+
+def _gear(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, plan: Plan) -> el.Element:
     """Two gears in mesh (elements.Gear): their pitch radii (given, or the bodies' radius), the
     centres' distance at t = 0 checked against R_A ± R_B."""
+    if j["gear"][1] in R.surfaces and j["gear"][1] not in R.bodies:
+        return _rack(name, j, R, path, n, q, plan)
     A, B = (R.body(j["gear"][k], f"{path}.{k}") for k in (0, 1))
     for k, body in enumerate((A, B)):
         _rigid(body, "a gear", f"{path}.{k}")
@@ -248,6 +291,8 @@ def _gear(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, pla
             raise InputError(f"give the centre of the gear {body.name!r} (x: [x1, x2]): gears mesh where they are drawn",
                              f"bodies.{body.name}.x")
     radii = j.get("radii")
+    if radii is not None and len(radii) != 2:
+        raise InputError(f"expected the two pitch radii [R_A, R_B], got {len(radii)} numbers", f"joints.{name}.radii")
     if radii is None:
         missing = [body.name for body in (A, B) if not body.radius > 0]
         if missing:

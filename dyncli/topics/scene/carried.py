@@ -381,3 +381,46 @@ class CarriedRolls(_OnLine, Rolls):
         return float(self.tangent_jac(q) @ a) - self._rows_gammas(q, v)[1][1]
 
     watch = _OnLine.line_watch
+
+
+@dataclass(kw_only=True)
+class CarriedRack(_OnLine, ListRows):
+    """A gear on a rack carried by a body (the rack's pitch line is the carried line): the pitch
+    circle rolls on it, s + R (θ_B − θ_W) = c0 (15.8 relative to the rack, two-sided); the gear's
+    centre is held R off the line by the other joints (a pinned pinion, a slider for the rack).
+    λ is the tooth force on the gear along the line's d̂ (on the rack: −λ d̂)."""
+
+    P: BodyPoint                    # the gear's centre
+    surface: CarriedLine
+    R: float = 0.0
+    c0: float = 0.0
+    rows = 1
+    linear = False
+
+    def roll_const(self, q) -> float:
+        return self.along(q) + self.R * self.turned(q, self.P.body)
+
+    def phi_list(self, q, t):
+        return [self.roll_const(q) - self.c0]
+
+    def jac_list(self, q):
+        return [[a + self.R * b for a, b in zip(self.jac_lines(q)[1], self.turn_row(self.P.body))]]
+
+    def gamma_list(self, q, v, t):
+        return [self._rows_gammas(q, v)[1][1]]
+
+    def straight_along(self, q, N) -> bool:
+        """Affine along the motion when the rack does not turn (its angle still along N)."""
+        W = self.surface.body
+        return not W.rigid or abs(float(np.ravel(N)[W.index[2]])) <= 1e-12 * float(np.linalg.norm(N))
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        return _OnLine.hessian(self, q, [0.0, float(w[0])], n)
+
+    def distance_terms(self, q, n: int):
+        """(∇g, ∇²g) of the gear centre's distance from the pitch line (the check that other joints
+        hold it)."""
+        return np.array(self.jac_lines(q)[0]), _OnLine.hessian(self, q, [1.0, 0.0], n)
+
+    def report(self, lam, q, v, t):
+        return {"F": float(lam[0])}

@@ -535,6 +535,60 @@ class Gear(ListRows):
         Dq[0, b[0]], Dq[1, b[1]], Dq[0, a[0]], Dq[1, a[1]] = 1.0, 1.0, -1.0, -1.0
         return -float(w[0]) * self.D * (Dq.T @ Hd @ Dq)
 
+    def distance_terms(self, q, n: int):
+        """(∇D, ∇²D) of the centres' distance D = |x_B − x_A| (prepare.py: held by the other joints)."""
+        d1, d2 = self._d(q)
+        D = math.hypot(d1, d2)
+        Dq = np.zeros((2, n))
+        a, b = self.A.index, self.B.index
+        Dq[0, b[0]], Dq[1, b[1]], Dq[0, a[0]], Dq[1, a[1]] = 1.0, 1.0, -1.0, -1.0
+        nrm = np.array([d1, d2]) / D
+        return nrm @ Dq, Dq.T @ ((np.eye(2) - np.outer(nrm, nrm)) / D) @ Dq
+
+    def report(self, lam, q, v, t):
+        return {"F": float(lam[0])}
+
+
+@dataclass(kw_only=True)
+class Rack(ListRows):
+    """A gear (pitch radius R) on a fixed rack whose pitch line is the surface: the pitch circle
+    rolls on the line, d̂·x + R θ = c0 (15.8, two-sided: the teeth push both ways); the centre is
+    held R off the line by the other joints.  λ is the tooth force on the gear along d̂."""
+
+    body: BodyData
+    d: tuple[float, float]
+    R: float
+    c0: float = 0.0
+    rows = 1
+    linear = True
+
+    def _row(self) -> list:
+        i = self.body.index
+        row = [0.0] * self.n
+        row[i[0]], row[i[1]] = self.d
+        row[i[2]] = self.R
+        return row
+
+    def roll_const(self, q) -> float:
+        i = self.body.index
+        return self.d[0] * float(q[i[0]]) + self.d[1] * float(q[i[1]]) + self.R * float(q[i[2]])
+
+    def phi_list(self, q, t):
+        return [self.roll_const(q) - self.c0]
+
+    def jac_list(self, q):
+        return [self._row()]
+
+    def gamma_list(self, q, v, t):
+        return [0.0]
+
+    def distance_terms(self, q, n: int):
+        """(∇g, ∇²g = 0) of the centre's distance from the pitch line, n·x."""
+        i = self.body.index
+        grad = np.zeros(n)
+        grad[i[0]], grad[i[1]] = -self.d[1], self.d[0]
+        return grad, np.zeros((n, n))
+
     def report(self, lam, q, v, t):
         return {"F": float(lam[0])}
 

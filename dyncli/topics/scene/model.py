@@ -195,8 +195,8 @@ class Joint(_OneOf):
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim and then rolls or slips")
-    gear: Optional[list[str]] = Field(None, description="[A, B]: two gears in mesh, their pitch circles rolling on each other (the centres held by other joints: pins, a carrier)")
-    radii: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="gear: the pitch radii [R_A, R_B] [m] (default the bodies' radius)")
+    gear: Optional[list[str]] = Field(None, description="[A, B]: two gears in mesh, their pitch circles rolling on each other (the centres held by other joints: pins, a carrier); [A, SURFACE]: a gear on a rack, the surface its pitch line")
+    radii: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="gear: the pitch radii [R_A, R_B] [m] (a rack: [R]; default the bodies' radius)")
     internal: Optional[bool] = Field(None, description="gear: true when B meshes inside A's ring gear (default false: an external mesh)")
     e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
     value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
@@ -231,8 +231,9 @@ class Joint(_OneOf):
         if two and len(getattr(self, kind)) != 2:
             what = {"pin": "P, Q", "link": "P, Q", "gear": "A, B"}.get(kind, "BODY, SURFACE")
             raise InputError(f"a {kind} joins exactly two things: [{what}]", _at(base, kind))
-        if kind == "gear" and self.radii is not None and len(self.radii) != 2:
-            raise InputError(f"expected the two pitch radii [R_A, R_B], got {len(self.radii)} numbers", _at(base, "radii"))
+        if kind == "gear" and self.radii is not None and len(self.radii) not in (1, 2):
+            raise InputError(f"expected the pitch radii [R_A, R_B] (a gear on a rack: [R]), got {len(self.radii)} "
+                             "numbers", _at(base, "radii"))
         if kind in ("pin", "link", "gear") and getattr(self, kind)[0] == getattr(self, kind)[1]:
             raise InputError(f"a {kind} joins two different points: both ends are {getattr(self, kind)[0]}", _at(base, kind))
         cord = self.cord or []                  # set when kind is "cord"

@@ -342,24 +342,23 @@ def _refuse_loose_gears(system, q) -> None:
     _, sv, Vt = np.linalg.svd(J)
     N = Vt[int(np.sum(sv > sv[0] * 1e-10)) if sv.size and sv[0] > 0 else 0:].T      # the motions allowed
     for g in gears:
-        d1, d2 = g._d(q)
-        D = math.hypot(d1, d2)
-        a, b = g.A.index, g.B.index
-        Dq = np.zeros((2, system.n))
-        Dq[0, b[0]], Dq[1, b[1]], Dq[0, a[0]], Dq[1, a[1]] = 1.0, 1.0, -1.0, -1.0
-        nrm = np.array([d1, d2]) / D
-        grad = nrm @ Dq
+        grad, hess = g.distance_terms(q, system.n)
         c = np.linalg.lstsq(Jo.T, grad, rcond=None)[0] if Jo.size else np.zeros(0)
         held = float(np.linalg.norm(Jo.T @ c - grad)) <= 1e-9 if Jo.size else False
         if held and N.size:
             lam = np.zeros(J.shape[0])
             lam[others] = c
-            H = Dq.T @ ((np.eye(2) - np.outer(nrm, nrm)) / D) @ Dq - rows_hessian(system, q, lam)
-            held = float(np.max(np.abs(N.T @ H @ N), initial=0.0)) <= 1e-9 / D
+            H = hess - rows_hessian(system, q, lam)
+            held = float(np.max(np.abs(N.T @ H @ N), initial=0.0)) <= 1e-9 / assembly.length_scale(q, system)
         if not held:
-            raise InputError(f"the gears {g.A.name!r} and {g.B.name!r} are not held at their distance: a gear joint "
-                             "meshes the pitch circles, and the centres must be held by other joints — pin each "
-                             "to the ground, or both to a carrier arm", g.path)
+            if hasattr(g, "B"):
+                what = f"the gears {g.A.name!r} and {g.B.name!r} are not held at their distance"
+            else:
+                gear = g.body if hasattr(g, "body") else g.P.body
+                what = f"the gear {gear.name!r} is not held at its distance from the rack"
+            raise InputError(f"{what}: a gear joint meshes the pitch circles, and the centres must be held by other "
+                             "joints — pin a gear to the ground (or to a carrier arm), guide a rack with a slider",
+                             g.path)
 
 
 def _refuse_redundant(system, q) -> None:

@@ -89,7 +89,7 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
             raise ValueError(f"{e.name!r} starts {'slack' if e.kind == 'cord' else 'slipping'}, a phase without a "
                              "symbolic form in this release")
         if getattr(getattr(e, "surface", None), "carried", False):
-            raise ValueError(f"the contact {e.name!r} on {e.surface.name!r}, a surface carried by "
+            raise ValueError(f"the {e.kind} {e.name!r} on {e.surface.name!r}, a surface carried by "
                              f"{e.surface.body.name!r}, has no symbolic form in this release")
         if getattr(getattr(e, "surface", None), "curved", False):
             if getattr(e, "mode", "") in ("slide", "stick", "slip"):

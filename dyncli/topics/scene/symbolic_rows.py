@@ -221,6 +221,10 @@ def element_rows(e, G: Geometry, S: Symbols, drive_expr=None):
     if k == "cord":
         phis, lams, tens = _cord(e, G, S)
         return phis, lams, tens, None
+    if k == "gear" and hasattr(e, "d"):            # a gear on a fixed rack: d̂·x + R θ = c0
+        F = S.force("F", e.name)
+        x = G.centre(e.body)
+        return [(vec(e.d).T * x)[0] + exact(e.R) * C.q[e.body.index[2]] - exact(e.c0)], [F], [F], None
     if k == "gear":
         F = S.force("F", e.name)
         d = G.centre(e.B) - G.centre(e.A)

@@ -147,3 +147,78 @@ def test_the_gear_train_hoist_gallery_file():
     near(r["reaction"]["mesh"]["F"][0], F, F, "the tooth force")
     near(r["reaction"]["pB"]["R"][0][1], 8 * G + m * (G + aB * rr) + F, F, "B's axle")
     near(r["find"][0]["t"], mp.sqrt(2 / (aB * rr)), 1, "W has risen 1 m")
+
+
+RACK = """
+type: scene
+surfaces:
+  guide: {through: [0, 0], direction: [1, 0]}
+  teeth: {body: rack, through: [-1, 0.05], direction: [1, 0]}
+bodies:
+  pinion: {shape: disk, mass: 1, radius: 0.05, x: [0, 0.1]}
+  rack: {shape: box, mass: 4, size: [2, 0.1], x: [0, 0], angle: 0}
+joints:
+  axle: {pin: [pinion, [0, 0.1]]}
+  way: {slider: [rack, guide]}
+  mesh: {gear: [pinion, teeth]}
+forces:
+  - {torque: pinion, M: -2}
+at: [0, 1]
+"""
+
+
+def test_a_pinion_drives_a_rack():
+    # a couple M = −2 N·m on a pinned pinion (R = 0.05) meshing with a rack (4 kg) on a smooth
+    # guide: the rack moves at v = R ω along d̂ (the pinion above it), (Ī + m R²) α = M; the tooth
+    # force on the pinion along d̂ from Ī α = M + R F (its pitch point R below the centre), on the
+    # rack −F: m a = −F; the guide's couple holds the rack's angle against F at its top face
+    r = solved(RACK)
+    assert r["route"] == "closed-form"
+    I, m, R, M = mp.mpf("0.00125"), 4, mp.mpf("0.05"), -2
+    alpha = M / (I + m * R ** 2)
+    F = (I * alpha - M) / R
+    near(r["alpha"]["pinion"][0][2], alpha, alpha, "alpha")
+    near(r["a"]["rack"][0][0], R * alpha, R * alpha, "the rack's acceleration")
+    near(r["reaction"]["mesh"]["F"][0], F, F, "the tooth force on the pinion")
+    near(m * r["a"]["rack"][0][0], -F, F, "the rack's equation")
+    near(r["reaction"]["way"]["M"][0][2], -mp.mpf("0.05") * F, F, "the guide's couple on the rack")
+
+
+def test_a_pinion_rolls_down_a_fixed_rack():
+    # a carriage (3 kg, a point) on a smooth track down β = 30° carries a pinion (1 kg, R = 0.1)
+    # meshing with a fixed rack parallel to the track: a = m g sin β / (m + Ī/R²), m = 4 kg, and
+    # the tooth force F = (Ī/R²) a up the slope
+    r = solved("""
+type: scene
+params: {b: 30*deg}
+surfaces:
+  track: {through: ["-0.1*sin(b)", "0.1*cos(b)"], direction: ["cos(b)", "sin(b)"]}
+  teeth: {through: [0, 0], direction: ["cos(b)", "sin(b)"]}
+bodies:
+  cart: {shape: point, mass: 3, x: ["-0.1*sin(b)", "0.1*cos(b)"]}
+  pinion: {shape: disk, mass: 1, radius: 0.1, x: ["-0.1*sin(b)", "0.1*cos(b)"]}
+joints:
+  axle: {pin: [pinion, cart]}
+  way: {slider: [cart, track]}
+  mesh: {gear: [pinion, teeth]}
+at: [0, 1]
+""")
+    a = 4 * G * mp.sin(mp.pi / 6) / (4 + mp.mpf("0.5"))
+    near(mp.hypot(*r["a"]["cart"][0][:2]), a, a, "a")
+    near(r["reaction"]["mesh"]["F"][0], mp.mpf("0.5") * a, a, "the tooth force")
+
+
+@pytest.mark.parametrize("change,field,needle", [
+    (("  way: {slider: [rack, guide]}\n", ""), "joints.mesh.gear", "not held at its distance from the rack"),
+    (("x: [0, 0.1]}", "x: [0, 0.12]}"), "joints.mesh.gear", "does not mesh with the rack"),
+    (("mesh: {gear: [pinion, teeth]}", "mesh: {gear: [pinion, teeth], radii: [0.05, 0.1]}"), "joints.mesh.radii",
+     "one pitch radius"),
+    (("mesh: {gear: [pinion, teeth]}", "mesh: {gear: [pinion, teeth], internal: true}"), "joints.mesh.internal",
+     "a rack is straight"),
+    (("mesh: {gear: [pinion, teeth]}", "mesh: {gear: [rack, teeth]}"), "joints.mesh.gear.0", "its own rack"),
+])
+def test_rack_refusals(change, field, needle):
+    text = RACK.replace(*change)
+    assert text != RACK
+    refusal(text.replace("  axle: {pin: [pinion, [0, 0.1]]}", "  axle: {pin: [pinion, [0, 0.12]]}")
+            if "0.12" in change[1] else text, field, needle)
