@@ -5,7 +5,7 @@ from dyncli.declare import R, TypeSpec
 SCENE = TypeSpec(
     name="scene",
     plots="plots:plots", symbolic=True,
-    title="a planar mechanism described, not derived: bodies, joints, cords, pulleys, with every joint force",
+    title="a planar mechanism described, not derived: bodies, joints, cords, pulleys, pegs, gears, with every joint force",
     sections="§16, §29, §32, §34, §36",
     model="model:Scene",
     solve="solver:solve",
