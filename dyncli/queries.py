@@ -49,9 +49,10 @@ __all__ = ["AtTime", "When", "Extreme", "Event", "Query", "parse_queries", "answ
 SUBDIVIDE = 4       #: pieces each break interval is cut into before the sign tests
 _EPS, _TINY = 2.220446049250313e-16, 5e-324
 _KEYS = {"t": ("t",), "when": ("when", "direction", "occurrence"), "max": ("max", "within"), "min": ("min", "within"),
-         "event": ("event", "joint", "occurrence")}
-_ALL_KEYS = ("t", "when", "direction", "occurrence", "max", "min", "within", "event", "joint")
-_OWNERS = {"direction": "when", "occurrence": "when or event", "within": "max and min", "joint": "event"}
+         "event": ("event", "joint", "occurrence", "after")}
+_ALL_KEYS = ("t", "when", "direction", "occurrence", "max", "min", "within", "event", "joint", "after")
+_OWNERS = {"direction": "when", "occurrence": "when or event", "within": "max and min", "joint": "event",
+           "after": "event"}
 #: what students call an event, for the "did you mean" of an event query
 _EVENT_WORDS = {"rolls": "sticks", "rolling": "sticks", "stops_slipping": "sticks", "slides": "slips",
                 "slip": "slips", "slipping": "slips", "lifts": "separates", "lifts_off": "separates",
@@ -97,6 +98,7 @@ class Event:
     joint: str | bool | None = None        # (a bool: YAML's reading of a bare on, off, yes, no)
     occurrence: int = 1
     index: int = 0
+    after: bool = False                    # the state just after the event (the next phase's start)
 
 
 #: the names YAML 1.1 reads as true or false (a joint named `on` written bare in a query)
@@ -155,7 +157,7 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
         if key not in _ALL_KEYS:
             raise InputError(f"unknown key {str(key)!r}{did_you_mean(str(key), _ALL_KEYS)}; a query has one of t, "
                              "when (with direction, occurrence), max or min (with within), or event (with joint, "
-                             "occurrence)", f"{base}.{key}")
+                             "occurrence, after)", f"{base}.{key}")
     kinds = [k for k in ("t", "when", "max", "min", "event") if k in q]
     if len(kinds) != 1:
         raise InputError(f"a query asks one thing: give '{kinds[0]}' and '{kinds[1]}' as two queries" if kinds else
@@ -178,7 +180,12 @@ def _parse_one(q: Any, i: int, constant: Callable[[Any], float]) -> Query:
         if joint is not None and not isinstance(joint, bool) and (not isinstance(joint, str) or not joint.strip()):
             raise InputError(f"joint names the joint whose event is asked (a key under joints), got {_kind(joint)}",
                              f"{base}.joint")
-        return Event(what.strip(), joint.strip() if isinstance(joint, str) else joint, _occurrence(q, base), index=i)
+        after = q.get("after", False)
+        if not isinstance(after, bool):
+            raise InputError(f"after must be true (the state just after the event) or false (just before, the "
+                             f"default), got {_kind(after)}", f"{base}.after")
+        return Event(what.strip(), joint.strip() if isinstance(joint, str) else joint, _occurrence(q, base), index=i,
+                     after=after)
     within = _parse_within(q["within"], base, constant) if "within" in q else None
     return Extreme(_path(q[kind], f"{base}.{kind}", f"the result of {kind}"), kind, within, index=i)
 
@@ -236,7 +243,7 @@ def answer(queries: Iterable[Query], motion: Any, notes: dict[int, str] | None =
             continue
         if isinstance(q, Event):
             t = _event(motion, q)
-            out.append({"t": t, "reached": t is not None, "at_end": None})
+            out.append({"t": t, "reached": t is not None, "at_end": None} | ({"after": True} if q.after else {}))
             continue
         _check_path(motion, q.path, f"find.{q.index}.{'when' if isinstance(q, When) else q.kind}")
         try:

@@ -295,7 +295,7 @@ class Scene(ProblemBase):
     forces: list[Force] = Field(default_factory=list, description="springs, dampers, forces, couples")
     t_end: Optional[Annotated[float, Num(gt=0, dim="time", description="end of the motion [s]; default max(at)")]] = None
     at: Annotated[list[float], Times(description="times at which to report the state [s]")] = Field(default_factory=list)
-    find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}, {event: WHAT, joint: NAME}")
+    find: list[Any] = Field(default_factory=list, description="queries (§11): {t: T}, {when: {RESULT: VALUE}}, {max: RESULT}, {min: RESULT}, {event: WHAT, joint: NAME, after: true}")
     motion: Optional[Any] = Field(None, description="out-of-plane motion is refused (use top, euler, gyroscope)")
     linearize: bool = Field(False, description="true: the equilibria (rest configurations) with their stability, "
                             "natural frequencies, mode shapes and the linear response (result `equilibria`)")

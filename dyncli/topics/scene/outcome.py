@@ -27,9 +27,14 @@ def instants_of(scene: Scene, traj, route: str, times=()):
     ``times``: the instants about to be asked (their W_nc integrated together, _Work.prime)."""
     s = scene.system
 
-    def state_at(t):
-        q, v, W = traj.state(t)
+    def state_at(t, after=False):
         p = traj.piece(t)
+        if after:                               # the state the next phase starts from (after a jump)
+            p = _next_piece(traj, t)
+            motion.set_modes(s, p.modes)
+            q, v, W = p.fn(min(max(t, p.t_a), p.t_b))
+        else:
+            q, v, W = traj.state(t)
         solved = p.fixed
         if p.route == "kinematics":
             a, lam = _kin_forces(s, q, v, t)
@@ -45,11 +50,24 @@ def instants_of(scene: Scene, traj, route: str, times=()):
     W_of = _Work(scene, traj, route)
     W_of.prime(times)
 
-    def inst(t):
-        q, v, W, solved = state_at(t)
-        return report.instant(s, q, v, W_of(t, W), t, E1, solved=solved)
+    def inst(t, after=False):
+        q, v, W, solved = state_at(t, after)
+        work = W_of(t, W)
+        if not after:
+            return report.instant(s, q, v, work, t, E1, solved=solved)
+        motion.set_modes(s, _next_piece(traj, t).modes)          # (the work's own lookups set the modes of the piece holding t)
+        out = report.instant(s, q, v, work, t, E1, solved=solved)
+        traj.state(t)                           # the modes of the piece holding t again
+        return out
 
     return inst
+
+
+def _next_piece(traj, t: float):
+    """The piece that starts at t when a phase ends there (the one after the jump), else the one
+    holding t."""
+    p = traj.piece(t)
+    return traj.pieces[min(traj.index(t) + 1, len(traj.pieces) - 1)] if t >= p.t_b else p
 
 
 def results(scene: Scene, traj, route: str, times: list[float], find_raw, params, acc) -> Result:

@@ -117,12 +117,13 @@ def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0, 
     out, names = [], None
     for k, ans in enumerate(_q.answer(qs, motion)):
         entry = dict(ans)
+        after = bool(entry.pop("after", False))
         if not ans.get("reached") and warn is not None:
             warn(f"find.{k}: not reached between t = {motion.t0:g} and t = {motion.t_end:.10g} s"
                  + (" (the motion stops there at an event)" if traj.stopped is not None else
                     "; raise t_end to search further"))
         if ans.get("reached") and ans.get("t") is not None:
-            entry.update(inst(ans["t"]))
+            entry.update(inst(ans["t"], after=after))
         else:                                         # every other entry null (§11)
             names = list(inst(motion.t0)) if names is None else names
             entry.update({n: None for n in names if n not in entry})

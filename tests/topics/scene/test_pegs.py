@@ -203,3 +203,53 @@ def test_the_pendulum_peg_gallery_file():
     near(top["x"]["bob"][0], -Lr * mp.sin(phi), 1, "x1 there", TOL)
     near(back["t"], 2 * t1 + 2 * t2, 1, "the period", TOL)
     near(back["x"]["bob"][0], L * mp.sin(th0), 1, "back where it started", TOL)
+
+
+def test_the_state_just_after_the_wrap_and_after_a_bounce():
+    # {event: WHAT, after: true}: the state the next phase starts from — the tension on the peg's
+    # side, m (g + v²/r), where the state before has m (g + v²/L); a ball's velocity after its
+    # bounce, −e times the one before (28.16)
+    rec = pendulum("[0, -0.5]", extra="find: [{event: wraps}, {event: wraps, after: true}]")
+    before, after = rec["results"]["find"]
+    assert before["t"] == after["t"]
+    v2 = 2 * G * (1 - mp.cos(mp.pi / 6))
+    near(before["reaction"]["string"]["T"][0], 2 * (G + v2), 2 * G, "T before", TOL)
+    near(after["reaction"]["string"]["T"][0], 2 * (G + v2 / mp.mpf("0.5")), 2 * G, "T after", TOL)
+    near(math.hypot(*after["v"]["bob"][:2]), mp.sqrt(v2), 1, "the speed does not jump", TOL)
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: point, mass: 0.5, x: [0, 1]}
+joints:
+  bounce: {stop: [ball, floor], e: 0.8}
+t_end: 1
+at: [0]
+find: [{event: impact}, {event: impact, after: true}]
+""")
+    before, after = rec["results"]["find"]
+    vn = mp.sqrt(2 * G)
+    near(before["v"]["ball"][1], -vn, vn, "the speed before the bounce")
+    near(after["v"]["ball"][1], mp.mpf("0.8") * vn, vn, "the speed after it")
+
+
+def test_after_is_a_boolean_of_an_event_query():
+    refusal("""
+type: scene
+bodies:
+  bob: {shape: point, mass: 2, x: [1, 0]}
+joints:
+  string: {cord: [[0, 0], {peg: [0, -0.5]}, bob]}
+at: [0, 1]
+find: [{event: wraps, after: 1}]
+""", "find.0.after", "after must be true")
+    refusal("""
+type: scene
+bodies:
+  bob: {shape: point, mass: 2, x: [1, 0]}
+joints:
+  string: {cord: [[0, 0], bob]}
+at: [0, 1]
+find: [{max: x.bob.1, after: true}]
+""", "find.0.after", "goes with event only")
