@@ -194,7 +194,7 @@ def test_the_pendulum_peg_gallery_file():
     phi = mp.acos(1 - L * (1 - mp.cos(th0)) / Lr)
     t1, t2 = quarter(L, th0), quarter(Lr, phi)
     v2 = 2 * G * L * (1 - mp.cos(th0))
-    wrap, unwrap, top, back = r["find"]
+    wrap, unwrap, top, back, after = r["find"]
     near(wrap["t"], t1, 1, "the wrap", TOL)
     near(wrap["reaction"]["string"]["T"][0], m * (G + v2 / L), m * G, "T just before the wrap", TOL)
     near(unwrap["t"], t1 + 2 * t2, 1, "the unwrap", TOL)
@@ -203,6 +203,8 @@ def test_the_pendulum_peg_gallery_file():
     near(top["x"]["bob"][0], -Lr * mp.sin(phi), 1, "x1 there", TOL)
     near(back["t"], 2 * t1 + 2 * t2, 1, "the period", TOL)
     near(back["x"]["bob"][0], L * mp.sin(th0), 1, "back where it started", TOL)
+    near(after["t"], t1, 1, "the wrap, after", TOL)
+    near(after["reaction"]["string"]["T"][0], m * (G + v2 / Lr), m * G, "T just after the wrap", TOL)
 
 
 def test_the_state_just_after_the_wrap_and_after_a_bounce():
