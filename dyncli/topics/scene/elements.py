@@ -482,6 +482,11 @@ class Gear(ListRows):
     s: float = 1.0
     D: float = 0.0
     c0: float = 0.0
+    #: what tells the branch of φ = atan2: "ground" (both centres pinned to the ground: φ = φ0),
+    #: the angle index of a carrier both centres are pinned to (φ turns with it), or None (the φ
+    #: the row itself holds: a gear on its own has the row's windings as branches)
+    carrier: str | int | None = None
+    phi0: float = 0.0               # φ at t = 0 (less the carrier's angle then)
     rows = 1
     linear = False
 
@@ -492,10 +497,19 @@ class Gear(ListRows):
     def angle_sum(self, q) -> float:
         return self.RA * float(q[self.A.index[2]]) + self.s * self.RB * float(q[self.B.index[2]])
 
+    def _near(self, q) -> float:
+        """The φ whose branch of atan2 the row reads (continuous along the motion)."""
+        if self.carrier == "ground":
+            return self.phi0
+        if isinstance(self.carrier, int):
+            return self.phi0 + float(q[self.carrier])
+        return (self.angle_sum(q) - self.c0) / self.D
+
     def phi_list(self, q, t):
         d1, d2 = self._d(q)
-        want = (self.angle_sum(q) - self.c0) / self.D        # the φ the row holds: the branch of atan2 near it
-        return [-self.D * math.remainder(math.atan2(d2, d1) - want, 2 * math.pi)]
+        near = self._near(q)
+        phi = near + math.remainder(math.atan2(d2, d1) - near, 2 * math.pi)
+        return [self.angle_sum(q) - self.D * phi - self.c0]
 
     def jac_list(self, q):
         d1, d2 = self._d(q)

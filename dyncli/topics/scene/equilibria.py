@@ -48,6 +48,7 @@ from . import assembly, curvature
 EPS = float(np.finfo(float).eps)
 STEP = 0.1              # path step along a free coordinate (rad, or a fraction of the scene's size)
 REACH = math.pi         # how far each path runs either way (same units)
+FAR = 3                 # ... and on, until each angle moving along it has turned by π, at most FAR × REACH
 MAX_FOUND = 24
 EVERY = 5              # every fifth point of a path starts a Newton iteration too
 MAX_WALKED = 8         # equilibria whose own paths are followed too
@@ -262,6 +263,12 @@ class Search:
             out.append([x for x in got if x is not None])
         return out
 
+    def _moving_angles(self, t) -> np.ndarray:
+        """The angles a path's tangent t turns at a rate of at least a tenth of its fastest one's."""
+        rates = np.where(self.angles, np.abs(t), 0.0)
+        top = float(np.max(rates, initial=0.0))
+        return (rates >= 0.1 * top) & (rates > 0) if top > 0 else np.zeros(self.n, dtype=bool)
+
     def _walk(self, ways, walks, group) -> None:
         """The ways (q0, t0) of ``group`` walked together, their steps and tangents into ``walks``."""
         qs, ts, live = [], [], []
@@ -273,7 +280,16 @@ class Search:
                 ts.append(t)
                 live.append(w)
                 walks[w][1].append(t)
-        for _ in range(int(REACH / STEP)):
+        # a path runs REACH either way, and on until every angle moving along it has turned by π
+        # (a geared pendulum's slower wheel, whose angle is a part of the path's length only), at
+        # most FAR × REACH
+        start = {w: ways[w][0] for w in group}
+        moving = {w: self._moving_angles(t) for w, t in zip(live, ts)}
+        base = int(REACH / STEP)
+        for k in range(FAR * base):
+            if k >= base:
+                on = [j for j, w in enumerate(live) if np.any(np.abs(qs[j][moving[w]] - start[w][moving[w]]) < math.pi)]
+                qs, ts, live = [qs[j] for j in on], [ts[j] for j in on], [live[j] for j in on]
             if not live:
                 break
             if len(live) == 1:                  # one path (an element on a curve): the plain forms

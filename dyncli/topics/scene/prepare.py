@@ -72,6 +72,7 @@ def setup(plan: build.Plan) -> Scene:
                         f"{names[k]} = {theirs:.6g}); give that coordinate in the file to choose")
     _refuse_redundant(system, q)
     _refuse_loose_gears(system, q)
+    _gear_carriers(system, q)
     v_in = v.copy()
     start.slipping_given(system, q, v, vgiven)
     v, changed = assembly.project_velocity(system, q, assembly.implied_rates(system, q, v, vgiven))
@@ -319,6 +320,37 @@ def _refuse_massless(system, q, plan) -> None:
             raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
                              f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
                              "the joints carry it", f"bodies.{body.name}.{what}")
+
+
+def _gear_carriers(system, q) -> None:
+    """Each gear pair's carrier: the ground, or the rigid body, that its line of centres turns with
+    along every motion the joints allow (φ̇ = 0, or φ̇ = θ̇_C, on their null space: pinned axles, a
+    planet's arm); the row then reads φ on that branch, so that its windings are no branches of
+    the positions (elements.Gear)."""
+    gears = [e for e in system.elements if e.kind == "gear" and hasattr(e, "B")]
+    if not gears:
+        return
+    # the mechanism's motions, its drives left free (a driven carrier turns the line of centres)
+    rows = [r for e in system.elements if e.kind != "drive" for r in e.jac_list(q)]
+    J = np.array(rows, dtype=float).reshape(len(rows), system.n)
+    _, sv, Vt = np.linalg.svd(J)
+    N = Vt[int(np.sum(sv > sv[0] * 1e-10)) if sv.size and sv[0] > 0 else 0:].T
+    for g in gears:
+        d1, d2 = g._d(q)
+        dd = d1 * d1 + d2 * d2
+        grad = np.zeros(system.n)
+        a, b = g.A.index, g.B.index
+        grad[a[0]], grad[a[1]], grad[b[0]], grad[b[1]] = d2 / dd, -d1 / dd, -d2 / dd, d1 / dd     # ∇φ
+        rate = grad @ N if N.size else np.zeros(0)
+        tol = 1e-9 * max(1.0, float(np.max(np.abs(rate), initial=0.0)))
+        if float(np.max(np.abs(rate), initial=0.0)) <= 1e-12 / math.sqrt(dd):
+            g.carrier, g.phi0 = "ground", math.atan2(d2, d1)
+            continue
+        for body in system.bodies:
+            k = body.index[2] if body.rigid else None
+            if k is not None and float(np.max(np.abs(rate - N[k]), initial=0.0)) <= tol:
+                g.carrier, g.phi0 = k, math.atan2(d2, d1) - float(q[k])
+                break
 
 
 def _refuse_loose_gears(system, q) -> None:

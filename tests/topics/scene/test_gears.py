@@ -222,3 +222,28 @@ def test_rack_refusals(change, field, needle):
     assert text != RACK
     refusal(text.replace("  axle: {pin: [pinion, [0, 0.1]]}", "  axle: {pin: [pinion, [0, 0.12]]}")
             if "0.12" in change[1] else text, field, needle)
+
+
+def test_a_geared_pendulum_has_both_equilibria():
+    # W (5 kg) fixed 0.15 below B's axle; B (Ī_B = 0.16) meshes with A (Ī_A = 0.01, ω_A = −2 ω_B):
+    # ω² = m g r / (Ī_B + m r² + 4 Ī_A) hanging, its negative inverted — the equilibrium search
+    # walks on until B (the slower wheel) has turned by π
+    r = solved("""
+type: scene
+bodies:
+  A: {shape: disk, mass: 2, radius: 0.1, x: [0, 0]}
+  B: {shape: disk, mass: 8, radius: 0.2, x: [0.3, 0], angle: 0, points: {P: [0, -0.15]}}
+  W: {shape: point, mass: 5, x: [0.3, -0.15]}
+joints:
+  pA: {pin: [A, [0, 0]]}
+  pB: {pin: [B, [0.3, 0]]}
+  mesh: {gear: [A, B]}
+  fix: {pin: [W, B.P]}
+at: [0]
+linearize: true
+""")
+    w2 = 5 * G * mp.mpf("0.15") / (mp.mpf("0.16") + 5 * mp.mpf("0.0225") + 4 * mp.mpf("0.01"))
+    eq = r["equilibria"]
+    assert [e["stability"] for e in eq] == ["stable", "unstable"]
+    near(eq[0]["omega2"][0], w2, w2, "hanging", 1e-9)
+    near(eq[1]["omega2"][0], -w2, w2, "inverted", 1e-9)
