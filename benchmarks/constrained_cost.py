@@ -2,8 +2,8 @@
 equation (issue #26: goal <= 1.2x), in the manner of benchmarks/runner_cost.py.
 
 The problem: a bead on a hoop of radius R turning at ω about its vertical diameter, q̈ = sin q
-(ω² cos q − g/R), given without q_range: the ODE route (with q_range the Jacobi integral takes
-the quadrature route, which needs the wire's ends for its table).  The reference
+(ω² cos q − g/R), on the ODE route (``method: ode``: left to itself the hoop, a closed curve, has
+the Jacobi integral and takes the quadrature route).  The reference
 is mpmath's Taylor-series ODE solver at 30 digits; the error of q and q̇, each relative to its
 scale over the requested times.
 
@@ -51,7 +51,7 @@ rotation: {{axis: [0, 0, 1], omega: {W}}}
 q0: {Q0}
 forces: [{{kind: gravity}}]
 at: {TIMES}
-accuracy: {{rtol: {rtol}, atol: {atol}, estimate: {estimate}}}
+accuracy: {{rtol: {rtol}, atol: {atol}, estimate: {estimate}, method: ode}}
 """
 
 

@@ -77,7 +77,7 @@ class ConstrainedParticle(ProblemBase):
     curve: Curve = Field(description="the curve {x1, x2, x3}: expressions in the parameter q [m]")
     q_range: Optional[list[Annotated[float, Num()]]] = Field(
         None, description="[q_min, q_max]: the ends of the wire (a closed curve when y(q_min) = y(q_max)); "
-                          "needed for the relative equilibria")
+                          "needed for the relative equilibria (left out on a curve periodic in q: one period)")
     rotation: Optional[Rotation] = Field(None, description="{axis, omega}: the curve turns about a fixed axis; none = fixed")
     q0: Annotated[float, Num(description="initial parameter q(0)")] = 0.0
     q_dot0: Annotated[float, Num(description="initial rate dq/dt at t = 0 [1/s] (relative to the curve)")] = 0.0

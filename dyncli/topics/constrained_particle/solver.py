@@ -17,6 +17,7 @@ a fixed or uniformly turning curve with their stability (equilibria.py).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -94,6 +95,7 @@ def solve_setup(p: Setup) -> Result:
     if p.steady_only:
         return _steady_only(p, curve)
     _check_curve(p, curve)
+    p, closed = _periodic(p)
     model = dynamics.Model(p, curve)
     steadies = steady.answers(p, model) if p.steady else None     # refused before the motion is solved
     meth = p.accuracy.method
@@ -130,11 +132,30 @@ def solve_setup(p: Setup) -> Result:
         find.report(p, res, find.ode_states(p, model, phases), find.ode_breaks(res.extra.pop("breaks_of")), SERIES,
                     subdivide=1, turn_times=find.ode_turns(phases), smooth=True,
                     s_of=find.ode_arc(model, phases, float(p.q0), zip(times, res.results["s"])))
+    if closed:
+        res.notes.append(closed)
     equilibria.add(res, p, model)
     if steadies is not None:
         steady.add(res, steadies)
     _no_forces(res, p)
     return res
+
+
+def _periodic(p: Setup) -> tuple[Setup, str | None]:
+    """A curve given without ``q_range`` whose coordinates are periodic in q (read from their
+    expressions, dyncli.expr.period) is a closed curve: its q_range is one period, the one that
+    holds q0 (the energy route, the relative equilibria), and a note says so."""
+    if p.q_range is not None:
+        return p, None
+    from dyncli.expr.period import common_period
+
+    period = common_period(p.curve, "q")
+    if period is None:
+        return p, None
+    lo = -period / 2 + period * round(float(p.q0) / period)
+    return (replace(p, q_range=(lo, lo + period)),
+            f"a closed curve: its coordinates repeat every {period:.10g} in q (q_range taken as [{lo:.6g}, "
+            f"{lo + period:.6g}])")
 
 
 def _steady_only(p, curve) -> Result:

@@ -28,7 +28,7 @@ rotation: {{axis: [0, 0, 1], omega: "{w}"}}
 q0: 0.3
 forces: [{{kind: gravity}}]
 at: {times}
-accuracy: {{rtol: {rtol}, atol: {atol}}}
+accuracy: {{rtol: {rtol}, atol: {atol}, method: ode}}
 """
 PARABOLA = """type: constrained-particle
 m: 0.2
