@@ -101,10 +101,10 @@ def test_constrained_particle_runs_no_check_solve_without_estimate(monkeypatch):
     monkeypatch.setattr(dynamics, "integrate", lambda *a, **k: calls.append(a[1]) or real(*a, **k))
     text = ("type: constrained-particle\nm: 0.1\ncurve: {x1: 'sin(q)', x2: 0, x3: '-cos(q)'}\n"
             "rotation: {axis: [0, 0, 1], omega: 6}\nq0: 0.3\nforces: [{kind: gravity}]\nat: [0, 1]\n")
-    rec = solve_one_text(text)
+    rec = solve_one_text(text + "accuracy: {method: ode}\n")     # (a closed hoop: the energy route by itself)
     assert len(calls) == 1 and rec["error_estimate"] > 0
     calls.clear()
-    solve_one_text(text + "accuracy: {estimate: true}\n")
+    solve_one_text(text + "accuracy: {estimate: true, method: ode}\n")
     assert len(calls) == 2 and calls[1] == pytest.approx(calls[0] / ode.CHECK_DIV)
 
 
