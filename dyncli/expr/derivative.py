@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 
+from dyncli.expr.evaluate import uses
+
 ENABLED = True          # tests set this False to force sympy's derivative (the oracle)
 
 _ZERO, _ONE = ("num", 0.0), ("num", 1.0)
@@ -57,17 +59,6 @@ def _call(name, *args):
     return ("call", name, tuple(args))
 
 
-def _uses(n: tuple, var: str) -> bool:
-    k = n[0]
-    if k == "var":
-        return n[1] == var
-    if k in ("num", "param"):
-        return False
-    if k == "call":
-        return any(_uses(a, var) for a in n[2])
-    return any(_uses(a, var) for a in n[1:])
-
-
 def _d_call(name: str, args: tuple, var: str) -> tuple:
     if name in ("min", "max"):
         raise _NoRule(name)
@@ -99,7 +90,7 @@ def _d_call(name: str, args: tuple, var: str) -> tuple:
 
 def _d_pow(a: tuple, b: tuple, var: str) -> tuple:
     da = d_ir(a, var)
-    if not _uses(b, var):                              # (a**n)' = n a**(n-1) a'
+    if not uses(b, var):                              # (a**n)' = n a**(n-1) a'
         if _is(da, 0.0):
             return _ZERO
         if b[0] == "num":

@@ -38,6 +38,18 @@ def _funcs() -> dict:
     return _FUNCS_CACHE
 
 
+def uses(ir: tuple, var: str) -> bool:
+    """Whether the IR refers to the variable ``var``."""
+    kind = ir[0]
+    if kind == "var":
+        return ir[1] == var
+    if kind in ("num", "param"):
+        return False
+    if kind == "call":
+        return any(uses(a, var) for a in ir[2])
+    return any(uses(a, var) for a in ir[1:])
+
+
 def compile_ir(ir: tuple) -> Callable[[Mapping[str, Any]], Any]:
     """The IR as one closure ``env -> value`` over numpy ufuncs (vectorised over arrays in ``env``);
     a variable missing from ``env`` is InputError."""

@@ -16,6 +16,7 @@ import math
 from typing import Callable
 
 from dyncli.expr import floatmath as fm
+from dyncli.expr.evaluate import uses
 
 
 def _min(*a: float) -> float:
@@ -48,21 +49,10 @@ def float_fn(e, var: str = "t") -> Callable[[float], float]:
     return _compile(e.ir, var)
 
 
-def _uses(ir: tuple, var: str) -> bool:
-    kind = ir[0]
-    if kind == "var":
-        return True
-    if kind in ("num", "param"):
-        return False
-    if kind == "call":
-        return any(_uses(arg, var) for arg in ir[2])
-    return any(_uses(arg, var) for arg in ir[1:])
-
-
 def _compile(ir: tuple, var: str) -> Callable[[float], float]:
     """Closures over the tree; a subtree free of ``var`` is evaluated once, here, and a binary
     operation with a constant side closes over its value (one call less per node)."""
-    if not _uses(ir, var):
+    if not uses(ir, var):
         v = _build(ir, var)(0.0)
         return lambda x: v
     return _build(ir, var)
@@ -94,7 +84,7 @@ def _build(ir: tuple, var: str) -> Callable[[float], float]:
 
 def _binary(kind: str, left: tuple, right: tuple, var: str) -> Callable[[float], float]:
     a, b = _compile(left, var), _compile(right, var)
-    ca, cb = not _uses(left, var), not _uses(right, var)
+    ca, cb = not uses(left, var), not uses(right, var)
     if kind == "mul" and (ca or cb):
         c, g = (a(0.0), b) if ca else (b(0.0), a)
         other = right if ca else left

@@ -19,27 +19,18 @@ import math
 from fractions import Fraction
 from typing import Iterable
 
+from dyncli.expr.evaluate import uses
+
 #: the most oscillations of the fastest frequency one common period may hold (frequencies whose
 #: ratio is a rational of large terms, 1 and 1.1 as doubles, have no useful common period)
 MAX_OSCILLATIONS = 64
-
-
-def _uses(n: tuple, var: str) -> bool:
-    k = n[0]
-    if k == "var":
-        return n[1] == var
-    if k in ("num", "param"):
-        return False
-    if k == "call":
-        return any(_uses(a, var) for a in n[2])
-    return any(_uses(a, var) for a in n[1:])
 
 
 def _affine(n: tuple, var: str) -> tuple[float, float] | None:
     """(a, b) with n = a·var + b, or None when n is not affine in var."""
     from dyncli.expr.evaluate import fold
 
-    if not _uses(n, var):
+    if not uses(n, var):
         return 0.0, fold(n)
     k = n[0]
     if k == "var":
@@ -69,7 +60,7 @@ def _affine(n: tuple, var: str) -> tuple[float, float] | None:
 def frequencies(n: tuple, var: str) -> set[float] | None:
     """The angular frequencies (in var) of the node: an empty set for a constant, None when it is
     not provably periodic."""
-    if not _uses(n, var):
+    if not uses(n, var):
         return set()
     k = n[0]
     if k == "var":

@@ -14,17 +14,7 @@ from __future__ import annotations
 
 
 from dyncli.errors import InputError
-
-
-def _uses(ir: tuple, name: str) -> bool:
-    kind = ir[0]
-    if kind == "var":
-        return ir[1] == name
-    if kind in ("num", "param"):
-        return False
-    if kind == "call":
-        return any(_uses(a, name) for a in ir[2])
-    return any(_uses(a, name) for a in ir[1:])
+from dyncli.expr.evaluate import uses
 
 
 def _zero_at_rest(ir: tuple) -> bool:
@@ -43,8 +33,8 @@ def _sign_of_v(ir: tuple) -> bool:
         return False
     if kind == "call":
         args = ir[2]
-        if ir[1] == "sign" and len(args) == 1 and _uses(args[0], "v") \
-                and not any(_uses(args[0], x) for x in ("t", "s")) and _zero_at_rest(args[0]):
+        if ir[1] == "sign" and len(args) == 1 and uses(args[0], "v") \
+                and not any(uses(args[0], x) for x in ("t", "s")) and _zero_at_rest(args[0]):
             return True
         return any(_sign_of_v(a) for a in args)
     return any(_sign_of_v(a) for a in ir[1:])
