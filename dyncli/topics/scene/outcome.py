@@ -126,7 +126,7 @@ def _present(res, scene, traj, inst, times) -> None:
 
 
 def _drawing(scene) -> dict:
-    """What the plots draw: each body's shape and size, the surfaces, the fixed pulleys."""
+    """What the plots draw: each body's shape and size, the surfaces, the fixed pulleys and pegs."""
     s = scene.system
     bodies = {b.name: {"shape": b.shape, "length": b.length, "radius": b.radius, "size": b.size} for b in s.bodies}
     span = max(assembly.length_scale(scene.q0, s), 1.0)
@@ -138,6 +138,7 @@ def _drawing(scene) -> dict:
                     for end in (seg.a, seg.b):
                         if end.fixed is not None:
                             pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
+            pulleys += [((float(p.p[0]), float(p.p[1])), 0.0) for p in getattr(e, "pegs", ())]
     return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d, "length": x.length}
                                           for x in scene.surfaces if not getattr(x, "carried", False)],
             "pulleys": pulleys, "span": span}
