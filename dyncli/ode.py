@@ -112,7 +112,10 @@ class Budget:
         if self._n_leg % CPU_PROBE == 0:
             cpu = cputime.over_budget(self._cpu_leg0, abs(t - self._t_cpu0), abs(self.goal - t))
             if cpu is not None:
-                raise OverCpu(self.goal, *cpu, self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300), t, y, h)
+                need = self.n + left * self._n_leg / max(abs(t - self.t0), 1e-300)
+                if need > self.limit:       # over the step budget too: its message, which the load does not change
+                    raise OverBudget(self.goal, need, self.limit, t, y, h)
+                raise OverCpu(self.goal, *cpu, need, t, y, h)
 
 
 class OverCpu(OverBudget):
