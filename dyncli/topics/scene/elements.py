@@ -531,13 +531,17 @@ class Gear(ListRows):
         dd = d1 * d1 + d2 * d2
         return [-2.0 * self.D * (d1 * e2 - d2 * e1) * (d1 * e1 + d2 * e2) / (dd * dd)]
 
+    def phi_grad(self, q) -> np.ndarray:
+        """∇φ of the line of centres' angle (the row's centre entries over −D)."""
+        row = np.array(self.jac_list(q)[0])
+        row[self.A.index[2]] = row[self.B.index[2]] = 0.0
+        return row / -self.D
+
     def straight_along(self, q, N) -> bool:
         """Whether the line of centres keeps its direction along the motion N (pinned gears): the
         row is then affine along it."""
-        row = np.array(self.jac_list(q)[0])
-        row[self.A.index[2]] = row[self.B.index[2]] = 0.0
-        N = np.ravel(np.asarray(N, float))
-        return abs(float(row @ N)) <= 1e-12 * float(np.linalg.norm(row)) * float(np.linalg.norm(N))
+        grad, N = self.phi_grad(q), np.ravel(np.asarray(N, float))
+        return abs(float(grad @ N)) <= 1e-12 * float(np.linalg.norm(grad)) * float(np.linalg.norm(N))
 
     def hessian(self, q, w, n: int) -> np.ndarray:
         """w ∇²(−D φ): φ = atan2(d2, d1) of d = x_B − x_A, ∂²φ/∂d² = [[2 d1 d2, d2² − d1²], [d2² − d1², −2 d1 d2]]/|d|⁴."""

@@ -338,10 +338,7 @@ def _gear_carriers(system, q) -> None:
     for g in gears:
         d1, d2 = g._d(q)
         dd = d1 * d1 + d2 * d2
-        grad = np.zeros(system.n)
-        a, b = g.A.index, g.B.index
-        grad[a[0]], grad[a[1]], grad[b[0]], grad[b[1]] = d2 / dd, -d1 / dd, -d2 / dd, d1 / dd     # ∇φ
-        rate = grad @ N if N.size else np.zeros(0)
+        rate = g.phi_grad(q) @ N if N.size else np.zeros(0)
         tol = 1e-9 * max(1.0, float(np.max(np.abs(rate), initial=0.0)))
         if float(np.max(np.abs(rate), initial=0.0)) <= 1e-12 / math.sqrt(dd):
             g.carrier, g.phi0 = "ground", math.atan2(d2, d1)
