@@ -24,6 +24,10 @@ Then 2.65 / 3.45 / 4.70 -> 2.36 / 3.10 / 4.34 ms, ratios 2.37 / 2.00 / 1.81 -> 2
 (load 5-7, back to back: the turning roots in plain floats, y' and y'' read once, docs/accuracy.md).
 The steps are the script's (15 / 24 / 40); the integration alone costs about the script's whole
 time; the rest is the results the script does not compute (docs/accuracy.md).
+The hoop, a closed curve, also has its relative equilibria in the result ("equil ms", the solve
+with them left out: "w/o eq"): 4.72 / 5.50 / 6.90 ms, ratios 4.09 / 3.10 / 2.59, of which the
+equilibria 2.06 / 2.10 / 2.22 ms (36 ms before all_roots read its cells in batches; without them
+2.30 / 1.92 / 1.76; load 1.4-2.1, median of 21).
 """
 
 from __future__ import annotations
@@ -96,6 +100,19 @@ def dyncli_solver(rtol, estimate):
     return fn(lp.model, SolveOptions()), lambda: fn(lp.model, SolveOptions())
 
 
+def without_equilibria(fn):
+    """``fn`` with the relative equilibria left out (their search timed apart: the script has none)."""
+    from dyncli.topics.constrained_particle import equilibria
+
+    def run():
+        add, equilibria.add = equilibria.add, lambda res, p, model: None
+        try:
+            return fn()
+        finally:
+            equilibria.add = add
+    return run
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--rtols", type=float, nargs="+", default=[1e-6, 1e-8, 1e-10])
@@ -104,8 +121,8 @@ def main() -> None:
     warnings.simplefilter("ignore")
     ref = reference()
     print(f"load average {os.getloadavg()[0]:.2f}; CPU ms, median of {args.repeats}")
-    print(f"{'rtol':>6} {'dyncli ms':>9} {'error':>8} {'est':>8} {'check ms':>8} | {'scipy rtol':>10} {'ms':>6} "
-          f"{'error':>8} | {'ratio':>5}")
+    print(f"{'rtol':>6} {'dyncli ms':>9} {'error':>8} {'est':>8} {'check ms':>8} {'equil ms':>8} | "
+          f"{'scipy rtol':>10} {'ms':>6} {'error':>8} | {'ratio':>5} {'w/o eq':>6}")
     for rtol in args.rtols:
         res, plain = dyncli_solver(rtol, False)
         _, with_check = dyncli_solver(rtol, True)
@@ -119,9 +136,11 @@ def main() -> None:
         if got is None:
             print(f"{rtol:6.0e}  scipy never reaches {err:.1e}")
             continue
-        t_d, t_c, t_s = interleaved([plain, with_check, lambda: script(got[0], got[0] * 1e-3)], args.repeats)
-        print(f"{rtol:6.0e} {t_d * 1e3:9.2f} {err:8.1e} {res.error_estimate:8.1e} {(t_c - t_d) * 1e3:8.2f} | "
-              f"{got[0]:10.1e} {t_s * 1e3:6.2f} {got[1]:8.1e} | {t_d / t_s:5.2f}")
+        t_d, t_c, t_e, t_s = interleaved([plain, with_check, without_equilibria(plain),
+                                          lambda: script(got[0], got[0] * 1e-3)], args.repeats)
+        print(f"{rtol:6.0e} {t_d * 1e3:9.2f} {err:8.1e} {res.error_estimate:8.1e} {(t_c - t_d) * 1e3:8.2f} "
+              f"{(t_d - t_e) * 1e3:8.2f} | {got[0]:10.1e} {t_s * 1e3:6.2f} {got[1]:8.1e} | {t_d / t_s:5.2f} "
+              f"{t_e / t_s:6.2f}")
 
 
 if __name__ == "__main__":

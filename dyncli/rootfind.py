@@ -277,18 +277,51 @@ def minimize_bounded(f, lo: float, hi: float, xatol: float):
     return float(r.x), r.fun
 
 
-def _critical(c, deg: int):
-    """The real critical points in (−1, 1) of the Chebyshev series ``c`` (sorted), or None when
-    its derivative's companion matrix is not finite."""
+def _critical(S, noise):
+    """The real critical points in (−1, 1) of each Chebyshev series, a row of ``S`` (sorted), None
+    for a series whose derivative's companion matrix is not finite.  Each series is first cut
+    after its last coefficient above its ``noise`` (the coefficients below the rounding of the
+    values interpolated are that rounding); the companion matrices of one size go to numpy's
+    eigvals in one stack (the roots as numpy's chebroots gives them)."""
+    import numpy as np
+
+    big = np.abs(S) > np.asarray(noise)[:, None]
+    kept = np.where(big.any(axis=1), S.shape[1] - 1 - np.argmax(big[:, ::-1], axis=1), 0)   # the degree kept
+    out: list = [np.array([])] * len(S)             # (degree below 2: a line, monotone)
+    for n in {int(v) for v in kept if v >= 2}:
+        idx = np.flatnonzero(kept == n)
+        D = S[idx, :n + 1] @ _derivative_matrix(n).T          # p' (degree n − 1), a row each
+        size = n - 1
+        if size == 1:
+            r = (-D[:, 0] / D[:, 1])[:, None]
+            ok = np.isfinite(r[:, 0])
+        else:
+            base, ratio = _companion_parts(size)
+            with np.errstate(all="ignore"):
+                mats = np.repeat(base[None], len(idx), axis=0)
+                mats[:, :, -1] -= (D[:, :-1] / D[:, -1:]) * ratio * .5
+            ok = np.all(np.isfinite(mats), axis=(1, 2))
+            r = np.full((len(idx), size), np.nan, dtype=complex)
+            if np.any(ok):
+                try:
+                    r[ok] = np.linalg.eigvals(mats[ok][:, ::-1, ::-1])
+                except np.linalg.LinAlgError:
+                    ok[:] = False
+        for i, row, good in zip(idx, r, ok):
+            out[i] = np.sort(np.real(row[(np.abs(np.imag(row)) <= 1e-8) & (np.abs(np.real(row)) < 1)])) if good else None
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _derivative_matrix(n: int):
+    """The (n, n + 1) matrix taking a Chebyshev series of degree n to its derivative's
+    (numpy's chebder of each unit series; kept: never written to)."""
     import numpy as np
     from numpy.polynomial import chebyshev as C
 
-    try:
-        with np.errstate(all="ignore"):
-            r = cheb_roots(C.chebder(c)) if deg > 1 and np.any(c[2:]) else np.array([])
-    except np.linalg.LinAlgError:
-        return None
-    return np.sort(np.real(r[(np.abs(np.imag(r)) <= 1e-8) & (np.abs(np.real(r)) < 1)]))
+    D = C.chebder(np.eye(n + 1), axis=0)
+    D.flags.writeable = False
+    return D
 
 
 @functools.lru_cache(maxsize=8)
@@ -304,8 +337,9 @@ def _nodes(deg: int):
     return x1, V
 
 
-def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_depth: int = 48,
-              limit: int | None = None, floor: float = 0.0, budget: int = 20_000):
+def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_depth: int = 48,
+              limit: int | None = None, floor: float = 0.0, budget: int = 20_000, batch: int = 64,
+              f1=None):
     """Every root of a smooth ``f`` (on arrays) in [a, b], decided by the sign analysis of its
     critical points, not by sampling: (roots, touches, bad).  On each cell f is replaced by its
     Chebyshev interpolant p of degree ``deg``, the cell halved until p's last coefficients are at
@@ -316,14 +350,19 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
     double root (``touches``) unless halving the cell around it decides its sign.  ``bad``: cells
     where f is not finite or not resolved (midpoints; also a cell halved ``max_depth`` times and
     still not resolved, wider than the rounding of x), or beyond ``budget`` cells; ``limit``:
-    stop once more than that many roots are found.  (One loop over a stack of cells, a little over
-    60 lines: its steps share the cell's state and read best in one place.)"""
+    stop once more than that many roots are found (the cells taken in order from ``a``).  The
+    cells waiting on the stack are read ``batch`` at a time (:class:`_Cells`: one call of f for
+    the nodes of the cell taken and the next ``batch`` − 1, one for the separators of those
+    resolved): the same cells, the same values, the same roots as one at a time (``batch=1``:
+    a search that stops at its first root reads no cell beyond it)."""
     import numpy as np
 
-    eps, (x1, V) = sys.float_info.epsilon, _nodes(deg)
+    eps = sys.float_info.epsilon
     edges = np.linspace(a, b, cells + 1)           # the starting cells (halved where needed)
     stack, tiny = [(float(u), float(v), 0) for u, v in zip(edges[:-1], edges[1:])][::-1], 64 * eps * max(abs(a), abs(b), 1e-300)
     roots, touches, bad = list[float](), list[float](), []      # (the sign changes, the double roots, the unresolved cells)
+    read = _Cells(f, deg, floor, batch)
+    one = f1 or (lambda x: float(np.asarray(f(np.array([x])), dtype=float)[0]))
     while stack and (limit is None or len(roots) + len(touches) <= limit):
         u, v, depth = stack.pop()
         m, h = 0.5 * (u + v), 0.5 * (v - u)
@@ -334,30 +373,25 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
         if (budget := budget - 1) < 0:
             bad.append(m)
             continue
-        with np.errstate(all="ignore"):
-            y, split = np.asarray(f(m + h * x1), dtype=float), depth < max_depth and h > tiny
-        if not np.all(np.isfinite(y)):          # (a cell with no finite value at all: not halved)
-            if split and np.any(np.isfinite(y)):
+        cell, split = read.cell(u, v, stack), depth < max_depth and h > tiny
+        if cell.kind == "infinite":             # (a cell with no finite value at all: not halved)
+            if split and cell.some_finite:
                 stack += [(m, v, depth + 1), (u, m, depth + 1)]
             else:
                 bad.append(m)
             continue
-        c = V.T @ y / (deg + 1)
-        c[1:] *= 2
-        noise = 16 * eps * float(np.max(np.abs(y)))
-        if float(np.max(np.abs(c[-3:]))) > max(1e-13 * float(np.max(np.abs(c))), noise, floor):
+        if cell.kind == "unresolved":
             if split:
                 stack += [(m, v, depth + 1), (u, m, depth + 1)]
                 continue
             if h > tiny:                        # halved max_depth times and still not resolved: not decided
                 bad.append(m)
                 continue
-        if (r := _critical(c, deg)) is None:    # (a huge f: its derivative's companion matrix overflows)
+            read.separate((cell, u, v))
+        if cell.kind == "overflow":             # (a huge f: its derivative's companion matrix overflows)
             bad.append(m)
             continue
-        sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
-        with np.errstate(all="ignore"):
-            fs = [float(w) for w in np.asarray(f(np.array(sep)), dtype=float)]
+        sep, fs, noise = cell.sep, cell.fs, cell.noise
         undecided = [j for j in range(1, len(sep) - 1)
                      if abs(fs[j]) <= noise and fs[j] * fs[j - 1] > 0 and fs[j] * fs[j + 1] > 0]
         s = sep[undecided[0]] if undecided else u
@@ -370,10 +404,88 @@ def all_roots(f, a: float, b: float, *, cells: int = 64, deg: int = 32, max_dept
             if fs[j] == 0 and (j > 0 or not roots or roots[-1] != sep[j]):
                 roots.append(sep[j])
             elif fs[j] * fs[j + 1] < 0:
-                roots.append(brent(lambda x: float(np.asarray(f(np.array([x])), dtype=float)[0]), sep[j], sep[j + 1],
+                roots.append(brent(one, sep[j], sep[j + 1],
                                    4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
         roots += [v] if fs[-1] == 0 and v == b else []
     return sorted(set(roots)), sorted(touches), bad
+
+
+class _Cell:
+    """What all_roots reads of one cell: ``kind`` "infinite" (a value not finite; ``some_finite``),
+    "unresolved" (p's last coefficients above the rounding), "overflow" (p' has no finite
+    companion matrix) or "ok", with the separators ``sep`` (the ends and p's critical points) and
+    f there (``fs``), ``noise`` the rounding of f on the cell."""
+
+    __slots__ = ("kind", "some_finite", "c", "noise", "sep", "fs")
+
+    def __init__(self, kind, some_finite=False, c=None, noise=0.0):
+        self.kind, self.some_finite, self.c, self.noise = kind, some_finite, c, noise
+        self.sep = self.fs = None
+
+
+class _Cells:
+    """all_roots' reading of its cells, ``batch`` at a time: the cell popped and the cells on top
+    of the stack not read yet, their nodes in one call of f and the separators of those resolved
+    in one more (each cell's numbers exactly as read alone)."""
+
+    def __init__(self, f, deg, floor, batch):
+        self.f, self.deg, self.floor, self.batch = f, deg, floor, batch
+        self.x1, self.V = _nodes(deg)
+        self.read: dict[tuple[float, float], _Cell] = {}
+
+    def cell(self, u, v, stack) -> _Cell:
+        got = self.read.pop((u, v), None)
+        if got is not None:
+            return got
+        import numpy as np
+
+        group = [(u, v)]
+        for w in reversed(stack):
+            if len(group) >= self.batch or (w[0], w[1]) in self.read:
+                break
+            group.append((w[0], w[1]))
+        x1, n = self.x1, self.deg + 1
+        X = np.concatenate([0.5 * (p + q) + 0.5 * (q - p) * x1 for p, q in group])
+        with np.errstate(all="ignore"):
+            Y = np.broadcast_to(np.asarray(self.f(X), dtype=float), X.shape).reshape(len(group), n)
+        eps = sys.float_info.epsilon
+        with np.errstate(all="ignore"):
+            C = Y @ self.V / n
+            C[:, 1:] *= 2
+            noise = 16 * eps * np.max(np.abs(Y), axis=1)
+            ok = ~(np.max(np.abs(C[:, -3:]), axis=1)
+                   > np.maximum(np.maximum(1e-13 * np.max(np.abs(C), axis=1), noise), self.floor))
+        finite = np.isfinite(Y)
+        cells = [_Cell("ok" if ok[i] else "unresolved", c=C[i], noise=float(noise[i])) if finite[i].all()
+                 else _Cell("infinite", bool(finite[i].any())) for i in range(len(group))]
+        self.separate(*[(c, p, q) for c, (p, q) in zip(cells, group) if c.kind == "ok"])
+        for c, key in zip(cells[1:], group[1:]):
+            self.read[key] = c
+        return cells[0]
+
+    def separate(self, *cells) -> None:
+        """The separators of the cells ((cell, u, v): the ends and p's critical points between)
+        and f there, in one call."""
+        import numpy as np
+
+        if not cells:
+            return
+        todo = []
+        crit = _critical(np.array([c.c for c, _, _ in cells]), [c.noise for c, _, _ in cells])
+        for (c, u, v), r in zip(cells, crit):
+            if r is None:
+                c.kind = "overflow"
+                continue
+            m, h = 0.5 * (u + v), 0.5 * (v - u)
+            c.sep = [u] + [float(m + h * t) for t in r if u < m + h * t < v] + [v]
+            todo.append(c)
+        if not todo:
+            return
+        with np.errstate(all="ignore"):
+            fs = [float(w) for w in np.asarray(self.f(np.array([x for c in todo for x in c.sep])), dtype=float)]
+        k = 0
+        for c in todo:
+            c.fs, k = fs[k:k + len(c.sep)], k + len(c.sep)
 
 
 def distinct_sorted(a):

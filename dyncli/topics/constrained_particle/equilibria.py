@@ -31,10 +31,33 @@ MAX_EQUILIBRIA = 100      # more on one q_range: refused (give a shorter q_range
 
 
 def _G(model, q, phi=0.0):
+    """G and |τ| at rest at the parameters ``q``, the curve turned by ``phi`` (a number, or one a q)."""
     q = np.atleast_1d(np.asarray(q, float))
-    Y = np.vstack([q, np.zeros_like(q), np.full_like(q, phi), np.zeros_like(q), np.zeros_like(q)])
+    Y = np.vstack([q, np.zeros_like(q), np.broadcast_to(np.asarray(phi, float), q.shape), np.zeros_like(q),
+                   np.zeros_like(q)])
     e = model.evaluate(np.zeros_like(q), Y, ("stick", 0))
     return e["G"], e["speed"]
+
+
+def _plain_G(model):
+    """A float function of q with the sign of G (q̈ = G/(m |τ|) at rest at t = 0 from the
+    integrator's plain-float right-hand side, a few µs where G on an array costs ~0.1 ms) for the
+    roots' Brent steps, G itself where that side is not finite (a force singular at a point);
+    None with friction (the right-hand side's sliding friction is not G's)."""
+    if model.mu:
+        return None
+    from dyncli.errors import NumericalError
+
+    rhs = model.rhs_for(("slide", 1.0))
+    y = np.zeros(6)
+
+    def g(q):
+        y[0] = q
+        try:
+            return rhs(0.0, y)[1]
+        except NumericalError:
+            return float(_G(model, q)[0][0])
+    return g
 
 
 def _why_not(p, model) -> str | None:
@@ -53,19 +76,20 @@ def find(p, model):
 
     lo, hi = (float(v) for v in p.q_range)
     qs = np.linspace(lo, hi, N_CHECK + 1)        # the symmetry check only (no root is decided here)
-    with np.errstate(all="ignore"):
-        G, _ = _G(model, qs)
-        if model.curve.rotating:
-            for phi in (1.0, 2.5):
-                G2, _ = _G(model, qs, phi)
-                if not np.allclose(G, G2, rtol=1e-9, atol=1e-12 * max(1.0, float(np.nanmax(np.abs(G))))):
-                    return None, "the forces are not symmetric about the axis of rotation: no relative equilibria"
+    # a turning curve: the field symmetric about the axis by its terms (exact), else G the same
+    # with the curve turned by two more angles (a check, not a search)
+    symmetric = not model.curve.rotating or model.compiled.symmetric_about(model.curve.k)
+    turns = (0.0,) if symmetric else (0.0, 1.0, 2.5)
+    with np.errstate(all="ignore"):          # (the curve turned by each angle, in one call)
+        G, *G2 = _G(model, np.tile(qs, len(turns)), np.repeat(turns, len(qs)))[0].reshape(len(turns), len(qs))
+        if any(not np.allclose(G, g2, rtol=1e-9, atol=1e-12 * max(1.0, float(np.nanmax(np.abs(G))))) for g2 in G2):
+            return None, "the forces are not symmetric about the axis of rotation: no relative equilibria"
     scale = float(np.nanmax(np.abs(G))) if np.any(np.isfinite(G)) else 0.0
     if scale == 0.0:
         return None, "no tangential force anywhere on q_range: every point is a (neutral) relative equilibrium"
     g = lambda q: _G(model, q)[0]            # noqa: E731
-    roots, touches, _bad = all_roots(g, lo, hi, limit=MAX_EQUILIBRIA)
-    ends = g(np.array([lo, hi]))
+    roots, touches, _bad = all_roots(g, lo, hi, limit=MAX_EQUILIBRIA, f1=_plain_G(model))
+    ends = G[[0, -1]]                         # (q_range's ends: the check's first and last points)
     roots += [e for e, v in zip((lo, hi), ends) if abs(v) <= 64 * np.finfo(float).eps * scale]
     if model.closed and ends[0] * ends[1] <= 0:
         roots.append(lo)                      # G changes sign across the seam of a closed curve
@@ -75,8 +99,8 @@ def find(p, model):
     if len(roots) > MAX_EQUILIBRIA:
         return None, (f"more than {MAX_EQUILIBRIA} relative equilibria on q_range: give a shorter q_range "
                       "to list them")
-    regular = [q for q in roots if float(_G(model, q)[1][0]) > 0]
-    out = [_classify(model, regular, j, lo, hi) for j in range(len(regular))]
+    regular = [q for q, sp in zip(roots, _G(model, roots)[1] if roots else []) if sp > 0]
+    out = _classify_all(model, regular, lo, hi)
     if len(regular) < len(roots):
         bad = ", ".join(f"{q:.6g}" for q in roots if q not in regular)
         return out, (f"the curve's tangent dy/dq vanishes at q = {bad} (not a regular point of the parameter): "
@@ -84,9 +108,9 @@ def find(p, model):
     return out, None
 
 
-def _sides(model, qs, j, lo, hi):
-    """G on either side of the root qs[j], at the midpoints to its neighbours (no root between:
-    the sign there is the sign on that whole side), None where the wire ends."""
+def _neighbours(model, qs, j, lo, hi):
+    """The roots either side of the root qs[j] (across the seam of a closed curve), None where
+    the wire ends."""
     q, L = qs[j], hi - lo
     nb = []
     for k, end in ((j - 1, lo), (j + 1, hi)):
@@ -96,35 +120,43 @@ def _sides(model, qs, j, lo, hi):
             nb.append(qs[k % len(qs)] + (L if k >= len(qs) else -L) if len(qs) > 1 else q + (L if k > j else -L))
         else:
             nb.append(end if end != q else None)
-    vals = [None if v is None else float(_G(model, 0.5 * (q + v))[0][0]) for v in nb]
-    gap = min((abs(v - q) for v in nb if v is not None and v != q), default=L)
-    return vals, gap
+    return nb
 
 
-def _classify(model, qs, j, lo, hi):
-    """Stable when G is restoring on both sides (G > 0 below, < 0 above: a minimum of V_eff; exact,
-    also at a degenerate root where G'(q*) = 0); omega_small from G'(q*) (a Richardson central
-    difference on a step below the gap to the next root), 0 when G'(q*) is 0 within its error."""
-    q = qs[j]
-    (gl, gr), gap = _sides(model, qs, j, lo, hi)
-
-    def d(hh):
-        return (float(_G(model, q + hh)[0][0]) - float(_G(model, q - hh)[0][0])) / (2 * hh)
-
-    h = min(1e-4 * (hi - lo), 0.125 * gap)
-    d1, d2 = d(h), d(h / 2)
-    dG = (4 * d2 - d1) / 3          # Richardson: error O(h⁴)
-    _, sp = _G(model, q)
-    x = model.curve.state(0.0, q, 0.0, 0.0)[0][:, 0]
-    Gs = abs(float(_G(model, q + h)[0][0])) + abs(float(_G(model, q - h)[0][0]))
-    err = abs(d2 - d1) + 64 * np.finfo(float).eps * (Gs + abs(dG) * h) / h
-    if gl is not None and gr is not None:
-        stable = bool(gl > 0 > gr)
-    else:                            # at the end of an open wire: the linearisation, if it decides
-        stable = None if abs(dG) <= err else bool(dG < 0)
-    k = -dG / (model.m * float(sp[0]))
-    omega = (float(np.sqrt(k)) if dG < -err else 0.0) if stable else None
-    return {"q": float(q) + 0.0, "x": [float(c) + 0.0 for c in x], "stable": stable, "omega_small": omega}
+def _classify_all(model, qs, lo, hi):
+    """Each root's entry of ``equilibria``, G read at every point the roots need in one call.
+    Stable when G is restoring on both sides (G > 0 below, < 0 above, read at the midpoints to
+    the neighbouring roots: no root between, so the sign there is the sign on that whole side; a
+    minimum of V_eff; exact, also at a degenerate root where G'(q*) = 0); omega_small from G'(q*)
+    (a Richardson central difference on a step below the gap to the next root), 0 when G'(q*) is
+    0 within its error."""
+    if not qs:
+        return []
+    plan, pts = [], []
+    for j, q in enumerate(qs):
+        nb = _neighbours(model, qs, j, lo, hi)
+        gap = min((abs(v - q) for v in nb if v is not None and v != q), default=hi - lo)
+        h = min(1e-4 * (hi - lo), 0.125 * gap)
+        sides = [None if v is None else len(pts) + k for k, v in enumerate(nb)]
+        plan.append((q, h, sides, len(pts) + 2))
+        pts += [0.5 * (q + v) if v is not None else q for v in nb] + [q + h, q - h, q + h / 2, q - h / 2, q]
+    G, sp = _G(model, np.array(pts))
+    out = []
+    for q, h, sides, k in plan:
+        gl, gr = (None if s is None else float(G[s]) for s in sides)
+        gp, gm, gp2, gm2 = (float(v) for v in G[k:k + 4])
+        d1, d2 = (gp - gm) / (2 * h), (gp2 - gm2) / h
+        dG = (4 * d2 - d1) / 3          # Richardson: error O(h⁴)
+        x = model.curve.state(0.0, q, 0.0, 0.0)[0][:, 0]
+        err = abs(d2 - d1) + 64 * np.finfo(float).eps * (abs(gp) + abs(gm) + abs(dG) * h) / h
+        if gl is not None and gr is not None:
+            stable = bool(gl > 0 > gr)
+        else:                            # at the end of an open wire: the linearisation, if it decides
+            stable = None if abs(dG) <= err else bool(dG < 0)
+        kk = -dG / (model.m * float(sp[k + 4]))
+        omega = (float(np.sqrt(kk)) if dG < -err else 0.0) if stable else None
+        out.append({"q": float(q) + 0.0, "x": [float(c) + 0.0 for c in x], "stable": stable, "omega_small": omega})
+    return out
 
 
 def add(res, p, model) -> None:

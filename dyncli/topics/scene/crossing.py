@@ -325,7 +325,7 @@ def _first_down(f, a: float, b: float, floor: float, cells: int) -> tuple[float,
     while none is r."""
     lo = prev = a
     while True:
-        roots, touches, bad = all_roots(f, lo, b, cells=cells, limit=FIRST_ROOTS, floor=floor)
+        roots, touches, bad = all_roots(f, lo, b, cells=cells, limit=FIRST_ROOTS, floor=floor, batch=1)
         best = None
         for r in sorted(r for r in roots if r > lo):
             if float(f(np.array([0.5 * (prev + r)]))[0]) > 0:
