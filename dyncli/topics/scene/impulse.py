@@ -156,6 +156,8 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
             courses = rough(s, q, v, t, rows, pts)
             applied = sum(Jk.T @ np.array([courses[id(el)].P, courses[id(el)].F]) for el, _r, Jk in pts)
         vp, lam, shared = _kkt(s, q, v, t, rows, applied)
+        if _held_slips(s, lam, struck):
+            continue
         skip = {i} if isinstance(e, Cord) else {s.elements.index(el) for el, _ in struck} if hold else set()
         pull = _pulling(s, lam, skip)
         if pull is None:
@@ -238,6 +240,34 @@ def _slides(s, lam, struck, slips) -> bool:
             el.sign = math.copysign(1.0, vt) if vt != 0 else -math.copysign(1.0, float(lm[1]))
             return True
     return False
+
+
+def _held_slips(s, lam, struck) -> bool:
+    """A rough contact or rolling body made and held at rest before the impact (not striking)
+    keeps its tangential row only while its friction impulse is within μ_s times its normal
+    impulse (Coulomb's law for impulses, as at a striking point): a block on a rough floor struck
+    sideways has no normal impulse from the floor, so no friction impulse, and moves off.  The one
+    furthest past its limit slides at μ_k Λ_n against the impulse it needed to hold (the single-step
+    rule); True when one changed (the system is solved again).  The test's rounding is the
+    impact's (64 ε of its largest impulse): a joint the impact does not load stays held."""
+    scale = 64 * EPS * max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+    striking = {id(el) for el, _ in struck}
+    worst, over = None, 0.0
+    for i, el in enumerate(s.elements):
+        if (not isinstance(el, (Contact, Rolls)) or id(el) in striking or el.rows != 2
+                or el.mode not in ("stick", "roll") or not el.rough):
+            continue
+        if isinstance(el, Rolls) and el.mu_s is None:
+            continue                                # (rolling without μ_s: it cannot slip)
+        N, F = (float(x) for x in s.lam_of(lam, i))
+        past = abs(F) - el.mu_s * N
+        if past > scale and past > over:
+            worst, over, sign = el, past, -math.copysign(1.0, F)
+    if worst is None:
+        return False
+    worst.mode = "slip" if isinstance(worst, Rolls) else "slide"
+    worst.sign = sign
+    return True
 
 
 def normal_acceleration(s, q, v, t, e) -> float:

@@ -78,6 +78,7 @@ class Trajectory:
     energy: object = None           # quadrature: the EnergyMotion
     phases: list = field(default_factory=list)    # phases.Phase, in order
     impacts: list = field(default_factory=list)   # phases.Impact, in order
+    warnings: list = field(default_factory=list)  # what the motion noticed (a point passing behind a stop)
     _memo: dict = field(default_factory=dict, repr=False)   # states asked for, by time
     _stacked: object = field(default=None, repr=False)      # _Stacked: the pieces as velocities() reads them
     _ends: tuple = field(default=(None, []), repr=False)     # (key, each piece's t_b) for piece()

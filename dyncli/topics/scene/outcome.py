@@ -52,7 +52,7 @@ def instants_of(scene: Scene, traj, route: str, times=()):
 
     def inst(t, after=False):
         q, v, W, solved = state_at(t, after)
-        work = W_of(t, W)
+        work = W_of(t, W, after)
         if not after:
             return report.instant(s, q, v, work, t, E1, solved=solved)
         motion.set_modes(s, _next_piece(traj, t).modes)          # (the work's own lookups set the modes of the piece holding t)
@@ -89,7 +89,7 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
 
     distance = queries.odometer(scene, traj, float(acc.rtol), res.warn)
     res.results["distance"] = distance(times)
-    for w in scene.warnings:
+    for w in scene.warnings + traj.warnings:
         res.warn(w)
     if find_raw:
         res.results["find"] = queries.answer(find_raw, scene, traj, inst, params, times, res.warn,
@@ -301,7 +301,9 @@ class _Work:
                 return self.stacked[j]
         return self.piece(p, p.t_b)
 
-    def __call__(self, t, _W):
+    def __call__(self, t, _W, after: bool = False):
+        """W_nc at t: the loads' work to t less the energy the impacts before t took (``after``:
+        also those at t, the state just after them)."""
         traj = self.traj
         if t == traj.t0:
             return 0.0
@@ -313,7 +315,7 @@ class _Work:
         got = self.partial.get((k, float(t)))
         total = cum[k] + (got if got is not None else self.piece(p, t))
         motion.set_modes(self.s, p.modes)
-        return total - sum(im.energy_loss for im in traj.impacts if im.t < t)
+        return total - sum(im.energy_loss for im in traj.impacts if im.t < t or (after and im.t == t))
 
 
 def _powered(s) -> bool:

@@ -101,6 +101,7 @@ class Transitions:
     def __init__(self, system, traj, rtol: float):
         self.s, self.traj, self.rtol = system, traj, rtol
         self.first: dict[str, float] = {}
+        self.behind: set[str] = set()   # the joints a point has passed behind (warned once)
 
     def event(self, t, joint, what) -> None:
         self.traj.events.append(motion.Event(t, joint, what))
@@ -143,12 +144,32 @@ class Transitions:
             run = min(e.slack, key=lambda r: abs(gaps[r]))
             v = self._strike(t, q, v, e, 0.0, run, "taut")
         elif what == "impact":
-            v = self._strike(t, q, v, e, e.e, None, "impact")
+            if not self._from_behind(t, q, e):
+                v = self._strike(t, q, v, e, e.e, None, "impact")
         elif what in ("wraps", "unwraps"):
             done = e.turn(q, v, what)
             if done is not None:
                 self.event(t, e.name, done)
         return v
+
+    def _from_behind(self, t, q, e) -> bool:
+        """A point that comes over a surface's extent past one of its ends on the far side (the
+        side away from its normal) has not crossed it: no impact, the point passes behind (a
+        stop is one-sided).  Its gap there is well below the rounding a crossing is located to;
+        a warning, once a joint, names the normal (a surface drawn the wrong way round)."""
+        gap = float(e.gap(q))
+        if not gap < -1e-8 * max(1.0, float(np.max(np.abs(q), initial=0.0))):
+            return False
+        if e.name not in self.behind:
+            self.behind.add(e.name)
+            n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]
+            self.traj.warnings.append(
+                f"{e.name}: at t = {t:.6g} s the point came over the surface {e.surface.name!r} past its end on "
+                f"its far side ({-gap:.6g} m behind it): a {'stop' if getattr(e, 'stop', False) else 'contact'} "
+                f"acts only on the side of its normal n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of the "
+                "direction), so the point passes behind it; if it should strike there, reverse the surface's "
+                "direction")
+        return True
 
     def _strike(self, t, q, v, e, rest, run, what):
         from . import impulse
