@@ -35,6 +35,8 @@ tolerance) the first.  No text is evaluated: numbers go through the ``constant``
 
 from __future__ import annotations
 
+import re
+
 import math
 from dataclasses import dataclass
 from functools import partial
@@ -289,6 +291,10 @@ def _check_path(motion: Any, path: str, where: str) -> None:
     if path not in known and parts:                   # a vector (or a body's results): one number of it
         raise InputError(f"'{path}' is not one number: search one of its components, such as "
                          + ", ".join(parts[:3]) + (" ..." if len(parts) > 3 else ""), where)
+    m = re.fullmatch(r"([A-Za-z_]+)\.?([1-3])", path)
+    if path not in known and m and (comp := f"{m[1]}.{int(m[2]) - 1}") in known:
+        raise InputError(f"no result '{path}': the notes' {m[1]}{m[2]} (component {m[2]} on e1, e2, e3) is "
+                         f"'{comp}' here, components counting from 0 ({m[1]}.0, {m[1]}.1, {m[1]}.2)", where)
     if path not in known:
         raise InputError(f"no result '{path}' to search{did_you_mean(path, known)}; the scalar results are "
                          + ", ".join(sorted(known)[:8]) + (" ..." if len(known) > 8 else ""), where)

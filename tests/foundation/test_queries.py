@@ -383,6 +383,17 @@ def test_a_vector_asks_for_a_component(raw, path):
     assert f"{name}.0" in exc.value.message
 
 
+@pytest.mark.parametrize("raw,path", [({"max": "x3"}, "find.0.max"), ({"when": {"v1": 0}}, "find.0.when")])
+def test_the_notes_component_names_point_to_the_component_counted_from_0(raw, path):
+    # before: "no result 'x3' to search; the scalar results are E, T, V, ..." (no way to x.2)
+    m = Motion({f"{k}.{i}": (math.sin, math.cos) for k in "xv" for i in range(3)} | {"E": (math.cos, None)}, 0, 1)
+    with pytest.raises(InputError) as exc:
+        answer(parse_queries([raw], constant), m)
+    name = raw.get("max") or next(iter(raw["when"]))
+    comp = f"{name[0]}.{int(name[1]) - 1}"
+    assert exc.value.path == path and f"'{comp}'" in exc.value.message and "counting from 0" in exc.value.message
+
+
 # ------------------------------------------------------------------------- properties
 
 def _sine(A, t0, span, periods, n, rate=True):
