@@ -82,13 +82,29 @@ def setup(plan: build.Plan) -> Scene:
                         "them: " + ", ".join(f"{_rate_name(names[k])} = {v[k]:.6g}" for k in range(n)
                                              if vgiven[k] or abs(v[k]) > 0))
     _refuse_massless(system, q, plan)
-    J = system.jac(q)                   # the mechanism's freedom: a contact held by friction still may slide
+    _start_modes(system, q, v)
+    J = _freedom_rows(system, q)
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
-    _start_modes(system, q, v)
     _refuse_at_start(system, q, v)
     _guided_aside(system, q, v, warnings.append)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
+
+
+def _freedom_rows(system, q):
+    """The joint rows of the mechanism's freedom at t = 0, once the start's modes are decided: a
+    contact held by friction still may slide (its sticking row left out), a rolling body that
+    rolls counts its no-slip row and one that slips from the start (given so, or by the static
+    test) does not."""
+    held = [e for e in system.elements if isinstance(e, Contact) and e.mode == "stick"]
+    for e in held:
+        e.mode = "slide"
+    system.refresh()
+    J = system.jac(q)
+    for e in held:
+        e.mode = "stick"
+    system.refresh()
+    return J
 
 
 def _carriers_placed(plan, bodies, free) -> None:

@@ -173,3 +173,25 @@ at: [0, 1]
     near(r["alpha"]["wheel"][0][2], -2 * mu * G * mp.cos(b) / R, G / R, "alpha")
     near(r["reaction"]["r"]["F"][1], -mu * G * mp.cos(b), G, "F")
     near(r["reaction"]["r"]["N"][1], G * mp.cos(b), G, "N")
+    assert r["dof"] == 2, "slipping from the start: the centre along the slope and the spin (before: 1)"
+
+
+WHEEL_AND_BLOCK = """
+type: scene
+surfaces:
+  slope: {{through: [0, 0], direction: ["cos(30*deg)", "-sin(30*deg)"]}}
+bodies:
+  wheel: {{shape: disk, mass: 1, radius: 0.2, angle: 0}}
+  block: {{shape: point, mass: 1, x: [2, "-2*tan(30*deg)"]}}
+joints:
+  r: {{rolls: [wheel, slope], at: 0, mu_s: {mu}}}
+  b: {{contact: [block, slope], mu_s: 0.9, mu_k: 0.5}}
+at: [0]
+"""
+
+
+def test_dof_counts_rolling_while_it_rolls_and_a_block_held_by_friction_as_free():
+    # the block (μ_s = 0.9 > tan 30°) is held, yet it may slide: 1 degree of freedom; the wheel
+    # rolls with μ_s = 0.5 (needs tan β / 3 = 0.19): 1; with μ_s = 0.1 it slips from t = 0: 2
+    assert _solve(WHEEL_AND_BLOCK.format(mu=0.5))["dof"] == 2
+    assert _solve(WHEEL_AND_BLOCK.format(mu=0.1))["dof"] == 3
