@@ -5,6 +5,13 @@ point on a surface while it pushes; its ``mode`` is the phase it is in:
 
 * "smooth" (made, no friction), "slide" (made, kinetic friction −μ_k N sign(v_t) d̂),
   "stick" (made, a second row holds the point's place along d̂);
+* "shared" (made and held, its place along d̂ held by the row of the contact named ``holder``:
+  rough contacts of one body on one line held at rest together, whose sticking rows would be
+  the same row — two feet of a crate on a floor.  Only the sum of their friction is determined
+  (statically indeterminate); each reads its share in proportion to μ_s N, the split at which
+  all reach their limits together, and the group holds while |ΣF| ≤ Σ μ_s N.  The system hands
+  each member of a group its multipliers followed by the group's: ΣF and every N, the holder's
+  first (SceneSystem.lam_of));
 * "off" (released: no row; watched for the point's return to the surface, an impact).
 
 A ``Rolls`` joint is "roll" (two rows, 15.8), "slip" (the normal row and kinetic friction at the
@@ -52,6 +59,8 @@ class Contact(ListRows):
     stick_at: float = 0.0           # d̂·r_P held in mode "stick"
     e: float = 0.0                  # coefficient of restitution of an impact on this surface
     stop: bool = False              # a stop: made only at the instant of an impact
+    holder: str | None = None       # mode "shared": the contact whose row holds the group
+    group_mu: tuple = ()            # μ_s of a group's contacts, the holder's first (SceneSystem)
 
     @property
     def rows(self):
@@ -66,10 +75,10 @@ class Contact(ListRows):
         return self.mu_s > 0 or self.mu_k > 0
 
     def phase(self):
-        return (self.mode, self.sign, self.stick_at)
+        return (self.mode, self.sign, self.stick_at, self.holder)
 
     def set_phase(self, state) -> None:
-        self.mode, self.sign, self.stick_at = state
+        self.mode, self.sign, self.stick_at, self.holder = state
 
     def made(self) -> str:
         """The mode of the contact once made: smooth, or (rough) stick until decided."""
@@ -139,6 +148,27 @@ class Contact(ListRows):
         that gave N and F (64 ε of the larger), holds: friction exactly at the limit sticks."""
         return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
 
+    def grip(self, lam) -> tuple[float, float]:
+        """(the static limit, the friction it must give) from the multipliers ``lam`` as the
+        system hands them: μ_s N and F, or for the holder of a group Σ μ_s N and ΣF."""
+        if self.group_mu and self.mode == "stick":
+            r = self.rows
+            return sum(m * float(N) for m, N in zip(self.group_mu, lam[r + 1:])), float(lam[r])
+        return self.mu_s * float(lam[0]), float(lam[1])
+
+    def held(self, lam) -> bool:
+        """:meth:`holds` of the contact, or of its whole group (:meth:`grip`)."""
+        limit, F = self.grip(lam)
+        return abs(F) - limit <= 64 * EPS * max(abs(F), abs(limit), 1e-300)
+
+    def _share(self, lam) -> float:
+        """A grouped contact's part of the group's friction ΣF: in proportion to μ_s N (all at
+        their limits together), equal parts where no contact presses."""
+        r = self.rows
+        F, Ns = float(lam[r]), [float(N) for N in lam[r + 1:]]
+        limit = sum(m * N for m, N in zip(self.group_mu, Ns))
+        return F * self.mu_s * float(lam[0]) / limit if limit > 0 else F / len(Ns)
+
     def slip_speed(self, q, v) -> float:
         d1, d2 = self.surface.d
         v1, v2 = self.P.vel_xy(q, v)
@@ -155,6 +185,8 @@ class Contact(ListRows):
         return float(self.normal(q) @ (self.P.jac(q, self.n) @ a + self.P.bias(q, v)))
 
     def friction(self, lam) -> float:
+        if self.group_mu and self.mode in ("stick", "shared"):
+            return self._share(lam)
         if self.mode == "stick":
             return float(lam[1])
         if self.mode == "slide":
@@ -186,7 +218,7 @@ class Contact(ListRows):
         if self.mode == "slide":
             out.append(("sticks", self.sign * self.slip_speed(q, v)))
         elif self.mode == "stick":
-            out += _slip_watches(self.mu_s * float(lam[0]), float(lam[1]))
+            out += _slip_watches(*self.grip(lam))
         return out
 
 

@@ -317,7 +317,42 @@ class SceneSystem:
             return x
         self.linsolve = linsolve
 
+    def _groups(self) -> None:
+        """The groups of rough contacts held together (contacts.py, mode "shared"): a member
+        whose holder no longer sticks follows it — sliding with it, or (the holder released or
+        gone) the first member holds the group's row itself; each group's μ_s on its contacts
+        (the holder's first) and, for :meth:`lam_of`, the rows of ΣF and every N."""
+        named = {e.name: e for e in self.elements}
+        members: dict[str, list] = {}
+        for e in self.elements:
+            if isinstance(e, Contact):
+                e.group_mu = ()
+                if e.mode == "shared":
+                    members.setdefault(e.holder, []).append(e)
+        self._ext = {}
+        for name, ms in members.items():
+            h = named.get(name)
+            if h is not None and h.mode == "slide":
+                for e in ms:
+                    e.mode, e.sign, e.holder = "slide", h.sign, None
+                continue
+            if h is None or h.mode != "stick":
+                h, ms = ms[0], ms[1:]
+                h.mode, h.holder = "stick", None
+                for e in ms:
+                    e.holder = h.name
+            if ms:
+                group = [h] + ms
+                mus = tuple(float(e.mu_s) for e in group)
+                for e in group:
+                    e.group_mu = mus
+                self._ext[name] = group             # (the rows, once the offsets are known)
+
     def _offsets(self):
+        if any(isinstance(e, Contact) and (e.mode == "shared" or e.group_mu) for e in self.elements):
+            self._groups()
+        else:
+            self._ext = {}
         self.offsets, k = [], 0
         for e in self.elements:
             self.offsets.append(k)
@@ -333,6 +368,15 @@ class SceneSystem:
         # whether an element's watch reads its multipliers in the current phases (motion.watches:
         # else no multiplier is solved for)
         self.watching = any(e.reads_forces() for e in self.elements)
+        if self._ext:                   # each grouped contact's extra multipliers: ΣF, then every N
+            index = {id(e): i for i, e in enumerate(self.elements)}
+            ext = {}
+            for group in self._ext.values():
+                h = index[id(group[0])]
+                rows = [self.offsets[h] + 1] + [self.offsets[index[id(e)]] for e in group]
+                for e in group:
+                    ext[index[id(e)]] = rows
+            self._ext = ext
 
     def refresh(self):
         """Recompute the row offsets after an element changed its rows (a contact's mode)."""
@@ -438,8 +482,14 @@ class SceneSystem:
         return np.concatenate([e.phi_t_many(d) for e, d in zip(self.elements, td)], axis=1)
 
     def lam_of(self, lam, i: int) -> np.ndarray:
+        """The multipliers of element i (a grouped contact's followed by its group's: ΣF and every
+        N, the holder's first; contacts.py)."""
         o = self.offsets[i]
-        return lam[o:o + self.elements[i].rows]
+        own = lam[o:o + self.elements[i].rows]
+        if self._ext and i in self._ext:
+            more = [lam[k] for k in self._ext[i]]
+            return own + more if isinstance(own, list) else np.concatenate([own, np.asarray(more, dtype=float)])
+        return own
 
     # ------------------------------------------------------------------ loads
     def applied(self, q, v, t) -> tuple[np.ndarray, float]:

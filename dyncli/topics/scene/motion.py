@@ -537,21 +537,71 @@ class _ProjectedStep:
 def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
     """Hold the contact's point (a second row) and solve: it sticks when |F| ≤ μ_s N (the
     boundary, within the rounding of the solve, sticks); else it slides opposite to the
-    friction it would need.  Leaves the contact in mode "stick" (a rolling body: "roll")."""
+    friction it would need.  Leaves the contact in mode "stick" (a rolling body: "roll"), with
+    the rough contacts whose sticking row would be its own row held with it (:func:`join_held`:
+    the group holds while |ΣF| ≤ Σ μ_s N)."""
     if isinstance(e, Rolls):
         e.mode, e.sign, e.c0 = "roll", 0.0, e.roll_const(q)
     else:
         e.mode, e.sign = "stick", 0.0
         e.stick_here(q)
+        join_held(system, e, q)
     system.refresh()
     v0 = np.array(v, float)
     v0 = system.project_velocity(q, v0, t)
     _, lam, _ = system.solve(q, v0, t)
-    i = system.elements.index(e)
-    N, F = (float(x) for x in system.lam_of(lam, i))
-    if e.holds(N, F):
+    lm = system.lam_of(lam, system.elements.index(e))
+    if isinstance(e, Rolls):
+        N, F = (float(x) for x in lm)
+        return (True, 0.0) if e.holds(N, F) else (False, -math.copysign(1.0, F))
+    if e.held(lm):
         return True, 0.0
-    return False, -math.copysign(1.0, F)
+    return False, -math.copysign(1.0, e.grip(lm)[1])
+
+
+def join_held(system, e: Contact, q) -> list[str]:
+    """The rough contacts whose sticking row would be the row of ``e`` (sticking): points of the
+    same body on the same line (two feet of a crate on a floor), sliding with it or held.  Held
+    together their friction is statically indeterminate: each is made a member of the group
+    e's row holds (mode "shared", contacts.py) instead of a second, dependent row.  Their names."""
+    if getattr(e.surface, "curved", False) or e.mode != "stick":
+        return []
+    row = e.tangent_jac(q)
+    tol = 1e-12 * max(float(np.max(np.abs(row), initial=0.0)), 1e-300)
+    out = []
+    for o in system.elements:
+        if (o is e or type(o) is not type(e) or not o.rough or o.mode not in ("stick", "slide", "shared")
+                or getattr(o.surface, "curved", False)):
+            continue
+        if float(np.max(np.abs(o.tangent_jac(q) - row), initial=0.0)) > tol:
+            continue
+        if o.mode != "shared" or o.holder != e.name:
+            out.append(o.name)
+        for x in system.elements:               # a group o held joins e's
+            if isinstance(x, Contact) and x.mode == "shared" and x.holder == o.name:
+                x.holder = e.name
+        o.mode, o.sign, o.holder = "shared", 0.0, e.name
+        o.stick_here(q)
+    if out:
+        system.refresh()
+    return out
+
+
+def held_groups(system) -> list[list[str]]:
+    """The groups of contacts held together (their names, the holder's first)."""
+    out: dict[str, list[str]] = {}
+    for x in system.elements:
+        if isinstance(x, Contact) and x.mode == "shared" and x.holder is not None:
+            out.setdefault(x.holder, [x.holder]).append(x.name)
+    return list(out.values())
+
+
+def indeterminate_warning(names: list[str]) -> str:
+    """The warning of a group of contacts held together."""
+    return (f"the friction at {', '.join(names)} (points of one body held on one line) is statically "
+            "indeterminate: their sum is what the motion needs, and each F is shown in proportion to its "
+            "μ_s N (the split at which all reach their limits together); the group slips when |ΣF| exceeds "
+            "Σ μ_s N")
 
 
 # ----------------------------------------------------------------------------- the closed form

@@ -129,14 +129,23 @@ class Transitions:
             e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
             self.event(t, e.name, what)
         elif what == "slips":
-            F = e.friction(s.lam_of(s.solve(q, v, t)[1], s.elements.index(e)))
+            lm = s.lam_of(s.solve(q, v, t)[1], s.elements.index(e))
+            F = e.grip(lm)[1] if isinstance(e, Contact) else e.friction(lm)
+            held = [x.name for x in s.elements if isinstance(x, Contact) and x.mode == "shared" and x.holder == e.name]
             e.mode = "slip" if isinstance(e, Rolls) else "slide"
             e.sign = -math.copysign(1.0, F)
             self.event(t, e.name, what)
+            for name in held:                   # the contacts held with it slide with it (SceneSystem._groups)
+                self.event(t, name, what)
         elif what == "sticks":
+            sliding = {x.name for x in s.elements if isinstance(x, Contact) and x.mode == "slide"}
             holds, sign = motion.stick_test(s, e, q, v, t)
             if holds:
                 self.event(t, e.name, what)
+                for x in s.elements:            # the contacts held with it (motion.join_held)
+                    if isinstance(x, Contact) and x.mode == "shared" and x.holder == e.name and x.name in sliding:
+                        self.event(t, x.name, what)
+                self.note_groups()
             else:
                 e.mode, e.sign = ("slip" if isinstance(e, Rolls) else "slide"), sign
         elif what == "taut":
@@ -151,6 +160,13 @@ class Transitions:
             if done is not None:
                 self.event(t, e.name, done)
         return v
+
+    def note_groups(self) -> None:
+        """A warning, once a group, for the contacts held together (motion.held_groups)."""
+        for names in motion.held_groups(self.s):
+            w = motion.indeterminate_warning(names)
+            if w not in self.traj.warnings:
+                self.traj.warnings.append(w)
 
     def _from_behind(self, t, q, e) -> bool:
         """A point that comes over a surface's extent past one of its ends on the far side (the

@@ -11,7 +11,7 @@ import numpy as np
 
 from dyncli.errors import InputError
 
-from . import assembly, build, start
+from . import assembly, build, motion, start
 from . import elements as el
 from .dynamics import SceneSystem
 from .contacts import Contact, Rolls
@@ -83,6 +83,7 @@ def setup(plan: build.Plan) -> Scene:
                                              if vgiven[k] or abs(v[k]) > 0))
     _refuse_massless(system, q, plan)
     _start_modes(system, q, v)
+    warnings += [motion.indeterminate_warning(names) for names in motion.held_groups(system)]
     J = _freedom_rows(system, q)
     dof = n - assembly.rank(J)
     coords = [names[i] for i in assembly.independent(J, n)]
@@ -96,13 +97,14 @@ def _freedom_rows(system, q):
     contact held by friction still may slide (its sticking row left out), a rolling body that
     rolls counts its no-slip row and one that slips from the start (given so, or by the static
     test) does not."""
-    held = [e for e in system.elements if isinstance(e, Contact) and e.mode == "stick"]
-    for e in held:
-        e.mode = "slide"
+    saved = [e.phase() for e in system.elements]
+    for e in system.elements:
+        if isinstance(e, Contact) and e.mode in ("stick", "shared"):
+            e.mode, e.holder = "slide", None
     system.refresh()
     J = system.jac(q)
-    for e in held:
-        e.mode = "stick"
+    for e, ph in zip(system.elements, saved):
+        e.set_phase(ph)
     system.refresh()
     return J
 
@@ -492,6 +494,12 @@ def _initial_modes(system, q, v) -> None:
         J = system.jac(q)
     if assembly.rank(J) < J.shape[0] and not at_rest:      # every rough contact slides: the normal rows are
         _refuse_redundant(system, q)                        # the dependent ones
+    if at_rest and assembly.rank(J) < J.shape[0] and verdict != "slides":
+        for e in at_rest:                   # points of one body held on one line: one row holds them
+            if e.mode == "stick":
+                motion.join_held(system, e, q)
+        at_rest = [e for e in at_rest if e.mode == "stick"]
+        J = system.jac(q)
     if at_rest and assembly.rank(J) < J.shape[0]:
         names = [e.name for e in at_rest]
         held = " they stay at rest (the friction within μ_s N can hold them), but" if verdict == "held" else ""
@@ -503,9 +511,10 @@ def _initial_modes(system, q, v) -> None:
         _, lam, _ = system.solve(q, v0, 0.0)
         worst, ratio = None, 0.0
         for e in at_rest:
-            N, F = (float(x) for x in system.lam_of(lam, system.elements.index(e)))
-            if not e.holds(N, F):
-                r = abs(F) / max(e.mu_s * N, 1e-300)
+            lm = system.lam_of(lam, system.elements.index(e))
+            if not e.held(lm):
+                limit, F = e.grip(lm)
+                r = abs(F) / max(limit, 1e-300)
                 if worst is None or r > ratio:
                     worst, ratio, sign = e, r, -math.copysign(1.0, F)
         if worst is None:
