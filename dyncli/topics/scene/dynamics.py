@@ -322,14 +322,13 @@ class SceneSystem:
         whose holder no longer sticks follows it — sliding with it, or (the holder released or
         gone) the first member holds the group's row itself; each group's μ_s on its contacts
         (the holder's first) and, for :meth:`lam_of`, the rows of ΣF and every N."""
-        named = {e.name: e for e in self.elements}
-        members: dict[str, list] = {}
-        for e in self.elements:
-            if isinstance(e, Contact):
-                e.group_mu = ()
-                if e.mode == "shared":
-                    members.setdefault(e.holder, []).append(e)
-        self._ext = {}
+        named = {e.name: e for e in self.elements if isinstance(e, Contact)}
+        members: dict[str, list[Contact]] = {}
+        for e in named.values():
+            e.group_mu = ()
+            if e.mode == "shared" and e.holder is not None:
+                members.setdefault(e.holder, []).append(e)
+        self._held = []
         for name, ms in members.items():
             h = named.get(name)
             if h is not None and h.mode == "slide":
@@ -346,13 +345,13 @@ class SceneSystem:
                 mus = tuple(float(e.mu_s) for e in group)
                 for e in group:
                     e.group_mu = mus
-                self._ext[name] = group             # (the rows, once the offsets are known)
+                self._held.append(group)            # (their rows, once the offsets are known)
 
     def _offsets(self):
+        self._held: list[list[Contact]] = []
+        self._ext: dict[int, list[int]] = {}
         if any(isinstance(e, Contact) and (e.mode == "shared" or e.group_mu) for e in self.elements):
             self._groups()
-        else:
-            self._ext = {}
         self.offsets, k = [], 0
         for e in self.elements:
             self.offsets.append(k)
@@ -368,15 +367,13 @@ class SceneSystem:
         # whether an element's watch reads its multipliers in the current phases (motion.watches:
         # else no multiplier is solved for)
         self.watching = any(e.reads_forces() for e in self.elements)
-        if self._ext:                   # each grouped contact's extra multipliers: ΣF, then every N
+        if self._held:                  # each grouped contact's extra multipliers: ΣF, then every N
             index = {id(e): i for i, e in enumerate(self.elements)}
-            ext = {}
-            for group in self._ext.values():
+            for group in self._held:
                 h = index[id(group[0])]
                 rows = [self.offsets[h] + 1] + [self.offsets[index[id(e)]] for e in group]
                 for e in group:
-                    ext[index[id(e)]] = rows
-            self._ext = ext
+                    self._ext[index[id(e)]] = rows
 
     def refresh(self):
         """Recompute the row offsets after an element changed its rows (a contact's mode)."""
@@ -481,7 +478,7 @@ class SceneSystem:
     def phi_t_many(self, td) -> np.ndarray:
         return np.concatenate([e.phi_t_many(d) for e, d in zip(self.elements, td)], axis=1)
 
-    def lam_of(self, lam, i: int) -> np.ndarray:
+    def lam_of(self, lam, i: int):
         """The multipliers of element i (a grouped contact's followed by its group's: ΣF and every
         N, the holder's first; contacts.py)."""
         o = self.offsets[i]
