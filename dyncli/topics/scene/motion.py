@@ -439,6 +439,16 @@ class OdeRoute:
         screen = {what: g * (1.0 + rtol / (4 * EPS)) for what, g in tol.items()}
         tol0 = tol["sticks"]
         y = y0
+        try:
+            return self._steps(solver, budget, y0, t0, w_old, skip, tol, screen, tol0, modes, traj, rtol)
+        except ode.StepFailed:
+            _painleve(s, y0[:n], self.project(solver.y, float(solver.t))[:n], float(solver.t))
+            raise
+
+    def _steps(self, solver, budget, y0, t0, w_old, skip, tol, screen, tol0, modes, traj, rtol):
+        """The steps of :meth:`phase` (its state as it left it)."""
+        s, n = self.system, self.n
+        y = y0
         for _ in ode.steps(solver, budget, self.method):
             t_old, t_new = float(solver.t_old), float(solver.t)
             yp = self.project(solver.y, t_new)
@@ -532,6 +542,31 @@ class _ProjectedStep:
         if t == self.t_end:
             return self.y_end.copy()
         return self.route.project(self.dense(t), t)
+
+
+def _painleve(system, q0, q1, t: float) -> None:
+    """After a failed step: where a rough contact slides, the matrix of the accelerations and
+    multipliers (its friction column in it) turning singular between the phase's start and the
+    failed step (its determinant through 0, or down to 1e-4 of the start's) is Painlevé's paradox — sliding with that friction needs an unbounded normal force
+    (a rod sliding on a rough floor with μ_k above its limit, 4/3 for a uniform rod on its end).
+    Raised as such (NumericalError), with the contacts; else nothing (the step's own error stands)."""
+    sliding = [e for e in system.elements if isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
+               and getattr(e, "mu_k", 0)]
+    if not sliding:
+        return
+    dets = []
+    for q in (q0, q1):
+        with np.errstate(all="ignore"):
+            sign, logdet = np.linalg.slogdet(system.kkt_matrix(q, system.jac(q)))
+        dets.append((float(sign), float(logdet)))
+    (s0, l0), (s1, l1) = dets
+    if s0 * s1 < 0 or s1 == 0 or l1 < l0 - math.log(1e4):      # through, or to within 1e-4 of, singular
+        names = ", ".join(f"{e.name} (μ_k = {e.mu_k:g})" for e in sliding)
+        raise NumericalError(f"at t = {t:.6g} s the sliding contact {names} meets Painlevé's paradox: sliding on with "
+                             "that friction needs a normal force that grows without bound (the friction turns the "
+                             "normal force back on itself; a uniform rod sliding on its end jams above μ_k = 4/3); "
+                             "dyncli does not follow the jam (it would take a tangential impact): the motion is "
+                             "not solved past it; lower μ_k below that limit")
 
 
 def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
