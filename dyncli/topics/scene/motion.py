@@ -551,7 +551,7 @@ def _painleve(system, q0, q1, t: float) -> None:
     (a rod sliding on a rough floor with μ_k above its limit, 4/3 for a uniform rod on its end).
     Raised as such (NumericalError), with the contacts; else nothing (the step's own error stands)."""
     sliding = [e for e in system.elements if isinstance(e, (Contact, Rolls)) and e.mode in ("slide", "slip")
-               and getattr(e, "mu_k", 0)]
+               and (e.mu_k or 0.0) > 0]
     if not sliding:
         return
     dets = []
