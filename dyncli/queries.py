@@ -651,7 +651,9 @@ def _turning(h, hr, T: list[float], H: list[float]) -> list[tuple[float, float]]
     for j in range(1, n - 1):
         if H[j] > H[j - 1] and H[j] >= H[j + 1] and not ({j - 1, j} & rooted):
             tm, hm = _peak(h, None, T[j - 1], T[j + 1])
-            cands.append((tm, hm) if hm >= H[j] else (T[j], H[j]))
+            # Brent's minimiser's time where it beats the sample; on a tie (a flat top: a body
+            # that stopped and stays) any time of the flat would do, and the sample is its first
+            cands.append((tm, hm) if hm > H[j] else (T[j], H[j]))
     if hr is None and n > 2:                          # a peak just inside an end
         cands += [_peak(h, None, a, b) for a, b, ha, hb in ((T[0], T[1], H[0], H[1]), (T[-2], T[-1], H[-1], H[-2]))
                   if ha >= hb]

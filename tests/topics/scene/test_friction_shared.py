@@ -138,3 +138,4 @@ def test_the_gallery_crate_pushed_harder():
     assert abs(r["find"][0]["t"] - 2.4525) <= ODE_GLOBAL * 1e-10 * 2.4525
     assert abs(r["reaction"]["left"]["F"][1] - float(fl)) <= EXACT * 98.1
     assert abs(r["reaction"]["right"]["N"][1] - float(nr)) <= EXACT * 98.1
+

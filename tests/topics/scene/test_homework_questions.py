@@ -916,3 +916,35 @@ def test_the_rolling_race_gallery_file():
     near(r["find"][3]["omega"]["hoop"][2], alpha * t, alpha * t, "omega of the hoop")
     t_ball, t_shell, t_can, t_hoop = (q["t"] for q in r["find"])
     assert t_ball < t_can < t_shell < t_hoop            # the sphere first, the slipping hoop last
+
+
+SPRING_ON_SLOPE = """
+type: scene
+params: {m: 2, k: 100, b: 0.5235987755982988}
+surfaces:
+  slope: {through: [0, 0], direction: ["cos(b)", "-sin(b)"]}
+bodies:
+  block: {shape: point, mass: m, x: [0, 0]}
+joints:
+  s: {contact: [block, slope], mu_s: 0.3, mu_k: 0.2}
+forces:
+  - {spring: [block, ["-cos(b)", "sin(b)"]], k: k, L: 1}
+t_end: 3
+find: [{max: distance.block}, {event: sticks}]
+at: [0, 3]
+"""
+
+
+def test_how_far_a_block_goes_is_found_where_it_stops_not_anywhere_on_its_rest():
+    # released at the spring's free length on a rough 30° slope: it slides half a period of the
+    # spring, π sqrt(m/k), a distance 2 m g (sin β − μ_k cos β)/k, and sticks there (k d − m g sin β
+    # = 3.01 N < μ_s m g cos β = 5.10 N).  Before: the largest distance was placed at t = 1.0832 s,
+    # a point of the rest that Brent's minimiser picked on the flat
+    r = solve_one_text(SPRING_ON_SLOPE)["results"]
+    t_stop = math.pi * math.sqrt(2 / 100)
+    d = 2 * 2 * 9.81 * (math.sin(math.pi / 6) - 0.2 * math.cos(math.pi / 6)) / 100
+    far, stop = r["find"]
+    tol = ODE_GLOBAL * 1e-10
+    assert abs(stop["t"] - t_stop) <= tol * t_stop
+    assert far["t"] == stop["t"], (far["t"], stop["t"])
+    assert abs(far["distance"]["block"] - d) <= tol * d
