@@ -153,7 +153,7 @@ class Transitions:
             run = min(e.slack, key=lambda r: abs(gaps[r]))
             v = self._strike(t, q, v, e, 0.0, run, "taut")
         elif what == "impact":
-            if not self._from_behind(t, q, e):
+            if not self._from_behind(t, q, v, e):
                 v = self._strike(t, q, v, e, e.e, None, "impact")
         elif what in ("wraps", "unwraps"):
             done = e.turn(q, v, what)
@@ -168,15 +168,18 @@ class Transitions:
             if w not in self.traj.warnings:
                 self.traj.warnings.append(w)
 
-    def _from_behind(self, t, q, e) -> bool:
+    def _from_behind(self, t, q, v, e) -> bool:
         """A point that comes over a surface's extent past one of its ends on the far side (the
         side away from its normal) has not crossed it: no impact, the point passes behind (a
-        stop is one-sided).  Its gap there is well below the rounding a crossing is located to;
-        a warning, once a joint, names the normal (a surface drawn the wrong way round)."""
+        stop is one-sided).  Its gap there is well below the rounding a crossing is located to.
+        Where it heads for the surface from behind (a surface drawn the wrong way round: the
+        user expects it to strike), a warning, once a joint, names the normal; a point the
+        extent sweeps over as it moves away (a surface carried round by a turning body) passes
+        without one."""
         gap = float(e.gap(q))
         if not gap < -1e-8 * max(1.0, float(np.max(np.abs(q), initial=0.0))):
             return False
-        if e.name not in self.behind:
+        if e.name not in self.behind and e.normal_speed(q, v) > 0:
             self.behind.add(e.name)
             n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]
             self.traj.warnings.append(

@@ -202,3 +202,40 @@ def test_the_gallery_pendulum_strikes_a_block_on_a_rough_floor():
     assert abs(r["find"][0]["v"]["block"][0] - V) <= tol * V
     assert abs(r["find"][1]["t"] - (t1 + V / (0.3 * g))) <= tol * 2
     assert abs(r["x"]["block"][1][0] - (0.2 + 2.89 / 5.4)) <= tol
+
+
+DISK = """
+type: scene
+title: a ball strikes a disk at rest on a rough floor level with its centre
+params: {m: 1, M: 2, R: 0.1}
+surfaces:
+  floor: {through: [-5, 0], direction: [1, 0]}
+  face: {body: wheel, through: [-0.1, 0.05], direction: [0, 1], length: 0.1}
+bodies:
+  ball: {shape: point, mass: m, x: [-0.2, 0.10545], v: [3, 0]}
+  wheel: {shape: disk, mass: M, radius: R, x: [0, 0.1], angle: 0}
+joints:
+  hit: {stop: [ball, face], e: 1}
+  roll: {rolls: [wheel, floor], mu_s: 0.3, mu_k: 0.2}
+t_end: 1
+at: [0, 1]
+find: [{event: impact, after: true}, {event: sticks}]
+"""
+
+
+def test_a_disk_at_rest_struck_level_with_its_centre_skids_then_rolls():
+    """The blow passes through the centre and the floor gives no normal impulse, so no friction
+    impulse: the disk leaves with V = 2 m u/(m + M) (e = 1) and no spin (it was held rolling
+    before), skids with μ_k g against its slip and rolls from V/(3 μ_k g) later at 2V/3 (a
+    uniform disk: v − μ_k g t = 2 μ_k g t).  The face it carries turns with it afterwards and
+    sweeps over the ball moving away: no impact and no warning."""
+    g, m, M, u, mu_k = 9.81, 1.0, 2.0, 3.0, 0.2
+    V = 2 * m * u / (m + M)
+    rec = solve_one_text(DISK)
+    r = rec["results"]
+    after, rolls = r["find"]
+    assert abs(after["v"]["wheel"][0] - V) <= EXACT * V and abs(after["omega"]["wheel"][2]) <= EXACT * V / 0.1
+    assert abs(rolls["t"] - (after["t"] + V / (3 * mu_k * g))) <= EXACT
+    assert abs(r["v"]["wheel"][1][0] - 2 * V / 3) <= EXACT * V
+    assert [(ev["joint"], ev["what"]) for ev in r["events"]] == [("hit", "impact"), ("roll", "sticks")]
+    assert rec["warnings"] == []
