@@ -195,6 +195,9 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
             s = R.line(a[1], path + ".1", "a slider")
+            if any(j.get(k) for k in ("mu", "mu_s", "mu_k")):
+                out.append(_rough_slider(name, j, R, b, s, path, n))
+                continue
             if getattr(s, "carried", False):
                 out.append(_carried_slider(name, kind, n, path, b, s, q))
                 continue
@@ -379,10 +382,7 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
     a = j[kind]
     P = R.point(a[0], path + ".0")
     s = R.line(a[1], path + ".1", "a contact")
-    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
-    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
-    if j.get("mu_k") is not None and j.get("mu_s") is None:
-        mu_s = mu_k
+    mu_s, mu_k = _friction_of(j)
     mode = "off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth"
     if getattr(s, "carried", False):        # (carried.py loaded only for a scene that has one)
         from .carried import CarriedContact, CarriedLine
@@ -395,6 +395,34 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
                               e=float(j.get("e") or 0.0), stop=kind == "stop")
     return contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
                             e=float(j.get("e") or 0.0), stop=kind == "stop")
+
+
+def _friction_of(j: dict) -> tuple[float, float]:
+    """(μ_s, μ_k) of a joint: mu for both, or mu_s / mu_k (one given stands for the other)."""
+    mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
+    mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
+    if j.get("mu_k") is not None and j.get("mu_s") is None:
+        mu_s = mu_k
+    return mu_s, mu_k
+
+
+def _rough_slider(name: str, j: dict, R: Resolver, b: BodyData, s, path: str, n: int):
+    """A rough guide of a point body (a collar threaded on a rough rod): two-sided, the friction
+    μ_k |N| against the slip while it slides, held while |F| ≤ μ_s |N| — a contact that cannot
+    leave its line (contacts.py, ``two_sided``).  A rigid body's rough guide is refused: where
+    its friction acts depends on how the guide holds its angle (two points, each a contact)."""
+    if b.rigid:
+        raise InputError(f"a rough slider is for a point body (a collar threaded on a rod); {b.name!r} is rigid, and "
+                         "where a guide's friction acts on it depends on how the guide holds its angle: write a "
+                         "contact with mu at each point where the guide touches it, or make the slider smooth",
+                         path + ".0")
+    if getattr(s, "carried", False):
+        raise InputError("a rough slider on a line carried by another body is not in this release: write a contact "
+                         "with mu (one-sided), or make the slider smooth", path + ".1")
+    mu_s, mu_k = _friction_of(j)
+    P = BodyPoint(b.name, b, (0.0, 0.0))
+    return contacts.Contact(name, "contact", n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode="slide", sign=0.0,
+                            two_sided=True)
 
 
 def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:

@@ -61,6 +61,8 @@ class Contact(ListRows):
     stop: bool = False              # a stop: made only at the instant of an impact
     holder: str | None = None       # mode "shared": the contact whose row holds the group
     group_mu: tuple = ()            # μ_s of a group's contacts, the holder's first (SceneSystem)
+    two_sided: bool = False         # a rough slider: the line holds the point both ways (N signed)
+    nsign: float = 1.0              # two-sided, sliding: the sign of N its friction column assumes
 
     @property
     def rows(self):
@@ -75,10 +77,10 @@ class Contact(ListRows):
         return self.mu_s > 0 or self.mu_k > 0
 
     def phase(self):
-        return (self.mode, self.sign, self.stick_at, self.holder)
+        return (self.mode, self.sign, self.stick_at, self.holder, self.nsign)
 
     def set_phase(self, state) -> None:
-        self.mode, self.sign, self.stick_at, self.holder = state
+        self.mode, self.sign, self.stick_at, self.holder, self.nsign = state
 
     def made(self) -> str:
         """The mode of the contact once made: smooth, or (rough) stick until decided."""
@@ -141,12 +143,14 @@ class Contact(ListRows):
         """Generalized force per unit N of the kinetic friction −μ_k N sign d̂ at P."""
         if self.mode != "slide" or self.mu_k == 0:
             return None
-        return -self.mu_k * self.sign * self.tangent_jac(q)
+        return -self.mu_k * self.sign * self.nsign * self.tangent_jac(q)
 
     def holds(self, N: float, F: float) -> bool:
-        """The static test |F| ≤ μ_s N; the boundary, within the rounding of the linear solve
-        that gave N and F (64 ε of the larger), holds: friction exactly at the limit sticks."""
-        return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
+        """The static test |F| ≤ μ_s N (|N| for a two-sided guide); the boundary, within the
+        rounding of the linear solve that gave N and F (64 ε of the larger), holds: friction
+        exactly at the limit sticks."""
+        muN = self.mu_s * (abs(N) if self.two_sided else N)
+        return abs(F) - muN <= 64 * EPS * max(abs(F), abs(muN), 1e-300)
 
     def grip(self, lam) -> tuple[float, float]:
         """(the static limit, the friction it must give) from the multipliers ``lam`` as the
@@ -154,7 +158,8 @@ class Contact(ListRows):
         if self.group_mu and self.mode == "stick":
             r = self.rows
             return sum(m * float(N) for m, N in zip(self.group_mu, lam[r + 1:])), float(lam[r])
-        return self.mu_s * float(lam[0]), float(lam[1])
+        N = float(lam[0])
+        return self.mu_s * (abs(N) if self.two_sided else N), float(lam[1])
 
     def held(self, lam) -> bool:
         """:meth:`holds` of the contact, or of its whole group (:meth:`grip`)."""
@@ -190,7 +195,7 @@ class Contact(ListRows):
         if self.mode == "stick":
             return float(lam[1])
         if self.mode == "slide":
-            return -self.mu_k * self.sign * float(lam[0])
+            return -self.mu_k * self.sign * self.nsign * float(lam[0])
         return 0.0
 
     def report(self, lam, q, v, t):
@@ -212,7 +217,11 @@ class Contact(ListRows):
         """The events watched while the point touches (on a line or a curve): N turning to pull,
         the surface's end (margin ``m``, None for none), and sliding that stops or sticking that
         would need more than μ_s N."""
-        out = [("separates", float(lam[0]))]
+        # a two-sided guide never lets go: where N changes sign its sliding friction turns with it
+        # ("reverses": a kink of the motion, a new phase without an event)
+        out = [("reverses" if self.two_sided else "separates", self.nsign * float(lam[0]))]
+        if self.two_sided and self.mode != "slide":
+            out.pop()
         if m is not None:
             out.append(("leaves", m))
         if self.mode == "slide":

@@ -43,10 +43,12 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
 
 
 #: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps),
-#: a speed (sticks) and forces (separates, slips, slack)
-WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "sticks", "separates", "slips", "slack")
+#: a speed (sticks) and forces (separates, slips, slack, and reverses: the normal force of a
+#: sliding two-sided rough guide changing sign, a new phase without an event)
+WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "sticks", "separates", "slips", "slack",
+           "reverses")
 #: the watched quantities that are forces of the joints (functions of the multipliers alone)
-FORCES = ("separates", "slips", "slack")
+FORCES = ("separates", "slips", "slack", "reverses")
 
 
 def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, cells: int) -> float | None:

@@ -82,7 +82,7 @@ def _pulling(s, lam, skip=frozenset()) -> tuple | None:
         if i in skip or e.rows == 0:
             continue
         lm = s.lam_of(lam, i)
-        if isinstance(e, (Contact, Rolls)) and float(lm[0]) < -1e-12 * scale:
+        if isinstance(e, (Contact, Rolls)) and float(lm[0]) < -1e-12 * scale and not getattr(e, "two_sided", False):
             return e, None
         if isinstance(e, Cord):
             for r, T in zip(e.taut, (-float(x) for x in lm)):

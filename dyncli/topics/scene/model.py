@@ -211,16 +211,12 @@ class Joint(_OneOf):
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
-        allowed = {"pin": set(), "slider": set(), "contact": {"mu", "mu_s", "mu_k", "at", "e"},
+        allowed = {"pin": set(), "slider": {"mu", "mu_s", "mu_k"}, "contact": {"mu", "mu_s", "mu_k", "at", "e"},
                    "rolls": {"at", "mu_s", "mu_k", "e"}, "cord": {"length"}, "link": {"length", "angle"},
                    "drive": {"value"}, "stop": {"e", "mu"}, "gear": {"radii", "internal"}}[kind]
         for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e", "radii", "internal"):
             if getattr(self, extra) is not None and extra not in allowed:
-                rough = (": a slider is smooth and two-sided; for a rough block or collar that its guide pushes "
-                         "one way (a collar on a spun rod, a block on a rough track), write a contact on the same "
-                         "surface with mu: contact: [BODY, SURFACE] (one-sided: the event separates says where N "
-                         "would change sign)" if kind == "slider" and extra in ("mu", "mu_s", "mu_k") else "")
-                raise InputError(f"a {kind} joint takes no {extra}{rough}", _at(base, extra))
+                raise InputError(f"a {kind} joint takes no {extra}", _at(base, extra))
         if kind == "drive" and self.value is None:
             raise InputError("a drive needs value: the coordinate as an expression in t, e.g. \"2*t\"", _at(base, "value"))
         if kind == "stop" and self.e is None:

@@ -121,7 +121,9 @@ class Transitions:
         from . import impulse           # (the impacts' module: imported by a motion that has one)
 
         s = self.s
-        if what in ("separates", "leaves"):
+        if what == "reverses":                  # a two-sided guide's N changes sign: so does its friction
+            e.nsign = -e.nsign
+        elif what in ("separates", "leaves"):
             impulse.release(e)
             self.event(t, e.name, what)
         elif what == "slack":
@@ -263,6 +265,10 @@ class Transitions:
         """Make the joint set consistent at t: release, slacken or slip what the new set would
         make pull, push or exceed μ_s N (each an event), until nothing changes."""
         s = self.s
+
+        def loads() -> float:
+            return float(np.max(np.abs(s.applied(q, v, t)[0]), initial=0.0))
+
         for _ in range(4 * len(s.elements) + 4):
             _, lam, _ = s.solve(q, v, t)
             scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
@@ -272,6 +278,11 @@ class Transitions:
                     continue
                 for what, g in e.watch(s.lam_of(lam, i), q, v, t):
                     if what in ("separates", "slack", "slips") and g < -1e-9 * scale:
+                        bad = (e, what)
+                        break
+                    # a two-sided guide's N the other way than its friction assumes: by more than the
+                    # rounding of the loads (at its reversal N is 0 to rounding, and so is every λ)
+                    if what == "reverses" and g < -1e-9 * max(scale, loads()):
                         bad = (e, what)
                         break
                 if bad:

@@ -76,7 +76,9 @@ def slipping_given(system, q, v, vgiven) -> None:
 
 def settle(system, q, v) -> None:
     """At t = 0: a cord that would push goes slack, friction past μ_s N slips (a rough contact
-    held at rest slides, a rolling body slips), one change at a time until none is left."""
+    held at rest slides, a rolling body slips), a two-sided rough guide's sliding friction takes
+    the sign of its N, one change at a time until none is left."""
+    loads = float(np.max(np.abs(system.applied(q, v, 0.0)[0]), initial=0.0))
     for _ in range(4 * len(system.elements) + 4):
         _, lam, _ = system.solve(q, v, 0.0)
         scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
@@ -86,8 +88,10 @@ def settle(system, q, v) -> None:
                 continue
             lm = system.lam_of(lam, i)
             for what, g in e.watch(lm, q, v, 0.0):
-                if g < -64 * EPS * scale and (what == "slack" or (what == "slips" and (_can_slip(e) or
-                                                                                        isinstance(e, Contact)))):
+                slips = what == "slips" and (_can_slip(e) or isinstance(e, Contact))
+                if what == "reverses" and not g < -64 * EPS * max(scale, loads):
+                    continue                            # (N at 0 to the rounding of the loads: either way)
+                if g < -64 * EPS * scale and (what in ("slack", "reverses") or slips):
                     bad = (e, what, lm)
                     break
             if bad:
@@ -98,6 +102,8 @@ def settle(system, q, v) -> None:
         if isinstance(e, Cord):                         # "slack"
             T = e.tensions(lm)
             e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
+        elif what == "reverses" and isinstance(e, Contact):     # a two-sided guide's N is the other way
+            e.nsign = -e.nsign
         elif isinstance(e, (Contact, Rolls)):           # "slips"
             F = e.friction(lm)
             e.mode = "slip" if isinstance(e, Rolls) else "slide"

@@ -135,13 +135,15 @@ def _friction(D, P, G, C, F, N, e) -> None:
     for j in range(len(C.q)):
         P.f[j] += F * col[j]
     mu_k = D.S.param("μ", r"\mu", e.name, e.mu_k)
+    two = getattr(e, "two_sided", False)        # a rough slider: |N| (N signed), the sign of the phase
     if e.mode == "slide":
-        law = -mu_k * N if e.sign > 0 else mu_k * N
-        D.laws.append(Eq(f"{e.name}: kinetic friction, sliding {'+' if e.sign > 0 else '−'}d̂", F, law))
+        law = (-mu_k * N if e.sign > 0 else mu_k * N) * (int(e.nsign) if two else 1)
+        D.laws.append(Eq(f"{e.name}: kinetic friction, sliding {'+' if e.sign > 0 else '−'}d̂"
+                         + (f" (N {'>' if e.nsign > 0 else '<'} 0)" if two else ""), F, law))
         P.subs[F] = law
     else:
         mu_s = D.S.param("μ", r"\mu", e.name + ",s", e.mu_s)
-        D.laws.append(Eq(f"{e.name}: sticks while", sp.Abs(F), mu_s * N, "≤"))
+        D.laws.append(Eq(f"{e.name}: sticks while", sp.Abs(F), mu_s * (sp.Abs(N) if two else N), "≤"))
 
 
 def _loads(D, P, G, S, C, system, exprs, t) -> None:
