@@ -407,20 +407,25 @@ def _friction_of(j: dict) -> tuple[float, float]:
 
 
 def _rough_slider(name: str, j: dict, R: Resolver, b: BodyData, s, path: str, n: int):
-    """A rough guide of a point body (a collar threaded on a rough rod): two-sided, the friction
-    μ_k |N| against the slip while it slides, held while |F| ≤ μ_s |N| — a contact that cannot
-    leave its line (contacts.py, ``two_sided``).  A rigid body's rough guide is refused: where
-    its friction acts depends on how the guide holds its angle (two points, each a contact)."""
+    """A rough guide of a point body (a collar threaded on a rough rod, fixed or carried by a body
+    that moves it): two-sided, the friction μ_k |N| against the slip while it slides, held while
+    |F| ≤ μ_s |N| — a contact that cannot leave its line (contacts.py, ``two_sided``).  A rigid
+    body's rough guide is refused: where its friction acts depends on how the guide holds its
+    angle (two points, each a contact)."""
     if b.rigid:
         raise InputError(f"a rough slider is for a point body (a collar threaded on a rod); {b.name!r} is rigid, and "
                          "where a guide's friction acts on it depends on how the guide holds its angle: write a "
                          "contact with mu at each point where the guide touches it, or make the slider smooth",
                          path + ".0")
-    if getattr(s, "carried", False):
-        raise InputError("a rough slider on a line carried by another body is not in this release: write a contact "
-                         "with mu (one-sided), or make the slider smooth", path + ".1")
     mu_s, mu_k = _friction_of(j)
     P = BodyPoint(b.name, b, (0.0, 0.0))
+    if getattr(s, "carried", False):        # a collar on a rough rod that another body turns
+        from .carried import CarriedContact
+
+        if b is s.body:
+            raise InputError(f"{b.name!r} carries {s.name!r}: a body cannot slide on its own surface", path + ".0")
+        return CarriedContact(name, "contact", n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode="slide", sign=0.0,
+                              two_sided=True)
     return contacts.Contact(name, "contact", n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode="slide", sign=0.0,
                             two_sided=True)
 

@@ -14,6 +14,8 @@ route 1e-12.
 
 from __future__ import annotations
 
+import math
+
 import mpmath as mp
 
 from tests.conftest import solve_one_text
@@ -113,19 +115,74 @@ at: [0]
 """, "joints.guide.slider.0", "a rough slider is for a point body", "write a contact with mu at each point")
 
 
-def test_a_rough_slider_on_a_carried_line_is_refused():
-    refusal("""
+SPUN = """
 type: scene
+title: a collar on a rough rod whose motor brakes
+g: 0
+params: {m: 0.5, mu: 0.3, w0: 4, b: 8, r0: 0.5, L: 2}
 surfaces:
-  arm: {body: bar, through: [-1, 0], direction: [1, 0]}
+  rod_line: {through: [0, 0], direction: [1, 0], body: rod, length: L}
 bodies:
-  bar: {shape: rod, mass: 1, length: 2, x: [0, 0]}
-  collar: {shape: point, mass: 0.5, x: [0.5, 0]}
+  rod: {shape: rod, mass: 3, length: L, x: ["L/2", 0], angle: 0}
+  collar: {shape: point, mass: m, x: [r0, 0]}
 joints:
-  pivot: {pin: [bar, [0, 0]]}
-  guide: {slider: [collar, arm], mu: 0.3}
-at: [0]
-""", "joints.guide.slider.1", "carried by another body is not in this release", "write a contact with mu")
+  pivot: {pin: [rod.end1, ground]}
+  spin: {drive: rod.angle, value: "w0*t - b*t*t/2"}
+  sleeve: {slider: [collar, rod_line], mu: mu}
+at: [0, 0.05, 0.1, 0.2, 0.3]
+t_end: 0.3
+accuracy: {rtol: 1.0e-11}
+find: [{when: {reaction.sleeve.N: 0}}, {when: {reaction.sleeve.N: 0}, occurrence: 2}]
+"""
+
+
+def _spun_reference(T):
+    """The collar on the braked rod in polar coordinates along it (ω = w0 − b t, ω̇ = −b, g = 0):
+    r̈ = ω² r − μ |N|/m (sliding outward), N/m = 2 ω ṙ + r ω̇ across the rod; mpmath piece by
+    piece between the reversals of N (findroot on each piece's solution).  (reversals, r at t)."""
+    mp.mp.dps = 30
+    mu, w0, b, r0 = mp.mpf("0.3"), mp.mpf(4), mp.mpf(8), mp.mpf("0.5")
+
+    def Nm(t, r, rd):
+        return 2 * (w0 - b * t) * rd - b * r
+
+    def rhs(sgn):
+        return lambda t, y: [y[1], (w0 - b * t) ** 2 * y[0] - mu * sgn * Nm(t, y[0], y[1])]
+
+    t0, y0, sgn, pieces, flips = mp.mpf(0), [r0, mp.mpf(0)], -1, [], []
+    while True:
+        f = mp.odefun(rhs(sgn), t0, y0)
+        pieces.append((t0, f))
+        prev, nxt = t0, None
+        for k in range(1, 400):
+            t = t0 + mp.mpf(k) / 200
+            if t > T:
+                break
+            if sgn * Nm(t, *f(t)) < 0:
+                nxt = mp.findroot(lambda s: Nm(s, *f(s)), (prev, t), solver="anderson")
+                break
+            prev = t
+        if nxt is None:
+            return flips, lambda t: [g for s, g in pieces if s <= t][-1](mp.mpf(t))[0]
+        flips.append(nxt)
+        t0, y0, sgn = nxt, f(nxt), -sgn
+
+
+def test_a_collar_on_a_rough_rod_a_motor_brakes_is_held_both_ways():
+    """The braking rod first pulls the collar back (N = −m b r0 < 0: a one-sided contact would let
+    it fly off), then its Coriolis push 2 m ω ṙ wins (N > 0), then the braking wins again: two
+    reversals of N, the friction μ_k |N| against the outward slip throughout."""
+    r = solve_one_text(SPUN)["results"]
+    flips, radius = _spun_reference(mp.mpf("0.3"))
+    tol = ODE_GLOBAL * 1e-11
+    assert len(flips) == 2
+    for want, f in zip(flips, r["find"]):
+        assert abs(f["t"] - float(want)) <= tol * float(want), (f["t"], float(want))
+    for t, x in zip(r["t"], r["x"]["collar"]):
+        assert abs(math.hypot(x[0], x[1]) - float(radius(t))) <= tol * 0.8, t
+    assert abs(r["reaction"]["sleeve"]["N"][0] + 2.0) <= 1e-12 * 2
+    for n, f in zip(r["reaction"]["sleeve"]["N"], r["reaction"]["sleeve"]["F"]):
+        assert abs(f + 0.3 * abs(n)) <= 1e-12 * 2
 
 
 def test_the_gallery_collar_on_a_rough_rod():
