@@ -217,11 +217,12 @@ class Contact(ListRows):
         """The events watched while the point touches (on a line or a curve): N turning to pull,
         the surface's end (margin ``m``, None for none), and sliding that stops or sticking that
         would need more than μ_s N."""
-        # a two-sided guide never lets go: where N changes sign its sliding friction turns with it
-        # ("reverses": a kink of the motion, a new phase without an event)
-        out = [("reverses" if self.two_sided else "separates", self.nsign * float(lam[0]))]
-        if self.two_sided and self.mode != "slide":
-            out.pop()
+        if not self.two_sided:
+            out = [("separates", float(lam[0]))]
+        elif self.mode == "slide":      # a two-sided guide never lets go; where N changes sign its
+            out = [("reverses", self.nsign * float(lam[0]))]    # friction turns with it: a kink, no event
+        else:
+            out = []
         if m is not None:
             out.append(("leaves", m))
         if self.mode == "slide":

@@ -406,7 +406,9 @@ def test_random_rough_rod_impacts_never_gain_energy(th, vx, vn, w, mu_s, frac, e
 @given(th=st.floats(0.1, 1.4), vx=st.floats(-3, 3), w=st.floats(-10, 10), mu=st.floats(0.05, 1.5),
        e=st.floats(0, 1))
 def test_random_rough_rod_impacts_through_the_solver(th, vx, w, mu, e):
-    rec = solve_one_text(f"""
+    from tests.conftest import solve_text
+
+    (rec,) = solve_text(f"""
 type: scene
 surfaces:
   floor: {{through: [0, 0], direction: [1, 0]}}
