@@ -438,7 +438,6 @@ class OdeRoute:
         # error of them), so a quantity is cleared only beyond that error too
         screen = {what: g * (1.0 + rtol / (4 * EPS)) for what, g in tol.items()}
         tol0 = tol["sticks"]
-        y = y0
         try:
             return self._steps(solver, budget, y0, t0, w_old, skip, tol, screen, tol0, modes, traj, rtol)
         except ode.StepFailed:
