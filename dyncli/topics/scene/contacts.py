@@ -22,6 +22,7 @@ back in the contract's terms (N along n, F along d̂) and lists the quantities t
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -333,6 +334,14 @@ class Rolls(ListRows):
         if self.mu_s is None:
             return True
         return abs(F) - self.mu_s * N <= 64 * EPS * max(abs(F), abs(self.mu_s * N), 1e-300)
+
+    def grip(self, lam) -> tuple[float, float]:
+        """(the static limit μ_s N, ∞ without μ_s; the friction F it must give), as a contact's."""
+        return (math.inf if self.mu_s is None else self.mu_s * float(lam[0])), float(lam[1])
+
+    def held(self, lam) -> bool:
+        """:meth:`holds` at the multipliers ``lam`` (as a contact's)."""
+        return self.holds(float(lam[0]), float(lam[1]))
 
     def friction(self, lam) -> float:
         if self.mode == "roll":

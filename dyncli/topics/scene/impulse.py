@@ -260,7 +260,7 @@ def _held_slips(s, lam, struck) -> bool:
         if isinstance(el, Rolls) and el.mu_s is None:
             continue                                # (rolling without μ_s: it cannot slip)
         lm = s.lam_of(lam, i)
-        limit, F = el.grip(lm) if isinstance(el, Contact) else (float(el.mu_s or 0.0) * float(lm[0]), float(lm[1]))
+        limit, F = el.grip(lm)
         past = abs(F) - limit
         if past > scale and past > over:
             worst, over, sign = el, past, -math.copysign(1.0, F)

@@ -585,9 +585,6 @@ def stick_test(system, e: Contact, q, v, t) -> tuple[bool, float]:
     v0 = system.project_velocity(q, v0, t)
     _, lam, _ = system.solve(q, v0, t)
     lm = system.lam_of(lam, system.elements.index(e))
-    if isinstance(e, Rolls):
-        N, F = (float(x) for x in lm)
-        return (True, 0.0) if e.holds(N, F) else (False, -math.copysign(1.0, F))
     if e.held(lm):
         return True, 0.0
     return False, -math.copysign(1.0, e.grip(lm)[1])

@@ -132,7 +132,7 @@ class Transitions:
             self.event(t, e.name, what)
         elif what == "slips":
             lm = s.lam_of(s.solve(q, v, t)[1], s.elements.index(e))
-            F = e.grip(lm)[1] if isinstance(e, Contact) else e.friction(lm)
+            F = e.grip(lm)[1]
             held = [x.name for x in s.elements if isinstance(x, Contact) and x.mode == "shared" and x.holder == e.name]
             e.mode = "slip" if isinstance(e, Rolls) else "slide"
             e.sign = -math.copysign(1.0, F)
