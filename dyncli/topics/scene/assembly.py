@@ -83,8 +83,12 @@ def other_branch(system, q, free, t: float = 0.0):
     first coordinate that differs, or None."""
     # an angle that only gears hold is placed by them up to whole turns of their line of centres
     # (a planet's sun turned by 2π D/R_s): a winding, not a branch the drawing could choose
+    if system.m == 0:                   # (no joint row: nothing closes)
+        return None
     geared = _geared_only(system, q)
-    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.") and k not in geared]
+    # an angle that no row moves (a disk whose stop is not made yet) is free, not placed: no branch
+    held = np.any(system.jac(q) != 0, axis=0)
+    angles = [k for k in np.nonzero(free)[0] if system.names[k].startswith("angle.") and k not in geared and held[k]]
     free = np.array(free, dtype=bool) & ~np.isin(np.arange(system.n), sorted(geared))
     scale = length_scale(q, system)
     for k in angles:
@@ -143,6 +147,8 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
 def _refuse_off_surface(e: Any, q, placed: str) -> None:
     """A contact or rolling joint given off its surface: the gap, and what to write instead (a
     stop, for a body that lands there), or the depth through it with the surface's normal."""
+    if getattr(e.surface, "corner", False):
+        raise InputError(e.refuse_gap(q, placed), e.path)
     gap = float(e.gap(q))
     label = (getattr(e, "P", None) or e.body_point).label
     centre = _centre_hint(e)

@@ -95,6 +95,10 @@ def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -
             raise InputError(f"unknown body {s['body']!r}{did_you_mean(s['body'], bodies)}; bodies: {', '.join(bodies)}",
                              path)
         return carried_line(name, s, bodies[s["body"]], q)
+    if s.get("corner") is not None:
+        from .corner import CornerData
+
+        return CornerData(name, s["corner"], s.get("normals"))
     if s.get("curve") is not None:
         from .curved import CurveData
 
@@ -127,6 +131,9 @@ class Resolver:
         """A straight surface, fixed or carried by a body (``what`` runs along lines only: a curve
         is refused)."""
         s = self.surface(name, path)
+        if getattr(s, "corner", False):
+            raise InputError(f"{what} runs along a straight surface; {name!r} is a corner (a point: the rim of a round "
+                             "body rolls on it or strikes it, rolls or stop)", path)
         if not isinstance(s, SurfaceData):
             raise InputError(f"{what} runs along a straight surface; {name!r} is a curve", path)
         return s
@@ -359,6 +366,13 @@ def _rim_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray,
     b = R.bodies[a[0]]
     if not (b.rigid and b.radius > 0):
         return False
+    corner = R.surface(a[1], path + ".1")
+    if getattr(corner, "corner", False):
+        from .corner import corner_rolls
+
+        out.append(corner_rolls(name, "rolls", n, path, BodyPoint(b.name, b, (0.0, 0.0)), corner, b.radius, j, q,
+                                mode="off", mu=float(j["mu"] or 0.0)))
+        return True
     s = R.line(a[1], path + ".1", "a disk's stop")
     if getattr(s, "carried", False) or not isinstance(s, SurfaceData):
         raise InputError(f"a disk's stop is on a fixed straight surface; {s.name!r} is carried by a body or curved: "
@@ -436,6 +450,8 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     kind = j["kind"]
     path = f"joints.{name}.{kind}"
     s = R.surface(j[kind][1], path + ".1")
+    if getattr(s, "corner", False):
+        return _on_corner(name, j, R, s, q, n, out)
     if isinstance(s, SurfaceData):
         if kind == "contact" and j["at"] is not None:
             raise InputError("`at` places a contact on a curved surface (the curve's q); on a straight one give "
@@ -451,6 +467,30 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     if b.radius <= 0:
         raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
     out.append(curved.rolls_on(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    return True
+
+
+def _on_corner(name: str, j: dict, R: Resolver, s, q: np.ndarray, n: int, out: list) -> bool:
+    """A round body's rim rolling on a corner (corner.py); a point's contact with a corner is
+    refused (a point on a point: write the corner as the contact point and the body's side as
+    a surface it carries)."""
+    kind = j["kind"]
+    path = f"joints.{name}.{kind}"
+    if j.get("at") is not None:
+        raise InputError("`at` places a joint along a line or a curve; on a corner the body touches the corner "
+                         "itself: give its centre x", f"joints.{name}.at")
+    if kind == "contact":
+        raise InputError(f"a point cannot rest on the corner {s.name!r} (a point on a point): a round body's rim "
+                         f"rolls on it (rolls: [BODY, {s.name}]); for a flat side leaning on the corner, make the "
+                         "corner the contact point and the side a surface carried by the body (contact: "
+                         "[[x1, x2], SIDE] with SIDE: {body: BODY, through, direction})", path + ".1")
+    b = R.body(j[kind][0], path + ".0")
+    _rigid(b, "rolling", path + ".0")
+    if b.radius <= 0:
+        raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
+    from .corner import corner_rolls
+
+    out.append(corner_rolls(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
     return True
 
 

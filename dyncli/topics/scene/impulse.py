@@ -98,7 +98,7 @@ def release(e, run=None) -> None:
         e.mode, e.sign = "off", 0.0
 
 
-def _make(e, q) -> None:
+def make(e, q) -> None:
     """Make a striking contact (or rolling body) at q."""
     e.mode, e.sign = e.made(), 0.0
     if isinstance(e, Rolls):
@@ -132,7 +132,7 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     speeds = {id(el): el.normal_speed(q, v) for el, _ in struck}
     slips = {id(el): el.slip_speed(q, v) for el, _ in struck}
     for el, _ in struck:
-        _make(el, q)
+        make(el, q)
     s.refresh()
     J = s.jac(q)
     pts = [(el, r, J[s.offsets[s.elements.index(el)]:][:2].copy()) for el, r in struck if el.rows == 2]
@@ -188,7 +188,7 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
     for el, _r, _J in pts:
         c = courses[id(el)]
         names[el.name] = c.name
-        _make(el, q)                            # made again: sticking (rolling), or sliding on
+        make(el, q)                            # made again: sticking (rolling), or sliding on
         if c.u_t != 0.0:
             el.mode = "slip" if isinstance(el, Rolls) else "slide"
             el.sign = math.copysign(1.0, c.u_t)

@@ -51,8 +51,21 @@ class Surface(StrictModel):
                                            "reaching an end leaves the surface (an event)")
     body: Optional[str] = Field(None, description="a body that carries the line (a wedge, a cart, a plank): it moves and turns "
                               "with that body, given as drawn at t = 0")
+    corner: Optional[list[Annotated[float, Num(dim="length")]]] = Field(
+        None, description="[x1, x2]: a corner (instead of a line or a curve): the edge of a curb or a step, the top of a "
+                          "post, a peg [m]; the rim of a round body rolls on it or strikes it (rolls, stop)")
+    normals: Optional[list[list[Annotated[float, Num()]]]] = Field(
+        None, description="corner: the outward normals [[a1, a2], [b1, b2]] of its two faces; it touches a rim only while "
+                          "the direction from the corner to the centre lies between them (the event `leaves` where it "
+                          "reaches one); default: from any side")
 
     def check(self, base: str) -> None:
+        if self.corner is not None:
+            self._check_corner(base)
+            return
+        if self.normals is not None:
+            raise InputError("normals go with a corner (corner: [x1, x2]): the outward normals of its two faces",
+                             _at(base, "normals"))
         if self.body is not None and self.curve is not None:
             raise InputError("a curved surface cannot be carried by a body in this release: give a straight line "
                              "(through, direction) on it", _at(base, "body"))
@@ -78,6 +91,28 @@ class Surface(StrictModel):
             raise InputError(f"expected [d1, d2], got {len(direction)} numbers", _at(base, "direction"))
         if direction[0] == 0 and direction[1] == 0:
             raise InputError("the direction must be non-zero, e.g. [1, 0] for a floor", _at(base, "direction"))
+
+
+    def _check_corner(self, base: str) -> None:
+        for name in ("through", "direction", "length", "curve", "q_range", "body"):
+            if getattr(self, name) is not None:
+                raise InputError(f"a corner takes no {name}: it is one fixed point, corner: [x1, x2]"
+                                 + (" (a corner on a moving body is not modelled in this release)" if name == "body"
+                                    else ""), _at(base, name))
+        if len(self.corner or []) != 2:
+            raise InputError(f"expected [x1, x2], got {len(self.corner or [])} numbers", _at(base, "corner"))
+        if self.normals is None:
+            return
+        if len(self.normals) != 2 or any(len(u) != 2 for u in self.normals):
+            raise InputError("expected the two faces' outward normals [[a1, a2], [b1, b2]]", _at(base, "normals"))
+        (a1, a2), (b1, b2) = self.normals
+        if a1 == a2 == 0 or b1 == b2 == 0:
+            raise InputError("a face's normal must be non-zero, e.g. [-1, 0] for the riser of a curb met from the left",
+                             _at(base, "normals"))
+        la, lb = math.hypot(a1, a2), math.hypot(b1, b2)
+        if abs(a1 * b2 - a2 * b1) <= 1e-9 * la * lb:
+            raise InputError("the two faces' normals are parallel: a corner's faces meet at an angle (a curb: "
+                             "[[-1, 0], [0, 1]]); a flat surface is a line (through, direction)", _at(base, "normals"))
 
 
 #: the round shapes: a disk's section in the plane, rolling on its rim of radius R

@@ -112,6 +112,8 @@ class Transitions:
         _, joint, what = hit
         if what != "switch":
             v = self._change(t, q, v, element(s, joint), what)
+        if what == "leaves":
+            self._land(t, q, v, joint)
         s.refresh()
         v = self.settle(t, q, v)
         q = s.project_position(q, t)
@@ -260,6 +262,27 @@ class Transitions:
             if abs(el.watch((), q, v, t)[0][1]) <= tol and el.normal_speed(q, v) < 0:
                 out.append((el, el.e))
         return out
+
+    def _land(self, t, q, v, left: str) -> None:
+        """A body that leaves one surface where it touches another without approaching it (a
+        wheel passing over a curb's corner onto its top: its centre above the corner, moving
+        along the top) is made on it at once — not struck an instant later after a fall of
+        the event's rounding.  Each released contact or stop at that instant with a gap within
+        1e-9 of the scene's size, a normal speed within 1e-9 of the scene's speeds and free
+        flight taking it into the surface is made (settle then releases it if it would pull); the
+        joint ``left`` stays off."""
+        from . import impulse
+
+        s = self.s
+        tol = 1e-9 * assembly.length_scale(q, s)
+        vtol = 1e-9 * max(float(np.max(np.abs(v), initial=0.0)), 1e-300)
+        for el in s.elements:
+            if not isinstance(el, (Contact, Rolls)) or el.mode != "off" or el.name == left:
+                continue
+            if abs(el.watch((), q, v, t)[0][1]) <= tol and abs(el.normal_speed(q, v)) <= vtol \
+                    and impulse.normal_acceleration(s, q, v, t, el) < 0:
+                impulse.make(el, q)
+                s.refresh()
 
     def settle(self, t, q, v):
         """Make the joint set consistent at t: release, slacken or slip what the new set would

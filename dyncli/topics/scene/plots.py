@@ -48,6 +48,13 @@ def _mechanism(result, draw) -> Plot:
     plot = Plot("the mechanism at the requested times", "x1 [m]", "x2 [m]", equal_aspect=True)
     span = draw["span"]
     for s in draw["surfaces"]:
+        if "corner" in s:               # a corner: a marker, and a stroke along each face
+            (c1, c2), h = s["corner"], 0.2 * span
+            xs, ys = [c1], [c2]
+            for k, (f1, f2) in enumerate(s["faces"]):
+                xs, ys = ([c1 + h * f1, *xs], [c2 + h * f2, *ys]) if k == 0 else ([*xs, c1 + h * f1], [*ys, c2 + h * f2])
+            plot.lines.append(Line(xs, ys, label=f"corner {s['name']}", style="-", marker="^" if not s["faces"] else None))
+            continue
         if "points" in s:               # a curve: its polyline
             plot.lines.append(Line([p[0] for p in s["points"]], [p[1] for p in s["points"]],
                                    label=f"surface {s['name']}", style=":"))

@@ -30,7 +30,8 @@ def _plan(p) -> build.Plan:
                         "I": b.I, "x": b.x, "angle": b.angle, "v": b.v, "omega": b.omega,
                         "points": {k: tuple(v) for k, v in b.points.items()}}
     surfaces = {k: {"through": s.through, "direction": s.direction, "length": s.length, "q_range": s.q_range,
-                    "curve": (s.curve.x1, s.curve.x2) if s.curve is not None else None, "body": s.body}
+                    "curve": (s.curve.x1, s.curve.x2) if s.curve is not None else None, "body": s.body,
+                    "corner": s.corner, "normals": s.normals}
                 for k, s in p.surfaces.items()}
     joints = {}
     for name, j in p.joints.items():

@@ -91,6 +91,9 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
         if getattr(getattr(e, "surface", None), "carried", False):
             raise ValueError(f"the {e.kind} {e.name!r} on {e.surface.name!r}, a surface carried by "
                              f"{e.surface.body.name!r}, has no symbolic form in this release")
+        if getattr(getattr(e, "surface", None), "corner", False):
+            raise ValueError(f"the {e.kind} {e.name!r} on the corner {e.surface.name!r} has no symbolic form in this "
+                             "release")
         if getattr(getattr(e, "surface", None), "curved", False):
             if getattr(e, "mode", "") in ("slide", "stick", "slip"):
                 raise ValueError(f"the friction of {e.name!r} on the curve {e.surface.name!r} has no symbolic form in "
