@@ -22,6 +22,7 @@ from .dynamics import Load, SceneSystem
 from .system import BodyData, BodyPoint, Point, SurfaceData, perp
 
 if TYPE_CHECKING:
+    from .corner import CornerData
     from .curved import CurveData
 
 SHAPE_I = {"rod": lambda b: b["mass"] * b["length"] ** 2 / 12, "disk": lambda b: b["mass"] * b["radius"] ** 2 / 2,
@@ -49,7 +50,7 @@ class Built:
     v: np.ndarray
     bodies: dict[str, BodyData]
     cords: list[tuple[str, dict]] = field(default_factory=list)   # placed after a first assembly
-    surfaces: dict[str, SurfaceData | CurveData] = field(default_factory=dict)
+    surfaces: dict[str, SurfaceData | CurveData | CornerData] = field(default_factory=dict)
 
 
 def bodies_of(plan: Plan) -> tuple:
@@ -85,7 +86,7 @@ def bodies_of(plan: Plan) -> tuple:
     return out, np.array(q, float), np.array(free, bool), np.array(v, float), names, np.array(vgiven, bool)
 
 
-def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -> SurfaceData | CurveData:
+def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -> SurfaceData | CurveData | CornerData:
     """A fixed line or curve, or a line carried by a body (``body``: placed by the body's sketch)."""
     if s.get("body") is not None:
         from .carried import carried_line
@@ -111,7 +112,7 @@ def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -
 
 
 class Resolver:
-    def __init__(self, bodies: dict[str, BodyData], surfaces: dict[str, SurfaceData | CurveData]):
+    def __init__(self, bodies: dict[str, BodyData], surfaces: dict[str, SurfaceData | CurveData | CornerData]):
         self.bodies, self.surfaces = bodies, surfaces
 
     def body(self, name, path) -> BodyData:
@@ -120,7 +121,7 @@ class Resolver:
             raise InputError(f"unknown body {name!r}{hint}; bodies: {', '.join(self.bodies)}", path)
         return self.bodies[name]
 
-    def surface(self, name, path) -> SurfaceData | CurveData:
+    def surface(self, name, path) -> SurfaceData | CurveData | CornerData:
         if not isinstance(name, str) or name not in self.surfaces:
             hint = did_you_mean(name, self.surfaces) if isinstance(name, str) else ""
             known = ", ".join(self.surfaces) or "none: add a `surfaces:` entry"
@@ -368,8 +369,9 @@ def _rim_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray,
         return False
     corner = R.surface(a[1], path + ".1")
     if getattr(corner, "corner", False):
-        from .corner import corner_rolls
+        from .corner import CornerData, corner_rolls
 
+        assert isinstance(corner, CornerData)
         out.append(corner_rolls(name, "rolls", n, path, BodyPoint(b.name, b, (0.0, 0.0)), corner, b.radius, j, q,
                                 mode="off", mu=float(j["mu"] or 0.0)))
         return True
@@ -459,6 +461,7 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
         return False
     from . import curved
 
+    assert isinstance(s, curved.CurveData), "a surface is a line, a corner or a curve"
     if kind == "contact":
         out.append(curved.contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
         return True

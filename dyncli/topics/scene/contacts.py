@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .elements import ListRows
+from .elements import Element, ListRows
 from .system import BodyPoint, Point, SurfaceData
 
 EPS = float(np.finfo(float).eps)
@@ -380,3 +380,37 @@ class Rolls(ListRows):
         elif self.mu_s is not None:
             out += _slip_watches(self.mu_s * float(lam[0]), float(lam[1]))
         return out
+
+
+@dataclass(kw_only=True)
+class TurningRolls(Rolls):
+    """Rolling on a surface whose normal turns as the body moves (a curve, curved.py; a corner,
+    corner.py): its rows written as arrays (``phi``, ``jac``, ``gamma``: not a line's list forms),
+    its normal and its tangent t̂ at the contact given by the subclass (``normal``, ``tangent``)."""
+
+    linear = False
+    phi_list = Element.phi_list
+    jac_list = Element.jac_list
+    gamma_list = Element.gamma_list
+    kkt_lists = Element.kkt_lists
+
+    def normal(self, q) -> np.ndarray:
+        raise NotImplementedError
+
+    def tangent(self, q) -> np.ndarray:
+        raise NotImplementedError
+
+    def normal_speed(self, q, v) -> float:
+        i = self.body_point.body.index
+        return float(self.normal(q) @ np.array([v[i[0]], v[i[1]]], float))
+
+    def tangent_jac(self, q) -> np.ndarray:
+        """The contact point's speed along t̂ per unit rate: [t̂ on the centre; R on θ]."""
+        i = self.body_point.body.index
+        J = np.zeros(self.n)
+        J[i[0]], J[i[1]] = self.tangent(q)
+        J[i[2]] = self.R
+        return J
+
+    def slip_speed(self, q, v) -> float:
+        return float(self.tangent_jac(q) @ np.asarray(v, float))

@@ -28,8 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contacts import Rolls
-from .elements import Element
+from .contacts import TurningRolls
 
 
 class CornerData:
@@ -73,17 +72,12 @@ class CornerData:
 
 
 @dataclass(kw_only=True)
-class CornerRolls(Rolls):
+class CornerRolls(TurningRolls):
     """The rim of a disk or ring of radius R on a corner: rolls about it (no slip), slips with
     kinetic friction, or is off it (a stop's rim before it strikes)."""
 
     surface: CornerData  # type: ignore[assignment]  # a corner where Rolls has a line: the geometry is all overridden here
     phi_last: float = 0.0
-    linear = False
-    phi_list = Element.phi_list
-    jac_list = Element.jac_list
-    gamma_list = Element.gamma_list
-    kkt_lists = Element.kkt_lists
 
     def _geom(self, q):
         """(d, n, t̂, φ) of the centre from the corner, φ on the branch nearest the last one."""
@@ -107,10 +101,6 @@ class CornerRolls(Rolls):
     def normal(self, q) -> np.ndarray:
         return self._geom(q)[1]
 
-    def normal_speed(self, q, v) -> float:
-        i = self.body_point.body.index
-        return float(self.normal(q) @ np.array([v[i[0]], v[i[1]]], float))
-
     def gap_acceleration(self, q, v, a) -> float:
         """d̈ at the accelerations a: n·ẍ + (t̂·ẋ)²/d."""
         i = self.body_point.body.index
@@ -118,17 +108,8 @@ class CornerRolls(Rolls):
         vc, ac = np.array([v[i[0]], v[i[1]]], float), np.array([a[i[0]], a[i[1]]], float)
         return float(n @ ac) + float(tt @ vc) ** 2 / d
 
-    def tangent_jac(self, q) -> np.ndarray:
-        """The rim's speed at the corner along t̂ per unit rate: [t̂ on the centre; R on θ]."""
-        i = self.body_point.body.index
-        tt = self._geom(q)[2]
-        J = np.zeros(self.n)
-        J[i[0]], J[i[1]] = tt
-        J[i[2]] = self.R
-        return J
-
-    def slip_speed(self, q, v) -> float:
-        return float(self.tangent_jac(q) @ np.asarray(v, float))
+    def tangent(self, q) -> np.ndarray:
+        return self._geom(q)[2]
 
     def roll_const(self, q) -> float:
         i = self.body_point.body.index
@@ -208,6 +189,7 @@ class CornerRolls(Rolls):
 
     def refuse_outside(self, q) -> str:
         n = [0.0 if abs(c) < 1e-12 else float(c) for c in self.normal(q)]
+        assert self.surface.normals is not None, "refused outside only where the faces are given"
         a, b, _ = self.surface.normals
         return (f"at t = 0 the direction from {self._where()} to the centre of {self.body_point.body.name!r}, "
                 f"[{n[0]:.4g}, {n[1]:.4g}], is not between its faces' normals [{a[0]:.4g}, {a[1]:.4g}] and "

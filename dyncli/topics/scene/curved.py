@@ -34,7 +34,7 @@ from dyncli.expr.derivative import derivative
 from dyncli.quadrature import gauss_kronrod
 from dyncli.rootfind import all_roots
 
-from .contacts import Contact, Rolls
+from .contacts import Contact, TurningRolls
 from .elements import Element
 
 EPS = float(np.finfo(float).eps)
@@ -305,18 +305,12 @@ class CurveContact(Contact):
 
 
 @dataclass(kw_only=True)
-class CurveRolls(Rolls):
+class CurveRolls(TurningRolls):
     """A disk of radius R rolling on a curve without slipping."""
 
     surface: CurveData  # type: ignore[assignment]  # a curve where Rolls has a line: the geometry is all overridden here
     foot: _Foot
     q_ref: float = 0.0
-    linear = False
-    # the curve's own rows (not the line's list forms of Rolls): through the arrays
-    phi_list = Element.phi_list
-    jac_list = Element.jac_list
-    gamma_list = Element.gamma_list
-    kkt_lists = Element.kkt_lists
 
     def _centre(self, q):
         i = self.body_point.body.index
@@ -336,21 +330,8 @@ class CurveRolls(Rolls):
     def normal(self, q) -> np.ndarray:
         return self.foot.at(self._centre(q))[2]
 
-    def normal_speed(self, q, v) -> float:
-        i = self.body_point.body.index
-        return float(self.normal(q) @ np.array([v[i[0]], v[i[1]]], float))
-
-    def tangent_jac(self, q) -> np.ndarray:
-        """The contact point's speed along t̂ per unit rate: [t̂ on the centre; R on θ]."""
-        i = self.body_point.body.index
-        tt = self.foot.at(self._centre(q))[1]
-        J = np.zeros(self.n)
-        J[i[0]], J[i[1]] = tt
-        J[i[2]] = self.R
-        return J
-
-    def slip_speed(self, q, v) -> float:
-        return float(self.tangent_jac(q) @ np.asarray(v, float))
+    def tangent(self, q) -> np.ndarray:
+        return self.foot.at(self._centre(q))[1]
 
     def roll_const(self, q) -> float:
         i = self.body_point.body.index

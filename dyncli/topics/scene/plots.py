@@ -51,8 +51,8 @@ def _mechanism(result, draw) -> Plot:
         if "corner" in s:               # a corner: a marker, and a stroke along each face
             (c1, c2), h = s["corner"], 0.2 * span
             xs, ys = [c1], [c2]
-            for k, (f1, f2) in enumerate(s["faces"]):
-                xs, ys = ([c1 + h * f1, *xs], [c2 + h * f2, *ys]) if k == 0 else ([*xs, c1 + h * f1], [*ys, c2 + h * f2])
+            for i, (f1, f2) in enumerate(s["faces"]):
+                xs, ys = ([c1 + h * f1, *xs], [c2 + h * f2, *ys]) if i == 0 else ([*xs, c1 + h * f1], [*ys, c2 + h * f2])
             plot.lines.append(Line(xs, ys, label=f"corner {s['name']}", style="-", marker="^" if not s["faces"] else None))
             continue
         if "points" in s:               # a curve: its polyline
