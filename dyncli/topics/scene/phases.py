@@ -112,10 +112,10 @@ class Transitions:
         _, joint, what = hit
         if what != "switch":
             v = self._change(t, q, v, element(s, joint), what)
-        if what == "leaves":
-            self._land(t, q, v, joint)
         s.refresh()
         v = self.settle(t, q, v)
+        if self._land(t, q, v, joint):
+            v = self.settle(t, q, v)
         q = s.project_position(q, t)
         return q, s.project_velocity(q, v, t)
 
@@ -263,19 +263,21 @@ class Transitions:
                 out.append((el, el.e))
         return out
 
-    def _land(self, t, q, v, left: str) -> None:
-        """A body that leaves one surface where it touches another without approaching it (a
-        wheel passing over a curb's corner onto its top: its centre above the corner, moving
-        along the top) is made on it at once — not struck an instant later after a fall of
-        the event's rounding.  Each released contact or stop at that instant with a gap within
-        1e-9 of the scene's size, a normal speed within 1e-9 of the scene's speeds and free
-        flight taking it into the surface is made (settle then releases it if it would pull); the
-        joint ``left`` stays off."""
+    def _land(self, t, q, v, left: str) -> bool:
+        """After an event, a body that touches a surface without approaching it while free flight
+        takes it in (a wheel passing over a curb's corner onto its top, its centre over the
+        corner, moving along the top; a box's corner on the floor when the obstacle it pivoted on
+        lets go) is made on it at once — not struck an instant later after a fall of the event's
+        rounding.  Each released contact or stop at that instant with a gap within 1e-9 of the
+        scene's size, a normal speed within 1e-9 of the scene's speeds and free flight taking it
+        into the surface is made (settle then releases it if it would pull); the joint ``left``
+        (the event's own) stays as the event left it.  Returns whether one was made."""
         from . import impulse
 
         s = self.s
         tol = 1e-9 * assembly.length_scale(q, s)
         vtol = 1e-9 * max(float(np.max(np.abs(v), initial=0.0)), 1e-300)
+        made = False
         for el in s.elements:
             if not isinstance(el, (Contact, Rolls)) or el.mode != "off" or el.name == left:
                 continue
@@ -283,6 +285,8 @@ class Transitions:
                     and impulse.normal_acceleration(s, q, v, t, el) < 0:
                 impulse.make(el, q)
                 s.refresh()
+                made = True
+        return made
 
     def settle(self, t, q, v):
         """Make the joint set consistent at t: release, slacken or slip what the new set would

@@ -308,3 +308,37 @@ def test_the_gallery_wheel_climbs_its_curb():
     assert r["impacts"][0]["course"] == "slides, then sticks" and len(r["impacts"]) == 1
     assert [p["joints"] for p in r["phases"]] == [["ground"], ["hit"], ["upper"]]
     assert rec["warnings"] == []
+
+
+def test_a_box_sliding_into_a_low_lip_turns_about_it_and_its_front_corner_stays_on_the_floor():
+    # the lip (a ground point at height 0.05) strikes the box's front face (a line it carries):
+    # plastic and held, momentum about the lip gives ω = m v0 (h_G − 0.05)/I_lip; the lip can only
+    # push the box back, and the turn about it would need it to pull (the box's centre swings
+    # forward faster than gravity takes it back), so the box leaves it at once and turns on its
+    # front corner, which is on the floor moving along it: made there, not struck again
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [-5, 0], direction: [1, 0]}
+  face: {body: box, through: [0.2, 0.8], direction: [0, -1], length: 0.8}
+bodies:
+  box: {shape: box, mass: 5, size: [0.4, 0.8], x: [0, 0.4], angle: 0, v: [3, 0],
+        points: {rear: [-0.2, -0.4], front: [0.2, -0.4]}}
+joints:
+  r: {stop: [box.rear, floor], e: 0}
+  f: {stop: [box.front, floor], e: 0}
+  lip: {stop: [[1, 0.05], face], e: 0, mu: 5}
+at: [0, 0.3]
+find: [{event: impact, joint: lip, after: true}]
+""")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    m, v0 = 5.0, 3.0
+    I_lip = m * (0.4 ** 2 + 0.8 ** 2) / 12 + m * (0.2 ** 2 + 0.35 ** 2)
+    w = m * v0 * 0.35 / I_lip
+    assert r["find"][0]["omega"]["box"][2] == pytest.approx(-w, rel=closed_form(100))
+    assert r["events"][0]["t"] == pytest.approx(0.8 / v0, rel=closed_form())
+    assert [(e["joint"], e["what"]) for e in r["events"][:4]] == [("lip", "impact"), ("r", "separates"),
+                                                                  ("f", "separates"), ("lip", "separates")]
+    assert [i["joint"] for i in r["impacts"]][:1] == ["lip"] and all(i["impulse"] > 1e-3 for i in r["impacts"])
+    assert r["phases"][1]["joints"] == ["f"] and r["phases"][1]["t_start"] == pytest.approx(0.8 / v0)
