@@ -48,6 +48,8 @@ def fmt_value(x: Any, digits: int = DEFAULT_DIGITS) -> str:
     if isinstance(x, dict):
         return ", ".join(f"{printable(k)}: {fmt_value(v, digits)}" for k, v in x.items())
     if isinstance(x, (list, tuple)):
+        if not x:                       # (an empty list of records: a scene phase with no first integral)
+            return "none"
         if len(x) > 12:
             return "[" + ", ".join(fmt_value(v, digits) for v in x[:5]) + f", … ({len(x)} values)]"
         return "[" + ", ".join(fmt_value(v, digits) for v in x) + "]"

@@ -4,11 +4,12 @@ it about the edge, a ball rolling over a post (docs/types/scene.md, "Corners").
 
 With x̄ the body's centre, r = x̄ − C, d = |r|, the normal n = r/d (the corner pushes the body
 along n) and t̂ = (n₂, −n₁) (so that n = e3 × t̂, the bodies on the left of t̂ as on a line),
-φ = atan2(n₂, n₁) followed continuously:
+φ = atan2(n₂, n₁):
 
 * the rim on the corner: φ₁ = d − R, J₁ = nᵀ on x̄, γ₁ = −(t̂·ẋ)²/d (d̈ = n·ẍ + (t̂·ẋ)²/d);
 * no slip at the corner (15.8 about a point: the rim's point at C at rest, t̂·ẋ + R ω = 0 with
-  t̂·ẋ = −d φ̇), integrated exactly: φ₂ = R (θ − φ) − c₀, J₂ = (R/d) t̂ᵀ on x̄ and R on θ,
+  t̂·ẋ = −d φ̇), integrated exactly: φ₂ = R (θ − φ) − c₀ (φ on the turn the body has rolled to),
+  J₂ = (R/d) t̂ᵀ on x̄ and R on θ,
   γ₂ = 2 R (t̂·ẋ)(n·ẋ)/d²;
 * their Hessians (the equilibria's and linearization's curvature terms): ∇²d = t̂t̂ᵀ/d,
   ∇²(−R φ) = −R (t̂nᵀ + nt̂ᵀ)/d².
@@ -77,10 +78,9 @@ class CornerRolls(TurningRolls):
     kinetic friction, or is off it (a stop's rim before it strikes)."""
 
     surface: CornerData  # type: ignore[assignment]  # a corner where Rolls has a line: the geometry is all overridden here
-    phi_last: float = 0.0
 
     def _geom(self, q):
-        """(d, n, t̂, φ) of the centre from the corner, φ on the branch nearest the last one."""
+        """(d, n, t̂, ψ) of the centre from the corner, ψ = atan2(n₂, n₁) in (−π, π]."""
         i = self.body_point.body.index
         r1, r2 = float(q[i[0]]) - self.surface.C[0], float(q[i[1]]) - self.surface.C[1]
         d = math.hypot(r1, r2)
@@ -90,10 +90,15 @@ class CornerRolls(TurningRolls):
             raise NumericalError(f"the centre of {self.body_point.body.name!r} reached the corner "
                                  f"{self.surface.name!r}: its normal is not defined there")
         n = np.array([r1 / d, r2 / d])
-        ph = math.atan2(r2, r1)
-        ph += 2 * math.pi * round((self.phi_last - ph) / (2 * math.pi))
-        self.phi_last = ph
-        return d, n, np.array([n[1], -n[0]]), ph
+        return d, n, np.array([n[1], -n[0]]), math.atan2(r2, r1)
+
+    def _turned(self, q) -> float:
+        """R (θ − ψ) − c₀ with ψ on the turn the body has rolled to (the branch of atan2 that
+        makes it nearest 0: rolling on a corner keeps θ − ψ, so the residual stays within half
+        a turn of it whatever the number of turns), a function of q alone."""
+        i = self.body_point.body.index
+        w = float(q[i[2]]) - self._geom(q)[3] - self.c0 / self.R
+        return self.R * (w - 2 * math.pi * round(w / (2 * math.pi)))
 
     def gap(self, q) -> float:
         return self._geom(q)[0] - self.R
@@ -118,9 +123,7 @@ class CornerRolls(TurningRolls):
     def phi(self, q, t):
         if not self.rows:
             return np.zeros(0)
-        i = self.body_point.body.index
-        d, _, _, ph = self._geom(q)
-        return np.array([d - self.R, self.R * (float(q[i[2]]) - ph) - self.c0])[:self.rows]
+        return np.array([self._geom(q)[0] - self.R, self._turned(q)])[:self.rows]
 
     def jac(self, q):
         i = self.body_point.body.index
@@ -209,7 +212,5 @@ def corner_rolls(name, kind, n, path, body_point, corner: CornerData, R: float, 
         mu_k = j["mu_k"] if j.get("mu_k") is not None else mu_s
     el = CornerRolls(name, kind, n, path, body_point=body_point, surface=corner, R=R, mu_s=mu_s, mu_k=mu_k,
                      e=float(j.get("e") or 0.0), mode=mode)
-    i = body_point.body.index
-    el.phi_last = math.atan2(float(q[i[1]]) - corner.C[1], float(q[i[0]]) - corner.C[0])
     el.c0 = el.roll_const(q)
     return el

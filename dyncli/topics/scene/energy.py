@@ -20,7 +20,8 @@ import math
 
 import numpy as np
 
-from dyncli.errors import NumericalError
+from dyncli import cputime
+from dyncli.errors import InputError, NumericalError
 
 from . import motion
 
@@ -88,6 +89,10 @@ class Manifold:
         return self._reach(q_mid, mid, s_val, depth + 1)
 
     def q(self, s_val: float) -> np.ndarray:
+        if (limit := cputime.over()) is not None:
+            raise NumericalError(f"the energy quadrature placed the joints to {self.s.names[self.i]} = {s_val:.6g} only "
+                                 f"within the CPU budget of {limit:g} s (accuracy.max_cpu): solve it by the ODE route "
+                                 "(accuracy.method: auto), or raise accuracy.max_cpu")
         k = bisect.bisect_left(self.keys, s_val)
         near = min((j for j in (k - 1, k) if 0 <= j < len(self.keys)), key=lambda j: abs(self.keys[j] - s_val))
         if self.keys[near] == s_val:
@@ -161,6 +166,38 @@ class Work:
         return total
 
 
+class _Turn:
+    """A motion along an angle that goes a whole turn from its start without a turning point,
+    on joints that repeat after a whole turn (a pendulum whirling over the top), goes round for
+    ever along them: the quadrature of the energy integral between turning points has none to
+    find (the march would follow the angle out to 10³¹ rad, placing the joints and summing the
+    work over every turn).  Refused (accuracy.method), once the march has passed a whole turn
+    (K > 0 all the way, decided by its own root search), where the positions a turn on equal
+    those of the start (every angle a whole number of turns on, every other coordinate the same,
+    to 1e-9 of the scene's size)."""
+
+    def __init__(self, man, system, i: int, q0):
+        self.man, self.s, self.i, self.q0 = man, system, i, np.asarray(q0, float)
+        self.periodic: bool | None = None
+
+    def check(self, x: float) -> None:
+        s0 = float(self.q0[self.i])
+        if abs(x - s0) <= 2 * math.pi:
+            return
+        if self.periodic is None:
+            q1 = self.man.q(s0 + math.copysign(2 * math.pi, x - s0))
+            d = q1 - self.q0
+            angles = np.array([nm.startswith("angle.") for nm in self.s.names])
+            d = np.where(angles, (d + math.pi) % (2 * math.pi) - math.pi, d)
+            scale = max(1.0, float(np.max(np.abs(self.q0[~angles]), initial=0.0)))
+            self.periodic = bool(np.max(np.abs(d)) <= 1e-9 * scale)
+        if self.periodic:
+            raise InputError(f"the quadrature route needs turning points, and along its joints this motion goes "
+                             f"round: {self.s.names[self.i]} passes a whole turn from its start with none, on joints "
+                             "that repeat every turn (a rotation); use method auto (the ODE route, which also finds "
+                             "the events on the way)", "accuracy.method")
+
+
 def run(scene, traj, t_end: float, acc) -> object:
     """The trajectory by the energy quadrature (the caller decided that it applies: one degree
     of freedom, :func:`applies`)."""
@@ -175,7 +212,11 @@ def run(scene, traj, t_end: float, acc) -> object:
     T0 = 0.5 * M0 * sd0 * sd0
     W = Work(man, s, float(scene.q0[i]))
 
+    turn = _Turn(man, s, i, scene.q0) if s.names[i].startswith("angle.") else None
+
     def K(x: float) -> float:
+        if turn is not None:
+            turn.check(float(x))
         q = man.q(float(x))
         N = man.direction(q)
         return 2.0 * (T0 + W(float(x))) / float(N @ (s.mass * N))
