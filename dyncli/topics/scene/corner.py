@@ -186,9 +186,14 @@ class CornerRolls(TurningRolls):
                 f"R = {self.R:g} m from the corner (exactly R where it touches)")
 
     def refuse_pull(self, q, N: float) -> str:
+        b = self.body_point.body
+        ring = (f"; a ring hanging on a peg inside it (a hoop on a knife edge) is a pin at its point on the peg, "
+                f"pin: [{b.name}.POINT, [{self.surface.C[0]:g}, {self.surface.C[1]:g}]] — rolling on a point keeps the "
+                "same point of the rim on it" if b.shape == "ring" else "")
         return (f"at t = 0 {self._where()} would have to pull {self._who()}: N = {N:.6g} N (a corner pushes along "
-                "the direction from it to the centre): the loads take the body away from the corner; start it "
-                "where it presses on the corner, or make the joint a stop, made where the rim strikes")
+                "the direction from it to the centre, from outside the rim): the loads take the body away from the "
+                f"corner; start it where it presses on the corner, or make the joint a stop, made where the rim "
+                f"strikes{ring}")
 
     def refuse_outside(self, q) -> str:
         n = [0.0 if abs(c) < 1e-12 else float(c) for c in self.normal(q)]
