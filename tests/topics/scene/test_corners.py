@@ -345,3 +345,36 @@ find: [{event: impact, joint: lip, after: true}]
                                                                   ("f", "separates"), ("lip", "separates")]
     assert [i["joint"] for i in r["impacts"]][:1] == ["lip"] and all(i["impulse"] > 1e-3 for i in r["impacts"])
     assert r["phases"][1]["joints"] == ["f"] and r["phases"][1]["t_start"] == pytest.approx(0.8 / v0)
+
+
+def test_a_ball_rolling_off_a_step_pivots_on_its_edge_slips_and_flies_to_the_floor():
+    # a solid ball rolls (no slip) along the top to its end, where its rim is on the edge moving
+    # along it: the edge's stop is made there without an impact, and the ball pivots over it
+    # (no slip: F = (2/7) m g sin ψ, N = m g cos ψ − m v²/R with v² = v0² + (10/7) g R (1 − cos ψ))
+    # until F = μ N, slips, leaves the edge and lands on the floor
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  top: {through: [-2, 0.3], direction: [1, 0], length: 2}
+  edge: {corner: [0, 0.3], normals: [[0, 1], [1, 0]]}
+  floor: {through: [-2, 0], direction: [1, 0]}
+bodies:
+  ball: {shape: sphere, mass: 2, radius: 0.1, x: [-1, 0.4], angle: 0, v: [0.5, 0], omega: -5}
+joints:
+  upper: {rolls: [ball, top]}
+  hit: {stop: [ball, edge], e: 0, mu: 5}
+  lower: {stop: [ball, floor], e: 0, mu: 5}
+at: [0, 3]
+""")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("upper", "leaves"), ("hit", "slips"),
+                                                              ("hit", "separates"), ("lower", "impact")]
+    assert r["events"][0]["t"] == pytest.approx(2.0, rel=closed_form())
+    assert r["phases"][1]["joints"] == ["hit"] and r["impacts"][0]["joint"] == "lower"
+    c0 = mp.mpf(0.25) / (mp.mpf(G) * mp.mpf("0.1"))
+    psi = mp.findroot(lambda p: mp.mpf(2) / 7 * mp.sin(p) - 5 * (mp.mpf(17) / 7 * mp.cos(p) - mp.mpf(10) / 7 - c0),
+                      0.78)
+    T = mp.quad(lambda p: 1 / mp.sqrt(25 + 2 * mp.mpf(5) / 7 * mp.mpf(G) * (1 - mp.cos(p)) / mp.mpf("0.1")), [0, psi])
+    near(r["events"][1]["t"], 2 + T, 1.0, "the time it slips on the edge", TOL)
+    near((r["events"][1]["state"]["x"]["ball"][1] - 0.3) / 0.1, mp.cos(psi), 1.0, "cos ψ where it slips", TOL)
