@@ -147,7 +147,7 @@ def refuse_gaps(system, q, free, t: float = 0.0) -> None:
 def _refuse_off_surface(e: Any, q, placed: str) -> None:
     """A contact or rolling joint given off its surface: the gap, and what to write instead (a
     stop, for a body that lands there), or the depth through it with the surface's normal."""
-    if getattr(getattr(e, "surface", None), "corner", False):
+    if hasattr(e, "refuse_gap"):        # a corner, or another body's rim: their own words
         raise InputError(e.refuse_gap(q, placed), e.path)
     gap = float(e.gap(q))
     label = (getattr(e, "P", None) or e.body_point).label

@@ -186,6 +186,8 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
     for name, j in plan.joints.items():
         kind, path = j["kind"], f"joints.{name}.{j['kind']}"
         a = j[kind]
+        if kind in ("contact", "stop") and _rims(name, j, R, q, n, out):
+            continue
         if kind in ("contact", "rolls") and _on_curve(name, j, R, q, n, out):
             continue
         if kind == "pin":
@@ -470,6 +472,41 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     if b.radius <= 0:
         raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
     out.append(curved.rolls_on(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    return True
+
+
+def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:
+    """``stop: [A, B]`` or ``contact: [A, B]`` with two bodies (not a surface) second: their rims
+    touch (rims.py; a point body has radius 0), appended to ``out`` (True); else False."""
+    kind = j["kind"]
+    a = j[kind]
+    other = a[1] if isinstance(a, (list, tuple)) and len(a) == 2 else None
+    if not (isinstance(other, str) and other in R.bodies and other not in R.surfaces):
+        return False
+    path = f"joints.{name}.{kind}"
+    if not (isinstance(a[0], str) and "." not in a[0]):
+        raise InputError(f"a {kind} between two bodies names both bodies ([A, B], their rims touch); a point on a "
+                         f"body's side is a {kind} with a surface the body carries ({{body: {other}, through, "
+                         "direction}})", path + ".0")
+    A, B = R.body(a[0], path + ".0"), R.body(other, path + ".1")
+    if A is B:
+        raise InputError(f"a body cannot touch itself: name two bodies, {kind}: [A, B]", path)
+    for k, b in enumerate((A, B)):
+        if b.rigid and not b.radius > 0:
+            raise InputError(f"{b.name!r} has no radius: two bodies touch rim to rim (balls, disks, rings, or a point "
+                             f"mass); a {b.shape}'s side is a surface it carries ({{body: {b.name}, through, "
+                             f"direction}}) for a {kind} of the other's point", f"{path}.{k}")
+    if not A.rigid and not B.rigid:
+        raise InputError("two point masses have no rims to touch: give one a round shape (sphere, disk) and its "
+                         "radius", path)
+    if any(j.get(k) for k in ("mu", "mu_s", "mu_k")):
+        raise InputError("friction between two bodies' rims is not modelled in this release: leave mu out (the rims "
+                         "smooth)", f"joints.{name}.{'mu' if j.get('mu') else 'mu_s' if j.get('mu_s') else 'mu_k'}")
+    from .rims import PairSurface, RimContact
+
+    out.append(RimContact(name, kind, n, path, P=BodyPoint(A.name, A, (0.0, 0.0)), surface=PairSurface(B.name),  # type: ignore[arg-type]
+                          A=A, B=B, RA=A.radius if A.rigid else 0.0, RB=B.radius if B.rigid else 0.0,
+                          mode="off" if kind == "stop" else "smooth", e=float(j.get("e") or 0.0), stop=kind == "stop"))
     return True
 
 

@@ -126,8 +126,12 @@ class Transitions:
         if what == "reverses":                  # a two-sided guide's N changes sign: so does its friction
             e.nsign = -e.nsign
         elif what in ("separates", "leaves"):
+            together = self._separating_with(t, q, v, e) if what == "separates" else []
             impulse.release(e)
             self.event(t, e.name, what)
+            for el in together:
+                impulse.release(el)
+                self.event(t, el.name, "separates")
         elif what == "slack":
             T = e.tensions(s.lam_of(s.solve(q, v, t)[1], s.elements.index(e)))
             e.slack = e.slack | {min(e.taut, key=lambda r: T[r])}
@@ -263,6 +267,23 @@ class Transitions:
                 out.append((el, el.e))
         return out
 
+    def _separating_with(self, t, q, v, e) -> list:
+        """The other contacts whose N reaches 0 at the instant ``e``'s does (within 1e-9 of the
+        multipliers' scale, solved with them all still made): they separate together.  A
+        symmetric scene — a cylinder resting on two others, a rod lifted off two ledges — loses
+        both at one instant; releasing one of them first would leave the other's N at its
+        rounding and the motion lopsided."""
+        s = self.s
+        _, lam, _ = s.solve(q, v, t)
+        scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+        out = []
+        for i, el in enumerate(s.elements):
+            if el is e or el.rows == 0 or not isinstance(el, (Contact, Rolls)) or getattr(el, "two_sided", False):
+                continue
+            if any(what == "separates" and abs(g) <= 1e-9 * scale for what, g in el.watch(s.lam_of(lam, i), q, v, t)):
+                out.append(el)
+        return out
+
     def _land(self, t, q, v, left: str) -> bool:
         """After an event, a body that touches a surface without approaching it while free flight
         takes it in (a wheel passing over a curb's corner onto its top, its centre over the
@@ -270,19 +291,25 @@ class Transitions:
         lets go) is made on it at once — not struck an instant later after a fall of the event's
         rounding.  Each released contact or stop at that instant with a gap within 1e-9 of the
         scene's size, a normal speed within 1e-9 of the scene's speeds and free flight taking it
-        into the surface is made (settle then releases it if it would pull); the joint ``left``
-        (the event's own) stays as the event left it.  Returns whether one was made."""
+        into the surface beyond 1e-9 of the scene's accelerations is made (settle then releases
+        it if it would pull; a contact whose N reached 0 at this instant has no such
+        acceleration, to rounding: it stays off); the joint ``left`` (the event's own) stays as
+        the event left it.  Returns whether one was made."""
         from . import impulse
 
         s = self.s
         tol = 1e-9 * assembly.length_scale(q, s)
         vtol = 1e-9 * max(float(np.max(np.abs(v), initial=0.0)), 1e-300)
         made = False
+        ascale = None
         for el in s.elements:
             if not isinstance(el, (Contact, Rolls)) or el.mode != "off" or el.name == left:
                 continue
-            if abs(el.watch((), q, v, t)[0][1]) <= tol and abs(el.normal_speed(q, v)) <= vtol \
-                    and impulse.normal_acceleration(s, q, v, t, el) < 0:
+            if abs(el.watch((), q, v, t)[0][1]) > tol or abs(el.normal_speed(q, v)) > vtol:
+                continue
+            if ascale is None:
+                ascale = max(float(np.max(np.abs(s.solve(q, v, t)[0]), initial=0.0)), abs(s.g), 1e-300)
+            if impulse.normal_acceleration(s, q, v, t, el) < -1e-9 * ascale:
                 impulse.make(el, q)
                 s.refresh()
                 made = True

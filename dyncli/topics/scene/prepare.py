@@ -609,8 +609,10 @@ def _refuse_at_start(system, q, v) -> None:
                 continue
             if what == "separates":
                 _refuse_pull(system, e, g, q)
-            if getattr(getattr(e, "surface", None), "corner", False) and what in ("leaves", "impact"):
-                raise InputError(e.refuse_outside(q) if what == "leaves" else e.refuse_gap(q, ""), e.path)
+            if what == "impact" and hasattr(e, "refuse_gap"):        # a corner's or another body's rim
+                raise InputError(e.refuse_gap(q, ""), e.path)
+            if what == "leaves" and hasattr(e, "refuse_outside"):     # a corner's faces
+                raise InputError(e.refuse_outside(q), e.path)
             if what == "leaves" and getattr(e.surface, "curved", False):
                 raise InputError(f"at t = 0 the contact point is beyond an end of the curve {e.surface.name!r} (q_range "
                                  f"{list(e.surface.q_range)}): place it on the curve or widen q_range", e.path)
@@ -629,7 +631,7 @@ def _refuse_pull(system, e, N: float, q) -> None:
     """A contact (or rolling body) that would have to pull at t = 0: refused, with the surface's
     normal (a body on the wrong side) and, when another joint holds the body too, the way to
     let it lift off there (a crate pushed past tipping: that corner a `stop`)."""
-    if getattr(getattr(e, "surface", None), "corner", False):
+    if hasattr(e, "refuse_pull"):       # a corner, or another body's rim: their own words
         raise InputError(e.refuse_pull(q, N), e.path)
     on = e.P.label if isinstance(e, Contact) else e.body_point.label
     n = [0.0 if abs(c) < 1e-12 else float(c) for c in (e.normal(q) if hasattr(e, "normal") else e.surface.n)]

@@ -91,6 +91,9 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
         if getattr(getattr(e, "surface", None), "carried", False):
             raise ValueError(f"the {e.kind} {e.name!r} on {e.surface.name!r}, a surface carried by "
                              f"{e.surface.body.name!r}, has no symbolic form in this release")
+        if getattr(getattr(e, "surface", None), "pair", False):
+            raise ValueError(f"the {e.kind} {e.name!r} between the rims of {e.A.name!r} and {e.B.name!r} has no "
+                             "symbolic form in this release")
         if getattr(getattr(e, "surface", None), "corner", False):
             raise ValueError(f"the {e.kind} {e.name!r} on the corner {e.surface.name!r} has no symbolic form in this "
                              "release")

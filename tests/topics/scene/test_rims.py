@@ -1,0 +1,161 @@
+"""Bodies striking bodies rim to rim (``stop: [A, B]`` / ``contact: [A, B]`` with two bodies):
+two pendulum balls colliding, a rolling billiard ball striking one at rest, a cylinder resting on
+two others (released: both contacts let go at one instant), and the refusals.
+
+References, none from the code under test: the impact of two bodies along their line of centres
+(28.7, 28.11: v_A' = (m_A − e m_B) v/(m_A + m_B), v_B' = m_A (1 + e) v/(m_A + m_B), the energy
+lost ½ m_A m_B/(m_A + m_B) (1 − e²) v²); the pendulum's exact quarter period √(L/g) K(sin²(θ0/2))
+(mpmath); slipping under kinetic friction to rolling at (2/7) v and (5/7) v (solid spheres);
+the released stack's first accelerations from its free-body diagrams by hand.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_one_text
+from tests.tolerances import ODE_GLOBAL, closed_form
+from tests.topics.scene.test_refusals import refusal
+from tests.topics.scene.test_start import near
+
+G = 9.81
+TOL = ODE_GLOBAL * 1e-10
+
+
+@pytest.mark.parametrize("mA, mB, e", [(1.0, 2.0, 0.8), (2.0, 1.0, 0.5), (1.0, 1.0, 1.0), (1.0, 3.0, 0.0)])
+def test_two_pendulum_balls_collide_at_the_bottom(mA, mB, e):
+    # A swings down from 60° on L = 1 and strikes B hanging at rest: horizontal and central at
+    # the bottom (the links vertical: no impulsive tension)
+    rec = solve_one_text(f"""
+type: scene
+bodies:
+  A: {{shape: sphere, mass: {mA}, radius: 0.05, x: ["-0.1 - sin(pi/3)", "1 - cos(pi/3)"], angle: 0}}
+  B: {{shape: sphere, mass: {mB}, radius: 0.05, x: [0, 0], angle: 0}}
+joints:
+  a: {{link: [[-0.1, 1], A]}}
+  b: {{link: [[0, 1], B]}}
+  hit: {{stop: [A, B], e: {e}}}
+at: [0, 0.7]
+find: [{{event: impact, after: true}}]
+""")
+    r = rec["results"]
+    v = math.sqrt(G)                                        # √(2 g L (1 − cos 60°))
+    near(r["events"][0]["t"], mp.sqrt(1 / G) * mp.ellipk(mp.sin(mp.pi / 6) ** 2), 1.0, "the time of the impact", TOL)
+    after = r["find"][0]["v"]
+    near(after["A"][0], (mA - e * mB) * v / (mA + mB), v, "v_A after", TOL)
+    near(after["B"][0], mA * (1 + e) * v / (mA + mB), v, "v_B after", TOL)
+    imp = r["impacts"][0]
+    near(imp["impulse"], mA * mB * (1 + e) * v / (mA + mB), mA * v, "the impulse", TOL)
+    near(imp["energy_loss"], 0.5 * mA * mB / (mA + mB) * (1 - e * e) * v * v, mA * v * v, "the energy lost", TOL)
+    near(imp["v_n_after"], e * v, v, "Newton's law on the normal speed", TOL)
+    if e == 0:                                              # plastic: they swing on together, touching
+        assert r["phases"][1]["joints"] == ["a", "b", "hit"]
+
+
+def test_a_rolling_ball_strikes_a_resting_one_each_slips_then_rolls_at_two_and_five_sevenths():
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  table: {through: [-2, 0], direction: [1, 0]}
+bodies:
+  cue: {shape: sphere, mass: 0.17, radius: 0.028, x: [-0.5, 0.028], angle: 0, v: [2, 0], omega: -71.42857142857143}
+  ball: {shape: sphere, mass: 0.17, radius: 0.028, x: [0.1, 0.028], angle: 0}
+joints:
+  r1: {rolls: [cue, table], mu_s: 0.3, mu_k: 0.2}
+  r2: {rolls: [ball, table], mu_s: 0.3, mu_k: 0.2}
+  hit: {stop: [cue, ball], e: 0.9}
+at: [0, 1.5]
+""")
+    r = rec["results"]
+    v0, e, mu = 2.0, 0.9, 0.2
+    va, vb = (1 - e) * v0 / 2, (1 + e) * v0 / 2             # equal masses
+    # the cue ball keeps ω0 = v0/R: it is driven forward to (5 va + 2 v0)/7; the other to 5 vb/7
+    ka, kb = (5 * va + 2 * v0) / 7, 5 * vb / 7
+    t_hit = 0.544 / v0
+    assert [(x["joint"], x["what"]) for x in r["events"]] == [("hit", "impact"), ("r1", "sticks"), ("r2", "sticks")] \
+        or [(x["joint"], x["what"]) for x in r["events"]] == [("hit", "impact"), ("r2", "sticks"), ("r1", "sticks")]
+    times = {x["joint"]: x["t"] for x in r["events"][1:]}
+    assert times["r1"] == pytest.approx(t_hit + (ka - va) / (mu * G), rel=closed_form(1e3))
+    assert times["r2"] == pytest.approx(t_hit + (vb - kb) / (mu * G), rel=closed_form(1e3))
+    assert r["v"]["cue"][1][0] == pytest.approx(ka, rel=closed_form(100))
+    assert r["v"]["ball"][1][0] == pytest.approx(kb, rel=closed_form(100))
+    assert r["omega"]["ball"][1][2] == pytest.approx(-kb / 0.028, rel=closed_form(100))
+
+
+def test_a_cylinder_on_two_others_pushes_them_apart_and_leaves_both_at_once():
+    # three equal smooth cylinders (R = 0.1, m = 1), the top one on the two below at 60°: by
+    # hand, N = m g/(2 cos 30° + tan 30° sin 30°·…): a_L = −N/2, a_T = √3 N − g with
+    # ½(−a_L) + (√3/2) a_T = 0, so N = g/(√3 + 1/(2√3)) and the floor's 9.81 + (√3/2) N
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  floor: {through: [-2, 0], direction: [1, 0]}
+bodies:
+  L: {shape: cylinder, mass: 1, radius: 0.1, x: [0, 0.1], angle: 0}
+  T: {shape: cylinder, mass: 1, radius: 0.1, x: [0.1, "0.1 + 0.2*sin(pi/3)"], angle: 0}
+  R: {shape: cylinder, mass: 1, radius: 0.1, x: [0.2, 0.1], angle: 0}
+joints:
+  fl: {stop: [L, floor], e: 0}
+  fr: {stop: [R, floor], e: 0}
+  tl: {contact: [T, L]}
+  tr: {contact: [T, R]}
+at: [0, 0.3]
+""")
+    r = rec["results"]
+    N = G / (math.sqrt(3) + 1 / (2 * math.sqrt(3)))
+    assert r["reaction"]["tl"]["N"][0] == pytest.approx(N, rel=closed_form(100))
+    assert r["reaction"]["tr"]["N"][0] == pytest.approx(N, rel=closed_form(100))
+    assert r["a"]["L"][0][0] == pytest.approx(-N / 2, rel=closed_form(100))
+    assert r["reaction"]["fl"]["N"][0] == pytest.approx(G + math.sqrt(3) / 2 * N, rel=closed_form(100))
+    # the top lets go of both at one instant (symmetric), and falls freely between them
+    assert [(x["joint"], x["what"]) for x in r["events"]] == [("tl", "separates"), ("tr", "separates")]
+    assert r["events"][0]["t"] == r["events"][1]["t"]
+    assert r["x"]["T"][1][0] == pytest.approx(0.1, abs=1e-12)
+    assert r["x"]["L"][1][0] == pytest.approx(0.2 - r["x"]["R"][1][0], abs=1e-12)
+
+
+BASE = """
+type: scene
+surfaces:
+  floor: {through: [-2, 0], direction: [1, 0]}
+bodies:
+  A: {shape: sphere, mass: 1, radius: 0.1, x: XA, angle: 0}
+  B: {shape: SHAPEB, mass: 2, RB, x: [0, 0.1], angle: 0}
+  P: {shape: point, mass: 1, x: [3, 3]}
+  Q: {shape: point, mass: 1, x: [4, 4]}
+joints:
+  f: {stop: [B, floor], e: 0}
+  j: JOINT
+at: [0]
+"""
+
+
+def base(joint="{stop: [A, B], e: 0.5}", xa="[0, 0.5]", shape="sphere", rb="radius: 0.1") -> str:
+    return BASE.replace("JOINT", joint).replace("XA", xa).replace("SHAPEB", shape).replace("RB", rb)
+
+
+@pytest.mark.parametrize("text, field, needles", [
+    (base(joint="{contact: [A, B]}"), "joints.j", ("0.2 m apart", "R_A + R_B = 0.2 m", "make the joint a stop")),
+    (base(xa="[0, 0.25]"), "joints.j", ("overlap by 0.05 m",)),
+    (base(joint="{stop: [A, B], e: 0.5, mu: 0.3}"), "joints.j.mu", ("friction between two bodies' rims",)),
+    (base(joint="{stop: [A, B], e: 0.5}", shape="box", rb="size: [0.2, 0.2]"), "joints.j.stop.1", ("has no radius",)),
+    (base(joint="{stop: [P, Q], e: 0.5}"), "joints.j", ("two point masses",)),
+    (base(joint="{stop: [A, A], e: 0.5}"), "joints.j", ("cannot touch itself",)),
+    (base(joint="{stop: [A.center, B], e: 0.5}"), "joints.j.stop.0", ("names both bodies",)),
+])
+def test_rim_refusals(text, field, needles):
+    refusal(text, field, *needles)
+
+
+def test_the_gallery_billiard_balls():
+    from tests.topics.scene.common import gallery
+
+    rec = gallery("billiard-balls.yaml")
+    r = rec["results"]
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("hit", "impact"), ("roll_cue", "sticks"),
+                                                              ("roll_ball", "sticks")]
+    assert r["impacts"][0]["course"] == "smooth" and r["impacts"][0]["energy_loss"] == 0
+    assert rec["warnings"] == []
