@@ -504,7 +504,7 @@ def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> 
                          "smooth)", f"joints.{name}.{'mu' if j.get('mu') else 'mu_s' if j.get('mu_s') else 'mu_k'}")
     from .rims import PairSurface, RimContact
 
-    out.append(RimContact(name, kind, n, path, P=BodyPoint(A.name, A, (0.0, 0.0)), surface=PairSurface(B.name),  # type: ignore[arg-type]
+    out.append(RimContact(name, kind, n, path, P=BodyPoint(A.name, A, (0.0, 0.0)), surface=PairSurface(B.name),
                           A=A, B=B, RA=A.radius if A.rigid else 0.0, RB=B.radius if B.rigid else 0.0,
                           mode="off" if kind == "stop" else "smooth", e=float(j.get("e") or 0.0), stop=kind == "stop"))
     return True

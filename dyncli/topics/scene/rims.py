@@ -47,6 +47,7 @@ class PairSurface:
 class RimContact(Contact):
     """Bodies A and B rim to rim (one row while made: the centres R_A + R_B apart, pushing)."""
 
+    surface: PairSurface  # type: ignore[assignment]  # the other body where Contact has a line: the geometry is all overridden here
     A: BodyData
     B: BodyData
     RA: float = 0.0
@@ -168,8 +169,12 @@ class RimContact(Contact):
                     f"contact starts touching: the centres R_A + R_B = {self.RA + self.RB:g} m apart){placed}: place "
                     f"them touching, or make the joint a stop (stop: [{self.A.name}, {self.B.name}], e: E), made where "
                     "they strike")
+        d = self.gap(q) + self.RA + self.RB
+        inside = next((b.name for b, R in ((self.A, self.RA), (self.B, self.RB)) if b.shape == "ring" and d < R), None)
+        hint = (f"; a body inside the ring {inside!r} (touching it from within) is not modelled in this release"
+                if inside else "")
         return (f"{who} overlap by {-gap:.6g} m at t = 0{placed}: place the centres at least R_A + R_B = "
-                f"{self.RA + self.RB:g} m apart (exactly that where they touch)")
+                f"{self.RA + self.RB:g} m apart (exactly that where they touch){hint}")
 
     def refuse_pull(self, q, N: float) -> str:
         return (f"at t = 0 {self.B.name!r} would have to pull {self.A.name!r}: N = {N:.6g} N (touching rims only "

@@ -145,6 +145,8 @@ def base(joint="{stop: [A, B], e: 0.5}", xa="[0, 0.5]", shape="sphere", rb="radi
     (base(joint="{stop: [P, Q], e: 0.5}"), "joints.j", ("two point masses",)),
     (base(joint="{stop: [A, A], e: 0.5}"), "joints.j", ("cannot touch itself",)),
     (base(joint="{stop: [A.center, B], e: 0.5}"), "joints.j.stop.0", ("names both bodies",)),
+    (base(joint="{contact: [A, B]}", xa="[0, 0.5]", shape="ring", rb="radius: 0.6"), "joints.j",
+     ("overlap", "inside the ring 'B'", "not modelled")),
 ])
 def test_rim_refusals(text, field, needles):
     refusal(text, field, *needles)
