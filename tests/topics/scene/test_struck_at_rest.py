@@ -220,6 +220,7 @@ joints:
 t_end: 1
 at: [0, 1]
 find: [{event: impact, after: true}, {event: sticks}]
+accuracy: {max_cpu: 10}     # (0.4 s of CPU alone; the distance stops refining at half the budget, which a loaded machine can reach)
 """
 
 
