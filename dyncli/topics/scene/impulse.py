@@ -223,7 +223,11 @@ def rough(s, q, v, t, rows: dict, pts) -> dict:
         try:
             out[id(el)] = routh.routh(W, float(u0[0]), float(u0[1]), r, mu_s, mu_k)
         except ArithmeticError as exc:
-            raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}") from None
+            held = [e.name for e in s.elements if e is not el and e.rows]
+            wedge = (f" with {', '.join(held)} made: the body is wedged between them (friction jams it: the impulse "
+                     "that would stop its approach has no bound); make one of them smooth or give it a smaller mu"
+                     if held else "")
+            raise NumericalError(f"the impact of '{el.name}' at t = {t:.6g} s: {exc}{wedge}") from None
     return out
 
 

@@ -36,6 +36,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from dyncli.errors import NumericalError
+
 from . import assembly, motion
 from .contacts import Contact, Rolls
 from .elements import Cord
@@ -116,6 +118,7 @@ class Transitions:
         v = self.settle(t, q, v)
         if self._land(t, q, v, joint):
             v = self.settle(t, q, v)
+        self._refuse_locked(t, q)
         q = s.project_position(q, t)
         return q, s.project_velocity(q, v, t)
 
@@ -284,6 +287,20 @@ class Transitions:
                 out.append(el)
         return out
 
+    def _refuse_locked(self, t, q) -> None:
+        """The joints made after an event whose rows are dependent (a wheel wedged between a floor
+        and a curb's edge, rolling on both: held there, its friction is not determined) cannot be
+        followed past it: refused with the joints, not as a singular matrix."""
+        s = self.s
+        J = s.jac(q)
+        if J.shape[0] and assembly.rank(J) < J.shape[0]:
+            names = ", ".join(joints_of(s))
+            raise NumericalError(f"at t = {t:.6g} s the joints made ({names}) lock each other: their rows are dependent "
+                                 "(a wheel wedged between two surfaces and rolling on both: held there, the friction "
+                                 "of each is not determined); this release does not follow the motion past that "
+                                 "instant: make one of them smooth or give it a smaller mu_s, or end the motion "
+                                 "before (t_end)")
+
     def _land(self, t, q, v, left: str) -> bool:
         """After an event, a body that touches a surface without approaching it while free flight
         takes it in (a wheel passing over a curb's corner onto its top, its centre over the
@@ -293,8 +310,9 @@ class Transitions:
         scene's size, a normal speed within 1e-9 of the scene's speeds and free flight taking it
         into the surface beyond 1e-9 of the scene's accelerations is made (settle then releases
         it if it would pull; a contact whose N reached 0 at this instant has no such
-        acceleration, to rounding: it stays off); the joint ``left`` (the event's own) stays as
-        the event left it.  Returns whether one was made."""
+        acceleration, to rounding: it stays off), sliding on if it arrives slipping, and left
+        off where its rows would repeat the made ones'; the joint ``left`` (the event's own)
+        stays as the event left it.  Returns whether one was made."""
         from . import impulse
 
         s = self.s
@@ -311,7 +329,15 @@ class Transitions:
                 ascale = max(float(np.max(np.abs(s.solve(q, v, t)[0]), initial=0.0)), abs(s.g), 1e-300)
             if impulse.normal_acceleration(s, q, v, t, el) < -1e-9 * ascale:
                 impulse.make(el, q)
+                slip = el.slip_speed(q, v)
+                if el.rows == 2 and abs(slip) > vtol:       # it arrives slipping: it slides on (no jump of its slip)
+                    el.mode, el.sign = ("slip" if isinstance(el, Rolls) else "slide"), math.copysign(1.0, slip)
                 s.refresh()
+                J = s.jac(q)
+                if assembly.rank(J) < J.shape[0]:           # its rows repeat the made ones' (a wheel wedged
+                    impulse.release(el)                     # between a floor and a curb's edge): left to its
+                    s.refresh()                             # impact, which shares what is not determined
+                    continue
                 made = True
         return made
 
