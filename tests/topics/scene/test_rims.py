@@ -161,3 +161,53 @@ def test_the_gallery_billiard_balls():
                                                               ("roll_ball", "sticks")]
     assert r["impacts"][0]["course"] == "smooth" and r["impacts"][0]["energy_loss"] == 0
     assert rec["warnings"] == []
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_an_oblique_impact_of_two_free_bodies_keeps_momentum_and_the_tangential_speeds(seed):
+    # g = 0, two bodies (a ball, a disk or a point against a ball or a disk) meeting off-centre:
+    # total momentum kept (both components), each tangential speed along the contact kept (smooth
+    # rims), Newton's law on the normal speed, T kept for e = 1 — at the masses, radii, offsets
+    # and speeds drawn by a seeded generator (the extremes of mass ratio 50 and grazing offsets)
+    import random
+
+    rnd = random.Random(seed)
+    mA, mB = rnd.choice([0.1, 1.0, 5.0]), rnd.choice([0.1, 1.0, 5.0])
+    RA, RB = rnd.uniform(0.01, 0.3), rnd.uniform(0.01, 0.3)
+    shapeA = ("sphere", "disk", "point")[seed % 3]
+    RAe = 0.0 if shapeA == "point" else RA
+    off = rnd.uniform(-0.95, 0.95) * (RAe + RB)
+    w = rnd.uniform(-1, 1)                                     # the same sideways speed: they meet
+    vA, vB = (rnd.uniform(0.5, 5), w), (rnd.uniform(-5, -0.5), w)
+    e = (0.0, 0.5, 1.0)[seed % 3 - 1]
+    radius = "" if shapeA == "point" else f"radius: {RA}, angle: 0, "
+    rec = solve_one_text(f"""
+type: scene
+g: 0
+bodies:
+  A: {{shape: {shapeA}, mass: {mA}, {radius}x: [-1, 0], v: [{vA[0]}, {vA[1]}]}}
+  B: {{shape: disk, mass: {mB}, radius: {RB}, angle: 0, x: [1, {off}], v: [{vB[0]}, {vB[1]}]}}
+joints:
+  hit: {{stop: [A, B], e: {e}}}
+t_end: 3
+at: [0]
+find: [{{event: impact, after: true}}]
+""")
+    f = rec["results"]["find"][0]
+    assert f["reached"]
+    a, b = f["v"]["A"], f["v"]["B"]
+    xa, xb = f["x"]["A"], f["x"]["B"]
+    d = math.hypot(xb[0] - xa[0], xb[1] - xa[1])
+    n = ((xb[0] - xa[0]) / d, (xb[1] - xa[1]) / d)
+    tol = closed_form(100) * 5 * max(mA, mB)
+    for k in (0, 1):
+        assert mA * a[k] + mB * b[k] == pytest.approx(mA * vA[k] + mB * vB[k], abs=tol)
+    assert d == pytest.approx(RAe + RB, rel=1e-9)               # where the rims meet (the located event)
+    dv0 = (vB[0] - vA[0]) * n[0] + (vB[1] - vA[1]) * n[1]
+    dv1 = (b[0] - a[0]) * n[0] + (b[1] - a[1]) * n[1]
+    assert dv1 == pytest.approx(-e * dv0, abs=tol)
+    for (u, w) in ((vA, a), (vB, b)):
+        assert w[1] * n[0] - w[0] * n[1] == pytest.approx(u[1] * n[0] - u[0] * n[1], abs=tol)
+    if e == 1:
+        T = lambda p, q: 0.5 * mA * (p[0] ** 2 + p[1] ** 2) + 0.5 * mB * (q[0] ** 2 + q[1] ** 2)  # noqa: E731
+        assert T(a, b) == pytest.approx(T(vA, vB), rel=closed_form(100))
