@@ -504,9 +504,21 @@ def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> 
                          "smooth)", f"joints.{name}.{'mu' if j.get('mu') else 'mu_s' if j.get('mu_s') else 'mu_k'}")
     from .rims import PairSurface, RimContact
 
+    RA, RB = (A.radius if A.rigid else 0.0), (B.radius if B.rigid else 0.0)
+    d0 = math.hypot(float(q[B.index[0]] - q[A.index[0]]), float(q[B.index[1]] - q[A.index[1]]))
+    # inside a ring: as given (internal), else the other's centre within its radius at t = 0 (a marble
+    # in a hoop; a point on the ring itself is outside unless internal: true)
+    ring = B.shape == "ring" or A.shape == "ring"
+    if j.get("internal") and not ring:
+        raise InputError(f"internal: true is for a body inside a ring; neither {A.name!r} nor {B.name!r} is a ring "
+                         "(shape: ring)", f"joints.{name}.internal")
+    inside = bool(j["internal"]) if j.get("internal") is not None else \
+        (B.shape == "ring" and d0 < RB) or (A.shape == "ring" and d0 < RA)
+    if inside and not abs(RA - RB) > 0:
+        raise InputError(f"{A.name!r} and {B.name!r} have the same radius: one cannot move inside the other", path)
     out.append(RimContact(name, kind, n, path, P=BodyPoint(A.name, A, (0.0, 0.0)), surface=PairSurface(B.name),
-                          A=A, B=B, RA=A.radius if A.rigid else 0.0, RB=B.radius if B.rigid else 0.0,
-                          mode="off" if kind == "stop" else "smooth", e=float(j.get("e") or 0.0), stop=kind == "stop"))
+                          A=A, B=B, RA=RA, RB=RB, inside=inside, mode="off" if kind == "stop" else "smooth",
+                          e=float(j.get("e") or 0.0), stop=kind == "stop"))
     return True
 
 

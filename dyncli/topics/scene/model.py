@@ -232,7 +232,7 @@ class Joint(_OneOf):
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim (on a line or a corner) and then rolls or slips; [A, B] with two bodies: their rims strike")
     gear: Optional[list[str]] = Field(None, description="[A, B]: two gears in mesh, their pitch circles rolling on each other (the centres held by other joints: pins, a carrier); [A, SURFACE]: a gear on a rack, the surface its pitch line")
     radii: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="gear: the pitch radii [R_A, R_B] [m] (a rack: [R]; default the bodies' radius)")
-    internal: Optional[bool] = Field(None, description="gear: true when B meshes inside A's ring gear (default false: an external mesh)")
+    internal: Optional[bool] = Field(None, description="gear: true when B meshes inside A's ring gear (default false: an external mesh); contact or stop between two bodies: true when one touches the other, a ring, from within (a marble in a hoop; default: from the positions at t = 0, inside when a centre is within the ring's radius)")
     e: Optional[Annotated[float, Num(ge=0, le=1, description="coefficient of restitution of an impact on the surface (stop: required; contact, rolls: default 0)")]] = None
     value: Optional[Annotated[Expr, ExprField(TIME, description="drive: the coordinate as an expression in t")]] = None
     mu: Optional[Annotated[float, Num(ge=0, description="friction coefficient (static = kinetic)")]] = None
@@ -246,9 +246,9 @@ class Joint(_OneOf):
 
     def check(self, base: str) -> None:
         kind = self._one(base, "a joint", "pin: [BODY, ground]")
-        allowed = {"pin": set(), "slider": {"mu", "mu_s", "mu_k"}, "contact": {"mu", "mu_s", "mu_k", "at", "e"},
+        allowed = {"pin": set(), "slider": {"mu", "mu_s", "mu_k"}, "contact": {"mu", "mu_s", "mu_k", "at", "e", "internal"},
                    "rolls": {"at", "mu_s", "mu_k", "e"}, "cord": {"length"}, "link": {"length", "angle"},
-                   "drive": {"value"}, "stop": {"e", "mu"}, "gear": {"radii", "internal"}}[kind]
+                   "drive": {"value"}, "stop": {"e", "mu", "internal"}, "gear": {"radii", "internal"}}[kind]
         for extra in ("value", "mu", "mu_s", "mu_k", "at", "length", "angle", "e", "radii", "internal"):
             if getattr(self, extra) is not None and extra not in allowed:
                 raise InputError(f"a {kind} joint takes no {extra}", _at(base, extra))

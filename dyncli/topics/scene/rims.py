@@ -52,6 +52,23 @@ class RimContact(Contact):
     B: BodyData
     RA: float = 0.0
     RB: float = 0.0
+    inside: bool = False        # one of them inside the other, a ring (touching it from within)
+
+    @property
+    def D(self) -> float:
+        """The distance of the centres where the rims touch: R_A + R_B, or |R_A − R_B| inside."""
+        return abs(self.RA - self.RB) if self.inside else self.RA + self.RB
+
+    @property
+    def s(self) -> float:
+        """+1 outside (the gap d − D), −1 inside (D − d)."""
+        return -1.0 if self.inside else 1.0
+
+    def _arms(self) -> tuple[float, float]:
+        """(c_A, c_B): the contact point is x̄_A + c_A n and x̄_B + c_B n."""
+        if not self.inside:
+            return self.RA, -self.RB
+        return (-self.RA, -self.RB) if self.RB > self.RA else (self.RA, self.RB)
 
     @property
     def linear(self):
@@ -77,45 +94,39 @@ class RimContact(Contact):
         return float(v[b[0]]) - float(v[a[0]]), float(v[b[1]]) - float(v[a[1]])
 
     def gap(self, q) -> float:
-        return self._geom(q)[0] - self.RA - self.RB
+        return self.s * (self._geom(q)[0] - self.D)
 
     def normal(self, q) -> np.ndarray:
-        """The direction of the push on A (from B's centre to A's)."""
+        """The direction of the push on A (from B's centre to A's outside; towards it inside)."""
         n = self._geom(q)[1]
-        return np.array([-n[0], -n[1]])
+        return np.array([-self.s * n[0], -self.s * n[1]])
 
     def normal_speed(self, q, v) -> float:
-        """The rate of the gap: n·(v̄_B − v̄_A)."""
+        """The rate of the gap: ± n·(v̄_B − v̄_A)."""
         _, (n1, n2), _ = self._geom(q)
         d1, d2 = self._dv(v)
-        return n1 * d1 + n2 * d2
+        return self.s * (n1 * d1 + n2 * d2)
 
     def gap_acceleration(self, q, v, a) -> float:
         d, (n1, n2), (t1, t2) = self._geom(q)
         a1, a2 = self._dv(a)
         v1, v2 = self._dv(v)
-        return n1 * a1 + n2 * a2 + (t1 * v1 + t2 * v2) ** 2 / d
+        return self.s * (n1 * a1 + n2 * a2 + (t1 * v1 + t2 * v2) ** 2 / d)
 
     def slip_speed(self, q, v) -> float:
         """The rims' relative speed along t̂ at the contact (A's point minus B's)."""
-        _, _, (t1, t2) = self._geom(q)
-        d1, d2 = self._dv(v)
-        out = -(t1 * d1 + t2 * d2)
-        if self.A.rigid:
-            out += self.RA * float(v[self.A.index[2]])
-        if self.B.rigid:
-            out += self.RB * float(v[self.B.index[2]])
-        return out
+        return float(self.tangent_jac(q) @ np.asarray(v, float))
 
     def tangent_jac(self, q) -> np.ndarray:
         _, _, (t1, t2) = self._geom(q)
         J = np.zeros(self.n)
         a, b = self.A.index, self.B.index
         J[a[0]], J[a[1]], J[b[0]], J[b[1]] = t1, t2, -t1, -t2
+        cA, cB = self._arms()
         if self.A.rigid:
-            J[a[2]] = self.RA
+            J[a[2]] = cA
         if self.B.rigid:
-            J[b[2]] = self.RB
+            J[b[2]] = -cB
         return J
 
     def phi_list(self, q, t):
@@ -125,9 +136,10 @@ class RimContact(Contact):
         if self.mode == "off":
             return []
         _, (n1, n2), _ = self._geom(q)
+        s = self.s
         row = [0.0] * self.n
         a, b = self.A.index, self.B.index
-        row[a[0]], row[a[1]], row[b[0]], row[b[1]] = -n1, -n2, n1, n2
+        row[a[0]], row[a[1]], row[b[0]], row[b[1]] = -s * n1, -s * n2, s * n1, s * n2
         return [row]
 
     def gamma_list(self, q, v, t):
@@ -135,18 +147,18 @@ class RimContact(Contact):
             return []
         d, _, (t1, t2) = self._geom(q)
         v1, v2 = self._dv(v)
-        return [-(t1 * v1 + t2 * v2) ** 2 / d]
+        return [-self.s * (t1 * v1 + t2 * v2) ** 2 / d]
 
     def kkt_lists(self, q, v, t):
         return self.jac_list(q), self.gamma_list(q, v, t)
 
     def hessian(self, q, w, n: int) -> np.ndarray:
-        """w ∇²d on the two centres: (w/d) [[t̂t̂ᵀ, −t̂t̂ᵀ], [−t̂t̂ᵀ, t̂t̂ᵀ]]."""
+        """± w ∇²d on the two centres: (w/d) [[t̂t̂ᵀ, −t̂t̂ᵀ], [−t̂t̂ᵀ, t̂t̂ᵀ]]."""
         H = np.zeros((n, n))
         if self.mode == "off" or not len(w):
             return H
         d, _, tt = self._geom(q)
-        T = float(w[0]) / d * np.outer(tt, tt)
+        T = self.s * float(w[0]) / d * np.outer(tt, tt)
         a, b = [self.A.index[0], self.A.index[1]], [self.B.index[0], self.B.index[1]]
         H[np.ix_(a, a)] += T
         H[np.ix_(b, b)] += T
@@ -166,15 +178,16 @@ class RimContact(Contact):
             f"{self.A.name!r} and the rim of {self.B.name!r}" if self.B.rigid else f"the rim of {self.A.name!r} and {self.B.name!r}"
         if gap > 0:
             return (f"the positions given violate the {self.kind} joint {self.name!r}: {who} are {gap:.6g} m apart (a "
-                    f"contact starts touching: the centres R_A + R_B = {self.RA + self.RB:g} m apart){placed}: place "
+                    f"contact starts touching: the centres {self._apart()} = {self.D:g} m apart){placed}: place "
                     f"them touching, or make the joint a stop (stop: [{self.A.name}, {self.B.name}], e: E), made where "
                     "they strike")
-        d = self.gap(q) + self.RA + self.RB
-        inside = next((b.name for b, R in ((self.A, self.RA), (self.B, self.RB)) if b.shape == "ring" and d < R), None)
-        hint = (f"; a body inside the ring {inside!r} (touching it from within) is not modelled in this release"
-                if inside else "")
-        return (f"{who} overlap by {-gap:.6g} m at t = 0{placed}: place the centres at least R_A + R_B = "
-                f"{self.RA + self.RB:g} m apart (exactly that where they touch){hint}")
+        where = (f"at most {self._apart()} = {self.D:g} m apart (inside the ring)" if self.inside else
+                 f"at least {self._apart()} = {self.D:g} m apart")
+        return (f"{who} overlap by {-gap:.6g} m at t = 0{placed}: place the centres {where} (exactly that where they "
+                "touch)")
+
+    def _apart(self) -> str:
+        return ("R_B − R_A" if self.RB > self.RA else "R_A − R_B") if self.inside else "R_A + R_B"
 
     def refuse_pull(self, q, N: float) -> str:
         return (f"at t = 0 {self.B.name!r} would have to pull {self.A.name!r}: N = {N:.6g} N (touching rims only "

@@ -146,7 +146,10 @@ def base(joint="{stop: [A, B], e: 0.5}", xa="[0, 0.5]", shape="sphere", rb="radi
     (base(joint="{stop: [A, A], e: 0.5}"), "joints.j", ("cannot touch itself",)),
     (base(joint="{stop: [A.center, B], e: 0.5}"), "joints.j.stop.0", ("names both bodies",)),
     (base(joint="{contact: [A, B]}", xa="[0, 0.5]", shape="ring", rb="radius: 0.6"), "joints.j",
-     ("overlap", "inside the ring 'B'", "not modelled")),
+     ("0.1 m apart", "R_B − R_A = 0.5 m")),
+    (base(joint="{contact: [A, B], internal: true}"), "joints.j.internal", ("neither 'A' nor 'B' is a ring",)),
+    (base(joint="{contact: [A, B]}", xa="[0, 0.1]", shape="ring", rb="radius: 0.1"), "joints.j", ("same radius",)),
+    (base(joint="{link: [A, B], internal: true}"), "joints.j.internal", ("takes no internal",)),
 ])
 def test_rim_refusals(text, field, needles):
     refusal(text, field, *needles)
@@ -211,3 +214,29 @@ find: [{{event: impact, after: true}}]
     if e == 1:
         T = lambda p, q: 0.5 * mA * (p[0] ** 2 + p[1] ** 2) + 0.5 * mB * (q[0] ** 2 + q[1] ** 2)  # noqa: E731
         assert T(a, b) == pytest.approx(T(vA, vB), rel=closed_form(100))
+
+
+@pytest.mark.parametrize("shape, radius, internal", [("point", 0.0, True), ("sphere", 0.1, None)])
+def test_a_marble_inside_a_fixed_hoop_presses_on_it_and_rises_to_v2_over_2g(shape, radius, internal):
+    # smooth: the marble's centre runs on a circle of radius ρ = 1 − r inside the hoop (pinned and
+    # held), N = m g + m v0²/ρ at the bottom, up to v0²/(2g) above it (the energy integral); a point
+    # on the ring itself is told inside by internal: true, a ball within it is inside by position
+    m, v0, rho = 0.1, 2.0, 1.0 - radius
+    body = "shape: point" if shape == "point" else f"shape: sphere, radius: {radius}, angle: 0"
+    flag = ", internal: true" if internal else ""
+    rec = solve_one_text(f"""
+type: scene
+bodies:
+  hoop: {{shape: ring, mass: 2, radius: 1, x: [0, 1], angle: 0}}
+  m: {{{body}, mass: {m}, x: [0, {radius}], v: [{v0}, 0]}}
+joints:
+  fix: {{pin: [hoop, [0, 1]]}}
+  hold: {{drive: hoop.angle, value: 0}}
+  in: {{contact: [m, hoop]{flag}}}
+at: [0]
+find: [{{max: x.m.1, within: [0, 3]}}]
+t_end: 3
+""")
+    r = rec["results"]
+    assert r["reaction"]["in"]["N"][0] == pytest.approx(m * G + m * v0 ** 2 / rho, rel=closed_form(100))
+    near(r["find"][0]["x"]["m"][1], radius + v0 ** 2 / (2 * G), 1.0, "the height it rises to", TOL)
