@@ -499,10 +499,9 @@ def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> 
     if not A.rigid and not B.rigid:
         raise InputError("two point masses have no rims to touch: give one a round shape (sphere, disk) and its "
                          "radius", path)
-    if any(j.get(k) for k in ("mu", "mu_s", "mu_k")):
-        raise InputError("friction between two bodies' rims is not modelled in this release: leave mu out (the rims "
-                         "smooth)", f"joints.{name}.{'mu' if j.get('mu') else 'mu_s' if j.get('mu_s') else 'mu_k'}")
     from .rims import PairSurface, RimContact
+
+    mu_s, mu_k = _friction_of(j)
 
     RA, RB = (A.radius if A.rigid else 0.0), (B.radius if B.rigid else 0.0)
     d0 = math.hypot(float(q[B.index[0]] - q[A.index[0]]), float(q[B.index[1]] - q[A.index[1]]))
@@ -517,7 +516,8 @@ def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> 
     if inside and not abs(RA - RB) > 0:
         raise InputError(f"{A.name!r} and {B.name!r} have the same radius: one cannot move inside the other", path)
     out.append(RimContact(name, kind, n, path, P=BodyPoint(A.name, A, (0.0, 0.0)), surface=PairSurface(B.name),
-                          A=A, B=B, RA=RA, RB=RB, inside=inside, mode="off" if kind == "stop" else "smooth",
+                          A=A, B=B, RA=RA, RB=RB, inside=inside, mu_s=mu_s, mu_k=mu_k,
+                          mode="off" if kind == "stop" else "slide" if (mu_s or mu_k) else "smooth",
                           e=float(j.get("e") or 0.0), stop=kind == "stop"))
     return True
 

@@ -7,13 +7,17 @@ n = r/d (from A to B) and t̂ = e3 × n:
 
 * φ = d − (R_A + R_B) ≥ 0, J = [−nᵀ on x̄_A, nᵀ on x̄_B], γ = −(t̂·Δv)²/d with Δv = v̄_B − v̄_A
   (d̈ = n·Δa + (t̂·Δv)²/d), ∇²d = t̂t̂ᵀ/d on r;
-* the multiplier λ is the push N ≥ 0 on A along −n (away from B; B gets N along n), smooth:
-  the force between the rims passes through both centres, so it turns neither body.
+* the multiplier λ is the push N ≥ 0 on A along −n (away from B; B gets N along n); smooth,
+  the force between the rims passes through both centres and turns neither body;
+* rough (``mu`` or ``mu_s``/``mu_k``): Coulomb friction along t̂ at the contact, kinetic −μ_k N
+  against the rims' slip t̂·(v̄_A − v̄_B) + c_A ω_A − c_B ω_B (the contact point x̄ + c n on each),
+  held (mode "stick") by the rims rolling on each other, c_A θ_A − c_B θ_B − D φ = const (φ the
+  direction of n; the gears' row), while |F| ≤ μ_s N.
 
 A ``stop`` starts open and is made at an impact (Newton's restitution e on the normal speed of
 approach, 28.7: both bodies' velocities jump together, 28.11); a ``contact`` starts made (the
 bodies touching at t = 0).  Either one separates where N reaches 0 and strikes again where the
-rims meet.  Friction between the rims is not modelled in this release (refused).
+rims meet.  Inside a ring (``inside``) the rows turn sign: the centres stay |R_A − R_B| apart.
 """
 
 from __future__ import annotations
@@ -74,8 +78,23 @@ class RimContact(Contact):
     def linear(self):
         return False
 
-    def made(self) -> str:
-        return "smooth"
+    def stick_here(self, q) -> None:
+        """Hold the rims rolling on each other from here (mode "stick"'s second row)."""
+        self.stick_at = 0.0
+        self.stick_at = self._rolled(q)
+
+    def _rolled(self, q) -> float:
+        """c_A θ_A − c_B θ_B − D φ − stick_at (φ the direction of n), on the turn nearest 0: the
+        rims' rolling on each other, integrated (its rate is their slip at d = D)."""
+        cA, cB = self._arms()
+        r1, r2 = float(q[self.B.index[0]]) - float(q[self.A.index[0]]), float(q[self.B.index[1]]) - float(q[self.A.index[1]])
+        w = -self.D * math.atan2(r2, r1) - self.stick_at
+        if self.A.rigid:
+            w += cA * float(q[self.A.index[2]])
+        if self.B.rigid:
+            w -= cB * float(q[self.B.index[2]])
+        turn = 2 * math.pi * self.D
+        return w - turn * round(w / turn) if turn > 0 else w
 
     def _geom(self, q):
         """(d, n, t̂) with n from A's centre to B's."""
@@ -130,24 +149,35 @@ class RimContact(Contact):
         return J
 
     def phi_list(self, q, t):
-        return [] if self.mode == "off" else [self.gap(q)]
+        if self.mode == "off":
+            return []
+        return [self.gap(q), self._rolled(q)] if self.mode == "stick" else [self.gap(q)]
 
     def jac_list(self, q):
         if self.mode == "off":
             return []
-        _, (n1, n2), _ = self._geom(q)
+        d, (n1, n2), (t1, t2) = self._geom(q)
         s = self.s
         row = [0.0] * self.n
         a, b = self.A.index, self.B.index
         row[a[0]], row[a[1]], row[b[0]], row[b[1]] = -s * n1, -s * n2, s * n1, s * n2
-        return [row]
+        if self.mode != "stick":
+            return [row]
+        roll = self.tangent_jac(q).tolist()         # the slip, with D/d on the centres' part (d = D made)
+        f = self.D / d
+        roll[a[0]], roll[a[1]], roll[b[0]], roll[b[1]] = f * t1, f * t2, -f * t1, -f * t2
+        return [row, roll]
 
     def gamma_list(self, q, v, t):
         if self.mode == "off":
             return []
-        d, _, (t1, t2) = self._geom(q)
+        d, (n1, n2), (t1, t2) = self._geom(q)
         v1, v2 = self._dv(v)
-        return [-self.s * (t1 * v1 + t2 * v2) ** 2 / d]
+        A, B = t1 * v1 + t2 * v2, n1 * v1 + n2 * v2
+        out = [-self.s * A * A / d]
+        if self.mode == "stick":                    # −J̇v of c_A θ_A − c_B θ_B − D φ: φ̈ ∋ −2 (t̂·ṙ)(n·ṙ)/d²
+            out.append(-2 * self.D * A * B / (d * d))
+        return out
 
     def kkt_lists(self, q, v, t):
         return self.jac_list(q), self.gamma_list(q, v, t)
@@ -169,7 +199,7 @@ class RimContact(Contact):
     def watch(self, lam, q, v, t):
         if self.mode == "off":
             return [("impact", self.gap(q))]
-        return [("separates", float(lam[0]))]
+        return self.touching_watches(lam, q, v, None)
 
     # ------------------------------------------------------------------ refusals at t = 0
     def refuse_gap(self, q, placed: str) -> str:
