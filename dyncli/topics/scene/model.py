@@ -224,7 +224,7 @@ class Joint(_OneOf):
 
     pin: Optional[list[PointRef]] = Field(None, description="[P, Q]: a smooth pin")
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
-    contact: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: one-sided contact, Coulomb friction; [A, B] with two bodies: their rims touch (smooth)")
+    contact: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: one-sided contact, Coulomb friction; [A, B] with two bodies: their rims touch")
     rolls: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: rolls without slipping")
     cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord; [END, {peg: [x1, x2]}..., END]: a string that catches pegs")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
