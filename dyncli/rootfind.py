@@ -950,15 +950,20 @@ def smooth_minima(f, n: int, deg: int = 20, noise=0.0):
         d = C.chebder(c, axis=-1)
         big = np.max(np.abs(c), axis=-1)
         floor = np.maximum(16 * sys.float_info.epsilon * np.max(np.abs(Y), axis=-1), np.asarray(noise, dtype=float))
-        resolved = np.all(np.isfinite(c), axis=-1) & (np.max(np.abs(c[:, -3:]), axis=-1) <= np.maximum(1e-13 * big, floor))
+        level = np.maximum(1e-13 * big, floor)         # a coefficient at or below it: rounding
+        resolved = np.all(np.isfinite(c), axis=-1) & (np.max(np.abs(c[:, -3:]), axis=-1) <= level)
         # |T_k| <= 1: a derivative whose constant term exceeds the rest has no root (nor has a
         # constant one)
         look = resolved & (np.abs(d[:, 0]) <= np.sum(np.abs(d[:, 1:]), axis=-1)) & np.any(d[:, 1:] != 0, axis=-1)
     minima: list = [np.zeros(0) for _ in range(n)]
     for i in np.flatnonzero(look):
+        # the derivative's series up to the last coefficient of c above the rounding (a DOP853
+        # step's |v|², degree 14, gives a 13 × 13 companion matrix, not 19 × 19: the roots of
+        # the rest move at the rounding, and the polish below is on the whole series)
+        above = np.flatnonzero(np.abs(c[i]) > level[i])
         try:
             with np.errstate(all="ignore"):
-                r = cheb_roots(np.trim_zeros(d[i], "b"))
+                r = cheb_roots(np.trim_zeros(d[i][:max(int(above[-1]) if above.size else 1, 1)], "b"))
         except (np.linalg.LinAlgError, ValueError):
             resolved[i] = False
             continue

@@ -131,8 +131,8 @@ def answer(raw, scene, traj, inst, params, times, warn=None, rtol: float = 0.0, 
     return out
 
 
-#: uniform pieces added to the trajectory's own breaks for the distance's quadrature (a closed
-#: form's phase can span many oscillations)
+#: uniform pieces added to the trajectory's own breaks for the distance's quadrature, inside its
+#: exact pieces (a closed form's phase can span many oscillations)
 DISTANCE_PIECES = 128
 
 
@@ -145,8 +145,13 @@ def odometer(scene, traj, rtol: float = 1e-10, warn=None):
     bodies = scene.system.bodies
     t0 = traj.t0
     t_end = traj.stopped if traj.stopped is not None else traj.t_end
-    pts = {t for t in traj.breaks if t0 <= t <= t_end} | {t0 + (t_end - t0) * k / DISTANCE_PIECES
-                                                          for k in range(DISTANCE_PIECES + 1)}
+    # the uniform cuts go inside the exact pieces only: an ODE step is a polynomial (its
+    # interpolant), resolved on its own and halved where it is not
+    grid = [t0 + (t_end - t0) * k / DISTANCE_PIECES for k in range(DISTANCE_PIECES + 1)]
+    pts = {t for t in traj.breaks if t0 <= t <= t_end} | {t0, t_end}
+    for p in traj.pieces:
+        if p.batch is None and p.t_b > p.t_a:
+            pts.update(t for t in grid if p.t_a < t < p.t_b)
 
     i1 = [b.index[0] for b in bodies]
     i2 = [b.index[1] for b in bodies]
