@@ -34,7 +34,8 @@ from dyncli import queries as _q
 from dyncli.errors import InputError, NumericalError
 
 __all__ = ["StateMotion", "flatten", "answer_find", "search_end", "Odometer", "turning_length", "turns", "attach",
-           "searched_paths", "exact_breaks", "series_values", "find_end", "check_resolved"]
+           "searched_paths", "exact_breaks", "series_values", "find_end", "check_resolved",
+           "uniform_path_length"]
 
 
 def flatten(node: Any, prefix: str = "") -> dict[str, float]:
@@ -578,6 +579,46 @@ LEGGAUSS_10 = (
     (0.06667134430868814, 0.1494513491505804, 0.219086362515982, 0.2692667193099965, 0.2955242247147528,
      0.2955242247147528, 0.2692667193099965, 0.219086362515982, 0.1494513491505804, 0.06667134430868814),
 )
+
+
+def uniform_path_length(v0: Sequence[float], a: Sequence[float], tau: float) -> float:
+    """The length of the path ∫₀^τ |v0 + a s| ds of a point with the constant acceleration ``a``
+    (plane vectors), τ ≥ 0, in closed form: with |v|² = |a|² (u² + k²), u = s + v0·a/|a|²,
+    k = |v0 × a|/|a|², it is |a| [u √(u² + k²) + k² asinh(u/k)]/2 between u0 and u0 + τ, written
+    without cancellation — the difference u1 s1 − u0 s0 as τ (s1 + u0 (u1 + u0)/(s1 + s0)), the
+    asinh difference on one side of u = 0 as a log1p — so that a short piece of a fast motion, or
+    a tiny acceleration, keeps its digits (a straight line, k = 0: the turning point's kink exact);
+    in units of the largest of |v0| and |a| τ, so that no square underflows."""
+    tau = float(tau)
+    if not tau > 0.0:
+        return 0.0
+    # in units of the largest of the speeds |v0| and |a| τ over τ = 1 (no underflow of |a|²)
+    vx, vy = float(v0[0]), float(v0[1])
+    ax, ay = float(a[0]) * tau, float(a[1]) * tau
+    c = max(abs(vx), abs(vy), abs(ax), abs(ay))
+    if c == 0.0:
+        return 0.0
+    vx, vy, ax, ay = vx / c, vy / c, ax / c, ay / c
+    A = ax * ax + ay * ay
+    if A < 1e-20:       # |a| τ ≪ |v0| (= 1): |v| = |v0| + (v0·a) s/|v0| + O(A), its second order below rounding
+        hv = math.hypot(vx, vy)
+        return c * tau * (hv + 0.5 * (vx * ax + vy * ay) / hv)
+    u0 = (vx * ax + vy * ay) / A
+    u1 = u0 + 1.0
+    k = abs(vx * ay - vy * ax) / A
+    s0, s1 = math.hypot(u0, k), math.hypot(u1, k)
+    first = s1 + u0 * (u1 + u0) / (s1 + s0)
+    k2 = k * k
+    second = 0.0
+    if k2 > 0.0:
+        if u0 >= 0.0:
+            d = math.log1p((1.0 + (u1 + u0) / (s1 + s0)) / (u0 + s0))
+        elif u1 <= 0.0:
+            d = math.log1p((1.0 - (u1 + u0) / (s1 + s0)) / (s1 - u1))
+        else:
+            d = math.asinh(u1 / k) + math.asinh(-u0 / k)
+        second = k2 * d if math.isfinite(d) else 0.0
+    return c * tau * math.sqrt(A) * 0.5 * (first + second)
 
 
 def turning_length(s: Callable[[float], float], turns: Iterable[float], times: Iterable[float],

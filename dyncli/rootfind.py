@@ -587,6 +587,14 @@ def _piece_values(pieces, m, h, x):
     return np.stack([np.atleast_2d(np.asarray(f(mk + hk * x), dtype=float)) for f, mk, hk in zip(fs, m, h)])
 
 
+def check_extremes_budget() -> None:
+    """Raise NumericalError once the solve has used SEARCH_MARGIN × its CPU budget (a search of
+    extremes, checked between its rounds of evaluations)."""
+    if (cpu := cputime.over(SEARCH_MARGIN)) is not None:
+        raise NumericalError(f"a search of extremes has used {SEARCH_MARGIN:g} × the solve's CPU budget of "
+                             f"{cpu:g} s (accuracy.max_cpu): narrow it with within, or raise accuracy.max_cpu")
+
+
 def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int = 200_000):
     """The critical points of a smooth function of time between each pair of consecutive
     ``breaks`` (an ODE's steps, inside which a quantity of the state is a smooth function of the
@@ -614,9 +622,7 @@ def smooth_extremes(q, breaks, deg: int = 32, max_depth: int = 60, budget: int =
     cuts: list[set[float]] = []
     depth, used, scale = 0, 0, None
     while cells.shape[0]:
-        if (cpu := cputime.over(SEARCH_MARGIN)) is not None:
-            raise NumericalError(f"a search of extremes has used {SEARCH_MARGIN:g} × the solve's CPU budget of "
-                                 f"{cpu:g} s (accuracy.max_cpu): narrow it with within, or raise accuracy.max_cpu")
+        check_extremes_budget()
         m, h = 0.5 * (cells[:, 0] + cells[:, 1]), 0.5 * (cells[:, 1] - cells[:, 0])
         used += cells.shape[0] * (deg + 1) if depth else 0
         if used > budget:

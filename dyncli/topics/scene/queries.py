@@ -155,6 +155,9 @@ def odometer(scene, traj, rtol: float = 1e-10, warn=None):
 
     i1 = [b.index[0] for b in bodies]
     i2 = [b.index[1] for b in bodies]
+    if t_end > t0 and (exact := _uniform_odometer(traj, i1, i2, t0, t_end)) is not None:
+        return lambda times: {b.name: [None if v is None else v[j] for v in map(exact, times)]
+                              for j, b in enumerate(bodies)}
 
     def speeds(ts):
         V = traj.velocities(ts)
@@ -172,6 +175,58 @@ def odometer(scene, traj, rtol: float = 1e-10, warn=None):
         vals = odo.at(ok) if ok else []
         got = dict(zip(ok, vals))
         return {b.name: [got[t][j] if t in got else None for t in times] for j, b in enumerate(bodies)}
+    return at
+
+
+def _within_budget(f, ts: list[float], every: int = 128) -> list[float]:
+    """[f(t) for t in ts], the solve's CPU budget checked every ``every`` values (a result read
+    state by state — a joint force at the nodes of every step — can take seconds in one round of
+    the search of extremes, which checks it between rounds)."""
+    from dyncli.rootfind import check_extremes_budget
+
+    out = []
+    for i, t in enumerate(ts):
+        if i % every == every - 1:
+            check_extremes_budget()
+        out.append(f(t))
+    return out
+
+
+def _uniform_odometer(traj, i1, i2, t0: float, t_end: float):
+    """``t -> [each body's path length]`` (None past t_end) when every piece of the motion up to
+    t_end has constant accelerations (``Piece.quad``: a block on an incline, an Atwood machine, a
+    ball between its bounces): the path of each piece in closed form
+    (:func:`dyncli.motion_find.uniform_path_length`), summed; else None."""
+    from bisect import bisect_right
+
+    from dyncli.motion_find import uniform_path_length
+
+    pieces = [p for p in traj.pieces if p.t_b > p.t_a and p.t_a < t_end]
+    if not pieces or any(p.quad is None for p in pieces):
+        return None
+
+    def path(p, t: float) -> list[float]:
+        tq, _q0, v0, a = p.quad
+        lag = p.t_a - tq
+        return [uniform_path_length((float(v0[x] + a[x] * lag), float(v0[y] + a[y] * lag)),
+                                    (float(a[x]), float(a[y])), t - p.t_a) for x, y in zip(i1, i2)]
+
+    starts, before = [], []
+    total = [0.0] * len(i1)
+    for p in pieces:
+        starts.append(p.t_a)
+        before.append(total)
+        total = [c + d for c, d in zip(total, path(p, min(p.t_b, t_end)))]
+
+    def at(t) -> list[float] | None:
+        t = float(t)
+        if t > t_end:
+            return None
+        if t <= t0:
+            return [0.0] * len(i1)
+        k = max(bisect_right(starts, t) - 1, 0)
+        p = pieces[k]
+        return [c + d for c, d in zip(before[k], path(p, min(t, p.t_b, t_end)))]
     return at
 
 
@@ -203,7 +258,7 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
             elif path.startswith("distance."):
                 rows.append(motion.distances(path, ts))
             else:
-                rows.append(np.array([motion.value(path, t) for t in ts], dtype=float))
+                rows.append(np.array(_within_budget(lambda t, path=path: motion.value(path, t), ts), dtype=float))
         return np.array(rows, dtype=float)
 
     B = sorted(set(motion.breaks))

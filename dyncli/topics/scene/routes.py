@@ -862,6 +862,8 @@ def _piece_event(s, p, quadratic: bool = False):
     lo, width = p.t_a, crossing.FIRST_WINDOW if held else min(crossing.FIRST_WINDOW, (p.t_b - p.t_a) / 16)
     while lo < p.t_b:                           # window by window, every watched quantity in each
         hi = min(p.t_b, lo + width)
+        if not hi > lo:                         # (a width below the spacing of the doubles at lo)
+            hi = p.t_b
         best = None
         for j, joint, what in watched:
             end = hi if best is None else best[0]
