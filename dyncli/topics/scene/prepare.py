@@ -319,10 +319,13 @@ def _guided_aside(system, q, v, warn) -> None:
 
 
 def _refuse_massless(system, q, plan) -> None:
-    """A body without mass (or inertia) whose coordinate no joint holds has no equation of
-    motion: refused naming it."""
-    zero = [k for k in range(system.n) if system.mass[k] == 0]
-    if not zero:
+    """A motion the joints allow that moves no mass (a body without mass, or inertia, whose
+    coordinate no joint ties to a massive one) has no equation of motion: refused naming the
+    body.  A massless body the joints carry with massive ones (a collar pinned to a rod's end in
+    a slot: the elliptic trammel) is not: the mass matrix on the joints' null space, Nᵀ M N, must
+    be positive definite."""
+    mass = np.asarray(system.mass, dtype=float)
+    if not np.any(mass == 0):
         return
     J = system.jac(q)
     if J.size:
@@ -331,13 +334,19 @@ def _refuse_massless(system, q, plan) -> None:
         null = Vt[r:]
     else:
         null = np.eye(system.n)
-    for k in zero:
-        if null.size and float(np.max(np.abs(null[:, k]))) > 1e-9:
-            body = next(b for b in system.bodies if k in b.index)
-            what = "I" if body.rigid and k == body.index[-1] and body.mass > 0 else "mass"
-            raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
-                             f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
-                             "the joints carry it", f"bodies.{body.name}.{what}")
+    if not null.size:
+        return
+    w, U = np.linalg.eigh((null * mass[None, :]) @ null.T)
+    top = float(np.max(mass))
+    if float(w[0]) > 1e-12 * top:
+        return
+    z = np.abs(U[:, 0] @ null)                       # the motion that moves no mass
+    k = max((k for k in range(system.n) if mass[k] == 0), key=lambda k: z[k])
+    body = next(b for b in system.bodies if k in b.index)
+    what = "I" if body.rigid and k == body.index[-1] and body.mass > 0 else "mass"
+    raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
+                     f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
+                     "the joints carry it", f"bodies.{body.name}.{what}")
 
 
 def _gear_carriers(system, q) -> None:
