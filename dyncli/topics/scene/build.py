@@ -89,12 +89,17 @@ def bodies_of(plan: Plan) -> tuple:
 def surface_of(name: str, s: dict, bodies: dict[str, BodyData], q: np.ndarray) -> SurfaceData | CurveData | CornerData:
     """A fixed line or curve, or a line carried by a body (``body``: placed by the body's sketch)."""
     if s.get("body") is not None:
-        from .carried import carried_line
-
         path = f"surfaces.{name}.body"
         if s["body"] not in bodies:
             raise InputError(f"unknown body {s['body']!r}{did_you_mean(s['body'], bodies)}; bodies: {', '.join(bodies)}",
                              path)
+        if s.get("curve") is not None:
+            from .carried_curve import CarriedCurve
+
+            x1, x2 = s["curve"]
+            return CarriedCurve(name, x1, x2, s.get("q_range"), bodies[s["body"]], q)
+        from .carried import carried_line
+
         return carried_line(name, s, bodies[s["body"]], q)
     if s.get("corner") is not None:
         from .corner import CornerData
@@ -464,6 +469,16 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     from . import curved
 
     assert isinstance(s, curved.CurveData), "a surface is a line, a corner or a curve"
+    if getattr(s, "carried", False):
+        from .carried_curve import CarriedCurve, contact_on
+
+        assert isinstance(s, CarriedCurve), "a carried curve is a CarriedCurve"
+        if kind != "contact":
+            raise InputError(f"{s.name!r} is a curve carried by {s.body.name!r}: a point slides on it (contact); a body "
+                             "rolling on a carried curve is not in this release", path + ".1")
+
+        out.append(contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
+        return True
     if kind == "contact":
         out.append(curved.contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
         return True

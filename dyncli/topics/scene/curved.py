@@ -411,16 +411,16 @@ class CurveRolls(TurningRolls):
         return self.touching_watches(lam, q, v, m)
 
 
-def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q) -> CurveContact:
+def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q, cls=None) -> CurveContact:
     """A contact on a curve, with its friction coefficients (mu for both, or mu_s / mu_k; one
-    given stands for the other, as on a line)."""
+    given stands for the other, as on a line); ``cls``: CurveContact, or a kind of it."""
     mu_s = j["mu"] if j["mu"] is not None else (j.get("mu_s") or 0.0)
     mu_k = j["mu"] if j["mu"] is not None else (j["mu_k"] if j.get("mu_k") is not None else mu_s)
     if j.get("mu_k") is not None and j.get("mu_s") is None:
         mu_s = mu_k
     foot = _Foot(curve, curve.first_foot(P.pos(q), j["at"]))
-    return CurveContact(name, kind, n, path, P=P, surface=curve, mu_s=mu_s, mu_k=mu_k,
-                        mode="slide" if (mu_s or mu_k) else "smooth", foot=foot, e=float(j.get("e") or 0.0))
+    return (cls or CurveContact)(name, kind, n, path, P=P, surface=curve, mu_s=mu_s, mu_k=mu_k,
+                                 mode="slide" if (mu_s or mu_k) else "smooth", foot=foot, e=float(j.get("e") or 0.0))
 
 
 def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:

@@ -652,8 +652,10 @@ class SceneSystem:
         a fixed line along it).  Momentum along e_i is then conserved (36.10), and at rest a
         translation along it is a free motion (ω = 0)."""
         made = [e for e in self.elements if e.rows]
-        if any(getattr(getattr(e, "surface", None), "curved", False) for e in made):
-            return []                   # (a curve's normal turns: J at one q says nothing)
+        surfaces = [getattr(e, "surface", None) for e in made]
+        if any(getattr(sf, "curved", False) and not getattr(sf, "carried", False) for sf in surfaces):
+            return []                   # (a fixed curve's normal turns: J at one q says nothing; a
+            #                             carried one's rows read the point from its carrier only)
         J = self.jac(q)
         out = []
         for axis in (0, 1):
@@ -664,8 +666,8 @@ class SceneSystem:
                 continue
             if any(ld.ties(axis) for ld in self.loads):
                 continue
-            if any(isinstance(e, (Contact, Rolls)) and e.mu_k and e.surface.d[axis] != 0
-                   and not getattr(e.surface, "carried", False) for e in made):    # (on a carried line: internal)
+            if any(isinstance(e, (Contact, Rolls)) and e.mu_k and not getattr(e.surface, "carried", False)
+                   and e.surface.d[axis] != 0 for e in made):    # (on a carried surface: internal)
                 continue
             out.append(axis)
         return out

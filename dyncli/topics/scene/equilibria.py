@@ -41,6 +41,7 @@ import math
 
 import numpy as np
 
+from dyncli.errors import NumericalError
 from dyncli.rootfind import all_roots, lstsq_many, newton_system, newton_systems
 
 from . import assembly, curvature
@@ -171,10 +172,13 @@ class Search:
             A[n:, :n] = J
             return A
 
-        y0 = np.concatenate([q_start, self.multipliers(q_start)])
-        scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
-        y, ok = newton_system(F, jac, y0, scale=scale, tol=1e-13)
-        return self._checked(q_start, y[:n]) if ok else None
+        try:
+            y0 = np.concatenate([q_start, self.multipliers(q_start)])
+            scale = np.concatenate([self.scale, np.full(m, 1e3 * self.F0 * max(1.0, self.L))])
+            y, ok = newton_system(F, jac, y0, scale=scale, tol=1e-13)
+            return self._checked(q_start, y[:n]) if ok else None
+        except NumericalError:          # Newton led off a curve's ends (no foot there): no rest from here
+            return None
 
     def _checked(self, q_start, q):
         """(q, λ) when Newton's point q is on the joints, reached without a spring or damper passing
@@ -189,7 +193,15 @@ class Search:
 
     # ------------------------------------------------------------------ paths on the manifold
     def _onto(self, q):
-        """q placed on the joints by minimum-norm Gauss–Newton (the branch nearest q)."""
+        """q placed on the joints by minimum-norm Gauss–Newton (the branch nearest q); None where it
+        does not converge, or leaves a curve (a point whose foot is beyond the curve's ends: a bowl
+        with q_range walked past its rim is off its joint, not an error)."""
+        try:
+            return self._onto_newton(q)
+        except NumericalError:
+            return None
+
+    def _onto_newton(self, q):
         for _ in range(30):
             ph = self.s.phi(q, 0.0)
             if float(np.max(np.abs(ph), initial=0.0)) <= 1e-13 * self.L:
@@ -491,8 +503,8 @@ class Search:
         def one(x):
             try:
                 return point(x)
-            except np.linalg.LinAlgError:       # joints not finite there: not on them (as along gives)
-                return math.nan
+            except (np.linalg.LinAlgError, NumericalError):   # joints not finite there, or off a curve's
+                return math.nan                                # ends: not on them (as along gives)
 
         def fresh(taus):
             if len(taus) <= 2:                  # Brent's points, a cell's critical points: the plain forms

@@ -40,7 +40,8 @@ class SurfaceCurve(StrictModel):
 class Surface(StrictModel):
     """A fixed straight line through ``through`` along ``direction``, or a fixed ``curve``;
     bodies are on its left (the side of n = e3 × d̂, d̂ the direction or the curve's tangent
-    in the sense of increasing q).  A line given a ``body`` moves with that body (carried.py)."""
+    in the sense of increasing q).  A line or curve given a ``body`` moves with that body (carried.py,
+    carried_curve.py)."""
 
     through: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: a point of the line [m]")
     direction: Optional[list[Annotated[float, Num()]]] = Field(None, description="[d1, d2]: its direction (bodies on the left)")
@@ -49,8 +50,8 @@ class Surface(StrictModel):
                                           "(instead of through and direction); bodies on the left of increasing q")
     q_range: Optional[list[Annotated[float, Num()]]] = Field(None, description="curve: [q_min, q_max], its ends (default: none); a body "
                                            "reaching an end leaves the surface (an event)")
-    body: Optional[str] = Field(None, description="a body that carries the line (a wedge, a cart, a plank): it moves and turns "
-                              "with that body, given as drawn at t = 0")
+    body: Optional[str] = Field(None, description="a body that carries the line or curve (a wedge, a cart, a plank, a block "
+                              "with a groove): it moves and turns with that body, given as drawn at t = 0")
     corner: Optional[list[Annotated[float, Num(dim="length")]]] = Field(
         None, description="[x1, x2]: a corner (instead of a line or a curve): the edge of a curb or a step, the top of a "
                           "post, a peg [m]; the rim of a round body rolls on it or strikes it (rolls, stop)")
@@ -66,9 +67,6 @@ class Surface(StrictModel):
         if self.normals is not None:
             raise InputError("normals go with a corner (corner: [x1, x2]): the outward normals of its two faces",
                              _at(base, "normals"))
-        if self.body is not None and self.curve is not None:
-            raise InputError("a curved surface cannot be carried by a body in this release: give a straight line "
-                             "(through, direction) on it", _at(base, "body"))
         if self.curve is not None:
             for name in ("through", "direction", "length"):
                 if getattr(self, name) is not None:

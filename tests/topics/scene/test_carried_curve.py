@@ -1,0 +1,242 @@
+"""A curve carried by a body: a small block P (mass m) in a circular groove of radius R cut in a
+block W (mass M) free to slide on a smooth floor — the textbook's "particle slides down the
+quarter-circle of a movable block" — and a bead in a curved groove of a free turntable.
+
+Independent references (never the engine's own): with ψ the angle of P on the groove from its
+bottom, horizontal momentum and energy give ψ̇² = 2 g cos ψ / (R (1 − μ' cos² ψ)), μ' = m/(M + m),
+for a release from the rim (ψ0 = −π/2), so the time to the bottom is mpmath's quadrature of dψ/ψ̇
+and there v_W = −μ' R ψ̇, N = m g (3 + 2m/M) (W does not accelerate there: a vertical N).
+Rough, the free-body diagrams of P and W (N along the inward normal, friction −μ N along P's
+slip over W, W's floor force vertical) are three linear equations in (ẍ_W, ψ̈, N), integrated by
+mpmath's Taylor-series ODE solver.  On the turntable (g = 0) the angular momentum about the pin
+and the kinetic energy are conserved (the rows' Coriolis and centripetal terms, carried_curve.py).
+A bowl on a free cart oscillates at ω² = (g/R)(M + m)/M (linearize, the rows' Hessian) with a
+free translation ω = 0."""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import pytest
+
+from tests.conftest import solve_text
+
+G, m, M, R = 9.81, 1.0, 4.0, 0.5
+
+
+def groove(mu: str = "", psi0: str = "-pi/2", extra: str = "", q_range: str = "[-1.5707963267948966, 0]",
+           at: str = "[0, 0.2, 0.4]", find: str = "") -> str:
+    return f"""type: scene
+params: {{m: {m}, M: {M}, R: {R}, psi0: "{psi0}"}}
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+  groove: {{body: W, curve: {{x1: "R*sin(q)", x2: "R - R*cos(q)"}}, q_range: {q_range}}}
+bodies:
+  W: {{shape: box, mass: M, size: [0.6, 0.6], x: [0.2, 0.3]}}
+  P: {{shape: point, mass: m, x: ["R*sin(psi0)", "R - R*cos(psi0)"]}}
+joints:
+  base: {{slider: [W, floor]}}
+  on: {{contact: [P, groove]{mu}}}
+at: {at}
+accuracy: {{rtol: 1e-11}}
+{find}{extra}"""
+
+
+def solve(text: str) -> dict:
+    rec = solve_text(text, "groove.yaml")[0]
+    assert rec.get("error") is None, rec.get("error")
+    return rec
+
+
+def test_smooth_release_from_the_rim_reaches_the_bottom():
+    mu1 = m / (M + m)
+    with mp.workdps(30):
+        t_bottom = mp.quad(lambda p: 1 / mp.sqrt(2 * G * mp.cos(p) / (R * (1 - mu1 * mp.cos(p) ** 2))),
+                           [-mp.pi / 2, 0])
+    rec = solve(groove(at="[0, 0.3]", extra="t_end: 2\n"))
+    r = rec["results"]
+    assert r["route"] == "ode"
+    ev = next(e for e in r["events"] if e["joint"] == "on")
+    assert ev["what"] == "leaves"
+    assert ev["t"] == pytest.approx(float(t_bottom), rel=1e-9)
+    rel_speed = math.sqrt(2 * G * R / (1 - mu1))          # R ψ̇ at the bottom
+    st = ev["state"]
+    assert st["v"]["W"][0] == pytest.approx(-mu1 * rel_speed, rel=1e-9)
+    assert st["v"]["P"][0] == pytest.approx((1 - mu1) * rel_speed, rel=1e-9)
+    # the horizontal momentum stays 0 at every reported time (no horizontal external force)
+    for vw, vp in zip(r["v"]["W"], r["v"]["P"]):
+        assert M * vw[0] + m * vp[0] == pytest.approx(0.0, abs=1e-10)
+
+
+def test_smooth_normal_force_at_the_bottom():
+    """On a groove that runs on past the bottom, the time P's height is least (v.P.1 = 0 going
+    up): N = m g (3 + 2m/M)."""
+    rec = solve(groove(q_range="[-1.5707963267948966, 1.5707963267948966]", at="[0]",
+                       find='find: [{when: {v.P.1: 0}, direction: up}]\n', extra="t_end: 1\n"))
+    hit = rec["results"]["find"][0]
+    assert hit["reached"]
+    assert hit["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M), rel=1e-8)
+    assert hit["x"]["P"][1] == pytest.approx(0.0, abs=1e-9)
+
+
+def _rough_reference(mu: float, psi0: float, times: list[float]):
+    """(x_W − x_W0, ψ, N) at the times from the free-body diagrams, by mpmath's odefun."""
+    mp.mp.dps = 25
+
+    def accel(psi, dpsi):
+        c, s = mp.cos(psi), mp.sin(psi)
+        A = mp.matrix([[m, m * R * c, s + mu * c],
+                       [0, m * R * s, -(c - mu * s)],
+                       [M, 0, -(s + mu * c)]])
+        b = mp.matrix([m * R * dpsi ** 2 * s, -m * R * dpsi ** 2 * c - m * G, 0])
+        return mp.lu_solve(A, b)
+
+    f = mp.odefun(lambda t, y: [y[1], accel(y[2], y[3])[0], y[3], accel(y[2], y[3])[1]], 0, [0, 0, psi0, 0])
+    out = []
+    for t in times:
+        y = f(t)
+        out.append((float(y[0]), float(y[2]), float(accel(y[2], y[3])[2])))
+    mp.mp.dps = 15
+    return out
+
+
+def test_rough_groove_against_the_free_body_diagrams():
+    mu, psi0, times = 0.2, -1.2, [0.1, 0.25]
+    ref = _rough_reference(mu, psi0, times)
+    rec = solve(groove(mu=f", mu: {mu}", psi0=str(psi0), at=str([0] + times)))
+    r = rec["results"]
+    for i, (dxw, psi, N) in enumerate(ref, start=1):
+        xw = r["x"]["W"][i][0] - 0.2
+        assert xw == pytest.approx(dxw, rel=1e-8)
+        assert math.asin((r["x"]["P"][i][0] - xw) / R) == pytest.approx(psi, rel=1e-8)
+        assert r["reaction"]["on"]["N"][i] == pytest.approx(N, rel=1e-8)
+        assert r["reaction"]["on"]["F"][i] == pytest.approx(-mu * N, rel=1e-8)
+    for vw, vp in zip(r["v"]["W"], r["v"]["P"]):       # friction is internal: momentum holds
+        assert M * vw[0] + m * vp[0] == pytest.approx(0.0, abs=1e-10)
+
+
+def test_rough_groove_holds_the_block_where_friction_suffices():
+    """tan 0.3 < μ_s = 0.5: P sticks on the groove, nothing moves; N = m g cos ψ, |F| = m g sin ψ."""
+    rec = solve(groove(mu=", mu: 0.5", psi0="-0.3", at="[0, 1]"))
+    r = rec["results"]
+    for i in (0, 1):
+        assert r["x"]["W"][i][0] == pytest.approx(0.2, abs=1e-12)
+        assert r["reaction"]["on"]["N"][i] == pytest.approx(m * G * math.cos(0.3), rel=1e-12)
+        assert abs(r["reaction"]["on"]["F"][i]) == pytest.approx(m * G * math.sin(0.3), rel=1e-12)
+    assert not r["events"]
+
+
+TURNTABLE = """type: scene
+g: 0
+params: {m: 0.5, I: 0.2}
+surfaces:
+  groove: {body: D, curve: {x1: "0.3 + 0.2*cos(q)", x2: "0.5*sin(q)"}}
+bodies:
+  D: {shape: disk, mass: 2, radius: 1, I: I, x: [0, 0], angle: 0, omega: 1.5}
+  P: {shape: point, mass: m, x: [0.5, 0], v: [0, 1]}
+joints:
+  pin: {pin: [D, ground]}
+  on: {contact: [P, groove]}
+at: [0, 0.5, 1, 1.5]
+accuracy: {rtol: 1e-11}
+"""
+
+
+def test_bead_in_the_groove_of_a_free_turntable_keeps_its_momentum_and_energy():
+    rec = solve(TURNTABLE)
+    r = rec["results"]
+    I, mb = 0.2, 0.5
+    Ls, Ts = [], []
+    for i in range(len(r["t"])):
+        w = r["omega"]["D"][i][2]
+        x, v = r["x"]["P"][i], r["v"]["P"][i]
+        Ls.append(I * w + mb * (x[0] * v[1] - x[1] * v[0]))
+        Ts.append(0.5 * I * w * w + 0.5 * mb * (v[0] ** 2 + v[1] ** 2))
+    assert Ls == pytest.approx([Ls[0]] * len(Ls), rel=1e-9)
+    assert Ts == pytest.approx([Ts[0]] * len(Ts), rel=1e-9)
+    assert Ls[0] == pytest.approx(0.2 * 1.5 + 0.5 * 0.5 * 1.0)
+    # still in the groove, pressing on its wall, at every reported time (no event before 1.5 s)
+    assert all(N > 0 for N in r["reaction"]["on"]["N"][1:])
+    assert not r["events"]
+
+
+def test_bowl_on_a_free_cart_small_oscillations():
+    text = """type: scene
+params: {m: 1, M: 3, R: 0.4}
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+  bowl: {body: C, curve: {x1: "R*sin(q)", x2: "0.5 + R - R*cos(q)"}, q_range: [-1.4, 1.4]}
+bodies:
+  C: {shape: box, mass: M, size: [1, 0.5], x: [0, 0.25]}
+  P: {shape: point, mass: m, x: ["R*sin(0.2)", "0.5 + R - R*cos(0.2)"]}
+joints:
+  base: {slider: [C, floor]}
+  on: {contact: [P, bowl]}
+at: [0]
+linearize: true
+"""
+    rec = solve(text)
+    eq = rec["results"]["equilibria"]
+    assert len(eq) == 1
+    assert eq[0]["frequencies"] == pytest.approx([0.0, math.sqrt(9.81 / 0.4 * 4 / 3)], rel=1e-10, abs=1e-12)
+
+
+def test_fixed_bowl_with_ends_small_oscillations():
+    """A bowl with q_range: the search of equilibria walks past its rim (the circle's other half,
+    beyond the ends) without failing (it used to stop the solve: "no nearest point")."""
+    text = """type: scene
+surfaces:
+  bowl: {curve: {x1: "0.4*sin(q)", x2: "0.9 - 0.4*cos(q)"}, q_range: [-1.4, 1.4]}
+bodies:
+  P: {shape: point, mass: 1, x: ["0.4*sin(0.2)", "0.9 - 0.4*cos(0.2)"]}
+joints:
+  on: {contact: [P, bowl]}
+at: [0]
+linearize: true
+"""
+    eq = solve(text)["results"]["equilibria"]
+    assert [e["frequencies"] for e in eq] == [pytest.approx([math.sqrt(9.81 / 0.4)], rel=1e-12)]
+
+
+@pytest.mark.parametrize("joint, where, words", [
+    ("{rolls: [D, groove]}", "joints.on.rolls.1", "rolling on a carried curve"),
+    ("{contact: [W, groove]}", "joints.on.contact.0", "cannot touch its own surface"),
+])
+def test_refusals(joint, where, words):
+    text = f"""type: scene
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+  groove: {{body: W, curve: {{x1: "0.5*sin(q)", x2: "0.5 - 0.5*cos(q)"}}, q_range: [-1.5, 0]}}
+bodies:
+  W: {{shape: box, mass: 4, size: [0.6, 0.6], x: [0.2, 0.3]}}
+  D: {{shape: disk, mass: 1, radius: 0.05, x: [-0.4, 0.4]}}
+joints:
+  base: {{slider: [W, floor]}}
+  on: {joint}
+at: [0, 1]
+"""
+    rec = solve_text(text, "bad.yaml")[0]
+    err = rec.get("error") or ""
+    assert words in err and where in err, err
+
+
+def test_block_in_groove_gallery():
+    """The gallery's file (a groove running up both sides): at the bottom the speeds and N of the
+    module docstring's momentum and energy, W moved −m R/(M + m); back at the rim's height at
+    twice the time to the bottom (mpmath's quadrature)."""
+    from tests.topics.scene.common import gallery
+
+    mu1 = m / (M + m)
+    with mp.workdps(30):
+        t_bottom = float(mp.quad(lambda p: 1 / mp.sqrt(2 * G * mp.cos(p) / (R * (1 - mu1 * mp.cos(p) ** 2))),
+                                 [-mp.pi / 2, 0]))
+    bottom, top = gallery("block-in-groove.yaml")["results"]["find"]
+    u = math.sqrt(2 * G * R / (1 - mu1))
+    assert bottom["t"] == pytest.approx(t_bottom, rel=1e-8)
+    assert bottom["v"]["W"][0] == pytest.approx(-mu1 * u, rel=1e-8)
+    assert bottom["v"]["P"][0] == pytest.approx((1 - mu1) * u, rel=1e-8)
+    assert bottom["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M), rel=1e-8)
+    assert bottom["x"]["W"][0] == pytest.approx(0.2 - m * R / (M + m), rel=1e-9)
+    assert top["t"] == pytest.approx(2 * t_bottom, rel=1e-8)
+    assert top["x"]["P"][1] == pytest.approx(R, rel=1e-9)
