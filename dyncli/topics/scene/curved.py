@@ -419,8 +419,9 @@ def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q, cls=None) -
     if j.get("mu_k") is not None and j.get("mu_s") is None:
         mu_s = mu_k
     foot = _Foot(curve, curve.first_foot(P.pos(q), j["at"]))
-    return (cls or CurveContact)(name, kind, n, path, P=P, surface=curve, mu_s=mu_s, mu_k=mu_k,
-                                 mode="slide" if (mu_s or mu_k) else "smooth", foot=foot, e=float(j.get("e") or 0.0))
+    kw = dict(P=P, surface=curve, mu_s=mu_s, mu_k=mu_k, mode="slide" if (mu_s or mu_k) else "smooth", foot=foot,
+              e=float(j.get("e") or 0.0))
+    return CurveContact(name, kind, n, path, **kw) if cls is None else cls(name, kind, n, path, **kw)
 
 
 def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:
