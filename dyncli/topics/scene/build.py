@@ -220,7 +220,7 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             c0 = float(np.array(s.n) @ P.pos(q))
             th0 = float(q[b.index[2]]) if b.rigid else None
             out.append(el.Slider(name, kind, n, path, body_point=P, surface=s, c0=c0, theta0=th0))
-        elif kind == "stop" and _rim_stop(name, j, R, path, n, q, out):
+        elif kind == "stop" and (_rim_stop(name, j, R, path, n, q, out) or _curve_stop(name, j, R, path, n, q, out)):
             continue
         elif kind in ("contact", "stop"):
             out.append(_contact(name, kind, j, R, path, n))
@@ -418,6 +418,30 @@ def _contact(name: str, kind: str, j: dict, R: Resolver, path: str, n: int):
                               e=float(j.get("e") or 0.0), stop=kind == "stop")
     return contacts.Contact(name, kind, n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode=mode, sign=0.0,
                             e=float(j.get("e") or 0.0), stop=kind == "stop")
+
+
+def _curve_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarray, out: list) -> bool:
+    """A stop of a point on a curve, fixed or carried (a ball dropped into a bowl): the curve's
+    contact, open at t = 0 and made where the point strikes (with e: 0 it stays on: a contact
+    from then on), appended to ``out`` (True); False for a stop on anything else."""
+    a = j["stop"]
+    s = R.surface(a[1], path + ".1")
+    if not getattr(s, "curved", False):
+        return False
+    from . import curved
+
+    P = R.point(a[0], path + ".0")
+    if getattr(s, "carried", False):
+        from .carried_curve import CarriedCurve, contact_on
+
+        assert isinstance(s, CarriedCurve)
+        e: curved.CurveContact = contact_on(name, "stop", n, path, P, s, j, q)
+    else:
+        assert isinstance(s, curved.CurveData)
+        e = curved.contact_on(name, "stop", n, path, P, s, j, q)
+    e.mode, e.stop = "off", True
+    out.append(e)
+    return True
 
 
 def _friction_of(j: dict) -> tuple[float, float]:
