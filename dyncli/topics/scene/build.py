@@ -493,24 +493,28 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
     from . import curved
 
     assert isinstance(s, curved.CurveData), "a surface is a line, a corner or a curve"
-    if getattr(s, "carried", False):
-        from .carried_curve import CarriedCurve, contact_on
-
-        assert isinstance(s, CarriedCurve), "a carried curve is a CarriedCurve"
-        if kind != "contact":
-            raise InputError(f"{s.name!r} is a curve carried by {s.body.name!r}: a point slides on it (contact); a body "
-                             "rolling on a carried curve is not in this release", path + ".1")
-
-        out.append(contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
-        return True
     if kind == "contact":
-        out.append(curved.contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
+        P = R.point(j[kind][0], path + ".0")
+        if getattr(s, "carried", False):
+            from . import carried_curve
+
+            assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
+            out.append(carried_curve.contact_on(name, kind, n, path, P, s, j, q))
+        else:
+            out.append(curved.contact_on(name, kind, n, path, P, s, j, q))
         return True
     b = R.body(j[kind][0], path + ".0")
     _rigid(b, "rolling", path + ".0")
     if b.radius <= 0:
         raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-    out.append(curved.rolls_on(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    centre = BodyPoint(b.name, b, (0.0, 0.0))
+    if getattr(s, "carried", False):
+        from . import carried_curve
+
+        assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
+        out.append(carried_curve.rolls_on(name, kind, n, path, centre, s, b.radius, j, q))
+    else:
+        out.append(curved.rolls_on(name, kind, n, path, centre, s, b.radius, j, q))
     return True
 
 

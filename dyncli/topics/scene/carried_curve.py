@@ -19,6 +19,15 @@ ground t = Q(φ) t_d, n = Q(φ) n_d.  With J = e3 × (a quarter turn) and ω = �
   the drawing): t_s·r_d = const, a row of the same form with γ = −c·b_P + 2ω c·Jρ̇ + ω² c·ρ,
   c = Q(φ) t_s.
 
+A disk of radius R rolling on a carried curve (a cylinder inside a pipe that rolls or slides)
+is the fixed curve's rolling (curved.CurveRolls) in the drawing, with its turn relative to the
+carrier, θ_B − θ_W: the distance row d − R and the arc row arc(q*) + R (θ_B − θ_W) = const.  In
+the drawing the centre moves at u = Q(−φ)(ρ̇ − ω Jρ) with the acceleration
+Q(−φ)(ρ̈ − ω̇ Jρ − 2ω Jρ̇ − ω² ρ), so each row is the fixed curve's with its centre block read
+through that map — ∂r_d/∂q = Q(−φ)[J_c − J_{x_W} − Jρ e_θW] — and its γ the fixed curve's at u
+plus the frame's 2ω c·Jρ̇ + ω² c·ρ along the row's direction c (n, and f t for the arc row).
+The contact point's slip over the carrier's material point is t·(ρ̇ − ωJρ) + R (θ̇_B − ω).
+
 For a carried line (k = 0) these are carried.py's rows.  The rows are never affine (the foot
 moves): the route is the ODE.
 """
@@ -31,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .curvature import point_hessian
-from .curved import CurveContact, CurveData
+from .curved import CurveContact, CurveData, CurveRolls
 from .system import BodyData
 
 
@@ -214,3 +223,154 @@ def contact_on(name, kind, n, path, P, curve: CarriedCurve, j: dict, q) -> Carri
     got = curved.contact_on(name, kind, n, path, P, curve, j, q, cls=CarriedCurveContact)
     assert isinstance(got, CarriedCurveContact)
     return got
+
+
+@dataclass(kw_only=True)
+class CarriedCurveRolls(CurveRolls):
+    """A disk rolling on a curve carried by another body (module docstring)."""
+
+    surface: CarriedCurve           # a carried curve: the frame terms are added here
+
+    def _frame(self, q, v=None):
+        """(the centre in the drawing, ρ, ρ̇ (None without v), ω, cos φ, sin φ)."""
+        s = self.surface
+        xw1, xw2, c, sn = s.placed(q)
+        i = self.body_point.body.index
+        r1, r2 = float(q[i[0]]) - xw1, float(q[i[1]]) - xw2
+        rd = np.array((s.x0[0] + c * r1 + sn * r2, s.x0[1] - sn * r1 + c * r2))
+        if v is None:
+            return rd, (r1, r2), None, 0.0, c, sn
+        W = s.body
+        rhod = (float(v[i[0]]) - float(v[W.index[0]]), float(v[i[1]]) - float(v[W.index[1]]))
+        w = float(v[W.index[2]]) if W.rigid else 0.0
+        return rd, (r1, r2), rhod, w, c, sn
+
+    def _centre(self, q):
+        return self._frame(q)[0]
+
+    def _turn(self, q) -> float:
+        W = self.surface.body
+        own = float(q[self.body_point.body.index[2]])
+        return own - (float(q[W.index[2]]) - self.surface.th0 if W.rigid else 0.0)
+
+    def _world(self, vec, c: float, sn: float) -> tuple[float, float]:
+        return (c * float(vec[0]) - sn * float(vec[1]), sn * float(vec[0]) + c * float(vec[1]))
+
+    def normal(self, q) -> np.ndarray:
+        _rd, _rho, _rhod, _w, c, sn = self._frame(q)
+        return np.array(self._world(self.foot.at(self._centre(q))[2], c, sn))
+
+    def tangent(self, q) -> np.ndarray:
+        _rd, _rho, _rhod, _w, c, sn = self._frame(q)
+        return np.array(self._world(self.foot.at(self._centre(q))[1], c, sn))
+
+    def _row(self, q, cvec, rho) -> np.ndarray:
+        """∂(c·ρ)/∂q for the centre: c on it, −c on W's centre, −(c·Jρ) on W's angle."""
+        W = self.surface.body
+        i = self.body_point.body.index
+        row = np.zeros(self.n)
+        row[i[0]] += cvec[0]
+        row[i[1]] += cvec[1]
+        row[W.index[0]] -= cvec[0]
+        row[W.index[1]] -= cvec[1]
+        if W.rigid:
+            row[W.index[2]] -= rho[0] * cvec[1] - rho[1] * cvec[0]
+        return row
+
+    def _turn_row(self) -> np.ndarray:
+        """∂(θ_B − θ_W)/∂q."""
+        W = self.surface.body
+        row = np.zeros(self.n)
+        row[self.body_point.body.index[2]] = 1.0
+        if W.rigid:
+            row[W.index[2]] -= 1.0
+        return row
+
+    @staticmethod
+    def _frame_bias(cvec, rho, rhod, w) -> float:
+        """2ω c·Jρ̇ + ω² c·ρ: the γ a direction c fixed in W adds (the centre has no arm)."""
+        return 2 * w * (rhod[0] * cvec[1] - rhod[1] * cvec[0]) + w * w * (cvec[0] * rho[0] + cvec[1] * rho[1])
+
+    def jac(self, q):
+        rd, rho, _rhod, _w, c, sn = self._frame(q)
+        _, tt, nn, k, d, _ = self.foot.at(rd)
+        f = (1 - self.R * k) / (1 - k * d)
+        t_w, n_w = self._world(tt, c, sn), self._world(nn, c, sn)
+        rows = [self._row(q, n_w, rho), f * self._row(q, t_w, rho) + self.R * self._turn_row()]
+        return np.array(rows[:self.rows])
+
+    def gamma(self, q, v, t):
+        """The fixed curve's γ at the centre's velocity in the drawing, u = Q(−φ)(ρ̇ − ωJρ), plus
+        the frame's terms along n and f t."""
+        rd, rho, rhod, w, c, sn = self._frame(q, v)
+        qf, tt, nn, k, d, _ = self.foot.at(rd)
+        t_w, n_w = self._world(tt, c, sn), self._world(nn, c, sn)
+        rel = (rhod[0] + w * rho[1], rhod[1] - w * rho[0])          # ρ̇ − ω Jρ
+        a = t_w[0] * rel[0] + t_w[1] * rel[1]
+        b = n_w[0] * rel[0] + n_w[1] * rel[1]
+        wd = 1 - k * d
+        kdot = self.surface.dk_ds(qf) * a / wd
+        f = (1 - self.R * k) / wd
+        fdot = (kdot * (d - self.R) + (1 - self.R * k) * k * b) / (wd * wd)
+        g1 = k * a * a / wd + self._frame_bias(n_w, rho, rhod, w)
+        g2 = -(fdot * a + f * k * a * b / wd) + f * self._frame_bias(t_w, rho, rhod, w)
+        return np.array([g1, g2])[:self.rows]
+
+    def normal_speed(self, q, v) -> float:
+        _rd, rho, rhod, w, c, sn = self._frame(q, v)
+        n_w = self._world(self.foot.at(self._centre(q))[2], c, sn)
+        return (n_w[0] * (rhod[0] + w * rho[1]) + n_w[1] * (rhod[1] - w * rho[0]))
+
+    def tangent_jac(self, q) -> np.ndarray:
+        """The contact point's slip over the carrier's material point per unit rate:
+        t·(J_c − J_{x_W}) − (t·Jρ) on θ_W, and R (θ̇_B − ω)."""
+        _rd, rho, _rhod, _w, c, sn = self._frame(q)
+        t_w = self._world(self.foot.at(self._centre(q))[1], c, sn)
+        return self._row(q, t_w, rho) + self.R * self._turn_row()
+
+    def hessian(self, q, w, n: int) -> np.ndarray:
+        """Σ w ∇² of the rows: the fixed curve's Hessian in the drawing (curved.CurveRolls), read
+        through ∂r_d/∂q, plus ∇²(c·ρ) for each row's gradient c in the drawing (n, f t) turned to
+        the ground (W's turn against the centre's and W's motion, −(c·ρ) on W's angle twice)."""
+        H = np.zeros((n, n))
+        if not self.rows:
+            return H
+        w = list(w) + [0.0] * (2 - len(w))
+        rd, rho, _rhod, _w, c, sn = self._frame(q)
+        qf, tt, nn, k, d, _ = self.foot.at(rd)
+        wd = 1 - k * d
+        f = (1 - self.R * k) / wd
+        grad_f = (self.surface.dk_ds(qf) * (d - self.R) / wd * tt + (1 - self.R * k) * k * nn) / (wd * wd)
+        Hx = -w[0] * k / wd * np.outer(tt, tt) + w[1] * (np.outer(tt, grad_f) + f * k / wd * np.outer(nn, tt))
+        e1, e2 = self._world((1.0, 0.0), c, sn), self._world((0.0, 1.0), c, sn)
+        Jd = np.array([self._row(q, e1, rho), self._row(q, e2, rho)])       # ∂r_d/∂q (drawing axes)
+        H += Jd.T @ Hx @ Jd
+        W = self.surface.body
+        if not W.rigid:
+            return H
+        ia = W.index[2]
+        for wk, g in ((w[0], nn), (w[1], f * tt)):
+            if wk == 0.0:
+                continue
+            cw = self._world(g, c, sn)
+            row = self._row(q, (-cw[1], cw[0]), rho)
+            row[ia] = 0.0
+            H[ia, :] += wk * row
+            H[:, ia] += wk * row
+            H[ia, ia] += -wk * (cw[0] * rho[0] + cw[1] * rho[1])
+        return H
+
+
+def rolls_on(name, kind, n, path, body_point, curve: CarriedCurve, R: float, j: dict, q) -> CarriedCurveRolls:
+    """A disk rolling on a carried curve (curved.rolls_on's, on the drawing)."""
+    from . import curved
+
+    if body_point.body is curve.body:
+        from dyncli.errors import InputError
+
+        raise InputError(f"{body_point.body.name!r} carries {curve.name!r}: a body cannot roll on its own surface",
+                         path + ".0")
+    got = curved.rolls_on(name, kind, n, path, body_point, curve, R, j, q, cls=CarriedCurveRolls)
+    assert isinstance(got, CarriedCurveRolls)
+    return got
+

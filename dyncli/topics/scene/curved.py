@@ -313,8 +313,14 @@ class CurveRolls(TurningRolls):
     q_ref: float = 0.0
 
     def _centre(self, q):
+        """Where the foot is read: the centre (a carried curve's subclass: the centre in its drawing)."""
         i = self.body_point.body.index
         return np.array([q[i[0]], q[i[1]]], float)
+
+    def _turn(self, q) -> float:
+        """The angle the body has rolled through on the curve: its own (on a carried curve: relative
+        to the carrier)."""
+        return float(q[self.body_point.body.index[2]])
 
     def arc(self, qf: float) -> float:
         """∫ |y′|(1 − R k) dq from the foot of t = 0 to qf: the offset curve's arc length."""
@@ -334,27 +340,24 @@ class CurveRolls(TurningRolls):
         return self.foot.at(self._centre(q))[1]
 
     def roll_const(self, q) -> float:
-        i = self.body_point.body.index
-        return self.arc(self.foot.at(self._centre(q))[0]) + self.R * float(q[i[2]])
+        return self.arc(self.foot.at(self._centre(q))[0]) + self.R * self._turn(q)
 
     def phi(self, q, t):
         if not self.rows:
             return np.zeros(0)
-        i = self.body_point.body.index
         qf, _, _, _, d, _ = self.foot.at(self._centre(q))
         if self.rows == 1:
             return np.array([d - self.R])
-        roll = self.arc(qf) + self.R * float(q[i[2]]) - self.c0
+        roll = self.arc(qf) + self.R * self._turn(q) - self.c0
         if abs(roll) > 0.5 * self.R:        # the foot on another lap of a closed curve: the one θ rolled to
             qf, d = self._lap(q)
-            roll = self.arc(qf) + self.R * float(q[i[2]]) - self.c0
+            roll = self.arc(qf) + self.R * self._turn(q) - self.c0
         return np.array([d - self.R, roll])
 
     def _lap(self, q):
         """The foot on the lap the body has rolled to: Newton on arc(q) = c₀ − R θ (the arc
         grows with q at |y′|(1 − R k) > 0), then the nearest point from there."""
-        i = self.body_point.body.index
-        want, qq = self.c0 - self.R * float(q[i[2]]), self.foot.q
+        want, qq = self.c0 - self.R * self._turn(q), self.foot.q
         for _ in range(60):
             _, _, _, _, k, sp = self.surface.frame(qq)
             step = (self.arc(qq) - want) / (sp * (1 - self.R * k))
@@ -424,14 +427,17 @@ def contact_on(name, kind, n, path, P, curve: CurveData, j: dict, q, cls=None) -
     return CurveContact(name, kind, n, path, **kw) if cls is None else cls(name, kind, n, path, **kw)
 
 
-def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q) -> CurveRolls:
+def rolls_on(name, kind, n, path, body_point, curve: CurveData, R: float, j: dict, q, cls=None) -> CurveRolls:
+    """A disk rolling on a curve (``cls``: CurveRolls, or a kind of it): the foot of its centre at
+    t = 0 (at t = 0 a carried curve's drawing is the ground), the arc measured from there."""
     i = body_point.body.index
     x = np.array([q[i[0]], q[i[1]]], float)
     q0 = curve.first_foot(x, j["at"])
     mu_k = j["mu_k"] if j.get("mu_k") is not None else j["mu_s"]
-    el = CurveRolls(name, kind, n, path, body_point=body_point, surface=curve, R=R, c0=0.0, mu_s=j["mu_s"],
-                    mu_k=mu_k, foot=_Foot(curve, q0), q_ref=q0, e=j.get("e") or 0.0)
-    el.c0 = R * float(q[i[2]])
+    kw = dict(body_point=body_point, surface=curve, R=R, c0=0.0, mu_s=j["mu_s"], mu_k=mu_k, foot=_Foot(curve, q0),
+              q_ref=q0, e=j.get("e") or 0.0)
+    el = CurveRolls(name, kind, n, path, **kw) if cls is None else cls(name, kind, n, path, **kw)
+    el.c0 = R * el._turn(q)
     return el
 
 

@@ -11,7 +11,16 @@ slip over W, W's floor force vertical) are three linear equations in (ẍ_W, ψ�
 mpmath's Taylor-series ODE solver.  On the turntable (g = 0) the angular momentum about the pin
 and the kinetic energy are conserved (the rows' Coriolis and centripetal terms, carried_curve.py).
 A bowl on a free cart oscillates at ω² = (g/R)(M + m)/M (linearize, the rows' Hessian) with a
-free translation ω = 0."""
+free translation ω = 0.
+
+Rolling on a carried curve: a cylinder (m, radius r, Ī = m r²/2) inside a pipe of radius R cut in
+a block (M) free to slide, its centre at ρ = R − r from the pipe's axis at the angle ψ from the
+bottom: with the momentum M ẋ + m (ẋ + ρ ψ̇ cos ψ) = 0, its spin ω_D = −ρ ψ̇/r (no slip on the
+pipe, which does not turn) and the energy,
+½ m ρ² ψ̇² (3/2 − μ' cos² ψ) = m g ρ (cos ψ − cos ψ0); the time to the bottom is its quadrature.
+On a free turntable whose rim it rolls inside (g = 0): angular momentum about the pin and
+energy conserved; the small oscillations of the cylinder in the sliding pipe,
+ω² = g / (ρ (3/2 − μ')), from linearize."""
 
 from __future__ import annotations
 
@@ -200,7 +209,7 @@ linearize: true
 
 
 @pytest.mark.parametrize("joint, where, words", [
-    ("{rolls: [D, groove]}", "joints.on.rolls.1", "rolling on a carried curve"),
+    ("{stop: [D, groove], e: 0.5}", "joints.on.stop.1", "a disk's stop runs along a straight surface"),
     ("{contact: [W, groove]}", "joints.on.contact.0", "cannot touch its own surface"),
 ])
 def test_refusals(joint, where, words):
@@ -240,3 +249,76 @@ def test_block_in_groove_gallery():
     assert bottom["x"]["W"][0] == pytest.approx(0.2 - m * R / (M + m), rel=1e-9)
     assert top["t"] == pytest.approx(2 * t_bottom, rel=1e-8)
     assert top["x"]["P"][1] == pytest.approx(R, rel=1e-9)
+
+
+def pipe(extra: str = "", at: str = "[0, 0.2, 0.4]", psi0: str = "-60*deg") -> str:
+    return f"""type: scene
+params: {{m: 1, M: 3, R: 0.5, r: 0.1, th0: "{psi0}"}}
+surfaces:
+  floor: {{through: [0, 0], direction: [1, 0]}}
+  inside: {{body: C, curve: {{x1: "R*sin(q)", x2: "0.6 - R*cos(q)"}}, q_range: [-1.5, 1.5]}}
+bodies:
+  C: {{shape: box, mass: M, size: [1.2, 0.2], x: [0, 0.1]}}
+  D: {{shape: disk, mass: m, radius: r, x: ["(R - r)*sin(th0)", "0.6 - (R - r)*cos(th0)"]}}
+joints:
+  base: {{slider: [C, floor]}}
+  roll: {{rolls: [D, inside], mu_s: 1}}
+at: {at}
+accuracy: {{rtol: 1e-11}}
+{extra}"""
+
+
+RHO, MU_PIPE = 0.4, 1 / 4
+
+
+def test_cylinder_rolling_in_a_sliding_pipe_on_the_energy_integral():
+    psi0 = -math.pi / 3
+    r = solve(pipe(extra='find: [{when: {v.D.1: 0}, direction: up}]\nt_end: 2\n'))["results"]
+    assert r["route"] == "ode"
+    for i in range(len(r["t"])):
+        xc, vc = r["x"]["C"][i][0], r["v"]["C"][i][0]
+        xd, vd = r["x"]["D"][i], r["v"]["D"][i]
+        psi = math.asin((xd[0] - xc) / RHO)
+        rel = (vd[0] - vc, vd[1])
+        dpsi = math.copysign(math.hypot(*rel) / RHO, rel[0] * math.cos(psi) + rel[1] * math.sin(psi))
+        assert 3 * vc + vd[0] == pytest.approx(0.0, abs=1e-10)
+        assert r["omega"]["D"][i][2] == pytest.approx(-RHO * dpsi / 0.1, rel=1e-9, abs=1e-12)
+        assert (dpsi * dpsi * (1.5 - MU_PIPE * math.cos(psi) ** 2)
+                == pytest.approx(2 * G / RHO * (math.cos(psi) - math.cos(psi0)), rel=1e-9, abs=1e-12))
+    with mp.workdps(30):
+        t_bottom = mp.quad(lambda p: mp.sqrt(RHO * (1.5 - MU_PIPE * mp.cos(p) ** 2)
+                                             / (2 * G * (mp.cos(p) - mp.cos(psi0)))), [psi0, 0])
+    assert r["find"][0]["t"] == pytest.approx(float(t_bottom), rel=1e-8)
+
+
+def test_cylinder_in_a_sliding_pipe_small_oscillations():
+    r = solve(pipe(extra="linearize: true\n", at="[0]", psi0="-10*deg"))["results"]
+    (eq,) = r["equilibria"]
+    assert eq["frequencies"] == pytest.approx([0.0, math.sqrt(G / (RHO * (1.5 - MU_PIPE)))], rel=1e-10, abs=1e-12)
+
+
+def test_cylinder_rolling_inside_a_free_turntable_keeps_momentum_and_energy():
+    text = """type: scene
+g: 0
+surfaces:
+  rim: {body: T, curve: {x1: "0.5*sin(q)", x2: "-0.5*cos(q)"}}
+bodies:
+  T: {shape: ring, mass: 2, radius: 0.5, x: [0, 0], angle: 0, omega: 0.5}
+  D: {shape: disk, mass: 1, radius: 0.1, x: [0, -0.4], v: [1.2, 0]}
+joints:
+  pin: {pin: [T, ground]}
+  roll: {rolls: [D, rim]}
+at: [0, 0.5, 1, 2]
+accuracy: {rtol: 1e-11}
+"""
+    r = solve(text)["results"]
+    IT, ID = 2 * 0.25, 0.5 * 0.01
+    L, T = [], []
+    for i in range(len(r["t"])):
+        wt, wd = r["omega"]["T"][i][2], r["omega"]["D"][i][2]
+        x, v = r["x"]["D"][i], r["v"]["D"][i]
+        L.append(IT * wt + ID * wd + (x[0] * v[1] - x[1] * v[0]))
+        T.append(0.5 * IT * wt * wt + 0.5 * ID * wd * wd + 0.5 * (v[0] ** 2 + v[1] ** 2))
+    assert L == pytest.approx([L[0]] * len(L), rel=1e-9)
+    assert T == pytest.approx([T[0]] * len(T), rel=1e-9)
+    assert not r["events"]
