@@ -4,6 +4,8 @@ the exact routes), the error estimate of each route and the ``find`` answers."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from dyncli import ode
@@ -141,7 +143,22 @@ def _drawing(scene) -> dict:
             pulleys += [((float(p.p[0]), float(p.p[1])), 0.0) for p in getattr(e, "pegs", ())]
     return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d, "length": x.length}
                                           for x in scene.surfaces if not getattr(x, "carried", False)],
+            "carried": [_carried_drawing(x, span) for x in scene.surfaces if getattr(x, "carried", False)],
             "pulleys": pulleys, "span": span}
+
+
+def _carried_drawing(x, span: float) -> dict:
+    """A surface carried by a body, as points on its carrier's own axes (the plots place them
+    with the carrier at each time): a line's ends (±span without a length), a curve's polyline."""
+    W = x.body
+    if hasattr(x, "polyline"):                      # a curve, drawn as at t = 0 with W at x0, th0
+        c, sn = math.cos(x.th0), math.sin(x.th0)
+        pts = [((p1 - x.x0[0]) * c + (p2 - x.x0[1]) * sn, -(p1 - x.x0[0]) * sn + (p2 - x.x0[1]) * c)
+               for p1, p2 in x.polyline()]
+    else:                                           # a line: its origin o and direction on W's axes
+        a, b = (0.0, float(x.length)) if x.length is not None else (-span, span)
+        pts = [(x.o[0] + u * x.dl[0], x.o[1] + u * x.dl[1]) for u in (a, b)]
+    return {"name": x.name, "carrier": W.name, "points": pts}
 
 
 def _estimate(res, scene, route, acc, traj) -> None:

@@ -2,7 +2,8 @@
 
 * the mechanism drawn at each requested time (rods as lines, disks and rings as circles with
   a radius marking their turn, boxes as rectangles, points as markers, the surfaces as lines,
-  fixed pulleys as circles), one colour per time;
+  a surface carried by a body with its body at each time, fixed pulleys as circles), one colour
+  per time;
 * the joint forces over time (each scalar force, each pin force's components), sampled from
   the solver's trajectory (``result.extra["scene_sample"]``: the exact motion, or the
   interpolants of the integration's own steps; nothing is solved again), with the events marked.
@@ -74,6 +75,16 @@ def _mechanism(result, draw) -> Plot:
                                [c2 + max(rad, span * 0.01) * math.sin(2 * math.pi * i / 32) for i in k], style="-"))
     for j, t in enumerate(r.get("t", [])):
         first = True
+        for sf in draw.get("carried", ()):           # a carried line or curve, placed with its body
+            x = r["x"][sf["carrier"]][j]
+            if x is None:
+                continue
+            ang = r["angle"].get(sf["carrier"], [None] * (j + 1))[j] or 0.0
+            c, s = math.cos(ang), math.sin(ang)
+            plot.lines.append(Line([x[0] + c * p1 - s * p2 for p1, p2 in sf["points"]],
+                                   [x[1] + s * p1 + c * p2 for p1, p2 in sf["points"]],
+                                   label=f"t = {t:g} s" if first else None, style=":"))
+            first = False
         for name, body in draw["bodies"].items():
             x = r["x"][name][j]
             if x is None:

@@ -322,3 +322,25 @@ accuracy: {rtol: 1e-11}
     assert L == pytest.approx([L[0]] * len(L), rel=1e-9)
     assert T == pytest.approx([T[0]] * len(T), rel=1e-9)
     assert not r["events"]
+
+
+def test_the_groove_is_drawn_with_its_block():
+    """The mechanism plot places a carried curve with its body at each requested time: the
+    groove's lowest point is at (x_W(t) − 0.2, 0) (drawn at t = 0 with W at x1 = 0.2)."""
+    from dyncli import registry
+    from dyncli.loader import split_problems, validate
+    from dyncli.result import SolveOptions
+    from dyncli.topics.scene.plots import _mechanism
+    from tests.conftest import PROBLEMS
+
+    path = PROBLEMS / "scenes" / "block-in-groove.yaml"
+    (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
+    validate(lp)
+    res = registry.solver(lp.type)(lp.model, SolveOptions())
+    grooves = [ln for ln in _mechanism(res, res.extra["scene_draw"]).lines if ln.style == ":" and
+               (ln.label or "").startswith("t = ")]
+    assert len(grooves) == len(res.results["t"])
+    for ln, xw in zip(grooves, res.results["x"]["W"]):
+        k = min(range(len(ln.y)), key=lambda i: ln.y[i])
+        assert ln.y[k] == pytest.approx(0.0, abs=1e-4)                 # (the polyline's nearest vertex)
+        assert ln.x[k] == pytest.approx(xw[0] - 0.2, abs=1e-2)
