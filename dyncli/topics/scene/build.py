@@ -209,6 +209,10 @@ def joint_elements(plan: Plan, R: Resolver, q: np.ndarray, n: int) -> tuple[list
             out.append(el.Link(name, kind, n, path, P=P, Q=Q, L=L))
         elif kind == "slider":
             b = R.body(a[0], path + ".0")
+            sf = R.surface(a[1], path + ".1")
+            if getattr(sf, "curved", False) and not getattr(sf, "corner", False):
+                out.append(_curve_slider(name, j, R, b, path, n, q))
+                continue
             s = R.line(a[1], path + ".1", "a slider")
             if any(j.get(k) for k in ("mu", "mu_s", "mu_k")):
                 out.append(_rough_slider(name, j, R, b, s, path, n))
@@ -426,7 +430,7 @@ def _curve_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarra
     from then on), appended to ``out`` (True); False for a stop on anything else."""
     a = j["stop"]
     s = R.surface(a[1], path + ".1")
-    if not getattr(s, "curved", False):
+    if not getattr(s, "curved", False) or getattr(s, "corner", False):
         return False
     from . import curved
 
@@ -475,6 +479,30 @@ def _rough_slider(name: str, j: dict, R: Resolver, b: BodyData, s, path: str, n:
                               two_sided=True)
     return contacts.Contact(name, "contact", n, path, P=P, surface=s, mu_s=mu_s, mu_k=mu_k, mode="slide", sign=0.0,
                             two_sided=True)
+
+
+def _curve_slider(name: str, j: dict, R: Resolver, b: BodyData, path: str, n: int, q: np.ndarray):
+    """A point body threaded on a curve, fixed or carried (a collar on a curved rod): the curve's
+    contact held both ways (N signed, ``two_sided``: it never lets go; it runs off at an end of
+    q_range), smooth, or rough with μ_k |N| against the slip while it slides."""
+    from . import curved
+
+    if b.rigid:
+        raise InputError(f"a slider on a curve is for a point body (a collar threaded on a curved rod); {b.name!r} "
+                         "is rigid: write a contact (or rolls) at each point where the curve touches it", path + ".0")
+    s = R.surface(j["slider"][1], path + ".1")
+    P = BodyPoint(b.name, b, (0.0, 0.0))
+    spec = {"mu": j.get("mu"), "mu_s": j.get("mu_s"), "mu_k": j.get("mu_k"), "e": 0.0, "at": j.get("at")}
+    if getattr(s, "carried", False):
+        from . import carried_curve
+
+        assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
+        e: curved.CurveContact = carried_curve.contact_on(name, "contact", n, path, P, s, spec, q)
+    else:
+        assert isinstance(s, curved.CurveData), "a curved surface is a CurveData"
+        e = curved.contact_on(name, "contact", n, path, P, s, spec, q)
+    e.two_sided = True
+    return e
 
 
 def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:

@@ -87,3 +87,18 @@ def test_rough_strike_stops_the_slip_when_friction_suffices():
     assert im["impulse"] == pytest.approx(1.5 * v * N_HAT[1], rel=1e-10)
     assert abs(im["impulse_F"]) == pytest.approx(v * 0.4, rel=1e-10)
     assert im["slip_after"] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_a_points_stop_on_a_corner_is_still_refused():
+    """A corner is not a curve a point strikes (its rim strikes it: a round body's stop)."""
+    rec = solve_text("""type: scene
+surfaces:
+  edge: {corner: [0, 0]}
+bodies:
+  P: {shape: point, mass: 1, x: [0, 1]}
+joints:
+  s: {stop: [P, edge], e: 0.5}
+at: [0, 1]
+""", "bad.yaml")[0]
+    err = rec.get("error") or ""
+    assert "joints.s.stop.1" in err and "is a corner" in err, err

@@ -548,8 +548,9 @@ at: [0, 1]
     refusal(text, "forces.0.spring", "coincide")
 
 
-def test_slider_on_a_curve():
-    """A slider runs along a line: on a curved surface it is refused at its surface (was exit 3)."""
+def test_rigid_slider_on_a_curve():
+    """A point body is threaded on a curve (a collar); a rigid body's slider on a curve is refused
+    at the body (was exit 3, then refused at the surface)."""
     text = """\
 type: scene
 surfaces:
@@ -560,7 +561,7 @@ joints:
   s: {slider: [A, bowl]}
 at: [0, 0.5]
 """
-    refusal(text, "joints.s.slider.1", "straight surface", "'bowl' is a curve")
+    refusal(text, "joints.s.slider.0", "for a point body", "write a contact")
 
 
 def test_a_degenerate_geometry_is_a_numerical_failure_not_an_internal_error(tmp_path):
