@@ -120,3 +120,21 @@ at: [0, 1]
 """, "bad.yaml")[0]
     err = rec.get("error") or ""
     assert "joints.s.slider.0" in err and "for a point body" in err, err
+
+
+def test_collar_on_circular_rod_gallery():
+    """The gallery's file is COLLAR; the time to the bottom is mpmath's quadrature of R dq / v(q)
+    with v(q) from the energy balance at each q."""
+    from tests.topics.scene.common import gallery
+
+    def d(q):
+        return mp.sqrt((0.5 * mp.sin(q)) ** 2 + (0.5 * mp.cos(q) + 0.2) ** 2) - 0.3
+
+    def v(q):
+        return mp.sqrt(0.25 + 2 * G * 0.5 * (1 - mp.cos(q)) + 40 * (d(0) ** 2 - d(q) ** 2))
+
+    with mp.workdps(30):
+        t_bottom = float(mp.quad(lambda q: 0.5 / v(q), [0, mp.pi / 2, mp.pi]))
+    r = gallery("collar-on-circular-rod.yaml")["results"]
+    assert r["find"][0]["t"] == pytest.approx(t_bottom, rel=1e-8)
+    assert r["find"][0]["reaction"]["ring"]["N"] == pytest.approx(-124.70, rel=1e-8)
