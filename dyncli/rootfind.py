@@ -404,8 +404,11 @@ def all_roots(f, a: float, b: float, *, cells: int = 16, deg: int = 32, max_dept
             if fs[j] == 0 and (j > 0 or not roots or roots[-1] != sep[j]):
                 roots.append(sep[j])
             elif fs[j] * fs[j + 1] < 0:
-                roots.append(brent(one, sep[j], sep[j + 1],
-                                   4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
+                try:
+                    roots.append(brent(one, sep[j], sep[j + 1],
+                                       4 * eps * max(abs(sep[j]), abs(sep[j + 1])), 4 * eps, 200))
+                except NotANumber as nan:   # f undefined inside the bracket (off its domain): a bad place
+                    bad.append(nan.x)
         roots += [v] if fs[-1] == 0 and v == b else []
     return sorted(set(roots)), sorted(touches), bad
 
