@@ -432,17 +432,7 @@ def _curve_stop(name: str, j: dict, R: Resolver, path: str, n: int, q: np.ndarra
     s = R.surface(a[1], path + ".1")
     if not getattr(s, "curved", False) or getattr(s, "corner", False):
         return False
-    from . import curved
-
-    P = R.point(a[0], path + ".0")
-    if getattr(s, "carried", False):
-        from .carried_curve import CarriedCurve, contact_on
-
-        assert isinstance(s, CarriedCurve)
-        e: curved.CurveContact = contact_on(name, "stop", n, path, P, s, j, q)
-    else:
-        assert isinstance(s, curved.CurveData)
-        e = curved.contact_on(name, "stop", n, path, P, s, j, q)
+    e = _curve_module(s).contact_on(name, "stop", n, path, R.point(a[0], path + ".0"), s, j, q)
     e.mode, e.stop = "off", True
     out.append(e)
     return True
@@ -485,22 +475,12 @@ def _curve_slider(name: str, j: dict, R: Resolver, b: BodyData, path: str, n: in
     """A point body threaded on a curve, fixed or carried (a collar on a curved rod): the curve's
     contact held both ways (N signed, ``two_sided``: it never lets go; it runs off at an end of
     q_range), smooth, or rough with μ_k |N| against the slip while it slides."""
-    from . import curved
-
     if b.rigid:
         raise InputError(f"a slider on a curve is for a point body (a collar threaded on a curved rod); {b.name!r} "
                          "is rigid: write a contact (or rolls) at each point where the curve touches it", path + ".0")
     s = R.surface(j["slider"][1], path + ".1")
-    P = BodyPoint(b.name, b, (0.0, 0.0))
     spec = {"mu": j.get("mu"), "mu_s": j.get("mu_s"), "mu_k": j.get("mu_k"), "e": 0.0, "at": j.get("at")}
-    if getattr(s, "carried", False):
-        from . import carried_curve
-
-        assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
-        e: curved.CurveContact = carried_curve.contact_on(name, "contact", n, path, P, s, spec, q)
-    else:
-        assert isinstance(s, curved.CurveData), "a curved surface is a CurveData"
-        e = curved.contact_on(name, "contact", n, path, P, s, spec, q)
+    e = _curve_module(s).contact_on(name, "contact", n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, spec, q)
     e.two_sided = True
     return e
 
@@ -522,28 +502,26 @@ def _on_curve(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list)
 
     assert isinstance(s, curved.CurveData), "a surface is a line, a corner or a curve"
     if kind == "contact":
-        P = R.point(j[kind][0], path + ".0")
-        if getattr(s, "carried", False):
-            from . import carried_curve
-
-            assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
-            out.append(carried_curve.contact_on(name, kind, n, path, P, s, j, q))
-        else:
-            out.append(curved.contact_on(name, kind, n, path, P, s, j, q))
+        out.append(_curve_module(s).contact_on(name, kind, n, path, R.point(j[kind][0], path + ".0"), s, j, q))
         return True
     b = R.body(j[kind][0], path + ".0")
     _rigid(b, "rolling", path + ".0")
     if b.radius <= 0:
         raise InputError(f"{b.name!r} rolls, so it needs a radius (a disk or a ring)", path + ".0")
-    centre = BodyPoint(b.name, b, (0.0, 0.0))
+    out.append(_curve_module(s).rolls_on(name, kind, n, path, BodyPoint(b.name, b, (0.0, 0.0)), s, b.radius, j, q))
+    return True
+
+
+def _curve_module(s):
+    """The module whose ``contact_on`` and ``rolls_on`` make the joints on the curve ``s``:
+    curved.py for a fixed curve, carried_curve.py for one carried by a body (loaded only then)."""
     if getattr(s, "carried", False):
         from . import carried_curve
 
-        assert isinstance(s, carried_curve.CarriedCurve), "a carried curve is a CarriedCurve"
-        out.append(carried_curve.rolls_on(name, kind, n, path, centre, s, b.radius, j, q))
-    else:
-        out.append(curved.rolls_on(name, kind, n, path, centre, s, b.radius, j, q))
-    return True
+        return carried_curve
+    from . import curved
+
+    return curved
 
 
 def _rims(name: str, j: dict, R: Resolver, q: np.ndarray, n: int, out: list) -> bool:

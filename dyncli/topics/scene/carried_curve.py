@@ -75,10 +75,7 @@ class CarriedCurveContact(CurveContact):
     def _geometry(self, q, v=None):
         """(q*, t, n, k, d, ρ, ρ̇ (None without v), ω): the foot and its frame on the ground."""
         s = self.surface
-        xw1, xw2, c, sn = s.placed(q)
-        p1, p2 = self.P.xy(q)
-        r1, r2 = p1 - xw1, p2 - xw2
-        rd = (s.x0[0] + c * r1 + sn * r2, s.x0[1] - sn * r1 + c * r2)
+        rd, (r1, r2), c, sn = self._local(q)
         qf, td, nd, k, d, _ = self.foot.at(rd)
         t = (c * td[0] - sn * td[1], sn * td[0] + c * td[1])
         n = (-t[1], t[0])
@@ -117,12 +114,16 @@ class CarriedCurveContact(CurveContact):
         a, b = self.stick_t
         return (c * a - sn * b, sn * a + c * b)
 
-    def _drawn(self, q) -> tuple[float, float]:
+    def _local(self, q):
+        """(P in the drawing, ρ = r_P − x_W, cos φ, sin φ)."""
         s = self.surface
         xw1, xw2, c, sn = s.placed(q)
         p1, p2 = self.P.xy(q)
         r1, r2 = p1 - xw1, p2 - xw2
-        return s.x0[0] + c * r1 + sn * r2, s.x0[1] - sn * r1 + c * r2
+        return (s.x0[0] + c * r1 + sn * r2, s.x0[1] - sn * r1 + c * r2), (r1, r2), c, sn
+
+    def _drawn(self, q) -> tuple[float, float]:
+        return self._local(q)[0]
 
     # --- the contact's own quantities
     def stick_here(self, q) -> None:
