@@ -344,3 +344,26 @@ def test_the_groove_is_drawn_with_its_block():
         k = min(range(len(ln.y)), key=lambda i: ln.y[i])
         assert ln.y[k] == pytest.approx(0.0, abs=1e-4)                 # (the polyline's nearest vertex)
         assert ln.x[k] == pytest.approx(xw[0] - 0.2, abs=1e-2)
+
+
+@pytest.mark.parametrize("M_big", [1e-3, 1e6])
+def test_groove_at_extreme_mass_ratios(M_big):
+    """A carrier a thousand times lighter than the block (it shoots sideways at ~m/M times the
+    block's speed) or a million times heavier (it barely moves: the fixed bowl): the module
+    docstring's quadrature, speeds and N = m g (3 + 2m/M) at the bottom, to the ODE's tolerance."""
+    from tests.conftest import PROBLEMS
+    from tests.tolerances import ODE_GLOBAL
+
+    text = (PROBLEMS / "scenes" / "block-in-groove.yaml").read_text().replace(
+        "params: {m: 1, M: 4, R: 0.5}", f"params: {{m: 1, M: {M_big}, R: 0.5}}") + "accuracy: {rtol: 1e-11}\n"
+    bottom = solve(text)["results"]["find"][0]
+    mu1 = m / (M_big + m)
+    with mp.workdps(30):
+        t_bottom = float(mp.quad(lambda p: 1 / mp.sqrt(2 * G * mp.cos(p) / (R * (1 - mu1 * mp.cos(p) ** 2))),
+                                 [-mp.pi / 2, 0]))
+    u = math.sqrt(2 * G * R / (1 - mu1))
+    tol = ODE_GLOBAL * 1e-11
+    assert bottom["t"] == pytest.approx(t_bottom, rel=tol)
+    assert bottom["v"]["W"][0] == pytest.approx(-mu1 * u, rel=tol)
+    assert bottom["v"]["P"][0] == pytest.approx((1 - mu1) * u, rel=tol)
+    assert bottom["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M_big), rel=tol)
