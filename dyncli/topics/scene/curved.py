@@ -43,6 +43,8 @@ EPS = float(np.finfo(float).eps)
 #: during the motion or the assembly (a curve of a few turns takes a few dozen cells and roots; a
 #: q_range of thousands of laps is searched only that far)
 NEAREST_FIRST, NEAREST_AGAIN = (64, 4000, 2000), (8, 256, 64)
+#: the arcs of rolling (CurveRolls.arc) kept per element, by foot (then forgotten all at once)
+ARC_MEMO = 4096
 
 
 class CurveData:
@@ -323,12 +325,20 @@ class CurveRolls(TurningRolls):
         return float(q[self.body_point.body.index[2]])
 
     def arc(self, qf: float) -> float:
-        """∫ |y′|(1 − R k) dq from the foot of t = 0 to qf: the offset curve's arc length."""
+        """∫ |y′|(1 − R k) dq from the foot of t = 0 to qf: the offset curve's arc length (each
+        foot's value kept: a search of equilibria along a free translation, or a state asked
+        again, reads the same feet many times — the same double, one quadrature)."""
         if qf == self.q_ref:
             return 0.0
-        c, R = self.surface, self.R
-        val, err, ok = gauss_kronrod(lambda x: c.offset_speeds(x, R), self.q_ref, qf, 1e-14, 1e-15)[:3]
-        return float(val)
+        memo = self.__dict__.setdefault("_arcs", {})
+        got = memo.get(qf)
+        if got is None:
+            c, R = self.surface, self.R
+            got = float(gauss_kronrod(lambda x: c.offset_speeds(x, R), self.q_ref, qf, 1e-14, 1e-15)[0])
+            if len(memo) >= ARC_MEMO:
+                memo.clear()
+            memo[qf] = got
+        return got
 
     def gap(self, q) -> float:
         return float(self.foot.at(self._centre(q))[4]) - self.R

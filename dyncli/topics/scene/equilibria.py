@@ -464,7 +464,7 @@ class Search:
             D = np.repeat(np.array([steps[j][1] - steps[j][0] for j in range(lo, hi)]), len(taus), axis=0)
             try:
                 vals = self.along(Q, D)
-            except np.linalg.LinAlgError:
+            except (np.linalg.LinAlgError, NumericalError):  # (a point off a curve's ends: no foot)
                 if hi - lo > 1:
                     run(lo, (lo + hi) // 2)
                     run((lo + hi) // 2, hi)
@@ -532,7 +532,21 @@ class Search:
         """g at the chord points Q (k, n), all at once: each placed on the joints by the minimum-norm
         Gauss–Newton of :meth:`_onto` (stacked), then t·f with t the chord direction d (one for
         all, or one a row) projected on the joints' tangent there (NaN where a point does not
-        reach the joints)."""
+        reach the joints, or leads off a curve's ends: those points one at a time)."""
+        try:
+            return self._along(Q, d)
+        except NumericalError:
+            Q = np.atleast_2d(np.asarray(Q, dtype=float))
+            D = np.broadcast_to(np.asarray(d, dtype=float), Q.shape)
+            out = np.full(len(Q), np.nan)
+            for i in range(len(Q)):
+                try:
+                    out[i] = self._along(Q[i:i + 1], D[i:i + 1])[0]
+                except NumericalError:
+                    pass
+            return out
+
+    def _along(self, Q, d) -> np.ndarray:
         s, sc = self.s, self.scale
         Q = np.array(Q, dtype=float)
         ok = np.ones(len(Q), dtype=bool)

@@ -367,3 +367,31 @@ def test_groove_at_extreme_mass_ratios(M_big):
     assert bottom["v"]["W"][0] == pytest.approx(-mu1 * u, rel=tol)
     assert bottom["v"]["P"][0] == pytest.approx((1 - mu1) * u, rel=tol)
     assert bottom["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M_big), rel=tol)
+
+
+def test_cylinder_in_sliding_pipe_gallery():
+    """The gallery's file: at release the free-body diagrams (by hand, with the rolling tying the
+    spin to ψ̈) give N = 10 m g/23, F = −4√3 m g/23; at the bottom the speeds of the module
+    docstring's momentum and energy and N = m g + m (ρψ̇)²/ρ; the time there is the quadrature.
+    With μ_s = 0.5 (below |F|/N = 2√3/5) it slips first and `sticks` later, losing energy."""
+    from tests.conftest import PROBLEMS
+    from tests.topics.scene.common import gallery
+
+    psi0 = -math.pi / 3
+    r = gallery("cylinder-in-sliding-pipe.yaml")["results"]
+    assert r["reaction"]["roll"]["N"][0] == pytest.approx(10 * G / 23, rel=1e-12)
+    assert r["reaction"]["roll"]["F"][0] == pytest.approx(-4 * math.sqrt(3) * G / 23, rel=1e-12)
+    u = math.sqrt(2 * G * RHO * (1 - math.cos(psi0)) / (1.5 - MU_PIPE))
+    with mp.workdps(30):
+        t_bottom = float(mp.quad(lambda p: mp.sqrt(RHO * (1.5 - MU_PIPE * mp.cos(p) ** 2)
+                                                   / (2 * G * (mp.cos(p) - mp.cos(psi0)))), [psi0, 0]))
+    bottom = r["find"][0]
+    assert bottom["t"] == pytest.approx(t_bottom, rel=1e-8)
+    assert bottom["v"]["C"][0] == pytest.approx(-MU_PIPE * u, rel=1e-8)
+    assert bottom["v"]["D"][0] == pytest.approx((1 - MU_PIPE) * u, rel=1e-8)
+    assert bottom["omega"]["D"][2] == pytest.approx(-u / 0.1, rel=1e-8)
+    assert bottom["reaction"]["roll"]["N"] == pytest.approx(G + u * u / RHO, rel=1e-8)
+    text = (PROBLEMS / "scenes" / "cylinder-in-sliding-pipe.yaml").read_text().replace("mu_s: 1}", "mu_s: 0.5}")
+    slipping = solve(text)["results"]
+    assert slipping["events"][0]["what"] == "sticks"
+    assert slipping["E"][1] < slipping["E"][0] - 1e-3
