@@ -245,7 +245,7 @@ def test_block_in_groove_gallery():
     assert bottom["t"] == pytest.approx(t_bottom, rel=1e-8)
     assert bottom["v"]["W"][0] == pytest.approx(-mu1 * u, rel=1e-8)
     assert bottom["v"]["P"][0] == pytest.approx((1 - mu1) * u, rel=1e-8)
-    assert bottom["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M), rel=1e-8)
+    assert bottom["reaction"]["in_groove"]["N"] == pytest.approx(m * G * (3 + 2 * m / M), rel=1e-8)
     assert bottom["x"]["W"][0] == pytest.approx(0.2 - m * R / (M + m), rel=1e-9)
     assert top["t"] == pytest.approx(2 * t_bottom, rel=1e-8)
     assert top["x"]["P"][1] == pytest.approx(R, rel=1e-9)
@@ -366,7 +366,7 @@ def test_groove_at_extreme_mass_ratios(M_big):
     assert bottom["t"] == pytest.approx(t_bottom, rel=tol)
     assert bottom["v"]["W"][0] == pytest.approx(-mu1 * u, rel=tol)
     assert bottom["v"]["P"][0] == pytest.approx((1 - mu1) * u, rel=tol)
-    assert bottom["reaction"]["on"]["N"] == pytest.approx(m * G * (3 + 2 * m / M_big), rel=tol)
+    assert bottom["reaction"]["in_groove"]["N"] == pytest.approx(m * G * (3 + 2 * m / M_big), rel=tol)
 
 
 def test_cylinder_in_sliding_pipe_gallery():
