@@ -185,11 +185,15 @@ def strike(s, q, v, t, e, rest: float, run: int | None = None, others=(), hold: 
                              + ", ".join(el.name for el, _ in struck) + ") would gain energy by the "
                              "single-step rule of Coulomb's law for impulses (Routh's method follows one "
                              "striking point only); not solved")
-    for el, _r, _J in pts:
+    for el, _r, Jk in pts:
         c = courses[id(el)]
         names[el.name] = c.name
         make(el, q)                            # made again: sticking (rolling), or sliding on
-        if c.u_t != 0.0:
+        # a slip after at the rounding of its terms (a body that had already stopped slipping,
+        # struck again with no approach: the course "none") is no slip: it sticks, not slides on
+        # with the sign of its rounding (which can set friction to push along the slip)
+        terms = float(np.max(np.abs(np.asarray(Jk, float)) * np.abs(np.asarray(vp, float))[None, :], initial=0.0))
+        if abs(c.u_t) > 64 * EPS * terms:
             el.mode = "slip" if isinstance(el, Rolls) else "slide"
             el.sign = math.copysign(1.0, c.u_t)
     s.refresh()
