@@ -90,9 +90,8 @@ def test_smooth_normal_force_at_the_bottom():
 
 
 def _rough_reference(mu: float, psi0: float, times: list[float]):
-    """(x_W − x_W0, ψ, N) at the times from the free-body diagrams, by mpmath's odefun."""
-    mp.mp.dps = 25
-
+    """(x_W − x_W0, ψ, N) at the times from the free-body diagrams, by mpmath's odefun (at 25
+    digits, in a context: the other modules' mpmath precision left as it was)."""
     def accel(psi, dpsi):
         c, s = mp.cos(psi), mp.sin(psi)
         A = mp.matrix([[m, m * R * c, s + mu * c],
@@ -101,12 +100,12 @@ def _rough_reference(mu: float, psi0: float, times: list[float]):
         b = mp.matrix([m * R * dpsi ** 2 * s, -m * R * dpsi ** 2 * c - m * G, 0])
         return mp.lu_solve(A, b)
 
-    f = mp.odefun(lambda t, y: [y[1], accel(y[2], y[3])[0], y[3], accel(y[2], y[3])[1]], 0, [0, 0, psi0, 0])
-    out = []
-    for t in times:
-        y = f(t)
-        out.append((float(y[0]), float(y[2]), float(accel(y[2], y[3])[2])))
-    mp.mp.dps = 15
+    with mp.workdps(25):
+        f = mp.odefun(lambda t, y: [y[1], accel(y[2], y[3])[0], y[3], accel(y[2], y[3])[1]], 0, [0, 0, psi0, 0])
+        out = []
+        for t in times:
+            y = f(t)
+            out.append((float(y[0]), float(y[2]), float(accel(y[2], y[3])[2])))
     return out
 
 

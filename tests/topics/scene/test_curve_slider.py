@@ -56,16 +56,15 @@ def test_collar_on_a_circular_rod_with_a_spring():
 
 def test_rough_collar_against_its_equations():
     mu, R, psi0, times = 0.3, 0.5, 1.2, [0.1, 0.2]
-    mp.mp.dps = 25
 
     def rates(t, y):                                    # sliding down (ψ̇ ≤ 0) until the first turn
         psi, w = y
         N = R * w * w + G * mp.cos(psi)                     # per unit mass, inward
         return [w, (-G * mp.sin(psi) + mu * abs(N)) / R]
 
-    f = mp.odefun(rates, 0, [mp.mpf(psi0), mp.mpf(0)])
-    ref = [float(f(t)[0]) for t in times]
-    mp.mp.dps = 15
+    with mp.workdps(25):                                # (the others' mpmath precision left as it was)
+        f = mp.odefun(rates, 0, [mp.mpf(psi0), mp.mpf(0)])
+        ref = [float(f(t)[0]) for t in times]
     text = f"""type: scene
 surfaces:
   rod: {{curve: {{x1: "{R}*sin(q)", x2: "-{R}*cos(q)"}}}}
