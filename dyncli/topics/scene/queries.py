@@ -137,7 +137,8 @@ DISTANCE_PIECES = 128
 
 
 def odometer(scene, traj, rtol: float = 1e-10, warn=None):
-    """Each body's path length since t = 0 (its reference point: the centre of mass), ∫|v| dt by
+    """Each body's path length since t = 0 (its reference point: the centre of mass): in closed
+    form when every piece has constant accelerations (:func:`_uniform_odometer`), else ∫|v| dt by
     Gauss–Legendre on the trajectory's pieces, each resolved to ``rtol`` (``warn``: told when one
     cannot be): ``at(times) -> {body: [..]}``."""
     from dyncli.motion_find import Odometer, check_resolved
@@ -145,6 +146,11 @@ def odometer(scene, traj, rtol: float = 1e-10, warn=None):
     bodies = scene.system.bodies
     t0 = traj.t0
     t_end = traj.stopped if traj.stopped is not None else traj.t_end
+    i1 = [b.index[0] for b in bodies]
+    i2 = [b.index[1] for b in bodies]
+    if t_end > t0 and (exact := _uniform_odometer(traj, i1, i2, t0, t_end)) is not None:
+        return lambda times: {b.name: [None if v is None else v[j] for v in map(exact, times)]
+                              for j, b in enumerate(bodies)}
     # the uniform cuts go inside the exact pieces only: an ODE step is a polynomial (its
     # interpolant), resolved on its own and halved where it is not
     grid = [t0 + (t_end - t0) * k / DISTANCE_PIECES for k in range(DISTANCE_PIECES + 1)]
@@ -152,12 +158,6 @@ def odometer(scene, traj, rtol: float = 1e-10, warn=None):
     for p in traj.pieces:
         if p.batch is None and p.t_b > p.t_a:
             pts.update(t for t in grid if p.t_a < t < p.t_b)
-
-    i1 = [b.index[0] for b in bodies]
-    i2 = [b.index[1] for b in bodies]
-    if t_end > t0 and (exact := _uniform_odometer(traj, i1, i2, t0, t_end)) is not None:
-        return lambda times: {b.name: [None if v is None else v[j] for v in map(exact, times)]
-                              for j, b in enumerate(bodies)}
 
     def speeds(ts):
         V = traj.velocities(ts)
