@@ -138,12 +138,17 @@ class NonFiniteRate(NumericalError):
 
 
 def finite(fun):
-    """``fun`` that raises :class:`NonFiniteRate` instead of returning inf/NaN.
-    (scipy's explicit Runge-Kutta step never ends on a NaN rate: its step-size
-    control computes a NaN step and loops.)"""
+    """``fun`` that raises :class:`NonFiniteRate` instead of returning inf/NaN, or instead of
+    math's domain error on a state that is no longer finite (scipy's explicit Runge-Kutta step
+    never ends on a NaN rate: its step-size control computes a NaN step and loops.)"""
 
     def checked(t, y):
-        out = fun(t, y)
+        try:
+            out = fun(t, y)
+        except (ValueError, OverflowError):     # math's domain error on a state that overflowed
+            if not np.all(np.isfinite(y)):      # (sin of inf): the same failure as a rate of inf
+                raise NonFiniteRate(t, y) from None
+            raise
         if not math.isfinite(sum(out)) and not np.all(np.isfinite(out)):
             raise NonFiniteRate(t, y)
         return out
