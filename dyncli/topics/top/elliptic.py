@@ -328,8 +328,9 @@ class ExactTop:
                          xp.pi - 2.0 * xp.arcsin(xp.sqrt(xp.minimum(w, 2.0) / 2.0)))
         with xp.errstate(divide="ignore", invalid="ignore"):
             # exactly at a pole passed through (v2 = 0 or w1 = 0) θ̇ is the incoming rate
-            qv0 = -1.0 / math.sqrt(n.delta * n.m1) if n.v2 == 0.0 else 0.0
-            qw0 = 1.0 / math.sqrt(n.delta) if n.w1 == 0.0 else 0.0
+            # (a nutation whose range underflowed to 0, Δ = 0: the rate's limit is inf, not an error)
+            qv0 = -_inv_sqrt(n.delta * n.m1) if n.v2 == 0.0 else 0.0
+            qw0 = _inv_sqrt(n.delta) if n.w1 == 0.0 else 0.0
             ev = xp.where(s2 > 0, n.v2 * d2 / xp.where(s2 > 0, s2, 1.0), math.inf) if n.v2 > 0 else 0.0
             ew = xp.where(c2 > 0, n.w1 * d2 / xp.where(c2 > 0, c2, 1.0), math.inf) if n.w1 > 0 else 0.0
             qv = xp.where(sn == 0, qv0, xp.sign(sn) / xp.sqrt(ev + n.delta * n.m1))
@@ -395,3 +396,9 @@ class ExactTop:
         else:
             pd, fd = float(psi_dot[0]) if len(t) else 0.0, float(phi_dot[0]) if len(t) else 0.0
         return self.psi0 + pd * t, theta, self.phi0 + fd * t, psi_dot, theta_dot, phi_dot, S
+
+
+def _inv_sqrt(x: float) -> float:
+    """1/√x in plain floats, inf at x = 0 (as numpy's division gives it)."""
+    return 1.0 / math.sqrt(x) if x > 0 else math.inf
+
