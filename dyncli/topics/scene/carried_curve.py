@@ -44,6 +44,29 @@ from .curved import CurveContact, CurveData, CurveRolls
 from .system import BodyData
 
 
+def _turned(vec, c: float, sn: float) -> tuple[float, float]:
+    """The drawing's vector on the ground: Q(φ) vec (c, sn = cos φ, sin φ)."""
+    a, b = float(vec[0]), float(vec[1])
+    return (c * a - sn * b, sn * a + c * b)
+
+
+def _carried_row(n: int, P, W: BodyData, q, c, rho) -> np.ndarray:
+    """∂(c·ρ)/∂q, ρ = r_P − x_W, for a direction c fixed in W: P's row, −c on W's centre,
+    −(c·Jρ) on W's angle."""
+    row = [0.0] * n
+    P.add_jac(row, q, c[0], c[1])
+    row[W.index[0]] -= c[0]
+    row[W.index[1]] -= c[1]
+    if W.rigid:
+        row[W.index[2]] -= rho[0] * c[1] - rho[1] * c[0]
+    return np.array(row)
+
+
+def _frame_bias(c, rho, rhod, w: float) -> float:
+    """2ω c·Jρ̇ + ω² c·ρ: what the carrier's turning adds to the γ of a direction c fixed in it."""
+    return 2 * w * (rhod[0] * c[1] - rhod[1] * c[0]) + w * w * (c[0] * rho[0] + c[1] * rho[1])
+
+
 class CarriedCurve(CurveData):
     """A curve fixed to ``body``: its expressions as drawn at t = 0 (ground coordinates), the
     body then at ``x0`` turned by ``th0``."""
@@ -77,7 +100,7 @@ class CarriedCurveContact(CurveContact):
         s = self.surface
         rd, (r1, r2), c, sn = self._local(q)
         qf, td, nd, k, d, _ = self.foot.at(rd)
-        t = (c * td[0] - sn * td[1], sn * td[0] + c * td[1])
+        t = _turned(td, c, sn)
         n = (-t[1], t[0])
         if v is None:
             return qf, t, n, k, d, (r1, r2), None, 0.0
@@ -88,21 +111,12 @@ class CarriedCurveContact(CurveContact):
         return qf, t, n, k, d, (r1, r2), rhod, w
 
     def _row(self, q, c, rho) -> np.ndarray:
-        """∂(c·ρ)/∂q for a direction c fixed in W: P's row, −c on W's centre, −(c·Jρ) on W's angle."""
-        W = self.surface.body
-        row = [0.0] * self.n
-        self.P.add_jac(row, q, c[0], c[1])
-        row[W.index[0]] -= c[0]
-        row[W.index[1]] -= c[1]
-        if W.rigid:
-            row[W.index[2]] -= rho[0] * c[1] - rho[1] * c[0]
-        return np.array(row)
+        return _carried_row(self.n, self.P, self.surface.body, q, c, rho)
 
     def _bias(self, q, v, c, rho, rhod, w) -> float:
         """−c·b_P + 2ω c·Jρ̇ + ω² c·ρ: the γ of a direction c fixed in W."""
         b1, b2 = self.P.bias_xy(q, v)
-        cJrhod = rhod[0] * c[1] - rhod[1] * c[0]
-        return -(c[0] * b1 + c[1] * b2) + 2 * w * cJrhod + w * w * (c[0] * rho[0] + c[1] * rho[1])
+        return -(c[0] * b1 + c[1] * b2) + _frame_bias(c, rho, rhod, w)
 
     def _relative(self, c, rho, rhod, w) -> float:
         """c·(ρ̇ − ω Jρ): P's velocity over W's material point under it, along c."""
@@ -111,8 +125,7 @@ class CarriedCurveContact(CurveContact):
     def _stick_dir(self, q):
         """The held tangent t_s on the ground: Q(φ) t_s."""
         _x1, _x2, c, sn = self.surface.placed(q)
-        a, b = self.stick_t
-        return (c * a - sn * b, sn * a + c * b)
+        return _turned(self.stick_t, c, sn)
 
     def _local(self, q):
         """(P in the drawing, ρ = r_P − x_W, cos φ, sin φ)."""
@@ -254,29 +267,16 @@ class CarriedCurveRolls(CurveRolls):
         own = float(q[self.body_point.body.index[2]])
         return own - (float(q[W.index[2]]) - self.surface.th0 if W.rigid else 0.0)
 
-    def _world(self, vec, c: float, sn: float) -> tuple[float, float]:
-        return (c * float(vec[0]) - sn * float(vec[1]), sn * float(vec[0]) + c * float(vec[1]))
-
     def normal(self, q) -> np.ndarray:
         _rd, _rho, _rhod, _w, c, sn = self._frame(q)
-        return np.array(self._world(self.foot.at(self._centre(q))[2], c, sn))
+        return np.array(_turned(self.foot.at(self._centre(q))[2], c, sn))
 
     def tangent(self, q) -> np.ndarray:
         _rd, _rho, _rhod, _w, c, sn = self._frame(q)
-        return np.array(self._world(self.foot.at(self._centre(q))[1], c, sn))
+        return np.array(_turned(self.foot.at(self._centre(q))[1], c, sn))
 
     def _row(self, q, cvec, rho) -> np.ndarray:
-        """∂(c·ρ)/∂q for the centre: c on it, −c on W's centre, −(c·Jρ) on W's angle."""
-        W = self.surface.body
-        i = self.body_point.body.index
-        row = np.zeros(self.n)
-        row[i[0]] += cvec[0]
-        row[i[1]] += cvec[1]
-        row[W.index[0]] -= cvec[0]
-        row[W.index[1]] -= cvec[1]
-        if W.rigid:
-            row[W.index[2]] -= rho[0] * cvec[1] - rho[1] * cvec[0]
-        return row
+        return _carried_row(self.n, self.body_point, self.surface.body, q, cvec, rho)
 
     def _turn_row(self) -> np.ndarray:
         """∂(θ_B − θ_W)/∂q."""
@@ -287,16 +287,11 @@ class CarriedCurveRolls(CurveRolls):
             row[W.index[2]] -= 1.0
         return row
 
-    @staticmethod
-    def _frame_bias(cvec, rho, rhod, w) -> float:
-        """2ω c·Jρ̇ + ω² c·ρ: the γ a direction c fixed in W adds (the centre has no arm)."""
-        return 2 * w * (rhod[0] * cvec[1] - rhod[1] * cvec[0]) + w * w * (cvec[0] * rho[0] + cvec[1] * rho[1])
-
     def jac(self, q):
         rd, rho, _rhod, _w, c, sn = self._frame(q)
         _, tt, nn, k, d, _ = self.foot.at(rd)
         f = (1 - self.R * k) / (1 - k * d)
-        t_w, n_w = self._world(tt, c, sn), self._world(nn, c, sn)
+        t_w, n_w = _turned(tt, c, sn), _turned(nn, c, sn)
         rows = [self._row(q, n_w, rho), f * self._row(q, t_w, rho) + self.R * self._turn_row()]
         return np.array(rows[:self.rows])
 
@@ -305,7 +300,7 @@ class CarriedCurveRolls(CurveRolls):
         the frame's terms along n and f t."""
         rd, rho, rhod, w, c, sn = self._frame(q, v)
         qf, tt, nn, k, d, _ = self.foot.at(rd)
-        t_w, n_w = self._world(tt, c, sn), self._world(nn, c, sn)
+        t_w, n_w = _turned(tt, c, sn), _turned(nn, c, sn)
         rel = (rhod[0] + w * rho[1], rhod[1] - w * rho[0])          # ρ̇ − ω Jρ
         a = t_w[0] * rel[0] + t_w[1] * rel[1]
         b = n_w[0] * rel[0] + n_w[1] * rel[1]
@@ -313,20 +308,20 @@ class CarriedCurveRolls(CurveRolls):
         kdot = self.surface.dk_ds(qf) * a / wd
         f = (1 - self.R * k) / wd
         fdot = (kdot * (d - self.R) + (1 - self.R * k) * k * b) / (wd * wd)
-        g1 = k * a * a / wd + self._frame_bias(n_w, rho, rhod, w)
-        g2 = -(fdot * a + f * k * a * b / wd) + f * self._frame_bias(t_w, rho, rhod, w)
+        g1 = k * a * a / wd + _frame_bias(n_w, rho, rhod, w)
+        g2 = -(fdot * a + f * k * a * b / wd) + f * _frame_bias(t_w, rho, rhod, w)
         return np.array([g1, g2])[:self.rows]
 
     def normal_speed(self, q, v) -> float:
         _rd, rho, rhod, w, c, sn = self._frame(q, v)
-        n_w = self._world(self.foot.at(self._centre(q))[2], c, sn)
+        n_w = _turned(self.foot.at(self._centre(q))[2], c, sn)
         return (n_w[0] * (rhod[0] + w * rho[1]) + n_w[1] * (rhod[1] - w * rho[0]))
 
     def tangent_jac(self, q) -> np.ndarray:
         """The contact point's slip over the carrier's material point per unit rate:
         t·(J_c − J_{x_W}) − (t·Jρ) on θ_W, and R (θ̇_B − ω)."""
         _rd, rho, _rhod, _w, c, sn = self._frame(q)
-        t_w = self._world(self.foot.at(self._centre(q))[1], c, sn)
+        t_w = _turned(self.foot.at(self._centre(q))[1], c, sn)
         return self._row(q, t_w, rho) + self.R * self._turn_row()
 
     def hessian(self, q, w, n: int) -> np.ndarray:
@@ -343,7 +338,7 @@ class CarriedCurveRolls(CurveRolls):
         f = (1 - self.R * k) / wd
         grad_f = (self.surface.dk_ds(qf) * (d - self.R) / wd * tt + (1 - self.R * k) * k * nn) / (wd * wd)
         Hx = -w[0] * k / wd * np.outer(tt, tt) + w[1] * (np.outer(tt, grad_f) + f * k / wd * np.outer(nn, tt))
-        e1, e2 = self._world((1.0, 0.0), c, sn), self._world((0.0, 1.0), c, sn)
+        e1, e2 = _turned((1.0, 0.0), c, sn), _turned((0.0, 1.0), c, sn)
         Jd = np.array([self._row(q, e1, rho), self._row(q, e2, rho)])       # ∂r_d/∂q (drawing axes)
         H += Jd.T @ Hx @ Jd
         W = self.surface.body
@@ -353,7 +348,7 @@ class CarriedCurveRolls(CurveRolls):
         for wk, g in ((w[0], nn), (w[1], f * tt)):
             if wk == 0.0:
                 continue
-            cw = self._world(g, c, sn)
+            cw = _turned(g, c, sn)
             row = self._row(q, (-cw[1], cw[0]), rho)
             row[ia] = 0.0
             H[ia, :] += wk * row
