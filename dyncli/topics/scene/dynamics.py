@@ -182,6 +182,25 @@ def _dot(a, b) -> float:
     return float(sum(map(operator.mul, a, b)))
 
 
+def _uses_off_centre(item, bodies) -> bool:
+    """Whether a joint or load reads the angle of one of ``bodies`` through what it holds: a
+    point of it off its centre, a surface it carries, a torque or a wound string on it (its
+    attributes and the lists among them, one level down)."""
+    ids = {id(b) for b in bodies}
+    values = list(vars(item).values())
+    for v in list(values):
+        if isinstance(v, (list, tuple)):
+            values += [x for x in v if hasattr(x, "__dict__")]
+    for v in values:
+        if isinstance(v, Point) and v.body is not None and id(v.body) in ids and (v.p[0] or v.p[1]):
+            return True
+        if id(getattr(v, "body", None)) in ids and not isinstance(v, Point):
+            return True                 # a surface carried by it
+    if isinstance(item, Load) and item.body is not None and id(item.body) in ids:
+        return item.kind == "torque" or item.wound is not None
+    return False
+
+
 @dataclass
 class Load:
     """An applied element: spring, damper, force or torque (``name`` reported as force.NAME)."""
@@ -670,6 +689,48 @@ class SceneSystem:
                    and e.surface.d[axis] != 0 for e in made):    # (on a carried surface: internal)
                 continue
             out.append(axis)
+        return out
+
+    def rolling_translations(self, q) -> list[np.ndarray]:
+        """q̇ of each free motion of the whole scene along e_i (0: e1, 1: e2) in which the disks
+        rolling on fixed straight lines turn as they roll (ω = −d̂_i/R) and everything else
+        translates as one: a wheel on a floor with a pendulum from its axle.  Free by its
+        structure, as :meth:`translations` (every made row allows it, no load or friction ties
+        the scene along e_i, gravity has none), and besides: a turning body's angle enters no
+        other row (every point of it that a joint or load uses is its centre, no surface rides on
+        it, no other row's Jacobian reads its angle) — so the scene at any point of the motion is
+        the scene at q moved along e_i.  Scenes without such a disk: none (see translations)."""
+        rollers = [e for e in self.elements if type(e) is Rolls and e.rows and e.mode == "roll"
+                   and not getattr(e.surface, "curved", False) and not getattr(e.surface, "carried", False)]
+        if not rollers:
+            return []
+        J = self.jac(q)
+        own = set()                     # the rows of the rollers
+        for e in rollers:
+            k = self.offsets[self.elements.index(e)]
+            own.update(range(k, k + e.rows))
+        others = [k for k in range(J.shape[0]) if k not in own]
+        out = []
+        for axis in (0, 1):
+            if axis == 1 and self.g != 0 or any(ld.ties(axis) for ld in self.loads):
+                continue
+            if any(isinstance(e, (Contact, Rolls)) and e.mu_k and not getattr(e.surface, "carried", False)
+                   and e.surface.d[axis] != 0 and e.rows and e not in rollers for e in self.elements):
+                continue
+            T = self.translation(axis)
+            turning = {}
+            for e in rollers:
+                b = e.body_point.body
+                turning[b.index[2]] = b
+                T[b.index[2]] = -e.surface.d[axis] / e.R
+            if J.size and float(np.max(np.abs(J @ T))) > 1e-12 * max(float(np.max(np.abs(J))), 1.0):
+                continue
+            if any(J[k, i] != 0.0 for k in others for i in turning):
+                continue
+            if any(_uses_off_centre(item, list(turning.values())) for item in [*self.elements, *self.loads]
+                   if item not in rollers):
+                continue
+            out.append(T)
         return out
 
     # ------------------------------------------------------------------ energy

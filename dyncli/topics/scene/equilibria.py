@@ -688,15 +688,30 @@ def neutral_dirs(system, q, lam) -> np.ndarray:
 
 
 def _same(a, b, search, dirs) -> bool:
+    """Whether b is the equilibrium a: the same configuration (angles by whole turns), or a moved
+    along its neutral directions ``dirs`` (a continuum of rest).  A continuum that turns an angle
+    as it moves (a wheel rolling along a floor) may reach b after more than a half turn: its
+    step is then read from the other coordinates and the angles compared by whole turns."""
     d = (b - a) / search.scale
-    d = np.where(search.angles, (d + math.pi) % (2 * math.pi) - math.pi, d)
-    if float(np.max(np.abs(d), initial=0.0)) <= 1e-7:
+    wrapped = _turns(d, search.angles)
+    if float(np.max(np.abs(wrapped), initial=0.0)) <= 1e-7:
         return True
-    if dirs.shape[1]:
-        D = dirs / search.scale[:, None]
-        c = np.linalg.lstsq(D, d, rcond=None)[0]
-        return float(np.max(np.abs(D @ c - d), initial=0.0)) <= 1e-7
-    return False
+    if not dirs.shape[1]:
+        return False
+    D = dirs / search.scale[:, None]
+    c = np.linalg.lstsq(D, wrapped, rcond=None)[0]
+    if float(np.max(np.abs(D @ c - wrapped), initial=0.0)) <= 1e-7:
+        return True
+    lengths = ~search.angles
+    if not lengths.any() or assembly.rank(D[lengths]) < D.shape[1]:
+        return False
+    c = np.linalg.lstsq(D[lengths], d[lengths], rcond=None)[0]
+    return float(np.max(np.abs(_turns(D @ c - d, search.angles)), initial=0.0)) <= 1e-7
+
+
+def _turns(d, angles) -> np.ndarray:
+    """d with its angle components by whole turns into [−π, π)."""
+    return np.where(angles, (d + math.pi) % (2 * math.pi) - math.pi, d)
 
 
 def _walks(S, froms) -> list[list]:

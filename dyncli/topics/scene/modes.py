@@ -79,8 +79,9 @@ def analyse(system, q, lam, indep):
     else:
         stability = "neutral"
     modes = [normalised(U[:, r]) for r in range(U.shape[1])]
-    # a neutral equilibrium whose every zero mode is a free translation of the whole scene (a
-    # free cart): its frequencies hold, ω = 0 for the translation (the textbook's rigid-body mode)
+    # a neutral equilibrium whose every zero mode is a free motion of the whole scene (a free
+    # cart, a wheel rolling on a floor): its frequencies hold, ω = 0 for that motion (the
+    # textbook's rigid-body mode)
     free = stability == "neutral" and _translation_modes(system, q, indep, U[:, w2 == 0.0])
     out = {"stability": stability, "stable": stability == "stable", "omega2": [float(x) for x in w2],
            "frequencies": [math.sqrt(x) for x in w2] if stability == "stable" or free else None,
@@ -95,13 +96,14 @@ def analyse(system, q, lam, indep):
 
 
 def _translation_modes(system, q, indep, U0) -> bool:
-    """Whether the zero modes U0 (columns, in the coordinates ``indep``) are all translations of
-    the whole scene along axes it is free to translate along (SceneSystem.translations)."""
-    axes = system.translations(q)
-    if not axes:
+    """Whether the zero modes U0 (columns, in the coordinates ``indep``) are all free motions of
+    the whole scene: translations along axes it is free to translate along
+    (SceneSystem.translations), or along which its disks roll (SceneSystem.rolling_translations)."""
+    free = [system.translation(axis) for axis in system.translations(q)] + system.rolling_translations(q)
+    if not free:
         return False
     Z = equilibria.null_basis(system.jac(q), system.n, indep)
-    T = np.stack([system.translation(axis) for axis in axes], axis=1)
+    T = np.stack(free, axis=1)
     V = Z @ U0                                      # the zero modes in q
     fit = np.linalg.lstsq(T, V, rcond=None)[0]
     return bool(float(np.max(np.abs(T @ fit - V), initial=0.0)) <= 1e-9 * max(float(np.max(np.abs(V), initial=0.0)), 1e-300))
@@ -143,9 +145,9 @@ def response(lin, ds, dv, times) -> dict:
         for r, u in enumerate(modes):
             mu = float(u @ M @ u)
             a.append(float(u @ M @ ds) / mu)
-            b.append(float(u @ M @ dv) / (math.sqrt(w2[r]) * mu))
-        s = [sum((np.array(u) * (a[r] * math.cos(math.sqrt(w2[r]) * t) + b[r] * math.sin(math.sqrt(w2[r]) * t))
-                  for r, u in enumerate(modes)), np.zeros(len(ds))) for t in times]
+            b.append(float(u @ M @ dv) / ((math.sqrt(w2[r]) if w2[r] > 0 else 1.0) * mu))
+        s = [sum((np.array(u) * _modal(a[r], b[r], w2[r], t) for r, u in enumerate(modes)), np.zeros(len(ds)))
+             for t in times]
         return {"a": a, "b": b, "ds": [[float(x) for x in si] for si in s]}
     d = M.shape[0]
     lam, V = np.linalg.eig(_state_matrix(M, C, K))
@@ -159,6 +161,14 @@ def response(lin, ds, dv, times) -> dict:
         A = _state_matrix(M, C, K)
         zs = [expm(A * t) @ z0 for t in times]
     return {"a": None, "b": None, "ds": [[float(x) for x in z[:d]] for z in zs]}
+
+
+def _modal(a: float, b: float, w2: float, t: float) -> float:
+    """One mode's amplitude at t: a cos ωt + b sin ωt, or a + b t for a free motion (ω = 0)."""
+    if w2 == 0.0:
+        return a + b * t
+    w = math.sqrt(w2)
+    return a * math.cos(w * t) + b * math.sin(w * t)
 
 
 def results(scene, times, warn) -> list:
@@ -179,7 +189,9 @@ def results(scene, times, warn) -> list:
         out.append({"coordinates": [s.names[k] for k in indep], "values": [float(q[k]) + 0.0 for k in indep],
                     **_configuration(s, q, lam), **entry, "response": None})
         lins.append((indep, lin))
-    stable = [k for k, e in enumerate(out) if e["stable"]]
+    # about a stable rest, or a neutral one whose zero modes are free motions (their frequencies
+    # given: the motion along them is a + b t)
+    stable = [k for k, e in enumerate(out) if e["stable"] or e["frequencies"] is not None]
     if stable:
         k = min(stable, key=lambda k: float(np.max(np.abs((found[k][0] - q0) / scale))))
         indep, lin = lins[k]

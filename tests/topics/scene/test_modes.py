@@ -286,6 +286,118 @@ def test_neutral_continuum_is_one_equilibrium():
     assert low[0]["frequencies"] == pytest.approx([0.0, (G * 2.5 / (2 * 0.6)) ** 0.5], rel=TOL, abs=1e-9)
 
 
+WHEEL = """
+type: scene
+title: pendulum from the axle of a wheel rolling on a floor
+params: {M: 2, m: 0.5, R: 0.3, l: 0.6}
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  wheel: {shape: %s, mass: M, radius: R, x: [0, R], angle: 0}
+  bob: {shape: point, mass: m, x: [0.1, "R - sqrt(l**2 - 0.01)"]}
+joints:
+  roll: {rolls: [wheel, floor]}
+  hanger: {link: [%s, bob], length: l}
+at: [0, 0.5]
+linearize: true
+"""
+
+
+@pytest.mark.parametrize("shape, turning", [("disk", 0.5), ("ring", 1.0)])
+def test_wheel_rolling_free_is_one_neutral_equilibrium(shape, turning):
+    """A pendulum hung from the axle of a wheel rolling on a floor rests anywhere along it: one
+    hanging and one inverted equilibrium (not one per wheel turn), the hanging one neutral with
+    its frequencies: ω = 0 for the rolling, and the pendulum's from the Lagrangian of x (the
+    axle) and φ (the pendulum), T = ½ (M + Ī/R²) ẋ² + ½ m ((ẋ + l φ̇ cos φ)² + (l φ̇ sin φ)²),
+    V = −m g l cos φ, linearized by sympy at φ = 0 (by hand: ω² = (g/l)(M′ + m)/M′)."""
+    import sympy as sp
+
+    x, phi, xd, phid = sp.symbols("x phi xd phid")
+    M, m, R, l = 2, sp.Rational(1, 2), sp.Rational(3, 10), sp.Rational(3, 5)
+    Mp = M + sp.nsimplify(turning) * M
+    T = Mp * xd ** 2 / 2 + m * ((xd + l * phid * sp.cos(phi)) ** 2 + (l * phid * sp.sin(phi)) ** 2) / 2
+    V = -m * sp.nsimplify(G) * l * sp.cos(phi)
+    ref, _ = sympy_omega2(T, V, [x, phi], [xd, phid], {x: 0, phi: 0})
+    e = solved(WHEEL % (shape, "wheel"))["equilibria"]
+    assert [x["stability"] for x in e] == ["neutral", "unstable"]
+    hanging = e[0]
+    assert hanging["x"]["bob"][1] == pytest.approx(0.3 - 0.6, abs=1e-9)
+    assert hanging["omega2"] == pytest.approx(ref, rel=TOL, abs=1e-9)
+    assert hanging["frequencies"] == pytest.approx([0.0, ref[1] ** 0.5], rel=TOL, abs=1e-9)
+    assert ref[1] == pytest.approx(G / 0.6 * (float(Mp) + 0.5) / float(Mp), rel=1e-12)
+    # the zero mode rolls: the axle moves by R per radian the wheel turns back
+    i = e[0]["coordinates"].index("angle.wheel")
+    zero = e[0]["modes"][0]
+    assert zero[1 - i] / zero[i] == pytest.approx(-0.3, rel=1e-9)
+
+
+def test_wheel_pendulum_response_about_its_free_rest():
+    """The linear response about the rolling wheel's neutral rest (its frequencies given): from
+    rest at 10°, Mp x + m x_b is constant (the floor's friction is −Ī ẍ/R², so
+    d/dt (M ẋ + m ẋ_b) = −Ī ẍ/R²) and u = x_b − x = u0 cos ωt (the relative swing), in closed
+    form: x = m (u0 − u)/(Mp + m), x_b = x + u, the wheel's angle −x/R.  Pushed at V (the wheel
+    rolling, the bob moving with it), the free mode adds V t to every position and −V t/R to
+    the angle."""
+    Mp, m, R, l, V = 3.0, 0.5, 0.3, 0.6, 0.4
+    w = (G / l * (Mp + m) / Mp) ** 0.5
+    u0 = l * math.sin(math.radians(10))
+    base = (WHEEL % ("disk", "wheel")).replace('[0.1, "R - sqrt(l**2 - 0.01)"]', '["l*sin(10*deg)", "R - l*cos(10*deg)"]')
+    for push in (0.0, V):
+        text = base.replace("angle: 0}", f"angle: 0, v: [{push}, 0], omega: {-push / R}}}")
+        text = text.replace("x: [\"l*sin", f"v: [{push}, 0], x: [\"l*sin")
+        e = solved(text)["equilibria"][0]
+        r = e["response"]
+        iw, ib = e["coordinates"].index("angle.wheel"), e["coordinates"].index("x.bob.0")
+        for k, t in enumerate((0, 0.5)):
+            u = u0 * math.cos(w * t)
+            x = m * (u0 - u) / (Mp + m) + push * t
+            assert r["s"][k][iw] == pytest.approx(-x / R, rel=1e-9, abs=1e-12)
+            assert r["s"][k][ib] == pytest.approx(x + u, rel=1e-9, abs=1e-12)
+
+
+def test_wheel_pendulum_gallery():
+    """problems/scenes/pendulum-on-rolling-wheel.yaml: the rolling and the swing (the closed
+    form of its header, ω² = (g/l)(M′ + m)/M′), the motion near its linear response at 10°."""
+    from tests.topics.scene.common import gallery
+
+    r = gallery("pendulum-on-rolling-wheel.yaml")["results"]
+    e = r["equilibria"]
+    assert [x["stability"] for x in e] == ["neutral", "unstable"]
+    assert e[0]["omega2"] == pytest.approx([0.0, G / 0.6 * 3.5 / 3], rel=TOL, abs=1e-9)
+    iw = e[0]["coordinates"].index("angle.wheel")
+    for k in (1, 2):
+        assert abs(r["angle"]["wheel"][k] - e[0]["response"]["s"][k][iw]) < 0.02 * abs(r["angle"]["wheel"][k])
+
+
+def _system(text):
+    from dyncli.loader import split_problems, validate
+    from dyncli.topics.scene import prepare, solver
+    from tests.conftest import ROOT
+
+    problems, _ = split_problems("t.yaml", text.encode(), ROOT)
+    validate(problems[0])
+    scene = prepare.setup(solver._plan(problems[0].model))
+    return scene.system, scene.q0
+
+
+@pytest.mark.parametrize("g", ["", "g: 0\n"])
+def test_rolling_is_free_only_when_nothing_reads_the_wheels_angle(g):
+    """The rolling translation of the wheel and its pendulum is a free motion with the pendulum
+    on the axle (the axle moves e1, the wheel turns −1/R) and none with it on the rim (the turn
+    moves its pin), nor with a spring from the axle to the ground (it ties the scene) — with
+    gravity or without."""
+    s, q = _system(g + WHEEL % ("disk", "wheel"))
+    (T,) = s.rolling_translations(q)
+    b = s.names
+    assert T[b.index("x.wheel.0")] == T[b.index("x.bob.0")] == 1.0 and T[b.index("angle.wheel")] == pytest.approx(-1 / 0.3)
+    rim = (WHEEL % ("disk", "wheel.rim")).replace("angle: 0}", "angle: 0, points: {rim: [0.3, 0]}}")
+    s, q = _system(g + rim.replace('[0.1, "R - sqrt(l**2 - 0.01)"]', '[0.3, "R - l"]'))
+    assert s.rolling_translations(q) == []
+    sprung = (WHEEL % ("disk", "wheel")) + "forces:\n  - {spring: [wheel, [-1, 0.3]], k: 10, L: 1}\n"
+    s, q = _system(g + sprung)
+    assert s.rolling_translations(q) == []
+
+
 def test_hessians_against_differences():
     """The analytic second derivatives against central differences of the analytic Jacobians."""
     from dyncli.topics.scene import curvature, prepare, solver
