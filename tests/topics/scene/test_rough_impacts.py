@@ -537,3 +537,50 @@ accuracy: {rtol: 1.0e-10}
     N, F = r["reaction"]["hit"]["N"][-1], r["reaction"]["hit"]["F"][-1]
     assert N > 0 and abs(F) <= 1.5 * N
     assert r["v"]["rod"][-1][0] != 0.0 and r["W_nc"][-1] <= r["W_nc"][0]
+
+
+def test_a_rod_sliding_on_its_end_jams_where_painleve_says():
+    """A uniform rod (m = 1 kg, L = 1 m) sliding on its end over a floor with μ_k = 2, from 34°
+    with its end sliding away from the rod (ẋ = −6 m/s) while it turns up (ω = 3 rad/s).  By the
+    free-body diagram (F = μ N against the slip, ÿ = a (cos θ θ̈ − sin θ θ̇²), a = L/2,
+    Ī = m a²/3): N = m (g − a sin θ θ̇²)/D(θ) with D = 1 + 3 cos²θ − 3 μ sin θ cos θ, which
+    vanishes at θ* = 37.377368° (D's root by Brent, below): the normal force grows without bound
+    there and the refusal names Painlevé's paradox.  Its time against a second formulation, the
+    angle's equation θ̈ = 3 N (μ sin θ − cos θ)/(m a) integrated by scipy's DOP853 at rtol 1e-12
+    up to where its steps fail at θ* (t* = 0.01620776 s); the refusal prints t to 6 digits."""
+    from scipy.integrate import solve_ivp
+    from scipy.optimize import brentq
+
+    from tests.conftest import solve_text
+
+    g, a, mu = 9.81, 0.5, 2.0
+
+    def D(th):
+        return 1 + 3 * math.cos(th) ** 2 - 3 * mu * math.sin(th) * math.cos(th)
+
+    def f(t, y):
+        th, w = y
+        N = (g - a * math.sin(th) * w * w) / D(th)
+        return [w, 3 * N * (mu * math.sin(th) - math.cos(th)) / a]
+
+    th_star = brentq(D, math.radians(34), math.radians(45), xtol=1e-15)
+    ref = solve_ivp(f, (0, 1), [math.radians(34), 3.0], method="DOP853", rtol=1e-12, atol=1e-14)
+    assert ref.status == -1 and ref.y[0, -1] == pytest.approx(th_star, abs=1e-9)
+    (rec,) = solve_text("""
+type: scene
+title: Rod sliding on its end on a rough floor
+params: {m: 1, L: 1, a0: "34*deg"}
+surfaces:
+  floor: {through: [0, 0], direction: [1, 0]}
+bodies:
+  rod: {shape: rod, mass: m, length: L, angle: a0, x: ["L/2*cos(a0)", "L/2*sin(a0)"], v: [-6, "L/2*cos(a0)*3"],
+        omega: 3}
+joints:
+  tip: {contact: [rod.end1, floor], mu: 2}
+t_end: 1
+at: [0, 0.1]
+""")
+    err = rec.get("error") or ""
+    assert "Painlevé's paradox" in err and "tip (μ_k = 2)" in err, err
+    t = float(err.split("at t = ")[1].split(" s")[0])
+    assert t == pytest.approx(float(ref.t[-1]), abs=5e-8 + 1e-9)      # its last printed digit is 1e-7
