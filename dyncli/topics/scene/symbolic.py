@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import energy, symbolic_curves
-from .symbolic_rows import Coords, Eq, Geometry, Symbols, element_rows, exact, tidy
+from .symbolic_rows import CarriedFrame, Coords, Eq, Geometry, Symbols, element_rows, exact, tidy
 
 @dataclass
 class Derivation:
@@ -88,7 +88,7 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
         if e.kind == "rolls" and e.mode == "slip" or e.kind == "cord" and e.slack:
             raise ValueError(f"{e.name!r} starts {'slack' if e.kind == 'cord' else 'slipping'}, a phase without a "
                              "symbolic form in this release")
-        if getattr(getattr(e, "surface", None), "carried", False):
+        if getattr(getattr(e, "surface", None), "carried", False) and getattr(e.surface, "curved", False):
             raise ValueError(f"the {e.kind} {e.name!r} on {e.surface.name!r}, a surface carried by "
                              f"{e.surface.body.name!r}, has no symbolic form in this release")
         if getattr(getattr(e, "surface", None), "pair", False):
@@ -136,8 +136,11 @@ def derive(scene, exprs: dict | None = None) -> Derivation:
 
 def _friction(D, P, G, C, F, N, e) -> None:
     """Friction F along d̂ at the contact point; its law (kinetic, or the static bound)."""
-    d = sp.Matrix([exact(e.surface.d[0]), exact(e.surface.d[1])])
-    col = (d.T * G.pos(e.P).jacobian(C.q))
+    if getattr(e.surface, "carried", False):      # F on P along d̂, −F on W's point under it: F ∂s/∂q
+        col = sp.Matrix([CarriedFrame(e.surface, G).along(G.pos(e.P))]).jacobian(C.q)
+    else:
+        d = sp.Matrix([exact(e.surface.d[0]), exact(e.surface.d[1])])
+        col = (d.T * G.pos(e.P).jacobian(C.q))
     for j in range(len(C.q)):
         P.f[j] += F * col[j]
     mu_k = D.S.param("μ", r"\mu", e.name, e.mu_k)

@@ -184,9 +184,66 @@ def _cord(e, G: Geometry, S: Symbols):
     return phis, [-T for T in tens], tens
 
 
+class CarriedFrame:
+    """A straight line carried by a body W (carried.py): its direction d̂ = Q(θ_W) d̂ₗ and normal
+    n = e3 × d̂ turned with W, and for a point r the gap n·(r − x_W) − n_l·o and the place along
+    it d̂·(r − x_W) − d̂ₗ·o (from the line's origin on W)."""
+
+    def __init__(self, surface, G: Geometry):
+        W = surface.body
+        self.W, self.C = W, G.C
+        self.theta = G.C.q[W.index[2]] if W.rigid else sp.Integer(0)
+        c, s = sp.cos(self.theta), sp.sin(self.theta)
+        dl = vec(surface.dl)
+        o1, o2 = exact(surface.o[0]), exact(surface.o[1])
+        self.d = sp.Matrix([c * dl[0] - s * dl[1], s * dl[0] + c * dl[1]])
+        self.n = sp.Matrix([-self.d[1], self.d[0]])
+        self.cn, self.cd = -dl[1] * o1 + dl[0] * o2, dl[0] * o1 + dl[1] * o2
+        self.x = G.centre(W)
+
+    def gap(self, r):
+        return (self.n.T * (r - self.x))[0] - self.cn
+
+    def along(self, r):
+        return (self.d.T * (r - self.x))[0] - self.cd
+
+    def turned(self, b):
+        """θ_B − θ_W: the rigid body b's turn relative to the carrier."""
+        return self.C.q[b.index[2]] - self.theta
+
+
+def _carried_rows(e, G: Geometry, S: Symbols):
+    """The rows of a contact, slider or rolling body on a carried line (carried.py): the gap (N
+    along n on the point, −N on W), a slider's turn relative to W (M), a rolling body's
+    no-slip over W's material point s + R (θ_B − θ_W) = const (F)."""
+    k, L = e.kind, CarriedFrame(e.surface, G)
+    if k == "contact":
+        N = S.force("N", e.name)
+        if not e.rough:
+            return [L.gap(G.pos(e.P))], [N], [N], None
+        F = S.force("F", e.name)
+        return [L.gap(G.pos(e.P))], [N], [N, F], (F, N, e)
+    if k == "slider":
+        N = S.force("N", e.name)
+        rows = [L.gap(G.pos(e.P)) - exact(e.c0)]
+        if e.dtheta is None:
+            return rows, [N], [N], None
+        M = S.force("M", e.name)
+        return rows + [L.turned(e.P.body) - exact(e.dtheta)], [N, M], [N, M], None
+    if k == "rolls":
+        N, F = S.force("N", e.name), S.force("F", e.name)
+        b = e.body_point.body
+        x = G.centre(b)
+        return [L.gap(x) - G.radius(b), L.along(x) + G.radius(b) * L.turned(b) - exact(e.c0)], [N, F], [N, F], None
+    raise ValueError(f"the {k} {e.name!r} on {e.surface.name!r}, a surface carried by {e.surface.body.name!r}, has no "
+                     "symbolic form in this release")
+
+
 def element_rows(e, G: Geometry, S: Symbols, drive_expr=None):
     """(rows φ, multipliers λ in the joint forces, the force symbols, friction load or None)."""
     k, C = e.kind, G.C
+    if getattr(getattr(e, "surface", None), "carried", False):
+        return _carried_rows(e, G, S)
     if k == "pin":
         R1, R2 = S.force("R", e.name, "1"), S.force("R", e.name, "2")
         return list(G.pos(e.P) - G.pos(e.Q)), [R1, R2], [R1, R2], None

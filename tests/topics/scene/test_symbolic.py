@@ -158,7 +158,8 @@ def test_slider_crank_drive_couple():
 
 
 @pytest.mark.parametrize("name", ["double-pendulum.yaml", "cart-pendulum.yaml", "yo-yo.yaml", "falling-rod.yaml",
-                                  "pulled-spool.yaml", "incline-pulley-slides.yaml"])
+                                  "pulled-spool.yaml", "incline-pulley-slides.yaml", "block-on-wedge.yaml",
+                                  "drum-on-plank.yaml"])
 def test_reduced_equations_match_the_engine(name):
     """Any scene: the reduced equations give the engine's accelerations at t = 0 (a second
     formulation: the engine solves the full system with the multipliers)."""
@@ -176,6 +177,49 @@ def test_reduced_equations_match_the_engine(name):
     got = _sdd(D, sub)
     want = [a[j] for j in D.independent]
     assert np.allclose(got, want, rtol=1e-9, atol=1e-9 * max(1.0, max(abs(x) for x in want)))
+
+
+def test_block_on_a_sliding_wedge():
+    """A surface carried by a body (the wedge's slope): the reduced equations give the
+    textbook's wedge acceleration A = m g sin α cos α/(M + m sin² α) (the block's and the
+    wedge's momentum and the block's normal acceleration, by hand) and the block's slide
+    relative to the wedge s̈ = (M + m) g sin α/(M + m sin² α), α = 30°, m = 1, M = 4."""
+    D, scene = _derive("block-on-wedge.yaml")
+    assert len(D.reduced) == 2 and any(e.label == "on_slope" for e in D.constraints)
+    sub = _values(D, scene)
+    g, m, M, al = 9.81, 1.0, 4.0, math.pi / 6
+    A = m * g * math.sin(al) * math.cos(al) / (M + m * math.sin(al) ** 2)
+    sdd = (M + m) * g * math.sin(al) / (M + m * math.sin(al) ** 2)
+    got = dict(zip([scene.system.names[j] for j in D.independent], _sdd(D, sub)))
+    assert got["x.wedge.0"] == pytest.approx(A, rel=1e-12)
+    assert got["x.block.0"] - got["x.wedge.0"] == pytest.approx(-sdd * math.cos(al), rel=1e-12)
+
+
+def test_collar_on_a_spun_rough_rod():
+    """A line carried by a turning body (the spun rod) with a rough contact on it: the reduced
+    equation along the collar's coordinate, at a state of the hand solution (t = 0.2 s: r, ṙ of
+    the closed form in the file's header, θ = ω t), gives the collar's acceleration of the polar
+    free-body diagram: a = (r̈ − ω² r) e_r + 2 ω ṙ e_θ with r̈ = ω² r − μ N/m, N = 2 m ω ṙ."""
+    D, scene = _derive("rough-collar-on-spun-rod.yaml")
+    names = scene.system.names
+    m, mu, w, L, r0, t = 0.5, 0.3, 4.0, 2.0, 0.5, 0.2
+    s1, s2 = w * (-mu + math.sqrt(1 + mu * mu)), w * (-mu - math.sqrt(1 + mu * mu))
+    A = r0 * -s2 / (s1 - s2)
+    r = A * math.exp(s1 * t) + (r0 - A) * math.exp(s2 * t)
+    rd = A * s1 * math.exp(s1 * t) + (r0 - A) * s2 * math.exp(s2 * t)
+    th = w * t
+    N = 2 * m * w * rd
+    rdd = w * w * r - mu * N / m
+    c, sn = math.cos(th), math.sin(th)
+    state = {"x.rod.0": (L / 2 * c, -L / 2 * w * sn), "x.rod.1": (L / 2 * sn, L / 2 * w * c), "angle.rod": (th, w),
+             "x.collar.0": (r * c, rd * c - r * w * sn), "x.collar.1": (r * sn, rd * sn + r * w * c)}
+    sub = _values(D, scene, [state[n][0] for n in names], [state[n][1] for n in names])
+    sub[_sym(D, "N_sleeve")] = N
+    sub[D.C.qdd[names.index("angle.rod")]] = 0.0
+    (eq,) = [e for e in D.reduced if "(the drive's force)" not in e.label]
+    k = D.independent[[names[j] for j in D.independent].index("x.collar.0")]
+    (got,) = sp.solve((eq.lhs - eq.rhs).subs(sub), D.C.qdd[k])
+    assert float(got) == pytest.approx((rdd - w * w * r) * c - 2 * w * rd * sn, rel=1e-12)
 
 
 def test_cli_text_and_latex():
