@@ -642,7 +642,7 @@ def _cord_nodes(path: str, items: list, R: Resolver) -> list[tuple]:
             elif "peg" in it:
                 if end:
                     raise InputError("a cord ends at a point or a wound body, not at a peg", p)
-                nodes.append(("peg", np.array(it["peg"], float), p))
+                nodes.append(("peg", (np.array(it["peg"], float), float(it.get("radius") or 0.0)), p))
             elif "wound" in it:
                 if not end:
                     raise InputError("a wound body is an end of the cord (first or last)", p)
@@ -725,18 +725,23 @@ def _pegged_string(name: str, path: str, nodes: list, q: np.ndarray, n: int) -> 
     d = B - A
     if not math.hypot(*d) > 0:
         raise InputError("the string's ends coincide at t = 0", path)
-    pegs = []
+    pegs, radii = [], []
     for nd in inner:
-        p = nd[1]
+        p, rho = nd[1]
         w = p - A
         cross, proj = float(d[0] * w[1] - d[1] * w[0]), float(d @ w) / float(d @ d)
-        if abs(cross) <= 1e-12 * float(d @ d) and 0 <= proj <= 1:
-            raise InputError("the peg lies on the string at t = 0: place it off the string's line (a string already "
-                             "bent over it is a cord over {pulley: [x1, x2]})", nd[2])
+        if abs(cross) <= 1e-12 * float(d @ d) + rho * math.hypot(*d) and 0 <= proj <= 1:
+            raise InputError(f"the peg {'touches' if rho else 'lies on'} the string at t = 0: place it off the string's "
+                             "line (a string already bent over it is a cord over {pulley: [x1, x2], radius: r})", nd[2])
+        for end, which in ((A, "fixed end"), (B, "body's end")):
+            if rho and math.hypot(*(end - p)) <= rho:
+                raise InputError(f"the string's {which} is inside the round peg at t = 0: tie it outside the peg "
+                                 "(its distance from the centre more than the radius)", nd[2])
         pegs.append(Point(f"peg {p[0]:g}, {p[1]:g}", None, (float(p[0]), float(p[1]))))
+        radii.append(rho)
     u = d / math.hypot(*d)
     seg = el.Segment(el.CordEnd(point=ends[0][1]), el.CordEnd(point=ends[1][1]), u)
-    string = el.PeggedString(name, "cord", len(q), path, runs=[[seg]], pegs=pegs)
+    string = el.PeggedString(name, "cord", len(q), path, runs=[[seg]], pegs=pegs, radii=radii)
     string.consts = list(string.lengths(q))
     string.start_sides(q)
     return string

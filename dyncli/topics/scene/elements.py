@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from dyncli.errors import NumericalError
+
 from .system import BodyData, BodyPoint, Point, SurfaceData, perp
 
 EPS = float(np.finfo(float).eps)
@@ -808,19 +810,25 @@ class String(Cord):
         assert seg.a.point is not None and seg.b.point is not None, "a string runs between two points"
         return seg.b.point, seg.a.point
 
+    def span(self, q) -> tuple[Point, Point]:
+        """(its far end, the point its straight part runs from) at q: its ends (a string over a
+        round peg: the point where it leaves the peg, as if fixed there — its row, γ and
+        curvature are those of a string from that point)."""
+        return self.ends()
+
     def lengths(self, q) -> np.ndarray:
         P, Q = self.ends()
         (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
         return np.array([math.hypot(p1 - q1, p2 - q2)])
 
     def jac_list(self, q):
-        return [span_row(*self.ends(), q, self.n)] if not self.slack else []
+        return [span_row(*self.span(q), q, self.n)] if not self.slack else []
 
     def gamma_list(self, q, v, t):
-        return [span_gamma(*self.ends(), q, v)] if not self.slack else []
+        return [span_gamma(*self.span(q), q, v)] if not self.slack else []
 
     def run_rate(self, q, v, r: int) -> float:
-        return float(np.array(span_row(*self.ends(), q, self.n)) @ v)
+        return float(np.array(span_row(*self.span(q), q, self.n)) @ v)
 
     def straight_along(self, q, N) -> bool:
         """Whether its direction stays put along the motion q + N s (its ends on bodies that do
@@ -839,7 +847,7 @@ class String(Cord):
 
         if self.slack:
             return np.zeros((n, n))
-        return w[0] * length_terms(*self.ends(), q, n)[3]
+        return w[0] * length_terms(*self.span(q), q, n)[3]
 
 
 @dataclass
@@ -857,12 +865,25 @@ class PeggedString(String):
     side changes (a phase of its own, no event); the last wrapped peg's bend, s · |B − P| sin θ
     (θ from the part before it to the free part), crosses 0 at each half turn: back through θ = 0
     it leaves the peg, on through θ = kπ the free part has turned another half turn about it (a
-    whirl about the nail, no event)."""
+    whirl about the nail, no event).
 
-    pegs: list = field(default_factory=list)         # ground Points
+    A round peg (``radii[i]`` = ρ > 0, centre C) is caught where the line comes within ρ of C
+    (the watch side·d − ρ; a line that sweeps over it beyond an end watches its far edge, side·d
+    + ρ, and its near edge again, ρ − side·d, until it is past or back).  Wrapped, the string
+    leaves it at the tangent point T from B: with r = B − C, the free part ℓ = √(|r|² − ρ²) and the
+    wound angle β = s (ψ − s arccos(ρ/|r|) − α_in) (ψ the angle of r, α_in that of the point
+    where it was caught, s = ±1 the sense it winds), its length ℓ + ρ β is held.  The row, γ and
+    curvature are a string's from T held fixed (T moves along the free part's own line: d(ℓ +
+    ρβ)/dr is the unit vector T → B).  β's half turns are counted as a point peg's (the watch
+    (−1)^k ρ sin β, k the half turns: an event only back through β = 0, ``unwraps``); the string
+    may wind many turns onto the post.  Its record in ``bends`` is (s, k, α_in, the point where
+    it leaves the post once a later peg holds that point fixed, else None)."""
+
+    pegs: list = field(default_factory=list)         # ground Points (a round peg: its centre)
+    radii: list = field(default_factory=list)        # per peg: 0 (a point) or its radius
     wrapped: tuple = ()                              # indices into pegs, from the fixed end on
-    sides: tuple = ()                                # per peg: the sign of its line watch
-    bends: tuple = ()                                # per wrapped peg: (the bend watch's sign, half turns)
+    sides: tuple = ()                                # per peg: the sign of its line watch (±2: passing over a round one)
+    bends: tuple = ()                                # per wrapped peg: (the bend watch's sign, half turns), or a round one's
 
     def _end(self, which: str) -> Point:
         """The string's fixed end ("a") or its body point ("b")."""
@@ -870,11 +891,63 @@ class PeggedString(String):
         assert P is not None, "a string over pegs runs between two points"
         return P
 
+    def _radius(self, i: int) -> float:
+        return self.radii[i] if self.radii else 0.0
+
+    def _winding(self) -> bool:
+        """Whether the free part leaves a round peg (its length: the free part and the arc)."""
+        return bool(self.wrapped) and self._radius(self.wrapped[-1]) > 0
+
     def anchor(self) -> Point:
         return self.pegs[self.wrapped[-1]] if self.wrapped else self._end("a")
 
     def ends(self) -> tuple[Point, Point]:
         return self._end("b"), self.anchor()
+
+    def _departure(self, j: int, q) -> Point:
+        """The point where the string leaves the j-th wrapped peg: the peg, or a round peg's
+        tangent point (held where a later peg fixed it)."""
+        i = self.wrapped[j]
+        if not self._radius(i):
+            return self.pegs[i]
+        held = self.bends[j][3]
+        if held is not None:
+            return Point("the string's point off its peg", None, held)
+        return Point("the string's point off its peg", None, self._wound(q)[0])
+
+    def free_from(self, q) -> Point:
+        """The point the free part of the string runs from at q."""
+        return self._departure(len(self.wrapped) - 1, q) if self.wrapped else self._end("a")
+
+    def _before(self, q) -> Point:
+        """The point before the last wrapped peg (where it leaves the previous peg, or the fixed end)."""
+        return self._departure(len(self.wrapped) - 2, q) if len(self.wrapped) > 1 else self._end("a")
+
+    def _wound(self, q) -> tuple[tuple[float, float], float]:
+        """(the tangent point T, the wound angle β) of the last wrapped peg, a round one."""
+        i = self.wrapped[-1]
+        rho, (c1, c2) = self._radius(i), self.pegs[i].p
+        s, k, a_in, _held = self.bends[-1]
+        b1, b2 = self._end("b").xy(q)
+        r1, r2 = b1 - c1, b2 - c2
+        d = math.hypot(r1, r2)
+        if not d > rho:
+            raise NumericalError(f"the end of the string {self.name!r} reached the round peg at [{c1:g}, {c2:g}] "
+                                 "(the string wound up to it): the motion is not solved past it; ask for times before it (at, t_end)")
+        at = math.atan2(r2, r1) - s * math.acos(rho / d)
+        lo = k * math.pi - 0.5 * math.pi            # β in the phase's window, [kπ − π/2, kπ + 3π/2)
+        beta = lo + (s * (at - a_in) - lo) % (2 * math.pi)
+        return (c1 + rho * math.cos(at), c2 + rho * math.sin(at)), beta
+
+    def span(self, q) -> tuple[Point, Point]:
+        return self._end("b"), self.free_from(q)
+
+    def lengths(self, q) -> np.ndarray:
+        if not self._winding():
+            return super().lengths(q)
+        (t1, t2), beta = self._wound(q)
+        b1, b2 = self._end("b").xy(q)
+        return np.array([math.hypot(b1 - t1, b2 - t2) + self._radius(self.wrapped[-1]) * beta])
 
     def phase(self):
         return (self.slack, self.wrapped, self.sides, self.bends, tuple(self.consts))
@@ -887,9 +960,14 @@ class PeggedString(String):
         return False
 
     def start_sides(self, q) -> None:
-        """The sign of each peg's line watch at t = 0: positive on the peg's side."""
+        """The sign of each peg's line watch at t = 0: positive on the peg's side (±2: a round peg
+        the line passes over beyond an end, |d| < ρ)."""
         B, A = self.ends()
-        self.sides = tuple(1.0 if self._offset(A, B, p, q)[0] > 0 else -1.0 for p in self.pegs)
+        sides = []
+        for i, p in enumerate(self.pegs):
+            o = self._offset(A, B, p, q)[0]
+            sides.append((1.0 if o > 0 else -1.0) * (2.0 if abs(o) < self._radius(i) else 1.0))
+        self.sides = tuple(sides)
 
     @staticmethod
     def _offset(A: Point, B: Point, P: Point, q) -> tuple[float, float]:
@@ -900,47 +978,84 @@ class PeggedString(String):
         dd = d1 * d1 + d2 * d2
         return (d1 * w2 - d2 * w1) / math.sqrt(dd), (d1 * w1 + d2 * w2) / dd
 
-    def _before(self) -> Point:
-        """The point before the last wrapped peg (the previous peg, or the fixed end)."""
-        return self.pegs[self.wrapped[-2]] if len(self.wrapped) > 1 else self._end("a")
-
     def _bend(self, q) -> tuple[float, float]:
         """(|B − P| sin θ, cos θ) of the free part B − P against the part before, A' → P."""
-        P, A, B = self.anchor(), self._before(), self._end("b")
+        P, A, B = self.anchor(), self._before(q), self._end("b")
         (a1, a2), (p1, p2), (b1, b2) = A.xy(q), P.xy(q), B.xy(q)
         u1, u2, w1, w2 = p1 - a1, p2 - a2, b1 - p1, b2 - p2
         lu = math.hypot(u1, u2)
         return (u1 * w2 - u2 * w1) / lu, (u1 * w1 + u2 * w2) / (lu * math.hypot(w1, w2))
 
+    def _line_watches(self, q) -> list[tuple[int, str, float]]:
+        """(peg, "near" / "far" / "back", g) of every peg not wrapped: its line watch (a round peg
+        passing over beyond an end: two)."""
+        B, A = self._end("b"), self.free_from(q)
+        out = []
+        for i, p in enumerate(self.pegs):
+            if i in self.wrapped:
+                continue
+            o, rho, side = self._offset(A, B, p, q)[0], self._radius(i), self.sides[i]
+            if abs(side) < 1.5:
+                out.append((i, "near", side * o - rho))
+            else:
+                out += [(i, "far", 0.5 * side * o + rho), (i, "back", rho - 0.5 * side * o)]
+        return out
+
     def watch(self, lam, q, v, t):
         out = super().watch(lam, q, v, t)
-        B, A = self.ends()
-        for i, p in enumerate(self.pegs):
-            if i not in self.wrapped:
-                out.append(("wraps", self.sides[i] * self._offset(A, B, p, q)[0]))
-        if self.wrapped:
+        out += [("wraps", g) for _i, _kind, g in self._line_watches(q)]
+        if self._winding():
+            k = self.bends[-1][1]
+            out.append(("unwraps", (-1.0) ** k * self._radius(self.wrapped[-1]) * math.sin(self._wound(q)[1])))
+        elif self.wrapped:
             out.append(("unwraps", self.bends[-1][0] * self._bend(q)[0]))
         return out
+
+    def _hold_departure(self, q) -> None:
+        """A peg is caught after a round one: the point where the string leaves the round one stays."""
+        if self._winding():
+            s, k, a_in, _ = self.bends[-1]
+            self.bends = self.bends[:-1] + ((s, k, a_in, self._wound(q)[0]),)
+
+    def _free_departure(self) -> None:
+        """The peg after a round one is left: the string leaves the round one where the free part goes."""
+        if self._winding():
+            s, k, a_in, _ = self.bends[-1]
+            self.bends = self.bends[:-1] + ((s, k, a_in, None),)
 
     def turn(self, q, v, what: str) -> str | None:
         """The change at a located crossing of a ``wraps`` or ``unwraps`` watch: the event's name,
         or None for a crossing that only turns a watch's sign (no event)."""
-        B, A = self.ends()
+        B, A = self._end("b"), self.free_from(q)
         vb1, vb2 = B.vel_xy(q, v)
         if what == "wraps":
-            free = [i for i in range(len(self.pegs)) if i not in self.wrapped]
-            i = min(free, key=lambda k: abs(self._offset(A, B, self.pegs[k], q)[0]))
+            i, kind, _g = min(self._line_watches(q), key=lambda w: abs(w[2]))
+            side, rho = self.sides[i], self._radius(i)
+            if kind != "near":          # a line passing over a round peg beyond an end: past it, or back
+                new = -0.5 * side if kind == "far" else 0.5 * side
+                self.sides = self.sides[:i] + (new,) + self.sides[i + 1:]
+                return None
             _, place = self._offset(A, B, self.pegs[i], q)
-            self.sides = self.sides[:i] + (-self.sides[i],) + self.sides[i + 1:]
             if self.slack or not 0.0 < place < 1.0:
-                return None                 # the line passed the peg beyond an end (or slack): its side only
+                # the line passed the peg beyond an end (or slack): its side only (over a round one: its far edge next)
+                new = 2.0 * side if rho else -side
+                self.sides = self.sides[:i] + (new,) + self.sides[i + 1:]
+                return None
+            if rho:
+                self._catch_round(i, q, A, B, place)
+                return "wraps"
+            self.sides = self.sides[:i] + (-side,) + self.sides[i + 1:]
             (a1, a2), (p1, p2) = A.xy(q), self.pegs[i].xy(q)
             u1, u2 = p1 - a1, p2 - a2
+            winding = self._winding()
+            self._hold_departure(q)
             self.wrapped = self.wrapped + (i,)
-            self.consts = [self.consts[0] - math.hypot(u1, u2)]
+            self.consts = [self.lengths(q)[0]] if winding else [self.consts[0] - math.hypot(u1, u2)]
             # the free part turns on about the peg the way it turned about A
             self.bends = self.bends + ((1.0 if u1 * vb2 - u2 * vb1 >= 0 else -1.0, 0),)
             return "wraps"
+        if self._winding():
+            return self._unwind(q, B)
         (sign, k), cos = self.bends[-1], self._bend(q)[1]
         if (cos > 0) == (k % 2 == 1):       # on through (k + 1)π: another half turn about the peg
             self.bends = self.bends[:-1] + ((-sign, k + 1),)
@@ -949,14 +1064,52 @@ class PeggedString(String):
             self.bends = self.bends[:-1] + ((-sign, k - 1),)
             return None
         i, P = self.wrapped[-1], self.anchor()
-        (a1, a2), (p1, p2) = self._before().xy(q), P.xy(q)
-        self.consts = [self.consts[0] + math.hypot(p1 - a1, p2 - a2)]
+        (a1, a2), (p1, p2) = self._before(q).xy(q), P.xy(q)
         self.wrapped, self.bends = self.wrapped[:-1], self.bends[:-1]
+        self._free_departure()
+        self.consts = [self.lengths(q)[0]] if self._winding() else [self.consts[0] + math.hypot(p1 - a1, p2 - a2)]
         # the peg left is on the free part's line again: its watch turns positive the way B goes,
         # d/dt (d × (p − A)) = v_B × (p − A) there
-        (a1, a2) = self.anchor().xy(q)
+        (a1, a2) = self.free_from(q).xy(q)
         rate = vb1 * (p2 - a2) - vb2 * (p1 - a1)
         self.sides = self.sides[:i] + ((1.0 if rate >= 0 else -1.0),) + self.sides[i + 1:]
+        return "unwraps"
+
+    def _catch_round(self, i: int, q, A: Point, B: Point, place: float) -> None:
+        """The free line A → B touches the round peg i at the foot T0 of its centre: it winds on
+        from there, the way that leaves it from T0 toward B."""
+        (a1, a2), (b1, b2) = A.xy(q), B.xy(q)
+        (c1, c2), rho = self.pegs[i].p, self._radius(i)
+        t1, t2 = a1 + place * (b1 - a1), a2 + place * (b2 - a2)
+        a_in = math.atan2(t2 - c2, t1 - c1)
+        psi, off = math.atan2(b2 - c2, b1 - c1), math.acos(min(1.0, rho / math.hypot(b1 - c1, b2 - c2)))
+
+        def miss(s: float) -> float:
+            return abs(math.remainder(psi - s * off - a_in, 2 * math.pi))
+        s = 1.0 if miss(1.0) <= miss(-1.0) else -1.0
+        self._hold_departure(q)
+        self.wrapped = self.wrapped + (i,)
+        self.bends = self.bends + ((s, 0, a_in, None),)
+        self.consts = [self.lengths(q)[0]]
+
+    def _unwind(self, q, B: Point) -> str | None:
+        """A half turn of β on the last wrapped peg, a round one (no event), or β back through 0:
+        the string leaves it (``unwraps``)."""
+        s, k, a_in, _ = self.bends[-1]
+        beta = self._wound(q)[1]
+        if beta - k * math.pi > 0.5 * math.pi:          # on through (k + 1)π
+            self.bends = self.bends[:-1] + ((s, k + 1, a_in, None),)
+            return None
+        if k > 0:
+            self.bends = self.bends[:-1] + ((s, k - 1, a_in, None),)
+            return None
+        i = self.wrapped[-1]
+        self.wrapped, self.bends = self.wrapped[:-1], self.bends[:-1]
+        self._free_departure()
+        self.consts = [self.lengths(q)[0]]
+        # straight again from the point before: the peg touches the free line on the side it wound
+        o = self._offset(self.free_from(q), B, self.pegs[i], q)[0]
+        self.sides = self.sides[:i] + ((1.0 if o >= 0 else -1.0),) + self.sides[i + 1:]
         return "unwraps"
 
 

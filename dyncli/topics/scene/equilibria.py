@@ -799,10 +799,10 @@ def _pulls(system, q, lam) -> str | None:
                 if side < -1e-9 * assembly.length_scale(q, system):
                     return f"{body.name!r} would be through the surface {e.surface.name!r} (its centre on the far side)"
     for i, e in enumerate(system.elements):
-        for p in getattr(e, "pegs", ()):
+        for k, p in enumerate(getattr(e, "pegs", ())):
             B, A = e.ends()
             off, place = e._offset(A, B, p, q)
-            if 0 < place < 1 and abs(off) <= 1e-9 * assembly.length_scale(q, system):
+            if 0 < place < 1 and abs(off) <= e._radius(k) + 1e-9 * assembly.length_scale(q, system):
                 return (f"the string {e.name!r} rests on its peg at [{p.p[0]:g}, {p.p[1]:g}] (small swings turn about "
                         "the peg one way and about the string's end the other: not one linear system)")
         for what, g in e.watch(system.lam_of(lam, i), q, v, 0.0):

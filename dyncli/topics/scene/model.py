@@ -179,10 +179,13 @@ class FixedPulley(StrictModel):
 
 
 class Peg(StrictModel):
-    """A fixed smooth peg (a point) that a string between two points catches when its line sweeps
-    onto it, and leaves when it swings back straight (a pendulum's string caught by a nail)."""
+    """A fixed smooth peg (a point, or a round post of ``radius``) that a string between two
+    points catches when its line sweeps onto it, and leaves when it swings back straight (a
+    pendulum's string caught by a nail; a string that winds onto a post)."""
 
-    peg: list[Annotated[float, Num(dim="length")]] = Field(description="[x1, x2]: the peg [m]")
+    peg: list[Annotated[float, Num(dim="length")]] = Field(description="[x1, x2]: the peg (its centre) [m]")
+    radius: Annotated[float, Num(ge=0, dim="length", description="its radius [m] (default 0: a point; > 0: a round "
+                                 "post the string winds onto)")] = 0.0
 
     def check(self, base: str) -> None:
         if len(self.peg) != 2:
@@ -224,7 +227,7 @@ class Joint(_OneOf):
     slider: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: translates along the surface")
     contact: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: one-sided contact, Coulomb friction; [A, B] with two bodies: their rims touch")
     rolls: Optional[list[str]] = Field(None, description="[BODY, SURFACE]: rolls without slipping")
-    cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord; [END, {peg: [x1, x2]}..., END]: a string that catches pegs")
+    cord: Optional[list[CordEntry]] = Field(None, description="[END, PULLEY..., END]: a taut inextensible cord; [END, {peg: [x1, x2]}..., END]: a string that catches pegs (points, or round posts with a radius it winds onto)")
     link: Optional[list[PointRef]] = Field(None, description="[P, Q]: a massless rigid link")
     drive: Optional[str] = Field(None, description="BODY.angle, BODY.x1 or BODY.x2: a prescribed motion")
     stop: Optional[list[PointRef]] = Field(None, description="[P, SURFACE]: a one-sided contact made only at the instant of an impact (give e); a disk or ring named alone strikes with its rim (on a line or a corner) and then rolls or slips; [A, B] with two bodies: their rims strike")

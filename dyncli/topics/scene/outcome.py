@@ -140,7 +140,9 @@ def _drawing(scene) -> dict:
                     for end in (seg.a, seg.b):
                         if end.fixed is not None:
                             pulleys.append(((float(end.fixed[0]), float(end.fixed[1])), 0.0))
-            pulleys += [((float(p.p[0]), float(p.p[1])), 0.0) for p in getattr(e, "pegs", ())]
+            pegs = getattr(e, "pegs", ())
+            radii = getattr(e, "radii", None) or [0.0] * len(pegs)
+            pulleys += [((float(p.p[0]), float(p.p[1])), float(r)) for p, r in zip(pegs, radii)]
     return {"bodies": bodies, "surfaces": [x.drawing() if hasattr(x, "drawing") else {"name": x.name, "origin": x.origin, "d": x.d, "length": x.length}
                                           for x in scene.surfaces if not getattr(x, "carried", False)],
             "carried": [_carried_drawing(x, span) for x in scene.surfaces if getattr(x, "carried", False)],

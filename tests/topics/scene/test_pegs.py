@@ -255,3 +255,153 @@ joints:
 at: [0, 1]
 find: [{max: x.bob.1, after: true}]
 """, "find.0.after", "goes with event only")
+
+
+# ---------------------------------------------------------------------------- round pegs (radius > 0)
+# The string wound on a post of radius ρ (centre C) leaves it at the tangent point T: parametrised by
+# the angle α of T about C, B = C + ρ e(α) + ℓ(α) s e'(α) with ℓ = ℓ_c − ρ s (α − α_in) (e = (cos α,
+# sin α), e' = (−sin α, cos α), s = ±1 the sense it winds), so |dB/dα| = ℓ: T = ½ m ℓ² α̇², and the
+# swing's time is ∫ ℓ dα / √(2 (E − V(α))/m) — by mpmath's quadrature, from the energy integral.
+
+
+def _round_pendulum(extra: str = "") -> dict:
+    return solve_one_text(f"""
+type: scene
+params: {{L: 1.2, th0: 40*deg}}
+bodies:
+  bob: {{shape: point, mass: 0.5, x: ["L*sin(th0)", "-L*cos(th0)"]}}
+joints:
+  string: {{cord: [[0, 0], {{peg: [0, -0.7], radius: 0.05}}, bob]}}
+at: [0, 0.5, 1, 1.5]
+t_end: 2
+{extra}
+""")
+
+
+def test_a_round_peg_caught_and_left_against_the_energy_quadrature():
+    """L = 1.2 from 40°, a post of ρ = 0.05 centred 0.7 below the pivot: caught where the string
+    is tangent to it, sin φ_c = ρ/0.7 (the quarter swing's time by quadrature), wound on its right
+    side (s = −1) down to its turning point and back, left where it was caught; T just after the
+    catch is m (v²/ℓ_c + g cos φ_c) with ℓ_c = L − √(0.7² − ρ²)."""
+    rec = _round_pendulum("find: [{event: wraps}, {event: unwraps}, {event: wraps, after: true}]")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    with mp.workdps(30):
+        g, L, rho, cy, m = G, mp.mpf("1.2"), mp.mpf("0.05"), mp.mpf("-0.7"), mp.mpf("0.5")
+        th0 = 40 * mp.pi / 180
+        phic = mp.asin(rho / -cy)
+        tc = mp.quad(lambda p: 1 / mp.sqrt(2 * g / L * (mp.cos(p) - mp.cos(th0))), [phic, th0])
+        s, lc = -1, L - mp.sqrt(cy ** 2 - rho ** 2)
+
+        def ell(a):
+            return lc - rho * s * (a - phic)
+
+        def By(a):
+            return cy + rho * mp.sin(a) + ell(a) * s * mp.cos(a)
+        vc2 = 2 * g * (-L * mp.cos(th0) + L * mp.cos(phic))
+        E = vc2 / 2 + g * By(phic)
+        turn = mp.findroot(lambda a: E - g * By(a), phic - 0.8)
+        wound = 2 * mp.quad(lambda a: ell(a) / mp.sqrt(2 * (E - g * By(a))), [turn, phic])
+        T_after = m * (vc2 / lc + g * mp.cos(phic))
+    assert [e["what"] for e in r["events"]] == ["wraps", "unwraps"]
+    near(r["find"][0]["t"], tc, 1, "the catch", TOL)
+    near(r["find"][0]["x"]["bob"][0], L * rho / -cy, 1, "caught where the string is tangent", TOL)
+    near(r["find"][1]["t"], tc + wound, 1, "left where it was caught, after the wound swing", TOL)
+    near(r["find"][2]["reaction"]["string"]["T"][0], T_after, float(m * g), "T just after the catch", TOL)
+    (E0,) = r["integrals"][:1]
+    assert E0["name"] == "E" and E0["drift"] < 1e-8
+
+
+def test_a_ball_winds_onto_a_post_in_closed_form():
+    """problems/scenes/ball-winds-onto-post.yaml: in a horizontal plane the string pulls normal
+    to the ball's velocity, so its speed stays v0 and ℓ ℓ̇ = −ρ v0 (the free part turns at v0/ℓ
+    about the point where it leaves the post, which runs at ρ v0/ℓ): ℓ² = ℓ_c² − 2 ρ v0 (t − t_c),
+    T = m v0²/ℓ, more than a turn and a half wound by t = 4 s — and asked past the end of the
+    string, the solve ends with the reason (exit 1)."""
+    from tests.topics.scene.common import gallery
+
+    rec = gallery("ball-winds-onto-post.yaml")
+    r = rec["results"]
+    m, v0, rho = 0.2, 2.0, 0.05
+    tc, lc = math.pi / 6, 1 - 0.05 * math.sqrt(3)
+    near(r["find"][0]["t"], tc, 1, "the catch", TOL)
+    for k, t in enumerate(r["t"]):
+        vx, vy = r["v"]["ball"][k][:2]
+        near(math.hypot(vx, vy), v0, v0, f"the speed at {t} s", TOL)
+        if t > tc:
+            ell = math.sqrt(lc * lc - 2 * rho * v0 * (t - tc))
+            near(r["reaction"]["string"]["T"][k][0], m * v0 * v0 / ell, 1, f"T at {t} s", TOL)
+            beta = (lc - ell) / rho
+            a = -2 * math.pi / 3 + beta
+            near(r["x"]["ball"][k][0], rho * math.cos(a) - ell * math.sin(a), 1, f"x1 at {t} s", TOL)
+            near(r["x"]["ball"][k][1], rho * math.sin(a) + ell * math.cos(a), 1, f"x2 at {t} s", TOL)
+    assert (lc - math.sqrt(lc * lc - 2 * rho * v0 * (4 - tc))) / rho > 2 * math.pi
+    from tests.conftest import PROBLEMS, solve_text
+
+    text = (PROBLEMS / "scenes" / "ball-winds-onto-post.yaml").read_text().replace("t_end: 4.5", "t_end: 5")
+    (rec,) = solve_text(text)
+    assert "reached the round peg at [0, 0]" in (rec.get("error") or ""), rec.get("error")
+
+
+def test_a_round_peg_beyond_the_bob_is_passed_over():
+    """A post whose line the string sweeps over beyond the bob (its centre 1.5 below the pivot,
+    ρ = 0.2 > 0 clear of the bob's circle) is never caught: the watch follows the line over its
+    near edge, its far edge, and back — the plain pendulum's three quarter periods."""
+    rec = pendulum("[0, -1.5], radius: 0.2", theta0="90*deg", extra="find: [{when: {x.bob.0: 0}, occurrence: 2}]")
+    r = rec["results"]
+    assert r["events"] == []
+    near(r["find"][0]["t"], 3 * quarter(1, mp.pi / 2), 1, "a plain pendulum's three quarter periods", TOL)
+    # from 5° its line never leaves the post (asin(0.2/1.5) = 7.7°): over it from t = 0, never caught
+    rec = pendulum("[0, -1.5], radius: 0.2", theta0="5*deg", extra="find: [{when: {x.bob.0: 0}, occurrence: 2}]")
+    r = rec["results"]
+    assert r["events"] == []
+    near(r["find"][0]["t"], 3 * quarter(1, mp.pi / 36), 1, "a plain pendulum's three quarter periods", TOL)
+    # a post off the vertical (its band of lines 3.6° to 19° from −e2) that the line enters, and
+    # leaves back on the side it came from, each swing from 10°
+    rec = pendulum("[0.3, -1.5], radius: 0.2", theta0="10*deg", extra="find: [{when: {x.bob.0: 0}, occurrence: 3}]")
+    r = rec["results"]
+    assert r["events"] == []
+    near(r["find"][0]["t"], 5 * quarter(1, mp.pi / 18), 1, "a plain pendulum's five quarter periods", TOL)
+
+
+@pytest.mark.parametrize("peg,field,needle", [
+    ("{peg: [0.2, -0.5], radius: 0.2}", "joints.string.cord.1", "the peg touches the string at t = 0"),
+    ("{peg: [0, 0.05], radius: 0.1}", "joints.string.cord.1", "the string's fixed end is inside the round peg"),
+    ("{peg: [0, -0.5], radius: -0.1}", "joints.string.cord.1.radius", ">= 0"),
+])
+def test_round_peg_refusals(peg, field, needle):
+    refusal(f"""
+type: scene
+bodies:
+  bob: {{shape: point, mass: 1, x: [0.5, -0.8660254]}}
+joints:
+  string: {{cord: [[0, 0], {peg}, bob]}}
+at: [0]
+""", field, needle)
+
+
+def test_a_second_round_peg_caught_from_the_first():
+    """Let go level with the pivot, the string winds on a first post and its free part catches a
+    second one: at that catch the free part — normal to the bob's velocity (the point where it
+    leaves a post runs along the string, so v_B = ℓ u̇ ⟂ u) — is tangent to both posts (each
+    centre its radius from the line); the energy is kept throughout (E = 0: its drift)."""
+    rec = solve_one_text("""
+type: scene
+bodies:
+  bob: {shape: point, mass: 1, x: [1.5, 0]}
+joints:
+  string: {cord: [[0, 0], {peg: [0, -0.5], radius: 0.05}, {peg: [-0.3, -0.8], radius: 0.04}, bob]}
+at: [0, 0.5, 1]
+t_end: 1.2
+""")
+    assert rec.get("error") is None, rec.get("error")
+    r = rec["results"]
+    assert [e["what"] for e in r["events"]] == ["wraps", "wraps"]
+    st = r["events"][1]["state"]
+    (b1, b2), (v1, v2) = st["x"]["bob"][:2], st["v"]["bob"][:2]
+    speed = math.hypot(v1, v2)
+    for (c1, c2), rho in (((0.0, -0.5), 0.05), ((-0.3, -0.8), 0.04)):
+        # the distance from the centre to the line through B along ±(−v2, v1)/|v|: |(C − B)·v̂|
+        near(abs((c1 - b1) * v1 + (c2 - b2) * v2) / speed, rho, 1, "the free part tangent to the post", TOL)
+    assert r["integrals"][0]["name"] == "E" and r["integrals"][0]["drift"] < 1e-8
+    assert all(T[0] > 0 for T in r["reaction"]["string"]["T"][1:])
