@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .elements import Element, ListRows
+from .elements import Element, ListRows, keeps_arm
 from .system import BodyPoint, Point, SurfaceData
 
 EPS = float(np.finfo(float).eps)
@@ -76,6 +76,13 @@ class Contact(ListRows):
     @property
     def rough(self) -> bool:
         return self.mu_s > 0 or self.mu_k > 0
+
+    def straight_along(self, q, N) -> bool:
+        """On a fixed straight line, affine along N when its point does not turn along it (a
+        crate's corner on the floor while the crate slides)."""
+        sf = self.surface
+        plain = not any(getattr(sf, flag, False) for flag in ("curved", "carried", "corner", "pair"))
+        return plain and type(self).gap is Contact.gap and keeps_arm(self.P, N)
 
     def phase(self):
         return (self.mode, self.sign, self.stick_at, self.holder, self.nsign)

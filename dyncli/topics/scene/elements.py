@@ -128,6 +128,15 @@ class ListRows(Element):
         return np.array(self.gamma_list(q, v, t))
 
 
+def keeps_arm(P: Point, N) -> bool:
+    """Whether the point's arm from its body's centre stays put along the motion q0 + s N: it
+    does not turn with its body, or N does not turn that body (its angle's component exactly 0:
+    a joint that holds the angle gives an exact 0).  A row that is affine in the positions at
+    fixed angles (a pin, a contact on a fixed line) is then affine along N, with a constant
+    Jacobian and no velocity-squared term."""
+    return not P.turns_with_body or N[P.body.index[2]] == 0.0
+
+
 @dataclass(kw_only=True)
 class Pin(ListRows):
     P: Point
@@ -137,6 +146,10 @@ class Pin(ListRows):
     @property
     def linear(self):
         return not (self.P.turns_with_body or self.Q.turns_with_body)
+
+    def straight_along(self, q, N) -> bool:
+        """Affine along N when neither point turns along it (a car's axles on its body)."""
+        return keeps_arm(self.P, N) and keeps_arm(self.Q, N)
 
     def phi_list(self, q, t):
         (p1, p2), (q1, q2) = self.P.xy(q), self.Q.xy(q)

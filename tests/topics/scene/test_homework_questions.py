@@ -948,3 +948,34 @@ def test_how_far_a_block_goes_is_found_where_it_stops_not_anywhere_on_its_rest()
     assert abs(stop["t"] - t_stop) <= tol * t_stop
     assert far["t"] == stop["t"], (far["t"], stop["t"])
     assert abs(far["distance"]["block"] - d) <= tol * d
+
+
+def test_a_car_on_its_axles_accelerates_in_closed_form():
+    """problems/scenes/car-accelerates.yaml: a body on two pinned, rolling wheels cannot turn, so
+    its pins at points off its centre are affine along the one free motion (their arms stay put:
+    the body's angle has no part in it) — the constant-acceleration closed form, decided from the
+    structure.  Against the hand free-body diagrams of its header (a = (T/r)/(M + 2m + 2Ī/r²), N
+    by moments about the rear contact) and against the same scene forced onto the ODE route (a
+    second formulation of the motion: the integrated equations with their multipliers)."""
+    rec = gallery("car-accelerates.yaml")
+    r = rec["results"]
+    assert r["route"] == "closed-form" and rec["method"] == "closed-form"
+    a = 2000 / 1060
+    near(r["a"]["body"][0][0], a, a, "a", 1e-13)
+    nf = (9.81 * 1250 - 0.8 * 1000 * a - 0.3 * 40 * a - 2 * 0.9 * a / 0.3) / 2.5
+    near(r["reaction"]["froll"]["N"][0], nf, nf, "N at the front wheel", 1e-13)
+    from tests.conftest import PROBLEMS, solve_text
+
+    text = (PROBLEMS / "scenes" / "car-accelerates.yaml").read_text() + "accuracy: {method: ode}\n"
+    (ode,) = solve_text(text)
+    o = ode["results"]
+    assert o["route"] == "ode"
+    for path in (("x", "body"), ("v", "body"), ("angle", "rw")):
+        for k in range(2):
+            got, want = r[path[0]][path[1]][k], o[path[0]][path[1]][k]
+            for g_, w_ in zip(got if isinstance(got, list) else [got], want if isinstance(want, list) else [want]):
+                near(g_, w_, 1, f"{path} at t[{k}]", ODE_GLOBAL * 1e-10)
+    for joint, key in (("rroll", "N"), ("froll", "F"), ("raxle", "R")):
+        got, want = r["reaction"][joint][key][1], o["reaction"][joint][key][1]
+        for g_, w_ in zip(got if isinstance(got, list) else [got], want if isinstance(want, list) else [want]):
+            near(g_, w_, 1e4, f"{joint}.{key} at 1 s", ODE_GLOBAL * 1e-10)
