@@ -705,7 +705,7 @@ class SceneSystem:
         if not rollers:
             return []
         J = self.jac(q)
-        own = set()                     # the rows of the rollers
+        own: set[int] = set()           # the rows of the rollers
         for e in rollers:
             k = self.offsets[self.elements.index(e)]
             own.update(range(k, k + e.rows))

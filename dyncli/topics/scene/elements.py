@@ -134,7 +134,7 @@ def keeps_arm(P: Point, N) -> bool:
     a joint that holds the angle gives an exact 0).  A row that is affine in the positions at
     fixed angles (a pin, a contact on a fixed line) is then affine along N, with a constant
     Jacobian and no velocity-squared term."""
-    return not P.turns_with_body or N[P.body.index[2]] == 0.0
+    return not P.turns_with_body or P.body is None or N[P.body.index[2]] == 0.0
 
 
 @dataclass(kw_only=True)
