@@ -683,6 +683,11 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
             raise InputError(f"the cord's segment {i + 1} has no straight part (its ends overlap)", path)
         u, Ta, Tb = tg
         seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u)
+        ends = (nodes[i][0], nodes[i + 1][0])
+        if ends == ("point", "pulley") and nodes[i][1].body is not None:
+            seg.pulley = ("a", centres[i + 1], rho[i + 1])
+        elif ends == ("pulley", "point") and nodes[i + 1][1].body is not None:
+            seg.pulley = ("b", centres[i], rho[i])
         run.append(seg)
         for nd in (nodes[i], nodes[i + 1]):
             guided = None
@@ -693,7 +698,7 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
             if guided is not None:
                 w = perp(u)
                 guides.append(el.Guide(f"{name}:guide", "guide", len(q), path, P=guided, w=w,
-                                       c0=float(w @ guided.pos(q))))
+                                       c0=float(w @ guided.pos(q)), segment=seg))
         if nodes[i + 1][0] == "disk":
             runs.append(run)
             run = []
@@ -704,6 +709,10 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
         string.consts = list(string.lengths(q))
         return string, []
     cord = el.Cord(name, "cord", len(q), path, runs=runs)
+    for seg in (sg for r in runs for sg in r):
+        # a rigid body's point over a fixed pulley: no guide holds it, its segment turns with it
+        if seg.pulley is not None and (seg.a if seg.pulley[0] == "a" else seg.b).point.body.rigid:
+            cord.turn(seg, q)
     cord.consts = list(cord.lengths(q))
     return cord, guides
 

@@ -67,6 +67,10 @@ def _element_hessian(el, q, w, n: int) -> np.ndarray:
         H = np.zeros((n, n))
         for r, run in enumerate(el.runs):
             for seg in run:
+                if seg.turning is not None:         # a string's from its tangent point held fixed
+                    P, T, _got = seg.anchor(q)
+                    H += w[r] * length_terms(P, T, q, n)[3]
+                    continue
                 for end, sign in ((seg.b, 1.0), (seg.a, -1.0)):
                     if end.point is not None:
                         H += sign * point_hessian(end.point, q, w[r] * seg.u, n)

@@ -724,10 +724,66 @@ class CordEnd:
 
 
 @dataclass
+class Turning:
+    """A cord segment between a fixed light pulley (centre C, signed radius ρ as
+    :func:`segment_tangents` takes it; 0: a point pulley) and a body point at its end ``end``
+    ("a" or "b") that no guide holds along it: its direction turns with the point.  Its part of
+    the cord's length is ℓ + c (α − α0): the straight part ℓ = |P − T| from the tangent point T
+    and the arc that T runs over on the pulley (α its angle about C, c = u·(e3 × (T − C)) = ±|ρ|
+    from t = 0), whose gradient is the unit vector e from T to P — so the row, γ and curvature are
+    a string's from T held fixed (T moves along the segment's own line)."""
+
+    end: str
+    C: tuple[float, float]
+    rho: float
+    c: float
+    alpha0: float
+
+    def tangent(self, P: Point, q) -> tuple[float, float, float, float, float]:
+        """(T1, T2, e1, e2, ℓ) at q: the tangent point, the unit vector from it to P, their distance."""
+        (p1, p2), (c1, c2), rho = P.xy(q), self.C, self.rho
+        if self.end == "b":             # from the pulley (a) to P: d = P − C, δ = ρ
+            d1, d2, delta = p1 - c1, p2 - c2, rho
+        else:                           # from P (a) to the pulley: d = C − P, δ = −ρ
+            d1, d2, delta = c1 - p1, c2 - p2, -rho
+        D = math.hypot(d1, d2)
+        if not D > abs(rho):
+            raise NumericalError(f"a cord's end reached its pulley at [{c1:g}, {c2:g}] (the segment has no straight "
+                                 "part left): the motion is not solved past it")
+        psi = math.atan2(d2, d1) - math.asin(delta / D)
+        u1, u2 = math.cos(psi), math.sin(psi)
+        t1, t2 = c1 - rho * u2, c2 + rho * u1           # T = C + ρ (e3 × u)
+        ell = math.sqrt(max(D * D - rho * rho, 0.0))
+        return (t1, t2, u1, u2, ell) if self.end == "b" else (t1, t2, -u1, -u2, ell)
+
+    def length(self, P: Point, q) -> float:
+        t1, t2, _e1, _e2, ell = self.tangent(P, q)
+        if not self.c:
+            return ell
+        c1, c2 = self.C
+        return ell + self.c * math.remainder(math.atan2(t2 - c2, t1 - c1) - self.alpha0, 2 * math.pi)
+
+
+@dataclass
 class Segment:
     a: CordEnd
     b: CordEnd
     u: np.ndarray                   # unit direction a -> b, kept from t = 0
+    pulley: tuple | None = None     # (the end at a point, C, ρ) when its other end is a fixed pulley
+    turning: Turning | None = None  # set when its direction turns with the point (Cord.turn)
+
+    def point(self) -> Point:
+        """The body point at its turning end."""
+        assert self.turning is not None
+        P = (self.a if self.turning.end == "a" else self.b).point
+        assert P is not None, "a turning segment ends at a point"
+        return P
+
+    def anchor(self, q) -> tuple[Point, tuple[float, float, float, float, float]]:
+        """(its point, a ground point at the tangent point held fixed, (T1, T2, e1, e2, ℓ))."""
+        P = self.point()
+        got = self.turning.tangent(P, q)         # type: ignore[union-attr]
+        return P, Point("the cord's tangent point", None, (got[0], got[1])), got
 
 
 @dataclass
@@ -751,7 +807,37 @@ class Cord(Element):
 
     @property
     def linear(self):
-        return not any(s.a.turns or s.b.turns for run in self.runs for s in run)
+        return not any(s.a.turns or s.b.turns or s.turning is not None for run in self.runs for s in run)
+
+    def straight_along(self, q, N) -> bool:
+        """Affine along N when no end turns with its body and every turning segment's point moves
+        along the segment (its tangent point stays: an end pulled straight toward its pulley)."""
+        for run in self.runs:
+            for s in run:
+                if s.a.turns or s.b.turns:
+                    return False
+                if s.turning is not None:
+                    P, _T, (_t1, _t2, e1, e2, _l) = s.anchor(q)
+                    w = P.jac(q, self.n) @ N
+                    if abs(e1 * float(w[1]) - e2 * float(w[0])) > 1e-12 * math.hypot(float(w[0]), float(w[1])):
+                        return False
+        return True
+
+    def turn(self, seg: Segment, q) -> None:
+        """Let the segment ``seg`` (its ``pulley`` set: a body point and a fixed pulley) turn with
+        its point from here on (:class:`Turning`, from its geometry at q)."""
+        assert seg.pulley is not None, "a turning segment runs between a fixed pulley and a point"
+        end, C, rho = seg.pulley
+        t = Turning(end, (float(C[0]), float(C[1])), float(rho), 0.0, 0.0)
+        P = (seg.a if end == "a" else seg.b).point
+        assert P is not None
+        t1, t2, e1, e2, _ell = t.tangent(P, q)
+        w1, w2 = t1 - t.C[0], t2 - t.C[1]
+        t.alpha0 = math.atan2(w2, w1) if rho else 0.0
+        # c = u·(e3 × (T − C)) with u from T toward P for the length's growth as T runs on: the
+        # gradient of ℓ + c α is then e (its tangential part cancels)
+        t.c = (e1 * -w2 + e2 * w1) if rho else 0.0
+        seg.turning = t
 
     def phase(self):
         return self.slack
@@ -760,23 +846,38 @@ class Cord(Element):
         self.slack = state
 
     def lengths(self, q) -> np.ndarray:
-        return np.array([sum(s.b.proj(s.u, q) - s.a.proj(s.u, q) for s in run) for run in self.runs])
+        return np.array([sum(s.turning.length(s.point(), q) if s.turning is not None
+                             else s.b.proj(s.u, q) - s.a.proj(s.u, q) for s in run) for run in self.runs])
 
     def phi(self, q, t):
         return (self.lengths(q) - np.array(self.consts))[self.taut]
 
-    def jac_list(self, q):
-        rows = []
-        for r in self.taut:
-            row = [0.0] * self.n
-            for s in self.runs[r]:
+    def _run_row(self, q, r: int) -> list:
+        row = [0.0] * self.n
+        for s in self.runs[r]:
+            if s.turning is not None:
+                P, _T, (_t1, _t2, e1, e2, _l) = s.anchor(q)
+                P.add_jac(row, q, e1, e2)
+            else:
                 s.b.add_jac(row, s.u, q, 1.0)
                 s.a.add_jac(row, s.u, q, -1.0)
-            rows.append(row)
-        return rows
+        return row
+
+    def jac_list(self, q):
+        return [self._run_row(q, r) for r in self.taut]
 
     def gamma_list(self, q, v, t):
-        return [-sum(s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v) for s in self.runs[r]) for r in self.taut]
+        out = []
+        for r in self.taut:
+            g = 0.0
+            for s in self.runs[r]:
+                if s.turning is not None:
+                    P, T, _got = s.anchor(q)
+                    g += span_gamma(P, T, q, v)
+                else:
+                    g -= s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v)
+            out.append(g)
+        return out
 
     def jac(self, q):
         return np.array(self.jac_list(q)).reshape(self.rows, self.n)
@@ -786,7 +887,7 @@ class Cord(Element):
 
     def run_rate(self, q, v, r: int) -> float:
         """d/dt of run r's length (its row's rate): negative while a slack run takes up slack."""
-        return float(sum(s.b.jac(s.u, q, self.n) - s.a.jac(s.u, q, self.n) for s in self.runs[r]) @ v)
+        return float(np.array(self._run_row(q, r)) @ v)
 
     def tensions(self, lam) -> list[float]:
         """T per run: −λ of a taut run, 0 of a slack one."""
@@ -1133,6 +1234,7 @@ class Guide(ListRows):
     P: Point
     w: np.ndarray                   # unit normal of the segment
     c0: float = 0.0
+    segment: Segment | None = None  # the cord's segment it guides along
     rows = 1
 
     def phi_list(self, q, t):

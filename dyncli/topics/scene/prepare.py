@@ -53,7 +53,7 @@ def setup(plan: build.Plan) -> Scene:
             system.elements.append(cord)
             system.refresh()
             for gd in guides:
-                if _held_otherwise(system, q, gd, warnings.append):
+                if _held_otherwise(system, q, gd, warnings.append, cord):
                     continue
                 system.elements.append(gd)
                 system.refresh()
@@ -125,12 +125,13 @@ def _carriers_placed(plan, bodies, free) -> None:
             free[b.index[2]] = False
 
 
-def _held_otherwise(system, q, guide, warn) -> bool:
+def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     """Whether another joint than a cord already holds the guided mass in some direction (a block
-    on a table tied over a pulley): the table guides it, not its segment; guided along the
-    segment too, it could not move at all.  A segment at an angle to the one path left to the
-    mass is told (``warn``): the cord keeps its segments' directions of t = 0.  A segment
-    across that path (a block on the floor that the cord will lift) still guides the mass."""
+    on a table tied over a pulley, a collar on a rod): the table guides it, not its segment;
+    guided along the segment too, it could not move at all.  Its segment, from a fixed pulley,
+    then turns with it (``cord.turn``: exact); one from a moving pulley keeps its direction of
+    t = 0, and a segment at an angle to the one path left to the mass is told (``warn``).  A
+    segment across that path (a block on the floor that the cord will lift) still guides the mass."""
     cols = list(guide.P.body.index[:2])
     ql = q.tolist()
     rows = [r for e in system.elements if e.rows and e.kind not in ("cord", "guide") for r in e.jac_list(ql)]
@@ -139,12 +140,19 @@ def _held_otherwise(system, q, guide, warn) -> bool:
     held = np.array(rows, dtype=float)[:, cols]
     if assembly.rank(held) == 0:
         return False
+    if assembly.rank(held) > 1 and cord is not None and guide.segment is not None and guide.segment.pulley is not None:
+        cord.turn(guide.segment, q)
+        system.refresh()
     if assembly.rank(held) == 1:
         k = int(np.argmax(np.abs(held).sum(axis=1)))
         path = np.array([-held[k, 1], held[k, 0]]) / math.hypot(held[k, 0], held[k, 1])
         off = abs(float(guide.w @ path))
         if off > 1.0 - 1e-9:
             return False                # a segment across the path (a block lifted off the floor): guided by it
+        if cord is not None and guide.segment is not None and guide.segment.pulley is not None:
+            cord.turn(guide.segment, q)
+            system.refresh()
+            return True
         if off > 1e-9:
             cord = guide.name.partition(":")[0]
             warn(f"the cord {cord!r} meets {guide.P.body.name!r} at {math.degrees(math.asin(min(off, 1.0))):.3g}° to "

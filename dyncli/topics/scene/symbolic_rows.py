@@ -160,6 +160,24 @@ def _signed_radius(G: Geometry, b, k: float):
     return G.radius(b) * (1 if k > 0 else -1) if abs(abs(k) - b.radius) <= 1e-12 * b.radius else exact(k)
 
 
+def _turning_length(seg, G: Geometry):
+    """A turning segment's part of its cord (elements.Turning): √(D² − ρ²) + c (ψ − ψ0), d the
+    vector from the end point to the pulley's centre (or back), ψ = angle(d) − asin(δ/D) its
+    direction (δ = ±ρ), c = ±ρ the arc's sign; √D for a point pulley."""
+    import math
+
+    t = seg.turning
+    pos, C = G.pos(seg.point()), vec(t.C)
+    d = pos - C if t.end == "b" else C - pos
+    D2 = d[0] ** 2 + d[1] ** 2
+    if not t.rho:
+        return sp.sqrt(D2)
+    delta = exact(t.rho if t.end == "b" else -t.rho)
+    psi = sp.atan2(d[1], d[0]) - sp.asin(delta / sp.sqrt(D2))
+    psi0 = t.alpha0 - math.copysign(math.pi / 2, t.rho)
+    return sp.sqrt(D2 - exact(t.rho) ** 2) + exact(t.c) * (psi - exact(psi0))
+
+
 def _cord(e, G: Geometry, S: Symbols):
     """Rows Σ u·(X_b − X_a) = const per run; λ = −T per run (a string between two points: its
     length |r_b − r_a| = const, as a link's)."""
@@ -172,6 +190,9 @@ def _cord(e, G: Geometry, S: Symbols):
     for r, run in enumerate(e.runs):
         total = sp.Integer(0)
         for seg in run:
+            if seg.turning is not None:
+                total += _turning_length(seg, G)
+                continue
             u = vec(seg.u)
             for end, sgn in ((seg.b, 1), (seg.a, -1)):
                 if end.point is not None:

@@ -159,7 +159,7 @@ def test_slider_crank_drive_couple():
 
 @pytest.mark.parametrize("name", ["double-pendulum.yaml", "cart-pendulum.yaml", "yo-yo.yaml", "falling-rod.yaml",
                                   "pulled-spool.yaml", "incline-pulley-slides.yaml", "block-on-wedge.yaml",
-                                  "drum-on-plank.yaml"])
+                                  "drum-on-plank.yaml", "collar-pulled-up-rod.yaml"])
 def test_reduced_equations_match_the_engine(name):
     """Any scene: the reduced equations give the engine's accelerations at t = 0 (a second
     formulation: the engine solves the full system with the multipliers)."""
@@ -220,6 +220,41 @@ def test_collar_on_a_spun_rough_rod():
     k = D.independent[[names[j] for j in D.independent].index("x.collar.0")]
     (got,) = sp.solve((eq.lhs - eq.rhs).subs(sub), D.C.qdd[k])
     assert float(got) == pytest.approx((rdd - w * w * r) * c - 2 * w * rd * sn, rel=1e-12)
+
+
+def test_a_cord_segment_turning_over_a_round_pulley():
+    """A segment from a pulley of radius 0.1 to a block on a table below its level turns with the
+    block (√(D² − ρ²) + c (ψ − ψ0), the arc included): the reduced equation gives the engine's
+    acceleration at a state away from the start (the segment steeper, the block moving)."""
+    from dyncli.loader import split_problems, validate
+    from tests.conftest import ROOT
+
+    text = """
+type: scene
+surfaces:
+  table: {through: [-5, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 2, x: [-2, 0]}
+  B: {shape: point, mass: 1, x: [0.1, -1]}
+joints:
+  on: {contact: [A, table]}
+  rope: {cord: [A, {pulley: [0, 0.1], radius: 0.1}, B]}
+at: [0]
+"""
+    (lp,), _ = split_problems("t.yaml", text.encode(), ROOT)
+    validate(lp)
+    scene = prepare.setup(solver._plan(lp.model))
+    D = derive(scene, {})
+    q, v = scene.q0.copy(), scene.v0.copy()
+    names = scene.system.names
+    q[names.index("x.A.0")] = -0.6                      # A moved on: the rope's other end placed by the cord
+    q = scene.system.project_position(q, 0.0)
+    v[names.index("x.A.0")] = 1.5
+    v = scene.system.project_velocity(q, v, 0.0)
+    a, _lam, _ = scene.system.solve(q, v, 0.0)
+    got = _sdd(D, _values(D, scene, q, v))
+    want = [a[j] for j in D.independent]
+    assert np.allclose(got, want, rtol=1e-9, atol=1e-12), (got, want)
 
 
 def test_cli_text_and_latex():
