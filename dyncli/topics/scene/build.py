@@ -711,8 +711,9 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
     cord = el.Cord(name, "cord", len(q), path, runs=runs)
     for seg in (sg for r in runs for sg in r):
         # a rigid body's point over a fixed pulley: no guide holds it, its segment turns with it
-        if seg.pulley is not None and (seg.a if seg.pulley[0] == "a" else seg.b).point.body.rigid:
-            cord.turn(seg, q)
+        P = None if seg.pulley is None else (seg.a if seg.pulley[0] == "a" else seg.b).point
+        if P is not None and P.body is not None and P.body.rigid:
+            cord.let_turn(seg, q)
     cord.consts = list(cord.lengths(q))
     return cord, guides
 

@@ -770,7 +770,7 @@ class Segment:
     b: CordEnd
     u: np.ndarray                   # unit direction a -> b, kept from t = 0
     pulley: tuple | None = None     # (the end at a point, C, ρ) when its other end is a fixed pulley
-    turning: Turning | None = None  # set when its direction turns with the point (Cord.turn)
+    turning: Turning | None = None  # set when its direction turns with the point (Cord.let_turn)
 
     def point(self) -> Point:
         """The body point at its turning end."""
@@ -779,7 +779,7 @@ class Segment:
         assert P is not None, "a turning segment ends at a point"
         return P
 
-    def anchor(self, q) -> tuple[Point, tuple[float, float, float, float, float]]:
+    def anchor(self, q) -> tuple[Point, Point, tuple[float, float, float, float, float]]:
         """(its point, a ground point at the tangent point held fixed, (T1, T2, e1, e2, ℓ))."""
         P = self.point()
         got = self.turning.tangent(P, q)         # type: ignore[union-attr]
@@ -823,7 +823,7 @@ class Cord(Element):
                         return False
         return True
 
-    def turn(self, seg: Segment, q) -> None:
+    def let_turn(self, seg: Segment, q) -> None:
         """Let the segment ``seg`` (its ``pulley`` set: a body point and a fixed pulley) turn with
         its point from here on (:class:`Turning`, from its geometry at q)."""
         assert seg.pulley is not None, "a turning segment runs between a fixed pulley and a point"

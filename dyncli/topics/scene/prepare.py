@@ -129,7 +129,7 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     """Whether another joint than a cord already holds the guided mass in some direction (a block
     on a table tied over a pulley, a collar on a rod): the table guides it, not its segment;
     guided along the segment too, it could not move at all.  Its segment, from a fixed pulley,
-    then turns with it (``cord.turn``: exact); one from a moving pulley keeps its direction of
+    then turns with it (``cord.let_turn``: exact); one from a moving pulley keeps its direction of
     t = 0, and a segment at an angle to the one path left to the mass is told (``warn``).  A
     segment across that path (a block on the floor that the cord will lift) still guides the mass."""
     cols = list(guide.P.body.index[:2])
@@ -141,7 +141,7 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     if assembly.rank(held) == 0:
         return False
     if assembly.rank(held) > 1 and cord is not None and guide.segment is not None and guide.segment.pulley is not None:
-        cord.turn(guide.segment, q)
+        cord.let_turn(guide.segment, q)
         system.refresh()
     if assembly.rank(held) == 1:
         k = int(np.argmax(np.abs(held).sum(axis=1)))
@@ -150,7 +150,7 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
         if off > 1.0 - 1e-9:
             return False                # a segment across the path (a block lifted off the floor): guided by it
         if cord is not None and guide.segment is not None and guide.segment.pulley is not None:
-            cord.turn(guide.segment, q)
+            cord.let_turn(guide.segment, q)
             system.refresh()
             return True
         if off > 1e-9:
