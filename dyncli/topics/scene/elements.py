@@ -781,8 +781,9 @@ class Segment:
 
     def anchor(self, q) -> tuple[Point, Point, tuple[float, float, float, float, float]]:
         """(its point, a ground point at the tangent point held fixed, (T1, T2, e1, e2, ℓ))."""
-        P = self.point()
-        got = self.turning.tangent(P, q)         # type: ignore[union-attr]
+        P, t = self.point(), self.turning
+        assert t is not None, "only a turning segment has an anchor"
+        got = t.tangent(P, q)
         return P, Point("the cord's tangent point", None, (got[0], got[1])), got
 
 
