@@ -89,7 +89,27 @@ def setup(plan: build.Plan) -> Scene:
     coords = [names[i] for i in assembly.independent(J, n)]
     _refuse_at_start(system, q, v)
     _guided_aside(system, q, v, warnings.append)
+    _kept_across(system, q, warnings.append)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
+
+
+def _kept_across(system, q, warn) -> None:
+    """Tell of a cord segment that keeps its direction of t = 0 (one from a disk body: a moving
+    or massive pulley) while a rigid body's point at its end can move across it (a rod tied over
+    a massive pulley): the segment does not turn with the point, exact only while the point moves
+    along it."""
+    kept = [(cord, end.point, s.u) for cord in system.elements if cord.kind == "cord" and hasattr(cord, "runs")
+            for run in cord.runs for s in run if s.turning is None for end in (s.a, s.b)
+            if end.point is not None and end.point.body is not None and end.point.body.rigid]
+    if not kept:
+        return
+    free = assembly.motions(system.jac(q), system.n)
+    for cord, P, u in kept:
+        w = P.jac(q, system.n) @ free.T                  # the point's velocities the joints allow
+        across = np.abs(u[0] * w[1] - u[1] * w[0])
+        if float(np.max(across, initial=0.0)) > 1e-9 * max(float(np.max(np.abs(w), initial=0.0)), 1e-300):
+            warn(f"the cord {cord.name!r} keeps its segment to {P.label} at its direction of t = 0 (its other end is "
+                 "a disk body), while that point can move across it: exact only while it moves along the segment")
 
 
 def _freedom_rows(system, q):

@@ -186,3 +186,26 @@ def test_the_collar_pulled_up_a_rod_gallery_file():
     near(f1["t"], t_top, 1, "the time to the top", TOL)
     near(f2["x"]["collar"][1], fast, 1, "where it is fastest", TOL)
     near(f2["v"]["collar"][1], mp.sqrt(v2(fast)), 1, "its top speed", TOL)
+
+
+def test_a_segment_from_a_disk_body_to_a_turning_point_is_told():
+    """Over a massive pulley (a disk body on its axle) the segment to the rod's end keeps its
+    direction of t = 0 — exact only while the end moves along it — and a warning says so; over a
+    light fixed pulley it turns and nothing is said."""
+    text = """
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
+  W: {shape: point, mass: 3, x: [2.1, 0.5]}
+%s
+joints:
+  hinge: {pin: [rod.end1, ground]}
+%s
+  rope: {cord: [rod.end2, %s, W]}
+at: [0, 0.3]
+"""
+    disk = solve_one_text(text % ("  P: {shape: disk, mass: 1, radius: 0.1, x: [2, 1.5], angle: 0}",
+                                  "  axle: {pin: [P, ground]}", "P"))
+    assert any("keeps its segment to rod.end2 at its direction of t = 0" in w for w in disk["warnings"]), disk["warnings"]
+    light = solve_one_text(text % ("", "", "{pulley: [2, 1.5], radius: 0.1}"))
+    assert light["warnings"] == [], light["warnings"]
