@@ -99,8 +99,9 @@ def _kept_across(system, q, warn) -> None:
     a massive pulley): the segment does not turn with the point, exact only while the point moves
     along it."""
     kept = [(cord, end.point, s.u) for cord in system.elements if cord.kind == "cord" and hasattr(cord, "runs")
-            for run in cord.runs for s in run if s.turning is None for end in (s.a, s.b)
-            if end.point is not None and end.point.body is not None and end.point.body.rigid]
+            for run in cord.runs for s in run if s.turning is None
+            for end, other in ((s.a, s.b), (s.b, s.a)) if other.centre is not None
+            and end.point is not None and end.point.body is not None and end.point.body.rigid]
     if not kept:
         return
     free = assembly.motions(system.jac(q), system.n)

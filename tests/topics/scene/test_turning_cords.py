@@ -209,3 +209,13 @@ at: [0, 0.3]
     assert any("keeps its segment to rod.end2 at its direction of t = 0" in w for w in disk["warnings"]), disk["warnings"]
     light = solve_one_text(text % ("", "", "{pulley: [2, 1.5], radius: 0.1}"))
     assert light["warnings"] == [], light["warnings"]
+    # a rod hung from a string (no pulley): the string turns with its end by itself
+    hung = solve_one_text("""
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "-60*deg", x: ["0.3 + 0.5*cos(60*deg)", "-1 - 0.5*sin(60*deg)"]}
+joints:
+  s: {cord: [[0, 0], rod.end1]}
+at: [0, 0.3]
+""")
+    assert hung["warnings"] == [], hung["warnings"]
