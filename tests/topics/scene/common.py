@@ -18,6 +18,21 @@ joints:
   lower: {link: [A, B], length: L2}
 """
 
+#: a block A (2 kg) on a smooth table at x = (the first %s), tied over a light pulley of radius 0.1
+#: centred at (0, the second %s) to B (1 kg) hanging below its right side; ``at`` the third
+TABLE_PULLEY = """
+type: scene
+surfaces:
+  table: {through: [-5, 0], direction: [1, 0]}
+bodies:
+  A: {shape: point, mass: 2, x: [%s, 0]}
+  B: {shape: point, mass: 1, x: [0.1, -1]}
+joints:
+  on: {contact: [A, table]}
+  rope: {cord: [A, {pulley: [0, %s], radius: 0.1}, B]}
+at: %s
+"""
+
 
 @functools.lru_cache(maxsize=None)
 def gallery(name: str) -> dict:

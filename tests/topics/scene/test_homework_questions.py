@@ -19,7 +19,7 @@ import mpmath as mp
 
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
-from tests.topics.scene.common import gallery
+from tests.topics.scene.common import TABLE_PULLEY, gallery
 from tests.topics.scene.test_refusals import refusal
 from tests.topics.scene.test_start import near
 
@@ -155,18 +155,7 @@ def test_a_block_on_a_table_tied_over_a_pulley_above_its_level_starts_as_the_han
     # (tests/topics/scene/test_turning_cords.py follows it).  From rest B falls cos φ as fast as A
     # slides: m_A a = T cos φ, m_B cos φ a = m_B g − T, so a = m_B g cos φ / (m_A + m_B cos² φ),
     # and N = m_A g − T sin φ (16.7); nothing to warn about
-    rec = solve_one_text("""
-type: scene
-surfaces:
-  table: {through: [-5, 0], direction: [1, 0]}
-bodies:
-  A: {shape: point, mass: 2, x: [-2, 0]}
-  B: {shape: point, mass: 1, x: [0.1, -1]}
-joints:
-  on: {contact: [A, table]}
-  rope: {cord: [A, {pulley: [0, 0.1], radius: 0.1}, B]}
-at: [0]
-""")
+    rec = solve_one_text(TABLE_PULLEY % ("-2", "0.1", "[0]"))
     r = rec["results"]
     d = mp.sqrt(mp.mpf(2) ** 2 + mp.mpf("0.1") ** 2)
     phi = mp.atan2(mp.mpf("0.1"), 2) + mp.asin(mp.mpf("0.1") / d)     # to the centre, then to the tangent

@@ -228,19 +228,9 @@ def test_a_cord_segment_turning_over_a_round_pulley():
     acceleration at a state away from the start (the segment steeper, the block moving)."""
     from dyncli.loader import split_problems, validate
     from tests.conftest import ROOT
+    from tests.topics.scene.common import TABLE_PULLEY
 
-    text = """
-type: scene
-surfaces:
-  table: {through: [-5, 0], direction: [1, 0]}
-bodies:
-  A: {shape: point, mass: 2, x: [-2, 0]}
-  B: {shape: point, mass: 1, x: [0.1, -1]}
-joints:
-  on: {contact: [A, table]}
-  rope: {cord: [A, {pulley: [0, 0.1], radius: 0.1}, B]}
-at: [0]
-"""
+    text = TABLE_PULLEY % ("-2", "0.1", "[0]")
     (lp,), _ = split_problems("t.yaml", text.encode(), ROOT)
     validate(lp)
     scene = prepare.setup(solver._plan(lp.model))

@@ -21,12 +21,28 @@ import pytest
 
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
+from tests.topics.scene.common import TABLE_PULLEY
 from tests.topics.scene.test_start import near
 
 sp = pytest.importorskip("sympy")
 
 G = 9.81
 TOL = ODE_GLOBAL * 1e-10
+
+
+#: a uniform rod (2 kg, 1 m) hinged at the origin at 30°, its end tied by a cable over a pulley
+#: (the third %s) to a 3 kg weight hanging on the far side; the first %s more bodies, the second more joints
+ROD_CABLE = """
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
+  W: {shape: point, mass: 3, x: [2.1, 0.5]}
+%s
+joints:
+  hinge: {pin: [rod.end1, ground]}
+%s
+  rope: {cord: [rod.end2, %s, W]}
+"""
 
 
 def lagrange(s, P, C, rho, over, body_T, body_V, mW, s0, times):
@@ -62,16 +78,7 @@ def test_a_rod_raised_by_a_cable_over_a_pulley():
     pulley (centre (2, 1.5), radius 0.1) to a 3 kg weight hanging on the far side: the cable's
     segment to the rod turns as the rod does.  Before, it kept its direction of t = 0 (0.49143
     rad at 0.3 s against 0.49638 here, without a warning)."""
-    rec = solve_one_text("""
-type: scene
-bodies:
-  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
-  W: {shape: point, mass: 3, x: [2.1, 0.5]}
-joints:
-  hinge: {pin: [rod.end1, ground]}
-  rope: {cord: [rod.end2, {pulley: [2, 1.5], radius: 0.1}, W]}
-at: [0, 0.3, 0.6]
-""")
+    rec = solve_one_text(ROD_CABLE % ("", "", "{pulley: [2, 1.5], radius: 0.1}") + "at: [0, 0.3, 0.6]\n")
     assert rec.get("error") is None and rec["warnings"] == [], (rec.get("error"), rec["warnings"])
     r = rec["results"]
     th = sp.Symbol("th")
@@ -88,18 +95,7 @@ def test_a_block_on_a_table_tied_over_a_pulley_above_its_level():
     """A (2 kg) on a smooth table at x = −2, tied over a pulley of radius 0.1 at (0, 0.1) to B (1 kg)
     hanging 0.1 to its right: the segment to A steepens as A nears the pulley (5.72° at the start),
     the cord's pull on A grows a vertical part and the table's N drops."""
-    rec = solve_one_text("""
-type: scene
-surfaces:
-  table: {through: [-5, 0], direction: [1, 0]}
-bodies:
-  A: {shape: point, mass: 2, x: [-2, 0]}
-  B: {shape: point, mass: 1, x: [0.1, -1]}
-joints:
-  on: {contact: [A, table]}
-  rope: {cord: [A, {pulley: [0, 0.1], radius: 0.1}, B]}
-at: [0, 0.5, 1]
-""")
+    rec = solve_one_text(TABLE_PULLEY % ("-2", "0.1", "[0, 0.5, 1]"))
     assert rec.get("error") is None and rec["warnings"] == [], (rec.get("error"), rec["warnings"])
     r = rec["results"]
     x = sp.Symbol("x")
@@ -121,18 +117,7 @@ def test_a_segment_pulled_straight_at_its_pulley_keeps_the_closed_form():
     """The block's pulley at its own level: the segment runs along the block's path, so it keeps
     its direction as it shortens (affine along the motion) and the closed form stays:
     a = m_B g/(m_A + m_B)."""
-    rec = solve_one_text("""
-type: scene
-surfaces:
-  table: {through: [-5, 0], direction: [1, 0]}
-bodies:
-  A: {shape: point, mass: 2, x: [-2, 0]}
-  B: {shape: point, mass: 1, x: [0.1, -1]}
-joints:
-  on: {contact: [A, table]}
-  rope: {cord: [A, {pulley: [0, -0.1], radius: 0.1}, B]}
-at: [0, 1]
-""")
+    rec = solve_one_text(TABLE_PULLEY % ("-2", "-0.1", "[0, 1]"))
     r = rec["results"]
     assert r["route"] == "closed-form", r["route"]
     near(r["a"]["A"][1][0], G / 3, G, "a", 1e-13)
@@ -192,18 +177,7 @@ def test_a_segment_from_a_disk_body_to_a_turning_point_is_told():
     """Over a massive pulley (a disk body on its axle) the segment to the rod's end keeps its
     direction of t = 0 — exact only while the end moves along it — and a warning says so; over a
     light fixed pulley it turns and nothing is said."""
-    text = """
-type: scene
-bodies:
-  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
-  W: {shape: point, mass: 3, x: [2.1, 0.5]}
-%s
-joints:
-  hinge: {pin: [rod.end1, ground]}
-%s
-  rope: {cord: [rod.end2, %s, W]}
-at: [0, 0.3]
-"""
+    text = ROD_CABLE + "at: [0, 0.3]\n"
     disk = solve_one_text(text % ("  P: {shape: disk, mass: 1, radius: 0.1, x: [2, 1.5], angle: 0}",
                                   "  axle: {pin: [P, ground]}", "P"))
     assert any("keeps its segment to rod.end2 at its direction of t = 0" in w for w in disk["warnings"]), disk["warnings"]
