@@ -684,10 +684,10 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
         u, Ta, Tb = tg
         seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u)
         ends = (nodes[i][0], nodes[i + 1][0])
-        if ends == ("point", "pulley") and nodes[i][1].body is not None:
-            seg.pulley = ("a", centres[i + 1], rho[i + 1])
-        elif ends == ("pulley", "point") and nodes[i + 1][1].body is not None:
-            seg.pulley = ("b", centres[i], rho[i])
+        if ends in (("point", "pulley"), ("point", "disk")) and nodes[i][1].body is not None:
+            seg.pulley = ("a", centres[i + 1], rho[i + 1], nodes[i + 1][1] if ends[1] == "disk" else None)
+        elif ends in (("pulley", "point"), ("disk", "point")) and nodes[i + 1][1].body is not None:
+            seg.pulley = ("b", centres[i], rho[i], nodes[i][1] if ends[0] == "disk" else None)
         run.append(seg)
         for nd in (nodes[i], nodes[i + 1]):
             guided = None
@@ -712,8 +712,8 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
     for seg in (sg for r in runs for sg in r):
         # a rigid body's point over a fixed pulley: no guide holds it, its segment turns with it
         P = None if seg.pulley is None else (seg.a if seg.pulley[0] == "a" else seg.b).point
-        if P is not None and P.body is not None and P.body.rigid:
-            cord.let_turn(seg, q)
+        if P is not None and P.body is not None and P.body.rigid and seg.pulley[3] is None:
+            cord.let_turn(seg, q)       # (over a disk body: once its axle is known fixed, prepare.py)
     cord.consts = list(cord.lengths(q))
     return cord, guides
 

@@ -738,6 +738,8 @@ class Turning:
     rho: float
     c: float
     alpha0: float
+    angle: int | None = None        # a disk body's angle index (the pulley a disk on a fixed axle)
+    theta0: float = 0.0             # its angle at t = 0
 
     def tangent(self, P: Point, q) -> tuple[float, float, float, float, float]:
         """(T1, T2, e1, e2, ℓ) at q: the tangent point, the unit vector from it to P, their distance."""
@@ -757,11 +759,16 @@ class Turning:
         return (t1, t2, u1, u2, ell) if self.end == "b" else (t1, t2, -u1, -u2, ell)
 
     def length(self, P: Point, q) -> float:
+        """ℓ + c (α − α0), less c (θ − θ0) on a disk that turns (the arc from the tangent point to
+        the disk's material point where the cord leaves it: no slip)."""
         t1, t2, _e1, _e2, ell = self.tangent(P, q)
         if not self.c:
             return ell
         c1, c2 = self.C
-        return ell + self.c * math.remainder(math.atan2(t2 - c2, t1 - c1) - self.alpha0, 2 * math.pi)
+        out = ell + self.c * math.remainder(math.atan2(t2 - c2, t1 - c1) - self.alpha0, 2 * math.pi)
+        if self.angle is not None:
+            out -= self.c * (float(q[self.angle]) - self.theta0)
+        return out
 
 
 @dataclass
@@ -769,7 +776,7 @@ class Segment:
     a: CordEnd
     b: CordEnd
     u: np.ndarray                   # unit direction a -> b, kept from t = 0
-    pulley: tuple | None = None     # (the end at a point, C, ρ) when its other end is a fixed pulley
+    pulley: tuple | None = None     # (the end at a point, C, ρ, the disk body or None) when its other end is a pulley
     turning: Turning | None = None  # set when its direction turns with the point (Cord.let_turn)
 
     def point(self) -> Point:
@@ -827,8 +834,8 @@ class Cord(Element):
     def let_turn(self, seg: Segment, q) -> None:
         """Let the segment ``seg`` (its ``pulley`` set: a body point and a fixed pulley) turn with
         its point from here on (:class:`Turning`, from its geometry at q)."""
-        assert seg.pulley is not None, "a turning segment runs between a fixed pulley and a point"
-        end, C, rho = seg.pulley
+        assert seg.pulley is not None, "a turning segment runs between a pulley and a point"
+        end, C, rho, disk = seg.pulley
         t = Turning(end, (float(C[0]), float(C[1])), float(rho), 0.0, 0.0)
         P = (seg.a if end == "a" else seg.b).point
         assert P is not None
@@ -838,7 +845,13 @@ class Cord(Element):
         # c = u·(e3 × (T − C)) with u from T toward P for the length's growth as T runs on: the
         # gradient of ℓ + c α is then e (its tangential part cancels)
         t.c = (e1 * -w2 + e2 * w1) if rho else 0.0
+        if disk is not None:            # a disk on a fixed axle: the cord goes round with it
+            t.angle = disk.index[2]
+            t.theta0 = float(q[t.angle])
+        before = self.lengths(q) if self.consts else None
         seg.turning = t
+        if before is not None:          # the held lengths, now measured the turning way
+            self.consts = [c + a - b for c, a, b in zip(self.consts, self.lengths(q), before)]
 
     def phase(self):
         return self.slack
@@ -859,6 +872,8 @@ class Cord(Element):
             if s.turning is not None:
                 P, _T, (_t1, _t2, e1, e2, _l) = s.anchor(q)
                 P.add_jac(row, q, e1, e2)
+                if s.turning.angle is not None:
+                    row[s.turning.angle] -= s.turning.c
             else:
                 s.b.add_jac(row, s.u, q, 1.0)
                 s.a.add_jac(row, s.u, q, -1.0)

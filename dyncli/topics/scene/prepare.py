@@ -93,24 +93,38 @@ def setup(plan: build.Plan) -> Scene:
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
+def _axle_fixed(system, q, disk) -> bool:
+    """Whether the disk body's centre cannot move (a massive pulley on a fixed axle); True for no
+    disk (a light fixed pulley)."""
+    if disk is None:
+        return True
+    free = assembly.motions(system.jac(q), system.n)
+    return float(np.max(np.abs(free[:, list(disk.index[:2])]), initial=0.0)) <= 1e-12
+
+
 def _kept_across(system, q, warn) -> None:
-    """Tell of a cord segment that keeps its direction of t = 0 (one from a disk body: a moving
-    or massive pulley) while a rigid body's point at its end can move across it (a rod tied over
-    a massive pulley): the segment does not turn with the point, exact only while the point moves
-    along it."""
-    kept = [(cord, end.point, s.u) for cord in system.elements if cord.kind == "cord" and hasattr(cord, "runs")
+    """A cord segment from a disk body to a rigid body's point (a rod tied over a massive pulley):
+    on a fixed axle it turns with the point (``Cord.let_turn``, the disk's turn in its length);
+    from a disk that moves it keeps its direction of t = 0, told where the point can move across
+    it (exact only while the point moves along the segment)."""
+    kept = [(cord, s, end.point) for cord in system.elements if cord.kind == "cord" and hasattr(cord, "runs")
             for run in cord.runs for s in run if s.turning is None
             for end, other in ((s.a, s.b), (s.b, s.a)) if other.centre is not None
             and end.point is not None and end.point.body is not None and end.point.body.rigid]
     if not kept:
         return
     free = assembly.motions(system.jac(q), system.n)
-    for cord, P, u in kept:
+    for cord, seg, P in kept:
+        if seg.pulley is not None and _axle_fixed(system, q, seg.pulley[3]):
+            cord.let_turn(seg, q)
+            continue
+        u = seg.u
         w = P.jac(q, system.n) @ free.T                  # the point's velocities the joints allow
         across = np.abs(u[0] * w[1] - u[1] * w[0])
         if float(np.max(across, initial=0.0)) > 1e-9 * max(float(np.max(np.abs(w), initial=0.0)), 1e-300):
             warn(f"the cord {cord.name!r} keeps its segment to {P.label} at its direction of t = 0 (its other end is "
-                 "a disk body), while that point can move across it: exact only while it moves along the segment")
+                 "a disk body that moves), while that point can move across it: exact only while it moves along "
+                 "the segment")
 
 
 def _freedom_rows(system, q):
@@ -161,7 +175,9 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     held = np.array(rows, dtype=float)[:, cols]
     if assembly.rank(held) == 0:
         return False
-    if assembly.rank(held) > 1 and cord is not None and guide.segment is not None and guide.segment.pulley is not None:
+    turnable = cord is not None and guide.segment is not None and guide.segment.pulley is not None \
+        and _axle_fixed(system, q, guide.segment.pulley[3])
+    if assembly.rank(held) > 1 and turnable:
         cord.let_turn(guide.segment, q)
         system.refresh()
     if assembly.rank(held) == 1:
@@ -170,7 +186,7 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
         off = abs(float(guide.w @ path))
         if off > 1.0 - 1e-9:
             return False                # a segment across the path (a block lifted off the floor): guided by it
-        if cord is not None and guide.segment is not None and guide.segment.pulley is not None:
+        if turnable:
             cord.let_turn(guide.segment, q)
             system.refresh()
             return True

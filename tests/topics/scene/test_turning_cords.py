@@ -45,11 +45,13 @@ joints:
 """
 
 
-def lagrange(s, P, C, rho, over, body_T, body_V, mW, s0, times):
+def lagrange(s, P, C, rho, over, body_T, body_V, mW, s0, times, spin=0):
     """(s, ṡ, y_W − y_W0, the tension) at ``times`` from rest at s0: P (sympy pair in s), the pulley
     (C, ρ), ``over`` = ±1 the side the cord leaves the pulley toward P (+1: the tangent point at
     the angle of P − C less arccos(ρ/|P − C|)), body_T = its kinetic coefficient (T = ½ body_T ṡ²),
-    body_V its potential; the counterweight mW hangs from the pulley's other side."""
+    body_V its potential; the counterweight mW hangs from the pulley's other side; ``spin`` the
+    pulley's Ī/ρ² when it is a disk on a fixed axle (the cord does not slip on it: it turns at
+    the counterweight's speed over ρ)."""
     from scipy.integrate import solve_ivp
 
     dx, dy = P[0] - C[0], P[1] - C[1]
@@ -57,9 +59,9 @@ def lagrange(s, P, C, rho, over, body_T, body_V, mW, s0, times):
     f = sp.sqrt(d ** 2 - rho ** 2) + rho * (sp.atan2(dy, dx) - over * sp.acos(rho / d)) * over
     y = f - f.subs(s, s0)                           # the counterweight falls as the cord's part shortens
     yp, ypp = sp.diff(y, s), sp.diff(y, s, 2)
-    a_T = body_T + mW * yp ** 2
+    a_T = body_T + (mW + spin) * yp ** 2
     sd = sp.Symbol("sd")
-    acc = -(sp.diff(body_V + mW * G * y, s) + (sp.diff(body_T, s) / 2 + mW * yp * ypp) * sd ** 2) / a_T
+    acc = -(sp.diff(body_V + mW * G * y, s) + (sp.diff(body_T, s) / 2 + (mW + spin) * yp * ypp) * sd ** 2) / a_T
     fa = sp.lambdify((s, sd), acc, "math")
     fy, fyp, fypp = (sp.lambdify(s, e, "math") for e in (y, yp, ypp))
     sol = solve_ivp(lambda t, z: [z[1], fa(z[0], z[1])], (0, max(times)), [s0, 0.0], method="DOP853",
@@ -89,6 +91,29 @@ def test_a_rod_raised_by_a_cable_over_a_pulley():
         near(r["omega"]["rod"][k][2], sdv, 1, f"ω at t[{k}]", TOL)
         near(r["x"]["W"][k][1], 0.5 + yw, 1, f"the weight's height at t[{k}]", TOL)
         near(r["reaction"]["rope"]["T"][k][0], T, 30, f"the tension at t[{k}]", TOL)
+
+
+def test_a_rod_raised_by_a_cable_over_a_massive_pulley_on_a_fixed_axle():
+    """The same rod and weight over a disk pulley (1 kg, radius 0.1) pinned on a fixed axle: the
+    segment to the rod turns with it, the cord does not slip on the disk (its length from the
+    tangent point to the disk's material point less the disk's turn), so the weight rises R φ and
+    the disk's Ī/R² adds to the weight's inertia; the two tensions differ by Ī φ̈/R.  Before, this
+    segment kept its direction of t = 0 without a warning."""
+    rec = solve_one_text(ROD_CABLE % ("  P: {shape: disk, mass: 1, radius: 0.1, x: [2, 1.5], angle: 0}",
+                                      "  axle: {pin: [P, ground]}", "P") + "at: [0, 0.3, 0.6]\n")
+    assert rec.get("error") is None and rec["warnings"] == [], (rec.get("error"), rec["warnings"])
+    r = rec["results"]
+    th = sp.Symbol("th")
+    ref = lagrange(th, (sp.cos(th), sp.sin(th)), (2, sp.Rational(3, 2)), sp.Rational(1, 10), 1,
+                   sp.Rational(2, 3), 2 * G * sp.sin(th) / 2, 3, math.pi / 6, [0, 0.3, 0.6], spin=sp.Rational(1, 2))
+    for k, (sv, _sdv, yw, T) in enumerate(ref):
+        near(r["angle"]["rod"][k], sv, 1, f"θ at t[{k}]", TOL)
+        near(r["x"]["W"][k][1], 0.5 + yw, 1, f"the weight's height at t[{k}]", TOL)
+        near(r["angle"]["P"][k], yw / 0.1, 1, f"the disk's turn at t[{k}]", TOL)
+        near(r["reaction"]["rope"]["T"][k][1], T, 30, f"the weight's tension at t[{k}]", TOL)
+        phidd = r["alpha"]["P"][k][2]
+        near(abs(r["reaction"]["rope"]["T"][k][0] - T), 0.005 * abs(phidd) / 0.1, 30, f"the disk's torque at t[{k}]",
+             TOL)
 
 
 def test_a_block_on_a_table_tied_over_a_pulley_above_its_level():
@@ -173,14 +198,23 @@ def test_the_collar_pulled_up_a_rod_gallery_file():
     near(f2["v"]["collar"][1], mp.sqrt(v2(fast)), 1, "its top speed", TOL)
 
 
-def test_a_segment_from_a_disk_body_to_a_turning_point_is_told():
-    """Over a massive pulley (a disk body on its axle) the segment to the rod's end keeps its
-    direction of t = 0 — exact only while the end moves along it — and a warning says so; over a
-    light fixed pulley it turns and nothing is said."""
-    text = ROD_CABLE + "at: [0, 0.3]\n"
-    disk = solve_one_text(text % ("  P: {shape: disk, mass: 1, radius: 0.1, x: [2, 1.5], angle: 0}",
-                                  "  axle: {pin: [P, ground]}", "P"))
+def test_a_segment_from_a_moving_disk_to_a_turning_point_is_told():
+    """A moving pulley (a disk hanging in the cord's loop) is followed with its segments
+    parallel; the segment from it to the rod's end keeps its direction of t = 0 — exact only while
+    the end moves along it — and a warning says so; over a light fixed pulley the segment turns
+    and nothing is said."""
+    disk = solve_one_text("""
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
+  P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
+joints:
+  hinge: {pin: [rod.end1, ground]}
+  rope: {cord: [rod.end2, P, ["cos(30*deg) + 0.2", 1]]}
+at: [0, 0.3]
+""")
     assert any("keeps its segment to rod.end2 at its direction of t = 0" in w for w in disk["warnings"]), disk["warnings"]
+    text = ROD_CABLE + "at: [0, 0.3]\n"
     light = solve_one_text(text % ("", "", "{pulley: [2, 1.5], radius: 0.1}"))
     assert light["warnings"] == [], light["warnings"]
     # a rod hung from a string (no pulley): the string turns with its end by itself
