@@ -711,9 +711,11 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
     cord = el.Cord(name, "cord", len(q), path, runs=runs)
     for seg in (sg for r in runs for sg in r):
         # a rigid body's point over a fixed pulley: no guide holds it, its segment turns with it
-        P = None if seg.pulley is None else (seg.a if seg.pulley[0] == "a" else seg.b).point
-        if P is not None and P.body is not None and P.body.rigid and seg.pulley[3] is None:
-            cord.let_turn(seg, q)       # (over a disk body: once its axle is known fixed, prepare.py)
+        if seg.pulley is None or seg.pulley[3] is not None:
+            continue                    # (over a disk body: once its axle is known fixed, prepare.py)
+        P = (seg.a if seg.pulley[0] == "a" else seg.b).point
+        if P is not None and P.body is not None and P.body.rigid:
+            cord.let_turn(seg, q)
     cord.consts = list(cord.lengths(q))
     return cord, guides
 
