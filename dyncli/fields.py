@@ -447,7 +447,7 @@ class Accuracy(StrictModel):
     method: str = Field("auto", description="auto picks the cheapest exact route (closed form > quadrature > ODE)")
     estimate: bool = Field(False, description="also solve at a tighter tolerance and report the difference as error_estimate")
     max_steps: Optional[int] = Field(None, gt=0, description="cap on integrator steps (types that integrate; default set per type); a run that needs more fails fast with exit 1")
-    max_cpu: Optional[float] = Field(None, gt=0, description="CPU seconds one solve may take (integrating routes); default 2 s unless max_steps is given; a run projected beyond it fails fast with exit 1")
+    max_cpu: Optional[float] = Field(None, gt=0, description="CPU seconds (the solving thread's user time) one solve may take (integrating routes); default 2 s unless max_steps is given; a run projected beyond it fails fast with exit 1")
 
 
 class ProblemBase(StrictModel):

@@ -33,7 +33,6 @@ scipy is imported lazily, only when a route asks for one of its integrators.
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 
@@ -87,13 +86,13 @@ class Budget:
         self.t0, self.goal = float(t0), float(t_goal)
         self._n_leg = self._n_win = 0
         self._t_win = self._t_cpu0 = self.t0
-        self._cpu_leg0 = time.thread_time()
+        self._cpu_leg0 = cputime.thread_cpu()
 
     def tick(self, t: float, t_old: float | None = None, y=None) -> None:
         self.n += 1
         self._n_leg += 1
         if self._n_leg == 1:     # the leg's CPU rate is timed from its first step on: what came before
-            self._cpu_leg0, self._t_cpu0 = time.thread_time(), float(t)   # (an integrator's import) is not its rate
+            self._cpu_leg0, self._t_cpu0 = cputime.thread_cpu(), float(t)   # (an integrator's import) is not its rate
         self._n_win += 1
         h = abs(t - t_old) if t_old is not None else 0.0
         self.hmax = max(self.hmax, h)

@@ -24,7 +24,7 @@ at: [30]
 
 
 class _Clock:
-    """thread_time that advances ``tick`` seconds per reading."""
+    """The budgets' clock (cputime.thread_cpu) advancing ``tick`` seconds per reading."""
 
     def __init__(self, tick: float):
         self.now, self.tick = 0.0, tick
@@ -36,7 +36,7 @@ class _Clock:
 
 @pytest.fixture
 def slow_clock(monkeypatch):
-    monkeypatch.setattr(cputime.time, "thread_time", _Clock(0.2))
+    monkeypatch.setattr(cputime, "thread_cpu", _Clock(0.2))
 
 
 def test_default_budget_refuses_a_run_projected_beyond_it(slow_clock):
