@@ -93,12 +93,13 @@ def setup(plan: build.Plan) -> Scene:
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
-def _axle_fixed(system, q, disk) -> bool:
+def _axle_fixed(system, q, disk, free=None) -> bool:
     """Whether the disk body's centre cannot move (a massive pulley on a fixed axle); True for no
-    disk (a light fixed pulley)."""
+    disk (a light fixed pulley).  ``free``: the velocities the joints allow, when already made."""
     if disk is None:
         return True
-    free = assembly.motions(system.jac(q), system.n)
+    if free is None:
+        free = assembly.motions(system.jac(q), system.n)
     return float(np.max(np.abs(free[:, list(disk.index[:2])]), initial=0.0)) <= 1e-12
 
 
@@ -107,7 +108,7 @@ def _kept_across(system, q, warn) -> None:
     on a fixed axle it turns with the point (``Cord.let_turn``, the disk's turn in its length);
     from a disk that moves it keeps its direction of t = 0, told where the point can move across
     it (exact only while the point moves along the segment)."""
-    kept = [(cord, s, end.point) for cord in system.elements if cord.kind == "cord" and hasattr(cord, "runs")
+    kept = [(cord, s, end.point) for cord in system.elements if cord.kind == "cord"
             for run in cord.runs for s in run if s.turning is None
             for end, other in ((s.a, s.b), (s.b, s.a)) if other.centre is not None
             and end.point is not None and end.point.body is not None and end.point.body.rigid]
@@ -115,7 +116,7 @@ def _kept_across(system, q, warn) -> None:
         return
     free = assembly.motions(system.jac(q), system.n)
     for cord, seg, P in kept:
-        if seg.pulley is not None and _axle_fixed(system, q, seg.pulley[3]):
+        if seg.pulley is not None and _axle_fixed(system, q, seg.pulley[3], free):
             cord.let_turn(seg, q)
             continue
         u = seg.u
