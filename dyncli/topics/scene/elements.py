@@ -722,6 +722,18 @@ class CordEnd:
     def turns(self) -> bool:
         return self.point is not None and self.point.turns_with_body
 
+    def drawn(self, u, q) -> tuple[float, float]:
+        """Where the segment of direction u ends at q: the point, the tangent point on the disk
+        (T − C = −k e3 × u, kept on the disk's centre), or the fixed pulley's tangent point."""
+        if self.point is not None:
+            x1, x2 = self.point.xy(q)
+            return float(x1), float(x2)
+        if self.centre is not None:
+            c1, c2 = self.centre.xy(q)
+            return float(c1) + self.k * float(u[1]), float(c2) - self.k * float(u[0])
+        assert self.fixed is not None, "a cord end is a point, a disk or a fixed pulley"
+        return float(self.fixed[0]), float(self.fixed[1])
+
 
 @dataclass
 class Turning:
@@ -853,6 +865,21 @@ class Cord(Element):
         if before is not None:          # the held lengths, now measured the turning way
             self.consts = [c + a - b for c, a, b in zip(self.consts, self.lengths(q), before)]
 
+    def drawn(self, q) -> list[list[tuple[float, float]]]:
+        """The cord at q as polylines, one per straight segment from tangent point to tangent point
+        (for the plots: the pulleys and disks it wraps are drawn as circles)."""
+        out = []
+        for run in self.runs:
+            for s in run:
+                if s.turning is not None:
+                    P = s.point()
+                    t1, t2, *_ = s.turning.tangent(P, q)
+                    p = P.xy(q)
+                    out.append([(t1, t2), p] if s.turning.end == "b" else [p, (t1, t2)])
+                    continue
+                out.append([s.a.drawn(s.u, q), s.b.drawn(s.u, q)])
+        return out
+
     def phase(self):
         return self.slack
 
@@ -945,6 +972,11 @@ class String(Cord):
         round peg: the point where it leaves the peg, as if fixed there — its row, γ and
         curvature are those of a string from that point)."""
         return self.ends()
+
+    def drawn(self, q) -> list[list[tuple[float, float]]]:
+        P, Q = self.ends()
+        (p1, p2), (q1, q2) = P.xy(q), Q.xy(q)
+        return [[(float(q1), float(q2)), (float(p1), float(p2))]]
 
     def lengths(self, q) -> np.ndarray:
         P, Q = self.ends()
@@ -1071,6 +1103,26 @@ class PeggedString(String):
 
     def span(self, q) -> tuple[Point, Point]:
         return self._end("b"), self.free_from(q)
+
+    def drawn(self, q) -> list[list[tuple[float, float]]]:
+        """One polyline from the fixed end over the wrapped pegs (a round one: the arc wound on it)
+        to the body's point."""
+        pts = [tuple(float(x) for x in self._end("a").xy(q))]
+        for j, i in enumerate(self.wrapped):
+            rho = self._radius(i)
+            if not rho:
+                pts.append((float(self.pegs[i].p[0]), float(self.pegs[i].p[1])))
+                continue
+            (c1, c2), (s, _k, a_in, held) = self.pegs[i].p, self.bends[j]
+            if held is None:
+                beta = self._wound(q)[1]
+            else:
+                beta = (s * (math.atan2(held[1] - c2, held[0] - c1) - a_in)) % (2 * math.pi)
+            m = max(2, int(abs(beta) / (math.pi / 24)) + 2)
+            pts += [(c1 + rho * math.cos(a_in + s * beta * k / (m - 1)), c2 + rho * math.sin(a_in + s * beta * k / (m - 1)))
+                    for k in range(m)]
+        pts.append(tuple(float(x) for x in self._end("b").xy(q)))
+        return [pts]
 
     def lengths(self, q) -> np.ndarray:
         if not self._winding():

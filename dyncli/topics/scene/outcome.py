@@ -120,6 +120,7 @@ def _present(res, scene, traj, inst, times) -> None:
     res.extra["scene_t_end"] = t_last
     res.extra["scene_sample"] = lambda t: inst(min(float(t), t_last))
     res.extra["scene_draw"] = _drawing(scene)
+    res.extra["scene_draw"]["cords"] = _cords_drawn(scene, traj, times)
     res.views.extend(views.views(res))
     res.covered.extend(views.COVERED)
     res.equations = ["16.7", "29.5", "32.15", "34.20"] + (["28.7", "28.16", "33.2"] if traj.impacts else [])
@@ -147,6 +148,21 @@ def _drawing(scene) -> dict:
                                           for x in scene.surfaces if not getattr(x, "carried", False)],
             "carried": [_carried_drawing(x, span) for x in scene.surfaces if getattr(x, "carried", False)],
             "pulleys": pulleys, "span": span}
+
+
+def _cords_drawn(scene, traj, times) -> list:
+    """Per requested time: the polylines of every cord there (None past the motion's end)."""
+    cords = [e for e in scene.system.elements if e.kind == "cord"]
+    if not cords:
+        return []
+    out = []
+    for t in times:
+        if traj.stopped is not None and t > traj.stopped:
+            out.append(None)
+            continue
+        q = traj.state(t)[0]
+        out.append([line for e in cords for line in e.drawn(q)])
+    return out
 
 
 def _carried_drawing(x, span: float) -> dict:

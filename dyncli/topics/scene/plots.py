@@ -2,8 +2,8 @@
 
 * the mechanism drawn at each requested time (rods as lines, disks and rings as circles with
   a radius marking their turn, boxes as rectangles, points as markers, the surfaces as lines,
-  a surface carried by a body with its body at each time, fixed pulleys as circles), one colour
-  per time;
+  a surface carried by a body with its body at each time, fixed pulleys as circles, the cords
+  dashed from tangent point to tangent point, a string over round pegs with its wound arcs);
 * the joint forces over time (each scalar force, each pin force's components), sampled from
   the solver's trajectory (``result.extra["scene_sample"]``: the exact motion, or the
   interpolants of the integration's own steps; nothing is solved again), with the events marked.
@@ -73,8 +73,12 @@ def _mechanism(result, draw) -> Plot:
         k = range(33)
         plot.lines.append(Line([c1 + max(rad, span * 0.01) * math.cos(2 * math.pi * i / 32) for i in k],
                                [c2 + max(rad, span * 0.01) * math.sin(2 * math.pi * i / 32) for i in k], style="-"))
+    cords = draw.get("cords") or []
     for j, t in enumerate(r.get("t", [])):
         first = True
+        for k, pts in enumerate((cords[j] if j < len(cords) else None) or ()):     # the cords: dashed
+            plot.lines.append(Line([p[0] for p in pts], [p[1] for p in pts],
+                                   label="cords" if j == 0 and k == 0 else None, style="--", marker=""))
         for sf in draw.get("carried", ()):           # a carried line or curve, placed with its body
             x = r["x"][sf["carrier"]][j]
             if x is None:

@@ -264,3 +264,48 @@ def test_the_drawing_puts_a_line_where_it_is_and_past_every_body_on_it():
     assert min(floor.x) < -2 and max(floor.x) > max(x[0] for x in res.results["x"]["P"])
     res, lines = drawn("block-on-table-pulley.yaml")      # table: through [-3, 0], length 3
     assert lines["surface table"].x == [-3.0, 0.0] and lines["surface table"].y == [0.0, 0.0]
+
+
+def test_the_drawing_draws_every_cord_from_tangent_point_to_tangent_point():
+    # the cords at each requested time: straight segments tangent to the pulleys and disks they
+    # pass (the circles drawn already), a string over a round post with its wound arc on the post
+    from dyncli import registry
+    from dyncli.loader import split_problems, validate
+    from dyncli.result import SolveOptions
+    from dyncli.topics.scene.plots import _mechanism
+
+    def solved(name):
+        path = PROBLEMS / "scenes" / name
+        (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
+        validate(lp)
+        res = registry.solver(lp.type)(lp.model, SolveOptions())
+        return res, res.extra["scene_draw"]["cords"]
+
+    res, cords = solved("atwood-massive-pulley.yaml")        # R = 0.1 about the origin; A left, B right
+    r = res.results
+    assert len(cords) == len(r["t"])
+    for j, lines in enumerate(cords):
+        (a, ta), (tb, b) = lines
+        assert a == pytest.approx(r["x"]["A"][j][:2], abs=1e-12) and b == pytest.approx(r["x"]["B"][j][:2], abs=1e-12)
+        assert ta == pytest.approx((-0.1, 0.0), abs=1e-12) and tb == pytest.approx((0.1, 0.0), abs=1e-12)
+    res, cords = solved("collar-pulled-up-rod.yaml")         # a point pulley at [b, H] = [0.8, 1.2]
+    r = res.results
+    for j, lines in enumerate(cords):
+        (c, p1), (p2, w) = lines
+        assert c == pytest.approx(r["x"]["collar"][j][:2], abs=1e-12) and w == pytest.approx(r["x"]["W"][j][:2], abs=1e-12)
+        assert p1 == pytest.approx((0.8, 1.2), abs=1e-12) and p2 == pytest.approx((0.8, 1.2), abs=1e-12)
+    res, cords = solved("ball-winds-onto-post.yaml")         # post ρ = 0.05 at the origin, tied at [-0.1, 0]
+    r = res.results
+    wound = 0
+    for j, lines in enumerate(cords):
+        (pts,) = lines
+        assert pts[0] == pytest.approx((-0.1, 0.0)) and pts[-1] == pytest.approx(r["x"]["ball"][j][:2], abs=1e-12)
+        on_post = pts[1:-1]
+        wound += bool(on_post)
+        assert all(math.hypot(*p) == pytest.approx(0.05, rel=1e-12) for p in on_post)
+        if on_post:                      # the free part leaves the post on its tangent
+            (t1, t2), (b1, b2) = on_post[-1], pts[-1]
+            assert abs(t1 * (b1 - t1) + t2 * (b2 - t2)) <= 1e-9
+    assert wound >= 2
+    plot = _mechanism(res, res.extra["scene_draw"])
+    assert [ln.label for ln in plot.lines].count("cords") == 1 and any(ln.style == "--" for ln in plot.lines)
