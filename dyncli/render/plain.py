@@ -21,6 +21,7 @@ never wrapped; a line of text wider than the width is broken between words.
 
 from __future__ import annotations
 
+import bisect
 import re
 import unicodedata
 
@@ -108,47 +109,72 @@ def cell_lines(s: str) -> str:
 
 def _breaks(text: str) -> list[int]:
     """Positions of the spaces a cell may break at: never inside an innermost
-    bracket pair (a vector, a tensor row)."""
-    out, depth, inner = [], 0, []
-    opened: list[int] = []
+    bracket pair (a vector, a tensor row).  One pass: the breaks of a piece cut
+    off at one of them are these, less the piece before (wrap relies on it)."""
+    spaces: list[int] = []
+    atoms: list[tuple[int, int]] = []        # innermost pairs: they hold no other pair
+    opened: list[list] = []                  # [start, holds a pair]
     for i, ch in enumerate(text):
         if ch in "[(":
-            opened.append(i)
-            depth += 1
+            opened.append([i, False])
         elif ch in "])" and opened:
-            start = opened.pop()
-            inner.append((start, i))
-            depth -= 1
+            start, holds = opened.pop()
+            if not holds:
+                atoms.append((start, i))
+            if opened:
+                opened[-1][1] = True
         elif ch == " ":
+            spaces.append(i)
+    if not atoms:
+        return spaces
+    atoms.sort()
+    out, k = [], 0
+    for i in spaces:
+        while k < len(atoms) and atoms[k][1] < i:
+            k += 1
+        if not (k < len(atoms) and atoms[k][0] < i < atoms[k][1]):
             out.append(i)
-    # an innermost pair holds no other pair
-    atoms = [(a, b) for a, b in inner if not any(a < c and d < b for c, d in inner)]
-    return [i for i in out if not any(a < i < b for a, b in atoms)]
+    return out
 
 
 def wrap(text: str, width: int) -> str:
     """``text`` broken at allowed spaces into lines of at most ``width``
     columns where it can (a piece that cannot be broken stays whole); a
-    value (``[...]``, ``name: value, ...``) only after its commas."""
+    value (``[...]``, ``name: value, ...``) only after its commas.  Each line's
+    breaks and running widths are found once (linear in its length: a symbolic
+    view's expression runs to tens of thousands of characters)."""
     out = []
     for line in text.split("\n"):
-        while cell_len(line) > width:
-            allowed = _breaks(line)
-            if line.startswith("[") or _VALUE.match(line):
-                allowed = [i for i in allowed if line[i - 1] == ","]
-            cuts = [i for i in allowed if cell_len(line[:i]) <= width]
-            if not cuts:
-                cuts = allowed[:1]
-                if not cuts:
+        if cell_len(line) <= width:
+            out.append(line)
+            continue
+        every = _breaks(line)
+        commas = [i for i in every if line[i - 1] == ","]
+        if line.isascii():
+            cum: list[int] | range = range(len(line) + 1)
+        else:
+            cum = [0]
+            for ch in line:
+                cum.append(cum[-1] + cell_len(ch))
+        start, n = 0, len(line)
+        while cum[n] - cum[start] > width:
+            allowed = commas if line.startswith("[", start) or _VALUE_AT.match(line, start) else every
+            first = bisect.bisect_left(allowed, start)
+            last = bisect.bisect_right(allowed, cum[start] + width, lo=first, key=lambda i: cum[i]) - 1
+            if last < first:                     # nothing fits: the first break, else the piece stays whole
+                if first == len(allowed):
                     break
-            i = cuts[-1]
-            out.append(line[:i].rstrip())
-            line = line[i:].lstrip()
-        out.append(line)
+                last = first
+            i = allowed[last]
+            out.append(line[start:i].rstrip())
+            start = i
+            while start < n and line[start].isspace():
+                start += 1
+        out.append(line[start:])
     return "\n".join(out)
 
 
-_VALUE = re.compile(r"^[^ ]+: [-\[\d]")
+_VALUE_AT = re.compile(r"[^ ]+: [-\[\d]")      # the same, matched where a piece starts
 
 
 def _min_width(text: str) -> int:

@@ -682,7 +682,8 @@ def cord_element(name: str, spec: dict, R: Resolver, q: np.ndarray, n: int) -> t
         if tg is None:
             raise InputError(f"the cord's segment {i + 1} has no straight part (its ends overlap)", path)
         u, Ta, Tb = tg
-        seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u)
+        seg = el.Segment(_end(nodes[i], Ta, centres[i], u), _end(nodes[i + 1], Tb, centres[i + 1], u), u,
+                         centres=(centres[i], rho[i], centres[i + 1], rho[i + 1]))
         ends = (nodes[i][0], nodes[i + 1][0])
         if ends in (("point", "pulley"), ("point", "disk")) and nodes[i][1].body is not None:
             seg.pulley = ("a", centres[i + 1], rho[i + 1], nodes[i + 1][1] if ends[1] == "disk" else None)

@@ -46,6 +46,15 @@ def length_terms(P: Point, Q: Point, q, n: int):
     return ln, e, grad, H
 
 
+def span_hessian(sp, q, n: int) -> np.ndarray:
+    """∇² of a spanning segment's length (elements.Spanning): D_Δᵀ n nᵀ D_Δ / ℓ plus u·∇²X_b −
+    u·∇²X_a, with D_Δ the Jacobian of X_b − X_a (its disk angles enter linearly)."""
+    u1, u2, ell, *_ = sp.geometry(q)
+    u, nrm = np.array([u1, u2]), np.array([-u2, u1])
+    g = nrm @ (sp.B.jac(q, n) - sp.A.jac(q, n))
+    return np.outer(g, g) / ell + point_hessian(sp.B, q, u, n) - point_hessian(sp.A, q, u, n)
+
+
 def _element_hessian(el, q, w, n: int) -> np.ndarray:
     if hasattr(el, "hessian"):          # an element on a curve (dyncli/topics/scene/curved.py)
         return el.hessian(q, w, n)
@@ -67,6 +76,9 @@ def _element_hessian(el, q, w, n: int) -> np.ndarray:
         H = np.zeros((n, n))
         for r, run in enumerate(el.runs):
             for seg in run:
+                if seg.spanning is not None:        # n nᵀ/ℓ on X_b − X_a, and the points' own turns
+                    H += w[r] * span_hessian(seg.spanning, q, n)
+                    continue
                 if seg.turning is not None:         # a string's from its tangent point held fixed
                     P, T, _got = seg.anchor(q)
                     H += w[r] * length_terms(P, T, q, n)[3]

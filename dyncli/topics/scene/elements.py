@@ -784,12 +784,84 @@ class Turning:
 
 
 @dataclass
+class Spanning:
+    """A cord segment that turns with both its ends, between two circles that may move: each end
+    a point (ρ = 0), a disk body's centre (a moving pulley or one on a fixed axle; the cord does
+    not slip on it) or a fixed light pulley's centre, with the signed radii of
+    :func:`segment_tangents`.  With d = C_b − C_a = ℓ u − (ρ_b − ρ_a) n (n = e3 × u), its part of
+    the cord's length is ℓ + (ρ_b − ρ_a)(ψ − ψ0) − ρ_b (θ_b − θ_b0) + ρ_a (θ_a − θ_a0) (ψ the
+    angle of u; the arcs that the tangent points run over, less the turn of a disk the cord is
+    wound on), whose gradient is u·(X_b − X_a) plus the disks' ∓ρ: the row of a segment kept
+    straight, with u the segment's own direction at q.  Its γ adds the turning of u,
+    (n·(V_b − V_a))²/ℓ, its curvature n nᵀ/ℓ on X_b − X_a."""
+
+    A: Point                        # the centre (or point) at end a
+    B: Point
+    ra: float
+    rb: float
+    psi0: float = 0.0
+    angle_a: int | None = None      # a disk body's angle index at that end
+    angle_b: int | None = None
+    th0a: float = 0.0
+    th0b: float = 0.0
+
+    def geometry(self, q) -> tuple[float, float, float, float, float, float, float]:
+        """(u1, u2, ℓ, T_a1, T_a2, T_b1, T_b2) at q."""
+        (a1, a2), (b1, b2) = self.A.xy(q), self.B.xy(q)
+        d1, d2 = b1 - a1, b2 - a2
+        D = math.hypot(d1, d2)
+        delta = self.ra - self.rb
+        if not D > abs(delta):
+            raise NumericalError(f"a cord's segment lost its straight part (its ends at [{a1:.6g}, {a2:.6g}] and "
+                                 f"[{b1:.6g}, {b2:.6g}] overlap): the motion is not solved past it")
+        psi = math.atan2(d2, d1) - math.asin(delta / D)
+        u1, u2 = math.cos(psi), math.sin(psi)
+        ell = math.sqrt(max(D * D - delta * delta, 0.0))
+        return u1, u2, ell, a1 - self.ra * u2, a2 + self.ra * u1, b1 - self.rb * u2, b2 + self.rb * u1
+
+    def length(self, q) -> float:
+        u1, u2, ell, *_ = self.geometry(q)
+        out = ell
+        if self.rb != self.ra:
+            out += (self.rb - self.ra) * math.remainder(math.atan2(u2, u1) - self.psi0, 2 * math.pi)
+        if self.angle_b is not None:
+            out -= self.rb * (float(q[self.angle_b]) - self.th0b)
+        if self.angle_a is not None:
+            out += self.ra * (float(q[self.angle_a]) - self.th0a)
+        return out
+
+    def add_row(self, row, q) -> None:
+        u1, u2, *_ = self.geometry(q)
+        self.B.add_jac(row, q, u1, u2)
+        self.A.add_jac(row, q, -u1, -u2)
+        if self.angle_b is not None:
+            row[self.angle_b] -= self.rb
+        if self.angle_a is not None:
+            row[self.angle_a] += self.ra
+
+    def gamma(self, q, v) -> float:
+        u1, u2, ell, *_ = self.geometry(q)
+        (av1, av2), (bv1, bv2) = self.A.vel_xy(q, v), self.B.vel_xy(q, v)
+        (ab1, ab2), (bb1, bb2) = self.A.bias_xy(q, v), self.B.bias_xy(q, v)
+        across = -u2 * (bv1 - av1) + u1 * (bv2 - av2)
+        return -(u1 * (bb1 - ab1) + u2 * (bb2 - ab2) + across * across / ell)
+
+    def straight_along(self, q, N, n: int) -> bool:
+        """Whether u stays put along the motion q + N s: its ends move apart along u."""
+        u1, u2, *_ = self.geometry(q)
+        w = self.B.jac(q, n) @ N - self.A.jac(q, n) @ N
+        return abs(u1 * float(w[1]) - u2 * float(w[0])) <= 1e-12 * max(math.hypot(float(w[0]), float(w[1])), 1e-300)
+
+
+@dataclass
 class Segment:
     a: CordEnd
     b: CordEnd
     u: np.ndarray                   # unit direction a -> b, kept from t = 0
     pulley: tuple | None = None     # (the end at a point, C, ρ, the disk body or None) when its other end is a pulley
     turning: Turning | None = None  # set when its direction turns with the point (Cord.let_turn)
+    spanning: Spanning | None = None    # set when it turns with both ends (Cord.let_span)
+    centres: tuple | None = None    # (C_a, ρ_a, C_b, ρ_b) at t = 0 as build placed them (ρ signed; C of a fixed pulley)
 
     def point(self) -> Point:
         """The body point at its turning end."""
@@ -827,7 +899,8 @@ class Cord(Element):
 
     @property
     def linear(self):
-        return not any(s.a.turns or s.b.turns or s.turning is not None for run in self.runs for s in run)
+        return not any(s.a.turns or s.b.turns or s.turning is not None or s.spanning is not None
+                       for run in self.runs for s in run)
 
     def straight_along(self, q, N) -> bool:
         """Affine along N when no end turns with its body and every turning segment's point moves
@@ -835,6 +908,8 @@ class Cord(Element):
         for run in self.runs:
             for s in run:
                 if s.a.turns or s.b.turns:
+                    return False
+                if s.spanning is not None and not s.spanning.straight_along(q, N, self.n):
                     return False
                 if s.turning is not None:
                     P, _T, (_t1, _t2, e1, e2, _l) = s.anchor(q)
@@ -871,6 +946,10 @@ class Cord(Element):
         out = []
         for run in self.runs:
             for s in run:
+                if s.spanning is not None:
+                    _u1, _u2, _l, a1, a2, b1, b2 = s.spanning.geometry(q)
+                    out.append([(a1, a2), (b1, b2)])
+                    continue
                 if s.turning is not None:
                     P = s.point()
                     t1, t2, *_ = s.turning.tangent(P, q)
@@ -886,9 +965,39 @@ class Cord(Element):
     def set_phase(self, state) -> None:
         self.slack = state
 
+    def let_span(self, seg: Segment, q) -> None:
+        """Let the segment ``seg`` turn with both its ends from here on (:class:`Spanning`, from
+        the circles build placed at its ends: a moving pulley, a rigid body's point)."""
+        assert seg.centres is not None and seg.turning is None, "a spanning segment has its ends' circles"
+        _Ca, ra, _Cb, rb = seg.centres
+        refs = []
+        for end, (C, _r) in ((seg.a, seg.centres[:2]), (seg.b, seg.centres[2:])):
+            if end.point is not None:
+                refs.append((end.point, None))
+            elif end.centre is not None:
+                refs.append((end.centre, end.centre.angle_index))
+            else:
+                refs.append((Point("a fixed pulley's centre", None, (float(C[0]), float(C[1]))), None))
+        (A, ia), (B, ib) = refs
+        sp = Spanning(A, B, float(ra), float(rb), angle_a=ia, angle_b=ib)
+        u1, u2, *_ = sp.geometry(q)
+        sp.psi0 = math.atan2(u2, u1)
+        sp.th0a = float(q[ia]) if ia is not None else 0.0
+        sp.th0b = float(q[ib]) if ib is not None else 0.0
+        before = self.lengths(q) if self.consts else None
+        seg.spanning = sp
+        if before is not None:
+            self.consts = [c + a - b for c, a, b in zip(self.consts, self.lengths(q), before)]
+
+    def _part(self, s: Segment, q) -> float:
+        if s.spanning is not None:
+            return s.spanning.length(q)
+        if s.turning is not None:
+            return s.turning.length(s.point(), q)
+        return s.b.proj(s.u, q) - s.a.proj(s.u, q)
+
     def lengths(self, q) -> np.ndarray:
-        return np.array([sum(s.turning.length(s.point(), q) if s.turning is not None
-                             else s.b.proj(s.u, q) - s.a.proj(s.u, q) for s in run) for run in self.runs])
+        return np.array([sum(self._part(s, q) for s in run) for run in self.runs])
 
     def phi(self, q, t):
         return (self.lengths(q) - np.array(self.consts))[self.taut]
@@ -896,7 +1005,9 @@ class Cord(Element):
     def _run_row(self, q, r: int) -> list:
         row = [0.0] * self.n
         for s in self.runs[r]:
-            if s.turning is not None:
+            if s.spanning is not None:
+                s.spanning.add_row(row, q)
+            elif s.turning is not None:
                 P, _T, (_t1, _t2, e1, e2, _l) = s.anchor(q)
                 P.add_jac(row, q, e1, e2)
                 if s.turning.angle is not None:
@@ -914,7 +1025,9 @@ class Cord(Element):
         for r in self.taut:
             g = 0.0
             for s in self.runs[r]:
-                if s.turning is not None:
+                if s.spanning is not None:
+                    g += s.spanning.gamma(q, v)
+                elif s.turning is not None:
                     P, T, _got = s.anchor(q)
                     g += span_gamma(P, T, q, v)
                 else:

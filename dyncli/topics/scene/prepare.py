@@ -63,6 +63,7 @@ def setup(plan: build.Plan) -> Scene:
                     system.refresh()
         q = assembly.assemble(system, q, free)
     assembly.refuse_gaps(system, q, free)
+    _span_moving(system, q)
     _refuse_moving_pulley_at_angle(system, q)
     _carried_fixed_angles(system, q)
     other = assembly.other_branch(system, q, free)
@@ -89,7 +90,7 @@ def setup(plan: build.Plan) -> Scene:
     coords = [names[i] for i in assembly.independent(J, n)]
     _refuse_at_start(system, q, v)
     _guided_aside(system, q, v, warnings.append)
-    _kept_across(system, q, warnings.append)
+    _kept_across(system, q)
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
@@ -103,29 +104,20 @@ def _axle_fixed(system, q, disk, free=None) -> bool:
     return float(np.max(np.abs(free[:, list(disk.index[:2])]), initial=0.0)) <= 1e-12
 
 
-def _kept_across(system, q, warn) -> None:
-    """A cord segment from a disk body to a rigid body's point (a rod tied over a massive pulley):
-    on a fixed axle it turns with the point (``Cord.let_turn``, the disk's turn in its length);
-    from a disk that moves it keeps its direction of t = 0, told where the point can move across
-    it (exact only while the point moves along the segment)."""
-    kept = [(cord, s, end.point) for cord in system.elements if cord.kind == "cord"
-            for run in cord.runs for s in run if s.turning is None
+def _kept_across(system, q) -> None:
+    """A cord segment from a disk body on a fixed axle to a rigid body's point (a rod tied over a
+    massive pulley) turns with the point (``Cord.let_turn``, the disk's turn in its length); one
+    from a disk that moves already turns with both ends (``_span_moving``)."""
+    kept = [(cord, s) for cord in system.elements if cord.kind == "cord"
+            for run in cord.runs for s in run if s.turning is None and s.spanning is None
             for end, other in ((s.a, s.b), (s.b, s.a)) if other.centre is not None
             and end.point is not None and end.point.body is not None and end.point.body.rigid]
     if not kept:
         return
     free = assembly.motions(system.jac(q), system.n)
-    for cord, seg, P in kept:
+    for cord, seg in kept:
         if seg.pulley is not None and _axle_fixed(system, q, seg.pulley[3], free):
             cord.let_turn(seg, q)
-            continue
-        u = seg.u
-        w = P.jac(q, system.n) @ free.T                  # the point's velocities the joints allow
-        across = np.abs(u[0] * w[1] - u[1] * w[0])
-        if float(np.max(across, initial=0.0)) > 1e-9 * max(float(np.max(np.abs(w), initial=0.0)), 1e-300):
-            warn(f"the cord {cord.name!r} keeps its segment to {P.label} at its direction of t = 0 (its other end is "
-                 "a disk body that moves), while that point can move across it: exact only while it moves along "
-                 "the segment")
 
 
 def _freedom_rows(system, q):
@@ -165,9 +157,10 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     """Whether another joint than a cord already holds the guided mass in some direction (a block
     on a table tied over a pulley, a collar on a rod): the table guides it, not its segment;
     guided along the segment too, it could not move at all.  Its segment, from a fixed pulley,
-    then turns with it (``cord.let_turn``: exact); one from a moving pulley keeps its direction of
-    t = 0, and a segment at an angle to the one path left to the mass is told (``warn``).  A
-    segment across that path (a block on the floor that the cord will lift) still guides the mass."""
+    then turns with it (``cord.let_turn``: exact), one from a moving pulley with both its ends
+    (``_span_moving``); any other keeps its direction of t = 0, told (``warn``) when at an angle
+    to the one path left to the mass.  A segment across that path (a block on the floor that the
+    cord will lift) still guides the mass."""
     cols = list(guide.P.body.index[:2])
     ql = q.tolist()
     rows = [r for e in system.elements if e.rows and e.kind not in ("cord", "guide") for r in e.jac_list(ql)]
@@ -178,6 +171,8 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
         return False
     turnable = cord is not None and guide.segment is not None and guide.segment.pulley is not None \
         and _axle_fixed(system, q, guide.segment.pulley[3])
+    # from a disk that moves, it turns with both ends once no guide holds it (_span_moving)
+    spans = cord is not None and guide.segment is not None and guide.segment.pulley is not None and not turnable
     if assembly.rank(held) > 1 and turnable:
         cord.let_turn(guide.segment, q)
         system.refresh()
@@ -191,7 +186,7 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
             cord.let_turn(guide.segment, q)
             system.refresh()
             return True
-        if off > 1e-9:
+        if off > 1e-9 and not spans:
             cord = guide.name.partition(":")[0]
             warn(f"the cord {cord!r} meets {guide.P.body.name!r} at {math.degrees(math.asin(min(off, 1.0))):.3g}° to "
                  "the path its other joints allow: the cord keeps its segments' directions of t = 0, so that angle "
@@ -199,11 +194,36 @@ def _held_otherwise(system, q, guide, warn, cord=None) -> bool:
     return True
 
 
+def _span_moving(system, q) -> None:
+    """A cord segment at a disk body whose centre can move (a moving pulley, a disk hanging in a
+    loop of cord) turns with both its ends (``cord.let_span``: exact), unless a guide holds a
+    hanging mass or a wound body at its other end along it (the textbook's hoist: that segment
+    keeps its direction of t = 0)."""
+    cords = [e for e in system.elements if e.kind == "cord" and not hasattr(e, "ends")]
+    if not cords:
+        return
+    guided = {id(e.segment) for e in system.elements if e.kind == "guide" and e.segment is not None}
+    free = None
+    for cord in cords:
+        for seg in (sg for run in cord.runs for sg in run):
+            if seg.turning is not None or seg.spanning is not None or seg.centres is None or id(seg) in guided:
+                continue
+            disks = [end.centre.body for end in (seg.a, seg.b) if end.centre is not None]
+            if not disks:
+                continue
+            if free is None:
+                free = assembly.motions(system.jac(q), system.n)
+            if any(not _axle_fixed(system, q, d, free) for d in disks):
+                cord.let_span(seg, q)
+    system.refresh()
+
+
 def _refuse_moving_pulley_at_angle(system, q) -> None:
     """A cord over a disk body whose centre can move (a moving pulley) is followed only with its
-    two segments there parallel: the cord keeps its segments' directions of t = 0, which holds
-    while the pulley moves along them; at an angle their pull turns the pulley aside and the
-    directions kept would not be the cord's."""
+    two segments there parallel when one of them keeps its direction of t = 0 (a guide holds a
+    hanging mass along it: ``_span_moving`` turns every other one), which holds while the pulley
+    moves along them; at an angle their pull turns the pulley aside and the direction kept would
+    not be the cord's."""
     cords = [e for e in system.elements if e.kind == "cord"]
     if not cords:
         return
@@ -214,6 +234,8 @@ def _refuse_moving_pulley_at_angle(system, q) -> None:
             c = s_in.b.centre
             if c is None or s_out.a.centre is None or s_out.a.centre.body is not c.body:
                 continue
+            if s_in.spanning is not None and s_out.spanning is not None:
+                continue                # both turn with the pulley: exact at any angle
             cross = abs(float(s_in.u[0] * s_out.u[1] - s_in.u[1] * s_out.u[0]))
             if cross <= 1e-9:
                 continue
@@ -223,9 +245,9 @@ def _refuse_moving_pulley_at_angle(system, q) -> None:
             if float(np.max(np.abs(free_motion[:, cols]), initial=0.0)) > 1e-9:
                 deg = math.degrees(math.asin(min(cross, 1.0)))
                 raise InputError(f"the cord {cord.name!r} passes over the moving disk {c.body.name!r} with its two "
-                                 f"segments at {deg:.3g}° to each other: a moving pulley is followed with parallel "
-                                 "segments only (the cord keeps its segments' directions of t = 0); place the pulleys "
-                                 "so that both segments run parallel", cord.path)
+                                 f"segments at {deg:.3g}° to each other, one of them to a hanging mass or wound body "
+                                 "guided along it (it keeps its direction of t = 0, exact only while the pulley moves "
+                                 "along it); place the pulleys so that both segments run parallel", cord.path)
 
 
 def _carried_fixed_angles(system, q) -> None:

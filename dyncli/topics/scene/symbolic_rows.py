@@ -178,6 +178,31 @@ def _turning_length(seg, G: Geometry):
     return sp.sqrt(D2 - exact(t.rho) ** 2) + exact(t.c) * (psi - exact(psi0))
 
 
+def _spanning_length(seg, G: Geometry):
+    """A segment that turns with both its ends (elements.Spanning): ℓ + (ρ_b − ρ_a)(ψ − ψ0)
+    − ρ_b (θ_b − θ_b0) + ρ_a (θ_a − θ_a0), with d = X_b − X_a, ℓ = √(|d|² − (ρ_a − ρ_b)²) and
+    ψ = angle(d) − asin((ρ_a − ρ_b)/|d|); a disk's radius is its symbol."""
+    t = seg.spanning
+    ends = []
+    for P, rho, k in ((t.A, t.ra, t.angle_a), (t.B, t.rb, t.angle_b)):
+        b = P.body
+        r = _signed_radius(G, b, rho) if (b is not None and b.radius and k is not None) else exact(rho)
+        ends.append((G.pos(P), r, k))
+    (Xa, ra, ka), (Xb, rb, kb) = ends
+    d = Xb - Xa
+    D2 = d[0] ** 2 + d[1] ** 2
+    delta = ra - rb
+    total = sp.sqrt(D2 - delta ** 2)
+    if t.ra != t.rb:
+        psi = sp.atan2(d[1], d[0]) - sp.asin(delta / sp.sqrt(D2))
+        total += (rb - ra) * (psi - exact(t.psi0))
+    if kb is not None:
+        total -= rb * (G.C.q[kb] - exact(t.th0b))
+    if ka is not None:
+        total += ra * (G.C.q[ka] - exact(t.th0a))
+    return total
+
+
 def _cord(e, G: Geometry, S: Symbols):
     """Rows Σ u·(X_b − X_a) = const per run; λ = −T per run (a string between two points: its
     length |r_b − r_a| = const, as a link's)."""
@@ -190,6 +215,9 @@ def _cord(e, G: Geometry, S: Symbols):
     for r, run in enumerate(e.runs):
         total = sp.Integer(0)
         for seg in run:
+            if seg.spanning is not None:
+                total += _spanning_length(seg, G)
+                continue
             if seg.turning is not None:
                 total += _turning_length(seg, G)
                 continue

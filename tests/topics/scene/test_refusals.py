@@ -624,18 +624,19 @@ at: [0, 1]
 
 
 def test_a_moving_pulley_whose_segments_are_not_parallel_is_refused_with_their_angle():
-    # the cord comes straight down from the ground to the hanging disk P and leaves it for a
-    # fixed pulley whose left side is 0.1 m further right than P's: the second segment leans
-    # from the vertical by the angle of its tangent line between the two circles (5.66°)
+    # a 1.5 kg mass hangs straight below the moving disk P's left side, guided along its segment
+    # (the textbook's hoist); the cord leaves P's right side for a ground point 0.2 m further
+    # right: the two segments at P are 11.4° apart, and the guided one cannot turn with P.
+    # (Without a guided end both segments turn with the disk: test_turning_cords.py.)
     refusal("""
 type: scene
 bodies:
   P: {shape: disk, mass: 1, radius: 0.1, x: [0.1, -1], angle: 0}
-  B: {shape: point, mass: 1.5, x: [0.5, -1]}
+  A: {shape: point, mass: 1.5, x: [0, -2]}
 joints:
-  rope: {cord: [[0, 0], P, {pulley: [0.4, 0], radius: 0.1}, B]}
+  rope: {cord: [A, P, [0.4, 1]]}
 at: [0, 1]
-""", "joints.rope.cord", "moving disk 'P'", "5.66°", "parallel")
+""", "joints.rope.cord", "moving disk 'P'", "11.4°", "guided along it", "parallel")
 
 
 def test_a_moving_pulley_with_parallel_segments_is_solved():

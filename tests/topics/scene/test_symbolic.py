@@ -247,6 +247,30 @@ def test_a_cord_segment_turning_over_a_round_pulley():
     assert np.allclose(got, want, rtol=1e-9, atol=1e-12), (got, want)
 
 
+def test_a_moving_pulley_whose_segments_lean():
+    """A disk hanging in a loop whose strands lean (elements.Spanning: ℓ + (ρ_b − ρ_a)(ψ − ψ0)
+    less the disk's turn, per segment): the reduced equations give the engine's accelerations at a
+    state away from the start (the disk moved aside and up, everything moving)."""
+    from dyncli.loader import split_problems, validate
+    from tests.conftest import ROOT
+    from tests.topics.scene.test_turning_cords import LOOP
+
+    (lp,), _ = split_problems("t.yaml", LOOP.encode(), ROOT)
+    validate(lp)
+    scene = prepare.setup(solver._plan(lp.model))
+    D = derive(scene, {})
+    q, v = scene.q0.copy(), scene.v0.copy()
+    names = scene.system.names
+    q[names.index("x.P.0")], q[names.index("x.P.1")] = 0.16, -0.8
+    q = scene.system.project_position(q, 0.0)
+    v[names.index("x.P.0")], v[names.index("angle.P")] = 0.3, 4.0
+    v = scene.system.project_velocity(q, v, 0.0)
+    a, _lam, _ = scene.system.solve(q, v, 0.0)
+    got = _sdd(D, _values(D, scene, q, v))
+    want = [a[j] for j in D.independent]
+    assert np.allclose(got, want, rtol=1e-9, atol=1e-12), (got, want)
+
+
 def test_cli_text_and_latex():
     from tests.conftest import run_cli
 

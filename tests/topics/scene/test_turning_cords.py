@@ -198,22 +198,10 @@ def test_the_collar_pulled_up_a_rod_gallery_file():
     near(f2["v"]["collar"][1], mp.sqrt(v2(fast)), 1, "its top speed", TOL)
 
 
-def test_a_segment_from_a_moving_disk_to_a_turning_point_is_told():
-    """A moving pulley (a disk hanging in the cord's loop) is followed with its segments
-    parallel; the segment from it to the rod's end keeps its direction of t = 0 — exact only while
-    the end moves along it — and a warning says so; over a light fixed pulley the segment turns
-    and nothing is said."""
-    disk = solve_one_text("""
-type: scene
-bodies:
-  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
-  P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
-joints:
-  hinge: {pin: [rod.end1, ground]}
-  rope: {cord: [rod.end2, P, ["cos(30*deg) + 0.2", 1]]}
-at: [0, 0.3]
-""")
-    assert any("keeps its segment to rod.end2 at its direction of t = 0" in w for w in disk["warnings"]), disk["warnings"]
+def test_a_segment_over_a_light_pulley_or_a_string_turns_untold():
+    """Over a light fixed pulley the segment to a rod's end turns with it, and a rod hung from a
+    string turns its string by itself: nothing is said (a segment from a moving disk turns with
+    both ends: test_a_segment_from_a_moving_disk_to_a_rigid_point_turns_with_both)."""
     text = ROD_CABLE + "at: [0, 0.3]\n"
     light = solve_one_text(text % ("", "", "{pulley: [2, 1.5], radius: 0.1}"))
     assert light["warnings"] == [], light["warnings"]
@@ -227,3 +215,190 @@ joints:
 at: [0, 0.3]
 """)
     assert hung["warnings"] == [], hung["warnings"]
+
+
+LOOP = """
+type: scene
+bodies:
+  P: {shape: disk, mass: 1, radius: 0.1, x: [0.1, -1], angle: 0}
+  B: {shape: point, mass: 1.5, x: [0.5, -1]}
+joints:
+  rope: {cord: [[0, 0], P, {pulley: [0.4, 0], radius: 0.1}, B]}
+at: [0, 0.3, 0.6]
+"""
+
+
+def loop_reference(times):
+    """The disk P (1 kg, r = 0.1, Ī = m r²/2) hanging in the loop of LOOP: the rope comes down from
+    the ground point A0 = (0, 0) onto P's left side, under P, up from its right side to the left
+    side of the fixed pulley (centre (0.4, 0), ρ = 0.1), over it and down to B (1.5 kg, guided on
+    x = 0.5).  Coordinates (x, y) of P's centre; the rope does not slip on P, so its turn θ and
+    B's height follow from the two runs' lengths, written with the tangent points' angles (acos
+    of radius over distance, read off the drawing):
+      run 1: √(D1² − r²) + r (θ + β_M − β_T1) = const, β_T1 = angle(A0 − C) + acos(r/D1);
+      run 2: r (β_T2 − θ − β_M2) + √(D2² − (r + ρ)²) + ρ (β_T2 + π) − y_B = const,
+             β_T2 = angle(C_p − C) − acos((r + ρ)/D2) (the crossed tangent).
+    d'Alembert with these: (m I + Ī ∇θ∇θᵀ + m_B ∇y_B∇y_Bᵀ) q̈ = −Ī ∇θ q̇ᵀH_θq̇ − m_B ∇y_B q̇ᵀH_Bq̇
+    − g (m e2 + m_B ∇y_B), integrated by scipy's DOP853 at rtol 1e-12.  Returns per time
+    (x, y, θ, y_B, T on B, T of run 1 from P's turn Ī θ̈ = Σ torques)."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    m, r, I, mB, rp = 1.0, 0.1, 0.5 * 1.0 * 0.1 ** 2, 1.5, 0.1
+    x, y = sp.symbols("x y")
+    D1 = sp.sqrt(x ** 2 + y ** 2)
+    bT1 = sp.atan2(-y, -x) + sp.acos(r / D1)
+    th = bT1 - sp.sqrt(D1 ** 2 - r ** 2) / r
+    th = th - th.subs({x: 0.1, y: -1})
+    dx, dy = 0.4 - x, -y
+    D2 = sp.sqrt(dx ** 2 + dy ** 2)
+    bT2 = sp.atan2(dy, dx) - sp.acos((r + rp) / D2)
+    yB = r * (bT2 - th) + sp.sqrt(D2 ** 2 - (r + rp) ** 2) + rp * bT2
+    yB = yB - yB.subs({x: 0.1, y: -1}) - 1
+    q = [x, y]
+    grad = {k: [sp.diff(e, s) for s in q] for k, e in (("th", th), ("yB", yB))}
+    hess = {k: [[sp.diff(e, a, b) for b in q] for a in q] for k, e in (("th", th), ("yB", yB))}
+    f = sp.lambdify((x, y), [th, yB, grad["th"], grad["yB"], hess["th"], hess["yB"], bT1, bT2], "numpy")
+
+    def acc(z):
+        qd = np.array(z[2:])
+        t_, yb, gt, gb, Ht, Hb, _b1, _b2 = f(z[0], z[1])
+        gt, gb, Ht, Hb = (np.array(a, float) for a in (gt, gb, Ht, Hb))
+        M = m * np.eye(2) + I * np.outer(gt, gt) + mB * np.outer(gb, gb)
+        rhs = -I * gt * (qd @ Ht @ qd) - mB * gb * (qd @ Hb @ qd) - 9.81 * (m * np.array([0.0, 1.0]) + mB * gb)
+        return np.linalg.solve(M, rhs), gt, gb, Ht, Hb
+
+    sol = solve_ivp(lambda t, z: [z[2], z[3], *acc(z)[0]], (0, max(times)), [0.1, -1.0, 0.0, 0.0], method="DOP853",
+                    rtol=1e-12, atol=1e-14, dense_output=True)
+    out = []
+    for t in times:
+        z = sol.sol(t)
+        qdd, gt, gb, Ht, Hb = acc(z)
+        qd = z[2:]
+        t_, yb, *_rest, b1, b2 = f(z[0], z[1])
+        thdd = gt @ qdd + qd @ Ht @ qd
+        T_B = mB * (9.81 + gb @ qdd + qd @ Hb @ qd)
+        # P's turn: Ī θ̈ = r T2 (run 2 pulls at β_T2 along the tangent, +) − r T1 (run 1 at β_T1)
+        # (each tension acts along its segment at r from the centre: torque ±r T, the sign of the
+        # side it leaves from); so T1 = (r T_B − Ī θ̈)/r
+        T1 = (r * T_B - I * thdd) / r
+        out.append((float(z[0]), float(z[1]), float(t_), float(yb), float(T_B), float(T1)))
+    return out
+
+
+def test_a_disk_hanging_in_a_loop_whose_segments_lean_turns_them_with_it():
+    """A disk hanging in a loop of rope whose strands are not parallel (the second leans 5.66°
+    toward a fixed pulley): both segments at the moving disk turn with it (elements.Spanning), so
+    the disk swings aside as it rises — before, refused.  Against loop_reference (Lagrange in the
+    disk's centre, the rope's geometry by acos) at 0.3 and 0.6 s: x, y, θ, B's height, B's
+    tension and the other run's."""
+    rec = solve_one_text(LOOP)
+    r = rec["results"]
+    assert r["route"] == "ode" and r["dof"] == 2 and rec["warnings"] == []
+    for j, (x, y, th, yB, TB, T1) in enumerate(loop_reference([0.0, 0.3, 0.6])):
+        near(r["x"]["P"][j][0], x, 1, "x_P", TOL)
+        near(r["x"]["P"][j][1], y, 1, "y_P", TOL)
+        near(r["angle"]["P"][j], th, 5, "θ_P", TOL)
+        near(r["x"]["B"][j][1], yB, 1, "y_B", TOL)
+        T = r["reaction"]["rope"]["T"][j]
+        near(T[1], TB, 10, "T on B's side", TOL)
+        near(T[2], TB, 10, "T on B's side, over the pulley", TOL)
+        near(T[0], T1, 10, "T of the run from the ground", TOL)
+    assert abs(r["x"]["P"][2][0] - 0.1) > 0.05        # it swung aside: a fixed direction would not
+
+
+def test_a_segment_from_a_moving_disk_to_a_rigid_point_turns_with_both():
+    """A rod hinged at the origin holds one end of a loop of rope in which a disk hangs; the loop
+    rises to a ground point.  Both segments at the disk turn with it and the rod's end (before,
+    the one to the rod kept its direction of t = 0, with a warning): the energy is kept, and each
+    taut run's length — written here from the positions reported, the straight parts between the
+    tangent points and the arcs, the disk's turn unwound — stays as it was."""
+    rec = solve_one_text("""
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
+  P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
+joints:
+  hinge: {pin: [rod.end1, ground]}
+  rope: {cord: [rod.end2, P, ["cos(30*deg) + 0.3", 1]]}
+at: [0, 0.05, 0.1, 0.4]
+""")
+    r = rec["results"]
+    assert rec["warnings"] == [] and r["route"] == "ode" and r["dof"] == 2
+    # the rod's end falls faster than g (3g/2 cos φ at its end): the run to it goes slack between
+    # 0.1 and 0.2 s, while the run up to the ground point stays taut
+    (ev,) = [e for e in r["events"] if e["what"] == "slack"]
+    assert 0.1 < ev["t"] < 0.2 and r["reaction"]["rope"]["T"][2][0] > 0 and r["reaction"]["rope"]["T"][3][1] > 0
+    near(r["integrals"][0]["drift"], 0.0, abs(r["V"][0]) + 1, "the energy's drift", TOL)
+    rr = 0.1
+
+    def runs(j):
+        (c1, c2), th = r["x"]["P"][j][:2], r["angle"]["P"][j]
+        phi = r["angle"]["rod"][j]
+        e1, e2 = math.cos(phi), math.sin(phi)                       # the rod's end2
+        out = []
+        for (p1, p2), sign in (((e1, e2), 1.0), ((math.cos(math.radians(30)) + 0.3, 1.0), -1.0)):
+            d1, d2 = p1 - c1, p2 - c2
+            D = math.hypot(d1, d2)
+            # the tangent point's angle about C: the rope leaves the disk on its left (run 1) or
+            # right (run 2) side going up: angle(P − C) ± acos(r/D)
+            beta = math.atan2(d2, d1) + sign * math.acos(rr / D)
+            out.append(math.sqrt(D * D - rr * rr) - sign * rr * (beta - th))
+        return out
+
+    first = runs(0)
+    for j in (1, 2, 3):
+        for k, (a, b) in enumerate(zip(runs(j), first)):
+            if j < 3 or k == 1:         # (run 1 is slack at 0.4 s)
+                near(a, b, 1, f"run {k + 1}'s length", TOL)
+
+
+ROD_LOOP = """
+type: scene
+bodies:
+  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
+  P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
+joints:
+  hinge: {pin: [rod.end1, ground]}
+  rope: {cord: [rod.end2, P, {pulley: ["cos(30*deg) + 0.4", 1], radius: 0.1}, [1.5, 0]]}
+at: [0, 0.1]
+"""
+
+
+@pytest.mark.parametrize("text", [LOOP, ROD_LOOP], ids=["loop", "rod-loop"])
+def test_spanning_rows_against_differences(text):
+    """A segment turning with both ends (elements.Spanning): its row against central differences
+    of its length, γ against the difference of row·v along the motion, and its curvature against
+    differences of the rows, at a state away from the start."""
+    import numpy as np
+
+    from dyncli.loader import split_problems, validate
+    from dyncli.topics.scene import curvature, prepare, solver
+    from tests.conftest import ROOT
+
+    (lp,), _ = split_problems("t.yaml", text.encode(), ROOT)
+    validate(lp)
+    scene = prepare.setup(solver._plan(lp.model))
+    s = scene.system
+    cord = next(e for e in s.elements if e.kind == "cord")
+    assert any(sg.spanning is not None for run in cord.runs for sg in run)
+    rng = np.random.default_rng(3)
+    q = scene.q0 + 0.02 * rng.standard_normal(s.n)
+    v = rng.standard_normal(s.n)
+    h = 1e-6
+    J = cord.jac(q)
+    for j in range(s.n):
+        dq = np.zeros(s.n)
+        dq[j] = h
+        fd = (cord.lengths(q + dq) - cord.lengths(q - dq)) / (2 * h)
+        assert J[:, j] == pytest.approx(fd, abs=1e-8)
+    # γ = −(d/dt J) v: J(q + v h) v − J(q − v h) v over 2h
+    Jdot_v = (cord.jac(q + h * v) @ v - cord.jac(q - h * v) @ v) / (2 * h)
+    assert cord.gamma(q, v, 0.0) == pytest.approx(-Jdot_v, abs=1e-6 * max(1.0, float(np.max(np.abs(Jdot_v)))))
+    lam = rng.standard_normal(s.m)
+    H = curvature.rows_hessian(s, q, lam)
+    for j in range(s.n):
+        dq = np.zeros(s.n)
+        dq[j] = h
+        col = (s.jac(q + dq).T @ lam - s.jac(q - dq).T @ lam) / (2 * h)
+        assert H[:, j] == pytest.approx(col, abs=1e-7 * max(1.0, float(np.max(np.abs(H)))))
