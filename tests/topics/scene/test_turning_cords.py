@@ -21,7 +21,7 @@ import pytest
 
 from tests.conftest import solve_one_text
 from tests.tolerances import ODE_GLOBAL
-from tests.topics.scene.common import TABLE_PULLEY
+from tests.topics.scene.common import TABLE_PULLEY, gallery
 from tests.topics.scene.test_start import near
 
 sp = pytest.importorskip("sympy")
@@ -172,8 +172,6 @@ def test_the_collar_pulled_up_a_rod_gallery_file():
     ½ (m + M ((H − y)/ℓ)²) ẏ² = g (M (ℓ0 − ℓ) − m y): the time to 0.6 m and the top by quadrature
     of dt = dy/ẏ, the speed there, the top where ẏ = 0, the fastest point where d(ẏ²)/dy = 0."""
     import mpmath as mp
-
-    from tests.topics.scene.common import gallery
 
     r = gallery("collar-pulled-up-rod.yaml")["results"]
     with mp.workdps(30):
@@ -402,3 +400,25 @@ def test_spanning_rows_against_differences(text):
         dq[j] = h
         col = (s.jac(q + dq).T @ lam - s.jac(q - dq).T @ lam) / (2 * h)
         assert H[:, j] == pytest.approx(col, abs=1e-7 * max(1.0, float(np.max(np.abs(H)))))
+
+
+def test_gallery_pulley_swings_up_its_rope():
+    """problems/scenes/pulley-swings-up-its-rope.yaml (LOOP with a question) against
+    loop_reference: the state at 0.3 and 0.6 s, and the time B has dropped 0.5 m (the reference's
+    own root, by scipy's brentq on its dense solution) with P's place there."""
+    from scipy.optimize import brentq
+
+    rec = gallery("pulley-swings-up-its-rope.yaml")
+    r = rec["results"]
+    assert rec["warnings"] == []
+    for j, (x, y, th, yB, TB, T1) in enumerate(loop_reference([0.0, 0.3, 0.6])):
+        near(r["x"]["P"][j][0], x, 1, "x_P", TOL)
+        near(r["x"]["P"][j][1], y, 1, "y_P", TOL)
+        near(r["x"]["B"][j][1], yB, 1, "y_B", TOL)
+        near(r["reaction"]["rope"]["T"][j][1], TB, 10, "T on B", TOL)
+    t_drop = brentq(lambda t: loop_reference([t])[0][3] + 1.5, 0.3, 0.6, xtol=1e-13)
+    x, y, *_ = loop_reference([t_drop])[0]
+    (f,) = r["find"]
+    near(f["t"], t_drop, 1, "B dropped 0.5 m", TOL)
+    near(f["x"]["P"][0], x, 1, "x_P there", TOL)
+    near(f["x"]["P"][1], y, 1, "y_P there", TOL)
