@@ -38,15 +38,15 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
     # a length a joint holds (a cord's runs) is a scale of its gap's rounding too
     held = [abs(float(c)) for e in s.elements for c in (getattr(e, "consts", None) or ())]
     L, F, V = max([assembly.length_scale(q, s)] + held), big(f, lam), big(v, v_end)
-    lengths, speeds = ("impact", "leaves", "switch", "taut", "wraps", "unwraps"), ("sticks",)
+    lengths, speeds = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches"), ("sticks",)
     return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in WATCHED}
 
 
-#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps),
+#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps, reaches),
 #: a speed (sticks) and forces (separates, slips, slack, and reverses: the normal force of a
 #: sliding two-sided rough guide changing sign, a new phase without an event)
-WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "sticks", "separates", "slips", "slack",
-           "reverses")
+WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches", "sticks", "separates", "slips",
+           "slack", "reverses")
 #: the watched quantities that are forces of the joints (functions of the multipliers alone)
 FORCES = ("separates", "slips", "slack", "reverses")
 
@@ -59,7 +59,7 @@ def first_crossing(g, a: float, b: float, what: str, tol: float, start: bool, ce
     the spring switched), except that a gap, a slip speed or an end's margin at 0 that goes
     negative is an event there (a block started at a table's edge, moving off it); elsewhere a quantity on its band comes from its side of 0 (a search resumed)."""
     g0 = float(g(np.array([a]))[0])
-    if what == "switch" or abs(g0) <= tol and start and what not in ("sticks", "impact", "taut", "leaves"):
+    if what == "switch" or abs(g0) <= tol and start and what not in ("sticks", "impact", "taut", "leaves", "reaches"):
         if abs(g0) <= tol and start:    # off the band first: g² reaches (2 tol)²
             off = _first_down(lambda ts: 4 * tol * tol - g(ts) ** 2, a, b, tol * tol, cells)
             if off is None:

@@ -735,6 +735,12 @@ class CordEnd:
         return float(self.fixed[0]), float(self.fixed[1])
 
 
+#: where a cord's end is taken to reach its pulley (the event ``reaches``): its segment's straight
+#: part down to this fraction of the cord's length — at 0 the segment's direction is not defined,
+#: and near it √(D² − ρ²) keeps only ε ρ²/ℓ² of its digits (a millionth: six digits of ℓ kept)
+REACH = 1e-6
+
+
 @dataclass
 class Turning:
     """A cord segment between a fixed light pulley (centre C, signed radius ρ as
@@ -752,6 +758,23 @@ class Turning:
     alpha0: float
     angle: int | None = None        # a disk body's angle index (the pulley a disk on a fixed axle)
     theta0: float = 0.0             # its angle at t = 0
+    reach: tuple = (0.0, 0.0, 1.0, 0.0)     # (T, e) at the phase's start: the watch ``reaches``
+
+    def mark(self, P: Point, q) -> None:
+        """Keep the tangent point and direction at q (a phase's start) for :meth:`reach_gap`."""
+        t1, t2, e1, e2, _l = self.tangent(P, q)
+        self.reach = (t1, t2, e1, e2)
+
+    def reach_gap(self, P: Point, q) -> float:
+        """Signed, how far P is from reaching its pulley: with w = P − T_s and e_s the tangent point
+        and direction at the phase's start, w·e_s + (|w| − w·e_s)/4 — |w| along e_s, −|w|/2 past
+        T_s on its line (an end that runs onto the pulley along its own segment, as a block on a
+        table level with the pulley's top: its straight part only touches 0 there), and positive
+        for an end that has turned less than 109° about T_s (a swing is not a reach)."""
+        (p1, p2), (t1, t2, e1, e2) = P.xy(q), self.reach
+        w1, w2 = p1 - t1, p2 - t2
+        along = w1 * e1 + w2 * e2
+        return along + 0.25 * (math.hypot(w1, w2) - along)
 
     def tangent(self, P: Point, q) -> tuple[float, float, float, float, float]:
         """(T1, T2, e1, e2, ℓ) at q: the tangent point, the unit vector from it to P, their distance."""
@@ -761,10 +784,10 @@ class Turning:
         else:                           # from P (a) to the pulley: d = C − P, δ = −ρ
             d1, d2, delta = c1 - p1, c2 - p2, -rho
         D = math.hypot(d1, d2)
-        if not D > abs(rho):
+        if not D > abs(rho) * (1.0 - 1e-9) or not D > 0:    # (on the rim to its rounding: ℓ = 0)
             raise NumericalError(f"a cord's end reached its pulley at [{c1:g}, {c2:g}] (the segment has no straight "
                                  "part left): the motion is not solved past it")
-        psi = math.atan2(d2, d1) - math.asin(delta / D)
+        psi = math.atan2(d2, d1) - math.asin(max(-1.0, min(1.0, delta / D)))
         u1, u2 = math.cos(psi), math.sin(psi)
         t1, t2 = c1 - rho * u2, c2 + rho * u1           # T = C + ρ (e3 × u)
         ell = math.sqrt(max(D * D - rho * rho, 0.0))
@@ -935,6 +958,7 @@ class Cord(Element):
         if disk is not None:            # a disk on a fixed axle: the cord goes round with it
             t.angle = disk.index[2]
             t.theta0 = float(q[t.angle])
+        t.mark(P, q)
         before = self.lengths(q) if self.consts else None
         seg.turning = t
         if before is not None:          # the held lengths, now measured the turning way
@@ -1027,9 +1051,11 @@ class Cord(Element):
             for s in self.runs[r]:
                 if s.spanning is not None:
                     g += s.spanning.gamma(q, v)
-                elif s.turning is not None:
-                    P, T, _got = s.anchor(q)
-                    g += span_gamma(P, T, q, v)
+                elif s.turning is not None:     # a string's from the tangent point held fixed
+                    P, _T, (_t1, _t2, e1, e2, ell) = s.anchor(q)
+                    (v1, v2), (b1, b2) = P.vel_xy(q, v), P.bias_xy(q, v)
+                    across = e1 * v2 - e2 * v1
+                    g -= e1 * b1 + e2 * b2 + (across * across / ell if ell > 0 else 0.0)
                 else:
                     g -= s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v)
             out.append(g)
@@ -1062,7 +1088,41 @@ class Cord(Element):
 
     def watch(self, lam, q, v, t):
         T, gap = self.tensions(lam), np.array(self.consts) - self.lengths(q)
-        return [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
+        out = [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
+        return out + [("reaches", g) for g in self.reach_gaps(q)]
+
+    def mark(self, q) -> None:
+        """A phase starts at q: each turning segment keeps its tangent point and direction there."""
+        for run in self.runs:
+            for s in run:
+                if s.turning is not None:
+                    s.turning.mark(s.point(), q)
+
+    def reach_gaps(self, q) -> list[float]:
+        """Per segment that turns in a taut run, crossing 0 where its end reaches its pulley (the
+        event ``reaches``: the motion stops there): the straight part signed (√|D² − δ²| with
+        the sign of D² − δ²: negative where the end would be inside its pulley, or two circles
+        overlap), from a fixed pulley the smaller of it and Turning.reach_gap (an end that runs
+        onto the pulley along its segment, where the straight part only touches 0) — each less
+        :data:`REACH` of the cord's length (at 0 the segment's direction is not defined)."""
+        out = []
+        eps = REACH * max((abs(c) for c in self.consts), default=0.0)
+        for r in self.taut:
+            for s in self.runs[r]:
+                if s.spanning is not None:
+                    sp = s.spanning
+                    (a1, a2), (b1, b2) = sp.A.xy(q), sp.B.xy(q)
+                    d2, delta = (b1 - a1) ** 2 + (b2 - a2) ** 2, sp.ra - sp.rb
+                elif s.turning is not None:
+                    (p1, p2), (c1, c2) = s.point().xy(q), s.turning.C
+                    w = (p1 - c1) ** 2 + (p2 - c2) ** 2 - s.turning.rho ** 2
+                    out.append(min(s.turning.reach_gap(s.point(), q), math.copysign(math.sqrt(abs(w)), w)) - eps)
+                    continue
+                else:
+                    continue
+                w = d2 - delta * delta
+                out.append(math.copysign(math.sqrt(abs(w)), w) - eps)
+        return out
 
 
 @dataclass

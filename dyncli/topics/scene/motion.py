@@ -55,7 +55,8 @@ class Piece:
 
 
 #: what a one-sided joint's event can be (docs/types/scene.md, "One-sided joints, events and phases")
-EVENT_KINDS = ("separates", "slack", "slips", "sticks", "leaves", "impact", "taut", "rests", "wraps", "unwraps")
+EVENT_KINDS = ("separates", "slack", "slips", "sticks", "leaves", "impact", "taut", "rests", "wraps", "unwraps",
+               "reaches")
 
 
 @dataclass

@@ -120,6 +120,9 @@ class Transitions:
             v = self.settle(t, q, v)
         self._refuse_locked(t, q)
         q = s.project_position(q, t)
+        for e in s.elements:            # a new phase: the cords' turning segments measured from here
+            if e.kind == "cord" and hasattr(e, "mark"):
+                e.mark(q)
         return q, s.project_velocity(q, v, t)
 
     def _change(self, t, q, v, e, what):

@@ -23,7 +23,7 @@ import numpy as np
 from dyncli import ode
 from dyncli.errors import InputError, NumericalError
 
-from . import assembly, crossing, motion, phases
+from . import assembly, crossing, elements, motion, phases
 
 EPS = float(np.finfo(float).eps)
 from .prepare import Scene
@@ -44,7 +44,7 @@ def run(scene: Scene, t_end: float, acc):
     traj = motion.Trajectory(s, 0.0, t_end)
     if scene.dof == 0 and any(e.kind == "drive" for e in s.elements):
         return _kinematics(scene, traj, acc), "kinematics"
-    if acc.method == "closed-form" and _closed_form_kind(s, scene.q0) is None:
+    if acc.method == "closed-form" and _closed_form_kind(s, scene.q0, scene.v0) is None:
         raise InputError("this scene has no closed form (it needs one degree of freedom, joints whose rows are "
                          "affine in the positions and loads affine along the motion): use method auto",
                          "accuracy.method")
@@ -65,6 +65,16 @@ def run(scene: Scene, t_end: float, acc):
         methods.append(traj.method or route)
         traj.phases.append(phases.Phase(t, t_b, phases.joints_of(s), route))
         if hit is None or t_b >= t_end:
+            break
+        if hit[2] == "reaches":         # a cord's end at its pulley: nothing past it is the scene's
+            change.event(t_b, hit[1], "reaches")
+            traj.stopped = t_b
+            cord = next(e for e in s.elements if e.name == hit[1])
+            left = elements.REACH * max(abs(c) for c in cord.consts)
+            scene.warnings.append(f"an end of the cord {hit[1]!r} reaches its pulley at t = {t_b:.7g} s (where the "
+                                  f"straight part between them is down to {left:.3g} m, a millionth of the cord: its "
+                                  "direction is not defined at 0): the motion stops there; the results at later "
+                                  "times are null")
             break
         still = still + 1 if t_b == t else 0
         if still >= phases.MAX_INSTANT:
@@ -583,11 +593,14 @@ def _linear(s, q0, N, i, has_k: bool, has_c: bool) -> motion.Linear1:
     return motion.Linear1(q0, N, i, A0, A1, A2, rel)
 
 
-def _closed_form_kind(s, q0):
-    """How a phase from q0 has a closed form, decided from the structure: ("constant", None)
+def _closed_form_kind(s, q0, v0=None):
+    """How a phase from (q0, v0) has a closed form, decided from the structure: ("constant", None)
     when every made row has a constant Jacobian and every load is constant (any number of
-    degrees of freedom: constant accelerations, free flight included); ("affine", (N, i)) for
-    one degree of freedom with loads affine along it (motion.Linear1); else None."""
+    degrees of freedom: constant accelerations, free flight included), or when the rows that are
+    not linear keep their Jacobians over the plane the motion stays in, q0 + span(v0, a0)
+    (:func:`_keeps_jacobian`: a block on a table hoisting a moving pulley whose strands stay
+    parallel, from rest); ("affine", (N, i)) for one degree of freedom with loads affine along it
+    (motion.Linear1); else None."""
     nd = _null_direction(s, q0)
     if nd is not None and motion.closed_form_reason(s, nd[0], q0) is None:
         has_k, has_c = motion.along(s, q0, nd[0])
@@ -595,19 +608,41 @@ def _closed_form_kind(s, q0):
                                          for e in s.elements)):
             return "affine", nd
     made = [e for e in s.elements if e.rows > 0]
-    if (all(e.linear and e.kind != "drive" for e in made)
-            and all(ld.kind in ("force", "torque") and ld.constant for ld in s.loads)
-            and not any(ld.kind == "force" and ld.P.turns_with_body for ld in s.loads)
-            and not any(getattr(e, "P", None) is not None and e.P.turns_with_body for e in made)):
+    if (any(e.kind == "drive" for e in made)
+            or not all(ld.kind in ("force", "torque") and ld.constant for ld in s.loads)
+            or any(ld.kind == "force" and ld.P.turns_with_body for ld in s.loads)):
+        return None
+    fixed = [e for e in made if not (e.linear and not (getattr(e, "P", None) is not None and e.P.turns_with_body))]
+    if not fixed:
+        return "constant", None
+    if v0 is None:
+        return None
+    a0 = s.solve(q0, v0, 0.0)[0]
+    dirs = [d for d in (np.asarray(v0, float), a0) if np.any(d)]
+    if all(_keeps_jacobian(e, q0, dirs) for e in fixed):
         return "constant", None
     return None
+
+
+def _keeps_jacobian(e, q0, dirs) -> bool:
+    """Whether the element's rows keep their Jacobian over q0 + span(dirs): a pin or a contact on
+    a fixed straight line whose points do not turn along them, a cord whose segments keep their
+    directions (their ends moving apart along them, no end turning with its body).  Then the
+    matrix of the accelerations and multipliers is one over the plane, J̇ q̇ = 0 on it, and the
+    accelerations stay those of the start: the motion stays in the plane, a quadratic in t."""
+    from .contacts import Contact
+    from .elements import Cord, Pin, String
+
+    if type(e) not in (Pin, Contact, Cord, String):
+        return False
+    return all(e.straight_along(q0, d) for d in dirs)
 
 
 def _closed_form(s, traj, t0, q0, v0, t_end, warn=None):
     """A closed-form phase from (t0, q0, v0): one piece to t_end, cut at its first event; ``warn``
     told when the vibration's phase ω*·t has lost its digits by the piece's end
     (:func:`long_phase`)."""
-    kind = _closed_form_kind(s, q0)
+    kind = _closed_form_kind(s, q0, v0)
     if kind is None:
         return None
     along = quad = None
@@ -831,8 +866,10 @@ def _piece_event(s, p, quadratic: bool = False):
     tol = crossing.rounding(s, q, v, p.t_a, v_b)
     at_a = motion.watches(s, q, v, p.t_a)
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
-    watched = [(j, joint, what) for j, (joint, what, _g) in enumerate(at_a)
-               if not (what == "switch" and p.route == "statics")]
+    # the geometry's watches first: an end that reaches its pulley or the end of its surface
+    # bounds the search of the forces, which jump there (the segment's direction does)
+    watched = sorted(((j, joint, what) for j, (joint, what, _g) in enumerate(at_a)
+                      if not (what == "switch" and p.route == "statics")), key=lambda w: w[2] in crossing.FORCES)
     if p.route == "closed-form" and constant_forces(s):
         # the multipliers are one constant over the piece: a force off its band has no crossing
         # (the piece's end read as a check of the structure; where it is beyond the doubles, the

@@ -148,10 +148,12 @@ def test_a_segment_pulled_straight_at_its_pulley_keeps_the_closed_form():
     near(r["a"]["A"][1][0], G / 3, G, "a", 1e-13)
 
 
-def test_the_end_reaching_its_pulley_stops_the_solve_with_the_reason():
-    from tests.conftest import solve_text
-
-    (rec,) = solve_text("""
+def test_the_end_reaching_its_pulley_stops_the_motion_with_the_event():
+    """A block lifted off a table by a cord over a pulley above it swings up into the pulley: the
+    event ``reaches`` where the straight part is down to a millionth of the cord (elements.REACH;
+    at 0 the segment's direction is not defined), the motion stopped there with a warning and the
+    later times null — before, the integrator failed near the pulley."""
+    rec = solve_one_text("""
 type: scene
 surfaces:
   table: {through: [-5, 0], direction: [1, 0]}
@@ -164,7 +166,38 @@ joints:
 t_end: 3
 at: [0, 3]
 """)
-    assert "a cord's end reached its pulley at [0, 0.3]" in (rec.get("error") or ""), rec.get("error")
+    r = rec["results"]
+    assert [(e["joint"], e["what"]) for e in r["events"]] == [("on", "separates"), ("rope", "reaches")]
+    assert r["x"]["A"][1] is None and any("reaches its pulley" in w for w in rec["warnings"]), rec["warnings"]
+    a1, a2 = r["events"][1]["state"]["x"]["A"][:2]
+    ell = math.sqrt(a1 ** 2 + (a2 - 0.3) ** 2 - 0.01)         # its straight part, from A's place
+    assert 0.5e-6 < ell < 5e-6
+
+
+def test_a_block_reaching_a_pulley_level_with_its_table_stops_there():
+    """The textbook's table: the pulley's top level with the table top, so the block runs onto the
+    pulley along its segment and the straight part only touches 0 (Turning.reach_gap finds it as a
+    crossing).  Closed form, a = m_B g/(m_A + m_B) from rest: the event where A is 1.9e-6 m
+    (REACH × the cord's held length 1.9 m) short of the pulley's top, t = √(2 (1 − 1.9e-6)/a)."""
+    rec = solve_one_text("""
+type: scene
+surfaces:
+  table: {through: [-3, 0], direction: [1, 0], length: 3}
+bodies:
+  A: {shape: point, mass: 2, x: [-1, 0]}
+  B: {shape: point, mass: 3, x: [0.1, -1]}
+joints:
+  on_table: {contact: [A, table]}
+  rope: {cord: [A, {pulley: [0, -0.1], radius: 0.1}, B]}
+at: [0, 0.5, 1]
+""")
+    r = rec["results"]
+    assert r["route"] == "closed-form" and r["x"]["A"][2] is None
+    (ev,) = r["events"]
+    assert (ev["joint"], ev["what"]) == ("rope", "reaches")
+    a = 3 * 9.81 / 5
+    near(ev["t"], math.sqrt(2 * (1 - 1.9e-6) / a), 1, "the time it reaches the pulley", 1e-12)
+    near(ev["state"]["x"]["A"][0], -1.9e-6, 1, "A's place there", 1e-13)
 
 
 def test_the_collar_pulled_up_a_rod_gallery_file():
@@ -422,3 +455,67 @@ def test_gallery_pulley_swings_up_its_rope():
     near(f["t"], t_drop, 1, "B dropped 0.5 m", TOL)
     near(f["x"]["P"][0], x, 1, "x_P there", TOL)
     near(f["x"]["P"][1], y, 1, "y_P there", TOL)
+
+
+#: a block A (2 kg) on a rough table (μ = 0.2) tied over a pulley at the table's edge (ρ = 0.1, its
+#: top level with the table) to a moving pulley P (a 4 kg disk, r = 0.1) hanging in a loop of the
+#: rope whose other end is tied to the ceiling at [%s, 0.5]
+TABLE_HOIST = """
+type: scene
+surfaces:
+  table: {through: [-3, 0], direction: [1, 0], length: 3}
+bodies:
+  A: {shape: point, mass: 2, x: [-1, 0], v: [%s, 0]}
+  P: {shape: disk, mass: 4, radius: 0.1, x: [0.2, -1], angle: 0}
+joints:
+  on_table: {contact: [A, table], mu_k: 0.2, mu_s: 0.2}
+  rope: {cord: [A, {pulley: [0, -0.1], radius: 0.1}, P, [%s, 0.5]]}
+at: [0, 0.25, 0.5]
+"""
+
+
+def test_a_block_hoisting_a_moving_pulley_is_solved_in_closed_form():
+    """Two degrees of freedom (the pulley may also swing aside), but from rest, or moving along its
+    path, the motion stays on the line of its start's acceleration: every strand keeps its
+    direction along it, so the rows keep their Jacobian and the accelerations stay constant — the
+    textbook's hoist in closed form (routes._keeps_jacobian).  By energy (34.20) with A's travel
+    s, P down s/2 and turning s/(2r): (m_A + m_P/4 + Ī/(4 r²)) s̈ = m_P g/2 − μ m_A g, so
+    s̈ = g (2 − 0.4)/3.5; the tensions from A's and P's free-body diagrams: T_A = m_A (s̈ + μ g) and
+    T_ceiling from P's turn, Ī (s̈/2r) = r (T_c − T_A) with the rope over the table pulley light (and
+    P's own m_P s̈/2 = m_P g − T_A − T_c checks them).
+    The same scene forced onto the ODE agrees to ODE_GLOBAL × its rtol."""
+    g, mA, mP, r, mu = 9.81, 2.0, 4.0, 0.1, 0.2
+    I = 0.5 * mP * r * r
+    acc = g * (mP / 2 - mu * mA) / (mA + mP / 4 + I / (4 * r * r))
+    TA = mA * (acc + mu * g)
+    Tc = TA + I * (acc / (2 * r)) / r
+    assert abs(mP * acc / 2 - (mP * g - TA - Tc)) <= 1e-12 * mP * g
+    for v in ("0", "0.5"):
+        rec = solve_one_text(TABLE_HOIST % (v, "0.3"))
+        r_ = rec["results"]
+        assert r_["route"] == "closed-form" and r_["dof"] == 2 and rec["warnings"] == []
+        for j, t in enumerate(r_["t"]):
+            s = float(v) * t + 0.5 * acc * t * t
+            near(r_["x"]["A"][j][0], -1 + s, 1, "x_A", 1e-13)
+            near(r_["x"]["P"][j][1], -1 - s / 2, 1, "y_P", 1e-13)
+            near(r_["angle"]["P"][j], s / (2 * r), 10, "θ_P", 1e-13)
+            assert r_["x"]["P"][j][0] == 0.2
+            T = r_["reaction"]["rope"]["T"][j]
+            near(T[0], TA, 10, "T on A", 1e-13)
+            near(T[1], TA, 10, "T down to P", 1e-13)
+            near(T[2], Tc, 10, "T up to the ceiling", 1e-13)
+        ode = solve_one_text((TABLE_HOIST % (v, "0.3")) + "accuracy: {method: ode}\n")["results"]
+        assert ode["route"] == "ode"
+        for j in range(3):
+            near(ode["x"]["A"][j][0], r_["x"]["A"][j][0], 1, "x_A by the ODE", ODE_GLOBAL * 1e-10)
+            near(ode["x"]["P"][j][1], r_["x"]["P"][j][1], 1, "y_P by the ODE", ODE_GLOBAL * 1e-10)
+
+
+def test_a_hoist_that_leaves_its_line_is_integrated():
+    """The same hoist with the ceiling's end 0.2 m off the pulley's side (its strand leaning), or
+    the pulley given a speed aside: the strands turn as it moves, the rows change their
+    Jacobian along the motion, and the ODE answers."""
+    lean = solve_one_text(TABLE_HOIST % ("0", "0.5"))["results"]
+    assert lean["route"] == "ode"
+    aside = solve_one_text((TABLE_HOIST % ("0", "0.3")).replace("angle: 0}", "angle: 0, v: [0.2, 0]}"))
+    assert aside["results"]["route"] == "ode", aside["warnings"]
