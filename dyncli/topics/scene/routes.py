@@ -71,10 +71,10 @@ def run(scene: Scene, t_end: float, acc):
             traj.stopped = t_b
             cord = next(e for e in s.elements if e.name == hit[1])
             left = elements.REACH * max(abs(c) for c in cord.consts)
-            scene.warnings.append(f"an end of the cord {hit[1]!r} reaches its pulley at t = {t_b:.7g} s (where the "
-                                  f"straight part between them is down to {left:.3g} m, a millionth of the cord: its "
-                                  "direction is not defined at 0): the motion stops there; the results at later "
-                                  "times are null")
+            scene.warnings.append(f"a segment of the cord {hit[1]!r} has no straight part left at t = {t_b:.7g} s (an "
+                                  "end at its pulley, or two pulleys it joins touching; taken where it is down to "
+                                  f"{left:.3g} m, a millionth of the cord: its direction is not defined at 0): the "
+                                  "motion stops there; the results at later times are null")
             break
         still = still + 1 if t_b == t else 0
         if still >= phases.MAX_INSTANT:
