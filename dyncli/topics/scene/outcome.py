@@ -78,7 +78,8 @@ def results(scene: Scene, traj, route: str, times: list[float], find_raw, params
                        + [ev.t for ev in traj.events if t_stop is None or ev.t <= t_stop])
     instants = [None if (t_stop is not None and t > t_stop) else inst(t) for t in times]
     res = Result({"dof": scene.dof, "coordinates": scene.coords, "route": route, "t": list(times)})
-    res.results.update(report.collect(instants))
+    shape = inst(t_stop) if t_stop is not None and all(x is None for x in instants) else None
+    res.results.update(report.collect(instants, shape))
     res.results["events"] = [{"t": ev.t, "joint": ev.joint, "what": ev.what, "state": inst(ev.t)}
                              for ev in traj.events if t_stop is None or ev.t <= t_stop]
     res.results["phases"] = [dict(ph.as_dict(), integrals=_phase_integrals(scene, traj, ph)) for ph in traj.phases]

@@ -64,10 +64,11 @@ PER_TIME = ("x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "driv
             "T", "V", "E", "W_nc", "energy_residual")
 
 
-def collect(instants: list) -> dict:
+def collect(instants: list, shape: dict | None = None) -> dict:
     """Instants (dicts, or None after a stopping event) -> the same nesting with a list over
-    the times at every leaf (a vector or a segment list is a leaf)."""
-    template = next((s for s in instants if s is not None), None)
+    the times at every leaf (a vector or a segment list is a leaf); ``shape``: an instant whose
+    nesting to use when every time asked is past the stop (its leaves all None then)."""
+    template = next((s for s in instants if s is not None), shape)
     if template is None:
         return {}
 
