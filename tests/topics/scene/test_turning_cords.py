@@ -583,3 +583,19 @@ def test_two_disks_in_one_rope_keep_its_lengths_and_energy_until_they_touch():
     for j in (1, 2):
         for k, (a, b) in enumerate(zip(runs(j), first)):
             near(a, b, 1, f"run {k + 1}'s length", TOL)
+
+
+def test_gallery_block_hoists_moving_pulley():
+    """problems/scenes/block-hoists-moving-pulley.yaml: TABLE_HOIST's closed form (energy, 34.20)
+    at the times asked and where A has moved 0.5 m (s = ½ s̈ t²)."""
+    g, mA, mP, r, mu = 9.81, 2.0, 4.0, 0.1, 0.2
+    acc = g * (mP / 2 - mu * mA) / (mA + mP / 4 + 0.5 * mP * r * r / (4 * r * r))
+    rec = gallery("block-hoists-moving-pulley.yaml")
+    res = rec["results"]
+    assert res["route"] == "closed-form" and rec["warnings"] == []
+    for j, t in enumerate(res["t"]):
+        near(res["x"]["A"][j][0], -1 + 0.5 * acc * t * t, 1, "x_A", 1e-13)
+    (f,) = res["find"]
+    near(f["t"], math.sqrt(1 / acc), 1, "A moved 0.5 m", 1e-13)
+    near(f["v"]["A"][0], math.sqrt(acc), 1, "A's speed there", 1e-13)
+    near(f["v"]["P"][1], -0.5 * math.sqrt(acc), 1, "P's speed there", 1e-13)
