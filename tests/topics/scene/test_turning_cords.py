@@ -599,3 +599,69 @@ def test_gallery_block_hoists_moving_pulley():
     near(f["t"], math.sqrt(1 / acc), 1, "A moved 0.5 m", 1e-13)
     near(f["v"]["A"][0], math.sqrt(acc), 1, "A's speed there", 1e-13)
     near(f["v"]["P"][1], -0.5 * math.sqrt(acc), 1, "P's speed there", 1e-13)
+
+
+#: a cylinder (4 kg, r = 0.2, Ī = m r²/2) on a rough table (μ_k = 0.4), a cord wound on it leaving
+#: from its side %s (seen along the cord) over a pulley (centre (0, 0.3), ρ = 0.1) to B (2 kg) at x = 0.1
+SPOOL_TABLE = """
+type: scene
+surfaces:
+  table: {through: [-3, 0], direction: [1, 0], length: 3}
+bodies:
+  C: {shape: disk, mass: 4, radius: 0.2, x: [-1.5, 0.2], angle: 0}
+  B: {shape: point, mass: 2, x: [0.1, -1]}
+joints:
+  roll: {rolls: [C, table], mu_s: 0.5, mu_k: 0.4}
+  rope: {cord: [{wound: C, radius: 0.2, side: %s}, {pulley: [0, 0.3], radius: 0.1}, B]}
+at: [0, 0.5, 1]
+"""
+
+
+def test_a_cord_unwinding_from_a_rolling_body_at_an_angle_turns_with_it():
+    """SPOOL_TABLE from the bottom (`side: right`): the cord leaves the cylinder under it and rises
+    15° to the pulley; the table holds the cylinder, so no guide does, and the segment turns with
+    it (elements.Spanning) — before, it kept its direction of t = 0 and the closed form answered
+    x_C(1 s) = −1.2738927 silently.  Pulled at its contact point it cannot roll: it slips from the
+    start.  Reference (Newton–Euler written here): with n = (cos α, sin α) the normal from C to
+    the crossed tangent, −x cos α + 0.1 sin α = r + ρ, α = atan2(0.1, −x) − acos(0.3/D), the
+    cord along u = e3 × n; B's height y_B = ℓ(x) + (r + ρ) α(x) − r θ + const (the wound arc runs
+    to the tangent point the way u leaves it, the pulley's arc from it over the top);
+    m ẍ = T u1 − μ_k N, N = m g − T u2, Ī θ̈ = r T − r μ_k N, m_B ÿ_B = T − m_B g — four linear
+    equations per state, integrated by scipy's DOP853 at rtol 1e-12.  And from the top (`side:
+    left`, the cord level with the pulley's top) it rolls, in closed form: a = m_B g/(2 m_B + 3m/4)."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    m, r, I, mB, mu, g = 4.0, 0.2, 0.5 * 4.0 * 0.04, 2.0, 0.4, 9.81
+    x, th = sp.symbols("x th")
+    D = sp.sqrt(x ** 2 + 0.01)
+    alpha = sp.atan2(0.1, -x) - sp.acos(0.3 / D)
+    yB = sp.sqrt(D ** 2 - 0.09) + 0.3 * alpha - r * th
+    f = sp.lambdify((x, th), [alpha, sp.diff(yB, x), sp.diff(yB, x, 2), yB], "math")
+
+    def solve(z):
+        a, yx, yxx, _ = f(z[0], z[1])
+        n1, n2 = math.cos(a), math.sin(a)
+        u1, u2 = -n2, n1
+        # unknowns ẍ, θ̈, T, N
+        A = np.array([[m, 0, -u1, mu], [0, 0, u2, 1], [0, I, -r, r * mu], [mB * yx, -mB * r, -1, 0]], float)
+        b = np.array([0.0, m * g, 0.0, -mB * g - mB * yxx * z[2] ** 2])
+        return np.linalg.solve(A, b)
+
+    sol = solve_ivp(lambda t, z: [z[2], z[3], *solve(z)[:2]], (0, 1), [-1.5, 0.0, 0.0, 0.0], method="DOP853",
+                    rtol=1e-12, atol=1e-14, dense_output=True)
+    rec = solve_one_text(SPOOL_TABLE % "right")
+    res = rec["results"]
+    assert res["route"] == "ode" and res["events"] == [] and rec["warnings"] == []
+    for j, t in enumerate(res["t"]):
+        z = sol.sol(t)
+        xdd, thdd, T, N = solve(z)
+        assert z[2] + r * z[3] >= 0                   # it slips forward under its contact the whole time
+        near(res["x"]["C"][j][0], z[0], 1, "x_C", TOL)
+        near(res["angle"]["C"][j], z[1], 1, "θ_C", TOL)
+        near(res["x"]["B"][j][1], f(z[0], z[1])[3] - f(-1.5, 0.0)[3] - 1, 1, "y_B", TOL)
+        near(res["reaction"]["rope"]["T"][j][0], T, 10, "T", TOL)
+        near(res["reaction"]["roll"]["N"][j], N, 10, "N", TOL)
+    rolls = solve_one_text(SPOOL_TABLE % "left")["results"]
+    assert rolls["route"] == "closed-form"
+    near(rolls["a"]["C"][0][0], mB * g / (2 * mB + 0.75 * m), 1, "a rolling", 1e-13)
