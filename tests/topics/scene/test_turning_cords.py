@@ -28,6 +28,9 @@ sp = pytest.importorskip("sympy")
 
 G = 9.81
 TOL = ODE_GLOBAL * 1e-10
+#: a closed form's values: the rounding of one solve of the accelerations and forces (a few
+#: hundred ulps of their scale at these mass ratios)
+ROUNDED = 1e-12
 
 
 #: a uniform rod (2 kg, 1 m) hinged at the origin at 30°, its end tied by a cable over a pulley
@@ -517,14 +520,14 @@ def test_a_block_hoisting_a_moving_pulley_is_solved_in_closed_form():
         assert r_["route"] == "closed-form" and r_["dof"] == 2 and rec["warnings"] == []
         for j, t in enumerate(r_["t"]):
             s = float(v) * t + 0.5 * acc * t * t
-            near(r_["x"]["A"][j][0], -1 + s, 1, "x_A", 1e-13)
-            near(r_["x"]["P"][j][1], -1 - s / 2, 1, "y_P", 1e-13)
-            near(r_["angle"]["P"][j], s / (2 * r), 10, "θ_P", 1e-13)
+            near(r_["x"]["A"][j][0], -1 + s, 1, "x_A", ROUNDED)
+            near(r_["x"]["P"][j][1], -1 - s / 2, 1, "y_P", ROUNDED)
+            near(r_["angle"]["P"][j], s / (2 * r), 10, "θ_P", ROUNDED)
             assert r_["x"]["P"][j][0] == 0.2
             T = r_["reaction"]["rope"]["T"][j]
-            near(T[0], TA, 10, "T on A", 1e-13)
-            near(T[1], TA, 10, "T down to P", 1e-13)
-            near(T[2], Tc, 10, "T up to the ceiling", 1e-13)
+            near(T[0], TA, 10, "T on A", ROUNDED)
+            near(T[1], TA, 10, "T down to P", ROUNDED)
+            near(T[2], Tc, 10, "T up to the ceiling", ROUNDED)
         ode = solve_one_text((TABLE_HOIST % (v, "0.3")) + "accuracy: {method: ode}\n")["results"]
         assert ode["route"] == "ode"
         for j in range(3):
@@ -594,11 +597,11 @@ def test_gallery_block_hoists_moving_pulley():
     res = rec["results"]
     assert res["route"] == "closed-form" and rec["warnings"] == []
     for j, t in enumerate(res["t"]):
-        near(res["x"]["A"][j][0], -1 + 0.5 * acc * t * t, 1, "x_A", 1e-13)
+        near(res["x"]["A"][j][0], -1 + 0.5 * acc * t * t, 1, "x_A", ROUNDED)
     (f,) = res["find"]
-    near(f["t"], math.sqrt(1 / acc), 1, "A moved 0.5 m", 1e-13)
-    near(f["v"]["A"][0], math.sqrt(acc), 1, "A's speed there", 1e-13)
-    near(f["v"]["P"][1], -0.5 * math.sqrt(acc), 1, "P's speed there", 1e-13)
+    near(f["t"], math.sqrt(1 / acc), 1, "A moved 0.5 m", ROUNDED)
+    near(f["v"]["A"][0], math.sqrt(acc), 1, "A's speed there", ROUNDED)
+    near(f["v"]["P"][1], -0.5 * math.sqrt(acc), 1, "P's speed there", ROUNDED)
 
 
 #: a cylinder (4 kg, r = 0.2, Ī = m r²/2) on a rough table (μ_k = 0.4), a cord wound on it leaving
@@ -665,3 +668,39 @@ def test_a_cord_unwinding_from_a_rolling_body_at_an_angle_turns_with_it():
     rolls = solve_one_text(SPOOL_TABLE % "left")["results"]
     assert rolls["route"] == "closed-form"
     near(rolls["a"]["C"][0][0], mB * g / (2 * mB + 0.75 * m), 1, "a rolling", 1e-13)
+
+
+def test_a_double_atwood_machine_is_solved_in_closed_form():
+    """A (5 kg) over a light fixed pulley holds the centre of a moving pulley P (1 kg disk, r = 0.1)
+    over which B (1.5 kg) and C (2.5 kg) hang: three degrees of freedom (P may swing aside), from
+    rest every strand keeps its direction, so the accelerations are constant (closed form).
+    Reference, Lagrange in s1 (A down, P up) and s2 (C down from P, B up, P turning s2/r):
+    [[m_A + m_P + m_B + m_C, m_C − m_B], [m_C − m_B, Ī/r² + m_B + m_C]] s̈ =
+    −g (m_P + m_B + m_C − m_A, m_C − m_B) — solved here by numpy."""
+    import numpy as np
+
+    mA, mP, mB, mC, r, g = 5.0, 1.0, 1.5, 2.5, 0.1, 9.81
+    M = np.array([[mA + mP + mB + mC, mC - mB], [mC - mB, 0.5 * mP + mB + mC]])
+    s1, s2 = np.linalg.solve(M, -g * np.array([mP + mB + mC - mA, mC - mB]))
+    rec = solve_one_text("""
+type: scene
+bodies:
+  A: {shape: point, mass: 5, x: [-0.1, -1.5]}
+  P: {shape: disk, mass: 1, radius: 0.1, x: [0.1, -1], angle: 0}
+  B: {shape: point, mass: 1.5, x: [0, -2]}
+  C: {shape: point, mass: 2.5, x: [0.2, -2]}
+joints:
+  top: {cord: [A, {pulley: [0, 0], radius: 0.1}, P]}
+  low: {cord: [B, P, C]}
+at: [0, 0.5]
+""")
+    res = rec["results"]
+    assert res["route"] == "closed-form" and res["dof"] == 3 and rec["warnings"] == []
+    scale = abs(s2)
+    near(res["a"]["A"][0][1], -s1, scale, "A's acceleration", ROUNDED)
+    near(res["a"]["P"][0][1], s1, scale, "P's", ROUNDED)
+    near(res["a"]["B"][0][1], s1 - s2, scale, "B's", ROUNDED)
+    near(res["a"]["C"][0][1], s1 + s2, scale, "C's", ROUNDED)
+    near(res["alpha"]["P"][0][2], s2 / r, scale / r, "P's turn", ROUNDED)
+    near(res["reaction"]["top"]["T"][0][0], mA * (g - s1), mA * g, "the top cord's T", ROUNDED)
+    near(res["x"]["C"][1][1], -2 + 0.5 * (s1 + s2) * 0.25, 1, "C at 0.5 s", ROUNDED)
