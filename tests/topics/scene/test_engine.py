@@ -244,19 +244,25 @@ at: [0, 1, 3]
     assert abs(r["reaction"]["f"]["F"][2] + 0.4 * 2 * 9.81) <= 1e-12 * 8
 
 
-def test_the_drawing_puts_a_line_where_it_is_and_past_every_body_on_it():
-    # a surface with a length is drawn from its `through` point to its end; one without runs past
-    # every body drawn (the block landed beyond the dome's span used to lie off the drawn floor)
+def _solved_gallery(name: str):
+    """The Result (its views' and plots' data included) of problems/scenes/NAME."""
     from dyncli import registry
     from dyncli.loader import split_problems, validate
     from dyncli.result import SolveOptions
+
+    path = PROBLEMS / "scenes" / name
+    (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
+    validate(lp)
+    return registry.solver(lp.type)(lp.model, SolveOptions())
+
+
+def test_the_drawing_puts_a_line_where_it_is_and_past_every_body_on_it():
+    # a surface with a length is drawn from its `through` point to its end; one without runs past
+    # every body drawn (the block landed beyond the dome's span used to lie off the drawn floor)
     from dyncli.topics.scene.plots import _mechanism
 
     def drawn(name):
-        path = PROBLEMS / "scenes" / name
-        (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
-        validate(lp)
-        res = registry.solver(lp.type)(lp.model, SolveOptions())
+        res = _solved_gallery(name)
         return res, {ln.label: ln for ln in _mechanism(res, res.extra["scene_draw"]).lines if ln.label}
 
     res, lines = drawn("block-off-dome.yaml")
@@ -269,16 +275,10 @@ def test_the_drawing_puts_a_line_where_it_is_and_past_every_body_on_it():
 def test_the_drawing_draws_every_cord_from_tangent_point_to_tangent_point():
     # the cords at each requested time: straight segments tangent to the pulleys and disks they
     # pass (the circles drawn already), a string over a round post with its wound arc on the post
-    from dyncli import registry
-    from dyncli.loader import split_problems, validate
-    from dyncli.result import SolveOptions
     from dyncli.topics.scene.plots import _mechanism
 
     def solved(name):
-        path = PROBLEMS / "scenes" / name
-        (lp,), _ = split_problems(path.name, path.read_bytes(), path.parent)
-        validate(lp)
-        res = registry.solver(lp.type)(lp.model, SolveOptions())
+        res = _solved_gallery(name)
         return res, res.extra["scene_draw"]["cords"]
 
     res, cords = solved("atwood-massive-pulley.yaml")        # R = 0.1 about the origin; A left, B right

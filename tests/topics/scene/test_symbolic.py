@@ -222,53 +222,47 @@ def test_collar_on_a_spun_rough_rod():
     assert float(got) == pytest.approx((rdd - w * w * r) * c - 2 * w * rd * sn, rel=1e-12)
 
 
-def test_a_cord_segment_turning_over_a_round_pulley():
-    """A segment from a pulley of radius 0.1 to a block on a table below its level turns with the
-    block (√(D² − ρ²) + c (ψ − ψ0), the arc included): the reduced equation gives the engine's
-    acceleration at a state away from the start (the segment steeper, the block moving)."""
+def _reduced_matches_engine_away_from_start(text: str, moved: dict, rates: dict) -> None:
+    """The reduced equations of the scene ``text`` give the engine's accelerations at a state away
+    from the start: the coordinates ``moved`` placed (the rest by the joints), ``rates`` given."""
     from dyncli.loader import split_problems, validate
     from tests.conftest import ROOT
-    from tests.topics.scene.common import TABLE_PULLEY
 
-    text = TABLE_PULLEY % ("-2", "0.1", "[0]")
     (lp,), _ = split_problems("t.yaml", text.encode(), ROOT)
     validate(lp)
     scene = prepare.setup(solver._plan(lp.model))
     D = derive(scene, {})
     q, v = scene.q0.copy(), scene.v0.copy()
     names = scene.system.names
-    q[names.index("x.A.0")] = -0.6                      # A moved on: the rope's other end placed by the cord
+    for k, x in moved.items():
+        q[names.index(k)] = x
     q = scene.system.project_position(q, 0.0)
-    v[names.index("x.A.0")] = 1.5
+    for k, x in rates.items():
+        v[names.index(k)] = x
     v = scene.system.project_velocity(q, v, 0.0)
     a, _lam, _ = scene.system.solve(q, v, 0.0)
     got = _sdd(D, _values(D, scene, q, v))
     want = [a[j] for j in D.independent]
     assert np.allclose(got, want, rtol=1e-9, atol=1e-12), (got, want)
+
+
+def test_a_cord_segment_turning_over_a_round_pulley():
+    """A segment from a pulley of radius 0.1 to a block on a table below its level turns with the
+    block (√(D² − ρ²) + c (ψ − ψ0), the arc included): the reduced equation gives the engine's
+    acceleration at a state away from the start (the segment steeper, the block moving; the
+    rope's other end placed by the cord)."""
+    from tests.topics.scene.common import TABLE_PULLEY
+
+    _reduced_matches_engine_away_from_start(TABLE_PULLEY % ("-2", "0.1", "[0]"), {"x.A.0": -0.6}, {"x.A.0": 1.5})
 
 
 def test_a_moving_pulley_whose_segments_lean():
     """A disk hanging in a loop whose strands lean (elements.Spanning: ℓ + (ρ_b − ρ_a)(ψ − ψ0)
     less the disk's turn, per segment): the reduced equations give the engine's accelerations at a
     state away from the start (the disk moved aside and up, everything moving)."""
-    from dyncli.loader import split_problems, validate
-    from tests.conftest import ROOT
     from tests.topics.scene.test_turning_cords import LOOP
 
-    (lp,), _ = split_problems("t.yaml", LOOP.encode(), ROOT)
-    validate(lp)
-    scene = prepare.setup(solver._plan(lp.model))
-    D = derive(scene, {})
-    q, v = scene.q0.copy(), scene.v0.copy()
-    names = scene.system.names
-    q[names.index("x.P.0")], q[names.index("x.P.1")] = 0.16, -0.8
-    q = scene.system.project_position(q, 0.0)
-    v[names.index("x.P.0")], v[names.index("angle.P")] = 0.3, 4.0
-    v = scene.system.project_velocity(q, v, 0.0)
-    a, _lam, _ = scene.system.solve(q, v, 0.0)
-    got = _sdd(D, _values(D, scene, q, v))
-    want = [a[j] for j in D.independent]
-    assert np.allclose(got, want, rtol=1e-9, atol=1e-12), (got, want)
+    _reduced_matches_engine_away_from_start(LOOP, {"x.P.0": 0.16, "x.P.1": -0.8}, {"x.P.0": 0.3, "angle.P": 4.0})
 
 
 def test_cli_text_and_latex():

@@ -350,22 +350,26 @@ def test_a_disk_hanging_in_a_loop_whose_segments_lean_turns_them_with_it():
     assert abs(r["x"]["P"][2][0] - 0.1) > 0.05        # it swung aside: a fixed direction would not
 
 
-def test_a_segment_from_a_moving_disk_to_a_rigid_point_turns_with_both():
-    """A rod hinged at the origin holds one end of a loop of rope in which a disk hangs; the loop
-    rises to a ground point.  Both segments at the disk turn with it and the rod's end (before,
-    the one to the rod kept its direction of t = 0, with a warning): the energy is kept, and each
-    taut run's length — written here from the positions reported, the straight parts between the
-    tangent points and the arcs, the disk's turn unwound — stays as it was."""
-    rec = solve_one_text("""
+#: a rod hinged at the origin at 30°, its end tied by a rope down to a disk P hanging in the rope's
+#: loop and on (the %s: the rope's entries after P)
+ROD_AND_DISK = """
 type: scene
 bodies:
   rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
   P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
 joints:
   hinge: {pin: [rod.end1, ground]}
-  rope: {cord: [rod.end2, P, ["cos(30*deg) + 0.3", 1]]}
-at: [0, 0.05, 0.1, 0.4]
-""")
+  rope: {cord: [rod.end2, P, %s]}
+"""
+
+
+def test_a_segment_from_a_moving_disk_to_a_rigid_point_turns_with_both():
+    """A rod hinged at the origin holds one end of a loop of rope in which a disk hangs; the loop
+    rises to a ground point.  Both segments at the disk turn with it and the rod's end (before,
+    the one to the rod kept its direction of t = 0, with a warning): the energy is kept, and each
+    taut run's length — written here from the positions reported, the straight parts between the
+    tangent points and the arcs, the disk's turn unwound — stays as it was."""
+    rec = solve_one_text(ROD_AND_DISK % '["cos(30*deg) + 0.3", 1]' + "at: [0, 0.05, 0.1, 0.4]\n")
     r = rec["results"]
     assert rec["warnings"] == [] and r["route"] == "ode" and r["dof"] == 2
     # the rod's end falls faster than g (3g/2 cos φ at its end): the run to it goes slack between
@@ -396,16 +400,7 @@ at: [0, 0.05, 0.1, 0.4]
                 near(a, b, 1, f"run {k + 1}'s length", TOL)
 
 
-ROD_LOOP = """
-type: scene
-bodies:
-  rod: {shape: rod, mass: 2, length: 1, angle: "30*deg", x: ["0.5*cos(30*deg)", "0.5*sin(30*deg)"]}
-  P: {shape: disk, mass: 1, radius: 0.1, x: ["cos(30*deg) + 0.1", -1], angle: 0}
-joints:
-  hinge: {pin: [rod.end1, ground]}
-  rope: {cord: [rod.end2, P, {pulley: ["cos(30*deg) + 0.4", 1], radius: 0.1}, [1.5, 0]]}
-at: [0, 0.1]
-"""
+ROD_LOOP = ROD_AND_DISK % '{pulley: ["cos(30*deg) + 0.4", 1], radius: 0.1}, [1.5, 0]' + "at: [0, 0.1]\n"
 
 
 #: two disks hanging in one rope between two hooks: the segment between them spans two moving circles
