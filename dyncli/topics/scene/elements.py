@@ -994,7 +994,7 @@ class Cord(Element):
         the circles build placed at its ends: a moving pulley, a rigid body's point)."""
         assert seg.centres is not None and seg.turning is None, "a spanning segment has its ends' circles"
         _Ca, ra, _Cb, rb = seg.centres
-        refs = []
+        refs: list[tuple[Point, int | None]] = []
         for end, (C, _r) in ((seg.a, seg.centres[:2]), (seg.b, seg.centres[2:])):
             if end.point is not None:
                 refs.append((end.point, None))
@@ -1280,13 +1280,14 @@ class PeggedString(String):
     def drawn(self, q) -> list[list[tuple[float, float]]]:
         """One polyline from the fixed end over the wrapped pegs (a round one: the arc wound on it)
         to the body's point."""
-        pts = [tuple(float(x) for x in self._end("a").xy(q))]
+        pts: list[tuple[float, float]] = [self._end("a").xy(q)]
         for j, i in enumerate(self.wrapped):
             rho = self._radius(i)
             if not rho:
                 pts.append((float(self.pegs[i].p[0]), float(self.pegs[i].p[1])))
                 continue
-            (c1, c2), (s, _k, a_in, held) = self.pegs[i].p, self.bends[j]
+            (c1, c2), bend = self.pegs[i].p, self.bends[j]
+            s, a_in, held = bend[0], bend[2], bend[3]
             if held is None:
                 beta = self._wound(q)[1]
             else:
@@ -1294,7 +1295,7 @@ class PeggedString(String):
             m = max(2, int(abs(beta) / (math.pi / 24)) + 2)
             pts += [(c1 + rho * math.cos(a_in + s * beta * k / (m - 1)), c2 + rho * math.sin(a_in + s * beta * k / (m - 1)))
                     for k in range(m)]
-        pts.append(tuple(float(x) for x in self._end("b").xy(q)))
+        pts.append(self._end("b").xy(q))
         return [pts]
 
     def lengths(self, q) -> np.ndarray:

@@ -156,7 +156,7 @@ def _cords_drawn(scene, traj, times) -> list:
     cords = [e for e in scene.system.elements if e.kind == "cord"]
     if not cords:
         return []
-    out = []
+    out: list[list | None] = []
     for t in times:
         if traj.stopped is not None and t > traj.stopped:
             out.append(None)

@@ -76,9 +76,9 @@ def _mechanism(result, draw) -> Plot:
     cords = draw.get("cords") or []
     for j, t in enumerate(r.get("t", [])):
         first = True
-        for k, pts in enumerate((cords[j] if j < len(cords) else None) or ()):     # the cords: dashed
+        for n, pts in enumerate((cords[j] if j < len(cords) else None) or ()):     # the cords: dashed
             plot.lines.append(Line([p[0] for p in pts], [p[1] for p in pts],
-                                   label="cords" if j == 0 and k == 0 else None, style="--", marker=""))
+                                   label="cords" if j == 0 and n == 0 else None, style="--", marker=""))
         for sf in draw.get("carried", ()):           # a carried line or curve, placed with its body
             x = r["x"][sf["carrier"]][j]
             if x is None:

@@ -70,6 +70,7 @@ def run(scene: Scene, t_end: float, acc):
             change.event(t_b, hit[1], "reaches")
             traj.stopped = t_b
             cord = next(e for e in s.elements if e.name == hit[1])
+            assert isinstance(cord, elements.Cord), "a cord's segment reaches its pulley"
             left = elements.REACH * max(abs(c) for c in cord.consts)
             scene.warnings.append(f"a segment of the cord {hit[1]!r} has no straight part left at t = {t_b:.7g} s (an "
                                   "end at its pulley, or two pulleys it joins touching; taken where it is down to "
