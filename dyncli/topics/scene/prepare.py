@@ -412,9 +412,14 @@ def _refuse_massless(system, q, plan) -> None:
     k = max((k for k in range(system.n) if mass[k] == 0), key=lambda k: z[k])
     body = next(b for b in system.bodies if k in b.index)
     what = "I" if body.rigid and k == body.index[-1] and body.mass > 0 else "mass"
+    pulley = any(e.kind == "cord" and any(end.centre is not None and end.centre.body is body
+                                          for run in e.runs for sg in run for end in (sg.a, sg.b))
+                 for e in system.elements)
+    hint = (f" (a light pulley hanging in a cord: pin its load at its centre, {{pin: [{body.name}, LOAD]}}, "
+            "or give the load's mass to the pulley)") if pulley and what == "mass" else ""
     raise InputError(f"{body.name!r} has no {'moment of inertia' if what == 'I' else 'mass'} but can move "
                      f"freely ({system.names[k]} is held by no joint): give it a {what}, or join it so that "
-                     "the joints carry it", f"bodies.{body.name}.{what}")
+                     f"the joints carry it{hint}", f"bodies.{body.name}.{what}")
 
 
 def _gear_carriers(system, q) -> None:

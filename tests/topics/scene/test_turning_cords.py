@@ -19,7 +19,7 @@ import math
 
 import pytest
 
-from tests.conftest import solve_one_text
+from tests.conftest import error_of, solve_one_text
 from tests.tolerances import ODE_GLOBAL
 from tests.topics.scene.common import TABLE_PULLEY, gallery
 from tests.topics.scene.test_start import near
@@ -699,3 +699,43 @@ at: [0, 0.5]
     near(res["alpha"]["P"][0][2], s2 / r, scale / r, "P's turn", ROUNDED)
     near(res["reaction"]["top"]["T"][0][0], mA * (g - s1), mA * g, "the top cord's T", ROUNDED)
     near(res["x"]["C"][1][1], -2 + 0.5 * (s1 + s2) * 0.25, 1, "C at 0.5 s", ROUNDED)
+
+
+def test_a_light_moving_pulley_carries_its_load_on_a_pin():
+    """The textbook's massless moving pulley: a disk of mass 0 with A (4 kg) pinned at its centre
+    hangs in a loop of rope over a fixed pulley to B (1.5 kg).  By energy, B moving 2y as A moves y:
+    (m_A + 4 m_B) ÿ_A = (2 m_B − m_A) g; the tension the same on both sides of the massless pulley,
+    T = m_B (g − 2 ÿ_A); the pin carries A's weight less its inertia.  Hung from a link instead, its
+    sideways place is free and massless: refused, with the pin as the way."""
+    rec = solve_one_text("""
+type: scene
+bodies:
+  P: {shape: disk, mass: 0, radius: 0.1, x: [0.1, -1], angle: 0}
+  A: {shape: point, mass: 4, x: [0.1, -1]}
+  B: {shape: point, mass: 1.5, x: [0.4, -1]}
+joints:
+  hang: {pin: [P, A]}
+  rope: {cord: [[0, 0], P, {pulley: [0.3, 0], radius: 0.1}, B]}
+at: [0, 1]
+""")
+    r = rec["results"]
+    g, mA, mB = 9.81, 4.0, 1.5
+    a = (2 * mB - mA) * g / (mA + 4 * mB)
+    assert r["route"] == "closed-form" and rec["warnings"] == []
+    near(r["a"]["A"][0][1], a, g, "A's acceleration", ROUNDED)
+    near(r["a"]["B"][0][1], -2 * a, g, "B's", ROUNDED)
+    for T in r["reaction"]["rope"]["T"][0]:
+        near(T, mB * (g - 2 * a), mB * g, "T", ROUNDED)
+    near(r["reaction"]["hang"]["R"][0][1], -mA * (g + a), mA * g, "the pin on P, by A", ROUNDED)
+    msg = error_of("""
+type: scene
+bodies:
+  P: {shape: disk, mass: 0, radius: 0.1, x: [0.1, -1], angle: 0}
+  A: {shape: point, mass: 4, x: [0.1, -1.5]}
+  B: {shape: point, mass: 1.5, x: [0.4, -1]}
+joints:
+  hang: {link: [P, A], length: 0.5}
+  rope: {cord: [[0, 0], P, {pulley: [0.3, 0], radius: 0.1}, B]}
+at: [0, 1]
+""")
+    assert "bodies.P.mass" in msg and "pin its load at its centre" in msg, msg
