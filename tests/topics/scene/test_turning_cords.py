@@ -707,17 +707,18 @@ def test_a_light_moving_pulley_carries_its_load_on_a_pin():
     (m_A + 4 m_B) ÿ_A = (2 m_B − m_A) g; the tension the same on both sides of the massless pulley,
     T = m_B (g − 2 ÿ_A); the pin carries A's weight less its inertia.  Hung from a link instead, its
     sideways place is free and massless: refused, with the pin as the way."""
-    rec = solve_one_text("""
+    text = """
 type: scene
 bodies:
   P: {shape: disk, mass: 0, radius: 0.1, x: [0.1, -1], angle: 0}
-  A: {shape: point, mass: 4, x: [0.1, -1]}
+  A: {shape: point, mass: 4, x: [0.1, %s]}
   B: {shape: point, mass: 1.5, x: [0.4, -1]}
 joints:
-  hang: {pin: [P, A]}
+  hang: %s
   rope: {cord: [[0, 0], P, {pulley: [0.3, 0], radius: 0.1}, B]}
 at: [0, 1]
-""")
+"""
+    rec = solve_one_text(text % ("-1", "{pin: [P, A]}"))
     r = rec["results"]
     g, mA, mB = 9.81, 4.0, 1.5
     a = (2 * mB - mA) * g / (mA + 4 * mB)
@@ -727,15 +728,5 @@ at: [0, 1]
     for T in r["reaction"]["rope"]["T"][0]:
         near(T, mB * (g - 2 * a), mB * g, "T", ROUNDED)
     near(r["reaction"]["hang"]["R"][0][1], -mA * (g + a), mA * g, "the pin on P, by A", ROUNDED)
-    msg = error_of("""
-type: scene
-bodies:
-  P: {shape: disk, mass: 0, radius: 0.1, x: [0.1, -1], angle: 0}
-  A: {shape: point, mass: 4, x: [0.1, -1.5]}
-  B: {shape: point, mass: 1.5, x: [0.4, -1]}
-joints:
-  hang: {link: [P, A], length: 0.5}
-  rope: {cord: [[0, 0], P, {pulley: [0.3, 0], radius: 0.1}, B]}
-at: [0, 1]
-""")
+    msg = error_of(text % ("-1.5", "{link: [P, A], length: 0.5}"))
     assert "bodies.P.mass" in msg and "pin its load at its centre" in msg, msg
