@@ -834,10 +834,10 @@ class Spanning:
         d1, d2 = b1 - a1, b2 - a2
         D = math.hypot(d1, d2)
         delta = self.ra - self.rb
-        if not D > abs(delta):
+        if not D > abs(delta) * (1.0 - 1e-9) or not D > 0:     # (touching to its rounding: ℓ = 0)
             raise NumericalError(f"a cord's segment lost its straight part (its ends at [{a1:.6g}, {a2:.6g}] and "
                                  f"[{b1:.6g}, {b2:.6g}] overlap): the motion is not solved past it")
-        psi = math.atan2(d2, d1) - math.asin(delta / D)
+        psi = math.atan2(d2, d1) - math.asin(max(-1.0, min(1.0, delta / D)))
         u1, u2 = math.cos(psi), math.sin(psi)
         ell = math.sqrt(max(D * D - delta * delta, 0.0))
         return u1, u2, ell, a1 - self.ra * u2, a2 + self.ra * u1, b1 - self.rb * u2, b2 + self.rb * u1
@@ -867,7 +867,7 @@ class Spanning:
         (av1, av2), (bv1, bv2) = self.A.vel_xy(q, v), self.B.vel_xy(q, v)
         (ab1, ab2), (bb1, bb2) = self.A.bias_xy(q, v), self.B.bias_xy(q, v)
         across = -u2 * (bv1 - av1) + u1 * (bv2 - av2)
-        return -(u1 * (bb1 - ab1) + u2 * (bb2 - ab2) + across * across / ell)
+        return -(u1 * (bb1 - ab1) + u2 * (bb2 - ab2) + (across * across / ell if ell > 0 else 0.0))
 
     def straight_along(self, q, N, n: int) -> bool:
         """Whether u stays put along the motion q + N s: its ends move apart along u."""

@@ -45,9 +45,9 @@ def run(scene: Scene, t_end: float, acc):
     if scene.dof == 0 and any(e.kind == "drive" for e in s.elements):
         return _kinematics(scene, traj, acc), "kinematics"
     if acc.method == "closed-form" and _closed_form_kind(s, scene.q0, scene.v0) is None:
-        raise InputError("this scene has no closed form (it needs one degree of freedom, joints whose rows are "
-                         "affine in the positions and loads affine along the motion): use method auto",
-                         "accuracy.method")
+        raise InputError("this scene has no closed form (it needs constant loads and joints whose rows keep their "
+                         "Jacobian along the motion, or one degree of freedom with rows affine in the positions and "
+                         "loads affine along the motion): use method auto", "accuracy.method")
     if acc.method == "quadrature":      # on request only in this release: its cost is seconds (docs)
         from . import energy
 
