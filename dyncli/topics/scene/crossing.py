@@ -38,15 +38,16 @@ def rounding(s, q, v, t: float, v_end) -> dict[str, float]:
     # a length a joint holds (a cord's runs) is a scale of its gap's rounding too
     held = [abs(float(c)) for e in s.elements for c in (getattr(e, "consts", None) or ())]
     L, F, V = max([assembly.length_scale(q, s)] + held), big(f, lam), big(v, v_end)
-    lengths, speeds = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches"), ("sticks",)
+    lengths, speeds = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches", "turns"), ("sticks",)
     return {what: 64 * EPS * (L if what in lengths else V if what in speeds else F) for what in WATCHED}
 
 
-#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps, reaches),
+#: the watched quantities (motion.watches): lengths (impact, leaves, switch, taut, wraps, unwraps, reaches,
+#: turns: a cord's arc on its pulley three eighths of a turn on, a new phase without an event),
 #: a speed (sticks) and forces (separates, slips, slack, and reverses: the normal force of a
 #: sliding two-sided rough guide changing sign, a new phase without an event)
-WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches", "sticks", "separates", "slips",
-           "slack", "reverses")
+WATCHED = ("impact", "leaves", "switch", "taut", "wraps", "unwraps", "reaches", "turns", "sticks", "separates",
+           "slips", "slack", "reverses")
 #: the watched quantities that are forces of the joints (functions of the multipliers alone)
 FORCES = ("separates", "slips", "slack", "reverses")
 

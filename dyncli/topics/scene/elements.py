@@ -759,11 +759,21 @@ class Turning:
     angle: int | None = None        # a disk body's angle index (the pulley a disk on a fixed axle)
     theta0: float = 0.0             # its angle at t = 0
     reach: tuple = (0.0, 0.0, 1.0, 0.0)     # (T, e) at the phase's start: the watch ``reaches``
+    ref: float = 0.0                # α at the phase's start, unwound (whole turns counted): the arc's branch
+
+    def angle_of(self, P: Point, q) -> float:
+        """α, the tangent point's angle about C, on its branch near ``ref`` (within half a turn)."""
+        t1, t2, *_ = self.tangent(P, q)
+        return self.ref + math.remainder(math.atan2(t2 - self.C[1], t1 - self.C[0]) - self.ref, 2 * math.pi)
 
     def mark(self, P: Point, q) -> None:
-        """Keep the tangent point and direction at q (a phase's start) for :meth:`reach_gap`."""
+        """Keep the tangent point and direction at q (a phase's start) for :meth:`reach_gap`, and
+        α there as the arc's branch (the watch ``turns`` starts a phase before it is half a turn
+        away)."""
         t1, t2, e1, e2, _l = self.tangent(P, q)
         self.reach = (t1, t2, e1, e2)
+        if self.c:
+            self.ref = self.angle_of(P, q)
 
     def reach_gap(self, P: Point, q) -> float:
         """Signed, how far P is from reaching its pulley: with w = P − T_s and e_s the tangent point
@@ -784,7 +794,9 @@ class Turning:
         else:                           # from P (a) to the pulley: d = C − P, δ = −ρ
             d1, d2, delta = c1 - p1, c2 - p2, -rho
         D = math.hypot(d1, d2)
-        if not D > abs(rho) * (1.0 - 1e-9) or not D > 0:    # (on the rim to its rounding: ℓ = 0)
+        # (inside the rim, a trial state of a step that the event ``reaches`` will cut: ℓ = 0 and
+        # the limit direction, so that the step is rejected or cut rather than the solve lost)
+        if not D > 0.5 * abs(rho) or not D > 0:
             raise NumericalError(f"a cord's end reached its pulley at [{c1:g}, {c2:g}] (the segment has no straight "
                                  "part left): the motion is not solved past it")
         psi = math.atan2(d2, d1) - math.asin(max(-1.0, min(1.0, delta / D)))
@@ -796,11 +808,10 @@ class Turning:
     def length(self, P: Point, q) -> float:
         """ℓ + c (α − α0), less c (θ − θ0) on a disk that turns (the arc from the tangent point to
         the disk's material point where the cord leaves it: no slip)."""
-        t1, t2, _e1, _e2, ell = self.tangent(P, q)
+        ell = self.tangent(P, q)[4]
         if not self.c:
             return ell
-        c1, c2 = self.C
-        out = ell + self.c * math.remainder(math.atan2(t2 - c2, t1 - c1) - self.alpha0, 2 * math.pi)
+        out = ell + self.c * (self.angle_of(P, q) - self.alpha0)
         if self.angle is not None:
             out -= self.c * (float(q[self.angle]) - self.theta0)
         return out
@@ -827,6 +838,16 @@ class Spanning:
     angle_b: int | None = None
     th0a: float = 0.0
     th0b: float = 0.0
+    ref: float = 0.0                # ψ at the phase's start, unwound: the arcs' branch (as Turning.ref)
+
+    def angle_of(self, q) -> float:
+        """ψ, the segment's direction, on its branch near ``ref`` (within half a turn)."""
+        u1, u2, *_ = self.geometry(q)
+        return self.ref + math.remainder(math.atan2(u2, u1) - self.ref, 2 * math.pi)
+
+    def mark(self, q) -> None:
+        if self.rb != self.ra:
+            self.ref = self.angle_of(q)
 
     def geometry(self, q) -> tuple[float, float, float, float, float, float, float]:
         """(u1, u2, ℓ, T_a1, T_a2, T_b1, T_b2) at q."""
@@ -834,7 +855,7 @@ class Spanning:
         d1, d2 = b1 - a1, b2 - a2
         D = math.hypot(d1, d2)
         delta = self.ra - self.rb
-        if not D > abs(delta) * (1.0 - 1e-9) or not D > 0:     # (touching to its rounding: ℓ = 0)
+        if not D > 0.5 * abs(delta) or not D > 0:     # (overlapping: a trial state, as Turning.tangent's)
             raise NumericalError(f"a cord's segment lost its straight part (its ends at [{a1:.6g}, {a2:.6g}] and "
                                  f"[{b1:.6g}, {b2:.6g}] overlap): the motion is not solved past it")
         psi = math.atan2(d2, d1) - math.asin(max(-1.0, min(1.0, delta / D)))
@@ -846,7 +867,7 @@ class Spanning:
         u1, u2, ell, *_ = self.geometry(q)
         out = ell
         if self.rb != self.ra:
-            out += (self.rb - self.ra) * math.remainder(math.atan2(u2, u1) - self.psi0, 2 * math.pi)
+            out += (self.rb - self.ra) * (self.angle_of(q) - self.psi0)
         if self.angle_b is not None:
             out -= self.rb * (float(q[self.angle_b]) - self.th0b)
         if self.angle_a is not None:
@@ -951,7 +972,7 @@ class Cord(Element):
         assert P is not None
         t1, t2, e1, e2, _ell = t.tangent(P, q)
         w1, w2 = t1 - t.C[0], t2 - t.C[1]
-        t.alpha0 = math.atan2(w2, w1) if rho else 0.0
+        t.alpha0 = t.ref = math.atan2(w2, w1) if rho else 0.0
         # c = u·(e3 × (T − C)) with u from T toward P for the length's growth as T runs on: the
         # gradient of ℓ + c α is then e (its tangential part cancels)
         t.c = (e1 * -w2 + e2 * w1) if rho else 0.0
@@ -983,11 +1004,23 @@ class Cord(Element):
                 out.append([s.a.drawn(s.u, q), s.b.drawn(s.u, q)])
         return out
 
+    def _arcs(self) -> list:
+        """The turning and spanning segments, in order: each keeps its arc's branch."""
+        return [s.turning or s.spanning for run in self.runs for s in run if s.turning or s.spanning]
+
     def phase(self):
-        return self.slack
+        arcs = self._arcs()
+        return (self.slack, tuple((a.ref, getattr(a, "reach", None)) for a in arcs)) if arcs else self.slack
 
     def set_phase(self, state) -> None:
-        self.slack = state
+        if isinstance(state, tuple):
+            self.slack, refs = state
+            for a, (ref, reach) in zip(self._arcs(), refs):
+                a.ref = ref
+                if reach is not None:
+                    a.reach = reach
+        else:
+            self.slack = state
 
     def let_span(self, seg: Segment, q) -> None:
         """Let the segment ``seg`` turn with both its ends from here on (:class:`Spanning`, from
@@ -1005,7 +1038,7 @@ class Cord(Element):
         (A, ia), (B, ib) = refs
         sp = Spanning(A, B, float(ra), float(rb), angle_a=ia, angle_b=ib)
         u1, u2, *_ = sp.geometry(q)
-        sp.psi0 = math.atan2(u2, u1)
+        sp.psi0 = sp.ref = math.atan2(u2, u1)
         sp.th0a = float(q[ia]) if ia is not None else 0.0
         sp.th0b = float(q[ib]) if ib is not None else 0.0
         before = self.lengths(q) if self.consts else None
@@ -1089,14 +1122,34 @@ class Cord(Element):
     def watch(self, lam, q, v, t):
         T, gap = self.tensions(lam), np.array(self.consts) - self.lengths(q)
         out = [("taut", float(gap[r])) if r in self.slack else ("slack", T[r]) for r in range(len(self.runs))]
-        return out + [("reaches", g) for g in self.reach_gaps(q)]
+        return out + [("reaches", g) for g in self.reach_gaps(q)] + [("turns", g) for g in self.turn_gaps(q)]
 
     def mark(self, q) -> None:
-        """A phase starts at q: each turning segment keeps its tangent point and direction there."""
+        """A phase starts at q: each turning segment keeps its tangent point and direction there,
+        and each arc its branch."""
         for run in self.runs:
             for s in run:
                 if s.turning is not None:
                     s.turning.mark(s.point(), q)
+                elif s.spanning is not None:
+                    s.spanning.mark(q)
+
+    def turn_gaps(self, q) -> list[float]:
+        """Per segment with an arc (a turning segment over a round pulley, a spanning one between
+        circles of unequal signed radii): |c| (cos Δ + √½), Δ its angle from the phase's start —
+        crossing 0 three eighths of a turn away (the watch ``turns``: a new phase, no event, the
+        arc's branch moved on, so that a segment may go round its pulley any number of times)."""
+        out = []
+        for run in self.runs:
+            for s in run:
+                if s.turning is not None and s.turning.c:
+                    c, d = s.turning.c, s.turning.angle_of(s.point(), q) - s.turning.ref
+                elif s.spanning is not None and s.spanning.rb != s.spanning.ra:
+                    c, d = s.spanning.rb - s.spanning.ra, s.spanning.angle_of(q) - s.spanning.ref
+                else:
+                    continue
+                out.append(abs(c) * (math.cos(d) + math.sqrt(0.5)))
+        return out
 
     def reach_gaps(self, q) -> list[float]:
         """Per segment that turns in a taut run, crossing 0 where its end reaches its pulley (the

@@ -806,7 +806,7 @@ def _pulls(system, q, lam) -> str | None:
                 return (f"the string {e.name!r} rests on its peg at [{p.p[0]:g}, {p.p[1]:g}] (small swings turn about "
                         "the peg one way and about the string's end the other: not one linear system)")
         for what, g in e.watch(system.lam_of(lam, i), q, v, 0.0):
-            if what in ("sticks", "wraps", "unwraps", "reaches"):   # (a peg's side, a cord's reach: geometry)
+            if what in ("sticks", "wraps", "unwraps", "reaches", "turns"):   # (a peg's side, a cord's reach: geometry)
                 continue
             if g < -1e-9 * max(1.0, float(np.max(np.abs(lam), initial=0.0))):
                 return f"the joint {e.name!r} {what}"

@@ -173,6 +173,7 @@ class Transitions:
             done = e.turn(q, v, what)
             if done is not None:
                 self.event(t, e.name, done)
+        # "turns" (a cord's arc three eighths of a turn on): no event; after() marks its new branch
         return v
 
     def note_groups(self) -> None:

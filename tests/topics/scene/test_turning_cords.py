@@ -730,3 +730,23 @@ at: [0, 1]
     near(r["reaction"]["hang"]["R"][0][1], -mA * (g + a), mA * g, "the pin on P, by A", ROUNDED)
     msg = error_of(text % ("-1.5", "{link: [P, A], length: 0.5}"))
     assert "bodies.P.mass" in msg and "pin its load at its centre" in msg, msg
+
+
+def test_a_segment_that_swings_round_its_disk_keeps_its_arc_on_branch():
+    """LOOP on to 0.95 s: the disk whips up past its hook (by 0.9 s it is above it), the hook's
+    strand turning from straight down to up and over — past half a turn from its direction of
+    t = 0.  Its arc is measured on a branch moved on at each three eighths of a turn (the watch
+    ``turns``: a new phase, no event), so the held length does not jump by 2π r where the angle
+    wraps (it did: a false ``taut`` and a chatter refusal at 1.1256 s).  Against loop_reference,
+    whose equations read only the derivatives of the angles (no branch): P's place and B's tension."""
+    rec = solve_one_text(LOOP.replace("at: [0, 0.3, 0.6]", "at: [0, 0.85, 0.95]"))
+    r = rec["results"]
+    assert r["events"] == [] and len(r["phases"]) >= 2, r["phases"]
+    for j, (x, y, _th, _yB, TB, _T1) in enumerate(loop_reference([0.0, 0.85, 0.95])):
+        near(r["x"]["P"][j][0], x, 1, "x_P", TOL)
+        near(r["x"]["P"][j][1], y, 1, "y_P", TOL)
+        near(r["reaction"]["rope"]["T"][j][1], TB, max(TB, 10), "T on B", TOL)
+    assert r["x"]["P"][2][1] > 0                    # above the hook
+    long = solve_one_text(LOOP.replace("at: [0, 0.3, 0.6]", "at: [0, 1.5]"))
+    assert long.get("error") is None, long.get("error")
+    assert [e["what"] for e in long["results"]["events"]] == ["slack", "taut"]
