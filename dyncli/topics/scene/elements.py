@@ -764,6 +764,9 @@ class Turning:
     def angle_of(self, P: Point, q) -> float:
         """α, the tangent point's angle about C, on its branch near ``ref`` (within half a turn)."""
         t1, t2, *_ = self.tangent(P, q)
+        return self._unwound(t1, t2)
+
+    def _unwound(self, t1: float, t2: float) -> float:
         return self.ref + math.remainder(math.atan2(t2 - self.C[1], t1 - self.C[0]) - self.ref, 2 * math.pi)
 
     def mark(self, P: Point, q) -> None:
@@ -808,10 +811,10 @@ class Turning:
     def length(self, P: Point, q) -> float:
         """ℓ + c (α − α0), less c (θ − θ0) on a disk that turns (the arc from the tangent point to
         the disk's material point where the cord leaves it: no slip)."""
-        ell = self.tangent(P, q)[4]
+        t1, t2, _e1, _e2, ell = self.tangent(P, q)
         if not self.c:
             return ell
-        out = ell + self.c * (self.angle_of(P, q) - self.alpha0)
+        out = ell + self.c * (self._unwound(t1, t2) - self.alpha0)
         if self.angle is not None:
             out -= self.c * (float(q[self.angle]) - self.theta0)
         return out
