@@ -207,6 +207,9 @@ def test_a_block_reaching_a_pulley_level_with_its_table_stops_there():
     near(ev["state"]["x"]["A"][0], -1.9e-6, 1, "A's place there", 1e-13)
     # every time asked past the stop: the tables have their rows, each null (fuzz seed 5423743: a
     # KeyError once no instant was left to shape them)
+    # the question "when does the block reach the pulley": {event: reaches}
+    asked = solve_one_text(TABLE_TOP + "find:\n  - {event: reaches, joint: rope}\n")["results"]["find"][0]
+    assert asked["reached"] and asked["t"] == ev["t"] and asked["x"]["A"] == ev["state"]["x"]["A"]
     late = solve_one_text(TABLE_TOP.replace("at: [0, 0.5, 1]", "at: [1, 2]"))
     assert late.get("error") is None and late["results"]["x"]["A"] == [None, None]
     assert late["results"]["T"] == [None, None] and late["results"]["events"][0]["what"] == "reaches"
