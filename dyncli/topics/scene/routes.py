@@ -869,8 +869,11 @@ def _piece_event(s, p, quadratic: bool = False):
     # held at rest, a one-sided spring's stretch does not change (no switch to look for)
     # the geometry's watches first: an end that reaches its pulley or the end of its surface
     # bounds the search of the forces, which jump there (the segment's direction does)
+    # (in a closed form every cord keeps its segments' directions: an arc's angle does not move,
+    # its watch ``turns`` cannot cross)
     watched = sorted(((j, joint, what) for j, (joint, what, _g) in enumerate(at_a)
-                      if not (what == "switch" and p.route == "statics")), key=lambda w: w[2] in crossing.FORCES)
+                      if not (what == "switch" and p.route == "statics")
+                      and not (what == "turns" and p.route == "closed-form")), key=lambda w: w[2] in crossing.FORCES)
     if p.route == "closed-form" and constant_forces(s):
         # the multipliers are one constant over the piece: a force off its band has no crossing
         # (the piece's end read as a check of the structure; where it is beyond the doubles, the
