@@ -733,7 +733,9 @@ def _pegged_string(name: str, path: str, nodes: list, q: np.ndarray, n: int) -> 
         ends.reverse()                          # the string hangs from its fixed end
     if ends[0][1].body is not None or ends[1][1].body is None:
         raise InputError("a string over pegs runs from a fixed point (a ground point [x1, x2]) to a point of a body: "
-                         f"here {'both ends move' if ends[0][1].body is not None else 'neither end moves'}", path)
+                         + ("here both ends move (a cord over a smooth peg between two moving bodies is a cord over a "
+                            "point pulley: {pulley: [x1, x2]})" if ends[0][1].body is not None else "here neither end moves"),
+                         path)
     A, B = ends[0][1].pos(q), ends[1][1].pos(q)
     d = B - A
     if not math.hypot(*d) > 0:

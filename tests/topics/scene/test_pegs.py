@@ -393,3 +393,19 @@ t_end: 1.2
         near(abs((c1 - b1) * v1 + (c2 - b2) * v2) / speed, rho, 1, "the free part tangent to the post", TOL)
     assert r["integrals"][0]["name"] == "E" and r["integrals"][0]["drift"] < 1e-8
     assert all(T[0] > 0 for T in r["reaction"]["string"]["T"][1:])
+
+
+def test_a_peg_between_two_moving_bodies_points_to_a_point_pulley():
+    # an Atwood machine written over a peg: refused, naming the point pulley that models it
+    text = """
+type: scene
+bodies:
+  A: {shape: point, mass: 1, x: [0, -1]}
+  B: {shape: point, mass: 2, x: [0, -1.2]}
+joints:
+  s: {cord: [A, %s, B]}
+at: [0, 0.5]
+"""
+    refusal(text % "{peg: [0, 0]}", "joints.s.cord", "both ends move", "{pulley: [x1, x2]}")
+    r = solve_one_text(text % "{pulley: [0, 0]}")["results"]
+    assert r["a"]["B"][0][1] == pytest.approx(-9.81 / 3, rel=1e-12)
