@@ -94,13 +94,24 @@ def setup(plan: build.Plan) -> Scene:
     return Scene(system, q, v, dof, coords, warnings, list(surfaces.values()))
 
 
+#: the joints that hold a disk's axle for good (a cord, a contact, rolling or a drive may let it move:
+#: a rolling drum held at t = 0 by friction and its own cord slips once the static test fails)
+AXLE_HOLDERS = ("pin", "link", "slider", "gear")
+
+
+def _axle_motions(system, q) -> np.ndarray:
+    """The velocities that the joints holding axles for good (:data:`AXLE_HOLDERS`) allow."""
+    rows = [r for e in system.elements if e.rows and e.kind in AXLE_HOLDERS for r in e.jac_list(q.tolist())]
+    return assembly.motions(np.array(rows, dtype=float).reshape(len(rows), system.n), system.n)
+
+
 def _axle_fixed(system, q, disk, free=None) -> bool:
     """Whether the disk body's centre cannot move (a massive pulley on a fixed axle); True for no
-    disk (a light fixed pulley).  ``free``: the velocities the joints allow, when already made."""
+    disk (a light fixed pulley).  ``free``: :func:`_axle_motions`, when already made."""
     if disk is None:
         return True
     if free is None:
-        free = assembly.motions(system.jac(q), system.n)
+        free = _axle_motions(system, q)
     return float(np.max(np.abs(free[:, list(disk.index[:2])]), initial=0.0)) <= 1e-12
 
 
@@ -114,7 +125,7 @@ def _kept_across(system, q) -> None:
             and end.point is not None and end.point.body is not None and end.point.body.rigid]
     if not kept:
         return
-    free = assembly.motions(system.jac(q), system.n)
+    free = _axle_motions(system, q)
     for cord, seg in kept:
         if seg.pulley is not None and _axle_fixed(system, q, seg.pulley[3], free):
             cord.let_turn(seg, q)
@@ -212,7 +223,7 @@ def _span_moving(system, q) -> None:
             if not disks:
                 continue
             if free is None:
-                free = assembly.motions(system.jac(q), system.n)
+                free = _axle_motions(system, q)
             if any(not _axle_fixed(system, q, d, free) for d in disks):
                 cord.let_span(seg, q)
     system.refresh()

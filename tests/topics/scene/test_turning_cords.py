@@ -753,3 +753,52 @@ def test_a_segment_that_swings_round_its_disk_keeps_its_arc_on_branch():
     long = solve_one_text(LOOP.replace("at: [0, 0.3, 0.6]", "at: [0, 1.5]"))
     assert long.get("error") is None, long.get("error")
     assert [e["what"] for e in long["results"]["events"]] == ["slack", "taut"]
+
+
+def test_a_drum_held_at_first_by_friction_and_its_cord_turns_its_segment_once_it_slips():
+    """A drum (2 kg, r = 0.1) on a 30° slope (μ_s = 0.1, μ_k = 0.08), a cord wound on it tied to a
+    ground point up the slope, off the slope's line.  At t = 0 the cord and rolling hold it still
+    together, but the static test fails: it slips down, paying out cord, and the segment to the
+    anchor turns as it goes.  Before, its axle counted as fixed (the joints of t = 0 allowed it no
+    motion), the segment kept its direction and the closed form answered.  Now it is integrated,
+    and the cord's length — rebuilt here from the reported places: the tangent from the anchor,
+    √(D² − r²), and the wound arc r (β_T − θ) taken the way the cord leaves the drum toward the
+    anchor (β_T = angle(A − C) ± acos(r/D), the one whose tangent points along the segment) —
+    stays as it was."""
+    rec = solve_one_text("""
+type: scene
+params: {beta: 30*deg}
+surfaces:
+  slope: {through: [0, 0], direction: [cos(beta), -sin(beta)]}
+bodies:
+  C: {shape: disk, mass: 2, radius: 0.1, x: [cos(beta) + 0.1*sin(beta), -sin(beta) + 0.1*cos(beta)], angle: 0}
+joints:
+  roll: {rolls: [C, slope], mu_s: 0.1, mu_k: 0.08}
+  string: {cord: [[0, 0.2*cos(beta)], {wound: C, radius: 0.1}]}
+at: [0, 0.25, 0.5]
+""")
+    r = rec["results"]
+    assert r["route"] == "ode" and rec["warnings"] == [] and r["events"] == []
+    a1, a2, rr = 0.0, 0.2 * math.cos(math.radians(30)), 0.1
+
+    def length(j, pick=None):
+        (c1, c2), th = r["x"]["C"][j][:2], r["angle"]["C"][j]
+        d1, d2 = a1 - c1, a2 - c2
+        D = math.hypot(d1, d2)
+        out = []
+        for s in (1.0, -1.0):
+            beta = math.atan2(d2, d1) + s * math.acos(rr / D)
+            t1, t2 = c1 + rr * math.cos(beta), c2 + rr * math.sin(beta)
+            # the rim's CCW tangent at T against the way to the anchor: the sense the cord runs on the drum
+            ccw = (-(t2 - c2) * (a1 - t1) + (t1 - c1) * (a2 - t2)) > 0
+            out.append((s, math.sqrt(D * D - rr * rr) + (rr * (beta - th) if ccw else rr * (th - beta))))
+        return out if pick is None else dict(out)[pick]
+
+    # the tangent point the cord leaves from at t = 0: the one whose tangent runs toward the anchor
+    # along the cord's own side (both tangents are candidates; the drum's turn picks the one held)
+    held = [s for s, L0 in length(0) if abs(length(2, s) - L0) <= TOL]
+    assert len(held) == 1, [(s, length(2, s) - L0) for s, L0 in length(0)]
+    s = held[0]
+    for j in (1, 2):
+        near(length(j, s), length(0, s), 1, "the cord's length", TOL)
+    assert r["x"]["C"][2][0] > r["x"]["C"][0][0]          # down the slope, paying out cord
