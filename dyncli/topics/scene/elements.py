@@ -741,6 +741,23 @@ class CordEnd:
 REACH = 1e-6
 
 
+def unwound(ref: float, angle: float) -> float:
+    """``angle`` on its branch within half a turn of ``ref`` (an arc's angle counted on past ±π)."""
+    return ref + math.remainder(angle - ref, 2 * math.pi)
+
+
+def signed_root(w: float) -> float:
+    """√|w| with the sign of w: a straight part √(D² − δ²) that goes negative past its end."""
+    return math.copysign(math.sqrt(abs(w)), w)
+
+
+def turning_gamma(u1: float, u2: float, ell: float, dv, db) -> float:
+    """γ of a straight part of length ℓ along u whose ends move apart at dv (their velocity-squared
+    terms db): −(u·db + (n·dv)²/ℓ), the last the turning of u (0 at ℓ = 0, a trial state)."""
+    across = u1 * dv[1] - u2 * dv[0]
+    return -(u1 * db[0] + u2 * db[1] + (across * across / ell if ell > 0 else 0.0))
+
+
 @dataclass
 class Turning:
     """A cord segment between a fixed light pulley (centre C, signed radius ρ as
@@ -767,7 +784,7 @@ class Turning:
         return self._unwound(t1, t2)
 
     def _unwound(self, t1: float, t2: float) -> float:
-        return self.ref + math.remainder(math.atan2(t2 - self.C[1], t1 - self.C[0]) - self.ref, 2 * math.pi)
+        return unwound(self.ref, math.atan2(t2 - self.C[1], t1 - self.C[0]))
 
     def mark(self, P: Point, q) -> None:
         """Keep the tangent point and direction at q (a phase's start) for :meth:`reach_gap`, and
@@ -846,7 +863,7 @@ class Spanning:
     def angle_of(self, q) -> float:
         """ψ, the segment's direction, on its branch near ``ref`` (within half a turn)."""
         u1, u2, *_ = self.geometry(q)
-        return self.ref + math.remainder(math.atan2(u2, u1) - self.ref, 2 * math.pi)
+        return unwound(self.ref, math.atan2(u2, u1))
 
     def mark(self, q) -> None:
         if self.rb != self.ra:
@@ -870,7 +887,7 @@ class Spanning:
         u1, u2, ell, *_ = self.geometry(q)
         out = ell
         if self.rb != self.ra:
-            out += (self.rb - self.ra) * (self.angle_of(q) - self.psi0)
+            out += (self.rb - self.ra) * (unwound(self.ref, math.atan2(u2, u1)) - self.psi0)
         if self.angle_b is not None:
             out -= self.rb * (float(q[self.angle_b]) - self.th0b)
         if self.angle_a is not None:
@@ -890,8 +907,7 @@ class Spanning:
         u1, u2, ell, *_ = self.geometry(q)
         (av1, av2), (bv1, bv2) = self.A.vel_xy(q, v), self.B.vel_xy(q, v)
         (ab1, ab2), (bb1, bb2) = self.A.bias_xy(q, v), self.B.bias_xy(q, v)
-        across = -u2 * (bv1 - av1) + u1 * (bv2 - av2)
-        return -(u1 * (bb1 - ab1) + u2 * (bb2 - ab2) + (across * across / ell if ell > 0 else 0.0))
+        return turning_gamma(u1, u2, ell, (bv1 - av1, bv2 - av2), (bb1 - ab1, bb2 - ab2))
 
     def straight_along(self, q, N, n: int) -> bool:
         """Whether u stays put along the motion q + N s: its ends move apart along u."""
@@ -1012,18 +1028,15 @@ class Cord(Element):
         return [s.turning or s.spanning for run in self.runs for s in run if s.turning or s.spanning]
 
     def phase(self):
-        arcs = self._arcs()
-        return (self.slack, tuple((a.ref, getattr(a, "reach", None)) for a in arcs)) if arcs else self.slack
+        """(the slack runs, each arc's branch and a turning segment's reach at the phase's start)."""
+        return self.slack, tuple((a.ref, getattr(a, "reach", None)) for a in self._arcs())
 
     def set_phase(self, state) -> None:
-        if isinstance(state, tuple):
-            self.slack, refs = state
-            for a, (ref, reach) in zip(self._arcs(), refs):
-                a.ref = ref
-                if reach is not None:
-                    a.reach = reach
-        else:
-            self.slack = state
+        self.slack, refs = state
+        for a, (ref, reach) in zip(self._arcs(), refs):
+            a.ref = ref
+            if reach is not None:
+                a.reach = reach
 
     def let_span(self, seg: Segment, q) -> None:
         """Let the segment ``seg`` turn with both its ends from here on (:class:`Spanning`, from
@@ -1089,9 +1102,7 @@ class Cord(Element):
                     g += s.spanning.gamma(q, v)
                 elif s.turning is not None:     # a string's from the tangent point held fixed
                     P, _T, (_t1, _t2, e1, e2, ell) = s.anchor(q)
-                    (v1, v2), (b1, b2) = P.vel_xy(q, v), P.bias_xy(q, v)
-                    across = e1 * v2 - e2 * v1
-                    g -= e1 * b1 + e2 * b2 + (across * across / ell if ell > 0 else 0.0)
+                    g += turning_gamma(e1, e2, ell, P.vel_xy(q, v), P.bias_xy(q, v))
                 else:
                     g -= s.b.bias(s.u, q, v) - s.a.bias(s.u, q, v)
             out.append(g)
@@ -1168,16 +1179,12 @@ class Cord(Element):
                 if s.spanning is not None:
                     sp = s.spanning
                     (a1, a2), (b1, b2) = sp.A.xy(q), sp.B.xy(q)
-                    d2, delta = (b1 - a1) ** 2 + (b2 - a2) ** 2, sp.ra - sp.rb
+                    out.append(signed_root((b1 - a1) ** 2 + (b2 - a2) ** 2 - (sp.ra - sp.rb) ** 2) - eps)
                 elif s.turning is not None:
-                    (p1, p2), (c1, c2) = s.point().xy(q), s.turning.C
-                    w = (p1 - c1) ** 2 + (p2 - c2) ** 2 - s.turning.rho ** 2
-                    out.append(min(s.turning.reach_gap(s.point(), q), math.copysign(math.sqrt(abs(w)), w)) - eps)
-                    continue
-                else:
-                    continue
-                w = d2 - delta * delta
-                out.append(math.copysign(math.sqrt(abs(w)), w) - eps)
+                    P, (c1, c2) = s.point(), s.turning.C
+                    p1, p2 = P.xy(q)
+                    straight = signed_root((p1 - c1) ** 2 + (p2 - c2) ** 2 - s.turning.rho ** 2)
+                    out.append(min(s.turning.reach_gap(P, q), straight) - eps)
         return out
 
 

@@ -121,7 +121,7 @@ class Transitions:
         self._refuse_locked(t, q)
         q = s.project_position(q, t)
         for e in s.elements:            # a new phase: the cords' turning segments measured from here
-            if e.kind == "cord" and hasattr(e, "mark"):
+            if e.kind == "cord":
                 e.mark(q)
         return q, s.project_velocity(q, v, t)
 

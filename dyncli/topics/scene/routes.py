@@ -613,7 +613,8 @@ def _closed_form_kind(s, q0, v0=None):
             or not all(ld.kind in ("force", "torque") and ld.constant for ld in s.loads)
             or any(ld.kind == "force" and ld.P.turns_with_body for ld in s.loads)):
         return None
-    fixed = [e for e in made if not (e.linear and not (getattr(e, "P", None) is not None and e.P.turns_with_body))]
+    # the rows that may change their Jacobian: not linear, or at a point turning with its body
+    fixed = [e for e in made if not e.linear or (getattr(e, "P", None) is not None and e.P.turns_with_body)]
     if not fixed:
         return "constant", None
     if v0 is None:
