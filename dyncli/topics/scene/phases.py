@@ -118,7 +118,8 @@ class Transitions:
         v = self.settle(t, q, v)
         if self._land(t, q, v, joint):
             v = self.settle(t, q, v)
-        self._refuse_locked(t, q)
+        if why := self._locked(t, q):
+            raise NumericalError(why)
         q = s.project_position(q, t)
         for e in s.elements:            # a new phase: the cords' turning segments measured from here
             if e.kind == "cord":
@@ -291,19 +292,37 @@ class Transitions:
                 out.append(el)
         return out
 
-    def _refuse_locked(self, t, q) -> None:
-        """The joints made after an event whose rows are dependent (a wheel wedged between a floor
-        and a curb's edge, rolling on both: held there, its friction is not determined) cannot be
-        followed past it: refused with the joints, not as a singular matrix."""
+    def locked_with(self, t, q, joint: str) -> str | None:
+        """Why the instant t cannot be passed when the joint that chatters there (made and
+        released again at every event) would lock with the joints made if it were made too (a
+        hoop bouncing ever faster between a floor and a curb's edge comes to rest wedged between
+        them): the refusal of :meth:`_locked`, else None."""
+        from . import impulse
+
+        e = element(self.s, joint)
+        if not isinstance(e, (Contact, Rolls)) or e.mode != "off":
+            return None
+        impulse.make(e, q)
+        self.s.refresh()
+        try:
+            return self._locked(t, q)
+        finally:
+            impulse.release(e)
+            self.s.refresh()
+
+    def _locked(self, t, q) -> str | None:
+        """Why the joints made after an event cannot be followed past it, when their rows are
+        dependent (a wheel wedged between a floor and a curb's edge, rolling on both: held there,
+        its friction is not determined): the refusal names the joints, not a singular matrix."""
         s = self.s
         J = s.jac(q)
         if J.shape[0] and assembly.rank(J) < J.shape[0]:
             names = ", ".join(joints_of(s))
-            raise NumericalError(f"at t = {t:.6g} s the joints made ({names}) lock each other: their rows are dependent "
-                                 "(a wheel wedged between two surfaces and rolling on both: held there, the friction "
-                                 "of each is not determined); this release does not follow the motion past that "
-                                 "instant: make one of them smooth or give it a smaller mu_s, or end the motion "
-                                 "before (t_end)")
+            return (f"at t = {t:.6g} s the joints made ({names}) lock each other: their rows are dependent "
+                    "(a wheel wedged between two surfaces and rolling on both: held there, the friction of each "
+                    "is not determined); this release does not follow the motion past that instant: make one of "
+                    "them smooth or give it a smaller mu_s, or end the motion before (t_end)")
+        return None
 
     def _land(self, t, q, v, left: str) -> bool:
         """After an event, a body that touches a surface without approaching it while free flight

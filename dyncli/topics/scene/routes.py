@@ -79,6 +79,8 @@ def run(scene: Scene, t_end: float, acc):
             break
         still = still + 1 if t_b == t else 0
         if still >= phases.MAX_INSTANT:
+            if why := change.locked_with(t_b, q, hit[1]):
+                raise NumericalError(why)       # made with the others it would lock them: wedged
             raise NumericalError(f"the joints chatter at t = {t_b:.10g} s: {hit[1]!r} changes {phases.MAX_INSTANT} times "
                                  "at that instant (made and released again); the scene has no consistent joint "
                                  "set there")
