@@ -8,8 +8,10 @@
   makes the integrand smooth: s = a + σx² from a simple turning point a (dt = 2 √((s − a)/K) dx:
   the inverse square root absorbed exactly), s = e − σ r0 e^(−x) towards a double root e (dt →
   constant: e is never reached), else s = anchor + σx.  An oscillation is split at the midpoint
-  of its turning points; period = 2 ∫_a^b ds/√K.  s(t): Brent on x within a piece; a piece
-  running to infinity is integrated outward in doubling steps as far as t asks.
+  of its turning points; period = 2 ∫_a^b ds/√K.  Each quadrature keeps its panels' interpolants
+  (quadrature.Antiderivative): τ(x) between the table's points and s(t) (Newton on τ, bracketed)
+  cost no further evaluation of K; a piece running to infinity is integrated outward in
+  doubling steps as far as t asks.
 * ``error_estimate`` (relative, docs/accuracy.md): 2π × (the quadratures' error estimates + the
   time error of K's rounding and of the local models near the roots) / the time scale (period,
   else time integrated) × the periods evaluated, + the roots' uncertainty / the extent, ≥ 100 ε.
@@ -52,6 +54,7 @@ class _Piece:
     def __init__(self, em, kind, anchor, sig, X, c=0.0, e=None):
         self.em, self.kind, self.anchor, self.sig, self.X, self.c, self.e = em, kind, anchor, sig, X, c, e
         self.r0, self.xs, self.ts, self.errs = 0.0 if e is None else abs(e - anchor), [0.0], [0.0], [0.0]
+        self.dense: list = []           # each table step's antiderivative (quadrature.Antiderivative)
         self.step = {"turn": math.sqrt(em.L), "line": em.L, "double": 1.0}[kind]
         self.rtol, self.k_a, self.u_sw = em.rtol, 0.0, 0.0
         if kind == "double":
@@ -135,11 +138,13 @@ class _Piece:
         return g
 
     def _quad(self, x0, x1):
-        I, err, ok = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, max_steps=self.em.max_steps,
-                                   what="the time integrand 1/√K")
+        """∫_{x0}^{x1} dt/dx, its error, and its antiderivative (the quadrature's dense output:
+        a time between the table's points, and its inverse, with no further evaluation of K)."""
+        I, err, ok, F = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, max_steps=self.em.max_steps,
+                                      what="the time integrand 1/√K", dense=True)
         self.em.warnings += [] if ok else [f"the time integral on x ∈ [{x0:.6g}, {x1:.6g}] did not converge"]
         self.em.err_max = max(self.em.err_max, err)
-        return I, err
+        return I, err, F
 
     def _grow(self, x_to):
         """Extend the table up to x_to (doubling steps; a finite piece in one step)."""
@@ -148,8 +153,9 @@ class _Piece:
         while self.xs[-1] < x_to:
             x0 = self.xs[-1]
             x1 = min(x_to, x0 + max(x0, self.step)) if math.isinf(self.X) else x_to
-            I, err = self._quad(x0, x1)
+            I, err, F = self._quad(x0, x1)
             self.xs, self.ts, self.errs = self.xs + [x1], self.ts + [self.ts[-1] + I], self.errs + [self.errs[-1] + err]
+            self.dense.append(F)
 
     def tau(self, x):
         """The time from x = 0 to x (inf at x = inf)."""
@@ -159,7 +165,7 @@ class _Piece:
         if self.kind == "double" and x >= self.x_lin:
             return self.ts[-1] + (x - self.x_lin) / math.sqrt(self.c)
         k = int(np.searchsorted(self.xs, x, side="right")) - 1
-        return self.ts[k] if self.xs[k] == x else self.ts[k] + self._quad(self.xs[k], x)[0]
+        return self.ts[k] if self.xs[k] == x else self.ts[k] + self.dense[k](x)
 
     def x_at(self, target):
         """x where τ(x) = target (≥ 0)."""
@@ -173,16 +179,23 @@ class _Piece:
                                      f"at t = {target:.9g}")
             self._grow(self.xs[-1] + max(self.xs[-1], self.step))
         k = max(int(np.searchsorted(self.ts, target, side="left")) - 1, 0)
-        x0, x1, t0 = self.xs[k], self.xs[k + 1], self.ts[k]
-        f = lambda x: t0 + self._quad(x0, x)[0] - target if x > x0 else t0 - target  # noqa: E731
-        return brent(f, x0, x1, 4 * _EPS * abs(x1), 4 * _EPS, 200)
+        return self.dense[k].inverse(target - self.ts[k])
 
     def speed(self, x):
-        """|ṡ| at x: √K, or the local model very near a root (where K is its rounding)."""
+        """|ṡ| at x: √K, or the local model very near a root (where K is its rounding); near a
+        turning point, where √K's rounding (δK/2K) exceeds the time integrand's interpolant's
+        error (the quadrature's rtol), 2x / (dt/dx) from that interpolant: ṡ = (ds/dx)/(dt/dx)
+        carries no cancellation, so the rate crosses zero at the turning point's time."""
         s = float(self.s(x))
-        u = abs(s - self.anchor)
+        u = x * x if self.kind == "turn" else abs(s - self.anchor)
         if self.kind == "turn" and u <= self.u_sw:
             return math.sqrt(max(self.c * u + 0.5 * self.k2 * u * u, 0.0))
+        if self.kind == "turn" and self.dense and x <= self.xs[-1]:
+            k = self.em.K1(s) - self.k_a
+            if k * self.rtol < self.dK:
+                j = min(int(np.searchsorted(self.xs, x, side="right")) - 1, len(self.dense) - 1)
+                return 2.0 * x / self.dense[j].f(x)
+            return math.sqrt(max(k, 0.0))
         if self.kind == "double" and abs(self.e - s) <= self.r_sw:
             return math.sqrt(self.c) * self.r0 * math.exp(-x)
         return math.sqrt(max(self.em.K1(s) - self.k_a, 0.0))
@@ -396,6 +409,17 @@ class EnergyMotion:
             cyc = np.cumsum([seg[3] for seg in self._cycle])
             ends += (t0 + np.add.outer(self.period * np.arange(n), cyc).ravel()).tolist()
         return [float(t) for t in ends if t <= t_end]
+
+    def turning_times(self, t_end: float) -> list[float]:
+        """The times up to t_end at which the motion reaches a turning point (ṡ = 0, s at an
+        extreme): the ends of the legs that arrive at a simple root of K."""
+        def arrive(segs):
+            return [seg[0].kind == "turn" and seg[2] == 0.0 for seg in segs]
+        ends = self.breaks(t_end)
+        flags = arrive(self._legs)
+        if self._cycle is not None:
+            flags += arrive(self._cycle) * (max(len(ends) - len(flags), 0) // max(len(self._cycle), 1) + 1)
+        return [t for t, turn in zip(ends, flags) if turn]
 
     @property
     def error_estimate(self) -> float:

@@ -63,8 +63,9 @@ class Manifold:
         self.keys, self.qs = [float(q0[i])], [q0.copy()]
         self.step = 0.05 if system.names[i].startswith("angle.") else 0.02 * max(1.0, float(np.max(np.abs(q0))))
 
-    def _newton(self, q, s_val, iters: int = 12):
-        q = q.copy()
+    def _newton(self, q, s_val, iters: int = 12, N=None, s_from: float = 0.0):
+        """Newton on the joints with q_i = s_val, from q moved along the tangent N (when given)."""
+        q = q + N * (s_val - s_from) if N is not None else q.copy()
         q[self.i] = s_val
         tol = 8 * EPS * max(1.0, float(np.max(np.abs(q))))
         for _ in range(iters):
@@ -75,10 +76,13 @@ class Manifold:
             q[self.others] -= _solve(J, ph)
         return None
 
-    def _reach(self, q, s_from: float, s_val: float, depth: int = 0):
-        """Newton from the placed q at s_from straight to s_val; halving the way when it does
-        not converge (the branch is kept)."""
-        got = self._newton(q, s_val)
+    def _reach(self, q, s_from: float, s_val: float, depth: int = 0, N=None):
+        """Newton from the placed q at s_from straight to s_val (predicted along the tangent N
+        there, when given: one or two iterations); halving the way when it does not converge
+        (the branch is kept)."""
+        got = self._newton(q, s_val, N=N, s_from=s_from) if N is not None else None
+        if got is None:
+            got = self._newton(q, s_val)
         if got is not None:
             return got
         if depth > 30:
@@ -106,7 +110,7 @@ class Manifold:
                 for m in range(1, n + 1):
                     q = self._reach(q, s_from + (s_val - s_from) * (m - 1) / n, s_from + (s_val - s_from) * m / n)
         else:
-            q = self._reach(q, s_from, s_val)
+            q = self._reach(q, s_from, s_val, N=self.direction(q))
         if len(self.keys) < 20000:
             k = bisect.bisect_left(self.keys, s_val)
             self.keys.insert(k, float(s_val))
@@ -249,7 +253,7 @@ def run(scene, traj, t_end: float, acc) -> object:
     if len(breaks) == 1:
         traj.add(motion.Piece(0.0, 0.0, fn, modes))
     traj.method = "quadrature"
-    traj.energy = em
+    traj.energy, traj.energy_index = em, i
     for w in em.warnings:
         scene.warnings.append(w)
     return traj

@@ -77,6 +77,7 @@ class Trajectory:
     stopped: float | None = None    # where the motion stops (the cap on the phases reached)
     method: str = ""                # the route's method as reported (ode:DOP853, closed-form ...)
     energy: object = None           # quadrature: the EnergyMotion
+    energy_index: int = -1          # quadrature: the index of its independent coordinate in q
     phases: list = field(default_factory=list)    # phases.Phase, in order
     impacts: list = field(default_factory=list)   # phases.Impact, in order
     warnings: list = field(default_factory=list)  # what the motion noticed (a point passing behind a stop)

@@ -267,7 +267,8 @@ def _cut_at_extremes(motion: SceneMotion, raw, warn) -> None:
     # each piece resolved in a few halvings at most (a piece that needs more is searched as before,
     # with a warning): the cost stays a small multiple of the motion's own
     known = (quadratic_extremes(traj, motion._coords, B[0], B[-1])
-             or step_extremes(traj, motion._coords, B[0], B[-1]))
+             or step_extremes(traj, motion._coords, B[0], B[-1])
+             or turning_extremes(traj, motion._coords, B[0], B[-1]))
     own = mf.exact_breaks(raw, B, values, known=known, warn=warn, budget=max(4096, 33 * 8 * (len(B) - 1)))
     if own is not None:
         motion.breaks_for, motion.monotone, motion.subdivide = own, True, 1
@@ -301,6 +302,23 @@ def quadratic_extremes(traj, coords: dict, t0: float, t_end: float):
                 if p.t_a < t < p.t_b:
                     out.append(t)
         return out
+    return known
+
+
+def turning_extremes(traj, coords: dict, t0: float, t_end: float):
+    """``known(path)`` for :func:`dyncli.motion_find.exact_breaks` on the quadrature route: the
+    independent coordinate s has its extremes exactly at the turning points, whose times are the
+    sums of the quadratures between them (EnergyMotion.turning_times) — not located again from
+    the values of s, which are flat there (a minimum read from values is good to √ε of its
+    time only).  None for any other path, or another route (the search then resolves it by
+    :func:`dyncli.rootfind.smooth_extremes`)."""
+    em, i = traj.energy, traj.energy_index
+    if em is None or i < 0:
+        return None
+    times = [t for t in em.turning_times(t_end) if t0 < t < t_end]
+
+    def known(path: str) -> list[float] | None:
+        return times if coords.get(path) == ("q", i) else None
     return known
 
 
