@@ -7,7 +7,8 @@ reference (the baseline in the repository was recorded from ``main`` before the 
 issue #19), and commit the file; ``python -m tests.tools.baseline add`` records only the files
 not recorded yet, ``add FILE ...`` only those files and ``add TYPE`` only the files of
 ``problems/`` that hold a problem of that type (a new type: its example), each of which must be
-new — leaving every other reference value as it is (nothing else is solved again). ``tests/test_baseline_results.py`` compares the current code with
+new — leaving every other reference value as it is (nothing else is solved again); ``record
+FILE ...`` records those files again (an intended change of their results), and only them. ``tests/test_baseline_results.py`` compares the current code with
 it through :func:`compare`.
 
 Tolerances (what each route guarantees, docs/accuracy.md):
@@ -196,7 +197,22 @@ def add(paths: list[str]) -> list[str]:
     return [n for n, _ in new]
 
 
+def record_again(paths: list[str]) -> list[str]:
+    """Record again only the files ``paths`` (each recorded already: an intended change of their
+    results, said in the commit), leaving every other file's reference values as they are."""
+    base = load()
+    names = [Path(p).resolve().relative_to(ROOT).as_posix() for p in paths]
+    missing = [n for n in names if n not in base]
+    if missing:
+        raise SystemExit(f"not recorded yet: {', '.join(missing)} (a new file: `add`)")
+    for n in names:
+        base[n] = record_file(ROOT / n)
+    BASELINE.write_text(json.dumps(base, indent=1, sort_keys=True) + "\n")
+    return names
+
+
 USAGE = ("usage: python -m tests.tools.baseline record          (every file, after an intended change)\n"
+         "       python -m tests.tools.baseline record FILE ...  (only those files, after an intended change)\n"
          "       python -m tests.tools.baseline add [FILE ...]   (only files not recorded yet)\n"
          "       python -m tests.tools.baseline add TYPE         (only the example files of a new type)")
 
@@ -209,6 +225,10 @@ def main(argv: list[str]) -> int:
     if argv[:1] != ["record"]:
         print(USAGE, file=sys.stderr)
         return 2
+    if argv[1:]:
+        again = record_again(argv[1:])
+        print(f"recorded {len(again)} file(s) again in {BASELINE.relative_to(ROOT)}: {', '.join(again)}")
+        return 0
     BASELINE.parent.mkdir(parents=True, exist_ok=True)
     BASELINE.write_text(json.dumps(record_all(), indent=1, sort_keys=True) + "\n")
     print(f"wrote {BASELINE.relative_to(ROOT)}")

@@ -775,6 +775,7 @@ class Turning:
     alpha0: float
     angle: int | None = None        # a disk body's angle index (the pulley a disk on a fixed axle)
     theta0: float = 0.0             # its angle at t = 0
+    centre: tuple[int, int] | None = None   # that disk's centre indices: the pull on its axle
     reach: tuple = (0.0, 0.0, 1.0, 0.0)     # (T, e) at the phase's start: the watch ``reaches``
     ref: float = 0.0                # α at the phase's start, unwound (whole turns counted): the arc's branch
 
@@ -998,6 +999,7 @@ class Cord(Element):
         if disk is not None:            # a disk on a fixed axle: the cord goes round with it
             t.angle = disk.index[2]
             t.theta0 = float(q[t.angle])
+            t.centre = (disk.index[0], disk.index[1])
         t.mark(P, q)
         before = self.lengths(q) if self.consts else None
         seg.turning = t
@@ -1085,6 +1087,10 @@ class Cord(Element):
                 P.add_jac(row, q, e1, e2)
                 if s.turning.angle is not None:
                     row[s.turning.angle] -= s.turning.c
+                if s.turning.centre is not None:    # the pulley moved by δC: ℓ changes by −e·δC (the
+                    i1, i2 = s.turning.centre       # axle holds it: no motion, but the segment's pull
+                    row[i1] -= e1                   # on the disk is in its axle's reaction)
+                    row[i2] -= e2
             else:
                 s.b.add_jac(row, s.u, q, 1.0)
                 s.a.add_jac(row, s.u, q, -1.0)
@@ -1166,8 +1172,9 @@ class Cord(Element):
         return out
 
     def reach_gaps(self, q) -> list[float]:
-        """Per segment that turns in a taut run, crossing 0 where its end reaches its pulley (the
-        event ``reaches``: the motion stops there): the straight part signed (√|D² − δ²| with
+        """Per segment of a taut run whose ends can move, crossing 0 where its end reaches its pulley
+        (the event ``reaches``: the motion stops there); of a segment kept along its direction u
+        of t = 0, the straight part u·(T_b − T_a); of one that turns, signed (√|D² − δ²| with
         the sign of D² − δ²: negative where the end would be inside its pulley, or two circles
         overlap), from a fixed pulley the smaller of it and Turning.reach_gap (an end that runs
         onto the pulley along its segment, where the straight part only touches 0) — each less
@@ -1185,6 +1192,11 @@ class Cord(Element):
                     p1, p2 = P.xy(q)
                     straight = signed_root((p1 - c1) ** 2 + (p2 - c2) ** 2 - s.turning.rho ** 2)
                     out.append(min(s.turning.reach_gap(P, q), straight) - eps)
+                elif s.a.fixed is None or s.b.fixed is None:
+                    # kept along u (a hanging mass guided along its segment, a yo-yo's string):
+                    # the straight part u·(T_b − T_a) between its ends' tangent points
+                    (a1, a2), (b1, b2) = s.a.drawn(s.u, q), s.b.drawn(s.u, q)
+                    out.append(float(s.u[0]) * (b1 - a1) + float(s.u[1]) * (b2 - a2) - eps)
         return out
 
 
@@ -1227,6 +1239,11 @@ class String(Cord):
 
     def run_rate(self, q, v, r: int) -> float:
         return float(np.array(span_row(*self.span(q), q, self.n)) @ v)
+
+    def reach_gaps(self, q) -> list[float]:
+        """None: a string's one straight part is its whole length, held by its row (a peg's
+        wrapping has watches of its own)."""
+        return []
 
     def straight_along(self, q, N) -> bool:
         """Whether its direction stays put along the motion q + N s (its ends on bodies that do

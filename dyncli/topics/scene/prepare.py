@@ -285,8 +285,18 @@ def _rate_name(coord: str) -> str:
 
 def _sketch_links_and_rolls(plan, R, q, free) -> None:
     """Sketch positions the joints place exactly: a link's free end from its `angle`, a rolling
-    body's centre from `at` (held there: given)."""
+    body's centre from `at` (held there: given), the centre of a body on a straight slider whose
+    position is left out on the slider's line (the guide runs along the line through the centre
+    at t = 0: left at the sketch's default, the origin, it would run along another line)."""
     for name, j in plan.joints.items():
+        if j["kind"] == "slider" and not any(j.get(k) for k in ("mu", "mu_s", "mu_k")):
+            b, s = R.body(j["slider"][0], ""), R.surface(j["slider"][1], "")
+            if free[b.index[0]] and free[b.index[1]] and not getattr(s, "curved", False) \
+                    and not getattr(s, "carried", False) and not getattr(s, "corner", False):
+                (o1, o2), (n1, n2) = s.origin, s.n
+                i1, i2 = b.index[0], b.index[1]
+                off = n1 * (q[i1] - o1) + n2 * (q[i2] - o2)
+                q[i1], q[i2] = q[i1] - off * n1, q[i2] - off * n2
         if j["kind"] == "link" and j["angle"] is not None and j["length"] is not None:
             P, Q = R.point(j["link"][0], ""), R.point(j["link"][1], "")
             if Q.body is not None and free[Q.body.index[0]]:
@@ -556,6 +566,14 @@ def _rest_stops(system, q, v) -> list:
     return made
 
 
+def _slip_rounding(e, q, v) -> float:
+    """The rounding of a contact's slip speed at t = 0: 16 ε Σ|J_t,i v_i| (its terms, each with
+    its row's own rounding: a ball set rolling inside a hoop, v = ω r, has a slip of 6e-17 from
+    the hoop's radius less the ball's).  A slip within it is none: the point is at rest."""
+    Jt = np.abs(np.asarray(e.tangent_jac(q), dtype=float))
+    return 16 * EPS * float(Jt @ np.abs(np.asarray(v, dtype=float)))
+
+
 def _initial_modes(system, q, v) -> None:
     """Rough contacts: sliding when their point slides; those at rest are held together (a
     second row each) and the static test decides: every one with |F| ≤ μ_s N sticks; else the
@@ -568,7 +586,7 @@ def _initial_modes(system, q, v) -> None:
     for e in system.elements:
         if isinstance(e, Contact) and e.rough and e.mode != "off":       # a stop is open until it is struck
             vt = e.slip_speed(q, v)
-            if vt != 0:
+            if abs(vt) > _slip_rounding(e, q, v):
                 e.mode, e.sign = "slide", math.copysign(1.0, vt)
             else:
                 e.mode, e.sign = "stick", 0.0

@@ -163,19 +163,27 @@ def _signed_radius(G: Geometry, b, k: float):
 def _turning_length(seg, G: Geometry):
     """A turning segment's part of its cord (elements.Turning): √(D² − ρ²) + c (ψ − ψ0), d the
     vector from the end point to the pulley's centre (or back), ψ = angle(d) − asin(δ/D) its
-    direction (δ = ±ρ), c = ±ρ the arc's sign; √D for a point pulley."""
+    direction (δ = ±ρ), c = ±ρ the arc's sign; √D for a point pulley.  Over a disk on a fixed
+    axle: its centre's coordinates and radius as symbols, less c (θ − θ0), the disk's turn."""
     import math
 
     t = seg.turning
-    pos, C = G.pos(seg.point()), vec(t.C)
+    disk = seg.pulley[3] if seg.pulley is not None and t.angle is not None else None
+    pos = G.pos(seg.point())
+    C = G.centre(disk) if disk is not None else vec(t.C)    # a disk's centre: its axle's reaction
     d = pos - C if t.end == "b" else C - pos
     D2 = d[0] ** 2 + d[1] ** 2
     if not t.rho:
         return sp.sqrt(D2)
-    delta = exact(t.rho if t.end == "b" else -t.rho)
+    rho = _signed_radius(G, disk, t.rho) if disk is not None else exact(t.rho)
+    c = _signed_radius(G, disk, t.c) if disk is not None else exact(t.c)
+    delta = rho if t.end == "b" else -rho
     psi = sp.atan2(d[1], d[0]) - sp.asin(delta / sp.sqrt(D2))
     psi0 = t.alpha0 - math.copysign(math.pi / 2, t.rho)
-    return sp.sqrt(D2 - exact(t.rho) ** 2) + exact(t.c) * (psi - exact(psi0))
+    total = sp.sqrt(D2 - rho ** 2) + c * (psi - exact(psi0))
+    if disk is not None:                # the disk turns under the cord (no slip): −c (θ − θ0)
+        total -= c * (G.C.q[t.angle] - exact(t.theta0))
+    return total
 
 
 def _spanning_length(seg, G: Geometry):
