@@ -225,3 +225,28 @@ def test_a_minimum_of_K_inside_one_step_of_the_march_is_found_from_K_prime():
                      K_prime=lambda s: 4 * (s - b) / w ** 2 * np.exp(-((s - b) / w) ** 2))
     assert m.turning_points == pytest.approx([b - w * math.sqrt(math.log(2 / v2))], abs=1e-15)
     assert m.state(1.0)[1] < 0              # it came back
+
+
+@pytest.mark.parametrize("theta0", [0.5, 2.0, 3.0])
+def test_the_rate_crosses_zero_at_the_turning_point_linearly(theta0):
+    """Near a turning point ṡ = θ̈ (t − t*) to first order: read from 2x/(dt/dx) (the time
+    integrand's interpolant, no cancellation), not √K (whose rounding √δK would hold ṡ at 0
+    within ~1e-9 s of t*, and then put a rate's root anywhere in it).  t* is the turning
+    time (half the period from rest), against mpmath's complete elliptic integral."""
+    m = EnergyMotion(lambda s: 2 * W2 * (np.cos(s) - math.cos(theta0)), theta0, 0.0, rtol=1e-12)
+    T = _pendulum_period(theta0)
+    (t_star,) = [t for t in m.turning_times(0.75 * T)]
+    assert t_star == pytest.approx(T / 2, rel=1e-11)
+    acc = W2 * math.sin(theta0)             # |θ̈| at the turning point
+    for d in (1e-9, 1e-7, 1e-5):
+        for sgn in (-1.0, 1.0):
+            _s, sd = m.state(t_star + sgn * d)
+            assert sd == pytest.approx(sgn * acc * d, rel=1e-4), (d, sgn, sd)
+
+
+def test_turning_times_are_the_legs_that_end_at_a_root():
+    """s = cos t from rest at s = 1: the turning points at t = kπ; from s = 0 moving, at π/2 + kπ."""
+    m = EnergyMotion(lambda s: 1.0 - s * s, 1.0, 0.0, rtol=1e-12)
+    assert m.turning_times(10.0) == pytest.approx([math.pi, 2 * math.pi, 3 * math.pi], rel=1e-12)
+    m = EnergyMotion(lambda s: 1.0 - s * s, 0.0, 1.0, rtol=1e-12)
+    assert m.turning_times(10.0) == pytest.approx([math.pi / 2 + k * math.pi for k in range(3)], rel=1e-12)

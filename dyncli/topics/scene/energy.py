@@ -61,6 +61,7 @@ class Manifold:
         self.s, self.i = system, i
         self.others = [k for k in range(system.n) if k != i]
         self.keys, self.qs = [float(q0[i])], [q0.copy()]
+        self._dirs: dict[int, tuple] = {}
         self.step = 0.05 if system.names[i].startswith("angle.") else 0.02 * max(1.0, float(np.max(np.abs(q0))))
 
     def _newton(self, q, s_val, iters: int = 12, N=None, s_from: float = 0.0):
@@ -86,8 +87,11 @@ class Manifold:
         if got is not None:
             return got
         if depth > 30:
-            raise NumericalError(f"the joints cannot be placed at {self.s.names[self.i]} = {s_val:.10g} (the "
-                                 "mechanism locks there)")
+            name = self.s.names[self.i]
+            raise InputError(f"the quadrature route follows the motion along {name}, and the joints cannot be placed "
+                             f"at {name} = {s_val:.10g}: the path turns back along that coordinate there (a circle's "
+                             "side, where x stops growing), or the mechanism locks; use method auto (the ODE route)",
+                             "accuracy.method")
         mid = 0.5 * (s_from + s_val)
         q_mid = self._reach(q, s_from, mid, depth + 1)
         return self._reach(q_mid, mid, s_val, depth + 1)
@@ -118,11 +122,19 @@ class Manifold:
         return q
 
     def direction(self, q) -> np.ndarray:
+        """N at the placed q (N_i = 1), kept for each q placed (a state's speed and its velocities
+        read it twice)."""
+        got = self._dirs.get(id(q))
+        if got is not None and got[0] is q:
+            return got[1]
         J = self.s.jac(q)
         N = np.zeros(self.s.n)
         N[self.i] = 1.0
         if J.size:
             N[self.others] = _solve(J[:, self.others], -J[:, self.i])
+        if len(self._dirs) > 40000:
+            self._dirs.clear()
+        self._dirs[id(q)] = (q, N)      # (q kept alive with it: its id is not reused)
         return N
 
 
@@ -136,6 +148,7 @@ class Work:
         self.man, self.s, self.s0, self.h = man, system, s0, man.step
         self.x, self.w = np.polynomial.legendre.leggauss(8)
         self.cells: dict[int, tuple[float, np.ndarray, float, float]] = {}   # ∫, antiderivative, centre, half-width
+        self.sums: dict[int, list[float]] = {1: [0.0], -1: [0.0]}   # Σ of the first k whole cells, each side
 
     def Q(self, x: float) -> float:
         q = self.man.q(x)
@@ -163,7 +176,10 @@ class Work:
             return 0.0
         sign = 1 if d > 0 else -1
         k_full = int(abs(d) // self.h)
-        total = sum(self._cell(sign * (k + 1))[0] for k in range(k_full))
+        sums = self.sums[sign]
+        while len(sums) <= k_full:      # (the same sum in the same order as cell by cell)
+            sums.append(sums[-1] + self._cell(sign * len(sums))[0])
+        total = sums[k_full]
         if abs(d) > k_full * self.h:
             _, anti, c, r = self._cell(sign * (k_full + 1))
             total += r * float(np.polynomial.legendre.legval((x - c) / r, anti))

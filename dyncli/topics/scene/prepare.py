@@ -306,14 +306,18 @@ def _sketch_links_and_rolls(plan, R, q, free) -> None:
         if j["kind"] == "rolls" and j["at"] is not None:
             b, s = R.body(j["rolls"][0], ""), R.surface(j["rolls"][1], "")
             if b.rigid and free[b.index[0]]:
+                # `at` is where it touches: its centre is held there (its angle, left free, is the
+                # rolling row's: not a second branch of the assembly) — on a curve, where the body
+                # fits in its bend there (radius × curvature < 1: the centre's foot is `at`)
                 if getattr(s, "curved", False):
                     from . import curved
 
                     c = curved.place_on(s, j["at"], b.radius)
+                    held = b.radius * float(s.frame(j["at"])[4]) < 1.0
                 else:
                     c = np.array(s.origin) + j["at"] * np.array(s.d) + b.radius * np.array(s.n)
-                    # `at` on a line is where it touches: its centre is held there (its angle,
-                    # left free, is the rolling row's: not a second branch of the assembly)
+                    held = True
+                if held:
                     free[b.index[0]] = free[b.index[1]] = False
                 q[b.index[0]], q[b.index[1]] = c
         if j["kind"] == "contact" and j["at"] is not None:

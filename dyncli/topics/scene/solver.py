@@ -139,11 +139,24 @@ def _linearize(res: Result, plan, times: list[float]) -> None:
     route may have changed the contacts' modes)."""
     from . import modes, views
 
+    from dyncli import cputime
+    from dyncli.errors import NumericalError
+
     scene = prepare.setup(plan)
     why = modes.refusal(scene)
     if why:
         raise InputError(why, "linearize")
-    res.results["equilibria"] = modes.results(scene, times, res.warn)
+    try:
+        res.results["equilibria"] = modes.results(scene, times, res.warn)
+    except NumericalError:
+        if (limit := cputime.over()) is None:
+            raise
+        curved = [n for n, sf in plan.surfaces.items() if "curve" in sf and sf.get("q_range") is None]
+        where = (f"; on a curve without q_range ({', '.join(curved)}) the search runs over several laps of it: give "
+                 "the curve a q_range that holds the motion" if curved else "")
+        raise NumericalError(f"linearize: the search for the rest configurations along the joints' paths used the "
+                             f"solve's CPU budget of {limit:g} s (accuracy.max_cpu){where}, or raise accuracy.max_cpu "
+                             "(the motion alone, without linearize, is not limited by it)") from None
     res.views.extend(views.equilibria(res.results["equilibria"]))
 
 

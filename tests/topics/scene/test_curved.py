@@ -241,3 +241,28 @@ def test_first_foot_on_the_tip_of_a_needle():
     r = rec["results"]
     assert r["x"]["bead"][0][:2] == pytest.approx([3.001, 0.5], abs=1e-12)
     assert r["reaction"]["c"]["N"][0] == pytest.approx(9.81, rel=1e-12)
+
+
+def test_a_disk_placed_by_at_on_a_curve_is_held_there_not_a_second_branch():
+    """A cylinder rolling inside a full circular track, placed by `at` with its angle left out:
+    its centre is where `at` puts it (held, as on a line), its angle the rolling row's reference —
+    no warning that the joints "close two ways" (before: angle.can = 0 or 3.10927, the second a
+    disk on the far side of the track), and N at the start is m g cos 60° (at rest)."""
+    import math
+
+    rec = solve_one_text("""
+type: scene
+params: {R: 1, r: 0.1}
+surfaces:
+  track: {curve: {x1: "R*sin(q)", x2: "-R*cos(q)"}}
+bodies:
+  can: {shape: cylinder, mass: 2, radius: r}
+joints:
+  roll: {rolls: [can, track], at: "60*deg"}
+at: [0]
+""")
+    assert rec["warnings"] == [], rec["warnings"]
+    r = rec["results"]
+    assert r["x"]["can"][0][:2] == pytest.approx([0.9 * math.sin(math.pi / 3), -0.9 * math.cos(math.pi / 3)],
+                                                 rel=1e-12)
+    assert r["reaction"]["roll"]["N"][0] == pytest.approx(2 * 9.81 * math.cos(math.pi / 3), rel=1e-12)

@@ -22,7 +22,7 @@ import math
 import numpy as np
 import pytest
 
-from tests.conftest import error_of, solve_one_text
+from tests.conftest import error_of, solve_one_text, solve_text
 from tests.topics.scene.common import DOUBLE_PENDULUM
 
 TOL = 1e-9
@@ -583,3 +583,26 @@ def test_three_equilibria_within_one_step_of_the_path():
     V = ka * (sp.sqrt((x - aa) ** 2 + ha**2) - La) ** 2 / 2
     want = sorted(float(r) for r in sp.solve(sp.diff(V, x), x))
     assert [r["x"]["bead"][0] for r in e] == pytest.approx(want, abs=1e-12)
+
+
+def test_linearize_over_its_cpu_budget_on_a_closed_curve_names_the_curve():
+    """A disk rolling in a full circular track (no q_range) released at 60°: the search for the
+    rest configurations follows the feet of trial states over several laps of the curve and used
+    the CPU budget; the message says so (linearize, the curve without q_range, the budget) and
+    not "check the scales of the inputs", which are ordinary."""
+    rec = solve_text("""
+type: scene
+params: {R: 1, r: 0.1}
+surfaces:
+  track: {curve: {x1: "R*sin(q)", x2: "-R*cos(q)"}}
+bodies:
+  can: {shape: cylinder, mass: 2, radius: r}
+joints:
+  roll: {rolls: [can, track], at: "60*deg"}
+at: [0, 0.3]
+linearize: true
+accuracy: {max_cpu: 0.2}
+""")[0]
+    err = str(rec.get("error") or "")
+    assert "linearize" in err and "q_range (track)" in err and "accuracy.max_cpu" in err, err
+    assert "scales" not in err, err
