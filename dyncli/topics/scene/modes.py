@@ -128,12 +128,40 @@ def _damped(M, C, K) -> dict:
     keep = [k for k in range(2 * d) if lam[k].imag > 0 or (lam[k].imag == 0)]
     keep = sorted(keep, key=lambda k: (abs(lam[k]), lam[k].real))
     out: dict[str, list] = {"eigenvalues": [], "modes": [], "frequencies": [], "damping_ratios": []}
+    overdamped = _overdamped_ratios(M, C, K)
     for k in keep:
         z = lam[k]
         out["eigenvalues"].append(_pair(z))
         out["modes"].append([_pair(c) for c in normalised(V[:d, k])])
         out["frequencies"].append(abs(float(z.imag)))
-        out["damping_ratios"].append(-float(z.real) / abs(z) if abs(z) > 0 else None)
+        zeta = -float(z.real) / abs(z) + 0.0 if abs(z) > 0 else None      # (+ 0.0: no −0.0)
+        if z.imag == 0 and z.real < 0:
+            zeta = next((zr for (mr, cr, kr, zr) in overdamped
+                         if abs(mr * z.real * z.real + cr * z.real + kr) <= 1e-8 * (mr * z.real * z.real + kr)), zeta)
+        out["damping_ratios"].append(zeta)
+    return out
+
+
+def _overdamped_ratios(M, C, K) -> list[tuple[float, float, float, float]]:
+    """(m_r, c_r, k_r, ζ_r) of each overdamped mode (ζ_r = c_r/(2 √(k_r m_r)) > 1) when the
+    damping decouples in the undamped modes (one degree of freedom always; C proportional): a
+    real eigenvalue λ of that mode (m_r λ² + c_r λ + k_r = 0) reports the mode's ζ, not 1 (the
+    ratio −λ/|λ| of a real root alone).  Empty where C does not decouple: each real root keeps 1."""
+    import scipy.linalg
+
+    try:
+        w2, U = scipy.linalg.eigh(K, M)
+    except (np.linalg.LinAlgError, ValueError):
+        return []
+    Cm = U.T @ C @ U
+    off = Cm - np.diag(np.diag(Cm))
+    if float(np.max(np.abs(off), initial=0.0)) > 1e-9 * max(float(np.max(np.abs(Cm))), 1e-300):
+        return []
+    Mm, Km = np.diag(U.T @ M @ U), np.diag(U.T @ K @ U)
+    out = []
+    for mr, cr, kr in zip(Mm, np.diag(Cm), Km):
+        if mr > 0 and kr > 0 and cr > 0 and cr * cr > 4 * kr * mr:
+            out.append((float(mr), float(cr), float(kr), float(cr / (2 * math.sqrt(kr * mr)))))
     return out
 
 

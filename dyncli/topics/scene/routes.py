@@ -118,8 +118,15 @@ def _phase(scene, traj, t, q, v, t_end, acc, budget):
         return "quadrature", _first_event(s, traj, 0, t_end)
     method = "DOP853" if acc.method in ("auto", "ode", "closed-form", "quadrature") else acc.method
     traj.method = f"ode:{method}"
-    t_b, q, v, _W, hit = motion.OdeRoute(s, acc, method).phase(t, q, v, 0.0, t_end, budget, traj, acc.rtol,
-                                                                acc.atol)
+    held = [ld for ld in s.loads if ld.kind == "spring" and ld.one_sided]
+    for ld in held:                     # on or off for the whole phase: it ends at the switch
+        ld.hold_mode(q, v)
+    try:
+        t_b, q, v, _W, hit = motion.OdeRoute(s, acc, method).phase(t, q, v, 0.0, t_end, budget, traj, acc.rtol,
+                                                                    acc.atol)
+    finally:
+        for ld in held:                 # read by sign again (the results at any state)
+            ld.mode = None
     return "ode", (t_b, q, v, hit)
 
 

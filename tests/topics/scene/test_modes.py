@@ -507,7 +507,7 @@ def test_no_rest_through_a_surface_and_none_at_all():
     assert any("no rest configuration" in w for w in rec["warnings"])
 
 
-@pytest.mark.parametrize("c", [2.0, 20.0])
+@pytest.mark.parametrize("c", [2.0, 20.0, 30.0])
 def test_damped_response_against_the_vibration_closed_form(c):
     """A block on a smooth floor between a spring and a damper to the wall (m = 1 kg, k = 100 N/m),
     released 0.1 m from rest: x(t) = e^{−ζωt}(x0 cos ω_d t + (ζω x0/ω_d) sin ω_d t) for ζ = 0.1, and
@@ -534,14 +534,23 @@ linearize: true
         if z < 1:
             wd = w * math.sqrt(1 - z * z)
             want = math.exp(-z * w * t) * (x0 * math.cos(wd * t) + z * w * x0 / wd * math.sin(wd * t))
-        else:
+        elif z == 1:
             want = x0 * (1 + w * t) * math.exp(-w * t)
+        else:                           # overdamped: x0 (s2 e^{s1 t} − s1 e^{s2 t})/(s2 − s1)
+            s1, s2 = -w * (z - math.sqrt(z * z - 1)), -w * (z + math.sqrt(z * z - 1))
+            want = x0 * (s2 * math.exp(s1 * t) - s1 * math.exp(s2 * t)) / (s2 - s1)
         assert e["response"]["s"][k][0] - 1.0 == pytest.approx(want, rel=1e-9, abs=1e-14)
     lam = e["damped"]["eigenvalues"][0]
-    assert lam[0] == pytest.approx(-z * w, rel=1e-6)
+    if z <= 1:
+        assert lam[0] == pytest.approx(-z * w, rel=1e-6)
     if z < 1:
         assert e["damped"]["damping_ratios"][0] == pytest.approx(z, rel=1e-12)
         assert e["damped"]["frequencies"][0] == pytest.approx(w * math.sqrt(1 - z * z), rel=1e-12)
+    if z > 1:                           # both real roots carry the mode's ζ = c/(2√(km)), not 1
+        assert [x[0] for x in e["damped"]["eigenvalues"]] == pytest.approx(
+            [-w * (z - math.sqrt(z * z - 1)), -w * (z + math.sqrt(z * z - 1))], rel=1e-12)
+        assert e["damped"]["damping_ratios"] == pytest.approx([z, z], rel=1e-12)
+        assert e["damped"]["frequencies"] == [0.0, 0.0]
 
 
 SNAP = """
