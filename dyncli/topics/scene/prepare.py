@@ -62,6 +62,11 @@ def setup(plan: build.Plan) -> Scene:
                     system.elements.pop()
                     system.refresh()
         q = assembly.assemble(system, q, free)
+    q, gap, moved = assembly.close_small_gaps(system, q)
+    if gap:
+        warnings.append(f"the positions given leave the joints up to {gap:.3g} m open (within "
+                        f"{assembly.CLOSE_GAPS:g} of the scene's size: rounded inputs): moved onto them, no "
+                        f"coordinate by more than {moved:.3g}")
     assembly.refuse_gaps(system, q, free)
     _span_moving(system, q)
     _refuse_moving_pulley_at_angle(system, q)
@@ -715,12 +720,19 @@ def _slide_together(system, q, v, at_rest) -> str | None:
 
 
 def _refuse_at_start(system, q, v) -> None:
+    """A one-sided joint on its wrong side at t = 0: refused.  A force is told from 0 at 64 ε of
+    the multipliers; a gap or an end's margin at 1e-12 of the scene's size (a point placed on a
+    curve by its own formula is 4e-33 m off it: on it, not through it)."""
+    from .crossing import FORCES
+
     _, lam, _ = system.solve(q, v, 0.0)
+    forces = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
+    lengths = 1e-12 * assembly.length_scale(q, system)
     for i, e in enumerate(system.elements):
         lm = system.lam_of(lam, i)
         for what, g in e.watch(lm, q, v, 0.0):
-            scale = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
-            if g >= -64 * EPS * scale:
+            if g >= -(64 * EPS * forces if what in FORCES else lengths if what in ("impact", "leaves") else
+                      64 * EPS * forces):
                 continue
             if what == "separates":
                 _refuse_pull(system, e, g, q)
@@ -737,9 +749,23 @@ def _refuse_at_start(system, q, v) -> None:
                                  "place it on the surface or lengthen it", e.path)
             if what == "impact":
                 who = f"the point {e.P.label}" if hasattr(e, "P") else f"the rim of {e.body_point.body.name!r}"
+                normal = ("its normal (to the left of increasing q)" if getattr(e.surface, "curved", False)
+                          else "the surface's normal n = e3 × d̂")
                 raise InputError(f"at t = 0 {who} is {-g:.6g} m on the wrong side of the surface "
-                                 f"{e.surface.name!r} it may not cross: place it on the side of the surface's normal "
-                                 "n = e3 × d̂ (or reverse the surface's direction)", e.path)
+                                 f"{e.surface.name!r} it may not cross: place it on the side of {normal} (or reverse "
+                                 "the surface's direction)", e.path)
+
+
+def _pushes_at_rest(system, e, q) -> bool:
+    """Whether the contact ``e`` would push (N ≥ 0) were the scene at rest at q: its pull at t = 0
+    is then the velocities' (a point launched over a dome's top faster than √(g R))."""
+    from dyncli.errors import NumericalError
+
+    try:
+        _, lam, _ = system.solve(q, np.zeros(system.n), 0.0)
+    except (NumericalError, np.linalg.LinAlgError):     # (a singular rest state: no hint)
+        return False
+    return float(system.lam_of(lam, system.elements.index(e))[0]) >= 0
 
 
 def _refuse_pull(system, e, N: float, q) -> None:
@@ -757,6 +783,10 @@ def _refuse_pull(system, e, N: float, q) -> None:
     lift = (f"; if {on} lifts off there (held by {', '.join(others)}: a crate tipping about its other edge), "
             f"make '{e.name}' a stop (stop: [{on}, {e.surface.name}], e: 0): it starts open and is made where "
             f"{on} strikes" if others and isinstance(e, Contact) else "")
+    if not lift and isinstance(e, Contact) and _pushes_at_rest(system, e, q):
+        lift = (f"; {on} is launched faster than the surface's bend lets it follow (at rest it would push): to let "
+                f"it fly off there, make '{e.name}' a stop (stop: [{on}, {e.surface.name}], e: 0): it starts open "
+                f"and is made where {on} strikes")
     raise InputError(f"at t = 0 the surface {e.surface.name!r} would have to pull {on}: N = {N:.6g} N; it pushes "
                      f"along its normal n = [{n[0]:.4g}, {n[1]:.4g}] (to the left of {side}): if {on} rests on the "
                      f"other side, reverse the surface's direction; else release it from a position where it pushes, "

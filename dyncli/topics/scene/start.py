@@ -56,15 +56,23 @@ def _can_slip(e) -> bool:
 
 def slipping_given(system, q, v, vgiven) -> None:
     """Rolling bodies whose given velocities slip start slipping (before the velocities are
-    projected on the joints, so that the slip is kept)."""
+    projected on the joints, so that the slip is kept).  A rate left out counts as given where
+    the other joints fix it (a plank on a slider: its angle's rate 0, whatever the rolling row
+    says; before, a disk spun on a carried deck whose ω the file left out was made to roll)."""
+    from . import assembly
+
     changed = False
     for e in system.elements:
         if not (_can_slip(e) and e.mode == "roll"):
             continue
         J = e.tangent_jac(q)
         idx = np.nonzero(J)[0]
-        if not all(vgiven[idx]):
-            continue                    # a rate left out is placed by the rolling row
+        left = [k for k in idx if not vgiven[k]]
+        if left:
+            rows = [r for x in system.elements if x is not e and x.rows for r in x.jac_list(q.tolist())]
+            free = assembly.motions(np.array(rows, dtype=float).reshape(len(rows), system.n), system.n)
+            if any(float(np.max(np.abs(free[:, k]), initial=0.0)) > 1e-12 for k in left):
+                continue                # a rate left out is placed by the rolling row
         vt = e.slip_speed(q, v)
         scale = float(np.max(np.abs(J[idx] * v[idx]), initial=0.0))
         if abs(vt) > 64 * EPS * scale:

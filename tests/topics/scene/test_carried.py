@@ -389,3 +389,40 @@ at: [0, 0.5]
     near(r["x"]["block"][1][0] - r["x"]["cart"][1][0], mp.cos(b) - 1 - a / 8 * mp.cos(b), 1, "relative x1", tol)
     near(r["x"]["block"][1][1], mp.sin(b) - a / 8 * mp.sin(b), 1, "x2", tol)
     near(r["v"]["block"][1][0], 3 - a / 2 * mp.cos(b), 3, "v1", tol)
+
+
+SPUN_ON_DECK = """
+type: scene
+surfaces:
+  floor: {through: [-10, 0], direction: [1, 0]}
+  deck: {body: plank, through: [-5, 0.1], direction: [1, 0], length: 10}
+bodies:
+  plank: {shape: box, mass: 2, size: [10, 0.1], x: [0, 0.05], angle: 0, v: [0, 0]}
+  drum: {shape: disk, mass: 3, radius: 0.2, x: [0, 0.3], angle: 0, v: [0, 0], omega: -20}
+joints:
+  slide: {slider: [plank, floor]}
+  HOLD
+  roll: {rolls: [drum, deck], mu_s: 0.2, mu_k: 0.2}
+at: [0, 0.2]
+t_end: 1
+find: [{event: sticks}]
+"""
+
+
+@pytest.mark.parametrize("held", [True, False])
+def test_a_disk_spun_on_a_carried_deck_starts_slipping(held):
+    """A disk (3 kg, R = 0.2) set down spinning at ω = −20 rad/s on a plank (2 kg) that a slider
+    keeps level (its ω left out: the slider fixes it), μ = 0.2.  By hand, friction μ m g = 5.886 N
+    drives the disk forward (a = μ g), turns it back (α = F R/Ī = 19.62 rad/s²) and, on a plank
+    free on a smooth floor, pushes the plank back (−F/2); it sticks where the slip over the deck
+    v_d − v_p + R ω = 0: at 4/5.886 s on a plank held still by a drive (as on the floor), at
+    4/8.829 s on the free plank.  Before, the plank's ω left out made the rolling row place the
+    rates: the disk was set rolling at t = 0, with no friction and no sticking."""
+    rec = solve_one_text(SPUN_ON_DECK.replace("HOLD", "hold: {drive: plank.x1, value: 0}" if held else ""))
+    r = rec["results"]
+    assert not any("projected" in w for w in rec["warnings"]), rec["warnings"]
+    t_stick = 4 / 5.886 if held else 4 / 8.829
+    assert r["find"][0]["t"] == pytest.approx(t_stick, rel=1e-10)
+    assert r["reaction"]["roll"]["F"][0] == pytest.approx(5.886, rel=1e-12)
+    assert r["v"]["drum"][1][0] == pytest.approx(1.962 * 0.2, rel=1e-10)
+    assert r["omega"]["drum"][1][2] == pytest.approx(-20 + 19.62 * 0.2, rel=1e-10)

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from tests.conftest import ROOT, solve_one_text
+from tests.conftest import ROOT, solve_one_text, solve_text
 from tests.topics.scene.test_engine import _fd_check
 
 ELLIPSE = """\
@@ -266,3 +266,50 @@ at: [0]
     assert r["x"]["can"][0][:2] == pytest.approx([0.9 * math.sin(math.pi / 3), -0.9 * math.cos(math.pi / 3)],
                                                  rel=1e-12)
     assert r["reaction"]["roll"]["N"][0] == pytest.approx(2 * 9.81 * math.cos(math.pi / 3), rel=1e-12)
+
+
+def test_a_point_on_a_dome_by_its_formula_launched_faster_than_sqrt_gr_flies_off():
+    """A particle at the top of a smooth dome (R = 1, x: [0, R]: on the curve to 4e-33 m, its own
+    formula's rounding) launched at 4 m/s > √(gR) as a `stop`: it flies off at once and lands on
+    the floor at t = √(2R/g), x = 4 t.  Before, the 4e-33 m was "on the wrong side" (the gap
+    told from 0 against the multipliers' scale, 0 here, not the scene's size)."""
+    import math
+
+    rec = solve_one_text("""
+type: scene
+params: {R: 1}
+surfaces:
+  dome: {curve: {x1: "-R*cos(q)", x2: "R*sin(q)"}, q_range: [0, "pi"]}
+  floor: {through: [-5, 0], direction: [1, 0]}
+bodies:
+  P: {shape: point, mass: 1, x: [0, R], v: [4, 0]}
+joints:
+  on_dome: {stop: [P, dome], e: 0}
+  on_floor: {stop: [P, floor], e: 0}
+at: [0, 0.3]
+t_end: 1
+find: [{event: impact}]
+""")
+    f = rec["results"]["find"][0]
+    t = math.sqrt(2 / 9.81)
+    assert f["t"] == pytest.approx(t, rel=1e-9)
+    assert f["x"]["P"][:2] == pytest.approx([4 * t, 0.0], rel=1e-9, abs=1e-9)
+
+
+def test_a_contact_launched_off_a_dome_points_to_a_stop():
+    """The same particle as a `contact` would have to pull at t = 0 (N = m g − m v²/R < 0): refused,
+    and since at rest it would push, the message says why (launched faster than the bend lets it
+    follow) and what to write: a stop."""
+    rec = solve_text("""
+type: scene
+params: {R: 1}
+surfaces:
+  dome: {curve: {x1: "-R*cos(q)", x2: "R*sin(q)"}, q_range: [0, "pi"]}
+bodies:
+  P: {shape: point, mass: 1, x: [0, R], v: [4, 0]}
+joints:
+  on_dome: {contact: [P, dome]}
+at: [0, 0.3]
+""")[0]
+    err = str(rec.get("error"))
+    assert "N = -6.19 N" in err and "launched faster" in err and "stop: [P, dome], e: 0" in err, err

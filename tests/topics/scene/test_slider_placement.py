@@ -69,3 +69,26 @@ at: [0, 1]
     r = rec["results"]
     assert r["x"]["b"][1][:2] == pytest.approx([1.0, 0.05], rel=1e-12)
     assert r["reaction"]["s"]["N"][1] == pytest.approx(9.81, rel=1e-12)
+
+
+PINNED = """
+type: scene
+bodies:
+  bar: {shape: rod, mass: 2, length: 1, angle: 0, x: [X, 0]}
+joints:
+  pivot: {pin: [bar.end1, [0, 0]]}
+at: [0, 0.2]
+"""
+
+
+def test_positions_rounded_in_the_last_digits_are_moved_onto_the_joints():
+    """A bar whose centre is typed 0.500000004 (a hand solution's 9 digits: the pin 4e-9 m open):
+    moved onto the pin with a warning naming the gap, and solved; 1e-4 m open is a mistake, not a
+    rounding: refused with the gap as before."""
+    rec = solve_text(PINNED.replace("X", "0.500000004"))[0]
+    assert not rec.get("error"), rec.get("error")
+    (w,) = [w for w in rec["warnings"] if "moved onto them" in w]
+    assert "4e-09 m open" in w
+    assert rec["results"]["x"]["bar"][0][0] == pytest.approx(0.5, abs=1e-15)
+    rec = solve_text(PINNED.replace("X", "0.5001"))[0]
+    assert "violate the pin joint 'pivot': a gap of 0.0001 m" in str(rec.get("error")), rec.get("error")
