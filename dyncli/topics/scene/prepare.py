@@ -62,11 +62,11 @@ def setup(plan: build.Plan) -> Scene:
                     system.elements.pop()
                     system.refresh()
         q = assembly.assemble(system, q, free)
-    q, gap, moved = assembly.close_small_gaps(system, q)
+    q, gap, shift = assembly.close_small_gaps(system, q)
     if gap:
         warnings.append(f"the positions given leave the joints up to {gap:.3g} m open (within "
                         f"{assembly.CLOSE_GAPS:g} of the scene's size: rounded inputs): moved onto them, no "
-                        f"coordinate by more than {moved:.3g}")
+                        f"coordinate by more than {shift:.3g}")
     assembly.refuse_gaps(system, q, free)
     _span_moving(system, q)
     _refuse_moving_pulley_at_angle(system, q)

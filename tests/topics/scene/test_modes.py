@@ -599,19 +599,9 @@ def test_linearize_over_its_cpu_budget_on_a_closed_curve_names_the_curve():
     rest configurations follows the feet of trial states over several laps of the curve and used
     the CPU budget; the message says so (linearize, the curve without q_range, the budget) and
     not "check the scales of the inputs", which are ordinary."""
-    rec = solve_text("""
-type: scene
-params: {R: 1, r: 0.1}
-surfaces:
-  track: {curve: {x1: "R*sin(q)", x2: "-R*cos(q)"}}
-bodies:
-  can: {shape: cylinder, mass: 2, radius: r}
-joints:
-  roll: {rolls: [can, track], at: "60*deg"}
-at: [0, 0.3]
-linearize: true
-accuracy: {max_cpu: 0.2}
-""")[0]
+    from tests.topics.scene.test_curved import CAN_IN_TRACK
+
+    rec = solve_text(CAN_IN_TRACK + "at: [0, 0.3]\nlinearize: true\naccuracy: {max_cpu: 0.2}\n")[0]
     err = str(rec.get("error") or "")
     assert "linearize" in err and "q_range (track)" in err and "accuracy.max_cpu" in err, err
     assert "scales" not in err, err
