@@ -361,3 +361,52 @@ def test_dimensionless_question_refuses_a_length(tmp_path, capsys):
     assert code == 1 and q["status"] == "wrong" and q["diagnosis"] == "wrong_dimension"
     code, doc, _ = check_json(tmp_path / "key.yaml", [write_sub(tmp_path, "b.yaml", "x", {"r": 0.75})], capsys)
     assert code == 0 and questions(doc)["r"]["status"] == "correct"
+
+
+def test_result_unit_reads_the_path_from_its_start():
+    """A result with a unit holds it all the way down its path: a cord's tension
+    ``reaction.rope.T.0.0`` is in N, not the unit of the kinetic energy ``T``; a body named ``V``
+    is a position in ``x.V.2.1``; a container without a unit is looked into (``find.0.s``,
+    ``events.0.state.reaction.axle.R``), past the names it is owned by (``point.T.end2.a``)."""
+    from dyncli.check.quantities import result_unit
+
+    units = {"x": "m", "a": "m/s²", "reaction": "N", "T": "J", "V": "J", "s": "m", "find": "", "events": "",
+             "point": ""}
+    assert result_unit(units, "reaction.rope.T.0.0") == "N"
+    assert result_unit(units, "x.V.2.1") == "m"
+    assert result_unit(units, "find.0.s") == "m"
+    assert result_unit(units, "find.0.reaction.rope.T.1") == "N"
+    assert result_unit(units, "events.0.state.reaction.axle.R.0") == "N"
+    assert result_unit(units, "point.T.end2.a.0.1") == "m/s²"
+    assert result_unit(units, "T.3") == "J"
+    assert result_unit(units, "drive.motor.0") is None
+
+
+ATWOOD_V = """\
+type: scene
+params: {m1: 3, m2: 2, M: 1, R: 0.1}
+bodies:
+  pulley: {shape: disk, mass: M, radius: R, x: [0, 0], angle: 0}
+  A: {shape: point, mass: m1, x: ["-R", -1]}
+  V: {shape: point, mass: m2, x: [R, -1.5]}
+joints:
+  axle: {pin: [pulley, ground]}
+  rope: {cord: [A, pulley, V]}
+at: [0, 0.5, 1]
+"""
+
+
+def test_a_cord_tension_and_a_body_named_v_are_graded_in_their_own_units(tmp_path, capsys):
+    """A key without `unit:` grades a scene's cord tension (reaction.rope.T.0.0, by hand
+    T1 = m1 (g − a), a = (m1 − m2) g/(m1 + m2 + M/2) = 9.81/5.5: 24.079 N) and the height of a
+    body named V (x.V.2.1 = −1.5 + a/2 = −0.608 m) in N and m: "24.1 N" and "-60.8 cm" are
+    correct (before: both read as energies, J, and marked "wrong dimension")."""
+    (tmp_path / "atw.yaml").write_text(ATWOOD_V)
+    key = tmp_path / "key.yaml"
+    key.write_text("title: t\ntolerance: {sigfigs: 3}\nquestions:\n"
+                   "  - {id: T1, problem: atw.yaml, answer: reaction.rope.T.0.0}\n"
+                   "  - {id: yV, problem: atw.yaml, answer: x.V.2.1}\n")
+    sub = write_sub(tmp_path, "s.yaml", STUDENT, {"T1": "24.1 N", "yV": "-60.8 cm"})
+    code, doc, err = check_json(key, [sub], capsys)
+    assert code == 0, err
+    assert {q["id"]: q["status"] for q in doc["submissions"][0]["questions"]} == {"T1": "correct", "yV": "correct"}

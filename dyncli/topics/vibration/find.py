@@ -27,6 +27,7 @@ import sys
 from dataclasses import dataclass, replace
 
 from dyncli import motion_find as mf
+from dyncli.errors import InputError
 from dyncli.expr import constant, resolve_params
 
 from . import closed_form as cf
@@ -214,14 +215,25 @@ def report(p: Setup, res, omega_n, zeta) -> None:
         return
     capped = resp.capped(t_end)
     asked = _asked_paths(list(p.find))
+    # a capped grid has far too many turning points; a search with a window that a grid of
+    # MAX_PIECES resolves has its window's turning points found exactly, added to the grid
+    windows, unresolved = _windows(list(p.find), const, resp.step(), t_end) if capped and asked is not None \
+        else ([], ["find"])
     exact = asked is not None and not capped    # (a capped grid: far too many turning points)
     if exact and asked is not None and t_end > 0:   # every turning point of each quantity asked is a break: monotone between
         own, capped = _turning_points(resp, lambda: resp.breaks(t_end)[0], t_end, asked)
         breaks = sorted(set([0.0, t_end]).union(*own.values()))
     else:
         breaks = resp.breaks(t_end)[0]
+    if windows and asked is not None:
+        inside, more = _window_turning_points(resp, windows, asked)
+        breaks = sorted(set(breaks).union(*inside.values(), *windows))
+        own = {path: breaks for path in inside}
+        exact, capped = True, bool(unresolved) or more
     if capped:
-        res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period; "
+        which = f" ({', '.join(unresolved)}: no `within` window of at most {MAX_PIECES} eighths)" \
+            if windows and unresolved and unresolved != ["find"] else ""
+        res.warn(f"find: the motion to t = {t_end:g} s spans more than {MAX_PIECES} eighths of a period{which}; "
                  "turning points closer than the coarser grid may be missed (shorten the window with within)")
 
     # a capped grid (far more turning points than cells) is read as monotone between its breaks: the
@@ -239,6 +251,49 @@ def report(p: Setup, res, omega_n, zeta) -> None:
                       for path, ts in own.items()}
     find = list(p.find)
     mf.attach(res, find, mf.answer_find(find, motion, const, res.warn, full=state, memo=p.params))
+
+
+def _windows(find, const, h: float, t_end: float) -> tuple[list[tuple[float, float]], list[str]]:
+    """(the ``within`` windows of the searches (when, max, min) that a grid of 1/PER_PERIOD of the
+    shortest period, ``h``, no longer than MAX_PIECES resolves; the searches left to the capped
+    grid, find.N: no window, or one too long)."""
+    out, unresolved = [], []
+    for i, q in enumerate(find):
+        if not isinstance(q, dict) or not any(k in q for k in ("when", "max", "min")):
+            continue
+        w = q.get("within")
+        try:
+            a, b = (min(max(float(const(x)), 0.0), t_end) for x in w) if isinstance(w, (list, tuple)) \
+                and len(w) == 2 else (0.0, 0.0)
+        except (InputError, ValueError, TypeError, ArithmeticError):
+            a = b = 0.0
+        if h > 0 and b > a and math.ceil((b - a) / h) <= MAX_PIECES:
+            out.append((a, b))
+        else:
+            unresolved.append(f"find.{i}")
+    return out, unresolved
+
+
+def _window_turning_points(resp: Response, windows: list[tuple[float, float]], asked: set[str]):
+    """As :func:`_turning_points`, only inside each window (its own grid of 1/PER_PERIOD of the
+    shortest period): a search late in a long motion asks for no turning point before it."""
+    mo = resp.motion()
+    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo
+    which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+    h = resp.step()
+    out: dict[str, list[float]] = {}
+    capped = False
+    for path in sorted(asked):
+        m, d = which[path]
+        got: list[float] = []
+        for a, b in windows:
+            n = max(math.ceil((b - a) / h), 1)
+            grid = [a + (b - a) * k / n for k in range(n + 1)]
+            roots, _touch, more = turns.roots(m, grid, d, _on_arrays(len(grid)))
+            got += roots
+            capped = capped or more
+        out[path] = sorted(set(got))
+    return out, capped
 
 
 def _turning_points(resp: Response, grid, t_end: float, asked: set[str]):

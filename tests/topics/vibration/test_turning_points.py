@@ -15,6 +15,7 @@ import mpmath as mp
 import pytest
 
 from dyncli.topics.vibration import turns
+from tests.conftest import solve_one_text
 
 mp.mp.dps = 40
 
@@ -97,3 +98,38 @@ def test_a_mass_at_rest_with_nothing_forcing_it_has_no_turning_point(d, arrays):
     # a hang found by tests/fuzz at force.omega = 0)
     mo = turns.Motion(20.0, 0.1, 0.0, 0.0, 5.0, 0.0)
     assert turns.roots(mo, [0.0, 0.5, 1.0, 3.0], d, arrays) == ([], [], False)
+
+
+@pytest.mark.parametrize("window", [(9999.0, 10000.0), (1999.0, 2000.0)])
+def test_a_window_late_in_a_long_forced_motion_is_searched_exactly(window):
+    """Undamped forcing at resonance (m = 2, k = 200, F0 = 4 at ω = ωₙ = 10, from rest at L):
+    x − L = 0.01 sin 10t − 0.1 t cos 10t, whose largest values in a window are at 10t = nπ, n odd
+    (ẋ = t sin 10t), x = L + 0.1 t.  The motion to 1e4 s spans far more than the capped grid's
+    20,000 eighths of a period; a max asked within a window of a few periods has its window's
+    turning points found exactly (before: read on the coarse grid, 999.861 at the window's end
+    where the max is 1000.4375 at 9999.3753); a `when` with no window keeps the capped grid and
+    is named in the warning."""
+    import math
+
+    a, b = window
+    rec = solve_one_text(f"""
+type: vibration
+m: 2
+k: 200
+L: 0.5
+x0: 0.5
+v0: 0
+force: {{amplitude: 4, omega: 10}}
+at: [1, {b}]
+t_end: {b}
+find:
+  - {{max: x, within: [{a}, {b}]}}
+  - {{when: {{x: 0.6}}}}
+""")
+    n = math.floor(10 * b / math.pi)
+    n -= (n + 1) % 2                         # the last odd n with nπ/10 ≤ b
+    t = n * math.pi / 10
+    f = rec["results"]["find"][0]
+    assert f["t"] == pytest.approx(t, rel=1e-13)
+    assert f["x"] == pytest.approx(0.5 + 0.1 * t, rel=1e-9)
+    assert any("find.1: no `within` window" in w for w in rec["warnings"])
