@@ -30,7 +30,6 @@ import numpy as np
 from dyncli.errors import NumericalError
 from dyncli.quadrature import gauss_kronrod
 from dyncli.result import Result, Series
-from dyncli.rootfind import brent
 
 from .report import SERIES, assemble, equation_numbers
 from .turning import Energy, Skip
@@ -59,8 +58,9 @@ class Piece:
         self.err = 0.0
         self.xs = [X * j / _TABLE for j in range(_TABLE + 1)]
         self.ts = [0.0]
+        self.dense: list = []           # each table interval's antiderivative (quadrature.Antiderivative)
         for x0, x1 in zip(self.xs[:-1], self.xs[1:]):
-            self.ts.append(self.ts[-1] + self._quad(x0, x1, table=True))
+            self.ts.append(self.ts[-1] + self._quad(x0, x1))
 
     def q(self, x):
         return self.a + self.sig * (x * x if self.kind == "turn" else x)
@@ -90,16 +90,22 @@ class Piece:
                                  "inside the motion (a turning point the analysis did not find): please report this")
         return g
 
-    def _quad(self, x0, x1, table=False):
-        I, err, ok = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, what="the time integrand 1/|q̇|")
-        if table:
-            self.err += err + (0.0 if ok else abs(I))
+    def _quad(self, x0, x1):
+        """A table interval's time, its error in ``err``, and its antiderivative kept (the
+        quadrature's dense output: the time at any x between, and its inverse, with no new
+        quadrature)."""
+        I, err, ok, F = gauss_kronrod(self._g, x0, x1, self.rtol, 0.0, what="the time integrand 1/|q̇|", dense=True)
+        self.err += err + (0.0 if ok else abs(I))
+        self.dense.append(F)
         return I
+
+    def _k(self, x) -> int:
+        return min(max(int(np.searchsorted(self.xs, x, side="right")) - 1, 0), _TABLE - 1)
 
     def tau(self, x):
         """The time from x = 0 to x."""
-        k = min(int(np.searchsorted(self.xs, x, side="right")) - 1, _TABLE - 1)
-        return self.ts[k] + (self._quad(self.xs[k], x) if x != self.xs[k] else 0.0)
+        k = self._k(x)
+        return self.ts[k] + (self.dense[k](x) if x != self.xs[k] else 0.0)
 
     def x_at(self, target):
         """x where τ(x) = target (0 ≤ target ≤ τ(X))."""
@@ -108,11 +114,15 @@ class Piece:
         if target >= self.ts[-1]:
             return self.X
         k = max(int(np.searchsorted(self.ts, target, side="left")) - 1, 0)
-        x0, x1, t0 = self.xs[k], self.xs[k + 1], self.ts[k]
-        return brent(lambda x: t0 + self._quad(x0, x) - target if x > x0 else t0 - target,
-                     x0, x1, 4 * _EPS * abs(x1), 4 * _EPS, 200)
+        return self.dense[k].inverse(target - self.ts[k])
 
     def speed(self, x):
+        """|q̇| at x: √(2K/M); near a turning point, where q = a + σx² has lost x² to the rounding
+        of q (the relative error ulp(q)/x² above the quadrature's rtol), 2x / (dt/dx) from the time
+        integrand's interpolant instead — so that the rate crosses zero at the turning point's time
+        (its root read from √K's rounding was 5e-9 of the period off)."""
+        if self.kind == "turn" and 0.0 < x <= self.X and math.ulp(max(abs(self.a), 1.0)) > self.rtol * x * x:
+            return 2.0 * x / self.dense[self._k(x)].f(x)
         q, K = self._K(np.array([x]))
         return math.sqrt(max(float(K[0]), 0.0) / (0.5 * float(self.E.M(q)[0])))
 

@@ -81,3 +81,38 @@ def test_passing_just_over_the_top_is_a_revolution():
 def test_released_from_rest_reports_the_input_at_t0():
     rec = solve_one_text(hoop(1.0, 0.0, [0.0, 0.5]))
     assert rec["results"]["q"][0] == 1.0 and rec["results"]["q_dot"][0] == 0.0
+
+
+def test_the_turning_points_time_is_half_the_period_to_rounding():
+    """A bead on a hoop (R = 0.5 m) spun at 6 rad/s about its vertical diameter, released at rest
+    relative at q0 = 0.3 (below the off-axis equilibrium cos q* = g/(R ω²)): per unit m R²,
+    q̇² = K(q) = ω² (sin²q − sin²q0) + 2 (g/R)(cos q − cos q0); it rises to q1 (K's other root,
+    mpmath's findroot) at t = ∫_{q0}^{q1} dq/√K (mpmath's tanh-sinh at 30 digits).  `max: q` is at
+    that time to the route's own estimate (before: 4.8e-9 relative off where the estimate said
+    8.9e-14 — the rate's root read from √K's rounding near the turning point)."""
+    rec = solve_one_text("""
+type: constrained-particle
+params: {R: 0.5}
+m: 0.1
+curve: {x1: "R*sin(q)", x2: 0, x3: "-R*cos(q)"}
+q_range: [-pi, pi]
+rotation: {axis: [0, 0, 1], omega: 6}
+q0: 0.3
+forces:
+  - {kind: gravity}
+t_end: 5
+find:
+  - {max: q}
+""")
+    with mp.workdps(30):
+        w2, gR, q0 = mp.mpf(36), mp.mpf("9.81") / mp.mpf("0.5"), mp.mpf("0.3")
+
+        def K(q):
+            return w2 * (mp.sin(q) ** 2 - mp.sin(q0) ** 2) + 2 * gR * (mp.cos(q) - mp.cos(q0))
+
+        q1 = mp.findroot(K, 1.7)
+        t1 = mp.quad(lambda q: 1 / mp.sqrt(K(q)), [q0, q1])
+    f = rec["results"]["find"][0]
+    assert float(q1) > 1.0
+    assert f["t"] == pytest.approx(float(t1), rel=max(10 * rec["error_estimate"], 1e-13))
+    assert f["q"] == pytest.approx(float(q1), rel=1e-12)
