@@ -151,9 +151,12 @@ class Grader:
         found, value, msg = lookup(results, q.answer)
         if not found and self.key.policy.unknown_path:
             return Truth(error=unknown_key_message(results, q.answer, solved.index), code=1, unknown=True)
-        if not found:
-            return Truth(error=f"the key's answer path '{shown(q.answer)}' is not in the results"
-                               + (f" ({msg})" if msg else ""), code=2)
+        if not found:                   # the key's mistake, said as such, with what it may have meant
+            hint = unknown_key_message(results, q.answer, solved.index).removeprefix(f"unknown answer key "
+                                                                                   f"'{shown(q.answer)}'")
+            return Truth(error=f"the key's question '{shown(q.id)}': its answer path '{shown(q.answer)}' is not in "
+                               f"the results{hint} (fix the key: `dyncli check --key KEY --selftest` finds this "
+                               "before grading)", code=2)
         value, roundoff = zeros.snap(value, solved.scale) if self.key.policy.snap_zeros else (value, False)
         return Truth(value, outcome.result.units, reached=not not_reached(results, q.answer), roundoff=roundoff)
 
@@ -207,7 +210,8 @@ class Grader:
         r.expected = t.value
         if t.error and not t.unknown:   # the detail may quote values derived from true answers: only with --reveal
             r.status = "error"
-            r.message = (f"not graded: {policy.not_solved}"
+            key_fault = t.error.startswith("the key's question ")       # (its answer path: no solve failed)
+            r.message = (f"not graded: {t.error}" if key_fault else f"not graded: {policy.not_solved}"
                          + (f" ({t.error})" if self.reveal or not t.quotes_values or not policy.secret
                             else " (tell your instructor: --selftest shows why)"))
             sr.error_code = max(sr.error_code, t.code)

@@ -410,3 +410,31 @@ def test_a_cord_tension_and_a_body_named_v_are_graded_in_their_own_units(tmp_pat
     code, doc, err = check_json(key, [sub], capsys)
     assert code == 0, err
     assert {q["id"]: q["status"] for q in doc["submissions"][0]["questions"]} == {"T1": "correct", "yV": "correct"}
+
+
+@pytest.mark.parametrize("given, name", [("twenty-one", "twenty"), ("19.6/s", "s")])
+def test_an_answer_with_an_unknown_name_says_what_an_answer_may_be(given, name):
+    """A submission cannot define params: the expression language's hint to define the name
+    there is replaced by what an answer may be — and the example given is one the grader reads."""
+    from dyncli.check.quantities import GivenError, to_si
+
+    with pytest.raises(GivenError) as exc:
+        to_si(given)
+    msg = str(exc.value)
+    assert f"'{name}' is not a number or a unit here" in msg and "params" not in msg
+    assert to_si("3.2 s^-1") == pytest.approx(3.2) and to_si("19.6 m/s") == pytest.approx(19.6)
+
+
+def test_a_misspelt_answer_path_in_the_key_is_the_keys_fault_with_a_hint(tmp_path, capsys):
+    """The key's answer path `reaction.rop.T.0.0` is not in the results: the submission's answer
+    is not graded, and the message says it is the key's question, what it may have meant and how
+    to find such a mistake before grading (not "the key's problem could not be solved")."""
+    (tmp_path / "atw.yaml").write_text(ATWOOD_V)
+    key = tmp_path / "key.yaml"
+    key.write_text("title: t\nquestions:\n  - {id: T1, problem: atw.yaml, answer: reaction.rop.T.0.0}\n")
+    sub = write_sub(tmp_path, "s.yaml", STUDENT, {"T1": "24.1 N"})
+    code, doc, err = check_json(key, [sub], capsys)
+    (q,) = doc["submissions"][0]["questions"]
+    assert q["status"] == "error"
+    assert "the key's question 'T1'" in q["message"] and "did you mean 'reaction.rope.T.0.0'" in q["message"]
+    assert "could not be solved" not in q["message"] and "--selftest" in q["message"]
