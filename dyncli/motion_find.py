@@ -751,7 +751,8 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
         if isinstance(period, (int, float)) and period and period > 0:
             turns = max(turns, (t_end - t0) / period)
         if not turns * PER_TURN <= MAX_PIECES:      # (also a rate beyond a double)
-            _too_fast(problem, result, const, t_end, turns, batch)
+            windowed = _windowed(problem, result, const, batch, solve, base, rates, fast, rtol, t0, t_end)
+            _too_fast(problem, result, const, t_end, turns, batch, windowed)
             if rtol == 0.0:
                 _phase_at_answers(problem, result, base, solve)
             return
@@ -829,9 +830,56 @@ def _dense_find(problem: Any, result: Any, dense: Any, names: list[str], rates: 
 PER_TURN, MAX_PIECES = 8, 4_096
 
 
-def _too_fast(problem: Any, result: Any, const, t_end: float, turns: float, batch) -> None:
+def _windowed(problem: Any, result: Any, const, batch, solve, base: dict, rates: Mapping[str, str],
+              fast: Iterable[str], rtol: float, t0: float, t_end: float) -> dict[int, dict]:
+    """The answers of the ``max``/``min`` queries with a ``within`` window, when the motion is too
+    fast to search to t_end but the span of their windows is not: searched over that span alone
+    (its own grid of :data:`PER_TURN` pieces per turn, cut at the exact extremes on an exact
+    route) — the remedy the refusal names.  {query index: entry}; empty when the span is too
+    fast too (or no such query)."""
+    import math as _m
+
+    qs = _q.parse_queries(problem.find, const)
+    wins = [q for q in qs if isinstance(q, _q.Extreme) and q.within is not None]
+    if not wins:
+        return {}
+    lo = max(t0, min(q.within[0] for q in wins))
+    hi = min(t_end, max(q.within[1] for q in wins))
+    if not hi > lo:
+        return {}
+    probe = [lo + (hi - lo) * k / 64 for k in range(65)]
+    fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
+    turns = (hi - lo) * fastest / (2 * _m.pi)
+    period = result.results.get("period")
+    if isinstance(period, (int, float)) and period and period > 0:
+        turns = max(turns, (hi - lo) / period)
+    if not turns * PER_TURN <= MAX_PIECES:
+        return {}
+    # the other queries stand in as {t: lo}, so that each answer keeps its index (find.N)
+    keep = {q.index for q in wins}
+    raw = [q if i in keep else {"t": lo} for i, q in enumerate(problem.find)]
+    n = int(max(64, _m.ceil(turns * PER_TURN)))
+    breaks = [lo + (hi - lo) * k / n for k in range(n + 1)]
+    own = None
+    if rtol == 0.0:
+        m = int(max(16, _m.ceil(2 * turns)))
+        cut = [lo + (hi - lo) * k / m for k in range(m + 1)]
+        own = exact_breaks(raw, cut, series_values(
+            lambda ts: solve(problem.model_copy(update=dict(base, at=[float(t) for t in ts]))).results),
+            warn=result.warn)
+        breaks = cut if own is not None else breaks
+    motion = StateMotion(lambda t: batch([t])[0], lo, hi, breaks, rtol=rtol, rates=rates, batch=batch,
+                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
+    entries = answer_find(raw, motion, const, result.warn)
+    return {i: e for i, e in enumerate(entries) if i in keep}
+
+
+def _too_fast(problem: Any, result: Any, const, t_end: float, turns: float, batch,
+              windowed: Mapping[int, dict] | None = None) -> None:
     """The search would need more pieces than MAX_PIECES: the motion is too fast to search to
-    t_end; ``{t}`` queries are answered, the others not reached, and a warning says why."""
+    t_end; ``{t}`` queries are answered, so are the ``max``/``min`` queries whose windows span
+    little enough (``windowed``: :func:`_windowed`), the others not reached, and a warning says
+    why."""
     qs = _q.parse_queries(problem.find, const)
     why = (f"the motion turns about {turns:.3g} times before t = {t_end:g} s, more than a search of "
            f"{MAX_PIECES // PER_TURN} turns resolves: narrow the window with within, or ask at times (at, {{t: T}})")
@@ -839,6 +887,8 @@ def _too_fast(problem: Any, result: Any, const, t_end: float, turns: float, batc
     for q in qs:
         if isinstance(q, _q.AtTime):
             entries.append(dict({"t": q.t, "reached": True, "at_end": None}, **batch([q.t])[0]))
+        elif windowed and q.index in windowed:
+            entries.append(windowed[q.index])
         else:
             names = names if names is not None else list(batch([float(getattr(problem, "t0", 0.0) or 0.0)])[0])
             entries.append(dict({n: None for n in names}, t=None, reached=False, at_end=None))

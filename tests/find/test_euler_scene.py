@@ -101,3 +101,32 @@ def test_scene_compound_pendulum():
     assert e["t"] == pytest.approx(float(T / 4), rel=1e-7)                  # (no rate: Brent's minimiser)
     assert e["reaction"]["pivot"]["R"][1] == pytest.approx(float(M * g * (5 - 3 * mp.cos(phi0)) / 2), rel=TOL)
     assert entry(r, 7)["at_end"] is False
+
+
+def test_a_window_late_in_a_long_euler_run_is_searched_in_that_window():
+    """A torque-free body (I = 1, 2, 3, ω0 = [1, 0, 1]: ω = (cn, −sn, dn)(t, k² = 1/3) by hand)
+    followed to 1e4 s turns ~1,600 times, more than a search resolves over the whole run; a `min`
+    asked within [9990, 10000] spans 4 turns and is searched there alone (before: "not
+    searched", though the refusal says to narrow the window with within).  dn's least value
+    √(1 − k²) = √(2/3) at t = (2j + 1) K(1/3), the first such time in the window (mpmath); a
+    `max` without a window is still not searched, and said so."""
+    import math
+
+    r, warnings = solve("""
+type: euler
+I: [1, 2, 3]
+omega0: [1, 0, 1]
+t_end: 10000
+find:
+  - {min: omega.2, within: [9990, 10000]}
+  - {max: omega.2}
+""")
+    with mp.workdps(30):
+        K = mp.ellipk(mp.mpf(1) / 3)
+        j = math.ceil((9990 / float(K) - 1) / 2)
+        t = float((2 * j + 1) * K)
+    e = entry(r, 0)
+    assert e["t"] == pytest.approx(t, rel=1e-13)
+    assert e["omega"][2] == pytest.approx(math.sqrt(2 / 3), rel=1e-13)
+    assert r["find"][1]["reached"] is False
+    assert any(w.startswith("find.1: not searched") for w in warnings)
