@@ -418,4 +418,18 @@ def test_a_hoop_wedged_between_the_floor_and_the_edge_is_stopped_with_what_happe
     # approach no bounded impulse stops — refused with the joints, not as a singular matrix
     rec = solve_text(_curb_text(v0, h, "ring", mu, e))[0]
     err = str(rec.get("error") or "")
+    if not err and e > 0:
+        # the bounces come ever faster (0.0053, 0.0011, 0.0002 s apart ...) and which contact the
+        # last impact of the accumulation leaves made is decided by the rounding of each impact
+        # (numpy 1.26 and 2.4 differ): there the motion may end at rest on the floor against the
+        # edge instead — the same physical end, with the edge pressing nothing, the floor the
+        # weight, the energy balance kept
+        r = rec["results"]
+        assert abs(r["v"]["wheel"][-1][0]) <= 1e-4 * v0 and abs(r["omega"]["wheel"][-1][2]) <= 1e-4 * v0 / 0.5, r
+        assert r["reaction"]["hit"]["N"][-1] == 0.0
+        assert r["reaction"]["ground"]["N"][-1] == pytest.approx(10 * 9.81, rel=1e-9)
+        # against the edge (its centre where the rim touches the corner), to the drift of its
+        # leftover speed over the rest of the run
+        assert r["x"]["wheel"][-1][0] == pytest.approx(1.3 - math.sqrt(0.5 ** 2 - (0.5 - h) ** 2), abs=1e-4)
+        return
     assert all(n in err for n in needles), err
