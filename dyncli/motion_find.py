@@ -840,11 +840,11 @@ def _windowed(problem: Any, result: Any, const, batch, solve, base: dict, rates:
     import math as _m
 
     qs = _q.parse_queries(problem.find, const)
-    wins = [q for q in qs if isinstance(q, _q.Extreme) and q.within is not None]
+    wins = {q.index: q.within for q in qs if isinstance(q, _q.Extreme) and q.within is not None}
     if not wins:
         return {}
-    lo = max(t0, min(q.within[0] for q in wins))
-    hi = min(t_end, max(q.within[1] for q in wins))
+    lo = max(t0, min(w[0] for w in wins.values()))
+    hi = min(t_end, max(w[1] for w in wins.values()))
     if not hi > lo:
         return {}
     probe = [lo + (hi - lo) * k / 64 for k in range(65)]
@@ -856,7 +856,7 @@ def _windowed(problem: Any, result: Any, const, batch, solve, base: dict, rates:
     if not turns * PER_TURN <= MAX_PIECES:
         return {}
     # the other queries stand in as {t: lo}, so that each answer keeps its index (find.N)
-    keep = {q.index for q in wins}
+    keep = set(wins)
     raw = [q if i in keep else {"t": lo} for i, q in enumerate(problem.find)]
     n = int(max(64, _m.ceil(turns * PER_TURN)))
     breaks = [lo + (hi - lo) * k / n for k in range(n + 1)]

@@ -260,12 +260,11 @@ class Load:
         that straddles it bends the interpolant the switch is then located on (two carts and a
         bumper: the spring came on 0.02 s early, 1 % of the energy lost).  The phase ends at the
         switch (the watch "switch"), and the next one holds the other state."""
-        (p1, p2), (q1, q2) = self._ends()[0].xy(q), self._ends()[1].xy(q)
-        d1, d2 = p1 - q1, p2 - q2
-        ln = math.hypot(d1, d2)
+        P, Q = self._ends()
+        d1, d2, ln = self._d(q)
         s = ln - self.L
         if abs(s) <= 1e-12 * max(ln, self.L) and ln > 0:
-            (pv1, pv2), (qv1, qv2) = self._ends()[0].vel_xy(q, v), self._ends()[1].vel_xy(q, v)
+            (pv1, pv2), (qv1, qv2) = P.vel_xy(q, v), Q.vel_xy(q, v)
             s = (d1 * (pv1 - qv1) + d2 * (pv2 - qv2)) / ln
         self.mode = "on" if (s < 0 if self.one_sided == "compression" else s > 0) else "off"
 

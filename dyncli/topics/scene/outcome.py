@@ -196,8 +196,7 @@ def _energy_check(res, route: str) -> None:
         return
     worst = max(resid)
     if worst > 100 * max(float(res.error_estimate), EPS) * scale:
-        k = max(range(len(r["energy_residual"])),
-                key=lambda i: abs(r["energy_residual"][i]) if r["energy_residual"][i] is not None else -1.0)
+        k = next(i for i, x in enumerate(r["energy_residual"]) if x is not None and abs(x) == worst)
         res.warn(f"the energy balance E − E₁ − W_nc is off by {worst:.3g} J at t = {r['t'][k]:.6g} s ({worst / scale:.2g} of "
                  f"the energy's scale) where the error estimate is {float(res.error_estimate):.2g}: the motion is less "
                  "accurate than its estimate says; tighten accuracy.rtol, or set accuracy.estimate: true")

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from dyncli.errors import InputError
+from dyncli.errors import InputError, NumericalError
 
 from . import assembly, build, motion, start
 from . import elements as el
@@ -723,16 +723,13 @@ def _refuse_at_start(system, q, v) -> None:
     """A one-sided joint on its wrong side at t = 0: refused.  A force is told from 0 at 64 ε of
     the multipliers; a gap or an end's margin at 1e-12 of the scene's size (a point placed on a
     curve by its own formula is 4e-33 m off it: on it, not through it)."""
-    from .crossing import FORCES
-
     _, lam, _ = system.solve(q, v, 0.0)
     forces = max(float(np.max(np.abs(lam), initial=0.0)), 1e-300)
     lengths = 1e-12 * assembly.length_scale(q, system)
     for i, e in enumerate(system.elements):
         lm = system.lam_of(lam, i)
         for what, g in e.watch(lm, q, v, 0.0):
-            if g >= -(64 * EPS * forces if what in FORCES else lengths if what in ("impact", "leaves") else
-                      64 * EPS * forces):
+            if g >= -(lengths if what in ("impact", "leaves") else 64 * EPS * forces):
                 continue
             if what == "separates":
                 _refuse_pull(system, e, g, q)
@@ -759,8 +756,6 @@ def _refuse_at_start(system, q, v) -> None:
 def _pushes_at_rest(system, e, q) -> bool:
     """Whether the contact ``e`` would push (N ≥ 0) were the scene at rest at q: its pull at t = 0
     is then the velocities' (a point launched over a dome's top faster than √(g R))."""
-    from dyncli.errors import NumericalError
-
     try:
         _, lam, _ = system.solve(q, np.zeros(system.n), 0.0)
     except (NumericalError, np.linalg.LinAlgError):     # (a singular rest state: no hint)

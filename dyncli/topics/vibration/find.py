@@ -274,12 +274,19 @@ def _windows(find, const, h: float, t_end: float) -> tuple[list[tuple[float, flo
     return out, unresolved
 
 
+def _derivatives(resp: Response) -> dict:
+    """{quantity: (the motion, the derivative whose roots are its turning points)}: x and the
+    distance turn where v = 0, v where the acceleration does, w = x − s − L where ẇ does (the
+    same equation without the base motion s)."""
+    mo = resp.motion()
+    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo
+    return {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+
+
 def _window_turning_points(resp: Response, windows: list[tuple[float, float]], asked: set[str]):
     """As :func:`_turning_points`, only inside each window (its own grid of 1/PER_PERIOD of the
     shortest period): a search late in a long motion asks for no turning point before it."""
-    mo = resp.motion()
-    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo
-    which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+    which = _derivatives(resp)
     h = resp.step()
     out: dict[str, list[float]] = {}
     capped = False
@@ -302,9 +309,8 @@ def _turning_points(resp: Response, grid, t_end: float, asked: set[str]):
     acceleration) and of w (the roots of ẇ; w = x − L without a base motion, so x's), each in
     closed form for an underdamped free vibration, else by the sign analysis of :mod:`.turns` on
     the breaks ``grid()`` (made only then)."""
-    mo, breaks = resp.motion(), None
-    wo = replace(mo, s0=0.0) if mo.s0 != 0.0 else mo   # w = x − s − L: the same equation without s
-    which = {"x": (mo, 1), "distance": (mo, 1), "v": (mo, 2), "w": (wo, 1)}
+    breaks = None
+    which = _derivatives(resp)
     found: dict = {}
     out, capped = {}, False
     for path in sorted(asked):
