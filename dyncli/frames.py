@@ -51,16 +51,30 @@ def flat(value: Any, prefix: str, out: dict) -> dict:
     return out
 
 
+#: results that hold the type's own results (``find.0.x``, ``events.0.state.x``), or hold them
+#: under names of the problem's own, skipped (``point.BODY.POINT.a``)
+_HOLDERS = {"find": 0, "events": 0, "point": 2}
+
+
 def column_unit(units: Mapping[str, str], column: str) -> str:
-    """The SI unit of a flattened column: its result's unit, else (a ``find``
-    entry, a record without a unit of its own) the unit of its innermost
-    named part (``find.0.t`` -> the unit of ``t``)."""
-    parts = column.split(".")
-    if units.get(parts[0]):
-        return units[parts[0]]
-    for p in reversed(parts[1:]):
-        if not p.isdigit() and units.get(p):
-            return units[p]
+    """The SI unit of a flattened column (or an answer path: the one policy of grading and frames),
+    read from its start: a result with a unit holds it all the way down (``reaction.rope.T.0`` is
+    a tension, N — not the kinetic energy ``T``; ``x.V.2.1`` a position), a result that holds
+    the type's results is looked into (``find.0.t`` -> the unit of ``t``,
+    ``events.0.state.reaction.axle.R``, ``point.bar.end2.a``); any other record without a unit of
+    its own has none to give ("": ``orbit.a`` is a semi-major axis, not the acceleration ``a``)."""
+    parts = [p for p in column.split(".") if not p.isdigit()]
+    i = 0
+    while i < len(parts):
+        name = parts[i]
+        if units.get(name):
+            return units[name]
+        if name in _HOLDERS:
+            i += 1 + _HOLDERS[name]
+        elif name == "state" and i > 0:      # (an event's state: the results at its instant)
+            i += 1
+        else:
+            return ""
     return ""
 
 

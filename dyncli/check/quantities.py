@@ -70,25 +70,12 @@ def unit_spec(unit: str | None, bare: bool = True) -> UnitSpec:
     return UnitSpec(unit, float(si.magnitude) if bare else 1.0, q.dimensionality, unit)
 
 
-#: results that hold others under names of the problem's own (``point.BODY.POINT.a``): those
-#: names are skipped, so a body called ``T`` is not read as the kinetic energy
-_OWNED = {"point": 2}
-
-
 def result_unit(units: dict[str, str], path: str) -> str | None:
-    """The SI unit a solver reports for a dotted result path: the unit of its first named part
-    that has one, read from the start — a result with a unit holds its unit all the way down
-    (``reaction.rope.T.0.0`` is a tension, N, not the kinetic energy ``T``; ``x.V.2.1`` a
-    position), and a container without one is looked into (``find.0.s`` -> units['s'],
-    ``events.0.state.reaction.axle.R`` -> N), past the names it is owned by (``point.bar.end2.a``)."""
-    parts = [p for p in str(path).split(".") if not p.isdigit()]
-    i = 0
-    while i < len(parts):
-        name = parts[i]
-        if units.get(name):
-            return units[name]
-        i += 1 + _OWNED.get(name, 0)
-    return None
+    """The SI unit a solver reports for a dotted result path (:func:`dyncli.frames.column_unit`,
+    the frames' own rule), None when it has none."""
+    from dyncli.frames import column_unit
+
+    return column_unit(units, str(path)) or None
 
 
 def to_si(given: Any, spec: UnitSpec = NO_UNIT) -> float | None:

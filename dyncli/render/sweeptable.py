@@ -28,11 +28,11 @@ def _flat(value: Any, prefix: str, out: dict, digits: int) -> None:
 
 
 def _unit(units: dict, path: str) -> str:
-    """The unit of a dotted column: of its last named part (``find.0.t`` -> t), else none."""
-    for name in reversed([p for p in path.split(".") if not p.isdigit()]):
-        if units.get(name):
-            return units[name]
-    return ""
+    """The unit of a dotted column (:func:`dyncli.frames.column_unit`: the one rule of frames and
+    grading — ``orbit.a`` is no acceleration, ``reaction.rope.T`` no energy)."""
+    from dyncli.frames import column_unit
+
+    return column_unit(units, path)
 
 
 class SweepTable:

@@ -367,11 +367,12 @@ def test_result_unit_reads_the_path_from_its_start():
     """A result with a unit holds it all the way down its path: a cord's tension
     ``reaction.rope.T.0.0`` is in N, not the unit of the kinetic energy ``T``; a body named ``V``
     is a position in ``x.V.2.1``; a container without a unit is looked into (``find.0.s``,
-    ``events.0.state.reaction.axle.R``), past the names it is owned by (``point.T.end2.a``)."""
+    ``events.0.state.reaction.axle.R``), past the names it is owned by (``point.T.end2.a``); a
+    record without a unit has none to lend (the frames' columns read the same rule)."""
     from dyncli.check.quantities import result_unit
 
     units = {"x": "m", "a": "m/s²", "reaction": "N", "T": "J", "V": "J", "s": "m", "find": "", "events": "",
-             "point": ""}
+             "point": "", "orbit": ""}
     assert result_unit(units, "reaction.rope.T.0.0") == "N"
     assert result_unit(units, "x.V.2.1") == "m"
     assert result_unit(units, "find.0.s") == "m"
@@ -380,6 +381,8 @@ def test_result_unit_reads_the_path_from_its_start():
     assert result_unit(units, "point.T.end2.a.0.1") == "m/s²"
     assert result_unit(units, "T.3") == "J"
     assert result_unit(units, "drive.motor.0") is None
+    # a record without a unit of its own borrows none: orbit.a is a semi-major axis, not an acceleration
+    assert result_unit(units, "orbit.a") is None
 
 
 ATWOOD_V = """\
