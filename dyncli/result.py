@@ -35,6 +35,7 @@ class Series:
     names: list[str]           # result names that are lists over ``index``
     title: str | None = None
     index_result: str | None = None   # result name holding the index itself (not repeated in the scalar table)
+    frame_only: bool = False   # rows of frames, csv --long and xarray only: the tables show them through views
 
 
 @dataclass

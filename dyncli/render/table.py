@@ -126,7 +126,8 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     out = as_out(console)
     _print_header(out, lp, result)
     values, unit_names = display_units(result, units)
-    in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
+    in_series = {n for s in result.series if not s.frame_only for n in s.names} | \
+        {s.index_result for s in result.series if s.index_result}
     in_series |= set(result.covered)
     deferred: list[tuple[str, Any]] = []
     scalars, n_rows = _results_table("; ".join(printable(n) for n in result.notes) or None), 0
@@ -144,6 +145,8 @@ def render(console, lp, result: Result, digits: int = DEFAULT_DIGITS, units: lis
     if n_rows:
         out.print(scalars)
     for s in result.series:
+        if s.frame_only:
+            continue
         for t in series_tables(s, values, unit_names, result.symbols, digits, out.width):
             out.print(t)
     for name, val in deferred:

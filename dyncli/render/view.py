@@ -46,7 +46,8 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
     meta = meta_parts(result)
     values, unit_names = display_units(result, units)
     values = {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in values.items()}
-    in_series = {n for s in result.series for n in s.names} | {s.index_result for s in result.series if s.index_result}
+    in_series = {n for s in result.series if not s.frame_only for n in s.names} | \
+        {s.index_result for s in result.series if s.index_result}
     in_series |= set(result.covered)
     rows, deferred = [], []
     for name, val in values.items():
@@ -59,7 +60,7 @@ def build(lp, result: Result, digits: int = 6, units: list[str] | None = None) -
                                                                              unit_names.get(name, ""))
             rows.append([name, result.symbols.get(name, ""), cell, unit])
     grids = [Grid("; ".join(result.notes) or None, ["result", "symbol", "value", "unit"], rows, ["l", "l", "l", "l"], unit_column=3)] if rows else []
-    grids += [_series(s, values, unit_names, result.symbols, digits) for s in result.series]
+    grids += [_series(s, values, unit_names, result.symbols, digits) for s in result.series if not s.frame_only]
     grids += [_deferred(result.symbols.get(n, n), v, digits, unit_names) for n, v in deferred]
     grids += [_view(convert_view(v, units)[0], digits) for v in result.views]
     title = lp.title + swept_label(getattr(lp, "swept", None), digits)

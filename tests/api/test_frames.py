@@ -184,3 +184,22 @@ def test_xarray_mapping_results_and_a_swept_param():
     u = ds["work.gravity"]
     assert u.dims == ("params.mass", "t") and u.attrs["units"] == "J"
     assert u.sel(t=2.0).values.tolist() == pytest.approx([-9.81, -49.05], rel=1e-9)   # −m g x3, x3(2 s) = 1 m
+
+
+def test_a_scenes_motion_and_forces_are_rows_over_time():
+    """A scene's results over the times of `at` — each body's position and angle, each joint's
+    forces, the distance — are a frame's rows (one per time, the column t), as the energies
+    always were; before, they were spread into a column per time copied onto every row (the row
+    t = 0.25 carried the angle of t = 0).  The values are the result lists themselves; the units
+    come with them (N for a wall's normal force, m for a position); the tables are unchanged."""
+    pytest.importorskip("pandas")
+    sol = dyncli.solve(str(ROOT / "problems" / "scenes" / "sliding-ladder.yaml"))[0]
+    df = sol.to_frame()
+    r = sol.results
+    assert list(df["t"]) == r["t"]
+    assert list(df["angle.rod"]) == r["angle"]["rod"]
+    assert [row for row in df[["x.rod.0", "x.rod.1"]].itertuples(index=False, name=None)] == \
+        [tuple(x[:2]) for x in r["x"]["rod"]]
+    assert list(df["reaction.at_wall.N"]) == r["reaction"]["at_wall"]["N"]
+    assert "angle.rod.1" not in df.columns
+    assert df.attrs["units"]["reaction.at_wall.N"] == "N" and df.attrs["units"]["x.rod.0"] == "m"

@@ -128,6 +128,14 @@ def _present(res, scene, traj, inst, times) -> None:
     res.equations = ["16.7", "29.5", "32.15", "34.20"] + (["28.7", "28.16", "33.2"] if traj.impacts else [])
     res.series.append(Series("t", list(times), [k for k in ("T", "V", "E", "W_nc", "energy_residual")
                                                  if k in res.results], index_result="t"))
+    # every other result over the times of `at` is a series too, for a frame's rows, csv --long
+    # and to_xarray's t (the tables show them through the views)
+    res.series.append(Series("t", list(times), [k for k in OVER_TIME if k in res.results], index_result="t",
+                             frame_only=True))
+
+
+#: the scene's results that hold one value per time of `at` (each body's, point's, joint's, load's)
+OVER_TIME = ("x", "v", "a", "angle", "omega", "alpha", "point", "reaction", "drive", "force", "distance")
 
 
 def _drawing(scene) -> dict:
