@@ -126,13 +126,16 @@ def _bare(written: Any) -> float | None:
 def degrees_warnings(model: Any, raw: Any) -> list[str]:
     """One warning per bare angle larger than a full turn."""
     out = []
+    params = raw.get("params") if isinstance(raw, dict) and isinstance(raw.get("params"), dict) else {}
     for path, written in angle_fields(model, raw):
         items = list(enumerate(written)) if isinstance(written, list) else [(None, written)]
         for i, w in items:
-            v = _bare(w)
+            v, via = _bare(w), ""
+            if v is None and isinstance(w, str) and w.strip() in params:     # a param written bare: th0 = -30
+                v, via = _bare(params[w.strip()]), f" (params.{w.strip()})"
             if v is None or not math.isfinite(v) or abs(v) <= FULL_TURN:
                 continue
-            where = ".".join(str(p) for p in path) + (f" (component {i + 1})" if i is not None else "")
+            where = ".".join(str(p) for p in path) + (f" (component {i + 1})" if i is not None else "") + via
             shown = f"{v:g}"
             out.append(f"{where}: {shown} is read in radians ({math.degrees(v):.4g}°, more than a full turn); "
                        f"if you meant degrees, write {shown}*deg")
@@ -160,9 +163,9 @@ def _models_in(tp: Any, listed: bool = False) -> list[tuple[Any, bool]]:
     if isinstance(tp, type) and issubclass(tp, BaseModel):
         return [(tp, listed)]
     origin = typing.get_origin(tp)
-    listed = listed or origin in (list, tuple)
+    listed = listed or origin in (list, tuple, dict)       # (a mapping's entries by name: `*` too)
     out = []
-    for a in typing.get_args(tp) or ():
+    for a in (typing.get_args(tp)[1:] if origin is dict else typing.get_args(tp)) or ():
         out += _models_in(a, listed)
     return out
 

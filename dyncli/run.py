@@ -135,11 +135,24 @@ def _too_large(lp: LoadedProblem, exc: OverflowError) -> str:
 
 
 def _degrees_warnings(result: Result, lp: LoadedProblem) -> None:
-    """A bare angle beyond a full turn (``theta: 30`` meant as degrees): named, with ``30*deg``."""
+    """A bare angle beyond a full turn (``theta: 30`` meant as degrees): named, with ``30*deg``;
+    and a parameter named ``g`` that is not the problem's gravity (``params: {g: 1.62}`` with no
+    ``g`` of the problem: the expressions read 1.62, the motion falls at 9.81)."""
     from dyncli.angles import degrees_warnings
 
     for w in degrees_warnings(lp.model, lp.raw):
         result.warn(w)
+    raw = lp.raw if isinstance(lp.raw, dict) else {}
+    params = raw.get("params") if isinstance(raw.get("params"), dict) else {}
+    gravity = getattr(lp.model, "g", None)
+    if "g" in params and "g" not in raw and isinstance(gravity, float):
+        try:
+            value = float(getattr(lp.model, "params", {}).get("g"))
+        except (TypeError, ValueError):
+            value = None
+        if value != gravity:
+            result.warn(f"params.g is a parameter of the expressions, not the gravity: the motion has g = {gravity:g} "
+                        "m/s² (the default); to use the parameter as gravity, write g: g at the top level")
 
 
 def _internal(lp: LoadedProblem, exc: BaseException) -> str:

@@ -32,19 +32,31 @@ def _problem(t: str, path: str, value) -> dict:
     if t == "impact":
         raw.pop("e")
         raw.update(IMPACT_ROUGH)
-    parts = path.replace("*", "0").split(".")
+    parts = path.split(".")
     if parts[0] == "instant":              # kinematics at one instant: the state instead of position
         raw.pop("position", None)
         raw.pop("distance", None)
         raw.update(coordinates="spherical", at=[], instant={"R": 1, "theta": 0, "phi": 0})
     node = raw
-    for p in parts[:-1]:
-        node = node[int(p)] if p.isdigit() else node.setdefault(p, {})
+    for p in parts[:-1]:            # `*`: a list's first entry, or a mapping's (a scene's first body)
+        node = (node[0] if isinstance(node, list) else next(iter(node.values()))) if p == "*" else node.setdefault(p, {})
     leaf = parts[-1]
     if parts[-2:] in (["orientation", "angle"], ["basis", "angle"], ["basis0", "angle"]):
         node["axis"] = [0, 0, 1]
     node[leaf] = [value, 0, 0] if leaf == "euler313" else value
     return raw
+
+
+def _concrete(t: str, path: str) -> str:
+    """``path`` with each `*` as the template's first entry there: 0 in a list, the first name in
+    a mapping (a scene's first body), as the warnings name it."""
+    node, out = _template(t), []
+    for p in path.split("."):
+        if p == "*":
+            p = "0" if isinstance(node, list) else next(iter(node))
+        out.append(p)
+        node = node[int(p)] if isinstance(node, list) else (node.get(p, {}) if isinstance(node, dict) else {})
+    return ".".join(out)
 
 
 def _solve(raw: dict):
@@ -70,7 +82,7 @@ def test_the_angle_fields_are_found():
 def test_bare_degrees_are_named(t, path, bare):
     o = _solve(_problem(t, path, bare))
     shown = f"{float(bare):g}"
-    dotted = path.replace("*", "0")
+    dotted = _concrete(t, path)
     if o.exit_code == 0:
         hits = [w for w in o.result.warnings if w.startswith(dotted) and f"write {shown}*deg" in w]
         assert len(hits) == 1, o.result.warnings
@@ -157,3 +169,33 @@ def test_the_walk_leaves_out_only_fields_that_hold_no_angle():
             assert list(angle_fields(p.model, p.raw)) == list(_every_field(p.model, p.raw)), p.file
             checked += bool(list(_every_field(p.model, p.raw)))
     assert checked > len(CASES) // 2
+
+
+def test_a_bare_param_written_in_an_angle_field_is_judged_as_its_value():
+    """A scene's body angle written as a parameter whose value is a bare -30 (a student's degrees:
+    the compound pendulum released "30° below the horizontal" at -30 rad) is named with the
+    parameter; an angle written as an expression of it (th0*deg) is not."""
+    raw = yaml.safe_load((ROOT / "problems" / "scenes" / "compound-pendulum.yaml").read_text())
+    raw["params"]["th0"] = -30
+    o = _solve(raw)
+    hits = [w for w in o.result.warnings if w.startswith("bodies.bar.angle (params.th0): -30 is read in radians")]
+    assert len(hits) == 1 and "write -30*deg" in hits[0], o.result.warnings
+    raw["params"]["th0"] = "-30*deg"
+    o = _solve(raw)
+    assert not [w for w in o.result.warnings if "*deg" in w], o.result.warnings
+
+
+@pytest.mark.parametrize("top, warned", [("", True), ("g: g\n", False)])
+def test_a_parameter_named_g_is_not_the_gravity_unless_the_file_says_so(top, warned):
+    """`params: {g: 1.62}` (the Moon's, meant as gravity) with no `g` of the problem: the
+    expressions read 1.62 but the motion falls at 9.81 — warned, with the fix; `g: g` at the top
+    level makes it the gravity (a = 1.62 (m1 − m2)/(m1 + m2 + M/2) for the Atwood machine)."""
+    text = (ROOT / "problems" / "scenes" / "atwood-massive-pulley.yaml").read_text()
+    text = text.replace("params: {m1: 3, m2: 2, M: 1, R: 0.1}", "params: {m1: 3, m2: 2, M: 1, R: 0.1, g: 1.62}") + top
+    problems, _ = split_problems("g.yaml", text.encode(), ROOT)
+    validate(problems[0])
+    o = solve_one(problems[0])
+    hits = [w for w in o.result.warnings if w.startswith("params.g is a parameter of the expressions")]
+    assert len(hits) == (1 if warned else 0), o.result.warnings
+    a = (1.62 if not warned else 9.81) / 5.5
+    assert o.result.results["a"]["A"][0][1] == pytest.approx(-a, rel=1e-12)

@@ -597,8 +597,15 @@ def _on_corner(name: str, j: dict, R: Resolver, s, q: np.ndarray, n: int, out: l
 
 def loads_of(plan: Plan, R: Resolver, q: np.ndarray) -> list[Load]:
     out = []
+    named: dict[str, int] = {}
     for i, f in enumerate(plan.loads):
         kind, path = f["kind"], f"forces.{i}.{f['kind']}"
+        if f.get("name") is not None:   # each load's result force.NAME: two of one name would be one
+            if f["name"] in named:
+                raise InputError(f"two loads are named {f['name']!r} (forces.{named[f['name']]} and this one): each "
+                                 "load's force is reported under its name, so give them different names",
+                                 f"forces.{i}.name")
+            named[f["name"]] = i
         if kind in ("spring", "damper"):
             P, Q = R.pair(f[kind], path, q)
             d = P.pos(q) - Q.pos(q)

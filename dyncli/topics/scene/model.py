@@ -130,7 +130,7 @@ class Body(StrictModel):
     size: Optional[list[Annotated[float, Num(gt=0, dim="length")]]] = Field(None, description="box [a, b] along e'1, e'2 [m]")
     I: Optional[Annotated[float, Num(ge=0, dim="moment_of_inertia", description="I33 about the centre [kg·m²]")]] = None
     x: Optional[list[Annotated[float, Num(dim="length")]]] = Field(None, description="[x1, x2]: centre at t = 0 (left out: placed by the joints)")
-    angle: Optional[Annotated[float, Num(description="angle of e'1 from e1 at t = 0 [rad] (left out: placed by the joints)")]] = None
+    angle: Optional[Annotated[float, Num(dim="angle", description="angle of e'1 from e1 at t = 0 [rad] (write 30*deg for degrees; left out: placed by the joints)")]] = None
     v: Optional[list[Annotated[float, Num(dim="velocity")]]] = Field(None, description="[v1, v2] of the centre at t = 0 (default rest, or what the drives and joints impose)")
     omega: Optional[Annotated[float, Num(dim="angular_velocity", description="angular velocity at t = 0 [rad/s] (default rest, or what the drives and joints impose)")]] = None
     points: dict[str, list[Annotated[float, Num(dim="length")]]] = Field(default_factory=dict, description="named points [p1, p2] on e'1, e'2 [m]")

@@ -740,3 +740,16 @@ at: [0, 1]
 def test_a_load_without_its_value_says_what_to_give(force, field, words):
     refusal("type: scene\nbodies:\n  B: {shape: point, mass: 2, x: [0, 0]}\n"
             f"forces:\n  - {force}\nat: [0]\n", field, *words)
+
+
+def test_two_loads_of_one_name_are_refused():
+    """Two loads named `spring` would report one force.spring (the other's lost, silently before)."""
+    refusal("""
+type: scene
+bodies:
+  b: {shape: point, mass: 1, x: [0, -1]}
+forces:
+  - {force: b, F: [1, 0], name: spring}
+  - {spring: [b, [0, 0]], k: 100, L: 1, name: spring}
+at: [0, 1]
+""", "forces.1.name", "two loads are named 'spring'", "different names")
