@@ -36,6 +36,7 @@ class Series:
     title: str | None = None
     index_result: str | None = None   # result name holding the index itself (not repeated in the scalar table)
     frame_only: bool = False   # rows of frames, csv --long and xarray only: the tables show them through views
+    index_marks: dict[int, str] | None = None   # the tables' marks after an index value (◀ G max): display only
 
 
 @dataclass

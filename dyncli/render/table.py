@@ -325,7 +325,8 @@ def series_tables(s, values: dict, unit_names: dict, symbols: dict, digits: int,
     n = len(s.index)
     rows, omitted = shown_rows(n)
     gap = SERIES_EDGE if omitted else -1          # position of the ⋮ row
-    idx_cells = [fmt_num(s.index[i], digits) for i in rows]
+    marks = s.index_marks or {}
+    idx_cells = [fmt_num(s.index[i], digits) + (f" {marks[i]}" if i in marks else "") for i in rows]
     idx_w = max([cell_len(escape(s.index_name))] + [len(c) for c in idx_cells])
     cols = []
     for label, unit, vals in series_columns(s, values, unit_names, symbols):

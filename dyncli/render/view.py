@@ -82,8 +82,10 @@ def _series(s, values: dict, unit_names: dict, symbols: dict, digits: int) -> Gr
         units.append(unit)
         data.append(vals)
     rows = []
+    marks = s.index_marks or {}
     for i, iv in enumerate(s.index):
-        rows.append([fmt_num(iv, digits)] + [fmt_value(v[i], digits) if v is not None and i < len(v) else "" for v in data])
+        rows.append([fmt_num(iv, digits) + (f" {marks[i]}" if i in marks else "")]
+                    + [fmt_value(v[i], digits) if v is not None and i < len(v) else "" for v in data])
     return Grid(s.title, cols, rows, ["r"] * len(cols), units)
 
 

@@ -203,3 +203,16 @@ def test_a_scenes_motion_and_forces_are_rows_over_time():
     assert list(df["reaction.at_wall.N"]) == r["reaction"]["at_wall"]["N"]
     assert "angle.rod.1" not in df.columns
     assert df.attrs["units"]["reaction.at_wall.N"] == "N" and df.attrs["units"]["x.rod.0"] == "m"
+
+
+def test_a_sweeps_index_is_numbers_its_peak_marks_are_the_tables():
+    """A vibration's frequency sweep marks the point nearest each peak in its tables (◀ G max);
+    the frame's column r holds the numbers themselves (before: '1 ◀ G max ◀ g max' in one cell,
+    so the column could not be read as floats)."""
+    pd = pytest.importorskip("pandas")
+    sol = dyncli.solve(str(ROOT / "problems" / "vibration" / "sweep.yaml"))[0]
+    df = sol.to_frame()
+    assert pd.api.types.is_float_dtype(df["r"]), df["r"].tolist()
+    assert list(df["r"]) == sol.results["sweep_r"]
+    code, out, err = run_cli("solve", str(ROOT / "problems" / "vibration" / "sweep.yaml"))
+    assert code == 0 and "◀ G max" in out, err

@@ -320,17 +320,11 @@ def _sweep_display(res, r, lo, hi, zeta, pG, pg) -> None:
     mark(pg[0] if pg else None, "◀ g max")
     if zeta == 0.0:
         mark(1.0, "◀ resonance")
-    index = []
-    for i, ri in enumerate(r.tolist()):
-        if i in marks:
-            from dyncli.numfmt import fmt_num
-
-            index.append(f"{fmt_num(ri)} {' '.join(marks[i])}")
-        else:
-            index.append(ri)
-    res.series.append(Series("r", index, ["sweep_G", "sweep_phi", "sweep_g", "sweep_Phi"],
+    # the index stays the numbers (a frame's column r); the marks are the tables' alone
+    res.series.append(Series("r", r.tolist(), ["sweep_G", "sweep_phi", "sweep_g", "sweep_Phi"],
                              title="Frequency sweep: amplification functions G (17.30b), g (17.34b); "
-                                   "◀ marks the point nearest to a peak", index_result="sweep_r"))
+                                   "◀ marks the point nearest to a peak", index_result="sweep_r",
+                             index_marks={i: " ".join(m) for i, m in marks.items()}))
     rows = []
     for name, pk, where in (("G (17.30b)", pG, "r = 1/√(1 − 2ζ²), G = 1/(2ζ√(1 − ζ²))"),
                             ("g (17.34b)", pg, "r² = 2/(1 + √(1 + 8ζ²))")):
