@@ -126,7 +126,8 @@ def _bare(written: Any) -> float | None:
 def degrees_warnings(model: Any, raw: Any) -> list[str]:
     """One warning per bare angle larger than a full turn."""
     out = []
-    params = raw.get("params") if isinstance(raw, dict) and isinstance(raw.get("params"), dict) else {}
+    got = raw.get("params") if isinstance(raw, dict) else None
+    params: dict = got if isinstance(got, dict) else {}
     for path, written in angle_fields(model, raw):
         items = list(enumerate(written)) if isinstance(written, list) else [(None, written)]
         for i, w in items:

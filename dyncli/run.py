@@ -142,14 +142,12 @@ def _degrees_warnings(result: Result, lp: LoadedProblem) -> None:
 
     for w in degrees_warnings(lp.model, lp.raw):
         result.warn(w)
-    raw = lp.raw if isinstance(lp.raw, dict) else {}
-    params = raw.get("params") if isinstance(raw.get("params"), dict) else {}
+    raw: dict = lp.raw if isinstance(lp.raw, dict) else {}
+    params = raw.get("params")
     gravity = getattr(lp.model, "g", None)
-    if "g" in params and "g" not in raw and isinstance(gravity, float):
-        try:
-            value = float(getattr(lp.model, "params", {}).get("g"))
-        except (TypeError, ValueError):
-            value = None
+    if isinstance(params, dict) and "g" in params and "g" not in raw and isinstance(gravity, float):
+        written = (getattr(lp.model, "params", None) or {}).get("g")
+        value = float(written) if isinstance(written, (int, float)) and not isinstance(written, bool) else None
         if value != gravity:
             result.warn(f"params.g is a parameter of the expressions, not the gravity: the motion has g = {gravity:g} "
                         "m/s² (the default); to use the parameter as gravity, write g: g at the top level")
