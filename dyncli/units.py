@@ -67,7 +67,8 @@ _ALIASES = {"angular_rate": "angular_velocity", "rate": "angular_velocity", "spi
 # a number, then a unit; the look-ahead keeps a number's exponent out of the
 # unit ("1e308*10" is an expression that overflows, not 1 of the unit "e308*10")
 QUANTITY = re.compile(
-    r"^\s*(?P<num>[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)(?![eE][-+]?\d)\s*(?P<unit>[A-Za-z°µΩ][A-Za-z0-9_°µΩ\s*/^().·²³-]*)$"
+    r"^\s*(?P<num>[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)(?![eE][-+]?\d)\s*"
+    r"(?P<unit>(?:1\s*/\s*)?[A-Za-z°µΩ][A-Za-z0-9_°µΩ\s*/^().·²³-]*)$"     # (a unit may be 1/s: per second)
 )
 MAX_UNIT_TEXT = 80
 

@@ -108,7 +108,7 @@ def to_si(given: Any, spec: UnitSpec = NO_UNIT) -> float | None:
         name = re.match(r"unknown name '([^']*)'", first)
         if name:                        # (the expression language's hint, params, is not a submission's)
             first = (f"'{name.group(1)}' is not a number or a unit here: write a number, an expression of "
-                     "numbers (2*pi/3), or a number and its unit after a space ('19.6 m/s', '3.2 s^-1')")
+                     "numbers (2*pi/3), or a number and its unit after a space ('19.6 m/s', '3.2 1/s')")
         raise GivenError(f"cannot read '{shown(given)}' as a number: {shown(first, 160)}")
     return _quantity(given, spec)
 

@@ -111,3 +111,16 @@ def test_hertz_in_graded_answers(given, status):
     report = grade("problem: {type: vibration, m: 1, k: 400}\n"
                    f"answers: {{omega_n: '{given}'}}\n")
     assert statuses(report) == {"omega_n": status}
+
+
+def test_per_second_written_1_over_s_is_read():
+    """units.md: "a bare 1/s is read as 1 rad/s" — "5 1/s" was a syntax error (the unit had to
+    start with a letter).  A forcing at 5 1/s on ωₙ = 10 rad/s is r = 0.5; a graded answer
+    "20 1/s" is 20 (per second); "1/s" where a velocity is asked is still a wrong dimension."""
+    from dyncli.check.quantities import to_si
+
+    r = solve_one_text("type: vibration\nm: 2\nk: 200\nL: 0.5\nx0: 0.5\nv0: 0\n"
+                       "force: {amplitude: 4, omega: \"5 1/s\"}\nat: [0, 1]\n")["results"]
+    assert r["r"] == pytest.approx(0.5, rel=1e-15)
+    assert to_si("20 1/s") == pytest.approx(20.0) and to_si("20 1 / s") == pytest.approx(20.0)
+    assert "expected a velocity" in error_of("type: vibration\nm: 2\nk: 200\nx0: 0.1\nv0: \"2 1/s\"\nat: [0, 1]\n")
