@@ -717,8 +717,6 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     route that knows its motion as one run's dense output leaves ``(breaks, states)`` in
     ``result.extra["dense_motion"]`` (:func:`_dense_find`: no solve again, every step cut at the
     exact extremes of each result searched)."""
-    import math as _m
-
     names = [n for s in result.series if s.index_name == "t" for n in s.names]
     acc = getattr(problem, "accuracy", None)
     base: dict[str, Any] = {"find": []}
@@ -741,36 +739,48 @@ def resolved(problem: Any, result: Any, solve: Callable[[Any], Any], rates: Mapp
     if dense is not None and t_end > t0:
         _dense_find(problem, result, dense, names, rates, t0, t_end, rtol, const)
         return
-    if t_end <= t0:
-        breaks = [t0, t0]
+    turns = _turns(result, batch, fast, t0, t_end) if t_end > t0 else 0.0
+    if not turns * PER_TURN <= MAX_PIECES:      # (also a rate beyond a double)
+        windowed = _windowed(problem, result, const, batch, solve, base, rates, fast, rtol, t0, t_end)
+        _too_fast(problem, result, const, t_end, turns, batch, windowed)
     else:
-        probe = [t0 + (t_end - t0) * k / 64 for k in range(65)]
-        fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
-        period = result.results.get("period")
-        turns = (t_end - t0) * fastest / (2 * _m.pi)
-        if isinstance(period, (int, float)) and period and period > 0:
-            turns = max(turns, (t_end - t0) / period)
-        if not turns * PER_TURN <= MAX_PIECES:      # (also a rate beyond a double)
-            windowed = _windowed(problem, result, const, batch, solve, base, rates, fast, rtol, t0, t_end)
-            _too_fast(problem, result, const, t_end, turns, batch, windowed)
-            if rtol == 0.0:
-                _phase_at_answers(problem, result, base, solve)
-            return
-        n = int(max(64, _m.ceil(turns * PER_TURN)))
-        breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-    own = None
-    if rtol == 0.0 and t_end > t0:      # an exact motion: each piece cut at its results' exact extremes
-        # (smooth_extremes halves a piece as it needs: two pieces per turn start it)
-        n = int(max(16, _m.ceil(2 * turns)))
-        breaks = [t0 + (t_end - t0) * k / n for k in range(n + 1)]
-        own = exact_breaks(problem.find, breaks, series_values(
-            lambda ts: solve(problem.model_copy(update=dict(base, at=[float(t) for t in ts]))).results),
-            warn=result.warn)
-    motion = StateMotion(lambda t: batch([t])[0], t0, t_end, breaks, rtol=rtol, rates=rates, batch=batch,
-                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
-    attach(result, problem.find, answer_find(problem.find, motion, const, result.warn))
+        attach(result, problem.find, _search(problem, result, const, problem.find, batch, solve, base, rates, rtol,
+                                             t0, t_end, turns))
     if rtol == 0.0:
         _phase_at_answers(problem, result, base, solve)
+
+
+def _turns(result: Any, batch, fast: Iterable[str], lo: float, hi: float) -> float:
+    """The turns of the motion over [lo, hi]: its fastest rate among ``fast`` on 65 probes (and
+    its ``period``, when the type reports one)."""
+    probe = [lo + (hi - lo) * k / 64 for k in range(65)]
+    fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
+    turns = (hi - lo) * fastest / (2 * math.pi)
+    period = result.results.get("period")
+    if isinstance(period, (int, float)) and period and period > 0:
+        turns = max(turns, (hi - lo) / period)
+    return turns
+
+
+def _search(problem: Any, result: Any, const, raw: list, batch, solve, base: dict, rates: Mapping[str, str],
+            rtol: float, lo: float, hi: float, turns: float) -> list[dict]:
+    """The answers of the queries ``raw`` over [lo, hi]: a grid of :data:`PER_TURN` pieces per turn
+    (at least 64); on an exact route (``rtol`` 0) two per turn, each cut at its results' exact
+    extremes (smooth_extremes halves a piece as it needs)."""
+    if not hi > lo:
+        breaks, own = [lo, lo], None
+    elif rtol == 0.0:
+        n = int(max(16, math.ceil(2 * turns)))
+        breaks = [lo + (hi - lo) * k / n for k in range(n + 1)]
+        own = exact_breaks(raw, breaks, series_values(
+            lambda ts: solve(problem.model_copy(update=dict(base, at=[float(t) for t in ts]))).results),
+            warn=result.warn)
+    else:
+        n = int(max(64, math.ceil(turns * PER_TURN)))
+        breaks, own = [lo + (hi - lo) * k / n for k in range(n + 1)], None
+    motion = StateMotion(lambda t: batch([t])[0], lo, hi, breaks, rtol=rtol, rates=rates, batch=batch,
+                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
+    return answer_find(raw, motion, const, result.warn)
 
 
 def _phase_at_answers(problem: Any, result: Any, base: dict, solve: Callable[[Any], Any]) -> None:
@@ -837,8 +847,6 @@ def _windowed(problem: Any, result: Any, const, batch, solve, base: dict, rates:
     (its own grid of :data:`PER_TURN` pieces per turn, cut at the exact extremes on an exact
     route) — the remedy the refusal names.  {query index: entry}; empty when the span is too
     fast too (or no such query)."""
-    import math as _m
-
     qs = _q.parse_queries(problem.find, const)
     wins = {q.index: q.within for q in qs if isinstance(q, _q.Extreme) and q.within is not None}
     if not wins:
@@ -847,31 +855,13 @@ def _windowed(problem: Any, result: Any, const, batch, solve, base: dict, rates:
     hi = min(t_end, max(w[1] for w in wins.values()))
     if not hi > lo:
         return {}
-    probe = [lo + (hi - lo) * k / 64 for k in range(65)]
-    fastest = max([abs(float(x)) for st in batch(probe) for f in fast for x in _leaves(st.get(f))] + [0.0])
-    turns = (hi - lo) * fastest / (2 * _m.pi)
-    period = result.results.get("period")
-    if isinstance(period, (int, float)) and period and period > 0:
-        turns = max(turns, (hi - lo) / period)
+    turns = _turns(result, batch, fast, lo, hi)
     if not turns * PER_TURN <= MAX_PIECES:
         return {}
     # the other queries stand in as {t: lo}, so that each answer keeps its index (find.N)
-    keep = set(wins)
-    raw = [q if i in keep else {"t": lo} for i, q in enumerate(problem.find)]
-    n = int(max(64, _m.ceil(turns * PER_TURN)))
-    breaks = [lo + (hi - lo) * k / n for k in range(n + 1)]
-    own = None
-    if rtol == 0.0:
-        m = int(max(16, _m.ceil(2 * turns)))
-        cut = [lo + (hi - lo) * k / m for k in range(m + 1)]
-        own = exact_breaks(raw, cut, series_values(
-            lambda ts: solve(problem.model_copy(update=dict(base, at=[float(t) for t in ts]))).results),
-            warn=result.warn)
-        breaks = cut if own is not None else breaks
-    motion = StateMotion(lambda t: batch([t])[0], lo, hi, breaks, rtol=rtol, rates=rates, batch=batch,
-                         subdivide=1 if own is not None else None, breaks_for=own, monotone=own is not None)
-    entries = answer_find(raw, motion, const, result.warn)
-    return {i: e for i, e in enumerate(entries) if i in keep}
+    raw = [q if i in wins else {"t": lo} for i, q in enumerate(problem.find)]
+    entries = _search(problem, result, const, raw, batch, solve, base, rates, rtol, lo, hi, turns)
+    return {i: e for i, e in enumerate(entries) if i in wins}
 
 
 def _too_fast(problem: Any, result: Any, const, t_end: float, turns: float, batch,

@@ -27,6 +27,7 @@ vectorised f(t) -> array.
 
 from __future__ import annotations
 
+import bisect
 import math
 
 import numpy as np
@@ -163,8 +164,6 @@ class Antiderivative:
             self.F0.append(self.F0[-1] + w)
 
     def _panel(self, x: float) -> int:
-        import bisect
-
         return min(max(bisect.bisect_right(self.lo, x) - 1, 0), len(self.lo) - 1)
 
     def _u(self, k: int, x: float) -> float:
@@ -182,8 +181,6 @@ class Antiderivative:
         return _clenshaw(self.c[k], self._u(k, x))
 
     def inverse(self, y: float) -> float:
-        import bisect
-
         if not self.lo or y <= 0.0:
             return self.a
         if y >= self.F0[-1]:
